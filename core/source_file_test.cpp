@@ -1,0 +1,32 @@
+#include "core/source_file.hpp"
+
+#include <doctest/doctest.h>
+
+using ncsim::core::SourceFile;
+using ncsim::core::SourceLoc;
+
+TEST_CASE("offsets map to 1-based line and column") {
+  const SourceFile f("p.nc", "N10 G01\nX10\r\n\nY5");
+  CHECK(f.loc_of(0) == SourceLoc{1, 1});
+  CHECK(f.loc_of(4) == SourceLoc{1, 5});
+  CHECK(f.loc_of(8) == SourceLoc{2, 1});
+  CHECK(f.loc_of(14) == SourceLoc{4, 1});
+  CHECK(f.loc_of(1000) == SourceLoc{4, 3});  // past the end clamps to after the last byte
+  CHECK(f.line_count() == 4);
+}
+
+TEST_CASE("line text has no line end, also for CRLF files") {
+  const SourceFile f("p.nc", "N10 G01\nX10\r\n\nY5");
+  CHECK(f.line_text(1) == "N10 G01");
+  CHECK(f.line_text(2) == "X10");
+  CHECK(f.line_text(3).empty());
+  CHECK(f.line_text(4) == "Y5");
+  CHECK(f.line_text(5).empty());
+  CHECK(f.line_text(0).empty());
+  CHECK(f.line_start(2) == 8);
+}
+
+TEST_CASE("loading a missing file names the path") {
+  CHECK_THROWS_WITH(SourceFile::load("/nonexistent/x.nc"),
+                    doctest::Contains("/nonexistent/x.nc"));
+}
