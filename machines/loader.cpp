@@ -1,0 +1,514 @@
+#include "machines/loader.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "machines/list_file.hpp"
+#include "machines/loader_detail.hpp"
+
+namespace ncsim::machines {
+namespace detail {
+namespace {
+
+bool is_identifier(std::string_view text) {
+  if (text.empty() || std::isdigit(static_cast<unsigned char>(text.front())) != 0) return false;
+  return std::all_of(text.begin(), text.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+  });
+}
+
+// Integer literal: optional sign, decimal digits, or 0x hex digits.
+std::optional<double> parse_integer(std::string_view text) {
+  bool negative = false;
+  if (!text.empty() && (text.front() == '-' || text.front() == '+')) {
+    negative = text.front() == '-';
+    text.remove_prefix(1);
+  }
+  int base = 10;
+  if (text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X')) {
+    base = 16;
+    text.remove_prefix(2);
+  }
+  if (text.empty() || text.size() > 18) return std::nullopt;
+  long long value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value, base);
+  if (ec != std::errc{} || end != text.data() + text.size()) return std::nullopt;
+  return static_cast<double>(negative ? -value : value);
+}
+
+// Real literal: decimal with optional fraction and exponent ("5.000e+004").
+std::optional<double> parse_real(std::string_view text) {
+  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  if (text.empty()) return std::nullopt;
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(value)) {
+    return std::nullopt;
+  }
+  return value;
+}
+
+std::string range_text(const ParamSpec& spec) {
+  if (spec.type == ValueType::sgn32 && spec.min < -2.0e9) return "MIN(SGN32)..MAX(SGN32)";
+  std::string lo = spec.min < -1.0e299 ? "MIN(REAL64)" : number_text(spec.min);
+  std::string hi = spec.max > 1.0e299 ? "MAX(REAL64)" : number_text(spec.max);
+  return lo + ".." + hi;
+}
+
+}  // namespace
+
+std::string number_text(double value) {
+  char buf[40];
+  if (value == std::floor(value) && std::abs(value) < 1.0e15) {
+    std::snprintf(buf, sizeof buf, "%.0f", value);
+  } else {
+    std::snprintf(buf, sizeof buf, "%.10g", value);
+  }
+  return buf;
+}
+
+std::string pattern_of(std::string_view key) {
+  std::string out;
+  bool in_index = false;
+  for (char c : key) {
+    if (c == '[') in_index = true;
+    if (c == ']') in_index = false;
+    if (!in_index || c == '[') out += c;
+  }
+  return out;
+}
+
+std::string param_ref(std::string_view key, ListKind kind) {
+  const ParamSpec* spec = find_param(kind, pattern_of(key));
+  return std::string(key) + " (" + (spec ? std::string(spec->id) : std::string("?")) + ")";
+}
+
+core::Diagnostic make_diag(core::Severity severity, const std::string& file, core::SourceLoc loc,
+                           std::string id, std::string message) {
+  return core::Diagnostic{severity, file, loc, std::move(id), std::move(message)};
+}
+
+void ListValues::read(const core::SourceFile& source, core::DiagnosticList& diagnostics) {
+  ListParse parsed = parse_list(source);
+  for (core::Diagnostic& d : parsed.diagnostics)
+    diagnostics.add(std::move(d));
+  const ListKind other = kind_ == ListKind::axis ? ListKind::channel : ListKind::axis;
+  const char* list_name = kind_ == ListKind::axis ? "axis" : "channel";
+  auto error = [&](core::SourceLoc loc, const char* id, std::string message) {
+    diagnostics.add(make_diag(core::Severity::error, file_, loc, id, std::move(message)));
+  };
+
+  for (const ListEntry& entry : parsed.entries) {
+    const ParamSpec* spec = find_param(kind_, entry.pattern);
+    if (spec == nullptr) {
+      if (const ParamSpec* elsewhere = find_param(other, entry.pattern)) {
+        error(entry.key_loc, "NC3011",
+              entry.key + " (" + std::string(elsewhere->id) + ") is a " +
+                  (other == ListKind::axis ? "axis" : "channel") +
+                  " parameter; it cannot be set in the " + list_name + " list");
+      } else {
+        error(entry.key_loc, "NC3002",
+              "unknown parameter '" + entry.key + "' in the " + list_name + " list");
+      }
+      continue;
+    }
+    // Indices within the table's bounds; normalised key without leading zeros.
+    std::string key;
+    bool index_ok = true;
+    std::size_t index_no = 0;
+    for (std::size_t i = 0; i < spec->key.size(); ++i) {
+      key += spec->key[i];
+      if (spec->key[i] == '[') {
+        const int index = entry.indices[index_no];
+        const int max = index_no == 0 ? spec->index_max_0 : spec->index_max_1;
+        if (index > max && index_ok) {
+          error(entry.key_loc, "NC3009",
+                entry.key + " (" + std::string(spec->id) + "): index " + std::to_string(index) +
+                    " is outside 0.." + std::to_string(max));
+          index_ok = false;
+        }
+        key += std::to_string(index);
+        ++index_no;
+      }
+    }
+    if (!index_ok) continue;
+
+    StoredValue value{spec, key, 0.0, entry.value, entry.key_loc};
+    const std::string ref = key + " (" + std::string(spec->id) + ")";
+    bool ok = true;
+    switch (spec->type) {
+      case ValueType::word:
+        if (!is_identifier(entry.value)) {
+          error(entry.value_loc, "NC3003",
+                ref + " expects a name (letters, digits, '_'), found '" + entry.value + "'");
+          ok = false;
+        }
+        break;
+      case ValueType::flag_set:
+        break;  // flag names are checked where they are interpreted
+      case ValueType::real64: {
+        const auto v = parse_real(entry.value);
+        if (!v) {
+          error(entry.value_loc, "NC3003",
+                ref + " expects a number (REAL64), found '" + entry.value + "'");
+          ok = false;
+        } else {
+          value.number = *v;
+        }
+        break;
+      }
+      default: {
+        const auto v = parse_integer(entry.value);
+        if (!v) {
+          error(entry.value_loc, "NC3003",
+                ref + " expects an integer (" + std::string(type_name(spec->type)) + "), found '" +
+                    entry.value + "'");
+          ok = false;
+        } else {
+          value.number = *v;
+        }
+        break;
+      }
+    }
+    if (!ok) continue;
+    const bool numeric = spec->type != ValueType::word && spec->type != ValueType::flag_set;
+    if (numeric && (value.number < spec->min || value.number > spec->max)) {
+      error(entry.value_loc, "NC3004",
+            ref + " = " + entry.value + " is outside its range " + range_text(*spec));
+      continue;
+    }
+    if (spec->type == ValueType::axis_mode) {
+      const auto bits = static_cast<std::uint32_t>(value.number);
+      if ((bits & ~axis_mode::kKnownBits) != 0U) {
+        char buf[16];
+        std::snprintf(buf, sizeof buf, "0x%08X", bits & ~axis_mode::kKnownBits);
+        error(entry.value_loc, "NC3004",
+              ref + " = " + entry.value + " sets undefined mode bits " + buf);
+        continue;
+      }
+    }
+    if (const StoredValue* first = find(key)) {
+      error(entry.key_loc, "NC3005",
+            ref + " is given twice; first on line " + std::to_string(first->loc.line));
+      continue;
+    }
+    values_.push_back(std::move(value));
+  }
+}
+
+const StoredValue* ListValues::find(std::string_view key) const {
+  for (const StoredValue& v : values_) {
+    if (v.key == key) return &v;
+  }
+  return nullptr;
+}
+
+double ListValues::number(std::string_view key) const {
+  if (const StoredValue* v = find(key)) return v->number;
+  const ParamSpec* spec = find_param(kind_, pattern_of(key));
+  if (spec == nullptr) {
+    throw std::logic_error("machines: no parameter spec for key " + std::string(key));
+  }
+  const std::string_view d = spec->default_value;
+  if (d.empty() || d.front() == '=') return 0.0;
+  if (spec->type == ValueType::real64) return parse_real(d).value_or(0.0);
+  return parse_integer(d).value_or(0.0);
+}
+
+double ListValues::internal(std::string_view key) const {
+  const ParamSpec* spec = find_param(kind_, pattern_of(key));
+  return number(key) * (spec ? spec->to_internal : 1.0);
+}
+
+std::string ListValues::text(std::string_view key) const {
+  if (const StoredValue* v = find(key)) return v->text;
+  const ParamSpec* spec = find_param(kind_, pattern_of(key));
+  return spec ? std::string(spec->default_value) : std::string();
+}
+
+core::SourceLoc ListValues::loc(std::string_view key) const {
+  if (const StoredValue* v = find(key)) return v->loc;
+  return core::SourceLoc{};
+}
+
+std::vector<const StoredValue*> ListValues::matching(std::string_view pattern) const {
+  std::vector<const StoredValue*> out;
+  for (const StoredValue& v : values_) {
+    if (pattern_of(v.key) == pattern) out.push_back(&v);
+  }
+  return out;
+}
+
+}  // namespace detail
+
+namespace {
+
+using detail::ListValues;
+
+struct IndexEntry {
+  std::string name;  // axis name in the index (empty for the channel)
+  std::filesystem::path file;
+  core::SourceLoc loc;
+};
+
+struct MachineIndex {
+  std::string name;
+  std::optional<IndexEntry> channel;
+  std::vector<IndexEntry> axes;
+};
+
+std::vector<std::string> split_words(std::string_view line) {
+  std::vector<std::string> words;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r'))
+      ++i;
+    if (i == line.size() || line[i] == '#') break;
+    const std::size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r')
+      ++i;
+    words.emplace_back(line.substr(start, i - start));
+  }
+  return words;
+}
+
+MachineIndex read_index(const core::SourceFile& file, const std::filesystem::path& dir,
+                        core::DiagnosticList& diagnostics) {
+  MachineIndex index;
+  auto error = [&](std::uint32_t line, std::string message) {
+    diagnostics.add(detail::make_diag(core::Severity::error, file.name(), core::SourceLoc{line, 1},
+                                      "NC3010", std::move(message)));
+  };
+  for (std::uint32_t line = 1; line <= file.line_count(); ++line) {
+    const std::vector<std::string> w = split_words(file.line_text(line));
+    if (w.empty()) continue;
+    const core::SourceLoc loc{line, 1};
+    if (w[0] == "name" && w.size() == 2) {
+      index.name = w[1];
+    } else if (w[0] == "channel" && w.size() == 2) {
+      if (index.channel) {
+        error(line,
+              "second 'channel' line; first on line " + std::to_string(index.channel->loc.line));
+      } else {
+        index.channel = IndexEntry{"", dir / w[1], loc};
+      }
+    } else if (w[0] == "axis" && w.size() == 3) {
+      index.axes.push_back(IndexEntry{w[1], dir / w[2], loc});
+    } else {
+      error(line, "expected 'name <text>', 'channel <file>' or 'axis <name> <file>', found '" +
+                      std::string(file.line_text(line)) + "'");
+    }
+  }
+  if (!index.channel) error(0, "no 'channel <file>' line");
+  if (index.axes.empty()) error(0, "no 'axis <name> <file>' line");
+  return index;
+}
+
+std::optional<core::SourceFile> load_source(const std::filesystem::path& path,
+                                            const std::string& index_file, core::SourceLoc loc,
+                                            core::DiagnosticList& diagnostics) {
+  try {
+    return core::SourceFile::load(path);
+  } catch (const std::exception& e) {
+    diagnostics.add(detail::make_diag(core::Severity::error, index_file, loc, "NC3010",
+                                      "cannot read list '" + path.string() + "': " + e.what()));
+    return std::nullopt;
+  }
+}
+
+void require(const ListValues& values, std::string_view key, core::DiagnosticList& diagnostics) {
+  if (values.given(key)) return;
+  diagnostics.add(detail::make_diag(core::Severity::error, values.file(), core::SourceLoc{},
+                                    "NC3006",
+                                    "missing mandatory " + detail::param_ref(key, values.kind())));
+}
+
+AxisParams build_axis(const ListValues& v, core::DiagnosticList& diagnostics) {
+  require(v, "kopf.log_achs_name", diagnostics);
+  require(v, "kopf.achs_nr", diagnostics);
+  AxisParams a;
+  a.list_file = v.file();
+  a.name = v.text("kopf.log_achs_name");
+  a.number = static_cast<int>(v.number("kopf.achs_nr"));
+  const int typ = static_cast<int>(v.number("kenngr.achs_typ"));
+  a.kind = typ == 2 ? AxisKind::rotary : (typ == 4 ? AxisKind::spindle : AxisKind::linear);
+  a.mode_bits = static_cast<std::uint32_t>(v.number("kenngr.achs_mode"));
+  a.encoder_only = (a.mode_bits & axis_mode::kCounter) != 0U;
+  a.modulo = (a.mode_bits & axis_mode::kModulo) != 0U;
+  a.modulo_range = v.internal("enc.modulo_factor");
+  a.drive_type = static_cast<int>(v.number("kenngr.antr_typ"));
+  a.measure_signal = v.text("kenngr.measure.signal");
+  a.soft_limits = SoftLimits{v.internal("kenngr.swe_neg"), v.internal("kenngr.swe_pos")};
+
+  Dynamics& d = a.dynamics;
+  d.v_max = v.internal("dynamics.max_velocity");
+  d.a_max = v.internal("dynamics.max_acceleration");
+  d.d_max = v.internal("dynamics.max_deceleration");
+  d.j_max = v.internal("dynamics.max_jerk");
+  auto derived = [&v](std::string_view key, double fallback) {
+    return v.given(key) ? v.internal(key) : fallback;
+  };
+  d.v_default = derived("dynamics.default_velocity", d.v_max);
+  d.a_default = derived("dynamics.default_acceleration", d.a_max);
+  d.d_default = derived("dynamics.default_deceleration", d.d_max);
+  d.j_default = derived("dynamics.default_jerk", d.j_max);
+  d.v_reference = derived("dynamics.reference_velocity", d.v_max);
+  d.v_rapid = derived("nci.rapid_traverse_velocity", d.v_max);
+  d.velo_jump_factor = v.internal("nci.velo_jump_factor");
+  d.tolerance_ball = v.internal("nci.tolerance_ball");
+
+  Monitoring& m = a.monitoring;
+  m.exact_stop_window = v.internal("getriebe[0].window");
+  // P-AXIS-00532 (seed 001 §3.2): 0 disables; negative falls back to P-AXIS-00151, which
+  // ncsim does not model, so it disables too (docs/machines.md).
+  const double settling = v.internal("getriebe[0].position_settling_time");
+  if (settling > 0.0) m.settling_time = settling;
+  m.position_lag = v.number("monitoring.position_lag") != 0.0;
+  m.position_lag_max = v.internal("monitoring.position_lag_max");
+  m.position_lag_filter_time = v.internal("monitoring.position_lag_filter_time");
+  m.target_position = v.number("monitoring.target_position") != 0.0;
+  m.target_position_window = v.internal("monitoring.target_position_window");
+  m.target_position_time = v.internal("monitoring.target_position_time");
+
+  a.control.kv = v.internal("ctrl.kv");
+  a.control.pt1_time = v.internal("drive.pt1_time");
+
+  if (v.number("conv_sync.is_master") != 0.0) {
+    ConveyorAxisParams c;
+    c.enable_filter = v.number("conv_sync.enable_filter") != 0.0;
+    c.type_pos_filter = static_cast<int>(v.number("conv_sync.type_pos_filter"));
+    c.order_pos_filter = static_cast<int>(v.number("conv_sync.order_pos_filter"));
+    c.order_v_filter = static_cast<int>(v.number("conv_sync.order_v_filter"));
+    c.order_post_v_filter = static_cast<int>(v.number("conv_sync.order_post_v_filter"));
+    c.order_v_filter_dyn = static_cast<int>(v.number("conv_sync.order_v_filter_dyn"));
+    c.delay_time = v.internal("conv_sync.delay_time");
+    c.optimised_monitoring = v.number("kenngr.conv_sync_optim") != 0.0;
+    a.conveyor = c;
+  }
+  return a;
+}
+
+ChannelParams build_channel(const ListValues& v) {
+  ChannelParams ch;
+  // Flags and their look-ahead sizes are interpreted in check_machine (loader_checks.cpp).
+  if (const auto seq = parse_rotation_sequence(v.text("coordinate_system.rotation_sequence"))) {
+    ch.cs_rotation_sequence = *seq;
+  }
+  ch.spindle_count = static_cast<int>(v.number("spdl_anzahl"));
+  if (v.given("main_spindle_ax_nr")) {
+    ch.main_spindle_number = static_cast<int>(v.number("main_spindle_ax_nr"));
+  }
+  ch.main_spindle_name = v.text("main_spindle_name");
+  if (v.given("log_number_tracking_axis")) {
+    ch.tracking_axis_number = static_cast<int>(v.number("log_number_tracking_axis"));
+  }
+
+  ConveyorSyncChannel c;
+  c.master_axis_number = static_cast<int>(v.number("conveyor_sync.log_number_master"));
+  c.direction = v.number("conveyor_sync.move_direction") != 0.0 ? MoveDirection::negative_x
+                                                                : MoveDirection::positive_x;
+  c.x_virtual = v.number("conveyor_sync.x_virtual") != 0.0;
+  c.sync_in_tolerance = v.internal("conveyor_sync.sync_in_tolerance");
+  c.hold_limit_vel_factor = v.internal("conveyor_sync.hold_limit_vel_factor");
+  c.hold_limit_tolerance = v.internal("conveyor_sync.hold_limit_tolerance");
+  c.t0_shift = Eigen::Vector3d(v.internal("conveyor_sync.cart_t0_shift_x"),
+                               v.internal("conveyor_sync.cart_t0_shift_y"),
+                               v.internal("conveyor_sync.cart_t0_shift_z"));
+  c.t0_rot_abc = Eigen::Vector3d(v.internal("conveyor_sync.cart_t0_rot_a"),
+                                 v.internal("conveyor_sync.cart_t0_rot_b"),
+                                 v.internal("conveyor_sync.cart_t0_rot_c"));
+  c.pos_limit = v.internal("conveyor_sync.pos_limit");
+  c.workspace.upper = Eigen::Vector3d(v.internal("conveyor_sync.cart_swe_pos_x"),
+                                      v.internal("conveyor_sync.cart_swe_pos_y"),
+                                      v.internal("conveyor_sync.cart_swe_pos_z"));
+  c.workspace.lower = Eigen::Vector3d(v.internal("conveyor_sync.cart_swe_neg_x"),
+                                      v.internal("conveyor_sync.cart_swe_neg_y"),
+                                      v.internal("conveyor_sync.cart_swe_neg_z"));
+  for (const char axis : {'x', 'y', 'z'}) {
+    for (const char* side : {"pos", "neg"}) {
+      const std::string key = std::string("conveyor_sync.cart_swe_") + side + "_" + axis;
+      if (v.given(key)) c.workspace_configured = true;
+    }
+  }
+  ch.conveyor = c;  // check_machine drops it again when FCT_DLM is not set
+
+  int max_trafo = -1;
+  for (const auto* id : v.matching("trafo[].id")) {
+    max_trafo = std::max(max_trafo, std::stoi(id->key.substr(6)));
+  }
+  for (int j = 0; j <= max_trafo; ++j) {
+    TrafoParams t;
+    const std::string prefix = "trafo[" + std::to_string(j) + "].";
+    t.id = static_cast<int>(v.number(prefix + "id"));
+    t.type = static_cast<int>(v.number(prefix + "type"));
+    for (std::size_t k = 0; k < t.param.size(); ++k) {
+      t.param[k] = v.internal(prefix + "param[" + std::to_string(k) + "]");
+    }
+    ch.trafos.push_back(t);
+  }
+  return ch;
+}
+
+}  // namespace
+
+LoadResult load_machine(const std::filesystem::path& dir) {
+  LoadResult result;
+  const std::filesystem::path index_path = dir / kMachineIndexFile;
+  const std::string index_name = index_path.string();
+  std::optional<core::SourceFile> index_file;
+  try {
+    index_file = core::SourceFile::load(index_path);
+  } catch (const std::exception& e) {
+    result.diagnostics.add(
+        detail::make_diag(core::Severity::error, index_name, core::SourceLoc{}, "NC3010",
+                          std::string("cannot read the machine index: ") + e.what()));
+    return result;
+  }
+  const MachineIndex index = read_index(*index_file, dir, result.diagnostics);
+
+  Machine machine;
+  machine.folder = dir;
+  machine.name = !index.name.empty() ? index.name : dir.filename().string();
+
+  ListValues channel_values(ListKind::channel,
+                            index.channel ? index.channel->file.string() : std::string());
+  if (index.channel) {
+    if (auto src =
+            load_source(index.channel->file, index_name, index.channel->loc, result.diagnostics)) {
+      channel_values.read(*src, result.diagnostics);
+    }
+  }
+  machine.channel = build_channel(channel_values);
+
+  std::vector<ListValues> axis_values;
+  for (const IndexEntry& entry : index.axes) {
+    auto src = load_source(entry.file, index_name, entry.loc, result.diagnostics);
+    if (!src) continue;
+    ListValues values(ListKind::axis, entry.file.string());
+    values.read(*src, result.diagnostics);
+    AxisParams axis = build_axis(values, result.diagnostics);
+    if (values.given("kopf.log_achs_name") && axis.name != entry.name) {
+      result.diagnostics.add(detail::make_diag(
+          core::Severity::error, index_name, entry.loc, "NC3007",
+          "axis '" + entry.name + "' in the index, but its list gives " +
+              detail::param_ref("kopf.log_achs_name", ListKind::axis) + " = " + axis.name));
+    }
+    machine.axes.push_back(std::move(axis));
+    axis_values.push_back(std::move(values));
+  }
+
+  detail::check_machine(machine, channel_values, axis_values, result.diagnostics);
+  if (!result.diagnostics.has_errors()) result.machine = std::move(machine);
+  return result;
+}
+
+std::filesystem::path bundled_machine_dir(const std::filesystem::path& source_root,
+                                          std::string_view name) {
+  return source_root / "machines" / std::string(name);
+}
+
+}  // namespace ncsim::machines

@@ -1,0 +1,335 @@
+// machines/loader_checks: checks that need more than one value or more than one list, and the
+// values derived from them (look-ahead size, conveyor workspace, kinematics). Every rule cites
+// the manual it comes from or says that it is an ncsim decision (docs/machines.md).
+#include <algorithm>
+#include <array>
+#include <cstdio>
+
+#include "machines/kinematics.hpp"
+#include "machines/loader_detail.hpp"
+
+namespace ncsim::machines::detail {
+namespace {
+
+using core::Severity;
+
+struct Reporter {
+  core::DiagnosticList& list;
+  void error(const std::string& file, core::SourceLoc loc, const char* id, std::string message) {
+    list.add(make_diag(Severity::error, file, loc, id, std::move(message)));
+  }
+  void warning(const std::string& file, core::SourceLoc loc, const char* id, std::string message) {
+    list.add(make_diag(Severity::warning, file, loc, id, std::move(message)));
+  }
+};
+
+std::string hex_text(std::uint32_t bits) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "0x%08X", bits);
+  return buf;
+}
+
+// The location of `key`, or of `fallback` when `key` was not written.
+core::SourceLoc loc_of(const ListValues& v, std::string_view key, std::string_view fallback) {
+  const core::SourceLoc loc = v.loc(key);
+  return loc.line > 0 ? loc : v.loc(fallback);
+}
+
+void check_axis(AxisParams& axis, const ListValues& v, Reporter& r) {
+  const std::string& file = v.file();
+  // kenngr.achs_typ: 1 translatory, 2 rotary, 4 spindle (seed 004 §4.8.1 "type == 4 spindle").
+  const double typ = v.number("kenngr.achs_typ");
+  if (typ != 1.0 && typ != 2.0 && typ != 4.0) {
+    r.error(file, v.loc("kenngr.achs_typ"), "NC3004",
+            param_ref("kenngr.achs_typ", ListKind::axis) + " = " + number_text(typ) +
+                " must be 1 (linear), 2 (rotary) or 4 (spindle)");
+  }
+  // Seed 004 §5.2.1 note (1): ACHSMODE_LINEAR or ACHSMODE_MODULO must always be set.
+  if ((axis.mode_bits & (axis_mode::kLinear | axis_mode::kModulo)) == 0U) {
+    r.error(file, v.loc("kenngr.achs_mode"), "NC3007",
+            param_ref("kenngr.achs_mode", ListKind::axis) + " = " + hex_text(axis.mode_bits) +
+                " sets neither ACHSMODE_LINEAR (0x00000001) nor ACHSMODE_MODULO (0x00000004); "
+                "one of them must be set");
+  }
+  // Seed 004 §5.2.1: MIN(SGN32) < swe_neg < P-AXIS-00178.
+  if (axis.soft_limits.neg >= axis.soft_limits.pos) {
+    r.error(file, loc_of(v, "kenngr.swe_neg", "kenngr.swe_pos"), "NC3007",
+            param_ref("kenngr.swe_neg", ListKind::axis) + " = " +
+                number_text(v.number("kenngr.swe_neg")) + " must be below " +
+                param_ref("kenngr.swe_pos", ListKind::axis) + " = " +
+                number_text(v.number("kenngr.swe_pos")));
+  }
+  // Seed 000 §7.1.1: the reference velocity must be >= the maximum velocity.
+  Dynamics& d = axis.dynamics;
+  if (d.v_reference < d.v_max) {
+    r.error(file, loc_of(v, "dynamics.reference_velocity", "dynamics.max_velocity"), "NC3007",
+            param_ref("dynamics.reference_velocity", ListKind::axis) + " = " +
+                number_text(d.v_reference) + " must not be below " +
+                param_ref("dynamics.max_velocity", ListKind::axis) + " = " + number_text(d.v_max));
+  }
+  // ncsim decision: rapid traverse above the maximum velocity is a contradiction.
+  if (d.v_rapid > d.v_max) {
+    r.error(file, loc_of(v, "nci.rapid_traverse_velocity", "dynamics.max_velocity"), "NC3007",
+            param_ref("nci.rapid_traverse_velocity", ListKind::axis) + " = " +
+                number_text(d.v_rapid) + " must not exceed " +
+                param_ref("dynamics.max_velocity", ListKind::axis) + " = " + number_text(d.v_max));
+  }
+  // Seed 000 §7.1.1: a default above its maximum gives a warning, not an error; ncsim limits it.
+  struct DefaultMax {
+    double* value;
+    double max;
+    const char* key;
+    const char* max_key;
+  };
+  const std::array<DefaultMax, 4> pairs = {{
+      {&d.v_default, d.v_max, "dynamics.default_velocity", "dynamics.max_velocity"},
+      {&d.a_default, d.a_max, "dynamics.default_acceleration", "dynamics.max_acceleration"},
+      {&d.d_default, d.d_max, "dynamics.default_deceleration", "dynamics.max_deceleration"},
+      {&d.j_default, d.j_max, "dynamics.default_jerk", "dynamics.max_jerk"},
+  }};
+  for (const DefaultMax& p : pairs) {
+    if (*p.value > p.max) {
+      r.warning(file, v.loc(p.key), "NC3020",
+                param_ref(p.key, ListKind::axis) + " = " + number_text(*p.value) + " exceeds " +
+                    param_ref(p.max_key, ListKind::axis) + " = " + number_text(p.max) +
+                    "; limited to the maximum");
+      *p.value = p.max;
+    }
+  }
+  // Seed 004 §4.2: the conveyor is a spindle axis, or a pure encoder axis (ACHSMODE_COUNTER).
+  if (axis.conveyor && axis.kind != AxisKind::spindle && !axis.encoder_only) {
+    r.error(file, v.loc("conv_sync.is_master"), "NC3008",
+            param_ref("conv_sync.is_master", ListKind::axis) + " = 1 on axis " + axis.name +
+                ", which is neither a spindle (kenngr.achs_typ 4) nor an encoder axis "
+                "(kenngr.achs_mode bit 0x00100000)");
+  }
+}
+
+// P-CHAN-00650 flag names (seed 004 §5.2.2, interpolation function table).
+constexpr std::array<std::string_view, 16> kKnown = {
+    "FCT_IPO_DEFAULT",         "FCT_LOOK_AHEAD_LOW",
+    "FCT_LOOK_AHEAD_STANDARD", "FCT_LOOK_AHEAD_HIGH",
+    "FCT_LOOK_AHEAD_CUSTOM",   "FCT_SYNC",
+    "FCT_LOOK_AHEAD_OPT",      "FCT_LIFT_UP_TIME",
+    "FCT_SHIFT_NCBL",          "FCT_CALC_STATE_AT_T",
+    "FCT_CALC_TIME",           "FCT_CONTOUR_LAH",
+    "FCT_DYN_POS_LIMIT",       "FCT_EXTENSION_EQUIDIST",
+    "FCT_CALC_POS_V_0",        "FCT_DLM"};
+
+// P-CHAN-00650 flags (seed 004 §5.2.2, interpolation function table).
+void interpret_functions(ChannelParams& ch, const ListValues& v, Reporter& r) {
+  const char* key = "configuration.interpolator.function";
+  const std::string ref = param_ref(key, ListKind::channel);
+  const std::string text = v.text(key);
+  InterpolatorFunction& f = ch.interpolator;
+  std::string size_flag;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t bar = text.find('|', start);
+    const std::string flag =
+        text.substr(start, bar == std::string::npos ? std::string::npos : bar - start);
+    start = bar == std::string::npos ? text.size() + 1 : bar + 1;
+    if (std::find(kKnown.begin(), kKnown.end(), flag) == kKnown.end()) {
+      r.error(v.file(), v.loc(key), "NC3003", ref + ": unknown function '" + flag + "'");
+      continue;
+    }
+    f.flags.push_back(flag);
+    int blocks = 0;
+    if (flag == "FCT_IPO_DEFAULT" || flag == "FCT_LOOK_AHEAD_STANDARD") blocks = 120;
+    if (flag == "FCT_LOOK_AHEAD_LOW") blocks = 30;
+    if (flag == "FCT_LOOK_AHEAD_HIGH") blocks = 190;
+    if (flag == "FCT_LOOK_AHEAD_CUSTOM") {
+      r.error(v.file(), v.loc(key), "NC3013",
+              ref +
+                  ": FCT_LOOK_AHEAD_CUSTOM needs P-CHAN-00653, whose key the manuals at hand "
+                  "do not give; ncsim does not support it");
+    }
+    if (blocks > 0) {
+      if (!size_flag.empty() && blocks != f.look_ahead_blocks) {
+        r.error(v.file(), v.loc(key), "NC3007",
+                ref + ": " + size_flag + " and " + flag + " set different look-ahead sizes");
+      }
+      size_flag = flag;
+      f.look_ahead_blocks = blocks;
+    }
+    f.conveyor_tracking = f.conveyor_tracking || flag == "FCT_DLM";
+    f.sync = f.sync || flag == "FCT_SYNC";
+    f.look_ahead_opt = f.look_ahead_opt || flag == "FCT_LOOK_AHEAD_OPT";
+  }
+}
+
+void check_conveyor(Machine& m, const ListValues& ch, const std::vector<ListValues>& axes,
+                    Reporter& r) {
+  const std::string& file = ch.file();
+  // At most one conveyor axis (P-CHAN-00362 names exactly one). The one the channel names is
+  // kept; every other one is reported (without a named one: all but the first).
+  const int named = ch.given("conveyor_sync.log_number_master")
+                        ? static_cast<int>(ch.number("conveyor_sync.log_number_master"))
+                        : 0;
+  const AxisParams* first = nullptr;
+  for (const AxisParams& a : m.axes) {
+    if (a.conveyor && (first == nullptr || a.number == named)) first = &a;
+    if (a.conveyor && a.number == named) break;
+  }
+  for (std::size_t i = 0; i < m.axes.size(); ++i) {
+    if (!m.axes[i].conveyor || &m.axes[i] == first) continue;
+    r.error(axes[i].file(), axes[i].loc("conv_sync.is_master"), "NC3008",
+            param_ref("conv_sync.is_master", ListKind::axis) + " = 1 on axis " + m.axes[i].name +
+                ", but axis " + first->name + " (" + first->list_file +
+                ") is already the conveyor axis; only one is allowed");
+  }
+  if (!m.channel.interpolator.conveyor_tracking) {
+    // Seed 004 §1: FCT_DLM is required to use conveyor tracking.
+    if (first != nullptr) {
+      r.error(file, ch.loc("configuration.interpolator.function"), "NC3008",
+              "axis " + first->name + " is a conveyor axis (conv_sync.is_master = 1), but " +
+                  param_ref("configuration.interpolator.function", ListKind::channel) +
+                  " does not contain FCT_DLM");
+    }
+    m.channel.conveyor.reset();
+    return;
+  }
+  ConveyorSyncChannel& c = *m.channel.conveyor;
+  const char* master_key = "conveyor_sync.log_number_master";
+  if (!ch.given(master_key)) {
+    r.error(file, ch.loc("configuration.interpolator.function"), "NC3006",
+            "missing mandatory " + param_ref(master_key, ListKind::channel) +
+                ": FCT_DLM needs the logical number of the conveyor axis");
+  } else {
+    const AxisParams* master = m.find_axis_number(c.master_axis_number);
+    if (master == nullptr) {
+      std::string numbers;
+      for (const AxisParams& a : m.axes) {
+        numbers += (numbers.empty() ? "" : ", ") + std::to_string(a.number);
+      }
+      r.error(file, ch.loc(master_key), "NC3008",
+              param_ref(master_key, ListKind::channel) + " = " +
+                  std::to_string(c.master_axis_number) +
+                  " names no axis (axis numbers: " + numbers + ")");
+    } else if (!master->conveyor) {
+      r.error(file, ch.loc(master_key), "NC3008",
+              param_ref(master_key, ListKind::channel) + " = " +
+                  std::to_string(c.master_axis_number) + " names axis " + master->name +
+                  ", which is not a conveyor axis (conv_sync.is_master (P-AXIS-00708) is 0)");
+    }
+  }
+  // Seed 004 §5.2.2 P-CHAN-00366: too large -> warning 21483 and the maximum is used.
+  const char* factor_key = "conveyor_sync.hold_limit_vel_factor";
+  if (ch.number(factor_key) > 1000.0) {
+    r.warning(file, ch.loc(factor_key), "21483",
+              param_ref(factor_key, ListKind::channel) + " = " +
+                  number_text(ch.number(factor_key)) + " is above 1000 (100 %); limited to 1000");
+    c.hold_limit_vel_factor = 1.0;
+  }
+  // Workspace (seed 004 §4.4.1): configured cuboid, else the soft limits of the first three
+  // axes; with a kinematic transformation it must be configured.
+  if (c.workspace_configured) {
+    const char* names[3] = {"x", "y", "z"};
+    for (int i = 0; i < 3; ++i) {
+      if (c.workspace.lower[i] >= c.workspace.upper[i]) {
+        const std::string neg = std::string("conveyor_sync.cart_swe_neg_") + names[i];
+        const std::string pos = std::string("conveyor_sync.cart_swe_pos_") + names[i];
+        r.error(file, loc_of(ch, neg, pos), "NC3007",
+                param_ref(neg, ListKind::channel) + " = " + number_text(ch.number(neg)) +
+                    " must be below " + param_ref(pos, ListKind::channel) + " = " +
+                    number_text(ch.number(pos)));
+      }
+    }
+  } else {
+    const bool kinematic = !m.channel.trafos.empty() && m.channel.trafos[0].id != 0;
+    if (kinematic) {
+      r.error(file, ch.loc("trafo[0].id"), "NC3006",
+              "with a kinematic transformation the conveyor workspace "
+              "conveyor_sync.cart_swe_pos_x..cart_swe_neg_z (P-CHAN-00859..00864) must be "
+              "configured (seed 004 section 4.4.1)");
+    }
+    for (int i = 0; i < 3 && i < static_cast<int>(m.axes.size()); ++i) {
+      c.workspace.lower[i] = m.axes[static_cast<std::size_t>(i)].soft_limits.neg;
+      c.workspace.upper[i] = m.axes[static_cast<std::size_t>(i)].soft_limits.pos;
+    }
+  }
+}
+
+void check_channel_refs(Machine& m, const ListValues& ch, Reporter& r) {
+  const std::string& file = ch.file();
+  const std::string seq = ch.text("coordinate_system.rotation_sequence");
+  if (!parse_rotation_sequence(seq)) {
+    r.error(file, ch.loc("coordinate_system.rotation_sequence"), "NC3004",
+            param_ref("coordinate_system.rotation_sequence", ListKind::channel) + " = " + seq +
+                " must be one of XYZ XZY YXZ YZX ZXY ZYX XYX XZX YXY YZY ZXZ ZYZ");
+  }
+  if (m.channel.main_spindle_number) {
+    const AxisParams* a = m.find_axis_number(*m.channel.main_spindle_number);
+    if (a == nullptr || a->kind != AxisKind::spindle) {
+      r.error(file, ch.loc("main_spindle_ax_nr"), "NC3007",
+              param_ref("main_spindle_ax_nr", ListKind::channel) + " = " +
+                  std::to_string(*m.channel.main_spindle_number) + " names no spindle axis");
+    }
+  }
+  if (!m.channel.main_spindle_name.empty()) {
+    const AxisParams* a = m.find_axis(m.channel.main_spindle_name);
+    if (a == nullptr || a->kind != AxisKind::spindle) {
+      r.error(file, ch.loc("main_spindle_name"), "NC3007",
+              param_ref("main_spindle_name", ListKind::channel) + " = " +
+                  m.channel.main_spindle_name + " names no spindle axis");
+    }
+  }
+  if (m.channel.tracking_axis_number &&
+      m.find_axis_number(*m.channel.tracking_axis_number) == nullptr) {
+    r.error(file, ch.loc("log_number_tracking_axis"), "NC3007",
+            param_ref("log_number_tracking_axis", ListKind::channel) + " = " +
+                std::to_string(*m.channel.tracking_axis_number) + " names no axis");
+  }
+  // trafo[j].param / type without trafo[j].id.
+  for (const char* pattern : {"trafo[].param[]", "trafo[].type"}) {
+    for (const StoredValue* p : ch.matching(pattern)) {
+      const std::string id_key = p->key.substr(0, p->key.find(']') + 1) + ".id";
+      if (!ch.given(id_key)) {
+        r.error(file, p->loc, "NC3006",
+                p->key + " is given but " + param_ref(id_key, ListKind::channel) + " is missing");
+      }
+    }
+  }
+  // Each configured kinematic must be buildable (unknown id: 292005, isg-language §5.9).
+  for (std::size_t j = 0; j < m.channel.trafos.size(); ++j) {
+    const TrafoParams& t = m.channel.trafos[j];
+    const std::string id_key = "trafo[" + std::to_string(j) + "].id";
+    if (!ch.given(id_key)) continue;
+    const int kin_id = t.type != 0 ? t.type : t.id;
+    const KinematicsBuild built = make_kinematics(kin_id, t.param);
+    if (built.error) {
+      r.error(file, ch.loc(id_key), built.error->id.c_str(),
+              param_ref(id_key, ListKind::channel) + ": " + built.error->message);
+    }
+  }
+}
+
+}  // namespace
+
+void check_machine(Machine& m, const ListValues& ch, const std::vector<ListValues>& axes,
+                   core::DiagnosticList& diagnostics) {
+  Reporter r{diagnostics};
+  for (std::size_t i = 0; i < m.axes.size(); ++i)
+    check_axis(m.axes[i], axes[i], r);
+  // Names and logical numbers are unique (ncsim decision: the channel addresses axes by both).
+  for (std::size_t i = 0; i < m.axes.size(); ++i) {
+    for (std::size_t k = 0; k < i; ++k) {
+      if (m.axes[i].number == m.axes[k].number && axes[i].given("kopf.achs_nr")) {
+        r.error(axes[i].file(), axes[i].loc("kopf.achs_nr"), "NC3012",
+                param_ref("kopf.achs_nr", ListKind::axis) + " = " +
+                    std::to_string(m.axes[i].number) + " is also the number of axis " +
+                    m.axes[k].name + " (" + m.axes[k].list_file + ")");
+      }
+      if (m.axes[i].name == m.axes[k].name && axes[i].given("kopf.log_achs_name")) {
+        r.error(axes[i].file(), axes[i].loc("kopf.log_achs_name"), "NC3012",
+                param_ref("kopf.log_achs_name", ListKind::axis) + " = " + m.axes[i].name +
+                    " is also the name of the axis in " + m.axes[k].list_file);
+      }
+    }
+  }
+  interpret_functions(m.channel, ch, r);
+  check_channel_refs(m, ch, r);
+  check_conveyor(m, ch, axes, r);
+}
+
+}  // namespace ncsim::machines::detail

@@ -1,0 +1,70 @@
+#pragma once
+// machines/loader_detail: internals shared by loader.cpp and loader_checks.cpp. Not API.
+//
+// ListValues holds the validated entries of one list (type- and range-checked, duplicates
+// rejected) and answers typed lookups with the table defaults; it is used only while loading.
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/diagnostic.hpp"
+#include "core/source_file.hpp"
+#include "machines/machine.hpp"
+#include "machines/param_table.hpp"
+
+namespace ncsim::machines::detail {
+
+struct StoredValue {
+  const ParamSpec* spec = nullptr;
+  std::string key;      ///< normalised key ("trafo[0].param[4]")
+  double number = 0.0;  ///< numeric types, in list units
+  std::string text;     ///< word / flag_set values, and the value as written
+  core::SourceLoc loc;  ///< position of the key
+};
+
+class ListValues {
+ public:
+  ListValues(ListKind kind, std::string file) : kind_(kind), file_(std::move(file)) {}
+
+  /// Parses and validates `source`, adding diagnostics for bad entries (which are dropped).
+  void read(const core::SourceFile& source, core::DiagnosticList& diagnostics);
+
+  const StoredValue* find(std::string_view key) const;
+  bool given(std::string_view key) const { return find(key) != nullptr; }
+  /// Value in list units, or the table default.
+  double number(std::string_view key) const;
+  /// Value converted to internal units (spec.to_internal applied).
+  double internal(std::string_view key) const;
+  /// Word / flag value as written, or the table default.
+  std::string text(std::string_view key) const;
+  /// Position of the key; line 0 when absent.
+  core::SourceLoc loc(std::string_view key) const;
+  /// Every stored value whose key matches an indexed pattern ("trafo[].id").
+  std::vector<const StoredValue*> matching(std::string_view pattern) const;
+
+  const std::string& file() const { return file_; }
+  ListKind kind() const { return kind_; }
+
+ private:
+  ListKind kind_;
+  std::string file_;
+  std::vector<StoredValue> values_;
+};
+
+/// "kenngr.swe_pos (P-AXIS-00178)"
+std::string param_ref(std::string_view key, ListKind kind);
+/// Pattern of a normalised key: digits inside brackets removed.
+std::string pattern_of(std::string_view key);
+/// Short number text for messages (integers without decimals).
+std::string number_text(double value);
+
+core::Diagnostic make_diag(core::Severity severity, const std::string& file, core::SourceLoc loc,
+                           std::string id, std::string message);
+
+/// Cross-list checks and derived values (loader_checks.cpp). `axis_values` is parallel to
+/// machine.axes. Adds diagnostics; may limit values where the manual says so (21483).
+void check_machine(Machine& machine, const ListValues& channel_values,
+                   const std::vector<ListValues>& axis_values, core::DiagnosticList& diagnostics);
+
+}  // namespace ncsim::machines::detail

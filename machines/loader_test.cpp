@@ -1,0 +1,154 @@
+#include "machines/loader.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+#include <fstream>
+
+#include "machines/param_table.hpp"
+
+namespace ncsim::machines {
+namespace {
+
+std::filesystem::path source_root() {
+  const char* root = std::getenv("NCSIM_SOURCE_DIR");
+  REQUIRE_MESSAGE(root != nullptr, "NCSIM_SOURCE_DIR must point to the repository");
+  return root;
+}
+
+std::string all_diagnostics(const LoadResult& r) {
+  std::string out;
+  for (const auto& d : r.diagnostics.items())
+    out += core::format(d);
+  return out;
+}
+
+Machine load_bundled(std::string_view name) {
+  const LoadResult r = load_machine(bundled_machine_dir(source_root(), name));
+  INFO(all_diagnostics(r));
+  CHECK(r.diagnostics.items().empty());
+  REQUIRE(r.machine.has_value());
+  return *r.machine;
+}
+
+TEST_CASE("every bundled machine loads without any diagnostic") {
+  for (const char* name : {"laser_portal", "delta_picker", "static_saw", "portal_3x"}) {
+    CAPTURE(name);
+    const Machine m = load_bundled(name);
+    CHECK(m.name == name);
+  }
+}
+
+TEST_CASE("laser_portal: soft limits arrive in mm and the conveyor is the spindle S") {
+  const Machine m = load_bundled("laser_portal");
+  REQUIRE(m.axes.size() == 4);
+  const AxisParams* x = m.find_axis("X");
+  REQUIRE(x != nullptr);
+  CHECK(x->soft_limits.pos == doctest::Approx(4000.0));  // 40000000 x 0.1 um
+  CHECK(x->soft_limits.neg == doctest::Approx(-200.0));
+  CHECK(m.find_axis("Z")->soft_limits.pos == doctest::Approx(300.0));
+  const AxisParams* s = m.find_axis("S1");  // "S" answers to S1 as well
+  REQUIRE(s != nullptr);
+  CHECK(s->name == "S");
+  CHECK(s->kind == AxisKind::spindle);
+  REQUIRE(s->conveyor.has_value());
+  CHECK(s->conveyor->delay_time == doctest::Approx(0.017455));  // 17455 us
+  CHECK(s->conveyor->order_v_filter == 10);
+  CHECK(m.conveyor_axis() == s);
+  CHECK(x->monitoring.exact_stop_window == doctest::Approx(0.05));  // 500 x 0.1 um
+  REQUIRE(x->monitoring.settling_time.has_value());
+  CHECK(*x->monitoring.settling_time == doctest::Approx(0.1));  // 100000 us
+  REQUIRE(m.channel.conveyor.has_value());
+  const ConveyorSyncChannel& c = *m.channel.conveyor;
+  CHECK(m.channel.interpolator.conveyor_tracking);
+  CHECK(c.master_axis_number == 4);
+  CHECK(c.hold_limit_vel_factor == doctest::Approx(0.95));  // 950 x 0.1 %
+  CHECK(c.hold_limit_tolerance == doctest::Approx(5.0));    // 5e4 x 0.1 um
+  CHECK(c.sync_in_tolerance == doctest::Approx(0.01));
+  CHECK(c.pos_limit == doctest::Approx(-190.0));
+  CHECK_FALSE(c.workspace_configured);  // falls back to the soft limits of X, Y, Z
+  CHECK(c.workspace.upper.x() == doctest::Approx(4000.0));
+  CHECK(c.workspace.lower.z() == doctest::Approx(-100.0));
+  CHECK(m.find_axis("X")->conveyor == std::nullopt);
+  CHECK(x->dynamics.v_default == doctest::Approx(x->dynamics.v_max));
+}
+
+TEST_CASE("delta_picker: trafo parameters arrive in mm and the workspace is configured") {
+  const Machine m = load_bundled("delta_picker");
+  REQUIRE(m.channel.trafos.size() == 1);
+  const TrafoParams& t = m.channel.trafos[0];
+  CHECK(t.id == 37);
+  CHECK(t.param[4] == doctest::Approx(200.0));
+  CHECK(t.param[6] == doctest::Approx(465.544));
+  CHECK(t.param[10] == doctest::Approx(-180.0));
+  REQUIRE(m.channel.conveyor.has_value());
+  CHECK(m.channel.conveyor->workspace_configured);
+  CHECK(m.channel.conveyor->workspace.lower.z() == doctest::Approx(-500.0));
+  CHECK(m.find_axis("S1")->number == 5);
+  CHECK(m.channel.main_spindle_number == 5);
+  CHECK(m.find_axis("X")->kind == AxisKind::rotary);
+}
+
+TEST_CASE("static_saw: virtual X, T0 shift and tracking axis arrive converted") {
+  const Machine m = load_bundled("static_saw");
+  REQUIRE(m.channel.conveyor.has_value());
+  CHECK(m.channel.conveyor->x_virtual);
+  CHECK(m.channel.conveyor->t0_shift.x() == doctest::Approx(-100.0));
+  CHECK(m.channel.conveyor->t0().apply(Eigen::Vector3d::Zero()).x() == doctest::Approx(-100.0));
+  CHECK(m.channel.tracking_axis_number == 4);
+  CHECK(m.find_axis("Z")->soft_limits.pos == doctest::Approx(55.0));
+  CHECK(m.find_axis("X")->drive_type == 4);
+}
+
+TEST_CASE("portal_3x: no conveyor, standard look-ahead, unknown axis names give nothing") {
+  const Machine m = load_bundled("portal_3x");
+  CHECK_FALSE(m.channel.conveyor.has_value());
+  CHECK(m.channel.interpolator.look_ahead_blocks == 120);
+  CHECK(m.conveyor_axis() == nullptr);
+  CHECK(m.find_axis("A") == nullptr);
+  CHECK(m.find_axis("S1") == nullptr);
+  REQUIRE(m.soft_limits("Z").has_value());
+  CHECK(m.soft_limits("Z")->neg == doctest::Approx(-300.0));
+  CHECK(m.axes[0].name == "X");
+}
+
+TEST_CASE("a missing machine folder is one diagnostic, not an exception") {
+  const LoadResult r = load_machine(source_root() / "machines" / "no_such_machine");
+  CHECK_FALSE(r.machine.has_value());
+  REQUIRE(r.diagnostics.items().size() == 1);
+  CHECK(r.diagnostics.items()[0].id == "NC3010");
+}
+
+TEST_CASE(
+    "warnings: hold_limit_vel_factor above 1000 is limited (21483), defaults above "
+    "maxima are limited (NC3020), and the machine still loads") {
+  const LoadResult r = load_machine(source_root() / "machines" / "testdata" / "warn");
+  INFO(all_diagnostics(r));
+  REQUIRE(r.machine.has_value());
+  CHECK_FALSE(r.diagnostics.has_errors());
+  REQUIRE(r.diagnostics.items().size() == 2);
+  CHECK(r.diagnostics.items()[0].id == "NC3020");
+  CHECK(r.diagnostics.items()[0].severity == core::Severity::warning);
+  CHECK(r.diagnostics.items()[1].id == "21483");
+  CHECK(r.diagnostics.items()[1].loc.line == 4);
+  CHECK(r.machine->channel.conveyor->hold_limit_vel_factor == doctest::Approx(1.0));
+  CHECK(r.machine->find_axis("X")->dynamics.v_default == doctest::Approx(100.0));
+}
+
+TEST_CASE("the parameter table has unique keys, sane ranges and docs for every key") {
+  const auto table = param_table();
+  std::ifstream docs(source_root() / "docs" / "machines.md");
+  REQUIRE(docs.good());
+  const std::string text((std::istreambuf_iterator<char>(docs)), std::istreambuf_iterator<char>());
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    CAPTURE(table[i].key);
+    CHECK(table[i].min <= table[i].max);
+    CHECK(text.find("`" + std::string(table[i].key) + "`") != std::string::npos);
+    for (std::size_t k = 0; k < i; ++k) {
+      CHECK_FALSE((table[k].key == table[i].key && table[k].list == table[i].list));
+    }
+  }
+}
+
+}  // namespace
+}  // namespace ncsim::machines

@@ -1,0 +1,164 @@
+#pragma once
+// machines/machine: a loaded machine as honest typed values, in internal units.
+//
+// Purpose: what every downstream stage reads (planner limits, PTP axes, conveyor, frames,
+// kinematics). Built once by load_machine() (loader.hpp) from ISG lists; nothing here is
+// looked up by string except the axis name accessors the CLI and interpreter need.
+// Units: mm, s, degrees (rotary axes and delta drives), fractions; each member says its unit.
+// "mm | deg" means mm for linear axes and spindles used as linear conveyors, deg for rotary.
+// Invariants (checked by the loader): soft_limits.neg < soft_limits.pos; axis numbers and names
+// are unique; at most one conveyor axis, and it is a spindle or an encoder (COUNTER) axis;
+// default dynamics never exceed the maxima after loading (they are limited, with a warning).
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "machines/frame.hpp"
+
+namespace ncsim::machines {
+
+/// kenngr.achs_typ: 1 translatory, 2 rotary, 4 spindle.
+enum class AxisKind { linear, rotary, spindle };
+
+struct SoftLimits {
+  double neg = -1000.0;  ///< kenngr.swe_neg P-AXIS-00177 [mm | deg]
+  double pos = 1000.0;   ///< kenngr.swe_pos P-AXIS-00178 [mm | deg]
+};
+
+struct Dynamics {
+  double v_max = 0.0;             ///< maximum velocity [mm/s | deg/s]
+  double a_max = 0.0;             ///< maximum acceleration [mm/s^2 | deg/s^2]
+  double d_max = 0.0;             ///< maximum deceleration (positive) [mm/s^2 | deg/s^2]
+  double j_max = 0.0;             ///< maximum jerk [mm/s^3 | deg/s^3]
+  double v_default = 0.0;         ///< default velocity [mm/s | deg/s]
+  double a_default = 0.0;         ///< default acceleration [mm/s^2 | deg/s^2]
+  double d_default = 0.0;         ///< default deceleration [mm/s^2 | deg/s^2]
+  double j_default = 0.0;         ///< default jerk [mm/s^3 | deg/s^3]
+  double v_reference = 0.0;       ///< drive reference velocity, >= v_max [mm/s | deg/s]
+  double v_rapid = 0.0;           ///< G0 rapid traverse velocity, <= v_max [mm/s | deg/s]
+  double velo_jump_factor = 1.0;  ///< VELOJUMP C0 [-] (seed 000 §7.1.7)
+  double tolerance_ball = 0.0;    ///< tolerance-ball radius [mm | deg]
+};
+
+struct Monitoring {
+  double exact_stop_window = 0.05;         ///< getriebe[0].window P-AXIS-00236 [mm | deg]
+  std::optional<double> settling_time;     ///< P-AXIS-00532 [s]; nullopt: not monitored
+  bool position_lag = true;                ///< position lag monitoring on
+  double position_lag_max = 5.0;           ///< [mm | deg]
+  double position_lag_filter_time = 0.02;  ///< [s]
+  bool target_position = true;             ///< target position monitoring on
+  double target_position_window = 2.0;     ///< [mm | deg]
+  double target_position_time = 0.02;      ///< [s]
+};
+
+struct ControlLoop {
+  double kv = 1.0;        ///< position controller gain [1/s] ((mm/s)/mm)
+  double pt1_time = 0.0;  ///< drive PT1 time constant [s]; 0 = ideal drive
+};
+
+/// conv_sync.* of the conveyor axis (seed 004 §5.2.1); present only when is_master = 1.
+struct ConveyorAxisParams {
+  bool enable_filter = false;         ///< P-AXIS-00620 position actual value filter on
+  int type_pos_filter = 0;            ///< 0 FIR low-pass, 1 average (ncsim decision)
+  int order_pos_filter = 0;           ///< position filter order [samples]
+  int order_v_filter = 20;            ///< P-AXIS-00623 [samples]
+  int order_post_v_filter = 6;        ///< P-AXIS-00624 [samples]
+  int order_v_filter_dyn = 10;        ///< P-AXIS-00625 [samples]
+  double delay_time = 0.0;            ///< P-AXIS-00626 [s]
+  bool optimised_monitoring = false;  ///< kenngr.conv_sync_optim P-AXIS-00555
+};
+
+struct AxisParams {
+  std::string name;  ///< kopf.log_achs_name, the program name (X, Y, S1, ...)
+  int number = 0;    ///< kopf.achs_nr, logical axis number
+  AxisKind kind = AxisKind::linear;
+  std::uint32_t mode_bits = 1;  ///< kenngr.achs_mode P-AXIS-00015
+  bool encoder_only = false;    ///< ACHSMODE_COUNTER: pure encoder axis
+  bool modulo = false;          ///< ACHSMODE_MODULO
+  double modulo_range = 360.0;  ///< enc.modulo_factor [mm | deg]
+  int drive_type = 0;           ///< kenngr.antr_typ P-AXIS-00020 (stored, not interpreted)
+  std::string measure_signal;   ///< kenngr.measure.signal
+  SoftLimits soft_limits;
+  Dynamics dynamics;
+  Monitoring monitoring;
+  ControlLoop control;
+  std::optional<ConveyorAxisParams> conveyor;  ///< set on the conveyor axis only
+  std::string list_file;                       ///< list the axis came from (for messages)
+};
+
+/// Look-ahead and functions of P-CHAN-00650.
+struct InterpolatorFunction {
+  int look_ahead_blocks = 120;     ///< 30 / 120 / 190 (seed 004 §5.2.2 function table)
+  bool conveyor_tracking = false;  ///< FCT_DLM
+  bool sync = false;               ///< FCT_SYNC
+  bool look_ahead_opt = false;     ///< FCT_LOOK_AHEAD_OPT
+  std::vector<std::string> flags;  ///< every flag as written, for display
+};
+
+/// Cuboid in MCS (P-CHAN-00859..00864) [mm].
+struct Workspace {
+  Eigen::Vector3d lower = Eigen::Vector3d::Zero();
+  Eigen::Vector3d upper = Eigen::Vector3d::Zero();
+};
+
+enum class MoveDirection { positive_x, negative_x };
+
+/// conveyor_sync.* channel parameters (seed 004 §5.2.2), converted.
+struct ConveyorSyncChannel {
+  int master_axis_number = 0;                            ///< P-CHAN-00362 logical axis number
+  MoveDirection direction = MoveDirection::positive_x;   ///< P-CHAN-00363
+  bool x_virtual = false;                                ///< P-CHAN-00364
+  double sync_in_tolerance = 0.0;                        ///< P-CHAN-00365 [mm]
+  double hold_limit_vel_factor = 1.0;                    ///< P-CHAN-00366 [fraction], <= 1
+  double hold_limit_tolerance = 0.0;                     ///< P-CHAN-00367 [mm]
+  Eigen::Vector3d t0_shift = Eigen::Vector3d::Zero();    ///< P-CHAN-00368..00370 [mm]
+  Eigen::Vector3d t0_rot_abc = Eigen::Vector3d::Zero();  ///< P-CHAN-00371..00373 [deg]
+  double pos_limit = 0.0;                                ///< P-CHAN-00374 [mm]
+  /// P-CHAN-00859..00864; when not configured: soft limits of the first three axes (§4.4.1).
+  Workspace workspace;
+  bool workspace_configured = false;  ///< true when any of 00859..00864 was given
+
+  /// PCS0 -> MCS.
+  Frame t0() const { return t0_frame(t0_shift, t0_rot_abc); }
+};
+
+struct TrafoParams {
+  int id = 0;                      ///< P-CHAN-00262
+  int type = 0;                    ///< P-CHAN-00829 (0: equals id)
+  std::array<double, 74> param{};  ///< P-CHAN-00263, converted [mm | deg]
+};
+
+struct ChannelParams {
+  InterpolatorFunction interpolator;
+  std::optional<ConveyorSyncChannel> conveyor;  ///< set when FCT_DLM is given
+  std::vector<TrafoParams> trafos;              ///< trafo[0..]; empty: no kinematic
+  RotationSequence cs_rotation_sequence = RotationSequence::ZYX;  ///< P-CHAN-00394
+  int spindle_count = 0;                                          ///< spdl_anzahl
+  std::optional<int> main_spindle_number;                         ///< main_spindle_ax_nr
+  std::string main_spindle_name;                                  ///< main_spindle_name
+  std::optional<int> tracking_axis_number;                        ///< log_number_tracking_axis
+};
+
+struct Machine {
+  std::string name;              ///< from machine.lis, else the folder name
+  std::filesystem::path folder;  ///< where the lists are
+  ChannelParams channel;
+  std::vector<AxisParams> axes;  ///< machine order: as listed in machine.lis
+
+  /// The axis a program addresses by `program_name` (X, Y, Z, C, S1 ...). A spindle whose list
+  /// name is "S" also answers to "S1" and vice versa (ncsim decision: the first spindle).
+  const AxisParams* find_axis(std::string_view program_name) const;
+  /// The axis with kopf.achs_nr == number.
+  const AxisParams* find_axis_number(int number) const;
+  /// The conveyor axis (conv_sync.is_master = 1), if any.
+  const AxisParams* conveyor_axis() const;
+  /// Soft limits of the named axis (for `ncsim check --machine`).
+  std::optional<SoftLimits> soft_limits(std::string_view program_name) const;
+};
+
+}  // namespace ncsim::machines

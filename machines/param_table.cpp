@@ -1,0 +1,140 @@
+#include "machines/param_table.hpp"
+
+#include <array>
+
+namespace ncsim::machines {
+namespace {
+
+constexpr double kSgn32Min = -2147483648.0;
+constexpr double kSgn32Max = 2147483647.0;
+constexpr double kUns16Max = 65535.0;
+constexpr double kUns32Max = 4294967295.0;
+constexpr double kRealMax = 1.0e300;  // MAX(REAL64) in practice; keeps messages readable
+
+// Conversions (docs/machines.md, "Units"): 0.1 um -> mm and 0.0001 deg -> deg share 1e-4;
+// 0.1 mdeg is 1e-4 deg too (seed 004 §5.2.2 P-CHAN-00371); us -> s; 0.1 % -> fraction.
+constexpr double kTenthMicron = 1.0e-4;
+constexpr double kMicrosecond = 1.0e-6;
+constexpr double kPerMille = 1.0e-3;
+
+constexpr ListKind A = ListKind::axis;
+constexpr ListKind C = ListKind::channel;
+constexpr Need kOpt = Need::optional;
+constexpr Need kMust = Need::mandatory;
+constexpr Need kDerived = Need::derived;
+
+// clang-format off
+constexpr std::array kTable = {
+  // ---- axis list: head and characteristics ------------------------------------------------
+  ParamSpec{"NCSIM-AXIS-001", "kopf.log_achs_name", A, ValueType::word, 0, 0, "", 1, "", "", kMust, -1, -1, "004 §4.8.1 (listing)"},
+  ParamSpec{"NCSIM-AXIS-002", "kopf.achs_nr", A, ValueType::uns16, 1, kUns16Max, "", 1, "", "", kMust, -1, -1, "004 §4.8.1 (listing)"},
+  ParamSpec{"NCSIM-AXIS-003", "kenngr.achs_typ", A, ValueType::uns16, 1, 4, "1 T, 2 R, 4 S", 1, "", "1", kOpt, -1, -1, "004 §4.8.1 (type == 4 spindle)"},
+  ParamSpec{"P-AXIS-00015", "kenngr.achs_mode", A, ValueType::axis_mode, 0x1, kUns32Max, "bits", 1, "", "0x00000001", kOpt, -1, -1, "004 §5.2.1"},
+  ParamSpec{"P-AXIS-00020", "kenngr.antr_typ", A, ValueType::uns16, 0, kUns16Max, "", 1, "", "0", kOpt, -1, -1, "004 §2.1.6, §4.10.1"},
+  ParamSpec{"P-AXIS-00177", "kenngr.swe_neg", A, ValueType::sgn32, kSgn32Min, kSgn32Max, "0.1 um | 0.0001 deg", kTenthMicron, "mm | deg", "-10000000", kOpt, -1, -1, "004 §5.2.1"},
+  ParamSpec{"P-AXIS-00178", "kenngr.swe_pos", A, ValueType::sgn32, kSgn32Min, kSgn32Max, "0.1 um | 0.0001 deg", kTenthMicron, "mm | deg", "10000000", kOpt, -1, -1, "004 §5.2.1"},
+  ParamSpec{"P-AXIS-00555", "kenngr.conv_sync_optim", A, ValueType::boolean, 0, 1, "", 1, "", "0", kOpt, -1, -1, "004 §5.2.1"},
+  ParamSpec{"P-AXIS-00516", "kenngr.measure.signal", A, ValueType::word, 0, 0, "", 1, "", "DRIVE_TYPE_DEFAULT", kOpt, -1, -1, "004 §4.3 (id inferred)"},
+  ParamSpec{"NCSIM-AXIS-004", "kenngr.messachse", A, ValueType::boolean, 0, 1, "", 1, "", "0", kOpt, -1, -1, "004 §4.9.1 (listing)"},
+  // ---- axis list: conveyor axis (seed 004 §5.2.1) -----------------------------------------
+  ParamSpec{"P-AXIS-00620", "conv_sync.enable_filter", A, ValueType::boolean, 0, 1, "", 1, "", "0", kOpt, -1, -1, "004 §5.2.1"},
+  ParamSpec{"NCSIM-AXIS-005", "conv_sync.type_pos_filter", A, ValueType::uns32, 0, 1, "0 FIR, 1 average", 1, "", "0", kOpt, -1, -1, "004 §4.8.1 (listing)"},
+  ParamSpec{"NCSIM-AXIS-006", "conv_sync.order_pos_filter", A, ValueType::uns32, 0, 1000, "", 1, "", "0", kOpt, -1, -1, "004 §4.8.1 (listing)"},
+  ParamSpec{"P-AXIS-00623", "conv_sync.order_v_filter", A, ValueType::uns32, 0, 1000, "", 1, "", "20", kOpt, -1, -1, "004 §5.2.1"},
+  ParamSpec{"P-AXIS-00624", "conv_sync.order_post_v_filter", A, ValueType::uns32, 0, 1000, "", 1, "", "6", kOpt, -1, -1, "004 §5.2.1"},
+  ParamSpec{"P-AXIS-00625", "conv_sync.order_v_filter_dyn", A, ValueType::uns32, 0, 1000, "", 1, "", "10", kOpt, -1, -1, "004 §5.2.1"},
+  ParamSpec{"P-AXIS-00626", "conv_sync.delay_time", A, ValueType::uns32, 0, kUns32Max, "us", kMicrosecond, "s", "0", kOpt, -1, -1, "004 §5.2.1"},
+  ParamSpec{"P-AXIS-00708", "conv_sync.is_master", A, ValueType::boolean, 0, 1, "", 1, "", "0", kOpt, -1, -1, "004 §5.2.1"},
+  // ---- axis list: exact stop (seed 001 §3.2) ----------------------------------------------
+  ParamSpec{"P-AXIS-00236", "getriebe[].window", A, ValueType::sgn32, 0, kSgn32Max, "0.1 um | 0.0001 deg", kTenthMicron, "mm | deg", "500", kOpt, 7, -1, "001 §3.2"},
+  ParamSpec{"P-AXIS-00532", "getriebe[].position_settling_time", A, ValueType::sgn32, kSgn32Min, kSgn32Max, "us", kMicrosecond, "s", "-1", kOpt, 7, -1, "001 §3.2"},
+  // ---- axis list: dynamics, named after TF50x0 (seed 000 §7.1), TwinCAT NC units ----------
+  ParamSpec{"NCSIM-AXIS-010", "dynamics.max_velocity", A, ValueType::real64, 1e-9, kRealMax, "mm/s | deg/s", 1, "mm/s | deg/s", "500", kOpt, -1, -1, "000 §7.1.1"},
+  ParamSpec{"NCSIM-AXIS-011", "dynamics.max_acceleration", A, ValueType::real64, 1e-9, kRealMax, "mm/s^2 | deg/s^2", 1, "mm/s^2 | deg/s^2", "5000", kOpt, -1, -1, "000 §7.1.1"},
+  ParamSpec{"NCSIM-AXIS-012", "dynamics.max_deceleration", A, ValueType::real64, 1e-9, kRealMax, "mm/s^2 | deg/s^2", 1, "mm/s^2 | deg/s^2", "5000", kOpt, -1, -1, "000 §7.1.1"},
+  ParamSpec{"NCSIM-AXIS-013", "dynamics.max_jerk", A, ValueType::real64, 1e-9, kRealMax, "mm/s^3 | deg/s^3", 1, "mm/s^3 | deg/s^3", "100000", kOpt, -1, -1, "000 §7.1.1"},
+  ParamSpec{"NCSIM-AXIS-014", "dynamics.default_velocity", A, ValueType::real64, 1e-9, kRealMax, "mm/s | deg/s", 1, "mm/s | deg/s", "= dynamics.max_velocity", kDerived, -1, -1, "000 §7.1.1"},
+  ParamSpec{"NCSIM-AXIS-015", "dynamics.default_acceleration", A, ValueType::real64, 1e-9, kRealMax, "mm/s^2 | deg/s^2", 1, "mm/s^2 | deg/s^2", "= dynamics.max_acceleration", kDerived, -1, -1, "000 §7.1.1"},
+  ParamSpec{"NCSIM-AXIS-016", "dynamics.default_deceleration", A, ValueType::real64, 1e-9, kRealMax, "mm/s^2 | deg/s^2", 1, "mm/s^2 | deg/s^2", "= dynamics.max_deceleration", kDerived, -1, -1, "000 §7.1.1"},
+  ParamSpec{"NCSIM-AXIS-017", "dynamics.default_jerk", A, ValueType::real64, 1e-9, kRealMax, "mm/s^3 | deg/s^3", 1, "mm/s^3 | deg/s^3", "= dynamics.max_jerk", kDerived, -1, -1, "000 §7.1.1"},
+  ParamSpec{"NCSIM-AXIS-018", "dynamics.reference_velocity", A, ValueType::real64, 1e-9, kRealMax, "mm/s | deg/s", 1, "mm/s | deg/s", "= dynamics.max_velocity", kDerived, -1, -1, "000 §7.1.1, §7.3.2"},
+  ParamSpec{"NCSIM-AXIS-019", "nci.rapid_traverse_velocity", A, ValueType::real64, 1e-9, kRealMax, "mm/s | deg/s", 1, "mm/s | deg/s", "= dynamics.max_velocity", kDerived, -1, -1, "000 §7.1.7"},
+  ParamSpec{"NCSIM-AXIS-020", "nci.velo_jump_factor", A, ValueType::real64, 0, kRealMax, "", 1, "", "1.0", kOpt, -1, -1, "000 §7.1.7 (C0)"},
+  ParamSpec{"NCSIM-AXIS-021", "nci.tolerance_ball", A, ValueType::real64, 0, kRealMax, "mm | deg", 1, "mm | deg", "0.0", kOpt, -1, -1, "000 §7.1.7, §7.5.11"},
+  ParamSpec{"NCSIM-AXIS-022", "ctrl.kv", A, ValueType::real64, 1e-9, kRealMax, "(mm/s)/mm", 1, "1/s", "1.0", kOpt, -1, -1, "000 §7.4.2"},
+  ParamSpec{"NCSIM-AXIS-023", "drive.pt1_time", A, ValueType::real64, 0, kRealMax, "s", 1, "s", "0.0", kOpt, -1, -1, "000 §7.5.8"},
+  ParamSpec{"NCSIM-AXIS-024", "monitoring.position_lag", A, ValueType::boolean, 0, 1, "", 1, "", "1", kOpt, -1, -1, "000 §7.1.5"},
+  ParamSpec{"NCSIM-AXIS-025", "monitoring.position_lag_max", A, ValueType::real64, 1e-9, kRealMax, "mm | deg", 1, "mm | deg", "5.0", kOpt, -1, -1, "000 §7.1.5"},
+  ParamSpec{"NCSIM-AXIS-026", "monitoring.position_lag_filter_time", A, ValueType::real64, 0, kRealMax, "s", 1, "s", "0.02", kOpt, -1, -1, "000 §7.1.5"},
+  ParamSpec{"NCSIM-AXIS-027", "monitoring.target_position", A, ValueType::boolean, 0, 1, "", 1, "", "1", kOpt, -1, -1, "000 §7.1.5"},
+  ParamSpec{"NCSIM-AXIS-028", "monitoring.target_position_window", A, ValueType::real64, 1e-9, kRealMax, "mm | deg", 1, "mm | deg", "2.0", kOpt, -1, -1, "000 §7.1.5"},
+  ParamSpec{"NCSIM-AXIS-029", "monitoring.target_position_time", A, ValueType::real64, 0, kRealMax, "s", 1, "s", "0.02", kOpt, -1, -1, "000 §7.1.5"},
+  ParamSpec{"NCSIM-AXIS-030", "enc.modulo_factor", A, ValueType::real64, 1e-9, kRealMax, "mm | deg", 1, "mm | deg", "360.0", kOpt, -1, -1, "000 §7.2.1"},
+  // ---- channel list ------------------------------------------------------------------------
+  ParamSpec{"P-CHAN-00650", "configuration.interpolator.function", C, ValueType::flag_set, 0, 0, "", 1, "", "FCT_IPO_DEFAULT", kOpt, -1, -1, "004 §5.2.2"},
+  ParamSpec{"P-CHAN-00362", "conveyor_sync.log_number_master", C, ValueType::uns16, 1, kUns16Max, "", 1, "", "", kOpt, -1, -1, "004 §5.2.2"},
+  ParamSpec{"P-CHAN-00363", "conveyor_sync.move_direction", C, ValueType::uns16, 0, 1, "", 1, "", "0", kOpt, -1, -1, "004 §5.2.2"},
+  ParamSpec{"P-CHAN-00364", "conveyor_sync.x_virtual", C, ValueType::boolean, 0, 1, "", 1, "", "0", kOpt, -1, -1, "004 §5.2.2"},
+  ParamSpec{"P-CHAN-00365", "conveyor_sync.sync_in_tolerance", C, ValueType::real64, 0, kRealMax, "0.1 um", kTenthMicron, "mm", "0.0", kOpt, -1, -1, "004 §5.2.2"},
+  ParamSpec{"P-CHAN-00366", "conveyor_sync.hold_limit_vel_factor", C, ValueType::uns16, 0, kUns16Max, "0.1 %", kPerMille, "fraction", "1000", kOpt, -1, -1, "004 §5.2.2 (>1000: warning 21483)"},
+  ParamSpec{"P-CHAN-00367", "conveyor_sync.hold_limit_tolerance", C, ValueType::real64, 0, kRealMax, "0.1 um", kTenthMicron, "mm", "0.0", kOpt, -1, -1, "004 §4.8.1 (listing only)"},
+  ParamSpec{"P-CHAN-00368", "conveyor_sync.cart_t0_shift_x", C, ValueType::real64, -kRealMax, kRealMax, "0.1 um", kTenthMicron, "mm", "0.0", kOpt, -1, -1, "004 §5.2.2"},
+  ParamSpec{"P-CHAN-00369", "conveyor_sync.cart_t0_shift_y", C, ValueType::real64, -kRealMax, kRealMax, "0.1 um", kTenthMicron, "mm", "0.0", kOpt, -1, -1, "004 §5.2.2"},
+  ParamSpec{"P-CHAN-00370", "conveyor_sync.cart_t0_shift_z", C, ValueType::real64, -kRealMax, kRealMax, "0.1 um", kTenthMicron, "mm", "0.0", kOpt, -1, -1, "004 §5.2.2"},
+  ParamSpec{"P-CHAN-00371", "conveyor_sync.cart_t0_rot_a", C, ValueType::real64, 0, 3599999.999999, "0.1 mdeg", kTenthMicron, "deg", "0.0", kOpt, -1, -1, "004 §5.2.2"},
+  ParamSpec{"P-CHAN-00372", "conveyor_sync.cart_t0_rot_b", C, ValueType::real64, 0, 3599999.999999, "0.1 mdeg", kTenthMicron, "deg", "0.0", kOpt, -1, -1, "004 §5.2.2"},
+  ParamSpec{"P-CHAN-00373", "conveyor_sync.cart_t0_rot_c", C, ValueType::real64, 0, 3599999.999999, "0.1 mdeg", kTenthMicron, "deg", "0.0", kOpt, -1, -1, "004 §5.2.2"},
+  ParamSpec{"P-CHAN-00374", "conveyor_sync.pos_limit", C, ValueType::real64, -kRealMax, kRealMax, "0.1 um", kTenthMicron, "mm", "0.0", kOpt, -1, -1, "004 §5.2.2 (range widened, see docs)"},
+  ParamSpec{"P-CHAN-00859", "conveyor_sync.cart_swe_pos_x", C, ValueType::real64, -kRealMax, kRealMax, "0.1 um", kTenthMicron, "mm", "0.0", kOpt, -1, -1, "004 §5.2.2"},
+  ParamSpec{"P-CHAN-00860", "conveyor_sync.cart_swe_pos_y", C, ValueType::real64, -kRealMax, kRealMax, "0.1 um", kTenthMicron, "mm", "0.0", kOpt, -1, -1, "004 §5.2.2"},
+  ParamSpec{"P-CHAN-00861", "conveyor_sync.cart_swe_pos_z", C, ValueType::real64, -kRealMax, kRealMax, "0.1 um", kTenthMicron, "mm", "0.0", kOpt, -1, -1, "004 §5.2.2"},
+  ParamSpec{"P-CHAN-00862", "conveyor_sync.cart_swe_neg_x", C, ValueType::real64, -kRealMax, kRealMax, "0.1 um", kTenthMicron, "mm", "0.0", kOpt, -1, -1, "004 §5.2.2"},
+  ParamSpec{"P-CHAN-00863", "conveyor_sync.cart_swe_neg_y", C, ValueType::real64, -kRealMax, kRealMax, "0.1 um", kTenthMicron, "mm", "0.0", kOpt, -1, -1, "004 §5.2.2"},
+  ParamSpec{"P-CHAN-00864", "conveyor_sync.cart_swe_neg_z", C, ValueType::real64, -kRealMax, kRealMax, "0.1 um", kTenthMicron, "mm", "0.0", kOpt, -1, -1, "004 §5.2.2"},
+  ParamSpec{"P-CHAN-00262", "trafo[].id", C, ValueType::uns32, 0, kUns32Max, "", 1, "", "0", kOpt, 9, -1, "isg-language §8"},
+  ParamSpec{"P-CHAN-00829", "trafo[].type", C, ValueType::uns32, 0, kUns32Max, "", 1, "", "0", kOpt, 9, -1, "isg-language §8"},
+  ParamSpec{"P-CHAN-00263", "trafo[].param[]", C, ValueType::real64, -kRealMax, kRealMax, "0.1 um | 0.0001 deg", kTenthMicron, "mm | deg", "0.0", kOpt, 9, 73, "isg-language §8"},
+  ParamSpec{"P-CHAN-00394", "coordinate_system.rotation_sequence", C, ValueType::word, 0, 0, "", 1, "", "ZYX", kOpt, -1, -1, "isg-language §5.8"},
+  ParamSpec{"NCSIM-CHAN-001", "spdl_anzahl", C, ValueType::uns16, 0, kUns16Max, "", 1, "", "0", kOpt, -1, -1, "004 §4.9.1 (listing)"},
+  ParamSpec{"NCSIM-CHAN-002", "main_spindle_ax_nr", C, ValueType::uns16, 1, kUns16Max, "", 1, "", "", kOpt, -1, -1, "004 §4.9.1 (listing)"},
+  ParamSpec{"NCSIM-CHAN-003", "main_spindle_name", C, ValueType::word, 0, 0, "", 1, "", "", kOpt, -1, -1, "004 §4.9.1 (listing)"},
+  ParamSpec{"NCSIM-CHAN-004", "log_number_tracking_axis", C, ValueType::uns16, 1, kUns16Max, "", 1, "", "", kOpt, -1, -1, "004 §4.10.1 (listing, id cut off)"},
+};
+// clang-format on
+
+}  // namespace
+
+std::span<const ParamSpec> param_table() {
+  return kTable;
+}
+
+const ParamSpec* find_param(ListKind list, std::string_view pattern) {
+  for (const ParamSpec& spec : kTable) {
+    if (spec.list == list && spec.key == pattern) return &spec;
+  }
+  return nullptr;
+}
+
+std::string_view type_name(ValueType type) {
+  switch (type) {
+    case ValueType::boolean:
+      return "BOOLEAN";
+    case ValueType::uns16:
+      return "UNS16";
+    case ValueType::uns32:
+      return "UNS32";
+    case ValueType::sgn32:
+      return "SGN32";
+    case ValueType::real64:
+      return "REAL64";
+    case ValueType::word:
+      return "STRING";
+    case ValueType::flag_set:
+      return "STRING (flags)";
+    case ValueType::axis_mode:
+      return "UNS32 (bits)";
+  }
+  return "?";
+}
+
+}  // namespace ncsim::machines
