@@ -1,0 +1,219 @@
+#include "grammar/block_parser.hpp"
+
+#include "grammar/custom_rules.hpp"
+
+namespace ncsim::grammar {
+namespace {
+
+namespace pegtl = tao::pegtl;
+using Input = pegtl::memory_input<pegtl::tracking_mode::lazy, pegtl::eol::lf_crlf>;
+
+enum class Mode { normal, declarations, comment };
+
+bool blank(char c) {
+  return c == ' ' || c == '\t' || c == '\r';
+}
+
+/// The first non-blank text of a line, or empty.
+std::string_view trimmed(std::string_view line) {
+  std::size_t k = 0;
+  while (k < line.size() && blank(line[k]))
+    ++k;
+  return line.substr(k);
+}
+
+/// True when `line` (trimmed) is the command `#<a> <b>` (any case, blanks between).
+bool is_command(std::string_view line, std::string_view a, std::string_view b) {
+  if (line.empty() || line[0] != '#') return false;
+  line = trimmed(line.substr(1));
+  const std::string_view first = lex::ident(line);
+  if (!iequals(first, a)) return false;
+  if (b.empty()) return true;
+  return iequals(lex::ident(trimmed(line.substr(first.size()))), b);
+}
+
+}  // namespace
+
+struct BlockParser::Impl {
+  const core::SourceFile& file;
+  std::string_view text;
+  std::size_t pos = 0;     // start of the next line
+  std::uint32_t line = 1;  // its line number
+  Mode mode = Mode::normal;
+  core::SourceLoc mode_loc;  // the #VAR / #COMMENT BEGIN that opened the mode
+  State state;
+
+  explicit Impl(const core::SourceFile& f) : file(f), text(f.text()) {}
+
+  void report(core::DiagnosticList& diags, core::SourceLoc loc, const char* id,
+              std::string message) const {
+    diags.add({core::Severity::error, file.name(), loc, id, std::move(message)});
+  }
+
+  /// Splits off the next block: one line, plus the following lines while a line ends in `\`
+  /// outside comments (§1.3). Returns [begin, end) without the line end; advances pos/line.
+  std::pair<std::size_t, std::size_t> split(std::uint32_t& lines) {
+    const std::size_t begin = pos;
+    lines = 1;
+    for (;;) {
+      std::size_t p = pos;
+      int depth = 0;
+      bool comment = false;
+      bool quote = false;
+      std::size_t last = std::string_view::npos;  // last non-blank outside comments
+      while (p < text.size() && text[p] != '\n') {
+        const char c = text[p];
+        if (comment) {
+        } else if (quote) {
+          if (c == '\\')
+            ++p;
+          else if (c == '"')
+            quote = false;
+        } else if (depth > 0) {
+          if (c == '(')
+            ++depth;
+          else if (c == ')')
+            --depth;
+        } else if (c == '(') {
+          depth = 1;
+        } else if (c == ';') {
+          comment = true;
+        } else if (c == '"') {
+          quote = true;
+        } else if (!blank(c)) {
+          last = p;
+        }
+        ++p;
+      }
+      const std::size_t line_end = std::min(p, text.size());
+      pos = line_end < text.size() ? line_end + 1 : text.size();
+      const bool more = !comment && depth == 0 && last != std::string_view::npos &&
+                        text[last] == '\\' && pos < text.size();
+      if (!more) {
+        std::size_t end = line_end;
+        if (end > begin && text[end - 1] == '\r') --end;
+        return {begin, end};
+      }
+      ++lines;
+    }
+  }
+
+  template <typename Rule>
+  void parse(ast::Block& out, core::DiagnosticList& diags) {
+    state.reset(out, out.text.data(), out.text.data() + out.text.size(), out.loc);
+    Input in(out.text.data(), out.text.data() + out.text.size(), "");
+    try {
+      if (!pegtl::parse<Rule, Action, Control>(in, state)) {
+        throw ParseFailure{in.current(), "NC1001", "a block", {}};
+      }
+    } catch (const ParseFailure& f) {
+      out.has_error = true;
+      std::string message = f.message;
+      if (message.empty()) {
+        message = std::string("expected ") + f.expected + ", found " +
+                  lex::describe(f.at, out.text.data() + out.text.size());
+      }
+      report(diags, state.loc(f.at), f.id, std::move(message));
+    }
+  }
+
+  bool next(ast::Block& out, core::DiagnosticList& diags) {
+    for (;;) {
+      if (pos >= text.size()) {
+        if (mode == Mode::comment) {
+          report(diags, mode_loc, "NC2016", "#COMMENT BEGIN is not closed by #COMMENT END");
+        } else if (mode == Mode::declarations) {
+          report(diags, mode_loc, "NC2016", "#VAR is not closed by #ENDVAR");
+        }
+        mode = Mode::normal;
+        return false;
+      }
+      const std::uint32_t first_line = line;
+      std::uint32_t lines = 1;
+      const auto [begin, end] = split(lines);
+      line += lines;
+      const std::string_view block_text = text.substr(begin, end - begin);
+      const std::string_view head = trimmed(block_text);
+      if (mode == Mode::comment) {
+        if (!is_command(head, "COMMENT", "END")) continue;
+      }
+      if (head.empty() || head[0] == ';') continue;
+
+      out.clear();
+      out.loc = {first_line, 1};
+      out.offset = begin;
+      out.text = block_text;
+      if (block_text.size() > kMaxBlockLength) {
+        out.has_error = true;
+        report(diags, file.loc_of(begin + kMaxBlockLength), "NC1003",
+               "block longer than " + std::to_string(kMaxBlockLength) + " characters (" +
+                   std::to_string(block_text.size()) + ")");
+        return true;
+      }
+
+      if (mode == Mode::declarations && head[0] != '#') {
+        const bool variable =
+            (head.size() > 1 && (head[0] == 'V' || head[0] == 'v') && head[1] == '.') ||
+            head[0] == '/';
+        if (variable) {
+          parse<rules::declaration>(out, diags);
+          return true;
+        }
+        report(diags, mode_loc, "NC2016", "#VAR is not closed by #ENDVAR");
+        mode = Mode::normal;
+      }
+
+      parse<rules::block>(out, diags);
+      if (const auto* h = std::get_if<ast::HashCommand>(&out.body)) {
+        switch (h->kind) {
+          case ast::HashKind::comment_begin:
+            mode = Mode::comment;
+            mode_loc = h->loc;
+            break;
+          case ast::HashKind::comment_end:
+            if (mode != Mode::comment) {
+              report(diags, h->loc, "NC2016", "#COMMENT END without #COMMENT BEGIN");
+            }
+            mode = Mode::normal;
+            break;
+          case ast::HashKind::var:
+            if (mode == Mode::declarations) {
+              report(diags, mode_loc, "NC2016", "#VAR is not closed by #ENDVAR");
+            }
+            mode = Mode::declarations;
+            mode_loc = h->loc;
+            break;
+          case ast::HashKind::endvar:
+            if (mode != Mode::declarations) {
+              report(diags, h->loc, "NC2016", "#ENDVAR without #VAR");
+            }
+            mode = Mode::normal;
+            break;
+          default:
+            if (mode == Mode::declarations) {
+              report(diags, mode_loc, "NC2016", "#VAR is not closed by #ENDVAR");
+              mode = Mode::normal;
+            }
+            break;
+        }
+      }
+      if (!out.has_error && std::holds_alternative<ast::Empty>(out.body) && out.words.empty() &&
+          !out.skip && !out.number && !out.label && !out.call && out.axis_commands.empty() &&
+          !out.trailing_goto) {
+        continue;  // a comment-only line
+      }
+      return true;
+    }
+  }
+};
+
+BlockParser::BlockParser(const core::SourceFile& file)
+    : file_(file), impl_(std::make_unique<Impl>(file)) {}
+
+BlockParser::~BlockParser() = default;
+
+bool BlockParser::next(ast::Block& out, core::DiagnosticList& diags) {
+  return impl_->next(out, diags);
+}
+
+}  // namespace ncsim::grammar

@@ -1,0 +1,169 @@
+#include <doctest/doctest.h>
+
+#include "grammar/test_support.hpp"
+
+namespace ncsim::grammar::test {
+
+TEST_CASE("DIN words need no separators and addresses are case-insensitive") {
+  const Parsed p("g01x10Y20f100");
+  REQUIRE(p.diags.items().empty());
+  REQUIRE(p.block.words.size() == 4);
+  CHECK(p.block.words[0].kind == ast::WordKind::g);
+  CHECK(p.block.words[0].code == 1);
+  CHECK(p.block.words[1].name == "x");
+  CHECK(p.block.words[1].loc.column == 4);
+  CHECK(p.block.words[2].loc.column == 7);
+  CHECK(p.block.words[3].kind == ast::WordKind::f);
+}
+
+TEST_CASE("block numbers, labels and expressions as block numbers") {
+  const Parsed a("N00860 G01 X1");
+  REQUIRE(a.block.number);
+  CHECK(a.block.number->number == 860);
+  CHECK_FALSE(a.block.number->is_label);
+  const Parsed b("N10: X1");
+  REQUIRE(b.block.number);
+  CHECK(b.block.number->is_label);
+  const Parsed c("N[P1*100] X1");
+  REQUIRE(c.block.number);
+  CHECK(c.block.number->expr != ast::kNoNode);
+  const Parsed d("[END]");
+  REQUIRE(d.block.label);
+  CHECK(d.block.label->name == "END");
+  CHECK(d.diags.items().empty());
+}
+
+TEST_CASE("skip levels / and /1 to /10") {
+  CHECK(Parsed("/ X1").block.skip == 1);
+  CHECK(Parsed("/7 N10 X1").block.skip == 7);
+  CHECK(Parsed("/10 X1").block.skip == 10);
+  const Parsed bad("/11 X1");
+  REQUIRE(bad.diags.items().size() == 1);
+  CHECK(bad.diags.items()[0].loc.column == 2);
+}
+
+TEST_CASE("comments: nested parentheses, semicolon, unclosed parenthesis") {
+  const Parsed a("G01 (outer (inner) still) X1 ; tail");
+  CHECK(a.diags.items().empty());
+  CHECK(a.block.words.size() == 2);
+  const Parsed b("G01 X1 (unclosed runs to the end Y2");
+  CHECK(b.diags.items().empty());
+  CHECK(b.block.words.size() == 2);
+  const Parsed c("(only a comment)\nG01");
+  CHECK(c.block.loc.line == 2);
+}
+
+TEST_CASE("a backslash at the line end continues the block") {
+  const Parsed p("S1[MC_MoveVelocity Velocity=300000 \\\n  Direction=1]\nX1");
+  REQUIRE(p.diags.items().empty());
+  REQUIRE(p.block.axis_commands.size() == 1);
+  CHECK(p.block.axis_commands[0].item_count == 3);
+  CHECK(p.block.items[2].loc.line == 2);
+  CHECK(p.block.items[2].loc.column == 3);
+}
+
+TEST_CASE("errors point at the offending character on continued lines") {
+  const Parsed p("X[1 + \\\n  * 2]");
+  REQUIRE(p.diags.items().size() == 1);
+  CHECK(p.diags.items()[0].loc.line == 2);
+  CHECK(p.diags.items()[0].loc.column == 3);
+}
+
+TEST_CASE("program headers: %name, bare %, % name, %L name") {
+  struct Header {
+    bool local;
+    std::string name;
+  };
+  const auto header = [](const std::string& t) {
+    const Parsed p(t);  // the AST points into p.file: copy what the test needs
+    REQUIRE(p.diags.items().empty());
+    const auto& h = std::get<ast::ProgramHeader>(p.block.body);
+    return Header{h.local, std::string(h.name)};
+  };
+  CHECK(header("%main").name == "main");
+  CHECK(header("%").name.empty());
+  CHECK(header("% Laser").name == "Laser");
+  CHECK(header("%L SUB1").local);
+  CHECK(header("%L SUB1").name == "SUB1");
+  CHECK_FALSE(header("%Laser").local);
+}
+
+TEST_CASE("axis values: number, bracket, variable with or without blank, sign") {
+  const Parsed p("X P5 Y-0 ZV.S.VAR[4] A[2*3] AB=90 U+.5");
+  REQUIRE(p.diags.items().empty());
+  REQUIRE(p.block.words.size() == 6);
+  CHECK(p.value(0).op == ast::Op::variable);
+  CHECK(p.value(2).var_class == ast::VarClass::v_s);
+  CHECK(p.block.words[4].name == "AB");
+  CHECK(p.value(5).value == 0.5);
+}
+
+TEST_CASE("a syntax error names what was expected and what was found") {
+  const Parsed p("N10 G01 X10 Q5");
+  REQUIRE(p.diags.items().size() == 1);
+  const auto& d = p.diags.items()[0];
+  CHECK(d.loc.column == 13);
+  CHECK(d.message.find("expected a word") != std::string::npos);
+  CHECK(d.message.find("found 'Q5'") != std::string::npos);
+  CHECK(p.block.has_error);
+}
+
+TEST_CASE("blocks longer than 4000 characters are an error at character 4001") {
+  const std::string text = "G01 X1 (" + std::string(4100, 'c') + ")";
+  const auto diags = check(text);
+  REQUIRE(diags.size() == 1);
+  CHECK(diags[0] == "1:4001 NC1003");
+  CHECK(check("G01 X1 (" + std::string(3900, 'c') + ")").empty());
+}
+
+TEST_CASE("every syntax error of a file is reported, one per block") {
+  const auto diags = check("G01 X1 Q\nG01 X[1+]\nG01 X1\nM\n");
+  REQUIRE(diags.size() == 3);
+  CHECK(diags[0] == "1:8 NC1001");
+  CHECK(diags[1] == "2:9 NC1001");
+  CHECK(diags[2] == "4:2 NC1001");
+}
+
+TEST_CASE("subroutine calls: LL name, L file, L \"macro\", L V.E.x, L CYCLE [...]") {
+  const Parsed a("LL SUB1");
+  REQUIRE(a.block.call);
+  CHECK(a.block.call->kind == ast::CallKind::local);
+  CHECK(a.block.call->name == "SUB1");
+  const Parsed b("L sub/prog.nc");
+  CHECK(b.block.call->kind == ast::CallKind::global);
+  CHECK(b.block.call->name == "sub/prog.nc");
+  CHECK(Parsed("LL \"macro\"").block.call->target == ast::CallTarget::macro);
+  CHECK(Parsed("L V.E.x").block.call->target == ast::CallTarget::variable);
+  const Parsed c("L CYCLE [NAME=drill.ecy @P1=10 @P2=5]");
+  REQUIRE(c.diags.items().empty());
+  CHECK(c.block.call->kind == ast::CallKind::cycle);
+  CHECK(c.block.call->item_count == 3);
+  CHECK(c.block.items[0].text == "drill.ecy");
+}
+
+TEST_CASE("declarations between #VAR and #ENDVAR, array initialisers across lines") {
+  const core::SourceFile file(
+      "t.nc", "#VAR\n V.P.A[3] : REAL = [1.5, 2.5, \\\n 3.5]\n V.L.S : STRING[10]\n#ENDVAR\n");
+  BlockParser parser(file);
+  core::DiagnosticList diags;
+  ast::Block b;
+  REQUIRE(parser.next(b, diags));
+  REQUIRE(parser.next(b, diags));
+  const auto& d = std::get<ast::Declaration>(b.body);
+  CHECK(d.array_init);
+  CHECK(d.init_count == 3);
+  CHECK(d.type == ast::VarType::real64);
+  REQUIRE(parser.next(b, diags));
+  CHECK(std::get<ast::Declaration>(b.body).type == ast::VarType::string);
+  REQUIRE(parser.next(b, diags));
+  CHECK(std::get<ast::HashCommand>(b.body).kind == ast::HashKind::endvar);
+  CHECK_FALSE(parser.next(b, diags));
+  CHECK(diags.items().empty());
+}
+
+TEST_CASE("lines between #COMMENT BEGIN and END are not parsed") {
+  CHECK(check("#COMMENT BEGIN\n$$$ not NC at all (\n#COMMENT END\nG01 X1\n").empty());
+  CHECK(check("#COMMENT BEGIN\nX1\n") == std::vector<std::string>{"1:1 NC2016"});
+}
+
+}  // namespace ncsim::grammar::test

@@ -1,0 +1,66 @@
+#include <doctest/doctest.h>
+
+#include "grammar/test_support.hpp"
+
+namespace ncsim::grammar::test {
+
+using V = std::vector<std::string>;
+
+TEST_CASE("an unclosed $IF is reported at its line") {
+  CHECK(check("%main\nG01 X1\n$IF P1\nG01 X2\nM30\n") == V{"3:1 NC2001"});
+}
+
+TEST_CASE("balanced control flow checks clean") {
+  CHECK(check("$IF 1\n$ELSEIF 2\n$ELSE\n$ENDIF\n$SWITCH P1\n$CASE 1\n$BREAK\n$DEFAULT\n"
+              "$ENDSWITCH\n$FOR P1 = 1, 3, 1\n$CONTINUE\n$ENDFOR\n$WHILE 1\n$BREAK\n$ENDWHILE\n"
+              "$DO\n$ENDDO 0\n$REPEAT\n$UNTIL 1\nM30\n")
+            .empty());
+}
+
+TEST_CASE("misplaced $ELSE, $ELSEIF, $ENDIF carry the manual's ids") {
+  CHECK(check("$ELSE\n") == V{"1:1 20214"});
+  CHECK(check("$IF 1\n$ELSE\n$ELSEIF 1\n$ENDIF\n") == V{"3:1 20216"});
+  CHECK(check("$IF 1\n$ELSE\n$ELSE\n$ENDIF\n") == V{"3:1 20214"});
+  CHECK(check("$ENDIF\n") == V{"1:1 20218"});
+  CHECK(check("$IF 1\n$ENDIF X1\n") == V{"2:8 20219"});
+  CHECK(check("$ENDWHILE\n") == V{"1:1 20237"});
+}
+
+TEST_CASE("$BREAK needs a loop or switch, $CONTINUE a loop") {
+  CHECK(check("$BREAK\n") == V{"1:1 20243"});
+  CHECK(check("$SWITCH 1\n$CASE 1\n$CONTINUE\n$ENDSWITCH\n") == V{"3:1 20244"});
+  CHECK(check("$WHILE 1\n$IF 1\n$BREAK\n$ENDIF\n$ENDWHILE\n").empty());
+}
+
+TEST_CASE("labels are per program level; $GOTO into a loop is 21480") {
+  CHECK(check("%L SUB\nN10: X1\nM17\n%main\n$GOTO N10\nM30\n") == V{"5:7 NC2012"});
+  CHECK(check("$GOTO N10\n$WHILE 1\nN10: X1\n$ENDWHILE\n") == V{"1:7 21480"});
+  CHECK(check("$WHILE 1\n$GOTO [OUT]\n$ENDWHILE\n[OUT]\nM30\n").empty());
+  CHECK(check("N10: X1\nN10: X2\n") == V{"2:1 NC2011"});
+  CHECK(check("$GOTO [end]\n[END]\n").empty());  // labels are case-insensitive
+}
+
+TEST_CASE("subroutines: local after main, LL without %L, call not last") {
+  CHECK(check("G01 X1\n%L SUB\nM17\n") == V{"2:1 NC2013"});
+  CHECK(check("%main\nLL NOPE\nM30\n") == V{"2:1 NC2014"});
+  CHECK(check("%L SUB\nM17\n%main\nLL sub\nM30\n").empty());
+  CHECK(check("%L SUB\nM17\n%main\nLL SUB X1\nM30\n") == V{"4:8 21542"});
+}
+
+TEST_CASE("#IF: a block number before it is 20593; the #ELSE branch is syntax-only") {
+  CHECK(check("N10 #IF 1\n#ENDIF\n") == V{"1:1 20593"});
+  CHECK(check("#IF 1\n$IF 1\n#ELSE\n$IF 2\n#ENDIF\n$ENDIF\n").empty());
+  CHECK(check("#IF 1\n#ELSE\nG01 X[\n#ENDIF\n") == V{"3:7 NC1001"});
+  CHECK(check("#IF 1\n") == V{"1:1 NC2015"});
+}
+
+TEST_CASE("unknown G and M codes, unknown bracket keywords") {
+  CHECK(check("G123\n") == V{"1:1 20131"});
+  CHECK(check("G81\n") == V{"1:1 20131"});
+  CHECK(check("M1000\n") == V{"1:1 NC2009"});
+  CHECK(check("M2.5\n") == V{"1:1 NC2009"});
+  CHECK(check("M10 M11 M50 M3 M999\n").empty());  // technology functions for the PLC
+  CHECK(check("#SYNC IN [CONV_VEL=1 BOGUS=2]\n") == V{"1:22 NC2010"});
+}
+
+}  // namespace ncsim::grammar::test

@@ -1,0 +1,42 @@
+#pragma once
+// grammar/test_support: helpers shared by the grammar unit tests (test code only).
+
+#include <string>
+#include <vector>
+
+#include "grammar/block_parser.hpp"
+#include "grammar/check.hpp"
+
+namespace ncsim::grammar::test {
+
+/// Parses `text` and keeps the first block (and the file it points into).
+struct Parsed {
+  core::SourceFile file;
+  ast::Block block;
+  core::DiagnosticList diags;
+  bool found = false;
+
+  explicit Parsed(std::string text) : file("t.nc", std::move(text)) {
+    BlockParser parser(file);
+    found = parser.next(block, diags);
+  }
+  const ast::ExprNode& node(ast::NodeIndex i) const { return block.exprs.at(i); }
+  const ast::ExprNode& value(std::size_t word) const { return node(block.words.at(word).value); }
+};
+
+/// "line:col id" of every diagnostic of check_program.
+inline std::vector<std::string> check(const std::string& text) {
+  const core::SourceFile file("t.nc", text);
+  std::vector<std::string> out;
+  const core::DiagnosticList diags = check_program(file);
+  for (const auto& d : diags.items()) {
+    out.push_back(std::to_string(d.loc.line) + ":" + std::to_string(d.loc.column) + " " + d.id);
+  }
+  return out;
+}
+
+/// Evaluates the constant part of an expression tree (numbers and operators), for
+/// precedence tests.
+double eval(const ast::Block& b, ast::NodeIndex i);
+
+}  // namespace ncsim::grammar::test

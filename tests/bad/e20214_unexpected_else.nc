@@ -1,0 +1,3 @@
+; expect: 2:1 20214 $ELSE
+$ELSE
+M30

@@ -1,0 +1,6 @@
+; expect: 4:1 20216 $ELSEIF
+$IF 1
+$ELSE
+$ELSEIF 2
+$ENDIF
+M30

@@ -1,0 +1,4 @@
+; expect: 3:1 20218 $ENDIF
+G01 X1
+$ENDIF
+M30

@@ -1,0 +1,3 @@
+; expect: 2:1 20237 $ENDWHILE
+$ENDWHILE
+M30

@@ -1,0 +1,5 @@
+; expect: 3:1 20243 $BREAK
+$IF 1
+$BREAK
+$ENDIF
+M30

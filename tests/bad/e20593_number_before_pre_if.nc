@@ -1,0 +1,5 @@
+; expect: 2:1 20593 #IF
+N10 #IF 1
+G01 X1
+#ENDIF
+M30

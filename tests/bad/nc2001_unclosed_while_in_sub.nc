@@ -1,0 +1,7 @@
+; expect: 3:1 NC2001 $WHILE
+%L SUB
+$WHILE 1
+M17
+%main
+LL SUB
+M30

@@ -1,0 +1,3 @@
+; expect: 2:1 NC2002 $CASE
+$CASE 1
+M30

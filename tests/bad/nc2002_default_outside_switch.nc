@@ -1,0 +1,5 @@
+; expect: 3:1 NC2002 $DEFAULT
+$IF 1
+$DEFAULT
+$ENDIF
+M30

@@ -1,0 +1,3 @@
+; expect: 2:1 NC2003 $UNTIL
+$UNTIL P1 > 3
+M30

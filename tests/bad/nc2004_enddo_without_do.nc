@@ -1,0 +1,3 @@
+; expect: 2:1 NC2004 $ENDDO
+$ENDDO 1
+M30

@@ -1,0 +1,3 @@
+; expect: 2:1 NC2006 $ENDSWITCH
+$ENDSWITCH
+M30

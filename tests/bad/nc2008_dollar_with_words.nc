@@ -1,0 +1,4 @@
+; expect: 2:10 NC2008 alone
+$WHILE 1 G01 X1
+$ENDWHILE
+M30

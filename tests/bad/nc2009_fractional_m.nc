@@ -1,0 +1,3 @@
+; expect: 2:5 NC2009 whole numbers
+G01 M3.5 X1 F100
+M30

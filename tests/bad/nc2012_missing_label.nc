@@ -1,0 +1,3 @@
+; expect: 2:7 NC2012 NOWHERE
+$GOTO [NOWHERE]
+M30

@@ -1,0 +1,4 @@
+; expect: 3:1 NC2014 MISSING
+%main
+LL MISSING
+M30

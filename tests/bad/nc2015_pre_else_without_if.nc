@@ -1,0 +1,3 @@
+; expect: 2:1 NC2015 #ELSE
+#ELSE
+M30

@@ -1,0 +1,3 @@
+; expect: 2:1 NC2016 #ENDVAR
+#ENDVAR
+M30

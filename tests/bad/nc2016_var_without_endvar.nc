@@ -1,0 +1,5 @@
+; expect: 2:1 NC2016 #VAR
+#VAR
+ V.P.X : REAL
+G01 X1
+M30

@@ -1,0 +1,3 @@
+; expect: 2:3 NC1002 OSC
+X[OSC ON]
+M30

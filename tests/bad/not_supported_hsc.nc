@@ -1,0 +1,3 @@
+; expect: 2:1 NC1002 not supported: #HSC
+#HSC ON [BSPLINE]
+M30

@@ -1,0 +1,3 @@
+; expect: 2:1 NC1002 #WAIT SYN
+#WAIT SYN [ID1]
+M30

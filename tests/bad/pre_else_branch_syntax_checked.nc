@@ -1,0 +1,7 @@
+; expect: 5:5 NC1001 found 'Q1'
+#IF 1
+G01 X1
+#ELSE
+G01 Q1
+#ENDIF
+M30

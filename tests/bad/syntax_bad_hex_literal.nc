@@ -1,0 +1,3 @@
+; expect: 2:6 NC1001 hexadecimal
+P1 = '16#XYZ'
+M30

@@ -1,0 +1,3 @@
+; expect: 2:2 NC1001 label name
+[ ]
+M30

@@ -1,0 +1,3 @@
+; expect: 2:2 NC1001 G code number
+GX10
+M30

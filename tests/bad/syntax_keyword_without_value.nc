@@ -1,0 +1,3 @@
+; expect: 2:20 NC1001 value after the keyword
+#SYNC IN [CONV_VEL=]
+M30

@@ -1,0 +1,3 @@
+; expect: 2:9 NC1001 expected an operand
+P1 = 2 +
+M30

@@ -1,0 +1,3 @@
+; expect: 2:14 NC1001 expected ']'
+G01 X[2*[3+4]
+M30

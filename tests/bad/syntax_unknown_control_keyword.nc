@@ -1,0 +1,3 @@
+; expect: 2:2 NC1001 control keyword
+$ELSIF P1
+M30

@@ -1,0 +1,3 @@
+; expect: 2:14 NC1001 closing
+"NAME" = "abc
+M30
