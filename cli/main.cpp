@@ -1,1 +1,79 @@
-int main() { return 0; }
+// The `ncsim` command: the user-facing contract of design.md §5.
+//
+//   ncsim check PROG.nc [--machine DIR] [--scenario FILE]   exit 0 ok, 1 program errors, 2 usage
+//   ncsim trace|time|run|golden ...                         not built yet: "not supported"
+//
+// Diagnostics go to stderr as `file:line:col: error: text [id]` with the source line and a
+// caret. The command never throws past main: every failure is a message and an exit status.
+
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <iostream>
+#include <optional>
+#include <string>
+
+#include "cli/commands.hpp"
+
+namespace {
+
+using ncsim::cli::kExitUsage;
+
+// Subcommands whose pipeline stage is not built yet: they parse nothing and answer clearly.
+void add_not_supported(CLI::App& app, const std::string& name, const std::string& what,
+                       const std::string& needs, std::optional<std::string>& chosen,
+                       std::string& reason) {
+  auto* sub = app.add_subcommand(name, what);
+  sub->allow_extras();
+  sub->callback([&chosen, &reason, name, needs] {
+    chosen = name;
+    reason = "not supported: 'ncsim " + name + "' needs " + needs + ", which is not built yet";
+  });
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"ncsim: a virtual CNC channel for ISG / TwinCAT 3 CNC programs"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "ncsim 0.1.0");
+
+  ncsim::cli::CheckOptions check;
+  auto* check_cmd =
+      app.add_subcommand("check",
+                         "Syntax and structure check of an NC program; every error with "
+                         "file:line:col");
+  check_cmd->add_option("program", check.program, "NC program file (.nc)")->required();
+  check_cmd->add_option("--machine", check.machine_dir,
+                        "Machine folder (parameter lists); default: the program folder's "
+                        "'machine' file, else the bundled portal_3x");
+  check_cmd->add_option("--scenario", check.scenario, "Scenario file (not supported yet)");
+
+  std::optional<std::string> unsupported;
+  std::string unsupported_reason;
+  add_not_supported(app, "trace", "Print the interpreter's command stream", "the interpreter",
+                    unsupported, unsupported_reason);
+  add_not_supported(app, "time", "Machining time with a per-block breakdown",
+                    "the planner and interpolator", unsupported, unsupported_reason);
+  add_not_supported(app, "run", "Run on the simulated machine and write every axis setpoint",
+                    "the planner and interpolator", unsupported, unsupported_reason);
+  add_not_supported(app, "golden", "Regression against programs/*.golden",
+                    "the interpolator and golden trajectories", unsupported, unsupported_reason);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);  // prints help/version on stdout, errors on stderr
+    return code == 0 ? 0 : kExitUsage;
+  }
+
+  if (unsupported) {
+    std::cerr << "ncsim: error: " << unsupported_reason << '\n';
+    return kExitUsage;
+  }
+  try {
+    return ncsim::cli::run_check(check, std::cout, std::cerr);
+  } catch (const std::exception& e) {
+    std::cerr << "ncsim: error: " << e.what() << '\n';
+    return kExitUsage;
+  }
+}

@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# cli_test.sh NCSIM FIXTURES: end-to-end checks of exit statuses and output of `ncsim`.
+set -uo pipefail
+ncsim=$1
+fixtures=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+checks=0
+
+# expect NAME STATUS PATTERN_STDOUT PATTERN_STDERR -- ARGS...: runs ncsim, compares the exit
+# status, and greps stdout/stderr for extended regular expressions ('' = no requirement).
+expect() {
+  local name=$1 want=$2 out_re=$3 err_re=$4
+  shift 5
+  checks=$((checks + 1))
+  "$ncsim" "$@" >"$work/out" 2>"$work/err" </dev/null
+  local got=$?
+  local ok=1
+  [[ $got -eq $want ]] || ok=0
+  if [[ -n $out_re ]] && ! grep -Eq -- "$out_re" "$work/out"; then ok=0; fi
+  if [[ -n $err_re ]] && ! grep -Eq -- "$err_re" "$work/err"; then ok=0; fi
+  if ((ok)); then
+    echo "ok   $name"
+  else
+    failures=$((failures + 1))
+    echo "FAIL $name: exit $got (want $want)"
+    sed 's/^/  stdout: /' "$work/out"
+    sed 's/^/  stderr: /' "$work/err"
+  fi
+}
+
+expect "a clean program checks with status 0" 0 'clean\.nc: ok' '' -- check "$fixtures/clean.nc"
+expect "every error is reported, status 1" 1 '' 'two_errors\.nc: 2 errors' -- \
+  check "$fixtures/two_errors.nc"
+expect "an error names file:line:col and the manual id" 1 '' \
+  'two_errors\.nc:3:1: error: .*\[20218\]' -- check "$fixtures/two_errors.nc"
+expect "a syntax error is located at the offending column" 1 '' \
+  'two_errors\.nc:4:[0-9]+: error: ' -- check "$fixtures/two_errors.nc"
+"$ncsim" check "$fixtures/two_errors.nc" 2>"$work/caret" >/dev/null
+checks=$((checks + 1))
+if grep -qx '\$ENDIF' "$work/caret" && grep -qx '\^' "$work/caret"; then
+  echo "ok   the source line and a caret follow the message"
+else
+  failures=$((failures + 1)); echo "FAIL the source line and a caret follow the message"
+  cat "$work/caret"
+fi
+expect "a missing program file is a usage error" 2 '' 'no such file' -- check "$work/nope.nc"
+expect "a directory is not a program" 2 '' 'not a regular file' -- check "$fixtures"
+expect "no subcommand is a usage error" 2 '' '' --
+expect "an unknown option is a usage error" 2 '' '' -- check --frobnicate "$fixtures/clean.nc"
+expect "check needs a program" 2 '' '' -- check
+expect "scenarios are not supported yet" 2 '' 'not supported: --scenario' -- \
+  check "$fixtures/clean.nc" --scenario "$fixtures/clean.nc"
+expect "run is not supported yet" 2 '' 'not supported' -- run "$fixtures/clean.nc"
+expect "time is not supported yet" 2 '' 'not supported' -- time "$fixtures/clean.nc"
+expect "golden is not supported yet" 2 '' 'not supported' -- golden check
+root=$(cd "$fixtures/../.." && pwd)
+expect "a bundled machine can be named with --machine" 0 'clean\.nc: ok' '' -- \
+  check --machine "$root/machines/laser_portal" "$fixtures/clean.nc"
+expect "a missing machine folder is a configuration error" 2 '' 'could not be loaded' -- \
+  check --machine "$work/no_machine" "$fixtures/clean.nc"
+mkdir -p "$work/prog"
+cp "$fixtures/clean.nc" "$work/prog/"
+echo "delta_picker" >"$work/prog/machine"
+expect "the program folder's machine file names the machine" 0 'clean\.nc: ok' '' -- \
+  check "$work/prog/clean.nc"
+echo "no_such_machine" >"$work/prog/machine"
+expect "an unknown machine named by the program folder is a configuration error" 2 '' \
+  'could not be loaded' -- check "$work/prog/clean.nc"
+expect "help exits 0" 0 'check' '' -- --help
+
+echo "cli: $((checks - failures)) passed, $failures failed"
+((failures == 0))

@@ -1,0 +1,5 @@
+%two_errors
+N10 G01 X10 F1000
+$ENDIF
+N30 G01 X[10+ F1000
+N40 M30
