@@ -1,0 +1,18 @@
+# axes/profile.cmake: the PTP setpoint generator (7-phase profile, online changes, velocity
+# motion, position compensation). See docs/axes-profile.md.
+target_sources(ncsim_axes PRIVATE
+  ${CMAKE_CURRENT_SOURCE_DIR}/profile.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/profile_builder.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/profile_general.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/profile_velocity.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/profile_compensation.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/profile_generator.cpp
+)
+
+ncsim_add_test(NAME axes_profile_tests
+  SOURCES
+    ${CMAKE_CURRENT_SOURCE_DIR}/profile_figures_test.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/profile_property_test.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/profile_online_test.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/profile_start_state_test.cpp
+  LIBS ncsim_axes)

@@ -1,0 +1,148 @@
+#pragma once
+// axes/profile: the jerk-limited PTP setpoint profile (TwinCAT NC PTP "Laufzeittabelle").
+//
+// Purpose: plan one single-axis motion as a chain of constant-jerk phases, the 7-phase profile
+// of seed 002_* section 2.1 (jerk +J, [a = A+], jerk -J, [v = V], jerk -J, [a = -A-], jerk +J),
+// from any start state (position, velocity, acceleration), to a target position reached at
+// rest or at a given velocity with zero acceleration, or to a target velocity (endless motion,
+// MC_MoveVelocity).
+// Inputs: a MotionState, a target, Dynamics (V, A+, A-, J; path quantities as in 002_* 2.1:
+// A+ limits speeding up, A- limits slowing down, whatever the sign of the axis velocity).
+// Outputs: a Profile, a small value type; Profile::at(t) gives position, velocity,
+// acceleration and jerk in closed form (a cubic per phase). Nothing integrates it.
+// Invariants: phases are contiguous in time and state; |jerk| == J (or 0) in every phase;
+// at(t) for t >= duration() is the end state, continued at constant velocity (zero for
+// position targets reached at rest). Planning never throws and never allocates: it returns a
+// Result (Ruckig style). Which rule applies where the manual is silent: docs/axes-profile.md.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+namespace ncsim::axes {
+
+namespace detail {
+class ProfileBuilder;
+}
+
+/// Outcome of a planning call or of one cycle; never an exception on the cyclic path.
+enum class Result : std::uint8_t {
+  ok,                            ///< request accepted, profile computed
+  working,                       ///< step(): motion in progress
+  finished,                      ///< step(): target (position or velocity) reached
+  error_invalid_input,           ///< NaN, non-positive limit, target velocity above V [NC5001]
+  error_velocity_limit,          ///< requested velocity above the axis maximum [NC5002]
+  ignored_braking_phase,         ///< override/compensation stop in a braking phase [NC5010]
+  rejected_stopping,             ///< a stop is active and has priority [NC5011]
+  rejected_compensation_active,  ///< new end position during compensation [NC5012]
+  rejected_not_moving,           ///< online change needs a started axis [NC5013]
+  ignored_below_increment,       ///< distance below one encoder increment: no start [NC5014]
+};
+
+/// ncsim diagnostic id ("NC5001") of a non-ok Result; empty for ok/working/finished.
+std::string_view diagnostic_id(Result result) noexcept;
+/// One-line English description of a Result.
+std::string_view describe(Result result) noexcept;
+
+/// Global dynamic parameters and the start velocity of one motion (002_* 2.1, Tab. 1/2).
+struct Dynamics {
+  double v_max = 0.0;     ///< V, requested path velocity [mm/s], > 0
+  double acc_max = 0.0;   ///< A+, path acceleration limit [mm/s^2], > 0
+  double dec_max = 0.0;   ///< A-, path deceleration limit (magnitude) [mm/s^2], > 0
+  double jerk_max = 0.0;  ///< J, jerk [mm/s^3], > 0
+};
+
+/// True when every value is finite and > 0.
+bool valid(const Dynamics& dynamics) noexcept;
+
+/// Critical jerk (002_* 2.1): the J at which A+ and A- are just reached at velocity V,
+/// max(A+, A-)^2 / V [mm/s^3].
+double critical_jerk(const Dynamics& dynamics) noexcept;
+
+/// Jerk rescaling (002_* 2.1 "Ruck ... automatisch reskaliert"): when a jerk phase to the
+/// smaller acceleration limit would be shorter than t_cycle, J is lowered so that it lasts one
+/// cycle. Returns the dynamics unchanged otherwise.
+Dynamics rescale_jerk(const Dynamics& dynamics, double t_cycle) noexcept;
+
+/// State of an axis at one instant.
+struct MotionState {
+  double p = 0.0;  ///< position [mm]
+  double v = 0.0;  ///< velocity [mm/s]
+  double a = 0.0;  ///< acceleration [mm/s^2]
+};
+
+/// Command values of one instant (what the position controller receives).
+struct Setpoint {
+  double p = 0.0;  ///< position [mm]
+  double v = 0.0;  ///< velocity [mm/s]
+  double a = 0.0;  ///< acceleration [mm/s^2]
+  double j = 0.0;  ///< jerk [mm/s^3]
+};
+
+/// One constant-jerk phase: the state at its start and its jerk.
+struct Phase {
+  double t_start = 0.0;   ///< start time since profile start [s]
+  double duration = 0.0;  ///< [s], >= 0
+  double p = 0.0;         ///< position at t_start [mm]
+  double v = 0.0;         ///< velocity at t_start [mm/s]
+  double a = 0.0;         ///< acceleration at t_start [mm/s^2]
+  double j = 0.0;         ///< jerk, constant in the phase [mm/s^3]
+};
+
+/// A planned motion: a value type, cheap to copy, no heap.
+class Profile {
+ public:
+  static constexpr std::size_t kMaxPhases = 16;
+
+  /// The axis standing still at `state.p` (velocity and acceleration ignored).
+  static Profile at_rest(double p) noexcept;
+
+  /// Command values at time t [s] since profile start; t < 0 gives the start state, t beyond
+  /// duration() the end state continued at constant velocity.
+  Setpoint at(double t) const noexcept;
+
+  double duration() const noexcept { return duration_; }  ///< [s]
+  /// Start of the braking phase (002_* 2.2), i.e. of the last velocity change [s].
+  double t_brake() const noexcept { return t_brake_; }
+  /// Velocity level activated by the planner (V, or the reduced reachable level) [mm/s].
+  double v_level() const noexcept { return v_level_; }
+  MotionState start_state() const noexcept { return start_; }
+  MotionState end_state() const noexcept { return end_; }
+  std::span<const Phase> phases() const noexcept { return {phases_.data(), count_}; }
+
+ private:
+  friend class detail::ProfileBuilder;
+  std::array<Phase, kMaxPhases> phases_{};
+  std::size_t count_ = 0;
+  double duration_ = 0.0;
+  double t_brake_ = 0.0;
+  double v_level_ = 0.0;
+  MotionState start_;
+  MotionState end_;
+};
+
+/// Where a position motion ends.
+struct PositionTarget {
+  double p = 0.0;  ///< target position [mm]
+  double v = 0.0;  ///< velocity at the target [mm/s], signed, |v| <= V; acceleration there is 0
+};
+
+/// Plans from `start` to `target` under `dynamics` (002_* 2.1). Rest-to-rest moves follow the
+/// manual's rule for an unreachable V (highest velocity reachable with the symmetric
+/// min(A+, A-)); starts that move away from or cannot stop before the target stop first and
+/// return (002_* 2.3); start states beyond the limits are first brought back inside them.
+Result plan_position(const MotionState& start, const PositionTarget& target,
+                     const Dynamics& dynamics, Profile& out) noexcept;
+
+/// Plans from `start` to the signed velocity `v_target` [mm/s] and constant velocity after it
+/// (endless motion). A sign change stops first (A-), then speeds up the other way (A+).
+/// dynamics.v_max is not used.
+Result plan_velocity(const MotionState& start, double v_target, const Dynamics& dynamics,
+                     Profile& out) noexcept;
+
+/// Plans the fastest stop to rest from `start` (velocity change to zero, 002_* 2.2 "Stop").
+Result plan_stop(const MotionState& start, const Dynamics& dynamics, Profile& out) noexcept;
+
+}  // namespace ncsim::axes

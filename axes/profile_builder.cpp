@@ -1,0 +1,139 @@
+// axes/profile_builder.cpp: phase chaining, the 3-phase velocity change and the clamp/stop
+// pieces every planner shares (see profile_builder.hpp).
+
+#include "axes/profile_builder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+namespace ncsim::axes::detail {
+
+namespace {
+
+// Closed-form advance of (p, v, a) over dt with constant jerk j.
+void advance(double& p, double& v, double& a, double j, double dt) noexcept {
+  p += dt * (v + dt * (a * 0.5 + dt * j * (1.0 / 6.0)));
+  v += dt * (a + dt * j * 0.5);
+  a += dt * j;
+}
+
+}  // namespace
+
+VelocityChange velocity_change(double v0, double a0, double v_target, double a_up, double a_down,
+                               double jerk) noexcept {
+  // 002_* 2.1: acceleration built up with J, [held at the limit], reduced with J. The velocity
+  // reached when the acceleration is taken to zero at once decides the direction of the pulse.
+  VelocityChange out;
+  const double v_zero = v0 + a0 * std::abs(a0) / (2.0 * jerk);
+  const double s = v_target >= v_zero ? 1.0 : -1.0;
+  const double a_lim = s > 0.0 ? a_up : a_down;
+  const double a_s = s * a0;              // start acceleration in the pulse's direction
+  const double dv = s * (v_target - v0);  // velocity change in the pulse's direction
+  double a_peak = std::sqrt(std::max(0.0, jerk * dv + 0.5 * a_s * a_s));
+  double t_hold = 0.0;
+  if (a_peak > a_lim) {
+    a_peak = a_lim;
+    t_hold = (dv - (2.0 * a_peak * a_peak - a_s * a_s) / (2.0 * jerk)) / a_peak;
+  }
+  out.jerk = {s * jerk, 0.0, -s * jerk};
+  out.duration = {std::max(0.0, (a_peak - a_s) / jerk), std::max(0.0, t_hold), a_peak / jerk};
+  return out;
+}
+
+double distance(double v0, double a0, const VelocityChange& change) noexcept {
+  double p = 0.0;
+  double v = v0;
+  double a = a0;
+  for (std::size_t i = 0; i < 3; ++i)
+    advance(p, v, a, change.jerk[i], change.duration[i]);
+  return p;
+}
+
+double ramp_distance(double v, double a_lim, double jerk) noexcept {
+  // Symmetric S-ramp from rest to v: the mean velocity is v/2 over the ramp time.
+  if (v * jerk <= a_lim * a_lim) return v * std::sqrt(v / jerk);
+  return 0.5 * v * (v / a_lim + a_lim / jerk);
+}
+
+ProfileBuilder::ProfileBuilder(Profile& out, const MotionState& start) noexcept
+    : out_(out), state_(start) {
+  out_.count_ = 0;
+  out_.start_ = start;
+  out_.t_brake_ = 0.0;
+  out_.v_level_ = 0.0;
+}
+
+void ProfileBuilder::add(double jerk, double duration) noexcept {
+  if (!(duration > 0.0)) return;
+  if (out_.count_ >= Profile::kMaxPhases) std::abort();  // planners never need more
+  out_.phases_[out_.count_++] = Phase{t_, duration, state_.p, state_.v, state_.a, jerk};
+  advance(state_.p, state_.v, state_.a, jerk, duration);
+  t_ += duration;
+}
+
+void ProfileBuilder::add(const VelocityChange& change, double sign) noexcept {
+  for (std::size_t i = 0; i < 3; ++i)
+    add(sign * change.jerk[i], change.duration[i]);
+}
+
+void ProfileBuilder::finish(const MotionState* exact_end) noexcept {
+  if (exact_end != nullptr) state_ = *exact_end;
+  state_.a = 0.0;  // every planned motion ends with zero acceleration
+  out_.end_ = state_;
+  out_.duration_ = t_;
+}
+
+void clamp_acceleration(ProfileBuilder& builder, double sign, const Dynamics& dynamics) noexcept {
+  const double a = sign * builder.state().a;
+  if (a > dynamics.acc_max) {
+    builder.add(-sign * dynamics.jerk_max, (a - dynamics.acc_max) / dynamics.jerk_max);
+  } else if (a < -dynamics.dec_max) {
+    builder.add(sign * dynamics.jerk_max, (-dynamics.dec_max - a) / dynamics.jerk_max);
+  }
+}
+
+void append_rest_to_rest(ProfileBuilder& builder, double p_target,
+                         const Dynamics& dynamics) noexcept {
+  const double d = p_target - builder.state().p;
+  if (d == 0.0) return;
+  const double s = d > 0.0 ? 1.0 : -1.0;
+  const double dist = std::abs(d);
+  const double jerk = dynamics.jerk_max;
+  // 002_* 2.1: "falls V nicht erreicht werden kann ... die groesste erreichbare Geschwindigkeit
+  // (unter der symmetrischen Beschleunigung/Verzoegerung A+- = min(A+, A-))".
+  const double a_sym = std::min(dynamics.acc_max, dynamics.dec_max);
+  double v_reach = 0.0;
+  if (dist * jerk * jerk <= 2.0 * a_sym * a_sym * a_sym) {
+    v_reach = std::cbrt(0.25 * dist * dist * jerk);  // A not reached: D = 2 v sqrt(v/J)
+  } else {
+    const double r = a_sym / jerk;  // A reached: D = v (v/A + A/J)
+    v_reach = 0.5 * a_sym * (std::sqrt(r * r + 4.0 * dist / a_sym) - r);
+  }
+  const double v_level = std::min(dynamics.v_max, v_reach);
+  const double d_acc = ramp_distance(v_level, dynamics.acc_max, jerk);
+  const double d_dec = ramp_distance(v_level, dynamics.dec_max, jerk);
+  const double t_cruise = std::max(0.0, (dist - d_acc - d_dec) / v_level);
+  builder.set_level(v_level);
+  builder.add(velocity_change(0.0, 0.0, v_level, dynamics.acc_max, dynamics.dec_max, jerk), s);
+  builder.add(0.0, t_cruise);
+  builder.mark_brake();
+  builder.add(velocity_change(v_level, 0.0, 0.0, dynamics.acc_max, dynamics.dec_max, jerk), s);
+}
+
+double motion_sign(const MotionState& state, double fallback) noexcept {
+  if (state.v != 0.0) return state.v > 0.0 ? 1.0 : -1.0;
+  if (state.a != 0.0) return state.a > 0.0 ? 1.0 : -1.0;
+  return fallback;
+}
+
+void append_stop(ProfileBuilder& builder, const Dynamics& dynamics) noexcept {
+  const double s = motion_sign(builder.state(), 1.0);
+  clamp_acceleration(builder, s, dynamics);
+  const MotionState& st = builder.state();
+  builder.add(velocity_change(s * st.v, s * st.a, 0.0, dynamics.acc_max, dynamics.dec_max,
+                              dynamics.jerk_max),
+              s);
+}
+
+}  // namespace ncsim::axes::detail

@@ -1,0 +1,75 @@
+#pragma once
+// axes/profile_builder: internal building blocks of the planners in profile_*.cpp (not part of
+// the public API). A ProfileBuilder appends constant-jerk phases to a Profile and integrates the
+// state in closed form; VelocityChange is the time-optimal jerk-limited change from (v0, a0) to
+// (v_target, 0) of 002_* 2.1 (jerk build-up, [constant acceleration], jerk reduction).
+//
+// Frames: the planners work in a "frame" with sign s in {+1, -1}: frame quantities are the
+// world quantities times s, so in the frame the motion goes forward and A+ limits speeding up
+// (positive frame acceleration while the frame velocity is >= 0), A- slowing down.
+
+#include <array>
+
+#include "axes/profile.hpp"
+
+namespace ncsim::axes::detail {
+
+/// Up to three phases (frame jerk, duration) changing the velocity to a target with a = 0.
+struct VelocityChange {
+  std::array<double, 3> jerk{};      // frame jerk [mm/s^3]
+  std::array<double, 3> duration{};  // [s]
+};
+
+/// Time-optimal change from frame state (v0, a0) to (v_target, 0); a0 must lie in
+/// [-a_down, a_up]. a_up limits positive, a_down negative frame acceleration.
+VelocityChange velocity_change(double v0, double a0, double v_target, double a_up, double a_down,
+                               double jerk) noexcept;
+
+/// Frame distance travelled by `change` from (v0, a0).
+double distance(double v0, double a0, const VelocityChange& change) noexcept;
+
+/// Distance [mm] of a rest-to-rest-speed ramp from 0 to v [mm/s] under limit a_lim and jerk.
+double ramp_distance(double v, double a_lim, double jerk) noexcept;
+
+/// Appends phases to a Profile; state integration in closed form.
+class ProfileBuilder {
+ public:
+  ProfileBuilder(Profile& out, const MotionState& start) noexcept;
+
+  /// Appends a phase with world jerk `jerk` lasting `duration`; durations <= 0 are skipped.
+  void add(double jerk, double duration) noexcept;
+  /// Appends the phases of `change` in the frame with sign `sign`.
+  void add(const VelocityChange& change, double sign) noexcept;
+  /// Marks the current time as the start of the braking phase.
+  void mark_brake() noexcept { out_.t_brake_ = t_; }
+  void set_level(double v_level) noexcept { out_.v_level_ = v_level; }
+
+  const MotionState& state() const noexcept { return state_; }
+  double time() const noexcept { return t_; }
+
+  /// Completes the profile; `exact_end` (when given) replaces the integrated end state, so the
+  /// target is met exactly after the last phase. The end acceleration is zero.
+  void finish(const MotionState* exact_end = nullptr) noexcept;
+
+ private:
+  Profile& out_;
+  MotionState state_;
+  double t_ = 0.0;
+};
+
+/// Frame clamp: brings a frame acceleration beyond [-a_down, a_up] back to the limit with
+/// jerk (decision "limits first", docs/axes-profile.md). Appends to `builder` in world frame.
+void clamp_acceleration(ProfileBuilder& builder, double sign, const Dynamics& dynamics) noexcept;
+
+/// Appends a rest-to-rest move from the builder's (resting) state to `p_target` under the
+/// manual's rule for an unreachable V (002_* 2.1, symmetric min(A+, A-)).
+void append_rest_to_rest(ProfileBuilder& builder, double p_target,
+                         const Dynamics& dynamics) noexcept;
+
+/// Appends a stop to rest from the builder's state (frame = direction of motion).
+void append_stop(ProfileBuilder& builder, const Dynamics& dynamics) noexcept;
+
+/// Sign of the direction of motion of `state`: of v, else of a, else `fallback`.
+double motion_sign(const MotionState& state, double fallback) noexcept;
+
+}  // namespace ncsim::axes::detail

@@ -1,0 +1,171 @@
+// axes/profile_general.cpp: position motions from any start state (002_* 2.1 from a moving
+// axis, as needed by online changes 2.2 to 2.4, decoupled slaves and sync-in).
+//
+// Case split (docs/axes-profile.md, "Planning from any state"):
+//  1. rest to rest: closed form with the manual's symmetric min(A+, A-) rule (profile_builder);
+//  2. moving toward the target and able to arrive: one velocity change to a level vm, [cruise
+//     at V], one velocity change to the target velocity. vm = V when the distance allows
+//     (closed form); otherwise vm solves distance(vm) = remaining distance, a scalar equation
+//     with no closed form in the mixed cases, solved by a bracketed Illinois iteration;
+//  3. moving away, or unable to arrive without overshooting: stop, then return (002_* 2.3).
+
+#include <cmath>
+
+#include "axes/profile.hpp"
+#include "axes/profile_builder.hpp"
+
+namespace ncsim::axes {
+
+namespace {
+
+using detail::append_rest_to_rest;
+using detail::append_stop;
+using detail::distance;
+using detail::ProfileBuilder;
+using detail::ramp_distance;
+using detail::velocity_change;
+
+bool finite(const MotionState& s) noexcept {
+  return std::isfinite(s.p) && std::isfinite(s.v) && std::isfinite(s.a);
+}
+
+// Frame distance to rest from frame state (v, a) with v >= 0 moving forward: the acceleration
+// clamp (limits first), then the velocity change to zero.
+double stop_distance(double v, double a, const Dynamics& dyn) noexcept {
+  double p = 0.0;
+  const double j = dyn.jerk_max;
+  double t = 0.0;
+  double jc = 0.0;
+  if (a > dyn.acc_max) {
+    t = (a - dyn.acc_max) / j;
+    jc = -j;
+  } else if (a < -dyn.dec_max) {
+    t = (-dyn.dec_max - a) / j;
+    jc = j;
+  }
+  if (t > 0.0) {
+    p = t * (v + t * (a * 0.5 + t * jc * (1.0 / 6.0)));
+    v += t * (a + t * jc * 0.5);
+    a += t * jc;
+  }
+  return p + distance(v, a, velocity_change(v, a, 0.0, dyn.acc_max, dyn.dec_max, j));
+}
+
+// Distance of: change (v0, a0) -> (vm, 0), then (vm, 0) -> (vf, 0), in the frame.
+double level_distance(double v0, double a0, double vm, double vf, const Dynamics& dyn) noexcept {
+  const double j = dyn.jerk_max;
+  return distance(v0, a0, velocity_change(v0, a0, vm, dyn.acc_max, dyn.dec_max, j)) +
+         distance(vm, 0.0, velocity_change(vm, 0.0, vf, dyn.acc_max, dyn.dec_max, j));
+}
+
+// Level vm in [0, v_hi] with level_distance(vm) == dist, given f(0) <= dist < f(v_hi).
+// Illinois variant of regula falsi, with bisection as a fallback.
+double solve_level(double v0, double a0, double vf, double dist, double v_hi, double f_lo,
+                   double f_hi, const Dynamics& dyn) noexcept {
+  double lo = 0.0;
+  double hi = v_hi;
+  double g_lo = f_lo - dist;
+  double g_hi = f_hi - dist;
+  const double tol = 1e-15 * (dist + f_hi) + 1e-300;
+  int side = 0;
+  for (int i = 0; i < 200; ++i) {
+    double x = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
+    if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
+    const double g = level_distance(v0, a0, x, vf, dyn) - dist;
+    if (std::abs(g) <= tol || hi - lo <= 1e-15 * v_hi) return x;
+    if (g < 0.0) {
+      lo = x;
+      g_lo = g;
+      if (side == -1) g_hi *= 0.5;
+      side = -1;
+    } else {
+      hi = x;
+      g_hi = g;
+      if (side == 1) g_lo *= 0.5;
+      side = 1;
+    }
+  }
+  return lo;
+}
+
+// Case 3: stop, then return to the target (and speed up to its velocity on the way).
+void append_stop_and_return(ProfileBuilder& b, const PositionTarget& target,
+                            const Dynamics& dyn) noexcept {
+  append_stop(b, dyn);
+  if (target.v == 0.0) {
+    append_rest_to_rest(b, target.p, dyn);
+    return;
+  }
+  const double s = target.v > 0.0 ? 1.0 : -1.0;
+  const double speed = std::abs(target.v);
+  append_rest_to_rest(b, target.p - s * ramp_distance(speed, dyn.acc_max, dyn.jerk_max), dyn);
+  b.mark_brake();
+  b.set_level(speed);
+  b.add(velocity_change(0.0, 0.0, speed, dyn.acc_max, dyn.dec_max, dyn.jerk_max), s);
+}
+
+}  // namespace
+
+Result plan_position(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
+                     Profile& out) noexcept {
+  if (!valid(dyn) || !finite(start) || !std::isfinite(target.p) || !std::isfinite(target.v) ||
+      std::abs(target.v) > dyn.v_max) {
+    return Result::error_invalid_input;
+  }
+  ProfileBuilder b(out, start);
+  const MotionState end{target.p, target.v, 0.0};
+  if (start.v == 0.0 && start.a == 0.0 && target.v == 0.0) {  // case 1
+    append_rest_to_rest(b, target.p, dyn);
+    b.finish(&end);
+    return Result::ok;
+  }
+  // Frame: the direction of arrival (target velocity), else the side of the stop point on
+  // which the target lies.
+  double s = 1.0;
+  if (target.v != 0.0) {
+    s = target.v > 0.0 ? 1.0 : -1.0;
+  } else {
+    const double m = detail::motion_sign(start, 1.0);
+    const double p_stop = start.p + m * stop_distance(m * start.v, m * start.a, dyn);
+    const double d = target.p - p_stop;
+    s = d > 0.0 ? 1.0 : (d < 0.0 ? -1.0 : m);
+  }
+  const double v0 = s * start.v;
+  const double a0 = s * start.a;
+  if (v0 < 0.0 || (v0 == 0.0 && a0 < 0.0)) {  // case 3, moving away
+    append_stop_and_return(b, target, dyn);
+    b.finish(&end);
+    return Result::ok;
+  }
+  detail::clamp_acceleration(b, s, dyn);
+  const double v1 = s * b.state().v;
+  const double a1 = s * b.state().a;
+  const double dist = s * (target.p - b.state().p);
+  const double vf = std::abs(target.v);
+  const double j = dyn.jerk_max;
+  const double f_hi = level_distance(v1, a1, dyn.v_max, vf, dyn);
+  double vm = dyn.v_max;
+  double t_cruise = 0.0;
+  if (f_hi <= dist) {  // case 2, V reached
+    t_cruise = (dist - f_hi) / dyn.v_max;
+  } else {
+    const double f_lo = level_distance(v1, a1, 0.0, vf, dyn);
+    if (f_lo > dist) {  // case 3, cannot arrive without overshooting
+      append_stop_and_return(b, target, dyn);
+      b.finish(&end);
+      return Result::ok;
+    }
+    vm = solve_level(v1, a1, vf, dist, dyn.v_max, f_lo, f_hi, dyn);
+    const double rest = dist - level_distance(v1, a1, vm, vf, dyn);
+    if (rest > 0.0 && vm > 0.0) t_cruise = rest / vm;
+  }
+  b.set_level(vm);
+  b.add(velocity_change(v1, a1, vm, dyn.acc_max, dyn.dec_max, j), s);
+  b.add(0.0, t_cruise);
+  b.mark_brake();
+  b.add(velocity_change(vm, 0.0, vf, dyn.acc_max, dyn.dec_max, j), s);
+  b.finish(&end);
+  return Result::ok;
+}
+
+}  // namespace ncsim::axes
