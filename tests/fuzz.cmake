@@ -1,0 +1,11 @@
+# libFuzzer targets (included by tests/CMakeLists.txt only when NCSIM_FUZZ=ON; clang only).
+# The compile flags (-fsanitize=fuzzer-no-link,address,undefined) come from ncsim_options;
+# -fsanitize=fuzzer at link time adds libFuzzer's main. Run with tests/fuzz/run.sh SECONDS.
+get_target_property(_ncsim_grammar_type ncsim_grammar TYPE)
+if(_ncsim_grammar_type STREQUAL "INTERFACE_LIBRARY")
+  message(STATUS "fuzz: ncsim_grammar is not built yet, skipping fuzz_grammar")
+else()
+  add_executable(fuzz_grammar ${CMAKE_CURRENT_LIST_DIR}/fuzz/fuzz_grammar.cpp)
+  target_link_libraries(fuzz_grammar PRIVATE ncsim_grammar ncsim_core ncsim_options)
+  target_link_options(fuzz_grammar PRIVATE -fsanitize=fuzzer)
+endif()

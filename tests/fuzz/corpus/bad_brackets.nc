@@ -1,0 +1,6 @@
+%bad
+N10 G01 X[1+[2*3] F100
+N20 X]]
+N30 $ENDIF
+N40 $ELSE
+M30

@@ -1,0 +1,7 @@
+%bad
+N10 G01 X1 #CS OFF
+N20 LL SUB X1
+N30 $GOTO nowhere
+N40 Q12 @@ ~
+N50 G9999
+M30

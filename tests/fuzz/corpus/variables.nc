@@ -1,0 +1,17 @@
+%variables
+#VAR
+  V.P.CNT : UNS32 = 0
+  V.L.R : REAL
+  V.S.VAR[5] : REAL = [5,10,10,15,\
+                       20]
+  V.P.TXT : STRING[20] = "hello"
+#ENDVAR
+N10 "STRING1" = "COS[\"STRING2\"]"
+N20 "STRING2" = "5 * 12"
+N30 X[-2*"STRING1"+"STRING2"]
+N40 X V.S.VAR[4]
+N50 XV.S.VAR[3]
+N60 V.G.KIN[90].PARAM[0] = 1000000
+N70 V.L.R = V.E.LENGTH * 2
+#DELETE V.P.CNT, V.P.TXT
+M30
