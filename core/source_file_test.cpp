@@ -2,6 +2,10 @@
 
 #include <doctest/doctest.h>
 
+#include <filesystem>
+#include <fstream>
+#include <string>
+
 using ncsim::core::SourceFile;
 using ncsim::core::SourceLoc;
 
@@ -27,6 +31,28 @@ TEST_CASE("line text has no line end, also for CRLF files") {
 }
 
 TEST_CASE("loading a missing file names the path") {
-  CHECK_THROWS_WITH(SourceFile::load("/nonexistent/x.nc"),
-                    doctest::Contains("/nonexistent/x.nc"));
+  CHECK_THROWS_WITH(SourceFile::load("/nonexistent/x.nc"), doctest::Contains("/nonexistent/x.nc"));
+}
+
+TEST_CASE("loading reads the whole file byte for byte, CR and NUL included") {
+  const auto path = std::filesystem::temp_directory_path() / "ncsim_source_file_test.nc";
+  constexpr char kBytes[] = "N10 G01\r\nX1\0Y2\n(no newline at the end)";
+  const std::string bytes(kBytes, sizeof(kBytes) - 1);
+  {
+    std::ofstream out(path, std::ios::binary);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  }
+  const SourceFile f = SourceFile::load(path);
+  std::filesystem::remove(path);
+  CHECK(f.text() == bytes);
+  CHECK(f.name() == path.string());
+  CHECK(f.line_count() == 3);
+  CHECK(f.line_text(3) == "(no newline at the end)");
+}
+
+TEST_CASE("an empty file has one empty line") {
+  const SourceFile f("e.nc", "");
+  CHECK(f.line_count() == 1);
+  CHECK(f.line_text(1).empty());
+  CHECK(f.loc_of(0) == SourceLoc{1, 1});
 }
