@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 
 namespace ncsim::axes::detail {
 
@@ -24,7 +25,13 @@ VelocityChange velocity_change(double v0, double a0, double v_target, double a_u
                                double jerk) noexcept {
   // 002_* 2.1: acceleration built up with J, [held at the limit], reduced with J. The velocity
   // reached when the acceleration is taken to zero at once decides the direction of the pulse.
+  // Numerics (docs/axes-profile.md): a phase whose length is only the rounding residue of a
+  // difference of nearly equal terms (a_peak - a_s, the hold's velocity excess) is dropped;
+  // kResidue bounds that residue relative to the terms. The state after each phase is set
+  // to its intended value by ProfileBuilder, so dropping it changes nothing measurable.
+  constexpr double kResidue = 8.0 * std::numeric_limits<double>::epsilon();
   VelocityChange out;
+  out.v_end = v_target;
   const double v_zero = v0 + a0 * std::abs(a0) / (2.0 * jerk);
   const double s = v_target >= v_zero ? 1.0 : -1.0;
   const double a_lim = s > 0.0 ? a_up : a_down;
@@ -34,10 +41,14 @@ VelocityChange velocity_change(double v0, double a0, double v_target, double a_u
   double t_hold = 0.0;
   if (a_peak > a_lim) {
     a_peak = a_lim;
-    t_hold = (dv - (2.0 * a_peak * a_peak - a_s * a_s) / (2.0 * jerk)) / a_peak;
+    const double dv_ramps = (2.0 * a_peak * a_peak - a_s * a_s) / (2.0 * jerk);  // [mm/s]
+    const double dv_hold = dv - dv_ramps;
+    if (dv_hold > kResidue * (std::abs(dv) + std::abs(dv_ramps))) t_hold = dv_hold / a_peak;
   }
+  const double da_up = a_peak - a_s;  // acceleration change of phase 1 [mm/s^2]
   out.jerk = {s * jerk, 0.0, -s * jerk};
-  out.duration = {std::max(0.0, (a_peak - a_s) / jerk), std::max(0.0, t_hold), a_peak / jerk};
+  out.duration = {da_up > kResidue * a_peak ? da_up / jerk : 0.0, t_hold, a_peak / jerk};
+  out.a_peak = s * a_peak;
   return out;
 }
 
@@ -72,9 +83,19 @@ void ProfileBuilder::add(double jerk, double duration) noexcept {
   t_ += duration;
 }
 
+void ProfileBuilder::add(double jerk, double duration, double a_end) noexcept {
+  add(jerk, duration);
+  state_.a = a_end;
+}
+
 void ProfileBuilder::add(const VelocityChange& change, double sign) noexcept {
-  for (std::size_t i = 0; i < 3; ++i)
-    add(sign * change.jerk[i], change.duration[i]);
+  // Each phase starts from the boundary value it is meant to start from, not from the rounded
+  // integration of the one before: a residual acceleration of ~1e-16 A would otherwise grow
+  // into a velocity error a t and a position error a t^2/2 over a long cruise that follows.
+  add(sign * change.jerk[0], change.duration[0], sign * change.a_peak);
+  add(sign * change.jerk[1], change.duration[1], sign * change.a_peak);
+  add(sign * change.jerk[2], change.duration[2], 0.0);
+  state_.v = sign * change.v_end;
 }
 
 void ProfileBuilder::finish(const MotionState* exact_end) noexcept {
@@ -87,9 +108,11 @@ void ProfileBuilder::finish(const MotionState* exact_end) noexcept {
 void clamp_acceleration(ProfileBuilder& builder, double sign, const Dynamics& dynamics) noexcept {
   const double a = sign * builder.state().a;
   if (a > dynamics.acc_max) {
-    builder.add(-sign * dynamics.jerk_max, (a - dynamics.acc_max) / dynamics.jerk_max);
+    builder.add(-sign * dynamics.jerk_max, (a - dynamics.acc_max) / dynamics.jerk_max,
+                sign * dynamics.acc_max);
   } else if (a < -dynamics.dec_max) {
-    builder.add(sign * dynamics.jerk_max, (-dynamics.dec_max - a) / dynamics.jerk_max);
+    builder.add(sign * dynamics.jerk_max, (-dynamics.dec_max - a) / dynamics.jerk_max,
+                -sign * dynamics.dec_max);
   }
 }
 
@@ -113,7 +136,10 @@ void append_rest_to_rest(ProfileBuilder& builder, double p_target,
   const double v_level = std::min(dynamics.v_max, v_reach);
   const double d_acc = ramp_distance(v_level, dynamics.acc_max, jerk);
   const double d_dec = ramp_distance(v_level, dynamics.dec_max, jerk);
-  const double t_cruise = std::max(0.0, (dist - d_acc - d_dec) / v_level);
+  // A cruise that is only the rounding residue of dist - d_acc - d_dec is dropped (Numerics).
+  const double d_cruise = dist - d_acc - d_dec;
+  const double t_cruise =
+      d_cruise > 8.0 * std::numeric_limits<double>::epsilon() * dist ? d_cruise / v_level : 0.0;
   builder.set_level(v_level);
   builder.add(velocity_change(0.0, 0.0, v_level, dynamics.acc_max, dynamics.dec_max, jerk), s);
   builder.add(0.0, t_cruise);

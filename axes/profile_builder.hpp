@@ -15,9 +15,13 @@
 namespace ncsim::axes::detail {
 
 /// Up to three phases (frame jerk, duration) changing the velocity to a target with a = 0.
+/// The intended boundary values travel with it: the builder sets the state to them after the
+/// phases instead of keeping the rounded integration (docs/axes-profile.md, "Numerics").
 struct VelocityChange {
   std::array<double, 3> jerk{};      // frame jerk [mm/s^3]
   std::array<double, 3> duration{};  // [s]
+  double a_peak = 0.0;               // frame acceleration after phase 1 and in phase 2 [mm/s^2]
+  double v_end = 0.0;                // frame velocity after phase 3 (acceleration 0) [mm/s]
 };
 
 /// Time-optimal change from frame state (v0, a0) to (v_target, 0); a0 must lie in
@@ -38,7 +42,10 @@ class ProfileBuilder {
 
   /// Appends a phase with world jerk `jerk` lasting `duration`; durations <= 0 are skipped.
   void add(double jerk, double duration) noexcept;
-  /// Appends the phases of `change` in the frame with sign `sign`.
+  /// As add(jerk, duration), then sets the acceleration to its intended end value `a_end`.
+  void add(double jerk, double duration, double a_end) noexcept;
+  /// Appends the phases of `change` in the frame with sign `sign`; the state after each phase
+  /// is set to its intended value (acceleration +-a_peak, then velocity v_end with a = 0).
   void add(const VelocityChange& change, double sign) noexcept;
   /// Marks the current time as the start of the braking phase.
   void mark_brake() noexcept { out_.t_brake_ = t_; }

@@ -10,6 +10,7 @@
 //  3. moving away, or unable to arrive without overshooting: stop, then return (002_* 2.3).
 
 #include <cmath>
+#include <limits>
 
 #include "axes/profile.hpp"
 #include "axes/profile_builder.hpp"
@@ -24,6 +25,9 @@ using detail::distance;
 using detail::ProfileBuilder;
 using detail::ramp_distance;
 using detail::velocity_change;
+
+// Relative size of a rounding residue: a difference below kResidue times its terms is zero.
+constexpr double kResidue = 8.0 * std::numeric_limits<double>::epsilon();
 
 bool finite(const MotionState& s) noexcept {
   return std::isfinite(s.p) && std::isfinite(s.v) && std::isfinite(s.a);
@@ -59,20 +63,24 @@ double level_distance(double v0, double a0, double vm, double vf, const Dynamics
 }
 
 // Level vm in [0, v_hi] with level_distance(vm) == dist, given f(0) <= dist < f(v_hi).
-// Illinois variant of regula falsi, with bisection as a fallback.
+// Illinois variant of regula falsi, with bisection as a fallback. The tolerance is relative to
+// dist only: f(v_hi) can exceed dist by many orders of magnitude (V = 5000 mm/s, A- = 5 mm/s^2
+// against a 10 um move), and a tolerance tied to it let the chain miss the target. When the
+// bracket has shrunk to rounding size, the lower end is returned: its distance is <= dist, so
+// the remaining way is a short cruise and the target is still met.
 double solve_level(double v0, double a0, double vf, double dist, double v_hi, double f_lo,
                    double f_hi, const Dynamics& dyn) noexcept {
   double lo = 0.0;
   double hi = v_hi;
   double g_lo = f_lo - dist;
   double g_hi = f_hi - dist;
-  const double tol = 1e-15 * (dist + f_hi) + 1e-300;
+  const double tol = kResidue * dist;
   int side = 0;
-  for (int i = 0; i < 200; ++i) {
+  for (int i = 0; i < 200 && hi - lo > kResidue * hi; ++i) {
     double x = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
     if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
     const double g = level_distance(v0, a0, x, vf, dyn) - dist;
-    if (std::abs(g) <= tol || hi - lo <= 1e-15 * v_hi) return x;
+    if (std::abs(g) <= tol) return x;
     if (g < 0.0) {
       lo = x;
       g_lo = g;
@@ -146,8 +154,8 @@ Result plan_position(const MotionState& start, const PositionTarget& target, con
   const double f_hi = level_distance(v1, a1, dyn.v_max, vf, dyn);
   double vm = dyn.v_max;
   double t_cruise = 0.0;
-  if (f_hi <= dist) {  // case 2, V reached
-    t_cruise = (dist - f_hi) / dyn.v_max;
+  if (f_hi <= dist) {  // case 2, V reached; a cruise of rounding residue length is dropped
+    if (dist - f_hi > kResidue * dist) t_cruise = (dist - f_hi) / dyn.v_max;
   } else {
     const double f_lo = level_distance(v1, a1, 0.0, vf, dyn);
     if (f_lo > dist) {  // case 3, cannot arrive without overshooting
@@ -157,7 +165,7 @@ Result plan_position(const MotionState& start, const PositionTarget& target, con
     }
     vm = solve_level(v1, a1, vf, dist, dyn.v_max, f_lo, f_hi, dyn);
     const double rest = dist - level_distance(v1, a1, vm, vf, dyn);
-    if (rest > 0.0 && vm > 0.0) t_cruise = rest / vm;
+    if (rest > kResidue * dist && vm > 0.0) t_cruise = rest / vm;
   }
   b.set_level(vm);
   b.add(velocity_change(v1, a1, vm, dyn.acc_max, dyn.dec_max, j), s);
