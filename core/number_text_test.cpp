@@ -1,0 +1,27 @@
+#include "core/number_text.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <limits>
+
+using ncsim::core::number_text;
+
+TEST_CASE("numbers print as a user writes them, without trailing zeros") {
+  CHECK(number_text(10.0) == "10");
+  CHECK(number_text(-300.0) == "-300");
+  CHECK(number_text(0.1) == "0.1");
+  CHECK(number_text(-0.0) == "0");
+  CHECK(number_text(65.0000001) == "65.0000001");
+}
+
+TEST_CASE("the text reads back to the same number") {
+  for (const double v : {1.0 / 3.0, 2.0 / 7.0 * 1e-12, 123456.789e10, -4e-300}) {
+    CHECK(std::stod(number_text(v)) == v);
+  }
+}
+
+TEST_CASE("non-finite values have names") {
+  CHECK(number_text(std::numeric_limits<double>::quiet_NaN()) == "nan");
+  CHECK(number_text(-std::numeric_limits<double>::infinity()) == "-inf");
+}
