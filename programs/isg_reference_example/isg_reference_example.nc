@@ -1,4 +1,4 @@
-; isg_reference_example: the minimal conformance example, verbatim.
+; isg_reference_example: the minimal conformance example, verbatim but for one repair.
 ; source: /work/shared/reference/isg-language.md section 10 "Minimal conformance examples".
 %L SUB1                      ; local sub must precede main
 #VAR
@@ -23,7 +23,10 @@ N90 $ENDIF
 N100 $FOR P3 = 1, 3, 1
 N110   LL SUB1
 N120 $ENDFOR
-N130 G90 G02 X20 Y0 I10 J0   ; I/J relative (G162)
+; repaired: "N130 G90 G02 X20 Y0 I10 J0" -> "X95": the tool is at X75 Y0 here (X45 + three
+;   10 mm incremental moves in SUB1), so the centre is X85 and the end X20 would lie 65 mm from
+;   it against a start radius of 10 mm (error NC4201); X95 is the half circle the text means.
+N130 G90 G02 X95 Y0 I10 J0   ; I/J relative (G162)
 N140 G04 X0.5                ; 0.5 s dwell, alone in block
 N150 G61 G01 X30             ; blend at end of this block
 N160 X40 Y10

@@ -1,0 +1,230 @@
+#pragma once
+// interp/command: what the interpreter hands to the planner, one value per command.
+//
+// Purpose: the seam between decode time (interp/) and run time (planner/, ipo/). Every command
+// is an immutable value that carries its source line and the modal state it needs, so the
+// planner can queue it without looking back at the interpreter.
+// Units inside: mm, s, degrees; feeds in mm/s (converted from the program's mm/min at this
+// boundary, docs/interp.md "Units"). Positions are absolute coordinates in the programming
+// frame (PCS, or PCS1 while synchronised), one slot per machine axis in machine order
+// (`Machine::axes`); `AxisMask` bit i says axis i was programmed in the block.
+// Invariants: `line` >= 1 for commands from a block (0 only for the final End of a file
+// without M02/M30); arcs carry a centre at equal distance (within the P-CHAN-00059/00060
+// limits, then corrected) from start and end.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace ncsim::interp {
+
+/// Most axes one channel addresses (machine order).
+inline constexpr std::size_t kMaxAxes = 16;
+using AxisValues = std::array<double, kMaxAxes>;  ///< [mm | deg] per machine axis
+using AxisMask = std::uint32_t;                   ///< bit i: machine axis i
+
+enum class MotionKind : std::uint8_t { rapid, linear, arc_cw, arc_ccw };
+enum class Plane : std::uint8_t { xy, zx, yz };                   ///< G17 / G18 / G19
+enum class FeedMode : std::uint8_t { per_minute, inverse_time };  ///< G94 / G93
+/// Block transition (isg-language.md §2.4): G08 (default), G09 (this block), G900, G901.
+enum class Transition : std::uint8_t {
+  accelerate_at_start,
+  stop_at_end,
+  decel_at_end,
+  decel_after_end
+};
+enum class SlopeType : std::uint8_t { step, trapez, sin2, hsc };  ///< #SLOPE TYPE
+enum class ContourKind : std::uint8_t { dev, dist, dist_soft, dist_master, pos, ptp };
+
+/// #CONTOUR MODE parameters (isg-language.md §5.3, PROG-475164939 defaults).
+struct ContourParams {
+  ContourKind kind = ContourKind::dev;
+  double path_dev = 1.0;   ///< PATH_DEV [mm]
+  double pre_dist = 1.0;   ///< PRE_DIST [mm]
+  double post_dist = 1.0;  ///< POST_DIST [mm]
+};
+
+/// The modal state a motion needs, as it was when the block was decoded.
+struct ModalSnapshot {
+  Plane plane = Plane::xy;
+  bool inch = false;         ///< G70 (values already converted to mm)
+  bool incremental = false;  ///< G91 (values already made absolute)
+  FeedMode feed_mode = FeedMode::per_minute;
+  Transition transition = Transition::accelerate_at_start;
+  bool exact_stop = false;  ///< G60 in this block or G360 modal
+  bool contouring = false;  ///< G61 in this block or G261 modal
+  ContourParams contour;
+  SlopeType slope = SlopeType::step;
+  std::optional<double> transvelmin;  ///< #TRANSVELMIN ON value [mm/s]
+  bool synchronised = false;          ///< between #SYNC IN and #SYNC OUT (PCS1)
+  bool cs_active = false;             ///< a #CS system is active
+  bool kinematics_on = false;         ///< #TRAFO ON
+  bool caxtrack = false;              ///< #CAXTRACK ON
+  std::uint8_t skip_level = 0;        ///< unused by the planner; 0
+};
+
+struct Arc {
+  double centre_1 = 0.0;    ///< first plane axis coordinate of the centre [mm]
+  double centre_2 = 0.0;    ///< second plane axis coordinate [mm]
+  std::uint8_t axis_1 = 0;  ///< machine index of the first plane axis
+  std::uint8_t axis_2 = 0;  ///< machine index of the second plane axis
+  double radius = 0.0;      ///< [mm]
+  bool full_circle = false;
+};
+
+struct Motion {
+  MotionKind kind = MotionKind::linear;
+  AxisValues start{};  ///< [mm | deg] absolute, programming frame
+  AxisValues end{};    ///< [mm | deg]
+  AxisMask programmed = 0;
+  double feed = 0.0;                 ///< [mm/s] (G94); 0 for rapid
+  std::optional<double> block_time;  ///< G93: machining time of the block [s]
+  std::optional<double> end_feed;    ///< E [mm/s]
+  std::optional<Arc> arc;            ///< G02/G03
+  ModalSnapshot modal;
+};
+
+enum class SplineType : std::uint8_t { akima, bspline };
+/// The vertices of one #SPLINE ON ... OFF section (isg-language.md §5.4).
+struct Spline {
+  SplineType type = SplineType::akima;
+  std::vector<AxisValues> points;  ///< start point first [mm | deg]
+  double feed = 0.0;               ///< [mm/s]
+  ModalSnapshot modal;
+};
+
+struct Dwell {
+  double seconds = 0.0;
+};
+
+enum class TechKind : std::uint8_t { m, h, s, t, d };
+/// M/H/S/T/D technology function passed through to the PLC side.
+struct Tech {
+  TechKind kind = TechKind::m;
+  double value = 0.0;
+};
+
+/// M00 (optional = false) / M01 (optional = true).
+struct ProgramStop {
+  bool optional = false;
+};
+
+enum class IndpKind : std::uint8_t { syn, asyn };
+/// X[INDP_SYN ...] / X[INDP_ASYN ...] (isg-language.md §6.1).
+struct AxisCommand {
+  IndpKind kind = IndpKind::syn;
+  std::uint8_t axis = 0;       ///< machine index
+  bool rapid = false;          ///< G00 (else G01)
+  double target = 0.0;         ///< absolute POS [mm | deg]
+  std::optional<double> feed;  ///< FEED [mm/s]
+  std::optional<double> time;  ///< TIME [s]
+  bool interruptible = false;  ///< INTERRUPTIBLE (TF5264 examples)
+};
+
+/// S1[MC_MoveVelocity ...] (PROG-208363915).
+struct MoveVelocity {
+  std::uint8_t axis = 0;
+  double velocity = 0.0;      ///< [mm/s] (program: um/s)
+  double acceleration = 0.0;  ///< [mm/s^2]; 0: axis list value
+  double deceleration = 0.0;  ///< [mm/s^2]; 0: axis list value
+  double jerk = 0.0;          ///< [mm/s^3]; 0: axis list value
+  int direction = 1;          ///< 1 positive, 3 negative, 4 current
+};
+
+/// S1[MC_TouchProbe ...] (PROG-306968203): arms the latch.
+struct ProbeArm {
+  std::uint8_t axis = 0;
+  int channel = 1;
+  std::optional<int> mode;  ///< 1 falling, 2 rising; nullopt: P-AXIS-00518
+};
+
+/// The channel waits for the latched conveyor position (before #SYNC IN, seed 004 §3).
+struct WaitProbe {
+  std::uint8_t axis = 0;
+};
+
+struct SyncIn {
+  std::uint8_t conveyor = 0;  ///< machine index of the conveyor axis
+  double conv_vel = 0.0;      ///< expected conveyor velocity [mm/s]
+  std::optional<double> feed_cont;
+  bool feed_cont_auto = false;
+};
+
+struct SyncOut {
+  std::optional<double> feed_cont;
+  bool feed_cont_auto = false;
+};
+
+enum class CsOp : std::uint8_t { def, on, off, off_all };
+struct SelectCs {
+  CsOp op = CsOp::on;
+  std::optional<int> id;
+  std::optional<std::array<double, 6>> values;  ///< v1..v3 [mm], phi1..phi3 [deg]
+  std::uint8_t active_count = 0;                ///< active systems after the command
+};
+
+struct Kinematics {
+  std::optional<int> kin_id;  ///< #KIN ID[n]
+  bool trafo_on = false;      ///< state after the command
+};
+
+struct CaxTrack {
+  bool on = false;
+  std::optional<std::uint8_t> axis;
+  double anglimit = 0.0;  ///< [deg]
+  double offset = 0.0;    ///< [deg]
+  double angpos = 0.0;    ///< OFF position [deg]
+};
+
+struct MachineData {
+  bool syn = false;
+  std::optional<std::uint8_t> axis;
+  std::string parameter;  ///< "kenngr.swe_pos 15000000" or a parameter id with its value
+  bool wait = false;
+};
+
+struct Message {
+  std::string text;
+  std::string mode;  ///< "", SYN, SYN_ACK, ACK
+};
+
+enum class FlushKind : std::uint8_t { stop, continue_, wait, ve_read };
+struct Flush {
+  FlushKind kind = FlushKind::stop;
+};
+
+struct WaitIndp {
+  AxisMask axes = 0;  ///< 0: ALL
+};
+
+/// G74: each axis with its order number; equal numbers home together.
+struct Homing {
+  std::vector<std::pair<std::uint8_t, int>> axes;
+};
+
+/// G92: the programmed values become the current position (offset kept).
+struct SetPosition {
+  AxisValues values{};
+  AxisMask axes = 0;
+};
+
+struct End {
+  int code = 30;  ///< 2 or 30; 0: end of file without M02/M30
+};
+
+using CommandBody =
+    std::variant<Motion, Spline, Dwell, Tech, ProgramStop, AxisCommand, MoveVelocity, ProbeArm,
+                 WaitProbe, SyncIn, SyncOut, SelectCs, Kinematics, CaxTrack, MachineData, Message,
+                 Flush, WaitIndp, Homing, SetPosition, End>;
+
+struct Command {
+  std::uint32_t line = 0;  ///< 1-based source line of the block
+  std::uint16_t file =
+      0;  ///< 0: the main program; else a global subroutine (Interpreter::file_name)
+  CommandBody body;
+};
+
+}  // namespace ncsim::interp

@@ -1,0 +1,64 @@
+#pragma once
+// interp/eval: evaluation of one block's expression nodes (isg-language.md §3.1-3.3).
+//
+// Inputs: a parsed block (its compact node array), the variable store. Outputs: a number, or
+// an EvalError with the node's position and an id.
+// Decisions (docs/interp.md "Expressions"): trigonometric functions take and give degrees; a
+// value is TRUE when |x| >= 0.5 (PROG-206901003); comparisons give 1 or 0, `==` and `!=`
+// compare with a relative tolerance of 1e-9; division by zero (also MOD 0) is error 20396
+// (DIAG-20396); domain errors (SQRT of a negative number, LN/LOG of x <= 0, ASIN/ACOS outside
+// [-1, 1], TAN/COT at a pole) are NC4101; bit operations work on the values truncated to
+// 32-bit integers.
+// Invariants: evaluation never allocates for P parameters and numbers; nothing is thrown.
+
+#include <optional>
+#include <string>
+
+#include "core/source_file.hpp"
+#include "grammar/ast.hpp"
+#include "interp/variables.hpp"
+
+namespace ncsim::interp {
+
+struct EvalError {
+  core::SourceLoc loc;
+  std::string id;
+  std::string message;
+};
+
+/// TRUE when |x| >= 0.5 (PROG-206901003, PROG-206940939).
+inline bool is_true(double x) {
+  return x >= 0.5 || x <= -0.5;
+}
+
+class Evaluator {
+ public:
+  explicit Evaluator(Variables& variables) : vars_(variables) {}
+
+  /// Value of node `n` of `block`; on failure returns nullopt and error() describes it.
+  std::optional<double> eval(const grammar::ast::Block& block, grammar::ast::NodeIndex n);
+  /// Resolves a variable node (evaluating its indices) into `out`.
+  bool resolve(const grammar::ast::Block& block, grammar::ast::NodeIndex n, VarRef& out);
+  /// Writes `value` to the variable node `n` (assignment).
+  bool assign(const grammar::ast::Block& block, grammar::ast::NodeIndex n, double value);
+
+  const EvalError& error() const { return error_; }
+  /// True when a V.E. variable was read since the last call (and resets the flag).
+  bool take_external_read() {
+    const bool r = external_read_;
+    external_read_ = false;
+    return r;
+  }
+
+ private:
+  bool fail(core::SourceLoc loc, std::string id, std::string message);
+  std::optional<double> call(const grammar::ast::Block& block, const grammar::ast::ExprNode& n);
+
+  Variables& vars_;
+  EvalError error_;
+  VarRef scratch_;
+  bool external_read_ = false;
+  int depth_ = 0;
+};
+
+}  // namespace ncsim::interp

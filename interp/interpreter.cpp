@@ -1,0 +1,643 @@
+// interp/interpreter.cpp: the block stream, control flow ($IF ... $GOTO), subroutines.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "grammar/keywords.hpp"
+#include "interp/interpreter_impl.hpp"
+
+namespace ncsim::interp {
+namespace {
+
+using ast::ControlKind;
+
+std::string upper(std::string_view s) {
+  std::string out(s);
+  for (auto& c : out) {
+    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+  }
+  return out;
+}
+
+bool is_opener(ControlKind k) {
+  return k == ControlKind::for_ || k == ControlKind::while_ || k == ControlKind::do_ ||
+         k == ControlKind::repeat || k == ControlKind::switch_;
+}
+bool is_closer(ControlKind k) {
+  return k == ControlKind::endfor || k == ControlKind::endwhile || k == ControlKind::enddo ||
+         k == ControlKind::until || k == ControlKind::endswitch;
+}
+bool is_loop(FrameKind k) {
+  return k != FrameKind::switch_;
+}
+
+const ast::Control* control_of(const ast::Block* b) {
+  return b == nullptr ? nullptr : std::get_if<ast::Control>(&b->body);
+}
+bool is_header(const ast::Block* b) {
+  return b != nullptr && std::holds_alternative<ast::ProgramHeader>(b->body);
+}
+/// `$IF cond $GOTO label` has no $ENDIF (PROG-206915851).
+bool is_block_if(const ast::Control& c) {
+  return c.kind == ControlKind::if_ && c.target.kind == ast::GotoKind::none;
+}
+
+bool label_matches(const ast::Block& b, const ast::GotoTarget& t) {
+  if (t.kind == ast::GotoKind::block_number) {
+    return b.number && b.number->is_label && b.number->number == t.number;
+  }
+  return b.label && grammar::iequals(b.label->name, t.name);
+}
+
+}  // namespace
+
+Interpreter::Impl::Impl(const core::SourceFile& file, const machines::Machine& m, Options o,
+                        core::DiagnosticList& d)
+    : machine(m),
+      options(std::move(o)),
+      diags(d),
+      vars(options.persistent, options.external),
+      evaluator(vars),
+      cs(m.channel.cs_rotation_sequence) {
+  auto main = std::make_unique<ProgramFile>();
+  main->file = &file;
+  main->blocks = std::make_unique<BlockSource>(file);
+  files.push_back(std::move(main));
+  for (std::size_t i = 0; i < machine.axes.size() && i < kMaxAxes; ++i) {
+    if (machine.axes[i].kind != machines::AxisKind::spindle) path_axes |= AxisMask{1} << i;
+  }
+  xyz = {axis_index("X"), axis_index("Y"), axis_index("Z")};
+}
+
+bool Interpreter::Impl::fail(core::SourceLoc loc, std::string id, std::string message) {
+  if (loc.line == 0) loc = {line, 1};
+  error = core::Diagnostic{core::Severity::error, files[current_file]->file->name(), loc,
+                           std::move(id), std::move(message)};
+  finished = true;
+  return false;
+}
+
+bool Interpreter::Impl::fail_eval() {
+  const EvalError& e = evaluator.error();
+  return fail(e.loc, e.id, e.message);
+}
+
+void Interpreter::Impl::warn(core::SourceLoc loc, std::string id, std::string message) {
+  diags.add({core::Severity::warning, files[current_file]->file->name(), loc, std::move(id),
+             std::move(message)});
+}
+
+std::optional<double> Interpreter::Impl::eval(const ast::Block& b, ast::NodeIndex n) {
+  auto v = evaluator.eval(b, n);
+  if (!v) fail_eval();
+  return v;
+}
+
+const ast::Block* Interpreter::Impl::fetch(Pc at) {
+  return files[at.file]->blocks->fetch(at.ordinal, diags);
+}
+
+bool Interpreter::Impl::find_main_start(ProgramFile& pf, std::uint16_t index) {
+  // Local subroutines precede the main part (PROG-206828043); record them, skip their bodies.
+  std::uint32_t k = 0;
+  for (;;) {
+    const ast::Block* b = pf.blocks->fetch(k, diags);
+    if (b == nullptr) break;
+    const auto* h = std::get_if<ast::ProgramHeader>(&b->body);
+    if (h == nullptr) break;
+    if (!h->local) {
+      pf.main_start = k + 1;
+      return true;
+    }
+    const std::string name = upper(h->name);
+    pf.local_subs[name] = k;
+    for (++k;; ++k) {
+      const ast::Block* body = pf.blocks->fetch(k, diags);
+      if (body == nullptr || is_header(body)) break;
+    }
+  }
+  pf.main_start = k;
+  (void)index;
+  return true;
+}
+
+std::optional<std::uint32_t> Interpreter::Impl::matching_end(std::uint16_t file, std::uint32_t from,
+                                                             core::SourceLoc at) {
+  const std::uint64_t key = (std::uint64_t{file} << 33) | (std::uint64_t{1} << 32) | from;
+  if (auto it = jump_memo.find(key); it != jump_memo.end()) return it->second;
+  int depth = 0;
+  for (std::uint32_t k = from;; ++k) {
+    const ast::Block* b = fetch({file, k});
+    if (b == nullptr || is_header(b)) {
+      fail(at, "NC4020", "no matching end of this loop or $SWITCH in the same program level");
+      return std::nullopt;
+    }
+    const ast::Control* c = control_of(b);
+    if (c == nullptr) continue;
+    if (is_opener(c->kind)) {
+      ++depth;
+    } else if (is_closer(c->kind)) {
+      if (depth == 0) {
+        jump_memo[key] = k;
+        return k;
+      }
+      --depth;
+    }
+  }
+}
+
+std::optional<std::uint32_t> Interpreter::Impl::next_if_branch(std::uint16_t file,
+                                                               std::uint32_t from, bool endif_only,
+                                                               core::SourceLoc at) {
+  const std::uint64_t key =
+      (std::uint64_t{file} << 33) | (endif_only ? 0u : (std::uint64_t{1} << 31)) | from;
+  if (auto it = jump_memo.find(key); it != jump_memo.end()) return it->second;
+  int depth = 0;
+  for (std::uint32_t k = from;; ++k) {
+    const ast::Block* b = fetch({file, k});
+    if (b == nullptr || is_header(b)) {
+      fail(at, "NC4021", "$IF without $ENDIF in the same program level");
+      return std::nullopt;
+    }
+    const ast::Control* c = control_of(b);
+    if (c == nullptr) continue;
+    if (is_block_if(*c)) {
+      ++depth;
+    } else if (c->kind == ControlKind::endif) {
+      if (depth == 0) {
+        jump_memo[key] = k;
+        return k;
+      }
+      --depth;
+    } else if (!endif_only && depth == 0 &&
+               (c->kind == ControlKind::elseif || c->kind == ControlKind::else_)) {
+      jump_memo[key] = k;
+      return k;
+    }
+  }
+}
+
+bool Interpreter::Impl::jump_to_label(const ast::Block& b, const ast::GotoTarget& target) {
+  const core::SourceLoc at = target.loc.line != 0 ? target.loc : b.loc;
+  if (target.kind == ast::GotoKind::variable || target.kind == ast::GotoKind::none) {
+    return fail(at, "NC4022", "$GOTO to a variable target is not supported by ncsim");
+  }
+  const std::uint16_t file = pc.file;
+  const std::uint32_t here = pc.ordinal;  // block after the $GOTO
+  // Forward search to the end of the program level (PROG-206915851: both directions).
+  int depth = 0;
+  int closed = 0;  // open frames left by the jump
+  for (std::uint32_t k = here;; ++k) {
+    const ast::Block* blk = fetch({file, k});
+    if (blk == nullptr || is_header(blk)) break;
+    if (label_matches(*blk, target)) {
+      if (depth > 0) return fail(at, "21480", "$GOTO jumps into a loop");
+      for (int i = 0; i < closed && !control.empty(); ++i)
+        control.pop_back();
+      pc.ordinal = k;
+      return true;
+    }
+    if (const ast::Control* c = control_of(blk)) {
+      if (is_opener(c->kind)) ++depth;
+      if (is_closer(c->kind)) {
+        if (depth > 0) {
+          --depth;
+        } else {
+          ++closed;
+        }
+      }
+    }
+  }
+  // Backward: from the start of the program level up to the $GOTO.
+  std::vector<std::uint32_t> open;  // unmatched openers before the label
+  for (std::uint32_t k = unit_start; k < here; ++k) {
+    const ast::Block* blk = fetch({file, k});
+    if (blk == nullptr) break;
+    if (k != unit_start && is_header(blk)) break;
+    if (label_matches(*blk, target)) {
+      const std::size_t base = calls.empty() ? 0 : calls.back().control_depth;
+      for (std::uint32_t o : open) {
+        const bool is_open =
+            std::any_of(control.begin() + static_cast<std::ptrdiff_t>(base), control.end(),
+                        [&](const ControlFrame& f) { return f.file == file && f.open == o; });
+        if (!is_open) return fail(at, "21480", "$GOTO jumps into a loop");
+      }
+      while (control.size() > base && control.back().open >= k)
+        control.pop_back();
+      pc.ordinal = k;
+      return true;
+    }
+    if (const ast::Control* c = control_of(blk)) {
+      if (is_opener(c->kind)) open.push_back(k);
+      if (is_closer(c->kind) && !open.empty()) open.pop_back();
+    }
+  }
+  return fail(at, "NC4023",
+              "jump label " + std::string(target.name) + " not found in this program level");
+}
+
+bool Interpreter::Impl::call(const ast::Block& b, const ast::Call& c) {
+  std::string name;
+  if (c.target == ast::CallTarget::macro) {
+    const std::string* text = vars.macro(c.name);
+    if (text == nullptr)
+      return fail(c.loc, "NC4005", "macro \"" + std::string(c.name) + "\" is not defined");
+    name = *text;
+  } else if (c.target == ast::CallTarget::variable) {
+    VarRef ref;
+    if (!evaluator.resolve(b, c.variable, ref)) return fail_eval();
+    const std::string* text = vars.read_string(ref);
+    if (text == nullptr) return fail(c.loc, "NC4303", "the call needs a STRING variable");
+    name = *text;
+  } else {
+    name = std::string(c.name);
+  }
+  if (c.kind == ast::CallKind::cycle)
+    return fail(c.loc, "NC4304", "L CYCLE is not supported by ncsim");
+  if (static_cast<int>(calls.size()) >= options.max_subroutine_depth) {
+    return fail(c.loc, "NC4302",
+                "subroutine nesting deeper than " + std::to_string(options.max_subroutine_depth) +
+                    " levels (call of " + name + ")");
+  }
+  Pc target;
+  std::uint32_t header = 0;
+  if (c.kind == ast::CallKind::local) {
+    auto& subs = files[pc.file]->local_subs;
+    auto it = subs.find(upper(name));
+    if (it == subs.end()) {
+      return fail(c.loc, "NC4301",
+                  "local subroutine " + name + " is not defined before the main program");
+    }
+    target = {pc.file, it->second + 1};
+    header = it->second;
+  } else {
+    auto it = file_by_name.find(name);
+    std::uint16_t index = 0;
+    if (it == file_by_name.end()) {
+      const std::filesystem::path dir = std::filesystem::path(files[0]->file->name()).parent_path();
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(dir / name, ec)) {
+        return fail(c.loc, "NC4301",
+                    "global subroutine file " + (dir / name).string() + " not found");
+      }
+      auto pf = std::make_unique<ProgramFile>();
+      try {
+        pf->own = std::make_unique<core::SourceFile>(core::SourceFile::load(dir / name));
+      } catch (const std::exception& e) {
+        return fail(c.loc, "NC4301", e.what());
+      }
+      pf->file = pf->own.get();
+      pf->blocks = std::make_unique<BlockSource>(*pf->file);
+      index = static_cast<std::uint16_t>(files.size());
+      files.push_back(std::move(pf));
+      file_by_name[name] = index;
+      find_main_start(*files[index], index);
+    } else {
+      index = it->second;
+    }
+    target = {index, files[index]->main_start};
+    header = files[index]->main_start == 0 ? 0 : files[index]->main_start - 1;
+  }
+  calls.push_back({pc, control.size(), unit_start});
+  vars.push_level();
+  pc = target;
+  unit_start = header;
+  return true;
+}
+
+bool Interpreter::Impl::subroutine_return() {
+  if (calls.empty()) return true;  // M17 in the main program: ignored
+  const CallFrame f = calls.back();
+  calls.pop_back();
+  control.resize(std::min(control.size(), f.control_depth));
+  vars.pop_level();
+  pc = f.ret;
+  unit_start = f.unit_start;
+  return true;
+}
+
+bool Interpreter::Impl::run_control(const ast::Block& b, const ast::Control& c) {
+  const std::uint32_t here = pc.ordinal - 1;
+  const std::uint16_t file = pc.file;
+  const core::SourceLoc at = c.loc;
+  switch (c.kind) {
+    case ControlKind::if_: {
+      auto v = eval(b, c.expr);
+      if (!v) return false;
+      if (!is_block_if(c)) {  // $IF cond $GOTO label
+        return is_true(*v) ? jump_to_label(b, c.target) : true;
+      }
+      if (is_true(*v)) return true;
+      std::uint32_t from = here + 1;
+      for (;;) {
+        auto k = next_if_branch(file, from, false, at);
+        if (!k) return false;
+        const ast::Block* nb = fetch({file, *k});
+        const ast::Control* nc = control_of(nb);
+        if (nc->kind == ControlKind::elseif) {
+          auto cond = eval(*nb, nc->expr);
+          if (!cond) return false;
+          if (is_true(*cond)) {
+            pc.ordinal = *k + 1;
+            return true;
+          }
+          from = *k + 1;
+          continue;
+        }
+        pc.ordinal = *k + 1;  // $ELSE or $ENDIF
+        return true;
+      }
+    }
+    case ControlKind::elseif:
+    case ControlKind::else_: {  // end of the branch taken: continue after $ENDIF
+      auto k = next_if_branch(file, here + 1, true, at);
+      if (!k) return false;
+      pc.ordinal = *k + 1;
+      return true;
+    }
+    case ControlKind::endif:
+      return true;
+    case ControlKind::switch_: {
+      auto v = eval(b, c.expr);
+      if (!v) return false;
+      std::optional<std::uint32_t> default_at;
+      int depth = 0;
+      for (std::uint32_t k = here + 1;; ++k) {
+        const ast::Block* nb = fetch({file, k});
+        if (nb == nullptr || is_header(nb)) {
+          return fail(at, "NC4020", "$SWITCH without $ENDSWITCH");
+        }
+        const ast::Control* nc = control_of(nb);
+        if (nc == nullptr) continue;
+        if (is_opener(nc->kind)) {
+          ++depth;
+        } else if (is_closer(nc->kind)) {
+          if (depth > 0) {
+            --depth;
+            continue;
+          }
+          if (!default_at) {
+            pc.ordinal = k + 1;  // no case matched, no $DEFAULT
+            return true;
+          }
+          control.push_back({FrameKind::switch_, file, here, k, {}, 0, 0, b.loc.line});
+          pc.ordinal = *default_at + 1;
+          return true;
+        } else if (depth == 0 && nc->kind == ControlKind::case_) {
+          auto cv = eval(*nb, nc->expr);
+          if (!cv) return false;
+          if (std::fabs(*cv - *v) < 0.001) {  // PROG-206908427
+            control.push_back({FrameKind::switch_, file, here, 0xFFFFFFFFu, {}, 0, 0, b.loc.line});
+            pc.ordinal = k + 1;
+            return true;
+          }
+        } else if (depth == 0 && nc->kind == ControlKind::default_) {
+          default_at = k;
+        }
+      }
+    }
+    case ControlKind::case_:
+    case ControlKind::default_:
+      return true;  // fall-through (decision, docs/interp.md)
+    case ControlKind::endswitch:
+      if (!control.empty() && control.back().kind == FrameKind::switch_) control.pop_back();
+      return true;
+    case ControlKind::for_: {
+      ControlFrame f{FrameKind::for_, file, here, 0xFFFFFFFFu, {}, 0, 0, b.loc.line};
+      if (!evaluator.resolve(b, c.counter, f.counter)) return fail_eval();
+      auto start = eval(b, c.start);
+      if (!start) return false;
+      auto end = eval(b, c.end);
+      if (!end) return false;
+      std::optional<double> step = 1.0;
+      if (c.step != ast::kNoNode) step = eval(b, c.step);
+      if (!step) return false;
+      f.end_value = *end;
+      f.step = *step;
+      VarError err;
+      if (!vars.write(f.counter, *start, err)) return fail(at, err.id, err.message);
+      if (f.step == 0.0) warn(at, "NC4024", "$FOR with step 0 loops forever (PROG-206929163)");
+      const bool run = f.step > 0.0 ? *start <= *end : (f.step < 0.0 ? *start >= *end : true);
+      if (!run) {
+        auto k = matching_end(file, here + 1, at);
+        if (!k) return false;
+        pc.ordinal = *k + 1;
+        return true;
+      }
+      control.push_back(std::move(f));
+      return true;
+    }
+    case ControlKind::while_: {
+      auto v = eval(b, c.expr);
+      if (!v) return false;
+      const bool reentry = !control.empty() && control.back().open == here &&
+                           control.back().file == file && control.back().kind == FrameKind::while_;
+      if (is_true(*v)) {
+        if (!reentry)
+          control.push_back({FrameKind::while_, file, here, 0xFFFFFFFFu, {}, 0, 0, b.loc.line});
+        return true;
+      }
+      std::uint32_t end = 0;
+      if (reentry && control.back().end != 0xFFFFFFFFu) {
+        end = control.back().end;
+      } else {
+        auto k = matching_end(file, here + 1, at);
+        if (!k) return false;
+        end = *k;
+      }
+      if (reentry) control.pop_back();
+      pc.ordinal = end + 1;
+      return true;
+    }
+    case ControlKind::do_:
+      control.push_back({FrameKind::do_, file, here, 0xFFFFFFFFu, {}, 0, 0, b.loc.line});
+      return true;
+    case ControlKind::repeat:
+      control.push_back({FrameKind::repeat, file, here, 0xFFFFFFFFu, {}, 0, 0, b.loc.line});
+      return true;
+    case ControlKind::endfor:
+    case ControlKind::endwhile:
+    case ControlKind::enddo:
+    case ControlKind::until: {
+      const FrameKind want = c.kind == ControlKind::endfor     ? FrameKind::for_
+                             : c.kind == ControlKind::endwhile ? FrameKind::while_
+                             : c.kind == ControlKind::enddo    ? FrameKind::do_
+                                                               : FrameKind::repeat;
+      const std::size_t base = calls.empty() ? 0 : calls.back().control_depth;
+      if (control.size() <= base || control.back().kind != want || control.back().file != file) {
+        return fail(at, c.kind == ControlKind::endwhile ? "20237" : "NC4025",
+                    "loop end without a matching loop start");
+      }
+      ControlFrame& f = control.back();
+      f.end = here;
+      if (want == FrameKind::while_) {
+        pc.ordinal = f.open;
+        return true;
+      }
+      if (want == FrameKind::for_) {
+        VarError err;
+        auto value = vars.read(f.counter, err);
+        if (!value || !vars.write(f.counter, *value + f.step, err)) {
+          return fail(at, err.id, err.message);
+        }
+        const double v = *value + f.step;
+        const bool run = f.step > 0.0 ? v <= f.end_value : (f.step < 0.0 ? v >= f.end_value : true);
+        if (run) {
+          pc.ordinal = f.open + 1;
+        } else {
+          control.pop_back();
+        }
+        return true;
+      }
+      auto v = eval(b, c.expr);
+      if (!v) return false;
+      const bool again = want == FrameKind::do_ ? is_true(*v) : !is_true(*v);
+      if (again) {
+        pc.ordinal = f.open + 1;
+      } else {
+        control.pop_back();
+      }
+      return true;
+    }
+    case ControlKind::break_:
+    case ControlKind::continue_: {
+      const std::size_t base = calls.empty() ? 0 : calls.back().control_depth;
+      const bool brk = c.kind == ControlKind::break_;
+      for (;;) {
+        if (control.size() <= base) {
+          return fail(at, brk ? "20243" : "20244",
+                      brk ? "$BREAK outside a loop or $SWITCH" : "$CONTINUE outside a loop");
+        }
+        ControlFrame& f = control.back();
+        if (f.end == 0xFFFFFFFFu) {
+          auto k = matching_end(file, pc.ordinal, at);
+          if (!k) return false;
+          f.end = *k;
+        }
+        if (brk) {
+          pc.ordinal = f.end + 1;
+          control.pop_back();
+          return true;
+        }
+        if (!is_loop(f.kind)) {  // $CONTINUE inside a $SWITCH: leave the switch first
+          pc.ordinal = f.end + 1;
+          control.pop_back();
+          continue;
+        }
+        pc.ordinal = f.end;  // the loop end block does the step / the test
+        return true;
+      }
+    }
+    case ControlKind::goto_:
+      return jump_to_label(b, c.target);
+  }
+  return true;
+}
+
+bool Interpreter::Impl::step() {
+  if (!started) {
+    started = true;
+    find_main_start(*files[0], 0);
+    pc = {0, files[0]->main_start};
+    unit_start = files[0]->main_start == 0 ? 0 : files[0]->main_start - 1;
+  }
+  if (finished) return false;
+  current_file = pc.file;
+  const ast::Block* block = fetch(pc);
+  if (block == nullptr || (is_header(block) && pc.ordinal != unit_start)) {
+    if (!calls.empty()) return subroutine_return();  // the next % ends a subroutine
+    emit(line, End{0});
+    finished = true;
+    return true;
+  }
+  if (block->has_error) {
+    for (auto it = diags.items().rbegin(); it != diags.items().rend(); ++it) {
+      if (it->severity == core::Severity::error) {
+        error = *it;
+        error_reported = true;
+        break;
+      }
+    }
+    if (!error) fail(block->loc, "NC4001", "syntax error");
+    finished = true;
+    return false;
+  }
+  line = block->loc.line;
+  ++pc.ordinal;
+  if (options.max_blocks_without_motion != 0 &&
+      ++blocks_without_motion > options.max_blocks_without_motion) {
+    const std::uint32_t loop_line = control.empty() ? line : control.back().line;
+    return fail({loop_line, 1}, "NC4901",
+                "more than " + std::to_string(options.max_blocks_without_motion) +
+                    " blocks decoded without motion or time passing (endless loop?)");
+  }
+  if (block->skip && *block->skip >= 1 && *block->skip <= 32 &&
+      (options.skip_levels & (1u << (*block->skip - 1))) != 0) {
+    return true;
+  }
+  if (block->number && block->number->expr != ast::kNoNode) {
+    if (!eval(*block, block->number->expr)) return false;
+  }
+  if (const auto* c = std::get_if<ast::Control>(&block->body)) return run_control(*block, *c);
+  if (const auto* h = std::get_if<ast::HashCommand>(&block->body)) return run_hash(*block, *h);
+  if (const auto* d = std::get_if<ast::Declaration>(&block->body)) {
+    return run_declaration(*block, *d);
+  }
+  if (std::holds_alternative<ast::ProgramHeader>(block->body)) return true;
+  const ast::Block* run = block;
+  for (const auto& e : block->exprs) {
+    if (e.op == ast::Op::string && vars.macro(e.text) != nullptr) {
+      run = expand_macros(*block);
+      if (run == nullptr) return false;
+      break;
+    }
+  }
+  if (!run_words(*run)) return false;
+  if (run->trailing_goto) return jump_to_label(*run, run->trailing_goto->target);
+  if (run->call) return call(*run, *run->call);
+  return true;
+}
+
+void Interpreter::Impl::emit(std::uint32_t at_line, CommandBody body) {
+  pending.push_back(Command{at_line, current_file, std::move(body)});
+}
+
+// ---------------------------------------------------------------------------------------------
+
+Interpreter::Interpreter(const core::SourceFile& file, const machines::Machine& machine,
+                         Options options)
+    : impl_(std::make_unique<Impl>(file, machine, std::move(options), diags_)) {}
+
+Interpreter::~Interpreter() = default;
+
+std::optional<Command> Interpreter::next() {
+  Impl& s = *impl_;
+  while (s.pending.empty()) {
+    if (s.finished || !s.step()) break;
+  }
+  if (!s.pending.empty()) {
+    Command c = std::move(s.pending.front());
+    s.pending.pop_front();
+    return c;
+  }
+  if (s.error && !error_) {
+    error_ = s.error;
+    if (!s.error_reported) diags_.add(*s.error);
+  }
+  return std::nullopt;
+}
+
+const std::string& Interpreter::file_name(std::uint16_t file) const {
+  return impl_->files.at(file)->file->name();
+}
+
+Interpreter::Footprint Interpreter::footprint() const {
+  const Impl& s = *impl_;
+  std::size_t indexed = 0;
+  for (const auto& f : s.files)
+    indexed += f->blocks->indexed_blocks();
+  return {s.control.size(), s.calls.size(),     s.pending.size(),
+          indexed,          s.jump_memo.size(), s.vars.p_count()};
+}
+
+}  // namespace ncsim::interp

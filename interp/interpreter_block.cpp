@@ -1,0 +1,545 @@
+// interp/interpreter_block.cpp: one block's words (assignments, G/M/F/axis words), motion
+// and arcs, declarations and string macros. # commands are in interpreter_hash.cpp.
+#include <cmath>
+
+#include "core/number_text.hpp"
+#include "grammar/keywords.hpp"
+#include "interp/interpreter_impl.hpp"
+
+namespace ncsim::interp {
+namespace {
+
+constexpr double kInch = 25.4;  // [mm/inch] (G70, PROG-206272267)
+
+std::string unescape(std::string_view s) {
+  std::string out;
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    if (s[k] == '\\' && k + 1 < s.size()) ++k;
+    out.push_back(s[k]);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::optional<std::uint8_t> Interpreter::Impl::axis_index(std::string_view name) const {
+  const machines::AxisParams* a = machine.find_axis(name);
+  if (a == nullptr) {
+    for (std::size_t i = 0; i < machine.axes.size(); ++i) {
+      if (grammar::iequals(machine.axes[i].name, name)) return static_cast<std::uint8_t>(i);
+    }
+    return std::nullopt;
+  }
+  const auto i = static_cast<std::size_t>(a - machine.axes.data());
+  if (i >= kMaxAxes) return std::nullopt;
+  return static_cast<std::uint8_t>(i);
+}
+
+ModalSnapshot Interpreter::Impl::snapshot() const {
+  ModalSnapshot m;
+  m.plane = plane;
+  m.inch = inch;
+  m.incremental = incremental;
+  m.feed_mode = feed_mode;
+  m.transition = transition;
+  m.exact_stop = exact_stop_modal;
+  m.contouring = contour_modal;
+  m.contour = contour;
+  m.slope = synchronised ? SlopeType::trapez : slope;  // seed 004 §2.1.7: jerk-limited
+  m.transvelmin = transvelmin;
+  m.synchronised = synchronised;
+  m.cs_active = cs.active_count() > 0;
+  m.kinematics_on = kinematics_on;
+  m.caxtrack = caxtrack;
+  return m;
+}
+
+const ast::Block* Interpreter::Impl::expand_macros(const ast::Block& b) {
+  // Textual replacement of "NAME" by the macro text (PROG-206014219), repeated for macros in
+  // macros up to the recursion limit (decision, docs/interp.md).
+  std::string text(b.text);
+  for (int pass = 0;; ++pass) {
+    std::string out;
+    bool changed = false;
+    int depth = 0;
+    for (std::size_t k = 0; k < text.size(); ++k) {
+      const char c = text[k];
+      if (depth > 0) {
+        if (c == '(') ++depth;
+        if (c == ')') --depth;
+        out.push_back(c);
+        continue;
+      }
+      if (c == ';') {
+        out.append(text, k, std::string::npos);
+        break;
+      }
+      if (c == '(') ++depth;
+      if (c != '"') {
+        out.push_back(c);
+        continue;
+      }
+      std::size_t e = k + 1;
+      while (e < text.size() && text[e] != '"')
+        e += (text[e] == '\\') ? 2 : 1;
+      const std::string name = text.substr(k + 1, std::min(e, text.size()) - k - 1);
+      const std::string* m = vars.macro(name);
+      if (m != nullptr) {
+        out += unescape(*m);
+        changed = true;
+      } else {
+        out.append(text, k, std::min(e + 1, text.size()) - k);
+      }
+      k = e;
+    }
+    text = std::move(out);
+    if (!changed) break;
+    if (pass + 1 >= options.macro_recursion_limit) {
+      fail(b.loc, "NC4006",
+           "string macros nested deeper than " + std::to_string(options.macro_recursion_limit) +
+               " levels");
+      return nullptr;
+    }
+  }
+  const ast::Block* expanded = files[current_file]->blocks->parse_text(text, b.loc.line, diags);
+  if (expanded == nullptr || expanded->has_error) {
+    fail(b.loc, "NC4007", "the block after macro replacement is not valid: " + text);
+    return nullptr;
+  }
+  return expanded;
+}
+
+bool Interpreter::Impl::run_declaration(const ast::Block& b, const ast::Declaration& d) {
+  VarRef ref;
+  if (!evaluator.resolve(b, d.variable, ref)) return fail_eval();
+  Variable v;
+  v.type = d.type;
+  std::size_t count = 1;
+  for (std::uint32_t k = 0; k < ref.index_count; ++k) {
+    if (ref.index[k] < 1.0) return fail(d.loc, "NC4015", "array dimension must be >= 1");
+    v.dims.push_back(static_cast<std::uint32_t>(ref.index[k]));
+    count *= v.dims.back();
+  }
+  ref.index_count = 0;
+  v.values.assign(count, 0.0);
+  if (d.init != ast::kNoNode) {
+    if (v.is_string()) {
+      const ast::ExprNode& n = b.exprs[d.init];
+      if (n.op != ast::Op::string) return fail(n.loc, "NC4014", "a STRING needs a \"text\" value");
+      v.text = unescape(n.text);
+    } else {
+      std::size_t k = 0;
+      for (ast::NodeIndex n = d.init; n != ast::kNoNode && k < count; n = b.exprs[n].next, ++k) {
+        auto value = eval(b, n);
+        if (!value) return false;
+        v.values[k] = *value;
+        if (!d.array_init) break;
+      }
+    }
+  }
+  VarError err;
+  if (!vars.declare(ref, std::move(v), err)) return fail(d.loc, err.id, err.message);
+  return true;
+}
+
+bool Interpreter::Impl::run_words(const ast::Block& b) {
+  // 1. assignments and macro definitions, left to right, before the block's motion
+  //    (decision, docs/interp.md "Order within a block").
+  for (const ast::Word& w : b.words) {
+    if (w.kind == ast::WordKind::macro_def) {
+      vars.define_macro(std::string(w.name), std::string(w.text));
+    } else if (w.kind == ast::WordKind::assignment) {
+      const ast::ExprNode& value_node = b.exprs[w.value];
+      if (value_node.op == ast::Op::string && vars.macro(value_node.text) == nullptr) {
+        VarRef ref;
+        if (!evaluator.resolve(b, w.target, ref)) return fail_eval();
+        VarError err;
+        if (!vars.write_string(ref, unescape(value_node.text), err)) {
+          return fail(w.loc, err.id, err.message);
+        }
+        continue;
+      }
+      auto v = eval(b, w.value);
+      if (!v) return false;
+      double value = *v;
+      if (w.assign != ast::AssignOp::set) {
+        auto old = eval(b, w.target);
+        if (!old) return false;
+        switch (w.assign) {
+          case ast::AssignOp::add:
+            value = *old + value;
+            break;
+          case ast::AssignOp::subtract:
+            value = *old - value;
+            break;
+          case ast::AssignOp::multiply:
+            value = *old * value;
+            break;
+          case ast::AssignOp::divide:
+            if (value == 0.0) return fail(w.loc, "20396", "division by zero in /=");
+            value = *old / value;
+            break;
+          case ast::AssignOp::set:
+            break;
+        }
+      }
+      if (!evaluator.assign(b, w.target, value)) return fail_eval();
+    }
+  }
+  // 2. G codes.
+  std::optional<MotionKind> motion_word;
+  bool g04 = false, g74 = false, g92 = false, g60 = false, g61 = false, g09 = false;
+  for (const ast::Word& w : b.words) {
+    if (w.kind != ast::WordKind::g) continue;
+    switch (w.code) {
+      case 0:
+        motion_word = MotionKind::rapid;
+        break;
+      case 1:
+        motion_word = MotionKind::linear;
+        break;
+      case 2:
+        motion_word = MotionKind::arc_cw;
+        break;
+      case 3:
+        motion_word = MotionKind::arc_ccw;
+        break;
+      case 4:
+        g04 = true;
+        break;
+      case 8:
+        transition = Transition::accelerate_at_start;
+        break;
+      case 9:
+        g09 = true;
+        break;
+      case 900:
+        transition = Transition::decel_at_end;
+        break;
+      case 901:
+        transition = Transition::decel_after_end;
+        break;
+      case 17:
+        plane = Plane::xy;
+        break;
+      case 18:
+        plane = Plane::zx;
+        break;
+      case 19:
+        plane = Plane::yz;
+        break;
+      case 60:
+        g60 = true;
+        break;
+      case 61:
+        g61 = true;
+        break;
+      case 359:
+        exact_stop_modal = false;
+        break;
+      case 360:
+        exact_stop_modal = true;
+        break;
+      case 260:
+        contour_modal = false;
+        break;
+      case 261:
+        contour_modal = true;
+        break;
+      case 70:
+        inch = true;
+        break;
+      case 71:
+        inch = false;
+        break;
+      case 74:
+        g74 = true;
+        break;
+      case 90:
+        incremental = false;
+        break;
+      case 91:
+        incremental = true;
+        break;
+      case 92:
+        g92 = true;
+        break;
+      case 93:
+        feed_mode = FeedMode::inverse_time;
+        break;
+      case 94:
+        feed_mode = FeedMode::per_minute;
+        break;
+      case 150:
+      case 151:
+        return fail(w.loc, "NC4104", "G150/G151: use #SPLINE ON/OFF (ncsim supports those)");
+      case 161:
+        centre_absolute = true;
+        break;
+      case 162:
+        centre_absolute = false;
+        break;
+      case 163:
+      case 164:
+      case 165:
+      case 115:
+      case 116:
+      case 117:
+        break;  // accepted, no effect
+      default:
+        return fail(w.loc, "NC4102", "G" + std::to_string(w.code) + " is not supported by ncsim");
+    }
+  }
+  // 3. addresses.
+  const double unit = inch ? kInch : 1.0;
+  AxisValues target = position;
+  AxisMask programmed = 0;
+  std::array<std::optional<double>, 3> ijk;
+  std::optional<double> radius, bare, end_feed;
+  std::optional<double> block_time;
+  std::vector<std::pair<TechKind, double>> tech;
+  std::optional<int> program_m;
+  std::vector<std::pair<std::uint8_t, double>> axis_words;
+  for (const ast::Word& w : b.words) {
+    if (w.kind == ast::WordKind::g || w.kind == ast::WordKind::assignment ||
+        w.kind == ast::WordKind::macro_def) {
+      continue;
+    }
+    auto v = eval(b, w.value);
+    if (!v) return false;
+    switch (w.kind) {
+      case ast::WordKind::f:
+        if (feed_mode == FeedMode::inverse_time) {
+          block_time = *v;  // G93: seconds (PROG-206602507)
+        } else {
+          feed = *v * unit / 60.0;  // mm/min -> mm/s (PROG-206811147)
+        }
+        break;
+      case ast::WordKind::e:
+        end_feed = *v * unit / 60.0;
+        break;
+      case ast::WordKind::s:
+        tech.emplace_back(TechKind::s, *v);
+        break;
+      case ast::WordKind::t:
+        tech.emplace_back(TechKind::t, *v);
+        break;
+      case ast::WordKind::d:
+        tech.emplace_back(TechKind::d, *v);
+        break;
+      case ast::WordKind::h:
+        tech.emplace_back(TechKind::h, *v);
+        break;
+      case ast::WordKind::m: {
+        const int code = static_cast<int>(std::lround(*v));
+        if (code == 0 || code == 1 || code == 2 || code == 30 || code == 17 || code == 29) {
+          program_m = code;
+        } else {
+          tech.emplace_back(TechKind::m, *v);
+        }
+        break;
+      }
+      case ast::WordKind::i:
+        ijk[0] = *v * unit;
+        break;
+      case ast::WordKind::j:
+        ijk[1] = *v * unit;
+        break;
+      case ast::WordKind::k:
+        ijk[2] = *v * unit;
+        break;
+      case ast::WordKind::r:
+        radius = *v * unit;
+        break;
+      case ast::WordKind::bare_value:
+        bare = *v;
+        break;
+      case ast::WordKind::axis: {
+        auto index = axis_index(w.name);
+        if (!index) {
+          return fail(w.loc, "NC4103",
+                      "axis " + std::string(w.name) + " does not exist on machine " + machine.name);
+        }
+        axis_words.emplace_back(*index, *v);
+        break;
+      }
+      default:
+        break;
+    }
+  }
+  if (evaluator.take_external_read()) emit(line, Flush{FlushKind::ve_read});  // §3.5
+  for (const auto& [kind, value] : tech)
+    emit(line, Tech{kind, value});
+  if (g09) transition = Transition::stop_at_end;
+
+  if (g04) {
+    // G04: time in seconds after the first main axis address or alone (PROG-206132747).
+    std::optional<double> t = bare;
+    for (std::size_t k = 0; k < axis_words.size(); ++k) {
+      if (k == 0 && !bare) {
+        t = axis_words[k].second;
+      } else if (bare && k == 0) {
+        return fail(b.loc, "20013", "G04 with both a time value and an axis address");
+      } else {
+        warn(b.loc, "20685", "G04: further axis addresses are ignored");
+      }
+    }
+    if (!t) return fail(b.loc, "20013", "G04 without a dwell time");
+    if (*t < 0.0) return fail(b.loc, "20013", "negative dwell time");
+    emit(line, Dwell{*t});
+    blocks_without_motion = 0;
+  } else if (g74) {
+    Homing h;
+    for (const auto& [axis, order] : axis_words)
+      h.axes.emplace_back(axis, static_cast<int>(order));
+    emit(line, std::move(h));
+    blocks_without_motion = 0;
+  } else if (g92) {
+    SetPosition s;
+    for (const auto& [axis, value] : axis_words) {
+      const bool rotary = machine.axes[axis].kind == machines::AxisKind::rotary;
+      s.values[axis] = value * (rotary ? 1.0 : unit);
+      s.axes |= AxisMask{1} << axis;
+      position[axis] = s.values[axis];
+    }
+    emit(line, std::move(s));
+  } else {
+    if (motion_word) motion = *motion_word;
+    for (const auto& [axis, value] : axis_words) {
+      const bool rotary = machine.axes[axis].kind == machines::AxisKind::rotary;
+      const double v = value * (rotary ? 1.0 : unit);
+      target[axis] = incremental ? position[axis] + v : v;
+      programmed |= AxisMask{1} << axis;
+    }
+    const bool arc = motion == MotionKind::arc_cw || motion == MotionKind::arc_ccw;
+    if (programmed != 0 || (arc && motion_word && (ijk[0] || ijk[1] || ijk[2]))) {
+      const bool saved_stop = exact_stop_modal, saved_contour = contour_modal;
+      exact_stop_modal = exact_stop_modal || g60;
+      contour_modal = contour_modal || g61;
+      const bool ok = run_motion(b, motion, target, programmed, ijk, radius);
+      exact_stop_modal = saved_stop;
+      contour_modal = saved_contour;
+      if (!ok) return false;
+      if (block_time && !pending.empty()) {
+        if (auto* m = std::get_if<Motion>(&pending.back().body)) m->block_time = block_time;
+      }
+      if (end_feed && !pending.empty()) {
+        if (auto* m = std::get_if<Motion>(&pending.back().body)) m->end_feed = end_feed;
+      }
+    } else if (g60) {
+      return fail(b.loc, "20003", "G60 without a motion in the block");
+    }
+  }
+  if (g09) transition = Transition::accelerate_at_start;
+  if (!run_axis_commands(b)) return false;
+  if (program_m) {
+    switch (*program_m) {
+      case 0:
+        emit(line, ProgramStop{false});
+        break;
+      case 1:
+        emit(line, ProgramStop{true});
+        break;
+      case 17:
+      case 29:
+        return subroutine_return();
+      default:
+        if (!calls.empty()) {
+          warn(b.loc, "NC4305", "M02/M30 inside a subroutine ends the program (PROG-206828043)");
+        }
+        emit(line, End{*program_m});
+        finished = true;
+        break;
+    }
+  }
+  return true;
+}
+
+bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const AxisValues& target,
+                                   AxisMask programmed,
+                                   const std::array<std::optional<double>, 3>& ijk,
+                                   std::optional<double> radius) {
+  const bool arc = kind == MotionKind::arc_cw || kind == MotionKind::arc_ccw;
+  if (synchronised && !motion_since_sync) {
+    // seed 004 §2.1.1: the first motion after #SYNC IN must be G00 or G01.
+    if (arc) return fail(b.loc, "NC4502", "the first motion after #SYNC IN must be G00 or G01");
+    motion_since_sync = true;
+  }
+  if (spline && !arc) {
+    spline->points.push_back(target);
+    position = target;
+    blocks_without_motion = 0;
+    return true;
+  }
+  if (spline) return fail(b.loc, "NC4402", "G02/G03 inside #SPLINE ON ... OFF is not supported");
+  if (kind != MotionKind::rapid && feed_mode == FeedMode::per_minute && !feed) {
+    return fail(b.loc, "20008", "the first G01/G02/G03 needs a feed F (DIAG-20008)");
+  }
+  Motion m;
+  m.kind = kind;
+  m.start = position;
+  m.end = target;
+  m.programmed = programmed;
+  m.feed = kind == MotionKind::rapid ? 0.0 : feed.value_or(0.0);
+  m.modal = snapshot();
+  if (arc) {
+    // Plane axes (PROG-206253067): G17 X/Y, G18 Z/X, G19 Y/Z; I/J/K belong to X/Y/Z.
+    const int p1 = plane == Plane::xy ? 0 : (plane == Plane::zx ? 2 : 1);
+    const int p2 = plane == Plane::xy ? 1 : (plane == Plane::zx ? 0 : 2);
+    if (!xyz[p1] || !xyz[p2]) {
+      return fail(b.loc, "NC4103", "the machine lacks an axis of the circle plane");
+    }
+    const std::uint8_t a1 = *xyz[p1], a2 = *xyz[p2];
+    const double s1 = position[a1], s2 = position[a2];
+    const double e1 = target[a1], e2 = target[a2];
+    const double d1 = e1 - s1, d2 = e2 - s2;
+    const double chord = std::hypot(d1, d2);
+    double c1 = 0.0, c2 = 0.0;
+    const bool full = chord < 1e-9;
+    if (radius) {
+      // TC2 R programming (isg-language.md §2.2): R > 0 short arc, R < 0 long arc.
+      if (full) return fail(b.loc, "20034", "a full circle cannot be programmed with R");
+      const double r = std::fabs(*radius);
+      if (chord > 2.0 * r + options.centre_diff_max) {
+        return fail(b.loc, "NC4202",
+                    "radius R" + core::number_text(*radius) + " is smaller than half the chord");
+      }
+      const double h = std::sqrt(std::max(0.0, r * r - chord * chord / 4.0));
+      const double n1 = -d2 / chord, n2 = d1 / chord;  // left normal of the chord
+      const bool ccw = kind == MotionKind::arc_ccw;
+      const double side = (ccw == (*radius > 0.0)) ? 1.0 : -1.0;
+      c1 = (s1 + e1) / 2.0 + side * h * n1;
+      c2 = (s2 + e2) / 2.0 + side * h * n2;
+    } else {
+      const auto& o1 = ijk[static_cast<std::size_t>(p1)];
+      const auto& o2 = ijk[static_cast<std::size_t>(p2)];
+      c1 = centre_absolute ? o1.value_or(s1) : s1 + o1.value_or(0.0);
+      c2 = centre_absolute ? o2.value_or(s2) : s2 + o2.value_or(0.0);
+      const double r_start = std::hypot(s1 - c1, s2 - c2);
+      const double r_end = std::hypot(e1 - c1, e2 - c2);
+      const double diff = std::fabs(r_end - r_start);
+      // P-CHAN-00059 / P-CHAN-00060 (PROG-206551563): beyond both limits is an error.
+      if (diff > options.centre_diff_max && diff > options.centre_factor * r_start) {
+        return fail(b.loc, "NC4201",
+                    "circle end point radius " + core::number_text(r_end) +
+                        " differs from the start radius " + core::number_text(r_start) +
+                        " by more than P-CHAN-00059/00060 allow");
+      }
+      if (r_start < 1e-9) return fail(b.loc, "NC4201", "circle with radius 0");
+      if (!full && diff > 0.0) {  // centre correction onto the perpendicular bisector
+        const double n1 = -d2 / chord, n2 = d1 / chord;
+        const double m1 = (s1 + e1) / 2.0, m2 = (s2 + e2) / 2.0;
+        const double t = (c1 - m1) * n1 + (c2 - m2) * n2;
+        c1 = m1 + t * n1;
+        c2 = m2 + t * n2;
+      }
+    }
+    m.arc = Arc{c1, c2, a1, a2, std::hypot(s1 - c1, s2 - c2), full};
+  }
+  position = target;
+  blocks_without_motion = 0;
+  emit(line, std::move(m));
+  return true;
+}
+
+}  // namespace ncsim::interp

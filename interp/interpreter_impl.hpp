@@ -1,0 +1,132 @@
+#pragma once
+// interp/interpreter_impl: the decoder's private state, shared by interpreter.cpp (block
+// stream, control flow, subroutines) and interpreter_block.cpp (words, modal state, motion,
+// # commands). Not part of the public interface.
+
+#include <deque>
+#include <string_view>
+
+#include "interp/interpreter.hpp"
+
+namespace ncsim::interp {
+
+namespace ast = grammar::ast;
+
+/// A program file: the main one (index 0) or a global subroutine file (L name).
+struct ProgramFile {
+  std::unique_ptr<core::SourceFile> own;  // null for the main file
+  const core::SourceFile* file = nullptr;
+  std::unique_ptr<BlockSource> blocks;
+  std::unordered_map<std::string, std::uint32_t> local_subs;  // upper-case name -> header
+  std::uint32_t main_start = 0;                               // first block of the main part
+};
+
+struct Pc {
+  std::uint16_t file = 0;
+  std::uint32_t ordinal = 0;
+};
+
+enum class FrameKind : std::uint8_t { for_, while_, do_, repeat, switch_ };
+
+struct ControlFrame {
+  FrameKind kind = FrameKind::for_;
+  std::uint16_t file = 0;
+  std::uint32_t open = 0;              // ordinal of the opening block
+  std::uint32_t end = 0xFFFFFFFFu;     // ordinal of the closing block, once known
+  VarRef counter;                      // $FOR
+  double end_value = 0.0, step = 0.0;  // $FOR
+  std::uint32_t line = 0;
+};
+
+struct CallFrame {
+  Pc ret;
+  std::size_t control_depth = 0;
+  std::uint32_t unit_start = 0;
+};
+
+struct Interpreter::Impl {
+  Impl(const core::SourceFile& file, const machines::Machine& machine, Options options,
+       core::DiagnosticList& diags);
+
+  // --- stream (interpreter.cpp) ---
+  bool step();  // decodes one block; false when the stream ended
+  const ast::Block* fetch(Pc pc);
+  bool run_control(const ast::Block& b, const ast::Control& c);
+  bool jump_to_label(const ast::Block& b, const ast::GotoTarget& target);
+  std::optional<std::uint32_t> matching_end(std::uint16_t file, std::uint32_t from,
+                                            core::SourceLoc at);
+  std::optional<std::uint32_t> next_if_branch(std::uint16_t file, std::uint32_t from,
+                                              bool endif_only, core::SourceLoc at);
+  bool call(const ast::Block& b, const ast::Call& c);
+  bool subroutine_return();
+  bool find_main_start(ProgramFile& pf, std::uint16_t index);
+  bool fail(core::SourceLoc loc, std::string id, std::string message);
+  bool fail_eval();
+  void warn(core::SourceLoc loc, std::string id, std::string message);
+  std::optional<double> eval(const ast::Block& b, ast::NodeIndex n);
+
+  // --- blocks (interpreter_block.cpp) ---
+  bool run_words(const ast::Block& b);
+  bool run_hash(const ast::Block& b, const ast::HashCommand& h);
+  bool run_declaration(const ast::Block& b, const ast::Declaration& d);
+  bool run_axis_commands(const ast::Block& b);
+  bool run_motion(const ast::Block& b, MotionKind kind, const AxisValues& target,
+                  AxisMask programmed, const std::array<std::optional<double>, 3>& ijk,
+                  std::optional<double> radius);
+  std::optional<std::uint8_t> axis_index(std::string_view name) const;
+  ModalSnapshot snapshot() const;
+  void emit(std::uint32_t line, CommandBody body);
+  const ast::Block* expand_macros(const ast::Block& b);
+
+  const machines::Machine& machine;
+  Options options;
+  core::DiagnosticList& diags;
+  std::optional<core::Diagnostic> error;
+  bool error_reported = false;  // the error is a parser diagnostic already in diags
+
+  std::vector<std::unique_ptr<ProgramFile>> files;
+  std::unordered_map<std::string, std::uint16_t> file_by_name;
+  Pc pc;
+  std::uint32_t unit_start = 0;  // header ordinal of the running program level
+  bool started = false;
+  bool finished = false;
+  std::vector<ControlFrame> control;
+  std::vector<CallFrame> calls;
+  std::unordered_map<std::uint64_t, std::uint32_t> jump_memo;
+  std::deque<Command> pending;
+  std::uint64_t blocks_without_motion = 0;
+  std::uint32_t line = 0;  // line of the block being decoded
+  std::uint16_t current_file = 0;
+
+  Variables vars;
+  Evaluator evaluator;
+
+  // modal state
+  AxisValues position{};
+  AxisMask path_axes = 0;  // axes that take part in path motion (not spindles)
+  MotionKind motion = MotionKind::rapid;
+  Plane plane = Plane::xy;
+  bool incremental = false;
+  bool inch = false;
+  bool centre_absolute = false;  // G161
+  FeedMode feed_mode = FeedMode::per_minute;
+  Transition transition = Transition::accelerate_at_start;
+  bool exact_stop_modal = false;  // G360
+  bool contour_modal = false;     // G261
+  ContourParams contour;
+  SlopeType slope = SlopeType::step;
+  std::optional<double> transvelmin;
+  std::optional<double> feed;  // [mm/s]
+  bool synchronised = false;
+  bool motion_since_sync = true;  // first motion after #SYNC IN not yet seen
+  bool kinematics_on = false;
+  std::optional<int> kin_id;
+  bool caxtrack = false;
+  machines::CsStack cs;
+  SplineType spline_type = SplineType::akima;
+  std::optional<Spline> spline;                      // collecting points between #SPLINE ON and OFF
+  std::array<std::optional<std::uint8_t>, 3> xyz{};  // machine indices of X, Y, Z
+  std::string scratch_text;
+};
+
+}  // namespace ncsim::interp

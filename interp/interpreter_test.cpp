@@ -1,0 +1,322 @@
+// The decoder: control flow, subroutines, modal state, motion, conveyor rules, bounded memory.
+#include <doctest/doctest.h>
+
+#include "interp/test_support.hpp"
+
+namespace ncsim::interp {
+namespace {
+
+using test::run;
+
+std::string ax(int line, const char* kind, const char* x, const char* y, const char* z,
+               const char* rest = "") {
+  return std::to_string(line) + ": " + kind + " X=" + x + " Y=" + y + " Z=" + z + rest;
+}
+
+TEST_CASE("$IF / $ELSEIF / $ELSE takes the first true branch") {
+  auto r =
+      run("%t\nP1 = 2\n$IF P1 == 1\nG00 X1\n$ELSEIF P1 == 2\nG00 X2\n$ELSE\nG00 X3\n$ENDIF\nM30\n");
+  REQUIRE(r.lines.size() == 2);
+  CHECK(r.lines[0] == ax(6, "G00", "2.0000", "0.0000", "0.0000"));
+}
+
+TEST_CASE("$SWITCH matches a $CASE within 0.001 and $BREAK leaves it") {
+  auto r =
+      run("%t\nP1 = 2.0004\n$SWITCH P1\n$CASE 1\nG00 X1\n$BREAK\n$CASE 2\nG00 X2\n$BREAK\n"
+          "$DEFAULT\nG00 X9\n$ENDSWITCH\nM30\n");
+  REQUIRE(r.lines.size() == 2);
+  CHECK(r.lines[0] == ax(8, "G00", "2.0000", "0.0000", "0.0000"));
+}
+
+TEST_CASE("$FOR runs from start to end inclusive and can run zero times") {
+  auto r =
+      run("%t\n$FOR P1 = 1, 3, 1\nG00 X[P1]\n$ENDFOR\n$FOR P2 = 5, 1, 1\nG00 Y9\n$ENDFOR\nM30\n");
+  REQUIRE(r.lines.size() == 4);
+  CHECK(r.lines[2] == ax(3, "G00", "3.0000", "0.0000", "0.0000"));
+  CHECK(r.lines[3] == "8: END M30");
+}
+
+TEST_CASE("$WHILE, $DO ... $ENDDO and $REPEAT ... $UNTIL loop as documented") {
+  auto r =
+      run("%t\nP1 = 0\n$WHILE P1 < 2\nP1 = P1 + 1\nG00 X[P1]\n$ENDWHILE\n"
+          "$DO\nP1 = P1 + 1\n$ENDDO P1 < 3\nG00 X[P1]\n$REPEAT\nP1 = P1 + 1\n$UNTIL P1 >= 5\n"
+          "G00 X[P1]\nM30\n");
+  REQUIRE(r.lines.size() == 5);
+  CHECK(r.lines[1] == ax(5, "G00", "2.0000", "0.0000", "0.0000"));
+  CHECK(r.lines[2] == ax(10, "G00", "3.0000", "0.0000", "0.0000"));
+  CHECK(r.lines[3] == ax(14, "G00", "5.0000", "0.0000", "0.0000"));
+}
+
+TEST_CASE("$CONTINUE skips to the next pass and $BREAK leaves the loop") {
+  auto r =
+      run("%t\n$FOR P1 = 1, 5, 1\n$IF P1 == 2\n$CONTINUE\n$ENDIF\n$IF P1 == 4\n$BREAK\n$ENDIF\n"
+          "G00 X[P1]\n$ENDFOR\nM30\n");
+  REQUIRE(r.lines.size() == 3);
+  CHECK(r.lines[0] == ax(9, "G00", "1.0000", "0.0000", "0.0000"));
+  CHECK(r.lines[1] == ax(9, "G00", "3.0000", "0.0000", "0.0000"));
+}
+
+TEST_CASE("$BREAK outside a loop is error 20243") {
+  CHECK(run("%t\n$BREAK\nM30\n").error_id == "20243");
+}
+
+TEST_CASE("$GOTO jumps forward and backward within the program level") {
+  auto r =
+      run("%t\nP1 = 0\n[BACK]\nP1 = P1 + 1\n$IF P1 < 3 $GOTO [BACK]\n$GOTO N50\nG00 X99\n"
+          "N50: G00 X[P1]\nM30\n");
+  REQUIRE(r.lines.size() == 2);
+  CHECK(r.lines[0] == ax(8, "G00", "3.0000", "0.0000", "0.0000"));
+}
+
+TEST_CASE("$GOTO into a loop is error 21480") {
+  auto r = run("%t\n$GOTO [IN]\n$FOR P1 = 1, 2, 1\n[IN]\nG00 X1\n$ENDFOR\nM30\n");
+  CHECK(r.error_id == "21480");
+}
+
+TEST_CASE("$GOTO out of a loop leaves the loop") {
+  auto r = run("%t\n$WHILE 1\nG00 X1\n$GOTO [OUT]\n$ENDWHILE\n[OUT]\nG00 X2\nM30\n");
+  REQUIRE(r.lines.size() == 3);
+  CHECK(r.lines[1] == ax(7, "G00", "2.0000", "0.0000", "0.0000"));
+}
+
+TEST_CASE("an unknown jump label is NC4023") {
+  CHECK(run("%t\n$GOTO [NOWHERE]\nM30\n").error_id == "NC4023");
+}
+
+TEST_CASE("LL calls a local subroutine and M17 returns after the call") {
+  auto r = run("%L SUB\nG91 G00 X5\nM17\n%main\nLL SUB\nLL SUB\nG90 G00 Y1\nM30\n");
+  REQUIRE(r.lines.size() == 4);
+  CHECK(r.lines[1] == ax(2, "G00", "10.0000", "0.0000", "0.0000"));
+  CHECK(r.lines[2] == ax(7, "G00", "10.0000", "1.0000", "0.0000"));
+}
+
+TEST_CASE("V.L. variables are local to the level and shadow the caller's") {
+  auto r =
+      run("%L SUB\n#VAR\nV.L.A : REAL = 7\n#ENDVAR\nG00 X[V.L.A]\nM17\n%main\n#VAR\n"
+          "V.L.A : REAL = 1\n#ENDVAR\nLL SUB\nG00 X[V.L.A]\nM30\n");
+  REQUIRE(r.error_id.empty());
+  CHECK(r.lines[0] == ax(5, "G00", "7.0000", "0.0000", "0.0000"));
+  CHECK(r.lines[1] == ax(12, "G00", "1.0000", "0.0000", "0.0000"));
+}
+
+TEST_CASE("an unknown local subroutine is NC4301") {
+  CHECK(run("%t\nLL NOPE\nM30\n").error_id == "NC4301");
+}
+
+TEST_CASE("recursion deeper than the nesting limit is NC4302") {
+  auto r = run("%L REC\nLL REC\nM17\n%main\nLL REC\nM30\n");
+  CHECK(r.error_id == "NC4302");
+}
+
+TEST_CASE("the first G01 without F is error 20008") {
+  CHECK(run("%t\nG01 X10\nM30\n").error_id == "20008");
+}
+
+TEST_CASE("F is converted from mm/min to mm/s and stays modal") {
+  auto r = run("%t\nG01 X10 F600\nY5\nM30\n");
+  CHECK(r.lines[1] == ax(3, "G01", "10.0000", "5.0000", "0.0000", " F=10.0000"));
+}
+
+TEST_CASE("G91 adds to the position and G70 reads inches") {
+  auto r = run("%t\nG91 G00 X1 Y2\nX1\nG90 G70 X1\nM30\n");
+  CHECK(r.lines[1] == ax(3, "G00", "2.0000", "2.0000", "0.0000"));
+  CHECK(r.lines[2] == ax(4, "G00", "25.4000", "2.0000", "0.0000"));
+}
+
+TEST_CASE("G04 dwell forms and error 20013") {
+  CHECK(run("%t\nG04 X2.5\nM30\n").lines.at(0) == "2: DWELL t=2.5000");
+  CHECK(run("%t\nG04 1.5\nM30\n").lines.at(0) == "2: DWELL t=1.5000");
+  CHECK(run("%t\n#TIME 0.2\nM30\n").lines.at(0) == "2: DWELL t=0.2000");
+  CHECK(run("%t\nG04\nM30\n").error_id == "20013");
+}
+
+TEST_CASE("G60 without motion is error 20003") {
+  CHECK(run("%t\nG60\nM30\n").error_id == "20003");
+}
+
+TEST_CASE("arcs: relative and absolute centres, R short and long, full circle") {
+  auto r =
+      run("%t\nG00 X0 Y0\nG01 F600\nG02 X10 Y0 I5 J0\nG161 G03 X0 Y0 I5 J0\nG162\n"
+          "G02 X10 Y0 R5\nG02 X0 Y10 R-10\nG03 X0 Y10 I0 J-5\nM30\n");
+  REQUIRE(r.error_id.empty());
+  CHECK(r.lines[1] == ax(4, "G02", "10.0000", "0.0000", "0.0000",
+                         " F=10.0000 centre X=5.0000 Y=0.0000 R=5.0000"));
+  CHECK(r.lines[2] ==
+        ax(5, "G03", "0.0000", "0.0000", "0.0000", " F=10.0000 centre X=5.0000 Y=0.0000 R=5.0000"));
+  CHECK(r.lines[3] == ax(7, "G02", "10.0000", "0.0000", "0.0000",
+                         " F=10.0000 centre X=5.0000 Y=0.0000 R=5.0000"));
+  // long arc (R < 0) CW from (10,0) to (0,10): 270 degrees around (0,0)
+  CHECK(r.lines[4] == ax(8, "G02", "0.0000", "10.0000", "0.0000",
+                         " F=10.0000 centre X=0.0000 Y=0.0000 R=10.0000"));
+  CHECK(r.lines[5] == ax(9, "G03", "0.0000", "10.0000", "0.0000",
+                         " F=10.0000 centre X=0.0000 Y=5.0000 R=5.0000 FULL"));
+}
+
+TEST_CASE("an arc whose end point misses the radius names its block [NC4201]") {
+  auto r = run("%t\nG01 F600\nG02 X20 Y0 I5 J0\nM30\n");
+  CHECK(r.error_id == "NC4201");
+  CHECK(r.error_line == 3);
+}
+
+TEST_CASE("a full circle with R is error 20034") {
+  CHECK(run("%t\nG01 F600\nG02 X0 Y0 R5\nM30\n").error_id == "20034");
+}
+
+TEST_CASE("a helix moves the third axis linearly with the arc") {
+  auto r = run("%t\nG01 F600\nG02 X10 Y0 Z-5 I5 J0\nM30\n");
+  CHECK(r.lines.at(0) == ax(3, "G02", "10.0000", "0.0000", "-5.0000",
+                            " F=10.0000 centre X=5.0000 Y=0.0000 R=5.0000"));
+}
+
+TEST_CASE("an axis the machine lacks is NC4103") {
+  CHECK(run("%t\nG00 B10\nM30\n").error_id == "NC4103");
+}
+
+TEST_CASE("M/H/S/T functions pass through before the block's motion") {
+  auto r = run("%t\nG00 X1 M50 H3 S1000 T2\nM30\n");
+  REQUIRE(r.lines.size() == 6);
+  CHECK(r.lines[0] == "2: TECH M=50.0000");  // in the order written
+  CHECK(r.lines[2] == "2: TECH S=1000.0000");
+  CHECK(r.lines[4] == ax(2, "G00", "1.0000", "0.0000", "0.0000"));
+}
+
+TEST_CASE("M00 and M01 are program stops") {
+  auto r = run("%t\nM00\nM01\nM30\n");
+  CHECK(r.lines[0] == "2: STOP M00");
+  CHECK(r.lines[1] == "3: STOP M01");
+}
+
+TEST_CASE("a B-spline needs at least 4 points [NC4401]") {
+  auto ok =
+      run("%t\nG01 F600\n#SPLINE TYPE BSPLINE\n#SPLINE ON\nX1\nX2 Y1\nX3\n#SPLINE OFF\nM30\n");
+  CHECK(ok.error_id.empty());
+  CHECK(ok.lines.at(0).rfind("8: SPLINE BSPLINE points=4", 0) == 0);
+  auto bad = run("%t\nG01 F600\n#SPLINE TYPE BSPLINE\n#SPLINE ON\nX1\nX2\n#SPLINE OFF\nM30\n");
+  CHECK(bad.error_id == "NC4401");
+}
+
+TEST_CASE("an Akima spline needs at least 3 points") {
+  auto bad = run("%t\nG01 F600\n#SPLINE TYPE AKIMA\n#SPLINE ON\nX1\n#SPLINE OFF\nM30\n");
+  CHECK(bad.error_id == "NC4401");
+}
+
+const char* kSync = "%t\nS1[MC_TouchProbe Channel=1]\n#SYNC IN [CONV_VEL=6000]\n";
+
+TEST_CASE("#SYNC IN waits for the probe and synchronises") {
+  auto r = run(std::string(kSync) + "G01 X10 F600\n#SYNC OUT\nM30\n", "laser_portal");
+  REQUIRE(r.error_id.empty());
+  CHECK(r.lines[1] == "3: WAIT_PROBE S");
+  CHECK(r.lines[2] == "3: SYNC_IN S conv_vel=100.0000");
+  CHECK(r.lines[3] == ax(4, "G01", "10.0000", "0.0000", "0.0000", " F=10.0000 SYNC"));
+}
+
+TEST_CASE("the first motion after #SYNC IN must be G00 or G01 [NC4502]") {
+  auto r = run(std::string(kSync) + "G02 X10 Y0 I5 J0 F600\nM30\n", "laser_portal");
+  CHECK(r.error_id == "NC4502");
+}
+
+TEST_CASE("#SYNC IN twice is error 22265") {
+  CHECK(run(std::string(kSync) + "#SYNC IN [CONV_VEL=6000]\nM30\n", "laser_portal").error_id ==
+        "22265");
+}
+
+TEST_CASE("#SYNC IN with an active #CS is error 22262, #SYNC OUT with one 22263") {
+  CHECK(run("%t\n#CS ON [1] [1,0,0,0,0,0]\n#SYNC IN [CONV_VEL=6000]\nM30\n", "laser_portal")
+            .error_id == "22262");
+  CHECK(run(std::string(kSync) + "G01 X1 F600\n#CS ON [1] [1,0,0,0,0,0]\n#SYNC OUT\nM30\n",
+            "laser_portal")
+            .error_id == "22263");
+}
+
+TEST_CASE("#CS before the synchronisation movement is NC4505") {
+  CHECK(run(std::string(kSync) + "#CS ON [1] [1,0,0,0,0,0]\nM30\n", "laser_portal").error_id ==
+        "NC4505");
+}
+
+TEST_CASE("#SLOPE while synchronised is NC4506") {
+  CHECK(run(std::string(kSync) + "#SLOPE [TYPE=TRAPEZ]\nM30\n", "laser_portal").error_id ==
+        "NC4506");
+}
+
+TEST_CASE("kinematic selection inside #SYNC IN/OUT is NC4504") {
+  CHECK(run(std::string(kSync) + "G01 X1 F600\n#TRAFO ON\nM30\n", "laser_portal").error_id ==
+        "NC4504");
+}
+
+TEST_CASE("an unknown kinematic id is 292005") {
+  CHECK(run("%t\n#KIN ID[99]\nM30\n", "delta_picker").error_id == "292005");
+}
+
+TEST_CASE("#SYNC IN on a machine without conveyor is NC4501") {
+  CHECK(run("%t\n#SYNC IN [CONV_VEL=6000]\nM30\n").error_id == "NC4501");
+}
+
+TEST_CASE("INDP_SYN and INDP_ASYN become axis commands with mm/s feeds") {
+  auto r =
+      run("%t\nX[INDP_SYN G01 G90 POS100 FEED6000] Y[INDP_ASYN G00 POS5]\n#WAIT INDP ALL\nM30\n");
+  REQUIRE(r.error_id.empty());
+  CHECK(r.lines[0] == "2: INDP_SYN X G01 POS=100.0000 FEED=100.0000");
+  CHECK(r.lines[1] == "2: INDP_ASYN Y G00 POS=5.0000");
+  CHECK(r.lines[2] == "3: WAIT_INDP ALL");
+}
+
+TEST_CASE("MC_MoveVelocity converts um/s to mm/s; other MC_ commands are NC4512") {
+  auto r = run("%t\nS1[MC_MoveVelocity Velocity=300000 Direction=1]\nM30\n", "laser_portal");
+  CHECK(r.lines.at(0) == "2: MC_MOVEVELOCITY S v=300.0000 a=0.0000 d=0.0000 j=0.0000 dir=1");
+  CHECK(run("%t\nS1[MC_Stop]\nM30\n", "laser_portal").error_id == "NC4512");
+}
+
+TEST_CASE("G74 homes in the programmed order and G92 sets the position") {
+  auto r = run("%t\nG74 X2 Y1\nG92 X5\nG91 G00 X1\nM30\n");
+  CHECK(r.lines[0] == "2: HOME X=2 Y=1");
+  CHECK(r.lines[1] == "3: G92 X=5.0000");
+  CHECK(r.lines[2] == ax(4, "G00", "6.0000", "0.0000", "0.0000"));
+}
+
+TEST_CASE("#MSG and #FLUSH become commands") {
+  auto r = run("%t\n#MSG SYN [\"hello\"]\n#FLUSH WAIT\nM30\n");
+  CHECK(r.lines[0] == "2: MSG SYN \"hello\"");
+  CHECK(r.lines[1] == "3: FLUSH WAIT");
+}
+
+TEST_CASE("a loop without motion stops at the block limit naming the loop's line [NC4901]") {
+  Options o;
+  o.max_blocks_without_motion = 1000;
+  auto r = run("%t\nP1 = 0\n$WHILE 1\nP1 = P1 + 1\n$ENDWHILE\nM30\n", "portal_3x", o);
+  CHECK(r.error_id == "NC4901");
+  CHECK(r.error_line == 3);
+}
+
+TEST_CASE("an endless $WHILE [TRUE] yields 1,000,000 commands in constant memory") {
+  core::SourceFile file("endless.nc",
+                        "%t\nP1 = 0\n$WHILE [TRUE]\nP1 = P1 + 1\n$IF P1 > 3\nP1 = 0\n$ENDIF\n"
+                        "G01 X[P1] F600\nM50\n$ENDWHILE\nM30\n");
+  Interpreter interp(file, test::machine());
+  Interpreter::Footprint first{};
+  for (int k = 0; k < 1000000; ++k) {
+    auto c = interp.next();
+    REQUIRE(c.has_value());
+    if (k == 1000) first = interp.footprint();
+  }
+  const auto last = interp.footprint();
+  CHECK(last.control_frames == first.control_frames);
+  CHECK(last.call_frames == 0);
+  CHECK(last.pending <= 2);
+  CHECK(last.indexed_blocks == first.indexed_blocks);
+  CHECK(last.jump_memo == first.jump_memo);
+  CHECK(last.p_params == first.p_params);
+}
+
+TEST_CASE("check_semantics reports soft-limit violations and stops endless loops with a note") {
+  core::SourceFile limits("l.nc", "%t\nG00 X5000\nM30\n");
+  auto d = check_semantics(limits, test::machine(), {});
+  REQUIRE(d.items().size() == 1);
+  CHECK(d.items()[0].id == "NC4601");
+  core::SourceFile endless("e.nc", "%t\n$WHILE 1\nG00 X1\n$ENDWHILE\nM30\n");
+  auto e = check_semantics(endless, test::machine(), {});
+  REQUIRE(!e.items().empty());
+  CHECK(e.items().back().id == "NC4902");
+}
+
+}  // namespace
+}  // namespace ncsim::interp

@@ -1,0 +1,64 @@
+#pragma once
+// interp/test_support: helpers shared by the interpreter's tests (not part of the library).
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "interp/interpreter.hpp"
+#include "interp/trace.hpp"
+#include "machines/loader.hpp"
+
+namespace ncsim::interp::test {
+
+inline std::filesystem::path source_root() {
+  const char* dir = std::getenv("NCSIM_SOURCE_DIR");
+  return dir != nullptr ? std::filesystem::path(dir) : std::filesystem::path(NCSIM_SOURCE_ROOT);
+}
+
+inline const machines::Machine& machine(const std::string& name = "portal_3x") {
+  static std::vector<std::pair<std::string, machines::Machine>> loaded;  // test-only cache
+  for (const auto& [n, m] : loaded) {
+    if (n == name) return m;
+  }
+  auto result = machines::load_machine(machines::bundled_machine_dir(source_root(), name));
+  if (!result.machine) std::abort();
+  loaded.emplace_back(name, std::move(*result.machine));
+  return loaded.back().second;
+}
+
+struct Run {
+  std::vector<std::string> lines;
+  std::string error_id;
+  std::uint32_t error_line = 0;
+  std::string error_message;
+};
+
+inline Run run(const std::string& text, const std::string& machine_name = "portal_3x",
+               Options options = {}, std::size_t max_commands = 10000) {
+  core::SourceFile file("test.nc", text);
+  const machines::Machine& m = machine(machine_name);
+  Interpreter interp(file, m, options);
+  Run r;
+  while (r.lines.size() < max_commands) {
+    auto c = interp.next();
+    if (!c) break;
+    r.lines.push_back(to_trace_line(*c, m));
+  }
+  if (const auto* e = interp.error()) {
+    r.error_id = e->id;
+    r.error_line = e->loc.line;
+    r.error_message = e->message;
+  }
+  return r;
+}
+
+/// The value of P1 after `expression` (the program writes it to X of a G00).
+inline std::string value_line(const std::string& expression) {
+  Run r = run("%t\nP1 = " + expression + "\nG00 X[P1]\nM30\n");
+  if (!r.error_id.empty()) return "error " + r.error_id;
+  return r.lines.empty() ? "" : r.lines[0];
+}
+
+}  // namespace ncsim::interp::test

@@ -1,0 +1,284 @@
+#include "interp/variables.hpp"
+
+#include <cmath>
+
+#include "core/number_text.hpp"
+
+namespace ncsim::interp {
+namespace {
+
+using grammar::ast::VarClass;
+using grammar::ast::VarType;
+
+std::string class_name(VarClass cls) {
+  switch (cls) {
+    case VarClass::v_p:
+      return "V.P.";
+    case VarClass::v_l:
+      return "V.L.";
+    case VarClass::v_s:
+      return "V.S.";
+    case VarClass::v_e:
+      return "V.E.";
+    case VarClass::v_g:
+      return "V.G.";
+    case VarClass::v_cyc:
+      return "V.CYC.";
+    default:
+      return "V.";
+  }
+}
+
+std::string describe(const VarRef& ref) {
+  std::string s =
+      ref.cls == VarClass::p ? "P" + std::to_string(ref.number) : class_name(ref.cls) + ref.name;
+  for (std::uint32_t k = 0; k < ref.index_count; ++k) {
+    s += "[" + std::to_string(static_cast<long long>(ref.index[k])) + "]";
+  }
+  return s;
+}
+
+/// Flat element index of `ref` in `v`; nullopt when out of range.
+std::optional<std::size_t> element(const Variable& v, const VarRef& ref) {
+  if (ref.index_count != v.dims.size()) return std::nullopt;
+  std::size_t flat = 0;
+  for (std::uint32_t k = 0; k < ref.index_count; ++k) {
+    const double i = ref.index[k];
+    if (!(i >= 0.0) || i >= static_cast<double>(v.dims[k])) return std::nullopt;
+    flat = flat * v.dims[k] + static_cast<std::size_t>(i);
+  }
+  return flat;
+}
+
+/// Value as stored in a variable of `type` (truncation toward 0, range check).
+std::optional<double> convert(VarType type, double value) {
+  const auto in = [&](double lo, double hi) -> std::optional<double> {
+    const double t = std::trunc(value);
+    if (t < lo || t > hi) return std::nullopt;
+    return t;
+  };
+  switch (type) {
+    case VarType::boolean:
+      return std::fabs(value) >= 0.5 ? 1.0 : 0.0;
+    case VarType::sgn08:
+      return in(-128.0, 127.0);
+    case VarType::uns08:
+      return in(0.0, 255.0);
+    case VarType::sgn16:
+      return in(-32768.0, 32767.0);
+    case VarType::uns16:
+      return in(0.0, 65535.0);
+    case VarType::sgn32:
+      return in(-2147483648.0, 2147483647.0);
+    case VarType::uns32:
+      return in(0.0, 4294967295.0);
+    case VarType::real64:
+      return value;
+    case VarType::string:
+      return std::nullopt;
+  }
+  return value;
+}
+
+}  // namespace
+
+Variables::Variables(PersistentVariables* persistent, std::map<std::string, double> external)
+    : persistent_(persistent != nullptr ? persistent : &own_persistent_) {
+  for (auto& [name, value] : external) {
+    Variable v;
+    v.values.push_back(value);
+    v_e_[name] = std::move(v);
+  }
+  locals_.emplace_back();
+}
+
+Variables::Map* Variables::map_for(VarClass cls) {
+  switch (cls) {
+    case VarClass::v_p:
+      return &v_p_;
+    case VarClass::v_s:
+      return &persistent_->values;
+    case VarClass::v_e:
+      return &v_e_;
+    case VarClass::v_g:
+      return &v_g_;
+    case VarClass::v_cyc:
+      return &v_cyc_;
+    case VarClass::v_l:
+      return &locals_.back();
+    default:
+      return nullptr;
+  }
+}
+
+const Variable* Variables::find(const VarRef& ref) const {
+  return const_cast<Variables*>(this)->find(ref);
+}
+
+Variable* Variables::find(const VarRef& ref) {
+  if (ref.cls == VarClass::v_l) {
+    for (auto it = locals_.rbegin(); it != locals_.rend(); ++it) {
+      auto found = it->find(ref.name);
+      if (found != it->end()) return &found->second;
+    }
+    return nullptr;
+  }
+  Map* map = map_for(ref.cls);
+  if (map == nullptr) return nullptr;
+  auto found = map->find(ref.name);
+  return found == map->end() ? nullptr : &found->second;
+}
+
+std::optional<double> Variables::read(const VarRef& ref, VarError& error) const {
+  if (ref.cls == VarClass::p) {
+    if (ref.number == 0 || ref.number > kMaxPNumber) {
+      error = {"20400", "invalid P parameter number " + describe(ref)};
+      return std::nullopt;
+    }
+    if (ref.index_count == 0) {
+      if (ref.number < p_set_.size() && p_set_[ref.number] != 0) return p_values_[ref.number];
+    } else {
+      auto found = p_arrays_.find(ref.number);
+      const double i = ref.index[0];
+      if (ref.index_count > 1 || !(i >= 0.0) || i > kMaxPArrayIndex) {
+        error = {"20400", "invalid P parameter index " + describe(ref)};
+        return std::nullopt;
+      }
+      if (found != p_arrays_.end() && static_cast<std::size_t>(i) < found->second.size()) {
+        return found->second[static_cast<std::size_t>(i)];
+      }
+    }
+    error = {"NC4010", describe(ref) + " is read before it was written"};
+    return std::nullopt;
+  }
+  const Variable* v = find(ref);
+  if (v == nullptr) {
+    error = {"NC4011", "unknown variable " + describe(ref)};
+    return std::nullopt;
+  }
+  if (v->is_string()) {
+    error = {"NC4014", describe(ref) + " is a STRING, a number is expected"};
+    return std::nullopt;
+  }
+  auto at = element(*v, ref);
+  if (!at) {
+    error = {"NC4015", "index out of range: " + describe(ref)};
+    return std::nullopt;
+  }
+  return v->values[*at];
+}
+
+const std::string* Variables::read_string(const VarRef& ref) const {
+  const Variable* v = find(ref);
+  return (v != nullptr && v->is_string()) ? &v->text : nullptr;
+}
+
+bool Variables::write(const VarRef& ref, double value, VarError& error) {
+  if (ref.cls == VarClass::p) {
+    if (ref.number == 0 || ref.number > kMaxPNumber) {
+      error = {"20400", "invalid P parameter number " + describe(ref)};
+      return false;
+    }
+    if (ref.index_count == 0) {
+      if (p_set_.size() <= ref.number) {
+        p_set_.resize(ref.number + 1, 0);
+        p_values_.resize(ref.number + 1, 0.0);
+      }
+      p_values_[ref.number] = value;
+      p_set_[ref.number] = 1;
+      return true;
+    }
+    const double i = ref.index[0];
+    if (ref.index_count > 1 || !(i >= 0.0) || i > kMaxPArrayIndex) {
+      error = {"20400", "invalid P parameter index " + describe(ref)};
+      return false;
+    }
+    auto& array = p_arrays_[ref.number];
+    const auto k = static_cast<std::size_t>(i);
+    if (array.size() <= k) array.resize(k + 1, 0.0);
+    array[k] = value;
+    return true;
+  }
+  Variable* v = find(ref);
+  if (v == nullptr) {
+    if (ref.cls == VarClass::v_l || ref.cls == VarClass::v_other || ref.cls == VarClass::none ||
+        ref.index_count > 0) {
+      error = {"NC4011", "unknown variable " + describe(ref) + " (declare it with #VAR)"};
+      return false;
+    }
+    Map* map = map_for(ref.cls);
+    Variable created;
+    created.values.push_back(value);
+    (*map)[ref.name] = std::move(created);
+    return true;
+  }
+  if (v->is_string()) {
+    error = {"NC4014", describe(ref) + " is a STRING, a number cannot be assigned"};
+    return false;
+  }
+  auto at = element(*v, ref);
+  if (!at) {
+    error = {"NC4015", "index out of range: " + describe(ref)};
+    return false;
+  }
+  auto converted = convert(v->type, value);
+  if (!converted) {
+    error = {"NC4013", "value " + core::number_text(value) + " out of range for " + describe(ref)};
+    return false;
+  }
+  v->values[*at] = *converted;
+  return true;
+}
+
+bool Variables::write_string(const VarRef& ref, std::string value, VarError& error) {
+  Variable* v = find(ref);
+  if (v == nullptr || !v->is_string()) {
+    error = {"NC4014", describe(ref) + " is not a STRING variable"};
+    return false;
+  }
+  v->text = std::move(value);
+  return true;
+}
+
+bool Variables::declare(const VarRef& ref, Variable variable, VarError& error) {
+  Map* map = map_for(ref.cls);
+  if (map == nullptr || ref.cls == VarClass::v_e || ref.cls == VarClass::v_g) {
+    error = {"20908",
+             "only V.P., V.L., V.S. and V.CYC. variables can be declared: " + describe(ref)};
+    return false;
+  }
+  if (ref.cls == VarClass::v_s && map->count(ref.name) != 0) return true;  // persists
+  (*map)[ref.name] = std::move(variable);
+  return true;
+}
+
+bool Variables::exists(const VarRef& ref) const {
+  if (ref.cls == VarClass::p) {
+    if (ref.index_count == 0) return ref.number < p_set_.size() && p_set_[ref.number] != 0;
+    return p_arrays_.count(ref.number) != 0;
+  }
+  return find(ref) != nullptr;
+}
+
+std::optional<std::uint32_t> Variables::size_of(const VarRef& ref) const {
+  if (ref.cls == VarClass::p) {
+    auto found = p_arrays_.find(ref.number);
+    if (found != p_arrays_.end()) return static_cast<std::uint32_t>(found->second.size());
+    return exists(ref) ? std::optional<std::uint32_t>(1) : std::nullopt;
+  }
+  const Variable* v = find(ref);
+  if (v == nullptr) return std::nullopt;
+  return v->dims.empty() ? 1u : v->dims[0];
+}
+
+bool Variables::remove(const VarRef& ref) {
+  Map* map = map_for(ref.cls);
+  return map != nullptr && map->erase(ref.name) != 0;
+}
+
+const std::string* Variables::macro(std::string_view name) const {
+  auto found = macros_.find(name);
+  return found == macros_.end() ? nullptr : &found->second;
+}
+
+}  // namespace ncsim::interp

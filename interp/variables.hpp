@@ -1,0 +1,106 @@
+#pragma once
+// interp/variables: the variable store of one interpreter run (isg-language.md §3.4-3.7).
+//
+// Purpose: P parameters, V.P. (program global), V.L. (one scope per subroutine level, inner
+// declarations shadow outer ones), V.S. (persistent: kept in a PersistentVariables object the
+// caller owns, so values survive several runs in one invocation), V.E. (external values given
+// by the caller), V.G. and V.CYC. (stored by name), and string macros.
+// Inputs: resolved references (class, number or name, indices). Outputs: values or errors.
+// Invariants: names are stored upper-case without the class prefix ("V.P.TABLE" -> "TABLE");
+// arrays are 0-based, at most 4 dimensions; P numbers are 1..kMaxPNumber (error 20400
+// otherwise, PROG-206872331); memory grows only with the number of distinct variables.
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "grammar/ast.hpp"
+
+namespace ncsim::interp {
+
+/// Highest P parameter number (ncsim decision, docs/interp.md "Variables").
+inline constexpr std::uint32_t kMaxPNumber = 100000;
+/// Highest index of an implicitly created P array (ncsim decision).
+inline constexpr std::uint32_t kMaxPArrayIndex = 100000;
+
+struct Variable {
+  grammar::ast::VarType type = grammar::ast::VarType::real64;
+  std::vector<std::uint32_t> dims;  ///< empty: scalar
+  std::vector<double> values;       ///< row-major
+  std::string text;                 ///< STRING value
+  bool is_string() const { return type == grammar::ast::VarType::string; }
+};
+
+/// V.S. variables that outlive one Interpreter (isg-language.md §3.5, PROG-207973899).
+struct PersistentVariables {
+  std::unordered_map<std::string, Variable> values;
+};
+
+/// A variable reference with its indices evaluated.
+struct VarRef {
+  grammar::ast::VarClass cls = grammar::ast::VarClass::none;
+  std::uint32_t number = 0;  ///< P number
+  std::string name;          ///< V. name, upper case, without class prefix
+  std::uint32_t index_count = 0;
+  std::array<double, 4> index{};
+};
+
+/// A failed access: the ncsim or manual id and a message (the caller adds the location).
+struct VarError {
+  std::string id;
+  std::string message;
+};
+
+class Variables {
+ public:
+  Variables(PersistentVariables* persistent, std::map<std::string, double> external);
+
+  /// Reads a number. Never-written P parameters and unknown V. variables are errors.
+  std::optional<double> read(const VarRef& ref, VarError& error) const;
+  /// Reads a string variable (nullptr if `ref` is not one).
+  const std::string* read_string(const VarRef& ref) const;
+  /// Writes a number (creates P, V.P., V.S., V.E., V.G., V.CYC. on first write).
+  bool write(const VarRef& ref, double value, VarError& error);
+  bool write_string(const VarRef& ref, std::string value, VarError& error);
+  /// #VAR declaration in the current level (V.L.) or globally (V.P., V.S., V.CYC.).
+  bool declare(const VarRef& ref, Variable variable, VarError& error);
+  bool exists(const VarRef& ref) const;
+  /// Elements in the first dimension (1 for a scalar); nullopt if unknown.
+  std::optional<std::uint32_t> size_of(const VarRef& ref) const;
+  bool remove(const VarRef& ref);
+
+  void push_level() { locals_.emplace_back(); }
+  void pop_level() {
+    if (!locals_.empty()) locals_.pop_back();
+  }
+  std::size_t level_count() const { return locals_.size(); }
+
+  void define_macro(std::string name, std::string text) {
+    macros_[std::move(name)] = std::move(text);
+  }
+  const std::string* macro(std::string_view name) const;
+
+  std::size_t p_count() const { return p_values_.size(); }
+
+ private:
+  using Map = std::unordered_map<std::string, Variable>;
+  const Variable* find(const VarRef& ref) const;
+  Variable* find(const VarRef& ref);
+  Map* map_for(grammar::ast::VarClass cls);
+
+  std::vector<double> p_values_;  // index = P number
+  std::vector<std::uint8_t> p_set_;
+  std::unordered_map<std::uint32_t, std::vector<double>> p_arrays_;
+  Map v_p_, v_e_, v_g_, v_cyc_;
+  PersistentVariables own_persistent_;
+  PersistentVariables* persistent_;
+  std::vector<Map> locals_;  // one per program level; back() is the current one
+  std::map<std::string, std::string, std::less<>> macros_;
+};
+
+}  // namespace ncsim::interp
