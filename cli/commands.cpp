@@ -1,13 +1,18 @@
 #include "cli/commands.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
 #include <fstream>
 #include <ostream>
-#include <string>
 #include <system_error>
+#include <variant>
 
 #include "core/diagnostic.hpp"
 #include "core/source_file.hpp"
 #include "grammar/check.hpp"
+#include "interp/trace.hpp"
 #include "machines/loader.hpp"
 
 namespace ncsim::cli {
@@ -32,7 +37,7 @@ std::optional<std::string> program_file_problem(const fs::path& path) {
 // The machine folder a program runs on (design.md §5): --machine, else the bundled machine
 // named in the program folder's `machine` file, else the default bundled machine. Nothing when
 // the `machine` file names none (reported on `err`).
-std::optional<fs::path> machine_folder(const CheckOptions& options, std::ostream& err) {
+std::optional<fs::path> machine_folder(const ProgramOptions& options, std::ostream& err) {
   if (options.machine_dir) return *options.machine_dir;
   const fs::path named = options.program.parent_path() / "machine";
   std::string name(machines::kDefaultMachine);
@@ -51,9 +56,40 @@ std::optional<fs::path> machine_folder(const CheckOptions& options, std::ostream
   return machines::bundled_machine_dir(source_root(), name);
 }
 
-}  // namespace
+// `--ve NAME=value` into the interpreter's V.E. table (names upper case, values numbers).
+std::optional<std::string> parse_external(const std::vector<std::string>& items,
+                                          interp::Options& options) {
+  for (const std::string& item : items) {
+    const auto eq = item.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      return "--ve expects NAME=value, got '" + item + "'";
+    }
+    std::string name = item.substr(0, eq);
+    if (name.rfind("V.E.", 0) == 0 || name.rfind("v.e.", 0) == 0) name.erase(0, 4);
+    std::transform(name.begin(), name.end(), name.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    const std::string text = item.substr(eq + 1);
+    double value = 0.0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(value)) {
+      return "--ve " + name + ": '" + text + "' is not a number";
+    }
+    options.external[name] = value;
+  }
+  return std::nullopt;
+}
 
-int run_check(const CheckOptions& options, std::ostream& out, std::ostream& err) {
+// The program and its machine, loaded and syntax-checked: what every subcommand starts from.
+struct Loaded {
+  core::SourceFile file;
+  machines::Machine machine;
+  interp::Options interp;
+  core::DiagnosticList syntax;  ///< check_program's diagnostics
+};
+
+// Loads program and machine; on a usage or configuration problem prints it and returns the
+// exit status instead.
+std::variant<Loaded, int> load(const ProgramOptions& options, std::ostream& err) {
   if (options.scenario) {
     err << "ncsim: error: not supported: --scenario (scenario files come with the conveyor "
            "simulation)\n";
@@ -63,28 +99,73 @@ int run_check(const CheckOptions& options, std::ostream& out, std::ostream& err)
     err << "ncsim: error: " << *problem << '\n';
     return kExitUsage;
   }
+  interp::Options interp_options;
+  if (const auto problem = parse_external(options.external, interp_options)) {
+    err << "ncsim: error: " << *problem << '\n';
+    return kExitUsage;
+  }
   const std::optional<fs::path> machine_dir = machine_folder(options, err);
   if (!machine_dir) return kExitUsage;
-  const machines::LoadResult loaded = machines::load_machine(*machine_dir);
+  machines::LoadResult loaded = machines::load_machine(*machine_dir);
   for (const core::Diagnostic& d : loaded.diagnostics.items())
     err << core::format(d);
   if (!loaded.machine) {
     err << "ncsim: error: machine '" << machine_dir->string() << "' could not be loaded\n";
     return kExitUsage;
   }
+  core::SourceFile file = core::SourceFile::load(options.program);
+  core::DiagnosticList syntax = grammar::check_program(file);
+  return Loaded{std::move(file), std::move(*loaded.machine), std::move(interp_options),
+                std::move(syntax)};
+}
 
-  const core::SourceFile file = core::SourceFile::load(options.program);
-  const core::DiagnosticList diagnostics = grammar::check_program(file);
-  for (const core::Diagnostic& d : diagnostics.items())
+std::size_t print(const core::DiagnosticList& list, const core::SourceFile& file,
+                  std::ostream& err) {
+  for (const core::Diagnostic& d : list.items())
     err << core::format(d, file);
+  return list.error_count();
+}
 
-  if (diagnostics.has_errors()) {
-    const std::size_t n = diagnostics.error_count();
-    err << file.name() << ": " << n << (n == 1 ? " error" : " errors") << '\n';
+void print_error_count(const core::SourceFile& file, std::size_t n, std::ostream& err) {
+  err << file.name() << ": " << n << (n == 1 ? " error" : " errors") << '\n';
+}
+
+}  // namespace
+
+int run_check(const ProgramOptions& options, std::ostream& out, std::ostream& err) {
+  auto loaded = load(options, err);
+  if (const int* status = std::get_if<int>(&loaded)) return *status;
+  const Loaded& in = std::get<Loaded>(loaded);
+
+  std::size_t errors = print(in.syntax, in.file, err);
+  // Semantics need a program that parses: the interpreter would stop at the first syntax error.
+  if (errors == 0) {
+    errors += print(interp::check_semantics(in.file, in.machine, in.interp), in.file, err);
+  }
+  if (errors > 0) {
+    print_error_count(in.file, errors, err);
     return kExitProgramErrors;
   }
-  out << file.name() << ": ok\n";
+  out << in.file.name() << ": ok\n";
   return kExitOk;
+}
+
+int run_trace(const TraceOptions& options, std::ostream& out, std::ostream& err) {
+  auto loaded = load(options.program, err);
+  if (const int* status = std::get_if<int>(&loaded)) return *status;
+  const Loaded& in = std::get<Loaded>(loaded);
+
+  if (const std::size_t errors = print(in.syntax, in.file, err); errors > 0) {
+    print_error_count(in.file, errors, err);
+    return kExitProgramErrors;
+  }
+  interp::TraceOptions trace_options;
+  trace_options.interp = in.interp;
+  trace_options.max_commands = options.max_commands;
+  core::DiagnosticList diagnostics;
+  const int status = interp::write_trace(in.file, in.machine, trace_options, out, diagnostics);
+  print(diagnostics, in.file, err);
+  return status == 0 ? kExitOk : kExitProgramErrors;
 }
 
 }  // namespace ncsim::cli

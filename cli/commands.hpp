@@ -2,9 +2,12 @@
 // cli/commands: the subcommands of `ncsim`, callable with explicit streams so that they are
 // testable without a process. Exit statuses: 0 ok, 1 program errors, 2 usage or configuration.
 
+#include <cstdint>
 #include <filesystem>
 #include <iosfwd>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace ncsim::cli {
 
@@ -12,13 +15,24 @@ inline constexpr int kExitOk = 0;
 inline constexpr int kExitProgramErrors = 1;
 inline constexpr int kExitUsage = 2;
 
-struct CheckOptions {
+/// What every program-reading subcommand takes.
+struct ProgramOptions {
   std::filesystem::path program;                     ///< NC program file
   std::optional<std::filesystem::path> machine_dir;  ///< --machine
   std::optional<std::filesystem::path> scenario;     ///< --scenario
+  std::vector<std::string> external;                 ///< --ve NAME=value (V.E. variables)
 };
 
-/// `ncsim check`: prints every diagnostic to `err`, a one-line verdict to `out`.
-int run_check(const CheckOptions& options, std::ostream& out, std::ostream& err);
+struct TraceOptions {
+  ProgramOptions program;
+  std::uint64_t max_commands = 100000;  ///< --max-commands; 0: no limit
+};
+
+/// `ncsim check`: syntax, structure and semantics; every diagnostic to `err`, a one-line
+/// verdict to `out`.
+int run_check(const ProgramOptions& options, std::ostream& out, std::ostream& err);
+
+/// `ncsim trace`: the interpreter's command stream to `out`, one command per line.
+int run_trace(const TraceOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace ncsim::cli

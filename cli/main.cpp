@@ -1,7 +1,8 @@
 // The `ncsim` command: the user-facing contract of design.md §5.
 //
-//   ncsim check PROG.nc [--machine DIR] [--scenario FILE]   exit 0 ok, 1 program errors, 2 usage
-//   ncsim trace|time|run|golden ...                         not built yet: "not supported"
+//   ncsim check PROG.nc [--machine DIR] [--ve NAME=value]   exit 0 ok, 1 program errors, 2 usage
+//   ncsim trace PROG.nc [--machine DIR] [--ve NAME=value] [--max-commands N]
+//   ncsim time|run|golden ...                               not built yet: "not supported"
 //
 // Diagnostics go to stderr as `file:line:col: error: text [id]` with the source line and a
 // caret. The command never throws past main: every failure is a message and an exit status.
@@ -37,21 +38,34 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "ncsim 0.1.0");
 
-  ncsim::cli::CheckOptions check;
+  // Options every program-reading subcommand shares.
+  const auto add_program_options = [](CLI::App& cmd, ncsim::cli::ProgramOptions& options) {
+    cmd.add_option("program", options.program, "NC program file (.nc)")->required();
+    cmd.add_option("--machine", options.machine_dir,
+                   "Machine folder (parameter lists); default: the program folder's "
+                   "'machine' file, else the bundled portal_3x");
+    cmd.add_option("--scenario", options.scenario, "Scenario file (not supported yet)");
+    cmd.add_option("--ve", options.external, "V.E. variable value, NAME=value (repeatable)");
+  };
+
+  ncsim::cli::ProgramOptions check;
   auto* check_cmd =
       app.add_subcommand("check",
-                         "Syntax and structure check of an NC program; every error with "
+                         "Syntax, structure and semantic check of an NC program; every error with "
                          "file:line:col");
-  check_cmd->add_option("program", check.program, "NC program file (.nc)")->required();
-  check_cmd->add_option("--machine", check.machine_dir,
-                        "Machine folder (parameter lists); default: the program folder's "
-                        "'machine' file, else the bundled portal_3x");
-  check_cmd->add_option("--scenario", check.scenario, "Scenario file (not supported yet)");
+  add_program_options(*check_cmd, check);
+
+  ncsim::cli::TraceOptions trace;
+  auto* trace_cmd = app.add_subcommand(
+      "trace", "Print the interpreter's command stream, one command per line with its source line");
+  add_program_options(*trace_cmd, trace.program);
+  trace_cmd
+      ->add_option("--max-commands", trace.max_commands,
+                   "Stop after this many commands (0: no limit; endless programs need one)")
+      ->capture_default_str();
 
   std::optional<std::string> unsupported;
   std::string unsupported_reason;
-  add_not_supported(app, "trace", "Print the interpreter's command stream", "the interpreter",
-                    unsupported, unsupported_reason);
   add_not_supported(app, "time", "Machining time with a per-block breakdown",
                     "the planner and interpolator", unsupported, unsupported_reason);
   add_not_supported(app, "run", "Run on the simulated machine and write every axis setpoint",
@@ -71,6 +85,7 @@ int main(int argc, char** argv) {
     return kExitUsage;
   }
   try {
+    if (trace_cmd->parsed()) return ncsim::cli::run_trace(trace, std::cout, std::cerr);
     return ncsim::cli::run_check(check, std::cout, std::cerr);
   } catch (const std::exception& e) {
     std::cerr << "ncsim: error: " << e.what() << '\n';

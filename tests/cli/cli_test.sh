@@ -52,6 +52,7 @@ expect "an unknown option is a usage error" 2 '' '' -- check --frobnicate "$fixt
 expect "check needs a program" 2 '' '' -- check
 expect "scenarios are not supported yet" 2 '' 'not supported: --scenario' -- \
   check "$fixtures/clean.nc" --scenario "$fixtures/clean.nc"
+expect "trace needs a program" 2 '' '' -- trace
 expect "run is not supported yet" 2 '' 'not supported' -- run "$fixtures/clean.nc"
 expect "time is not supported yet" 2 '' 'not supported' -- time "$fixtures/clean.nc"
 expect "golden is not supported yet" 2 '' 'not supported' -- golden check
@@ -68,6 +69,29 @@ expect "the program folder's machine file names the machine" 0 'clean\.nc: ok' '
 echo "no_such_machine" >"$work/prog/machine"
 expect "an unknown machine named by the program folder is a configuration error" 2 '' \
   'could not be loaded' -- check "$work/prog/clean.nc"
+expect "a semantic error fails the check with the manual's id" 1 '' \
+  'no_feed\.nc:3:[0-9]+: error: .*\[20008\]' -- check "$fixtures/no_feed.nc"
+expect "trace prints one command per line, ending with END" 0 '^7: END M30$' '' -- \
+  trace "$fixtures/clean.nc"
+expect "trace of a program with syntax errors reports them, status 1" 1 '' '\[20218\]' -- \
+  trace "$fixtures/two_errors.nc"
+expect "trace records the error that ended the stream" 1 '^# 20008 line 3$' '\[20008\]' -- \
+  trace "$fixtures/no_feed.nc"
+expect "V.E. values come from --ve" 0 'X=12\.5000' '' -- \
+  trace "$fixtures/external.nc" --ve OFFSET=12.5
+expect "a --ve without a number is a usage error" 2 '' 'is not a number' -- \
+  trace "$fixtures/external.nc" --ve OFFSET=abc
+expect "a --ve without = is a usage error" 2 '' 'NAME=value' -- \
+  check "$fixtures/external.nc" --ve OFFSET
+"$ncsim" trace --max-commands 3 "$root/programs/pick_and_place/pick_and_place.nc" \
+  >"$work/endless" 2>/dev/null
+checks=$((checks + 1))
+if [[ $(wc -l <"$work/endless") -eq 3 ]]; then
+  echo "ok   --max-commands cuts an endless program"
+else
+  failures=$((failures + 1)); echo "FAIL --max-commands cuts an endless program"
+  cat "$work/endless"
+fi
 expect "help exits 0" 0 'check' '' -- --help
 
 echo "cli: $((checks - failures)) passed, $failures failed"

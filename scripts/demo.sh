@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# The main job on a bundled example: install what is missing, build ncsim, and check the
+# pick & place program of the conveyor-tracking manual (seed 004, section 4.9.2).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/deps.sh
+bash scripts/build.sh build/release -DCMAKE_BUILD_TYPE=Release >/dev/null
+program=programs/pick_and_place/pick_and_place.nc
+echo "\$ ncsim check $program"
+build/release/cli/ncsim check "$program"

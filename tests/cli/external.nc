@@ -1,0 +1,3 @@
+%external
+N10 G01 X[V.E.OFFSET] F1000
+N20 M30

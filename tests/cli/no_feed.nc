@@ -1,0 +1,4 @@
+%semantic
+N10 G00 X0 Y0
+N20 G01 X10
+N30 M30
