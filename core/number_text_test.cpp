@@ -13,6 +13,13 @@ TEST_CASE("numbers print as a user writes them, without trailing zeros") {
   CHECK(number_text(0.1) == "0.1");
   CHECK(number_text(-0.0) == "0");
   CHECK(number_text(65.0000001) == "65.0000001");
+  CHECK(number_text(40000000.0) == "40000000");  // a 0.1 um list value, not "4e+07"
+  CHECK(number_text(0.00002) == "0.00002");
+}
+
+TEST_CASE("very small and very large numbers keep an exponent") {
+  CHECK(number_text(1e-7) == "1e-07");
+  CHECK(number_text(2.5e20) == "2.5e+20");
 }
 
 TEST_CASE("the text reads back to the same number") {

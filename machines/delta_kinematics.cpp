@@ -1,9 +1,10 @@
 #include "machines/delta_kinematics.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <string>
+
+#include "core/number_text.hpp"
 
 namespace ncsim::machines {
 namespace {
@@ -19,14 +20,9 @@ Eigen::Vector3d arm_direction(int arm) {
   return Eigen::Vector3d(std::cos(azimuth), std::sin(azimuth), 0.0);
 }
 
-std::string fmt(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-
 std::string point_text(const Eigen::Vector3d& p) {
-  return "(" + fmt(p.x()) + ", " + fmt(p.y()) + ", " + fmt(p.z()) + ")";
+  return "(" + core::number_text(p.x()) + ", " + core::number_text(p.y()) + ", " +
+         core::number_text(p.z()) + ")";
 }
 
 // Wraps an angle [deg] into (-180, 180].
@@ -47,8 +43,9 @@ std::optional<KinError> validate(const DeltaGeometry& g) {
   if (g.r_base < 0.0) return bad("base radius trafo[0].param[4] must not be negative");
   if (g.r_effector < 0.0) return bad("effector radius trafo[0].param[3] must not be negative");
   if (!(g.joint_min_deg < g.joint_max_deg)) {
-    return bad("joint limit trafo[0].param[10] = " + fmt(g.joint_min_deg) +
-               " deg must be below trafo[0].param[11] = " + fmt(g.joint_max_deg) + " deg");
+    return bad("joint limit trafo[0].param[10] = " + core::number_text(g.joint_min_deg) +
+               " deg must be below trafo[0].param[11] = " + core::number_text(g.joint_max_deg) +
+               " deg");
   }
   return std::nullopt;
 }
@@ -75,8 +72,9 @@ KinResult DeltaKinematics::forward(const Eigen::Vector3d& acs) const {
     if (acs[i] < g_.joint_min_deg || acs[i] > g_.joint_max_deg) {
       out.error =
           KinError{"NC3202", "kinematic 37 (delta): drive " + std::to_string(i + 1) + " = " +
-                                 fmt(acs[i]) + " deg is outside its limits " +
-                                 fmt(g_.joint_min_deg) + ".." + fmt(g_.joint_max_deg) + " deg"};
+                                 core::number_text(acs[i]) + " deg is outside its limits " +
+                                 core::number_text(g_.joint_min_deg) + ".." +
+                                 core::number_text(g_.joint_max_deg) + " deg"};
       return out;
     }
     const double theta = rad(acs[i] - g_.zero_offset_deg[static_cast<std::size_t>(i)]);
@@ -144,9 +142,9 @@ KinResult DeltaKinematics::inverse(const Eigen::Vector3d& mcs) const {
     if (axis_deg < g_.joint_min_deg || axis_deg > g_.joint_max_deg) {
       out.error =
           KinError{"NC3202", "kinematic 37 (delta): point " + point_text(mcs) + " mm needs drive " +
-                                 std::to_string(arm + 1) + " = " + fmt(axis_deg) +
-                                 " deg, outside its limits " + fmt(g_.joint_min_deg) + ".." +
-                                 fmt(g_.joint_max_deg) + " deg"};
+                                 std::to_string(arm + 1) + " = " + core::number_text(axis_deg) +
+                                 " deg, outside its limits " + core::number_text(g_.joint_min_deg) +
+                                 ".." + core::number_text(g_.joint_max_deg) + " deg"};
       return out;
     }
     out.value[arm] = axis_deg;

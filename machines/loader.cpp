@@ -61,16 +61,6 @@ std::string range_text(const ParamSpec& spec) {
 
 }  // namespace
 
-std::string number_text(double value) {
-  char buf[40];
-  if (value == std::floor(value) && std::abs(value) < 1.0e15) {
-    std::snprintf(buf, sizeof buf, "%.0f", value);
-  } else {
-    std::snprintf(buf, sizeof buf, "%.10g", value);
-  }
-  return buf;
-}
-
 std::string pattern_of(std::string_view key) {
   std::string out;
   bool in_index = false;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/diagnostic.hpp"
+#include "core/number_text.hpp"
 #include "core/source_file.hpp"
 #include "machines/machine.hpp"
 #include "machines/param_table.hpp"
@@ -56,8 +57,8 @@ class ListValues {
 std::string param_ref(std::string_view key, ListKind kind);
 /// Pattern of a normalised key: digits inside brackets removed.
 std::string pattern_of(std::string_view key);
-/// Short number text for messages (integers without decimals).
-std::string number_text(double value);
+/// Number text for messages: the project's one formatter.
+using core::number_text;
 
 core::Diagnostic make_diag(core::Severity severity, const std::string& file, core::SourceLoc loc,
                            std::string id, std::string message);
