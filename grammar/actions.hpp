@@ -33,15 +33,7 @@ inline ast::ExprNode leaf(ast::Op op, core::SourceLoc loc, std::string_view text
 }
 }  // namespace detail
 
-template <>
-struct Action<rules::number> {
-  template <typename Input>
-  static void apply(const Input& in, State& st) {
-    ast::ExprNode n = detail::leaf(ast::Op::number, st.loc(in.begin()), in.string_view());
-    std::from_chars(in.begin(), in.end(), n.value);
-    st.push(n);
-  }
-};
+// rules::number builds its node itself (custom_rules_hot.hpp).
 
 template <>
 struct Action<rules::hex_number> {

@@ -1,5 +1,7 @@
 #include "grammar/block_parser.hpp"
 
+#include <cstring>
+
 #include "grammar/custom_rules.hpp"
 
 namespace ncsim::grammar {
@@ -41,6 +43,7 @@ struct BlockParser::Impl {
   std::uint32_t line = 1;  // its line number
   Mode mode = Mode::normal;
   core::SourceLoc mode_loc;  // the #VAR / #COMMENT BEGIN that opened the mode
+  bool single_line = true;   // the current block holds no line end (see split)
   State state;
 
   explicit Impl(const core::SourceFile& f) : file(f), text(f.text()) {}
@@ -52,7 +55,27 @@ struct BlockParser::Impl {
 
   /// Splits off the next block: one line, plus the following lines while a line ends in `\`
   /// outside comments (§1.3). Returns [begin, end) without the line end; advances pos/line.
-  std::pair<std::size_t, std::size_t> split(std::uint32_t& lines) {
+  /// `no_line_end` is set when the block text certainly holds no line end.
+  std::pair<std::size_t, std::size_t> split(std::uint32_t& lines, bool& no_line_end) {
+    // Fast path: a line without any `\` can neither continue nor hide a line end in a string.
+    const char* const data = text.data();
+    const void* const lf = std::memchr(data + pos, '\n', text.size() - pos);
+    const std::size_t line_end =
+        lf != nullptr ? static_cast<std::size_t>(static_cast<const char*>(lf) - data) : text.size();
+    if (std::memchr(data + pos, '\\', line_end - pos) == nullptr) {
+      const std::size_t begin = pos;
+      lines = 1;
+      no_line_end = true;
+      pos = line_end < text.size() ? line_end + 1 : text.size();
+      std::size_t end = line_end;
+      if (end > begin && text[end - 1] == '\r') --end;
+      return {begin, end};
+    }
+    no_line_end = false;
+    return split_slow(lines);
+  }
+
+  std::pair<std::size_t, std::size_t> split_slow(std::uint32_t& lines) {
     const std::size_t begin = pos;
     lines = 1;
     for (;;) {
@@ -100,7 +123,8 @@ struct BlockParser::Impl {
 
   template <typename Rule>
   void parse(ast::Block& out, core::DiagnosticList& diags) {
-    state.reset(out, out.text.data(), out.text.data() + out.text.size(), out.loc);
+    const bool multiline = !single_line && out.text.find('\n') != std::string_view::npos;
+    state.reset(out, out.text.data(), out.text.data() + out.text.size(), out.loc, multiline);
     Input in(out.text.data(), out.text.data() + out.text.size(), "");
     try {
       if (!pegtl::parse<Rule, Action, Control>(in, state)) {
@@ -130,7 +154,7 @@ struct BlockParser::Impl {
       }
       const std::uint32_t first_line = line;
       std::uint32_t lines = 1;
-      const auto [begin, end] = split(lines);
+      const auto [begin, end] = split(lines, single_line);
       line += lines;
       const std::string_view block_text = text.substr(begin, end - begin);
       const std::string_view head = trimmed(block_text);

@@ -1,6 +1,7 @@
 #pragma once
 // grammar/custom_rules_impl: match() of the custom rules declared in rules.hpp (internal).
 
+#include "grammar/custom_rules_hot.hpp"
 #include "grammar/hash_commands.hpp"
 
 namespace ncsim::grammar {

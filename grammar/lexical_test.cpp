@@ -1,5 +1,10 @@
 #include <doctest/doctest.h>
 
+#include <bit>
+#include <charconv>
+#include <cstdint>
+#include <random>
+
 #include "grammar/test_support.hpp"
 
 namespace ncsim::grammar::test {
@@ -159,6 +164,80 @@ TEST_CASE("declarations between #VAR and #ENDVAR, array initialisers across line
   CHECK(std::get<ast::HashCommand>(b.body).kind == ast::HashKind::endvar);
   CHECK_FALSE(parser.next(b, diags));
   CHECK(diags.items().empty());
+}
+
+// The number rule converts short literals itself (custom_rules_hot.hpp) and long ones with
+// std::from_chars; both must give the correctly rounded double.
+TEST_CASE("decimal literals have exactly the value of correctly rounded parsing") {
+  std::vector<std::string> literals = {"0",
+                                       "5.",
+                                       ".5",
+                                       "0.1",
+                                       "4.35",
+                                       "123.456",
+                                       "007.250",
+                                       "9007199254740992",
+                                       "9007199254740993",
+                                       "900719925474099.3",
+                                       "9999999999999999999",
+                                       "18446744073709551617",
+                                       "1.0000000000000000000001",
+                                       "0.0000000000000000000001",
+                                       "0.00000000000000000000001",
+                                       "0.3000000000000000444089209850062616169452667236328125",
+                                       "179769313486231570000000000000000000000000.5"};
+  std::mt19937_64 random(20251121);  // seeded: the same literals every run
+  for (int n = 0; n < 3000; ++n) {
+    std::string text;
+    const auto whole = random() % 21;
+    const auto decimals = random() % 26;
+    for (std::uint64_t k = 0; k < whole; ++k)
+      text += static_cast<char>('0' + random() % 10);
+    if (decimals > 0 || whole == 0) text += '.';
+    for (std::uint64_t k = 0; k < (whole == 0 && decimals == 0 ? 1 : decimals); ++k)
+      text += static_cast<char>('0' + random() % 10);
+    literals.push_back(text);
+  }
+  for (const std::string& literal : literals) {
+    CAPTURE(literal);
+    const Parsed p("X" + literal);
+    REQUIRE(p.diags.items().empty());
+    REQUIRE(p.block.words.size() == 1);
+    const ast::ExprNode& node = p.value(0);
+    CHECK(node.op == ast::Op::number);
+    CHECK(node.text == literal);
+    double expected = 0.0;
+    std::from_chars(literal.data(), literal.data() + literal.size(), expected);
+    CHECK(std::bit_cast<std::uint64_t>(node.value) == std::bit_cast<std::uint64_t>(expected));
+  }
+}
+
+TEST_CASE("a name followed by '[' or '=' still reaches every kind of word") {
+  const Parsed named("XA = 5 PX=5 P2=3 P3 X [1+2]");
+  REQUIRE(named.diags.items().empty());
+  REQUIRE(named.block.words.size() == 5);
+  CHECK(named.block.words[0].kind == ast::WordKind::axis);
+  CHECK(named.block.words[0].name == "XA");
+  CHECK(named.block.words[1].kind == ast::WordKind::axis);
+  CHECK(named.block.words[1].name == "PX");
+  CHECK(named.block.words[2].kind == ast::WordKind::assignment);
+  CHECK(named.block.words[3].kind == ast::WordKind::bare_value);
+  CHECK(named.block.words[4].kind == ast::WordKind::axis);
+  CHECK(named.block.words[4].name == "X");
+  CHECK(named.node(named.block.words[4].value).op == ast::Op::add);
+  const Parsed dense("G01X.5Y5.Z007");
+  REQUIRE(dense.block.words.size() == 4);
+  CHECK(dense.value(1).value == 0.5);
+  CHECK(dense.block.words[3].loc.column == 10);
+}
+
+TEST_CASE("a backslash separates only when a line end follows it (blanks and CR between)") {
+  const Parsed joined("X1 \\  \r\nY2");
+  REQUIRE(joined.diags.items().empty());
+  REQUIRE(joined.block.words.size() == 2);
+  CHECK(joined.block.words[1].loc.line == 2);
+  CHECK(joined.block.words[1].loc.column == 1);
+  CHECK(check("X1 \\ Y2\n") == std::vector<std::string>{"1:4 NC1001"});
 }
 
 TEST_CASE("lines between #COMMENT BEGIN and END are not parsed") {

@@ -80,14 +80,14 @@ struct State {
   ast::Declaration decl;
   ast::NodeIndex init_last = ast::kNoNode;
 
-  void reset(ast::Block& b, const char* text_begin, const char* text_end, core::SourceLoc at) {
+  /// Starts a block; `has_line_end` tells whether [text_begin, text_end) holds a '\n'.
+  void reset(ast::Block& b, const char* text_begin, const char* text_end, core::SourceLoc at,
+             bool has_line_end) {
     block = &b;
     begin = text_begin;
     end = text_end;
     base = at;
-    multiline =
-        std::string_view(text_begin, static_cast<std::size_t>(text_end - text_begin)).find('\n') !=
-        std::string_view::npos;
+    multiline = has_line_end;
     depth = 0;
     stack.clear();
     ops.clear();

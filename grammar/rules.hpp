@@ -49,12 +49,17 @@ struct kw : seq<S, not_at<ident_char>> {};
 NCSIM_CUSTOM_RULE(paren_comment);  // ( ... ) nested, iterative; an unclosed one runs to the end
 struct line_comment : seq<one<';'>, star<any>> {};  // ; to the block end
 struct continuation : seq<one<'\\'>, star<blank>, opt<one<'\r'>>, one<'\n'>> {};  // \ + EOL
-struct sep : sor<blank, paren_comment, continuation, one<'\r'>> {};
-struct ws : star<sep> {};
+// Separators between tokens. `ws` matches exactly star<sep_spec> (kept for the analysis
+// test), by a loop that dispatches on the character: it runs between every two tokens.
+struct sep_spec : sor<blank, paren_comment, continuation, one<'\r'>> {};
+NCSIM_CUSTOM_RULE(ws);  // star<sep_spec>
 struct block_end : seq<ws, opt<line_comment>, eof> {};
 
 struct digits : plus<digit> {};
-struct number : sor<seq<digits, opt<one<'.'>, star<digit>>>, seq<one<'.'>, digits>> {};
+// Decimal literal: matches exactly number_spec (kept for the analysis test) and pushes its node
+// with the value; hand-written so that scanning and the value conversion are one pass.
+struct number_spec : sor<seq<digits, opt<one<'.'>, star<digit>>>, seq<one<'.'>, digits>> {};
+NCSIM_CUSTOM_RULE(number);
 struct hex_body : plus<not_one<'\'', '\n'>> {};
 struct close_quote1 : one<'\''> {};
 struct hex_number : seq<one<'\''>, must<hex_body, close_quote1>> {};  // '16#FA1B' '0x0ED2'
@@ -179,8 +184,12 @@ struct axis_command : seq<bracket_axis, ws, one<'['>, bracket_items, must<close_
 
 NCSIM_CUSTOM_RULE(misplaced_statement);  // '#' or '$' (not $GOTO) among words: always throws
 
-struct word : sor<misplaced_statement, subroutine_call, macro_def, assignment, axis_command, g_word,
-                  named_axis, address_word, bare_value> {};
+// One word. `word` tries exactly the alternatives of word_spec in this order (word_spec is kept
+// for the analysis test), but only those that can match the first character, and skips
+// axis_command / named_axis unless the name is followed by '[' / '=': most words are `X-1.5`.
+struct word_spec : sor<misplaced_statement, subroutine_call, macro_def, assignment, axis_command,
+                       g_word, named_axis, address_word, bare_value> {};
+NCSIM_CUSTOM_RULE(word);
 
 // ---- $ control statements (isg-language.md §4) -----------------------------------------------
 NCSIM_CUSTOM_RULE(goto_target);  // N10, [name], V.E.x; else error 20839
@@ -242,6 +251,8 @@ namespace tao::pegtl {
   template <typename Name>      \
   struct analyze_traits<Name, ncsim::grammar::rules::r> : analyze_any_traits<> {}
 NCSIM_ANALYZE_CUSTOM(paren_comment);
+NCSIM_ANALYZE_CUSTOM(number);
+NCSIM_ANALYZE_CUSTOM(word);
 NCSIM_ANALYZE_CUSTOM(function_name);
 NCSIM_ANALYZE_CUSTOM(address_head);
 NCSIM_ANALYZE_CUSTOM(axis_name_eq);
@@ -253,6 +264,8 @@ NCSIM_ANALYZE_CUSTOM(goto_target);
 NCSIM_ANALYZE_CUSTOM(control_keyword);
 NCSIM_ANALYZE_CUSTOM(decl_type);
 NCSIM_ANALYZE_CUSTOM(hash_command);
+template <typename Name>
+struct analyze_traits<Name, ncsim::grammar::rules::ws> : analyze_opt_traits<> {};
 template <typename Name>
 struct analyze_traits<Name, ncsim::grammar::rules::bracket_items> : analyze_opt_traits<> {};
 template <typename Name>

@@ -1,0 +1,176 @@
+#pragma once
+// grammar/custom_rules_hot: the rules on the hot path of every block (internal): separators,
+// decimal numbers and the word dispatch. Each matches exactly the PEG rule it replaces
+// (rules::sep_spec, rules::number_spec, rules::word_spec in rules.hpp) and differs only in
+// speed: one pass over the characters, a switch on the first character instead of trying
+// alternatives, no look-ahead that cannot succeed. Included by custom_rules_impl.hpp.
+
+#include <array>
+#include <charconv>
+#include <cstdint>
+
+#include "grammar/custom_rules.hpp"
+
+namespace ncsim::grammar {
+
+namespace detail {
+/// 10^0 ... 10^22: the powers of ten a double holds exactly.
+inline constexpr std::array<double, 23> kExactPow10 = {
+    1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+    1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+/// Largest integer up to which every integer is exactly a double (2^53).
+inline constexpr std::uint64_t kExactMantissa = std::uint64_t{1} << 53;
+/// At most this many digits are accumulated in a uint64 without overflow.
+inline constexpr int kMaxFastDigits = 19;
+
+/// Value of a decimal literal `[digits][.digits]` (the text rules::number matched). When the
+/// digits form an integer m <= 2^53 and there are k <= 22 decimals, m and 10^k are exact
+/// doubles and one IEEE division is correctly rounded, so m / 10^k is bit-identical to
+/// std::from_chars (Clinger's fast path); every other literal goes through from_chars.
+inline double decimal_value(const char* begin, const char* end) {
+  std::uint64_t mantissa = 0;
+  int digits = 0;
+  int decimals = 0;
+  bool after_point = false;
+  for (const char* p = begin; p < end; ++p) {
+    if (*p == '.') {
+      after_point = true;
+      continue;
+    }
+    if (digits == kMaxFastDigits) {
+      ++digits;  // too long for the fast path
+      break;
+    }
+    mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p - '0');
+    ++digits;
+    if (after_point) ++decimals;
+  }
+  if (digits <= kMaxFastDigits && mantissa <= kExactMantissa &&
+      decimals < static_cast<int>(kExactPow10.size())) {
+    return static_cast<double>(mantissa) / kExactPow10[static_cast<std::size_t>(decimals)];
+  }
+  double value = 0.0;
+  std::from_chars(begin, end, value);
+  return value;
+}
+}  // namespace detail
+
+/// Matches `Rule` as an alternative of a sor<> would (rewinding on failure).
+template <typename Rule, pegtl::apply_mode A, template <typename...> class Act,
+          template <typename...> class Ctl, typename Input, typename St>
+bool try_alternative(Input& in, St& st) {
+  return pegtl::match<Rule, A, pegtl::rewind_mode::required, Act, Ctl>(in, st);
+}
+
+#define NCSIM_HOT_MATCH(rule)                                                            \
+  template <pegtl::apply_mode A, pegtl::rewind_mode M, template <typename...> class Act, \
+            template <typename...> class Ctl, typename Input, typename St>               \
+  bool rules::rule::match(Input& in, [[maybe_unused]] St& st)
+
+// star<sep_spec>: blanks, '\r', nested ( ) comments (as paren_comment), and `\` + line end.
+NCSIM_HOT_MATCH(ws) {
+  const char* p = in.current();
+  const char* const e = in.end();
+  while (p < e) {
+    const char c = *p;
+    if (c == ' ' || c == '\t' || c == '\r') {
+      ++p;
+    } else if (c == '(') {
+      std::size_t depth = 0;
+      for (; p < e; ++p) {
+        if (*p == '(') {
+          ++depth;
+        } else if (*p == ')' && --depth == 0) {
+          ++p;
+          break;
+        }
+      }
+    } else if (c == '\\') {
+      const char* q = p + 1;
+      while (q < e && (*q == ' ' || *q == '\t'))
+        ++q;
+      if (q < e && *q == '\r') ++q;
+      if (q >= e || *q != '\n') break;
+      p = q + 1;
+    } else {
+      break;
+    }
+  }
+  in.bump(static_cast<std::size_t>(p - in.current()));
+  return true;
+}
+
+// number_spec: digits [ '.' digits* ] | '.' digits. Pushes an Op::number leaf.
+NCSIM_HOT_MATCH(number) {
+  const char* const b = in.current();
+  const char* const e = in.end();
+  const char* p = b;
+  while (p < e && lex::is_digit(*p))
+    ++p;
+  const bool whole = p != b;
+  if (p < e && *p == '.') {
+    const char* q = p + 1;
+    while (q < e && lex::is_digit(*q))
+      ++q;
+    if (!whole && q == p + 1) return false;  // a lone '.'
+    p = q;
+  } else if (!whole) {
+    return false;
+  }
+  const auto length = static_cast<std::size_t>(p - b);
+  if constexpr (A == pegtl::apply_mode::action) {
+    ast::ExprNode n = detail::leaf(ast::Op::number, st.loc(b), std::string_view(b, length));
+    n.value = detail::decimal_value(b, p);
+    st.push(n);
+  }
+  in.bump(length);
+  return true;
+}
+
+// word_spec, dispatched on the first character. An alternative is skipped only where it
+// cannot match: its first character is wrong, or (axis_command, named_axis) the name is not
+// followed by '[' or '=' (bracket_axis and axis_name_eq read name, blanks, then need those).
+NCSIM_HOT_MATCH(word) {
+  if (in.empty()) return false;
+  const char c = in.peek_char();
+  switch (c) {
+    case '#':
+    case '$':
+      return try_alternative<misplaced_statement, A, Act, Ctl>(in, st);
+    case '"':
+      return try_alternative<macro_def, A, Act, Ctl>(in, st);
+    case '@':
+      return try_alternative<assignment, A, Act, Ctl>(in, st) ||
+             try_alternative<bare_value, A, Act, Ctl>(in, st);
+    case '.':
+    case '\'':
+    case '[':
+      return try_alternative<bare_value, A, Act, Ctl>(in, st);
+    default:
+      break;
+  }
+  if (lex::is_digit(c)) return try_alternative<bare_value, A, Act, Ctl>(in, st);
+  if (!lex::is_alpha(c)) return false;
+
+  const char* p = in.current();
+  const char* const e = in.end();
+  while (p < e && lex::is_ident(*p))
+    ++p;
+  while (p < e && (*p == ' ' || *p == '\t'))
+    ++p;
+  const char after = p < e ? *p : '\0';
+  const char u = lex::upper(c);
+  const bool variable = u == 'P' || u == 'V';
+
+  if (u == 'L' && try_alternative<subroutine_call, A, Act, Ctl>(in, st)) return true;
+  if (variable && try_alternative<assignment, A, Act, Ctl>(in, st)) return true;
+  if (after == '[' && try_alternative<axis_command, A, Act, Ctl>(in, st)) return true;
+  if (u == 'G') return try_alternative<g_word, A, Act, Ctl>(in, st);
+  if (after == '=' && try_alternative<named_axis, A, Act, Ctl>(in, st)) return true;
+  if (try_alternative<address_word, A, Act, Ctl>(in, st)) return true;
+  return variable && try_alternative<bare_value, A, Act, Ctl>(in, st);
+}
+
+#undef NCSIM_HOT_MATCH
+
+}  // namespace ncsim::grammar
