@@ -132,8 +132,28 @@ void print_error_count(const core::SourceFile& file, std::size_t n, std::ostream
 
 }  // namespace
 
-int run_check(const ProgramOptions& options, std::ostream& out, std::ostream& err) {
-  auto loaded = load(options, err);
+int run_check(const CheckOptions& options, std::ostream& out, std::ostream& err) {
+  if (options.syntax_only) {
+    // Syntax and structure need neither machine nor interpreter.
+    if (options.program.scenario || options.program.machine_dir ||
+        !options.program.external.empty()) {
+      err << "ncsim: error: --syntax-only takes no --machine, --scenario or --ve\n";
+      return kExitUsage;
+    }
+    if (const auto problem = program_file_problem(options.program.program)) {
+      err << "ncsim: error: " << *problem << '\n';
+      return kExitUsage;
+    }
+    const core::SourceFile file = core::SourceFile::load(options.program.program);
+    if (const std::size_t errors = print(grammar::check_program(file), file, err); errors > 0) {
+      print_error_count(file, errors, err);
+      return kExitProgramErrors;
+    }
+    out << file.name() << ": ok (syntax)\n";
+    return kExitOk;
+  }
+
+  auto loaded = load(options.program, err);
   if (const int* status = std::get_if<int>(&loaded)) return *status;
   const Loaded& in = std::get<Loaded>(loaded);
 

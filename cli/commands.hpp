@@ -28,9 +28,14 @@ struct TraceOptions {
   std::uint64_t max_commands = 100000;  ///< --max-commands; 0: no limit
 };
 
+struct CheckOptions {
+  ProgramOptions program;
+  bool syntax_only = false;  ///< --syntax-only: grammar and structure, no machine, no interpreter
+};
+
 /// `ncsim check`: syntax, structure and semantics; every diagnostic to `err`, a one-line
 /// verdict to `out`.
-int run_check(const ProgramOptions& options, std::ostream& out, std::ostream& err);
+int run_check(const CheckOptions& options, std::ostream& out, std::ostream& err);
 
 /// `ncsim trace`: the interpreter's command stream to `out`, one command per line.
 int run_trace(const TraceOptions& options, std::ostream& out, std::ostream& err);

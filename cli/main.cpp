@@ -1,6 +1,7 @@
 // The `ncsim` command: the user-facing contract of design.md §5.
 //
-//   ncsim check PROG.nc [--machine DIR] [--ve NAME=value]   exit 0 ok, 1 program errors, 2 usage
+//   ncsim check PROG.nc [--machine DIR] [--ve NAME=value] [--syntax-only]
+//                                              exit 0 ok, 1 program errors, 2 usage
 //   ncsim trace PROG.nc [--machine DIR] [--ve NAME=value] [--max-commands N]
 //   ncsim time|run|golden ...                               not built yet: "not supported"
 //
@@ -48,12 +49,14 @@ int main(int argc, char** argv) {
     cmd.add_option("--ve", options.external, "V.E. variable value, NAME=value (repeatable)");
   };
 
-  ncsim::cli::ProgramOptions check;
+  ncsim::cli::CheckOptions check;
   auto* check_cmd =
       app.add_subcommand("check",
                          "Syntax, structure and semantic check of an NC program; every error with "
                          "file:line:col");
-  add_program_options(*check_cmd, check);
+  add_program_options(*check_cmd, check.program);
+  check_cmd->add_flag("--syntax-only", check.syntax_only,
+                      "Syntax and structure only: no machine, no interpreter");
 
   ncsim::cli::TraceOptions trace;
   auto* trace_cmd = app.add_subcommand(

@@ -1,5 +1,6 @@
 #include "interp/trace.hpp"
 
+#include <algorithm>
 #include <charconv>
 
 #include "core/number_text.hpp"
@@ -192,7 +193,7 @@ std::string to_trace_line(const Command& c, const machines::Machine& m) {
           }
         } else if constexpr (std::is_same_v<T, End>) {
           out += " END";
-          if (b.code != 0) out += " M" + std::to_string(b.code);
+          if (b.code != 0) out += (b.code < 10 ? " M0" : " M") + std::to_string(b.code);  // M02
         }
       },
       c.body);
@@ -222,9 +223,12 @@ core::DiagnosticList check_semantics(const core::SourceFile& file, const machine
                                      const Options& options) {
   Interpreter interp(file, machine, options);
   core::DiagnosticList out;
+  // Long straight programs are checked to their end; only loops that run on are cut.
+  const std::uint64_t max_commands =
+      std::max<std::uint64_t>(kCheckMaxCommands, kCheckCommandsPerLine * file.line_count());
   std::uint64_t count = 0;
   bool ended = false;
-  while (count < kCheckMaxCommands) {
+  while (count < max_commands) {
     auto c = interp.next();
     if (!c) {
       ended = true;
@@ -239,7 +243,7 @@ core::DiagnosticList check_semantics(const core::SourceFile& file, const machine
         const auto& lim = machine.axes[i].soft_limits;
         if (m->end[i] < lim.neg || m->end[i] > lim.pos) {
           out.add({core::Severity::error,
-                   file.name(),
+                   interp.file_name(c->file),
                    {c->line, 1},
                    "NC4601",
                    "target " + machine.axes[i].name + "=" + core::number_text(m->end[i]) +
@@ -258,7 +262,7 @@ core::DiagnosticList check_semantics(const core::SourceFile& file, const machine
              file.name(),
              {},
              "NC4902",
-             "check stopped after " + std::to_string(kCheckMaxCommands) +
+             "check stopped after " + std::to_string(max_commands) +
                  " commands (endless loop?); the rest of the program was not checked"});
   }
   return out;

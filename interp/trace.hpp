@@ -5,7 +5,7 @@
 // `<line>: <KIND> <fields>`; numbers fixed with 4 decimals, locale-independent (std::to_chars);
 // axis values as NAME=value for the machine's path axes in machine order.
 // Also check_semantics(): the semantic check behind `ncsim check` (interprets the whole
-// program; stops at the first error, or after Options-independent kCheckMaxCommands commands
+// program; stops at the first error, or after a command count set by the program's length
 // with a note, so endless loops terminate).
 
 #include <cstdint>
@@ -35,8 +35,11 @@ int write_trace(const core::SourceFile& file, const machines::Machine& machine,
 /// Commands a golden trace holds at most (endless programs are cut there).
 inline constexpr std::uint64_t kGoldenCommands = 400;
 
-/// Commands check_semantics interprets before it stops with note NC4902.
+/// Commands check_semantics interprets before it stops with note NC4902: at least
+/// kCheckMaxCommands, and kCheckCommandsPerLine per line of the program, so that a long
+/// program without loops is checked to its end and only loops that run on are cut.
 inline constexpr std::uint64_t kCheckMaxCommands = 100000;
+inline constexpr std::uint64_t kCheckCommandsPerLine = 4;
 
 /// Semantic check: interprets the program without motion and reports its errors (axes the
 /// program names, kinematic ids, conveyor rules, arcs, ...). Syntax errors are left to

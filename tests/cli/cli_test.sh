@@ -92,6 +92,12 @@ else
   failures=$((failures + 1)); echo "FAIL --max-commands cuts an endless program"
   cat "$work/endless"
 fi
+expect "--syntax-only skips the semantic check" 0 'no_feed\.nc: ok \(syntax\)' '' -- \
+  check --syntax-only "$fixtures/no_feed.nc"
+expect "--syntax-only still reports syntax errors" 1 '' '\[20218\]' -- \
+  check --syntax-only "$fixtures/two_errors.nc"
+expect "--syntax-only takes no machine" 2 '' 'takes no --machine' -- \
+  check --syntax-only --machine "$root/machines/portal_3x" "$fixtures/clean.nc"
 expect "help exits 0" 0 'check' '' -- --help
 
 echo "cli: $((checks - failures)) passed, $failures failed"
