@@ -61,7 +61,6 @@ class BlockSource {
   const core::SourceFile& file_;
   grammar::BlockParser parser_;
   bool parser_done_ = false;
-  bool in_declarations_ = false;
   std::vector<IndexEntry> index_;
   std::vector<Slot> slots_;
   Slot scratch_;  // parse_text result

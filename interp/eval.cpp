@@ -257,6 +257,10 @@ std::optional<double> Evaluator::call(const ast::Block& block, const ast::ExprNo
   auto a = eval(block, node.a);
   if (!a) return std::nullopt;
   const double x = *a;
+  if (node.function != F::atan2 && block.exprs[node.a].next != ast::kNoNode) {
+    fail(node.loc, "NC4002", "the function takes one argument");
+    return std::nullopt;
+  }
   const auto domain = [&](const char* what) -> std::optional<double> {
     fail(node.loc, "NC4101", std::string(what) + " is not defined for " + core::number_text(x));
     return std::nullopt;

@@ -270,9 +270,12 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
       case 94:
         feed_mode = FeedMode::per_minute;
         break;
-      case 150:
-      case 151:
-        return fail(w.loc, "NC4104", "G150/G151: use #SPLINE ON/OFF (ncsim supports those)");
+      case 150:  // = #SPLINE OFF (PROG-207216267): a point in this block is not a vertex
+        if (!spline_off(w.loc)) return false;
+        break;
+      case 151:  // = #SPLINE ON (PROG-207209611)
+        if (!spline_on(w.loc)) return false;
+        break;
       case 161:
         centre_absolute = true;
         break;

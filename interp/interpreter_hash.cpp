@@ -34,6 +34,34 @@ std::optional<double> velocity_factor(std::string_view unit) {
 
 }  // namespace
 
+bool Interpreter::Impl::spline_on(core::SourceLoc at) {
+  // #SPLINE ON or G151 (PROG-207209611, PROG-207256971): the last chosen type; the current
+  // position is the first vertex.
+  if (contour_modal) {
+    return fail(at, "120255", "spline together with polynomial contouring (DIAG 120255)");
+  }
+  spline = Spline{spline_type, {position}, feed.value_or(0.0), snapshot()};
+  return true;
+}
+
+bool Interpreter::Impl::spline_off(core::SourceLoc at) {
+  // #SPLINE OFF or G150: Akima needs >= 3 vertices (PROG-207216267), B-spline >= 4 control
+  // points (PROG-207263627).
+  if (!spline) return fail(at, "NC4403", "#SPLINE OFF / G150 without #SPLINE ON / G151");
+  const std::size_t need = spline->type == SplineType::akima ? 3 : 4;
+  if (spline->points.size() < need) {
+    return fail(at, "NC4401",
+                std::string(spline->type == SplineType::akima ? "Akima" : "B-spline") +
+                    " #SPLINE OFF needs at least " + std::to_string(need) + " points, has " +
+                    std::to_string(spline->points.size()));
+  }
+  if (!feed) return fail(at, "20008", "the spline needs a feed F");
+  spline->feed = *feed;
+  emit(line, std::move(*spline));
+  spline.reset();
+  return true;
+}
+
 bool Interpreter::Impl::run_hash(const ast::Block& b, const ast::HashCommand& h) {
   const Items items{b, 0, h.item_count};
   const auto value_of = [&](const ast::Item* it) -> std::optional<double> {
@@ -244,27 +272,9 @@ bool Interpreter::Impl::run_hash(const ast::Block& b, const ast::HashCommand& h)
       spline_type = SplineType::bspline;
       return true;
     case HashKind::spline_on:
-      if (contour_modal) {
-        return fail(at, "120255", "spline together with polynomial contouring (DIAG 120255)");
-      }
-      spline = Spline{spline_type, {position}, feed.value_or(0.0), snapshot()};
-      return true;
-    case HashKind::spline_off: {
-      if (!spline) return fail(at, "NC4403", "#SPLINE OFF without #SPLINE ON");
-      const std::size_t need =
-          spline->type == SplineType::akima ? 3 : 4;  // PROG-207216267/207263627
-      if (spline->points.size() < need) {
-        return fail(at, "NC4401",
-                    std::string(spline->type == SplineType::akima ? "Akima" : "B-spline") +
-                        " #SPLINE OFF needs at least " + std::to_string(need) + " points, has " +
-                        std::to_string(spline->points.size()));
-      }
-      if (!feed) return fail(at, "20008", "the spline needs a feed F");
-      spline->feed = *feed;
-      emit(line, std::move(*spline));
-      spline.reset();
-      return true;
-    }
+      return spline_on(at);
+    case HashKind::spline_off:
+      return spline_off(at);
     case HashKind::contour_mode:
     case HashKind::contour_mode_on:
     case HashKind::contour_mode_off: {
@@ -322,7 +332,35 @@ bool Interpreter::Impl::run_hash(const ast::Block& b, const ast::HashCommand& h)
         if (!md.axis)
           return fail(ax->loc, "NC4103", "axis " + std::string(ax->text) + " does not exist");
       }
+      if (const ast::Item* nr = items.find("AXNR")) {
+        // AXNR: logical axis number, kopf.achs_nr (PROG-207492747).
+        if (nr->value == ast::kNoNode) return fail(nr->loc, "NC4002", "AXNR needs a value");
+        auto v = value_of(nr);
+        if (!v) return false;
+        for (std::size_t k = 0; k < machine.axes.size() && k < kMaxAxes; ++k) {
+          if (machine.axes[k].number == static_cast<int>(std::lround(*v))) {
+            md.axis = static_cast<std::uint8_t>(k);
+          }
+        }
+        if (!md.axis) {
+          return fail(nr->loc, "NC4103", "no axis with logical number " + core::number_text(*v));
+        }
+      }
       if (const ast::Item* p = items.find("AXPARAM")) md.parameter = std::string(p->text);
+      for (std::uint32_t k = 0; k < h.item_count; ++k) {
+        // <Param_ID>=value / <Param_ID>.<idx> value (PROG-207492747): any keyword outside the
+        // command's table is a parameter id; it is passed on as "<id> <value>".
+        const ast::Item& it = b.items[k];
+        if (it.key != ast::kUnknownKeyword || it.keyword.empty()) continue;
+        if (it.value == ast::kNoNode) {
+          return fail(it.loc, "NC4002",
+                      "#MACHINE DATA: " + std::string(it.keyword) + " needs a value");
+        }
+        auto v = value_of(&it);
+        if (!v) return false;
+        if (!md.parameter.empty()) md.parameter += ' ';
+        md.parameter += std::string(it.keyword) + " " + core::number_text(*v);
+      }
       emit(line, std::move(md));
       return true;
     }

@@ -68,6 +68,8 @@ struct Interpreter::Impl {
   // --- blocks (interpreter_block.cpp) ---
   bool run_words(const ast::Block& b);
   bool run_hash(const ast::Block& b, const ast::HashCommand& h);
+  bool spline_on(core::SourceLoc at);   // #SPLINE ON / G151
+  bool spline_off(core::SourceLoc at);  // #SPLINE OFF / G150 (emits the Spline)
   bool run_declaration(const ast::Block& b, const ast::Declaration& d);
   bool run_axis_commands(const ast::Block& b);
   bool run_motion(const ast::Block& b, MotionKind kind, const AxisValues& target,

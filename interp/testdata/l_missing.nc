@@ -1,0 +1,3 @@
+%l_missing
+L no_such_file.nc
+M30
