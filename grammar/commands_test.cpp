@@ -88,6 +88,15 @@ TEST_CASE("#MACHINE DATA and #MSG keep their strings") {
   CHECK(hash(m).kind == ast::HashKind::machine_data);
   REQUIRE(m.block.items.size() == 4);
   CHECK(m.block.items[2].text == "kenngr.swe_pos 15000000");
+  // The manual's parameter ids are one name each, with or without an index (§5.10).
+  const Parsed ids("#MACHINE DATA [AX=X P-AXIS-00008=10000 P-AXIS-00209.0 5 p-chan-00262=2]");
+  REQUIRE(ids.block.items.size() == 4);
+  CHECK(ids.block.items[1].keyword == "P-AXIS-00008");
+  CHECK(ids.block.items[1].value != ast::kNoNode);
+  CHECK(ids.block.items[2].keyword == "P-AXIS-00209.0");
+  CHECK(ids.block.items[3].keyword == "p-chan-00262");
+  // An id without its number is no id: 'P' and then an expression that does not parse.
+  CHECK(Parsed("#MACHINE DATA [AX=X P-AXIS-=1]").diags.has_errors());
   const Parsed s("#MSG HMI [\"Text_1\"]");
   CHECK(hash(s).kind == ast::HashKind::msg);
   REQUIRE(s.block.items.size() == 2);

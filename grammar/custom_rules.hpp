@@ -42,6 +42,19 @@ inline std::size_t blanks(std::string_view s) {
     ++n;
   return n;
 }
+/// Length of a manual parameter id `P-<letters>-<digits>` (P-AXIS-00008, P-CHAN-00262) at the
+/// start of `s`, 0 if there is none.
+inline std::size_t parameter_id_length(std::string_view s) {
+  if (s.size() < 5 || upper(s[0]) != 'P' || s[1] != '-') return 0;
+  std::size_t n = 2;
+  while (n < s.size() && is_alpha(s[n]))
+    ++n;
+  if (n == 2 || n >= s.size() || s[n] != '-') return 0;
+  const std::size_t digits = ++n;
+  while (n < s.size() && is_digit(s[n]))
+    ++n;
+  return n > digits ? n : 0;
+}
 /// Describes what stands at `p` for "found ..." texts.
 inline std::string describe(const char* p, const char* end) {
   if (p >= end || *p == '\n' || *p == '\r' || *p == ';') return "end of block";
@@ -191,7 +204,9 @@ void parse_items(Input& in, State& st) {
         st.block->items.push_back(item);
         continue;
       }
-      std::size_t n = 0;
+      // The manuals' parameter ids (P-AXIS-00008, P-CHAN-00262) name parameters in open
+      // tables (#MACHINE DATA, isg-language.md §5.10): the dash-joined id is one name.
+      std::size_t n = table.open ? lex::parameter_id_length(r) : 0;
       while (n < r.size() && (lex::is_ident(r[n]) || r[n] == '.' || r[n] == '@'))
         ++n;
       item.keyword = r.substr(0, n);

@@ -379,10 +379,10 @@ TEST_CASE("#BCS is refused as not supported [NC4104]") {
 TEST_CASE("#MACHINE DATA with a parameter id and AXNR passes the id and its value on") {
   // The manual writes the id as P-AXIS-00008 (PROG-207492747); the grammar does not lex the
   // dashes yet (NC1001), so this test uses an id the open keyword table accepts today.
-  auto r = run("%t\n#MACHINE DATA [AXNR=1 P_AXIS_00008=10000 WAIT]\nM30\n");
+  auto r = run("%t\n#MACHINE DATA [AXNR=1 P-AXIS-00008=10000 WAIT]\nM30\n");
   REQUIRE(r.error_id.empty());
-  CHECK(r.lines.at(0) == "2: MACHINE_DATA AX=X \"P_AXIS_00008 10000\" WAIT");
-  CHECK(run("%t\n#MACHINE DATA [AXNR=99 P_AXIS_00008=1]\nM30\n").error_id == "NC4103");
+  CHECK(r.lines.at(0) == "2: MACHINE_DATA AX=X \"P-AXIS-00008 10000\" WAIT");
+  CHECK(run("%t\n#MACHINE DATA [AXNR=99 P-AXIS-00008=1]\nM30\n").error_id == "NC4103");
 }
 
 TEST_CASE("PP and @P parameters are NC4004; an undefined macro is NC4005") {
