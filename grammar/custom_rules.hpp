@@ -42,6 +42,20 @@ inline std::size_t blanks(std::string_view s) {
     ++n;
   return n;
 }
+/// End of the nested `( ... )` comment that starts at `p` (§1.5): after its closing ')', or `e`
+/// when it is not closed (an unclosed comment runs to the end of the block). Iterative, so
+/// 10,000 nested parentheses cost no stack.
+inline const char* paren_comment_end(const char* p, const char* e) {
+  std::size_t depth = 0;
+  for (; p < e; ++p) {
+    if (*p == '(') {
+      ++depth;
+    } else if (*p == ')' && --depth == 0) {
+      return p + 1;
+    }
+  }
+  return e;
+}
 /// Length of a manual parameter id `P-<letters>-<digits>` (P-AXIS-00008, P-CHAN-00262) at the
 /// start of `s`, 0 if there is none.
 inline std::size_t parameter_id_length(std::string_view s) {

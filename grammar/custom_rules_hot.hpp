@@ -76,15 +76,7 @@ NCSIM_HOT_MATCH(ws) {
     if (c == ' ' || c == '\t' || c == '\r') {
       ++p;
     } else if (c == '(') {
-      std::size_t depth = 0;
-      for (; p < e; ++p) {
-        if (*p == '(') {
-          ++depth;
-        } else if (*p == ')' && --depth == 0) {
-          ++p;
-          break;
-        }
-      }
+      p = lex::paren_comment_end(p, e);
     } else if (c == '\\') {
       const char* q = p + 1;
       while (q < e && (*q == ' ' || *q == '\t'))

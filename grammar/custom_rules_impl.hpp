@@ -11,22 +11,11 @@ namespace ncsim::grammar {
             template <typename...> class Ctl, typename Input, typename St>               \
   bool rules::rule::match(Input& in, [[maybe_unused]] St& st)
 
-// `( ... )` comments nest; an unclosed one runs to the end of the block (§1.5). Iterative, so
-// 10,000 nested parentheses cost no stack.
+// `( ... )` comments nest; an unclosed one runs to the end of the block (§1.5).
 NCSIM_CUSTOM_MATCH(paren_comment) {
   if (in.empty() || in.peek_char() != '(') return false;
-  const char* p = in.current();
-  const char* const e = in.end();
-  std::size_t depth = 0;
-  for (; p < e; ++p) {
-    if (*p == '(') {
-      ++depth;
-    } else if (*p == ')' && --depth == 0) {
-      ++p;
-      break;
-    }
-  }
-  in.bump(static_cast<std::size_t>(p - in.current()));
+  const char* const end = lex::paren_comment_end(in.current(), in.end());
+  in.bump(static_cast<std::size_t>(end - in.current()));
   return true;
 }
 
