@@ -4,12 +4,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/number_text.hpp"
+
 namespace ncsim::axes {
 namespace {
 
 [[noreturn]] void reject(const char* parameter, double value, const std::string& requirement) {
   throw std::invalid_argument(std::string("axis parameter ") + parameter + " = " +
-                              std::to_string(value) + ": " + requirement);
+                              core::number_text(value) + ": " + requirement);
 }
 
 void require_non_negative(const char* parameter, double value) {
@@ -44,7 +46,7 @@ void validate(const PositionControlParams& params, double t_cycle) {
   }
   if (params.kv * t_cycle > 1.0) {
     reject("Kv (Position control: Proportional Factor Kv) [1/s]", params.kv,
-           "Kv * cycle time must not exceed 1 (" + std::to_string(1.0 / t_cycle) +
+           "Kv * cycle time must not exceed 1 (" + core::number_text(1.0 / t_cycle) +
                " 1/s at this cycle time)");
   }
   if (!std::isfinite(params.feedforward_weight) || params.feedforward_weight < 0.0 ||

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/number_text.hpp"
+
 namespace ncsim::axes {
 
 std::string_view diagnostic_id(CouplingResult result) noexcept {
@@ -46,9 +48,9 @@ SlaveAxis::SlaveAxis(const Dynamics& dynamics, double position)
     : dynamics_(dynamics), profile_(Profile::at_rest(position)) {
   if (!valid(dynamics)) {
     throw std::invalid_argument(
-        "slave axis dynamics (V " + std::to_string(dynamics.v_max) + ", A+ " +
-        std::to_string(dynamics.acc_max) + ", A- " + std::to_string(dynamics.dec_max) + ", J " +
-        std::to_string(dynamics.jerk_max) + "): each must be finite and > 0");
+        "slave axis dynamics (V " + core::number_text(dynamics.v_max) + ", A+ " +
+        core::number_text(dynamics.acc_max) + ", A- " + core::number_text(dynamics.dec_max) +
+        ", J " + core::number_text(dynamics.jerk_max) + "): each must be finite and > 0");
   }
   setpoint_.p = position;
 }

@@ -4,13 +4,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/number_text.hpp"
+
 namespace ncsim::axes {
 namespace {
 
 void require_positive(const char* parameter, double value) {
   if (!std::isfinite(value) || value <= 0.0) {
     throw std::invalid_argument(std::string("homing parameter ") + parameter + " = " +
-                                std::to_string(value) + ": must be finite and > 0");
+                                core::number_text(value) + ": must be finite and > 0");
   }
 }
 
@@ -23,7 +25,7 @@ Homing::Homing(const HomingParams& params, double position)
   require_positive("max search distance [mm]", params.max_search_distance);
   if (!std::isfinite(params.home_position)) {
     throw std::invalid_argument("homing parameter Home Position (Calibration Value) = " +
-                                std::to_string(params.home_position) + ": must be finite");
+                                core::number_text(params.home_position) + ": must be finite");
   }
   if (!valid(params.dynamics)) {
     throw std::invalid_argument("homing dynamics (V, A+, A-, J): each must be finite and > 0");

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/number_text.hpp"
+
 namespace ncsim::axes {
 
 std::string_view diagnostic_id(ModuloStatus status) noexcept {
@@ -41,12 +43,12 @@ double modulo_position(double absolute, double factor) noexcept {
 ModuloMove plan_modulo(const ModuloParams& params, const ModuloRequest& request) {
   const double factor = params.factor;
   if (!std::isfinite(factor) || factor <= 0.0) {
-    throw std::invalid_argument("Modulo Factor = " + std::to_string(factor) +
+    throw std::invalid_argument("Modulo Factor = " + core::number_text(factor) +
                                 ": must be finite and > 0");
   }
   if (!std::isfinite(params.tolerance) || params.tolerance < 0.0) {
     throw std::invalid_argument("Tolerance Window for Modulo Start = " +
-                                std::to_string(params.tolerance) + ": must be finite and >= 0");
+                                core::number_text(params.tolerance) + ": must be finite and >= 0");
   }
   ModuloMove move;
   move.end_position = request.start;

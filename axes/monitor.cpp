@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "core/number_text.hpp"
+
 namespace ncsim::axes {
 namespace {
 
@@ -14,7 +16,7 @@ constexpr double kCycleRounding = 1e-9;
 void require_non_negative(const char* parameter, double value) {
   if (!std::isfinite(value) || value < 0.0) {
     throw std::invalid_argument(std::string("axis monitoring parameter ") + parameter + " = " +
-                                std::to_string(value) + ": must be finite and >= 0");
+                                core::number_text(value) + ": must be finite and >= 0");
   }
 }
 
@@ -127,15 +129,15 @@ double effective_settling_time(const ExactStopParams& params) {
 AxisMonitor::AxisMonitor(const AxisMonitorParams& params, double t_cycle, int axis)
     : params_(params), t_cycle_(t_cycle), axis_(axis) {
   if (!std::isfinite(t_cycle) || t_cycle <= 0.0) {
-    throw std::invalid_argument("axis monitoring: cycle time " + std::to_string(t_cycle) +
+    throw std::invalid_argument("axis monitoring: cycle time " + core::number_text(t_cycle) +
                                 " s must be finite and > 0");
   }
   const SoftLimitParams& soft = params.soft_limits;
   if (soft.min_enabled && soft.max_enabled && soft.min_position > soft.max_position) {
     throw std::invalid_argument(
         "axis monitoring parameter Minimum Position (P-AXIS-00177) = " +
-        std::to_string(soft.min_position) +
-        " lies above Maximum Position (P-AXIS-00178) = " + std::to_string(soft.max_position));
+        core::number_text(soft.min_position) +
+        " lies above Maximum Position (P-AXIS-00178) = " + core::number_text(soft.max_position));
   }
   require_non_negative("Maximum Position Lag Value [mm]", params.lag.max_lag);
   require_non_negative("Maximum Position Lag Filter Time [s]", params.lag.filter_time);
@@ -148,7 +150,7 @@ AxisMonitor::AxisMonitor(const AxisMonitorParams& params, double t_cycle, int ax
   require_non_negative("P-AXIS-00236 exact stop window [mm]", params.exact_stop.window);
   if (!std::isfinite(params.exact_stop.settling_time)) {
     throw std::invalid_argument("axis monitoring parameter P-AXIS-00532 = " +
-                                std::to_string(params.exact_stop.settling_time) +
+                                core::number_text(params.exact_stop.settling_time) +
                                 ": must be finite");
   }
   const double settling = effective_settling_time(params.exact_stop);

@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/number_text.hpp"
+
 namespace ncsim::axes {
 
 namespace {
@@ -15,7 +17,7 @@ namespace {
 void require_positive(double value, const char* name) {
   if (!(std::isfinite(value) && value > 0.0)) {
     throw std::invalid_argument(std::string("NC5003: GeneratorConfig.") + name +
-                                " must be finite and > 0, got " + std::to_string(value));
+                                " must be finite and > 0, got " + core::number_text(value));
   }
 }
 
@@ -34,11 +36,11 @@ SetpointGenerator::SetpointGenerator(const GeneratorConfig& config, double p_sta
   require_positive(config.v_axis_max, "v_axis_max");
   if (!(std::isfinite(config.increment) && config.increment >= 0.0)) {
     throw std::invalid_argument("NC5003: GeneratorConfig.increment must be finite and >= 0, got " +
-                                std::to_string(config.increment));
+                                core::number_text(config.increment));
   }
   if (!std::isfinite(p_start)) {
     throw std::invalid_argument("NC5003: start position must be finite, got " +
-                                std::to_string(p_start));
+                                core::number_text(p_start));
   }
   target_base_ = p_start;
   target_ = p_start;
