@@ -19,10 +19,12 @@
 #include <variant>
 #include <vector>
 
+#include "machines/machine.hpp"
+
 namespace ncsim::interp {
 
-/// Most axes one channel addresses (machine order).
-inline constexpr std::size_t kMaxAxes = 16;
+/// Most axes one channel addresses (machine order); the loader rejects machines with more.
+inline constexpr std::size_t kMaxAxes = machines::kMaxChannelAxes;
 using AxisValues = std::array<double, kMaxAxes>;  ///< [mm | deg] per machine axis
 using AxisMask = std::uint32_t;                   ///< bit i: machine axis i
 
@@ -63,7 +65,6 @@ struct ModalSnapshot {
   bool cs_active = false;             ///< a #CS system is active
   bool kinematics_on = false;         ///< #TRAFO ON
   bool caxtrack = false;              ///< #CAXTRACK ON
-  std::uint8_t skip_level = 0;        ///< unused by the planner; 0
 };
 
 struct Arc {

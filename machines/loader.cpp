@@ -287,6 +287,13 @@ MachineIndex read_index(const core::SourceFile& file, const std::filesystem::pat
         index.channel = IndexEntry{"", dir / w[1], loc};
       }
     } else if (w[0] == "axis" && w.size() == 3) {
+      if (index.axes.size() == kMaxChannelAxes) {
+        diagnostics.add(detail::make_diag(core::Severity::error, file.name(), loc, "NC3014",
+                                          "not supported: more than " +
+                                              std::to_string(kMaxChannelAxes) +
+                                              " axes in one channel"));
+        continue;
+      }
       index.axes.push_back(IndexEntry{w[1], dir / w[2], loc});
     } else {
       error(line, "expected 'name <text>', 'channel <file>' or 'axis <name> <file>', found '" +

@@ -150,5 +150,26 @@ TEST_CASE("the parameter table has unique keys, sane ranges and docs for every k
   }
 }
 
+TEST_CASE("a channel with more axes than ncsim supports is refused at the index line") {
+  const auto dir = std::filesystem::temp_directory_path() / "ncsim_machines_too_many_axes";
+  std::filesystem::create_directories(dir);
+  const auto base =
+      std::filesystem::path(std::getenv("NCSIM_SOURCE_DIR")) / "machines" / "testdata" / "base";
+  {
+    std::ofstream index(dir / kMachineIndexFile);
+    index << "channel " << (base / "channel.lis").string() << "\n";
+    for (std::size_t i = 0; i <= kMaxChannelAxes; ++i) {
+      index << "axis X" << i << ' ' << (base / "x.lis").string() << "\n";
+    }
+  }
+  const LoadResult r = load_machine(dir);
+  CHECK_FALSE(r.machine.has_value());
+  bool found = false;
+  for (const core::Diagnostic& d : r.diagnostics.items()) {
+    found = found || (d.id == "NC3014" && d.loc.line == kMaxChannelAxes + 2);
+  }
+  CHECK(found);
+}
+
 }  // namespace
 }  // namespace ncsim::machines

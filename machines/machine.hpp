@@ -22,6 +22,9 @@
 
 namespace ncsim::machines {
 
+/// Most axes (path axes and spindles) one channel may have in ncsim (docs/machines.md).
+inline constexpr std::size_t kMaxChannelAxes = 16;
+
 /// kenngr.achs_typ: 1 translatory, 2 rotary, 4 spindle.
 enum class AxisKind { linear, rotary, spindle };
 
