@@ -6,6 +6,7 @@
 #include <charconv>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "grammar/parser_state.hpp"
 
@@ -23,6 +24,15 @@ inline std::uint32_t parse_uint(std::string_view text) {
     v = next > 0xFFFFFFFFu ? 0xFFFFFFFFu : static_cast<std::uint32_t>(next);
   }
   return v;
+}
+/// A block number's digits as a number; nothing beyond 4294967295.
+inline std::optional<std::uint32_t> parse_block_number(std::string_view digits) {
+  std::uint64_t v = 0;
+  for (const char c : digits) {
+    v = v * 10 + static_cast<std::uint64_t>(c - '0');
+    if (v > 0xFFFFFFFFu) return std::nullopt;
+  }
+  return static_cast<std::uint32_t>(v);
 }
 inline ast::ExprNode leaf(ast::Op op, core::SourceLoc loc, std::string_view text) {
   ast::ExprNode n;

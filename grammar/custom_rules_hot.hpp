@@ -5,9 +5,12 @@
 // speed: one pass over the characters, a switch on the first character instead of trying
 // alternatives, no look-ahead that cannot succeed. Included by custom_rules_impl.hpp.
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cstdint>
+#include <optional>
+#include <string>
 
 #include "grammar/custom_rules.hpp"
 
@@ -27,7 +30,9 @@ inline constexpr int kMaxFastDigits = 19;
 /// digits form an integer m <= 2^53 and there are k <= 22 decimals, m and 10^k are exact
 /// doubles and one IEEE division is correctly rounded, so m / 10^k is bit-identical to
 /// std::from_chars (Clinger's fast path); every other literal goes through from_chars.
-inline double decimal_value(const char* begin, const char* end) {
+/// Nothing when the literal is beyond the range of a double; a literal below the smallest
+/// double rounds to 0, as from_chars would round it.
+inline std::optional<double> decimal_value(const char* begin, const char* end) {
   std::uint64_t mantissa = 0;
   int digits = 0;
   int decimals = 0;
@@ -50,7 +55,15 @@ inline double decimal_value(const char* begin, const char* end) {
     return static_cast<double>(mantissa) / kExactPow10[static_cast<std::size_t>(decimals)];
   }
   double value = 0.0;
-  std::from_chars(begin, end, value);
+  if (std::from_chars(begin, end, value).ec == std::errc::result_out_of_range) {
+    // Out of range is overflow when a significant digit stands before the point, else
+    // underflow (0.000...1), which is 0.
+    const char* p = begin;
+    while (p < end && *p == '0')
+      ++p;
+    if (p < end && *p != '.') return std::nullopt;
+    return 0.0;
+  }
   return value;
 }
 }  // namespace detail
@@ -111,8 +124,14 @@ NCSIM_HOT_MATCH(number) {
   }
   const auto length = static_cast<std::size_t>(p - b);
   if constexpr (A == pegtl::apply_mode::action) {
+    const std::optional<double> value = detail::decimal_value(b, p);
+    if (!value) {
+      st.fail_message(b, "NC1005",
+                      "number out of range: " + std::string(b, std::min<std::size_t>(length, 24)) +
+                          (length > 24 ? "..." : "") + " is beyond +-1.8e308");
+    }
     ast::ExprNode n = detail::leaf(ast::Op::number, st.loc(b), std::string_view(b, length));
-    n.value = detail::decimal_value(b, p);
+    n.value = *value;
     st.push(n);
   }
   in.bump(length);

@@ -121,6 +121,26 @@ TEST_CASE("blocks longer than 4000 characters are an error at character 4001") {
   CHECK(check("G01 X1 (" + std::string(3900, 'c') + ")").empty());
 }
 
+TEST_CASE("a number beyond the range of a double is an error, not a silent value") {
+  // 1 followed by 400 zeros: std::from_chars reports out of range and leaves 0.
+  CHECK(check("G01 X1" + std::string(400, '0') + " F100\n") ==
+        std::vector<std::string>{"1:6 NC1005"});
+  CHECK(check("G01 X[2*1" + std::string(400, '9') + "] F100\n") ==
+        std::vector<std::string>{"1:9 NC1005"});
+  // Leading zeros and tiny values are no overflow: the latter round to 0.
+  CHECK(check("G01 X" + std::string(400, '0') + "1 F100\n").empty());
+  const Parsed tiny("X0." + std::string(400, '0') + "1");
+  CHECK(tiny.diags.items().empty());
+  CHECK(tiny.value(0).value == 0.0);
+}
+
+TEST_CASE("a block number beyond 4294967295 is an error, not a saturated number") {
+  CHECK(check("N4294967295 X1\n").empty());
+  CHECK(check("N4294967296 X1\n") == std::vector<std::string>{"1:1 NC1005"});
+  CHECK(check("N" + std::string(50, '9') + ": X1\n") == std::vector<std::string>{"1:1 NC1005"});
+  CHECK(check("N000000000000000010 X1\n").empty());
+}
+
 TEST_CASE("every syntax error of a file is reported, one per block") {
   const auto diags = check("G01 X1 Q\nG01 X[1+]\nG01 X1\nM\n");
   REQUIRE(diags.size() == 3);

@@ -275,7 +275,11 @@ struct Action<rules::block_number> {
     } else {
       n.is_label = t.back() == ':';
       n.digits = t.substr(1, t.size() - 1 - (n.is_label ? 1 : 0));
-      n.number = detail::parse_uint(n.digits);
+      const std::optional<std::uint32_t> number = detail::parse_block_number(n.digits);
+      if (!number) {
+        st.fail_message(in.begin(), "NC1005", "block number out of range: at most 4294967295");
+      }
+      n.number = *number;
     }
     st.block->number = n;
   }
