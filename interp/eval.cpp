@@ -96,6 +96,16 @@ bool Evaluator::assign(const ast::Block& block, ast::NodeIndex n, double value) 
 }
 
 std::optional<double> Evaluator::eval(const ast::Block& block, ast::NodeIndex n) {
+  std::optional<double> v = eval_node(block, n);
+  if (v && !std::isfinite(*v)) {
+    fail(block.exprs[n].loc, "NC4101",
+         "the result is not a finite number (" + core::number_text(*v) + ")");
+    return std::nullopt;
+  }
+  return v;
+}
+
+std::optional<double> Evaluator::eval_node(const ast::Block& block, ast::NodeIndex n) {
   if (n == ast::kNoNode || n >= block.exprs.size()) {
     fail(block.loc, "NC4002", "missing value");
     return std::nullopt;

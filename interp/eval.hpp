@@ -35,7 +35,9 @@ class Evaluator {
  public:
   explicit Evaluator(Variables& variables) : vars_(variables) {}
 
-  /// Value of node `n` of `block`; on failure returns nullopt and error() describes it.
+  /// Value of node `n` of `block`; on failure returns nullopt and error() describes it. A
+  /// result that is not a finite number (EXP[1000], DEXP[400], inf - inf) is error NC4101 at
+  /// the operation that produced it: no infinity or NaN ever leaves the evaluator.
   std::optional<double> eval(const grammar::ast::Block& block, grammar::ast::NodeIndex n);
   /// Resolves a variable node (evaluating its indices) into `out`.
   bool resolve(const grammar::ast::Block& block, grammar::ast::NodeIndex n, VarRef& out);
@@ -52,6 +54,8 @@ class Evaluator {
 
  private:
   bool fail(core::SourceLoc loc, std::string id, std::string message);
+  /// eval() without the finiteness check; children are evaluated through eval().
+  std::optional<double> eval_node(const grammar::ast::Block& block, grammar::ast::NodeIndex n);
   std::optional<double> call(const grammar::ast::Block& block, const grammar::ast::ExprNode& n);
 
   Variables& vars_;

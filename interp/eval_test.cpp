@@ -66,6 +66,19 @@ TEST_CASE("domain errors are NC4101") {
   CHECK(value_line("ASIN[2]") == "error NC4101");
 }
 
+TEST_CASE("a result that is not a finite number is NC4101, never a motion to inf or NaN") {
+  CHECK(value_line("DEXP[400]") == "error NC4101");
+  CHECK(value_line("EXP[1000]") == "error NC4101");
+  CHECK(value_line("2 ** 5000") == "error NC4101");
+  // reported at the operation that overflowed, here the product inside the addition
+  auto r = test::run("%t\nP1 = 1 + 1000000 * DEXP[303]\nM30\n");
+  CHECK(r.error_id == "NC4101");
+  CHECK(r.error_line == 2);
+  auto in_motion = test::run("%t\nG01 X[DEXP[400]] F100\nM30\n");
+  CHECK(in_motion.error_id == "NC4101");
+  CHECK(in_motion.lines.empty());
+}
+
 TEST_CASE("P0 and a negative P index are error 20400") {
   CHECK(test::run("%t\nP0 = 1\nM30\n").error_id == "20400");
   CHECK(test::run("%t\nP5[-1] = 1\nM30\n").error_id == "20400");
