@@ -312,6 +312,12 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
     if (!v) return false;
     switch (w.kind) {
       case ast::WordKind::f:
+        // A feed or block time of 0 would never end the block (decision, docs/interp.md).
+        if (*v <= 0.0) {
+          return fail(w.loc, "NC4030",
+                      std::string(feed_mode == FeedMode::inverse_time ? "block time" : "feed") +
+                          " F" + core::number_text(*v) + " must be greater than 0");
+        }
         if (feed_mode == FeedMode::inverse_time) {
           block_time = *v;  // G93: seconds (PROG-206602507)
         } else {
@@ -319,9 +325,15 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
         }
         break;
       case ast::WordKind::e:
+        if (*v < 0.0) {  // E0 is a stop at the block end; a negative feed is none
+          return fail(w.loc, "NC4030", "end feed E" + core::number_text(*v) + " is negative");
+        }
         end_feed = *v * unit / 60.0;
         break;
       case ast::WordKind::s:
+        if (*v < 0.0) {  // the direction is M03/M04's, the speed a magnitude
+          return fail(w.loc, "NC4030", "spindle speed S" + core::number_text(*v) + " is negative");
+        }
         tech.emplace_back(TechKind::s, *v);
         break;
       case ast::WordKind::t:

@@ -510,6 +510,11 @@ bool Interpreter::Impl::run_axis_commands(const ast::Block& b) {
         if (!pos || !feed_value || !time) return false;
         if (!*pos) return fail(ac.loc, "NC4510", "INDP command without POS");
         c.target = absolute ? **pos : position[*axis] + **pos;
+        if (*feed_value && **feed_value <= 0.0) {
+          return fail(ac.loc, "NC4030", "INDP FEED must be greater than 0");
+        }
+        if (*time && **time <= 0.0)
+          return fail(ac.loc, "NC4030", "INDP TIME must be greater than 0");
         if (*feed_value) c.feed = **feed_value / 60.0;  // mm/min -> mm/s (PROG-208612235)
         c.time = *time;
         c.interruptible = items.find("INTERRUPTIBLE") != nullptr;
@@ -531,6 +536,10 @@ bool Interpreter::Impl::run_axis_commands(const ast::Block& b) {
              dir = num("DIRECTION");
         if (!v || !a || !d || !j || !dir) return false;
         if (!*v) return fail(ac.loc, "NC4511", "MC_MoveVelocity needs Velocity");
+        // PLCopen: the velocity is a magnitude, Direction gives the sign (PROG-208363915).
+        if (**v < 0.0) {
+          return fail(ac.loc, "NC4030", "MC_MoveVelocity Velocity must not be negative");
+        }
         m.velocity = **v / 1000.0;  // um/s -> mm/s (PROG-208363915)
         m.acceleration = a->value_or(0.0);
         m.deceleration = d->value_or(0.0);

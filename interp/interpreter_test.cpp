@@ -318,5 +318,26 @@ TEST_CASE("check_semantics reports soft-limit violations and stops endless loops
   CHECK(e.items().back().id == "NC4902");
 }
 
+TEST_CASE("a feed, block time or speed that cannot be is NC4030 at its word") {
+  const auto id_at = [](const std::string& block, const std::string& machine = "portal_3x") {
+    const auto r = test::run("%t\n" + block + "\nM30\n", machine);
+    return r.error_id + "@" + std::to_string(r.error_line);
+  };
+  CHECK(id_at("G01 X10 F0") == "NC4030@2");
+  CHECK(id_at("G01 X10 F-100") == "NC4030@2");
+  CHECK(id_at("G93 G01 X10 F0") == "NC4030@2");
+  CHECK(id_at("G01 X10 F100 E-5") == "NC4030@2");
+  CHECK(id_at("S-1000 M03") == "NC4030@2");
+  CHECK(id_at("X[INDP_SYN G1 G90 POS10 FEED0]") == "NC4030@2");
+  CHECK(id_at("X[INDP_SYN G1 G90 POS10 TIME0]") == "NC4030@2");
+  CHECK(id_at("S1[MC_MoveVelocity Velocity=-300 Direction=1]", "laser_portal") == "NC4030@2");
+  // what stays valid: E0 stops at the block end, S0 stands still, <= 0 ramps take the axis
+  // list's values (PROG-208363915)
+  CHECK(id_at("G01 X10 F100 E0") == "@0");
+  CHECK(id_at("S0 M05") == "@0");
+  CHECK(id_at("S1[MC_MoveVelocity Velocity=0 Acceleration=-1 Direction=1]", "laser_portal") ==
+        "@0");
+}
+
 }  // namespace
 }  // namespace ncsim::interp
