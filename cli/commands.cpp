@@ -119,16 +119,45 @@ std::variant<Loaded, int> load(const ProgramOptions& options, std::ostream& err)
                 std::move(syntax)};
 }
 
-std::size_t print(const core::DiagnosticList& list, const core::SourceFile& file,
-                  std::ostream& err) {
-  for (const core::Diagnostic& d : list.items())
-    err << core::format(d, file);
-  return list.error_count();
-}
+// Prints diagnostics with their source lines and counts them for the verdict.
+class Report {
+ public:
+  Report(const core::SourceFile& file, std::ostream& err) : file_(file), err_(err) {}
 
-void print_error_count(const core::SourceFile& file, std::size_t n, std::ostream& err) {
-  err << file.name() << ": " << n << (n == 1 ? " error" : " errors") << '\n';
-}
+  /// Prints every diagnostic of `list`; returns its error count.
+  std::size_t print(const core::DiagnosticList& list) {
+    for (const core::Diagnostic& d : list.items()) {
+      err_ << core::format(d, file_);
+      if (d.severity == core::Severity::warning) ++warnings_;
+    }
+    errors_ += list.error_count();
+    return list.error_count();
+  }
+
+  /// The one-line verdict: "prog.nc: 2 errors, 1 warning" on `err`, or "prog.nc: ok" (with
+  /// `what` and the warnings) on `out`. Returns the exit status.
+  int verdict(std::ostream& out, std::string_view what = {}) const {
+    if (errors_ > 0) {
+      err_ << file_.name() << ": " << count(errors_, "error") << warning_text() << '\n';
+      return kExitProgramErrors;
+    }
+    out << file_.name() << ": ok" << what << warning_text() << '\n';
+    return kExitOk;
+  }
+
+ private:
+  static std::string count(std::size_t n, std::string_view noun) {
+    return std::to_string(n) + ' ' + std::string(noun) + (n == 1 ? "" : "s");
+  }
+  std::string warning_text() const {
+    return warnings_ > 0 ? ", " + count(warnings_, "warning") : "";
+  }
+
+  const core::SourceFile& file_;
+  std::ostream& err_;
+  std::size_t errors_ = 0;
+  std::size_t warnings_ = 0;
+};
 
 }  // namespace
 
@@ -145,29 +174,21 @@ int run_check(const CheckOptions& options, std::ostream& out, std::ostream& err)
       return kExitUsage;
     }
     const core::SourceFile file = core::SourceFile::load(options.program.program);
-    if (const std::size_t errors = print(grammar::check_program(file), file, err); errors > 0) {
-      print_error_count(file, errors, err);
-      return kExitProgramErrors;
-    }
-    out << file.name() << ": ok (syntax)\n";
-    return kExitOk;
+    Report report(file, err);
+    report.print(grammar::check_program(file));
+    return report.verdict(out, " (syntax)");
   }
 
   auto loaded = load(options.program, err);
   if (const int* status = std::get_if<int>(&loaded)) return *status;
   const Loaded& in = std::get<Loaded>(loaded);
 
-  std::size_t errors = print(in.syntax, in.file, err);
+  Report report(in.file, err);
   // Semantics need a program that parses: the interpreter would stop at the first syntax error.
-  if (errors == 0) {
-    errors += print(interp::check_semantics(in.file, in.machine, in.interp), in.file, err);
+  if (report.print(in.syntax) == 0) {
+    report.print(interp::check_semantics(in.file, in.machine, in.interp));
   }
-  if (errors > 0) {
-    print_error_count(in.file, errors, err);
-    return kExitProgramErrors;
-  }
-  out << in.file.name() << ": ok\n";
-  return kExitOk;
+  return report.verdict(out);
 }
 
 int run_trace(const TraceOptions& options, std::ostream& out, std::ostream& err) {
@@ -175,16 +196,14 @@ int run_trace(const TraceOptions& options, std::ostream& out, std::ostream& err)
   if (const int* status = std::get_if<int>(&loaded)) return *status;
   const Loaded& in = std::get<Loaded>(loaded);
 
-  if (const std::size_t errors = print(in.syntax, in.file, err); errors > 0) {
-    print_error_count(in.file, errors, err);
-    return kExitProgramErrors;
-  }
+  Report report(in.file, err);
+  if (report.print(in.syntax) > 0) return report.verdict(out);
   interp::TraceOptions trace_options;
   trace_options.interp = in.interp;
   trace_options.max_commands = options.max_commands;
   core::DiagnosticList diagnostics;
   const int status = interp::write_trace(in.file, in.machine, trace_options, out, diagnostics);
-  print(diagnostics, in.file, err);
+  report.print(diagnostics);
   return status == 0 ? kExitOk : kExitProgramErrors;
 }
 

@@ -112,6 +112,7 @@ std::vector<std::uint32_t> StructureChecker::open_loops() const {
 
 void StructureChecker::start_level(bool local) {
   level_open_ = true;
+  in_main_ = !local;
   if (!local) main_seen_ = true;
 }
 
@@ -324,6 +325,8 @@ void StructureChecker::words(const ast::Block& b, core::DiagnosticList& diags) {
         } else if (const auto code = static_cast<std::uint32_t>(std::min(v.value, 1e9));
                    !known_m_code(code)) {
           report(diags, w.loc, "NC2009", "unknown M function M" + std::to_string(code));
+        } else if (in_main_ && (code == 2 || code == 30 || code == 17 || code == 29)) {
+          main_has_end_ = true;
         }
       }
     }
@@ -362,6 +365,7 @@ void StructureChecker::feed(const ast::Block& b, core::DiagnosticList& diags) {
     return;
   }
   if (!level_open_) start_level(false);
+  if (in_main_) main_last_ = b.loc;
   if (preprocessor(b, diags) || !enabled_) return;
 
   if (b.number && b.number->is_label) {
@@ -385,6 +389,12 @@ void StructureChecker::feed(const ast::Block& b, core::DiagnosticList& diags) {
 
 void StructureChecker::finish(core::DiagnosticList& diags) {
   finish_level(diags);
+  // isg-language.md §1.2: the main program ends with M02 or M30. Without, the file may have
+  // been cut short (a warning: the interpreter ends the program at the file end anyway).
+  if (main_seen_ && !main_has_end_ && main_last_.line > 0) {
+    diags.add({core::Severity::warning, file_.name(), main_last_, "NC2019",
+               "the main program does not end with M02 or M30 (file cut short?)"});
+  }
   for (const PreIf& p : pre_ifs_)
     report(diags, p.loc, "NC2015", "#IF is not closed by #ENDIF");
   pre_ifs_.clear();

@@ -8,7 +8,8 @@
 // program level; nothing is kept per block. Program levels are the main program and each %L
 // subroutine (isg-language.md §4.7): labels and control blocks never cross a level.
 // #IF/#ELSE/#ENDIF: the #IF branch is checked fully, the #ELSE branch for syntax only
-// (docs/language.md "#IF in check mode").
+// (docs/language.md "#IF in check mode"). A main program with no M02/M30 (nor M17/M29, for a
+// global subroutine file) is warning NC2019 at its last block.
 
 #include <map>
 #include <string>
@@ -66,6 +67,9 @@ class StructureChecker {
   const core::SourceFile& file_;
   bool level_open_ = false;
   bool main_seen_ = false;
+  bool in_main_ = false;       // the current level is the main program
+  bool main_has_end_ = false;  // a literal M02/M30 (or M17/M29) stands in the main program
+  core::SourceLoc main_last_;  // the main program's last block
   std::vector<Frame> frames_;
   std::map<std::string, LabelInfo> labels_;
   std::vector<GotoInfo> gotos_;

@@ -63,4 +63,25 @@ TEST_CASE("unknown G and M codes, unknown bracket keywords") {
   CHECK(check("#SYNC IN [CONV_VEL=1 BOGUS=2]\n") == V{"1:22 NC2010"});
 }
 
+TEST_CASE("a main program without M02/M30 is warning NC2019 at its last block") {
+  const auto ids = [](const std::string& text) {
+    const core::SourceFile file("t.nc", text);
+    std::vector<std::string> out;
+    const core::DiagnosticList diags = check_program(file);
+    for (const auto& d : diags.items()) {
+      out.push_back(std::to_string(d.loc.line) + ":" + std::to_string(d.loc.column) + " " + d.id +
+                    (d.severity == core::Severity::warning ? " warning" : ""));
+    }
+    return out;
+  };
+  CHECK(ids("%p\nG01 X1 F100\nG01 X2\n") == V{"3:1 NC2019 warning"});
+  CHECK(ids("%p\nG01 X1 F100\nM30\n").empty());
+  CHECK(ids("%p\nG01 X1 F100\n$IF P1 > 0\nM02\n$ENDIF\nX0\n").empty());
+  // an M30 in a local subroutine does not end the main program
+  CHECK(ids("%L sub\nM30\nM17\n%main\nLL sub\n") == V{"5:1 NC2019 warning"});
+  // a global subroutine file returns with M17 / M29
+  CHECK(ids("%sub\nG91 X1\nM17\n").empty());
+  CHECK(ids("").empty());
+}
+
 }  // namespace ncsim::grammar::test

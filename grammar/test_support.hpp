@@ -24,12 +24,14 @@ struct Parsed {
   const ast::ExprNode& value(std::size_t word) const { return node(block.words.at(word).value); }
 };
 
-/// "line:col id" of every diagnostic of check_program.
+/// "line:col id" of every diagnostic of check_program, except warning NC2019 (no M02/M30),
+/// which the snippets here have by design; structure_test.cpp tests NC2019 itself.
 inline std::vector<std::string> check(const std::string& text) {
   const core::SourceFile file("t.nc", text);
   std::vector<std::string> out;
   const core::DiagnosticList diags = check_program(file);
   for (const auto& d : diags.items()) {
+    if (d.id == "NC2019") continue;
     out.push_back(std::to_string(d.loc.line) + ":" + std::to_string(d.loc.column) + " " + d.id);
   }
   return out;

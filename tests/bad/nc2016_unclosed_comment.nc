@@ -1,3 +1,4 @@
-; expect: 2:1 NC2016 #COMMENT
+; expect: 3:1 NC2016 #COMMENT
+; expect: 3:1 NC2019 M02 or M30
 #COMMENT BEGIN
 G01 X1

@@ -98,6 +98,8 @@ expect "--syntax-only still reports syntax errors" 1 '' '\[20218\]' -- \
   check --syntax-only "$fixtures/two_errors.nc"
 expect "--syntax-only takes no machine" 2 '' 'takes no --machine' -- \
   check --syntax-only --machine "$root/machines/portal_3x" "$fixtures/clean.nc"
+expect "warnings keep status 0 and are counted in the verdict" 0 'no_end\.nc: ok, 1 warning' \
+  'no_end\.nc:3:1: warning: .*\[NC2019\]' -- check "$fixtures/no_end.nc"
 expect "help exits 0" 0 'check' '' -- --help
 
 echo "cli: $((checks - failures)) passed, $failures failed"
