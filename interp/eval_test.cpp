@@ -94,6 +94,21 @@ TEST_CASE("P arrays are created on write") {
   CHECK(r.lines.at(0) == "3: G00 X=7.0000 Y=0.0000 Z=0.0000");
 }
 
+TEST_CASE("implicit P arrays hold at most 1,000,000 elements in all (20400 beyond)") {
+  // ten arrays of 100,001 elements would be 1,000,010: the tenth write is refused
+  std::string text = "%t\n";
+  for (int n = 1; n <= 10; ++n)
+    text += "P" + std::to_string(n) + "[100000] = 1\n";
+  const auto r = test::run(text + "M30\n");
+  CHECK(r.error_id == "20400");
+  CHECK(r.error_line == 11);
+  // rewriting existing elements costs nothing more
+  std::string again = "%t\n";
+  for (int k = 0; k < 30; ++k)
+    again += "P1[99999] = " + std::to_string(k) + "\n";
+  CHECK(test::run(again + "M30\n").error_id.empty());
+}
+
 TEST_CASE("V.E. values come from the caller and a read flushes the channel") {
   Options o;
   o.external["WIDTH"] = 12.5;

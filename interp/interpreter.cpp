@@ -31,6 +31,15 @@ bool is_loop(FrameKind k) {
   return k != FrameKind::switch_;
 }
 
+/// A subroutine file name that stays in or below the program's folder: relative, no `..`
+/// (Options::confine_subroutine_files).
+bool is_confined_name(const std::string& name) {
+  const std::filesystem::path p(name);
+  if (p.has_root_path()) return false;
+  return std::none_of(p.begin(), p.end(),
+                      [](const std::filesystem::path& part) { return part == ".."; });
+}
+
 const ast::Control* control_of(const ast::Block* b) {
   return b == nullptr ? nullptr : std::get_if<ast::Control>(&b->body);
 }
@@ -275,6 +284,11 @@ bool Interpreter::Impl::call(const ast::Block& b, const ast::Call& c) {
     std::uint16_t index = 0;
     if (it == file_by_name.end()) {
       const std::filesystem::path dir = std::filesystem::path(files[0]->file->name()).parent_path();
+      if (options.confine_subroutine_files && !is_confined_name(name)) {
+        return fail(c.loc, "NC4301",
+                    "global subroutine file " + name +
+                        " is outside the program's folder (absolute path or '..')");
+      }
       std::error_code ec;
       if (!std::filesystem::is_regular_file(dir / name, ec)) {
         return fail(c.loc, "NC4301",

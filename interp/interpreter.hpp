@@ -42,6 +42,10 @@ struct Options {
   int macro_recursion_limit = 16;  ///< string macro expansion passes (NC4006)
   double centre_diff_max = 0.01;   ///< P-CHAN-00059 default [mm] (ncsim decision)
   double centre_factor = 0.05;     ///< P-CHAN-00060 default 50 x 0.1 % [-]
+  /// true: `L file` opens only relative names without a `..` component, i.e. files in or below
+  /// the main program's folder; anything else is NC4301 (the fuzz target uses it so that fuzzed
+  /// programs cannot reach files elsewhere). false (default): any path, as the manual allows.
+  bool confine_subroutine_files = false;
 };
 
 class Interpreter {

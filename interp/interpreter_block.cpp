@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/number_text.hpp"
+#include "grammar/block_parser.hpp"
 #include "grammar/keywords.hpp"
 #include "interp/interpreter_impl.hpp"
 
@@ -91,6 +92,14 @@ const ast::Block* Interpreter::Impl::expand_macros(const ast::Block& b) {
         out.append(text, k, std::min(e + 1, text.size()) - k);
       }
       k = e;
+      // A block holds at most 4000 characters (PROG-205952267), also after replacement: stop
+      // before a macro that repeats itself grows the text geometrically.
+      if (out.size() > grammar::kMaxBlockLength) {
+        fail(b.loc, "NC4007",
+             "the block is longer than " + std::to_string(grammar::kMaxBlockLength) +
+                 " characters after macro replacement");
+        return nullptr;
+      }
     }
     text = std::move(out);
     if (!changed) break;
@@ -117,6 +126,15 @@ bool Interpreter::Impl::run_declaration(const ast::Block& b, const ast::Declarat
   std::size_t count = 1;
   for (std::uint32_t k = 0; k < ref.index_count; ++k) {
     if (ref.index[k] < 1.0) return fail(d.loc, "NC4015", "array dimension must be >= 1");
+    // Checked before the conversion and the allocation: a dimension beyond
+    // the element limit would not fit the integer, a product beyond it asked for gigabytes.
+    const double limit = static_cast<double>(kMaxArrayElements / count);
+    if (!(ref.index[k] < limit + 1.0)) {
+      return fail(d.loc, "NC4015",
+                  "array larger than " + std::to_string(kMaxArrayElements) +
+                      " elements (dimension " + std::to_string(k + 1) + " is " +
+                      core::number_text(ref.index[k]) + ")");
+    }
     v.dims.push_back(static_cast<std::uint32_t>(ref.index[k]));
     count *= v.dims.back();
   }
@@ -310,6 +328,10 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
     }
     auto v = eval(b, w.value);
     if (!v) return false;
+    if (!std::isfinite(*v * unit)) {  // G70: a finite inch value beyond the mm range
+      return fail(w.loc, "NC4101",
+                  "value " + core::number_text(*v) + " is out of range in millimetres (G70)");
+    }
     switch (w.kind) {
       case ast::WordKind::f:
         // A feed or block time of 0 would never end the block (decision, docs/interp.md).
@@ -424,6 +446,10 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
       const bool rotary = machine.axes[axis].kind == machines::AxisKind::rotary;
       const double v = value * (rotary ? 1.0 : unit);
       target[axis] = incremental ? position[axis] + v : v;
+      if (!std::isfinite(target[axis])) {  // G91: the sum left the range of a double
+        return fail(b.loc, "NC4101",
+                    "target of axis " + machine.axes[axis].name + " is not a finite number");
+      }
       programmed |= AxisMask{1} << axis;
     }
     const bool arc = motion == MotionKind::arc_cw || motion == MotionKind::arc_ccw;
@@ -509,6 +535,9 @@ bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const A
     const double e1 = target[a1], e2 = target[a2];
     const double d1 = e1 - s1, d2 = e2 - s2;
     const double chord = std::hypot(d1, d2);
+    if (!std::isfinite(chord)) {
+      return fail(b.loc, "NC4101", "circle end point too far from its start for a double");
+    }
     double c1 = 0.0, c2 = 0.0;
     const bool full = chord < 1e-9;
     if (radius) {
@@ -549,7 +578,11 @@ bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const A
         c2 = m2 + t * n2;
       }
     }
-    m.arc = Arc{c1, c2, a1, a2, std::hypot(s1 - c1, s2 - c2), full};
+    const double r = std::hypot(s1 - c1, s2 - c2);
+    if (!std::isfinite(c1) || !std::isfinite(c2) || !std::isfinite(r)) {
+      return fail(b.loc, "NC4101", "circle centre or radius is not a finite number");
+    }
+    m.arc = Arc{c1, c2, a1, a2, r, full};
   }
   position = target;
   blocks_without_motion = 0;

@@ -195,7 +195,18 @@ bool Variables::write(const VarRef& ref, double value, VarError& error) {
     }
     auto& array = p_arrays_[ref.number];
     const auto k = static_cast<std::size_t>(i);
-    if (array.size() <= k) array.resize(k + 1, 0.0);
+    if (array.size() <= k) {
+      // All implicit P arrays together stay within kMaxArrayElements, so memory is bounded
+      // however many P<n>[i] a program writes (decision, docs/interp.md "Variables").
+      const std::size_t growth = k + 1 - array.size();
+      if (p_array_elements_ + growth > kMaxArrayElements) {
+        error = {"20400", "P parameter index " + describe(ref) + ": P arrays hold at most " +
+                              std::to_string(kMaxArrayElements) + " elements in all"};
+        return false;
+      }
+      p_array_elements_ += growth;
+      array.resize(k + 1, 0.0);
+    }
     array[k] = value;
     return true;
   }

@@ -27,6 +27,9 @@ namespace ncsim::interp {
 inline constexpr std::uint32_t kMaxPNumber = 100000;
 /// Highest index of an implicitly created P array (ncsim decision).
 inline constexpr std::uint32_t kMaxPArrayIndex = 100000;
+/// Most elements of one declared array, all dimensions together (ncsim decision, NC4015), and
+/// of all implicitly created P arrays together (20400).
+inline constexpr std::size_t kMaxArrayElements = 1'000'000;
 
 struct Variable {
   grammar::ast::VarType type = grammar::ast::VarType::real64;
@@ -96,6 +99,7 @@ class Variables {
   std::vector<double> p_values_;  // index = P number
   std::vector<std::uint8_t> p_set_;
   std::unordered_map<std::uint32_t, std::vector<double>> p_arrays_;
+  std::size_t p_array_elements_ = 0;  // elements of all p_arrays_ together
   Map v_p_, v_e_, v_g_, v_cyc_;
   PersistentVariables own_persistent_;
   PersistentVariables* persistent_;

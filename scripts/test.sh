@@ -3,7 +3,8 @@
 #   1. format check (clang-format),
 #   2. g++ build with warnings as errors, all tests,
 #   3. g++ build with AddressSanitizer + UndefinedBehaviorSanitizer, all tests,
-#   4. clang libFuzzer build, the grammar fuzzer for $NCSIM_FUZZ_SECONDS (default 60) seconds.
+#   4. clang libFuzzer build, the grammar and the interpreter fuzzer for $NCSIM_FUZZ_SECONDS
+#      (default 60) seconds each.
 # Ends with one line "tests: N passed, M failed" over both test runs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -46,7 +47,7 @@ bash scripts/build.sh build/ci-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DNCSIM_SA
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1 \
   run_ctest build/ci-asan || overall=1
 
-echo "== grammar fuzzer, ${NCSIM_FUZZ_SECONDS:-60} s"
+echo "== grammar and interpreter fuzzers, ${NCSIM_FUZZ_SECONDS:-60} s each"
 if bash tests/fuzz/run.sh "${NCSIM_FUZZ_SECONDS:-60}"; then
   passed=$((passed + 1))
 else

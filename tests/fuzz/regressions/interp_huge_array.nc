@@ -1,0 +1,6 @@
+%v
+#VAR
+  V.P.A[100000][100000] : REAL
+#ENDVAR
+G00 X1
+M30
