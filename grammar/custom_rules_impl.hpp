@@ -31,6 +31,24 @@ NCSIM_CUSTOM_MATCH(function_name) {
   return true;
 }
 
+/// The single-letter axis addresses X Y Z A B C U V W (isg-language.md §2.1).
+inline bool is_axis_letter(char c) {
+  switch (lex::upper(c)) {
+    case 'X':
+    case 'Y':
+    case 'Z':
+    case 'A':
+    case 'B':
+    case 'C':
+    case 'U':
+    case 'V':
+    case 'W':
+      return true;
+    default:
+      return false;
+  }
+}
+
 // One-letter addresses (§2.1). `V.` followed by a letter starts a variable, not an axis word.
 NCSIM_CUSTOM_MATCH(address_head) {
   if (in.empty()) return false;
@@ -71,22 +89,14 @@ NCSIM_CUSTOM_MATCH(address_head) {
     case 'R':
       kind = K::r;
       break;
-    case 'X':
-    case 'Y':
-    case 'Z':
-    case 'A':
-    case 'B':
-    case 'C':
-    case 'U':
-    case 'W':
-      kind = K::axis;
-      break;
-    case 'V':
-      if (in.size() > 2 && in.peek_char(1) == '.' && lex::is_alpha(in.peek_char(2))) return false;
-      kind = K::axis;
-      break;
     default:
-      return false;
+      if (!is_axis_letter(c)) return false;
+      // `V.` followed by a letter starts a variable (V.P.X), not a V axis word
+      if (c == 'V' && in.size() > 2 && in.peek_char(1) == '.' && lex::is_alpha(in.peek_char(2))) {
+        return false;
+      }
+      kind = K::axis;
+      break;
   }
   if constexpr (A == pegtl::apply_mode::action) {
     st.word_kind = kind;
@@ -95,23 +105,6 @@ NCSIM_CUSTOM_MATCH(address_head) {
   }
   in.bump(1);
   return true;
-}
-
-inline bool is_axis_letter(char c) {
-  switch (lex::upper(c)) {
-    case 'X':
-    case 'Y':
-    case 'Z':
-    case 'A':
-    case 'B':
-    case 'C':
-    case 'U':
-    case 'V':
-    case 'W':
-      return true;
-    default:
-      return false;
-  }
 }
 
 // Multi-letter axis names are written with '=' (§1.9): AB=90.
