@@ -12,21 +12,7 @@ namespace {
 /// Runs `text` as a program file placed in interp/testdata/ (next to sub_move.nc).
 test::Run run_in_testdata(const std::string& text, Options options) {
   const std::string name = (test::source_root() / "interp/testdata/virtual.nc").string();
-  core::SourceFile file(name, text);
-  const machines::Machine& m = test::machine();
-  Interpreter interp(file, m, options);
-  test::Run r;
-  while (r.lines.size() < 100) {
-    auto c = interp.next();
-    if (!c) break;
-    r.lines.push_back(to_trace_line(*c, m));
-  }
-  if (const auto* e = interp.error()) {
-    r.error_id = e->id;
-    r.error_line = e->loc.line;
-    r.error_message = e->message;
-  }
-  return r;
+  return test::run_file(core::SourceFile(name, text), "portal_3x", std::move(options), 100);
 }
 
 TEST_CASE("with confined subroutine files, L opens a plain name next to the program") {

@@ -35,9 +35,10 @@ struct Run {
   std::string error_message;
 };
 
-inline Run run(const std::string& text, const std::string& machine_name = "portal_3x",
-               Options options = {}, std::size_t max_commands = 10000) {
-  core::SourceFile file("test.nc", text);
+/// Interprets `file` on a bundled machine: trace lines of up to `max_commands` commands, and
+/// the error that ended the stream.
+inline Run run_file(const core::SourceFile& file, const std::string& machine_name = "portal_3x",
+                    Options options = {}, std::size_t max_commands = 10000) {
   const machines::Machine& m = machine(machine_name);
   Interpreter interp(file, m, options);
   Run r;
@@ -52,6 +53,13 @@ inline Run run(const std::string& text, const std::string& machine_name = "porta
     r.error_message = e->message;
   }
   return r;
+}
+
+/// run_file() of a program given as text (file name "test.nc").
+inline Run run(const std::string& text, const std::string& machine_name = "portal_3x",
+               Options options = {}, std::size_t max_commands = 10000) {
+  return run_file(core::SourceFile("test.nc", text), machine_name, std::move(options),
+                  max_commands);
 }
 
 /// The value of P1 after `expression` (the program writes it to X of a G00).
