@@ -253,6 +253,16 @@ TEST_CASE("G09 stops at its block only; G900 and G901 are modal until G08") {
   CHECK(r.lines.at(4) == "6: G00 X=5.0000 Y=0.0000 Z=0.0000");
 }
 
+TEST_CASE("G09 in a block leaves a modal G900/G901 in force for the next blocks") {
+  auto r = run("%t\nG900 G00 X1\nG09 X2\nX3\nG901 X4\nG09 X5\nX6\nM30\n");
+  CHECK(r.lines.at(0) == "2: G00 X=1.0000 Y=0.0000 Z=0.0000 G900");
+  CHECK(r.lines.at(1) == "3: G00 X=2.0000 Y=0.0000 Z=0.0000 G09");
+  CHECK(r.lines.at(2) == "4: G00 X=3.0000 Y=0.0000 Z=0.0000 G900");
+  CHECK(r.lines.at(3) == "5: G00 X=4.0000 Y=0.0000 Z=0.0000 G901");
+  CHECK(r.lines.at(4) == "6: G00 X=5.0000 Y=0.0000 Z=0.0000 G09");
+  CHECK(r.lines.at(5) == "7: G00 X=6.0000 Y=0.0000 Z=0.0000 G901");
+}
+
 TEST_CASE("G60 is exact stop in its block only; G360 is modal until G359") {
   auto r = run("%t\nG60 G00 X1\nX2\nG360 X3\nX4\nG359 X5\nM30\n");
   CHECK(r.lines.at(0) == "2: G00 X=1.0000 Y=0.0000 Z=0.0000 G60");

@@ -37,21 +37,9 @@ std::optional<std::uint8_t> Interpreter::Impl::axis_index(std::string_view name)
 }
 
 ModalSnapshot Interpreter::Impl::snapshot() const {
-  ModalSnapshot m;
-  m.plane = plane;
-  m.inch = inch;
-  m.incremental = incremental;
-  m.feed_mode = feed_mode;
-  m.transition = transition;
-  m.exact_stop = exact_stop_modal;
-  m.contouring = contour_modal;
-  m.contour = contour;
-  m.slope = synchronised ? SlopeType::trapez : slope;  // seed 004 §2.1.7: jerk-limited
-  m.transvelmin = transvelmin;
-  m.synchronised = synchronised;
+  ModalSnapshot m = modal;
+  if (m.synchronised) m.slope = SlopeType::trapez;  // seed 004 §2.1.7: jerk-limited slope
   m.cs_active = cs.active_count() > 0;
-  m.kinematics_on = kinematics_on;
-  m.caxtrack = caxtrack;
   return m;
 }
 
@@ -226,25 +214,25 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
         g04 = true;
         break;
       case 8:
-        transition = Transition::accelerate_at_start;
+        modal.transition = Transition::accelerate_at_start;
         break;
       case 9:
         g09 = true;
         break;
       case 900:
-        transition = Transition::decel_at_end;
+        modal.transition = Transition::decel_at_end;
         break;
       case 901:
-        transition = Transition::decel_after_end;
+        modal.transition = Transition::decel_after_end;
         break;
       case 17:
-        plane = Plane::xy;
+        modal.plane = Plane::xy;
         break;
       case 18:
-        plane = Plane::zx;
+        modal.plane = Plane::zx;
         break;
       case 19:
-        plane = Plane::yz;
+        modal.plane = Plane::yz;
         break;
       case 60:
         g60 = true;
@@ -253,40 +241,40 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
         g61 = true;
         break;
       case 359:
-        exact_stop_modal = false;
+        modal.exact_stop = false;
         break;
       case 360:
-        exact_stop_modal = true;
+        modal.exact_stop = true;
         break;
       case 260:
-        contour_modal = false;
+        modal.contouring = false;
         break;
       case 261:
-        contour_modal = true;
+        modal.contouring = true;
         break;
       case 70:
-        inch = true;
+        modal.inch = true;
         break;
       case 71:
-        inch = false;
+        modal.inch = false;
         break;
       case 74:
         g74 = true;
         break;
       case 90:
-        incremental = false;
+        modal.incremental = false;
         break;
       case 91:
-        incremental = true;
+        modal.incremental = true;
         break;
       case 92:
         g92 = true;
         break;
       case 93:
-        feed_mode = FeedMode::inverse_time;
+        modal.feed_mode = FeedMode::inverse_time;
         break;
       case 94:
-        feed_mode = FeedMode::per_minute;
+        modal.feed_mode = FeedMode::per_minute;
         break;
       case 150:  // = #SPLINE OFF (PROG-207216267): a point in this block is not a vertex
         if (!spline_off(w.loc)) return false;
@@ -312,7 +300,7 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
     }
   }
   // 3. addresses.
-  const double unit = inch ? kInch : 1.0;
+  const double unit = modal.inch ? kInch : 1.0;
   AxisValues target = position;
   AxisMask programmed = 0;
   std::array<std::optional<double>, 3> ijk;
@@ -336,11 +324,12 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
       case ast::WordKind::f:
         // A feed or block time of 0 would never end the block (decision, docs/interp.md).
         if (*v <= 0.0) {
-          return fail(w.loc, "NC4030",
-                      std::string(feed_mode == FeedMode::inverse_time ? "block time" : "feed") +
-                          " F" + core::number_text(*v) + " must be greater than 0");
+          return fail(
+              w.loc, "NC4030",
+              std::string(modal.feed_mode == FeedMode::inverse_time ? "block time" : "feed") +
+                  " F" + core::number_text(*v) + " must be greater than 0");
         }
-        if (feed_mode == FeedMode::inverse_time) {
+        if (modal.feed_mode == FeedMode::inverse_time) {
           block_time = *v;  // G93: seconds (PROG-206602507)
         } else {
           feed = *v * unit / 60.0;  // mm/min -> mm/s (PROG-206811147)
@@ -407,7 +396,6 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
   if (evaluator.take_external_read()) emit(line, Flush{FlushKind::ve_read});  // §3.5
   for (const auto& [kind, value] : tech)
     emit(line, Tech{kind, value});
-  if (g09) transition = Transition::stop_at_end;
 
   if (g04) {
     // G04: time in seconds after the first main axis address or alone (PROG-206132747).
@@ -445,7 +433,7 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
     for (const auto& [axis, value] : axis_words) {
       const bool rotary = machine.axes[axis].kind == machines::AxisKind::rotary;
       const double v = value * (rotary ? 1.0 : unit);
-      target[axis] = incremental ? position[axis] + v : v;
+      target[axis] = modal.incremental ? position[axis] + v : v;
       if (!std::isfinite(target[axis])) {  // G91: the sum left the range of a double
         return fail(b.loc, "NC4101",
                     "target of axis " + machine.axes[axis].name + " is not a finite number");
@@ -454,24 +442,12 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
     }
     const bool arc = motion == MotionKind::arc_cw || motion == MotionKind::arc_ccw;
     if (programmed != 0 || (arc && motion_word && (ijk[0] || ijk[1] || ijk[2]))) {
-      const bool saved_stop = exact_stop_modal, saved_contour = contour_modal;
-      exact_stop_modal = exact_stop_modal || g60;
-      contour_modal = contour_modal || g61;
-      const bool ok = run_motion(b, motion, target, programmed, ijk, radius);
-      exact_stop_modal = saved_stop;
-      contour_modal = saved_contour;
-      if (!ok) return false;
-      if (block_time && !pending.empty()) {
-        if (auto* m = std::get_if<Motion>(&pending.back().body)) m->block_time = block_time;
-      }
-      if (end_feed && !pending.empty()) {
-        if (auto* m = std::get_if<Motion>(&pending.back().body)) m->end_feed = end_feed;
-      }
+      const BlockMotionWords words{g09, g60, g61, block_time, end_feed};
+      if (!run_motion(b, motion, target, programmed, ijk, radius, words)) return false;
     } else if (g60) {
       return fail(b.loc, "20003", "G60 without a motion in the block");
     }
   }
-  if (g09) transition = Transition::accelerate_at_start;
   if (!run_axis_commands(b)) return false;
   if (program_m) {
     switch (*program_m) {
@@ -499,9 +475,9 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
 bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const AxisValues& target,
                                    AxisMask programmed,
                                    const std::array<std::optional<double>, 3>& ijk,
-                                   std::optional<double> radius) {
+                                   std::optional<double> radius, const BlockMotionWords& words) {
   const bool arc = kind == MotionKind::arc_cw || kind == MotionKind::arc_ccw;
-  if (synchronised && !motion_since_sync) {
+  if (modal.synchronised && !motion_since_sync) {
     // seed 004 §2.1.1: the first motion after #SYNC IN must be G00 or G01.
     if (arc) return fail(b.loc, "NC4502", "the first motion after #SYNC IN must be G00 or G01");
     motion_since_sync = true;
@@ -513,7 +489,7 @@ bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const A
     return true;
   }
   if (spline) return fail(b.loc, "NC4402", "G02/G03 inside #SPLINE ON ... OFF is not supported");
-  if (kind != MotionKind::rapid && feed_mode == FeedMode::per_minute && !feed) {
+  if (kind != MotionKind::rapid && modal.feed_mode == FeedMode::per_minute && !feed) {
     return fail(b.loc, "20008", "the first G01/G02/G03 needs a feed F (DIAG-20008)");
   }
   Motion m;
@@ -523,10 +499,15 @@ bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const A
   m.programmed = programmed;
   m.feed = kind == MotionKind::rapid ? 0.0 : feed.value_or(0.0);
   m.modal = snapshot();
+  if (words.stop_at_end) m.modal.transition = Transition::stop_at_end;
+  m.modal.exact_stop = m.modal.exact_stop || words.exact_stop;
+  m.modal.contouring = m.modal.contouring || words.contour;
+  m.block_time = words.block_time;
+  m.end_feed = words.end_feed;
   if (arc) {
     // Plane axes (PROG-206253067): G17 X/Y, G18 Z/X, G19 Y/Z; I/J/K belong to X/Y/Z.
-    const int p1 = plane == Plane::xy ? 0 : (plane == Plane::zx ? 2 : 1);
-    const int p2 = plane == Plane::xy ? 1 : (plane == Plane::zx ? 0 : 2);
+    const int p1 = modal.plane == Plane::xy ? 0 : (modal.plane == Plane::zx ? 2 : 1);
+    const int p2 = modal.plane == Plane::xy ? 1 : (modal.plane == Plane::zx ? 0 : 2);
     if (!xyz[p1] || !xyz[p2]) {
       return fail(b.loc, "NC4103", "the machine lacks an axis of the circle plane");
     }

@@ -37,7 +37,7 @@ std::optional<double> velocity_factor(std::string_view unit) {
 bool Interpreter::Impl::spline_on(core::SourceLoc at) {
   // #SPLINE ON or G151 (PROG-207209611, PROG-207256971): the last chosen type; the current
   // position is the first vertex.
-  if (contour_modal) {
+  if (modal.contouring) {
     return fail(at, "120255", "spline together with polynomial contouring (DIAG 120255)");
   }
   spline = Spline{spline_type, {position}, feed.value_or(0.0), snapshot()};
@@ -71,7 +71,7 @@ bool Interpreter::Impl::run_hash(const ast::Block& b, const ast::HashCommand& h)
   const core::SourceLoc at = h.loc;
   switch (h.kind) {
     case HashKind::sync_in: {
-      if (synchronised) return fail(at, "22265", "#SYNC IN while already synchronised");
+      if (modal.synchronised) return fail(at, "22265", "#SYNC IN while already synchronised");
       if (cs.active_count() > 0) {
         return fail(at, "22262", "#SYNC IN with an active #CS coordinate system");
       }
@@ -119,13 +119,13 @@ bool Interpreter::Impl::run_hash(const ast::Block& b, const ast::HashCommand& h)
       emit(line, WaitProbe{*conveyor});
       emit(line, s);
       blocks_without_motion = 0;
-      synchronised = true;
+      modal.synchronised = true;
       motion_since_sync = false;
       return true;
     }
     case HashKind::sync_out:
     case HashKind::sync_off: {
-      if (!synchronised) return fail(at, "NC4503", "#SYNC OUT without #SYNC IN");
+      if (!modal.synchronised) return fail(at, "NC4503", "#SYNC OUT without #SYNC IN");
       if (cs.active_count() > 0) {
         return fail(at, "22263", "#SYNC OUT with an active #CS coordinate system");
       }
@@ -137,7 +137,7 @@ bool Interpreter::Impl::run_hash(const ast::Block& b, const ast::HashCommand& h)
       }
       s.feed_cont_auto = items.find("FEED_CONT_AUTO") != nullptr;
       emit(line, s);
-      synchronised = false;
+      modal.synchronised = false;
       motion_since_sync = true;
       return true;
     }
@@ -145,7 +145,7 @@ bool Interpreter::Impl::run_hash(const ast::Block& b, const ast::HashCommand& h)
     case HashKind::cs_on:
     case HashKind::cs_off:
     case HashKind::cs_off_all: {
-      if (synchronised && !motion_since_sync) {
+      if (modal.synchronised && !motion_since_sync) {
         return fail(at, "NC4505", "#CS only after the synchronisation movement (seed 004 §2.1.1)");
       }
       std::vector<const ast::Item*> g0, g1;
@@ -206,7 +206,7 @@ bool Interpreter::Impl::run_hash(const ast::Block& b, const ast::HashCommand& h)
     case HashKind::trafo_on:
     case HashKind::trafo_off:
     case HashKind::trafo_steps: {
-      if (synchronised) {
+      if (modal.synchronised) {
         return fail(at, "NC4504",
                     "kinematic selection inside #SYNC IN/OUT is not allowed (seed 004 §2.1.1)");
       }
@@ -223,20 +223,20 @@ bool Interpreter::Impl::run_hash(const ast::Block& b, const ast::HashCommand& h)
                       "kinematic id " + std::to_string(id) + " is not configured on machine " +
                           machine.name);
         }
-        if (kinematics_on) return fail(at, "NC4508", "#KIN ID while #TRAFO ON is active");
+        if (modal.kinematics_on) return fail(at, "NC4508", "#KIN ID while #TRAFO ON is active");
         kin_id = id;
       } else if (h.kind == HashKind::trafo_on) {
         if (!kin_id && machine.channel.trafos.empty()) {
           return fail(at, "292005", "#TRAFO ON without a configured kinematic");
         }
         if (!kin_id) kin_id = machine.channel.trafos.front().id;
-        kinematics_on = true;
+        modal.kinematics_on = true;
       } else if (h.kind == HashKind::trafo_off) {
-        kinematics_on = false;
+        modal.kinematics_on = false;
       } else {
         return fail(at, "NC4104", "#TRAFO [...] multi-step form is not supported by ncsim");
       }
-      emit(line, Kinematics{kin_id, kinematics_on});
+      emit(line, Kinematics{kin_id, modal.kinematics_on});
       return true;
     }
     case HashKind::caxtrack_on:
@@ -261,7 +261,7 @@ bool Interpreter::Impl::run_hash(const ast::Block& b, const ast::HashCommand& h)
           std::fabs(c.angpos) > 360.0) {
         return fail(at, "21135", "#CAXTRACK: ANGLIMIT, OFFSET or ANGPOS out of range");
       }
-      caxtrack = c.on;
+      modal.caxtrack = c.on;
       emit(line, c);
       return true;
     }
@@ -279,7 +279,7 @@ bool Interpreter::Impl::run_hash(const ast::Block& b, const ast::HashCommand& h)
     case HashKind::contour_mode_on:
     case HashKind::contour_mode_off: {
       if (h.kind == HashKind::contour_mode_off) {
-        contour_modal = false;
+        modal.contouring = false;
         return true;
       }
       static constexpr std::pair<const char*, ContourKind> kKinds[] = {
@@ -290,33 +290,33 @@ bool Interpreter::Impl::run_hash(const ast::Block& b, const ast::HashCommand& h)
           {"POS", ContourKind::pos},
           {"PTP", ContourKind::ptp}};
       for (const auto& [name, kind] : kKinds) {
-        if (items.find(name) != nullptr) contour.kind = kind;
+        if (items.find(name) != nullptr) modal.contour.kind = kind;
       }
-      for (auto [key, slot] : {std::pair<const char*, double*>{"PATH_DEV", &contour.path_dev},
-                               {"PRE_DIST", &contour.pre_dist},
-                               {"POST_DIST", &contour.post_dist}}) {
+      for (auto [key, slot] : {std::pair<const char*, double*>{"PATH_DEV", &modal.contour.path_dev},
+                               {"PRE_DIST", &modal.contour.pre_dist},
+                               {"POST_DIST", &modal.contour.post_dist}}) {
         if (const ast::Item* it = items.find(key)) {
           auto v = value_of(it);
           if (!v) return false;
           *slot = *v;
         }
       }
-      if (h.kind == HashKind::contour_mode_on) contour_modal = true;
+      if (h.kind == HashKind::contour_mode_on) modal.contouring = true;
       return true;
     }
     case HashKind::slope:
     case HashKind::slope_default: {
-      if (synchronised) {
+      if (modal.synchronised) {
         return fail(at, "NC4506", "#SLOPE is not allowed while synchronised (seed 004 §2.1.7)");
       }
-      slope = SlopeType::step;
+      modal.slope = SlopeType::step;
       if (const ast::Item* t = items.find("TYPE")) {
         if (grammar::iequals(t->text, "TRAPEZ"))
-          slope = SlopeType::trapez;
+          modal.slope = SlopeType::trapez;
         else if (grammar::iequals(t->text, "SIN2"))
-          slope = SlopeType::sin2;
+          modal.slope = SlopeType::sin2;
         else if (grammar::iequals(t->text, "HSC"))
-          slope = SlopeType::hsc;
+          modal.slope = SlopeType::hsc;
         else if (!grammar::iequals(t->text, "STEP")) {
           return fail(t->loc, "NC4509", "unknown #SLOPE TYPE " + std::string(t->text));
         }
@@ -396,16 +396,16 @@ bool Interpreter::Impl::run_hash(const ast::Block& b, const ast::HashCommand& h)
       return true;
     }
     case HashKind::transvelmin_on: {
-      transvelmin = 0.0;
+      modal.transvelmin = 0.0;
       if (h.item_count > 0) {
         auto v = value_of(&b.items[0]);
         if (!v) return false;
-        transvelmin = *v / 60.0;  // mm/min -> mm/s (PROG-207486091)
+        modal.transvelmin = *v / 60.0;  // mm/min -> mm/s (PROG-207486091)
       }
       return true;
     }
     case HashKind::transvelmin_off:
-      transvelmin.reset();
+      modal.transvelmin.reset();
       return true;
     case HashKind::wait_indp_all:
       emit(line, WaitIndp{0});
@@ -492,7 +492,7 @@ bool Interpreter::Impl::run_axis_commands(const ast::Block& b) {
         AxisCommand c;
         c.kind = ac.kind == ast::AxisCommandKind::indp_syn ? IndpKind::syn : IndpKind::asyn;
         c.axis = *axis;
-        bool absolute = !incremental;
+        bool absolute = !modal.incremental;
         for (std::uint32_t k = ac.first_item; k < ac.first_item + ac.item_count; ++k) {
           const ast::Item& it = b.items[k];
           if (!grammar::iequals(it.keyword, "G")) continue;

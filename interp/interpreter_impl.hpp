@@ -72,9 +72,17 @@ struct Interpreter::Impl {
   bool spline_off(core::SourceLoc at);  // #SPLINE OFF / G150 (emits the Spline)
   bool run_declaration(const ast::Block& b, const ast::Declaration& d);
   bool run_axis_commands(const ast::Block& b);
+  /// What a block says about its own motion only (non-modal words, isg-language.md §2.4).
+  struct BlockMotionWords {
+    bool stop_at_end = false;          ///< G09
+    bool exact_stop = false;           ///< G60
+    bool contour = false;              ///< G61
+    std::optional<double> block_time;  ///< G93 F [s]
+    std::optional<double> end_feed;    ///< E [mm/s]
+  };
   bool run_motion(const ast::Block& b, MotionKind kind, const AxisValues& target,
                   AxisMask programmed, const std::array<std::optional<double>, 3>& ijk,
-                  std::optional<double> radius);
+                  std::optional<double> radius, const BlockMotionWords& words);
   std::optional<std::uint8_t> axis_index(std::string_view name) const;
   ModalSnapshot snapshot() const;
   void emit(std::uint32_t line, CommandBody body);
@@ -107,23 +115,13 @@ struct Interpreter::Impl {
   AxisValues position{};
   AxisMask path_axes = 0;  // axes that take part in path motion (not spindles)
   MotionKind motion = MotionKind::rapid;
-  Plane plane = Plane::xy;
-  bool incremental = false;
-  bool inch = false;
-  bool centre_absolute = false;  // G161
-  FeedMode feed_mode = FeedMode::per_minute;
-  Transition transition = Transition::accelerate_at_start;
-  bool exact_stop_modal = false;  // G360
-  bool contour_modal = false;     // G261
-  ContourParams contour;
-  SlopeType slope = SlopeType::step;
-  std::optional<double> transvelmin;
-  std::optional<double> feed;  // [mm/s]
-  bool synchronised = false;
+  // The programmed modal G state (G360 -> exact_stop, G261 -> contouring, #SLOPE -> slope);
+  // snapshot() adds what a motion derives from elsewhere (cs_active, the forced slope).
+  ModalSnapshot modal;
+  bool centre_absolute = false;   // G161
+  std::optional<double> feed;     // [mm/s]
   bool motion_since_sync = true;  // first motion after #SYNC IN not yet seen
-  bool kinematics_on = false;
   std::optional<int> kin_id;
-  bool caxtrack = false;
   machines::CsStack cs;
   SplineType spline_type = SplineType::akima;
   std::optional<Spline> spline;                      // collecting points between #SPLINE ON and OFF
