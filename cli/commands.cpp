@@ -1,7 +1,5 @@
 #include "cli/commands.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -12,6 +10,7 @@
 #include "core/diagnostic.hpp"
 #include "core/source_file.hpp"
 #include "grammar/check.hpp"
+#include "grammar/keywords.hpp"
 #include "interp/trace.hpp"
 #include "machines/loader.hpp"
 
@@ -66,8 +65,7 @@ std::optional<std::string> parse_external(const std::vector<std::string>& items,
     }
     std::string name = item.substr(0, eq);
     if (name.rfind("V.E.", 0) == 0 || name.rfind("v.e.", 0) == 0) name.erase(0, 4);
-    std::transform(name.begin(), name.end(), name.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    name = grammar::to_upper(name);
     const std::string text = item.substr(eq + 1);
     double value = 0.0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);

@@ -21,9 +21,6 @@ inline bool is_digit(char c) {
 inline bool is_ident(char c) {
   return is_alpha(c) || is_digit(c) || c == '_';
 }
-inline char upper(char c) {
-  return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 32) : c;
-}
 
 template <typename Input>
 std::string_view rest(const Input& in) {
@@ -59,7 +56,7 @@ inline const char* paren_comment_end(const char* p, const char* e) {
 /// Length of a manual parameter id `P-<letters>-<digits>` (P-AXIS-00008, P-CHAN-00262) at the
 /// start of `s`, 0 if there is none.
 inline std::size_t parameter_id_length(std::string_view s) {
-  if (s.size() < 5 || upper(s[0]) != 'P' || s[1] != '-') return 0;
+  if (s.size() < 5 || ascii_upper(s[0]) != 'P' || s[1] != '-') return 0;
   std::size_t n = 2;
   while (n < s.size() && is_alpha(s[n]))
     ++n;

@@ -170,7 +170,7 @@ NCSIM_HOT_MATCH(word) {
   while (p < e && (*p == ' ' || *p == '\t'))
     ++p;
   const char after = p < e ? *p : '\0';
-  const char u = lex::upper(c);
+  const char u = ascii_upper(c);
   const bool variable = u == 'P' || u == 'V';
 
   if (u == 'L' && try_alternative<subroutine_call, A, Act, Ctl>(in, st)) return true;

@@ -33,7 +33,7 @@ NCSIM_CUSTOM_MATCH(function_name) {
 
 /// The single-letter axis addresses X Y Z A B C U V W (isg-language.md §2.1).
 inline bool is_axis_letter(char c) {
-  switch (lex::upper(c)) {
+  switch (ascii_upper(c)) {
     case 'X':
     case 'Y':
     case 'Z':
@@ -52,7 +52,7 @@ inline bool is_axis_letter(char c) {
 // One-letter addresses (§2.1). `V.` followed by a letter starts a variable, not an axis word.
 NCSIM_CUSTOM_MATCH(address_head) {
   if (in.empty()) return false;
-  const char c = lex::upper(in.peek_char());
+  const char c = ascii_upper(in.peek_char());
   using K = ast::WordKind;
   K kind;
   switch (c) {
@@ -127,8 +127,8 @@ NCSIM_CUSTOM_MATCH(axis_name_eq) {
 // L / LL followed by a blank or '"' (§4.9: the blank after LL is mandatory).
 NCSIM_CUSTOM_MATCH(call_head) {
   const std::string_view r = lex::rest(in);
-  if (r.empty() || lex::upper(r[0]) != 'L') return false;
-  const std::size_t n = (r.size() > 1 && lex::upper(r[1]) == 'L') ? 2 : 1;
+  if (r.empty() || ascii_upper(r[0]) != 'L') return false;
+  const std::size_t n = (r.size() > 1 && ascii_upper(r[1]) == 'L') ? 2 : 1;
   if (n >= r.size() || !(r[n] == ' ' || r[n] == '\t' || r[n] == '"')) return false;
   if constexpr (A == pegtl::apply_mode::action) {
     st.call = {};
@@ -250,7 +250,7 @@ NCSIM_CUSTOM_MATCH(goto_target) {
   const std::string_view r = lex::rest(in);
   ast::GotoTarget t;
   t.loc = st.loc(in.current());
-  if (r.size() > 1 && lex::upper(r[0]) == 'N' && lex::is_digit(r[1])) {
+  if (r.size() > 1 && ascii_upper(r[0]) == 'N' && lex::is_digit(r[1])) {
     std::size_t n = 1;
     while (n < r.size() && lex::is_digit(r[n]))
       ++n;

@@ -140,10 +140,6 @@ const KeywordTable kTables[] = {
     /* cycle */ {kCycle, true},
 };
 
-char upper(char c) {
-  return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
-}
-
 struct FunctionName {
   std::string_view name;
   ast::Function function;
@@ -184,10 +180,17 @@ const KeywordTable& keyword_table(ast::TableId id) {
   return kTables[static_cast<std::size_t>(id)];
 }
 
+std::string to_upper(std::string_view s) {
+  std::string out(s);
+  for (char& c : out)
+    c = ascii_upper(c);
+  return out;
+}
+
 bool iequals(std::string_view a, std::string_view b) {
   if (a.size() != b.size()) return false;
   for (std::size_t i = 0; i < a.size(); ++i) {
-    if (upper(a[i]) != upper(b[i])) return false;
+    if (ascii_upper(a[i]) != ascii_upper(b[i])) return false;
   }
   return true;
 }

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <span>
+#include <string>
 #include <string_view>
 
 #include "grammar/ast.hpp"
@@ -38,6 +39,13 @@ struct KeywordTable {
 
 const KeywordTable& keyword_table(ast::TableId id);
 
+/// ASCII upper case of one character: NC text is ASCII and addresses, keywords and names are
+/// case-insensitive (isg-language.md §1.1, docs/language.md).
+constexpr char ascii_upper(char c) {
+  return (c >= 'a' && c <= 'z') ? static_cast<char>(c - 'a' + 'A') : c;
+}
+/// ASCII upper case of a name, the form names are compared and stored in.
+std::string to_upper(std::string_view s);
 /// Case-insensitive equality of ASCII text.
 bool iequals(std::string_view a, std::string_view b);
 

@@ -8,23 +8,6 @@
 namespace ncsim::grammar {
 namespace {
 
-std::string upper(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) {
-    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
-  }
-  return out;
-}
-
-/// a + b + c. (Spelled out because g++ 12 at -O3 reports a false -Wrestrict for
-/// `"N" + std::to_string(n)`, GCC bug 105329, which breaks Release builds with -Werror.)
-std::string joined(std::string_view a, std::string_view b, std::string_view c = {}) {
-  std::string out;
-  out.reserve(a.size() + b.size() + c.size());
-  out.append(a).append(b).append(c);
-  return out;
-}
-
 std::string_view keyword_name(ast::ControlKind k) {
   using K = ast::ControlKind;
   switch (k) {
@@ -145,9 +128,9 @@ void StructureChecker::finish_level(core::DiagnosticList& diags) {
 
 void StructureChecker::add_goto(const ast::GotoTarget& target) {
   if (target.kind == ast::GotoKind::block_number) {
-    gotos_.push_back({joined("N", std::to_string(target.number)), target.loc, open_loops()});
+    gotos_.push_back({"N" + std::to_string(target.number), target.loc, open_loops()});
   } else if (target.kind == ast::GotoKind::name) {
-    gotos_.push_back({joined("[", upper(target.name), "]"), target.loc, open_loops()});
+    gotos_.push_back({"[" + to_upper(target.name) + "]", target.loc, open_loops()});
   }
 }
 
@@ -300,7 +283,7 @@ void StructureChecker::words(const ast::Block& b, core::DiagnosticList& diags) {
     if (w.kind == ast::WordKind::g) {
       const GClass g_class = classify_g(w.code);
       if (g_class == GClass::supported) continue;
-      const std::string name = joined("G", std::to_string(w.code));
+      const std::string name = "G" + std::to_string(w.code);
       switch (g_class) {
         case GClass::supported:
           break;
@@ -341,7 +324,7 @@ void StructureChecker::words(const ast::Block& b, core::DiagnosticList& diags) {
     items(b, table, a.first_item, a.item_count, diags);
   }
   if (b.call && b.call->kind == ast::CallKind::local && b.call->target == ast::CallTarget::name) {
-    local_calls_.emplace(upper(b.call->name), b.call->loc);
+    local_calls_.emplace(to_upper(b.call->name), b.call->loc);
   }
   if (b.trailing_goto) add_goto(b.trailing_goto->target);
 }
@@ -355,7 +338,7 @@ void StructureChecker::feed(const ast::Block& b, core::DiagnosticList& diags) {
                "local subroutine %L " + std::string(h->name) +
                    " after the main program (local subroutines come first)");
       }
-      const auto [it, fresh] = subroutines_.emplace(upper(h->name), b.loc);
+      const auto [it, fresh] = subroutines_.emplace(to_upper(h->name), b.loc);
       if (!fresh) {
         report(diags, b.loc, "NC2018",
                "local subroutine " + std::string(h->name) + " is defined twice");
@@ -369,12 +352,12 @@ void StructureChecker::feed(const ast::Block& b, core::DiagnosticList& diags) {
   if (preprocessor(b, diags) || !enabled_) return;
 
   if (b.number && b.number->is_label) {
-    const std::string key = joined("N", std::to_string(b.number->number));
+    const std::string key = "N" + std::to_string(b.number->number);
     const auto [it, fresh] = labels_.emplace(key, LabelInfo{b.number->loc, open_loops()});
     if (!fresh) report(diags, b.number->loc, "NC2011", "label " + key + " is defined twice");
   }
   if (b.label) {
-    const std::string key = joined("[", upper(b.label->name), "]");
+    const std::string key = "[" + to_upper(b.label->name) + "]";
     const auto [it, fresh] = labels_.emplace(key, LabelInfo{b.label->loc, open_loops()});
     if (!fresh) report(diags, b.label->loc, "NC2011", "label " + key + " is defined twice");
   }

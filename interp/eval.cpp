@@ -1,12 +1,12 @@
 #include "interp/eval.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
 
 #include "core/number_text.hpp"
+#include "grammar/keywords.hpp"
 
 namespace ncsim::interp {
 namespace {
@@ -46,7 +46,7 @@ void base_name(std::string_view text, std::string& out) {
     } else if (c == ']') {
       --depth;
     } else if (depth == 0) {
-      out.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
+      out.push_back(grammar::ascii_upper(c));
     }
   }
 }

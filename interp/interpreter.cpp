@@ -11,14 +11,6 @@ namespace {
 
 using ast::ControlKind;
 
-std::string upper(std::string_view s) {
-  std::string out(s);
-  for (auto& c : out) {
-    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
-  }
-  return out;
-}
-
 bool is_opener(ControlKind k) {
   return k == ControlKind::for_ || k == ControlKind::while_ || k == ControlKind::do_ ||
          k == ControlKind::repeat || k == ControlKind::switch_;
@@ -118,7 +110,7 @@ bool Interpreter::Impl::find_main_start(ProgramFile& pf, std::uint16_t index) {
       pf.main_start = k + 1;
       return true;
     }
-    const std::string name = upper(h->name);
+    const std::string name = grammar::to_upper(h->name);
     pf.local_subs[name] = k;
     for (++k;; ++k) {
       const ast::Block* body = pf.blocks->fetch(k, diags);
@@ -272,7 +264,7 @@ bool Interpreter::Impl::call(const ast::Block& b, const ast::Call& c) {
   std::uint32_t header = 0;
   if (c.kind == ast::CallKind::local) {
     auto& subs = files[pc.file]->local_subs;
-    auto it = subs.find(upper(name));
+    auto it = subs.find(grammar::to_upper(name));
     if (it == subs.end()) {
       return fail(c.loc, "NC4301",
                   "local subroutine " + name + " is not defined before the main program");
