@@ -95,17 +95,12 @@ bool Evaluator::assign(const ast::Block& block, ast::NodeIndex n, double value) 
   return true;
 }
 
-std::optional<double> Evaluator::eval(const ast::Block& block, ast::NodeIndex n) {
-  std::optional<double> v = eval_node(block, n);
-  if (v && !std::isfinite(*v)) {
-    fail(block.exprs[n].loc, "NC4101",
-         "the result is not a finite number (" + core::number_text(*v) + ")");
-    return std::nullopt;
-  }
-  return v;
+std::optional<double> Evaluator::not_finite(const ast::ExprNode& node, double value) {
+  fail(node.loc, "NC4101", "the result is not a finite number (" + core::number_text(value) + ")");
+  return std::nullopt;
 }
 
-std::optional<double> Evaluator::eval_node(const ast::Block& block, ast::NodeIndex n) {
+std::optional<double> Evaluator::eval(const ast::Block& block, ast::NodeIndex n) {
   if (n == ast::kNoNode || n >= block.exprs.size()) {
     fail(block.loc, "NC4002", "missing value");
     return std::nullopt;
@@ -148,7 +143,7 @@ std::optional<double> Evaluator::eval_node(const ast::Block& block, ast::NodeInd
       {
         auto v = call(block, node);
         --depth_;
-        return v;
+        return v ? finite(node, *v) : v;
       }
     default:
       break;
@@ -195,13 +190,13 @@ std::optional<double> Evaluator::eval_node(const ast::Block& block, ast::NodeInd
       return r;
     }
     case Op::multiply:
-      return x * y;
+      return finite(node, x * y);
     case Op::divide:
       if (std::fabs(y) < kZeroDivisor) {  // DIAG-20396: 10/COS[90] is a division by zero
         fail(node.loc, "20396", "division by zero");
         return std::nullopt;
       }
-      return x / y;
+      return finite(node, x / y);
     case Op::modulo:
       if (std::fabs(y) < kZeroDivisor) {
         fail(node.loc, "20396", "division by zero (MOD 0)");
@@ -209,9 +204,9 @@ std::optional<double> Evaluator::eval_node(const ast::Block& block, ast::NodeInd
       }
       return std::fmod(x, y);
     case Op::add:
-      return x + y;
+      return finite(node, x + y);
     case Op::subtract:
-      return x - y;
+      return finite(node, x - y);
     case Op::equal:
       return nearly_equal(x, y) ? 1.0 : 0.0;
     case Op::not_equal:

@@ -11,6 +11,7 @@
 // 32-bit integers.
 // Invariants: evaluation never allocates for P parameters and numbers; nothing is thrown.
 
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -36,8 +37,8 @@ class Evaluator {
   explicit Evaluator(Variables& variables) : vars_(variables) {}
 
   /// Value of node `n` of `block`; on failure returns nullopt and error() describes it. A
-  /// result that is not a finite number (EXP[1000], DEXP[400], inf - inf) is error NC4101 at
-  /// the operation that produced it: no infinity or NaN ever leaves the evaluator.
+  /// result that is not a finite number (EXP[1000], DEXP[400], 1e300 * 1e300) is error NC4101
+  /// at the operation that produced it: no infinity or NaN ever leaves the evaluator.
   std::optional<double> eval(const grammar::ast::Block& block, grammar::ast::NodeIndex n);
   /// Resolves a variable node (evaluating its indices) into `out`.
   bool resolve(const grammar::ast::Block& block, grammar::ast::NodeIndex n, VarRef& out);
@@ -54,8 +55,16 @@ class Evaluator {
 
  private:
   bool fail(core::SourceLoc loc, std::string id, std::string message);
-  /// eval() without the finiteness check; children are evaluated through eval().
-  std::optional<double> eval_node(const grammar::ast::Block& block, grammar::ast::NodeIndex n);
+  /// `value` when finite, else error NC4101 at `node`. Applied where a result can leave the
+  /// range of a double (+ - * /, functions): leaves are finite already, as literals are
+  /// range-checked (NC1005) and every stored value passed through such a check.
+  std::optional<double> finite(const grammar::ast::ExprNode& node, double value) {
+    if (std::isfinite(value)) [[likely]]
+      return value;
+    return not_finite(node, value);
+  }
+  [[gnu::cold, gnu::noinline]] std::optional<double> not_finite(const grammar::ast::ExprNode& node,
+                                                                double value);
   std::optional<double> call(const grammar::ast::Block& block, const grammar::ast::ExprNode& n);
 
   Variables& vars_;
