@@ -9,12 +9,6 @@ target_link_libraries(ncsim_bench_gen PUBLIC ncsim_options)
 add_executable(gen_program ${CMAKE_CURRENT_LIST_DIR}/gen_program.cpp)
 target_link_libraries(gen_program PRIVATE ncsim_bench_gen CLI11::CLI11 ncsim_options)
 
-# grammar_bench needs the real grammar library; until grammar/ defines it, skip quietly.
-get_target_property(_ncsim_grammar_type ncsim_grammar TYPE)
-if(_ncsim_grammar_type STREQUAL "INTERFACE_LIBRARY")
-  message(STATUS "bench: ncsim_grammar is not built yet, skipping grammar_bench")
-else()
-  add_executable(grammar_bench ${CMAKE_CURRENT_LIST_DIR}/grammar_bench.cpp)
-  target_link_libraries(grammar_bench PRIVATE ncsim_bench_gen ncsim_grammar benchmark::benchmark
-                                              ncsim_options)
-endif()
+add_executable(grammar_bench ${CMAKE_CURRENT_LIST_DIR}/grammar_bench.cpp)
+target_link_libraries(grammar_bench PRIVATE ncsim_bench_gen ncsim_grammar benchmark::benchmark
+                                            ncsim_options)

@@ -3,14 +3,9 @@
 # -fsanitize=fuzzer at link time adds libFuzzer's main. Run with tests/fuzz/run.sh SECONDS.
 #   fuzz_grammar - grammar::check_program on any bytes
 #   fuzz_interp  - check_program, then the interpreter and check_semantics on a bundled machine
-get_target_property(_ncsim_grammar_type ncsim_grammar TYPE)
-if(_ncsim_grammar_type STREQUAL "INTERFACE_LIBRARY")
-  message(STATUS "fuzz: ncsim_grammar is not built yet, skipping fuzz_grammar")
-else()
-  add_executable(fuzz_grammar ${CMAKE_CURRENT_LIST_DIR}/fuzz/fuzz_grammar.cpp)
-  target_link_libraries(fuzz_grammar PRIVATE ncsim_grammar ncsim_core ncsim_options)
-  target_link_options(fuzz_grammar PRIVATE -fsanitize=fuzzer)
-endif()
+add_executable(fuzz_grammar ${CMAKE_CURRENT_LIST_DIR}/fuzz/fuzz_grammar.cpp)
+target_link_libraries(fuzz_grammar PRIVATE ncsim_grammar ncsim_core ncsim_options)
+target_link_options(fuzz_grammar PRIVATE -fsanitize=fuzzer)
 
 add_executable(fuzz_interp ${CMAKE_CURRENT_LIST_DIR}/fuzz/fuzz_interp.cpp)
 target_link_libraries(fuzz_interp PRIVATE ncsim_interp ncsim_grammar ncsim_machines ncsim_core

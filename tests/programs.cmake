@@ -8,13 +8,7 @@ ncsim_add_test(NAME bench_generator_tests
           ${PROJECT_SOURCE_DIR}/bench/grammar_generator.cpp
   LIBS ncsim_core)
 
-# programs_tests needs the real grammar library; until grammar/ defines it, skip quietly.
-get_target_property(_ncsim_grammar_type ncsim_grammar TYPE)
-if(_ncsim_grammar_type STREQUAL "INTERFACE_LIBRARY")
-  message(STATUS "tests: ncsim_grammar is not built yet, skipping programs_tests")
-else()
-  ncsim_add_test(NAME programs_tests
-    SOURCES ${CMAKE_CURRENT_LIST_DIR}/programs_test.cpp
-            ${PROJECT_SOURCE_DIR}/bench/grammar_generator.cpp
-    LIBS ncsim_grammar ncsim_core)
-endif()
+ncsim_add_test(NAME programs_tests
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/programs_test.cpp
+          ${PROJECT_SOURCE_DIR}/bench/grammar_generator.cpp
+  LIBS ncsim_grammar ncsim_core)
