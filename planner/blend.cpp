@@ -1,0 +1,113 @@
+// planner/blend: construction documented in blend.hpp.
+
+#include "planner/blend.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "planner/corner.hpp"
+
+namespace ncsim::planner {
+
+namespace {
+
+/// k(angle) minimising the peak curvature of the symmetric line-line blend, sampled at these
+/// angles (degrees) by a one-off search over k in 0.05..1 (docs/planner.md "Blend curve").
+constexpr std::array<double, 9> kAngleDeg = {0, 30, 60, 90, 120, 135, 150, 165, 175};
+constexpr std::array<double, 9> kShape = {0.71, 0.70, 0.67, 0.61, 0.51, 0.43, 0.34, 0.20, 0.08};
+
+constexpr int kRadiusHalvings = 20;
+constexpr int kLambdaSteps = 12;
+constexpr double kLambdaShrink = 0.75;
+
+/// Distance over the metric axes.
+struct Metric {
+  std::size_t n = 0;
+  AxisMask mask = 0;
+  double operator()(const AxisVec& a, const AxisVec& b) const {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (((mask >> i) & 1U) != 0) sum += (a[i] - b[i]) * (a[i] - b[i]);
+    return std::sqrt(sum);
+  }
+};
+
+/// Arc length s in [lo, hi] where the distance from `corner` equals r; the distance falls
+/// monotonically from lo (where it is >= r) to the corner end (at hi when `toward_hi`).
+double cut_point(const Segment& seg, const Metric& distance, const AxisVec& corner, double r,
+                 double lo, double hi, bool toward_hi) {
+  for (int iter = 0; iter < 80; ++iter) {
+    const double mid = 0.5 * (lo + hi);
+    const bool outside = distance(seg.point(mid), corner) > r;
+    if (outside == toward_hi)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace
+
+double blend_shape(double angle) noexcept {
+  const double deg = angle * 180.0 / 3.14159265358979323846;
+  if (deg <= kAngleDeg.front()) return kShape.front();
+  for (std::size_t i = 1; i < kAngleDeg.size(); ++i) {
+    if (deg <= kAngleDeg[i]) {
+      const double f = (deg - kAngleDeg[i - 1]) / (kAngleDeg[i] - kAngleDeg[i - 1]);
+      return kShape[i - 1] + f * (kShape[i] - kShape[i - 1]);
+    }
+  }
+  return kShape.back();
+}
+
+std::optional<Blend> make_blend(const Segment& in, const Segment& out, double radius,
+                                double max_cut_in, double max_cut_out) {
+  const std::uint8_t n = std::max(in.axis_count(), out.axis_count());
+  const AxisMask metric = in.metric() | out.metric();
+  const Metric distance{n, metric};
+  const double len_in = in.length();
+  const double len_out = out.length();
+  max_cut_in = std::clamp(max_cut_in, 0.0, len_in);
+  max_cut_out = std::clamp(max_cut_out, 0.0, len_out);
+  if (!(radius > 0.0) || max_cut_in <= 0.0 || max_cut_out <= 0.0) return std::nullopt;
+
+  const PathPoint in_end = in.at(len_in);
+  const PathPoint out_start = out.at(0.0);
+  const double angle = tangent_angle(in_end.d1, out_start.d1, n, metric);
+  if (angle <= kTangentTolerance || angle > kMaxBlendAngle) return std::nullopt;
+
+  const AxisVec corner = in_end.x;
+  double r = std::min({radius, distance(in.point(len_in - max_cut_in), corner),
+                       distance(out.point(max_cut_out), corner)});
+  const double k = blend_shape(angle);
+
+  for (int halving = 0; halving <= kRadiusHalvings && r > 1e-9; ++halving, r *= 0.5) {
+    const double s_in = cut_point(in, distance, corner, r, len_in - max_cut_in, len_in, true);
+    const double s_out = cut_point(out, distance, corner, r, max_cut_out, 0.0, true);
+    const PathPoint a = in.at(s_in);
+    const PathPoint b = out.at(s_out);
+    double lambda = 2.5 * k * r;
+    for (int step = 0; step < kLambdaSteps; ++step, lambda *= kLambdaShrink) {
+      std::array<AxisVec, 6> p{};
+      for (std::size_t i = 0; i < n; ++i) {
+        p[0][i] = a.x[i];
+        p[1][i] = a.x[i] + lambda * a.d1[i] / 5.0;
+        p[2][i] = 2.0 * p[1][i] - p[0][i] + lambda * lambda * a.d2[i] / 20.0;
+        p[5][i] = b.x[i];
+        p[4][i] = b.x[i] - lambda * b.d1[i] / 5.0;
+        p[3][i] = 2.0 * p[4][i] - p[5][i] + lambda * lambda * b.d2[i] / 20.0;
+      }
+      const double tolerance = r * (1.0 + 1e-9) + 1e-12;
+      const bool inside = std::all_of(
+          p.begin(), p.end(), [&](const AxisVec& q) { return distance(q, corner) <= tolerance; });
+      if (!inside) continue;
+      Blend blend{Segment::bezier(n, metric, p), len_in - s_in, s_out, r};
+      return blend;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace ncsim::planner

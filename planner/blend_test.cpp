@@ -1,0 +1,166 @@
+// Tolerance balls: the blend lies inside the ball, its ends are on it, it joins both
+// neighbours with continuous tangent and curvature, radii shrink to half a block; a seeded
+// property test over random line/arc corners in 3-D.
+
+#include "planner/blend.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "planner/corner.hpp"
+
+namespace {
+
+using namespace ncsim::planner;
+
+AxisVec vec(double x, double y, double z = 0.0) {
+  AxisVec v{};
+  v[0] = x;
+  v[1] = y;
+  v[2] = z;
+  return v;
+}
+
+double dist(const AxisVec& a, const AxisVec& b) {
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                   (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+/// Largest and smallest distance of the blend from the corner, over dense samples.
+std::pair<double, double> distance_range(const Segment& curve, const AxisVec& corner) {
+  double hi = 0.0;
+  double lo = 1e300;
+  for (int k = 0; k <= 400; ++k) {
+    const double d = dist(curve.point(curve.length() * k / 400.0), corner);
+    hi = std::max(hi, d);
+    lo = std::min(lo, d);
+  }
+  return {hi, lo};
+}
+
+void check_joint(const PathPoint& a, const PathPoint& b, double curv_tol) {
+  for (std::size_t i = 0; i < 3; ++i) {
+    CHECK(a.x[i] == doctest::Approx(b.x[i]).epsilon(1e-9).scale(1.0));
+    CHECK(a.d1[i] == doctest::Approx(b.d1[i]).epsilon(1e-6).scale(1.0));
+    CHECK(a.d2[i] == doctest::Approx(b.d2[i]).epsilon(curv_tol).scale(curv_tol));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("a 90 degree corner blend: deviation from the corner equals its radius") {
+  const Segment in = Segment::line(3, 0b111, vec(0, 0), vec(10, 0));
+  const Segment out = Segment::line(3, 0b111, vec(10, 0), vec(10, 10));
+  const auto blend = make_blend(in, out, 1.0, 5.0, 5.0);
+  REQUIRE(blend);
+  CHECK(blend->radius == doctest::Approx(1.0));
+  CHECK(blend->cut_in == doctest::Approx(1.0));
+  CHECK(blend->cut_out == doctest::Approx(1.0));
+  const auto [hi, lo] = distance_range(blend->curve, vec(10, 0));
+  CHECK(hi == doctest::Approx(1.0));  // the ends are on the ball, nothing leaves it
+  CHECK(lo > 0.2);                    // the apex stays clear of the corner
+  CHECK(lo < 0.5);
+  // Ends: position, tangent and curvature (0 on a line) continuous: C2 joints.
+  const Segment in_t = in.trimmed(0, in.length() - blend->cut_in);
+  const Segment out_t = out.trimmed(blend->cut_out, out.length());
+  check_joint(in_t.at(in_t.length()), blend->curve.at(0), 1e-6);
+  check_joint(blend->curve.at(blend->curve.length()), out_t.at(0), 1e-6);
+  CHECK(classify(in_t.at(in_t.length()), blend->curve.at(0), 3, 0b111) == TransitionClass::c2);
+}
+
+TEST_CASE("the ball shrinks so that it takes at most half of a neighbouring block") {
+  const Segment in = Segment::line(3, 0b111, vec(0, 0), vec(10, 0));
+  const Segment out = Segment::line(3, 0b111, vec(10, 0), vec(10, 1));
+  const auto blend = make_blend(in, out, 2.0, in.length() / 2, out.length() / 2);
+  REQUIRE(blend);
+  CHECK(blend->radius == doctest::Approx(0.5));
+  CHECK(blend->cut_out == doctest::Approx(0.5));
+  CHECK(blend->cut_in == doctest::Approx(0.5));
+}
+
+TEST_CASE("collinear joints and reversals are not blended") {
+  const Segment in = Segment::line(3, 0b111, vec(0, 0), vec(10, 0));
+  CHECK_FALSE(make_blend(in, Segment::line(3, 0b111, vec(10, 0), vec(20, 0)), 1, 5, 5));
+  CHECK_FALSE(make_blend(in, Segment::line(3, 0b111, vec(10, 0), vec(0, 0.01)), 1, 5, 5));
+}
+
+TEST_CASE("a line into an arc: the blend matches the arc's curvature at its end") {
+  const Segment in = Segment::line(3, 0b111, vec(0, 0), vec(10, 0));
+  Move m;
+  m.start = vec(10, 0);
+  m.end = vec(10, 20);
+  m.feed = 10;
+  m.arc = Arc{0, 1, 10.0 + 10.0, 10.0, true, false};  // G02, R = 10 centred at (20, 10)
+  const Segment out = Segment::arc(m);
+  const auto blend = make_blend(in, out, 0.5, 5.0, out.length() / 2);
+  REQUIRE(blend);
+  const Segment out_t = out.trimmed(blend->cut_out, out.length());
+  check_joint(blend->curve.at(blend->curve.length()), out_t.at(0), 1e-5);
+  const auto [hi, lo] = distance_range(blend->curve, vec(10, 0));
+  CHECK(hi <= blend->radius * (1 + 1e-9));
+  (void)lo;
+}
+
+TEST_CASE("property: random corners keep the blend inside its ball and join with G2") {
+  std::mt19937 rng(61);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int blended = 0;
+  for (int n = 0; n < 400; ++n) {
+    const AxisVec corner = vec(5 * u(rng), 5 * u(rng), 5 * u(rng));
+    auto random_dir = [&] {
+      AxisVec d = vec(u(rng), u(rng), u(rng));
+      const double l = dist(d, AxisVec{});
+      for (std::size_t i = 0; i < 3; ++i)
+        d[i] /= l;
+      return d;
+    };
+    const AxisVec d_in = random_dir();
+    const AxisVec d_out = random_dir();
+    const double l_in = 0.1 + 20 * std::abs(u(rng));
+    const double l_out = 0.1 + 20 * std::abs(u(rng));
+    AxisVec a{}, b{};
+    for (std::size_t i = 0; i < 3; ++i) {
+      a[i] = corner[i] - l_in * d_in[i];
+      b[i] = corner[i] + l_out * d_out[i];
+    }
+    Segment in = Segment::line(3, 0b111, a, corner);
+    Segment out = Segment::line(3, 0b111, corner, b);
+    if (n % 2 == 1) {
+      // Replace the outgoing line by an arc in XY starting at the corner.
+      Move m;
+      m.start = corner;
+      const double r = 0.5 + 10 * std::abs(u(rng));
+      const double phi = std::atan2(d_in[1], d_in[0]) + 3 * u(rng);
+      m.arc = Arc{0,          1,    corner[0] - r * std::cos(phi), corner[1] - r * std::sin(phi),
+                  n % 4 == 1, false};
+      const double phi1 = phi + 2 * u(rng);
+      m.end = vec(m.arc->centre_1 + r * std::cos(phi1), m.arc->centre_2 + r * std::sin(phi1),
+                  corner[2] + u(rng));
+      m.feed = 1;
+      out = Segment::arc(m);
+    }
+    const double radius = 0.001 + 3 * std::abs(u(rng));
+    const auto blend = make_blend(in, out, radius, in.length() / 2, out.length() / 2);
+    const double angle = tangent_angle(in.at(in.length()).d1, out.at(0).d1, 3, 0b111);
+    if (angle > kMaxBlendAngle) {
+      CHECK_FALSE(blend);
+      continue;
+    }
+    REQUIRE(blend);
+    ++blended;
+    CHECK(blend->radius <= radius);
+    CHECK(blend->cut_in <= in.length() / 2 * (1 + 1e-12));
+    CHECK(blend->cut_out <= out.length() / 2 * (1 + 1e-12));
+    const auto [hi, lo] = distance_range(blend->curve, corner);
+    CHECK(hi <= blend->radius * (1 + 1e-9));
+    CHECK(hi >= blend->radius * (1 - 1e-9));
+    const Segment in_t = in.trimmed(0, in.length() - blend->cut_in);
+    const Segment out_t = out.trimmed(blend->cut_out, out.length());
+    check_joint(in_t.at(in_t.length()), blend->curve.at(0), 1e-5);
+    check_joint(blend->curve.at(blend->curve.length()), out_t.at(0), 1e-5);
+  }
+  CHECK(blended > 350);
+}

@@ -1,0 +1,134 @@
+// planner/corner: classification and link velocity (rules in corner.hpp).
+
+#include "planner/corner.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ncsim::planner {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+bool has(AxisMask mask, std::size_t i) {
+  return ((mask >> i) & 1U) != 0;
+}
+
+}  // namespace
+
+double tangent_angle(const AxisVec& t_in, const AxisVec& t_out, std::size_t axis_count,
+                     AxisMask metric) noexcept {
+  // atan2(|a x b|, a.b) via |a - b| and |a + b| (accurate at small and large angles).
+  double diff = 0.0;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < axis_count; ++i) {
+    if (!has(metric, i)) continue;
+    const double d = t_out[i] - t_in[i];
+    const double s = t_out[i] + t_in[i];
+    diff += d * d;
+    sum += s * s;
+  }
+  return 2.0 * std::atan2(std::sqrt(diff), std::sqrt(sum));
+}
+
+TransitionClass classify(const PathPoint& in_end, const PathPoint& out_start,
+                         std::size_t axis_count, AxisMask metric) noexcept {
+  // Every axis counts for the tangent: an auxiliary axis's direction jump is a C0 step too.
+  double tangent_gap = 0.0;
+  double curv_gap = 0.0;
+  double curv_size = 0.0;
+  for (std::size_t i = 0; i < axis_count; ++i) {
+    tangent_gap = std::max(tangent_gap, std::abs(out_start.d1[i] - in_end.d1[i]));
+    curv_gap = std::max(curv_gap, std::abs(out_start.d2[i] - in_end.d2[i]));
+    curv_size = std::max({curv_size, std::abs(out_start.d2[i]), std::abs(in_end.d2[i])});
+  }
+  const double angle = tangent_angle(in_end.d1, out_start.d1, axis_count, metric);
+  if (angle > kTangentTolerance || tangent_gap > kTangentTolerance) return TransitionClass::c0;
+  if (curv_gap > std::max(kCurvatureTolerance * curv_size, 1e-9)) return TransitionClass::c1;
+  return TransitionClass::c2;
+}
+
+double velojump_velocity(const AxisVec& t_in, const AxisVec& t_out,
+                         std::span<const AxisLimits> axes, double t_cycle,
+                         std::uint8_t* axis) noexcept {
+  double v = kInf;
+  for (std::size_t i = 0; i < axes.size() && i < t_in.size(); ++i) {
+    const double step = std::abs(t_out[i] - t_in[i]);  // |dv_i| per unit path velocity
+    if (step <= 0.0) continue;
+    // 000 l.108: v_jump[i] = C0[i] * min(A+[i], -A-[i]) * T (A- negative there).
+    const double v_jump = axes[i].c0 * std::min(axes[i].a_max, axes[i].d_max) * t_cycle;
+    const double v_i = v_jump / step;
+    if (v_i < v) {
+      v = v_i;
+      if (axis != nullptr) *axis = static_cast<std::uint8_t>(i);
+    }
+  }
+  return v;
+}
+
+double c1_velocity(const AxisVec& k_in, const AxisVec& k_out, std::span<const AxisLimits> axes,
+                   double t_cycle, std::uint8_t* axis) noexcept {
+  double v = kInf;
+  for (std::size_t i = 0; i < axes.size() && i < k_in.size(); ++i) {
+    const double step = std::abs(k_out[i] - k_in[i]);  // |da_i| per unit v^2
+    if (step <= 0.0) continue;
+    const double v_i = std::sqrt(axes[i].j_max * t_cycle / step);
+    if (v_i < v) {
+      v = v_i;
+      if (axis != nullptr) *axis = static_cast<std::uint8_t>(i);
+    }
+  }
+  return v;
+}
+
+Link link_velocity(const PathPoint& in_end, const PathPoint& out_start, std::size_t axis_count,
+                   AxisMask metric, std::span<const AxisLimits> axes, const ChannelLimits& channel,
+                   double v_in, double v_out, std::optional<double> transvelmin,
+                   bool jerk_limited_slope) noexcept {
+  const std::span<const AxisLimits> used = axes.first(std::min(axes.size(), axis_count));
+  Link link;
+  link.cls = classify(in_end, out_start, axis_count, metric);
+  link.angle = tangent_angle(in_end.d1, out_start.d1, axis_count, metric);
+  const double cap = std::max(0.0, std::min(v_in, v_out));
+  link.v_link = cap;
+  switch (link.cls) {
+    case TransitionClass::c0: {
+      link.zero_acceleration = true;
+      std::uint8_t ax = 0;
+      const double v = velojump_velocity(in_end.d1, out_start.d1, used, channel.t_cycle, &ax);
+      if (v < link.v_link) {
+        link.v_link = v;
+        link.rule = LinkRule::velojump;
+        link.limiting_axis = ax;
+      }
+      if (transvelmin) {
+        const double v_min = std::min(std::max(*transvelmin, 0.0), cap);
+        if (link.v_link < v_min) {
+          link.v_link = v_min;
+          link.rule = LinkRule::transvelmin;
+        }
+      }
+      break;
+    }
+    case TransitionClass::c1: {
+      link.zero_acceleration = true;
+      if (channel.limit_c1_by_jerk && jerk_limited_slope) {
+        std::uint8_t ax = 0;
+        const double v = c1_velocity(in_end.d2, out_start.d2, used, channel.t_cycle, &ax);
+        if (v < link.v_link) {
+          link.v_link = v;
+          link.rule = LinkRule::c1_jerk;
+          link.limiting_axis = ax;
+        }
+      }
+      break;
+    }
+    case TransitionClass::c2:
+      break;
+  }
+  return link;
+}
+
+}  // namespace ncsim::planner

@@ -1,0 +1,150 @@
+// Corners: classification and the link velocity (VELOJUMP 000 l.108, C1 budget, #TRANSVELMIN).
+// Hand-checked cases (issue 12, seed-reading A2): C0 = 1, A = 10000 mm/s^2, T = 1 ms gives
+// 10 mm/s at 90 degrees, 14.14 at 45, 5.86 at 135, and half the step (5) at a reversal.
+
+#include "planner/corner.hpp"
+
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace {
+
+using namespace ncsim::planner;
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+std::array<AxisLimits, 3> limits(double a, double c0 = 1.0, double j = 1e6) {
+  AxisLimits ax;
+  ax.v_max = ax.v_reference = ax.v_rapid = 1000.0;
+  ax.a_max = ax.d_max = a;
+  ax.j_max = j;
+  ax.c0 = c0;
+  return {ax, ax, ax};
+}
+
+PathPoint tangent(double angle_deg) {
+  PathPoint p;
+  p.d1[0] = std::cos(angle_deg * kDeg);
+  p.d1[1] = std::sin(angle_deg * kDeg);
+  return p;
+}
+
+double corner(double turn_deg, double c0 = 1.0, double v = 100.0,
+              std::optional<double> vmin = std::nullopt) {
+  const auto ax = limits(10000.0, c0);
+  return link_velocity(tangent(0), tangent(turn_deg), 3, 0b111, ax, ChannelLimits{}, v, v, vmin,
+                       true)
+      .v_link;
+}
+
+}  // namespace
+
+TEST_CASE("VELOJUMP: 90 degrees, C0 = 1, A = 10000 mm/s^2, T = 1 ms links at 10 mm/s") {
+  CHECK(corner(90) == doctest::Approx(10.0));
+  CHECK(corner(90, 4.0) == doctest::Approx(40.0));
+}
+
+TEST_CASE("VELOJUMP: 45 degrees gives 14.14 and 135 degrees 5.86 mm/s") {
+  CHECK(corner(45) == doctest::Approx(14.1421356));
+  CHECK(corner(45, 4.0) == doctest::Approx(56.5685425));
+  CHECK(corner(135) == doctest::Approx(5.8578644));
+  CHECK(corner(135, 4.0) == doctest::Approx(23.4314575));
+}
+
+TEST_CASE("VELOJUMP: a reversal without a stop gets half the step (axis step = v_jump)") {
+  CHECK(corner(180) == doctest::Approx(5.0));
+}
+
+TEST_CASE("VELOJUMP: the link never exceeds min(v_in, v_out)") {
+  const auto ax = limits(10000.0, 100.0);
+  const Link link = link_velocity(tangent(0), tangent(90), 3, 0b111, ax, ChannelLimits{}, 30.0,
+                                  50.0, std::nullopt, true);
+  CHECK(link.v_link == doctest::Approx(30.0));
+  CHECK(link.rule == LinkRule::segment_caps);
+}
+
+TEST_CASE("VELOJUMP uses min(A+, A-) of each axis and the slowest axis sets the link") {
+  auto ax = limits(10000.0);
+  ax[1].d_max = 2000.0;  // Y: v_jump = 2 mm/s
+  const Link link = link_velocity(tangent(0), tangent(90), 3, 0b111, ax, ChannelLimits{}, 100, 100,
+                                  std::nullopt, true);
+  CHECK(link.v_link == doctest::Approx(2.0));
+  CHECK(link.limiting_axis == 1);
+  CHECK(link.rule == LinkRule::velojump);
+  CHECK(link.cls == TransitionClass::c0);
+  CHECK(link.zero_acceleration);
+}
+
+TEST_CASE("VELOJUMP scales with the interpolation cycle T") {
+  const auto ax = limits(10000.0);
+  ChannelLimits ch;
+  ch.t_cycle = 0.004;
+  CHECK(link_velocity(tangent(0), tangent(90), 3, 0b111, ax, ch, 100, 100, std::nullopt, true)
+            .v_link == doctest::Approx(40.0));
+}
+
+TEST_CASE("#TRANSVELMIN has priority over VELOJUMP but stays within min(v_in, v_out)") {
+  CHECK(corner(90, 1.0, 100.0, 20.0) == doctest::Approx(20.0));
+  CHECK(corner(90, 1.0, 100.0, 5.0) == doctest::Approx(10.0));
+  CHECK(corner(90, 1.0, 50.0, 1000.0) == doctest::Approx(50.0));
+}
+
+TEST_CASE("classification: knee C0, tangent with curvature jump C1, curvature continuous C2") {
+  PathPoint line_end = tangent(0);
+  PathPoint same = tangent(0);
+  CHECK(classify(line_end, same, 3, 0b111) == TransitionClass::c2);
+  PathPoint arc_start = tangent(0);
+  arc_start.d2[1] = 0.1;  // tangent arc of radius 10
+  CHECK(classify(line_end, arc_start, 3, 0b111) == TransitionClass::c1);
+  PathPoint arc_end = arc_start;
+  CHECK(classify(arc_end, arc_start, 3, 0b111) == TransitionClass::c2);
+  CHECK(classify(line_end, tangent(1e-3 / kDeg), 3, 0b111) == TransitionClass::c0);
+  CHECK(classify(line_end, tangent(1e-8 / kDeg), 3, 0b111) == TransitionClass::c2);
+}
+
+TEST_CASE("C1: the acceleration step of every axis stays within j_max * T") {
+  // Line into a tangent arc of radius 10: the Y acceleration jumps by v^2 / 10.
+  const auto ax = limits(10000.0, 1.0, 1e5);
+  PathPoint arc_start = tangent(0);
+  arc_start.d2[1] = 0.1;
+  const Link link = link_velocity(tangent(0), arc_start, 3, 0b111, ax, ChannelLimits{}, 100, 100,
+                                  std::nullopt, true);
+  CHECK(link.cls == TransitionClass::c1);
+  CHECK(link.rule == LinkRule::c1_jerk);
+  CHECK(link.v_link == doctest::Approx(std::sqrt(1e5 * 1e-3 / 0.1)));  // 31.62 mm/s
+  const double step = link.v_link * link.v_link * 0.1;
+  CHECK(step == doctest::Approx(1e5 * 1e-3));
+}
+
+TEST_CASE("C1 is not limited for STEP slopes or when the channel switches it off") {
+  const auto ax = limits(10000.0, 1.0, 1e5);
+  PathPoint arc_start = tangent(0);
+  arc_start.d2[1] = 0.1;
+  CHECK(link_velocity(tangent(0), arc_start, 3, 0b111, ax, ChannelLimits{}, 100, 100, std::nullopt,
+                      false)
+            .v_link == doctest::Approx(100.0));
+  ChannelLimits off;
+  off.limit_c1_by_jerk = false;
+  CHECK(link_velocity(tangent(0), arc_start, 3, 0b111, ax, off, 100, 100, std::nullopt, true)
+            .v_link == doctest::Approx(100.0));
+}
+
+TEST_CASE("C2 transitions keep the segments' velocity and carry the acceleration") {
+  const auto ax = limits(10000.0);
+  const Link link = link_velocity(tangent(30), tangent(30), 3, 0b111, ax, ChannelLimits{}, 70, 80,
+                                  std::nullopt, true);
+  CHECK(link.cls == TransitionClass::c2);
+  CHECK(link.v_link == doctest::Approx(70.0));
+  CHECK_FALSE(link.zero_acceleration);
+}
+
+TEST_CASE("#TRANSVELMIN does not act at tangent transitions") {
+  const auto ax = limits(10000.0, 1.0, 1e5);
+  PathPoint arc_start = tangent(0);
+  arc_start.d2[1] = 0.1;
+  CHECK(link_velocity(tangent(0), arc_start, 3, 0b111, ax, ChannelLimits{}, 100, 100, 90.0, true)
+            .v_link == doctest::Approx(std::sqrt(1e5 * 1e-3 / 0.1)));
+}

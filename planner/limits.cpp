@@ -1,0 +1,120 @@
+// planner/limits: the projections documented in limits.hpp.
+
+#include "planner/limits.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace ncsim::planner {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kTiny = 1e-12;  // derivative bounds below this are zero
+
+/// Lower `cap` to `value` and remember why.
+void lower(double value, VelocityLimit why, std::uint8_t axis, double& cap, VelocityLimit& limit,
+           std::uint8_t& limiting_axis) {
+  if (value < cap) {
+    cap = value;
+    limit = why;
+    limiting_axis = axis;
+  }
+}
+
+}  // namespace
+
+bool jerk_limited(SlopeType slope) noexcept {
+  return slope != SlopeType::step;
+}
+
+PathLimits path_limits(const Segment& segment, const Move& move, std::span<const AxisLimits> axes) {
+  const std::size_t n = segment.axis_count();
+  if (axes.size() < n)
+    throw std::invalid_argument("planner: " + std::to_string(axes.size()) +
+                                " axis limits for a segment of " + std::to_string(n) + " axes");
+  const DerivativeBounds b = segment.bounds();
+  const bool jerk = jerk_limited(move.slope);
+  const double length = segment.length();
+
+  PathLimits out;
+  // The velocity the block asks for.
+  if (move.rapid) {
+    // 000 l.360: each axis at MIN(rapid, reference, maximum); the slowest axis sets the time.
+    double v = kInf;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (b.d1[i] <= kTiny) continue;
+      const AxisLimits& ax = axes[i];
+      v = std::min(v, std::min({ax.v_rapid, ax.v_reference, ax.v_max}) / b.d1[i]);
+    }
+    out.v_programmed = std::isfinite(v) ? v : 0.0;
+  } else if (move.block_time) {
+    out.v_programmed = *move.block_time > 0.0 ? length / *move.block_time : kInf;
+  } else {
+    out.v_programmed = move.feed;
+  }
+
+  double cap = out.v_programmed;
+  VelocityLimit limit = VelocityLimit::programmed;
+  std::uint8_t limiting_axis = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto ax_id = static_cast<std::uint8_t>(i);
+    const AxisLimits& ax = axes[i];
+    if (b.d1[i] > kTiny)
+      lower(std::min(ax.v_max, ax.v_reference) / b.d1[i], VelocityLimit::axis_velocity, ax_id, cap,
+            limit, limiting_axis);
+    const double a_axis = std::min(ax.a_max, ax.d_max);
+    if (b.d2[i] > kTiny)
+      lower(std::sqrt(kCentripetalShare * a_axis / b.d2[i]), VelocityLimit::centripetal, ax_id, cap,
+            limit, limiting_axis);
+    if (jerk && b.d3[i] > kTiny)
+      lower(std::cbrt(kCurvatureJerkShare * ax.j_max / b.d3[i]), VelocityLimit::curvature_jerk,
+            ax_id, cap, limit, limiting_axis);
+  }
+  // The rapid velocity already is the axes' own; it is never "capped".
+  if (move.rapid && limit == VelocityLimit::axis_velocity) limit = VelocityLimit::programmed;
+  out.v_max = std::max(cap, 0.0);
+  out.limit = limit;
+  out.limiting_axis = limiting_axis;
+  out.v_end = move.end_feed ? std::min(out.v_max, std::max(*move.end_feed, 0.0)) : out.v_max;
+
+  const double v = out.v_max;
+  double a_plus = kInf;
+  double a_minus = kInf;
+  for (std::size_t i = 0; i < n; ++i) {
+    const AxisLimits& ax = axes[i];
+    const bool curved = b.d2[i] > kTiny;
+    // On a curve an axis may speed up or slow down whatever the path does: use the smaller.
+    const double up = curved ? std::min(ax.a_max, ax.d_max) : ax.a_max;
+    const double down = curved ? std::min(ax.a_max, ax.d_max) : ax.d_max;
+    const double centripetal = b.d2[i] * v * v;
+    if (b.d1[i] > kTiny) {
+      a_plus = std::min(a_plus, (up - centripetal) / b.d1[i]);
+      a_minus = std::min(a_minus, (down - centripetal) / b.d1[i]);
+    }
+    if (jerk && curved && v > 0.0) {
+      const double cross = kCrossJerkShare * ax.j_max / (3.0 * b.d2[i] * v);
+      a_plus = std::min(a_plus, cross);
+      a_minus = std::min(a_minus, cross);
+    }
+  }
+  out.a_max = a_plus;
+  out.d_max = a_minus;
+
+  double j_path = kInf;
+  if (jerk) {
+    const double a = std::max(a_plus, a_minus);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (b.d1[i] <= kTiny) continue;
+      const double used = b.d3[i] * v * v * v + 3.0 * b.d2[i] * v * a;
+      j_path = std::min(j_path, (axes[i].j_max - used) / b.d1[i]);
+    }
+  }
+  out.j_max = j_path;
+  return out;
+}
+
+}  // namespace ncsim::planner

@@ -1,0 +1,79 @@
+// planner/move: boundary checks of the planner's inputs (API misuse throws, style.md).
+
+#include "planner/move.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace ncsim::planner {
+
+namespace {
+
+[[noreturn]] void fail(const std::string& what) {
+  throw std::invalid_argument("planner: " + what);
+}
+
+void finite(double value, const std::string& field) {
+  if (!std::isfinite(value)) fail(field + " is not finite (" + std::to_string(value) + ")");
+}
+
+void positive(double value, const std::string& field) {
+  finite(value, field);
+  if (value <= 0.0) fail(field + " must be > 0, got " + std::to_string(value));
+}
+
+}  // namespace
+
+void validate(const Move& move) {
+  const std::string at = "line " + std::to_string(move.line) + ": ";
+  if (move.axis_count == 0 || move.axis_count > kMaxAxes)
+    fail(at + "axis_count " + std::to_string(move.axis_count) + " outside 1.." +
+         std::to_string(kMaxAxes));
+  for (std::size_t i = 0; i < move.axis_count; ++i) {
+    finite(move.start[i], at + "start[" + std::to_string(i) + "]");
+    finite(move.end[i], at + "end[" + std::to_string(i) + "]");
+  }
+  if (!move.rapid && !move.block_time) positive(move.feed, at + "feed");
+  if (move.block_time) positive(*move.block_time, at + "block_time (G93)");
+  if (move.end_feed) {
+    finite(*move.end_feed, at + "end_feed (E)");
+    if (*move.end_feed < 0.0) fail(at + "end_feed (E) < 0");
+  }
+  if (move.contour == Contour::tolerance) positive(move.path_dev, at + "path_dev (PATH_DEV)");
+  if (move.transvelmin) {
+    finite(*move.transvelmin, at + "transvelmin");
+    if (*move.transvelmin < 0.0) fail(at + "transvelmin < 0");
+  }
+  if (move.arc) {
+    const Arc& arc = *move.arc;
+    if (arc.axis_1 >= move.axis_count || arc.axis_2 >= move.axis_count || arc.axis_1 == arc.axis_2)
+      fail(at + "arc plane axes " + std::to_string(arc.axis_1) + "/" + std::to_string(arc.axis_2) +
+           " invalid for " + std::to_string(move.axis_count) + " axes");
+    finite(arc.centre_1, at + "arc centre_1");
+    finite(arc.centre_2, at + "arc centre_2");
+    const double r =
+        std::hypot(move.start[arc.axis_1] - arc.centre_1, move.start[arc.axis_2] - arc.centre_2);
+    positive(r, at + "arc radius");
+  }
+}
+
+void validate(std::span<const AxisLimits> limits) {
+  if (limits.empty() || limits.size() > kMaxAxes)
+    fail("axis limit count " + std::to_string(limits.size()) + " outside 1.." +
+         std::to_string(kMaxAxes));
+  for (std::size_t i = 0; i < limits.size(); ++i) {
+    const AxisLimits& ax = limits[i];
+    const std::string at = "axis " + std::to_string(i) + " ";
+    positive(ax.v_max, at + "v_max");
+    positive(ax.v_reference, at + "v_reference");
+    positive(ax.v_rapid, at + "v_rapid");
+    positive(ax.a_max, at + "a_max");
+    positive(ax.d_max, at + "d_max");
+    positive(ax.j_max, at + "j_max");
+    finite(ax.c0, at + "c0 (VELOJUMP factor)");
+    if (ax.c0 < 0.0) fail(at + "c0 (VELOJUMP factor) < 0, got " + std::to_string(ax.c0));
+  }
+}
+
+}  // namespace ncsim::planner

@@ -1,0 +1,98 @@
+#pragma once
+// planner/move: the planner's own input values: one motion block and the axis limits.
+//
+// Purpose: the planner plans from plain values, independent of how the interpreter and the
+// machine lists spell them (an adapter from interp::Command / machines::Machine comes at
+// integration). A Move is one path block in machine-axis coordinates of one frame; AxisLimits
+// are one axis's dynamics, already in the planner's units.
+// Units: mm and degrees for positions, mm/s (deg/s) for velocities, mm/s^2 for accelerations,
+// mm/s^3 for jerk, s for times. Feeds are path feeds in mm/s (converted from mm/min before).
+// Invariants (checked by validate(), which throws std::invalid_argument naming the field):
+// every number finite; axis_count in 1..kMaxAxes; an arc's plane axes distinct and below
+// axis_count, its radius > 0; limits > 0 (C0 factor >= 0).
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <span>
+
+namespace ncsim::planner {
+
+/// Most axes one channel addresses (machines::kMaxChannelAxes).
+inline constexpr std::size_t kMaxAxes = 16;
+using AxisVec = std::array<double, kMaxAxes>;  ///< one value per machine axis [mm | deg]
+using AxisMask = std::uint32_t;                ///< bit i: machine axis i
+
+/// Block transition at the end of a block (isg-language.md §2.4).
+enum class Transition : std::uint8_t {
+  accelerate_at_start,  ///< G08 (modal, initial): normal look-ahead
+  stop_at_end,          ///< G09 (this block): velocity 0 at the block end
+  decel_at_end,         ///< G900: decelerate at block end (treated as G08 in the look-ahead)
+  decel_after_end,      ///< G901: decelerate after block end (treated as G08)
+};
+
+/// #SLOPE TYPE (isg-language.md §5.5): STEP is acceleration-limited, TRAPEZ/SIN2 jerk-limited.
+enum class SlopeType : std::uint8_t { step, trapez, sin2, hsc };
+
+/// Corner handling at the end of a block.
+enum class Contour : std::uint8_t {
+  none,       ///< G260: corners are C0 transitions (VELOJUMP)
+  tolerance,  ///< G61 / G261 with #CONTOUR MODE DEV: a blend inside a ball of radius path_dev
+};
+
+/// Circle plane (G17 / G18 / G19) given as the two machine axes of the plane.
+struct Arc {
+  std::uint8_t axis_1 = 0;   ///< first plane axis (X for G17, Z for G18, Y for G19)
+  std::uint8_t axis_2 = 1;   ///< second plane axis
+  double centre_1 = 0.0;     ///< centre, first plane coordinate [mm]
+  double centre_2 = 0.0;     ///< centre, second plane coordinate [mm]
+  bool clockwise = false;    ///< G02 (true) or G03, seen from the positive third axis
+  bool full_circle = false;  ///< start == end in the plane means one full turn
+};
+
+/// One path block (a line, or an arc / helix when `arc` is set).
+struct Move {
+  std::uint8_t axis_count = 3;       ///< machine axes in use, 1..kMaxAxes
+  AxisMask path_axes = 0b111;        ///< axes whose motion measures the path length (main axes)
+  AxisVec start{};                   ///< [mm | deg]
+  AxisVec end{};                     ///< [mm | deg]
+  std::optional<Arc> arc;            ///< G02/G03: circle in the plane; other axes move linearly
+  bool rapid = false;                ///< G00: per-axis MIN(rapid, reference, max) (000 l.360)
+  double feed = 0.0;                 ///< programmed F [mm/s]; ignored for rapid
+  std::optional<double> block_time;  ///< G93: machining time of the block [s]
+  std::optional<double> end_feed;    ///< E: feed at the block end [mm/s]
+  Transition transition = Transition::accelerate_at_start;
+  bool exact_stop = false;            ///< G60 / G360: velocity 0 and the window at the end
+  Contour contour = Contour::none;    ///< G61 / G261 at the end of this block
+  double path_dev = 1.0;              ///< #CONTOUR MODE DEV PATH_DEV: ball radius [mm]
+  std::optional<double> transvelmin;  ///< #TRANSVELMIN [mm/s]
+  SlopeType slope = SlopeType::step;  ///< #SLOPE TYPE
+  std::uint32_t line = 0;             ///< source line, for notes and reports
+};
+
+/// One machine axis's dynamics as the planner uses them (000 l.75, l.105-108, l.360).
+struct AxisLimits {
+  double v_max = 0.0;        ///< maximum velocity [mm/s]
+  double v_reference = 0.0;  ///< reference velocity, an extra upper limit [mm/s] (000 l.75)
+  double v_rapid = 0.0;      ///< rapid traverse velocity G00 [mm/s]
+  double a_max = 0.0;        ///< maximum acceleration A+ [mm/s^2]
+  double d_max = 0.0;        ///< maximum deceleration |A-| [mm/s^2]
+  double j_max = 0.0;        ///< maximum jerk [mm/s^3]
+  double c0 = 1.0;           ///< VELOJUMP factor C0 (000 l.105-108), >= 0
+};
+
+/// Channel-wide planner settings.
+struct ChannelLimits {
+  double t_cycle = 0.001;  ///< interpolation cycle T [s] (VELOJUMP, C1 budget)
+  /// P-CHAN-00009 semantics: limit the velocity at C1 transitions so that each axis's
+  /// acceleration step fits its jerk budget j_max * T (docs/planner.md "C1").
+  bool limit_c1_by_jerk = true;
+};
+
+/// Throws std::invalid_argument naming the field and value when a Move breaks its invariants.
+void validate(const Move& move);
+/// Throws std::invalid_argument naming the axis, field and value when a limit is not usable.
+void validate(std::span<const AxisLimits> limits);
+
+}  // namespace ncsim::planner

@@ -1,0 +1,124 @@
+#pragma once
+// planner/path: path geometry parametrised by arc length.
+//
+// Purpose: every curve the planner plans on (line, arc, helix, quintic blend) answers the same
+// questions at an arc length s: the point x(s), the unit tangent x'(s), the curvature vector
+// x''(s) and its derivative x'''(s), one value per machine axis, plus bounds of |x'_i|, |x''_i|,
+// |x'''_i| over the whole curve (what path limits project axis limits on).
+// Inputs: a Move (line / arc / helix) or the six control points of a blend; a metric mask: the
+// axes whose motion measures the arc length (the path axes; if they do not move, every axis).
+// Outputs: Segment values. Derivatives are with respect to s, so |x'|_metric == 1.
+// Invariants: length() > 0 for a non-degenerate curve (a zero-length move has length 0 and a
+// zero tangent); at(0) is the start and at(length()) the end (an arc's end is the programmed
+// end point up to the radius check of the interpreter); a trimmed segment is the same curve
+// restricted to [s0, s1] and re-parametrised from 0. Pure functions; no allocation.
+
+#include <array>
+#include <cstdint>
+#include <variant>
+
+#include "planner/move.hpp"
+
+namespace ncsim::planner {
+
+/// Point and arc-length derivatives at one s.
+struct PathPoint {
+  AxisVec x{};   ///< position [mm | deg]
+  AxisVec d1{};  ///< dx/ds, unit tangent in the metric [1]
+  AxisVec d2{};  ///< d2x/ds2, curvature vector [1/mm]
+  AxisVec d3{};  ///< d3x/ds3 [1/mm^2]
+};
+
+/// Largest |derivative| per axis over a whole segment (for path limits).
+struct DerivativeBounds {
+  AxisVec d1{};  ///< max |dx_i/ds| [1]
+  AxisVec d2{};  ///< max |d2x_i/ds2| [1/mm]
+  AxisVec d3{};  ///< max |d3x_i/ds3| [1/mm^2]
+};
+
+namespace geom {
+
+/// A straight line.
+struct LineGeom {
+  AxisVec p0{};   ///< start [mm | deg]
+  AxisVec dir{};  ///< (end - start) / length
+};
+/// An arc or helix.
+struct ArcGeom {
+  AxisVec p0{};         ///< start (non-plane axes) [mm | deg]
+  AxisVec lin{};        ///< d x_i/ds of the non-plane axes (0 for the plane axes)
+  std::uint8_t a1 = 0;  ///< plane axes
+  std::uint8_t a2 = 1;
+  double c1 = 0.0;  ///< centre [mm]
+  double c2 = 0.0;
+  double radius = 0.0;  ///< [mm]
+  double theta0 = 0.0;  ///< start angle [rad]
+  double omega = 0.0;   ///< d theta / ds, signed (+ counter-clockwise) [rad/mm]
+};
+/// A quintic Bezier curve with its arc-length table.
+struct BezierGeom {
+  static constexpr int kTable = 32;  ///< arc-length table intervals
+  std::array<AxisVec, 6> p{};
+  std::array<double, kTable + 1> s_at{};  ///< arc length at t = k / kTable
+};
+
+}  // namespace geom
+
+enum class SegmentKind : std::uint8_t { line, arc, blend };
+
+/// One curve with arc-length parametrisation, restricted to a window [s_lo, s_hi] of its
+/// underlying geometry (trimming for tolerance balls moves the window, not the geometry).
+class Segment {
+ public:
+  using LineGeom = geom::LineGeom;
+  using ArcGeom = geom::ArcGeom;
+  using BezierGeom = geom::BezierGeom;
+
+  /// An empty segment (a line of length 0).
+  Segment() = default;
+  /// A line from `a` to `b`; `metric` selects the axes that measure the length.
+  static Segment line(std::uint8_t axis_count, AxisMask metric, const AxisVec& a, const AxisVec& b);
+  /// An arc or helix from the Move (plane axes from Arc; other axes move linearly in s).
+  static Segment arc(const Move& move);
+  /// Line or arc/helix as the Move says.
+  static Segment from_move(const Move& move);
+  /// A quintic Bezier curve through control points p[0..5] (used by tolerance balls).
+  static Segment bezier(std::uint8_t axis_count, AxisMask metric, const std::array<AxisVec, 6>& p);
+
+  SegmentKind kind() const noexcept;
+  std::uint8_t axis_count() const noexcept { return n_; }
+  AxisMask metric() const noexcept { return metric_; }
+  double length() const noexcept { return s_hi_ - s_lo_; }  ///< [mm]
+
+  /// Point and derivatives at arc length s, clamped to [0, length()].
+  PathPoint at(double s) const noexcept;
+  /// Position only (cheaper for lines and arcs).
+  AxisVec point(double s) const noexcept;
+  AxisVec start() const noexcept { return point(0.0); }
+  AxisVec end() const noexcept { return point(length()); }
+  /// Bounds of |x'_i|, |x''_i|, |x'''_i| over the segment (exact for lines and arcs,
+  /// 256 samples plus 1 % margin for blends: docs/planner.md "Blend curve").
+  DerivativeBounds bounds() const noexcept;
+  /// The same curve restricted to [s0, s1] (0 <= s0 < s1 <= length()).
+  Segment trimmed(double s0, double s1) const noexcept;
+
+  /// Norm of v over the metric axes.
+  double metric_norm(const AxisVec& v) const noexcept;
+
+ private:
+  PathPoint at_raw(double s) const noexcept;
+  AxisVec point_raw(double s) const noexcept;
+  PathPoint bezier_at(const BezierGeom& g, double s) const noexcept;  // path_bezier.cpp
+  DerivativeBounds bezier_bounds() const noexcept;                    // path_bezier.cpp
+
+  std::variant<LineGeom, ArcGeom, BezierGeom> geom_;
+  std::uint8_t n_ = 0;
+  AxisMask metric_ = 0;
+  double s_lo_ = 0.0;  ///< window start in the underlying geometry [mm]
+  double s_hi_ = 0.0;  ///< window end [mm]
+};
+
+/// The metric used for a displacement: the path axes if they move, else every axis.
+AxisMask effective_metric(std::uint8_t axis_count, AxisMask path_axes, const AxisVec& delta);
+
+}  // namespace ncsim::planner

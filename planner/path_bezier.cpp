@@ -1,0 +1,168 @@
+// planner/path: quintic Bezier blends with a numerical arc-length parametrisation.
+// B(t) = sum_k C(5,k) (1-t)^(5-k) t^k P_k, t in [0, 1]. Arc length s(t) = int_0^t |B'|_metric;
+// a table holds s at t = k/32 (5-point Gauss-Legendre per interval), s -> t inverts it by
+// Newton steps inside the table interval. Derivatives with respect to s (sigma = |B'|):
+//   x'   = B1 / sigma
+//   x''  = B2 / sigma^2 - B1 sigma' / sigma^3,            sigma'  = (B1.B2) / sigma
+//   x''' = B3 / sigma^3 - 3 B2 sigma' / sigma^4 - B1 sigma'' / sigma^4 + 3 B1 sigma'^2 / sigma^5,
+//          sigma'' = ((B2.B2) + (B1.B3) - sigma'^2) / sigma   (dots over the metric axes).
+
+#include <algorithm>
+#include <cmath>
+
+#include "planner/path.hpp"
+
+namespace ncsim::planner {
+
+namespace {
+
+bool has(AxisMask mask, std::size_t i) {
+  return ((mask >> i) & 1U) != 0;
+}
+
+// 5-point Gauss-Legendre nodes and weights on [-1, 1].
+constexpr std::array<double, 5> kGlX = {-0.9061798459386640, -0.5384693101056831, 0.0,
+                                        0.5384693101056831, 0.9061798459386640};
+constexpr std::array<double, 5> kGlW = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
+                                        0.4786286704993665, 0.2369268850561891};
+
+/// Value of the d-th derivative (d = 0..3) of the quintic with coefficients p at t.
+double bernstein_derivative(const std::array<double, 6>& p, int d, double t) {
+  // Forward differences d times, scaled by 5 * 4 * ... .
+  std::array<double, 6> c = p;
+  int m = 5;
+  double scale = 1.0;
+  for (int k = 0; k < d; ++k) {
+    for (int i = 0; i < m; ++i)
+      c[i] = c[i + 1] - c[i];
+    scale *= m;
+    --m;
+  }
+  // de Casteljau on degree m.
+  for (int r = 1; r <= m; ++r)
+    for (int i = 0; i <= m - r; ++i)
+      c[i] = (1.0 - t) * c[i] + t * c[i + 1];
+  return scale * c[0];
+}
+
+struct Derivs {
+  AxisVec b0{}, b1{}, b2{}, b3{};
+};
+
+Derivs eval(const std::array<AxisVec, 6>& p, std::size_t n, double t) {
+  Derivs d;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::array<double, 6> c = {p[0][i], p[1][i], p[2][i], p[3][i], p[4][i], p[5][i]};
+    d.b0[i] = bernstein_derivative(c, 0, t);
+    d.b1[i] = bernstein_derivative(c, 1, t);
+    d.b2[i] = bernstein_derivative(c, 2, t);
+    d.b3[i] = bernstein_derivative(c, 3, t);
+  }
+  return d;
+}
+
+double speed(const std::array<AxisVec, 6>& p, std::size_t n, AxisMask metric, double t) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!has(metric, i)) continue;
+    const std::array<double, 6> c = {p[0][i], p[1][i], p[2][i], p[3][i], p[4][i], p[5][i]};
+    const double v = bernstein_derivative(c, 1, t);
+    sum += v * v;
+  }
+  return std::sqrt(sum);
+}
+
+double integrate_speed(const std::array<AxisVec, 6>& p, std::size_t n, AxisMask metric, double a,
+                       double b) {
+  const double h = 0.5 * (b - a);
+  const double m = 0.5 * (a + b);
+  double sum = 0.0;
+  for (std::size_t k = 0; k < kGlX.size(); ++k)
+    sum += kGlW[k] * speed(p, n, metric, m + h * kGlX[k]);
+  return h * sum;
+}
+
+}  // namespace
+
+Segment Segment::bezier(std::uint8_t axis_count, AxisMask metric, const std::array<AxisVec, 6>& p) {
+  Segment seg;
+  seg.n_ = axis_count;
+  AxisMask all = 0;
+  for (std::size_t i = 0; i < axis_count; ++i)
+    all |= AxisMask{1} << i;
+  seg.metric_ = metric & all;  // the caller passes the metric of the blended segments
+  BezierGeom g;
+  g.p = p;
+  constexpr double dt = 1.0 / BezierGeom::kTable;
+  for (int k = 0; k < BezierGeom::kTable; ++k)
+    g.s_at[k + 1] = g.s_at[k] + integrate_speed(p, axis_count, seg.metric_, k * dt, (k + 1) * dt);
+  seg.s_hi_ = g.s_at[BezierGeom::kTable];
+  seg.geom_ = g;
+  return seg;
+}
+
+PathPoint Segment::bezier_at(const BezierGeom& g, double s) const noexcept {
+  constexpr double dt = 1.0 / BezierGeom::kTable;
+  const auto it = std::upper_bound(g.s_at.begin(), g.s_at.end(), s);
+  const int k = std::clamp(static_cast<int>(it - g.s_at.begin()) - 1, 0, BezierGeom::kTable - 1);
+  const double t_k = k * dt;
+  const double s_k = g.s_at[k];
+  const double span = g.s_at[k + 1] - s_k;
+  double t = span > 0.0 ? t_k + dt * std::clamp((s - s_k) / span, 0.0, 1.0) : t_k;
+  for (int iter = 0; iter < 6; ++iter) {
+    const double sp = speed(g.p, n_, metric_, t);
+    if (sp <= 0.0) break;
+    const double f = integrate_speed(g.p, n_, metric_, t_k, t) - (s - s_k);
+    const double step = f / sp;
+    t = std::clamp(t - step, t_k, t_k + dt);
+    if (std::abs(step) < 1e-15) break;
+  }
+  const Derivs d = eval(g.p, n_, t);
+  double b11 = 0.0, b12 = 0.0, b22 = 0.0, b13 = 0.0;
+  for (std::size_t i = 0; i < n_; ++i) {
+    if (!has(metric_, i)) continue;
+    b11 += d.b1[i] * d.b1[i];
+    b12 += d.b1[i] * d.b2[i];
+    b22 += d.b2[i] * d.b2[i];
+    b13 += d.b1[i] * d.b3[i];
+  }
+  PathPoint p;
+  p.x = d.b0;
+  const double sg = std::sqrt(b11);
+  if (sg <= 0.0) return p;
+  const double sg1 = b12 / sg;
+  const double sg2 = (b22 + b13 - sg1 * sg1) / sg;
+  const double s2 = sg * sg;
+  const double s3 = s2 * sg;
+  const double s4 = s3 * sg;
+  const double s5 = s4 * sg;
+  for (std::size_t i = 0; i < n_; ++i) {
+    p.d1[i] = d.b1[i] / sg;
+    p.d2[i] = d.b2[i] / s2 - d.b1[i] * sg1 / s3;
+    p.d3[i] = d.b3[i] / s3 - 3.0 * d.b2[i] * sg1 / s4 - d.b1[i] * sg2 / s4 +
+              3.0 * d.b1[i] * sg1 * sg1 / s5;
+  }
+  return p;
+}
+
+DerivativeBounds Segment::bezier_bounds() const noexcept {
+  constexpr int kSamples = 256;
+  constexpr double kMargin = 1.01;
+  DerivativeBounds b;
+  for (int k = 0; k <= kSamples; ++k) {
+    const PathPoint p = at(length() * k / kSamples);
+    for (std::size_t i = 0; i < n_; ++i) {
+      b.d1[i] = std::max(b.d1[i], std::abs(p.d1[i]));
+      b.d2[i] = std::max(b.d2[i], std::abs(p.d2[i]));
+      b.d3[i] = std::max(b.d3[i], std::abs(p.d3[i]));
+    }
+  }
+  for (std::size_t i = 0; i < n_; ++i) {
+    b.d1[i] = has(metric_, i) ? std::min(1.0, b.d1[i] * kMargin) : b.d1[i] * kMargin;
+    b.d2[i] *= kMargin;
+    b.d3[i] *= kMargin;
+  }
+  return b;
+}
+
+}  // namespace ncsim::planner
