@@ -1,0 +1,124 @@
+// planner/prepare: joints between consecutive Moves (rules in prepare.hpp).
+
+#include "planner/prepare.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "planner/blend.hpp"
+
+namespace ncsim::planner {
+
+namespace {
+
+constexpr double kMinLength = 1e-9;  // [mm] shorter moves carry no path
+
+StopReason requested_stop(const Move& move) {
+  if (move.transition == Transition::stop_at_end) return StopReason::stop_at_end;
+  if (move.exact_stop) return StopReason::exact_stop;
+  return StopReason::none;
+}
+
+}  // namespace
+
+Preparer::Preparer(std::span<const AxisLimits> axes, ChannelLimits channel)
+    : axes_(axes), channel_(channel) {
+  validate(axes);
+  if (!(channel.t_cycle > 0.0))
+    throw std::invalid_argument("planner: interpolation cycle must be > 0, got " +
+                                std::to_string(channel.t_cycle));
+}
+
+PreparedSegment Preparer::make(const Segment& path, const Move& move, bool blend) const {
+  PreparedSegment ps;
+  ps.path = path;
+  ps.limits = path_limits(path, move, axes_);
+  ps.blend = blend;
+  ps.line = move.line;
+  return ps;
+}
+
+void Preparer::emit_joint(PreparedSegment in, const Move& in_move, const Segment& out_path,
+                          double v_out, std::vector<PreparedSegment>& out) const {
+  const std::uint8_t n = std::max(in.path.axis_count(), out_path.axis_count());
+  const AxisMask metric = in.path.metric() | out_path.metric();
+  // #TRANSVELMIN acts at discontinuous transitions, not with G261 (isg-language.md §5.6).
+  const std::optional<double> v_min =
+      in_move.contour == Contour::tolerance ? std::nullopt : in_move.transvelmin;
+  const Link link =
+      link_velocity(in.path.at(in.path.length()), out_path.at(0.0), n, metric, axes_, channel_,
+                    in.limits.v_end, v_out, v_min, jerk_limited(in_move.slope));
+  in.v_end = link.v_link;
+  in.a_zero_at_end = link.zero_acceleration;
+  in.joint = link.cls;
+  in.rule = link.rule;
+  in.stop = StopReason::none;
+  out.push_back(std::move(in));
+}
+
+void Preparer::emit_stop(const Pending& p, StopReason why,
+                         std::vector<PreparedSegment>& out) const {
+  PreparedSegment ps = make(p.path, p.move, false);
+  ps.v_end = 0.0;
+  ps.a_zero_at_end = true;
+  ps.stop = why;
+  out.push_back(std::move(ps));
+}
+
+void Preparer::push(const Move& move, std::vector<PreparedSegment>& out) {
+  validate(move);
+  const Segment seg = Segment::from_move(move);
+  if (seg.length() < kMinLength) {
+    if (pending_ && pending_->stop == StopReason::none) pending_->stop = requested_stop(move);
+    return;
+  }
+  if (!pending_) {
+    pending_ = Pending{move, seg, seg.length(), StopReason::none};
+    return;
+  }
+  Pending p = std::move(*pending_);
+  pending_ = Pending{move, seg, seg.length(), StopReason::none};
+
+  StopReason stop = p.stop != StopReason::none ? p.stop : requested_stop(p.move);
+  if (stop == StopReason::none && p.move.rapid && !move.rapid) stop = StopReason::rapid_to_feed;
+  if (stop != StopReason::none) {
+    emit_stop(p, stop, out);
+    return;
+  }
+
+  if (p.move.contour == Contour::tolerance) {
+    const auto ball = make_blend(p.path, seg, p.move.path_dev,
+                                 std::min(p.full_length / 2, p.path.length()), seg.length() / 2);
+    if (ball) {
+      const Segment in_path = p.path.trimmed(0.0, p.path.length() - ball->cut_in);
+      const Segment out_path = seg.trimmed(ball->cut_out, seg.length());
+      const PathLimits out_limits = path_limits(out_path, move, axes_);
+      // The blend moves at most at the slower of its neighbours' programmed velocities.
+      PreparedSegment in_ps = make(in_path, p.move, false);
+      Move blend_move = p.move;
+      blend_move.rapid = false;
+      blend_move.block_time.reset();
+      blend_move.end_feed.reset();
+      blend_move.feed = std::min(in_ps.limits.v_programmed, out_limits.v_programmed);
+      PreparedSegment blend_ps = make(ball->curve, blend_move, true);
+      if (in_path.length() >= kMinLength)
+        emit_joint(std::move(in_ps), p.move, ball->curve, blend_ps.limits.v_max, out);
+      emit_joint(std::move(blend_ps), blend_move, out_path, out_limits.v_max, out);
+      pending_->path = out_path;
+      return;
+    }
+  }
+  emit_joint(make(p.path, p.move, false), p.move, seg, path_limits(seg, move, axes_).v_max, out);
+}
+
+void Preparer::finish(std::vector<PreparedSegment>& out) {
+  if (!pending_) return;
+  const StopReason requested =
+      pending_->stop != StopReason::none ? pending_->stop : requested_stop(pending_->move);
+  emit_stop(*pending_, requested != StopReason::none ? requested : StopReason::end_of_stream, out);
+  pending_.reset();
+}
+
+}  // namespace ncsim::planner

@@ -1,0 +1,81 @@
+#pragma once
+// planner/prepare: from a stream of Moves to planned path segments with joint velocities.
+//
+// Purpose: the stage before the look-ahead. Each Move becomes a Segment with its PathLimits;
+// each joint to the next Move becomes either a stop (G09, G60/G360, G00 -> G01/G02/G03, end of
+// the stream), a tolerance-ball blend (G61/G261 PATH_DEV) inserted as its own segment, or a
+// link at the velocity corner.hpp allows.
+// Inputs: Moves in program order (push), then finish() at the end of the stream (#FLUSH, M30).
+// Outputs: PreparedSegments appended to the caller's vector, in path order. A segment is only
+// emitted once its successor is known (the joint needs both), so the stage holds one Move.
+// Invariants: consecutive emitted segments join (end of one == start of the next); v_end of a
+// segment is its joint velocity cap (0 at a stop); memory is one pending segment, whatever the
+// length of the stream. Zero-length moves (below 1e-9 mm) are dropped; their stop request
+// (G09, G60) passes to the joint before them.
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "planner/corner.hpp"
+#include "planner/limits.hpp"
+#include "planner/move.hpp"
+#include "planner/path.hpp"
+
+namespace ncsim::planner {
+
+/// Why the path velocity is 0 at the end of a segment.
+enum class StopReason : std::uint8_t {
+  none,           ///< no stop: the joint is passed at up to v_end
+  stop_at_end,    ///< G09
+  exact_stop,     ///< G60 / G360 (the exact-stop window is checked by the interpolator)
+  rapid_to_feed,  ///< G00 followed by G01/G02/G03 behaves like G09 (isg-language.md §2.4)
+  end_of_stream,  ///< the last segment before finish() (#FLUSH, end of program)
+};
+
+/// One segment ready for the look-ahead.
+struct PreparedSegment {
+  Segment path;               ///< the curve (blocks trimmed by tolerance balls)
+  PathLimits limits;          ///< velocity cap and path a, d, j on this segment
+  double v_end = 0.0;         ///< cap of the velocity at the end joint [mm/s]
+  bool a_zero_at_end = true;  ///< path acceleration must be 0 at the end joint (C0, C1, stop)
+  StopReason stop = StopReason::none;
+  TransitionClass joint = TransitionClass::c0;  ///< class of the end joint (when not a stop)
+  LinkRule rule = LinkRule::segment_caps;       ///< what set v_end (when not a stop)
+  bool blend = false;                           ///< a tolerance-ball blend, not a programmed block
+  std::uint32_t line = 0;  ///< source line (a blend carries its incoming block's line)
+};
+
+class Preparer {
+ public:
+  /// `axes` must outlive the Preparer (one entry per machine axis in use); throws
+  /// std::invalid_argument on unusable limits.
+  Preparer(std::span<const AxisLimits> axes, ChannelLimits channel);
+
+  /// Adds the next Move; appends the segments that became complete. Throws
+  /// std::invalid_argument when the Move is malformed (validate()).
+  void push(const Move& move, std::vector<PreparedSegment>& out);
+  /// End of the stream: appends the held segment, ending in a stop.
+  void finish(std::vector<PreparedSegment>& out);
+
+ private:
+  struct Pending {
+    Move move;
+    Segment path;            ///< possibly trimmed at its start by a blend
+    double full_length = 0;  ///< length before any trimming [mm]
+    StopReason stop = StopReason::none;
+  };
+  PreparedSegment make(const Segment& path, const Move& move, bool blend) const;
+  /// Appends `in` with its end joint to `out_path` (velocity cap v_out) resolved.
+  void emit_joint(PreparedSegment in, const Move& in_move, const Segment& out_path, double v_out,
+                  std::vector<PreparedSegment>& out) const;
+  /// Appends the pending segment ending in a stop.
+  void emit_stop(const Pending& p, StopReason why, std::vector<PreparedSegment>& out) const;
+
+  std::span<const AxisLimits> axes_;
+  ChannelLimits channel_;
+  std::optional<Pending> pending_;
+};
+
+}  // namespace ncsim::planner

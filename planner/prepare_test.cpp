@@ -1,0 +1,173 @@
+// Preparation: stops (G09, G60, G00 -> G01, end of stream), VELOJUMP links, tolerance-ball
+// blends inserted between trimmed blocks, zero-length moves, and joined, bounded output.
+
+#include "planner/prepare.hpp"
+
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace {
+
+using namespace ncsim::planner;
+
+AxisVec vec(double x, double y, double z = 0.0) {
+  AxisVec v{};
+  v[0] = x;
+  v[1] = y;
+  v[2] = z;
+  return v;
+}
+
+std::array<AxisLimits, 3> limits() {
+  AxisLimits ax;
+  ax.v_max = ax.v_reference = ax.v_rapid = 1000.0;
+  ax.a_max = ax.d_max = 10000.0;
+  ax.j_max = 1e6;
+  return {ax, ax, ax};
+}
+
+Move line(AxisVec a, AxisVec b, double feed = 100.0, std::uint32_t n = 1) {
+  Move m;
+  m.start = a;
+  m.end = b;
+  m.feed = feed;
+  m.line = n;
+  return m;
+}
+
+double gap(const AxisVec& a, const AxisVec& b) {
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                   (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+}  // namespace
+
+TEST_CASE("a 90 degree corner without contouring links at the VELOJUMP velocity") {
+  const auto ax = limits();
+  Preparer prep(ax, ChannelLimits{});
+  std::vector<PreparedSegment> out;
+  prep.push(line(vec(0, 0), vec(10, 0)), out);
+  CHECK(out.empty());  // the joint needs the next block
+  prep.push(line(vec(10, 0), vec(10, 10)), out);
+  REQUIRE(out.size() == 1);
+  CHECK(out[0].v_end == doctest::Approx(10.0));
+  CHECK(out[0].joint == TransitionClass::c0);
+  CHECK(out[0].rule == LinkRule::velojump);
+  CHECK(out[0].a_zero_at_end);
+  prep.finish(out);
+  REQUIRE(out.size() == 2);
+  CHECK(out[1].v_end == 0.0);
+  CHECK(out[1].stop == StopReason::end_of_stream);
+}
+
+TEST_CASE("G09, G60 and G00 followed by G01 stop at the block end") {
+  const auto ax = limits();
+  for (int which = 0; which < 3; ++which) {
+    Preparer prep(ax, ChannelLimits{});
+    std::vector<PreparedSegment> out;
+    Move first = line(vec(0, 0), vec(10, 0));
+    if (which == 0) first.transition = Transition::stop_at_end;
+    if (which == 1) first.exact_stop = true;
+    if (which == 2) first.rapid = true;
+    prep.push(first, out);
+    prep.push(line(vec(10, 0), vec(20, 0)), out);
+    REQUIRE(out.size() == 1);
+    CHECK(out[0].v_end == 0.0);
+    const StopReason expected[] = {StopReason::stop_at_end, StopReason::exact_stop,
+                                   StopReason::rapid_to_feed};
+    CHECK(out[0].stop == expected[which]);
+  }
+}
+
+TEST_CASE("collinear blocks join as C2 at the smaller cap") {
+  const auto ax = limits();
+  Preparer prep(ax, ChannelLimits{});
+  std::vector<PreparedSegment> out;
+  prep.push(line(vec(0, 0), vec(10, 0), 100.0), out);
+  prep.push(line(vec(10, 0), vec(20, 0), 60.0), out);
+  REQUIRE(out.size() == 1);
+  CHECK(out[0].joint == TransitionClass::c2);
+  CHECK(out[0].v_end == doctest::Approx(60.0));
+  CHECK_FALSE(out[0].a_zero_at_end);
+}
+
+TEST_CASE("a zero-length G09 block stops the joint before it") {
+  const auto ax = limits();
+  Preparer prep(ax, ChannelLimits{});
+  std::vector<PreparedSegment> out;
+  prep.push(line(vec(0, 0), vec(10, 0)), out);
+  Move still = line(vec(10, 0), vec(10, 0));
+  still.transition = Transition::stop_at_end;
+  prep.push(still, out);
+  prep.push(line(vec(10, 0), vec(20, 0)), out);
+  REQUIRE(out.size() == 1);
+  CHECK(out[0].stop == StopReason::stop_at_end);
+}
+
+TEST_CASE("G261 inserts a blend between the trimmed blocks; every joint is C2") {
+  const auto ax = limits();
+  Preparer prep(ax, ChannelLimits{});
+  std::vector<PreparedSegment> out;
+  const AxisVec square[] = {vec(0, 0), vec(20, 0), vec(20, 20), vec(0, 20), vec(0, 0)};
+  for (int k = 0; k < 4; ++k) {
+    Move m = line(square[k], square[k + 1], 100.0, static_cast<std::uint32_t>(k + 1));
+    m.contour = Contour::tolerance;
+    m.path_dev = 1.0;
+    prep.push(m, out);
+  }
+  prep.finish(out);
+  // line, blend, line, blend, line, blend, line
+  REQUIRE(out.size() == 7);
+  double total = 0.0;
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    CHECK(out[k].blend == (k % 2 == 1));
+    total += out[k].path.length();
+    if (k + 1 < out.size()) {
+      CHECK(gap(out[k].path.end(), out[k + 1].path.start()) < 1e-9);
+      CHECK(out[k].joint == TransitionClass::c2);
+      CHECK(out[k].v_end > 10.0);  // faster than the VELOJUMP corner
+    }
+  }
+  CHECK(out[0].path.length() == doctest::Approx(19.0));
+  CHECK(out[2].path.length() == doctest::Approx(18.0));
+  CHECK(total < 80.0);
+  CHECK(out[1].line == 1);
+  CHECK(out.back().stop == StopReason::end_of_stream);
+}
+
+TEST_CASE("property: random polylines give joined segments with bounded joint velocities") {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const auto ax = limits();
+  for (int run = 0; run < 20; ++run) {
+    Preparer prep(ax, ChannelLimits{});
+    std::vector<PreparedSegment> out;
+    std::size_t emitted = 0;
+    AxisVec p = vec(0, 0, 0);
+    for (int k = 0; k < 200; ++k) {
+      const AxisVec q = vec(p[0] + 5 * u(rng), p[1] + 5 * u(rng), p[2] + u(rng));
+      Move m = line(p, q, 10 + 100 * std::abs(u(rng)));
+      m.contour = run % 2 == 0 ? Contour::tolerance : Contour::none;
+      m.path_dev = 0.01 + std::abs(u(rng));
+      m.slope = SlopeType::trapez;
+      prep.push(m, out);
+      p = q;
+      CHECK(out.size() <= 3);  // bounded: at most a block and a blend per push
+      for (std::size_t i = 0; i + 1 < out.size(); ++i)
+        CHECK(gap(out[i].path.end(), out[i + 1].path.start()) < 1e-9);
+      for (const auto& s : out) {
+        CHECK(s.v_end <= s.limits.v_max * (1 + 1e-12));
+        CHECK(s.v_end >= 0.0);
+      }
+      emitted += out.size() > 0 ? out.size() - 1 : 0;
+      if (out.size() > 1) out.erase(out.begin(), out.end() - 1);  // keep the last for joins
+    }
+    prep.finish(out);
+    CHECK(out.back().v_end == 0.0);
+    CHECK(emitted > 150);
+  }
+}
