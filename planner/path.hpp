@@ -108,8 +108,10 @@ class Segment {
  private:
   PathPoint at_raw(double s) const noexcept;
   AxisVec point_raw(double s) const noexcept;
-  PathPoint bezier_at(const BezierGeom& g, double s) const noexcept;  // path_bezier.cpp
-  DerivativeBounds bezier_bounds() const noexcept;                    // path_bezier.cpp
+  PathPoint bezier_at(const BezierGeom& g, double s) const noexcept;    // path_bezier.cpp
+  double bezier_t(const BezierGeom& g, double s) const noexcept;        // s -> t
+  PathPoint bezier_at_t(const BezierGeom& g, double t) const noexcept;  // at curve parameter t
+  DerivativeBounds bezier_bounds() const noexcept;                      // path_bezier.cpp
 
   std::variant<LineGeom, ArcGeom, BezierGeom> geom_;
   std::uint8_t n_ = 0;

@@ -101,7 +101,7 @@ Segment Segment::bezier(std::uint8_t axis_count, AxisMask metric, const std::arr
   return seg;
 }
 
-PathPoint Segment::bezier_at(const BezierGeom& g, double s) const noexcept {
+double Segment::bezier_t(const BezierGeom& g, double s) const noexcept {
   constexpr double dt = 1.0 / BezierGeom::kTable;
   const auto it = std::upper_bound(g.s_at.begin(), g.s_at.end(), s);
   const int k = std::clamp(static_cast<int>(it - g.s_at.begin()) - 1, 0, BezierGeom::kTable - 1);
@@ -117,6 +117,10 @@ PathPoint Segment::bezier_at(const BezierGeom& g, double s) const noexcept {
     t = std::clamp(t - step, t_k, t_k + dt);
     if (std::abs(step) < 1e-15) break;
   }
+  return t;
+}
+
+PathPoint Segment::bezier_at_t(const BezierGeom& g, double t) const noexcept {
   const Derivs d = eval(g.p, n_, t);
   double b11 = 0.0, b12 = 0.0, b22 = 0.0, b13 = 0.0;
   for (std::size_t i = 0; i < n_; ++i) {
@@ -145,12 +149,20 @@ PathPoint Segment::bezier_at(const BezierGeom& g, double s) const noexcept {
   return p;
 }
 
+PathPoint Segment::bezier_at(const BezierGeom& g, double s) const noexcept {
+  return bezier_at_t(g, bezier_t(g, s));
+}
+
 DerivativeBounds Segment::bezier_bounds() const noexcept {
+  // Uniform in the curve parameter t over the window (no arc-length inversion per sample).
   constexpr int kSamples = 256;
   constexpr double kMargin = 1.01;
+  const BezierGeom& g = std::get<BezierGeom>(geom_);
+  const double t0 = bezier_t(g, s_lo_);
+  const double t1 = bezier_t(g, s_hi_);
   DerivativeBounds b;
   for (int k = 0; k <= kSamples; ++k) {
-    const PathPoint p = at(length() * k / kSamples);
+    const PathPoint p = bezier_at_t(g, t0 + (t1 - t0) * k / kSamples);
     for (std::size_t i = 0; i < n_; ++i) {
       b.d1[i] = std::max(b.d1[i], std::abs(p.d1[i]));
       b.d2[i] = std::max(b.d2[i], std::abs(p.d2[i]));
