@@ -49,8 +49,8 @@ SlaveAxis::SlaveAxis(const Dynamics& dynamics, double position)
   if (!valid(dynamics)) {
     throw std::invalid_argument(
         "slave axis dynamics (V " + core::number_text(dynamics.v_max) + ", A+ " +
-        core::number_text(dynamics.acc_max) + ", A- " + core::number_text(dynamics.dec_max) +
-        ", J " + core::number_text(dynamics.jerk_max) + "): each must be finite and > 0");
+        core::number_text(dynamics.a_max) + ", A- " + core::number_text(dynamics.d_max) + ", J " +
+        core::number_text(dynamics.j_max) + "): each must be finite and > 0");
   }
   setpoint_.p = position;
 }
@@ -91,7 +91,7 @@ CouplingResult SlaveAxis::decouple() noexcept {
     return CouplingResult::ok;
   }
   // Velocity reached when the acceleration is ramped to zero with jerk J.
-  const double v_carry = now.v + now.a * std::fabs(now.a) / (2.0 * dynamics_.jerk_max);
+  const double v_carry = now.v + now.a * std::fabs(now.a) / (2.0 * dynamics_.j_max);
   Profile profile;
   return adopt(plan_velocity(now, v_carry, dynamics_, profile), profile);
 }

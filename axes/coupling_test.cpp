@@ -75,8 +75,8 @@ void check_continuous(const Setpoint& a, const Setpoint& b) {
   // One cycle apart: position moves with the velocity, velocity with the acceleration,
   // acceleration with at most the jerk J.
   CHECK(std::fabs(b.p - a.p - 0.5 * (a.v + b.v) * kT) < 1e-3);
-  CHECK(std::fabs(b.v - a.v) <= std::fabs(a.a) * kT + kDynamics.jerk_max * kT * kT + 1e-9);
-  CHECK(std::fabs(b.a - a.a) <= kDynamics.jerk_max * kT + 1e-6);
+  CHECK(std::fabs(b.v - a.v) <= std::fabs(a.a) * kT + kDynamics.j_max * kT * kT + 1e-9);
+  CHECK(std::fabs(b.a - a.a) <= kDynamics.j_max * kT + 1e-6);
 }
 
 TEST_CASE("online decoupling at constant velocity: the slave carries on, then stops alone") {

@@ -143,7 +143,7 @@ TEST_CASE("invalid homing parameters throw naming the parameter") {
   CHECK_THROWS_WITH_AS(Homing(params, 0.0), doctest::Contains("towards plc cam"),
                        std::invalid_argument);
   params = params_for_test();
-  params.dynamics.jerk_max = -1.0;
+  params.dynamics.j_max = -1.0;
   CHECK_THROWS_AS(Homing(params, 0.0), std::invalid_argument);
 }
 

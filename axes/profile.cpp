@@ -58,23 +58,17 @@ std::string_view describe(Result result) noexcept {
   return {};
 }
 
-bool valid(const Dynamics& dynamics) noexcept {
-  const auto positive = [](double x) { return std::isfinite(x) && x > 0.0; };
-  return positive(dynamics.v_max) && positive(dynamics.acc_max) && positive(dynamics.dec_max) &&
-         positive(dynamics.jerk_max);
-}
-
 double critical_jerk(const Dynamics& dynamics) noexcept {
   // 002_* 2.1 "kritischer Ruck": J+- = (A+-)^2 / V; both limits reached when J >= the larger.
-  const double a = std::max(dynamics.acc_max, dynamics.dec_max);
+  const double a = std::max(dynamics.a_max, dynamics.d_max);
   return a * a / dynamics.v_max;
 }
 
 Dynamics rescale_jerk(const Dynamics& dynamics, double t_cycle) noexcept {
   Dynamics out = dynamics;
   if (!(t_cycle > 0.0)) return out;
-  const double a_min = std::min(dynamics.acc_max, dynamics.dec_max);
-  if (a_min / dynamics.jerk_max < t_cycle) out.jerk_max = a_min / t_cycle;
+  const double a_min = std::min(dynamics.a_max, dynamics.d_max);
+  if (a_min / dynamics.j_max < t_cycle) out.j_max = a_min / t_cycle;
   return out;
 }
 

@@ -21,6 +21,8 @@
 #include <span>
 #include <string_view>
 
+#include "jerk/jerk.hpp"
+
 namespace ncsim::axes {
 
 namespace detail {
@@ -46,16 +48,13 @@ std::string_view diagnostic_id(Result result) noexcept;
 /// One-line English description of a Result.
 std::string_view describe(Result result) noexcept;
 
-/// Global dynamic parameters and the start velocity of one motion (002_* 2.1, Tab. 1/2).
-struct Dynamics {
-  double v_max = 0.0;     ///< V, requested path velocity [mm/s], > 0
-  double acc_max = 0.0;   ///< A+, path acceleration limit [mm/s^2], > 0
-  double dec_max = 0.0;   ///< A-, path deceleration limit (magnitude) [mm/s^2], > 0
-  double jerk_max = 0.0;  ///< J, jerk [mm/s^3], > 0
-};
+/// Global dynamic parameters of one motion (002_* 2.1, Tab. 1/2): the jerk kernel's Limits
+/// (v_max = V [mm/s], a_max = A+ and d_max = A- [mm/s^2], j_max = J [mm/s^3]), one struct for
+/// the axes, the planner and the kernel.
+using Dynamics = jerk::Limits;
 
 /// True when every value is finite and > 0.
-bool valid(const Dynamics& dynamics) noexcept;
+using jerk::valid;
 
 /// Critical jerk (002_* 2.1): the J at which A+ and A- are just reached at velocity V,
 /// max(A+, A-)^2 / V [mm/s^3].
@@ -66,12 +65,8 @@ double critical_jerk(const Dynamics& dynamics) noexcept;
 /// cycle. Returns the dynamics unchanged otherwise.
 Dynamics rescale_jerk(const Dynamics& dynamics, double t_cycle) noexcept;
 
-/// State of an axis at one instant.
-struct MotionState {
-  double p = 0.0;  ///< position [mm]
-  double v = 0.0;  ///< velocity [mm/s]
-  double a = 0.0;  ///< acceleration [mm/s^2]
-};
+/// State of an axis at one instant (position [mm], velocity [mm/s], acceleration [mm/s^2]).
+using MotionState = jerk::State;
 
 /// Command values of one instant (what the position controller receives).
 struct Setpoint {

@@ -14,58 +14,13 @@ namespace {
 
 // Closed-form advance of (p, v, a) over dt with constant jerk j.
 void advance(double& p, double& v, double& a, double j, double dt) noexcept {
-  p += dt * (v + dt * (a * 0.5 + dt * j * (1.0 / 6.0)));
-  v += dt * (a + dt * j * 0.5);
-  a += dt * j;
+  const jerk::State s = jerk::advance(jerk::State{p, v, a}, j, dt);
+  p = s.p;
+  v = s.v;
+  a = s.a;
 }
 
 }  // namespace
-
-VelocityChange velocity_change(double v0, double a0, double v_target, double a_up, double a_down,
-                               double jerk) noexcept {
-  // 002_* 2.1: acceleration built up with J, [held at the limit], reduced with J. The velocity
-  // reached when the acceleration is taken to zero at once decides the direction of the pulse.
-  // Numerics (docs/axes-profile.md): a phase whose length is only the rounding residue of a
-  // difference of nearly equal terms (a_peak - a_s, the hold's velocity excess) is dropped;
-  // kResidue bounds that residue relative to the terms. The state after each phase is set
-  // to its intended value by ProfileBuilder, so dropping it changes nothing measurable.
-  constexpr double kResidue = 8.0 * std::numeric_limits<double>::epsilon();
-  VelocityChange out;
-  out.v_end = v_target;
-  const double v_zero = v0 + a0 * std::abs(a0) / (2.0 * jerk);
-  const double s = v_target >= v_zero ? 1.0 : -1.0;
-  const double a_lim = s > 0.0 ? a_up : a_down;
-  const double a_s = s * a0;              // start acceleration in the pulse's direction
-  const double dv = s * (v_target - v0);  // velocity change in the pulse's direction
-  double a_peak = std::sqrt(std::max(0.0, jerk * dv + 0.5 * a_s * a_s));
-  double t_hold = 0.0;
-  if (a_peak > a_lim) {
-    a_peak = a_lim;
-    const double dv_ramps = (2.0 * a_peak * a_peak - a_s * a_s) / (2.0 * jerk);  // [mm/s]
-    const double dv_hold = dv - dv_ramps;
-    if (dv_hold > kResidue * (std::abs(dv) + std::abs(dv_ramps))) t_hold = dv_hold / a_peak;
-  }
-  const double da_up = a_peak - a_s;  // acceleration change of phase 1 [mm/s^2]
-  out.jerk = {s * jerk, 0.0, -s * jerk};
-  out.duration = {da_up > kResidue * a_peak ? da_up / jerk : 0.0, t_hold, a_peak / jerk};
-  out.a_peak = s * a_peak;
-  return out;
-}
-
-double distance(double v0, double a0, const VelocityChange& change) noexcept {
-  double p = 0.0;
-  double v = v0;
-  double a = a0;
-  for (std::size_t i = 0; i < 3; ++i)
-    advance(p, v, a, change.jerk[i], change.duration[i]);
-  return p;
-}
-
-double ramp_distance(double v, double a_lim, double jerk) noexcept {
-  // Symmetric S-ramp from rest to v: the mean velocity is v/2 over the ramp time.
-  if (v * jerk <= a_lim * a_lim) return v * std::sqrt(v / jerk);
-  return 0.5 * v * (v / a_lim + a_lim / jerk);
-}
 
 ProfileBuilder::ProfileBuilder(Profile& out, const MotionState& start) noexcept
     : out_(out), state_(start) {
@@ -88,7 +43,7 @@ void ProfileBuilder::add(double jerk, double duration, double a_end) noexcept {
   state_.a = a_end;
 }
 
-void ProfileBuilder::add(const VelocityChange& change, double sign) noexcept {
+void ProfileBuilder::add(const Ramp& change, double sign) noexcept {
   // Each phase starts from the boundary value it is meant to start from, not from the rounded
   // integration of the one before: a residual acceleration of ~1e-16 A would otherwise grow
   // into a velocity error a t and a position error a t^2/2 over a long cruise that follows.
@@ -107,12 +62,12 @@ void ProfileBuilder::finish(const MotionState* exact_end) noexcept {
 
 void clamp_acceleration(ProfileBuilder& builder, double sign, const Dynamics& dynamics) noexcept {
   const double a = sign * builder.state().a;
-  if (a > dynamics.acc_max) {
-    builder.add(-sign * dynamics.jerk_max, (a - dynamics.acc_max) / dynamics.jerk_max,
-                sign * dynamics.acc_max);
-  } else if (a < -dynamics.dec_max) {
-    builder.add(sign * dynamics.jerk_max, (-dynamics.dec_max - a) / dynamics.jerk_max,
-                -sign * dynamics.dec_max);
+  if (a > dynamics.a_max) {
+    builder.add(-sign * dynamics.j_max, (a - dynamics.a_max) / dynamics.j_max,
+                sign * dynamics.a_max);
+  } else if (a < -dynamics.d_max) {
+    builder.add(sign * dynamics.j_max, (-dynamics.d_max - a) / dynamics.j_max,
+                -sign * dynamics.d_max);
   }
 }
 
@@ -122,10 +77,10 @@ void append_rest_to_rest(ProfileBuilder& builder, double p_target,
   if (d == 0.0) return;
   const double s = d > 0.0 ? 1.0 : -1.0;
   const double dist = std::abs(d);
-  const double jerk = dynamics.jerk_max;
+  const double jerk = dynamics.j_max;
   // 002_* 2.1: "falls V nicht erreicht werden kann ... die groesste erreichbare Geschwindigkeit
   // (unter der symmetrischen Beschleunigung/Verzoegerung A+- = min(A+, A-))".
-  const double a_sym = std::min(dynamics.acc_max, dynamics.dec_max);
+  const double a_sym = std::min(dynamics.a_max, dynamics.d_max);
   double v_reach = 0.0;
   if (dist * jerk * jerk <= 2.0 * a_sym * a_sym * a_sym) {
     v_reach = std::cbrt(0.25 * dist * dist * jerk);  // A not reached: D = 2 v sqrt(v/J)
@@ -134,17 +89,17 @@ void append_rest_to_rest(ProfileBuilder& builder, double p_target,
     v_reach = 0.5 * a_sym * (std::sqrt(r * r + 4.0 * dist / a_sym) - r);
   }
   const double v_level = std::min(dynamics.v_max, v_reach);
-  const double d_acc = ramp_distance(v_level, dynamics.acc_max, jerk);
-  const double d_dec = ramp_distance(v_level, dynamics.dec_max, jerk);
+  const double d_acc = ramp_distance(v_level, dynamics.a_max, jerk);
+  const double d_dec = ramp_distance(v_level, dynamics.d_max, jerk);
   // A cruise that is only the rounding residue of dist - d_acc - d_dec is dropped (Numerics).
   const double d_cruise = dist - d_acc - d_dec;
   const double t_cruise =
       d_cruise > 8.0 * std::numeric_limits<double>::epsilon() * dist ? d_cruise / v_level : 0.0;
   builder.set_level(v_level);
-  builder.add(velocity_change(0.0, 0.0, v_level, dynamics.acc_max, dynamics.dec_max, jerk), s);
+  builder.add(velocity_ramp(0.0, 0.0, v_level, dynamics.a_max, dynamics.d_max, jerk), s);
   builder.add(0.0, t_cruise);
   builder.mark_brake();
-  builder.add(velocity_change(v_level, 0.0, 0.0, dynamics.acc_max, dynamics.dec_max, jerk), s);
+  builder.add(velocity_ramp(v_level, 0.0, 0.0, dynamics.a_max, dynamics.d_max, jerk), s);
 }
 
 double motion_sign(const MotionState& state, double fallback) noexcept {
@@ -157,9 +112,8 @@ void append_stop(ProfileBuilder& builder, const Dynamics& dynamics) noexcept {
   const double s = motion_sign(builder.state(), 1.0);
   clamp_acceleration(builder, s, dynamics);
   const MotionState& st = builder.state();
-  builder.add(velocity_change(s * st.v, s * st.a, 0.0, dynamics.acc_max, dynamics.dec_max,
-                              dynamics.jerk_max),
-              s);
+  builder.add(
+      velocity_ramp(s * st.v, s * st.a, 0.0, dynamics.a_max, dynamics.d_max, dynamics.j_max), s);
 }
 
 }  // namespace ncsim::axes::detail

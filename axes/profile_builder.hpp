@@ -1,7 +1,7 @@
 #pragma once
 // axes/profile_builder: internal building blocks of the planners in profile_*.cpp (not part of
 // the public API). A ProfileBuilder appends constant-jerk phases to a Profile and integrates the
-// state in closed form; VelocityChange is the time-optimal jerk-limited change from (v0, a0) to
+// state in closed form; Ramp is the time-optimal jerk-limited change from (v0, a0) to
 // (v_target, 0) of 002_* 2.1 (jerk build-up, [constant acceleration], jerk reduction).
 //
 // Frames: the planners work in a "frame" with sign s in {+1, -1}: frame quantities are the
@@ -11,29 +11,16 @@
 #include <array>
 
 #include "axes/profile.hpp"
+#include "jerk/jerk.hpp"
 
 namespace ncsim::axes::detail {
 
-/// Up to three phases (frame jerk, duration) changing the velocity to a target with a = 0.
-/// The intended boundary values travel with it: the builder sets the state to them after the
-/// phases instead of keeping the rounded integration (docs/axes-profile.md, "Numerics").
-struct VelocityChange {
-  std::array<double, 3> jerk{};      // frame jerk [mm/s^3]
-  std::array<double, 3> duration{};  // [s]
-  double a_peak = 0.0;               // frame acceleration after phase 1 and in phase 2 [mm/s^2]
-  double v_end = 0.0;                // frame velocity after phase 3 (acceleration 0) [mm/s]
-};
-
-/// Time-optimal change from frame state (v0, a0) to (v_target, 0); a0 must lie in
-/// [-a_down, a_up]. a_up limits positive, a_down negative frame acceleration.
-VelocityChange velocity_change(double v0, double a0, double v_target, double a_up, double a_down,
-                               double jerk) noexcept;
-
-/// Frame distance travelled by `change` from (v0, a0).
-double distance(double v0, double a0, const VelocityChange& change) noexcept;
-
-/// Distance [mm] of a rest-to-rest-speed ramp from 0 to v [mm/s] under limit a_lim and jerk.
-double ramp_distance(double v, double a_lim, double jerk) noexcept;
+// The velocity change, its distance and the rest-to-speed ramp distance are the jerk kernel's
+// (jerk/jerk.hpp): one home for the 1-D maths shared with planner, ipo and conveyor.
+using jerk::distance;
+using jerk::Ramp;
+using jerk::ramp_distance;
+using jerk::velocity_ramp;
 
 /// Appends phases to a Profile; state integration in closed form.
 class ProfileBuilder {
@@ -46,7 +33,7 @@ class ProfileBuilder {
   void add(double jerk, double duration, double a_end) noexcept;
   /// Appends the phases of `change` in the frame with sign `sign`; the state after each phase
   /// is set to its intended value (acceleration +-a_peak, then velocity v_end with a = 0).
-  void add(const VelocityChange& change, double sign) noexcept;
+  void add(const Ramp& change, double sign) noexcept;
   /// Marks the current time as the start of the braking phase.
   void mark_brake() noexcept { out_.t_brake_ = t_; }
   void set_level(double v_level) noexcept { out_.v_level_ = v_level; }

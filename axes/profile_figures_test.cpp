@@ -147,9 +147,9 @@ TEST_CASE("a negative move mirrors the positive one") {
 TEST_CASE("the jerk is rescaled when a jerk phase would be shorter than one cycle") {
   const Dynamics d{2000, 5000, 10000, 1e9};
   const Dynamics r = ncsim::axes::rescale_jerk(d, 1e-3);
-  CHECK(r.jerk_max == doctest::Approx(5000.0 / 1e-3));
+  CHECK(r.j_max == doctest::Approx(5000.0 / 1e-3));
   const Dynamics kept = ncsim::axes::rescale_jerk(Dynamics{2000, 5000, 5000, 50000}, 1e-3);
-  CHECK(kept.jerk_max == 50000.0);
+  CHECK(kept.j_max == 50000.0);
 }
 
 TEST_CASE("invalid dynamics are reported as a Result, not thrown") {

@@ -24,7 +24,7 @@ using detail::append_stop;
 using detail::distance;
 using detail::ProfileBuilder;
 using detail::ramp_distance;
-using detail::velocity_change;
+using detail::velocity_ramp;
 
 // Relative size of a rounding residue: a difference below kResidue times its terms is zero.
 constexpr double kResidue = 8.0 * std::numeric_limits<double>::epsilon();
@@ -37,14 +37,14 @@ bool finite(const MotionState& s) noexcept {
 // clamp (limits first), then the velocity change to zero.
 double stop_distance(double v, double a, const Dynamics& dyn) noexcept {
   double p = 0.0;
-  const double j = dyn.jerk_max;
+  const double j = dyn.j_max;
   double t = 0.0;
   double jc = 0.0;
-  if (a > dyn.acc_max) {
-    t = (a - dyn.acc_max) / j;
+  if (a > dyn.a_max) {
+    t = (a - dyn.a_max) / j;
     jc = -j;
-  } else if (a < -dyn.dec_max) {
-    t = (-dyn.dec_max - a) / j;
+  } else if (a < -dyn.d_max) {
+    t = (-dyn.d_max - a) / j;
     jc = j;
   }
   if (t > 0.0) {
@@ -52,14 +52,14 @@ double stop_distance(double v, double a, const Dynamics& dyn) noexcept {
     v += t * (a + t * jc * 0.5);
     a += t * jc;
   }
-  return p + distance(v, a, velocity_change(v, a, 0.0, dyn.acc_max, dyn.dec_max, j));
+  return p + distance(v, a, velocity_ramp(v, a, 0.0, dyn.a_max, dyn.d_max, j));
 }
 
 // Distance of: change (v0, a0) -> (vm, 0), then (vm, 0) -> (vf, 0), in the frame.
 double level_distance(double v0, double a0, double vm, double vf, const Dynamics& dyn) noexcept {
-  const double j = dyn.jerk_max;
-  return distance(v0, a0, velocity_change(v0, a0, vm, dyn.acc_max, dyn.dec_max, j)) +
-         distance(vm, 0.0, velocity_change(vm, 0.0, vf, dyn.acc_max, dyn.dec_max, j));
+  const double j = dyn.j_max;
+  return distance(v0, a0, velocity_ramp(v0, a0, vm, dyn.a_max, dyn.d_max, j)) +
+         distance(vm, 0.0, velocity_ramp(vm, 0.0, vf, dyn.a_max, dyn.d_max, j));
 }
 
 // Level vm in [0, v_hi] with level_distance(vm) == dist, given f(0) <= dist < f(v_hi).
@@ -106,10 +106,10 @@ void append_stop_and_return(ProfileBuilder& b, const PositionTarget& target,
   }
   const double s = target.v > 0.0 ? 1.0 : -1.0;
   const double speed = std::abs(target.v);
-  append_rest_to_rest(b, target.p - s * ramp_distance(speed, dyn.acc_max, dyn.jerk_max), dyn);
+  append_rest_to_rest(b, target.p - s * ramp_distance(speed, dyn.a_max, dyn.j_max), dyn);
   b.mark_brake();
   b.set_level(speed);
-  b.add(velocity_change(0.0, 0.0, speed, dyn.acc_max, dyn.dec_max, dyn.jerk_max), s);
+  b.add(velocity_ramp(0.0, 0.0, speed, dyn.a_max, dyn.d_max, dyn.j_max), s);
 }
 
 }  // namespace
@@ -150,7 +150,7 @@ Result plan_position(const MotionState& start, const PositionTarget& target, con
   const double a1 = s * b.state().a;
   const double dist = s * (target.p - b.state().p);
   const double vf = std::abs(target.v);
-  const double j = dyn.jerk_max;
+  const double j = dyn.j_max;
   const double f_hi = level_distance(v1, a1, dyn.v_max, vf, dyn);
   double vm = dyn.v_max;
   double t_cruise = 0.0;
@@ -168,10 +168,10 @@ Result plan_position(const MotionState& start, const PositionTarget& target, con
     if (rest > kResidue * dist && vm > 0.0) t_cruise = rest / vm;
   }
   b.set_level(vm);
-  b.add(velocity_change(v1, a1, vm, dyn.acc_max, dyn.dec_max, j), s);
+  b.add(velocity_ramp(v1, a1, vm, dyn.a_max, dyn.d_max, j), s);
   b.add(0.0, t_cruise);
   b.mark_brake();
-  b.add(velocity_change(vm, 0.0, vf, dyn.acc_max, dyn.dec_max, j), s);
+  b.add(velocity_ramp(vm, 0.0, vf, dyn.a_max, dyn.d_max, j), s);
   b.finish(&end);
   return Result::ok;
 }

@@ -30,9 +30,9 @@ double sign_of(double x, double fallback) noexcept {
 SetpointGenerator::SetpointGenerator(const GeneratorConfig& config, double p_start)
     : config_(config), dynamics_(config.dynamics), base_(Profile::at_rest(p_start)) {
   require_positive(config.dynamics.v_max, "dynamics.v_max (V)");
-  require_positive(config.dynamics.acc_max, "dynamics.acc_max (A+)");
-  require_positive(config.dynamics.dec_max, "dynamics.dec_max (A-)");
-  require_positive(config.dynamics.jerk_max, "dynamics.jerk_max (J)");
+  require_positive(config.dynamics.a_max, "dynamics.a_max (A+)");
+  require_positive(config.dynamics.d_max, "dynamics.d_max (A-)");
+  require_positive(config.dynamics.j_max, "dynamics.j_max (J)");
   require_positive(config.v_axis_max, "v_axis_max");
   if (!(std::isfinite(config.increment) && config.increment >= 0.0)) {
     throw std::invalid_argument("NC5003: GeneratorConfig.increment must be finite and >= 0, got " +
@@ -148,9 +148,9 @@ Result SetpointGenerator::start_velocity(const VelocityCommand& command) noexcep
   if (v > config_.v_axis_max) return Result::error_velocity_limit;
   // isg-language.md 6.3: missing or <= 0 Acceleration/Deceleration/Jerk take the axis values.
   Dynamics d = config_.dynamics;
-  if (command.acceleration > 0.0) d.acc_max = command.acceleration;
-  if (command.deceleration > 0.0) d.dec_max = command.deceleration;
-  if (command.jerk > 0.0) d.jerk_max = command.jerk;
+  if (command.acceleration > 0.0) d.a_max = command.acceleration;
+  if (command.deceleration > 0.0) d.d_max = command.deceleration;
+  if (command.jerk > 0.0) d.j_max = command.jerk;
   d.v_max = v;
   if (!valid(d)) return Result::error_invalid_input;
   double sign = 1.0;
@@ -205,10 +205,10 @@ Result SetpointGenerator::emergency_stop(double dec_max, double jerk_max) noexce
   // 002_* 2.2 "Not-Stop": no emergency stop in a braking phase; the new values are taken
   // only when both exceed the ones given at start.
   if (in_braking_phase()) return Result::ignored_braking_phase;
-  if (dec_max > dynamics_.dec_max && jerk_max > dynamics_.jerk_max && std::isfinite(dec_max) &&
+  if (dec_max > dynamics_.d_max && jerk_max > dynamics_.j_max && std::isfinite(dec_max) &&
       std::isfinite(jerk_max)) {
-    dynamics_.dec_max = dec_max;
-    dynamics_.jerk_max = jerk_max;
+    dynamics_.d_max = dec_max;
+    dynamics_.j_max = jerk_max;
   }
   return stop();
 }

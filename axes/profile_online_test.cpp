@@ -56,8 +56,8 @@ TEST_CASE("a position start runs the 7-phase profile and finishes at rest on the
 
 TEST_CASE("configuration errors throw naming the parameter") {
   GeneratorConfig c = config();
-  c.dynamics.acc_max = -1.0;
-  CHECK_THROWS_WITH_AS(SetpointGenerator{c}, doctest::Contains("acc_max (A+)"),
+  c.dynamics.a_max = -1.0;
+  CHECK_THROWS_WITH_AS(SetpointGenerator{c}, doctest::Contains("a_max (A+)"),
                        std::invalid_argument);
 }
 

@@ -42,7 +42,7 @@ std::string describe(const Case& c) {
   out.precision(17);
   out << "start p=" << c.start.p << " v=" << c.start.v << " a=" << c.start.a
       << " target p=" << c.target.p << " v=" << c.target.v << " V=" << c.dyn.v_max
-      << " A+=" << c.dyn.acc_max << " A-=" << c.dyn.dec_max << " J=" << c.dyn.jerk_max;
+      << " A+=" << c.dyn.a_max << " A-=" << c.dyn.d_max << " J=" << c.dyn.j_max;
   return out.str();
 }
 
@@ -57,9 +57,9 @@ Case random_case(std::mt19937_64& rng) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   Case c;
   c.dyn.v_max = log_uniform(rng, 0.1, 1e4);
-  c.dyn.acc_max = log_uniform(rng, 1.0, 1e5);
-  c.dyn.dec_max = unit(rng) < 0.3 ? c.dyn.acc_max : log_uniform(rng, 1.0, 1e5);
-  c.dyn.jerk_max = log_uniform(rng, 10.0, 1e8);
+  c.dyn.a_max = log_uniform(rng, 1.0, 1e5);
+  c.dyn.d_max = unit(rng) < 0.3 ? c.dyn.a_max : log_uniform(rng, 1.0, 1e5);
+  c.dyn.j_max = log_uniform(rng, 10.0, 1e8);
   const double distance = log_uniform(rng, 1e-3, 1e4) * (unit(rng) < 0.5 ? -1.0 : 1.0);
   c.start.p = (unit(rng) - 0.5) * 2000.0;
   c.target.p = c.start.p + distance;
@@ -67,10 +67,10 @@ Case random_case(std::mt19937_64& rng) {
     const double v = (2.0 * unit(rng) - 1.0) * c.dyn.v_max;
     const double s = v >= 0.0 ? 1.0 : -1.0;
     // path acceleration in [-A-, A+] relative to the direction of motion
-    double a = (unit(rng) * (c.dyn.acc_max + c.dyn.dec_max) - c.dyn.dec_max);
+    double a = (unit(rng) * (c.dyn.a_max + c.dyn.d_max) - c.dyn.d_max);
     const double reserve_up =
-        (1.0 - 1e-6) * std::sqrt(2.0 * c.dyn.jerk_max * (c.dyn.v_max - std::abs(v)));
-    const double reserve_down = (1.0 - 1e-6) * std::sqrt(2.0 * c.dyn.jerk_max * std::abs(v));
+        (1.0 - 1e-6) * std::sqrt(2.0 * c.dyn.j_max * (c.dyn.v_max - std::abs(v)));
+    const double reserve_down = (1.0 - 1e-6) * std::sqrt(2.0 * c.dyn.j_max * std::abs(v));
     a = std::clamp(a, -reserve_down, reserve_up);
     c.start.v = v;
     c.start.a = s * a;
@@ -88,7 +88,7 @@ std::string check_limits(const Case& c, const Profile& p) {
           std::isfinite(ph.j) && std::isfinite(ph.duration) && ph.duration > 0.0)) {
       return "non-finite or empty phase";
     }
-    if (ph.j != 0.0 && std::abs(std::abs(ph.j) - c.dyn.jerk_max) > tol * c.dyn.jerk_max) {
+    if (ph.j != 0.0 && std::abs(std::abs(ph.j) - c.dyn.j_max) > tol * c.dyn.j_max) {
       return "jerk not 0 or J";
     }
     // acceleration is linear in a phase: check both ends; velocity extremum where a = 0
@@ -98,8 +98,7 @@ std::string check_limits(const Case& c, const Profile& p) {
       if (std::abs(s.v) > v_lim) return "velocity above V";
       const double dir = s.v != 0.0 ? (s.v > 0.0 ? 1.0 : -1.0) : (s.a >= 0.0 ? 1.0 : -1.0);
       const double a_path = dir * s.a;
-      if (a_path > c.dyn.acc_max * (1.0 + tol) + tol ||
-          a_path < -c.dyn.dec_max * (1.0 + tol) - tol) {
+      if (a_path > c.dyn.a_max * (1.0 + tol) + tol || a_path < -c.dyn.d_max * (1.0 + tol) - tol) {
         return "acceleration beyond A+/A-";
       }
     }
@@ -148,7 +147,7 @@ std::string check_integration(const Case& c, const Profile& p) {
   long double pos = s.p;
   long double vel = s.v;
   long double acc = s.a;
-  const double a_scale = std::max({c.dyn.acc_max, c.dyn.dec_max, std::abs(c.start.a)});
+  const double a_scale = std::max({c.dyn.a_max, c.dyn.d_max, std::abs(c.start.a)});
   double worst = 0.0;
   double scale = 1e-9;
   for (const auto& ph : p.phases()) {
@@ -225,10 +224,10 @@ std::string plan_and_check(const Case& c, bool integrate) {
   if (why.empty()) why = check_limits(c, p);
   if (why.empty() && integrate) why = check_integration(c, p);
   const bool rest_symmetric =
-      c.start.v == 0.0 && c.start.a == 0.0 && c.target.v == 0.0 && c.dyn.acc_max == c.dyn.dec_max;
+      c.start.v == 0.0 && c.start.a == 0.0 && c.target.v == 0.0 && c.dyn.a_max == c.dyn.d_max;
   if (why.empty() && rest_symmetric) {
-    const double t_ref = reference_min_time(std::abs(c.target.p - c.start.p), c.dyn.v_max,
-                                            c.dyn.acc_max, c.dyn.jerk_max);
+    const double t_ref =
+        reference_min_time(std::abs(c.target.p - c.start.p), c.dyn.v_max, c.dyn.a_max, c.dyn.j_max);
     if (std::abs(p.duration() - t_ref) > 1e-8 * t_ref) why = "rest-to-rest not minimum time";
   }
   return why;
@@ -246,7 +245,7 @@ TEST_CASE("random moves: limits hold, targets are exact, closed form matches int
     Case c = random_case(rng);
     if (i % 4 == 0) {  // rest to rest with A+ = A-: also checked for minimum time
       c.start.v = c.start.a = c.target.v = 0.0;
-      c.dyn.dec_max = c.dyn.acc_max;
+      c.dyn.d_max = c.dyn.a_max;
     }
     const std::string why = plan_and_check(c, i % 5 == 0);
     if (!why.empty() && failures++ < 3) first += why + ": " + describe(c) + "\n";

@@ -20,7 +20,7 @@ bool finite(const MotionState& s) noexcept {
 
 bool valid_ramps(const Dynamics& d) noexcept {
   const auto positive = [](double x) { return std::isfinite(x) && x > 0.0; };
-  return positive(d.acc_max) && positive(d.dec_max) && positive(d.jerk_max);
+  return positive(d.a_max) && positive(d.d_max) && positive(d.j_max);
 }
 
 }  // namespace
@@ -41,8 +41,8 @@ Result plan_velocity(const MotionState& start, double v_target, const Dynamics& 
   const MotionState& st = b.state();
   b.mark_brake();
   b.set_level(std::abs(v_target));
-  b.add(detail::velocity_change(s * st.v, s * st.a, std::abs(v_target), dyn.acc_max, dyn.dec_max,
-                                dyn.jerk_max),
+  b.add(detail::velocity_ramp(s * st.v, s * st.a, std::abs(v_target), dyn.a_max, dyn.d_max,
+                              dyn.j_max),
         s);
   MotionState end = b.state();
   end.v = v_target;

@@ -32,7 +32,7 @@ std::vector<Input> make_inputs(bool moving, std::size_t n) {
     in.target.p = (u(rng) - 0.5) * 2000.0;
     if (moving) {
       in.start.v = (u(rng) - 0.5) * in.dyn.v_max;
-      in.start.a = (u(rng) - 0.5) * 0.2 * in.dyn.acc_max;
+      in.start.a = (u(rng) - 0.5) * 0.2 * in.dyn.a_max;
       if (u(rng) < 0.25) in.target.v = (u(rng) - 0.5) * in.dyn.v_max;
     }
   }

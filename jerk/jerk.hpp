@@ -1,0 +1,137 @@
+#pragma once
+// jerk/jerk: the one home of 1-D jerk-limited motion maths (design.md §1): the axes' setpoint
+// generator, the planner's forward and backward passes, the interpolator and the conveyor
+// catch-up all call these functions and nothing else for "how far / how fast / how long".
+//
+// Purpose: closed-form (or guaranteed-convergent) answers about a single coordinate moved with
+// piecewise constant jerk, bounded acceleration and velocity:
+//  - velocity_ramp / velocity_change: the time-optimal change from (v0, a0) to (v1, a = 0)
+//    (jerk build-up, [constant acceleration], jerk reduction; 002_* 2.1 phases 1-3 / 5-7);
+//  - stopping_distance: the same change to v = 0;
+//  - reachable_velocity / entry_velocity_for_exit: the inverse problems a planner's forward and
+//    backward passes need (highest velocity reachable within a distance);
+//  - move_of_duration: a ramp-cruise-ramp move that takes exactly a prescribed duration (time
+//    synchronisation of several axes, INDP TIME=).
+// Inputs: velocities [mm/s], accelerations [mm/s^2], jerks [mm/s^3], distances [mm], times [s]
+// (or the same with degrees for rotary coordinates). Limits must be finite and > 0.
+// Outputs: small value types (Ramp, TimeDistance, Move); nothing allocates, nothing throws.
+// Invariants: |jerk| is 0 or j in every phase; accelerations stay within the limits except
+// where the start state itself lies beyond them (then they are brought back first, with j);
+// every function is total on finite input (never NaN), and the inverse functions are monotone
+// in the distance and consistent with the forward ones to rounding (jerk_test.cpp).
+// Frame: functions with a_up/a_down work in the caller's frame (a_up bounds positive, a_down
+// negative acceleration). Functions taking Limits use the path meaning of 002_* 2.1 in the
+// frame in which the motion goes forward: a_max bounds speeding up, d_max slowing down.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+namespace ncsim::jerk {
+
+/// Dynamic limits of one coordinate (002_* 2.1, Tab. 1/2; path quantities).
+struct Limits {
+  double v_max = 0.0;  ///< V, velocity limit [mm/s], > 0
+  double a_max = 0.0;  ///< A+, acceleration limit when speeding up [mm/s^2], > 0
+  double d_max = 0.0;  ///< A-, deceleration limit when slowing down (magnitude) [mm/s^2], > 0
+  double j_max = 0.0;  ///< J, jerk limit [mm/s^3], > 0
+};
+
+/// True when every limit is finite and > 0.
+bool valid(const Limits& limits) noexcept;
+
+/// State of a coordinate at one instant.
+struct State {
+  double p = 0.0;  ///< position [mm]
+  double v = 0.0;  ///< velocity [mm/s]
+  double a = 0.0;  ///< acceleration [mm/s^2]
+};
+
+/// State after moving with constant jerk j [mm/s^3] for dt [s] from `s` (closed form).
+State advance(const State& s, double j, double dt) noexcept;
+
+/// Up to three constant-jerk phases that change the velocity to v_end with a = 0: jerk
+/// towards the peak, [hold at a_peak], jerk back to 0. The intended boundary values travel
+/// with it, so a caller chaining phases can start each from its exact value.
+struct Ramp {
+  std::array<double, 3> jerk{};      ///< jerk of each phase [mm/s^3]
+  std::array<double, 3> duration{};  ///< duration of each phase [s], >= 0
+  double a_peak = 0.0;               ///< acceleration after phase 1 and in phase 2 [mm/s^2]
+  double v_end = 0.0;                ///< velocity after phase 3 (acceleration 0) [mm/s]
+  /// Total duration [s].
+  double time() const noexcept { return duration[0] + duration[1] + duration[2]; }
+};
+
+/// Time-optimal change from (v0, a0) to (v1, 0) with |jerk| = j, acceleration within
+/// [-a_down, a_up]. A start acceleration beyond the limit of the pulse's direction is first
+/// brought back to it with j (phase 1 then has the opposite jerk).
+Ramp velocity_ramp(double v0, double a0, double v1, double a_up, double a_down, double j) noexcept;
+
+/// Distance [mm] travelled by `ramp` from (v0, a0).
+double distance(double v0, double a0, const Ramp& ramp) noexcept;
+
+/// Time and distance of a motion piece.
+struct TimeDistance {
+  double t = 0.0;  ///< [s]
+  double s = 0.0;  ///< signed distance [mm]
+};
+
+/// Minimum time and its distance to go from velocity v0 with acceleration a0 to v1 with
+/// acceleration 0, |a| <= a_lim [mm/s^2], |jerk| <= j [mm/s^3].
+TimeDistance velocity_change(double v0, double a0, double v1, double a_lim, double j) noexcept;
+
+/// Minimum time and distance to rest from (v0, a0) with deceleration magnitude <= d_max.
+TimeDistance stopping_distance(double v0, double a0, double d_max, double j) noexcept;
+
+/// Distance [mm] of a ramp from rest to v >= 0 [mm/s] under a_lim and j (symmetric S-ramp).
+double ramp_distance(double v, double a_lim, double j) noexcept;
+
+/// Highest velocity v1 [mm/s] for which the change (v0, a0) -> (v1, 0) under a_lim, j covers
+/// at most the distance s [mm]. The distance of that change grows strictly with v1, so this is
+/// its inverse: velocity_change(v0, a0, reachable_velocity(v0, a0, s, ..), ..).s == s.
+/// Exact to rounding, never NaN, monotone in s.
+double reachable_velocity(double v0, double a0, double s, double a_lim, double j) noexcept;
+
+/// Highest velocity [mm/s] at the start of a distance s >= 0 (acceleration 0 there) from which
+/// the velocity can be brought down to v_exit >= 0 (acceleration 0) within s under d_max, j.
+/// (By time reversal the speed-up from v_exit over s.) Monotone in s, >= v_exit.
+double entry_velocity_for_exit(double v_exit, double s, double d_max, double j) noexcept;
+
+/// A single-peak move: change to v_level, cruise, change to the end velocity. All values in
+/// the frame of the move (sign +1: forward, -1: backward; world = sign * frame).
+struct Move {
+  double sign = 1.0;      ///< world direction of the frame, +1 or -1
+  Ramp first;             ///< (v0, a0) -> (v_level, 0), frame values
+  double t_cruise = 0.0;  ///< cruise at v_level [s]
+  Ramp second;            ///< (v_level, 0) -> (v1, 0), frame values
+  double v_level = 0.0;   ///< frame velocity of the cruise [mm/s], >= 0
+  /// Total duration [s].
+  double time() const noexcept { return first.time() + t_cruise + second.time(); }
+};
+
+/// Outcome of move_of_duration.
+enum class Status : std::uint8_t {
+  ok,             ///< move computed
+  invalid_input,  ///< non-finite input, invalid limits, |v1| > V, negative duration
+  too_short,      ///< the duration is below the minimum of the move family
+  not_supported,  ///< no single-peak move of this duration (needs a reversal)
+};
+
+/// A move from `start` to (p1, v1, a = 0) that takes exactly `duration` [s]: the single-peak
+/// ramp-cruise-ramp family with the cruise level lowered until the time matches. Limits hold
+/// (V, A+, A-, J) from starts inside them. Not supported (Status::not_supported): moves that
+/// must reverse (the frame of travel from p0 to p1 disagrees with v1 or the start cannot stop
+/// within the distance and come back). The end state is met exactly by the chain to rounding.
+Status move_of_duration(const State& start, double p1, double v1, double duration,
+                        const Limits& limits, Move& out) noexcept;
+
+/// Minimum duration [s] of the single-peak family from `start` to (p1, v1, 0) (the level as
+/// high as V and the distance allow); the lower bound accepted by move_of_duration. Returns a
+/// negative value when the family does not apply (Status::not_supported).
+double min_single_peak_time(const State& start, double p1, double v1,
+                            const Limits& limits) noexcept;
+
+/// World state at the end of `move` started from `start` (closed-form chain).
+State end_state(const State& start, const Move& move) noexcept;
+
+}  // namespace ncsim::jerk

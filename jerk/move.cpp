@@ -1,0 +1,205 @@
+// jerk/move.cpp: single-peak moves (change to a level, cruise, change to the end velocity) of
+// minimum or of a prescribed duration (see jerk.hpp).
+//
+// In the frame of travel (D = |p1 - p0| >= 0) a level vm in [0, V] gives
+//     dist(vm) = distance of (v0, a0) -> (vm, 0) + distance of (vm, 0) -> (v1, 0),
+//     T(vm)    = ramp times + (D - dist(vm)) / vm          (needs dist(vm) <= D).
+// The minimum of the family is at the highest feasible level: V when dist(V) <= D, else a
+// root of dist(vm) = D, bracketed by dist(0) <= D < dist(V). T(vm) is continuous and grows
+// without bound as vm -> 0 when dist(0) < D, so every longer duration has a level in
+// (0, vm_top]; both roots are found by a bracketed Illinois iteration (guaranteed: the bracket
+// shrinks every step, with bisection as a fallback). When dist(0) == D the move can dwell at
+// rest between the ramps, which takes up any remaining time.
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "jerk/jerk.hpp"
+
+namespace ncsim::jerk {
+
+namespace {
+
+constexpr double kResidue = 8.0 * std::numeric_limits<double>::epsilon();
+
+// The move in its frame: start (v0, a0), end velocity v1 >= 0, distance d >= 0.
+struct Frame {
+  double sign = 1.0;
+  double v0 = 0.0;
+  double a0 = 0.0;
+  double v1 = 0.0;
+  double d = 0.0;
+};
+
+Frame frame_of(const State& start, double p1, double v1) noexcept {
+  const double dp = p1 - start.p;
+  double sign = 1.0;
+  if (dp != 0.0) {
+    sign = dp > 0.0 ? 1.0 : -1.0;
+  } else if (v1 != 0.0) {
+    sign = v1 > 0.0 ? 1.0 : -1.0;
+  } else if (start.v != 0.0) {
+    sign = start.v > 0.0 ? 1.0 : -1.0;
+  }
+  return Frame{sign, sign * start.v, sign * start.a, sign * v1, std::abs(dp)};
+}
+
+struct Level {
+  Ramp first;
+  Ramp second;
+  double dist = 0.0;    // distance of both ramps [mm]
+  double t_ramp = 0.0;  // time of both ramps [s]
+};
+
+Level level(const Frame& f, double vm, const Limits& lim) noexcept {
+  Level out;
+  out.first = velocity_ramp(f.v0, f.a0, vm, lim.a_max, lim.d_max, lim.j_max);
+  out.second = velocity_ramp(vm, 0.0, f.v1, lim.a_max, lim.d_max, lim.j_max);
+  out.dist = distance(f.v0, f.a0, out.first) + distance(vm, 0.0, out.second);
+  out.t_ramp = out.first.time() + out.second.time();
+  return out;
+}
+
+// Root of g between x_neg (g <= 0) and x_pos (g > 0), in either order (Illinois, bisection
+// as a fallback); returns the final x_neg, where g <= 0.
+template <class G>
+double solve_bracket(double x_neg, double x_pos, double g_neg, double g_pos, double tol,
+                     G g) noexcept {
+  int side = 0;
+  for (int i = 0; i < 200; ++i) {
+    if (std::abs(x_pos - x_neg) <= kResidue * std::max(std::abs(x_neg), std::abs(x_pos))) break;
+    double x = (x_neg * g_pos - x_pos * g_neg) / (g_pos - g_neg);
+    if (!(x > std::min(x_neg, x_pos) && x < std::max(x_neg, x_pos))) x = 0.5 * (x_neg + x_pos);
+    const double gx = g(x);
+    if (gx <= 0.0) {
+      x_neg = x;
+      g_neg = gx;
+      if (gx >= -tol) return x;
+      if (side == -1) g_pos *= 0.5;
+      side = -1;
+    } else {
+      x_pos = x;
+      g_pos = gx;
+      if (side == 1) g_neg *= 0.5;
+      side = 1;
+    }
+  }
+  return x_neg;
+}
+
+// Highest feasible level; negative when dist(0) > D (the family does not apply).
+double top_level(const Frame& f, const Limits& lim) noexcept {
+  const double d_top = level(f, lim.v_max, lim).dist;
+  if (d_top <= f.d) return lim.v_max;
+  const double d_zero = level(f, 0.0, lim).dist;
+  if (d_zero > f.d) return -1.0;
+  return solve_bracket(0.0, lim.v_max, d_zero - f.d, d_top - f.d, kResidue * f.d,
+                       [&](double vm) { return level(f, vm, lim).dist - f.d; });
+}
+
+double cruise_time(const Frame& f, double vm, const Level& lv) noexcept {
+  const double rest = f.d - lv.dist;
+  if (!(vm > 0.0) || rest <= kResidue * f.d) return 0.0;
+  return rest / vm;
+}
+
+bool finite(const State& s) noexcept {
+  return std::isfinite(s.p) && std::isfinite(s.v) && std::isfinite(s.a);
+}
+
+Move make_move(const Frame& f, double vm, const Level& lv, double t_cruise) noexcept {
+  Move m;
+  m.sign = f.sign;
+  m.first = lv.first;
+  m.second = lv.second;
+  m.v_level = vm;
+  m.t_cruise = t_cruise;
+  return m;
+}
+
+}  // namespace
+
+double min_single_peak_time(const State& start, double p1, double v1, const Limits& lim) noexcept {
+  if (!valid(lim) || !finite(start) || !std::isfinite(p1) || !std::isfinite(v1)) return -1.0;
+  const Frame f = frame_of(start, p1, v1);
+  if (f.v1 < 0.0 || f.v1 > lim.v_max) return -1.0;
+  const double vm = top_level(f, lim);
+  if (vm < 0.0) return -1.0;
+  const Level lv = level(f, vm, lim);
+  return lv.t_ramp + cruise_time(f, vm, lv);
+}
+
+Status move_of_duration(const State& start, double p1, double v1, double duration,
+                        const Limits& lim, Move& out) noexcept {
+  if (!valid(lim) || !finite(start) || !std::isfinite(p1) || !std::isfinite(v1) ||
+      !std::isfinite(duration) || duration < 0.0 || std::abs(v1) > lim.v_max) {
+    return Status::invalid_input;
+  }
+  const Frame f = frame_of(start, p1, v1);
+  if (f.v1 < 0.0) return Status::not_supported;
+  const double vm_top = top_level(f, lim);
+  if (vm_top < 0.0) return Status::not_supported;
+  const Level top = level(f, vm_top, lim);
+  const double t_min = top.t_ramp + cruise_time(f, vm_top, top);
+  if (duration <= t_min) {
+    if (duration < t_min * (1.0 - 1e-12)) return Status::too_short;
+    out = make_move(f, vm_top, top, cruise_time(f, vm_top, top));
+    return Status::ok;
+  }
+  // Lowest level of the feasible range below vm_top: 0 when the move can stop and go within
+  // the distance, else the root of dist(vm) = D below vm_top (cruise 0 there).
+  const Level rest = level(f, 0.0, lim);
+  const auto g_dist = [&](double vm) { return level(f, vm, lim).dist - f.d; };
+  const bool dwell = std::abs(rest.dist - f.d) <= kResidue * std::max(f.d, std::abs(rest.dist));
+  double vm_low = 0.0;
+  if (rest.dist > f.d && !dwell) {
+    vm_low = solve_bracket(vm_top, 0.0, g_dist(vm_top), rest.dist - f.d, kResidue * f.d, g_dist);
+  }
+  if (vm_low == 0.0 && dwell && duration >= rest.t_ramp) {
+    out = make_move(f, 0.0, rest, duration - rest.t_ramp);  // dwell at rest in between
+    return Status::ok;
+  }
+  // g(vm) = T(vm) - duration: <= 0 at vm_top, > 0 at the slow end of the range.
+  const auto g = [&](double vm) {
+    const Level lv = level(f, vm, lim);
+    if (!(vm > 0.0)) return dwell ? lv.t_ramp - duration : std::numeric_limits<double>::max();
+    return lv.t_ramp + std::max(0.0, f.d - lv.dist) / vm - duration;
+  };
+  double lo = vm_low;
+  double g_lo = g(lo);
+  if (vm_low == 0.0 && !dwell) {
+    lo = vm_top;  // T grows without bound as vm -> 0: halve until too slow
+    do {
+      lo *= 0.5;
+      g_lo = g(lo);
+    } while (g_lo <= 0.0 && lo > 0.0);
+  }
+  if (!(g_lo > 0.0)) return Status::not_supported;  // slower than the family allows
+  const double vm = solve_bracket(vm_top, lo, g(vm_top), g_lo, kResidue * duration, g);
+  const Level lv = level(f, vm, lim);
+  if (lv.dist > f.d + 1e-9 * f.d) return Status::not_supported;  // range not connected
+  out = make_move(f, vm, lv, cruise_time(f, vm, lv));
+  return Status::ok;
+}
+
+State end_state(const State& start, const Move& move) noexcept {
+  // Each phase starts from its intended boundary values (docs/axes-profile.md, "Numerics").
+  const double s = move.sign;
+  State st{s * start.p, s * start.v, s * start.a};
+  const auto chain = [&](const Ramp& r) {
+    st = advance(st, r.jerk[0], r.duration[0]);
+    st.a = r.a_peak;
+    st = advance(st, r.jerk[1], r.duration[1]);
+    st.a = r.a_peak;
+    st = advance(st, r.jerk[2], r.duration[2]);
+    st.a = 0.0;
+    st.v = r.v_end;
+  };
+  chain(move.first);
+  st = advance(st, 0.0, move.t_cruise);
+  chain(move.second);
+  return State{s * st.p, s * st.v, s * st.a};
+}
+
+}  // namespace ncsim::jerk
