@@ -1,0 +1,113 @@
+#pragma once
+// planner/lookahead: the look-ahead window over prepared segments (P-CHAN-00650).
+//
+// Purpose: choose the velocity at every joint so that the path is as fast as the segments'
+// caps, joint caps and path a, d, j allow, while it can always stop by the end of what is
+// known. The window end is treated as a stop, so the planner never needs more than N segments
+// and an endless program runs in constant memory.
+// Inputs: PreparedSegments in path order (push); pop() releases the oldest, planned.
+// Outputs: PlannedSegments: the segment with its entry and exit velocity; profile() turns one
+// into its jerk-limited velocity profile (a pure function, jerk::Move over time, s from 0 to L).
+// Method (docs/planner.md "Look-ahead"), with the shared kernel jerk/:
+//   backward pass: exit_cap[last] = 0 (window end: a possible stop); going back,
+//     entry_cap[k] = min(cap_k, entry_velocity_for_exit(exit_cap[k], L_k, d_k, j_k)) and
+//     exit_cap[k-1] = min(joint cap, entry_cap[k]); a push re-runs it from the new end back
+//     until a value no longer changes (the rest of the window cannot change either).
+//   forward pass, at pop(): v_exit = min(exit_cap, reachable_velocity(v_entry, 0, L, a, j)),
+//     v_entry = the previous segment's v_exit (0 at the start of the path).
+// Path acceleration is 0 at every joint in this version (the kernel's functions start and end
+// at a = 0): the NC I rule (000 l.108) at C0 and C1 joints, and, for now, at C2 joints too.
+// STEP slopes (no jerk limit) are planned with j = max(a, d) / T: the acceleration step
+// takes one interpolation cycle.
+// Invariants: 0 <= v_entry <= entry cap, v_exit <= exit cap; the profile of every popped
+// segment fits its length, its cap and its path a, d, j; memory is N segments, allocated once.
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "jerk/jerk.hpp"
+#include "planner/prepare.hpp"
+
+namespace ncsim::planner {
+
+/// P-CHAN-00650 look-ahead function (isg-language.md §7.1; 004 l.1400-1428).
+enum class LookAheadKind : std::uint8_t {
+  low,       ///< FCT_LOOK_AHEAD_LOW: 30 blocks
+  standard,  ///< FCT_LOOK_AHEAD_STANDARD = FCT_IPO_DEFAULT: 120 blocks
+  high,      ///< FCT_LOOK_AHEAD_HIGH: 190 blocks
+  custom,    ///< FCT_LOOK_AHEAD_CUSTOM: 10 .. P-CHAN-00653 blocks
+};
+
+/// Window size in segments. `custom` is used for LookAheadKind::custom and must lie in
+/// [10, custom_max] (P-CHAN-00653); throws std::invalid_argument naming P-CHAN-00650 otherwise.
+std::size_t window_size(LookAheadKind kind, std::optional<std::size_t> custom = std::nullopt,
+                        std::size_t custom_max = 1000);
+
+/// A segment with its planned joint velocities.
+struct PlannedSegment {
+  PreparedSegment segment;
+  double v_entry = 0.0;  ///< path velocity at s = 0 [mm/s]
+  double v_exit = 0.0;   ///< path velocity at s = L [mm/s]
+  double a_max = 0.0;    ///< path acceleration used [mm/s^2]
+  double d_max = 0.0;    ///< path deceleration used [mm/s^2]
+  double j_max = 0.0;    ///< path jerk used (finite; STEP: max(a, d) / T) [mm/s^3]
+};
+
+/// The jerk-limited velocity profile of a planned segment: ramp from v_entry to the highest
+/// level the length allows (at most the cap), cruise, ramp to v_exit; a = 0 at both ends.
+jerk::Move profile(const PlannedSegment& planned) noexcept;
+
+/// Path state on a profile.
+struct PathState {
+  double s = 0.0;  ///< arc length from the segment start [mm]
+  double v = 0.0;  ///< path velocity [mm/s]
+  double a = 0.0;  ///< path acceleration [mm/s^2]
+  double j = 0.0;  ///< path jerk of the phase containing t [mm/s^3]
+};
+
+/// State at time t [s] after the start of `move` begun at v_entry (closed form per phase;
+/// t is clamped to [0, move.time()]). Pure evaluation.
+PathState profile_at(const jerk::Move& move, double v_entry, double t) noexcept;
+
+class LookAhead {
+ public:
+  /// `capacity` segments (window_size()); `t_cycle` [s] for the STEP jerk.
+  LookAhead(std::size_t capacity, double t_cycle);
+
+  bool empty() const noexcept { return count_ == 0; }
+  bool full() const noexcept { return count_ == slots_.size(); }
+  std::size_t size() const noexcept { return count_; }
+
+  /// Appends a segment; the window must not be full (pop first). Aborts on misuse.
+  void push(PreparedSegment segment);
+  /// Releases the oldest segment with its velocities planned against what the window knows
+  /// (its end is a stop). The window must not be empty.
+  PlannedSegment pop();
+  /// Velocity at the end of the last popped segment [mm/s] (entry of the next).
+  double v_committed() const noexcept { return v_committed_; }
+
+ private:
+  struct Slot {
+    PreparedSegment segment;
+    double length = 0.0;
+    double cap = 0.0;        ///< segment velocity cap [mm/s]
+    double joint_cap = 0.0;  ///< cap at its end joint [mm/s]
+    double a = 0.0, d = 0.0, j = 0.0;
+    double entry_cap = 0.0;  ///< backward pass: highest entry velocity [mm/s]
+    double exit_cap = 0.0;   ///< backward pass: highest exit velocity [mm/s]
+  };
+  Slot& at(std::size_t k) noexcept { return slots_[(head_ + k) % slots_.size()]; }
+  void backward_from_end();
+  /// Largest exit velocity <= v_upper reachable from v_entry within the slot's length.
+  double feasible_exit(double v_entry, double v_upper, const Slot& s) const noexcept;
+
+  std::vector<Slot> slots_;
+  std::size_t head_ = 0;
+  std::size_t count_ = 0;
+  double t_cycle_ = 0.001;
+  double v_committed_ = 0.0;
+};
+
+}  // namespace ncsim::planner

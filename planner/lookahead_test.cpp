@@ -1,0 +1,217 @@
+// Look-ahead: window sizes (P-CHAN-00650), a long line reaching F and short ones that cannot
+// (peak = closed form), the VELOJUMP corner in the plan, the window end as a stop, and a
+// seeded property test: every axis inside its v, a, j limits along random programs.
+
+#include "planner/lookahead.hpp"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+namespace {
+
+using namespace ncsim::planner;
+namespace jerk = ncsim::jerk;
+
+AxisVec vec(double x, double y, double z = 0.0) {
+  AxisVec v{};
+  v[0] = x;
+  v[1] = y;
+  v[2] = z;
+  return v;
+}
+
+AxisLimits axis(double v, double a, double j) {
+  AxisLimits ax;
+  ax.v_max = ax.v_reference = ax.v_rapid = v;
+  ax.a_max = ax.d_max = a;
+  ax.j_max = j;
+  return ax;
+}
+
+Move line(AxisVec a, AxisVec b, double feed) {
+  Move m;
+  m.start = a;
+  m.end = b;
+  m.feed = feed;
+  m.slope = SlopeType::trapez;
+  return m;
+}
+
+/// Plans `moves` through a Preparer and a window of `n`; returns every planned segment.
+std::vector<PlannedSegment> plan(const std::vector<Move>& moves, std::span<const AxisLimits> ax,
+                                 std::size_t n, ChannelLimits ch = {}) {
+  Preparer prep(ax, ch);
+  LookAhead window(n, ch.t_cycle);
+  std::vector<PreparedSegment> ready;
+  std::vector<PlannedSegment> out;
+  auto feed = [&] {
+    for (auto& s : ready) {
+      if (window.full()) out.push_back(window.pop());
+      window.push(std::move(s));
+    }
+    ready.clear();
+  };
+  for (const Move& m : moves) {
+    prep.push(m, ready);
+    feed();
+  }
+  prep.finish(ready);
+  feed();
+  while (!window.empty())
+    out.push_back(window.pop());
+  return out;
+}
+
+double peak_velocity(const PlannedSegment& p) {
+  return profile(p).v_level;
+}
+
+}  // namespace
+
+TEST_CASE("P-CHAN-00650: LOW 30, STANDARD 120, HIGH 190, CUSTOM 10..P-CHAN-00653") {
+  CHECK(window_size(LookAheadKind::low) == 30);
+  CHECK(window_size(LookAheadKind::standard) == 120);
+  CHECK(window_size(LookAheadKind::high) == 190);
+  CHECK(window_size(LookAheadKind::custom, 64, 500) == 64);
+  CHECK_THROWS_WITH_AS(window_size(LookAheadKind::custom, 9, 500),
+                       doctest::Contains("P-CHAN-00650"), std::invalid_argument);
+  CHECK_THROWS_AS(window_size(LookAheadKind::custom, 501, 500), std::invalid_argument);
+  CHECK_THROWS_AS(window_size(LookAheadKind::custom), std::invalid_argument);
+}
+
+TEST_CASE("a long line reaches F; the profile covers exactly its length") {
+  const std::array<AxisLimits, 3> ax = {axis(500, 1000, 1e5), axis(500, 1000, 1e5),
+                                        axis(500, 1000, 1e5)};
+  const auto planned = plan({line(vec(0, 0), vec(100, 0), 50.0)}, ax, 120);
+  REQUIRE(planned.size() == 1);
+  const jerk::Move m = profile(planned[0]);
+  CHECK(m.v_level == doctest::Approx(50.0));
+  CHECK(m.t_cruise > 0.0);
+  CHECK(profile_at(m, 0.0, m.time()).s == doctest::Approx(100.0));
+  CHECK(profile_at(m, 0.0, m.time()).v == doctest::Approx(0.0).scale(1.0));
+  // Rest to rest: time = L / F + the time one ramp loses, 2 (t_ramp - s_ramp / F).
+  const jerk::TimeDistance ramp = jerk::velocity_change(0.0, 0.0, 50.0, 1000.0, 1e5);
+  CHECK(m.time() == doctest::Approx(100.0 / 50.0 + 2 * (ramp.t - ramp.s / 50.0)));
+}
+
+TEST_CASE("a short line cannot reach F: peak (L^2 J / 4)^(1/3) when A is not reached") {
+  const std::array<AxisLimits, 3> ax = {axis(500, 1000, 1e5), axis(500, 1000, 1e5),
+                                        axis(500, 1000, 1e5)};
+  const auto planned = plan({line(vec(0, 0), vec(0.1, 0), 100.0)}, ax, 120);
+  REQUIRE(planned.size() == 1);
+  const double closed = std::cbrt(0.1 * 0.1 * 1e5 / 4);  // 6.30 mm/s, a_peak 794 < 1000
+  CHECK(peak_velocity(planned[0]) == doctest::Approx(closed).epsilon(1e-9));
+}
+
+TEST_CASE("a short line with A reached: d = V^2/A + V A/J (seed A1: 168 mm -> 700 mm/s)") {
+  const std::array<AxisLimits, 3> ax = {axis(2000, 5000, 50000), axis(2000, 5000, 50000),
+                                        axis(2000, 5000, 50000)};
+  const auto planned = plan({line(vec(0, 0), vec(168, 0), 1000.0)}, ax, 120);
+  REQUIRE(planned.size() == 1);
+  const jerk::Move m = profile(planned[0]);
+  CHECK(m.v_level == doctest::Approx(700.0).epsilon(1e-9));
+  CHECK(m.time() == doctest::Approx(0.480).epsilon(1e-9));
+}
+
+TEST_CASE("the plan passes a 90 degree corner at the VELOJUMP velocity") {
+  const std::array<AxisLimits, 3> ax = {axis(500, 10000, 1e6), axis(500, 10000, 1e6),
+                                        axis(500, 10000, 1e6)};
+  const auto planned =
+      plan({line(vec(0, 0), vec(50, 0), 100.0), line(vec(50, 0), vec(50, 50), 100.0)}, ax, 120);
+  REQUIRE(planned.size() == 2);
+  CHECK(planned[0].v_exit == doctest::Approx(10.0));
+  CHECK(planned[1].v_entry == doctest::Approx(10.0));
+  CHECK(peak_velocity(planned[0]) == doctest::Approx(100.0));
+  CHECK(planned[1].v_exit == 0.0);
+}
+
+TEST_CASE("the window end is a stop: a short window slows a long chain of short blocks") {
+  const std::array<AxisLimits, 3> ax = {axis(500, 1000, 1e5), axis(500, 1000, 1e5),
+                                        axis(500, 1000, 1e5)};
+  std::vector<Move> moves;
+  for (int k = 0; k < 400; ++k)
+    moves.push_back(line(vec(0.5 * k, 0), vec(0.5 * (k + 1), 0), 200.0));
+  const auto wide = plan(moves, ax, 190);
+  const auto narrow = plan(moves, ax, 10);
+  double v_wide = 0.0, v_narrow = 0.0;
+  for (const auto& p : wide)
+    v_wide = std::max(v_wide, p.v_exit);
+  for (const auto& p : narrow)
+    v_narrow = std::max(v_narrow, p.v_exit);
+  CHECK(v_wide > 150.0);
+  // With 10 blocks of 0.5 mm known, the velocity must allow a stop within 5 mm.
+  CHECK(v_narrow <= jerk::entry_velocity_for_exit(0.0, 5.0, 1000.0, 1e5) * (1 + 1e-9));
+  CHECK(v_narrow < v_wide);
+  for (std::size_t k = 0; k + 1 < narrow.size(); ++k)
+    CHECK(narrow[k].v_exit == narrow[k + 1].v_entry);
+}
+
+TEST_CASE("property: random lines and arcs with random limits never exceed an axis limit") {
+  std::mt19937 rng(4242);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  auto range = [&](double lo, double hi) { return lo * std::pow(hi / lo, u(rng)); };
+  std::size_t segments = 0;
+  for (int run = 0; run < 30; ++run) {
+    std::array<AxisLimits, 3> ax{};
+    for (auto& a : ax) {
+      a = axis(range(20, 500), range(200, 1e4), range(1e4, 1e6));
+      a.d_max = range(200, 1e4);
+    }
+    ChannelLimits ch;
+    ch.t_cycle = range(0.00025, 0.004);
+    std::vector<Move> moves;
+    AxisVec p = vec(0, 0, 0);
+    for (int k = 0; k < 60; ++k) {
+      Move m = line(p,
+                    vec(p[0] + range(0.05, 30) * (u(rng) - 0.5),
+                        p[1] + range(0.05, 30) * (u(rng) - 0.5), p[2] + u(rng) - 0.5),
+                    range(5, 400));
+      if (k % 3 == 1) {
+        const double r = range(0.5, 20);
+        const double a0 = 6.28 * u(rng);
+        const double a1 = a0 + (u(rng) - 0.5) * 5;
+        m.arc = Arc{0, 1, p[0] - r * std::cos(a0), p[1] - r * std::sin(a0), u(rng) < 0.5, false};
+        m.end[0] = m.arc->centre_1 + r * std::cos(a1);
+        m.end[1] = m.arc->centre_2 + r * std::sin(a1);
+      }
+      m.contour = run % 2 == 0 ? Contour::tolerance : Contour::none;
+      m.path_dev = range(0.001, 0.5);
+      moves.push_back(m);
+      p = m.end;
+    }
+    const auto planned = plan(moves, ax, 10 + run * 6, ch);
+    for (std::size_t k = 0; k < planned.size(); ++k) {
+      const PlannedSegment& ps = planned[k];
+      if (k + 1 < planned.size()) CHECK(ps.v_exit == planned[k + 1].v_entry);
+      const jerk::Move m = profile(ps);
+      const double length = ps.segment.path.length();
+      CHECK(profile_at(m, ps.v_entry, m.time()).s == doctest::Approx(length).epsilon(1e-7));
+      CHECK(m.v_level <= ps.segment.limits.v_max * (1 + 1e-9));
+      for (int i = 0; i <= 40; ++i) {
+        const PathState st = profile_at(m, ps.v_entry, m.time() * i / 40.0);
+        CHECK(st.v >= -1e-9);
+        CHECK(st.a <= ps.a_max * (1 + 1e-9) + 1e-9);
+        CHECK(-st.a <= ps.d_max * (1 + 1e-9) + 1e-9);
+        const PathPoint pt = ps.segment.path.at(std::clamp(st.s, 0.0, length));
+        for (std::size_t ai = 0; ai < 3; ++ai) {
+          const double vi = pt.d1[ai] * st.v;
+          const double aci = pt.d2[ai] * st.v * st.v + pt.d1[ai] * st.a;
+          const double ji =
+              pt.d3[ai] * st.v * st.v * st.v + 3 * pt.d2[ai] * st.v * st.a + pt.d1[ai] * st.j;
+          CHECK(std::abs(vi) <= ax[ai].v_max * (1 + 1e-6) + 1e-9);
+          const double lim = aci * vi >= 0.0 ? ax[ai].a_max : ax[ai].d_max;
+          CHECK(std::abs(aci) <= lim * (1 + 1e-6) + 1e-6);
+          CHECK(std::abs(ji) <= ax[ai].j_max * (1 + 1e-6) + 1e-6);
+        }
+      }
+      ++segments;
+    }
+  }
+  CHECK(segments > 1500);
+}
