@@ -37,7 +37,7 @@ struct Metric {
 /// monotonically from lo (where it is >= r) to the corner end (at hi when `toward_hi`).
 double cut_point(const Segment& seg, const Metric& distance, const AxisVec& corner, double r,
                  double lo, double hi, bool toward_hi) {
-  for (int iter = 0; iter < 80; ++iter) {
+  for (int iter = 0; iter < 64; ++iter) {
     const double mid = 0.5 * (lo + hi);
     const bool outside = distance(seg.point(mid), corner) > r;
     if (outside == toward_hi)

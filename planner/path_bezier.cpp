@@ -26,47 +26,75 @@ constexpr std::array<double, 5> kGlX = {-0.9061798459386640, -0.5384693101056831
 constexpr std::array<double, 5> kGlW = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
                                         0.4786286704993665, 0.2369268850561891};
 
-/// Value of the d-th derivative (d = 0..3) of the quintic with coefficients p at t.
-double bernstein_derivative(const std::array<double, 6>& p, int d, double t) {
-  // Forward differences d times, scaled by 5 * 4 * ... .
-  std::array<double, 6> c = p;
-  int m = 5;
-  double scale = 1.0;
-  for (int k = 0; k < d; ++k) {
-    for (int i = 0; i < m; ++i)
-      c[i] = c[i + 1] - c[i];
-    scale *= m;
-    --m;
+/// Bernstein basis of degree M (M + 1 values) at t.
+template <int M>
+std::array<double, M + 1> basis(double t) {
+  std::array<double, M + 1> b{};
+  const double u = 1.0 - t;
+  std::array<double, M + 1> tp{};
+  std::array<double, M + 1> up{};
+  tp[0] = up[0] = 1.0;
+  for (int k = 1; k <= M; ++k) {
+    tp[k] = tp[k - 1] * t;
+    up[k] = up[k - 1] * u;
   }
-  // de Casteljau on degree m.
-  for (int r = 1; r <= m; ++r)
-    for (int i = 0; i <= m - r; ++i)
-      c[i] = (1.0 - t) * c[i] + t * c[i + 1];
-  return scale * c[0];
+  double binom = 1.0;
+  for (int i = 0; i <= M; ++i) {
+    b[i] = binom * tp[i] * up[M - i];
+    binom = binom * (M - i) / (i + 1);
+  }
+  return b;
 }
 
 struct Derivs {
   AxisVec b0{}, b1{}, b2{}, b3{};
 };
 
+/// B and its first three t-derivatives with one basis evaluation shared by every axis:
+/// dB = 5 sum b4_i D1_i, d2B = 20 sum b3_i D2_i, d3B = 60 sum b2_i D3_i (forward differences Dk).
 Derivs eval(const std::array<AxisVec, 6>& p, std::size_t n, double t) {
+  const auto b5 = basis<5>(t);
+  const auto b4 = basis<4>(t);
+  const auto b3 = basis<3>(t);
+  const auto b2 = basis<2>(t);
   Derivs d;
   for (std::size_t i = 0; i < n; ++i) {
-    const std::array<double, 6> c = {p[0][i], p[1][i], p[2][i], p[3][i], p[4][i], p[5][i]};
-    d.b0[i] = bernstein_derivative(c, 0, t);
-    d.b1[i] = bernstein_derivative(c, 1, t);
-    d.b2[i] = bernstein_derivative(c, 2, t);
-    d.b3[i] = bernstein_derivative(c, 3, t);
+    std::array<double, 6> c = {p[0][i], p[1][i], p[2][i], p[3][i], p[4][i], p[5][i]};
+    double v0 = 0.0;
+    for (int k = 0; k <= 5; ++k)
+      v0 += b5[k] * c[k];
+    for (int k = 0; k < 5; ++k)
+      c[k] = c[k + 1] - c[k];
+    double v1 = 0.0;
+    for (int k = 0; k <= 4; ++k)
+      v1 += b4[k] * c[k];
+    for (int k = 0; k < 4; ++k)
+      c[k] = c[k + 1] - c[k];
+    double v2 = 0.0;
+    for (int k = 0; k <= 3; ++k)
+      v2 += b3[k] * c[k];
+    for (int k = 0; k < 3; ++k)
+      c[k] = c[k + 1] - c[k];
+    double v3 = 0.0;
+    for (int k = 0; k <= 2; ++k)
+      v3 += b2[k] * c[k];
+    d.b0[i] = v0;
+    d.b1[i] = 5.0 * v1;
+    d.b2[i] = 20.0 * v2;
+    d.b3[i] = 60.0 * v3;
   }
   return d;
 }
 
 double speed(const std::array<AxisVec, 6>& p, std::size_t n, AxisMask metric, double t) {
+  const auto b4 = basis<4>(t);
   double sum = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     if (!has(metric, i)) continue;
-    const std::array<double, 6> c = {p[0][i], p[1][i], p[2][i], p[3][i], p[4][i], p[5][i]};
-    const double v = bernstein_derivative(c, 1, t);
+    double v = 0.0;
+    for (int k = 0; k < 5; ++k)
+      v += b4[k] * (p[k + 1][i] - p[k][i]);
+    v *= 5.0;
     sum += v * v;
   }
   return std::sqrt(sum);
