@@ -3,6 +3,7 @@
 #include "planner/prepare.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -33,7 +34,7 @@ Preparer::Preparer(std::span<const AxisLimits> axes, ChannelLimits channel)
 
 PreparedSegment Preparer::make(const Segment& path, const Move& move, bool blend) const {
   PreparedSegment ps;
-  ps.path = path;
+  ps.path = Chain(path, move.line);
   ps.limits = path_limits(path, move, axes_);
   ps.blend = blend;
   ps.line = move.line;
@@ -41,7 +42,7 @@ PreparedSegment Preparer::make(const Segment& path, const Move& move, bool blend
 }
 
 void Preparer::emit_joint(PreparedSegment in, const Move& in_move, const Segment& out_path,
-                          double v_out, std::vector<PreparedSegment>& out) const {
+                          double v_out, std::vector<PreparedSegment>& out) {
   const std::uint8_t n = std::max(in.path.axis_count(), out_path.axis_count());
   const AxisMask metric = in.path.metric() | out_path.metric();
   // #TRANSVELMIN acts at discontinuous transitions, not with G261 (isg-language.md §5.6).
@@ -55,16 +56,49 @@ void Preparer::emit_joint(PreparedSegment in, const Move& in_move, const Segment
   in.joint = link.cls;
   in.rule = link.rule;
   in.stop = StopReason::none;
-  out.push_back(std::move(in));
+  output(std::move(in), out);
 }
 
-void Preparer::emit_stop(const Pending& p, StopReason why,
-                         std::vector<PreparedSegment>& out) const {
+void Preparer::emit_stop(const Pending& p, StopReason why, std::vector<PreparedSegment>& out) {
   PreparedSegment ps = make(p.path, p.move, false);
   ps.v_end = 0.0;
   ps.a_zero_at_end = true;
   ps.stop = why;
-  out.push_back(std::move(ps));
+  output(std::move(ps), out);
+}
+
+void Preparer::output(PreparedSegment ps, std::vector<PreparedSegment>& out) {
+  if (held_) {
+    PreparedSegment& h = *held_;
+    const double cap = h.limits.v_max;
+    const bool same_cap = std::abs(ps.limits.v_max - cap) <= 1e-9 * std::max(cap, 1.0);
+    const bool free_joint = h.stop == StopReason::none && !h.a_zero_at_end &&
+                            h.joint == TransitionClass::c2 && h.v_end >= cap * (1.0 - 1e-12);
+    if (same_cap && free_joint && h.path.parts() + ps.path.parts() <= Chain::kMaxParts) {
+      h.path.append(ps.path);
+      h.limits.a_max = std::min(h.limits.a_max, ps.limits.a_max);
+      h.limits.d_max = std::min(h.limits.d_max, ps.limits.d_max);
+      h.limits.j_max = std::min(h.limits.j_max, ps.limits.j_max);
+      h.limits.v_end = ps.limits.v_end;
+      h.v_end = ps.v_end;
+      h.a_zero_at_end = ps.a_zero_at_end;
+      h.stop = ps.stop;
+      h.joint = ps.joint;
+      h.rule = ps.rule;
+      h.blend = h.blend && ps.blend;
+      return;
+    }
+    out.push_back(std::move(h));
+    held_.reset();
+  }
+  // Hold only what a next segment could join; everything else leaves at once.
+  const bool open =
+      ps.stop == StopReason::none && !ps.a_zero_at_end && ps.joint == TransitionClass::c2 &&
+      ps.v_end >= ps.limits.v_max * (1.0 - 1e-12) && ps.path.parts() < Chain::kMaxParts;
+  if (open)
+    held_ = std::move(ps);
+  else
+    out.push_back(std::move(ps));
 }
 
 void Preparer::push(const Move& move, std::vector<PreparedSegment>& out) {
@@ -114,11 +148,15 @@ void Preparer::push(const Move& move, std::vector<PreparedSegment>& out) {
 }
 
 void Preparer::finish(std::vector<PreparedSegment>& out) {
-  if (!pending_) return;
-  const StopReason requested =
-      pending_->stop != StopReason::none ? pending_->stop : requested_stop(pending_->move);
-  emit_stop(*pending_, requested != StopReason::none ? requested : StopReason::end_of_stream, out);
-  pending_.reset();
+  if (pending_) {
+    const StopReason requested =
+        pending_->stop != StopReason::none ? pending_->stop : requested_stop(pending_->move);
+    emit_stop(*pending_, requested != StopReason::none ? requested : StopReason::end_of_stream,
+              out);
+    pending_.reset();
+  }
+  if (held_) out.push_back(std::move(*held_));
+  held_.reset();
 }
 
 }  // namespace ncsim::planner

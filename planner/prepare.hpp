@@ -8,16 +8,20 @@
 // Inputs: Moves in program order (push), then finish() at the end of the stream (#FLUSH, M30).
 // Outputs: PreparedSegments appended to the caller's vector, in path order. A segment is only
 // emitted once its successor is known (the joint needs both), so the stage holds one Move.
+// Chains: consecutive segments joined C2 whose joint limits nothing and whose velocity caps are
+// equal are emitted as one Chain (at most Chain::kMaxParts), with the smallest a, d, j of its
+// parts, so the look-ahead carries the acceleration through those joints.
 // Invariants: consecutive emitted segments join (end of one == start of the next); v_end of a
-// segment is its joint velocity cap (0 at a stop); memory is one pending segment, whatever the
-// length of the stream. Zero-length moves (below 1e-9 mm) are dropped; their stop request
-// (G09, G60) passes to the joint before them.
+// segment is its joint velocity cap (0 at a stop); memory is one pending Move and one held
+// chain, whatever the length of the stream. Zero-length moves (below 1e-9 mm) are dropped; their
+// stop request (G09, G60) passes to the joint before them.
 
 #include <cstdint>
 #include <optional>
 #include <span>
 #include <vector>
 
+#include "planner/chain.hpp"
 #include "planner/corner.hpp"
 #include "planner/limits.hpp"
 #include "planner/move.hpp"
@@ -36,7 +40,7 @@ enum class StopReason : std::uint8_t {
 
 /// One segment ready for the look-ahead.
 struct PreparedSegment {
-  Segment path;               ///< the curve (blocks trimmed by tolerance balls)
+  Chain path;                 ///< the curve (blocks trimmed by tolerance balls; C2 runs chained)
   PathLimits limits;          ///< velocity cap and path a, d, j on this segment
   double v_end = 0.0;         ///< cap of the velocity at the end joint [mm/s]
   bool a_zero_at_end = true;  ///< path acceleration must be 0 at the end joint (C0, C1, stop)
@@ -69,13 +73,17 @@ class Preparer {
   PreparedSegment make(const Segment& path, const Move& move, bool blend) const;
   /// Appends `in` with its end joint to `out_path` (velocity cap v_out) resolved.
   void emit_joint(PreparedSegment in, const Move& in_move, const Segment& out_path, double v_out,
-                  std::vector<PreparedSegment>& out) const;
+                  std::vector<PreparedSegment>& out);
   /// Appends the pending segment ending in a stop.
-  void emit_stop(const Pending& p, StopReason why, std::vector<PreparedSegment>& out) const;
+  void emit_stop(const Pending& p, StopReason why, std::vector<PreparedSegment>& out);
+  /// Chaining stage: merges `ps` into the held segment across a C2 joint that limits nothing
+  /// and at an equal velocity cap, else emits the held one and holds `ps`.
+  void output(PreparedSegment ps, std::vector<PreparedSegment>& out);
 
   std::span<const AxisLimits> axes_;
   ChannelLimits channel_;
   std::optional<Pending> pending_;
+  std::optional<PreparedSegment> held_;  ///< chaining stage
 };
 
 }  // namespace ncsim::planner

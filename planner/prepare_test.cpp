@@ -95,6 +95,23 @@ TEST_CASE("collinear blocks join as C2 at the smaller cap") {
   CHECK_FALSE(out[0].a_zero_at_end);
 }
 
+TEST_CASE("collinear blocks at one feed leave as one chain of two parts") {
+  const auto ax = limits();
+  Preparer prep(ax, ChannelLimits{});
+  std::vector<PreparedSegment> out;
+  prep.push(line(vec(0, 0), vec(10, 0), 100.0, 1), out);
+  prep.push(line(vec(10, 0), vec(20, 0), 100.0, 2), out);
+  CHECK(out.empty());  // held: a next block could join
+  prep.finish(out);
+  REQUIRE(out.size() == 1);
+  CHECK(out[0].path.parts() == 2);
+  CHECK(out[0].path.length() == doctest::Approx(20.0));
+  CHECK(out[0].path.line_at(5.0) == 1);
+  CHECK(out[0].path.line_at(15.0) == 2);
+  CHECK(out[0].stop == StopReason::end_of_stream);
+  CHECK(out[0].path.at(12.0).x[0] == doctest::Approx(12.0));
+}
+
 TEST_CASE("a zero-length G09 block stops the joint before it") {
   const auto ax = limits();
   Preparer prep(ax, ChannelLimits{});
