@@ -183,7 +183,7 @@ PathPoint Segment::bezier_at(const BezierGeom& g, double s) const noexcept {
 
 DerivativeBounds Segment::bezier_bounds() const noexcept {
   // Uniform in the curve parameter t over the window (no arc-length inversion per sample).
-  constexpr int kSamples = 256;
+  constexpr int kSamples = 64;
   constexpr double kMargin = 1.01;
   const BezierGeom& g = std::get<BezierGeom>(geom_);
   const double t0 = bezier_t(g, s_lo_);
