@@ -92,6 +92,20 @@ void ListValues::read(const core::SourceFile& source, core::DiagnosticList& diag
     diagnostics.add(make_diag(core::Severity::error, file_, loc, id, std::move(message)));
   };
 
+  for (const ListEntry& entry : parsed.rejected) {
+    const ParamSpec* spec = find_param(kind_, entry.pattern);
+    if (spec == nullptr) continue;
+    std::string key;
+    std::size_t index_no = 0;
+    for (const char c : spec->key) {
+      key += c;
+      if (c == '[' && index_no < entry.indices.size()) {
+        key += std::to_string(entry.indices[index_no++]);
+      }
+    }
+    rejected_.push_back(std::move(key));
+  }
+
   for (const ListEntry& entry : parsed.entries) {
     const ParamSpec* spec = find_param(kind_, entry.pattern);
     if (spec == nullptr) {
@@ -164,11 +178,15 @@ void ListValues::read(const core::SourceFile& source, core::DiagnosticList& diag
         break;
       }
     }
-    if (!ok) continue;
+    if (!ok) {
+      rejected_.push_back(key);
+      continue;
+    }
     const bool numeric = spec->type != ValueType::word && spec->type != ValueType::flag_set;
     if (numeric && (value.number < spec->min || value.number > spec->max)) {
       error(entry.value_loc, "NC3004",
             ref + " = " + entry.value + " is outside its range " + range_text(*spec));
+      rejected_.push_back(key);
       continue;
     }
     if (spec->type == ValueType::axis_mode) {
@@ -178,6 +196,7 @@ void ListValues::read(const core::SourceFile& source, core::DiagnosticList& diag
         std::snprintf(buf, sizeof buf, "0x%08X", bits & ~axis_mode::kKnownBits);
         error(entry.value_loc, "NC3004",
               ref + " = " + entry.value + " sets undefined mode bits " + buf);
+        rejected_.push_back(key);
         continue;
       }
     }
@@ -195,6 +214,10 @@ const StoredValue* ListValues::find(std::string_view key) const {
     if (v.key == key) return &v;
   }
   return nullptr;
+}
+
+bool ListValues::rejected(std::string_view key) const {
+  return std::find(rejected_.begin(), rejected_.end(), key) != rejected_.end();
 }
 
 double ListValues::number(std::string_view key) const {
@@ -318,7 +341,7 @@ std::optional<core::SourceFile> load_source(const std::filesystem::path& path,
 }
 
 void require(const ListValues& values, std::string_view key, core::DiagnosticList& diagnostics) {
-  if (values.given(key)) return;
+  if (values.given(key) || values.rejected(key)) return;
   diagnostics.add(detail::make_diag(core::Severity::error, values.file(), core::SourceLoc{},
                                     "NC3006",
                                     "missing mandatory " + detail::param_ref(key, values.kind())));
