@@ -109,6 +109,15 @@ void ListValues::read(const core::SourceFile& source, core::DiagnosticList& diag
   for (const ListEntry& entry : parsed.entries) {
     const ParamSpec* spec = find_param(kind_, entry.pattern);
     if (spec == nullptr) {
+      if (const RetiredKey* retired = find_retired(kind_, entry.pattern)) {
+        const bool replaced = retired->diagnostic == "NC3015";
+        error(entry.key_loc, std::string(retired->diagnostic).c_str(),
+              (replaced ? entry.key + " is no longer read (ncsim's own key before it read the "
+                                      "ISG axis list): "
+                        : "not supported: " + entry.key + "; ") +
+                  std::string(retired->use_instead));
+        continue;
+      }
       if (const ParamSpec* elsewhere = find_param(other, entry.pattern)) {
         error(entry.key_loc, "NC3011",
               entry.key + " (" + std::string(elsewhere->id) + ") is a " +
@@ -364,20 +373,26 @@ AxisParams build_axis(const ListValues& v, core::DiagnosticList& diagnostics) {
   a.measure_signal = v.text("kenngr.measure.signal");
   a.soft_limits = SoftLimits{v.internal("kenngr.swe_neg"), v.internal("kenngr.swe_pos")};
 
+  // Gear 0 only (docs/machines.md): getriebe[1..7] are accepted and not used.
   Dynamics& d = a.dynamics;
-  d.v_max = v.internal("dynamics.max_velocity");
-  d.a_max = v.internal("dynamics.max_acceleration");
-  d.d_max = v.internal("dynamics.max_deceleration");
-  d.j_max = v.internal("dynamics.max_jerk");
-  auto derived = [&v](std::string_view key, double fallback) {
-    return v.given(key) ? v.internal(key) : fallback;
-  };
-  d.v_default = derived("dynamics.default_velocity", d.v_max);
-  d.a_default = derived("dynamics.default_acceleration", d.a_max);
-  d.d_default = derived("dynamics.default_deceleration", d.d_max);
-  d.j_default = derived("dynamics.default_jerk", d.j_max);
-  d.v_reference = derived("dynamics.reference_velocity", d.v_max);
-  d.v_rapid = derived("nci.rapid_traverse_velocity", d.v_max);
+  d.v_max = v.internal("getriebe[0].dynamik.vb_max");
+  d.v_rapid = v.internal("getriebe[0].vb_eilgang");
+  d.acc_max = v.internal("getriebe[0].dynamik.a_max");
+  d.acc_feed = v.internal("getriebe[0].slope_profil.a_beschl");
+  d.dec_feed = v.internal("getriebe[0].slope_profil.a_brems");
+  d.acc_rapid = v.internal("getriebe[0].slope_profil.a_grenz");
+  // P-AXIS-00053 / P-AXIS-00081: 0 (the default) stands for the rapid value (TF5200 remarks).
+  const double feedhold = v.internal("getriebe[0].slope_profil.a_feedh");
+  d.dec_feedhold = feedhold > 0.0 ? feedhold : d.acc_rapid;
+  d.ramp_acc_up = v.internal("getriebe[0].slope_profil.tr_beschl_zu");
+  d.ramp_acc_down = v.internal("getriebe[0].slope_profil.tr_beschl_ab");
+  d.ramp_dec_up = v.internal("getriebe[0].slope_profil.tr_brems_zu");
+  d.ramp_dec_down = v.internal("getriebe[0].slope_profil.tr_brems_ab");
+  d.ramp_rapid = v.internal("getriebe[0].slope_profil.tr_grenz");
+  const double ramp_feedhold = v.internal("getriebe[0].slope_profil.tr_feedh");
+  d.ramp_feedhold = ramp_feedhold > 0.0 ? ramp_feedhold : d.ramp_rapid;
+  d.ramp_min = v.internal("getriebe[0].dynamik.tr_min");
+  d.ramp_geom = v.internal("getriebe[0].dynamik.tr_geom");
   d.velo_jump_factor = v.internal("nci.velo_jump_factor");
   d.tolerance_ball = v.internal("nci.tolerance_ball");
 
@@ -394,7 +409,7 @@ AxisParams build_axis(const ListValues& v, core::DiagnosticList& diagnostics) {
   m.target_position_window = v.internal("monitoring.target_position_window");
   m.target_position_time = v.internal("monitoring.target_position_time");
 
-  a.control.kv = v.internal("ctrl.kv");
+  a.control.kv = v.internal("getriebe[0].kv");
   a.control.pt1_time = v.internal("drive.pt1_time");
 
   if (v.number("conv_sync.is_master") != 0.0) {

@@ -68,43 +68,57 @@ void check_axis(AxisParams& axis, const ListValues& v, Reporter& r) {
                 param_ref("kenngr.swe_pos", ListKind::axis) + " = " +
                 number_text(v.number("kenngr.swe_pos")));
   }
-  // Seed 000 §7.1.1: the reference velocity must be >= the maximum velocity.
+  // TF5200 P-AXIS-00209: 1 <= vb_eilgang <= P-AXIS-00212. ncsim: an error, since a G0 faster
+  // than the axis may move is a contradiction, not a default to be trimmed.
   Dynamics& d = axis.dynamics;
-  if (d.v_reference < d.v_max &&
-      usable(v, {"dynamics.reference_velocity", "dynamics.max_velocity"})) {
-    r.error(file, loc_of(v, "dynamics.reference_velocity", "dynamics.max_velocity"), "NC3007",
-            param_ref("dynamics.reference_velocity", ListKind::axis) + " = " +
-                number_text(d.v_reference) + " must not be below " +
-                param_ref("dynamics.max_velocity", ListKind::axis) + " = " + number_text(d.v_max));
+  const char* v_max_key = "getriebe[0].dynamik.vb_max";
+  const char* rapid_key = "getriebe[0].vb_eilgang";
+  if (d.v_rapid > d.v_max && usable(v, {rapid_key, v_max_key})) {
+    r.error(file, loc_of(v, rapid_key, v_max_key), "NC3007",
+            param_ref(rapid_key, ListKind::axis) + " = " + number_text(v.number(rapid_key)) +
+                " must not exceed " + param_ref(v_max_key, ListKind::axis) + " = " +
+                number_text(v.number(v_max_key)));
   }
-  // ncsim decision: rapid traverse above the maximum velocity is a contradiction.
-  if (d.v_rapid > d.v_max && usable(v, {"nci.rapid_traverse_velocity", "dynamics.max_velocity"})) {
-    r.error(file, loc_of(v, "nci.rapid_traverse_velocity", "dynamics.max_velocity"), "NC3007",
-            param_ref("nci.rapid_traverse_velocity", ListKind::axis) + " = " +
-                number_text(d.v_rapid) + " must not exceed " +
-                param_ref("dynamics.max_velocity", ListKind::axis) + " = " + number_text(d.v_max));
-  }
-  // Seed 000 §7.1.1: a default above its maximum gives a warning, not an error; ncsim limits it.
-  struct DefaultMax {
+  // TF5200: every slope acceleration lies in 1 .. P-AXIS-00008, every ramp time in
+  // P-AXIS-00201 .. MAX(UNS32). ncsim limits a value outside with warning NC3020 (as the kernel
+  // corrects list values with a warning, e.g. ID 110083 for P-AXIS-00201).
+  struct Bounded {
     double* value;
-    double max;
     const char* key;
-    const char* max_key;
   };
-  const std::array<DefaultMax, 4> pairs = {{
-      {&d.v_default, d.v_max, "dynamics.default_velocity", "dynamics.max_velocity"},
-      {&d.a_default, d.a_max, "dynamics.default_acceleration", "dynamics.max_acceleration"},
-      {&d.d_default, d.d_max, "dynamics.default_deceleration", "dynamics.max_deceleration"},
-      {&d.j_default, d.j_max, "dynamics.default_jerk", "dynamics.max_jerk"},
+  const char* a_max_key = "getriebe[0].dynamik.a_max";
+  const std::array<Bounded, 4> accelerations = {{
+      {&d.acc_feed, "getriebe[0].slope_profil.a_beschl"},
+      {&d.dec_feed, "getriebe[0].slope_profil.a_brems"},
+      {&d.acc_rapid, "getriebe[0].slope_profil.a_grenz"},
+      {&d.dec_feedhold, "getriebe[0].slope_profil.a_feedh"},
   }};
-  for (const DefaultMax& p : pairs) {
-    if (*p.value > p.max && usable(v, {p.key, p.max_key})) {
-      r.warning(file, v.loc(p.key), "NC3020",
-                param_ref(p.key, ListKind::axis) + " = " + number_text(*p.value) + " exceeds " +
-                    param_ref(p.max_key, ListKind::axis) + " = " + number_text(p.max) +
-                    "; limited to the maximum");
-      *p.value = p.max;
+  for (const Bounded& b : accelerations) {
+    if (*b.value > d.acc_max && v.given(b.key) && usable(v, {b.key, a_max_key})) {
+      r.warning(file, v.loc(b.key), "NC3020",
+                param_ref(b.key, ListKind::axis) + " = " + number_text(v.number(b.key)) +
+                    " exceeds " + param_ref(a_max_key, ListKind::axis) + " = " +
+                    number_text(v.number(a_max_key)) + "; limited to the maximum");
     }
+    *b.value = std::min(*b.value, d.acc_max);
+  }
+  const char* ramp_min_key = "getriebe[0].dynamik.tr_min";
+  const std::array<Bounded, 6> ramps = {{
+      {&d.ramp_acc_up, "getriebe[0].slope_profil.tr_beschl_zu"},
+      {&d.ramp_acc_down, "getriebe[0].slope_profil.tr_beschl_ab"},
+      {&d.ramp_dec_up, "getriebe[0].slope_profil.tr_brems_zu"},
+      {&d.ramp_dec_down, "getriebe[0].slope_profil.tr_brems_ab"},
+      {&d.ramp_rapid, "getriebe[0].slope_profil.tr_grenz"},
+      {&d.ramp_feedhold, "getriebe[0].slope_profil.tr_feedh"},
+  }};
+  for (const Bounded& b : ramps) {
+    if (*b.value < d.ramp_min && v.given(b.key) && usable(v, {b.key, ramp_min_key})) {
+      r.warning(file, v.loc(b.key), "NC3020",
+                param_ref(b.key, ListKind::axis) + " = " + number_text(v.number(b.key)) +
+                    " is below " + param_ref(ramp_min_key, ListKind::axis) + " = " +
+                    number_text(v.number(ramp_min_key)) + "; raised to the minimum");
+    }
+    *b.value = std::max(*b.value, d.ramp_min);
   }
   // Seed 004 §4.2: the conveyor is a spindle axis, or a pure encoder axis (ACHSMODE_COUNTER).
   if (axis.conveyor && axis.kind != AxisKind::spindle && !axis.encoder_only) {
