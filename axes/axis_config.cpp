@@ -1,5 +1,10 @@
 #include "axes/axis_config.hpp"
 
+#include <stdexcept>
+#include <string>
+
+#include "core/number_text.hpp"
+
 namespace ncsim::axes {
 
 GeneratorConfig make_generator_config(const machines::AxisParams& axis) {
@@ -46,9 +51,22 @@ AxisMonitorParams make_monitor_params(const machines::AxisParams& axis) {
   return params;
 }
 
+std::optional<ModuloParams> make_modulo_params(const machines::AxisParams& axis) {
+  if (!axis.modulo) return std::nullopt;
+  if (axis.modulo_lower != 0.0) {
+    throw std::invalid_argument(
+        "not supported: axis " + axis.name +
+        " getriebe[0].modulou (P-AXIS-00127) = " + core::number_text(axis.modulo_lower) +
+        "; the axis core counts modulo positions from 0 (docs/machines.md)");
+  }
+  ModuloParams params;
+  params.factor = axis.modulo_upper - axis.modulo_lower;  // P-AXIS-00126 - P-AXIS-00127
+  return params;
+}
+
 AxisConfig make_axis_config(const machines::AxisParams& axis) {
   return AxisConfig{make_generator_config(axis), make_position_control(axis),
-                    make_monitor_params(axis)};
+                    make_monitor_params(axis), make_modulo_params(axis)};
 }
 
 std::vector<AxisConfig> make_axis_configs(const machines::Machine& machine) {

@@ -22,11 +22,18 @@
 //              NCSIM-AXIS-027..029; exact stop window P-AXIS-00236 and settling time
 //              P-AXIS-00532 (not monitored -> 0, which disables it); position range and motion
 //              monitoring have no list key and keep the axes defaults.
+//   modulo     for axes with ACHSMODE_MODULO (P-AXIS-00015 bit 0x4) only: factor = P-AXIS-00126
+//              - P-AXIS-00127; the axis core counts modulo positions from 0, so a lower limit
+//              other than 0 throws std::invalid_argument naming P-AXIS-00127 (not supported).
+//              Spindles without the bit (the bundled conveyors: belt positions in mm) stay
+//              unbounded.
 // Invariants: pure functions of their input; the same machine always gives the same configs.
 
+#include <optional>
 #include <vector>
 
 #include "axes/control.hpp"
+#include "axes/modulo.hpp"
 #include "axes/monitor.hpp"
 #include "axes/profile_generator.hpp"
 #include "machines/machine.hpp"
@@ -39,9 +46,10 @@ inline constexpr double kListIncrement = 1.0e-4;
 
 /// Everything the axis core needs for one axis.
 struct AxisConfig {
-  GeneratorConfig generator;      ///< setpoint generator (PTP, MC_MoveVelocity)
-  PositionControlParams control;  ///< position control model
-  AxisMonitorParams monitor;      ///< soft limits, lag, target position, exact stop
+  GeneratorConfig generator;           ///< setpoint generator (PTP, MC_MoveVelocity)
+  PositionControlParams control;       ///< position control model
+  AxisMonitorParams monitor;           ///< soft limits, lag, target position, exact stop
+  std::optional<ModuloParams> modulo;  ///< set for modulo axes only
 };
 
 /// Setpoint generator configuration of one axis (mapping above).
@@ -50,7 +58,10 @@ GeneratorConfig make_generator_config(const machines::AxisParams& axis);
 PositionControlParams make_position_control(const machines::AxisParams& axis);
 /// Monitor parameters of one axis (mapping above).
 AxisMonitorParams make_monitor_params(const machines::AxisParams& axis);
-/// All three for one axis.
+/// Modulo parameters of a modulo axis, nullopt for any other (mapping above; throws for a
+/// modulo axis whose P-AXIS-00127 is not 0).
+std::optional<ModuloParams> make_modulo_params(const machines::AxisParams& axis);
+/// All of them for one axis.
 AxisConfig make_axis_config(const machines::AxisParams& axis);
 /// One AxisConfig per axis of the machine, in machine order.
 std::vector<AxisConfig> make_axis_configs(const machines::Machine& machine);

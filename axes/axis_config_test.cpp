@@ -98,6 +98,24 @@ TEST_CASE("portal_3x: one config per axis, in machine order") {
   CHECK(configs[2].monitor.soft_limits.max_position == doctest::Approx(200.0));
 }
 
+TEST_CASE("only ACHSMODE_MODULO axes get a modulo range, P-AXIS-00126 - P-AXIS-00127") {
+  const machines::Machine m = load("laser_portal");
+  CHECK_FALSE(make_axis_config(axis(m, "X")).modulo.has_value());
+  CHECK_FALSE(make_axis_config(axis(m, "S")).modulo.has_value());  // belt positions in mm
+  machines::AxisParams table = axis(m, "X");
+  table.kind = machines::AxisKind::rotary;
+  table.modulo = true;
+  table.modulo_upper = 360.0;
+  const std::optional<ModuloParams> p = make_modulo_params(table);
+  REQUIRE(p.has_value());
+  CHECK(p->factor == doctest::Approx(360.0));
+  CHECK_FALSE(make_monitor_params(table).soft_limits.max_enabled);
+  table.modulo_lower = -180.0;
+  table.modulo_upper = 180.0;
+  CHECK_THROWS_WITH_AS(make_modulo_params(table), doctest::Contains("P-AXIS-00127"),
+                       std::invalid_argument);
+}
+
 TEST_CASE("an axis without dynamics in its list gets the TF5200 defaults") {
   machines::AxisParams a;        // values as the loader fills them from the table defaults
   a.dynamics.v_max = 200.0;      // P-AXIS-00212 default 200000 um/s

@@ -368,7 +368,8 @@ AxisParams build_axis(const ListValues& v, core::DiagnosticList& diagnostics) {
   a.mode_bits = static_cast<std::uint32_t>(v.number("kenngr.achs_mode"));
   a.encoder_only = (a.mode_bits & axis_mode::kCounter) != 0U;
   a.modulo = (a.mode_bits & axis_mode::kModulo) != 0U;
-  a.modulo_range = v.internal("enc.modulo_factor");
+  a.modulo_lower = v.internal("getriebe[0].modulou");
+  a.modulo_upper = v.internal("getriebe[0].moduloo");
   a.drive_type = static_cast<int>(v.number("kenngr.antr_typ"));
   a.measure_signal = v.text("kenngr.measure.signal");
   a.soft_limits = SoftLimits{v.internal("kenngr.swe_neg"), v.internal("kenngr.swe_pos")};

@@ -68,6 +68,16 @@ void check_axis(AxisParams& axis, const ListValues& v, Reporter& r) {
                 param_ref("kenngr.swe_pos", ListKind::axis) + " = " +
                 number_text(v.number("kenngr.swe_pos")));
   }
+  // TF5200 P-AXIS-00126: modulou < moduloo. The kernel resets both to defaults with a warning
+  // (ID 110052); ncsim reports the contradiction (NC3007) rather than run a range not written.
+  const char* upper_key = "getriebe[0].moduloo";
+  const char* lower_key = "getriebe[0].modulou";
+  if (axis.modulo_lower >= axis.modulo_upper && usable(v, {upper_key, lower_key})) {
+    r.error(file, loc_of(v, lower_key, upper_key), "NC3007",
+            param_ref(lower_key, ListKind::axis) + " = " + number_text(v.number(lower_key)) +
+                " must be below " + param_ref(upper_key, ListKind::axis) + " = " +
+                number_text(v.number(upper_key)));
+  }
   // TF5200 P-AXIS-00209: 1 <= vb_eilgang <= P-AXIS-00212. ncsim: an error, since a G0 faster
   // than the axis may move is a contradiction, not a default to be trimmed.
   Dynamics& d = axis.dynamics;

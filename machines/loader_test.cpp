@@ -97,6 +97,8 @@ TEST_CASE("an axis list without dynamics gets the TF5200 defaults, converted") {
   CHECK(d.ramp_geom == doctest::Approx(0.01));
   CHECK(d.jerk_feed() == doctest::Approx(20000.0));
   CHECK(d.jerk_rapid() == doctest::Approx(100000.0));
+  CHECK(r.machine->find_axis("X")->modulo_lower == 0.0);                     // P-AXIS-00127
+  CHECK(r.machine->find_axis("X")->modulo_upper == doctest::Approx(360.0));  // 3600000 x 1e-4
   CHECK(r.machine->find_axis("X")->control.kv == doctest::Approx(kDefaultKv));
   CHECK(kDefaultKv == 10.0);
 }

@@ -105,7 +105,8 @@ struct AxisParams {
   std::uint32_t mode_bits = 1;  ///< kenngr.achs_mode P-AXIS-00015
   bool encoder_only = false;    ///< ACHSMODE_COUNTER: pure encoder axis
   bool modulo = false;          ///< ACHSMODE_MODULO
-  double modulo_range = 360.0;  ///< enc.modulo_factor [mm | deg]
+  double modulo_lower = 0.0;    ///< P-AXIS-00127 getriebe[0].modulou [mm | deg]
+  double modulo_upper = 360.0;  ///< P-AXIS-00126 getriebe[0].moduloo, > modulo_lower [mm | deg]
   int drive_type = 0;           ///< kenngr.antr_typ P-AXIS-00020 (stored, not interpreted)
   std::string measure_signal;   ///< kenngr.measure.signal
   SoftLimits soft_limits;

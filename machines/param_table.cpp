@@ -79,7 +79,8 @@ constexpr std::array kTable = {
   ParamSpec{"NCSIM-AXIS-027", "monitoring.target_position", A, ValueType::boolean, 0, 1, "", 1, "", "1", kOpt, -1, -1, "000 §7.1.5"},
   ParamSpec{"NCSIM-AXIS-028", "monitoring.target_position_window", A, ValueType::real64, 1e-9, kRealMax, "mm | deg", 1, "mm | deg", "2.0", kOpt, -1, -1, "000 §7.1.5"},
   ParamSpec{"NCSIM-AXIS-029", "monitoring.target_position_time", A, ValueType::real64, 0, kRealMax, "s", 1, "s", "0.02", kOpt, -1, -1, "000 §7.1.5"},
-  ParamSpec{"NCSIM-AXIS-030", "enc.modulo_factor", A, ValueType::real64, 1e-9, kRealMax, "mm | deg", 1, "mm | deg", "360.0", kOpt, -1, -1, "000 §7.2.1"},
+  ParamSpec{"P-AXIS-00126", "getriebe[].moduloo", A, ValueType::sgn32, kSgn32Min, kSgn32Max, "0.1 um | 0.0001 deg", kTenthMicron, "mm | deg", "3600000", kOpt, 7, -1, "TF5200 P-AXIS-00126 (> P-AXIS-00127)"},
+  ParamSpec{"P-AXIS-00127", "getriebe[].modulou", A, ValueType::sgn32, kSgn32Min, kSgn32Max, "0.1 um | 0.0001 deg", kTenthMicron, "mm | deg", "0", kOpt, 7, -1, "TF5200 P-AXIS-00127"},
   // ---- channel list ------------------------------------------------------------------------
   ParamSpec{"P-CHAN-00650", "configuration.interpolator.function", C, ValueType::flag_set, 0, 0, "", 1, "", "FCT_IPO_DEFAULT", kOpt, -1, -1, "004 §5.2.2"},
   ParamSpec{"P-CHAN-00362", "conveyor_sync.log_number_master", C, ValueType::uns16, 1, kUns16Max, "", 1, "", "", kOpt, -1, -1, "004 §5.2.2"},
@@ -124,6 +125,7 @@ constexpr std::array kRetired = {
   RetiredKey{"dynamics.default_jerk", A, "NC3015", "write the ramp times getriebe[0].slope_profil.tr_beschl_zu/_ab, tr_brems_zu/_ab (P-AXIS-00196/00195/00198/00197) in us: t = a / j"},
   RetiredKey{"dynamics.reference_velocity", A, "NC3015", "remove the line: the TwinCAT NC reference velocity has no ISG axis-list key and ncsim does not use it"},
   RetiredKey{"nci.rapid_traverse_velocity", A, "NC3015", "write getriebe[0].vb_eilgang (P-AXIS-00209) in um/s (0.001 deg/s): the old value x 1000"},
+  RetiredKey{"enc.modulo_factor", A, "NC3015", "write getriebe[0].moduloo / getriebe[0].modulou (P-AXIS-00126 / 00127) in 0.0001 deg (0.1 um): upper = lower + the old value x 10000"},
   RetiredKey{"ctrl.kv", A, "NC3015", "write getriebe[0].kv (P-AXIS-00099) in 0.01/s: the old value x 100"},
   RetiredKey{"getriebe[].lslope_profil.a_feedh", A, "NC3013", "write getriebe[i].slope_profil.a_feedh (P-AXIS-00053): P-AXIS-00024 belongs to the step-shaped (linear) slope, which ncsim does not model"},
 };
