@@ -130,5 +130,10 @@ TEST_CASE("an axis without dynamics in its list gets the TF5200 defaults") {
   CHECK(make_position_control(a).kv == doctest::Approx(10.0));  // P-AXIS-00099 1000 x 0.01/s
 }
 
+TEST_CASE("machines and axes default Kv to the same P-AXIS-00099 value") {
+  CHECK(PositionControlParams{}.kv == machines::kDefaultKv);
+  CHECK(machines::ControlLoop{}.kv == machines::kDefaultKv);
+}
+
 }  // namespace
 }  // namespace ncsim::axes
