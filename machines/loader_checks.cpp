@@ -36,6 +36,13 @@ bool usable(const ListValues& v, std::initializer_list<std::string_view> keys) {
   return std::none_of(keys.begin(), keys.end(), [&v](std::string_view k) { return v.rejected(k); });
 }
 
+// True when `value` is what the list wrote for `key` (not a default, and not the value a 0
+// stands for, as P-AXIS-00053 / P-AXIS-00081 = 0 stand for the G0 values): only such a value
+// is named in a warning.
+bool written(const ListValues& v, std::string_view key, double value) {
+  return v.given(key) && v.internal(key) == value;
+}
+
 // The location of `key`, or of `fallback` when `key` was not written.
 core::SourceLoc loc_of(const ListValues& v, std::string_view key, std::string_view fallback) {
   const core::SourceLoc loc = v.loc(key);
@@ -104,7 +111,7 @@ void check_axis(AxisParams& axis, const ListValues& v, Reporter& r) {
       {&d.dec_feedhold, "getriebe[0].slope_profil.a_feedh"},
   }};
   for (const Bounded& b : accelerations) {
-    if (*b.value > d.acc_max && v.given(b.key) && usable(v, {b.key, a_max_key})) {
+    if (*b.value > d.acc_max && written(v, b.key, *b.value) && usable(v, {b.key, a_max_key})) {
       r.warning(file, v.loc(b.key), "NC3020",
                 param_ref(b.key, ListKind::axis) + " = " + number_text(v.number(b.key)) +
                     " exceeds " + param_ref(a_max_key, ListKind::axis) + " = " +
@@ -122,7 +129,7 @@ void check_axis(AxisParams& axis, const ListValues& v, Reporter& r) {
       {&d.ramp_feedhold, "getriebe[0].slope_profil.tr_feedh"},
   }};
   for (const Bounded& b : ramps) {
-    if (*b.value < d.ramp_min && v.given(b.key) && usable(v, {b.key, ramp_min_key})) {
+    if (*b.value < d.ramp_min && written(v, b.key, *b.value) && usable(v, {b.key, ramp_min_key})) {
       r.warning(file, v.loc(b.key), "NC3020",
                 param_ref(b.key, ListKind::axis) + " = " + number_text(v.number(b.key)) +
                     " is below " + param_ref(ramp_min_key, ListKind::axis) + " = " +

@@ -160,17 +160,25 @@ TEST_CASE("a missing machine folder is one diagnostic, not an exception") {
 
 TEST_CASE(
     "warnings: hold_limit_vel_factor above 1000 is limited (21483), a feed acceleration "
-    "above P-AXIS-00008 is limited (NC3020), and the machine still loads") {
+    "above P-AXIS-00008 and a ramp below P-AXIS-00201 are limited (NC3020), and the machine "
+    "still loads") {
   const LoadResult r = load_machine(source_root() / "machines" / "testdata" / "warn");
   INFO(all_diagnostics(r));
   REQUIRE(r.machine.has_value());
   CHECK_FALSE(r.diagnostics.has_errors());
-  REQUIRE(r.diagnostics.items().size() == 2);
+  REQUIRE(r.diagnostics.items().size() == 3);
   CHECK(r.diagnostics.items()[0].id == "NC3020");
   CHECK(r.diagnostics.items()[0].severity == core::Severity::warning);
   CHECK(r.diagnostics.items()[0].loc.line == 5);
-  CHECK(r.diagnostics.items()[1].id == "21483");
-  CHECK(r.diagnostics.items()[1].loc.line == 4);
+  // y.lis: tr_grenz below tr_min is named; tr_feedh 0 (= tr_grenz) is not blamed.
+  CHECK(r.diagnostics.items()[1].id == "NC3020");
+  CHECK(r.diagnostics.items()[1].loc.line == 6);
+  CHECK(r.diagnostics.items()[1].message.find("tr_grenz") != std::string::npos);
+  CHECK(r.diagnostics.items()[2].id == "21483");
+  CHECK(r.diagnostics.items()[2].loc.line == 4);
+  const Dynamics& y = r.machine->find_axis("Y")->dynamics;
+  CHECK(y.ramp_rapid == doctest::Approx(0.02));     // raised to P-AXIS-00201
+  CHECK(y.ramp_feedhold == doctest::Approx(0.02));  // P-AXIS-00081 0: = P-AXIS-00200
   CHECK(r.machine->channel.conveyor->hold_limit_vel_factor == doctest::Approx(1.0));
   CHECK(r.machine->find_axis("X")->dynamics.acc_feed == doctest::Approx(500.0));
 }
