@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <vector>
 
 #include "machines/list_file.hpp"
 #include "machines/loader_detail.hpp"
@@ -50,6 +51,46 @@ std::optional<double> parse_real(std::string_view text) {
     return std::nullopt;
   }
   return value;
+}
+
+// Edit distance (insert, delete, substitute) between two short keys.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j)
+    row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string_view last_segment(std::string_view key) {
+  const std::size_t dot = key.rfind('.');
+  return dot == std::string_view::npos ? key : key.substr(dot + 1);
+}
+
+// "; did you mean getriebe[].vb_eilgang (P-AXIS-00209)?" for a key within two edits of a known
+// key of the same list, or with the same last segment; empty when nothing is close.
+std::string suggestion(ListKind kind, std::string_view pattern) {
+  const ParamSpec* best = nullptr;
+  std::size_t best_distance = 3;
+  for (const ParamSpec& spec : param_table()) {
+    if (spec.list != kind) continue;
+    std::size_t d = edit_distance(pattern, spec.key);
+    if (d >= 3 && last_segment(pattern) == last_segment(spec.key)) d = 2;
+    if (d < best_distance) {
+      best = &spec;
+      best_distance = d;
+    }
+  }
+  if (best == nullptr) return "";
+  return "; did you mean " + std::string(best->key) + " (" + std::string(best->id) + ")?";
 }
 
 std::string range_text(const ParamSpec& spec) {
@@ -125,7 +166,8 @@ void ListValues::read(const core::SourceFile& source, core::DiagnosticList& diag
                   " parameter; it cannot be set in the " + list_name + " list");
       } else {
         error(entry.key_loc, "NC3002",
-              "unknown parameter '" + entry.key + "' in the " + list_name + " list");
+              "unknown parameter '" + entry.key + "' in the " + list_name + " list" +
+                  suggestion(kind_, entry.pattern));
       }
       continue;
     }

@@ -103,6 +103,30 @@ TEST_CASE("an axis list without dynamics gets the TF5200 defaults, converted") {
   CHECK(kDefaultKv == 10.0);
 }
 
+TEST_CASE("an unknown key close to a known one is answered with the known key and its id") {
+  const auto dir = std::filesystem::temp_directory_path() / "ncsim_machines_did_you_mean";
+  std::filesystem::create_directories(dir);
+  const auto base =
+      std::filesystem::path(std::getenv("NCSIM_SOURCE_DIR")) / "machines" / "testdata" / "base";
+  {
+    std::ofstream index(dir / kMachineIndexFile);
+    index << "channel " << (base / "channel.lis").string() << "\naxis X x.lis\naxis S "
+          << (base / "s.lis").string() << "\n";
+    std::ofstream x(dir / "x.lis");
+    x << "kopf.log_achs_name X\nkopf.achs_nr 1\nkenngr.swe_poss 100\n"
+      << "getriebe[0].dynamik.vb_eilgang 1000\ncompletely.different 1\n";
+  }
+  const LoadResult r = load_machine(dir);
+  INFO(all_diagnostics(r));
+  REQUIRE(r.diagnostics.items().size() == 3);
+  CHECK(r.diagnostics.items()[0].message ==
+        "unknown parameter 'kenngr.swe_poss' in the axis list; did you mean kenngr.swe_pos "
+        "(P-AXIS-00178)?");
+  CHECK(r.diagnostics.items()[1].message.find(
+            "did you mean getriebe[].vb_eilgang (P-AXIS-00209)") != std::string::npos);
+  CHECK(r.diagnostics.items()[2].message.find("did you mean") == std::string::npos);
+}
+
 TEST_CASE("every retired key names its replacement, none is also a live key") {
   for (const RetiredKey& k : retired_keys()) {
     CAPTURE(k.key);
