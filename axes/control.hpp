@@ -72,9 +72,10 @@ class EncoderNoise {
 };
 
 /// Parameters of the position control loop. Names follow 000_* 7.4 (Axes | Axis | Ctrl) and
-/// 7.2.1 (Enc); the machines/ loader maps list entries onto them.
+/// 7.2.1 (Enc); axes/axis_config.hpp maps a machine's axis lists onto them.
 struct PositionControlParams {
-  double kv = 33.0;  ///< [1/s] "Position control: Proportional Factor Kv" (000_* 7.4.2)
+  double kv = 10.0;  ///< [1/s] "Position control: Proportional Factor Kv" (000_* 7.4.2);
+                     ///< default: ISG P-AXIS-00099 getriebe[i].kv, 1000 x 0.01/s
   double feedforward_weight = 1.0;  ///< [-] "Feedforward Velocity: Pre-Control Weighting
                                     ///< [0.0 .. 1.0]" (000_* 7.4.2)
   double ka = 0.0;  ///< [s] "Feedforward Acceleration: Proportional Factor Ka" (000_* 7.4.2)

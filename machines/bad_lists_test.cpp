@@ -1,5 +1,6 @@
 // Every file in machines/testdata/bad/ replaces one list of machines/testdata/base/ and must
-// produce the diagnostic its first line states:
+// produce the diagnostic its first line states, and no other error (issue 9: one bad value must
+// not add follow-on errors such as "missing mandatory" for a key that is present):
 //   # expect: replaces=<list> line=<n> id=<id> key=<key>
 // (line 0: the diagnostic has no line, e.g. a missing mandatory key).
 #include <doctest/doctest.h>
@@ -77,8 +78,10 @@ TEST_CASE("every bad parameter list produces the diagnostic it documents") {
     CHECK_FALSE(r.machine.has_value());
     std::string got;
     bool found = false;
+    int errors = 0;
     for (const core::Diagnostic& d : r.diagnostics.items()) {
       got += core::format(d);
+      errors += d.severity == core::Severity::error ? 1 : 0;
       found = found || (d.file == std::filesystem::absolute(bad).string() &&
                         std::to_string(d.loc.line) == want.at("line") && d.id == want.at("id") &&
                         d.message.find(want.at("key")) != std::string::npos &&
@@ -86,6 +89,7 @@ TEST_CASE("every bad parameter list produces the diagnostic it documents") {
     }
     INFO("diagnostics:\n" << got);
     CHECK(found);
+    CHECK(errors == 1);
   }
 }
 

@@ -1,7 +1,10 @@
 #include "machines/list_file.hpp"
 
 #include <cctype>
+#include <cstdio>
 #include <string_view>
+
+#include "machines/param_table.hpp"
 
 namespace ncsim::machines {
 namespace {
@@ -18,6 +21,31 @@ bool is_key_char(char c) {
 bool is_value_char(char c) {
   return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '.' || c == '+' ||
          c == '-';
+}
+
+// A byte as it may be shown in a message: printable ASCII as is, anything else as \xNN.
+std::string shown_char(char c) {
+  const auto u = static_cast<unsigned char>(c);
+  if (u >= 0x20 && u < 0x7F) return std::string(1, c);
+  char buf[8];
+  std::snprintf(buf, sizeof buf, "\\x%02X", u);
+  return buf;
+}
+
+// Text as it may be shown in a message, every byte through shown_char.
+std::string shown_text(std::string_view text) {
+  std::string out;
+  for (const char c : text)
+    out += shown_char(c);
+  return out;
+}
+
+// "key (ID)" for a key of either list, "'key'" when the key is unknown.
+std::string key_ref(const ListEntry& entry) {
+  const ParamSpec* spec = find_param(ListKind::axis, entry.pattern);
+  if (spec == nullptr) spec = find_param(ListKind::channel, entry.pattern);
+  if (spec == nullptr) return "'" + entry.key + "'";
+  return entry.key + " (" + std::string(spec->id) + ")";
 }
 
 core::Diagnostic syntax_error(const core::SourceFile& file, std::uint32_t line, std::size_t col,
@@ -63,8 +91,8 @@ bool parse_line(const core::SourceFile& file, std::uint32_t line, std::string_vi
   for (std::size_t k = 0; k < key.size(); ++k) {
     if (!is_key_char(key[k])) {
       diagnostics.push_back(syntax_error(file, line, key_start + k,
-                                         "unexpected character '" + std::string(1, key[k]) +
-                                             "' in key '" + std::string(key) +
+                                         "unexpected character '" + shown_char(key[k]) +
+                                             "' in key '" + shown_text(key) +
                                              "'; keys are letters, digits, '_', '.' and [index]"));
       return false;
     }
@@ -82,14 +110,15 @@ bool parse_line(const core::SourceFile& file, std::uint32_t line, std::string_vi
     ++pos;
   if (pos == text.size() || text[pos] == '#' || text[pos] == '(') {
     diagnostics.push_back(
-        syntax_error(file, line, pos, "missing value after key '" + entry.key + "'"));
+        syntax_error(file, line, pos, "missing value after key " + key_ref(entry)));
     return false;
   }
   entry.value_loc = core::SourceLoc{line, static_cast<std::uint32_t>(pos + 1)};
   if (text[pos] == '"') {
     const std::size_t close = text.find('"', pos + 1);
     if (close == std::string_view::npos) {
-      diagnostics.push_back(syntax_error(file, line, pos, "unterminated string value"));
+      diagnostics.push_back(
+          syntax_error(file, line, pos, "unterminated string value of " + key_ref(entry)));
       return false;
     }
     entry.value = std::string(text.substr(pos + 1, close - pos - 1));
@@ -103,9 +132,9 @@ bool parse_line(const core::SourceFile& file, std::uint32_t line, std::string_vi
       if (pos == word_start) {
         diagnostics.push_back(syntax_error(
             file, line, pos,
-            pos < text.size() ? "unexpected character '" + std::string(1, text[pos]) +
-                                    "' in the value of '" + entry.key + "'"
-                              : "missing flag after '|' in the value of '" + entry.key + "'"));
+            pos < text.size() ? "unexpected character '" + shown_char(text[pos]) +
+                                    "' in the value of " + key_ref(entry)
+                              : "missing flag after '|' in the value of " + key_ref(entry)));
         return false;
       }
       entry.value += text.substr(word_start, pos - word_start);
@@ -126,8 +155,8 @@ bool parse_line(const core::SourceFile& file, std::uint32_t line, std::string_vi
     ++pos;
   if (pos < text.size() && text[pos] != '#' && text[pos] != '(') {
     diagnostics.push_back(syntax_error(file, line, pos,
-                                       "unexpected text after the value of '" + entry.key +
-                                           "'; a comment after a value starts with '#' or '('"));
+                                       "unexpected text after the value of " + key_ref(entry) +
+                                           "; a comment after a value starts with '#' or '('"));
     return false;
   }
   return true;
@@ -137,15 +166,26 @@ bool parse_line(const core::SourceFile& file, std::uint32_t line, std::string_vi
 
 ListParse parse_list(const core::SourceFile& file) {
   ListParse out;
+  constexpr std::string_view kBom = "\xEF\xBB\xBF";
   for (std::uint32_t line = 1; line <= file.line_count(); ++line) {
     const std::string_view text = file.line_text(line);
     std::size_t pos = 0;
+    // Decision (docs/machines.md): a UTF-8 byte order mark, as editors on Windows write it, is
+    // accepted at the start of a list and named in a note; anywhere else it is a stray byte.
+    if (line == 1 && text.substr(0, kBom.size()) == kBom) {
+      out.diagnostics.push_back(
+          core::Diagnostic{core::Severity::note, file.name(), core::SourceLoc{1, 1}, "NC3021",
+                           "UTF-8 byte order mark (EF BB BF) at the start of the list ignored"});
+      pos = kBom.size();
+    }
     while (pos < text.size() && is_blank(text[pos]))
       ++pos;
     if (pos == text.size() || text[pos] == '#') continue;
     ListEntry entry;
     if (parse_line(file, line, text, pos, entry, out.diagnostics)) {
       out.entries.push_back(std::move(entry));
+    } else if (!entry.key.empty()) {
+      out.rejected.push_back(std::move(entry));
     }
   }
   return out;

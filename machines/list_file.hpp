@@ -9,7 +9,8 @@
 //     (`trafo[0].param[4]`); a value is a number (decimal, hex `0x...`, exponent form
 //     `5.000e+004`), an identifier, a quoted string, or identifiers joined by `|`;
 //   - after the value a trailing comment may follow, starting with `#` or `(`.
-// Invariants: no value is interpreted here; types and ranges are the loader's job.
+// Invariants: no value is interpreted here; types and ranges are the loader's job. Messages
+// name a known key with its parameter id ("kenngr.swe_pos (P-AXIS-00178)").
 
 #include <string>
 #include <vector>
@@ -30,10 +31,14 @@ struct ListEntry {
 
 struct ListParse {
   std::vector<ListEntry> entries;
-  std::vector<core::Diagnostic> diagnostics;  ///< NC3001 syntax errors
+  /// Lines whose key was read but whose value is malformed (key fields set, value empty):
+  /// the loader must not report such a key as missing (one error per bad line).
+  std::vector<ListEntry> rejected;
+  std::vector<core::Diagnostic> diagnostics;  ///< NC3001 syntax errors, NC3021 BOM note
 };
 
-/// Splits a list into entries; a bad line gives one diagnostic and is skipped.
+/// Splits a list into entries; a bad line gives one diagnostic and is skipped. A UTF-8 byte
+/// order mark at the start of the file is skipped with note NC3021 (docs/machines.md).
 ListParse parse_list(const core::SourceFile& file);
 
 }  // namespace ncsim::machines

@@ -59,7 +59,49 @@ TEST_CASE("text after a value that is not a comment is an error") {
   const ListParse p = parse("kenngr.swe_pos 100 200\n");
   REQUIRE(p.diagnostics.size() == 1);
   CHECK(p.diagnostics[0].loc == core::SourceLoc{1, 20});
-  CHECK(p.diagnostics[0].message.find("kenngr.swe_pos") != std::string::npos);
+  CHECK(p.diagnostics[0].message.find("kenngr.swe_pos (P-AXIS-00178)") != std::string::npos);
+}
+
+TEST_CASE("NC3001 messages name the parameter id of a known key, of either list") {
+  const ListParse axis = parse("kenngr.swe_neg\n");
+  REQUIRE(axis.diagnostics.size() == 1);
+  CHECK(axis.diagnostics[0].message == "missing value after key kenngr.swe_neg (P-AXIS-00177)");
+  const ListParse channel = parse("conveyor_sync.move_direction 1 2\n");
+  REQUIRE(channel.diagnostics.size() == 1);
+  CHECK(channel.diagnostics[0].message.find("conveyor_sync.move_direction (P-CHAN-00363)") !=
+        std::string::npos);
+  const ListParse unknown = parse("no.such.key 1 2\n");
+  REQUIRE(unknown.diagnostics.size() == 1);
+  CHECK(unknown.diagnostics[0].message.find("'no.such.key'") != std::string::npos);
+}
+
+TEST_CASE("a line whose value is malformed is kept as rejected, so its key is not missing") {
+  const ListParse p = parse("kopf.achs_nr 1 2\ntrafo[0].param[3] $\n");
+  CHECK(p.entries.empty());
+  REQUIRE(p.rejected.size() == 2);
+  CHECK(p.rejected[0].key == "kopf.achs_nr");
+  CHECK(p.rejected[1].pattern == "trafo[].param[]");
+  CHECK(p.rejected[1].indices == std::vector<int>{0, 3});
+}
+
+TEST_CASE("a UTF-8 byte order mark at the start of a list is skipped with note NC3021") {
+  const ListParse p = parse("\xEF\xBB\xBFkopf.achs_nr 1\n");
+  REQUIRE(p.diagnostics.size() == 1);
+  CHECK(p.diagnostics[0].id == "NC3021");
+  CHECK(p.diagnostics[0].severity == core::Severity::note);
+  CHECK(p.diagnostics[0].loc == core::SourceLoc{1, 1});
+  REQUIRE(p.entries.size() == 1);
+  CHECK(p.entries[0].key == "kopf.achs_nr");
+  CHECK(p.entries[0].key_loc == core::SourceLoc{1, 4});
+}
+
+TEST_CASE("a byte order mark after the start is a stray byte, shown escaped") {
+  const ListParse p = parse("kopf.achs_nr 1\n\xEF\xBB\xBFkenngr.swe_pos 1\n");
+  REQUIRE(p.diagnostics.size() == 1);
+  CHECK(p.diagnostics[0].id == "NC3001");
+  CHECK(p.diagnostics[0].loc.line == 2);
+  CHECK(p.diagnostics[0].message.find("'\\xEF'") != std::string::npos);
+  CHECK(p.diagnostics[0].message.find('\xEF') == std::string::npos);
 }
 
 TEST_CASE("malformed indices are errors") {

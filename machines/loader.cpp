@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <vector>
 
 #include "machines/list_file.hpp"
 #include "machines/loader_detail.hpp"
@@ -52,6 +53,46 @@ std::optional<double> parse_real(std::string_view text) {
   return value;
 }
 
+// Edit distance (insert, delete, substitute) between two short keys.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j)
+    row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string_view last_segment(std::string_view key) {
+  const std::size_t dot = key.rfind('.');
+  return dot == std::string_view::npos ? key : key.substr(dot + 1);
+}
+
+// "; did you mean getriebe[].vb_eilgang (P-AXIS-00209)?" for a key within two edits of a known
+// key of the same list, or with the same last segment; empty when nothing is close.
+std::string suggestion(ListKind kind, std::string_view pattern) {
+  const ParamSpec* best = nullptr;
+  std::size_t best_distance = 3;
+  for (const ParamSpec& spec : param_table()) {
+    if (spec.list != kind) continue;
+    std::size_t d = edit_distance(pattern, spec.key);
+    if (d >= 3 && last_segment(pattern) == last_segment(spec.key)) d = 2;
+    if (d < best_distance) {
+      best = &spec;
+      best_distance = d;
+    }
+  }
+  if (best == nullptr) return "";
+  return "; did you mean " + std::string(best->key) + " (" + std::string(best->id) + ")?";
+}
+
 std::string range_text(const ParamSpec& spec) {
   if (spec.type == ValueType::sgn32 && spec.min < -2.0e9) return "MIN(SGN32)..MAX(SGN32)";
   std::string lo = spec.min < -1.0e299 ? "MIN(REAL64)" : number_text(spec.min);
@@ -92,9 +133,32 @@ void ListValues::read(const core::SourceFile& source, core::DiagnosticList& diag
     diagnostics.add(make_diag(core::Severity::error, file_, loc, id, std::move(message)));
   };
 
+  for (const ListEntry& entry : parsed.rejected) {
+    const ParamSpec* spec = find_param(kind_, entry.pattern);
+    if (spec == nullptr) continue;
+    std::string key;
+    std::size_t index_no = 0;
+    for (const char c : spec->key) {
+      key += c;
+      if (c == '[' && index_no < entry.indices.size()) {
+        key += std::to_string(entry.indices[index_no++]);
+      }
+    }
+    rejected_.push_back(std::move(key));
+  }
+
   for (const ListEntry& entry : parsed.entries) {
     const ParamSpec* spec = find_param(kind_, entry.pattern);
     if (spec == nullptr) {
+      if (const RetiredKey* retired = find_retired(kind_, entry.pattern)) {
+        const bool replaced = retired->diagnostic == "NC3015";
+        error(entry.key_loc, std::string(retired->diagnostic).c_str(),
+              (replaced ? entry.key + " is no longer read (ncsim's own key before it read the "
+                                      "ISG axis list): "
+                        : "not supported: " + entry.key + "; ") +
+                  std::string(retired->use_instead));
+        continue;
+      }
       if (const ParamSpec* elsewhere = find_param(other, entry.pattern)) {
         error(entry.key_loc, "NC3011",
               entry.key + " (" + std::string(elsewhere->id) + ") is a " +
@@ -102,7 +166,8 @@ void ListValues::read(const core::SourceFile& source, core::DiagnosticList& diag
                   " parameter; it cannot be set in the " + list_name + " list");
       } else {
         error(entry.key_loc, "NC3002",
-              "unknown parameter '" + entry.key + "' in the " + list_name + " list");
+              "unknown parameter '" + entry.key + "' in the " + list_name + " list" +
+                  suggestion(kind_, entry.pattern));
       }
       continue;
     }
@@ -164,11 +229,15 @@ void ListValues::read(const core::SourceFile& source, core::DiagnosticList& diag
         break;
       }
     }
-    if (!ok) continue;
+    if (!ok) {
+      rejected_.push_back(key);
+      continue;
+    }
     const bool numeric = spec->type != ValueType::word && spec->type != ValueType::flag_set;
     if (numeric && (value.number < spec->min || value.number > spec->max)) {
       error(entry.value_loc, "NC3004",
             ref + " = " + entry.value + " is outside its range " + range_text(*spec));
+      rejected_.push_back(key);
       continue;
     }
     if (spec->type == ValueType::axis_mode) {
@@ -178,6 +247,7 @@ void ListValues::read(const core::SourceFile& source, core::DiagnosticList& diag
         std::snprintf(buf, sizeof buf, "0x%08X", bits & ~axis_mode::kKnownBits);
         error(entry.value_loc, "NC3004",
               ref + " = " + entry.value + " sets undefined mode bits " + buf);
+        rejected_.push_back(key);
         continue;
       }
     }
@@ -195,6 +265,10 @@ const StoredValue* ListValues::find(std::string_view key) const {
     if (v.key == key) return &v;
   }
   return nullptr;
+}
+
+bool ListValues::rejected(std::string_view key) const {
+  return std::find(rejected_.begin(), rejected_.end(), key) != rejected_.end();
 }
 
 double ListValues::number(std::string_view key) const {
@@ -318,7 +392,7 @@ std::optional<core::SourceFile> load_source(const std::filesystem::path& path,
 }
 
 void require(const ListValues& values, std::string_view key, core::DiagnosticList& diagnostics) {
-  if (values.given(key)) return;
+  if (values.given(key) || values.rejected(key)) return;
   diagnostics.add(detail::make_diag(core::Severity::error, values.file(), core::SourceLoc{},
                                     "NC3006",
                                     "missing mandatory " + detail::param_ref(key, values.kind())));
@@ -336,25 +410,32 @@ AxisParams build_axis(const ListValues& v, core::DiagnosticList& diagnostics) {
   a.mode_bits = static_cast<std::uint32_t>(v.number("kenngr.achs_mode"));
   a.encoder_only = (a.mode_bits & axis_mode::kCounter) != 0U;
   a.modulo = (a.mode_bits & axis_mode::kModulo) != 0U;
-  a.modulo_range = v.internal("enc.modulo_factor");
+  a.modulo_lower = v.internal("getriebe[0].modulou");
+  a.modulo_upper = v.internal("getriebe[0].moduloo");
   a.drive_type = static_cast<int>(v.number("kenngr.antr_typ"));
   a.measure_signal = v.text("kenngr.measure.signal");
   a.soft_limits = SoftLimits{v.internal("kenngr.swe_neg"), v.internal("kenngr.swe_pos")};
 
+  // Gear 0 only (docs/machines.md): getriebe[1..7] are accepted and not used.
   Dynamics& d = a.dynamics;
-  d.v_max = v.internal("dynamics.max_velocity");
-  d.a_max = v.internal("dynamics.max_acceleration");
-  d.d_max = v.internal("dynamics.max_deceleration");
-  d.j_max = v.internal("dynamics.max_jerk");
-  auto derived = [&v](std::string_view key, double fallback) {
-    return v.given(key) ? v.internal(key) : fallback;
-  };
-  d.v_default = derived("dynamics.default_velocity", d.v_max);
-  d.a_default = derived("dynamics.default_acceleration", d.a_max);
-  d.d_default = derived("dynamics.default_deceleration", d.d_max);
-  d.j_default = derived("dynamics.default_jerk", d.j_max);
-  d.v_reference = derived("dynamics.reference_velocity", d.v_max);
-  d.v_rapid = derived("nci.rapid_traverse_velocity", d.v_max);
+  d.v_max = v.internal("getriebe[0].dynamik.vb_max");
+  d.v_rapid = v.internal("getriebe[0].vb_eilgang");
+  d.acc_max = v.internal("getriebe[0].dynamik.a_max");
+  d.acc_feed = v.internal("getriebe[0].slope_profil.a_beschl");
+  d.dec_feed = v.internal("getriebe[0].slope_profil.a_brems");
+  d.acc_rapid = v.internal("getriebe[0].slope_profil.a_grenz");
+  // P-AXIS-00053 / P-AXIS-00081: 0 (the default) stands for the rapid value (TF5200 remarks).
+  const double feedhold = v.internal("getriebe[0].slope_profil.a_feedh");
+  d.dec_feedhold = feedhold > 0.0 ? feedhold : d.acc_rapid;
+  d.ramp_acc_up = v.internal("getriebe[0].slope_profil.tr_beschl_zu");
+  d.ramp_acc_down = v.internal("getriebe[0].slope_profil.tr_beschl_ab");
+  d.ramp_dec_up = v.internal("getriebe[0].slope_profil.tr_brems_zu");
+  d.ramp_dec_down = v.internal("getriebe[0].slope_profil.tr_brems_ab");
+  d.ramp_rapid = v.internal("getriebe[0].slope_profil.tr_grenz");
+  const double ramp_feedhold = v.internal("getriebe[0].slope_profil.tr_feedh");
+  d.ramp_feedhold = ramp_feedhold > 0.0 ? ramp_feedhold : d.ramp_rapid;
+  d.ramp_min = v.internal("getriebe[0].dynamik.tr_min");
+  d.ramp_geom = v.internal("getriebe[0].dynamik.tr_geom");
   d.velo_jump_factor = v.internal("nci.velo_jump_factor");
   d.tolerance_ball = v.internal("nci.tolerance_ball");
 
@@ -371,7 +452,7 @@ AxisParams build_axis(const ListValues& v, core::DiagnosticList& diagnostics) {
   m.target_position_window = v.internal("monitoring.target_position_window");
   m.target_position_time = v.internal("monitoring.target_position_time");
 
-  a.control.kv = v.internal("ctrl.kv");
+  a.control.kv = v.internal("getriebe[0].kv");
   a.control.pt1_time = v.internal("drive.pt1_time");
 
   if (v.number("conv_sync.is_master") != 0.0) {

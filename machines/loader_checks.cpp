@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <initializer_list>
 
 #include "machines/kinematics.hpp"
 #include "machines/loader_detail.hpp"
@@ -29,6 +30,19 @@ std::string hex_text(std::uint32_t bits) {
   return buf;
 }
 
+// False when any of `keys` was written with a rejected value: a check that compares it would
+// compare against its default and report a follow-on error (issue 9: one error per bad value).
+bool usable(const ListValues& v, std::initializer_list<std::string_view> keys) {
+  return std::none_of(keys.begin(), keys.end(), [&v](std::string_view k) { return v.rejected(k); });
+}
+
+// True when `value` is what the list wrote for `key` (not a default, and not the value a 0
+// stands for, as P-AXIS-00053 / P-AXIS-00081 = 0 stand for the G0 values): only such a value
+// is named in a warning.
+bool written(const ListValues& v, std::string_view key, double value) {
+  return v.given(key) && v.internal(key) == value;
+}
+
 // The location of `key`, or of `fallback` when `key` was not written.
 core::SourceLoc loc_of(const ListValues& v, std::string_view key, std::string_view fallback) {
   const core::SourceLoc loc = v.loc(key);
@@ -39,62 +53,89 @@ void check_axis(AxisParams& axis, const ListValues& v, Reporter& r) {
   const std::string& file = v.file();
   // kenngr.achs_typ: 1 translatory, 2 rotary, 4 spindle (seed 004 §4.8.1 "type == 4 spindle").
   const double typ = v.number("kenngr.achs_typ");
-  if (typ != 1.0 && typ != 2.0 && typ != 4.0) {
+  if (typ != 1.0 && typ != 2.0 && typ != 4.0 && usable(v, {"kenngr.achs_typ"})) {
     r.error(file, v.loc("kenngr.achs_typ"), "NC3004",
             param_ref("kenngr.achs_typ", ListKind::axis) + " = " + number_text(typ) +
                 " must be 1 (linear), 2 (rotary) or 4 (spindle)");
   }
   // Seed 004 §5.2.1 note (1): ACHSMODE_LINEAR or ACHSMODE_MODULO must always be set.
-  if ((axis.mode_bits & (axis_mode::kLinear | axis_mode::kModulo)) == 0U) {
+  if ((axis.mode_bits & (axis_mode::kLinear | axis_mode::kModulo)) == 0U &&
+      usable(v, {"kenngr.achs_mode"})) {
     r.error(file, v.loc("kenngr.achs_mode"), "NC3007",
             param_ref("kenngr.achs_mode", ListKind::axis) + " = " + hex_text(axis.mode_bits) +
                 " sets neither ACHSMODE_LINEAR (0x00000001) nor ACHSMODE_MODULO (0x00000004); "
                 "one of them must be set");
   }
   // Seed 004 §5.2.1: MIN(SGN32) < swe_neg < P-AXIS-00178.
-  if (axis.soft_limits.neg >= axis.soft_limits.pos) {
+  if (axis.soft_limits.neg >= axis.soft_limits.pos &&
+      usable(v, {"kenngr.swe_neg", "kenngr.swe_pos"})) {
     r.error(file, loc_of(v, "kenngr.swe_neg", "kenngr.swe_pos"), "NC3007",
             param_ref("kenngr.swe_neg", ListKind::axis) + " = " +
                 number_text(v.number("kenngr.swe_neg")) + " must be below " +
                 param_ref("kenngr.swe_pos", ListKind::axis) + " = " +
                 number_text(v.number("kenngr.swe_pos")));
   }
-  // Seed 000 §7.1.1: the reference velocity must be >= the maximum velocity.
+  // TF5200 P-AXIS-00126: modulou < moduloo. The kernel resets both to defaults with a warning
+  // (ID 110052); ncsim reports the contradiction (NC3007) rather than run a range not written.
+  const char* upper_key = "getriebe[0].moduloo";
+  const char* lower_key = "getriebe[0].modulou";
+  if (axis.modulo_lower >= axis.modulo_upper && usable(v, {upper_key, lower_key})) {
+    r.error(file, loc_of(v, lower_key, upper_key), "NC3007",
+            param_ref(lower_key, ListKind::axis) + " = " + number_text(v.number(lower_key)) +
+                " must be below " + param_ref(upper_key, ListKind::axis) + " = " +
+                number_text(v.number(upper_key)));
+  }
+  // TF5200 P-AXIS-00209: 1 <= vb_eilgang <= P-AXIS-00212. ncsim: an error, since a G0 faster
+  // than the axis may move is a contradiction, not a default to be trimmed.
   Dynamics& d = axis.dynamics;
-  if (d.v_reference < d.v_max) {
-    r.error(file, loc_of(v, "dynamics.reference_velocity", "dynamics.max_velocity"), "NC3007",
-            param_ref("dynamics.reference_velocity", ListKind::axis) + " = " +
-                number_text(d.v_reference) + " must not be below " +
-                param_ref("dynamics.max_velocity", ListKind::axis) + " = " + number_text(d.v_max));
+  const char* v_max_key = "getriebe[0].dynamik.vb_max";
+  const char* rapid_key = "getriebe[0].vb_eilgang";
+  if (d.v_rapid > d.v_max && usable(v, {rapid_key, v_max_key})) {
+    r.error(file, loc_of(v, rapid_key, v_max_key), "NC3007",
+            param_ref(rapid_key, ListKind::axis) + " = " + number_text(v.number(rapid_key)) +
+                " must not exceed " + param_ref(v_max_key, ListKind::axis) + " = " +
+                number_text(v.number(v_max_key)));
   }
-  // ncsim decision: rapid traverse above the maximum velocity is a contradiction.
-  if (d.v_rapid > d.v_max) {
-    r.error(file, loc_of(v, "nci.rapid_traverse_velocity", "dynamics.max_velocity"), "NC3007",
-            param_ref("nci.rapid_traverse_velocity", ListKind::axis) + " = " +
-                number_text(d.v_rapid) + " must not exceed " +
-                param_ref("dynamics.max_velocity", ListKind::axis) + " = " + number_text(d.v_max));
-  }
-  // Seed 000 §7.1.1: a default above its maximum gives a warning, not an error; ncsim limits it.
-  struct DefaultMax {
+  // TF5200: every slope acceleration lies in 1 .. P-AXIS-00008, every ramp time in
+  // P-AXIS-00201 .. MAX(UNS32). ncsim limits a value outside with warning NC3020 (as the kernel
+  // corrects list values with a warning, e.g. ID 110083 for P-AXIS-00201).
+  struct Bounded {
     double* value;
-    double max;
     const char* key;
-    const char* max_key;
   };
-  const std::array<DefaultMax, 4> pairs = {{
-      {&d.v_default, d.v_max, "dynamics.default_velocity", "dynamics.max_velocity"},
-      {&d.a_default, d.a_max, "dynamics.default_acceleration", "dynamics.max_acceleration"},
-      {&d.d_default, d.d_max, "dynamics.default_deceleration", "dynamics.max_deceleration"},
-      {&d.j_default, d.j_max, "dynamics.default_jerk", "dynamics.max_jerk"},
+  const char* a_max_key = "getriebe[0].dynamik.a_max";
+  const std::array<Bounded, 4> accelerations = {{
+      {&d.acc_feed, "getriebe[0].slope_profil.a_beschl"},
+      {&d.dec_feed, "getriebe[0].slope_profil.a_brems"},
+      {&d.acc_rapid, "getriebe[0].slope_profil.a_grenz"},
+      {&d.dec_feedhold, "getriebe[0].slope_profil.a_feedh"},
   }};
-  for (const DefaultMax& p : pairs) {
-    if (*p.value > p.max) {
-      r.warning(file, v.loc(p.key), "NC3020",
-                param_ref(p.key, ListKind::axis) + " = " + number_text(*p.value) + " exceeds " +
-                    param_ref(p.max_key, ListKind::axis) + " = " + number_text(p.max) +
-                    "; limited to the maximum");
-      *p.value = p.max;
+  for (const Bounded& b : accelerations) {
+    if (*b.value > d.acc_max && written(v, b.key, *b.value) && usable(v, {b.key, a_max_key})) {
+      r.warning(file, v.loc(b.key), "NC3020",
+                param_ref(b.key, ListKind::axis) + " = " + number_text(v.number(b.key)) +
+                    " exceeds " + param_ref(a_max_key, ListKind::axis) + " = " +
+                    number_text(v.number(a_max_key)) + "; limited to the maximum");
     }
+    *b.value = std::min(*b.value, d.acc_max);
+  }
+  const char* ramp_min_key = "getriebe[0].dynamik.tr_min";
+  const std::array<Bounded, 6> ramps = {{
+      {&d.ramp_acc_up, "getriebe[0].slope_profil.tr_beschl_zu"},
+      {&d.ramp_acc_down, "getriebe[0].slope_profil.tr_beschl_ab"},
+      {&d.ramp_dec_up, "getriebe[0].slope_profil.tr_brems_zu"},
+      {&d.ramp_dec_down, "getriebe[0].slope_profil.tr_brems_ab"},
+      {&d.ramp_rapid, "getriebe[0].slope_profil.tr_grenz"},
+      {&d.ramp_feedhold, "getriebe[0].slope_profil.tr_feedh"},
+  }};
+  for (const Bounded& b : ramps) {
+    if (*b.value < d.ramp_min && written(v, b.key, *b.value) && usable(v, {b.key, ramp_min_key})) {
+      r.warning(file, v.loc(b.key), "NC3020",
+                param_ref(b.key, ListKind::axis) + " = " + number_text(v.number(b.key)) +
+                    " is below " + param_ref(ramp_min_key, ListKind::axis) + " = " +
+                    number_text(v.number(ramp_min_key)) + "; raised to the minimum");
+    }
+    *b.value = std::max(*b.value, d.ramp_min);
   }
   // Seed 004 §4.2: the conveyor is a spindle axis, or a pure encoder axis (ACHSMODE_COUNTER).
   if (axis.conveyor && axis.kind != AxisKind::spindle && !axis.encoder_only) {
@@ -116,13 +157,15 @@ constexpr std::array<std::string_view, 16> kKnown = {
     "FCT_DYN_POS_LIMIT",       "FCT_EXTENSION_EQUIDIST",
     "FCT_CALC_POS_V_0",        "FCT_DLM"};
 
-// P-CHAN-00650 flags (seed 004 §5.2.2, interpolation function table).
-void interpret_functions(ChannelParams& ch, const ListValues& v, Reporter& r) {
+// P-CHAN-00650 flags (seed 004 §5.2.2, interpolation function table). False when a flag is
+// unknown (reported here), so that checks depending on the flags stay silent.
+bool interpret_functions(ChannelParams& ch, const ListValues& v, Reporter& r) {
   const char* key = "configuration.interpolator.function";
   const std::string ref = param_ref(key, ListKind::channel);
   const std::string text = v.text(key);
   InterpolatorFunction& f = ch.interpolator;
   std::string size_flag;
+  bool all_known = true;
   std::size_t start = 0;
   while (start <= text.size()) {
     const std::size_t bar = text.find('|', start);
@@ -131,6 +174,7 @@ void interpret_functions(ChannelParams& ch, const ListValues& v, Reporter& r) {
     start = bar == std::string::npos ? text.size() + 1 : bar + 1;
     if (std::find(kKnown.begin(), kKnown.end(), flag) == kKnown.end()) {
       r.error(v.file(), v.loc(key), "NC3003", ref + ": unknown function '" + flag + "'");
+      all_known = false;
       continue;
     }
     f.flags.push_back(flag);
@@ -156,10 +200,11 @@ void interpret_functions(ChannelParams& ch, const ListValues& v, Reporter& r) {
     f.sync = f.sync || flag == "FCT_SYNC";
     f.look_ahead_opt = f.look_ahead_opt || flag == "FCT_LOOK_AHEAD_OPT";
   }
+  return all_known;
 }
 
 void check_conveyor(Machine& m, const ListValues& ch, const std::vector<ListValues>& axes,
-                    Reporter& r) {
+                    bool functions_known, Reporter& r) {
   const std::string& file = ch.file();
   // At most one conveyor axis (P-CHAN-00362 names exactly one). The one the channel names is
   // kept; every other one is reported (without a named one: all but the first).
@@ -180,7 +225,7 @@ void check_conveyor(Machine& m, const ListValues& ch, const std::vector<ListValu
   }
   if (!m.channel.interpolator.conveyor_tracking) {
     // Seed 004 §1: FCT_DLM is required to use conveyor tracking.
-    if (first != nullptr) {
+    if (first != nullptr && functions_known) {
       r.error(file, ch.loc("configuration.interpolator.function"), "NC3008",
               "axis " + first->name + " is a conveyor axis (conv_sync.is_master = 1), but " +
                   param_ref("configuration.interpolator.function", ListKind::channel) +
@@ -191,11 +236,11 @@ void check_conveyor(Machine& m, const ListValues& ch, const std::vector<ListValu
   }
   ConveyorSyncChannel& c = *m.channel.conveyor;
   const char* master_key = "conveyor_sync.log_number_master";
-  if (!ch.given(master_key)) {
+  if (!ch.given(master_key) && !ch.rejected(master_key)) {
     r.error(file, ch.loc("configuration.interpolator.function"), "NC3006",
             "missing mandatory " + param_ref(master_key, ListKind::channel) +
                 ": FCT_DLM needs the logical number of the conveyor axis");
-  } else {
+  } else if (ch.given(master_key)) {
     const AxisParams* master = m.find_axis_number(c.master_axis_number);
     if (master == nullptr) {
       std::string numbers;
@@ -226,9 +271,9 @@ void check_conveyor(Machine& m, const ListValues& ch, const std::vector<ListValu
   if (c.workspace_configured) {
     const char* names[3] = {"x", "y", "z"};
     for (int i = 0; i < 3; ++i) {
-      if (c.workspace.lower[i] >= c.workspace.upper[i]) {
-        const std::string neg = std::string("conveyor_sync.cart_swe_neg_") + names[i];
-        const std::string pos = std::string("conveyor_sync.cart_swe_pos_") + names[i];
+      const std::string neg = std::string("conveyor_sync.cart_swe_neg_") + names[i];
+      const std::string pos = std::string("conveyor_sync.cart_swe_pos_") + names[i];
+      if (c.workspace.lower[i] >= c.workspace.upper[i] && usable(ch, {neg, pos})) {
         r.error(file, loc_of(ch, neg, pos), "NC3007",
                 param_ref(neg, ListKind::channel) + " = " + number_text(ch.number(neg)) +
                     " must be below " + param_ref(pos, ListKind::channel) + " = " +
@@ -284,7 +329,7 @@ void check_channel_refs(Machine& m, const ListValues& ch, Reporter& r) {
   for (const char* pattern : {"trafo[].param[]", "trafo[].type"}) {
     for (const StoredValue* p : ch.matching(pattern)) {
       const std::string id_key = p->key.substr(0, p->key.find(']') + 1) + ".id";
-      if (!ch.given(id_key)) {
+      if (!ch.given(id_key) && !ch.rejected(id_key)) {
         r.error(file, p->loc, "NC3006",
                 p->key + " is given but " + param_ref(id_key, ListKind::channel) + " is missing");
       }
@@ -295,6 +340,13 @@ void check_channel_refs(Machine& m, const ListValues& ch, Reporter& r) {
     const TrafoParams& t = m.channel.trafos[j];
     const std::string id_key = "trafo[" + std::to_string(j) + "].id";
     if (!ch.given(id_key)) continue;
+    // A rejected parameter of this kinematic would be built from its default: skip the build.
+    const std::string prefix = "trafo[" + std::to_string(j) + "].";
+    bool complete = !ch.rejected(prefix + "type");
+    for (std::size_t k = 0; k < t.param.size() && complete; ++k) {
+      complete = !ch.rejected(prefix + "param[" + std::to_string(k) + "]");
+    }
+    if (!complete) continue;
     const int kin_id = t.type != 0 ? t.type : t.id;
     const KinematicsBuild built = make_kinematics(kin_id, t.param);
     if (built.error) {
@@ -327,9 +379,9 @@ void check_machine(Machine& m, const ListValues& ch, const std::vector<ListValue
       }
     }
   }
-  interpret_functions(m.channel, ch, r);
+  const bool functions_known = interpret_functions(m.channel, ch, r);
   check_channel_refs(m, ch, r);
-  check_conveyor(m, ch, axes, r);
+  check_conveyor(m, ch, axes, functions_known, r);
 }
 
 }  // namespace ncsim::machines::detail

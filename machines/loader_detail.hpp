@@ -33,6 +33,9 @@ class ListValues {
 
   const StoredValue* find(std::string_view key) const;
   bool given(std::string_view key) const { return find(key) != nullptr; }
+  /// True when the key was written but its value was rejected (one error already reported):
+  /// checks that would compare against its default, or call it missing, stay silent.
+  bool rejected(std::string_view key) const;
   /// Value in list units, or the table default.
   double number(std::string_view key) const;
   /// Value converted to internal units (spec.to_internal applied).
@@ -51,6 +54,7 @@ class ListValues {
   ListKind kind_;
   std::string file_;
   std::vector<StoredValue> values_;
+  std::vector<std::string> rejected_;  // normalised keys of written but rejected values
 };
 
 /// "kenngr.swe_pos (P-AXIS-00178)"

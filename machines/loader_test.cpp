@@ -70,7 +70,70 @@ TEST_CASE("laser_portal: soft limits arrive in mm and the conveyor is the spindl
   CHECK(c.workspace.upper.x() == doctest::Approx(4000.0));
   CHECK(c.workspace.lower.z() == doctest::Approx(-100.0));
   CHECK(m.find_axis("X")->conveyor == std::nullopt);
-  CHECK(x->dynamics.v_default == doctest::Approx(x->dynamics.v_max));
+  // ISG keys in their list units, converted once (docs/machines.md "Axis dynamics").
+  CHECK(x->dynamics.v_max == doctest::Approx(1000.0));      // 1000000 um/s P-AXIS-00212
+  CHECK(x->dynamics.v_rapid == doctest::Approx(1000.0));    // P-AXIS-00209
+  CHECK(x->dynamics.acc_max == doctest::Approx(10000.0));   // P-AXIS-00008
+  CHECK(x->dynamics.ramp_acc_up == doctest::Approx(0.05));  // 50000 us P-AXIS-00196
+  CHECK(x->dynamics.jerk_feed() == doctest::Approx(200000.0));
+  CHECK(x->dynamics.dec_feedhold == doctest::Approx(10000.0));  // a_feedh 0: = a_grenz
+  CHECK(x->dynamics.ramp_feedhold == doctest::Approx(0.05));    // tr_feedh 0: = tr_grenz
+  CHECK(x->control.kv == doctest::Approx(20.0));                // 2000 x 0.01/s P-AXIS-00099
+}
+
+TEST_CASE("an axis list without dynamics gets the TF5200 defaults, converted") {
+  const LoadResult r = load_machine(source_root() / "machines" / "testdata" / "base");
+  REQUIRE(r.machine.has_value());
+  const Dynamics& d = r.machine->find_axis("X")->dynamics;
+  CHECK(d.v_max == doctest::Approx(200.0));      // 200000 um/s
+  CHECK(d.v_rapid == doctest::Approx(166.666));  // 166666 um/s
+  CHECK(d.acc_max == doctest::Approx(1000.0));
+  CHECK(d.acc_feed == doctest::Approx(1000.0));
+  CHECK(d.dec_feed == doctest::Approx(1000.0));
+  CHECK(d.acc_rapid == doctest::Approx(1000.0));
+  CHECK(d.ramp_acc_down == doctest::Approx(0.05));
+  CHECK(d.ramp_rapid == doctest::Approx(0.01));
+  CHECK(d.ramp_min == doctest::Approx(0.01));
+  CHECK(d.ramp_geom == doctest::Approx(0.01));
+  CHECK(d.jerk_feed() == doctest::Approx(20000.0));
+  CHECK(d.jerk_rapid() == doctest::Approx(100000.0));
+  CHECK(r.machine->find_axis("X")->modulo_lower == 0.0);                     // P-AXIS-00127
+  CHECK(r.machine->find_axis("X")->modulo_upper == doctest::Approx(360.0));  // 3600000 x 1e-4
+  CHECK(r.machine->find_axis("X")->control.kv == doctest::Approx(kDefaultKv));
+  CHECK(kDefaultKv == 10.0);
+}
+
+TEST_CASE("an unknown key close to a known one is answered with the known key and its id") {
+  const auto dir = std::filesystem::temp_directory_path() / "ncsim_machines_did_you_mean";
+  std::filesystem::create_directories(dir);
+  const auto base =
+      std::filesystem::path(std::getenv("NCSIM_SOURCE_DIR")) / "machines" / "testdata" / "base";
+  {
+    std::ofstream index(dir / kMachineIndexFile);
+    index << "channel " << (base / "channel.lis").string() << "\naxis X x.lis\naxis S "
+          << (base / "s.lis").string() << "\n";
+    std::ofstream x(dir / "x.lis");
+    x << "kopf.log_achs_name X\nkopf.achs_nr 1\nkenngr.swe_poss 100\n"
+      << "getriebe[0].dynamik.vb_eilgang 1000\ncompletely.different 1\n";
+  }
+  const LoadResult r = load_machine(dir);
+  INFO(all_diagnostics(r));
+  REQUIRE(r.diagnostics.items().size() == 3);
+  CHECK(r.diagnostics.items()[0].message ==
+        "unknown parameter 'kenngr.swe_poss' in the axis list; did you mean kenngr.swe_pos "
+        "(P-AXIS-00178)?");
+  CHECK(r.diagnostics.items()[1].message.find(
+            "did you mean getriebe[].vb_eilgang (P-AXIS-00209)") != std::string::npos);
+  CHECK(r.diagnostics.items()[2].message.find("did you mean") == std::string::npos);
+}
+
+TEST_CASE("every retired key names its replacement, none is also a live key") {
+  for (const RetiredKey& k : retired_keys()) {
+    CAPTURE(k.key);
+    CHECK(find_param(k.list, k.key) == nullptr);
+    CHECK((k.diagnostic == "NC3015" || k.diagnostic == "NC3013"));
+    CHECK(!k.use_instead.empty());
+  }
 }
 
 TEST_CASE("delta_picker: trafo parameters arrive in mm and the workspace is configured") {
@@ -120,19 +183,28 @@ TEST_CASE("a missing machine folder is one diagnostic, not an exception") {
 }
 
 TEST_CASE(
-    "warnings: hold_limit_vel_factor above 1000 is limited (21483), defaults above "
-    "maxima are limited (NC3020), and the machine still loads") {
+    "warnings: hold_limit_vel_factor above 1000 is limited (21483), a feed acceleration "
+    "above P-AXIS-00008 and a ramp below P-AXIS-00201 are limited (NC3020), and the machine "
+    "still loads") {
   const LoadResult r = load_machine(source_root() / "machines" / "testdata" / "warn");
   INFO(all_diagnostics(r));
   REQUIRE(r.machine.has_value());
   CHECK_FALSE(r.diagnostics.has_errors());
-  REQUIRE(r.diagnostics.items().size() == 2);
+  REQUIRE(r.diagnostics.items().size() == 3);
   CHECK(r.diagnostics.items()[0].id == "NC3020");
   CHECK(r.diagnostics.items()[0].severity == core::Severity::warning);
-  CHECK(r.diagnostics.items()[1].id == "21483");
-  CHECK(r.diagnostics.items()[1].loc.line == 4);
+  CHECK(r.diagnostics.items()[0].loc.line == 5);
+  // y.lis: tr_grenz below tr_min is named; tr_feedh 0 (= tr_grenz) is not blamed.
+  CHECK(r.diagnostics.items()[1].id == "NC3020");
+  CHECK(r.diagnostics.items()[1].loc.line == 6);
+  CHECK(r.diagnostics.items()[1].message.find("tr_grenz") != std::string::npos);
+  CHECK(r.diagnostics.items()[2].id == "21483");
+  CHECK(r.diagnostics.items()[2].loc.line == 4);
+  const Dynamics& y = r.machine->find_axis("Y")->dynamics;
+  CHECK(y.ramp_rapid == doctest::Approx(0.02));     // raised to P-AXIS-00201
+  CHECK(y.ramp_feedhold == doctest::Approx(0.02));  // P-AXIS-00081 0: = P-AXIS-00200
   CHECK(r.machine->channel.conveyor->hold_limit_vel_factor == doctest::Approx(1.0));
-  CHECK(r.machine->find_axis("X")->dynamics.v_default == doctest::Approx(100.0));
+  CHECK(r.machine->find_axis("X")->dynamics.acc_feed == doctest::Approx(500.0));
 }
 
 TEST_CASE("the parameter table has unique keys, sane ranges and docs for every key") {

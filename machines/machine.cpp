@@ -1,6 +1,13 @@
 #include "machines/machine.hpp"
 
+#include <algorithm>
+
 namespace ncsim::machines {
+
+double Dynamics::jerk_feed() const {
+  return std::min({acc_feed / ramp_acc_up, acc_feed / ramp_acc_down, dec_feed / ramp_dec_up,
+                   dec_feed / ramp_dec_down});
+}
 
 const AxisParams* Machine::find_axis(std::string_view program_name) const {
   for (const AxisParams& axis : axes) {

@@ -8,7 +8,8 @@
 // "mm | deg" means mm for linear axes and spindles used as linear conveyors, deg for rotary.
 // Invariants (checked by the loader): soft_limits.neg < soft_limits.pos; axis numbers and names
 // are unique; at most one conveyor axis, and it is a spindle or an encoder (COUNTER) axis;
-// default dynamics never exceed the maxima after loading (they are limited, with a warning).
+// accelerations never exceed P-AXIS-00008 and ramps are never below P-AXIS-00201 after loading
+// (they are limited, with a warning).
 
 #include <array>
 #include <cstdint>
@@ -33,19 +34,37 @@ struct SoftLimits {
   double pos = 1000.0;   ///< kenngr.swe_pos P-AXIS-00178 [mm | deg]
 };
 
+/// Dynamics of one axis: gear 0 (getriebe[0]) of the ISG axis list, jerk-limited ("non-linear")
+/// slope profile. Ramp times are the time the acceleration takes to build up or die down, so
+/// each ramp sets a jerk a / t (docs/machines.md "Axis dynamics"). Loaded values satisfy
+/// v_rapid <= v_max, every acceleration <= acc_max and every ramp time >= ramp_min (limited
+/// with warning NC3020 otherwise; v_rapid > v_max is error NC3007).
 struct Dynamics {
-  double v_max = 0.0;             ///< maximum velocity [mm/s | deg/s]
-  double a_max = 0.0;             ///< maximum acceleration [mm/s^2 | deg/s^2]
-  double d_max = 0.0;             ///< maximum deceleration (positive) [mm/s^2 | deg/s^2]
-  double j_max = 0.0;             ///< maximum jerk [mm/s^3 | deg/s^3]
-  double v_default = 0.0;         ///< default velocity [mm/s | deg/s]
-  double a_default = 0.0;         ///< default acceleration [mm/s^2 | deg/s^2]
-  double d_default = 0.0;         ///< default deceleration [mm/s^2 | deg/s^2]
-  double j_default = 0.0;         ///< default jerk [mm/s^3 | deg/s^3]
-  double v_reference = 0.0;       ///< drive reference velocity, >= v_max [mm/s | deg/s]
-  double v_rapid = 0.0;           ///< G0 rapid traverse velocity, <= v_max [mm/s | deg/s]
-  double velo_jump_factor = 1.0;  ///< VELOJUMP C0 [-] (seed 000 §7.1.7)
-  double tolerance_ball = 0.0;    ///< tolerance-ball radius [mm | deg]
+  double v_max = 0.0;          ///< P-AXIS-00212 dynamik.vb_max [mm/s | deg/s]
+  double v_rapid = 0.0;        ///< P-AXIS-00209 vb_eilgang, G0 velocity [mm/s | deg/s]
+  double acc_max = 0.0;        ///< P-AXIS-00008 dynamik.a_max [mm/s^2 | deg/s^2]
+  double acc_feed = 0.0;       ///< P-AXIS-00001 slope_profil.a_beschl, speeding up [mm/s^2]
+  double dec_feed = 0.0;       ///< P-AXIS-00002 slope_profil.a_brems, slowing down (> 0) [mm/s^2]
+  double acc_rapid = 0.0;      ///< P-AXIS-00004 slope_profil.a_grenz, G0 both ways [mm/s^2]
+  double dec_feedhold = 0.0;   ///< P-AXIS-00053 slope_profil.a_feedh (list 0: acc_rapid) [mm/s^2]
+  double ramp_acc_up = 0.0;    ///< P-AXIS-00196 slope_profil.tr_beschl_zu [s]
+  double ramp_acc_down = 0.0;  ///< P-AXIS-00195 slope_profil.tr_beschl_ab [s]
+  double ramp_dec_up = 0.0;    ///< P-AXIS-00198 slope_profil.tr_brems_zu [s]
+  double ramp_dec_down = 0.0;  ///< P-AXIS-00197 slope_profil.tr_brems_ab [s]
+  double ramp_rapid = 0.0;     ///< P-AXIS-00200 slope_profil.tr_grenz, G0 [s]
+  double ramp_feedhold = 0.0;  ///< P-AXIS-00081 slope_profil.tr_feedh (list 0: ramp_rapid) [s]
+  double ramp_min = 0.0;       ///< P-AXIS-00201 dynamik.tr_min, lower bound of every ramp [s]
+  double ramp_geom = 0.0;      ///< P-AXIS-00199 dynamik.tr_geom, contour jerk (path) [s]; 0: none
+  double velo_jump_factor = 1.0;  ///< NCSIM-AXIS-020 VELOJUMP C0 [-] (seed 000 §7.1.7)
+  double tolerance_ball = 0.0;    ///< NCSIM-AXIS-021 tolerance-ball radius [mm | deg]
+
+  /// Feed jerk [mm/s^3 | deg/s^3]: the smallest a / t of the four feed ramps, so that no ramp
+  /// is steeper than configured.
+  double jerk_feed() const;
+  /// G0 jerk: acc_rapid / ramp_rapid [mm/s^3 | deg/s^3].
+  double jerk_rapid() const { return acc_rapid / ramp_rapid; }
+  /// Feed-hold jerk: dec_feedhold / ramp_feedhold [mm/s^3 | deg/s^3].
+  double jerk_feedhold() const { return dec_feedhold / ramp_feedhold; }
 };
 
 struct Monitoring {
@@ -59,9 +78,12 @@ struct Monitoring {
   double target_position_time = 0.02;      ///< [s]
 };
 
+/// P-AXIS-00099 default, 1000 x 0.01/s (TF5200; docs/machines.md "Axis dynamics").
+inline constexpr double kDefaultKv = 10.0;
+
 struct ControlLoop {
-  double kv = 1.0;        ///< position controller gain [1/s] ((mm/s)/mm)
-  double pt1_time = 0.0;  ///< drive PT1 time constant [s]; 0 = ideal drive
+  double kv = kDefaultKv;  ///< P-AXIS-00099 getriebe[0].kv, position gain [1/s] ((mm/s)/mm)
+  double pt1_time = 0.0;   ///< NCSIM-AXIS-023 drive PT1 time constant [s]; 0 = ideal drive
 };
 
 /// conv_sync.* of the conveyor axis (seed 004 §5.2.1); present only when is_master = 1.
@@ -83,7 +105,8 @@ struct AxisParams {
   std::uint32_t mode_bits = 1;  ///< kenngr.achs_mode P-AXIS-00015
   bool encoder_only = false;    ///< ACHSMODE_COUNTER: pure encoder axis
   bool modulo = false;          ///< ACHSMODE_MODULO
-  double modulo_range = 360.0;  ///< enc.modulo_factor [mm | deg]
+  double modulo_lower = 0.0;    ///< P-AXIS-00127 getriebe[0].modulou [mm | deg]
+  double modulo_upper = 360.0;  ///< P-AXIS-00126 getriebe[0].moduloo, > modulo_lower [mm | deg]
   int drive_type = 0;           ///< kenngr.antr_typ P-AXIS-00020 (stored, not interpreted)
   std::string measure_signal;   ///< kenngr.measure.signal
   SoftLimits soft_limits;

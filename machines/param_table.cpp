@@ -16,6 +16,8 @@ constexpr double kRealMax = 1.0e300;  // MAX(REAL64) in practice; keeps messages
 constexpr double kTenthMicron = 1.0e-4;
 constexpr double kMicrosecond = 1.0e-6;
 constexpr double kPerMille = 1.0e-3;
+constexpr double kMilli = 1.0e-3;  // um/s -> mm/s, 0.001 deg/s -> deg/s
+constexpr double kCenti = 1.0e-2;  // 0.01/s -> 1/s
 
 constexpr ListKind A = ListKind::axis;
 constexpr ListKind C = ListKind::channel;
@@ -48,20 +50,28 @@ constexpr std::array kTable = {
   // ---- axis list: exact stop (seed 001 §3.2) ----------------------------------------------
   ParamSpec{"P-AXIS-00236", "getriebe[].window", A, ValueType::sgn32, 0, kSgn32Max, "0.1 um | 0.0001 deg", kTenthMicron, "mm | deg", "500", kOpt, 7, -1, "001 §3.2"},
   ParamSpec{"P-AXIS-00532", "getriebe[].position_settling_time", A, ValueType::sgn32, kSgn32Min, kSgn32Max, "us", kMicrosecond, "s", "-1", kOpt, 7, -1, "001 §3.2"},
-  // ---- axis list: dynamics, named after TF50x0 (seed 000 §7.1), TwinCAT NC units ----------
-  ParamSpec{"NCSIM-AXIS-010", "dynamics.max_velocity", A, ValueType::real64, 1e-9, kRealMax, "mm/s | deg/s", 1, "mm/s | deg/s", "500", kOpt, -1, -1, "000 §7.1.1"},
-  ParamSpec{"NCSIM-AXIS-011", "dynamics.max_acceleration", A, ValueType::real64, 1e-9, kRealMax, "mm/s^2 | deg/s^2", 1, "mm/s^2 | deg/s^2", "5000", kOpt, -1, -1, "000 §7.1.1"},
-  ParamSpec{"NCSIM-AXIS-012", "dynamics.max_deceleration", A, ValueType::real64, 1e-9, kRealMax, "mm/s^2 | deg/s^2", 1, "mm/s^2 | deg/s^2", "5000", kOpt, -1, -1, "000 §7.1.1"},
-  ParamSpec{"NCSIM-AXIS-013", "dynamics.max_jerk", A, ValueType::real64, 1e-9, kRealMax, "mm/s^3 | deg/s^3", 1, "mm/s^3 | deg/s^3", "100000", kOpt, -1, -1, "000 §7.1.1"},
-  ParamSpec{"NCSIM-AXIS-014", "dynamics.default_velocity", A, ValueType::real64, 1e-9, kRealMax, "mm/s | deg/s", 1, "mm/s | deg/s", "= dynamics.max_velocity", kDerived, -1, -1, "000 §7.1.1"},
-  ParamSpec{"NCSIM-AXIS-015", "dynamics.default_acceleration", A, ValueType::real64, 1e-9, kRealMax, "mm/s^2 | deg/s^2", 1, "mm/s^2 | deg/s^2", "= dynamics.max_acceleration", kDerived, -1, -1, "000 §7.1.1"},
-  ParamSpec{"NCSIM-AXIS-016", "dynamics.default_deceleration", A, ValueType::real64, 1e-9, kRealMax, "mm/s^2 | deg/s^2", 1, "mm/s^2 | deg/s^2", "= dynamics.max_deceleration", kDerived, -1, -1, "000 §7.1.1"},
-  ParamSpec{"NCSIM-AXIS-017", "dynamics.default_jerk", A, ValueType::real64, 1e-9, kRealMax, "mm/s^3 | deg/s^3", 1, "mm/s^3 | deg/s^3", "= dynamics.max_jerk", kDerived, -1, -1, "000 §7.1.1"},
-  ParamSpec{"NCSIM-AXIS-018", "dynamics.reference_velocity", A, ValueType::real64, 1e-9, kRealMax, "mm/s | deg/s", 1, "mm/s | deg/s", "= dynamics.max_velocity", kDerived, -1, -1, "000 §7.1.1, §7.3.2"},
-  ParamSpec{"NCSIM-AXIS-019", "nci.rapid_traverse_velocity", A, ValueType::real64, 1e-9, kRealMax, "mm/s | deg/s", 1, "mm/s | deg/s", "= dynamics.max_velocity", kDerived, -1, -1, "000 §7.1.7"},
+  // ---- axis list: dynamics of gear i, jerk-limited ("non-linear") slope (ISG axis parameter
+  //      manual TF5200, docs/machines.md "Axis dynamics" names each page) ------------------------
+  ParamSpec{"P-AXIS-00212", "getriebe[].dynamik.vb_max", A, ValueType::uns32, 1, 2000000000, "um/s | 0.001 deg/s", kMilli, "mm/s | deg/s", "200000", kOpt, 7, -1, "TF5200 P-AXIS-00212"},
+  ParamSpec{"P-AXIS-00008", "getriebe[].dynamik.a_max", A, ValueType::uns32, 1, 100000000, "mm/s^2 | deg/s^2", 1, "mm/s^2 | deg/s^2", "1000", kOpt, 7, -1, "TF5200 P-AXIS-00008"},
+  ParamSpec{"P-AXIS-00209", "getriebe[].vb_eilgang", A, ValueType::uns32, 1, 2000000000, "um/s | 0.001 deg/s", kMilli, "mm/s | deg/s", "166666", kOpt, 7, -1, "TF5200 P-AXIS-00209 (<= P-AXIS-00212)"},
+  ParamSpec{"P-AXIS-00001", "getriebe[].slope_profil.a_beschl", A, ValueType::uns32, 1, 100000000, "mm/s^2 | deg/s^2", 1, "mm/s^2 | deg/s^2", "1000", kOpt, 7, -1, "TF5200 P-AXIS-00001 (<= P-AXIS-00008)"},
+  ParamSpec{"P-AXIS-00002", "getriebe[].slope_profil.a_brems", A, ValueType::uns32, 1, 100000000, "mm/s^2 | deg/s^2", 1, "mm/s^2 | deg/s^2", "1000", kOpt, 7, -1, "TF5200 P-AXIS-00002 (<= P-AXIS-00008)"},
+  ParamSpec{"P-AXIS-00004", "getriebe[].slope_profil.a_grenz", A, ValueType::uns32, 1, 100000000, "mm/s^2 | deg/s^2", 1, "mm/s^2 | deg/s^2", "1000", kOpt, 7, -1, "TF5200 P-AXIS-00004 (<= P-AXIS-00008)"},
+  ParamSpec{"P-AXIS-00053", "getriebe[].slope_profil.a_feedh", A, ValueType::uns32, 0, 100000000, "mm/s^2 | deg/s^2", 1, "mm/s^2 | deg/s^2", "0", kOpt, 7, -1, "TF5200 P-AXIS-00053 (0: = P-AXIS-00004)"},
+  ParamSpec{"P-AXIS-00196", "getriebe[].slope_profil.tr_beschl_zu", A, ValueType::uns32, 1, kUns32Max, "us", kMicrosecond, "s", "50000", kOpt, 7, -1, "TF5200 P-AXIS-00196 (>= P-AXIS-00201)"},
+  ParamSpec{"P-AXIS-00195", "getriebe[].slope_profil.tr_beschl_ab", A, ValueType::uns32, 1, kUns32Max, "us", kMicrosecond, "s", "50000", kOpt, 7, -1, "TF5200 P-AXIS-00195 (>= P-AXIS-00201)"},
+  ParamSpec{"P-AXIS-00198", "getriebe[].slope_profil.tr_brems_zu", A, ValueType::uns32, 1, kUns32Max, "us", kMicrosecond, "s", "50000", kOpt, 7, -1, "TF5200 P-AXIS-00198 (>= P-AXIS-00201)"},
+  ParamSpec{"P-AXIS-00197", "getriebe[].slope_profil.tr_brems_ab", A, ValueType::uns32, 1, kUns32Max, "us", kMicrosecond, "s", "50000", kOpt, 7, -1, "TF5200 P-AXIS-00197 (>= P-AXIS-00201)"},
+  ParamSpec{"P-AXIS-00200", "getriebe[].slope_profil.tr_grenz", A, ValueType::uns32, 1, kUns32Max, "us", kMicrosecond, "s", "10000", kOpt, 7, -1, "TF5200 P-AXIS-00200 (>= P-AXIS-00201)"},
+  ParamSpec{"P-AXIS-00081", "getriebe[].slope_profil.tr_feedh", A, ValueType::uns32, 0, kUns32Max, "us", kMicrosecond, "s", "0", kOpt, 7, -1, "TF5200 P-AXIS-00081 (0: = P-AXIS-00200)"},
+  ParamSpec{"P-AXIS-00201", "getriebe[].dynamik.tr_min", A, ValueType::uns32, 0, kUns32Max, "us", kMicrosecond, "s", "10000", kOpt, 7, -1, "TF5200 P-AXIS-00201"},
+  ParamSpec{"P-AXIS-00199", "getriebe[].dynamik.tr_geom", A, ValueType::uns32, 0, kUns32Max, "us", kMicrosecond, "s", "10000", kOpt, 7, -1, "TF5200 P-AXIS-00199"},
+  // ---- axis list: the NC I path model (seed 000 §7.1.7); no ISG key, ncsim ids --------------
   ParamSpec{"NCSIM-AXIS-020", "nci.velo_jump_factor", A, ValueType::real64, 0, kRealMax, "", 1, "", "1.0", kOpt, -1, -1, "000 §7.1.7 (C0)"},
   ParamSpec{"NCSIM-AXIS-021", "nci.tolerance_ball", A, ValueType::real64, 0, kRealMax, "mm | deg", 1, "mm | deg", "0.0", kOpt, -1, -1, "000 §7.1.7, §7.5.11"},
-  ParamSpec{"NCSIM-AXIS-022", "ctrl.kv", A, ValueType::real64, 1e-9, kRealMax, "(mm/s)/mm", 1, "1/s", "1.0", kOpt, -1, -1, "000 §7.4.2"},
+  // ---- axis list: position control -------------------------------------------------------
+  ParamSpec{"P-AXIS-00099", "getriebe[].kv", A, ValueType::uns32, 1, kUns32Max, "0.01/s", kCenti, "1/s", "1000", kOpt, 7, -1, "TF5200 P-AXIS-00099"},
   ParamSpec{"NCSIM-AXIS-023", "drive.pt1_time", A, ValueType::real64, 0, kRealMax, "s", 1, "s", "0.0", kOpt, -1, -1, "000 §7.5.8"},
   ParamSpec{"NCSIM-AXIS-024", "monitoring.position_lag", A, ValueType::boolean, 0, 1, "", 1, "", "1", kOpt, -1, -1, "000 §7.1.5"},
   ParamSpec{"NCSIM-AXIS-025", "monitoring.position_lag_max", A, ValueType::real64, 1e-9, kRealMax, "mm | deg", 1, "mm | deg", "5.0", kOpt, -1, -1, "000 §7.1.5"},
@@ -69,7 +79,8 @@ constexpr std::array kTable = {
   ParamSpec{"NCSIM-AXIS-027", "monitoring.target_position", A, ValueType::boolean, 0, 1, "", 1, "", "1", kOpt, -1, -1, "000 §7.1.5"},
   ParamSpec{"NCSIM-AXIS-028", "monitoring.target_position_window", A, ValueType::real64, 1e-9, kRealMax, "mm | deg", 1, "mm | deg", "2.0", kOpt, -1, -1, "000 §7.1.5"},
   ParamSpec{"NCSIM-AXIS-029", "monitoring.target_position_time", A, ValueType::real64, 0, kRealMax, "s", 1, "s", "0.02", kOpt, -1, -1, "000 §7.1.5"},
-  ParamSpec{"NCSIM-AXIS-030", "enc.modulo_factor", A, ValueType::real64, 1e-9, kRealMax, "mm | deg", 1, "mm | deg", "360.0", kOpt, -1, -1, "000 §7.2.1"},
+  ParamSpec{"P-AXIS-00126", "getriebe[].moduloo", A, ValueType::sgn32, kSgn32Min, kSgn32Max, "0.1 um | 0.0001 deg", kTenthMicron, "mm | deg", "3600000", kOpt, 7, -1, "TF5200 P-AXIS-00126 (> P-AXIS-00127)"},
+  ParamSpec{"P-AXIS-00127", "getriebe[].modulou", A, ValueType::sgn32, kSgn32Min, kSgn32Max, "0.1 um | 0.0001 deg", kTenthMicron, "mm | deg", "0", kOpt, 7, -1, "TF5200 P-AXIS-00127"},
   // ---- channel list ------------------------------------------------------------------------
   ParamSpec{"P-CHAN-00650", "configuration.interpolator.function", C, ValueType::flag_set, 0, 0, "", 1, "", "FCT_IPO_DEFAULT", kOpt, -1, -1, "004 §5.2.2"},
   ParamSpec{"P-CHAN-00362", "conveyor_sync.log_number_master", C, ValueType::uns16, 1, kUns16Max, "", 1, "", "", kOpt, -1, -1, "004 §5.2.2"},
@@ -100,12 +111,41 @@ constexpr std::array kTable = {
   ParamSpec{"NCSIM-CHAN-003", "main_spindle_name", C, ValueType::word, 0, 0, "", 1, "", "", kOpt, -1, -1, "004 §4.9.1 (listing)"},
   ParamSpec{"NCSIM-CHAN-004", "log_number_tracking_axis", C, ValueType::uns16, 1, kUns16Max, "", 1, "", "", kOpt, -1, -1, "004 §4.10.1 (listing, id cut off)"},
 };
+
+// Keys ncsim read before it used the ISG axis-list keys (issue 10), and keys of models ncsim
+// does not run. Each names what to write instead.
+constexpr std::array kRetired = {
+  RetiredKey{"dynamics.max_velocity", A, "NC3015", "write getriebe[0].dynamik.vb_max (P-AXIS-00212) in um/s (0.001 deg/s): the old value x 1000"},
+  RetiredKey{"dynamics.max_acceleration", A, "NC3015", "write getriebe[0].dynamik.a_max (P-AXIS-00008) in mm/s^2 (deg/s^2)"},
+  RetiredKey{"dynamics.max_deceleration", A, "NC3015", "write getriebe[0].dynamik.a_max (P-AXIS-00008); the ISG list has one maximum for both directions"},
+  RetiredKey{"dynamics.max_jerk", A, "NC3015", "write the ramp times getriebe[0].slope_profil.tr_beschl_zu/_ab, tr_brems_zu/_ab (P-AXIS-00196/00195/00198/00197) in us: t = a / j"},
+  RetiredKey{"dynamics.default_velocity", A, "NC3015", "remove the line: feed comes from the program, G0 from getriebe[0].vb_eilgang (P-AXIS-00209)"},
+  RetiredKey{"dynamics.default_acceleration", A, "NC3015", "write getriebe[0].slope_profil.a_beschl (P-AXIS-00001) in mm/s^2"},
+  RetiredKey{"dynamics.default_deceleration", A, "NC3015", "write getriebe[0].slope_profil.a_brems (P-AXIS-00002) in mm/s^2"},
+  RetiredKey{"dynamics.default_jerk", A, "NC3015", "write the ramp times getriebe[0].slope_profil.tr_beschl_zu/_ab, tr_brems_zu/_ab (P-AXIS-00196/00195/00198/00197) in us: t = a / j"},
+  RetiredKey{"dynamics.reference_velocity", A, "NC3015", "remove the line: the TwinCAT NC reference velocity has no ISG axis-list key and ncsim does not use it"},
+  RetiredKey{"nci.rapid_traverse_velocity", A, "NC3015", "write getriebe[0].vb_eilgang (P-AXIS-00209) in um/s (0.001 deg/s): the old value x 1000"},
+  RetiredKey{"enc.modulo_factor", A, "NC3015", "write getriebe[0].moduloo / getriebe[0].modulou (P-AXIS-00126 / 00127) in 0.0001 deg (0.1 um): upper = lower + the old value x 10000"},
+  RetiredKey{"ctrl.kv", A, "NC3015", "write getriebe[0].kv (P-AXIS-00099) in 0.01/s: the old value x 100"},
+  RetiredKey{"getriebe[].lslope_profil.a_feedh", A, "NC3013", "write getriebe[i].slope_profil.a_feedh (P-AXIS-00053): P-AXIS-00024 belongs to the step-shaped (linear) slope, which ncsim does not model"},
+};
 // clang-format on
 
 }  // namespace
 
 std::span<const ParamSpec> param_table() {
   return kTable;
+}
+
+std::span<const RetiredKey> retired_keys() {
+  return kRetired;
+}
+
+const RetiredKey* find_retired(ListKind list, std::string_view pattern) {
+  for (const RetiredKey& r : kRetired) {
+    if (r.list == list && r.key == pattern) return &r;
+  }
+  return nullptr;
 }
 
 const ParamSpec* find_param(ListKind list, std::string_view pattern) {

@@ -54,11 +54,25 @@ struct ParamSpec {
   std::string_view source;         ///< where the manual describes it, or "ncsim"
 };
 
+/// A key ncsim no longer reads (its own invented keys before issue 10) or reads only to say it
+/// does not run its model; the loader answers it with `diagnostic` and `use_instead`.
+struct RetiredKey {
+  std::string_view key;          ///< list key, indices as "[]"
+  ListKind list;                 ///< channel or axis list
+  std::string_view diagnostic;   ///< NC3015 (replaced) or NC3013 (not supported)
+  std::string_view use_instead;  ///< what to write instead, with ids and units
+};
+
 /// Every parameter known to ncsim, channel and axis lists together.
 std::span<const ParamSpec> param_table();
 
 /// The spec for a key pattern ("trafo[].param[]") in one list; nullptr when unknown.
 const ParamSpec* find_param(ListKind list, std::string_view pattern);
+
+/// Every retired key (docs/machines.md "Retired keys").
+std::span<const RetiredKey> retired_keys();
+/// The retired key for a pattern in one list; nullptr when it is not retired.
+const RetiredKey* find_retired(ListKind list, std::string_view pattern);
 
 /// Human text of a spec's range for messages ("-2147483648..2147483647").
 std::string_view type_name(ValueType type);

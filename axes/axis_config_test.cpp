@@ -1,0 +1,139 @@
+// The bundled machines' axes map onto the axis core's configurations with the numbers their
+// ISG lists give (docs/machines.md "From a machine to its axes").
+#include "axes/axis_config.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+#include <string>
+
+#include "axes/control.hpp"
+#include "axes/monitor.hpp"
+#include "axes/profile_generator.hpp"
+#include "machines/loader.hpp"
+
+namespace ncsim::axes {
+namespace {
+
+machines::Machine load(const std::string& name) {
+  const char* root = std::getenv("NCSIM_SOURCE_DIR");
+  REQUIRE_MESSAGE(root != nullptr, "NCSIM_SOURCE_DIR must point to the repository");
+  const machines::LoadResult r = machines::load_machine(machines::bundled_machine_dir(root, name));
+  REQUIRE(r.machine.has_value());
+  return *r.machine;
+}
+
+const machines::AxisParams& axis(const machines::Machine& m, std::string_view name) {
+  const machines::AxisParams* a = m.find_axis(name);
+  REQUIRE(a != nullptr);
+  return *a;
+}
+
+TEST_CASE("laser_portal X: vb_eilgang, a_beschl/a_brems and the ramp jerk reach the generator") {
+  const machines::Machine m = load("laser_portal");
+  const AxisConfig c = make_axis_config(axis(m, "X"));
+  CHECK(c.generator.dynamics.v_max == doctest::Approx(1000.0));       // 1000000 um/s P-AXIS-00209
+  CHECK(c.generator.dynamics.acc_max == doctest::Approx(10000.0));    // P-AXIS-00001
+  CHECK(c.generator.dynamics.dec_max == doctest::Approx(10000.0));    // P-AXIS-00002
+  CHECK(c.generator.dynamics.jerk_max == doctest::Approx(200000.0));  // 10000 / 0.05 s
+  CHECK(c.generator.v_axis_max == doctest::Approx(1000.0));           // P-AXIS-00212
+  CHECK(c.generator.increment == doctest::Approx(1e-4));
+  CHECK(c.control.kv == doctest::Approx(20.0));  // 2000 x 0.01/s P-AXIS-00099
+  CHECK(c.control.drive_pt1_time == doctest::Approx(0.002));
+  CHECK(c.control.noise_seed == 1U);
+  CHECK(c.monitor.soft_limits.min_enabled);
+  CHECK(c.monitor.soft_limits.max_enabled);
+  CHECK(c.monitor.soft_limits.min_position == doctest::Approx(-200.0));
+  CHECK(c.monitor.soft_limits.max_position == doctest::Approx(4000.0));
+  CHECK(c.monitor.lag.enabled);
+  CHECK(c.monitor.lag.max_lag == doctest::Approx(2.0));
+  CHECK(c.monitor.exact_stop.window == doctest::Approx(0.05));        // 500 x 0.1 um
+  CHECK(c.monitor.exact_stop.settling_time == doctest::Approx(0.1));  // 100000 us
+  CHECK(effective_settling_time(c.monitor.exact_stop) == doctest::Approx(0.1));
+  // The configs are usable as they are: the constructors accept them.
+  CHECK_NOTHROW(SetpointGenerator(c.generator));
+  CHECK_NOTHROW(PositionControlModel(c.control, 0.002, 0.0));
+  CHECK_NOTHROW(AxisMonitor(c.monitor, 0.002, 0));
+}
+
+TEST_CASE("laser_portal S: the conveyor spindle has no soft limits and its jerk from 2667 us") {
+  const machines::Machine m = load("laser_portal");
+  const AxisConfig c = make_axis_config(axis(m, "S"));
+  CHECK(c.generator.dynamics.v_max == doctest::Approx(1000.0));
+  CHECK(c.generator.dynamics.acc_max == doctest::Approx(2000.0));
+  CHECK(c.generator.dynamics.jerk_max == doctest::Approx(2000.0 / 2667e-6));  // 749906 mm/s^3
+  CHECK_FALSE(c.monitor.soft_limits.min_enabled);
+  CHECK_FALSE(c.monitor.soft_limits.max_enabled);
+  CHECK(c.control.drive_pt1_time == 0.0);
+  CHECK(c.control.noise_seed == 4U);
+}
+
+TEST_CASE("delta_picker and static_saw: rotary axes map in deg, deg/s, deg/s^2, deg/s^3") {
+  const machines::Machine delta = load("delta_picker");
+  const AxisConfig x = make_axis_config(axis(delta, "X"));
+  CHECK(x.generator.dynamics.v_max == doctest::Approx(720.0));  // 720000 x 0.001 deg/s
+  CHECK(x.generator.dynamics.acc_max == doctest::Approx(20000.0));
+  CHECK(x.generator.dynamics.jerk_max == doctest::Approx(500000.0));  // 20000 / 0.04 s
+  CHECK(x.monitor.soft_limits.min_position == doctest::Approx(-180.0));
+  CHECK(x.monitor.soft_limits.max_position == doctest::Approx(180.0));
+  CHECK(x.monitor.soft_limits.max_enabled);
+
+  const machines::Machine saw = load("static_saw");
+  const AxisConfig c = make_axis_config(axis(saw, "C"));
+  CHECK(c.generator.dynamics.v_max == doctest::Approx(1080.0));
+  CHECK(c.generator.dynamics.jerk_max == doctest::Approx(500000.0));
+  CHECK(c.monitor.soft_limits.max_position == doctest::Approx(3600.0));
+}
+
+TEST_CASE("portal_3x: one config per axis, in machine order") {
+  const machines::Machine m = load("portal_3x");
+  const std::vector<AxisConfig> configs = make_axis_configs(m);
+  REQUIRE(configs.size() == 3);
+  CHECK(configs[0].generator.dynamics.v_max == doctest::Approx(500.0));
+  CHECK(configs[0].generator.dynamics.jerk_max == doctest::Approx(50000.0));  // 3000 / 0.06 s
+  CHECK(configs[2].generator.dynamics.v_max == doctest::Approx(250.0));
+  CHECK(configs[2].generator.dynamics.acc_max == doctest::Approx(2000.0));
+  CHECK(configs[2].generator.dynamics.jerk_max == doctest::Approx(40000.0));  // 2000 / 0.05 s
+  CHECK(configs[2].monitor.soft_limits.min_position == doctest::Approx(-300.0));
+  CHECK(configs[2].monitor.soft_limits.max_position == doctest::Approx(200.0));
+}
+
+TEST_CASE("only ACHSMODE_MODULO axes get a modulo range, P-AXIS-00126 - P-AXIS-00127") {
+  const machines::Machine m = load("laser_portal");
+  CHECK_FALSE(make_axis_config(axis(m, "X")).modulo.has_value());
+  CHECK_FALSE(make_axis_config(axis(m, "S")).modulo.has_value());  // belt positions in mm
+  machines::AxisParams table = axis(m, "X");
+  table.kind = machines::AxisKind::rotary;
+  table.modulo = true;
+  table.modulo_upper = 360.0;
+  const std::optional<ModuloParams> p = make_modulo_params(table);
+  REQUIRE(p.has_value());
+  CHECK(p->factor == doctest::Approx(360.0));
+  CHECK_FALSE(make_monitor_params(table).soft_limits.max_enabled);
+  table.modulo_lower = -180.0;
+  table.modulo_upper = 180.0;
+  CHECK_THROWS_WITH_AS(make_modulo_params(table), doctest::Contains("P-AXIS-00127"),
+                       std::invalid_argument);
+}
+
+TEST_CASE("an axis without dynamics in its list gets the TF5200 defaults") {
+  machines::AxisParams a;        // values as the loader fills them from the table defaults
+  a.dynamics.v_max = 200.0;      // P-AXIS-00212 default 200000 um/s
+  a.dynamics.v_rapid = 166.666;  // P-AXIS-00209 default 166666 um/s
+  a.dynamics.acc_feed = 1000.0;  // P-AXIS-00001 default
+  a.dynamics.dec_feed = 1000.0;  // P-AXIS-00002 default
+  a.dynamics.ramp_acc_up = a.dynamics.ramp_acc_down = 0.05;  // P-AXIS-00195/00196 50000 us
+  a.dynamics.ramp_dec_up = a.dynamics.ramp_dec_down = 0.05;  // P-AXIS-00197/00198
+  const GeneratorConfig g = make_generator_config(a);
+  CHECK(g.dynamics.v_max == doctest::Approx(166.666));
+  CHECK(g.dynamics.jerk_max == doctest::Approx(20000.0));
+  CHECK(make_position_control(a).kv == doctest::Approx(10.0));  // P-AXIS-00099 1000 x 0.01/s
+}
+
+TEST_CASE("machines and axes default Kv to the same P-AXIS-00099 value") {
+  CHECK(PositionControlParams{}.kv == machines::kDefaultKv);
+  CHECK(machines::ControlLoop{}.kv == machines::kDefaultKv);
+}
+
+}  // namespace
+}  // namespace ncsim::axes
