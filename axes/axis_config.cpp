@@ -10,11 +10,11 @@ namespace ncsim::axes {
 GeneratorConfig make_generator_config(const machines::AxisParams& axis) {
   const machines::Dynamics& d = axis.dynamics;
   GeneratorConfig config;
-  config.dynamics.v_max = d.v_rapid;         // P-AXIS-00209
-  config.dynamics.acc_max = d.acc_feed;      // P-AXIS-00001
-  config.dynamics.dec_max = d.dec_feed;      // P-AXIS-00002
-  config.dynamics.jerk_max = d.jerk_feed();  // P-AXIS-00001/00002 over P-AXIS-00195..00198
-  config.v_axis_max = d.v_max;               // P-AXIS-00212
+  config.dynamics.v_max = d.v_rapid;      // P-AXIS-00209
+  config.dynamics.a_max = d.acc_feed;     // P-AXIS-00001
+  config.dynamics.d_max = d.dec_feed;     // P-AXIS-00002
+  config.dynamics.j_max = d.jerk_feed();  // P-AXIS-00001/00002 over P-AXIS-00195..00198
+  config.v_axis_max = d.v_max;            // P-AXIS-00212
   config.increment = kListIncrement;
   return config;
 }

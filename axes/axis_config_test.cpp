@@ -32,11 +32,11 @@ const machines::AxisParams& axis(const machines::Machine& m, std::string_view na
 TEST_CASE("laser_portal X: vb_eilgang, a_beschl/a_brems and the ramp jerk reach the generator") {
   const machines::Machine m = load("laser_portal");
   const AxisConfig c = make_axis_config(axis(m, "X"));
-  CHECK(c.generator.dynamics.v_max == doctest::Approx(1000.0));       // 1000000 um/s P-AXIS-00209
-  CHECK(c.generator.dynamics.acc_max == doctest::Approx(10000.0));    // P-AXIS-00001
-  CHECK(c.generator.dynamics.dec_max == doctest::Approx(10000.0));    // P-AXIS-00002
-  CHECK(c.generator.dynamics.jerk_max == doctest::Approx(200000.0));  // 10000 / 0.05 s
-  CHECK(c.generator.v_axis_max == doctest::Approx(1000.0));           // P-AXIS-00212
+  CHECK(c.generator.dynamics.v_max == doctest::Approx(1000.0));    // 1000000 um/s P-AXIS-00209
+  CHECK(c.generator.dynamics.a_max == doctest::Approx(10000.0));   // P-AXIS-00001
+  CHECK(c.generator.dynamics.d_max == doctest::Approx(10000.0));   // P-AXIS-00002
+  CHECK(c.generator.dynamics.j_max == doctest::Approx(200000.0));  // 10000 / 0.05 s
+  CHECK(c.generator.v_axis_max == doctest::Approx(1000.0));        // P-AXIS-00212
   CHECK(c.generator.increment == doctest::Approx(1e-4));
   CHECK(c.control.kv == doctest::Approx(20.0));  // 2000 x 0.01/s P-AXIS-00099
   CHECK(c.control.drive_pt1_time == doctest::Approx(0.002));
@@ -60,8 +60,8 @@ TEST_CASE("laser_portal S: the conveyor spindle has no soft limits and its jerk 
   const machines::Machine m = load("laser_portal");
   const AxisConfig c = make_axis_config(axis(m, "S"));
   CHECK(c.generator.dynamics.v_max == doctest::Approx(1000.0));
-  CHECK(c.generator.dynamics.acc_max == doctest::Approx(2000.0));
-  CHECK(c.generator.dynamics.jerk_max == doctest::Approx(2000.0 / 2667e-6));  // 749906 mm/s^3
+  CHECK(c.generator.dynamics.a_max == doctest::Approx(2000.0));
+  CHECK(c.generator.dynamics.j_max == doctest::Approx(2000.0 / 2667e-6));  // 749906 mm/s^3
   CHECK_FALSE(c.monitor.soft_limits.min_enabled);
   CHECK_FALSE(c.monitor.soft_limits.max_enabled);
   CHECK(c.control.drive_pt1_time == 0.0);
@@ -72,8 +72,8 @@ TEST_CASE("delta_picker and static_saw: rotary axes map in deg, deg/s, deg/s^2, 
   const machines::Machine delta = load("delta_picker");
   const AxisConfig x = make_axis_config(axis(delta, "X"));
   CHECK(x.generator.dynamics.v_max == doctest::Approx(720.0));  // 720000 x 0.001 deg/s
-  CHECK(x.generator.dynamics.acc_max == doctest::Approx(20000.0));
-  CHECK(x.generator.dynamics.jerk_max == doctest::Approx(500000.0));  // 20000 / 0.04 s
+  CHECK(x.generator.dynamics.a_max == doctest::Approx(20000.0));
+  CHECK(x.generator.dynamics.j_max == doctest::Approx(500000.0));  // 20000 / 0.04 s
   CHECK(x.monitor.soft_limits.min_position == doctest::Approx(-180.0));
   CHECK(x.monitor.soft_limits.max_position == doctest::Approx(180.0));
   CHECK(x.monitor.soft_limits.max_enabled);
@@ -81,7 +81,7 @@ TEST_CASE("delta_picker and static_saw: rotary axes map in deg, deg/s, deg/s^2, 
   const machines::Machine saw = load("static_saw");
   const AxisConfig c = make_axis_config(axis(saw, "C"));
   CHECK(c.generator.dynamics.v_max == doctest::Approx(1080.0));
-  CHECK(c.generator.dynamics.jerk_max == doctest::Approx(500000.0));
+  CHECK(c.generator.dynamics.j_max == doctest::Approx(500000.0));
   CHECK(c.monitor.soft_limits.max_position == doctest::Approx(3600.0));
 }
 
@@ -90,10 +90,10 @@ TEST_CASE("portal_3x: one config per axis, in machine order") {
   const std::vector<AxisConfig> configs = make_axis_configs(m);
   REQUIRE(configs.size() == 3);
   CHECK(configs[0].generator.dynamics.v_max == doctest::Approx(500.0));
-  CHECK(configs[0].generator.dynamics.jerk_max == doctest::Approx(50000.0));  // 3000 / 0.06 s
+  CHECK(configs[0].generator.dynamics.j_max == doctest::Approx(50000.0));  // 3000 / 0.06 s
   CHECK(configs[2].generator.dynamics.v_max == doctest::Approx(250.0));
-  CHECK(configs[2].generator.dynamics.acc_max == doctest::Approx(2000.0));
-  CHECK(configs[2].generator.dynamics.jerk_max == doctest::Approx(40000.0));  // 2000 / 0.05 s
+  CHECK(configs[2].generator.dynamics.a_max == doctest::Approx(2000.0));
+  CHECK(configs[2].generator.dynamics.j_max == doctest::Approx(40000.0));  // 2000 / 0.05 s
   CHECK(configs[2].monitor.soft_limits.min_position == doctest::Approx(-300.0));
   CHECK(configs[2].monitor.soft_limits.max_position == doctest::Approx(200.0));
 }
@@ -126,7 +126,7 @@ TEST_CASE("an axis without dynamics in its list gets the TF5200 defaults") {
   a.dynamics.ramp_dec_up = a.dynamics.ramp_dec_down = 0.05;  // P-AXIS-00197/00198
   const GeneratorConfig g = make_generator_config(a);
   CHECK(g.dynamics.v_max == doctest::Approx(166.666));
-  CHECK(g.dynamics.jerk_max == doctest::Approx(20000.0));
+  CHECK(g.dynamics.j_max == doctest::Approx(20000.0));
   CHECK(make_position_control(a).kv == doctest::Approx(10.0));  // P-AXIS-00099 1000 x 0.01/s
 }
 
