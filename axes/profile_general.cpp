@@ -115,10 +115,20 @@ void append_stop_and_return(ProfileBuilder& b, const PositionTarget& target,
 }  // namespace
 
 Result plan_position(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
-                     Profile& out) noexcept {
+                     Profile& out, ProfileRule rule) noexcept {
   if (!valid(dyn) || !finite(start) || !std::isfinite(target.p) || !std::isfinite(target.v) ||
       std::abs(target.v) > dyn.v_max) {
     return Result::error_invalid_input;
+  }
+  if (rule == ProfileRule::time_optimal) {
+    // From rest to rest the single-peak move is the minimum time; from a moving start the
+    // manual planner covers reversals the family cannot, so the faster of both is taken.
+    const bool found = detail::plan_fastest(start, target, dyn, out);
+    if (found && start.v == 0.0 && start.a == 0.0 && target.v == 0.0) return Result::ok;
+    Profile manual;
+    plan_position(start, target, dyn, manual, ProfileRule::manual);
+    if (!found || manual.duration() < out.duration()) out = manual;
+    return Result::ok;
   }
   ProfileBuilder b(out, start);
   const MotionState end{target.p, target.v, 0.0};

@@ -131,6 +131,14 @@ Status move_of_duration(const State& start, double p1, double v1, double duratio
 double min_single_peak_time(const State& start, double p1, double v1,
                             const Limits& limits) noexcept;
 
+/// The fastest single-peak move from `start` to (p1, v1, a = 0): the highest level V and the
+/// distance allow, in the frame toward the target or (targets at rest) in the reversed one,
+/// which overshoots and returns without stopping in between. Start states beyond the limits
+/// are brought inside by the first ramp (acceleration first with j, a velocity above V with
+/// d_max). Status::not_supported when neither frame's family reaches the target.
+Status fastest_move(const State& start, double p1, double v1, const Limits& limits,
+                    Move& out) noexcept;
+
 /// World state at the end of `move` started from `start` (closed-form chain).
 State end_state(const State& start, const Move& move) noexcept;
 
