@@ -26,12 +26,88 @@ void append_move(ProfileBuilder& b, const jerk::Move& m) noexcept {
   b.add(m.second, m.sign);
 }
 
+namespace {
+
+// Level of the fastest rest-to-rest move under the real A+ and A-: the highest vm <= V with
+// d(vm) = ramp(vm, A+) + ramp(vm, A-) <= D, split by which limits the ramps reach:
+//  - neither (vm J <= min(A)^2):   D = 2 vm^1.5 / sqrt(J)          -> vm = cbrt(D^2 J / 4);
+//  - both (vm J >= max(A)^2):      D = k vm^2 + m vm, k = (1/A+ + 1/A-)/2, m = (A+ + A-)/(2J);
+//  - only the smaller A = a_s:     D = vm^2/(2 a_s) + vm a_s/(2J) + vm^1.5/sqrt(J), in u = sqrt(vm)
+//    a convex increasing quartic: Newton from an upper bound descends onto the root.
+double level_neither(double d, double j) noexcept {
+  return std::cbrt(0.25 * d * d * j);
+}
+
+double level_both(double d, const Dynamics& dyn) noexcept {
+  const double k = 0.5 * (1.0 / dyn.a_max + 1.0 / dyn.d_max);
+  const double m = 0.5 * (dyn.a_max + dyn.d_max) / dyn.j_max;
+  return 2.0 * d / (m + std::sqrt(m * m + 4.0 * k * d));
+}
+
+double level_smaller(double d, double a_s, double j, double u_hi) noexcept {
+  const double c4 = 0.5 / a_s;
+  const double c3 = 1.0 / std::sqrt(j);
+  const double c2 = 0.5 * a_s / j;
+  double u = u_hi;
+  for (int i = 0; i < 100; ++i) {
+    const double u2 = u * u;
+    const double f = u2 * (u2 * c4 + u * c3 + c2) - d;
+    if (!(f > 0.0)) break;
+    const double slope = u * (4.0 * c4 * u2 + 3.0 * c3 * u + 2.0 * c2);
+    const double next = u - f / slope;
+    if (!(next < u)) break;
+    u = next;
+  }
+  return u * u;
+}
+
+double rest_to_rest_level(double d, const Dynamics& dyn) noexcept {
+  const double j = dyn.j_max;
+  const auto both_ramps = [&](double v) {
+    return ramp_distance(v, dyn.a_max, j) + ramp_distance(v, dyn.d_max, j);
+  };
+  if (both_ramps(dyn.v_max) <= d) return dyn.v_max;
+  const double a_s = std::min(dyn.a_max, dyn.d_max);
+  const double a_l = std::max(dyn.a_max, dyn.d_max);
+  const double v_s = a_s * a_s / j;  // level at which the smaller limit is just reached
+  const double v_l = a_l * a_l / j;
+  if (d <= both_ramps(v_s)) return level_neither(d, j);
+  if (d >= both_ramps(v_l)) return level_both(d, dyn);
+  return level_smaller(d, a_s, j, std::sqrt(v_l));
+}
+
+// Case rest to rest: closed form by limits reached (no iteration over ramps).
+void append_rest_to_rest_fastest(ProfileBuilder& b, double p_target, const Dynamics& dyn) noexcept {
+  const double d = p_target - b.state().p;
+  if (d == 0.0) return;
+  const double s = d > 0.0 ? 1.0 : -1.0;
+  const double dist = std::abs(d);
+  const double vm = std::min(dyn.v_max, rest_to_rest_level(dist, dyn));
+  const double j = dyn.j_max;
+  const double d_cruise = dist - ramp_distance(vm, dyn.a_max, j) - ramp_distance(vm, dyn.d_max, j);
+  const double t_cruise =
+      d_cruise > 8.0 * std::numeric_limits<double>::epsilon() * dist ? d_cruise / vm : 0.0;
+  b.set_level(vm);
+  b.add(velocity_ramp(0.0, 0.0, vm, dyn.a_max, dyn.d_max, j), s);
+  b.add(0.0, t_cruise);
+  b.mark_brake();
+  b.add(velocity_ramp(vm, 0.0, 0.0, dyn.a_max, dyn.d_max, j), s);
+}
+
+}  // namespace
+
 bool plan_fastest(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
                   Profile& out) noexcept {
+  const MotionState end{target.p, target.v, 0.0};
+  if (start.v == 0.0 && start.a == 0.0 && target.v == 0.0) {
+    ProfileBuilder b(out, start);
+    append_rest_to_rest_fastest(b, target.p, dyn);
+    b.finish(&end);
+    return true;
+  }
   // Candidate 1: one single-peak move (reversing without a stop where the target lies behind).
   // Candidate 2 (starts moving away): stop with A-, then the fastest move from rest; a
   // reversing ramp can only use min(A+, A-) across v = 0, so the stop can be faster.
-  const MotionState end{target.p, target.v, 0.0};
   jerk::Move m;
   bool found = false;
   if (jerk::fastest_move(start, target.p, target.v, dyn, m) == jerk::Status::ok) {
