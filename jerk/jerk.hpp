@@ -143,3 +143,5 @@ Status fastest_move(const State& start, double p1, double v1, const Limits& limi
 State end_state(const State& start, const Move& move) noexcept;
 
 }  // namespace ncsim::jerk
+
+#include "jerk/ramp_inline.hpp"  // IWYU pragma: export
