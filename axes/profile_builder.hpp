@@ -66,10 +66,11 @@ void append_stop(ProfileBuilder& builder, const Dynamics& dynamics) noexcept;
 /// Appends the phases of a kernel move (frame sign move.sign).
 void append_move(ProfileBuilder& builder, const jerk::Move& move) noexcept;
 
-/// ProfileRule::time_optimal: plans jerk::fastest_move into `out` (exact end); false when the
-/// single-peak family does not reach the target (then the manual planner runs).
+/// ProfileRule::time_optimal: plans jerk::fastest_move (or stop, then the fastest move) into
+/// `out` (exact end); false when neither reaches the target. `direct`: the move goes toward
+/// the target from a start not moving away, so the manual plan need not be compared.
 bool plan_fastest(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
-                  Profile& out) noexcept;
+                  Profile& out, bool& direct) noexcept;
 
 /// Sign of the direction of motion of `state`: of v, else of a, else `fallback`.
 double motion_sign(const MotionState& state, double fallback) noexcept;

@@ -121,10 +121,12 @@ Result plan_position(const MotionState& start, const PositionTarget& target, con
     return Result::error_invalid_input;
   }
   if (rule == ProfileRule::time_optimal) {
-    // From rest to rest the single-peak move is the minimum time; from a moving start the
-    // manual planner covers reversals the family cannot, so the faster of both is taken.
-    const bool found = detail::plan_fastest(start, target, dyn, out);
-    if (found && start.v == 0.0 && start.a == 0.0 && target.v == 0.0) return Result::ok;
+    // A direct move (toward the target, not moving away) is the single-peak family's best,
+    // which contains the manual's; otherwise the manual planner covers reversals the family
+    // cannot, so the faster of both is taken.
+    bool direct = false;
+    const bool found = detail::plan_fastest(start, target, dyn, out, direct);
+    if (found && direct) return Result::ok;
     Profile manual;
     plan_position(start, target, dyn, manual, ProfileRule::manual);
     if (!found || manual.duration() < out.duration()) out = manual;

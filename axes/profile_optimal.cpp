@@ -97,12 +97,14 @@ void append_rest_to_rest_fastest(ProfileBuilder& b, double p_target, const Dynam
 }  // namespace
 
 bool plan_fastest(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
-                  Profile& out) noexcept {
+                  Profile& out, bool& direct) noexcept {
+  direct = false;
   const MotionState end{target.p, target.v, 0.0};
   if (start.v == 0.0 && start.a == 0.0 && target.v == 0.0) {
     ProfileBuilder b(out, start);
     append_rest_to_rest_fastest(b, target.p, dyn);
     b.finish(&end);
+    direct = true;
     return true;
   }
   // Candidate 1: one single-peak move (reversing without a stop where the target lies behind).
@@ -115,8 +117,10 @@ bool plan_fastest(const MotionState& start, const PositionTarget& target, const 
     append_move(b, m);
     b.finish(&end);
     found = true;
+    // Toward the target without moving away: a stop first cannot be faster.
+    direct = m.sign * start.v >= 0.0 && m.sign * (target.p - start.p) >= 0.0;
   }
-  if (start.v == 0.0 && start.a == 0.0) return found;
+  if (direct || (start.v == 0.0 && start.a == 0.0)) return found;
   Profile alt;
   ProfileBuilder b(alt, start);
   append_stop(b, dyn);

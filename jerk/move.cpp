@@ -198,8 +198,8 @@ Status fastest_move(const State& start, double p1, double v1, const Limits& lim,
       std::abs(v1) > lim.v_max) {
     return Status::invalid_input;
   }
-  // The natural frame, and for targets at rest the reversed one (overshoot and return without
-  // a stop in between); the faster of the two.
+  // The natural frame, and for targets at rest approached from the wrong side the reversed one
+  // (overshoot and return without a stop in between); the faster of the two.
   const double sign0 = natural_sign(start, p1, v1);
   double best = std::numeric_limits<double>::infinity();
   for (const double sign : {sign0, -sign0}) {
@@ -214,6 +214,7 @@ Status fastest_move(const State& start, double p1, double v1, const Limits& lim,
       best = lv.t_ramp + t_cruise;
       out = make_move(f, vm, lv, t_cruise);
     }
+    if (f.v0 >= 0.0) break;  // not moving away: no overshoot can be faster than this move
   }
   return best < std::numeric_limits<double>::infinity() ? Status::ok : Status::not_supported;
 }
