@@ -77,6 +77,41 @@ double ref_min_time(double distance, const Dynamics& d) {
   return hi;
 }
 
+// Largest distance within time t from (v0 >= 0, a = 0) ending at (v1 >= 0, a = 0), over the
+// level vm: ramps with a = 0 at both ends have the mean velocity of their ends; A+ when
+// speeding up, A- when slowing down.
+double ref_max_distance_from(double v0, double v1, double t, const Dynamics& d) {
+  const auto dist = [&](double vm) {
+    const double t1 = ref_ramp_time(std::abs(vm - v0), vm > v0 ? d.a_max : d.d_max, d.j_max);
+    const double t2 = ref_ramp_time(std::abs(vm - v1), vm > v1 ? d.d_max : d.a_max, d.j_max);
+    if (t1 + t2 > t) return -1e300;
+    return 0.5 * (v0 + vm) * t1 + 0.5 * (vm + v1) * t2 + vm * (t - t1 - t2);
+  };
+  constexpr int kScan = 256;
+  double best_v = 0.0;
+  double best = dist(0.0);
+  for (int i = 1; i <= kScan; ++i) {
+    const double v = d.v_max * i / kScan;
+    if (dist(v) > best) {
+      best = dist(v);
+      best_v = v;
+    }
+  }
+  double lo = std::max(0.0, best_v - d.v_max / kScan);
+  double hi = std::min(d.v_max, best_v + d.v_max / kScan);
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  for (int i = 0; i < 200; ++i) {
+    const double x1 = hi - g * (hi - lo);
+    const double x2 = lo + g * (hi - lo);
+    if (dist(x1) < dist(x2)) {
+      lo = x1;
+    } else {
+      hi = x2;
+    }
+  }
+  return std::max(best, dist(0.5 * (lo + hi)));
+}
+
 Dynamics random_dynamics(std::mt19937_64& rng) {
   Dynamics d;
   d.v_max = log_uniform(rng, 1.0, 1e4);
@@ -117,6 +152,39 @@ TEST_CASE("time-optimal rest-to-rest with A+ != A- matches the independent refer
     REQUIRE(p.at(p.duration()).p == dist);
     check_limits(p, d, MotionState{});
   }
+}
+
+TEST_CASE("time-optimal from moving starts (a = 0) toward the target matches the reference") {
+  // Starts at velocity v0 >= 0 with a = 0, the target ahead beyond the stop point, arrival at
+  // v1 >= 0: the reference bisects the duration on "the largest distance coverable in T
+  // reaches D" (ref_max_distance_from, written apart from the kernel).
+  std::mt19937_64 rng(31337);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int checked = 0;
+  for (int n = 0; n < 2000; ++n) {
+    const Dynamics d = random_dynamics(rng);
+    const double v0 = d.v_max * unit(rng);
+    const double v1 = unit(rng) < 0.5 ? 0.0 : d.v_max * unit(rng);
+    const double dist = log_uniform(rng, 1e-4, 1e4);
+    // Skip targets the start cannot reach without overshooting (the level 0 covers more).
+    const double t0 = ref_ramp_time(v0, d.d_max, d.j_max);
+    const double t1 = ref_ramp_time(v1, d.a_max, d.j_max);
+    if (0.5 * v0 * t0 + 0.5 * v1 * t1 > dist) continue;
+    Profile p;
+    REQUIRE(ncsim::axes::plan_position(MotionState{0.0, v0, 0.0}, PositionTarget{dist, v1}, d, p,
+                                       ProfileRule::time_optimal) == Result::ok);
+    double lo = 0.0;
+    double hi = p.duration() * 2.0 + 1e-9;
+    for (int i = 0; i < 200; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (ref_max_distance_from(v0, v1, mid, d) >= dist ? hi : lo) = mid;
+    }
+    INFO("v0=", v0, " v1=", v1, " D=", dist, " V=", d.v_max, " A+=", d.a_max, " A-=", d.d_max,
+         " J=", d.j_max, " t=", p.duration(), " t_ref=", hi);
+    REQUIRE(p.duration() <= hi * (1.0 + 1e-9));
+    ++checked;
+  }
+  CHECK(checked > 600);
 }
 
 TEST_CASE("the manual rule (default) keeps Dynamik 1.2; time-optimal is faster when V is cut") {

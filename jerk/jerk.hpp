@@ -125,8 +125,9 @@ enum class Status : std::uint8_t {
 Status move_of_duration(const State& start, double p1, double v1, double duration,
                         const Limits& limits, Move& out) noexcept;
 
-/// Minimum duration [s] of the single-peak family from `start` to (p1, v1, 0) (the level as
-/// high as V and the distance allow); the lower bound accepted by move_of_duration. Returns a
+/// Minimum duration [s] accepted by move_of_duration from `start` to (p1, v1, 0): the family's
+/// level at a root of dist(vm) = D bracketed from 0 (from which it can be lowered); this can
+/// exceed fastest_move's time where the feasible levels are not one interval. Returns a
 /// negative value when the family does not apply (Status::not_supported).
 double min_single_peak_time(const State& start, double p1, double v1,
                             const Limits& limits) noexcept;

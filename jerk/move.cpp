@@ -12,6 +12,7 @@
 // rest between the ramps, which takes up any remaining time.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -97,8 +98,35 @@ double solve_bracket(double x_neg, double x_pos, double g_neg, double g_pos, dou
   return x_neg;
 }
 
-// Highest feasible level; negative when dist(0) > D (the family does not apply).
+// Highest feasible level; negative when no level in [0, V] fits. dist(vm) is not monotone:
+// it dips where a ramp vanishes (vm = v0, vm = v1), so the feasible levels need not be one
+// interval. The candidates V, max(v0, v1), min(v0, v1), 0 (clamped to [0, V]) are tried from
+// the top; between the first feasible one and the next higher one both ramps grow with vm,
+// and the root of dist(vm) = D there is the highest feasible level.
 double top_level(const Frame& f, const Limits& lim) noexcept {
+  const auto g = [&](double vm) { return level(f, vm, lim).dist - f.d; };
+  const double g_top = g(lim.v_max);
+  if (g_top <= 0.0) return lim.v_max;
+  const auto clamp = [&](double v) { return std::clamp(v, 0.0, lim.v_max); };
+  const std::array<double, 3> below{clamp(std::max(f.v0, f.v1)), clamp(std::min(f.v0, f.v1)), 0.0};
+  double hi = lim.v_max;
+  double g_hi = g_top;
+  for (const double c : below) {
+    if (!(c < hi)) continue;
+    const double g_c = g(c);
+    if (g_c <= 0.0) {
+      return solve_bracket(c, hi, g_c, g_hi, kResidue * std::abs(f.d), g);
+    }
+    hi = c;
+    g_hi = g_c;
+  }
+  return -1.0;
+}
+
+// A feasible level for stretching a move in time: a root of dist(vm) = D bracketed from 0
+// (dist(0) <= D), so that lowering the level from it toward 0 stays feasible in the common
+// case; negative when dist(0) > D. move_of_duration checks the level it finally uses.
+double stretch_level(const Frame& f, const Limits& lim) noexcept {
   const double d_top = level(f, lim.v_max, lim).dist;
   if (d_top <= f.d) return lim.v_max;
   const double d_zero = level(f, 0.0, lim).dist;
@@ -133,7 +161,7 @@ double min_single_peak_time(const State& start, double p1, double v1, const Limi
   if (!valid(lim) || !finite(start) || !std::isfinite(p1) || !std::isfinite(v1)) return -1.0;
   const Frame f = frame_of(start, p1, v1);
   if (f.v1 < 0.0 || f.v1 > lim.v_max) return -1.0;
-  const double vm = top_level(f, lim);
+  const double vm = stretch_level(f, lim);
   if (vm < 0.0) return -1.0;
   const Level lv = level(f, vm, lim);
   return lv.t_ramp + cruise_time(f, vm, lv);
@@ -147,7 +175,7 @@ Status move_of_duration(const State& start, double p1, double v1, double duratio
   }
   const Frame f = frame_of(start, p1, v1);
   if (f.v1 < 0.0) return Status::not_supported;
-  const double vm_top = top_level(f, lim);
+  const double vm_top = stretch_level(f, lim);
   if (vm_top < 0.0) return Status::not_supported;
   const Level top = level(f, vm_top, lim);
   const double t_min = top.t_ramp + cruise_time(f, vm_top, top);
