@@ -99,16 +99,18 @@ double solve_bracket(double x_neg, double x_pos, double g_neg, double g_pos, dou
 }
 
 // Highest feasible level; negative when no level in [0, V] fits. dist(vm) is not monotone:
-// it dips where a ramp vanishes (vm = v0, vm = v1), so the feasible levels need not be one
-// interval. The candidates V, max(v0, v1), min(v0, v1), 0 (clamped to [0, V]) are tried from
-// the top; between the first feasible one and the next higher one both ramps grow with vm,
-// and the root of dist(vm) = D there is the highest feasible level.
+// it dips where a ramp vanishes (vm = v_zero of the start, vm = v1), so the feasible levels need
+// not be one interval. The candidates V, max(v_zero, v1), min(v_zero, v1), 0 (clamped to [0, V])
+// are tried from the top; between the first feasible one and the next higher one both ramps grow
+// with vm, and the root of dist(vm) = D there is the highest feasible level.
 double top_level(const Frame& f, const Limits& lim) noexcept {
   const auto g = [&](double vm) { return level(f, vm, lim).dist - f.d; };
   const double g_top = g(lim.v_max);
   if (g_top <= 0.0) return lim.v_max;
   const auto clamp = [&](double v) { return std::clamp(v, 0.0, lim.v_max); };
-  const std::array<double, 3> below{clamp(std::max(f.v0, f.v1)), clamp(std::min(f.v0, f.v1)), 0.0};
+  const double v_zero = f.v0 + f.a0 * std::abs(f.a0) / (2.0 * lim.j_max);  // ramp 1 vanishes
+  const std::array<double, 3> below{clamp(std::max(v_zero, f.v1)), clamp(std::min(v_zero, f.v1)),
+                                    0.0};
   double hi = lim.v_max;
   double g_hi = g_top;
   for (const double c : below) {
