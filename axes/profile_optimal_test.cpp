@@ -226,8 +226,13 @@ TEST_CASE("time-optimal from random moving states: never slower than the manual,
   for (int n = 0; n < 20000; ++n) {
     const Dynamics d = random_dynamics(rng);
     const double dist = (unit(rng) < 0.5 ? -1.0 : 1.0) * log_uniform(rng, 1e-4, 1e4);
-    MotionState start{0.0, d.v_max * (2.0 * unit(rng) - 1.0), 0.0};
-    if (unit(rng) < 0.3) start.a = 0.5 * std::min(d.a_max, d.d_max) * (2.0 * unit(rng) - 1.0);
+    // 10 % of the starts lie beyond the limits (|v0| up to 1.5 V, |a0| up to 1.5 A).
+    const double beyond = unit(rng) < 0.1 ? 1.5 : 1.0;
+    MotionState start{0.0, beyond * d.v_max * (2.0 * unit(rng) - 1.0), 0.0};
+    if (unit(rng) < 0.3) {
+      start.a = beyond * std::min(d.a_max, d.d_max) * (2.0 * unit(rng) - 1.0);
+      if (beyond == 1.0) start.a *= 0.5;
+    }
     const double v_end = unit(rng) < 0.25 ? (dist > 0 ? 1.0 : -1.0) * d.v_max * unit(rng) : 0.0;
     Profile manual;
     Profile fast;
