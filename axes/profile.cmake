@@ -5,6 +5,7 @@ target_sources(ncsim_axes PRIVATE
   ${CMAKE_CURRENT_SOURCE_DIR}/profile_builder.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/profile_general.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/profile_velocity.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/profile_optimal.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/profile_compensation.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/profile_generator.cpp
 )
@@ -15,4 +16,5 @@ ncsim_add_test(NAME axes_profile_tests
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_property_test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_online_test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_start_state_test.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/profile_optimal_test.cpp
   LIBS ncsim_axes)

@@ -28,6 +28,8 @@ std::string_view diagnostic_id(Result result) noexcept {
       return "NC5013";
     case Result::ignored_below_increment:
       return "NC5014";
+    case Result::error_not_synchronizable:
+      return "NC5015";
   }
   return {};
 }
@@ -54,6 +56,8 @@ std::string_view describe(Result result) noexcept {
       return "request rejected: the axis has not been started";
     case Result::ignored_below_increment:
       return "no start: distance shorter than one encoder increment";
+    case Result::error_not_synchronizable:
+      return "not supported: no single-peak profile of the required duration (would reverse)";
   }
   return {};
 }

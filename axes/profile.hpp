@@ -41,6 +41,7 @@ enum class Result : std::uint8_t {
   rejected_compensation_active,  ///< new end position during compensation [NC5012]
   rejected_not_moving,           ///< online change needs a started axis [NC5013]
   ignored_below_increment,       ///< distance below one encoder increment: no start [NC5014]
+  error_not_synchronizable,      ///< no single-peak profile of the required duration [NC5015]
 };
 
 /// ncsim diagnostic id ("NC5001") of a non-ok Result; empty for ok/working/finished.
@@ -124,12 +125,42 @@ struct PositionTarget {
   double v = 0.0;  ///< velocity at the target [mm/s], signed, |v| <= V; acceleration there is 0
 };
 
-/// Plans from `start` to `target` under `dynamics` (002_* 2.1). Rest-to-rest moves follow the
-/// manual's rule for an unreachable V (highest velocity reachable with the symmetric
-/// min(A+, A-)); starts that move away from or cannot stop before the target stop first and
-/// return (002_* 2.3); start states beyond the limits are first brought back inside them.
+/// Which rule shapes a position motion where the manual has one (docs/axes-profile.md,
+/// "Profile rule"; ncsim axis parameter NCSIM-AXIS-001 `ncsim.profile_rule`, default manual).
+enum class ProfileRule : std::uint8_t {
+  manual,        ///< 002_* 2.1 symmetric min(A+, A-) when V is unreachable; 2.3 stop-and-return
+  time_optimal,  ///< the fastest single-peak profile under the real A+, A- (reversal without stop)
+};
+
+/// Plans from `start` to `target` under `dynamics` (002_* 2.1). With ProfileRule::manual,
+/// rest-to-rest moves follow the manual's rule for an unreachable V (highest velocity reachable
+/// with the symmetric min(A+, A-)); starts that move away from or cannot stop before the target
+/// stop first and return (002_* 2.3); start states beyond the limits are first brought back
+/// inside them. ProfileRule::time_optimal plans the fastest single-peak profile instead
+/// (jerk::fastest_move), falling back to the manual rule where that family does not apply.
 Result plan_position(const MotionState& start, const PositionTarget& target,
-                     const Dynamics& dynamics, Profile& out) noexcept;
+                     const Dynamics& dynamics, Profile& out,
+                     ProfileRule rule = ProfileRule::manual) noexcept;
+
+/// Plans a profile from `start` to `target` taking exactly `duration` [s] (>= the motion's
+/// own minimum): the cruise level is lowered (jerk::move_of_duration). Returns
+/// error_not_synchronizable when no single-peak profile of that duration exists.
+Result plan_position_of_duration(const MotionState& start, const PositionTarget& target,
+                                 const Dynamics& dynamics, double duration, Profile& out) noexcept;
+
+/// Time-synchronised multi-axis motion (catch-up "all axes at once", INDP TIME=): each axis is
+/// first planned alone under `rule`; every axis then gets a profile of exactly the longest
+/// duration, or of `min_duration` [s] when that is longer (TIME=). All spans have one size.
+Result plan_synchronized(std::span<const MotionState> starts,
+                         std::span<const PositionTarget> targets,
+                         std::span<const Dynamics> dynamics, ProfileRule rule, double min_duration,
+                         std::span<Profile> out) noexcept;
+
+/// A target moving with constant velocity: p1 + v1 t (t [s] from now). Plans the earliest
+/// meeting in position, velocity (v1) and acceleration (0) within the single-peak family;
+/// `t_meet` receives the meeting time [s] (the profile's duration).
+Result plan_moving_target(const MotionState& start, double p1, double v1, const Dynamics& dynamics,
+                          Profile& out, double& t_meet) noexcept;
 
 /// Plans from `start` to the signed velocity `v_target` [mm/s] and constant velocity after it
 /// (endless motion). A sign change stops first (A-), then speeds up the other way (A+).

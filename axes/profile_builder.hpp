@@ -63,6 +63,15 @@ void append_rest_to_rest(ProfileBuilder& builder, double p_target,
 /// Appends a stop to rest from the builder's state (frame = direction of motion).
 void append_stop(ProfileBuilder& builder, const Dynamics& dynamics) noexcept;
 
+/// Appends the phases of a kernel move (frame sign move.sign).
+void append_move(ProfileBuilder& builder, const jerk::Move& move) noexcept;
+
+/// ProfileRule::time_optimal: plans jerk::fastest_move (or stop, then the fastest move) into
+/// `out` (exact end); false when neither reaches the target. `direct`: the move goes toward
+/// the target from a start not moving away, so the manual plan need not be compared.
+bool plan_fastest(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
+                  Profile& out, bool& direct) noexcept;
+
 /// Sign of the direction of motion of `state`: of v, else of a, else `fallback`.
 double motion_sign(const MotionState& state, double fallback) noexcept;
 

@@ -9,6 +9,8 @@
 //     with no closed form in the mixed cases, solved by a bracketed Illinois iteration;
 //  3. moving away, or unable to arrive without overshooting: stop, then return (002_* 2.3).
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -62,15 +64,15 @@ double level_distance(double v0, double a0, double vm, double vf, const Dynamics
          distance(vm, 0.0, velocity_ramp(vm, 0.0, vf, dyn.a_max, dyn.d_max, j));
 }
 
-// Level vm in [0, v_hi] with level_distance(vm) == dist, given f(0) <= dist < f(v_hi).
+// Level vm in [v_lo, v_hi] with level_distance(vm) == dist, given f(v_lo) <= dist < f(v_hi).
 // Illinois variant of regula falsi, with bisection as a fallback. The tolerance is relative to
 // dist only: f(v_hi) can exceed dist by many orders of magnitude (V = 5000 mm/s, A- = 5 mm/s^2
 // against a 10 um move), and a tolerance tied to it let the chain miss the target. When the
 // bracket has shrunk to rounding size, the lower end is returned: its distance is <= dist, so
 // the remaining way is a short cruise and the target is still met.
-double solve_level(double v0, double a0, double vf, double dist, double v_hi, double f_lo,
-                   double f_hi, const Dynamics& dyn) noexcept {
-  double lo = 0.0;
+double solve_level(double v0, double a0, double vf, double dist, double v_lo, double v_hi,
+                   double f_lo, double f_hi, const Dynamics& dyn) noexcept {
+  double lo = v_lo;
   double hi = v_hi;
   double g_lo = f_lo - dist;
   double g_hi = f_hi - dist;
@@ -115,10 +117,22 @@ void append_stop_and_return(ProfileBuilder& b, const PositionTarget& target,
 }  // namespace
 
 Result plan_position(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
-                     Profile& out) noexcept {
+                     Profile& out, ProfileRule rule) noexcept {
   if (!valid(dyn) || !finite(start) || !std::isfinite(target.p) || !std::isfinite(target.v) ||
       std::abs(target.v) > dyn.v_max) {
     return Result::error_invalid_input;
+  }
+  if (rule == ProfileRule::time_optimal) {
+    // A direct move (toward the target, not moving away) is the single-peak family's best,
+    // which contains the manual's; otherwise the manual planner covers reversals the family
+    // cannot, so the faster of both is taken.
+    bool direct = false;
+    const bool found = detail::plan_fastest(start, target, dyn, out, direct);
+    if (found && direct) return Result::ok;
+    Profile manual;
+    plan_position(start, target, dyn, manual, ProfileRule::manual);
+    if (!found || manual.duration() < out.duration()) out = manual;
+    return Result::ok;
   }
   ProfileBuilder b(out, start);
   const MotionState end{target.p, target.v, 0.0};
@@ -157,13 +171,35 @@ Result plan_position(const MotionState& start, const PositionTarget& target, con
   if (f_hi <= dist) {  // case 2, V reached; a cruise of rounding residue length is dropped
     if (dist - f_hi > kResidue * dist) t_cruise = (dist - f_hi) / dyn.v_max;
   } else {
-    const double f_lo = level_distance(v1, a1, 0.0, vf, dyn);
-    if (f_lo > dist) {  // case 3, cannot arrive without overshooting
+    // The highest level whose chain fits: level_distance dips where a ramp vanishes (at the
+    // start's v_zero and at vf), so the feasible levels need not be one interval; candidates
+    // are tried from the top and the root is taken between the first that fits and the next
+    // higher one (docs/axes-profile.md, "Numerics" 4).
+    const double v_zero = v1 + a1 * std::abs(a1) / (2.0 * j);
+    const auto clamp = [&](double v) { return std::clamp(v, 0.0, dyn.v_max); };
+    const std::array<double, 3> candidates{clamp(std::max(v_zero, vf)), clamp(std::min(v_zero, vf)),
+                                           0.0};
+    double v_hi = dyn.v_max;
+    double f_top = f_hi;
+    double v_lo = -1.0;
+    double f_lo = 0.0;
+    for (const double c : candidates) {
+      if (!(c < v_hi)) continue;
+      const double f_c = level_distance(v1, a1, c, vf, dyn);
+      if (f_c <= dist) {
+        v_lo = c;
+        f_lo = f_c;
+        break;
+      }
+      v_hi = c;
+      f_top = f_c;
+    }
+    if (v_lo < 0.0) {  // case 3, cannot arrive without overshooting
       append_stop_and_return(b, target, dyn);
       b.finish(&end);
       return Result::ok;
     }
-    vm = solve_level(v1, a1, vf, dist, dyn.v_max, f_lo, f_hi, dyn);
+    vm = solve_level(v1, a1, vf, dist, v_lo, v_hi, f_lo, f_top, dyn);
     const double rest = dist - level_distance(v1, a1, vm, vf, dyn);
     if (rest > kResidue * dist && vm > 0.0) t_cruise = rest / vm;
   }

@@ -76,7 +76,7 @@ Result SetpointGenerator::replan() noexcept {
         config_.override_type == OverrideType::reduced_iterated ? v_start_level_ : v_user_;
     Dynamics d = dynamics_;
     d.v_max = std::max(v_ref * override_, std::abs(v_end_));
-    r = plan_position(st, PositionTarget{target_base_, v_end_}, d, next);
+    r = plan_position(st, PositionTarget{target_base_, v_end_}, d, next, config_.profile_rule);
   }
   if (r != Result::ok) return r;
   base_ = next;
@@ -91,7 +91,8 @@ Result SetpointGenerator::begin_position(double target_base, double v_end) noexc
   Profile full;
   Dynamics d = dynamics_;
   d.v_max = std::max(v_user_, std::abs(v_end));
-  const Result r = plan_position(base_state(), PositionTarget{target_base, v_end}, d, full);
+  const Result r = plan_position(base_state(), PositionTarget{target_base, v_end}, d, full,
+                                 config_.profile_rule);
   if (r != Result::ok) return r;
   mode_ = Mode::position;
   target_base_ = target_base;
@@ -143,7 +144,7 @@ Result SetpointGenerator::start_position_moving(double target, double v_end, dou
 Result SetpointGenerator::start_velocity(const VelocityCommand& command) noexcept {
   if (stopping_) return Result::rejected_stopping;
   if (compensation_) return Result::rejected_compensation_active;
-  const double v = command.velocity_um_s * 1e-3;  // isg-language.md 6.3: um/s
+  const double v = command.velocity;  // [mm/s], converted from um/s by the interpreter
   if (!(std::isfinite(v) && v > 0.0)) return Result::error_invalid_input;
   if (v > config_.v_axis_max) return Result::error_velocity_limit;
   // isg-language.md 6.3: missing or <= 0 Acceleration/Deceleration/Jerk take the axis values.

@@ -27,12 +27,13 @@ enum class OverrideType : std::uint8_t {
 /// MC_MoveVelocity direction (isg-language.md 6.3): 1 positive, 3 negative, 4 current.
 enum class MoveDirection : std::uint8_t { positive = 1, negative = 3, current = 4 };
 
-/// MC_MoveVelocity parameters in the NC program's units (isg-language.md 6.3).
+/// MC_MoveVelocity parameters in ncsim's internal units (isg-language.md 6.3).
 struct VelocityCommand {
-  double velocity_um_s = 0.0;  ///< Velocity [um/s] (rotary: 1e-3 deg/s), > 0
-  double acceleration = 0.0;   ///< [mm/s^2]; <= 0 takes the axis value
-  double deceleration = 0.0;   ///< [mm/s^2]; <= 0 takes the axis value
-  double jerk = 0.0;           ///< [mm/s^3]; <= 0 takes the axis value
+  double velocity = 0.0;      ///< [mm/s] (rotary: deg/s), > 0; the interpreter converts the
+                              ///< program's um/s once at the program boundary (isg-language.md 6.3)
+  double acceleration = 0.0;  ///< [mm/s^2]; <= 0 takes the axis value
+  double deceleration = 0.0;  ///< [mm/s^2]; <= 0 takes the axis value
+  double jerk = 0.0;          ///< [mm/s^3]; <= 0 takes the axis value
   MoveDirection direction = MoveDirection::positive;
 };
 
@@ -42,6 +43,9 @@ struct GeneratorConfig {
   double v_axis_max = 0.0;  ///< maximum permitted axis velocity [mm/s]; starts above it fail
   double increment = 1e-4;  ///< encoder increment [mm]; shorter moves do not start (002_* 2.1)
   OverrideType override_type = OverrideType::reduced_iterated;
+  /// Shape of position motions (NCSIM-AXIS-001 `ncsim.profile_rule`, docs/axes-profile.md):
+  /// the manual's rules (default) or the fastest single-peak profile.
+  ProfileRule profile_rule = ProfileRule::manual;
 };
 
 class SetpointGenerator {

@@ -269,7 +269,7 @@ TEST_CASE("compensation stop keeps what was compensated and ramps the overspeed 
 TEST_CASE("MC_MoveVelocity runs endlessly at Velocity in um/s, direction 3 is negative") {
   SetpointGenerator g(config());
   VelocityCommand cmd;
-  cmd.velocity_um_s = 300000.0;  // 300 mm/s
+  cmd.velocity = 300.0;  // [mm/s]
   cmd.acceleration = 2000.0;
   cmd.deceleration = 2000.0;
   cmd.jerk = 750000.0;
@@ -287,7 +287,7 @@ TEST_CASE("MC_MoveVelocity runs endlessly at Velocity in um/s, direction 3 is ne
   cycles = run(g, 5000);
   CHECK(g.setpoint().v == doctest::Approx(300.0));
   cmd.direction = MoveDirection::current;
-  cmd.velocity_um_s = 100000.0;
+  cmd.velocity = 100.0;
   REQUIRE(g.start_velocity(cmd) == Result::ok);
   run(g, 5000);
   CHECK(g.setpoint().v == doctest::Approx(100.0));

@@ -125,13 +125,24 @@ enum class Status : std::uint8_t {
 Status move_of_duration(const State& start, double p1, double v1, double duration,
                         const Limits& limits, Move& out) noexcept;
 
-/// Minimum duration [s] of the single-peak family from `start` to (p1, v1, 0) (the level as
-/// high as V and the distance allow); the lower bound accepted by move_of_duration. Returns a
+/// Minimum duration [s] accepted by move_of_duration from `start` to (p1, v1, 0): the family's
+/// level at a root of dist(vm) = D bracketed from 0 (from which it can be lowered); this can
+/// exceed fastest_move's time where the feasible levels are not one interval. Returns a
 /// negative value when the family does not apply (Status::not_supported).
 double min_single_peak_time(const State& start, double p1, double v1,
                             const Limits& limits) noexcept;
+
+/// The fastest single-peak move from `start` to (p1, v1, a = 0): the highest level V and the
+/// distance allow, in the frame toward the target or (targets at rest) in the reversed one,
+/// which overshoots and returns without stopping in between. Start states beyond the limits
+/// are brought inside by the first ramp (acceleration first with j, a velocity above V with
+/// d_max). Status::not_supported when neither frame's family reaches the target.
+Status fastest_move(const State& start, double p1, double v1, const Limits& limits,
+                    Move& out) noexcept;
 
 /// World state at the end of `move` started from `start` (closed-form chain).
 State end_state(const State& start, const Move& move) noexcept;
 
 }  // namespace ncsim::jerk
+
+#include "jerk/ramp_inline.hpp"  // IWYU pragma: export

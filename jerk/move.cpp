@@ -12,6 +12,7 @@
 // rest between the ramps, which takes up any remaining time.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -32,17 +33,23 @@ struct Frame {
   double d = 0.0;
 };
 
-Frame frame_of(const State& start, double p1, double v1) noexcept {
+// The natural frame: toward the target, else the direction of arrival or of motion.
+double natural_sign(const State& start, double p1, double v1) noexcept {
   const double dp = p1 - start.p;
-  double sign = 1.0;
-  if (dp != 0.0) {
-    sign = dp > 0.0 ? 1.0 : -1.0;
-  } else if (v1 != 0.0) {
-    sign = v1 > 0.0 ? 1.0 : -1.0;
-  } else if (start.v != 0.0) {
-    sign = start.v > 0.0 ? 1.0 : -1.0;
-  }
-  return Frame{sign, sign * start.v, sign * start.a, sign * v1, std::abs(dp)};
+  if (dp != 0.0) return dp > 0.0 ? 1.0 : -1.0;
+  if (v1 != 0.0) return v1 > 0.0 ? 1.0 : -1.0;
+  if (start.v != 0.0) return start.v > 0.0 ? 1.0 : -1.0;
+  return 1.0;
+}
+
+// Frame with the given sign; its distance d is negative when the target lies behind (a move
+// that overshoots and comes back at a level vm >= 0 in this frame).
+Frame frame_of(const State& start, double p1, double v1, double sign) noexcept {
+  return Frame{sign, sign * start.v, sign * start.a, sign * v1, sign * (p1 - start.p)};
+}
+
+Frame frame_of(const State& start, double p1, double v1) noexcept {
+  return frame_of(start, p1, v1, natural_sign(start, p1, v1));
 }
 
 struct Level {
@@ -54,7 +61,10 @@ struct Level {
 
 Level level(const Frame& f, double vm, const Limits& lim) noexcept {
   Level out;
-  out.first = velocity_ramp(f.v0, f.a0, vm, lim.a_max, lim.d_max, lim.j_max);
+  // A first ramp from a frame velocity below 0 slows down (A-) until v = 0 and speeds up (A+)
+  // after it; one ramp has one limit per sign of acceleration, so it takes the smaller.
+  const double a_up = f.v0 < 0.0 ? std::min(lim.a_max, lim.d_max) : lim.a_max;
+  out.first = velocity_ramp(f.v0, f.a0, vm, a_up, lim.d_max, lim.j_max);
   out.second = velocity_ramp(vm, 0.0, f.v1, lim.a_max, lim.d_max, lim.j_max);
   out.dist = distance(f.v0, f.a0, out.first) + distance(vm, 0.0, out.second);
   out.t_ramp = out.first.time() + out.second.time();
@@ -88,19 +98,48 @@ double solve_bracket(double x_neg, double x_pos, double g_neg, double g_pos, dou
   return x_neg;
 }
 
-// Highest feasible level; negative when dist(0) > D (the family does not apply).
+// Highest feasible level; negative when no level in [0, V] fits. dist(vm) is not monotone:
+// it dips where a ramp vanishes (vm = v_zero of the start, vm = v1), so the feasible levels need
+// not be one interval. The candidates V, max(v_zero, v1), min(v_zero, v1), 0 (clamped to [0, V])
+// are tried from the top; between the first feasible one and the next higher one both ramps grow
+// with vm, and the root of dist(vm) = D there is the highest feasible level.
 double top_level(const Frame& f, const Limits& lim) noexcept {
+  const auto g = [&](double vm) { return level(f, vm, lim).dist - f.d; };
+  const double g_top = g(lim.v_max);
+  if (g_top <= 0.0) return lim.v_max;
+  const auto clamp = [&](double v) { return std::clamp(v, 0.0, lim.v_max); };
+  const double v_zero = f.v0 + f.a0 * std::abs(f.a0) / (2.0 * lim.j_max);  // ramp 1 vanishes
+  const std::array<double, 3> below{clamp(std::max(v_zero, f.v1)), clamp(std::min(v_zero, f.v1)),
+                                    0.0};
+  double hi = lim.v_max;
+  double g_hi = g_top;
+  for (const double c : below) {
+    if (!(c < hi)) continue;
+    const double g_c = g(c);
+    if (g_c <= 0.0) {
+      return solve_bracket(c, hi, g_c, g_hi, kResidue * std::abs(f.d), g);
+    }
+    hi = c;
+    g_hi = g_c;
+  }
+  return -1.0;
+}
+
+// A feasible level for stretching a move in time: a root of dist(vm) = D bracketed from 0
+// (dist(0) <= D), so that lowering the level from it toward 0 stays feasible in the common
+// case; negative when dist(0) > D. move_of_duration checks the level it finally uses.
+double stretch_level(const Frame& f, const Limits& lim) noexcept {
   const double d_top = level(f, lim.v_max, lim).dist;
   if (d_top <= f.d) return lim.v_max;
   const double d_zero = level(f, 0.0, lim).dist;
   if (d_zero > f.d) return -1.0;
-  return solve_bracket(0.0, lim.v_max, d_zero - f.d, d_top - f.d, kResidue * f.d,
+  return solve_bracket(0.0, lim.v_max, d_zero - f.d, d_top - f.d, kResidue * std::abs(f.d),
                        [&](double vm) { return level(f, vm, lim).dist - f.d; });
 }
 
 double cruise_time(const Frame& f, double vm, const Level& lv) noexcept {
   const double rest = f.d - lv.dist;
-  if (!(vm > 0.0) || rest <= kResidue * f.d) return 0.0;
+  if (!(vm > 0.0) || rest <= kResidue * std::abs(f.d)) return 0.0;
   return rest / vm;
 }
 
@@ -124,7 +163,7 @@ double min_single_peak_time(const State& start, double p1, double v1, const Limi
   if (!valid(lim) || !finite(start) || !std::isfinite(p1) || !std::isfinite(v1)) return -1.0;
   const Frame f = frame_of(start, p1, v1);
   if (f.v1 < 0.0 || f.v1 > lim.v_max) return -1.0;
-  const double vm = top_level(f, lim);
+  const double vm = stretch_level(f, lim);
   if (vm < 0.0) return -1.0;
   const Level lv = level(f, vm, lim);
   return lv.t_ramp + cruise_time(f, vm, lv);
@@ -138,7 +177,7 @@ Status move_of_duration(const State& start, double p1, double v1, double duratio
   }
   const Frame f = frame_of(start, p1, v1);
   if (f.v1 < 0.0) return Status::not_supported;
-  const double vm_top = top_level(f, lim);
+  const double vm_top = stretch_level(f, lim);
   if (vm_top < 0.0) return Status::not_supported;
   const Level top = level(f, vm_top, lim);
   const double t_min = top.t_ramp + cruise_time(f, vm_top, top);
@@ -181,6 +220,33 @@ Status move_of_duration(const State& start, double p1, double v1, double duratio
   if (lv.dist > f.d + 1e-9 * f.d) return Status::not_supported;  // range not connected
   out = make_move(f, vm, lv, cruise_time(f, vm, lv));
   return Status::ok;
+}
+
+Status fastest_move(const State& start, double p1, double v1, const Limits& lim,
+                    Move& out) noexcept {
+  if (!valid(lim) || !finite(start) || !std::isfinite(p1) || !std::isfinite(v1) ||
+      std::abs(v1) > lim.v_max) {
+    return Status::invalid_input;
+  }
+  // The natural frame, and for targets at rest approached from the wrong side the reversed one
+  // (overshoot and return without a stop in between); the faster of the two.
+  const double sign0 = natural_sign(start, p1, v1);
+  double best = std::numeric_limits<double>::infinity();
+  for (const double sign : {sign0, -sign0}) {
+    if (sign != sign0 && v1 != 0.0) break;
+    const Frame f = frame_of(start, p1, v1, sign);
+    if (f.v1 < 0.0) continue;
+    const double vm = top_level(f, lim);
+    if (vm < 0.0) continue;
+    const Level lv = level(f, vm, lim);
+    const double t_cruise = cruise_time(f, vm, lv);
+    if (lv.t_ramp + t_cruise < best) {
+      best = lv.t_ramp + t_cruise;
+      out = make_move(f, vm, lv, t_cruise);
+    }
+    if (f.v0 >= 0.0) break;  // not moving away: no overshoot can be faster than this move
+  }
+  return best < std::numeric_limits<double>::infinity() ? Status::ok : Status::not_supported;
 }
 
 State end_state(const State& start, const Move& move) noexcept {

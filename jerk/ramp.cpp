@@ -1,75 +1,16 @@
-// jerk/ramp.cpp: the time-optimal velocity change (jerk build-up, [hold], jerk reduction) and
-// the quantities derived from it: time, distance, stopping distance (see jerk.hpp).
+// jerk/ramp.cpp: the out-of-line parts of the velocity change: validity of limits, time and
+// distance of a change, stopping distance (see jerk.hpp; the ramp itself: ramp_inline.hpp).
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "jerk/jerk.hpp"
 
 namespace ncsim::jerk {
 
-namespace {
-
-// A difference below kResidue times the size of its terms is a rounding residue, taken as 0
-// (docs/axes-profile.md, "Numerics": a phase of that length cannot be addressed by a time).
-constexpr double kResidue = 8.0 * std::numeric_limits<double>::epsilon();
-
-}  // namespace
-
 bool valid(const Limits& limits) noexcept {
   const auto positive = [](double x) { return std::isfinite(x) && x > 0.0; };
   return positive(limits.v_max) && positive(limits.a_max) && positive(limits.d_max) &&
          positive(limits.j_max);
-}
-
-State advance(const State& s, double j, double dt) noexcept {
-  return State{s.p + dt * (s.v + dt * (s.a * 0.5 + dt * j * (1.0 / 6.0))),
-               s.v + dt * (s.a + dt * j * 0.5), s.a + dt * j};
-}
-
-Ramp velocity_ramp(double v0, double a0, double v1, double a_up, double a_down, double j) noexcept {
-  // The velocity reached when the acceleration is taken to zero at once (v_zero) decides the
-  // direction of the pulse; everything below is in that direction (sign s).
-  Ramp out;
-  out.v_end = v1;
-  const double v_zero = v0 + a0 * std::abs(a0) / (2.0 * j);
-  const double s = v1 >= v_zero ? 1.0 : -1.0;
-  const double a_lim = s > 0.0 ? a_up : a_down;
-  const double a_s = s * a0;        // start acceleration in the pulse's direction
-  const double dv = s * (v1 - v0);  // velocity change in the pulse's direction
-  if (a_s > a_lim) {
-    // Beyond the limit: back to it with j first (limits first), hold, reduce to zero. The
-    // hold's velocity change is s (v1 - v_zero) >= 0.
-    const double dv_ramps = a_s * a_s / (2.0 * j);
-    const double dv_hold = dv - dv_ramps;
-    out.jerk = {-s * j, 0.0, -s * j};
-    out.duration = {(a_s - a_lim) / j,
-                    dv_hold > kResidue * (std::abs(dv) + dv_ramps) ? dv_hold / a_lim : 0.0,
-                    a_lim / j};
-    out.a_peak = s * a_lim;
-    return out;
-  }
-  double a_peak = std::sqrt(std::max(0.0, j * dv + 0.5 * a_s * a_s));
-  double t_hold = 0.0;
-  if (a_peak > a_lim) {
-    a_peak = a_lim;
-    const double dv_ramps = (2.0 * a_peak * a_peak - a_s * a_s) / (2.0 * j);  // [mm/s]
-    const double dv_hold = dv - dv_ramps;
-    if (dv_hold > kResidue * (std::abs(dv) + std::abs(dv_ramps))) t_hold = dv_hold / a_peak;
-  }
-  const double da_up = a_peak - a_s;  // acceleration change of phase 1 [mm/s^2]
-  out.jerk = {s * j, 0.0, -s * j};
-  out.duration = {da_up > kResidue * a_peak ? da_up / j : 0.0, t_hold, a_peak / j};
-  out.a_peak = s * a_peak;
-  return out;
-}
-
-double distance(double v0, double a0, const Ramp& ramp) noexcept {
-  State st{0.0, v0, a0};
-  for (std::size_t i = 0; i < 3; ++i)
-    st = advance(st, ramp.jerk[i], ramp.duration[i]);
-  return st.p;
 }
 
 TimeDistance velocity_change(double v0, double a0, double v1, double a_lim, double j) noexcept {
@@ -79,12 +20,6 @@ TimeDistance velocity_change(double v0, double a0, double v1, double a_lim, doub
 
 TimeDistance stopping_distance(double v0, double a0, double d_max, double j) noexcept {
   return velocity_change(v0, a0, 0.0, d_max, j);
-}
-
-double ramp_distance(double v, double a_lim, double j) noexcept {
-  // Symmetric S-ramp from rest to v: the mean velocity is v/2 over the ramp time.
-  if (v * j <= a_lim * a_lim) return v * std::sqrt(v / j);
-  return 0.5 * v * (v / a_lim + a_lim / j);
 }
 
 }  // namespace ncsim::jerk

@@ -1,0 +1,232 @@
+// axes/profile_optimal.cpp: profiles where the manual prescribes nothing (docs/axes-profile.md,
+// "Profile rule", "Synchronised and moving targets"):
+//  - ProfileRule::time_optimal: the fastest single-peak profile (jerk::fastest_move);
+//  - a prescribed duration: the single-peak profile with a lowered level (jerk::move_of_duration);
+//  - time-synchronised axes: every axis gets the longest single-axis duration;
+//  - a target moving with constant velocity: the earliest meeting time, found by growing the
+//    time geometrically until the single-peak family can meet p1 + v1 T in time, then
+//    bisecting between the last time it could not and the first it could.
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "axes/profile.hpp"
+#include "axes/profile_builder.hpp"
+
+namespace ncsim::axes {
+
+namespace detail {
+
+void append_move(ProfileBuilder& b, const jerk::Move& m) noexcept {
+  b.set_level(m.v_level);
+  b.add(m.first, m.sign);
+  b.add(0.0, m.t_cruise);
+  b.mark_brake();
+  b.add(m.second, m.sign);
+}
+
+namespace {
+
+// Level of the fastest rest-to-rest move under the real A+ and A-: the highest vm <= V with
+// d(vm) = ramp(vm, A+) + ramp(vm, A-) <= D, split by which limits the ramps reach:
+//  - neither (vm J <= min(A)^2):   D = 2 vm^1.5 / sqrt(J)          -> vm = cbrt(D^2 J / 4);
+//  - both (vm J >= max(A)^2):      D = k vm^2 + m vm, k = (1/A+ + 1/A-)/2, m = (A+ + A-)/(2J);
+//  - only the smaller A = a_s:     D = vm^2/(2 a_s) + vm a_s/(2J) + vm^1.5/sqrt(J), in u = sqrt(vm)
+//    a convex increasing quartic: Newton from an upper bound descends onto the root.
+double level_neither(double d, double j) noexcept {
+  return std::cbrt(0.25 * d * d * j);
+}
+
+double level_both(double d, const Dynamics& dyn) noexcept {
+  const double k = 0.5 * (1.0 / dyn.a_max + 1.0 / dyn.d_max);
+  const double m = 0.5 * (dyn.a_max + dyn.d_max) / dyn.j_max;
+  return 2.0 * d / (m + std::sqrt(m * m + 4.0 * k * d));
+}
+
+double level_smaller(double d, double a_s, double j, double u_hi) noexcept {
+  const double c4 = 0.5 / a_s;
+  const double c3 = 1.0 / std::sqrt(j);
+  const double c2 = 0.5 * a_s / j;
+  double u = u_hi;
+  for (int i = 0; i < 100; ++i) {
+    const double u2 = u * u;
+    const double f = u2 * (u2 * c4 + u * c3 + c2) - d;
+    if (!(f > 0.0)) break;
+    const double slope = u * (4.0 * c4 * u2 + 3.0 * c3 * u + 2.0 * c2);
+    const double next = u - f / slope;
+    if (!(next < u)) break;
+    u = next;
+  }
+  return u * u;
+}
+
+double rest_to_rest_level(double d, const Dynamics& dyn) noexcept {
+  const double j = dyn.j_max;
+  const auto both_ramps = [&](double v) {
+    return ramp_distance(v, dyn.a_max, j) + ramp_distance(v, dyn.d_max, j);
+  };
+  if (both_ramps(dyn.v_max) <= d) return dyn.v_max;
+  const double a_s = std::min(dyn.a_max, dyn.d_max);
+  const double a_l = std::max(dyn.a_max, dyn.d_max);
+  const double v_s = a_s * a_s / j;  // level at which the smaller limit is just reached
+  const double v_l = a_l * a_l / j;
+  if (d <= both_ramps(v_s)) return level_neither(d, j);
+  if (d >= both_ramps(v_l)) return level_both(d, dyn);
+  return level_smaller(d, a_s, j, std::sqrt(v_l));
+}
+
+// Case rest to rest: closed form by limits reached (no iteration over ramps).
+void append_rest_to_rest_fastest(ProfileBuilder& b, double p_target, const Dynamics& dyn) noexcept {
+  const double d = p_target - b.state().p;
+  if (d == 0.0) return;
+  const double s = d > 0.0 ? 1.0 : -1.0;
+  const double dist = std::abs(d);
+  const double vm = std::min(dyn.v_max, rest_to_rest_level(dist, dyn));
+  const double j = dyn.j_max;
+  const double d_cruise = dist - ramp_distance(vm, dyn.a_max, j) - ramp_distance(vm, dyn.d_max, j);
+  const double t_cruise =
+      d_cruise > 8.0 * std::numeric_limits<double>::epsilon() * dist ? d_cruise / vm : 0.0;
+  b.set_level(vm);
+  b.add(velocity_ramp(0.0, 0.0, vm, dyn.a_max, dyn.d_max, j), s);
+  b.add(0.0, t_cruise);
+  b.mark_brake();
+  b.add(velocity_ramp(vm, 0.0, 0.0, dyn.a_max, dyn.d_max, j), s);
+}
+
+}  // namespace
+
+bool plan_fastest(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
+                  Profile& out, bool& direct) noexcept {
+  direct = false;
+  const MotionState end{target.p, target.v, 0.0};
+  if (start.v == 0.0 && start.a == 0.0 && target.v == 0.0) {
+    ProfileBuilder b(out, start);
+    append_rest_to_rest_fastest(b, target.p, dyn);
+    b.finish(&end);
+    direct = true;
+    return true;
+  }
+  // Candidate 1: one single-peak move (reversing without a stop where the target lies behind).
+  // Candidate 2 (starts moving away): stop with A-, then the fastest move from rest; a
+  // reversing ramp can only use min(A+, A-) across v = 0, so the stop can be faster.
+  jerk::Move m;
+  bool found = false;
+  if (jerk::fastest_move(start, target.p, target.v, dyn, m) == jerk::Status::ok) {
+    ProfileBuilder b(out, start);
+    append_move(b, m);
+    b.finish(&end);
+    found = true;
+    // Toward the target without moving away: a stop first cannot be faster.
+    direct = m.sign * start.v >= 0.0 && m.sign * (target.p - start.p) >= 0.0;
+  }
+  if (direct || (start.v == 0.0 && start.a == 0.0)) return found;
+  Profile alt;
+  ProfileBuilder b(alt, start);
+  append_stop(b, dyn);
+  const MotionState rest{b.state().p, 0.0, 0.0};
+  if (jerk::fastest_move(rest, target.p, target.v, dyn, m) != jerk::Status::ok) return found;
+  append_move(b, m);
+  b.finish(&end);
+  if (!found || alt.duration() < out.duration()) out = alt;
+  return true;
+}
+
+}  // namespace detail
+
+namespace {
+
+bool finite(const MotionState& s) noexcept {
+  return std::isfinite(s.p) && std::isfinite(s.v) && std::isfinite(s.a);
+}
+
+}  // namespace
+
+Result plan_position_of_duration(const MotionState& start, const PositionTarget& target,
+                                 const Dynamics& dyn, double duration, Profile& out) noexcept {
+  jerk::Move m;
+  const jerk::Status st = jerk::move_of_duration(start, target.p, target.v, duration, dyn, m);
+  if (st == jerk::Status::invalid_input) return Result::error_invalid_input;
+  if (st != jerk::Status::ok) return Result::error_not_synchronizable;
+  detail::ProfileBuilder b(out, start);
+  detail::append_move(b, m);
+  const MotionState end{target.p, target.v, 0.0};
+  b.finish(&end);
+  return Result::ok;
+}
+
+Result plan_synchronized(std::span<const MotionState> starts,
+                         std::span<const PositionTarget> targets,
+                         std::span<const Dynamics> dynamics, ProfileRule rule, double min_duration,
+                         std::span<Profile> out) noexcept {
+  const std::size_t n = starts.size();
+  if (targets.size() != n || dynamics.size() != n || out.size() != n ||
+      !std::isfinite(min_duration)) {
+    return Result::error_invalid_input;
+  }
+  double t_sync = std::max(min_duration, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Result r = plan_position(starts[i], targets[i], dynamics[i], out[i], rule);
+    if (r != Result::ok) return r;
+    t_sync = std::max(t_sync, out[i].duration());
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (out[i].duration() == t_sync) continue;  // the slowest axis keeps its own profile
+    const Result r = plan_position_of_duration(starts[i], targets[i], dynamics[i], t_sync, out[i]);
+    if (r != Result::ok) return r;
+  }
+  return Result::ok;
+}
+
+Result plan_moving_target(const MotionState& start, double p1, double v1, const Dynamics& dyn,
+                          Profile& out, double& t_meet) noexcept {
+  if (!valid(dyn) || !finite(start) || !std::isfinite(p1) || !std::isfinite(v1) ||
+      std::abs(v1) > dyn.v_max) {
+    return Result::error_invalid_input;
+  }
+  // can_meet(T): the time-optimal profile reaches p1 + v1 T with velocity v1 in at most T.
+  Profile probe;
+  const auto can_meet = [&](double t) {
+    return plan_position(start, PositionTarget{p1 + v1 * t, v1}, dyn, probe,
+                         ProfileRule::time_optimal) == Result::ok &&
+           probe.duration() <= t;
+  };
+  // Grow T from well below the static target's time, so an approaching target is met early.
+  const bool static_ok = plan_position(start, PositionTarget{p1, v1}, dyn, probe,
+                                       ProfileRule::time_optimal) == Result::ok;
+  double t_hi = (static_ok && probe.duration() > 0.0 ? probe.duration() : 1.0) * 0x1p-20;
+  double t_lo = 0.0;
+  if (can_meet(0.0)) {
+    t_hi = 0.0;
+  } else {
+    int k = 0;
+    while (!can_meet(t_hi)) {
+      t_lo = t_hi;
+      t_hi *= 2.0;
+      if (++k > 100) return Result::error_not_synchronizable;  // the target runs away
+    }
+    // Earliest: shrink [t_lo, t_hi] to rounding, keeping can_meet(t_hi).
+    for (int i = 0; i < 200 && t_hi - t_lo > 4.0 * std::numeric_limits<double>::epsilon() * t_hi;
+         ++i) {
+      const double mid = 0.5 * (t_lo + t_hi);
+      (can_meet(mid) ? t_hi : t_lo) = mid;
+    }
+  }
+  t_meet = t_hi;
+  const PositionTarget target{p1 + v1 * t_hi, v1};
+  // A meeting time found means a profile of exactly that duration exists unless the family
+  // cannot be stretched to it (a moving start that would have to reverse).
+  if (plan_position_of_duration(start, target, dyn, t_hi, out) == Result::ok) {
+    t_meet = out.duration();  // T to rounding; the profile's own end is the meeting
+    return Result::ok;
+  }
+  // At the meeting time the fastest profile itself takes T (to rounding).
+  if (plan_position(start, target, dyn, out, ProfileRule::time_optimal) == Result::ok &&
+      std::abs(out.duration() - t_hi) <= 1e-9 * t_hi) {
+    t_meet = out.duration();
+    return Result::ok;
+  }
+  return Result::error_not_synchronizable;
+}
+
+}  // namespace ncsim::axes
