@@ -16,6 +16,8 @@ GeneratorConfig make_generator_config(const machines::AxisParams& axis) {
   config.dynamics.j_max = d.jerk_feed();  // P-AXIS-00001/00002 over P-AXIS-00195..00198
   config.v_axis_max = d.v_max;            // P-AXIS-00212
   config.increment = kListIncrement;
+  config.profile_rule =  // NCSIM-AXIS-030
+      d.time_optimal_profiles ? ProfileRule::time_optimal : ProfileRule::manual;
   return config;
 }
 

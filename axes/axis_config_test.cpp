@@ -130,6 +130,17 @@ TEST_CASE("an axis without dynamics in its list gets the TF5200 defaults") {
   CHECK(make_position_control(a).kv == doctest::Approx(10.0));  // P-AXIS-00099 1000 x 0.01/s
 }
 
+TEST_CASE("ncsim.profile_rule (NCSIM-AXIS-030) selects the generator's profile rule") {
+  machines::AxisParams a;
+  a.dynamics.v_max = a.dynamics.v_rapid = 100.0;
+  a.dynamics.acc_feed = a.dynamics.dec_feed = 1000.0;
+  a.dynamics.ramp_acc_up = a.dynamics.ramp_acc_down = 0.05;
+  a.dynamics.ramp_dec_up = a.dynamics.ramp_dec_down = 0.05;
+  CHECK(make_generator_config(a).profile_rule == ProfileRule::manual);  // default: 002 rules
+  a.dynamics.time_optimal_profiles = true;
+  CHECK(make_generator_config(a).profile_rule == ProfileRule::time_optimal);
+}
+
 TEST_CASE("machines and axes default Kv to the same P-AXIS-00099 value") {
   CHECK(PositionControlParams{}.kv == machines::kDefaultKv);
   CHECK(machines::ControlLoop{}.kv == machines::kDefaultKv);

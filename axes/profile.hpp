@@ -126,7 +126,7 @@ struct PositionTarget {
 };
 
 /// Which rule shapes a position motion where the manual has one (docs/axes-profile.md,
-/// "Profile rule"; ncsim axis parameter NCSIM-AXIS-001 `ncsim.profile_rule`, default manual).
+/// "Profile rule"; ncsim axis parameter NCSIM-AXIS-030 `ncsim.profile_rule`, default manual).
 enum class ProfileRule : std::uint8_t {
   manual,        ///< 002_* 2.1 symmetric min(A+, A-) when V is unreachable; 2.3 stop-and-return
   time_optimal,  ///< the fastest single-peak profile under the real A+, A- (reversal without stop)

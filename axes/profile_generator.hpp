@@ -43,7 +43,7 @@ struct GeneratorConfig {
   double v_axis_max = 0.0;  ///< maximum permitted axis velocity [mm/s]; starts above it fail
   double increment = 1e-4;  ///< encoder increment [mm]; shorter moves do not start (002_* 2.1)
   OverrideType override_type = OverrideType::reduced_iterated;
-  /// Shape of position motions (NCSIM-AXIS-001 `ncsim.profile_rule`, docs/axes-profile.md):
+  /// Shape of position motions (NCSIM-AXIS-030 `ncsim.profile_rule`, docs/axes-profile.md):
   /// the manual's rules (default) or the fastest single-peak profile.
   ProfileRule profile_rule = ProfileRule::manual;
 };

@@ -438,6 +438,7 @@ AxisParams build_axis(const ListValues& v, core::DiagnosticList& diagnostics) {
   d.ramp_geom = v.internal("getriebe[0].dynamik.tr_geom");
   d.velo_jump_factor = v.internal("nci.velo_jump_factor");
   d.tolerance_ball = v.internal("nci.tolerance_ball");
+  d.time_optimal_profiles = v.text("ncsim.profile_rule") == "time_optimal";
 
   Monitoring& m = a.monitoring;
   m.exact_stop_window = v.internal("getriebe[0].window");

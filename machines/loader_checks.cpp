@@ -58,6 +58,12 @@ void check_axis(AxisParams& axis, const ListValues& v, Reporter& r) {
             param_ref("kenngr.achs_typ", ListKind::axis) + " = " + number_text(typ) +
                 " must be 1 (linear), 2 (rotary) or 4 (spindle)");
   }
+  const std::string rule = v.text("ncsim.profile_rule");
+  if (rule != "manual" && rule != "time_optimal") {
+    r.error(file, v.loc("ncsim.profile_rule"), "NC3004",
+            param_ref("ncsim.profile_rule", ListKind::axis) + " = " + rule +
+                " must be manual or time_optimal");
+  }
   // Seed 004 §5.2.1 note (1): ACHSMODE_LINEAR or ACHSMODE_MODULO must always be set.
   if ((axis.mode_bits & (axis_mode::kLinear | axis_mode::kModulo)) == 0U &&
       usable(v, {"kenngr.achs_mode"})) {

@@ -57,6 +57,9 @@ struct Dynamics {
   double ramp_geom = 0.0;      ///< P-AXIS-00199 dynamik.tr_geom, contour jerk (path) [s]; 0: none
   double velo_jump_factor = 1.0;  ///< NCSIM-AXIS-020 VELOJUMP C0 [-] (seed 000 §7.1.7)
   double tolerance_ball = 0.0;    ///< NCSIM-AXIS-021 tolerance-ball radius [mm | deg]
+  /// NCSIM-AXIS-030 ncsim.profile_rule: false = the manual's rules (002 2.1 symmetric
+  /// min(A+, A-), 002 2.3 stop and return), true = time-optimal (docs/axes-profile.md).
+  bool time_optimal_profiles = false;
 
   /// Feed jerk [mm/s^3 | deg/s^3]: the smallest a / t of the four feed ramps, so that no ramp
   /// is steeper than configured.

@@ -69,6 +69,7 @@ constexpr std::array kTable = {
   ParamSpec{"P-AXIS-00199", "getriebe[].dynamik.tr_geom", A, ValueType::uns32, 0, kUns32Max, "us", kMicrosecond, "s", "10000", kOpt, 7, -1, "TF5200 P-AXIS-00199"},
   // ---- axis list: the NC I path model (seed 000 §7.1.7); no ISG key, ncsim ids --------------
   ParamSpec{"NCSIM-AXIS-020", "nci.velo_jump_factor", A, ValueType::real64, 0, kRealMax, "", 1, "", "1.0", kOpt, -1, -1, "000 §7.1.7 (C0)"},
+  ParamSpec{"NCSIM-AXIS-030", "ncsim.profile_rule", A, ValueType::word, 0, 0, "manual | time_optimal", 1, "", "manual", kOpt, -1, -1, "002 2.1, 2.3 (manual); docs/axes-profile.md"},
   ParamSpec{"NCSIM-AXIS-021", "nci.tolerance_ball", A, ValueType::real64, 0, kRealMax, "mm | deg", 1, "mm | deg", "0.0", kOpt, -1, -1, "000 §7.1.7, §7.5.11"},
   // ---- axis list: position control -------------------------------------------------------
   ParamSpec{"P-AXIS-00099", "getriebe[].kv", A, ValueType::uns32, 1, kUns32Max, "0.01/s", kCenti, "1/s", "1000", kOpt, 7, -1, "TF5200 P-AXIS-00099"},
