@@ -2,16 +2,21 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdlib>
 
 #include "core/number_text.hpp"
 
 namespace ncsim::interp {
 namespace {
 
+// Fixed notation of the largest double: 309 digits, sign, point and 4 decimals.
+constexpr std::size_t kFixedMax = 320;
+
 void num(std::string& out, double v) {
-  char buf[64];
+  char buf[kFixedMax];
   if (v == 0.0) v = 0.0;  // no "-0.0000"
   auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, 4);
+  if (r.ec != std::errc{}) std::abort();  // kFixedMax holds every finite double
   std::string_view s(buf, static_cast<std::size_t>(r.ptr - buf));
   if (s == "-0.0000") s = "0.0000";
   out += s;
@@ -70,16 +75,20 @@ std::string to_trace_line(const Command& c, const machines::Machine& m) {
             if (b.arc->full_circle) out += " FULL";
           }
           modal(out, b.modal);
-        } else if constexpr (std::is_same_v<T, Spline>) {
-          out += b.type == SplineType::akima ? " SPLINE AKIMA" : " SPLINE BSPLINE";
-          out += " points=" + std::to_string(b.points.size());
+          out += " frame=" + frame_name(b.frame) + " start";
+          axes(out, b.start, m);
+        } else if constexpr (std::is_same_v<T, SplineBegin>) {
+          out += b.type == SplineType::akima ? " SPLINE_BEGIN AKIMA" : " SPLINE_BEGIN BSPLINE";
+          out += " frame=" + frame_name(b.frame) + " start";
+          axes(out, b.start, m);
+        } else if constexpr (std::is_same_v<T, SplinePoint>) {
+          out += " SPLINE_POINT " + std::to_string(b.index);
+          axes(out, b.point, m);
           field(out, "F", b.feed);
-          for (const auto& p : b.points) {
-            out += " [";
-            std::string inner;
-            axes(inner, p, m);
-            out += inner.substr(1) + "]";
-          }
+          out += " frame=" + frame_name(b.frame);
+        } else if constexpr (std::is_same_v<T, SplineEnd>) {
+          out += b.type == SplineType::akima ? " SPLINE_END AKIMA" : " SPLINE_END BSPLINE";
+          out += " points=" + std::to_string(b.points);
         } else if constexpr (std::is_same_v<T, Dwell>) {
           out += " DWELL";
           field(out, "t", b.seconds);
@@ -99,6 +108,7 @@ std::string to_trace_line(const Command& c, const machines::Machine& m) {
           if (b.feed) field(out, "FEED", *b.feed);
           if (b.time) field(out, "TIME", *b.time);
           if (b.interruptible) out += " INTERRUPTIBLE";
+          out += " frame=" + frame_name(b.frame);
         } else if constexpr (std::is_same_v<T, MoveVelocity>) {
           out += " MC_MOVEVELOCITY ";
           out += axis_name(m, b.axis);
@@ -106,19 +116,19 @@ std::string to_trace_line(const Command& c, const machines::Machine& m) {
           field(out, "a", b.acceleration);
           field(out, "d", b.deceleration);
           field(out, "j", b.jerk);
-          out += " dir=" + std::to_string(b.direction);
+          static constexpr const char* kDirections[] = {"1", "3", "4"};  // MC_Direction codes
+          out += " dir=";
+          out += kDirections[static_cast<int>(b.direction)];
         } else if constexpr (std::is_same_v<T, ProbeArm>) {
           out += " PROBE_ARM ";
           out += axis_name(m, b.axis);
           out += " channel=" + std::to_string(b.channel);
-          if (b.mode) out += " mode=" + std::to_string(*b.mode);
-        } else if constexpr (std::is_same_v<T, WaitProbe>) {
-          out += " WAIT_PROBE ";
-          out += axis_name(m, b.axis);
+          if (b.edge) out += *b.edge == ProbeEdge::falling ? " mode=1" : " mode=2";
         } else if constexpr (std::is_same_v<T, SyncIn>) {
           out += " SYNC_IN ";
           out += axis_name(m, b.conveyor);
           field(out, "conv_vel", b.conv_vel);
+          field(out, "latch", b.latch);
           if (b.feed_cont) field(out, "FEED_CONT", *b.feed_cont);
           if (b.feed_cont_auto) out += " FEED_CONT_AUTO";
         } else if constexpr (std::is_same_v<T, SyncOut>) {
@@ -159,16 +169,44 @@ std::string to_trace_line(const Command& c, const machines::Machine& m) {
             out += " AX=";
             out += axis_name(m, *b.axis);
           }
-          out += " \"" + b.parameter + "\"";
+          for (const auto& p : b.settings) {
+            out += ' ';
+            out += p.id;
+            out += ' ';
+            out += p.key;
+            if (p.index) out += '[' + std::to_string(*p.index) + ']';
+            out += '=';
+            num(out, p.value);
+          }
           if (b.wait) out += " WAIT";
         } else if constexpr (std::is_same_v<T, Message>) {
           out += " MSG";
-          if (!b.mode.empty()) out += " " + b.mode;
+          static constexpr const char* kModes[] = {"", " SYN", " SYN_ACK", " ACK"};
+          out += kModes[static_cast<int>(b.mode)];
           out += " \"" + b.text + "\"";
         } else if constexpr (std::is_same_v<T, Flush>) {
-          static constexpr const char* kKinds[] = {" FLUSH", " FLUSH CONTINUE", " FLUSH WAIT",
-                                                   " FLUSH V.E.READ"};
+          static constexpr const char* kKinds[] = {" FLUSH", " FLUSH CONTINUE", " FLUSH WAIT"};
           out += kKinds[static_cast<int>(b.kind)];
+        } else if constexpr (std::is_same_v<T, Barrier>) {
+          out += " BARRIER";
+          if (b.wants(BarrierNeed::external)) {
+            out += " FLUSH V.E.READ";
+            for (const auto& name : b.external)
+              out += " V.E." + name;
+          }
+          if (b.wants(BarrierNeed::probe_latch) && b.probe) {
+            out += " PROBE_LATCH ";
+            out += axis_name(m, *b.probe);
+          }
+          if (b.wants(BarrierNeed::position)) {
+            out += " POSITION frame=" + frame_name(b.frame);
+            for (std::size_t i = 0; i < kMaxAxes; ++i) {
+              if ((b.axes >> i) & 1u) {
+                out += ' ';
+                out += axis_name(m, static_cast<std::uint8_t>(i));
+              }
+            }
+          }
         } else if constexpr (std::is_same_v<T, WaitIndp>) {
           out += " WAIT_INDP";
           if (b.axes == 0) out += " ALL";
@@ -204,11 +242,25 @@ int write_trace(const core::SourceFile& file, const machines::Machine& machine,
                 const TraceOptions& options, std::ostream& out, core::DiagnosticList& diags) {
   Interpreter interp(file, machine, options.interp);
   std::uint64_t count = 0;
-  while (options.max_commands == 0 || count < options.max_commands) {
-    auto c = interp.next();
+  bool truncated = false;
+  for (;;) {
+    auto c = interp.next_decode_only();
     if (!c) break;
+    if (options.max_commands != 0 && count == options.max_commands) {
+      truncated = true;  // there is more: say so instead of ending as if complete
+      break;
+    }
     ++count;
     out << to_trace_line(*c, machine) << '\n';
+  }
+  if (truncated) {
+    out << "# truncated after " << count << " commands (--max-commands)\n";
+    diags.add({core::Severity::note,
+               file.name(),
+               {},
+               "NC4903",
+               "trace truncated after " + std::to_string(count) +
+                   " commands (--max-commands); the program goes on"});
   }
   // The stream's diagnostics end the trace too, so that a trace (and a golden) is a complete
   // record of what the decoder made of the program.
@@ -229,7 +281,7 @@ core::DiagnosticList check_semantics(const core::SourceFile& file, const machine
   std::uint64_t count = 0;
   bool ended = false;
   while (count < max_commands) {
-    auto c = interp.next();
+    auto c = interp.next_decode_only();
     if (!c) {
       ended = true;
       break;
