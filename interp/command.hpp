@@ -197,13 +197,13 @@ struct ProbeArm {
 struct SyncIn {
   std::uint8_t conveyor = 0;  ///< machine index of the conveyor axis
   double latch = 0.0;         ///< conveyor position latched by the probe [mm] (RunState::latch)
-  double conv_vel = 0.0;      ///< expected conveyor velocity [mm/s]
-  std::optional<double> feed_cont;
+  double conv_vel = 0.0;      ///< expected conveyor velocity [mm/s] (> 0)
+  std::optional<double> feed_cont;  ///< FEED_CONT relative velocity [mm/s] (program: mm/min)
   bool feed_cont_auto = false;
 };
 
 struct SyncOut {
-  std::optional<double> feed_cont;
+  std::optional<double> feed_cont;  ///< FEED_CONT [mm/s] (program: mm/min)
   bool feed_cont_auto = false;
 };
 

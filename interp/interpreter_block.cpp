@@ -129,11 +129,26 @@ bool Interpreter::Impl::run_declaration(const ast::Block& b, const ast::Declarat
   }
   ref.index_count = 0;
   v.values.assign(count, 0.0);
+  if (v.is_string() && d.string_length != ast::kNoNode) {
+    auto n = eval(b, d.string_length);
+    if (!n) return false;
+    if (*n < 1.0 || *n > kMaxStringLength || *n != std::trunc(*n)) {
+      return fail(d.loc, "NC4014",
+                  "STRING[" + core::number_text(*n) + "]: the length must be 1.." +
+                      std::to_string(kMaxStringLength));
+    }
+    v.max_length = static_cast<std::uint32_t>(*n);
+  }
   if (d.init != ast::kNoNode) {
     if (v.is_string()) {
       const ast::ExprNode& n = b.exprs[d.init];
       if (n.op != ast::Op::string) return fail(n.loc, "NC4014", "a STRING needs a \"text\" value");
       v.text = unescape(n.text);
+      if (v.text.size() > v.max_length) {
+        return fail(n.loc, "NC4014",
+                    "the initial text of " + std::to_string(v.text.size()) +
+                        " characters is longer than STRING[" + std::to_string(v.max_length) + "]");
+      }
     } else {
       std::size_t k = 0;
       for (ast::NodeIndex n = d.init; n != ast::kNoNode && k < count; n = b.exprs[n].next, ++k) {
@@ -472,6 +487,15 @@ bool Interpreter::Impl::run_program_m(const ast::Block& b, int code) {
     default:
       if (!calls.empty()) {
         warn(b.loc, "NC4305", "M02/M30 inside a subroutine ends the program (PROG-206828043)");
+      }
+      if (modal.synchronised && (code == 2 || code == 30)) {
+        // Decision (docs/interp.md): a warning, not an error. Seed 004 §2.1.1.2 (l.292) lets a
+        // program per workpiece end while the next one takes the synchronisation over
+        // (ProgStartFast); without such a program the tool keeps moving with the belt.
+        warn(b.loc, "NC4516",
+             "M" + std::to_string(code) +
+                 " while synchronised with the conveyor: the coupling stays for a following "
+                 "program (seed 004 §2.1.1.2); #SYNC OUT first to end decoupled");
       }
       emit(line, End{code});
       finished = true;

@@ -143,9 +143,20 @@ bool Interpreter::Impl::hash_sync_in(const ast::Block& b, const ast::HashCommand
   if (cs.active_count() > 0) {
     return fail(at, "22262", "#SYNC IN with an active #CS coordinate system");
   }
+  if (!duplicate_free(b, h, {"CONVEYOR", "CONV_VEL", "VEL_RESOLUTION", "FEED_CONT"})) return false;
   std::optional<std::uint8_t> conveyor;
   if (const ast::Item* c = items.find("CONVEYOR")) {
+    // The word names the axis: its faults are the word's, not the machine's.
     conveyor = axis_index(c->text);
+    if (!conveyor) {
+      return fail(c->loc, "NC4103",
+                  "CONVEYOR=" + std::string(c->text) + ": no such axis on machine " + machine.name);
+    }
+    if (!machine.axes[*conveyor].conveyor.has_value()) {
+      return fail(c->loc, "NC4501",
+                  "CONVEYOR=" + std::string(c->text) +
+                      " is not a conveyor axis (conv_sync.is_master is not set in its list)");
+    }
   } else if (machine.channel.conveyor) {
     if (const auto* a = machine.find_axis_number(machine.channel.conveyor->master_axis_number)) {
       conveyor = axis_index(a->name);
@@ -159,6 +170,10 @@ bool Interpreter::Impl::hash_sync_in(const ast::Block& b, const ast::HashCommand
   if (vel == nullptr) return fail(at, "NC4507", "#SYNC IN needs CONV_VEL");
   auto v = item_value(b, vel);
   if (!v) return false;
+  if (*v <= 0.0) {  // the expected belt velocity; 0 or less synchronises with nothing
+    return fail(vel->loc, "NC4030",
+                "CONV_VEL " + core::number_text(*v) + " must be greater than 0");
+  }
   const ast::Item* res = items.find("VEL_RESOLUTION");
   auto factor = velocity_factor(res != nullptr ? res->text : std::string_view{});
   if (!factor) return fail(res->loc, "NC4507", "unknown VEL_RESOLUTION " + std::string(res->text));
@@ -175,11 +190,7 @@ bool Interpreter::Impl::hash_sync_in(const ast::Block& b, const ast::HashCommand
                       core::number_text(v_max) + " mm/s");
     }
   }
-  if (const ast::Item* fc = items.find("FEED_CONT")) {
-    auto f = item_value(b, fc);
-    if (!f) return false;
-    s.feed_cont = *f;
-  }
+  if (!feed_cont(b, items, s.feed_cont)) return false;
   s.feed_cont_auto = items.find("FEED_CONT_AUTO") != nullptr;
   s.latch = latch;  // answered by the barrier before this block
   emit(line, s);
@@ -193,6 +204,37 @@ bool Interpreter::Impl::hash_sync_in(const ast::Block& b, const ast::HashCommand
   return true;
 }
 
+bool Interpreter::Impl::duplicate_free(const ast::Block& b, const ast::HashCommand& h,
+                                       std::initializer_list<std::string_view> keywords) {
+  for (std::string_view key : keywords) {
+    const ast::Item* first = nullptr;
+    for (std::uint32_t k = 0; k < h.item_count && k < b.items.size(); ++k) {
+      if (!grammar::iequals(b.items[k].keyword, key)) continue;
+      if (first != nullptr) {
+        return fail(b.items[k].loc, "NC4507",
+                    std::string(key) + " is given twice (first at column " +
+                        std::to_string(first->loc.column) + ")");
+      }
+      first = &b.items[k];
+    }
+  }
+  return true;
+}
+
+bool Interpreter::Impl::feed_cont(const ast::Block& b, const Items& items,
+                                  std::optional<double>& out) {
+  // FEED_CONT: relative velocity in mm/min (seed 004 l.529), converted once, here.
+  const ast::Item* fc = items.find("FEED_CONT");
+  if (fc == nullptr) return true;
+  auto f = item_value(b, fc);
+  if (!f) return false;
+  if (*f < 0.0) {
+    return fail(fc->loc, "NC4030", "FEED_CONT " + core::number_text(*f) + " is negative");
+  }
+  out = *f / 60.0;
+  return true;
+}
+
 bool Interpreter::Impl::hash_sync_out(const ast::Block& b, const ast::HashCommand& h) {
   const Items items{b, 0, h.item_count};
   const core::SourceLoc at = h.loc;
@@ -200,12 +242,9 @@ bool Interpreter::Impl::hash_sync_out(const ast::Block& b, const ast::HashComman
   if (cs.active_count() > 0) {
     return fail(at, "22263", "#SYNC OUT with an active #CS coordinate system");
   }
+  if (!duplicate_free(b, h, {"FEED_CONT"})) return false;
   SyncOut s;
-  if (const ast::Item* fc = items.find("FEED_CONT")) {
-    auto f = item_value(b, fc);
-    if (!f) return false;
-    s.feed_cont = *f;
-  }
+  if (!feed_cont(b, items, s.feed_cont)) return false;
   s.feed_cont_auto = items.find("FEED_CONT_AUTO") != nullptr;
   emit(line, s);
   position = sync_rebased(false);

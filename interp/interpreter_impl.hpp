@@ -4,6 +4,7 @@
 // # commands). Not part of the public interface.
 
 #include <deque>
+#include <initializer_list>
 #include <string_view>
 
 #include "core/number_text.hpp"
@@ -120,6 +121,9 @@ struct Interpreter::Impl {
   std::optional<double> item_value(const ast::Block& b, const ast::Item* it);
   bool hash_sync_in(const ast::Block& b, const ast::HashCommand& h);
   bool hash_sync_out(const ast::Block& b, const ast::HashCommand& h);
+  bool duplicate_free(const ast::Block& b, const ast::HashCommand& h,
+                      std::initializer_list<std::string_view> keywords);  // else NC4507
+  bool feed_cont(const ast::Block& b, const Items& items, std::optional<double>& out);
   bool hash_cs(const ast::Block& b, const ast::HashCommand& h);
   bool hash_kinematics(const ast::Block& b, const ast::HashCommand& h);
   bool hash_caxtrack(const ast::Block& b, const ast::HashCommand& h);

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdlib>
+#include <filesystem>
 
 #include "core/number_text.hpp"
 
@@ -53,6 +55,35 @@ void modal(std::string& out, const ModalSnapshot& s) {
 }
 
 }  // namespace
+
+std::pair<std::array<double, 2>, std::array<double, 2>> arc_extent(const Motion& m) {
+  const Arc& a = *m.arc;
+  const double s1 = m.start[a.axis_1] - a.centre_1, s2 = m.start[a.axis_2] - a.centre_2;
+  const double e1 = m.end[a.axis_1] - a.centre_1, e2 = m.end[a.axis_2] - a.centre_2;
+  std::array<double, 2> lo{std::min(s1, e1), std::min(s2, e2)};
+  std::array<double, 2> hi{std::max(s1, e1), std::max(s2, e2)};
+  // Angles counter-clockwise in the (axis_1, axis_2) plane, as the centre was built.
+  constexpr double kTwoPi = 6.283185307179586;
+  const bool ccw = m.kind == MotionKind::arc_ccw;
+  const double a0 = std::atan2(s2, s1);
+  double sweep = std::atan2(e2, e1) - a0;
+  if (ccw && sweep <= 0.0) sweep += kTwoPi;
+  if (!ccw && sweep >= 0.0) sweep -= kTwoPi;
+  if (a.full_circle) sweep = ccw ? kTwoPi : -kTwoPi;
+  const double r = a.radius;
+  for (int q = 0; q < 4; ++q) {  // the axis directions at 0, 90, 180, 270 degrees
+    const double angle = q * kTwoPi / 4.0;
+    double d = std::remainder(angle - a0, kTwoPi);  // in (-pi, pi]
+    if (ccw && d < 0.0) d += kTwoPi;
+    if (!ccw && d > 0.0) d -= kTwoPi;
+    if (std::fabs(d) > std::fabs(sweep)) continue;
+    const double p1 = q == 0 ? r : (q == 2 ? -r : 0.0);
+    const double p2 = q == 1 ? r : (q == 3 ? -r : 0.0);
+    lo = {std::min(lo[0], p1), std::min(lo[1], p2)};
+    hi = {std::max(hi[0], p1), std::max(hi[1], p2)};
+  }
+  return {{lo[0] + a.centre_1, lo[1] + a.centre_2}, {hi[0] + a.centre_1, hi[1] + a.centre_2}};
+}
 
 std::string to_trace_line(const Command& c, const machines::Machine& m) {
   std::string out = std::to_string(c.line) + ":";
@@ -251,6 +282,10 @@ int write_trace(const core::SourceFile& file, const machines::Machine& machine,
       break;
     }
     ++count;
+    // A command from a global subroutine file names that file; main-program lines stay bare.
+    if (c->file != 0) {
+      out << std::filesystem::path(interp.file_name(c->file)).filename().string() << ':';
+    }
     out << to_trace_line(*c, machine) << '\n';
   }
   if (truncated) {
@@ -265,7 +300,9 @@ int write_trace(const core::SourceFile& file, const machines::Machine& machine,
   // The stream's diagnostics end the trace too, so that a trace (and a golden) is a complete
   // record of what the decoder made of the program.
   for (const auto& d : interp.diagnostics().items()) {
-    out << "# " << d.id << " line " << d.loc.line << '\n';
+    out << "# " << d.id << " line " << d.loc.line;
+    if (d.file != file.name()) out << " of " << std::filesystem::path(d.file).filename().string();
+    out << '\n';
     diags.add(d);
   }
   return interp.error() != nullptr ? 1 : 0;
@@ -288,19 +325,36 @@ core::DiagnosticList check_semantics(const core::SourceFile& file, const machine
     }
     ++count;
     if (const auto* m = std::get_if<Motion>(&c->body)) {
-      // soft limits where decidable: no #CS, no conveyor frame, no kinematics
-      if (m->modal.cs_active || m->modal.synchronised || m->modal.kinematics_on) continue;
-      for (std::size_t i = 0; i < machine.axes.size() && i < kMaxAxes; ++i) {
-        if (((m->programmed >> i) & 1u) == 0) continue;
+      // soft limits where decidable: in the MCS without kinematics (axis values)
+      if (!(m->frame == CoordFrame{})) continue;
+      const auto outside = [&](std::size_t i, double v) {
         const auto& lim = machine.axes[i].soft_limits;
-        if (m->end[i] < lim.neg || m->end[i] > lim.pos) {
-          out.add({core::Severity::error,
-                   interp.file_name(c->file),
-                   {c->line, 1},
-                   "NC4601",
-                   "target " + machine.axes[i].name + "=" + core::number_text(m->end[i]) +
-                       " is outside the software limits [" + core::number_text(lim.neg) + ", " +
-                       core::number_text(lim.pos) + "] (P-AXIS-00177/00178)"});
+        return v < lim.neg || v > lim.pos;
+      };
+      const auto report = [&](std::size_t i, const std::string& what, double v) {
+        const auto& lim = machine.axes[i].soft_limits;
+        out.add({core::Severity::error,
+                 interp.file_name(c->file),
+                 {c->line, 1},
+                 "NC4601",
+                 what + " " + machine.axes[i].name + "=" + core::number_text(v) +
+                     " is outside the software limits [" + core::number_text(lim.neg) + ", " +
+                     core::number_text(lim.pos) + "] (P-AXIS-00177/00178)"});
+      };
+      AxisMask reported = 0;
+      for (std::size_t i = 0; i < machine.axes.size() && i < kMaxAxes; ++i) {
+        if (((m->programmed >> i) & 1u) == 0 || !outside(i, m->end[i])) continue;
+        report(i, "target", m->end[i]);
+        reported |= AxisMask{1} << i;
+      }
+      if (m->arc) {
+        // The circle's extent: its extreme points on each plane axis that the arc passes.
+        const auto [lo, hi] = arc_extent(*m);
+        for (int k = 0; k < 2; ++k) {
+          const std::size_t i = k == 0 ? m->arc->axis_1 : m->arc->axis_2;
+          if (i >= machine.axes.size() || ((reported >> i) & 1u) != 0) continue;
+          if (outside(i, lo[k])) report(i, "the arc reaches", lo[k]);
+          if (outside(i, hi[k])) report(i, "the arc reaches", hi[k]);
         }
       }
     }

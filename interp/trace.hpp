@@ -9,9 +9,11 @@
 // program; stops at the first error, or after a command count set by the program's length
 // with a note, so endless loops terminate).
 
+#include <array>
 #include <cstdint>
 #include <ostream>
 #include <string>
+#include <utility>
 
 #include "core/diagnostic.hpp"
 #include "core/source_file.hpp"
@@ -37,6 +39,11 @@ struct TraceOptions {
 /// still returns 0 (nothing is wrong with the program; the marker says the record is partial).
 int write_trace(const core::SourceFile& file, const machines::Machine& machine,
                 const TraceOptions& options, std::ostream& out, core::DiagnosticList& diags);
+
+/// Smallest and largest coordinates an arc motion reaches on its two plane axes
+/// ({axis_1, axis_2} each), in the motion's frame: its end points and every quadrant point
+/// the arc passes.
+std::pair<std::array<double, 2>, std::array<double, 2>> arc_extent(const Motion& motion);
 
 /// Commands a golden trace holds at most (endless programs are cut there).
 inline constexpr std::uint64_t kGoldenCommands = 400;
