@@ -169,6 +169,7 @@ struct Interpreter::Impl {
 
   // --- the seam (interpreter_seam.cpp) ---
   bool barrier_before(const ast::Block& b);  // emits a Barrier when b needs run-time state
+  AxisMask position_needs(const ast::Block& b) const;  // unknown axes the block needs
   void apply(const RunState& state, const Barrier& barrier);
   RunState decode_only(const Barrier& barrier) const;
   bool resumed = false;       // the barrier before the block at pc was answered

@@ -2,6 +2,7 @@
 // (a Barrier before them), how the run time's answer (RunState) enters the interpreter, and
 // the decode-only answer `check` and `trace` use (docs/interp.md "The seam").
 #include <algorithm>
+#include <cctype>
 #include <stdexcept>
 
 #include "grammar/keywords.hpp"
@@ -19,6 +20,23 @@ std::string external_name(std::string_view text) {
   for (; k < text.size() && text[k] != '['; ++k)
     out.push_back(grammar::ascii_upper(text[k]));
   return out;
+}
+
+/// V.E. names in a string macro's text ("P1 = V.E.PART" -> PART): the macro's reads.
+void external_names_in(std::string_view text, std::vector<std::string>& names) {
+  for (std::size_t k = 0; k + 4 <= text.size(); ++k) {
+    if (!grammar::iequals(text.substr(k, 4), "V.E.")) continue;
+    std::size_t e = k + 4;
+    while (e < text.size() && (std::isalnum(static_cast<unsigned char>(text[e])) != 0 ||
+                               text[e] == '_' || text[e] == '.')) {
+      ++e;
+    }
+    std::string name = external_name(text.substr(k, e - k));
+    if (!name.empty() && std::find(names.begin(), names.end(), name) == names.end()) {
+      names.push_back(std::move(name));
+    }
+    k = e;
+  }
 }
 
 /// Blocks whose decoding reads the current position: motions, re-basing commands, INDP moves.
@@ -73,11 +91,12 @@ bool Interpreter::Impl::barrier_before(const ast::Block& b) {
   // pending (this runs for every block; check's throughput depends on it).
   const auto* h = std::get_if<ast::HashCommand>(&b.body);
   const bool sync_in = h != nullptr && h->kind == HashKind::sync_in && !modal.synchronised;
-  const bool position_needed = unknown_axes != 0 && uses_position(b);
-  const bool external = std::any_of(b.exprs.begin(), b.exprs.end(), [](const ast::ExprNode& e) {
-    return e.op == ast::Op::variable && e.var_class == ast::VarClass::v_e;
+  const AxisMask position_needed = unknown_axes != 0 ? position_needs(b) : 0;
+  const bool external = std::any_of(b.exprs.begin(), b.exprs.end(), [&](const ast::ExprNode& e) {
+    return (e.op == ast::Op::variable && e.var_class == ast::VarClass::v_e) ||
+           (e.op == ast::Op::string && vars.macro(e.text) != nullptr);
   });
-  if (!sync_in && !position_needed && !external) return false;
+  if (!sync_in && position_needed == 0 && !external) return false;
   Barrier barrier;
   // V.E. reads, not the targets of plain assignments (a write needs no run-time value).
   std::vector<ast::NodeIndex> written;
@@ -96,6 +115,10 @@ bool Interpreter::Impl::barrier_before(const ast::Block& b) {
       barrier.external.push_back(std::move(name));
     }
   }
+  for (const ast::ExprNode& e : b.exprs) {  // reads hidden in a string macro's text
+    if (e.op != ast::Op::string) continue;
+    if (const std::string* text = vars.macro(e.text)) external_names_in(*text, barrier.external);
+  }
   if (!barrier.external.empty()) barrier.needs |= static_cast<std::uint8_t>(BarrierNeed::external);
   if (sync_in) {
     // #SYNC IN waits for the measured value (seed 004 §3): the conveyor's latched position.
@@ -111,15 +134,34 @@ bool Interpreter::Impl::barrier_before(const ast::Block& b) {
       barrier.probe = conveyor;
     }
   }
-  if (position_needed) {
+  if (position_needed != 0) {
     barrier.needs |= static_cast<std::uint8_t>(BarrierNeed::position);
-    barrier.axes = unknown_axes;
+    barrier.axes = position_needed;
     barrier.frame = frame();
   }
   if (barrier.needs == 0) return false;
   current_file = pc.file;
   emit(b.loc.line, std::move(barrier));
   return true;
+}
+
+AxisMask Interpreter::Impl::position_needs(const ast::Block& b) const {
+  if (!uses_position(b)) return 0;
+  const bool moves = std::any_of(b.words.begin(), b.words.end(), [](const ast::Word& w) {
+    return w.kind == ast::WordKind::axis || w.kind == ast::WordKind::i ||
+           w.kind == ast::WordKind::j || w.kind == ast::WordKind::k || w.kind == ast::WordKind::r ||
+           (w.kind == ast::WordKind::g && w.code == 151);
+  });
+  if (!std::holds_alternative<ast::Words>(b.body) || moves) return unknown_axes;
+  // Only axis-bracket commands: an INDP move needs the position of its own axis only.
+  AxisMask mask = 0;
+  for (const ast::AxisCommand& ac : b.axis_commands) {
+    if (ac.kind != ast::AxisCommandKind::indp_syn && ac.kind != ast::AxisCommandKind::indp_asyn) {
+      continue;
+    }
+    if (auto axis = axis_index(ac.axis)) mask |= AxisMask{1} << *axis;
+  }
+  return mask & unknown_axes;
 }
 
 void Interpreter::Impl::apply(const RunState& state, const Barrier& barrier) {

@@ -255,6 +255,28 @@ TEST_CASE("a V.E. read in $IF gets its barrier on the $IF line; a V.E. write non
   CHECK(s.lines[0] == "3: BARRIER FLUSH V.E.READ V.E.READY");
 }
 
+TEST_CASE("a V.E. read inside a string macro gets its barrier too") {
+  Options options;
+  options.external["GAP"] = 4.0;
+  auto s = stream(
+      "%t\n\"SHIFT\" = \"V.E.GAP * 2\"\nG00 X[\"SHIFT\"]\nM30\n", test::machine(),
+      [](const Barrier&, RunState&) {}, options);
+  REQUIRE(s.error_id.empty());
+  REQUIRE(s.lines.size() >= 2);
+  CHECK(s.lines[0] == "3: BARRIER FLUSH V.E.READ V.E.GAP");
+  CHECK(s.lines[1].starts_with("3: G00 X=8.0000"));
+}
+
+TEST_CASE("an INDP move after INDP_ASYN asks only for its own axis") {
+  auto s = stream(
+      "%t\nX[INDP_ASYN POS20 FEED600] Y[INDP_ASYN POS5 FEED600]\nZ[INDP_SYN POS1 FEED600]\n"
+      "Y[INDP_SYN POS2 FEED600]\nG01 X1 F600\nM30\n");
+  REQUIRE(s.error_id.empty());
+  CHECK(line_at(s, 3, "BARRIER").empty());                               // Z is known
+  CHECK(line_at(s, 4, "BARRIER") == "4: BARRIER POSITION frame=MCS Y");  // Y only
+  CHECK(line_at(s, 5, "BARRIER") == "5: BARRIER POSITION frame=MCS X");  // Y known again
+}
+
 TEST_CASE("next() before resume() after a barrier, and resume() without one, throw") {
   core::SourceFile file("test.nc", "%t\nP1 = V.E.A\nG00 X[P1]\nM30\n");
   Options options;
