@@ -101,6 +101,16 @@ TEST_CASE("check finds an arc whose extent leaves the soft limits although its e
   CHECK(check_semantics(other, test::machine(), {}).items().empty());
 }
 
+TEST_CASE("check finds a spline point beyond the soft limits") {
+  core::SourceFile file("test.nc",
+                        "%t\nG01 X0 Y0 F600\n#SPLINE ON\nX100 Y10\nX900 Y0\nX200 Y5\n"
+                        "#SPLINE OFF\nM30\n");
+  const auto diags = check_semantics(file, test::machine(), {});
+  REQUIRE(diags.items().size() == 1);
+  CHECK(diags.items()[0].id == "NC4601");
+  CHECK(diags.items()[0].loc.line == 5);
+}
+
 TEST_CASE("the extent of a quarter arc covers only the quadrant points it passes") {
   Motion m;
   m.kind = MotionKind::arc_ccw;

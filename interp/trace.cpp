@@ -357,6 +357,22 @@ core::DiagnosticList check_semantics(const core::SourceFile& file, const machine
           if (outside(i, hi[k])) report(i, "the arc reaches", hi[k]);
         }
       }
+    } else if (const auto* p = std::get_if<SplinePoint>(&c->body)) {
+      // A spline vertex is a programmed point like a motion's target (the curve between
+      // vertices is the planner's: an Akima or B-spline may overshoot them).
+      if (!(p->frame == CoordFrame{})) continue;
+      for (std::size_t i = 0; i < machine.axes.size() && i < kMaxAxes; ++i) {
+        const auto& lim = machine.axes[i].soft_limits;
+        const double v = p->point[i];
+        if (((p->programmed >> i) & 1u) == 0 || (v >= lim.neg && v <= lim.pos)) continue;
+        out.add({core::Severity::error,
+                 interp.file_name(c->file),
+                 {c->line, 1},
+                 "NC4601",
+                 "spline point " + machine.axes[i].name + "=" + core::number_text(v) +
+                     " is outside the software limits [" + core::number_text(lim.neg) + ", " +
+                     core::number_text(lim.pos) + "] (P-AXIS-00177/00178)"});
+      }
     }
   }
   for (const auto& d : interp.diagnostics().items()) {
