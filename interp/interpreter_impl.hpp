@@ -169,7 +169,15 @@ struct Interpreter::Impl {
 
   // --- the seam (interpreter_seam.cpp) ---
   bool barrier_before(const ast::Block& b);  // emits a Barrier when b needs run-time state
+  bool emit_barrier(const ast::Block& b, bool sync_in, AxisMask position_needed);  // slow path
   AxisMask position_needs(const ast::Block& b) const;  // unknown axes the block needs
+  /// The block has a V.E. node or a string (a possible macro): remembered per block text.
+  bool may_read_external(const ast::Block& b);
+  struct ExternalScan {
+    std::uint64_t key = 0;  // file and Block::offset of the block scanned, + 1; 0: empty
+    bool may_read = false;
+  };
+  std::array<ExternalScan, 256> external_scans{};
   void apply(const RunState& state, const Barrier& barrier);
   RunState decode_only(const Barrier& barrier) const;
   bool resumed = false;       // the barrier before the block at pc was answered

@@ -8,6 +8,7 @@
 namespace ncsim::interp {
 
 bool Interpreter::Impl::run_block_motion(const ast::Block& b, const BlockWords& bw) {
+  if (bw.axis_words.empty() && !bw.motion_word && !bw.g60) return true;  // no motion here
   AxisValues target = position;
   AxisMask programmed = 0;
   if (bw.motion_word) motion = *bw.motion_word;

@@ -92,11 +92,16 @@ bool Interpreter::Impl::barrier_before(const ast::Block& b) {
   const auto* h = std::get_if<ast::HashCommand>(&b.body);
   const bool sync_in = h != nullptr && h->kind == HashKind::sync_in && !modal.synchronised;
   const AxisMask position_needed = unknown_axes != 0 ? position_needs(b) : 0;
-  const bool external = std::any_of(b.exprs.begin(), b.exprs.end(), [&](const ast::ExprNode& e) {
-    return (e.op == ast::Op::variable && e.var_class == ast::VarClass::v_e) ||
-           (e.op == ast::Op::string && vars.macro(e.text) != nullptr);
-  });
+  const bool external = may_read_external(b) &&
+                        std::any_of(b.exprs.begin(), b.exprs.end(), [&](const ast::ExprNode& e) {
+                          return (e.op == ast::Op::variable && e.var_class == ast::VarClass::v_e) ||
+                                 (e.op == ast::Op::string && vars.macro(e.text) != nullptr);
+                        });
   if (!sync_in && position_needed == 0 && !external) return false;
+  return emit_barrier(b, sync_in, position_needed);
+}
+
+bool Interpreter::Impl::emit_barrier(const ast::Block& b, bool sync_in, AxisMask position_needed) {
   Barrier barrier;
   // V.E. reads, not the targets of plain assignments (a write needs no run-time value).
   std::vector<ast::NodeIndex> written;
@@ -121,6 +126,7 @@ bool Interpreter::Impl::barrier_before(const ast::Block& b) {
   }
   if (!barrier.external.empty()) barrier.needs |= static_cast<std::uint8_t>(BarrierNeed::external);
   if (sync_in) {
+    const auto* h = std::get_if<ast::HashCommand>(&b.body);
     // #SYNC IN waits for the measured value (seed 004 §3): the conveyor's latched position.
     std::optional<std::uint8_t> conveyor;
     for (std::uint32_t k = 0; k < h->item_count && k < b.items.size(); ++k) {
@@ -143,6 +149,20 @@ bool Interpreter::Impl::barrier_before(const ast::Block& b) {
   current_file = pc.file;
   emit(b.loc.line, std::move(barrier));
   return true;
+}
+
+bool Interpreter::Impl::may_read_external(const ast::Block& b) {
+  // A block is identified by its file and byte offset: a loop body decodes the same blocks
+  // again and again, so their scan is remembered (a direct-mapped table, bounded).
+  const std::uint64_t key = ((std::uint64_t{pc.file} << 48) ^ b.offset) + 1;  // 0: empty
+  ExternalScan& memo = external_scans[(key * 0x9E3779B97F4A7C15ull) >> 56];
+  if (memo.key == key) return memo.may_read;
+  memo.key = key;
+  memo.may_read = std::any_of(b.exprs.begin(), b.exprs.end(), [](const ast::ExprNode& e) {
+    return (e.op == ast::Op::variable && e.var_class == ast::VarClass::v_e) ||
+           e.op == ast::Op::string;
+  });
+  return memo.may_read;
 }
 
 AxisMask Interpreter::Impl::position_needs(const ast::Block& b) const {
