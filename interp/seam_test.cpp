@@ -267,6 +267,26 @@ TEST_CASE("a V.E. read inside a string macro gets its barrier too") {
   CHECK(s.lines[1].starts_with("3: G00 X=8.0000"));
 }
 
+TEST_CASE("a V.E. read in a loop body stops the stream on every pass") {
+  core::SourceFile file("test.nc",
+                        "%t\n$FOR P1 = 1, 3, 1\nP2 = V.E.PART\nG00 X[P2]\n$ENDFOR\nM30\n");
+  Interpreter interp(file, test::machine());
+  std::vector<double> xs;
+  double part = 10.0;
+  while (auto c = interp.next()) {
+    if (const auto* b = std::get_if<Barrier>(&c->body)) {
+      RunState st = interp.decode_only_state(*b);
+      st.external["PART"] = part;
+      part += 1.0;
+      interp.resume(st);
+    } else if (const auto* m = std::get_if<Motion>(&c->body)) {
+      xs.push_back(m->end[0]);
+    }
+  }
+  REQUIRE(interp.error() == nullptr);
+  CHECK(xs == std::vector<double>{10.0, 11.0, 12.0});
+}
+
 TEST_CASE("an INDP move after INDP_ASYN asks only for its own axis") {
   auto s = stream(
       "%t\nX[INDP_ASYN POS20 FEED600] Y[INDP_ASYN POS5 FEED600]\nZ[INDP_SYN POS1 FEED600]\n"
