@@ -36,7 +36,7 @@ void BM_InterpretProgram(benchmark::State& state) {
   for (auto _ : state) {
     interp::Options options;
     interp::Interpreter interp(file, machine, options);
-    while (auto c = interp.next())
+    while (auto c = interp.next_decode_only())
       ++commands;
     if (interp.error() != nullptr) state.SkipWithError(interp.error()->message.c_str());
     state.counters["indexed_blocks"] = static_cast<double>(interp.footprint().indexed_blocks);
@@ -59,7 +59,7 @@ void BM_ForLoop(benchmark::State& state) {
     interp::Options options;
     options.max_blocks_without_motion = 0;
     interp::Interpreter interp(file, machine, options);
-    while (auto c = interp.next())
+    while (auto c = interp.next_decode_only())
       benchmark::DoNotOptimize(c);
     if (interp.error() != nullptr) state.SkipWithError(interp.error()->message.c_str());
     state.counters["control_frames"] = static_cast<double>(interp.footprint().control_frames);

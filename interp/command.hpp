@@ -3,19 +3,26 @@
 //
 // Purpose: the seam between decode time (interp/) and run time (planner/, ipo/). Every command
 // is an immutable value that carries its source line and the modal state it needs, so the
-// planner can queue it without looking back at the interpreter.
+// planner can queue it without looking back at the interpreter. The seam is two-way: a
+// `Barrier` command says the interpreter needs run-time state before the next block; the run
+// time answers with `Interpreter::resume(RunState)` (interp/interpreter.hpp, docs/interp.md
+// "The seam").
 // Units inside: mm, s, degrees; feeds in mm/s (converted from the program's mm/min at this
-// boundary, docs/interp.md "Units"). Positions are absolute coordinates in the programming
-// frame (PCS, or PCS1 while synchronised), one slot per machine axis in machine order
-// (`Machine::axes`); `AxisMask` bit i says axis i was programmed in the block.
+// boundary, docs/interp.md "Units"). Positions are absolute coordinates in the frame the
+// command names (`CoordFrame`): MCS, PCS through the active #CS chain, or PCS1 while
+// synchronised, each as axis values or, under #TRAFO ON, as Cartesian TCP coordinates. One slot
+// per machine axis in machine order (`Machine::axes`); `AxisMask` bit i says axis i was
+// programmed in the block.
 // Invariants: `line` >= 1 for commands from a block (0 only for the final End of a file
-// without M02/M30); arcs carry a centre at equal distance (within the P-CHAN-00059/00060
-// limits, then corrected) from start and end.
+// without M02/M30); a motion's start, end and arc centre are in the one frame it names; arcs
+// carry a centre at equal distance (within the P-CHAN-00059/00060 limits, then corrected) from
+// start and end.
 
 #include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -27,6 +34,27 @@ namespace ncsim::interp {
 inline constexpr std::size_t kMaxAxes = machines::kMaxChannelAxes;
 using AxisValues = std::array<double, kMaxAxes>;  ///< [mm | deg] per machine axis
 using AxisMask = std::uint32_t;                   ///< bit i: machine axis i
+
+/// The coordinate system a command's coordinates are in (machines/frame.hpp has the chain
+/// PCS -> PCS1 -> PCS0 -> MCS -> kinematics -> ACS).
+enum class Space : std::uint8_t {
+  mcs,  ///< machine coordinates (no #CS active, not synchronised)
+  pcs,  ///< programming coordinates inside the active #CS chain (cs_depth >= 1)
+  pcs1  ///< co-moving with the conveyor, between #SYNC IN and #SYNC OUT (seed 004 §2.1)
+};
+
+/// The frame a motion's coordinates are in.
+struct CoordFrame {
+  Space space = Space::mcs;
+  std::uint8_t cs_depth = 0;  ///< active #CS systems (0..5)
+  /// true: X/Y/Z are Cartesian TCP coordinates (#TRAFO ON); false: axis values (ACS; on a
+  /// machine without kinematic identical to the Cartesian MCS).
+  bool kinematics = false;
+  friend bool operator==(const CoordFrame&, const CoordFrame&) = default;
+};
+
+/// "MCS", "PCS/CS2", "PCS1", "PCS1/CS1", each with "+KIN" under #TRAFO ON.
+std::string frame_name(const CoordFrame& frame);
 
 enum class MotionKind : std::uint8_t { rapid, linear, arc_cw, arc_ccw };
 enum class Plane : std::uint8_t { xy, zx, yz };                   ///< G17 / G18 / G19
@@ -62,14 +90,14 @@ struct ModalSnapshot {
   SlopeType slope = SlopeType::step;
   std::optional<double> transvelmin;  ///< #TRANSVELMIN ON value [mm/s]
   bool synchronised = false;          ///< between #SYNC IN and #SYNC OUT (PCS1)
-  bool cs_active = false;             ///< a #CS system is active
-  bool kinematics_on = false;         ///< #TRAFO ON
+  bool cs_active = false;             ///< a #CS system is active (also in Motion::frame)
+  bool kinematics_on = false;         ///< #TRAFO ON (also in Motion::frame)
   bool caxtrack = false;              ///< #CAXTRACK ON
 };
 
 struct Arc {
-  double centre_1 = 0.0;    ///< first plane axis coordinate of the centre [mm]
-  double centre_2 = 0.0;    ///< second plane axis coordinate [mm]
+  double centre_1 = 0.0;    ///< first plane axis coordinate of the centre [mm], Motion::frame
+  double centre_2 = 0.0;    ///< second plane axis coordinate [mm], Motion::frame
   std::uint8_t axis_1 = 0;  ///< machine index of the first plane axis
   std::uint8_t axis_2 = 0;  ///< machine index of the second plane axis
   double radius = 0.0;      ///< [mm]
@@ -78,8 +106,9 @@ struct Arc {
 
 struct Motion {
   MotionKind kind = MotionKind::linear;
-  AxisValues start{};  ///< [mm | deg] absolute, programming frame
-  AxisValues end{};    ///< [mm | deg]
+  CoordFrame frame;    ///< the frame of start, end and the arc centre
+  AxisValues start{};  ///< [mm | deg] absolute, in `frame`
+  AxisValues end{};    ///< [mm | deg] absolute, in `frame`
   AxisMask programmed = 0;
   double feed = 0.0;                 ///< [mm/s] (G94); 0 for rapid
   std::optional<double> block_time;  ///< G93: machining time of the block [s]
@@ -89,12 +118,28 @@ struct Motion {
 };
 
 enum class SplineType : std::uint8_t { akima, bspline };
-/// The vertices of one #SPLINE ON ... OFF section (isg-language.md §5.4).
-struct Spline {
+/// A #SPLINE ON ... OFF section (isg-language.md §5.4) streams as SplineBegin, one SplinePoint
+/// per vertex block (with its own line and feed), SplineEnd: memory does not grow with the
+/// section's length.
+/// #SPLINE ON / G151: the section starts at the current position, its first vertex.
+struct SplineBegin {
   SplineType type = SplineType::akima;
-  std::vector<AxisValues> points;  ///< start point first [mm | deg]
-  double feed = 0.0;               ///< [mm/s]
+  CoordFrame frame;    ///< the frame of `start` and of every point of the section
+  AxisValues start{};  ///< first vertex [mm | deg]
   ModalSnapshot modal;
+};
+/// One vertex (Akima) or control point (B-spline) after the start, from a G00/G01 block.
+struct SplinePoint {
+  std::uint32_t index = 1;  ///< 1 for the first point after the start
+  CoordFrame frame;         ///< as SplineBegin::frame
+  AxisValues point{};       ///< [mm | deg]
+  AxisMask programmed = 0;
+  double feed = 0.0;  ///< [mm/s] in force at this point's block
+};
+/// #SPLINE OFF / G150.
+struct SplineEnd {
+  SplineType type = SplineType::akima;
+  std::uint32_t points = 0;  ///< vertices of the section, start included
 };
 
 struct Dwell {
@@ -123,7 +168,11 @@ struct AxisCommand {
   std::optional<double> feed;  ///< FEED [mm/s]
   std::optional<double> time;  ///< TIME [s]
   bool interruptible = false;  ///< INTERRUPTIBLE (TF5264 examples)
+  CoordFrame frame;            ///< the frame of `target`
 };
+
+/// MC_MoveVelocity Direction (PLCopen MC_Direction): 1 positive, 3 negative, 4 current.
+enum class VelocityDirection : std::uint8_t { positive, negative, current };
 
 /// S1[MC_MoveVelocity ...] (PROG-208363915).
 struct MoveVelocity {
@@ -132,30 +181,29 @@ struct MoveVelocity {
   double acceleration = 0.0;  ///< [mm/s^2]; 0: axis list value
   double deceleration = 0.0;  ///< [mm/s^2]; 0: axis list value
   double jerk = 0.0;          ///< [mm/s^3]; 0: axis list value
-  int direction = 1;          ///< 1 positive, 3 negative, 4 current
+  VelocityDirection direction = VelocityDirection::positive;
 };
+
+/// MC_TouchProbe Mode: 1 falling, 2 rising edge (PROG-306968203).
+enum class ProbeEdge : std::uint8_t { falling, rising };
 
 /// S1[MC_TouchProbe ...] (PROG-306968203): arms the latch.
 struct ProbeArm {
   std::uint8_t axis = 0;
-  int channel = 1;
-  std::optional<int> mode;  ///< 1 falling, 2 rising; nullopt: P-AXIS-00518
-};
-
-/// The channel waits for the latched conveyor position (before #SYNC IN, seed 004 §3).
-struct WaitProbe {
-  std::uint8_t axis = 0;
+  int channel = 1;                ///< Channel (the probe input)
+  std::optional<ProbeEdge> edge;  ///< Mode; nullopt: the axis list's P-AXIS-00518
 };
 
 struct SyncIn {
   std::uint8_t conveyor = 0;  ///< machine index of the conveyor axis
-  double conv_vel = 0.0;      ///< expected conveyor velocity [mm/s]
-  std::optional<double> feed_cont;
+  double latch = 0.0;         ///< conveyor position latched by the probe [mm] (RunState::latch)
+  double conv_vel = 0.0;      ///< expected conveyor velocity [mm/s] (> 0)
+  std::optional<double> feed_cont;  ///< FEED_CONT relative velocity [mm/s] (program: mm/min)
   bool feed_cont_auto = false;
 };
 
 struct SyncOut {
-  std::optional<double> feed_cont;
+  std::optional<double> feed_cont;  ///< FEED_CONT [mm/s] (program: mm/min)
   bool feed_cont_auto = false;
 };
 
@@ -180,19 +228,33 @@ struct CaxTrack {
   double angpos = 0.0;    ///< OFF position [deg]
 };
 
+/// One parameter a #MACHINE DATA sets, resolved through the machine's parameter table
+/// (machines/param_table.hpp) at decode time.
+struct MachineSetting {
+  std::string_view id;                 ///< parameter id ("P-AXIS-00178"), from the static table
+  std::string_view key;                ///< list key ("kenngr.swe_pos"), indices as "[]"
+  std::optional<std::uint16_t> index;  ///< `.idx` of an indexed parameter
+  double value = 0.0;                  ///< in internal units (ParamSpec::to_internal applied)
+  std::string_view unit;               ///< the internal unit ("mm | deg", "s", ...)
+};
+
+/// #MACHINE DATA (isg-language.md §5.10, PROG-207492747).
 struct MachineData {
-  bool syn = false;
-  std::optional<std::uint8_t> axis;
-  std::string parameter;  ///< "kenngr.swe_pos 15000000" or a parameter id with its value
+  bool syn = false;                  ///< SYN: at interpolator level; else at decode
+  std::optional<std::uint8_t> axis;  ///< AX= / AXNR=; set for axis parameters
+  std::vector<MachineSetting> settings;
   bool wait = false;
 };
 
+/// #MSG mode (PROG-507845131).
+enum class MessageMode : std::uint8_t { immediate, syn, syn_ack, ack };
+
 struct Message {
   std::string text;
-  std::string mode;  ///< "", SYN, SYN_ACK, ACK
+  MessageMode mode = MessageMode::immediate;
 };
 
-enum class FlushKind : std::uint8_t { stop, continue_, wait, ve_read };
+enum class FlushKind : std::uint8_t { stop, continue_, wait };
 struct Flush {
   FlushKind kind = FlushKind::stop;
 };
@@ -212,14 +274,33 @@ struct SetPosition {
   AxisMask axes = 0;
 };
 
+/// What a Barrier asks the run time for (bits of Barrier::needs).
+enum class BarrierNeed : std::uint8_t {
+  external = 1,     ///< V.E. values the outside world may have written (FLUSH V.E.READ)
+  probe_latch = 2,  ///< the conveyor position latched by MC_TouchProbe (before #SYNC IN)
+  position = 4      ///< actual positions of Barrier::axes in Barrier::frame
+};
+
+/// The interpreter stops before the block at `Command::line` until the run time answers with
+/// Interpreter::resume(RunState). The run time must first execute every command before the
+/// barrier (a barrier is a flush): the values it answers are those at that point.
+struct Barrier {
+  std::uint8_t needs = 0;             ///< BarrierNeed bits
+  std::vector<std::string> external;  ///< V.E. names the block reads ("PART" for V.E.PART)
+  std::optional<std::uint8_t> probe;  ///< the conveyor axis whose latch is wanted
+  CoordFrame frame;                   ///< the frame the positions are wanted in
+  AxisMask axes = 0;                  ///< axes whose actual position is wanted
+  bool wants(BarrierNeed n) const { return (needs & static_cast<std::uint8_t>(n)) != 0; }
+};
+
 struct End {
   int code = 30;  ///< 2 or 30; 0: end of file without M02/M30
 };
 
 using CommandBody =
-    std::variant<Motion, Spline, Dwell, Tech, ProgramStop, AxisCommand, MoveVelocity, ProbeArm,
-                 WaitProbe, SyncIn, SyncOut, SelectCs, Kinematics, CaxTrack, MachineData, Message,
-                 Flush, WaitIndp, Homing, SetPosition, End>;
+    std::variant<Motion, SplineBegin, SplinePoint, SplineEnd, Dwell, Tech, ProgramStop, AxisCommand,
+                 MoveVelocity, ProbeArm, SyncIn, SyncOut, SelectCs, Kinematics, CaxTrack,
+                 MachineData, Message, Flush, WaitIndp, Homing, SetPosition, Barrier, End>;
 
 struct Command {
   std::uint32_t line = 0;  ///< 1-based source line of the block

@@ -22,7 +22,7 @@ Commands commands(const std::string& text, const std::string& machine_name = "po
   Interpreter interp(file, test::machine(machine_name));
   Commands out;
   while (out.items.size() < 1000) {
-    auto c = interp.next();
+    auto c = interp.next_decode_only();
     if (!c) break;
     out.items.push_back(std::move(*c));
   }
@@ -46,23 +46,25 @@ bool starts_with(const std::string& s, const std::string& prefix) {
 
 // --- splines: G151 / G150 are #SPLINE ON / OFF (isg-language.md §2.4, §5.4) ---
 
-TEST_CASE("G151 ... G150 collects the points into one spline like #SPLINE ON/OFF") {
+TEST_CASE("G151 ... G150 stream the points of one spline like #SPLINE ON/OFF") {
   auto r = run("%t\nG01 F600\nG151\nX1\nX2 Y1\nX3\nG150\nM30\n");
   REQUIRE(r.error_id.empty());
-  REQUIRE(r.lines.size() == 2);
-  CHECK(r.lines[0] ==
-        "7: SPLINE AKIMA points=4 F=10.0000 [X=0.0000 Y=0.0000 Z=0.0000] "
-        "[X=1.0000 Y=0.0000 Z=0.0000] [X=2.0000 Y=1.0000 Z=0.0000] [X=3.0000 Y=1.0000 Z=0.0000]");
+  REQUIRE(r.lines.size() == 6);
+  CHECK(r.lines[0] == "3: SPLINE_BEGIN AKIMA frame=MCS start X=0.0000 Y=0.0000 Z=0.0000");
+  CHECK(r.lines[1] == "4: SPLINE_POINT 1 X=1.0000 Y=0.0000 Z=0.0000 F=10.0000 frame=MCS");
+  CHECK(r.lines[2] == "5: SPLINE_POINT 2 X=2.0000 Y=1.0000 Z=0.0000 F=10.0000 frame=MCS");
+  CHECK(r.lines[3] == "6: SPLINE_POINT 3 X=3.0000 Y=1.0000 Z=0.0000 F=10.0000 frame=MCS");
+  CHECK(r.lines[4] == "7: SPLINE_END AKIMA points=4");
   auto hash = run("%t\nG01 F600\n#SPLINE ON\nX1\nX2 Y1\nX3\n#SPLINE OFF\nM30\n");  // same semantics
-  CHECK(hash.lines.at(0) == r.lines[0]);
+  CHECK(hash.lines == r.lines);
 }
 
 TEST_CASE("a point programmed in the G150 block is not part of the spline") {
   auto r = run("%t\nG01 F600\nG151\nX1\nX2\nG150 X5 Y5\nM30\n");
   REQUIRE(r.error_id.empty());
-  REQUIRE(r.lines.size() == 3);
-  CHECK(starts_with(r.lines[0], "6: SPLINE AKIMA points=3 "));
-  CHECK(r.lines[1] == "6: G01 X=5.0000 Y=5.0000 Z=0.0000 F=10.0000");
+  REQUIRE(r.lines.size() == 6);
+  CHECK(r.lines[3] == "6: SPLINE_END AKIMA points=3");
+  CHECK(r.lines[4] == "6: G01 X=5.0000 Y=5.0000 Z=0.0000 F=10.0000");
 }
 
 TEST_CASE("G150 enforces the minimum point counts: Akima 3, B-spline 4 [NC4401]") {
@@ -72,7 +74,7 @@ TEST_CASE("G150 enforces the minimum point counts: Akima 3, B-spline 4 [NC4401]"
   auto bspline = run("%t\nG01 F600\n#SPLINE TYPE BSPLINE\nG151\nX1\nX2\nG150\nM30\n");
   CHECK(bspline.error_id == "NC4401");
   auto ok = run("%t\nG01 F600\n#SPLINE TYPE BSPLINE\nG151\nX1\nX2\nX3\nG150\nM30\n");
-  CHECK(starts_with(ok.lines.at(0), "8: SPLINE BSPLINE points=4 "));
+  CHECK(ok.lines.at(4) == "8: SPLINE_END BSPLINE points=4");
 }
 
 TEST_CASE("G150 without G151 is NC4403, and so is #SPLINE OFF without ON") {
@@ -95,15 +97,15 @@ TEST_CASE("L calls a subroutine file next to the program; data passes through P 
   const machines::Machine& m = test::machine();
   Interpreter interp(file, m);
   std::vector<Command> cs;
-  while (auto c = interp.next())
+  while (auto c = interp.next_decode_only())
     cs.push_back(*c);
   REQUIRE(interp.error() == nullptr);
   REQUIRE(cs.size() == 3);
-  CHECK(to_trace_line(cs[0], m) == "2: G00 X=4.0000 Y=0.0000 Z=0.0000");
+  CHECK(to_trace_line(cs[0], m).starts_with("2: G00 X=4.0000 Y=0.0000 Z=0.0000 frame=MCS"));
   CHECK(cs[0].file != 0);
   CHECK(interp.file_name(cs[0].file).find("sub_move.nc") != std::string::npos);
   CHECK(cs[1].file == 0);
-  CHECK(to_trace_line(cs[1], m) == "5: G00 X=4.0000 Y=8.0000 Z=4.0000");
+  CHECK(to_trace_line(cs[1], m).starts_with("5: G00 X=4.0000 Y=8.0000 Z=4.0000 frame=MCS"));
 }
 
 TEST_CASE("L naming a file that does not exist is NC4301 at the call") {
@@ -328,7 +330,8 @@ TEST_CASE("#MACHINE DATA with AXPARAM becomes a command at its point in the stre
       run("%t\nG00 X1\n#MACHINE DATA SYN [AX=X AXPARAM=\"kenngr.swe_pos 15000000\" WAIT]\n"
           "G00 X2\nM30\n");
   REQUIRE(r.error_id.empty());
-  CHECK(r.lines.at(1) == "3: MACHINE_DATA SYN AX=X \"kenngr.swe_pos 15000000\" WAIT");
+  // P-AXIS-00178 is in 0.1 um: 15000000 is 1500 mm, converted once, here.
+  CHECK(r.lines.at(1) == "3: MACHINE_DATA SYN AX=X P-AXIS-00178 kenngr.swe_pos=1500.0000 WAIT");
   CHECK(starts_with(r.lines.at(2), "4: G00 X=2.0000"));
 }
 
@@ -386,13 +389,26 @@ TEST_CASE("#BCS is refused as not supported [NC4104]") {
   CHECK(run("%t\n#BCS ON [1,0,0,0,0,0]\nM30\n").error_id == "NC4104");
 }
 
-TEST_CASE("#MACHINE DATA with a parameter id and AXNR passes the id and its value on") {
-  // The manual writes the id as P-AXIS-00008 (PROG-207492747); the grammar does not lex the
-  // dashes yet (NC1001), so this test uses an id the open keyword table accepts today.
-  auto r = run("%t\n#MACHINE DATA [AXNR=1 P-AXIS-00008=10000 WAIT]\nM30\n");
+TEST_CASE("#MACHINE DATA with a parameter id and AXNR resolves the id through the table") {
+  // The manual writes the id as P-AXIS-00178 (PROG-207492747); the value is in list units.
+  auto r = run("%t\n#MACHINE DATA [AXNR=1 P-AXIS-00178=10000 WAIT]\nM30\n");
   REQUIRE(r.error_id.empty());
-  CHECK(r.lines.at(0) == "2: MACHINE_DATA AX=X \"P-AXIS-00008 10000\" WAIT");
-  CHECK(run("%t\n#MACHINE DATA [AXNR=99 P-AXIS-00008=1]\nM30\n").error_id == "NC4103");
+  CHECK(r.lines.at(0) == "2: MACHINE_DATA AX=X P-AXIS-00178 kenngr.swe_pos=1.0000 WAIT");
+  CHECK(run("%t\n#MACHINE DATA [AXNR=99 P-AXIS-00178=1]\nM30\n").error_id == "NC4103");
+}
+
+TEST_CASE("#MACHINE DATA errors name the parameter id") {
+  auto unknown = run("%t\n#MACHINE DATA [AX=X P-AXIS-99999=1]\nM30\n");
+  CHECK(unknown.error_id == "NC4513");
+  CHECK(unknown.error_message.find("P-AXIS-99999") != std::string::npos);
+  auto range = run("%t\n#MACHINE DATA [AX=X P-AXIS-00178=1.5]\nM30\n");
+  CHECK(range.error_id == "NC4514");
+  CHECK(range.error_message.find("P-AXIS-00178") != std::string::npos);
+  auto no_axis = run("%t\n#MACHINE DATA [P-AXIS-00178=1]\nM30\n");
+  CHECK(no_axis.error_id == "NC4515");
+  CHECK(no_axis.error_message.find("P-AXIS-00178") != std::string::npos);
+  auto bad_key = run("%t\n#MACHINE DATA [AX=X AXPARAM=\"kenngr.nothing 5\"]\nM30\n");
+  CHECK(bad_key.error_id == "NC4513");
 }
 
 TEST_CASE("PP and @P parameters are NC4004; an undefined macro is NC4005") {

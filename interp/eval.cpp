@@ -83,7 +83,6 @@ bool Evaluator::resolve(const ast::Block& block, ast::NodeIndex n, VarRef& out) 
     if (!v) return false;
     out.index[out.index_count++] = std::trunc(*v + (*v >= 0 ? 1e-9 : -1e-9));
   }
-  if (out.cls == ast::VarClass::v_e) external_read_ = true;
   return true;
 }
 

@@ -46,12 +46,6 @@ class Evaluator {
   bool assign(const grammar::ast::Block& block, grammar::ast::NodeIndex n, double value);
 
   const EvalError& error() const { return error_; }
-  /// True when a V.E. variable was read since the last call (and resets the flag).
-  bool take_external_read() {
-    const bool r = external_read_;
-    external_read_ = false;
-    return r;
-  }
 
  private:
   bool fail(core::SourceLoc loc, std::string id, std::string message);
@@ -70,7 +64,6 @@ class Evaluator {
   Variables& vars_;
   EvalError error_;
   VarRef scratch_;
-  bool external_read_ = false;
   int depth_ = 0;
 };
 

@@ -114,7 +114,7 @@ TEST_CASE("V.E. values come from the caller and a read flushes the channel") {
   o.external["WIDTH"] = 12.5;
   auto r = test::run("%t\nG00 X[V.E.WIDTH]\nM30\n", "portal_3x", o);
   REQUIRE(r.lines.size() >= 2);
-  CHECK(r.lines[0] == "2: FLUSH V.E.READ");
+  CHECK(r.lines[0] == "2: BARRIER FLUSH V.E.READ V.E.WIDTH");
   CHECK(r.lines[1] == "2: G00 X=12.5000 Y=0.0000 Z=0.0000");
 }
 

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <stdexcept>
 
 #include "grammar/keywords.hpp"
 #include "interp/interpreter_impl.hpp"
@@ -581,6 +582,10 @@ bool Interpreter::Impl::step() {
       (options.skip_levels & (1u << (*block->skip - 1))) != 0) {
     return true;
   }
+  if (barrier_before(*block)) {  // the block runs after resume()
+    --pc.ordinal;
+    return true;
+  }
   if (block->number && block->number->expr != ast::kNoNode) {
     if (!eval(*block, block->number->expr)) return false;
   }
@@ -618,12 +623,18 @@ Interpreter::~Interpreter() = default;
 
 std::optional<Command> Interpreter::next() {
   Impl& s = *impl_;
+  if (open_barrier_) {
+    throw std::logic_error("Interpreter::next(): the barrier at line " +
+                           std::to_string(open_barrier_->line) +
+                           " is not answered; call resume() first");
+  }
   while (s.pending.empty()) {
     if (s.finished || !s.step()) break;
   }
   if (!s.pending.empty()) {
     Command c = std::move(s.pending.front());
     s.pending.pop_front();
+    if (std::holds_alternative<Barrier>(c.body)) open_barrier_ = c;
     return c;
   }
   if (s.error && !error_) {

@@ -6,6 +6,11 @@
 // Inputs: the program file, the machine (axis names, conveyor, kinematics), Options (V.E.
 // values, persistent V.S. store, limits). Outputs: `next()` gives one Command at a time; after
 // End or after an error the stream ends (`error()` then names the problem with its position).
+// The seam is two-way: before a block that needs run-time state (a V.E. read, the probe latch
+// before #SYNC IN, the actual position after #SYNC IN/OUT, G74, INDP_ASYN or an INTERRUPTIBLE
+// INDP move) `next()` returns a `Barrier`; the run time answers with `resume(RunState)`, and
+// only then may `next()` be called again (API misuse otherwise: std::logic_error). `check` and
+// `trace` answer from `decode_only_state()` (docs/interp.md "The seam").
 // Memory: the file text, a 12-byte index entry per block seen (BlockSource), a bounded block
 // cache, one frame per open loop / $SWITCH / subroutine level, and the variables the program
 // creates. Nothing grows with the number of loop passes: an endless `$WHILE [TRUE]` runs in
@@ -48,6 +53,14 @@ struct Options {
   bool confine_subroutine_files = false;
 };
 
+/// The run time's answer to a Barrier. Only what the barrier asks for is read.
+struct RunState {
+  std::map<std::string, double> external;  ///< V.E. values by name ("PART" for V.E.PART)
+  double latch = 0.0;                      ///< latched conveyor position [mm] (probe_latch)
+  CoordFrame frame;                        ///< the frame of `position`; must equal Barrier::frame
+  AxisValues position{};                   ///< actual positions [mm | deg]; Barrier::axes are read
+};
+
 class Interpreter {
  public:
   Interpreter(const core::SourceFile& file, const machines::Machine& machine, Options options = {});
@@ -55,8 +68,23 @@ class Interpreter {
   Interpreter(const Interpreter&) = delete;
   Interpreter& operator=(const Interpreter&) = delete;
 
-  /// The next command; nullopt when the stream has ended (after End, or on an error).
+  /// The next command; nullopt when the stream has ended (after End, or on an error). After a
+  /// Barrier, calling next() before resume() throws std::logic_error (API misuse).
   std::optional<Command> next();
+
+  /// Answers the open Barrier; the interpreter then decodes the block the barrier stood
+  /// before with these values. Throws std::logic_error when no barrier is open or the state's
+  /// frame is not the one asked for.
+  void resume(const RunState& state);
+
+  /// The decode-only answer to `barrier` that `check` and `trace` use: V.E. values as given
+  /// (`Options::external`, `--ve`) or last written by the program, latch 0, and the programmed
+  /// positions re-based with the belt travel 0 (docs/interp.md "Decode-only state").
+  RunState decode_only_state(const Barrier& barrier) const;
+
+  /// next(), answering a Barrier at once from decode_only_state() (check, trace, tests). The
+  /// barrier is still returned, so that a trace shows it.
+  std::optional<Command> next_decode_only();
 
   /// The error that ended the stream, if any.
   const core::Diagnostic* error() const { return error_ ? &*error_ : nullptr; }
@@ -75,6 +103,7 @@ class Interpreter {
 
  private:
   std::unique_ptr<Impl> impl_;
+  std::optional<Command> open_barrier_;  // the Barrier next() returned, until resume()
   std::optional<core::Diagnostic> error_;
   core::DiagnosticList diags_;
 };

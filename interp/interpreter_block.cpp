@@ -1,5 +1,6 @@
-// interp/interpreter_block.cpp: one block's words (assignments, G/M/F/axis words), motion
-// and arcs, declarations and string macros. # commands are in interpreter_hash.cpp.
+// interp/interpreter_block.cpp: one block's words (assignments, G/M/F/axis words), G04, G74,
+// G92, program ends, declarations and string macros. Motions and arcs are in
+// interpreter_motion.cpp, # commands in interpreter_hash.cpp.
 #include <cmath>
 
 #include "core/number_text.hpp"
@@ -128,11 +129,26 @@ bool Interpreter::Impl::run_declaration(const ast::Block& b, const ast::Declarat
   }
   ref.index_count = 0;
   v.values.assign(count, 0.0);
+  if (v.is_string() && d.string_length != ast::kNoNode) {
+    auto n = eval(b, d.string_length);
+    if (!n) return false;
+    if (*n < 1.0 || *n > kMaxStringLength || *n != std::trunc(*n)) {
+      return fail(d.loc, "NC4014",
+                  "STRING[" + core::number_text(*n) + "]: the length must be 1.." +
+                      std::to_string(kMaxStringLength));
+    }
+    v.max_length = static_cast<std::uint32_t>(*n);
+  }
   if (d.init != ast::kNoNode) {
     if (v.is_string()) {
       const ast::ExprNode& n = b.exprs[d.init];
       if (n.op != ast::Op::string) return fail(n.loc, "NC4014", "a STRING needs a \"text\" value");
       v.text = unescape(n.text);
+      if (v.text.size() > v.max_length) {
+        return fail(n.loc, "NC4014",
+                    "the initial text of " + std::to_string(v.text.size()) +
+                        " characters is longer than STRING[" + std::to_string(v.max_length) + "]");
+      }
     } else {
       std::size_t k = 0;
       for (ast::NodeIndex n = d.init; n != ast::kNoNode && k < count; n = b.exprs[n].next, ++k) {
@@ -149,6 +165,29 @@ bool Interpreter::Impl::run_declaration(const ast::Block& b, const ast::Declarat
 }
 
 bool Interpreter::Impl::run_words(const ast::Block& b) {
+  // Order within a block (decision, docs/interp.md): assignments, G codes, addresses, the
+  // technology functions, then the block's one action, axis-bracket commands, program end.
+  if (!run_assignments(b)) return false;
+  BlockWords& bw = block_words;  // reused: its vectors keep their capacity across blocks
+  bw.clear();
+  if (!read_g_codes(b, bw) || !read_addresses(b, bw)) return false;
+  for (const auto& [kind, value] : bw.tech)
+    emit(line, Tech{kind, value});
+  bool ok = true;
+  if (bw.g04) {
+    ok = run_dwell(b, bw);
+  } else if (bw.g74) {
+    run_homing(bw);
+  } else if (bw.g92) {
+    run_set_position(bw);
+  } else {
+    ok = run_block_motion(b, bw);
+  }
+  if (!ok || !run_axis_commands(b)) return false;
+  return !bw.program_m || run_program_m(b, *bw.program_m);
+}
+
+bool Interpreter::Impl::run_assignments(const ast::Block& b) {
   // 1. assignments and macro definitions, left to right, before the block's motion
   //    (decision, docs/interp.md "Order within a block").
   for (const ast::Word& w : b.words) {
@@ -192,32 +231,33 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
       if (!evaluator.assign(b, w.target, value)) return fail_eval();
     }
   }
-  // 2. G codes.
-  std::optional<MotionKind> motion_word;
-  bool g04 = false, g74 = false, g92 = false, g60 = false, g61 = false, g09 = false;
+  return true;
+}
+
+bool Interpreter::Impl::read_g_codes(const ast::Block& b, BlockWords& bw) {
   for (const ast::Word& w : b.words) {
     if (w.kind != ast::WordKind::g) continue;
     switch (w.code) {
       case 0:
-        motion_word = MotionKind::rapid;
+        bw.motion_word = MotionKind::rapid;
         break;
       case 1:
-        motion_word = MotionKind::linear;
+        bw.motion_word = MotionKind::linear;
         break;
       case 2:
-        motion_word = MotionKind::arc_cw;
+        bw.motion_word = MotionKind::arc_cw;
         break;
       case 3:
-        motion_word = MotionKind::arc_ccw;
+        bw.motion_word = MotionKind::arc_ccw;
         break;
       case 4:
-        g04 = true;
+        bw.g04 = true;
         break;
       case 8:
         modal.transition = Transition::accelerate_at_start;
         break;
       case 9:
-        g09 = true;
+        bw.g09 = true;
         break;
       case 900:
         modal.transition = Transition::decel_at_end;
@@ -235,10 +275,10 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
         modal.plane = Plane::yz;
         break;
       case 60:
-        g60 = true;
+        bw.g60 = true;
         break;
       case 61:
-        g61 = true;
+        bw.g61 = true;
         break;
       case 359:
         modal.exact_stop = false;
@@ -259,7 +299,7 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
         modal.inch = false;
         break;
       case 74:
-        g74 = true;
+        bw.g74 = true;
         break;
       case 90:
         modal.incremental = false;
@@ -268,7 +308,7 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
         modal.incremental = true;
         break;
       case 92:
-        g92 = true;
+        bw.g92 = true;
         break;
       case 93:
         modal.feed_mode = FeedMode::inverse_time;
@@ -299,16 +339,12 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
         return fail(w.loc, "NC4102", "G" + std::to_string(w.code) + " is not supported by ncsim");
     }
   }
-  // 3. addresses.
-  const double unit = modal.inch ? kInch : 1.0;
-  AxisValues target = position;
-  AxisMask programmed = 0;
-  std::array<std::optional<double>, 3> ijk;
-  std::optional<double> radius, bare, end_feed;
-  std::optional<double> block_time;
-  std::vector<std::pair<TechKind, double>> tech;
-  std::optional<int> program_m;
-  std::vector<std::pair<std::uint8_t, double>> axis_words;
+  return true;
+}
+
+bool Interpreter::Impl::read_addresses(const ast::Block& b, BlockWords& bw) {
+  bw.unit = modal.inch ? kInch : 1.0;
+  const double unit = bw.unit;
   for (const ast::Word& w : b.words) {
     if (w.kind == ast::WordKind::g || w.kind == ast::WordKind::assignment ||
         w.kind == ast::WordKind::macro_def) {
@@ -330,7 +366,7 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
                   " F" + core::number_text(*v) + " must be greater than 0");
         }
         if (modal.feed_mode == FeedMode::inverse_time) {
-          block_time = *v;  // G93: seconds (PROG-206602507)
+          bw.block_time = *v;  // G93: seconds (PROG-206602507)
         } else {
           feed = *v * unit / 60.0;  // mm/min -> mm/s (PROG-206811147)
         }
@@ -339,46 +375,46 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
         if (*v < 0.0) {  // E0 is a stop at the block end; a negative feed is none
           return fail(w.loc, "NC4030", "end feed E" + core::number_text(*v) + " is negative");
         }
-        end_feed = *v * unit / 60.0;
+        bw.end_feed = *v * unit / 60.0;
         break;
       case ast::WordKind::s:
         if (*v < 0.0) {  // the direction is M03/M04's, the speed a magnitude
           return fail(w.loc, "NC4030", "spindle speed S" + core::number_text(*v) + " is negative");
         }
-        tech.emplace_back(TechKind::s, *v);
+        bw.tech.emplace_back(TechKind::s, *v);
         break;
       case ast::WordKind::t:
-        tech.emplace_back(TechKind::t, *v);
+        bw.tech.emplace_back(TechKind::t, *v);
         break;
       case ast::WordKind::d:
-        tech.emplace_back(TechKind::d, *v);
+        bw.tech.emplace_back(TechKind::d, *v);
         break;
       case ast::WordKind::h:
-        tech.emplace_back(TechKind::h, *v);
+        bw.tech.emplace_back(TechKind::h, *v);
         break;
       case ast::WordKind::m: {
         const int code = static_cast<int>(std::lround(*v));
         if (code == 0 || code == 1 || code == 2 || code == 30 || code == 17 || code == 29) {
-          program_m = code;
+          bw.program_m = code;
         } else {
-          tech.emplace_back(TechKind::m, *v);
+          bw.tech.emplace_back(TechKind::m, *v);
         }
         break;
       }
       case ast::WordKind::i:
-        ijk[0] = *v * unit;
+        bw.ijk[0] = *v * unit;
         break;
       case ast::WordKind::j:
-        ijk[1] = *v * unit;
+        bw.ijk[1] = *v * unit;
         break;
       case ast::WordKind::k:
-        ijk[2] = *v * unit;
+        bw.ijk[2] = *v * unit;
         break;
       case ast::WordKind::r:
-        radius = *v * unit;
+        bw.radius = *v * unit;
         break;
       case ast::WordKind::bare_value:
-        bare = *v;
+        bw.bare = *v;
         break;
       case ast::WordKind::axis: {
         auto index = axis_index(w.name);
@@ -386,188 +422,85 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
           return fail(w.loc, "NC4103",
                       "axis " + std::string(w.name) + " does not exist on machine " + machine.name);
         }
-        axis_words.emplace_back(*index, *v);
+        bw.axis_words.emplace_back(*index, *v);
         break;
       }
       default:
-        break;
-    }
-  }
-  if (evaluator.take_external_read()) emit(line, Flush{FlushKind::ve_read});  // §3.5
-  for (const auto& [kind, value] : tech)
-    emit(line, Tech{kind, value});
-
-  if (g04) {
-    // G04: time in seconds after the first main axis address or alone (PROG-206132747).
-    std::optional<double> t = bare;
-    for (std::size_t k = 0; k < axis_words.size(); ++k) {
-      if (k == 0 && !bare) {
-        t = axis_words[k].second;
-      } else if (bare && k == 0) {
-        return fail(b.loc, "20013", "G04 with both a time value and an axis address");
-      } else {
-        warn(b.loc, "20685", "G04: further axis addresses are ignored");
-      }
-    }
-    if (!t) return fail(b.loc, "20013", "G04 without a dwell time");
-    if (*t < 0.0) return fail(b.loc, "20013", "negative dwell time");
-    emit(line, Dwell{*t});
-    blocks_without_motion = 0;
-  } else if (g74) {
-    Homing h;
-    for (const auto& [axis, order] : axis_words)
-      h.axes.emplace_back(axis, static_cast<int>(order));
-    emit(line, std::move(h));
-    blocks_without_motion = 0;
-  } else if (g92) {
-    SetPosition s;
-    for (const auto& [axis, value] : axis_words) {
-      const bool rotary = machine.axes[axis].kind == machines::AxisKind::rotary;
-      s.values[axis] = value * (rotary ? 1.0 : unit);
-      s.axes |= AxisMask{1} << axis;
-      position[axis] = s.values[axis];
-    }
-    emit(line, std::move(s));
-  } else {
-    if (motion_word) motion = *motion_word;
-    for (const auto& [axis, value] : axis_words) {
-      const bool rotary = machine.axes[axis].kind == machines::AxisKind::rotary;
-      const double v = value * (rotary ? 1.0 : unit);
-      target[axis] = modal.incremental ? position[axis] + v : v;
-      if (!std::isfinite(target[axis])) {  // G91: the sum left the range of a double
-        return fail(b.loc, "NC4101",
-                    "target of axis " + machine.axes[axis].name + " is not a finite number");
-      }
-      programmed |= AxisMask{1} << axis;
-    }
-    const bool arc = motion == MotionKind::arc_cw || motion == MotionKind::arc_ccw;
-    if (programmed != 0 || (arc && motion_word && (ijk[0] || ijk[1] || ijk[2]))) {
-      const BlockMotionWords words{g09, g60, g61, block_time, end_feed};
-      if (!run_motion(b, motion, target, programmed, ijk, radius, words)) return false;
-    } else if (g60) {
-      return fail(b.loc, "20003", "G60 without a motion in the block");
-    }
-  }
-  if (!run_axis_commands(b)) return false;
-  if (program_m) {
-    switch (*program_m) {
-      case 0:
-        emit(line, ProgramStop{false});
-        break;
-      case 1:
-        emit(line, ProgramStop{true});
-        break;
-      case 17:
-      case 29:
-        return subroutine_return();
-      default:
-        if (!calls.empty()) {
-          warn(b.loc, "NC4305", "M02/M30 inside a subroutine ends the program (PROG-206828043)");
-        }
-        emit(line, End{*program_m});
-        finished = true;
         break;
     }
   }
   return true;
 }
 
-bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const AxisValues& target,
-                                   AxisMask programmed,
-                                   const std::array<std::optional<double>, 3>& ijk,
-                                   std::optional<double> radius, const BlockMotionWords& words) {
-  const bool arc = kind == MotionKind::arc_cw || kind == MotionKind::arc_ccw;
-  if (modal.synchronised && !motion_since_sync) {
-    // seed 004 §2.1.1: the first motion after #SYNC IN must be G00 or G01.
-    if (arc) return fail(b.loc, "NC4502", "the first motion after #SYNC IN must be G00 or G01");
-    motion_since_sync = true;
-  }
-  if (spline && !arc) {
-    spline->points.push_back(target);
-    position = target;
-    blocks_without_motion = 0;
-    return true;
-  }
-  if (spline) return fail(b.loc, "NC4402", "G02/G03 inside #SPLINE ON ... OFF is not supported");
-  if (kind != MotionKind::rapid && modal.feed_mode == FeedMode::per_minute && !feed) {
-    return fail(b.loc, "20008", "the first G01/G02/G03 needs a feed F (DIAG-20008)");
-  }
-  Motion m;
-  m.kind = kind;
-  m.start = position;
-  m.end = target;
-  m.programmed = programmed;
-  m.feed = kind == MotionKind::rapid ? 0.0 : feed.value_or(0.0);
-  m.modal = snapshot();
-  if (words.stop_at_end) m.modal.transition = Transition::stop_at_end;
-  m.modal.exact_stop = m.modal.exact_stop || words.exact_stop;
-  m.modal.contouring = m.modal.contouring || words.contour;
-  m.block_time = words.block_time;
-  m.end_feed = words.end_feed;
-  if (arc) {
-    // Plane axes (PROG-206253067): G17 X/Y, G18 Z/X, G19 Y/Z; I/J/K belong to X/Y/Z.
-    const int p1 = modal.plane == Plane::xy ? 0 : (modal.plane == Plane::zx ? 2 : 1);
-    const int p2 = modal.plane == Plane::xy ? 1 : (modal.plane == Plane::zx ? 0 : 2);
-    if (!xyz[p1] || !xyz[p2]) {
-      return fail(b.loc, "NC4103", "the machine lacks an axis of the circle plane");
-    }
-    const std::uint8_t a1 = *xyz[p1], a2 = *xyz[p2];
-    const double s1 = position[a1], s2 = position[a2];
-    const double e1 = target[a1], e2 = target[a2];
-    const double d1 = e1 - s1, d2 = e2 - s2;
-    const double chord = std::hypot(d1, d2);
-    if (!std::isfinite(chord)) {
-      return fail(b.loc, "NC4101", "circle end point too far from its start for a double");
-    }
-    double c1 = 0.0, c2 = 0.0;
-    const bool full = chord < 1e-9;
-    if (radius) {
-      // TC2 R programming (isg-language.md §2.2): R > 0 short arc, R < 0 long arc.
-      if (full) return fail(b.loc, "20034", "a full circle cannot be programmed with R");
-      const double r = std::fabs(*radius);
-      if (chord > 2.0 * r + options.centre_diff_max) {
-        return fail(b.loc, "NC4202",
-                    "radius R" + core::number_text(*radius) + " is smaller than half the chord");
-      }
-      const double h = std::sqrt(std::max(0.0, r * r - chord * chord / 4.0));
-      const double n1 = -d2 / chord, n2 = d1 / chord;  // left normal of the chord
-      const bool ccw = kind == MotionKind::arc_ccw;
-      const double side = (ccw == (*radius > 0.0)) ? 1.0 : -1.0;
-      c1 = (s1 + e1) / 2.0 + side * h * n1;
-      c2 = (s2 + e2) / 2.0 + side * h * n2;
+bool Interpreter::Impl::run_dwell(const ast::Block& b, const BlockWords& bw) {
+  // G04: time in seconds after the first main axis address or alone (PROG-206132747).
+  std::optional<double> t = bw.bare;
+  for (std::size_t k = 0; k < bw.axis_words.size(); ++k) {
+    if (k == 0 && !bw.bare) {
+      t = bw.axis_words[k].second;
+    } else if (bw.bare && k == 0) {
+      return fail(b.loc, "20013", "G04 with both a time value and an axis address");
     } else {
-      const auto& o1 = ijk[static_cast<std::size_t>(p1)];
-      const auto& o2 = ijk[static_cast<std::size_t>(p2)];
-      c1 = centre_absolute ? o1.value_or(s1) : s1 + o1.value_or(0.0);
-      c2 = centre_absolute ? o2.value_or(s2) : s2 + o2.value_or(0.0);
-      const double r_start = std::hypot(s1 - c1, s2 - c2);
-      const double r_end = std::hypot(e1 - c1, e2 - c2);
-      const double diff = std::fabs(r_end - r_start);
-      // P-CHAN-00059 / P-CHAN-00060 (PROG-206551563): beyond both limits is an error.
-      if (diff > options.centre_diff_max && diff > options.centre_factor * r_start) {
-        return fail(b.loc, "NC4201",
-                    "circle end point radius " + core::number_text(r_end) +
-                        " differs from the start radius " + core::number_text(r_start) +
-                        " by more than P-CHAN-00059/00060 allow");
-      }
-      if (r_start < 1e-9) return fail(b.loc, "NC4201", "circle with radius 0");
-      if (!full && diff > 0.0) {  // centre correction onto the perpendicular bisector
-        const double n1 = -d2 / chord, n2 = d1 / chord;
-        const double m1 = (s1 + e1) / 2.0, m2 = (s2 + e2) / 2.0;
-        const double t = (c1 - m1) * n1 + (c2 - m2) * n2;
-        c1 = m1 + t * n1;
-        c2 = m2 + t * n2;
-      }
+      warn(b.loc, "20685", "G04: further axis addresses are ignored");
     }
-    const double r = std::hypot(s1 - c1, s2 - c2);
-    if (!std::isfinite(c1) || !std::isfinite(c2) || !std::isfinite(r)) {
-      return fail(b.loc, "NC4101", "circle centre or radius is not a finite number");
-    }
-    m.arc = Arc{c1, c2, a1, a2, r, full};
   }
-  position = target;
+  if (!t) return fail(b.loc, "20013", "G04 without a dwell time");
+  if (*t < 0.0) return fail(b.loc, "20013", "negative dwell time");
+  emit(line, Dwell{*t});
   blocks_without_motion = 0;
-  emit(line, std::move(m));
+  return true;
+}
+
+void Interpreter::Impl::run_homing(const BlockWords& bw) {
+  Homing h;
+  for (const auto& [axis, order] : bw.axis_words) {
+    h.axes.emplace_back(axis, static_cast<int>(order));
+    unknown_axes |= AxisMask{1} << axis;  // the reference position: run-time state
+  }
+  emit(line, std::move(h));
+  blocks_without_motion = 0;
+}
+
+void Interpreter::Impl::run_set_position(const BlockWords& bw) {
+  SetPosition s;
+  for (const auto& [axis, value] : bw.axis_words) {
+    const bool rotary = machine.axes[axis].kind == machines::AxisKind::rotary;
+    s.values[axis] = value * (rotary ? 1.0 : bw.unit);
+    s.axes |= AxisMask{1} << axis;
+    position[axis] = s.values[axis];
+    unknown_axes &= ~(AxisMask{1} << axis);  // known again: the program says where it is
+  }
+  emit(line, std::move(s));
+}
+
+bool Interpreter::Impl::run_program_m(const ast::Block& b, int code) {
+  switch (code) {
+    case 0:
+      emit(line, ProgramStop{false});
+      break;
+    case 1:
+      emit(line, ProgramStop{true});
+      break;
+    case 17:
+    case 29:
+      return subroutine_return();
+    default:
+      if (!calls.empty()) {
+        warn(b.loc, "NC4305", "M02/M30 inside a subroutine ends the program (PROG-206828043)");
+      }
+      if (modal.synchronised && (code == 2 || code == 30)) {
+        // Decision (docs/interp.md): a warning, not an error. Seed 004 §2.1.1.2 (l.292) lets a
+        // program per workpiece end while the next one takes the synchronisation over
+        // (ProgStartFast); without such a program the tool keeps moving with the belt.
+        warn(b.loc, "NC4516",
+             "M" + std::to_string(code) +
+                 " while synchronised with the conveyor: the coupling stays for a following "
+                 "program (seed 004 §2.1.1.2); #SYNC OUT first to end decoupled");
+      }
+      emit(line, End{code});
+      finished = true;
+      break;
+  }
   return true;
 }
 

@@ -4,13 +4,30 @@
 // # commands). Not part of the public interface.
 
 #include <deque>
+#include <initializer_list>
 #include <string_view>
 
+#include "core/number_text.hpp"
+#include "grammar/keywords.hpp"
 #include "interp/interpreter.hpp"
+#include "machines/kinematics.hpp"
+#include "machines/param_table.hpp"
 
 namespace ncsim::interp {
 
 namespace ast = grammar::ast;
+
+/// The bracket items of one # command or axis command, found by keyword.
+struct Items {
+  const ast::Block& b;
+  std::uint32_t first, count;
+  const ast::Item* find(std::string_view keyword) const {
+    for (std::uint32_t k = first; k < first + count && k < b.items.size(); ++k) {
+      if (grammar::iequals(b.items[k].keyword, keyword)) return &b.items[k];
+    }
+    return nullptr;
+  }
+};
 
 /// A program file: the main one (index 0) or a global subroutine file (L name).
 struct ProgramFile {
@@ -66,12 +83,68 @@ struct Interpreter::Impl {
   std::optional<double> eval(const ast::Block& b, ast::NodeIndex n);
 
   // --- blocks (interpreter_block.cpp) ---
-  bool run_words(const ast::Block& b);
-  bool run_hash(const ast::Block& b, const ast::HashCommand& h);
-  bool spline_on(core::SourceLoc at);   // #SPLINE ON / G151
-  bool spline_off(core::SourceLoc at);  // #SPLINE OFF / G150 (emits the Spline)
+  /// What one block's G codes and addresses say (run_words reads them, then acts).
+  struct BlockWords {
+    std::optional<MotionKind> motion_word;  ///< G00..G03 in this block
+    bool g04 = false, g74 = false, g92 = false, g60 = false, g61 = false, g09 = false;
+    double unit = 1.0;                         ///< [mm per program unit] (G70: 25.4)
+    std::array<std::optional<double>, 3> ijk;  ///< [mm]
+    std::optional<double> radius, bare, end_feed, block_time;
+    std::vector<std::pair<TechKind, double>> tech;
+    std::optional<int> program_m;                             ///< M00/M01/M02/M30/M17/M29
+    std::vector<std::pair<std::uint8_t, double>> axis_words;  ///< machine index, value
+    void clear() {
+      motion_word.reset();
+      g04 = g74 = g92 = g60 = g61 = g09 = false;
+      unit = 1.0;
+      ijk = {};
+      radius.reset();
+      bare.reset();
+      end_feed.reset();
+      block_time.reset();
+      tech.clear();
+      program_m.reset();
+      axis_words.clear();
+    }
+  };
+  BlockWords block_words;               // run_words' scratch (one block at a time)
+  bool run_words(const ast::Block& b);  // the order of a block's parts; calls the pieces below
+  bool run_assignments(const ast::Block& b);
+  bool read_g_codes(const ast::Block& b, BlockWords& bw);
+  bool read_addresses(const ast::Block& b, BlockWords& bw);
+  bool run_dwell(const ast::Block& b, const BlockWords& bw);  // G04
+  void run_homing(const BlockWords& bw);                      // G74
+  void run_set_position(const BlockWords& bw);                // G92
+  bool run_block_motion(const ast::Block& b, const BlockWords& bw);
+  bool run_program_m(const ast::Block& b, int code);              // M00/M01/M02/M30/M17/M29
+  bool run_hash(const ast::Block& b, const ast::HashCommand& h);  // dispatches to hash_*
+  std::optional<double> item_value(const ast::Block& b, const ast::Item* it);
+  bool hash_sync_in(const ast::Block& b, const ast::HashCommand& h);
+  bool hash_sync_out(const ast::Block& b, const ast::HashCommand& h);
+  bool duplicate_free(const ast::Block& b, const ast::HashCommand& h,
+                      std::initializer_list<std::string_view> keywords);  // else NC4507
+  bool feed_cont(const ast::Block& b, const Items& items, std::optional<double>& out);
+  bool hash_cs(const ast::Block& b, const ast::HashCommand& h);
+  bool hash_kinematics(const ast::Block& b, const ast::HashCommand& h);
+  bool hash_caxtrack(const ast::Block& b, const ast::HashCommand& h);
+  bool hash_contour_mode(const ast::Block& b, const ast::HashCommand& h);
+  bool hash_slope(const ast::Block& b, const ast::HashCommand& h);
+  bool hash_machine_data(const ast::Block& b, const ast::HashCommand& h);  // own file
+  bool machine_setting(core::SourceLoc at, const machines::ParamSpec& spec,
+                       std::optional<std::uint16_t> index, double value, MachineData& md);
+  bool hash_msg(const ast::Block& b, const ast::HashCommand& h);
+  bool hash_time(const ast::Block& b, const ast::HashCommand& h);
+  bool hash_transvelmin_on(const ast::Block& b, const ast::HashCommand& h);
+  bool hash_wait_indp(const ast::Block& b, const ast::HashCommand& h);
+  bool hash_delete(const ast::Block& b, const ast::HashCommand& h);
+  bool hash_pre_if(const ast::Block& b, const ast::HashCommand& h);  // #IF / #ELSE skips
+  bool spline_on(core::SourceLoc at);                                // #SPLINE ON / G151
+  bool spline_off(core::SourceLoc at);  // #SPLINE OFF / G150 (emits SplineEnd)
   bool run_declaration(const ast::Block& b, const ast::Declaration& d);
-  bool run_axis_commands(const ast::Block& b);
+  bool run_axis_commands(const ast::Block& b);  // dispatches to axis_*
+  bool axis_indp(const ast::Block& b, const ast::AxisCommand& ac, std::uint8_t axis);
+  bool axis_move_velocity(const ast::Block& b, const ast::AxisCommand& ac, std::uint8_t axis);
+  bool axis_touch_probe(const ast::Block& b, const ast::AxisCommand& ac, std::uint8_t axis);
   /// What a block says about its own motion only (non-modal words, isg-language.md §2.4).
   struct BlockMotionWords {
     bool stop_at_end = false;          ///< G09
@@ -85,6 +158,31 @@ struct Interpreter::Impl {
                   std::optional<double> radius, const BlockMotionWords& words);
   std::optional<std::uint8_t> axis_index(std::string_view name) const;
   ModalSnapshot snapshot() const;
+
+  // --- frames (interpreter_frames.cpp) ---
+  CoordFrame frame() const;  // the frame `position` is in
+  Eigen::Vector3d xyz_of(const AxisValues& values) const;
+  void set_xyz(AxisValues& values, const Eigen::Vector3d& p) const;
+  void rebase_cs(const machines::Frame& before);   // after a #CS ON/OFF changed the chain
+  bool rebase_trafo(bool on, core::SourceLoc at);  // before modal.kinematics_on changes
+  AxisValues sync_rebased(bool in) const;          // position after #SYNC IN/OUT, travel 0
+
+  // --- the seam (interpreter_seam.cpp) ---
+  bool barrier_before(const ast::Block& b);  // emits a Barrier when b needs run-time state
+  bool emit_barrier(const ast::Block& b, bool sync_in, AxisMask position_needed);  // slow path
+  AxisMask position_needs(const ast::Block& b) const;  // unknown axes the block needs
+  /// The block has a V.E. node or a string (a possible macro): remembered per block text.
+  bool may_read_external(const ast::Block& b);
+  struct ExternalScan {
+    std::uint64_t key = 0;  // file and Block::offset of the block scanned, + 1; 0: empty
+    bool may_read = false;
+  };
+  std::array<ExternalScan, 256> external_scans{};
+  void apply(const RunState& state, const Barrier& barrier);
+  RunState decode_only(const Barrier& barrier) const;
+  bool resumed = false;       // the barrier before the block at pc was answered
+  AxisMask unknown_axes = 0;  // axes whose actual position only the run time knows
+  double latch = 0.0;         // conveyor position latched before the last #SYNC IN [mm]
   void emit(std::uint32_t line, CommandBody body);
   const ast::Block* expand_macros(const ast::Block& b);
 
@@ -122,9 +220,14 @@ struct Interpreter::Impl {
   std::optional<double> feed;     // [mm/s]
   bool motion_since_sync = true;  // first motion after #SYNC IN not yet seen
   std::optional<int> kin_id;
+  std::unique_ptr<machines::Kinematics> kinematic;  // built at #TRAFO ON for kin_id
   machines::CsStack cs;
   SplineType spline_type = SplineType::akima;
-  std::optional<Spline> spline;                      // collecting points between #SPLINE ON and OFF
+  struct OpenSpline {
+    SplineType type = SplineType::akima;
+    std::uint32_t points = 1;  // vertices so far, start included
+  };
+  std::optional<OpenSpline> spline;                  // between #SPLINE ON and OFF
   std::array<std::optional<std::uint8_t>, 3> xyz{};  // machine indices of X, Y, Z
   std::string scratch_text;
 };

@@ -29,7 +29,10 @@ inline const machines::Machine& machine(const std::string& name = "portal_3x") {
 }
 
 struct Run {
+  /// Trace lines without a motion's ` frame=... start ...` suffix (tests about other things
+  /// stay readable); `full` holds the lines as `ncsim trace` prints them.
   std::vector<std::string> lines;
+  std::vector<std::string> full;
   std::string error_id;
   std::uint32_t error_line = 0;
   std::string error_message;
@@ -43,9 +46,12 @@ inline Run run_file(const core::SourceFile& file, const std::string& machine_nam
   Interpreter interp(file, m, options);
   Run r;
   while (r.lines.size() < max_commands) {
-    auto c = interp.next();
+    auto c = interp.next_decode_only();
     if (!c) break;
-    r.lines.push_back(to_trace_line(*c, m));
+    r.full.push_back(to_trace_line(*c, m));
+    const std::size_t suffix =
+        std::holds_alternative<Motion>(c->body) ? r.full.back().find(" frame=") : std::string::npos;
+    r.lines.push_back(r.full.back().substr(0, suffix));
   }
   if (const auto* e = interp.error()) {
     r.error_id = e->id;

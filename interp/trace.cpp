@@ -2,16 +2,23 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
 
 #include "core/number_text.hpp"
 
 namespace ncsim::interp {
 namespace {
 
+// Fixed notation of the largest double: 309 digits, sign, point and 4 decimals.
+constexpr std::size_t kFixedMax = 320;
+
 void num(std::string& out, double v) {
-  char buf[64];
+  char buf[kFixedMax];
   if (v == 0.0) v = 0.0;  // no "-0.0000"
   auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, 4);
+  if (r.ec != std::errc{}) std::abort();  // kFixedMax holds every finite double
   std::string_view s(buf, static_cast<std::size_t>(r.ptr - buf));
   if (s == "-0.0000") s = "0.0000";
   out += s;
@@ -49,6 +56,35 @@ void modal(std::string& out, const ModalSnapshot& s) {
 
 }  // namespace
 
+std::pair<std::array<double, 2>, std::array<double, 2>> arc_extent(const Motion& m) {
+  const Arc& a = *m.arc;
+  const double s1 = m.start[a.axis_1] - a.centre_1, s2 = m.start[a.axis_2] - a.centre_2;
+  const double e1 = m.end[a.axis_1] - a.centre_1, e2 = m.end[a.axis_2] - a.centre_2;
+  std::array<double, 2> lo{std::min(s1, e1), std::min(s2, e2)};
+  std::array<double, 2> hi{std::max(s1, e1), std::max(s2, e2)};
+  // Angles counter-clockwise in the (axis_1, axis_2) plane, as the centre was built.
+  constexpr double kTwoPi = 6.283185307179586;
+  const bool ccw = m.kind == MotionKind::arc_ccw;
+  const double a0 = std::atan2(s2, s1);
+  double sweep = std::atan2(e2, e1) - a0;
+  if (ccw && sweep <= 0.0) sweep += kTwoPi;
+  if (!ccw && sweep >= 0.0) sweep -= kTwoPi;
+  if (a.full_circle) sweep = ccw ? kTwoPi : -kTwoPi;
+  const double r = a.radius;
+  for (int q = 0; q < 4; ++q) {  // the axis directions at 0, 90, 180, 270 degrees
+    const double angle = q * kTwoPi / 4.0;
+    double d = std::remainder(angle - a0, kTwoPi);  // in (-pi, pi]
+    if (ccw && d < 0.0) d += kTwoPi;
+    if (!ccw && d > 0.0) d -= kTwoPi;
+    if (std::fabs(d) > std::fabs(sweep)) continue;
+    const double p1 = q == 0 ? r : (q == 2 ? -r : 0.0);
+    const double p2 = q == 1 ? r : (q == 3 ? -r : 0.0);
+    lo = {std::min(lo[0], p1), std::min(lo[1], p2)};
+    hi = {std::max(hi[0], p1), std::max(hi[1], p2)};
+  }
+  return {{lo[0] + a.centre_1, lo[1] + a.centre_2}, {hi[0] + a.centre_1, hi[1] + a.centre_2}};
+}
+
 std::string to_trace_line(const Command& c, const machines::Machine& m) {
   std::string out = std::to_string(c.line) + ":";
   std::visit(
@@ -70,16 +106,20 @@ std::string to_trace_line(const Command& c, const machines::Machine& m) {
             if (b.arc->full_circle) out += " FULL";
           }
           modal(out, b.modal);
-        } else if constexpr (std::is_same_v<T, Spline>) {
-          out += b.type == SplineType::akima ? " SPLINE AKIMA" : " SPLINE BSPLINE";
-          out += " points=" + std::to_string(b.points.size());
+          out += " frame=" + frame_name(b.frame) + " start";
+          axes(out, b.start, m);
+        } else if constexpr (std::is_same_v<T, SplineBegin>) {
+          out += b.type == SplineType::akima ? " SPLINE_BEGIN AKIMA" : " SPLINE_BEGIN BSPLINE";
+          out += " frame=" + frame_name(b.frame) + " start";
+          axes(out, b.start, m);
+        } else if constexpr (std::is_same_v<T, SplinePoint>) {
+          out += " SPLINE_POINT " + std::to_string(b.index);
+          axes(out, b.point, m);
           field(out, "F", b.feed);
-          for (const auto& p : b.points) {
-            out += " [";
-            std::string inner;
-            axes(inner, p, m);
-            out += inner.substr(1) + "]";
-          }
+          out += " frame=" + frame_name(b.frame);
+        } else if constexpr (std::is_same_v<T, SplineEnd>) {
+          out += b.type == SplineType::akima ? " SPLINE_END AKIMA" : " SPLINE_END BSPLINE";
+          out += " points=" + std::to_string(b.points);
         } else if constexpr (std::is_same_v<T, Dwell>) {
           out += " DWELL";
           field(out, "t", b.seconds);
@@ -99,6 +139,7 @@ std::string to_trace_line(const Command& c, const machines::Machine& m) {
           if (b.feed) field(out, "FEED", *b.feed);
           if (b.time) field(out, "TIME", *b.time);
           if (b.interruptible) out += " INTERRUPTIBLE";
+          out += " frame=" + frame_name(b.frame);
         } else if constexpr (std::is_same_v<T, MoveVelocity>) {
           out += " MC_MOVEVELOCITY ";
           out += axis_name(m, b.axis);
@@ -106,19 +147,19 @@ std::string to_trace_line(const Command& c, const machines::Machine& m) {
           field(out, "a", b.acceleration);
           field(out, "d", b.deceleration);
           field(out, "j", b.jerk);
-          out += " dir=" + std::to_string(b.direction);
+          static constexpr const char* kDirections[] = {"1", "3", "4"};  // MC_Direction codes
+          out += " dir=";
+          out += kDirections[static_cast<int>(b.direction)];
         } else if constexpr (std::is_same_v<T, ProbeArm>) {
           out += " PROBE_ARM ";
           out += axis_name(m, b.axis);
           out += " channel=" + std::to_string(b.channel);
-          if (b.mode) out += " mode=" + std::to_string(*b.mode);
-        } else if constexpr (std::is_same_v<T, WaitProbe>) {
-          out += " WAIT_PROBE ";
-          out += axis_name(m, b.axis);
+          if (b.edge) out += *b.edge == ProbeEdge::falling ? " mode=1" : " mode=2";
         } else if constexpr (std::is_same_v<T, SyncIn>) {
           out += " SYNC_IN ";
           out += axis_name(m, b.conveyor);
           field(out, "conv_vel", b.conv_vel);
+          field(out, "latch", b.latch);
           if (b.feed_cont) field(out, "FEED_CONT", *b.feed_cont);
           if (b.feed_cont_auto) out += " FEED_CONT_AUTO";
         } else if constexpr (std::is_same_v<T, SyncOut>) {
@@ -159,16 +200,44 @@ std::string to_trace_line(const Command& c, const machines::Machine& m) {
             out += " AX=";
             out += axis_name(m, *b.axis);
           }
-          out += " \"" + b.parameter + "\"";
+          for (const auto& p : b.settings) {
+            out += ' ';
+            out += p.id;
+            out += ' ';
+            out += p.key;
+            if (p.index) out += '[' + std::to_string(*p.index) + ']';
+            out += '=';
+            num(out, p.value);
+          }
           if (b.wait) out += " WAIT";
         } else if constexpr (std::is_same_v<T, Message>) {
           out += " MSG";
-          if (!b.mode.empty()) out += " " + b.mode;
+          static constexpr const char* kModes[] = {"", " SYN", " SYN_ACK", " ACK"};
+          out += kModes[static_cast<int>(b.mode)];
           out += " \"" + b.text + "\"";
         } else if constexpr (std::is_same_v<T, Flush>) {
-          static constexpr const char* kKinds[] = {" FLUSH", " FLUSH CONTINUE", " FLUSH WAIT",
-                                                   " FLUSH V.E.READ"};
+          static constexpr const char* kKinds[] = {" FLUSH", " FLUSH CONTINUE", " FLUSH WAIT"};
           out += kKinds[static_cast<int>(b.kind)];
+        } else if constexpr (std::is_same_v<T, Barrier>) {
+          out += " BARRIER";
+          if (b.wants(BarrierNeed::external)) {
+            out += " FLUSH V.E.READ";
+            for (const auto& name : b.external)
+              out += " V.E." + name;
+          }
+          if (b.wants(BarrierNeed::probe_latch) && b.probe) {
+            out += " PROBE_LATCH ";
+            out += axis_name(m, *b.probe);
+          }
+          if (b.wants(BarrierNeed::position)) {
+            out += " POSITION frame=" + frame_name(b.frame);
+            for (std::size_t i = 0; i < kMaxAxes; ++i) {
+              if ((b.axes >> i) & 1u) {
+                out += ' ';
+                out += axis_name(m, static_cast<std::uint8_t>(i));
+              }
+            }
+          }
         } else if constexpr (std::is_same_v<T, WaitIndp>) {
           out += " WAIT_INDP";
           if (b.axes == 0) out += " ALL";
@@ -204,16 +273,36 @@ int write_trace(const core::SourceFile& file, const machines::Machine& machine,
                 const TraceOptions& options, std::ostream& out, core::DiagnosticList& diags) {
   Interpreter interp(file, machine, options.interp);
   std::uint64_t count = 0;
-  while (options.max_commands == 0 || count < options.max_commands) {
-    auto c = interp.next();
+  bool truncated = false;
+  for (;;) {
+    auto c = interp.next_decode_only();
     if (!c) break;
+    if (options.max_commands != 0 && count == options.max_commands) {
+      truncated = true;  // there is more: say so instead of ending as if complete
+      break;
+    }
     ++count;
+    // A command from a global subroutine file names that file; main-program lines stay bare.
+    if (c->file != 0) {
+      out << std::filesystem::path(interp.file_name(c->file)).filename().string() << ':';
+    }
     out << to_trace_line(*c, machine) << '\n';
+  }
+  if (truncated) {
+    out << "# truncated after " << count << " commands (--max-commands)\n";
+    diags.add({core::Severity::note,
+               file.name(),
+               {},
+               "NC4903",
+               "trace truncated after " + std::to_string(count) +
+                   " commands (--max-commands); the program goes on"});
   }
   // The stream's diagnostics end the trace too, so that a trace (and a golden) is a complete
   // record of what the decoder made of the program.
   for (const auto& d : interp.diagnostics().items()) {
-    out << "# " << d.id << " line " << d.loc.line << '\n';
+    out << "# " << d.id << " line " << d.loc.line;
+    if (d.file != file.name()) out << " of " << std::filesystem::path(d.file).filename().string();
+    out << '\n';
     diags.add(d);
   }
   return interp.error() != nullptr ? 1 : 0;
@@ -229,27 +318,60 @@ core::DiagnosticList check_semantics(const core::SourceFile& file, const machine
   std::uint64_t count = 0;
   bool ended = false;
   while (count < max_commands) {
-    auto c = interp.next();
+    auto c = interp.next_decode_only();
     if (!c) {
       ended = true;
       break;
     }
     ++count;
     if (const auto* m = std::get_if<Motion>(&c->body)) {
-      // soft limits where decidable: no #CS, no conveyor frame, no kinematics
-      if (m->modal.cs_active || m->modal.synchronised || m->modal.kinematics_on) continue;
-      for (std::size_t i = 0; i < machine.axes.size() && i < kMaxAxes; ++i) {
-        if (((m->programmed >> i) & 1u) == 0) continue;
+      // soft limits where decidable: in the MCS without kinematics (axis values)
+      if (!(m->frame == CoordFrame{})) continue;
+      const auto outside = [&](std::size_t i, double v) {
         const auto& lim = machine.axes[i].soft_limits;
-        if (m->end[i] < lim.neg || m->end[i] > lim.pos) {
-          out.add({core::Severity::error,
-                   interp.file_name(c->file),
-                   {c->line, 1},
-                   "NC4601",
-                   "target " + machine.axes[i].name + "=" + core::number_text(m->end[i]) +
-                       " is outside the software limits [" + core::number_text(lim.neg) + ", " +
-                       core::number_text(lim.pos) + "] (P-AXIS-00177/00178)"});
+        return v < lim.neg || v > lim.pos;
+      };
+      const auto report = [&](std::size_t i, const std::string& what, double v) {
+        const auto& lim = machine.axes[i].soft_limits;
+        out.add({core::Severity::error,
+                 interp.file_name(c->file),
+                 {c->line, 1},
+                 "NC4601",
+                 what + " " + machine.axes[i].name + "=" + core::number_text(v) +
+                     " is outside the software limits [" + core::number_text(lim.neg) + ", " +
+                     core::number_text(lim.pos) + "] (P-AXIS-00177/00178)"});
+      };
+      AxisMask reported = 0;
+      for (std::size_t i = 0; i < machine.axes.size() && i < kMaxAxes; ++i) {
+        if (((m->programmed >> i) & 1u) == 0 || !outside(i, m->end[i])) continue;
+        report(i, "target", m->end[i]);
+        reported |= AxisMask{1} << i;
+      }
+      if (m->arc) {
+        // The circle's extent: its extreme points on each plane axis that the arc passes.
+        const auto [lo, hi] = arc_extent(*m);
+        for (int k = 0; k < 2; ++k) {
+          const std::size_t i = k == 0 ? m->arc->axis_1 : m->arc->axis_2;
+          if (i >= machine.axes.size() || ((reported >> i) & 1u) != 0) continue;
+          if (outside(i, lo[k])) report(i, "the arc reaches", lo[k]);
+          if (outside(i, hi[k])) report(i, "the arc reaches", hi[k]);
         }
+      }
+    } else if (const auto* p = std::get_if<SplinePoint>(&c->body)) {
+      // A spline vertex is a programmed point like a motion's target (the curve between
+      // vertices is the planner's: an Akima or B-spline may overshoot them).
+      if (!(p->frame == CoordFrame{})) continue;
+      for (std::size_t i = 0; i < machine.axes.size() && i < kMaxAxes; ++i) {
+        const auto& lim = machine.axes[i].soft_limits;
+        const double v = p->point[i];
+        if (((p->programmed >> i) & 1u) == 0 || (v >= lim.neg && v <= lim.pos)) continue;
+        out.add({core::Severity::error,
+                 interp.file_name(c->file),
+                 {c->line, 1},
+                 "NC4601",
+                 "spline point " + machine.axes[i].name + "=" + core::number_text(v) +
+                     " is outside the software limits [" + core::number_text(lim.neg) + ", " +
+                     core::number_text(lim.pos) + "] (P-AXIS-00177/00178)"});
       }
     }
   }

@@ -3,14 +3,17 @@
 //
 // Inputs: Commands (and the machine for axis names). Outputs: one line per command:
 // `<line>: <KIND> <fields>`; numbers fixed with 4 decimals, locale-independent (std::to_chars);
-// axis values as NAME=value for the machine's path axes in machine order.
+// axis values as NAME=value for the machine's path axes in machine order; a motion ends with
+// its frame and start point.
 // Also check_semantics(): the semantic check behind `ncsim check` (interprets the whole
 // program; stops at the first error, or after a command count set by the program's length
 // with a note, so endless loops terminate).
 
+#include <array>
 #include <cstdint>
 #include <ostream>
 #include <string>
+#include <utility>
 
 #include "core/diagnostic.hpp"
 #include "core/source_file.hpp"
@@ -20,6 +23,8 @@
 
 namespace ncsim::interp {
 
+/// One trace line. A motion ends with ` frame=<frame> start <axes>`: the frame its start, end
+/// and arc centre are in, and its start point.
 std::string to_trace_line(const Command& command, const machines::Machine& machine);
 
 struct TraceOptions {
@@ -27,10 +32,18 @@ struct TraceOptions {
   std::uint64_t max_commands = 100000;  ///< --max-commands; 0: no limit
 };
 
-/// Writes the command stream of `file` to `out`, one line per command. Returns 0 when the
-/// program ran to its end (or to max_commands), 1 on a program error (added to `diags`).
+/// Writes the command stream of `file` to `out`, one line per command, answering each Barrier
+/// from the decode-only state. Returns 0 when the program ran to its end, 1 on a program
+/// error (added to `diags`). A trace cut at max_commands while the program goes on ends with
+/// the line `# truncated after N commands (--max-commands)` and note NC4903 in `diags`; it
+/// still returns 0 (nothing is wrong with the program; the marker says the record is partial).
 int write_trace(const core::SourceFile& file, const machines::Machine& machine,
                 const TraceOptions& options, std::ostream& out, core::DiagnosticList& diags);
+
+/// Smallest and largest coordinates an arc motion reaches on its two plane axes
+/// ({axis_1, axis_2} each), in the motion's frame: its end points and every quadrant point
+/// the arc passes.
+std::pair<std::array<double, 2>, std::array<double, 2>> arc_extent(const Motion& motion);
 
 /// Commands a golden trace holds at most (endless programs are cut there).
 inline constexpr std::uint64_t kGoldenCommands = 400;

@@ -247,6 +247,12 @@ bool Variables::write_string(const VarRef& ref, std::string value, VarError& err
     error = {"NC4014", describe(ref) + " is not a STRING variable"};
     return false;
   }
+  if (value.size() > v->max_length) {
+    error = {"NC4014", "a text of " + std::to_string(value.size()) + " characters is longer than " +
+                           describe(ref) + " holds (STRING[" + std::to_string(v->max_length) +
+                           "])"};
+    return false;
+  }
   v->text = std::move(value);
   return true;
 }

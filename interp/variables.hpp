@@ -31,11 +31,16 @@ inline constexpr std::uint32_t kMaxPArrayIndex = 100000;
 /// of all implicitly created P arrays together (20400).
 inline constexpr std::size_t kMaxArrayElements = 1'000'000;
 
+/// STRING[1..126] (isg-language.md §3.5): the longest declared string; also the limit of a
+/// STRING declared without a length.
+inline constexpr std::uint32_t kMaxStringLength = 126;
+
 struct Variable {
   grammar::ast::VarType type = grammar::ast::VarType::real64;
-  std::vector<std::uint32_t> dims;  ///< empty: scalar
-  std::vector<double> values;       ///< row-major
-  std::string text;                 ///< STRING value
+  std::vector<std::uint32_t> dims;              ///< empty: scalar
+  std::vector<double> values;                   ///< row-major
+  std::string text;                             ///< STRING value
+  std::uint32_t max_length = kMaxStringLength;  ///< STRING[n]: at most n characters
   bool is_string() const { return type == grammar::ast::VarType::string; }
 };
 

@@ -85,9 +85,12 @@ expect "a --ve without = is a usage error" 2 '' 'NAME=value' -- \
   check "$fixtures/external.nc" --ve OFFSET
 "$ncsim" trace --max-commands 3 "$root/programs/pick_and_place/pick_and_place.nc" \
   >"$work/endless" 2>/dev/null
+status=$?
 checks=$((checks + 1))
-if [[ $(wc -l <"$work/endless") -eq 3 ]]; then
-  echo "ok   --max-commands cuts an endless program"
+# Three commands, then the marker line (issue 9 defect 7); status 0: the program is fine.
+if [[ $status -eq 0 && $(wc -l <"$work/endless") -eq 4 ]] &&
+  [[ $(tail -1 "$work/endless") == "# truncated after 3 commands (--max-commands)" ]]; then
+  echo "ok   --max-commands cuts an endless program and says so"
 else
   failures=$((failures + 1)); echo "FAIL --max-commands cuts an endless program"
   cat "$work/endless"

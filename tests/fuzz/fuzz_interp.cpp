@@ -110,11 +110,9 @@ bool numbers_finite(const interp::Command& c) {
     }
     return ok;
   }
-  if (const auto* s = std::get_if<Spline>(&c.body)) {
-    for (const auto& p : s->points) {
-      if (!finite(p)) return false;
-    }
-    return std::isfinite(s->feed);
+  if (const auto* s = std::get_if<SplineBegin>(&c.body)) return finite(s->start);
+  if (const auto* s = std::get_if<SplinePoint>(&c.body)) {
+    return finite(s->point) && std::isfinite(s->feed);
   }
   if (const auto* d = std::get_if<Dwell>(&c.body)) return std::isfinite(d->seconds);
   if (const auto* a = std::get_if<AxisCommand>(&c.body)) {
@@ -130,7 +128,7 @@ void run_interpreter(const core::SourceFile& file, const machines::Machine& m,
                      const interp::Options& options) {
   interp::Interpreter interp(file, m, options);
   for (std::size_t n = 0; n < kMaxCommands; ++n) {
-    auto c = interp.next();
+    auto c = interp.next_decode_only();
     if (!c) break;
     if (c->file == 0 && c->line > file.line_count()) fail("command line beyond the file");
     if (!numbers_finite(*c)) fail("non-finite number in: " + interp::to_trace_line(*c, m));
