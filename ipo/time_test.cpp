@@ -76,6 +76,25 @@ TEST_CASE("a G60 block shows its settling time; a dwell its time; distances are 
   CHECK(r.split.rapid == 0.0);
 }
 
+TEST_CASE("G00 runs at the axes' rapid velocity and its time counts as rapid") {
+  auto ax = axis(100.0, 1000.0, 1e5);
+  ax.v_rapid = 50.0;
+  Config cfg;
+  cfg.axes = {ax, ax, ax};
+  planner::Move g00 = line(vec(0, 0), vec(100, 0), 0.0, 1);
+  g00.rapid = true;
+  ListSource src({g00, line(vec(100, 0), vec(100, 10), 20.0, 2)});
+  std::vector<BlockTime> blocks;
+  const TimeResult r = machining_time(cfg, src, [&](const BlockTime& b) { blocks.push_back(b); });
+  REQUIRE(blocks.size() == 2);
+  CHECK(blocks[0].feed_reached == 50.0);
+  CHECK(blocks[0].split.feed == 0.0);
+  CHECK(blocks[0].split.rapid == blocks[0].time);
+  CHECK(blocks[1].split.rapid == 0.0);
+  CHECK(r.split.rapid == blocks[0].time);
+  CHECK(r.split.rapid + r.split.feed == r.total);
+}
+
 TEST_CASE("max_cycles stops an endless program") {
   struct Forever final : Source {
     double x = 0.0;
