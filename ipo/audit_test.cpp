@@ -109,3 +109,44 @@ TEST_CASE("a point off its programmed block beyond the tolerance is a contour vi
 }
 
 }  // namespace
+
+namespace {
+
+/// Runs `items` through the interpolator into `audit`.
+void run_into(Audit& audit, const std::vector<planner::AxisLimits>& axes, std::vector<Item> items) {
+  ListSource src(std::move(items));
+  Config cfg;
+  cfg.axes = axes;
+  PathInterpolator ipo(cfg, src, &audit);
+  while (ipo.step() == Status::running) {
+  }
+}
+
+TEST_CASE("a reversal at C0 = 1, A = 10000, T = 1 ms: link 5 mm/s, step 10 mm/s = the bound") {
+  const std::vector<planner::AxisLimits> axes(3, axis(200.0, 10000.0, 1e5, 1.0));
+  Audit audit(axes, 0.001, AxisVec{});
+  run_into(audit, axes,
+           {line(vec(0, 0), vec(50, 0), 100.0, 1), line(vec(50, 0), vec(0, 0), 100.0, 2)});
+  const Verdict& v = audit.verdict();
+  CHECK(v.ok());
+  REQUIRE(v.step_count == 1);
+  CHECK(v.steps[0].v_link == doctest::Approx(5.0).epsilon(1e-12));
+  CHECK(v.steps[0].value == doctest::Approx(10.0).epsilon(1e-12));
+  CHECK(v.steps[0].bound == doctest::Approx(10.0).epsilon(1e-12));
+  CHECK(v.steps[0].line == 1);
+}
+
+TEST_CASE("a real run audited against tighter limits than it was planned with fails") {
+  const std::vector<planner::AxisLimits> planned(3, axis(100.0, 1000.0, 1e5));
+  const std::vector<planner::AxisLimits> tighter(3, axis(100.0, 500.0, 1e5));
+  Audit audit(tighter, 0.001, AxisVec{});
+  run_into(audit, planned, {line(vec(0, 0), vec(80, 0), 90.0, 5)});
+  const Verdict& v = audit.verdict();
+  CHECK_FALSE(v.ok());
+  CHECK(has(v, Quantity::acceleration, Method::closed_form));
+  CHECK(has(v, Quantity::acceleration, Method::finite_difference));
+  CHECK(v.violations.front().line == 5);
+  CHECK(v.axes[0].a_closed > 500.0);
+}
+
+}  // namespace
