@@ -25,9 +25,11 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -55,6 +57,16 @@ class Source {
  public:
   virtual ~Source() = default;
   virtual bool next(Item& out) = 0;
+};
+
+/// A Source from a callable `bool(Item&)` (the adapter from the interpreter's commands).
+class CallbackSource final : public Source {
+ public:
+  explicit CallbackSource(std::function<bool(Item&)> next) : next_(std::move(next)) {}
+  bool next(Item& out) override { return next_(out); }
+
+ private:
+  std::function<bool(Item&)> next_;
 };
 
 /// Exact-stop settings of one axis (G60 / G360).

@@ -266,6 +266,22 @@ TEST_CASE("a malformed Move or a failing source ends the stream with an error, n
   CHECK(ipo2.message().find("G04") != std::string::npos);
 }
 
+TEST_CASE("a callback source: the program ends when it returns false") {
+  const auto ax = axis(100.0, 1000.0, 1e5);
+  int calls = 0;
+  CallbackSource src([&](Item& out) {
+    if (calls == 2) return false;
+    const double x = 10.0 * calls++;
+    out = line(vec(x, 0), vec(x + 10.0, 0), 20.0, static_cast<std::uint32_t>(calls));
+    return true;
+  });
+  PathInterpolator ipo(config({ax, ax, ax}), src);
+  while (ipo.step() == Status::running) {
+  }
+  CHECK(ipo.cycle().x[0] == 20.0);
+  CHECK(ipo.cycle().line == 2);
+}
+
 TEST_CASE("configuration errors throw naming the parameter") {
   const auto ax = axis(100.0, 1000.0, 1e5);
   ListSource src({});
