@@ -1,0 +1,153 @@
+// ipo/audit: limits and contour checks on the cycle stream (see the header).
+
+#include "ipo/audit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "ipo/contour.hpp"
+
+namespace ncsim::ipo {
+
+namespace {
+
+constexpr double kRelative = 1e-9;        // values within limit (1 + 1e-9) pass
+constexpr double kPositionNoise = 1e-10;  // [mm] absolute rounding of a cycle position
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+}  // namespace
+
+Audit::Audit(std::span<const planner::AxisLimits> axes, double t_cycle, const AxisVec& start)
+    : limits_(axes.begin(), axes.end()), t_(t_cycle) {
+  if (limits_.empty() || limits_.size() > planner::kMaxAxes)
+    throw std::invalid_argument("ipo audit: " + std::to_string(limits_.size()) + " axes");
+  if (!(t_cycle > 0.0) || !std::isfinite(t_cycle))
+    throw std::invalid_argument("ipo audit: cycle must be > 0, got " + std::to_string(t_cycle));
+  verdict_.axes.resize(limits_.size());
+  for (std::size_t i = 0; i < limits_.size(); ++i) {
+    const planner::AxisLimits& l = limits_[i];
+    AxisAudit& a = verdict_.axes[i];
+    a.v_limit = std::min(l.v_max, l.v_reference);
+    a.a_limit = std::max(l.a_max, l.d_max);
+    a.j_limit = l.j_max;
+  }
+  x_.resize(limits_.size());
+  for (std::size_t i = 0; i < limits_.size(); ++i)
+    x_[i].fill(start[i]);
+  dv_.assign(limits_.size(), {0.0, 0.0, 0.0});
+  da_.assign(limits_.size(), {0.0, 0.0, 0.0});
+}
+
+void Audit::violate(Quantity q, Method m, std::size_t axis, double t, std::uint32_t line,
+                    double value, double limit) {
+  ++verdict_.violation_count;
+  if (verdict_.violations.size() < kMaxListed)
+    verdict_.violations.push_back(
+        Violation{q, m, static_cast<std::uint8_t>(axis), t, line, value, limit});
+}
+
+void Audit::check(Quantity q, Method m, std::size_t axis, const Cycle& c, double value,
+                  double limit) {
+  if (!(value <= limit * (1.0 + kRelative))) violate(q, m, axis, c.t, c.line, value, limit);
+}
+
+void Audit::on_joint(const Joint& jt) {
+  for (std::size_t i = 0; i < limits_.size(); ++i) {
+    const planner::AxisLimits& l = limits_[i];
+    const double dv = std::abs(jt.dv[i]);
+    const double da = std::abs(jt.da[i]);
+    dv_[i][0] += dv;
+    da_[i][0] += da;
+    // VELOJUMP (000 l.108): |dv_i| <= C0_i min(A+_i, |A-_i|) T.
+    if (dv > 1e-12 * std::max(1.0, jt.v)) {
+      const double bound = l.c0 * std::min(l.a_max, l.d_max) * t_;
+      ++verdict_.step_count;
+      if (verdict_.steps.size() < kMaxListed)
+        verdict_.steps.push_back(
+            Step{Quantity::velojump, static_cast<std::uint8_t>(i), jt.t, jt.line, jt.v, dv, bound});
+      if (!(dv <= bound * (1.0 + kRelative)))
+        violate(Quantity::velojump, Method::formula, i, jt.t, jt.line, dv, bound);
+    }
+    // C1 (P-CHAN-00009 semantics, docs/planner.md): |da_i| <= j_i T. At C0 the acceleration
+    // step of a curved neighbour comes with the velocity step and has no rule of its own.
+    if (jt.cls == planner::TransitionClass::c1 && jt.jerk_limited &&
+        da > 1e-12 * std::max(1.0, jt.v * jt.v)) {
+      const double bound = l.j_max * t_;
+      ++verdict_.step_count;
+      if (verdict_.steps.size() < kMaxListed)
+        verdict_.steps.push_back(
+            Step{Quantity::c1_step, static_cast<std::uint8_t>(i), jt.t, jt.line, jt.v, da, bound});
+      if (!(da <= bound * (1.0 + kRelative)))
+        violate(Quantity::c1_step, Method::formula, i, jt.t, jt.line, da, bound);
+    }
+  }
+}
+
+void Audit::on_cycle(const Cycle& c) {
+  ++verdict_.cycles;
+  jerk_limited_[0] = c.interval_jerk_limited;
+  const double t2 = t_ * t_;
+  const double t3 = t2 * t_;
+  for (std::size_t i = 0; i < limits_.size(); ++i) {
+    const planner::AxisLimits& l = limits_[i];
+    AxisAudit& aa = verdict_.axes[i];
+    // Closed form.
+    const double v = std::abs(c.v[i]);
+    const double a = std::abs(c.a[i]);
+    const double j = std::abs(c.j[i]);
+    aa.v_closed = std::max(aa.v_closed, v);
+    aa.a_closed = std::max(aa.a_closed, a);
+    check(Quantity::velocity, Method::closed_form, i, c, v, aa.v_limit);
+    const bool speeding_up = c.a[i] * c.v[i] >= 0.0;
+    check(Quantity::acceleration, Method::closed_form, i, c, a, speeding_up ? l.a_max : l.d_max);
+    if (c.jerk_limited) {
+      aa.j_closed = std::max(aa.j_closed, j);
+      check(Quantity::jerk, Method::closed_form, i, c, j, l.j_max);
+    }
+    // Finite differences of the positions.
+    std::array<double, 4>& x = x_[i];
+    x = {c.x[i], x[0], x[1], x[2]};
+    const double mag = std::max({std::abs(x[0]), std::abs(x[1]), std::abs(x[2]), std::abs(x[3])});
+    const double noise = kPositionNoise + 4.0 * kEps * mag;
+    const double vd = std::abs(x[0] - x[1]) / t_;
+    const double ad = std::abs(x[0] - 2.0 * x[1] + x[2]) / t2;
+    const double jd = std::abs(x[0] - 3.0 * x[1] + 3.0 * x[2] - x[3]) / t3;
+    const double dv2 = dv_[i][0] + dv_[i][1];
+    const double dv3 = dv2 + dv_[i][2];
+    const double da3 = da_[i][0] + da_[i][1] + da_[i][2];
+    aa.v_diff = std::max(aa.v_diff, vd);
+    check(Quantity::velocity, Method::finite_difference, i, c, vd, aa.v_limit + 2.0 * noise / t_);
+    if (dv2 == 0.0) aa.a_diff = std::max(aa.a_diff, ad);
+    check(Quantity::acceleration, Method::finite_difference, i, c, ad,
+          aa.a_limit + dv2 / t_ + 4.0 * noise / t2);
+    if (jerk_limited_[0] && jerk_limited_[1] && jerk_limited_[2]) {
+      if (dv3 == 0.0 && da3 == 0.0) aa.j_diff = std::max(aa.j_diff, jd);
+      check(Quantity::jerk, Method::finite_difference, i, c, jd,
+            aa.j_limit + da3 / t_ + dv3 / t2 + 8.0 * noise / t3);
+    }
+    dv_[i] = {0.0, dv_[i][0], dv_[i][1]};
+    da_[i] = {0.0, da_[i][0], da_[i][1]};
+  }
+  jerk_limited_ = {true, jerk_limited_[0], jerk_limited_[1]};
+  // Contour.
+  if (c.activity == Activity::motion && c.programmed) {
+    const planner::Move& m = *c.programmed;
+    double mag = 1.0;
+    for (std::size_t i = 0; i < limits_.size(); ++i)
+      mag = std::max(mag, std::abs(c.x[i]));
+    const double tol = m.contour == planner::Contour::tolerance ? m.path_dev : 0.0;
+    const double allowed = tol + 1e-9 * mag;
+    const double d = contour_distance(m, c.x);
+    verdict_.contour_max = std::max(verdict_.contour_max, d);
+    if (d / allowed > contour_ratio_) {
+      contour_ratio_ = d / allowed;
+      verdict_.contour_tolerance = tol;
+    }
+    if (!(d <= allowed)) violate(Quantity::contour, Method::geometry, 0, c.t, c.line, d, allowed);
+  }
+}
+
+}  // namespace ncsim::ipo

@@ -1,0 +1,115 @@
+#pragma once
+// ipo/audit: checks the cycle stream against the axis limits and the programmed contour.
+//
+// Purpose: prove on every run that no limit is broken (`--audit`, exit 3 on a violation).
+// Inputs: the cycle stream of a PathInterpolator (as its Sink, Detail::axes), the axis limits,
+// the cycle T, the start position.
+// Outputs: a Verdict: per axis the largest |v|, |a|, |j| from the closed-form values and from
+// finite differences of the cycle positions, against the limits; the largest distance from the
+// programmed contour; the documented VELOJUMP / C1 steps, listed apart and checked against
+// their formulas; every violation with time and line (docs/ipo.md "The audit").
+// Method:
+//  - closed form: v_i, a_i, j_i of each cycle sample (chain rule on the path state) against
+//    v_max (and the reference velocity), A+ when the axis speeds up / A- when it slows down,
+//    and J (jerk-limited slopes only: STEP is acceleration-limited by definition);
+//  - finite differences of the positions: v = dx / T, a = d2x / T^2, j = d3x / T^3 are
+//    weighted means of the continuous v, a, j over their stencil, so they are bounded by the
+//    same limits wherever v and a are continuous. A joint with a velocity step dv (C0,
+//    VELOJUMP) adds at most |dv| / T to a and |dv| / T^2 to j in the cycles whose stencil holds
+//    it; an acceleration step da (C1, or C0 on curves) adds at most |da| / T to j. Those cycles
+//    are checked against limit + that allowance; the steps themselves against their formulas:
+//    |dv_i| <= C0_i min(A+_i, |A-_i|) T (000 l.108), |da_i| <= j_i T at C1 (P-CHAN-00009);
+//  - contour: each motion sample's distance from its programmed block (contour.hpp), within
+//    PATH_DEV where the block ends in a tolerance ball (a blend point is within r of the
+//    corner, which lies on the block), else within rounding.
+// Rounding: values within limit (1 + 1e-9) pass; finite differences also get the effect of a
+// position noise of 1e-10 mm + 4 eps |x| (2 / T, 4 / T^2, 8 / T^3).
+// Memory: the lists keep the first kMaxListed entries; counts and maxima cover everything.
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "ipo/interpolator.hpp"
+
+namespace ncsim::ipo {
+
+enum class Quantity : std::uint8_t { velocity, acceleration, jerk, contour, velojump, c1_step };
+enum class Method : std::uint8_t {
+  closed_form,        ///< the interpolator's v, a, j at the cycle instant
+  finite_difference,  ///< differences of the cycle positions
+  geometry,           ///< distance from the programmed block
+  formula,            ///< a documented step against its formula
+};
+
+/// One axis's extremes.
+struct AxisAudit {
+  double v_closed = 0.0, a_closed = 0.0, j_closed = 0.0;  ///< max |v|, |a|, |j| closed form
+  double v_diff = 0.0, a_diff = 0.0, j_diff = 0.0;        ///< max |v|, |a|, |j| finite differences
+  double v_limit = 0.0;                                   ///< min(v_max, v_reference) [mm/s]
+  double a_limit = 0.0;                                   ///< max(A+, |A-|) [mm/s^2]
+  double j_limit = 0.0;                                   ///< J [mm/s^3]
+};
+
+struct Violation {
+  Quantity quantity = Quantity::velocity;
+  Method method = Method::closed_form;
+  std::uint8_t axis = 0;
+  double t = 0.0;  ///< [s]
+  std::uint32_t line = 0;
+  double value = 0.0;  ///< |value| measured
+  double limit = 0.0;  ///< what was allowed
+};
+
+/// A documented step at a joint (the largest over the axes relative to its bound).
+struct Step {
+  Quantity quantity = Quantity::velojump;  ///< velojump (dv) or c1_step (da)
+  std::uint8_t axis = 0;
+  double t = 0.0;  ///< [s]
+  std::uint32_t line = 0;
+  double v_link = 0.0;  ///< path velocity at the joint [mm/s]
+  double value = 0.0;   ///< |dv_i| [mm/s] or |da_i| [mm/s^2]
+  double bound = 0.0;   ///< C0_i min(A+_i, |A-_i|) T, or j_i T
+};
+
+struct Verdict {
+  std::vector<AxisAudit> axes;
+  double contour_max = 0.0;        ///< largest distance from the programmed contour [mm]
+  double contour_tolerance = 0.0;  ///< tolerance where the largest ratio to it was seen [mm]
+  std::uint64_t cycles = 0;        ///< cycles audited
+  std::uint64_t step_count = 0;    ///< documented steps seen
+  std::vector<Step> steps;         ///< the first kMaxListed
+  std::uint64_t violation_count = 0;
+  std::vector<Violation> violations;  ///< the first kMaxListed
+  bool ok() const noexcept { return violation_count == 0; }
+};
+
+class Audit final : public Sink {
+ public:
+  static constexpr std::size_t kMaxListed = 1000;
+
+  /// Throws std::invalid_argument when `axes` is empty or larger than kMaxAxes, or t_cycle <= 0.
+  Audit(std::span<const planner::AxisLimits> axes, double t_cycle, const AxisVec& start);
+
+  void on_joint(const Joint& joint) override;
+  void on_cycle(const Cycle& cycle) override;
+  const Verdict& verdict() const noexcept { return verdict_; }
+
+ private:
+  void violate(Quantity q, Method m, std::size_t axis, double t, std::uint32_t line, double value,
+               double limit);
+  void check(Quantity q, Method m, std::size_t axis, const Cycle& c, double value, double limit);
+
+  std::vector<planner::AxisLimits> limits_;
+  double t_ = 0.001;
+  Verdict verdict_;
+  std::vector<std::array<double, 4>> x_;  ///< last positions per axis, x_[i][0] newest
+  /// Step allowances of the last three cycles per axis: sum |dv|, sum |da|; [0] is this cycle.
+  std::vector<std::array<double, 3>> dv_;
+  std::vector<std::array<double, 3>> da_;
+  std::array<bool, 3> jerk_limited_{true, true, true};
+  double contour_ratio_ = 0.0;
+};
+
+}  // namespace ncsim::ipo

@@ -1,0 +1,152 @@
+// Audit: it finds what is wrong (velocity, acceleration, jerk from the closed form and from
+// finite differences, a VELOJUMP step above its formula, a point off the contour), with time
+// and line; and passes a clean corner with its documented step listed apart.
+
+#include "ipo/audit.hpp"
+
+#include <doctest/doctest.h>
+
+#include <vector>
+
+#include "ipo/test_support.hpp"
+
+namespace {
+
+using namespace ncsim::ipo;
+using namespace ncsim::ipo::test;
+namespace planner = ncsim::planner;
+
+bool has(const Verdict& v, Quantity q, Method m) {
+  for (const Violation& x : v.violations)
+    if (x.quantity == q && x.method == m) return true;
+  return false;
+}
+
+Cycle motion(std::uint64_t k, double t, const planner::Move* prog) {
+  Cycle c;
+  c.index = k;
+  c.t = static_cast<double>(k) * t;
+  c.line = prog ? prog->line : 0;
+  c.programmed = prog;
+  return c;
+}
+
+TEST_CASE("the audit reports a position stream that moves too fast, with time and line") {
+  const std::vector<planner::AxisLimits> axes = {axis(10.0, 100.0, 1e4)};
+  Audit audit(axes, 0.001, AxisVec{});
+  planner::Move m = line(AxisVec{}, vec(1.0, 0.0), 10.0, 7);
+  m.axis_count = 1;
+  for (int k = 1; k <= 5; ++k) {
+    Cycle c = motion(static_cast<std::uint64_t>(k), 0.001, &m);
+    c.x[0] = 0.02 * k;  // 20 mm/s
+    audit.on_cycle(c);
+  }
+  const Verdict& v = audit.verdict();
+  CHECK_FALSE(v.ok());
+  CHECK(has(v, Quantity::velocity, Method::finite_difference));
+  CHECK(has(v, Quantity::acceleration, Method::finite_difference));  // the start from rest
+  CHECK(v.violations.front().line == 7);
+  CHECK(v.violations.front().t == doctest::Approx(0.001));
+  CHECK(v.axes[0].v_diff == doctest::Approx(20.0));
+}
+
+TEST_CASE("the audit checks the closed-form values: A+ speeding up, A- slowing down, J") {
+  std::vector<planner::AxisLimits> axes = {axis(100.0, 100.0, 1e4)};
+  axes[0].d_max = 50.0;
+  Audit audit(axes, 0.001, AxisVec{});
+  Cycle c = motion(1, 0.001, nullptr);
+  c.v[0] = 10.0;
+  c.a[0] = -60.0;  // slowing down beyond A- = 50
+  audit.on_cycle(c);
+  CHECK(has(audit.verdict(), Quantity::acceleration, Method::closed_form));
+  Audit audit2(axes, 0.001, AxisVec{});
+  c.a[0] = 60.0;  // speeding up within A+ = 100
+  c.j[0] = 2e4;   // beyond J
+  audit2.on_cycle(c);
+  CHECK_FALSE(has(audit2.verdict(), Quantity::acceleration, Method::closed_form));
+  CHECK(has(audit2.verdict(), Quantity::jerk, Method::closed_form));
+  Audit audit3(axes, 0.001, AxisVec{});
+  c.jerk_limited = false;  // STEP slope: jerk not audited
+  audit3.on_cycle(c);
+  CHECK_FALSE(has(audit3.verdict(), Quantity::jerk, Method::closed_form));
+}
+
+TEST_CASE("a VELOJUMP step above C0 min(A+, A-) T is a violation; one within is listed apart") {
+  const std::vector<planner::AxisLimits> axes = {axis(100.0, 10000.0, 1e5, 1.0),
+                                                 axis(100.0, 10000.0, 1e5, 1.0)};
+  Audit audit(axes, 0.001, AxisVec{});
+  Joint j;
+  j.cls = planner::TransitionClass::c0;
+  j.v = 10.0;
+  j.dv[0] = -10.0;
+  j.dv[1] = 10.0;
+  j.line = 4;
+  audit.on_joint(j);
+  CHECK(audit.verdict().ok());
+  CHECK(audit.verdict().step_count == 2);
+  CHECK(audit.verdict().steps[0].bound == doctest::Approx(10.0));
+  j.dv[1] = 10.5;
+  audit.on_joint(j);
+  CHECK(has(audit.verdict(), Quantity::velojump, Method::formula));
+}
+
+TEST_CASE("a point off its programmed block beyond the tolerance is a contour violation") {
+  const std::vector<planner::AxisLimits> axes = {axis(1e3, 1e6, 1e9), axis(1e3, 1e6, 1e9)};
+  planner::Move m = line(AxisVec{}, vec(10.0, 0.0), 10.0, 3);
+  m.axis_count = 2;
+  Audit audit(axes, 0.001, AxisVec{});
+  Cycle c = motion(1, 0.001, &m);
+  c.x[0] = 0.001;
+  c.x[1] = 0.001;  // 1 um off a block without tolerance ball
+  audit.on_cycle(c);
+  CHECK(has(audit.verdict(), Quantity::contour, Method::geometry));
+  m.contour = planner::Contour::tolerance;
+  m.path_dev = 0.01;
+  Audit audit2(axes, 0.001, AxisVec{});
+  audit2.on_cycle(c);
+  CHECK(audit2.verdict().ok());
+  CHECK(audit2.verdict().contour_max == doctest::Approx(0.001));
+}
+
+}  // namespace
+
+namespace {
+
+/// Runs `items` through the interpolator into `audit`.
+void run_into(Audit& audit, const std::vector<planner::AxisLimits>& axes, std::vector<Item> items) {
+  ListSource src(std::move(items));
+  Config cfg;
+  cfg.axes = axes;
+  PathInterpolator ipo(cfg, src, &audit);
+  while (ipo.step() == Status::running) {
+  }
+}
+
+TEST_CASE("a reversal at C0 = 1, A = 10000, T = 1 ms: link 5 mm/s, step 10 mm/s = the bound") {
+  const std::vector<planner::AxisLimits> axes(3, axis(200.0, 10000.0, 1e5, 1.0));
+  Audit audit(axes, 0.001, AxisVec{});
+  run_into(audit, axes,
+           {line(vec(0, 0), vec(50, 0), 100.0, 1), line(vec(50, 0), vec(0, 0), 100.0, 2)});
+  const Verdict& v = audit.verdict();
+  CHECK(v.ok());
+  REQUIRE(v.step_count == 1);
+  CHECK(v.steps[0].v_link == doctest::Approx(5.0).epsilon(1e-12));
+  CHECK(v.steps[0].value == doctest::Approx(10.0).epsilon(1e-12));
+  CHECK(v.steps[0].bound == doctest::Approx(10.0).epsilon(1e-12));
+  CHECK(v.steps[0].line == 1);
+}
+
+TEST_CASE("a real run audited against tighter limits than it was planned with fails") {
+  const std::vector<planner::AxisLimits> planned(3, axis(100.0, 1000.0, 1e5));
+  const std::vector<planner::AxisLimits> tighter(3, axis(100.0, 500.0, 1e5));
+  Audit audit(tighter, 0.001, AxisVec{});
+  run_into(audit, planned, {line(vec(0, 0), vec(80, 0), 90.0, 5)});
+  const Verdict& v = audit.verdict();
+  CHECK_FALSE(v.ok());
+  CHECK(has(v, Quantity::acceleration, Method::closed_form));
+  CHECK(has(v, Quantity::acceleration, Method::finite_difference));
+  CHECK(v.violations.front().line == 5);
+  CHECK(v.axes[0].a_closed > 500.0);
+}
+
+}  // namespace

@@ -1,0 +1,313 @@
+// ipo/interpolator: the cycle loop (see the header and docs/ipo.md).
+
+#include "ipo/interpolator.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <exception>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace ncsim::ipo {
+
+namespace {
+
+/// Moves shorter than this carry no path (planner/prepare.cpp drops them with the same rule).
+constexpr double kMinLength = 1e-9;  // [mm]
+/// Items pulled in one fill() at most: a source of endless zero-length blocks cannot hang a
+/// cycle (the cycle is reported as Activity::starved).
+constexpr std::size_t kMaxPulls = 4096;
+/// Dwells of zero cycles handled in one step() at most (then a starved cycle).
+constexpr int kMaxZeroWaits = 1024;
+/// Tolerance of the rounding of a wait to whole cycles [cycles]: 0.1 s at 1 ms is 100 cycles.
+constexpr double kCycleRounding = 1e-9;
+
+std::size_t ring_size(std::size_t window) {
+  return std::bit_ceil((window + 2) * planner::Chain::kMaxParts + 16);
+}
+
+}  // namespace
+
+PathInterpolator::PathInterpolator(Config config, Source& source, Sink* sink)
+    : axes_(std::move(config.axes)),
+      exact_stop_(std::move(config.exact_stop)),
+      t_(config.channel.t_cycle),
+      detail_(config.detail),
+      source_(source),
+      sink_(sink),
+      prep_(axes_, config.channel),
+      window_(config.window, config.channel.t_cycle),
+      item_(planner::Move{}) {
+  if (axes_.empty() || axes_.size() > planner::kMaxAxes)
+    throw std::invalid_argument("ipo: " + std::to_string(axes_.size()) + " axes (1.." +
+                                std::to_string(planner::kMaxAxes) + ")");
+  if (exact_stop_.empty()) exact_stop_.resize(axes_.size());
+  if (exact_stop_.size() != axes_.size())
+    throw std::invalid_argument("ipo: " + std::to_string(exact_stop_.size()) +
+                                " exact-stop settings for " + std::to_string(axes_.size()) +
+                                " axes");
+  for (std::size_t i = 0; i < exact_stop_.size(); ++i) {
+    const ExactStop& e = exact_stop_[i];
+    if (!(e.window > 0.0) || !std::isfinite(e.window))
+      throw std::invalid_argument("ipo: axis " + std::to_string(i) +
+                                  ": exact-stop window P-AXIS-00236 must be > 0, got " +
+                                  std::to_string(e.window));
+    if (!(e.settle_time >= 0.0) || !std::isfinite(e.settle_time))
+      throw std::invalid_argument("ipo: axis " + std::to_string(i) +
+                                  ": settling time P-AXIS-00532 must be >= 0, got " +
+                                  std::to_string(e.settle_time));
+  }
+  ring_.resize(ring_size(config.window));
+  ring_mask_ = ring_.size() - 1;
+  ready_.reserve(16);
+  cycle_.x = config.start;
+}
+
+Status PathInterpolator::fail(const char* what) noexcept {
+  failed_ = true;
+  if (message_.empty()) message_ = what;
+  return Status::error;
+}
+
+std::uint64_t PathInterpolator::cycles_for(double seconds) const noexcept {
+  if (!(seconds > 0.0)) return 0;
+  return static_cast<std::uint64_t>(std::ceil(seconds / t_ - kCycleRounding));
+}
+
+bool PathInterpolator::fill() noexcept {
+  try {
+    std::size_t pulls = 0;
+    while (!window_.full()) {
+      if (ready_next_ < ready_.size()) {
+        window_.push(std::move(ready_[ready_next_++]));
+        continue;
+      }
+      ready_.clear();
+      ready_next_ = 0;
+      if (source_done_ || dwell_) break;
+      if (next_token_ - oldest_ >= ring_.size()) break;  // every ring slot still referenced
+      if (pulls++ >= kMaxPulls) break;
+      if (!source_.next(item_)) {
+        source_done_ = true;
+        prep_.finish(ready_);
+        continue;
+      }
+      if (const Dwell* d = std::get_if<Dwell>(&item_)) {
+        if (!(d->seconds >= 0.0) || !std::isfinite(d->seconds)) {
+          message_ = "G04 dwell time must be a finite number >= 0, got " +
+                     std::to_string(d->seconds) + " s (line " + std::to_string(d->line) + ")";
+          return false;
+        }
+        dwell_ = PendingDwell{d->seconds, d->line};
+        prep_.finish(ready_);  // the path stops before the dwell
+        continue;
+      }
+      planner::Move& m = std::get<planner::Move>(item_);
+      // A zero-length line takes no ring slot: the planner drops it (passing on its stop).
+      if (!m.arc && planner::Segment::from_move(m).length() < kMinLength) {
+        m.line = static_cast<std::uint32_t>(next_token_);
+        prep_.push(m, ready_);
+        continue;
+      }
+      ring_[next_token_ & ring_mask_] = m;
+      m.line = static_cast<std::uint32_t>(next_token_);  // the planner carries the token
+      ++next_token_;
+      prep_.push(m, ready_);
+    }
+    return true;
+  } catch (const std::exception& e) {
+    message_ = e.what();
+    return false;
+  } catch (...) {
+    message_ = "ipo: the program source failed";
+    return false;
+  }
+}
+
+bool PathInterpolator::start_next() noexcept {
+  if (window_.empty()) return false;
+  begin(window_.pop());
+  return true;
+}
+
+void PathInterpolator::begin(planner::PlannedSegment&& next) noexcept {
+  cur_ = std::move(next);
+  prof_ = planner::profile(cur_);
+  dur_ = prof_.time();
+  t_in_ = 0.0;
+  s_prev_ = 0.0;
+  active_ = true;
+  interval_jerk_limited_ = interval_jerk_limited_ && std::isfinite(cur_.segment.limits.j_max);
+  // The oldest Move still referenced (tokens are the low 32 bits of next_token_'s count).
+  const std::uint32_t token = cur_.segment.path.line_at(0.0);
+  oldest_ =
+      next_token_ - static_cast<std::uint32_t>(static_cast<std::uint32_t>(next_token_) - token);
+}
+
+void PathInterpolator::sample(double distance) noexcept {
+  Cycle& c = cycle_;
+  const planner::Chain& path = cur_.segment.path;
+  const double length = path.length();
+  planner::PathState ps = planner::profile_at(prof_, cur_.v_entry, t_in_);
+  ps.s = t_in_ >= dur_ ? length : std::clamp(ps.s, 0.0, length);
+  distance += ps.s - s_prev_;
+  s_prev_ = ps.s;
+  const planner::Move& prog = programmed(path.line_at(ps.s));
+  c.activity = Activity::motion;
+  c.line = prog.line;
+  c.rapid = prog.rapid;
+  c.jerk_limited = planner::jerk_limited(prog.slope);
+  c.feed = cur_.segment.limits.v_programmed;
+  c.path = ps;
+  c.distance = distance;
+  c.interval_jerk_limited = interval_jerk_limited_;
+  c.programmed = &prog;
+  if (detail_ != Detail::axes) return;
+  const planner::PathPoint p = path.at(ps.s);
+  const double v = ps.v;
+  const double a = ps.a;
+  const double j = ps.j;
+  for (std::size_t i = 0; i < axes_.size(); ++i) {
+    c.x[i] = p.x[i];
+    c.v[i] = p.d1[i] * v;
+    c.a[i] = p.d2[i] * v * v + p.d1[i] * a;
+    c.j[i] = p.d3[i] * v * v * v + 3.0 * p.d2[i] * v * a + p.d1[i] * j;
+  }
+}
+
+void PathInterpolator::stop_at_end(double distance) noexcept {
+  active_ = false;
+  t_in_ = dur_;
+  sample(distance);
+  Cycle& c = cycle_;
+  c.path.v = 0.0;
+  c.path.a = 0.0;
+  c.path.j = 0.0;
+  c.v = {};
+  c.a = {};
+  c.j = {};
+  // A programmed stop ends exactly on the block's end point (no trimming at a stop).
+  if (cur_.segment.stop != planner::StopReason::none && detail_ == Detail::axes)
+    for (std::size_t i = 0; i < axes_.size(); ++i)
+      c.x[i] = c.programmed->end[i];
+}
+
+void PathInterpolator::report_joint(const planner::PlannedSegment& next, double t_joint) noexcept {
+  const planner::Chain& in = cur_.segment.path;
+  const planner::PathPoint p_in = in.at(in.length());
+  const planner::PathPoint p_out = next.segment.path.at(0.0);
+  const planner::Move& prog_in = programmed(in.line_at(in.length()));
+  const planner::Move& prog_out = programmed(next.segment.path.line_at(0.0));
+  Joint jt;
+  jt.t = t_joint;
+  jt.line = prog_in.line;
+  jt.cls = cur_.segment.joint;
+  jt.stop = cur_.segment.stop;
+  jt.jerk_limited = planner::jerk_limited(prog_in.slope) && planner::jerk_limited(prog_out.slope);
+  // Both sides are planned with a = 0 at a window-entry joint: only the geometry steps.
+  const double v = next.v_entry;
+  jt.v = v;
+  for (std::size_t i = 0; i < axes_.size(); ++i) {
+    jt.dv[i] = v * (p_out.d1[i] - p_in.d1[i]);
+    jt.da[i] = v * v * (p_out.d2[i] - p_in.d2[i]);
+  }
+  sink_->on_joint(jt);
+}
+
+Status PathInterpolator::step() noexcept {
+  if (failed_) return Status::error;
+  if (finished_) return Status::finished;
+  Cycle& c = cycle_;
+  const double t_start = static_cast<double>(c.index) * t_;
+  for (int zero_waits = 0;; ++zero_waits) {
+    if (wait_left_ > 0 || zero_waits >= kMaxZeroWaits) {
+      const bool waiting = wait_left_ > 0;
+      if (waiting) --wait_left_;
+      ++c.index;
+      c.t = static_cast<double>(c.index) * t_;
+      c.activity = waiting ? wait_kind_ : Activity::starved;
+      c.line = waiting ? wait_line_ : c.line;
+      c.path.v = c.path.a = c.path.j = 0.0;
+      c.interval_jerk_limited = true;
+      c.distance = 0.0;
+      c.v = {};
+      c.a = {};
+      c.j = {};
+      c.programmed = nullptr;
+      if (sink_) sink_->on_cycle(c);
+      return Status::running;
+    }
+    if (active_) break;
+    if (!fill()) return fail("ipo: the program source failed");
+    if (start_next()) break;
+    if (dwell_) {
+      wait_left_ = cycles_for(dwell_->seconds);
+      wait_kind_ = Activity::dwell;
+      wait_line_ = dwell_->line;
+      dwell_.reset();
+      continue;
+    }
+    if (source_done_) {
+      finished_ = true;
+      return Status::finished;
+    }
+    zero_waits = kMaxZeroWaits - 1;  // nothing moves yet: a starved cycle
+  }
+
+  // Motion: advance the path by exactly T, carrying the rest of T across segment ends.
+  interval_jerk_limited_ = std::isfinite(cur_.segment.limits.j_max);
+  double rest = t_;
+  double distance = 0.0;
+  for (;;) {
+    if (t_in_ + rest < dur_) {
+      t_in_ += rest;
+      break;
+    }
+    rest = std::max(0.0, rest - (dur_ - t_in_));
+    t_in_ = dur_;
+    const double length = cur_.segment.path.length();
+    distance += length - s_prev_;
+    s_prev_ = length;
+    if (cur_.segment.stop == planner::StopReason::exact_stop) {
+      // G60 / G360: the rest of the cycle is not carried; window and settling time follow.
+      stop_at_end(distance);
+      const planner::Move& prog = *c.programmed;
+      double settle = 0.0;
+      for (std::size_t i = 0; i < axes_.size(); ++i) {
+        const bool moved = prog.end[i] != prog.start[i] ||
+                           (prog.arc && (prog.arc->axis_1 == i || prog.arc->axis_2 == i));
+        // The window P-AXIS-00236 is reached when the command is on the target (no following
+        // error model yet; docs/ipo.md): only the settling time P-AXIS-00532 is waited for.
+        if (moved) settle = std::max(settle, exact_stop_[i].settle_time);
+      }
+      wait_left_ = cycles_for(settle);
+      wait_kind_ = Activity::exact_stop;
+      wait_line_ = c.line;
+      ++c.index;
+      c.t = static_cast<double>(c.index) * t_;
+      if (sink_) sink_->on_cycle(c);
+      return Status::running;
+    }
+    if (!fill()) return fail("ipo: the program source failed");
+    if (window_.empty()) {
+      // Program end, a dwell, or nothing known beyond: the path stands; the cycle is whole.
+      stop_at_end(distance);
+      ++c.index;
+      c.t = static_cast<double>(c.index) * t_;
+      if (sink_) sink_->on_cycle(c);
+      return Status::running;
+    }
+    planner::PlannedSegment next = window_.pop();
+    if (sink_ && detail_ == Detail::axes) report_joint(next, t_start + (t_ - rest));
+    begin(std::move(next));
+  }
+  sample(distance);
+  ++c.index;
+  c.t = static_cast<double>(c.index) * t_;
+  if (sink_) sink_->on_cycle(c);
+  return Status::running;
+}
+
+}  // namespace ncsim::ipo

@@ -1,0 +1,227 @@
+#pragma once
+// ipo/interpolator: the path interpolator, one interpolation cycle T per step().
+//
+// Purpose: turn a stream of planner::Move values (and dwells) into the cycle stream the axes
+// receive: per cycle the path state s, v, a, j from the closed-form jerk-limited segment
+// profiles (planner::profile / profile_at), the point on the curve for every axis, the axis
+// velocity, acceleration and jerk by the chain rule, and the source line of the active block.
+// Inputs: a Source the interpolator pulls from lazily (it may be endless), the axis limits
+// (planner::AxisLimits), the exact-stop settings of each axis (P-AXIS-00236 window,
+// P-AXIS-00532 settling time), the channel settings (cycle T) and the look-ahead window size
+// (P-CHAN-00650).
+// Outputs: step() returns the Cycle record of the cycle just done; an optional Sink sees every
+// cycle and every joint the path passes (with its documented VELOJUMP / C1 step).
+// Method (docs/ipo.md): the look-ahead window is kept full (planner::Preparer +
+// planner::LookAhead); the active segment's profile is evaluated at the local time t_in; a
+// cycle that reaches the end of a segment carries the rest of T into the next one exactly, so
+// the motion time of a program is the sum of its profile durations. Time is rounded up to
+// whole cycles only where the path stands still by program: before a dwell (G04), at an exact
+// stop (G60 / G360: window and settling time follow) and at the program end.
+// Invariants: the per-cycle path never throws (errors from the source or a malformed Move end
+// the stream with Status::error and a message); memory is bounded by the window (a ring of
+// (N + 2) * 64 programmed Moves, N window entries, fixed at construction; the planner's chains
+// hold their parts in vectors of at most 64); positions are continuous; a stop puts the axes
+// on the programmed end point of its block bit for bit.
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "planner/lookahead.hpp"
+#include "planner/move.hpp"
+#include "planner/prepare.hpp"
+
+namespace ncsim::ipo {
+
+using planner::AxisVec;
+
+/// G04: dwell between motions [s] (the path stops before it).
+struct Dwell {
+  double seconds = 0.0;    ///< programmed dwell time [s], >= 0
+  std::uint32_t line = 0;  ///< source line of the G04 block
+};
+
+/// One item of the program stream.
+using Item = std::variant<planner::Move, Dwell>;
+
+/// Where the interpolator pulls its items from. next() fills `out` and returns true, or
+/// returns false at the end of the program. May be endless; may throw (the interpolator
+/// turns that into Status::error).
+class Source {
+ public:
+  virtual ~Source() = default;
+  virtual bool next(Item& out) = 0;
+};
+
+/// A Source from a callable `bool(Item&)` (the adapter from the interpreter's commands).
+class CallbackSource final : public Source {
+ public:
+  explicit CallbackSource(std::function<bool(Item&)> next) : next_(std::move(next)) {}
+  bool next(Item& out) override { return next_(out); }
+
+ private:
+  std::function<bool(Item&)> next_;
+};
+
+/// Exact-stop settings of one axis (G60 / G360).
+struct ExactStop {
+  double window = 0.01;      ///< P-AXIS-00236 exact-stop window [mm | deg], > 0
+  double settle_time = 0.0;  ///< P-AXIS-00532 time the axis stays in the window [s], >= 0
+};
+
+/// How much each cycle computes.
+enum class Detail : std::uint8_t {
+  path,  ///< path state and line only (`ncsim time`): no point, no axis values, no joints
+  axes,  ///< also the point, each axis's v, a, j, and the joints (run, audit)
+};
+
+struct Config {
+  std::vector<planner::AxisLimits> axes;  ///< one per machine axis in use
+  std::vector<ExactStop> exact_stop;      ///< one per axis (empty: defaults)
+  planner::ChannelLimits channel;         ///< cycle T [s], P-CHAN-00009
+  std::size_t window = 120;               ///< look-ahead entries (planner::window_size)
+  AxisVec start{};                        ///< axis positions before the first move [mm | deg]
+  Detail detail = Detail::axes;
+};
+
+/// What the channel did in a cycle.
+enum class Activity : std::uint8_t {
+  motion,      ///< the path moved (or reached its end) in this cycle
+  dwell,       ///< G04 dwell
+  exact_stop,  ///< G60 / G360: waiting for the window and the settling time
+  starved,     ///< the source gave nothing that moves (zero-length blocks only)
+};
+
+/// The cycle just done.
+struct Cycle {
+  std::uint64_t index = 0;  ///< cycles done so far, this one included
+  double t = 0.0;           ///< time at the end of this cycle [s] (index * T)
+  std::uint32_t line = 0;   ///< source line of the active block
+  Activity activity = Activity::motion;
+  bool rapid = false;                 ///< the active block is G00
+  bool jerk_limited = true;           ///< the active block's slope is TRAPEZ / SIN2 / HSC
+  bool interval_jerk_limited = true;  ///< every segment traversed in this cycle is jerk-limited
+  double feed = 0.0;                  ///< programmed path velocity of the active segment [mm/s]
+  planner::PathState path;            ///< s (from the segment start), v, a, j of the path
+  double distance = 0.0;              ///< path length covered in this cycle [mm]
+  AxisVec x{};                        ///< axis positions [mm | deg] (Detail::axes)
+  AxisVec v{};                        ///< axis velocities, closed form [mm/s]
+  AxisVec a{};                        ///< axis accelerations, closed form [mm/s^2]
+  AxisVec j{};                        ///< axis jerks, closed form [mm/s^3]
+  const planner::Move* programmed = nullptr;  ///< the block x belongs to (motion cycles)
+};
+
+/// A joint between two planned segments, passed inside a cycle (Detail::axes only).
+struct Joint {
+  double t = 0.0;          ///< time of the joint [s]
+  std::uint32_t line = 0;  ///< line of the incoming block
+  planner::TransitionClass cls = planner::TransitionClass::c0;
+  planner::StopReason stop = planner::StopReason::none;
+  bool jerk_limited = true;  ///< both sides jerk-limited slopes
+  double v = 0.0;            ///< path velocity at the joint [mm/s]
+  AxisVec dv{};              ///< axis velocity step out - in [mm/s] (VELOJUMP)
+  AxisVec da{};              ///< axis acceleration step out - in [mm/s^2] (C1, and C0 on curves)
+};
+
+/// Receives the cycle stream (audit, CSV writer).
+class Sink {
+ public:
+  virtual ~Sink() = default;
+  /// A joint passed within the cycle that on_cycle() reports next.
+  virtual void on_joint(const Joint& joint) = 0;
+  virtual void on_cycle(const Cycle& cycle) = 0;
+};
+
+enum class Status : std::uint8_t {
+  running,   ///< a cycle was done
+  finished,  ///< the program has ended; no cycle was done
+  error,     ///< the source failed or gave a malformed Move; message() says why
+};
+
+class PathInterpolator {
+ public:
+  /// Throws std::invalid_argument (value and parameter named) on unusable limits, window,
+  /// cycle or exact-stop settings. `source` must outlive the interpolator; `sink` may be null.
+  PathInterpolator(Config config, Source& source, Sink* sink = nullptr);
+  PathInterpolator(const PathInterpolator&) = delete;
+  PathInterpolator& operator=(const PathInterpolator&) = delete;
+
+  /// Advances one interpolation cycle. Never throws.
+  Status step() noexcept;
+  /// The cycle done by the last step() that returned Status::running.
+  const Cycle& cycle() const noexcept { return cycle_; }
+  /// Why the stream ended with Status::error.
+  const std::string& message() const noexcept { return message_; }
+  double t_cycle() const noexcept { return t_; }  ///< [s]
+  std::size_t axis_count() const noexcept { return axes_.size(); }
+  const std::vector<planner::AxisLimits>& axes() const noexcept { return axes_; }
+  /// Programmed Moves the interpolator holds (ring capacity, fixed).
+  std::size_t ring_capacity() const noexcept { return ring_.size(); }
+  /// Entries in the look-ahead window now.
+  std::size_t window_fill() const noexcept { return window_.size(); }
+
+ private:
+  struct PendingDwell {
+    double seconds = 0.0;
+    std::uint32_t line = 0;
+  };
+  /// Keeps the window full: pulls items, prepares Moves, pushes segments. Returns false on error.
+  bool fill() noexcept;
+  /// Pops the next planned segment into cur_; false when the window is empty.
+  bool start_next() noexcept;
+  /// Makes `next` the active segment, at its start.
+  void begin(planner::PlannedSegment&& next) noexcept;
+  /// Fills the cycle record from cur_ at t_in_.
+  void sample(double distance) noexcept;
+  /// Reports the joint between the ending cur_ and the next segment (Detail::axes).
+  void report_joint(const planner::PlannedSegment& next, double t_joint) noexcept;
+  const planner::Move& programmed(std::uint32_t token) const noexcept {
+    return ring_[token & ring_mask_];
+  }
+  Status fail(const char* what) noexcept;
+  /// Ends the motion part of the cycle at a stop: axes exactly on the block's end point.
+  void stop_at_end(double distance) noexcept;
+  std::uint64_t cycles_for(double seconds) const noexcept;
+
+  std::vector<planner::AxisLimits> axes_;
+  std::vector<ExactStop> exact_stop_;
+  double t_ = 0.001;
+  Detail detail_ = Detail::axes;
+  Source& source_;
+  Sink* sink_ = nullptr;
+  planner::Preparer prep_;
+  planner::LookAhead window_;
+  std::vector<planner::PreparedSegment> ready_;  ///< prepared, not yet in the window
+  std::size_t ready_next_ = 0;
+  std::vector<planner::Move>
+      ring_;  ///< programmed Moves by token (Move::line given to the planner)
+  std::uint64_t ring_mask_ = 0;
+  std::uint64_t next_token_ = 0;  ///< token of the next Move pulled
+  std::uint64_t oldest_ = 0;      ///< first token of the active segment
+  Item item_;
+  bool source_done_ = false;
+  bool finished_ = false;
+  bool failed_ = false;
+  std::optional<PendingDwell> dwell_;  ///< G04 after the moves in the window
+
+  bool active_ = false;  ///< cur_ is being traversed
+  planner::PlannedSegment cur_;
+  jerk::Move prof_;
+  double dur_ = 0.0;   ///< duration of cur_'s profile [s]
+  double t_in_ = 0.0;  ///< time into cur_ [s]
+  double s_prev_ = 0.0;
+  bool interval_jerk_limited_ = true;  ///< every segment visited in this cycle is jerk-limited
+  std::uint64_t wait_left_ = 0;        ///< dwell / settling cycles still to do
+  Activity wait_kind_ = Activity::dwell;
+  std::uint32_t wait_line_ = 0;
+  Cycle cycle_;
+  std::string message_;
+};
+
+}  // namespace ncsim::ipo

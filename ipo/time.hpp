@@ -1,0 +1,59 @@
+#pragma once
+// ipo/time: machining time of a program (`ncsim time`), by the same cycle loop as `run`.
+//
+// Purpose: total time and per-block times, split by what the channel did.
+// Inputs: the interpolator Config (its Detail is forced to Detail::path: no points, no sinks),
+// the program Source, an optional callback receiving each block as it completes.
+// Outputs: TimeResult (cycles, total, split) and BlockTime records in execution order.
+// Method: the PathInterpolator is stepped until the program ends; each cycle counts T for
+// the line it reports (the `line` column of `run`), so the per-block times sum to the total
+// and the total equals the number of cycles `run` writes times T, to the cycle (test).
+// A block is a run of consecutive cycles with the same line (a line executed again later, in
+// a loop, is a new record): memory stays bounded whatever the program length.
+// Invariants: total == cycles * T == rapid + feed + dwell + exact_stop + starved.
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "ipo/interpolator.hpp"
+
+namespace ncsim::ipo {
+
+/// Time by activity [s].
+struct TimeSplit {
+  double rapid = 0.0;       ///< G00 motion
+  double feed = 0.0;        ///< G01/G02/G03 motion (blends count with their incoming block)
+  double dwell = 0.0;       ///< G04
+  double exact_stop = 0.0;  ///< G60 / G360 settling after the path stopped
+  double starved = 0.0;     ///< cycles without anything to move (zero-length blocks only)
+};
+
+/// One block as executed.
+struct BlockTime {
+  std::uint32_t line = 0;
+  double time = 0.0;             ///< [s]
+  double distance = 0.0;         ///< path length covered [mm]
+  double feed_programmed = 0.0;  ///< programmed path velocity (largest seen) [mm/s]
+  double feed_reached = 0.0;     ///< largest path velocity reached [mm/s]
+  TimeSplit split;
+};
+
+struct TimeResult {
+  Status status = Status::finished;  ///< finished, or error (message)
+  std::string message;
+  bool stopped = false;  ///< max_cycles reached before the program ended
+  std::uint64_t cycles = 0;
+  double total = 0.0;     ///< cycles * T [s]
+  double distance = 0.0;  ///< path length [mm]
+  TimeSplit split;
+};
+
+/// Runs the program through the interpolator with the sinks off. `max_cycles` (0: none) stops
+/// an endless program. Throws std::invalid_argument on an unusable Config (as the
+/// interpolator does); program and source errors come back in TimeResult.
+TimeResult machining_time(Config config, Source& source,
+                          const std::function<void(const BlockTime&)>& on_block = {},
+                          std::uint64_t max_cycles = 0);
+
+}  // namespace ncsim::ipo
