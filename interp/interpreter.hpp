@@ -35,8 +35,9 @@ namespace ncsim::interp {
 struct Options {
   std::map<std::string, double> external;     ///< V.E. values by name (upper case)
   PersistentVariables* persistent = nullptr;  ///< V.S. store shared by runs; null: own
-  /// Blocks decoded in a row without motion or time passing before NC4901 (0: no limit).
-  std::uint64_t max_blocks_without_motion = 10'000'000;
+  /// Blocks decoded in a row without motion or time passing before NC4903 (0: no limit). A
+  /// loop that returns to the same state without motion is NC4901 long before that.
+  std::uint64_t max_blocks_without_motion = 100'000'000;
   std::uint32_t skip_levels = 0;   ///< bit n-1 set: skip level /n active
   int max_subroutine_depth = 20;   ///< nesting limit of LL/L calls (NC4302)
   int macro_recursion_limit = 16;  ///< string macro expansion passes (NC4006)
@@ -62,6 +63,11 @@ class Interpreter {
   const core::Diagnostic* error() const { return error_ ? &*error_ : nullptr; }
   /// Warnings and notes met so far (the error, if any, is the last item).
   const core::DiagnosticList& diagnostics() const { return diags_; }
+  /// The line from which the program repeats forever: the decoder came back to the same block
+  /// with the same variables, control stack and modal state after motion or time passed
+  /// (a program that runs endlessly, e.g. a `$WHILE 1` pick-and-place cycle); nullopt while
+  /// no such repeat was seen. Without motion in between the repeat is error NC4901 instead.
+  std::optional<std::uint32_t> endless_from() const;
   /// File name of Command::file (0: the main program).
   const std::string& file_name(std::uint16_t file) const;
 

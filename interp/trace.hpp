@@ -5,8 +5,8 @@
 // `<line>: <KIND> <fields>`; numbers fixed with 4 decimals, locale-independent (std::to_chars);
 // axis values as NAME=value for the machine's path axes in machine order.
 // Also check_semantics(): the semantic check behind `ncsim check` (interprets the whole
-// program; stops at the first error, or after a command count set by the program's length
-// with a note, so endless loops terminate).
+// program to its end; stops at the first error, at the first repeat of an endless program
+// with note NC4904, or after kCheckMaxCommands with warning NC4902).
 
 #include <cstdint>
 #include <ostream>
@@ -35,11 +35,9 @@ int write_trace(const core::SourceFile& file, const machines::Machine& machine,
 /// Commands a golden trace holds at most (endless programs are cut there).
 inline constexpr std::uint64_t kGoldenCommands = 400;
 
-/// Commands check_semantics interprets before it stops with note NC4902: at least
-/// kCheckMaxCommands, and kCheckCommandsPerLine per line of the program, so that a long
-/// program without loops is checked to its end and only loops that run on are cut.
-inline constexpr std::uint64_t kCheckMaxCommands = 100000;
-inline constexpr std::uint64_t kCheckCommandsPerLine = 4;
+/// Commands check_semantics interprets at most: a program that neither ends nor returns to an
+/// earlier state (Interpreter::endless_from) within them gets warning NC4902.
+inline constexpr std::uint64_t kCheckMaxCommands = 50'000'000;
 
 /// Semantic check: interprets the program without motion and reports its errors (axes the
 /// program names, kinematic ids, conveyor rules, arcs, ...). Syntax errors are left to
