@@ -149,6 +149,10 @@ class Report {
       err_ << core::format(d, file_);
       if (d.severity == core::Severity::warning) ++warnings_;
     }
+    if (list.dropped() > 0) {
+      err_ << file_.name() << ": note: " << list.dropped()
+           << " more diagnostics not shown (the first " << list.items().size() << " are above)\n";
+    }
     errors_ += list.error_count();
     return list.error_count();
   }

@@ -42,8 +42,9 @@ struct BlockParser::Impl {
   std::size_t pos = 0;     // start of the next line
   std::uint32_t line = 1;  // its line number
   Mode mode = Mode::normal;
-  core::SourceLoc mode_loc;  // the #VAR / #COMMENT BEGIN that opened the mode
-  bool single_line = true;   // the current block holds no line end (see split)
+  core::SourceLoc mode_loc;     // the #VAR / #COMMENT BEGIN that opened the mode
+  bool single_line = true;      // the current block holds no line end (see split)
+  std::size_t released_at = 0;  // position of the last SourceFile::release_before
   State state;
 
   explicit Impl(const core::SourceFile& f) : file(f), text(f.text()) {}
@@ -156,6 +157,10 @@ struct BlockParser::Impl {
       std::uint32_t lines = 1;
       const auto [begin, end] = split(lines, single_line);
       line += lines;
+      if (begin >= released_at + core::SourceFile::kKeepBehind) {
+        file.release_before(begin);
+        released_at = begin;
+      }
       const std::string_view block_text = text.substr(begin, end - begin);
       const std::string_view head = trimmed(block_text);
       if (mode == Mode::comment) {
@@ -238,6 +243,18 @@ BlockParser::~BlockParser() = default;
 
 bool BlockParser::next(ast::Block& out, core::DiagnosticList& diags) {
   return impl_->next(out, diags);
+}
+
+BlockParser::Position BlockParser::position() const {
+  return {impl_->pos, impl_->line, static_cast<std::uint8_t>(impl_->mode), impl_->mode_loc};
+}
+
+void BlockParser::seek(const Position& at) {
+  impl_->pos = at.offset;
+  impl_->line = at.line;
+  impl_->mode = static_cast<Mode>(at.mode);
+  impl_->mode_loc = at.mode_loc;
+  impl_->released_at = at.offset;
 }
 
 }  // namespace ncsim::grammar
