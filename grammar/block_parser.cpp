@@ -34,6 +34,24 @@ bool is_command(std::string_view line, std::string_view a, std::string_view b) {
   return iequals(lex::ident(trimmed(line.substr(first.size()))), b);
 }
 
+/// True when `text` holds only blanks and comments (`( ... )`, nested, and `;` to the end).
+bool comment_only(std::string_view text) {
+  std::size_t k = 0;
+  for (;;) {
+    while (k < text.size() && blank(text[k]))
+      ++k;
+    if (k == text.size() || text[k] == ';') return true;
+    if (text[k] != '(') return false;
+    int depth = 0;
+    for (; k < text.size(); ++k) {
+      if (text[k] == '(') ++depth;
+      if (text[k] == ')' && --depth == 0) break;
+    }
+    if (k == text.size()) return false;  // unclosed: the parser reports it
+    ++k;
+  }
+}
+
 }  // namespace
 
 struct BlockParser::Impl {
@@ -143,6 +161,16 @@ struct BlockParser::Impl {
   }
 
   bool next(ast::Block& out, core::DiagnosticList& diags) {
+    if (pos == 0 && text.substr(0, 3) == "\xEF\xBB\xBF") {
+      // Decision (docs/language.md): a UTF-8 byte order mark is skipped with a note.
+      pos = 3;
+      diags.add({core::Severity::note,
+                 file.name(),
+                 {1, 1},
+                 "NC1006",
+                 "the file starts with a UTF-8 byte order mark; ncsim skips it (columns of "
+                 "line 1 count its 3 bytes)"});
+    }
     for (;;) {
       if (pos >= text.size()) {
         if (mode == Mode::comment) {
@@ -173,6 +201,9 @@ struct BlockParser::Impl {
       out.offset = begin;
       out.text = block_text;
       if (block_text.size() > kMaxBlockLength) {
+        // Decision (docs/language.md): a comment-only line is no block, whatever its length,
+        // with `( ... )` as with `;`.
+        if (comment_only(block_text)) continue;
         out.has_error = true;
         report(diags, file.loc_of(begin + kMaxBlockLength), "NC1003",
                "block longer than " + std::to_string(kMaxBlockLength) + " characters (" +

@@ -116,6 +116,15 @@ TEST_CASE("property: $GOTO/$IF/$WHILE across cache evictions follow the program'
   }
 }
 
+TEST_CASE(
+    "a computed block number beyond the literal range is NC4016 (as NC1005 for N99999999999)") {
+  const auto r = test::run("%t\nN[10**20] G01 X1 F100\nM30\n");
+  CHECK(r.error_id == "NC4016");
+  CHECK(r.error_line == 2);
+  CHECK(test::run("%t\nN[-1] G01 X1 F100\nM30\n").error_id == "NC4016");
+  CHECK(test::run("%t\nN[4294967295] G01 X1 F100\nM30\n").error_id.empty());
+}
+
 /// Runs `text` as a program in interp/testdata/ (next to the subroutine files there).
 test::Run run_in_testdata(const std::string& text) {
   const std::string name = (test::source_root() / "interp/testdata/virtual.nc").string();

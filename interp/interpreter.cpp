@@ -4,6 +4,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "core/number_text.hpp"
 #include "grammar/check.hpp"
 #include "grammar/keywords.hpp"
 #include "interp/interpreter_impl.hpp"
@@ -747,7 +748,15 @@ bool Interpreter::Impl::step() {
     return true;
   }
   if (block->number && block->number->expr != ast::kNoNode) {
-    if (!eval(*block, block->number->expr)) return false;
+    const core::SourceLoc at = block->number->loc;
+    const auto n = eval(*block, block->number->expr);
+    if (!n) return false;
+    // The range of a literal block number (NC1005), for a computed one too.
+    if (!(*n >= 0.0 && *n <= 4294967295.0)) {
+      return fail(at, "NC4016",
+                  "block number N[...] = " + core::number_text(*n) +
+                      " out of range: 0 to 4294967295, as for a literal");
+    }
   }
   if (const auto* c = std::get_if<ast::Control>(&block->body)) return run_control(*block, *c);
   if (const auto* h = std::get_if<ast::HashCommand>(&block->body)) return run_hash(*block, *h);
