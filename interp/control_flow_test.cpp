@@ -116,6 +116,30 @@ TEST_CASE("property: $GOTO/$IF/$WHILE across cache evictions follow the program'
   }
 }
 
+TEST_CASE("the block index holds one checkpoint per 256 blocks, not an entry per block") {
+  const core::SourceFile file("long.nc",
+                              "%t\nG00 X0 Y0 Z0\n" + repeat("G01 X1 F100\n", 300000) + "M30\n");
+  Interpreter interp(file, test::machine());
+  std::size_t commands = 0;
+  while (interp.next())
+    ++commands;
+  CHECK(commands == 300002);
+  CHECK(interp.footprint().indexed_blocks <= 300002 / BlockSource::kCheckpointStride + 2);
+}
+
+TEST_CASE("the $GOTO memo stays bounded however many $GOTO sites run") {
+  // 70,000 forward $GOTO sites, each run once: more than the memo holds.
+  std::string text = "%t\n";
+  for (int i = 0; i < 70000; ++i)
+    text += "$GOTO [L" + std::to_string(i) + "]\n[L" + std::to_string(i) + "] P1 = 1\n";
+  const core::SourceFile file("sites.nc", text + "G01 X1 F100\nM30\n");
+  Interpreter interp(file, test::machine());
+  while (interp.next()) {
+  }
+  CHECK(interp.error() == nullptr);
+  CHECK(interp.footprint().jump_memo <= 65536);
+}
+
 TEST_CASE(
     "a computed block number beyond the literal range is NC4016 (as NC1005 for N99999999999)") {
   const auto r = test::run("%t\nN[10**20] G01 X1 F100\nM30\n");

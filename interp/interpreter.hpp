@@ -6,10 +6,11 @@
 // Inputs: the program file, the machine (axis names, conveyor, kinematics), Options (V.E.
 // values, persistent V.S. store, limits). Outputs: `next()` gives one Command at a time; after
 // End or after an error the stream ends (`error()` then names the problem with its position).
-// Memory: the file text, a 12-byte index entry per block seen (BlockSource), a bounded block
-// cache, one frame per open loop / $SWITCH / subroutine level, and the variables the program
-// creates. Nothing grows with the number of loop passes: an endless `$WHILE [TRUE]` runs in
-// constant memory for as long as the consumer pulls.
+// Memory: a bounded block cache and one 24-byte checkpoint per 256 blocks seen (BlockSource;
+// the text stays in the mapped file), one frame per open loop / $SWITCH / subroutine level,
+// bounded jump memos, and the variables the program creates. Nothing grows with the number
+// of loop passes: an endless `$WHILE [TRUE]` runs in constant memory for as long as the
+// consumer pulls.
 // Invariants: commands come out in program order; each carries its source line and the modal
 // snapshot in force; per-command code never throws (program errors are diagnostics).
 
