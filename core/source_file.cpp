@@ -44,7 +44,8 @@ SourceFile::SourceFile(SourceFile&& o) noexcept
       map_(std::exchange(o.map_, nullptr)),
       size_(std::exchange(o.size_, 0)),
       sparse_(std::move(o.sparse_)),
-      indexed_all_(o.indexed_all_) {}
+      indexed_all_(o.indexed_all_),
+      line_total_(o.line_total_) {}
 
 SourceFile& SourceFile::operator=(SourceFile&& o) noexcept {
   if (this != &o) {
@@ -55,6 +56,7 @@ SourceFile& SourceFile::operator=(SourceFile&& o) noexcept {
     size_ = std::exchange(o.size_, 0);
     sparse_ = std::move(o.sparse_);
     indexed_all_ = o.indexed_all_;
+    line_total_ = o.line_total_;
   }
   return *this;
 }
@@ -162,6 +164,7 @@ std::string_view SourceFile::line_text(std::uint32_t line) const {
 }
 
 std::uint32_t SourceFile::line_count() const {
+  if (line_total_ != 0) return line_total_;
   index_to(std::numeric_limits<std::uint32_t>::max(), size_);
   const char* const begin = data();
   const char* const end = begin + size_;
@@ -169,7 +172,8 @@ std::uint32_t SourceFile::line_count() const {
   std::size_t lines = (sparse_.size() - 1) * kLineStride + 1;
   while ((p = next_line(p, end)) != nullptr)
     ++lines;
-  return saturate(lines);
+  line_total_ = saturate(lines);
+  return line_total_;
 }
 
 }  // namespace ncsim::core

@@ -51,7 +51,7 @@ class SourceFile {
   std::size_t line_start(std::uint32_t line) const;
   /// The text of a 1-based line without its line end; empty if the line does not exist.
   std::string_view line_text(std::uint32_t line) const;
-  /// Lines of the file (scans the whole file once).
+  /// Lines of the file (scans the whole file at the first call).
   std::uint32_t line_count() const;
 
   /// Bytes a reader keeps resident behind its position (its block, the echo of a diagnostic).
@@ -75,6 +75,7 @@ class SourceFile {
   // Sparse line index: sparse_[i] is the offset of line i * kLineStride + 1.
   mutable std::vector<std::size_t> sparse_;
   mutable bool indexed_all_ = false;
+  mutable std::uint32_t line_total_ = 0;  // line_count(), once computed
 };
 
 }  // namespace ncsim::core
