@@ -224,7 +224,8 @@ core::DiagnosticList check_semantics(const core::SourceFile& file, const machine
   Interpreter interp(file, machine, options);
   core::DiagnosticList out;
   // Finite programs are checked to their end; an endless one up to its first repeat.
-  const std::uint64_t max_commands = kCheckMaxCommands;
+  const std::uint64_t max_commands =
+      std::max<std::uint64_t>(kCheckMaxCommands, kCheckCommandsPerLine * file.line_count());
   std::uint64_t count = 0;
   bool ended = false;
   while (count < max_commands && !interp.endless_from()) {

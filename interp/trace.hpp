@@ -35,9 +35,12 @@ int write_trace(const core::SourceFile& file, const machines::Machine& machine,
 /// Commands a golden trace holds at most (endless programs are cut there).
 inline constexpr std::uint64_t kGoldenCommands = 400;
 
-/// Commands check_semantics interprets at most: a program that neither ends nor returns to an
-/// earlier state (Interpreter::endless_from) within them gets warning NC4902.
+/// Commands check_semantics interprets at most: kCheckMaxCommands, or kCheckCommandsPerLine
+/// per line of the program if that is more (a long straight program is checked to its end).
+/// A program that neither ends nor returns to an earlier state (Interpreter::endless_from)
+/// within them gets warning NC4902.
 inline constexpr std::uint64_t kCheckMaxCommands = 50'000'000;
+inline constexpr std::uint64_t kCheckCommandsPerLine = 4;
 
 /// Semantic check: interprets the program without motion and reports its errors (axes the
 /// program names, kinematic ids, conveyor rules, arcs, ...). Syntax errors are left to
