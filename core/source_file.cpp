@@ -102,7 +102,7 @@ void SourceFile::index_to(std::uint32_t line, std::size_t offset) const {
   const std::size_t entry = line == 0 ? 0 : (line - 1) / kLineStride;
   while (!indexed_all_ && sparse_.size() - 1 < entry && sparse_.back() <= offset) {
     const char* p = begin + sparse_.back();
-    if (sparse_.size() % 4096 == 0) release_before(sparse_.back());  // a long scan
+    if (sparse_.size() % 64 == 0) release_before(sparse_.back());  // a long scan
     std::uint32_t k = 0;
     for (; k < kLineStride && p != nullptr; ++k)
       p = next_line(p, end);
