@@ -3,7 +3,10 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <iostream>
+#include <iterator>
 #include <ostream>
+#include <stdexcept>
 #include <system_error>
 #include <variant>
 
@@ -24,8 +27,14 @@ fs::path source_root() {
   return NCSIM_SOURCE_ROOT;
 }
 
+// `-` names standard input (read whole into memory; a file is read in place).
+bool is_stdin(const fs::path& path) {
+  return path == "-";
+}
+
 // A program file must be an existing regular file; anything else is a usage error.
 std::optional<std::string> program_file_problem(const fs::path& path) {
+  if (is_stdin(path)) return std::nullopt;
   std::error_code ec;
   const auto status = fs::status(path, ec);
   if (ec || !fs::exists(status)) return "no such file: '" + path.string() + "'";
@@ -38,7 +47,8 @@ std::optional<std::string> program_file_problem(const fs::path& path) {
 // the `machine` file names none (reported on `err`).
 std::optional<fs::path> machine_folder(const ProgramOptions& options, std::ostream& err) {
   if (options.machine_dir) return *options.machine_dir;
-  const fs::path named = options.program.parent_path() / "machine";
+  const fs::path named =
+      (is_stdin(options.program) ? fs::path(".") : options.program.parent_path()) / "machine";
   std::string name(machines::kDefaultMachine);
   if (fs::is_regular_file(named)) {
     std::ifstream in(named);
@@ -72,9 +82,20 @@ std::optional<std::string> parse_external(const std::vector<std::string>& items,
     if (ec != std::errc{} || end != text.data() + text.size() || !std::isfinite(value)) {
       return "--ve " + name + ": '" + text + "' is not a number";
     }
-    options.external[name] = value;
+    // Decision (docs/decisions.md): a name given twice is a usage error, not last-wins.
+    if (!options.external.emplace(name, value).second) {
+      return "--ve " + name + " is given more than once";
+    }
   }
   return std::nullopt;
+}
+
+// The program text: the file, or standard input for `-` (named "<stdin>").
+core::SourceFile load_program(const fs::path& path) {
+  if (!is_stdin(path)) return core::SourceFile::load(path);
+  std::string text(std::istreambuf_iterator<char>(std::cin), {});
+  if (std::cin.bad()) throw std::runtime_error("cannot read standard input");
+  return core::SourceFile("<stdin>", std::move(text));
 }
 
 // The program and its machine, loaded and syntax-checked: what every subcommand starts from.
@@ -111,7 +132,7 @@ std::variant<Loaded, int> load(const ProgramOptions& options, std::ostream& err)
     err << "ncsim: error: machine '" << machine_dir->string() << "' could not be loaded\n";
     return kExitUsage;
   }
-  core::SourceFile file = core::SourceFile::load(options.program);
+  core::SourceFile file = load_program(options.program);
   core::DiagnosticList syntax = grammar::check_program(file);
   return Loaded{std::move(file), std::move(*loaded.machine), std::move(interp_options),
                 std::move(syntax)};
@@ -128,6 +149,10 @@ class Report {
       err_ << core::format(d, file_);
       if (d.severity == core::Severity::warning) ++warnings_;
     }
+    if (list.dropped() > 0) {
+      err_ << file_.name() << ": note: " << list.dropped()
+           << " more diagnostics not shown (the first " << list.items().size() << " are above)\n";
+    }
     errors_ += list.error_count();
     return list.error_count();
   }
@@ -137,10 +162,23 @@ class Report {
   int verdict(std::ostream& out, std::string_view what = {}) const {
     if (errors_ > 0) {
       err_ << file_.name() << ": " << count(errors_, "error") << warning_text() << '\n';
-      return kExitProgramErrors;
+      return finish(out, kExitProgramErrors);
     }
     out << file_.name() << ": ok" << what << warning_text() << '\n';
-    return kExitOk;
+    return finish(out, kExitOk);
+  }
+
+  /// `status`, unless writing to `out` or `err` failed (disk full, closed pipe): then a
+  /// message (if stderr still takes one) and kExitUsage.
+  int finish(std::ostream& out, int status) const {
+    out.flush();
+    err_.flush();
+    if (!out.good()) {
+      err_ << "ncsim: error: cannot write the output (disk full or closed pipe?)\n";
+      err_.flush();
+      return kExitUsage;
+    }
+    return err_.good() ? status : kExitUsage;
   }
 
  private:
@@ -171,7 +209,7 @@ int run_check(const CheckOptions& options, std::ostream& out, std::ostream& err)
       err << "ncsim: error: " << *problem << '\n';
       return kExitUsage;
     }
-    const core::SourceFile file = core::SourceFile::load(options.program.program);
+    const core::SourceFile file = load_program(options.program.program);
     Report report(file, err);
     report.print(grammar::check_program(file));
     return report.verdict(out, " (syntax)");
@@ -183,10 +221,16 @@ int run_check(const CheckOptions& options, std::ostream& out, std::ostream& err)
 
   Report report(in.file, err);
   // Semantics need a program that parses: the interpreter would stop at the first syntax error.
+  std::string what;
   if (report.print(in.syntax) == 0) {
-    report.print(interp::check_semantics(in.file, in.machine, in.interp));
+    const core::DiagnosticList semantics = interp::check_semantics(in.file, in.machine, in.interp);
+    report.print(semantics);
+    for (const core::Diagnostic& d : semantics.items()) {
+      if (d.id == "NC4904") what = " (runs endlessly from line " + std::to_string(d.loc.line) + ")";
+      if (d.id == "NC4902") what = " up to the command limit (not checked to its end)";
+    }
   }
-  return report.verdict(out);
+  return report.verdict(out, what);
 }
 
 int run_trace(const TraceOptions& options, std::ostream& out, std::ostream& err) {
@@ -202,7 +246,7 @@ int run_trace(const TraceOptions& options, std::ostream& out, std::ostream& err)
   core::DiagnosticList diagnostics;
   const int status = interp::write_trace(in.file, in.machine, trace_options, out, diagnostics);
   report.print(diagnostics);
-  return status == 0 ? kExitOk : kExitProgramErrors;
+  return report.finish(out, status == 0 ? kExitOk : kExitProgramErrors);
 }
 
 }  // namespace ncsim::cli

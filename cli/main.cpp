@@ -1,6 +1,6 @@
 // The `ncsim` command: the user-facing contract of design.md §5.
 //
-//   ncsim check PROG.nc [--machine DIR] [--ve NAME=value] [--syntax-only]
+//   ncsim check PROG.nc|- [--machine DIR] [--ve NAME=value] [--syntax-only]
 //                                              exit 0 ok, 1 program errors, 2 usage
 //   ncsim trace PROG.nc [--machine DIR] [--ve NAME=value] [--max-commands N]
 //   ncsim time|run|golden ...                               not built yet: "not supported"
@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
+#include <new>
 #include <optional>
 #include <string>
 
@@ -41,12 +42,14 @@ int main(int argc, char** argv) {
 
   // Options every program-reading subcommand shares.
   const auto add_program_options = [](CLI::App& cmd, ncsim::cli::ProgramOptions& options) {
-    cmd.add_option("program", options.program, "NC program file (.nc)")->required();
+    cmd.add_option("program", options.program, "NC program file (.nc); - reads standard input")
+        ->required();
     cmd.add_option("--machine", options.machine_dir,
                    "Machine folder (parameter lists); default: the program folder's "
                    "'machine' file, else the bundled portal_3x");
     cmd.add_option("--scenario", options.scenario, "Scenario file (not supported yet)");
-    cmd.add_option("--ve", options.external, "V.E. variable value, NAME=value (repeatable)");
+    cmd.add_option("--ve", options.external,
+                   "V.E. variable value, NAME=value (repeatable; each NAME once)");
   };
 
   ncsim::cli::CheckOptions check;
@@ -65,6 +68,7 @@ int main(int argc, char** argv) {
   trace_cmd
       ->add_option("--max-commands", trace.max_commands,
                    "Stop after this many commands (0: no limit; endless programs need one)")
+      ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
 
   std::optional<std::string> unsupported;
@@ -76,6 +80,22 @@ int main(int argc, char** argv) {
   add_not_supported(app, "golden", "Regression against programs/*.golden",
                     "the interpolator and golden trajectories", unsupported, unsupported_reason);
 
+  // A first word that is no option and no subcommand is named (CLI11 would only say that a
+  // subcommand is required).
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string word = argv[1];
+    bool known = false;
+    std::string names;
+    for (const CLI::App* sub : app.get_subcommands({})) {
+      known = known || sub->get_name() == word;
+      names += (names.empty() ? "" : ", ") + sub->get_name();
+    }
+    if (!known) {
+      std::cerr << "ncsim: error: unknown command '" << word << "' (commands: " << names
+                << "; see ncsim --help)\n";
+      return kExitUsage;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -90,6 +110,10 @@ int main(int argc, char** argv) {
   try {
     if (trace_cmd->parsed()) return ncsim::cli::run_trace(trace, std::cout, std::cerr);
     return ncsim::cli::run_check(check, std::cout, std::cerr);
+  } catch (const std::bad_alloc&) {
+    std::cerr << "ncsim: error: out of memory (the program or its diagnostics need more memory "
+                 "than is available)\n";
+    return kExitUsage;
   } catch (const std::exception& e) {
     std::cerr << "ncsim: error: " << e.what() << '\n';
     return kExitUsage;

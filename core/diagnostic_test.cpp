@@ -32,3 +32,38 @@ TEST_CASE("the list counts errors, not warnings") {
   CHECK(list.error_count() == 1);
   CHECK(list.items().size() == 2);
 }
+
+TEST_CASE("raw bytes in the echo and the message print as \\xHH, valid UTF-8 stays") {
+  const Diagnostic d{Severity::error, "p.nc", {1, 5}, "NC1001", "found '\x1b'"};
+  const std::string line = std::string("X1\x1b[2J") + "\xC3\xA4" + std::string("\0\xFF", 2);
+  CHECK(format(d, line) ==
+        "p.nc:1:5: error: found '\\x1B' [NC1001]\n"
+        "X1\\x1B[2J\xC3\xA4\\x00\\xFF\n"
+        "       ^\n");
+  CHECK(printable("a\x7f\xE2\x82") == "a\\x7F\\xE2\\x82");  // DEL, a cut-off sequence
+  CHECK(printable("\xE2\x82\xAC") == "\xE2\x82\xAC");       // the euro sign
+}
+
+TEST_CASE("a long source line is echoed as a window around the column") {
+  const std::string line = std::string(100000, 'A') + "?" + std::string(100000, 'B');
+  const Diagnostic d{Severity::error, "p.nc", {1, 100001}, "NC1001", "x"};
+  const std::string text = format(d, line);
+  CHECK(text.size() < 2 * kEchoWidth + 100);
+  const auto echo_begin = text.find('\n') + 1;
+  const auto echo_end = text.find('\n', echo_begin);
+  const std::string echo = text.substr(echo_begin, echo_end - echo_begin);
+  const std::string caret = text.substr(echo_end + 1, text.size() - echo_end - 2);
+  CHECK(echo.rfind("...", 0) == 0);
+  CHECK(echo.ends_with("..."));
+  REQUIRE(caret.size() <= echo.size());
+  CHECK(echo[caret.size() - 1] == '?');  // the caret stands under the offending byte
+}
+
+TEST_CASE("a list keeps the first diagnostics up to its limit and counts the rest") {
+  DiagnosticList list(3);
+  for (int i = 0; i < 10; ++i)
+    list.add({i % 2 == 0 ? Severity::error : Severity::warning, "a", {1, 1}, "X", "m"});
+  CHECK(list.items().size() == 3);
+  CHECK(list.dropped() == 7);
+  CHECK(list.error_count() == 5);
+}

@@ -1,60 +1,179 @@
 #include "core/source_file.hpp"
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace ncsim::core {
+namespace {
+
+const char* next_line(const char* p, const char* end) {
+  const auto* nl =
+      static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
+  return nl == nullptr ? nullptr : nl + 1;
+}
+
+std::uint32_t saturate(std::size_t v) {
+  return v > std::numeric_limits<std::uint32_t>::max() ? std::numeric_limits<std::uint32_t>::max()
+                                                       : static_cast<std::uint32_t>(v);
+}
+
+}  // namespace
 
 SourceFile::SourceFile(std::string name, std::string text)
-    : name_(std::move(name)), text_(std::move(text)) {
-  // A line start after every '\n'; memchr keeps this near memory bandwidth for large files.
-  line_starts_.reserve(text_.size() / 32 + 1);
-  line_starts_.push_back(0);
-  const char* const begin = text_.data();
-  const char* const end = begin + text_.size();
-  for (const char* p = begin; p < end;) {
-    const auto* nl =
-        static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(end - p)));
-    if (nl == nullptr) break;
-    line_starts_.push_back(static_cast<std::size_t>(nl + 1 - begin));
-    p = nl + 1;
+    : name_(std::move(name)), owned_(std::move(text)), size_(owned_.size()) {
+  sparse_.push_back(0);
+}
+
+SourceFile::~SourceFile() {
+  if (map_ != nullptr) ::munmap(const_cast<char*>(map_), size_);
+}
+
+SourceFile::SourceFile(SourceFile&& o) noexcept
+    : name_(std::move(o.name_)),
+      owned_(std::move(o.owned_)),
+      map_(std::exchange(o.map_, nullptr)),
+      size_(std::exchange(o.size_, 0)),
+      sparse_(std::move(o.sparse_)),
+      indexed_all_(o.indexed_all_),
+      line_total_(o.line_total_) {}
+
+SourceFile& SourceFile::operator=(SourceFile&& o) noexcept {
+  if (this != &o) {
+    if (map_ != nullptr) ::munmap(const_cast<char*>(map_), size_);
+    name_ = std::move(o.name_);
+    owned_ = std::move(o.owned_);
+    map_ = std::exchange(o.map_, nullptr);
+    size_ = std::exchange(o.size_, 0);
+    sparse_ = std::move(o.sparse_);
+    indexed_all_ = o.indexed_all_;
+    line_total_ = o.line_total_;
   }
+  return *this;
 }
 
 SourceFile SourceFile::load(const std::filesystem::path& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) {
+    throw std::runtime_error("cannot open '" + path.string() + "': " + std::strerror(errno));
+  }
+  struct stat st {};
+  if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
+    const auto size = static_cast<std::size_t>(st.st_size);
+    void* p = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
+    ::close(fd);
+    if (p == MAP_FAILED) {
+      throw std::runtime_error("cannot map '" + path.string() + "': " + std::strerror(errno));
+    }
+    ::madvise(p, size, MADV_SEQUENTIAL);
+    SourceFile f(path.string(), std::string());
+    f.map_ = static_cast<const char*>(p);
+    f.size_ = size;
+    return f;
+  }
+  ::close(fd);
+  // Empty files, and what cannot be mapped: read as a stream.
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot open '" + path.string() + "'");
-  // One sized read into the string that the SourceFile keeps: no intermediate copies.
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  if (size < 0) throw std::runtime_error("cannot read '" + path.string() + "'");
-  in.seekg(0, std::ios::beg);
-  std::string text(static_cast<std::size_t>(size), '\0');
-  if (!in.read(text.data(), size)) throw std::runtime_error("cannot read '" + path.string() + "'");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw std::runtime_error("cannot read '" + path.string() + "'");
   return SourceFile(path.string(), std::move(text));
 }
 
+void SourceFile::release_before(std::size_t offset) const {
+  if (map_ == nullptr || offset <= kKeepBehind) return;
+  const auto page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+  const std::size_t end = (offset - kKeepBehind) / page * page;
+  if (end > 0) ::madvise(const_cast<char*>(map_), end, MADV_DONTNEED);
+}
+
+void SourceFile::index_to(std::uint32_t line, std::size_t offset) const {
+  const char* const begin = data();
+  const char* const end = begin + size_;
+  const std::size_t entry = line == 0 ? 0 : (line - 1) / kLineStride;
+  while (!indexed_all_ && sparse_.size() - 1 < entry && sparse_.back() <= offset) {
+    const char* p = begin + sparse_.back();
+    if (sparse_.size() % 64 == 0) release_before(sparse_.back());  // a long scan
+    std::uint32_t k = 0;
+    for (; k < kLineStride && p != nullptr; ++k)
+      p = next_line(p, end);
+    if (p == nullptr) {
+      indexed_all_ = true;
+      break;
+    }
+    sparse_.push_back(static_cast<std::size_t>(p - begin));
+  }
+}
+
+std::size_t SourceFile::find_line(std::uint32_t line) const {
+  index_to(line, size_);
+  const std::size_t entry = (line - 1) / kLineStride;
+  if (entry >= sparse_.size()) return size_ + 1;  // no such line
+  const char* const begin = data();
+  const char* const end = begin + size_;
+  const char* p = begin + sparse_[entry];
+  for (std::uint32_t k = (line - 1) % kLineStride; k > 0; --k) {
+    p = next_line(p, end);
+    if (p == nullptr) return size_ + 1;  // no such line
+  }
+  return static_cast<std::size_t>(p - begin);
+}
+
 SourceLoc SourceFile::loc_of(std::size_t offset) const {
-  offset = std::min(offset, text_.size());
-  const auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset);
-  const auto line = static_cast<std::size_t>(it - line_starts_.begin());  // >= 1
-  return {static_cast<std::uint32_t>(line),
-          static_cast<std::uint32_t>(offset - line_starts_[line - 1] + 1)};
+  offset = std::min(offset, size_);
+  index_to(std::numeric_limits<std::uint32_t>::max(), offset);
+  const auto it = std::upper_bound(sparse_.begin(), sparse_.end(), offset);
+  const auto entry = static_cast<std::size_t>(it - sparse_.begin()) - 1;
+  const char* const begin = data();
+  const char* const at = begin + offset;
+  const char* line_begin = begin + sparse_[entry];
+  std::size_t line = entry * kLineStride + 1;
+  for (;;) {
+    const char* next = next_line(line_begin, at);
+    if (next == nullptr) break;
+    line_begin = next;
+    ++line;
+  }
+  return {saturate(line), saturate(static_cast<std::size_t>(at - line_begin) + 1)};
 }
 
 std::size_t SourceFile::line_start(std::uint32_t line) const {
-  if (line == 0 || line > line_starts_.size()) return text_.size();
-  return line_starts_[line - 1];
+  if (line == 0) return size_;
+  return std::min(find_line(line), size_);
 }
 
 std::string_view SourceFile::line_text(std::uint32_t line) const {
-  if (line == 0 || line > line_starts_.size()) return {};
-  const std::size_t begin = line_starts_[line - 1];
-  std::size_t end = line < line_starts_.size() ? line_starts_[line] - 1 : text_.size();
-  if (end > begin && text_[end - 1] == '\r') --end;
-  return std::string_view(text_).substr(begin, end - begin);
+  if (line == 0) return {};
+  const std::size_t b = find_line(line);
+  if (b > size_) return {};
+  const char* const begin = data();
+  const char* const end = begin + size_;
+  const char* nl = next_line(begin + b, end);
+  std::size_t e = nl == nullptr ? size_ : static_cast<std::size_t>(nl - begin) - 1;
+  if (e > b && begin[e - 1] == '\r') --e;
+  return {begin + b, e - b};
+}
+
+std::uint32_t SourceFile::line_count() const {
+  if (line_total_ != 0) return line_total_;
+  index_to(std::numeric_limits<std::uint32_t>::max(), size_);
+  const char* const begin = data();
+  const char* const end = begin + size_;
+  const char* p = begin + sparse_.back();
+  std::size_t lines = (sparse_.size() - 1) * kLineStride + 1;
+  while ((p = next_line(p, end)) != nullptr)
+    ++lines;
+  line_total_ = saturate(lines);
+  return line_total_;
 }
 
 }  // namespace ncsim::core

@@ -34,6 +34,24 @@ bool is_command(std::string_view line, std::string_view a, std::string_view b) {
   return iequals(lex::ident(trimmed(line.substr(first.size()))), b);
 }
 
+/// True when `text` holds only blanks and comments (`( ... )`, nested, and `;` to the end).
+bool comment_only(std::string_view text) {
+  std::size_t k = 0;
+  for (;;) {
+    while (k < text.size() && blank(text[k]))
+      ++k;
+    if (k == text.size() || text[k] == ';') return true;
+    if (text[k] != '(') return false;
+    int depth = 0;
+    for (; k < text.size(); ++k) {
+      if (text[k] == '(') ++depth;
+      if (text[k] == ')' && --depth == 0) break;
+    }
+    if (k == text.size()) return false;  // unclosed: the parser reports it
+    ++k;
+  }
+}
+
 }  // namespace
 
 struct BlockParser::Impl {
@@ -42,8 +60,9 @@ struct BlockParser::Impl {
   std::size_t pos = 0;     // start of the next line
   std::uint32_t line = 1;  // its line number
   Mode mode = Mode::normal;
-  core::SourceLoc mode_loc;  // the #VAR / #COMMENT BEGIN that opened the mode
-  bool single_line = true;   // the current block holds no line end (see split)
+  core::SourceLoc mode_loc;     // the #VAR / #COMMENT BEGIN that opened the mode
+  bool single_line = true;      // the current block holds no line end (see split)
+  std::size_t released_at = 0;  // position of the last SourceFile::release_before
   State state;
 
   explicit Impl(const core::SourceFile& f) : file(f), text(f.text()) {}
@@ -142,6 +161,16 @@ struct BlockParser::Impl {
   }
 
   bool next(ast::Block& out, core::DiagnosticList& diags) {
+    if (pos == 0 && text.substr(0, 3) == "\xEF\xBB\xBF") {
+      // Decision (docs/language.md): a UTF-8 byte order mark is skipped with a note.
+      pos = 3;
+      diags.add({core::Severity::note,
+                 file.name(),
+                 {1, 1},
+                 "NC1006",
+                 "the file starts with a UTF-8 byte order mark; ncsim skips it (columns of "
+                 "line 1 count its 3 bytes)"});
+    }
     for (;;) {
       if (pos >= text.size()) {
         if (mode == Mode::comment) {
@@ -156,6 +185,10 @@ struct BlockParser::Impl {
       std::uint32_t lines = 1;
       const auto [begin, end] = split(lines, single_line);
       line += lines;
+      if (begin >= released_at + core::SourceFile::kKeepBehind) {
+        file.release_before(begin);
+        released_at = begin;
+      }
       const std::string_view block_text = text.substr(begin, end - begin);
       const std::string_view head = trimmed(block_text);
       if (mode == Mode::comment) {
@@ -168,6 +201,9 @@ struct BlockParser::Impl {
       out.offset = begin;
       out.text = block_text;
       if (block_text.size() > kMaxBlockLength) {
+        // Decision (docs/language.md): a comment-only line is no block, whatever its length,
+        // with `( ... )` as with `;`.
+        if (comment_only(block_text)) continue;
         out.has_error = true;
         report(diags, file.loc_of(begin + kMaxBlockLength), "NC1003",
                "block longer than " + std::to_string(kMaxBlockLength) + " characters (" +
@@ -238,6 +274,18 @@ BlockParser::~BlockParser() = default;
 
 bool BlockParser::next(ast::Block& out, core::DiagnosticList& diags) {
   return impl_->next(out, diags);
+}
+
+BlockParser::Position BlockParser::position() const {
+  return {impl_->pos, impl_->line, static_cast<std::uint8_t>(impl_->mode), impl_->mode_loc};
+}
+
+void BlockParser::seek(const Position& at) {
+  impl_->pos = at.offset;
+  impl_->line = at.line;
+  impl_->mode = static_cast<Mode>(at.mode);
+  impl_->mode_loc = at.mode_loc;
+  impl_->released_at = at.offset;
 }
 
 }  // namespace ncsim::grammar

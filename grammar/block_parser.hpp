@@ -5,7 +5,8 @@
 // must outlive the parser and every Block it fills). Outputs: one ast::Block per call of
 // next(), plus syntax diagnostics (NC1xxx and the manual ids the parser itself detects:
 // 20219, 20839, 21542).
-// Invariants: memory is the file text plus the reused block; a syntax error is reported once,
+// Invariants: memory is the reused block (the file's pages behind the parser are released,
+// SourceFile::release_before); a syntax error is reported once,
 // at the offending character, and parsing resumes at the next block (`Block::has_error`).
 // Blank and comment-only lines yield no block. Lines between #COMMENT BEGIN/END are skipped;
 // lines between #VAR and #ENDVAR are parsed as declarations.
@@ -36,6 +37,17 @@ class BlockParser {
   bool next(ast::Block& out, core::DiagnosticList& diags);
 
   const core::SourceFile& file() const { return file_; }
+
+  /// Where the parser stands between two blocks: enough to resume there (a checkpoint).
+  struct Position {
+    std::size_t offset = 0;    ///< byte offset of the next line to read
+    std::uint32_t line = 1;    ///< its 1-based line number
+    std::uint8_t mode = 0;     ///< normal, in #VAR ... #ENDVAR, in #COMMENT BEGIN ... END
+    core::SourceLoc mode_loc;  ///< the #VAR / #COMMENT BEGIN that opened the mode
+  };
+  Position position() const;
+  /// Continues from a position this parser (or one of the same file) returned.
+  void seek(const Position& at);
 
  private:
   struct Impl;

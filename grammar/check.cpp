@@ -1,7 +1,5 @@
 #include "grammar/check.hpp"
 
-#include <algorithm>
-
 #include "grammar/block_parser.hpp"
 #include "grammar/structure.hpp"
 
@@ -17,15 +15,10 @@ core::DiagnosticList check_program(const core::SourceFile& file) {
   }
   checker.finish(found);
 
-  // End-of-level findings come last; hand everything out in file order.
-  std::vector<core::Diagnostic> items = found.items();
-  std::stable_sort(items.begin(), items.end(), [](const auto& a, const auto& b) {
-    return a.loc.line != b.loc.line ? a.loc.line < b.loc.line : a.loc.column < b.loc.column;
-  });
-  core::DiagnosticList sorted;
-  for (auto& d : items)
-    sorted.add(std::move(d));
-  return sorted;
+  // End-of-level findings come last; hand everything out in file order. The list keeps the
+  // first DiagnosticList::kDefaultLimit diagnostics found and counts the rest.
+  found.sort_by_position();
+  return found;
 }
 
 }  // namespace ncsim::grammar

@@ -3,8 +3,9 @@
 //
 // Input: one NC program file. Output: every diagnostic in file order (syntax errors recovered
 // at the block end, then structural errors: unbalanced control keywords, labels, calls,
-// unknown G/M codes, ...). Streams block by block: memory is the file text plus a small
-// amount per open control block and label, never per block.
+// unknown G/M codes, ...). Streams block by block: memory is a small amount per open control
+// block and label, never per block (the file's pages are released behind the parser), and
+// at most DiagnosticList::kDefaultLimit diagnostics (the rest are counted).
 
 #include "core/diagnostic.hpp"
 #include "core/source_file.hpp"

@@ -345,6 +345,7 @@ void StructureChecker::feed(const ast::Block& b, core::DiagnosticList& diags) {
       }
     }
     start_level(h->local);
+    if (!h->local) main_header_ = b.loc;
     return;
   }
   if (!level_open_) start_level(false);
@@ -377,6 +378,11 @@ void StructureChecker::finish(core::DiagnosticList& diags) {
   if (main_seen_ && !main_has_end_ && main_last_.line > 0) {
     diags.add({core::Severity::warning, file_.name(), main_last_, "NC2019",
                "the main program does not end with M02 or M30 (file cut short?)"});
+  } else if (main_last_.line == 0) {
+    // An empty file, a bare `%`, only comments or only local subroutines: no main program
+    // block at all, so no M02/M30 either.
+    diags.add({core::Severity::warning, file_.name(), main_header_, "NC2019",
+               "the main program has no blocks (empty file?), so no M02 or M30 either"});
   }
   for (const PreIf& p : pre_ifs_)
     report(diags, p.loc, "NC2015", "#IF is not closed by #ENDIF");

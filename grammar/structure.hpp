@@ -67,9 +67,10 @@ class StructureChecker {
   const core::SourceFile& file_;
   bool level_open_ = false;
   bool main_seen_ = false;
-  bool in_main_ = false;       // the current level is the main program
-  bool main_has_end_ = false;  // a literal M02/M30 (or M17/M29) stands in the main program
-  core::SourceLoc main_last_;  // the main program's last block
+  bool in_main_ = false;         // the current level is the main program
+  bool main_has_end_ = false;    // a literal M02/M30 (or M17/M29) stands in the main program
+  core::SourceLoc main_last_;    // the main program's last block
+  core::SourceLoc main_header_;  // the main program's `%` line, if any
   std::vector<Frame> frames_;
   std::map<std::string, LabelInfo> labels_;
   std::vector<GotoInfo> gotos_;

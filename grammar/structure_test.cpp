@@ -81,7 +81,32 @@ TEST_CASE("a main program without M02/M30 is warning NC2019 at its last block") 
   CHECK(ids("%L sub\nM30\nM17\n%main\nLL sub\n") == V{"5:1 NC2019 warning"});
   // a global subroutine file returns with M17 / M29
   CHECK(ids("%sub\nG91 X1\nM17\n").empty());
-  CHECK(ids("").empty());
+  // issue 9: an empty program has no M02/M30 either
+  CHECK(ids("") == V{"0:0 NC2019 warning"});
+  CHECK(ids("%\n") == V{"1:1 NC2019 warning"});
+  CHECK(ids("%p\n; nothing\n(at all)\n") == V{"1:1 NC2019 warning"});
+  CHECK(ids("%L sub\nM17\n") == V{"0:0 NC2019 warning"});
+}
+
+TEST_CASE("a UTF-8 byte order mark is skipped with note NC1006") {
+  const core::SourceFile file("t.nc", "\xEF\xBB\xBF%p\nG01 X1 F100\nM30\n");
+  const core::DiagnosticList diags = check_program(file);
+  REQUIRE(diags.items().size() == 1);
+  CHECK(diags.items()[0].id == "NC1006");
+  CHECK(diags.items()[0].severity == core::Severity::note);
+  CHECK(!diags.has_errors());
+}
+
+TEST_CASE("a comment-only line is no block whatever its length, ( ) as ;") {
+  const std::string paren = "(" + std::string(5000, 'a') + " (nested) )  ; and more\n";
+  const std::string semi = ";" + std::string(5000, 'b') + "\n";
+  const core::SourceFile file("t.nc", "%p\n" + paren + semi + "G01 X1 F100\nM30\n");
+  CHECK(check_program(file).items().empty());
+  // A long line with a word after its comment is still a block, and too long (NC1003).
+  const core::SourceFile word("t.nc", "%p\n(" + std::string(5000, 'a') + ") X1\nM30\n");
+  const auto d = check_program(word);
+  REQUIRE(d.items().size() == 1);
+  CHECK(d.items()[0].id == "NC1003");
 }
 
 }  // namespace ncsim::grammar::test

@@ -6,8 +6,6 @@
 namespace ncsim::interp {
 namespace {
 
-constexpr std::uint32_t kDeclarationBit = 0x80000000u;
-
 void shift(core::SourceLoc& loc, std::uint32_t delta) {
   if (loc.line != 0) loc.line += delta;
 }
@@ -43,50 +41,43 @@ void shift_lines(grammar::ast::Block& block, std::uint32_t delta) {
 }
 
 BlockSource::BlockSource(const core::SourceFile& file)
-    : file_(file), parser_(file), slots_(kCacheSlots) {}
+    : file_(file), parser_(file), reparser_(file), slots_(kCacheSlots) {}
 
 bool BlockSource::parse_next(Slot& slot, core::DiagnosticList& diags) {
   if (parser_done_) return false;
+  if (parsed_ % kCheckpointStride == 0) checkpoints_.push_back(parser_.position());
   if (!parser_.next(slot.block, diags)) {
     parser_done_ = true;
     return false;
   }
-  slot.own.reset();
-  const bool declaration = std::holds_alternative<grammar::ast::Declaration>(slot.block.body);
-  std::uint32_t length = static_cast<std::uint32_t>(slot.block.text.size());
-  if (declaration) length |= kDeclarationBit;
-  index_.push_back({static_cast<std::uint32_t>(slot.block.offset), length, slot.block.loc.line});
-  slot.ordinal = static_cast<std::uint32_t>(index_.size() - 1);
+  slot.ordinal = parsed_++;
   return true;
 }
 
 void BlockSource::reparse(std::uint32_t ordinal, Slot& slot) {
-  const IndexEntry& entry = index_[ordinal];
-  const bool declaration = (entry.length & kDeclarationBit) != 0;
-  const std::uint32_t length = entry.length & ~kDeclarationBit;
-  std::string text(file_.text().substr(entry.offset, length));
-  if (declaration) text = "#VAR\n" + text + "\n#ENDVAR\n";
-  auto own = std::make_unique<core::SourceFile>(file_.name(), std::move(text));
-  grammar::BlockParser parser(*own);
+  if (reparser_next_ > ordinal || ordinal - reparser_next_ >= kCheckpointStride) {
+    const std::uint32_t k = ordinal / kCheckpointStride;
+    reparser_.seek(checkpoints_[k]);
+    reparser_next_ = k * kCheckpointStride;
+  }
   core::DiagnosticList ignored;  // reported at the first parse already
-  bool ok = parser.next(slot.block, ignored);
-  if (ok && declaration) ok = parser.next(slot.block, ignored);
-  if (!ok) std::abort();  // the same text parsed before: broken invariant
-  shift_lines(slot.block, entry.line - 1 - (declaration ? 1u : 0u));
-  slot.block.offset = entry.offset;
-  slot.own = std::move(own);
+  for (; reparser_next_ < ordinal; ++reparser_next_) {
+    if (!reparser_.next(skipped_, ignored)) std::abort();  // parsed before: broken invariant
+  }
+  if (!reparser_.next(slot.block, ignored)) std::abort();
+  ++reparser_next_;
   slot.ordinal = ordinal;
 }
 
 const grammar::ast::Block* BlockSource::fetch(std::uint32_t ordinal, core::DiagnosticList& diags) {
   Slot& slot = slots_[ordinal & (kCacheSlots - 1)];
   if (slot.ordinal == ordinal) return &slot.block;
-  if (ordinal < index_.size()) {
+  if (ordinal < parsed_) {
     reparse(ordinal, slot);
     return &slot.block;
   }
-  while (index_.size() <= ordinal) {
-    Slot& target = slots_[index_.size() & (kCacheSlots - 1)];
+  while (parsed_ <= ordinal) {
+    Slot& target = slots_[parsed_ & (kCacheSlots - 1)];
     target.ordinal = 0xFFFFFFFFu;
     if (!parse_next(target, diags)) return nullptr;
   }
@@ -104,7 +95,7 @@ const grammar::ast::Block* BlockSource::parse_text(std::string text, std::uint32
     diags.add(std::move(d));
   }
   shift_lines(scratch_.block, line - 1);
-  scratch_.own = std::move(own);
+  scratch_file_ = std::move(own);
   return &scratch_.block;
 }
 

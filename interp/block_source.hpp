@@ -5,13 +5,15 @@
 // Purpose: the interpreter jumps (loops, $GOTO, subroutine calls) but must not hold the whole
 // parsed program. Inputs: a SourceFile. Outputs: the block with a given ordinal (0 = first
 // block of the file), parsed on demand.
-// Memory: the file text (owned by the caller), an index of 12 bytes per block seen so far, and
-// a direct-mapped cache of kCacheSlots parsed blocks (a loop body of up to kCacheSlots blocks
-// is decoded from the cache). A block evicted from the cache is re-parsed from its own text.
-// Invariants: ordinals are dense and in file order; the parser only moves forward; a cached
-// or re-parsed block has the same content, lines and columns as the first parse.
+// Memory, independent of the program length in practice: a direct-mapped cache of
+// kCacheSlots parsed blocks (a loop body of up to kCacheSlots blocks is decoded from the
+// cache), and one checkpoint (16 bytes: parser position) per kCheckpointStride blocks seen.
+// A block that is not cached is re-parsed from the nearest checkpoint before it by a second
+// parser, which then goes on forward, so re-reading a stretch of program after a backward jump
+// costs one parse per block. The text stays in the (mapped) file; blocks point into it.
+// Invariants: ordinals are dense and in file order; the first parser only moves forward; a
+// cached or re-parsed block has the same content, lines and columns as the first parse.
 
-#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -25,14 +27,16 @@ namespace ncsim::interp {
 
 class BlockSource {
  public:
-  static constexpr std::size_t kCacheSlots = 2048;  ///< power of two
+  static constexpr std::size_t kCacheSlots = 2048;         ///< power of two
+  static constexpr std::uint32_t kCheckpointStride = 256;  ///< blocks between checkpoints
 
   explicit BlockSource(const core::SourceFile& file);
   BlockSource(const BlockSource&) = delete;
   BlockSource& operator=(const BlockSource&) = delete;
 
   /// The block with this ordinal, or nullptr past the end of the file. Syntax errors of a
-  /// first parse are added to `diags` (the block then has `has_error`).
+  /// first parse are added to `diags` (the block then has `has_error`). The pointer stays
+  /// valid until the next fetch (another fetch may reuse its cache slot).
   const grammar::ast::Block* fetch(std::uint32_t ordinal, core::DiagnosticList& diags);
 
   /// Parses `text` (one block, e.g. after macro expansion) as if it stood at `line`.
@@ -41,29 +45,29 @@ class BlockSource {
                                         core::DiagnosticList& diags);
 
   const core::SourceFile& file() const { return file_; }
-  std::size_t indexed_blocks() const { return index_.size(); }
+  /// Checkpoints held (one per kCheckpointStride blocks parsed so far).
+  std::size_t indexed_blocks() const { return checkpoints_.size(); }
 
  private:
-  struct IndexEntry {
-    std::uint32_t offset;  // byte offset of the block
-    std::uint32_t length;  // bytes of its text; top bit: parsed in #VAR declaration mode
-    std::uint32_t line;    // first line
-  };
   struct Slot {
     std::uint32_t ordinal = 0xFFFFFFFFu;
     grammar::ast::Block block;
-    std::unique_ptr<core::SourceFile> own;  // text of a re-parsed block
   };
 
   bool parse_next(Slot& slot, core::DiagnosticList& diags);
   void reparse(std::uint32_t ordinal, Slot& slot);
 
   const core::SourceFile& file_;
-  grammar::BlockParser parser_;
+  grammar::BlockParser parser_;  // first parse, forward only
   bool parser_done_ = false;
-  std::vector<IndexEntry> index_;
+  std::uint32_t parsed_ = 0;  // blocks the first parser has delivered
+  std::vector<grammar::BlockParser::Position> checkpoints_;  // before block k * stride
+  grammar::BlockParser reparser_;                            // re-reads blocks that left the cache
+  std::uint32_t reparser_next_ = 0xFFFFFFFFu;                // ordinal reparser_ delivers next
   std::vector<Slot> slots_;
-  Slot scratch_;  // parse_text result
+  grammar::ast::Block skipped_;  // blocks the re-parser passes on its way
+  Slot scratch_;                 // parse_text result
+  std::unique_ptr<core::SourceFile> scratch_file_;
 };
 
 /// Moves every line number of `block` by `delta` lines (a block parsed from its own text).

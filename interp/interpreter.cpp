@@ -1,9 +1,12 @@
 // interp/interpreter.cpp: the block stream, control flow ($IF ... $GOTO), subroutines.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
+#include "core/number_text.hpp"
+#include "grammar/check.hpp"
 #include "grammar/keywords.hpp"
 #include "interp/interpreter_impl.hpp"
 
@@ -33,6 +36,29 @@ bool is_confined_name(const std::string& name) {
                       [](const std::filesystem::path& part) { return part == ".."; });
 }
 
+/// Why `path` cannot be a subroutine file (" not found", " is a directory", ...), or nothing.
+std::optional<std::string> subroutine_file_problem(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (ec || !fs::exists(st)) return std::string(" not found");
+  switch (st.type()) {
+    case fs::file_type::regular:
+      return std::nullopt;
+    case fs::file_type::directory:
+      return std::string(" is a directory, not a program file");
+    case fs::file_type::character:
+    case fs::file_type::block:
+      return std::string(" is a device, not a program file");
+    case fs::file_type::fifo:
+      return std::string(" is a pipe, not a program file");
+    case fs::file_type::socket:
+      return std::string(" is a socket, not a program file");
+    default:
+      return std::string(" is not a regular file");
+  }
+}
+
 const ast::Control* control_of(const ast::Block* b) {
   return b == nullptr ? nullptr : std::get_if<ast::Control>(&b->body);
 }
@@ -42,13 +68,6 @@ bool is_header(const ast::Block* b) {
 /// `$IF cond $GOTO label` has no $ENDIF (PROG-206915851).
 bool is_block_if(const ast::Control& c) {
   return c.kind == ControlKind::if_ && c.target.kind == ast::GotoKind::none;
-}
-
-bool label_matches(const ast::Block& b, const ast::GotoTarget& t) {
-  if (t.kind == ast::GotoKind::block_number) {
-    return b.number && b.number->is_label && b.number->number == t.number;
-  }
-  return b.label && grammar::iequals(b.label->name, t.name);
 }
 
 }  // namespace
@@ -140,7 +159,7 @@ std::optional<std::uint32_t> Interpreter::Impl::matching_end(std::uint16_t file,
       ++depth;
     } else if (is_closer(c->kind)) {
       if (depth == 0) {
-        jump_memo[key] = k;
+        remember(jump_memo, key, k);
         return k;
       }
       --depth;
@@ -167,37 +186,41 @@ std::optional<std::uint32_t> Interpreter::Impl::next_if_branch(std::uint16_t fil
       ++depth;
     } else if (c->kind == ControlKind::endif) {
       if (depth == 0) {
-        jump_memo[key] = k;
+        remember(jump_memo, key, k);
         return k;
       }
       --depth;
     } else if (!endif_only && depth == 0 &&
                (c->kind == ControlKind::elseif || c->kind == ControlKind::else_)) {
-      jump_memo[key] = k;
+      remember(jump_memo, key, k);
       return k;
     }
   }
 }
 
-bool Interpreter::Impl::jump_to_label(const ast::Block& b, const ast::GotoTarget& target) {
-  const core::SourceLoc at = target.loc.line != 0 ? target.loc : b.loc;
-  if (target.kind == ast::GotoKind::variable || target.kind == ast::GotoKind::none) {
-    return fail(at, "NC4022", "$GOTO to a variable target is not supported by ncsim");
-  }
+void Interpreter::Impl::remember(std::unordered_map<std::uint64_t, std::uint32_t>& memo,
+                                 std::uint64_t key, std::uint32_t value) {
+  if (memo.size() >= kMaxMemoEntries) memo.clear();  // bounded: rebuilt on demand
+  memo[key] = value;
+}
+
+std::optional<GotoResult> Interpreter::Impl::find_label(const GotoLabel& target,
+                                                        core::SourceLoc at) {
   const std::uint16_t file = pc.file;
   const std::uint32_t here = pc.ordinal;  // block after the $GOTO
   // Forward search to the end of the program level (PROG-206915851: both directions).
+  GotoResult r;
   int depth = 0;
-  int closed = 0;  // open frames left by the jump
   for (std::uint32_t k = here;; ++k) {
     const ast::Block* blk = fetch({file, k});
     if (blk == nullptr || is_header(blk)) break;
-    if (label_matches(*blk, target)) {
-      if (depth > 0) return fail(at, "21480", "$GOTO jumps into a loop");
-      for (int i = 0; i < closed && !control.empty(); ++i)
-        control.pop_back();
-      pc.ordinal = k;
-      return true;
+    if (target.matches(*blk)) {
+      if (depth > 0) {
+        fail(at, "21480", "$GOTO jumps into a loop");
+        return std::nullopt;
+      }
+      r.label = k;
+      return r;
     }
     if (const ast::Control* c = control_of(blk)) {
       if (is_opener(c->kind)) ++depth;
@@ -205,37 +228,68 @@ bool Interpreter::Impl::jump_to_label(const ast::Block& b, const ast::GotoTarget
         if (depth > 0) {
           --depth;
         } else {
-          ++closed;
+          ++r.closed;
         }
       }
     }
   }
   // Backward: from the start of the program level up to the $GOTO.
-  std::vector<std::uint32_t> open;  // unmatched openers before the label
+  r = GotoResult{};
+  r.backward = true;
   for (std::uint32_t k = unit_start; k < here; ++k) {
     const ast::Block* blk = fetch({file, k});
     if (blk == nullptr) break;
     if (k != unit_start && is_header(blk)) break;
-    if (label_matches(*blk, target)) {
-      const std::size_t base = calls.empty() ? 0 : calls.back().control_depth;
-      for (std::uint32_t o : open) {
-        const bool is_open =
-            std::any_of(control.begin() + static_cast<std::ptrdiff_t>(base), control.end(),
-                        [&](const ControlFrame& f) { return f.file == file && f.open == o; });
-        if (!is_open) return fail(at, "21480", "$GOTO jumps into a loop");
-      }
-      while (control.size() > base && control.back().open >= k)
-        control.pop_back();
-      pc.ordinal = k;
-      return true;
+    if (target.matches(*blk)) {
+      r.label = k;
+      return r;
     }
     if (const ast::Control* c = control_of(blk)) {
-      if (is_opener(c->kind)) open.push_back(k);
-      if (is_closer(c->kind) && !open.empty()) open.pop_back();
+      if (is_opener(c->kind)) r.open.push_back(k);  // unmatched openers before the label
+      if (is_closer(c->kind) && !r.open.empty()) r.open.pop_back();
     }
   }
-  return fail(at, "NC4023",
-              "jump label " + std::string(target.name) + " not found in this program level");
+  fail(at, "NC4023", "jump label " + target.name + " not found in this program level");
+  return std::nullopt;
+}
+
+bool Interpreter::Impl::jump_to_label(const ast::Block& b, const ast::GotoTarget& target) {
+  // Copy what is needed of the $GOTO block now: the label search fetches blocks through the
+  // cache, which may reuse the slot holding `b` (issue 9, defect 1).
+  const core::SourceLoc at = target.loc.line != 0 ? target.loc : b.loc;
+  if (target.kind == ast::GotoKind::variable || target.kind == ast::GotoKind::none) {
+    return fail(at, "NC4022", "$GOTO to a variable target is not supported by ncsim");
+  }
+  const std::uint16_t file = pc.file;
+  // The result depends only on the program text between the level start and the label, so it
+  // is remembered per $GOTO site: a backward jump in a loop scans once, not every pass.
+  const std::uint64_t key = (std::uint64_t{file} << 32) | pc.ordinal;
+  auto it = goto_memo.find(key);
+  if (it == goto_memo.end()) {
+    const GotoLabel label{target.kind, target.number, std::string(target.name)};
+    auto found = find_label(label, at);
+    if (!found) return false;
+    if (goto_memo.size() >= kMaxMemoEntries) goto_memo.clear();
+    it = goto_memo.emplace(key, std::move(*found)).first;
+  }
+  const GotoResult& r = it->second;
+  if (!r.backward) {
+    for (int i = 0; i < r.closed && !control.empty(); ++i)
+      control.pop_back();
+    pc.ordinal = r.label;
+    return true;
+  }
+  const std::size_t base = calls.empty() ? 0 : calls.back().control_depth;
+  for (std::uint32_t o : r.open) {
+    const bool is_open =
+        std::any_of(control.begin() + static_cast<std::ptrdiff_t>(base), control.end(),
+                    [&](const ControlFrame& f) { return f.file == file && f.open == o; });
+    if (!is_open) return fail(at, "21480", "$GOTO jumps into a loop");
+  }
+  while (control.size() > base && control.back().open >= r.label)
+    control.pop_back();
+  pc.ordinal = r.label;
+  return true;
 }
 
 bool Interpreter::Impl::call(const ast::Block& b, const ast::Call& c) {
@@ -282,16 +336,26 @@ bool Interpreter::Impl::call(const ast::Block& b, const ast::Call& c) {
                     "global subroutine file " + name +
                         " is outside the program's folder (absolute path or '..')");
       }
-      std::error_code ec;
-      if (!std::filesystem::is_regular_file(dir / name, ec)) {
-        return fail(c.loc, "NC4301",
-                    "global subroutine file " + (dir / name).string() + " not found");
+      const std::filesystem::path path = dir / name;
+      if (auto problem = subroutine_file_problem(path)) {
+        return fail(c.loc, "NC4301", "global subroutine file " + path.string() + *problem);
       }
       auto pf = std::make_unique<ProgramFile>();
       try {
-        pf->own = std::make_unique<core::SourceFile>(core::SourceFile::load(dir / name));
+        pf->own = std::make_unique<core::SourceFile>(core::SourceFile::load(path));
       } catch (const std::exception& e) {
         return fail(c.loc, "NC4301", e.what());
+      }
+      // A subroutine file is checked whole when it is first called, as the main program is
+      // before it runs: its syntax errors are reported even in blocks never reached.
+      const core::DiagnosticList syntax = grammar::check_program(*pf->own);
+      if (syntax.has_errors()) {
+        for (const core::Diagnostic& d : syntax.items())
+          diags.add(d);
+        return fail(c.loc, "NC4306",
+                    "global subroutine file " + path.string() + " has " +
+                        std::to_string(syntax.error_count()) + " syntax error" +
+                        (syntax.error_count() == 1 ? "" : "s"));
       }
       pf->file = pf->own.get();
       pf->blocks = std::make_unique<BlockSource>(*pf->file);
@@ -327,6 +391,8 @@ bool Interpreter::Impl::run_control(const ast::Block& b, const ast::Control& c) 
   const std::uint32_t here = pc.ordinal - 1;
   const std::uint16_t file = pc.file;
   const core::SourceLoc at = c.loc;
+  // `b` and `c` live in the block cache: read them before any fetch (a search may evict them).
+  const std::uint32_t open_line = b.loc.line;
   switch (c.kind) {
     case ControlKind::if_: {
       auto v = eval(b, c.expr);
@@ -387,14 +453,14 @@ bool Interpreter::Impl::run_control(const ast::Block& b, const ast::Control& c) 
             pc.ordinal = k + 1;  // no case matched, no $DEFAULT
             return true;
           }
-          control.push_back({FrameKind::switch_, file, here, k, {}, 0, 0, b.loc.line});
+          control.push_back({FrameKind::switch_, file, here, k, {}, 0, 0, open_line});
           pc.ordinal = *default_at + 1;
           return true;
         } else if (depth == 0 && nc->kind == ControlKind::case_) {
           auto cv = eval(*nb, nc->expr);
           if (!cv) return false;
           if (std::fabs(*cv - *v) < 0.001) {  // PROG-206908427
-            control.push_back({FrameKind::switch_, file, here, 0xFFFFFFFFu, {}, 0, 0, b.loc.line});
+            control.push_back({FrameKind::switch_, file, here, 0xFFFFFFFFu, {}, 0, 0, open_line});
             pc.ordinal = k + 1;
             return true;
           }
@@ -541,6 +607,104 @@ bool Interpreter::Impl::run_control(const ast::Block& b, const ast::Control& c) 
   return true;
 }
 
+namespace {
+
+std::uint64_t mix(std::uint64_t h, std::uint64_t x) {
+  x += 0x9E3779B97F4A7C15ull + h;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
+std::uint64_t bits(double v) {
+  std::uint64_t b = 0;
+  std::memcpy(&b, &v, sizeof b);
+  return b;
+}
+std::uint64_t bits(const std::optional<double>& v) {
+  return v ? bits(*v) : 0x7FF4000000000001ull;  // a NaN payload no computation yields
+}
+
+}  // namespace
+
+// Everything that decides what the following blocks do: where the decoder is, the open loops
+// and calls, every variable, and the modal state motions and checks depend on. Two equal
+// fingerprints at the same block mean the decoder runs the same way again from there.
+std::uint64_t Interpreter::Impl::state_fingerprint(std::size_t& cost) const {
+  std::uint64_t h = vars.fingerprint(cost);
+  h = mix(h, (std::uint64_t{pc.file} << 32) | pc.ordinal);
+  h = mix(h, unit_start);
+  for (const ControlFrame& f : control) {
+    h = mix(h, (static_cast<std::uint64_t>(f.kind) << 48) | (std::uint64_t{f.file} << 32) | f.open);
+    h = mix(h, f.end);
+    h = mix(h, (static_cast<std::uint64_t>(f.counter.cls) << 32) | f.counter.number);
+    for (const char c : f.counter.name)
+      h = mix(h, static_cast<unsigned char>(c));
+    for (std::uint32_t i = 0; i < f.counter.index_count && i < f.counter.index.size(); ++i)
+      h = mix(h, bits(f.counter.index[i]));
+    h = mix(h, bits(f.end_value));
+    h = mix(h, bits(f.step));
+  }
+  for (const CallFrame& f : calls) {
+    h = mix(h, (std::uint64_t{f.ret.file} << 32) | f.ret.ordinal);
+    h = mix(h, (std::uint64_t{f.unit_start} << 32) | f.control_depth);
+  }
+  for (const double v : position)
+    h = mix(h, bits(v));
+  h = mix(h, static_cast<std::uint64_t>(motion));
+  h = mix(h, bits(feed));
+  h = mix(h, (std::uint64_t{centre_absolute} << 3) | (std::uint64_t{motion_since_sync} << 2) |
+                 (std::uint64_t{spline.has_value()} << 1) | std::uint64_t{kin_id.has_value()});
+  if (kin_id) h = mix(h, static_cast<std::uint64_t>(*kin_id));
+  const ModalSnapshot& m = modal;
+  h = mix(h, (static_cast<std::uint64_t>(m.plane) << 40) |
+                 (static_cast<std::uint64_t>(m.feed_mode) << 32) |
+                 (static_cast<std::uint64_t>(m.transition) << 24) |
+                 (static_cast<std::uint64_t>(m.slope) << 16) | (std::uint64_t{m.inch} << 7) |
+                 (std::uint64_t{m.incremental} << 6) | (std::uint64_t{m.exact_stop} << 5) |
+                 (std::uint64_t{m.contouring} << 4) | (std::uint64_t{m.synchronised} << 3) |
+                 (std::uint64_t{m.cs_active} << 2) | (std::uint64_t{m.kinematics_on} << 1) |
+                 std::uint64_t{m.caxtrack});
+  h = mix(h, bits(m.transvelmin));
+  h = mix(h, files.size());
+  cost += control.size() + calls.size() + kMaxAxes;
+  return h;
+}
+
+// Brent's cycle detection over decoder states: a state is saved after 1, 2, 4, ... blocks; a
+// cycle of length L is found once the period reaches L. States are compared only where the
+// block is the saved one, and a costly comparison (many variables) waits until as many
+// blocks have been decoded as it costs, so the detection never dominates the decoding.
+bool Interpreter::Impl::watch_for_repeat(std::uint32_t block_line) {
+  ++decoded;
+  if (repeat.credit > 0) --repeat.credit;
+  if (pc.file == repeat.pc.file && pc.ordinal == repeat.pc.ordinal && repeat.credit == 0) {
+    std::size_t cost = 0;
+    const std::uint64_t now = state_fingerprint(cost);
+    repeat.credit = cost / 16;
+    if (now == repeat.fingerprint) {
+      // No motion or time since the saved state: the decoder would loop here forever.
+      if (blocks_without_motion >= decoded - repeat.at) {
+        const std::uint32_t loop_line = control.empty() ? repeat.line : control.back().line;
+        return fail({loop_line, 1}, "NC4901",
+                    "endless loop without motion: the decoder returns to this block with the "
+                    "same variables and state after " +
+                        std::to_string(decoded - repeat.at) + " blocks, so the program cannot end");
+      }
+      if (!endless_from) endless_from = repeat.line;
+    }
+  }
+  if (decoded - repeat.at >= repeat.period) {
+    std::size_t cost = 0;
+    repeat.pc = pc;
+    repeat.line = block_line;
+    repeat.fingerprint = state_fingerprint(cost);
+    repeat.at = decoded;
+    repeat.period *= 2;
+    repeat.credit = cost / 16;
+  }
+  return true;
+}
+
 bool Interpreter::Impl::step() {
   if (!started) {
     started = true;
@@ -571,23 +735,33 @@ bool Interpreter::Impl::step() {
   }
   line = block->loc.line;
   ++pc.ordinal;
-  if (options.max_blocks_without_motion != 0 &&
-      ++blocks_without_motion > options.max_blocks_without_motion) {
-    const std::uint32_t loop_line = control.empty() ? line : control.back().line;
-    return fail({loop_line, 1}, "NC4901",
-                "more than " + std::to_string(options.max_blocks_without_motion) +
-                    " blocks decoded without motion or time passing (endless loop?)");
-  }
-  if (block->skip && *block->skip >= 1 && *block->skip <= 32 &&
-      (options.skip_levels & (1u << (*block->skip - 1))) != 0) {
-    return true;
-  }
-  if (barrier_before(*block)) {  // the block runs after resume()
+  const bool skipped = block->skip && *block->skip >= 1 && *block->skip <= 32 &&
+                       (options.skip_levels & (1u << (*block->skip - 1))) != 0;
+  // A barrier comes before the block is counted: the block is decoded once, after resume().
+  if (!skipped && barrier_before(*block)) {
     --pc.ordinal;
     return true;
   }
+  if (!watch_for_repeat(line)) return false;
+  if (options.max_blocks_without_motion != 0 &&
+      ++blocks_without_motion > options.max_blocks_without_motion) {
+    const std::uint32_t loop_line = control.empty() ? line : control.back().line;
+    return fail({loop_line, 1}, "NC4903",
+                "more than " + std::to_string(options.max_blocks_without_motion) +
+                    " blocks decoded without motion or time passing; the loop has not returned "
+                    "to an earlier state, so it may end, but later than this limit");
+  }
+  if (skipped) return true;
   if (block->number && block->number->expr != ast::kNoNode) {
-    if (!eval(*block, block->number->expr)) return false;
+    const core::SourceLoc at = block->number->loc;
+    const auto n = eval(*block, block->number->expr);
+    if (!n) return false;
+    // The range of a literal block number (NC1005), for a computed one too.
+    if (!(*n >= 0.0 && *n <= 4294967295.0)) {
+      return fail(at, "NC4016",
+                  "block number N[...] = " + core::number_text(*n) +
+                      " out of range: 0 to 4294967295, as for a literal");
+    }
   }
   if (const auto* c = std::get_if<ast::Control>(&block->body)) return run_control(*block, *c);
   if (const auto* h = std::get_if<ast::HashCommand>(&block->body)) return run_hash(*block, *h);
@@ -644,6 +818,10 @@ std::optional<Command> Interpreter::next() {
   return std::nullopt;
 }
 
+std::optional<std::uint32_t> Interpreter::endless_from() const {
+  return impl_->endless_from;
+}
+
 const std::string& Interpreter::file_name(std::uint16_t file) const {
   return impl_->files.at(file)->file->name();
 }
@@ -653,8 +831,12 @@ Interpreter::Footprint Interpreter::footprint() const {
   std::size_t indexed = 0;
   for (const auto& f : s.files)
     indexed += f->blocks->indexed_blocks();
-  return {s.control.size(), s.calls.size(),     s.pending.size(),
-          indexed,          s.jump_memo.size(), s.vars.p_count()};
+  return {s.control.size(),
+          s.calls.size(),
+          s.pending.size(),
+          indexed,
+          s.jump_memo.size() + s.goto_memo.size(),
+          s.vars.p_count()};
 }
 
 }  // namespace ncsim::interp

@@ -11,10 +11,11 @@
 // INDP move) `next()` returns a `Barrier`; the run time answers with `resume(RunState)`, and
 // only then may `next()` be called again (API misuse otherwise: std::logic_error). `check` and
 // `trace` answer from `decode_only_state()` (docs/interp.md "The seam").
-// Memory: the file text, a 12-byte index entry per block seen (BlockSource), a bounded block
-// cache, one frame per open loop / $SWITCH / subroutine level, and the variables the program
-// creates. Nothing grows with the number of loop passes: an endless `$WHILE [TRUE]` runs in
-// constant memory for as long as the consumer pulls.
+// Memory: a bounded block cache and one 24-byte checkpoint per 256 blocks seen (BlockSource;
+// the text stays in the mapped file), one frame per open loop / $SWITCH / subroutine level,
+// bounded jump memos, and the variables the program creates. Nothing grows with the number
+// of loop passes: an endless `$WHILE [TRUE]` runs in constant memory for as long as the
+// consumer pulls.
 // Invariants: commands come out in program order; each carries its source line and the modal
 // snapshot in force; per-command code never throws (program errors are diagnostics).
 
@@ -40,8 +41,9 @@ namespace ncsim::interp {
 struct Options {
   std::map<std::string, double> external;     ///< V.E. values by name (upper case)
   PersistentVariables* persistent = nullptr;  ///< V.S. store shared by runs; null: own
-  /// Blocks decoded in a row without motion or time passing before NC4901 (0: no limit).
-  std::uint64_t max_blocks_without_motion = 10'000'000;
+  /// Blocks decoded in a row without motion or time passing before NC4903 (0: no limit). A
+  /// loop that returns to the same state without motion is NC4901 long before that.
+  std::uint64_t max_blocks_without_motion = 100'000'000;
   std::uint32_t skip_levels = 0;   ///< bit n-1 set: skip level /n active
   int max_subroutine_depth = 20;   ///< nesting limit of LL/L calls (NC4302)
   int macro_recursion_limit = 16;  ///< string macro expansion passes (NC4006)
@@ -90,6 +92,11 @@ class Interpreter {
   const core::Diagnostic* error() const { return error_ ? &*error_ : nullptr; }
   /// Warnings and notes met so far (the error, if any, is the last item).
   const core::DiagnosticList& diagnostics() const { return diags_; }
+  /// The line from which the program repeats forever: the decoder came back to the same block
+  /// with the same variables, control stack and modal state after motion or time passed
+  /// (a program that runs endlessly, e.g. a `$WHILE 1` pick-and-place cycle); nullopt while
+  /// no such repeat was seen. Without motion in between the repeat is error NC4901 instead.
+  std::optional<std::uint32_t> endless_from() const;
   /// File name of Command::file (0: the main program).
   const std::string& file_name(std::uint16_t file) const;
 

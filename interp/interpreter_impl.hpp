@@ -55,6 +55,31 @@ struct ControlFrame {
   std::uint32_t line = 0;
 };
 
+/// A $GOTO target copied out of its block (the block may leave the cache during the search).
+struct GotoLabel {
+  ast::GotoKind kind = ast::GotoKind::none;
+  std::uint32_t number = 0;  // block number for GotoKind::block_number
+  std::string name;          // label name, or the block number's digits
+  bool matches(const ast::Block& b) const {
+    if (kind == ast::GotoKind::block_number) {
+      return b.number && b.number->is_label && b.number->number == number;
+    }
+    return b.label && grammar::iequals(b.label->name, name);
+  }
+};
+
+/// Where a $GOTO site lands and what the jump leaves or enters, remembered per site.
+struct GotoResult {
+  std::uint32_t label = 0;          // ordinal of the labelled block
+  bool backward = false;            // found before the $GOTO
+  int closed = 0;                   // forward: loop/$SWITCH ends passed (frames left)
+  std::vector<std::uint32_t> open;  // backward: openers enclosing the label
+};
+
+/// Entries each memo of jump destinations holds at most; a full memo is cleared and refilled
+/// on demand, so memory does not grow with the program length.
+inline constexpr std::size_t kMaxMemoEntries = 1u << 16;
+
 struct CallFrame {
   Pc ret;
   std::size_t control_depth = 0;
@@ -67,9 +92,14 @@ struct Interpreter::Impl {
 
   // --- stream (interpreter.cpp) ---
   bool step();  // decodes one block; false when the stream ended
+  bool watch_for_repeat(std::uint32_t block_line);
+  std::uint64_t state_fingerprint(std::size_t& cost) const;
   const ast::Block* fetch(Pc pc);
   bool run_control(const ast::Block& b, const ast::Control& c);
   bool jump_to_label(const ast::Block& b, const ast::GotoTarget& target);
+  std::optional<GotoResult> find_label(const GotoLabel& target, core::SourceLoc at);
+  static void remember(std::unordered_map<std::uint64_t, std::uint32_t>& memo, std::uint64_t key,
+                       std::uint32_t value);
   std::optional<std::uint32_t> matching_end(std::uint16_t file, std::uint32_t from,
                                             core::SourceLoc at);
   std::optional<std::uint32_t> next_if_branch(std::uint16_t file, std::uint32_t from,
@@ -200,9 +230,22 @@ struct Interpreter::Impl {
   bool finished = false;
   std::vector<ControlFrame> control;
   std::vector<CallFrame> calls;
-  std::unordered_map<std::uint64_t, std::uint32_t> jump_memo;
+  std::unordered_map<std::uint64_t, std::uint32_t> jump_memo;  // $IF/loop partners
+  std::unordered_map<std::uint64_t, GotoResult> goto_memo;     // by $GOTO site
   std::deque<Command> pending;
   std::uint64_t blocks_without_motion = 0;
+  // Repeat detection (Brent's cycle finding over decoder states, docs/interp.md "Endless
+  // programs"): the state saved at block `at` of the run, compared whenever pc returns to it.
+  struct RepeatWatch {
+    Pc pc{0xFFFF, 0};
+    std::uint32_t line = 0;
+    std::uint64_t fingerprint = 0;
+    std::uint64_t at = 0;      // blocks decoded when saved
+    std::uint64_t period = 1;  // blocks until the next save
+    std::uint64_t credit = 0;  // blocks to decode before the next (costly) comparison
+  } repeat;
+  std::uint64_t decoded = 0;  // blocks decoded in this run
+  std::optional<std::uint32_t> endless_from;
   std::uint32_t line = 0;  // line of the block being decoded
   std::uint16_t current_file = 0;
 

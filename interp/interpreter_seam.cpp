@@ -203,6 +203,9 @@ void Interpreter::Impl::apply(const RunState& state, const Barrier& barrier) {
     }
     unknown_axes &= ~barrier.axes;
   }
+  // A run-time answer is time passing (the channel drained its queue and waited), as motion
+  // is: a loop that waits for a V.E. value the outside world writes is not "cannot end".
+  blocks_without_motion = 0;
   resumed = true;
 }
 

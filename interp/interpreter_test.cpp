@@ -283,12 +283,35 @@ TEST_CASE("#MSG and #FLUSH become commands") {
   CHECK(r.lines[1] == "3: FLUSH WAIT");
 }
 
-TEST_CASE("a loop without motion stops at the block limit naming the loop's line [NC4901]") {
+TEST_CASE("a loop without motion that does not repeat stops at the block limit [NC4903]") {
   Options o;
   o.max_blocks_without_motion = 1000;
   auto r = run("%t\nP1 = 0\n$WHILE 1\nP1 = P1 + 1\n$ENDWHILE\nM30\n", "portal_3x", o);
+  CHECK(r.error_id == "NC4903");
+  CHECK(r.error_line == 3);
+}
+
+TEST_CASE("a loop without motion that returns to the same state cannot end [NC4901]") {
+  auto r = run("%t\nP1 = 0\n$WHILE 1\nP1 = [P1 + 1] MOD 3\n$ENDWHILE\nM30\n");
   CHECK(r.error_id == "NC4901");
   CHECK(r.error_line == 3);
+  CHECK(r.error_message.find("cannot end") != std::string::npos);
+  // The same loop with a counter ends, however many passes it takes (issue 9 defect 5: a
+  // finite loop of >= 3.33 M passes was NC4901).
+  auto ok = run("%t\nP1 = 0\n$WHILE P1 < 3400000\nP1 = P1 + 1\n$ENDWHILE\nG01 X1 F100\nM30\n");
+  CHECK(ok.error_id.empty());
+}
+
+TEST_CASE("a loop that repeats with motion in it runs on and is named endless") {
+  core::SourceFile file("cycle.nc",
+                        "%t\nP1 = 0\n$WHILE 1\nG01 X[P1] F600\nP1 = 1 - P1\n"
+                        "$ENDWHILE\nM30\n");
+  Interpreter interp(file, test::machine());
+  for (int k = 0; k < 100; ++k)
+    REQUIRE(interp.next().has_value());
+  REQUIRE(interp.endless_from().has_value());
+  CHECK(*interp.endless_from() >= 3);
+  CHECK(interp.error() == nullptr);
 }
 
 TEST_CASE("an endless $WHILE [TRUE] yields 1,000,000 commands in constant memory") {
@@ -311,7 +334,7 @@ TEST_CASE("an endless $WHILE [TRUE] yields 1,000,000 commands in constant memory
   CHECK(last.p_params == first.p_params);
 }
 
-TEST_CASE("check_semantics reports soft-limit violations and stops endless loops with a note") {
+TEST_CASE("check_semantics reports soft-limit violations and names endless programs [NC4904]") {
   core::SourceFile limits("l.nc", "%t\nG00 X5000\nM30\n");
   auto d = check_semantics(limits, test::machine(), {});
   REQUIRE(d.items().size() == 1);
@@ -319,7 +342,20 @@ TEST_CASE("check_semantics reports soft-limit violations and stops endless loops
   core::SourceFile endless("e.nc", "%t\n$WHILE 1\nG00 X1\n$ENDWHILE\nM30\n");
   auto e = check_semantics(endless, test::machine(), {});
   REQUIRE(!e.items().empty());
-  CHECK(e.items().back().id == "NC4902");
+  CHECK(e.items().back().id == "NC4904");
+  CHECK(e.items().back().severity == core::Severity::note);
+  CHECK(!e.has_errors());
+}
+
+TEST_CASE("check_semantics checks a long finite program to its end (issue 9 defect 6)") {
+  // 300,000 motions before the error: the old check stopped after 100,000 commands, said ok.
+  core::SourceFile file("long.nc",
+                        "%t\nP1 = 0\n$WHILE P1 < 300000\nG01 X[P1 MOD 7] F600\nP1 = P1 + 1\n"
+                        "$ENDWHILE\nG00 X5000\nM30\n");
+  auto d = check_semantics(file, test::machine(), {});
+  REQUIRE(d.items().size() == 1);
+  CHECK(d.items()[0].id == "NC4601");
+  CHECK(d.items()[0].loc.line == 7);
 }
 
 TEST_CASE("a feed, block time or speed that cannot be is NC4030 at its word") {

@@ -267,6 +267,28 @@ TEST_CASE("a V.E. read inside a string macro gets its barrier too") {
   CHECK(s.lines[1].starts_with("3: G00 X=8.0000"));
 }
 
+TEST_CASE("a loop that waits for a V.E. value is not 'cannot end': each pass is a barrier") {
+  // Run time: the outside world sets READY on the fifth answer and the loop ends.
+  const std::string text = "%t\n$WHILE V.E.READY == 0\n$ENDWHILE\nG00 X5\nM30\n";
+  int answers = 0;
+  auto s = stream(text, test::machine(), [&](const Barrier&, RunState& st) {
+    st.external["READY"] = ++answers >= 5 ? 1.0 : 0.0;
+  });
+  CHECK(s.error_id.empty());
+  CHECK(answers == 5);
+  REQUIRE(motion_at(s, 4) != nullptr);
+  // Decode-only (check, trace): READY stays 0, so the program waits forever: a program that
+  // runs endlessly (NC4904 in check), never NC4901.
+  core::SourceFile file("test.nc", text);
+  Options options;
+  options.external["READY"] = 0.0;  // --ve READY=0
+  Interpreter interp(file, test::machine(), options);
+  for (int i = 0; i < 1000 && interp.next_decode_only(); ++i) {
+  }
+  CHECK(interp.error() == nullptr);
+  CHECK(interp.endless_from().has_value());
+}
+
 TEST_CASE("a V.E. read in a loop body stops the stream on every pass") {
   core::SourceFile file("test.nc",
                         "%t\n$FOR P1 = 1, 3, 1\nP2 = V.E.PART\nG00 X[P2]\n$ENDFOR\nM30\n");

@@ -274,7 +274,7 @@ int write_trace(const core::SourceFile& file, const machines::Machine& machine,
   Interpreter interp(file, machine, options.interp);
   std::uint64_t count = 0;
   bool truncated = false;
-  for (;;) {
+  while (out.good()) {
     auto c = interp.next_decode_only();
     if (!c) break;
     if (options.max_commands != 0 && count == options.max_commands) {
@@ -293,7 +293,7 @@ int write_trace(const core::SourceFile& file, const machines::Machine& machine,
     diags.add({core::Severity::note,
                file.name(),
                {},
-               "NC4903",
+               "NC4905",
                "trace truncated after " + std::to_string(count) +
                    " commands (--max-commands); the program goes on"});
   }
@@ -312,12 +312,12 @@ core::DiagnosticList check_semantics(const core::SourceFile& file, const machine
                                      const Options& options) {
   Interpreter interp(file, machine, options);
   core::DiagnosticList out;
-  // Long straight programs are checked to their end; only loops that run on are cut.
+  // Finite programs are checked to their end; an endless one up to its first repeat.
   const std::uint64_t max_commands =
       std::max<std::uint64_t>(kCheckMaxCommands, kCheckCommandsPerLine * file.line_count());
   std::uint64_t count = 0;
   bool ended = false;
-  while (count < max_commands) {
+  while (count < max_commands && !interp.endless_from()) {
     auto c = interp.next_decode_only();
     if (!c) {
       ended = true;
@@ -376,16 +376,25 @@ core::DiagnosticList check_semantics(const core::SourceFile& file, const machine
     }
   }
   for (const auto& d : interp.diagnostics().items()) {
-    if (d.id.rfind("NC1", 0) == 0 || d.id.rfind("NC2", 0) == 0) continue;  // syntax: grammar
+    const bool syntax = d.id.rfind("NC1", 0) == 0 || d.id.rfind("NC2", 0) == 0;
+    if (syntax && d.file == file.name()) continue;  // the main file's syntax: grammar
     out.add(d);
   }
-  if (!ended) {
+  if (!ended && interp.endless_from()) {
     out.add({core::Severity::note,
+             file.name(),
+             {*interp.endless_from(), 1},
+             "NC4904",
+             "the program runs endlessly: from here it returns to the same state (variables, "
+             "loops, position) after motion or a run-time wait; checked through one repetition"});
+  } else if (!ended) {
+    out.add({core::Severity::warning,
              file.name(),
              {},
              "NC4902",
              "check stopped after " + std::to_string(max_commands) +
-                 " commands (endless loop?); the rest of the program was not checked"});
+                 " commands without reaching the end or a repeated state; the rest of the "
+                 "program was not checked"});
   }
   return out;
 }

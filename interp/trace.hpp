@@ -6,8 +6,8 @@
 // axis values as NAME=value for the machine's path axes in machine order; a motion ends with
 // its frame and start point.
 // Also check_semantics(): the semantic check behind `ncsim check` (interprets the whole
-// program; stops at the first error, or after a command count set by the program's length
-// with a note, so endless loops terminate).
+// program to its end; stops at the first error, at the first repeat of an endless program
+// with note NC4904, or after kCheckMaxCommands with warning NC4902).
 
 #include <array>
 #include <cstdint>
@@ -35,7 +35,7 @@ struct TraceOptions {
 /// Writes the command stream of `file` to `out`, one line per command, answering each Barrier
 /// from the decode-only state. Returns 0 when the program ran to its end, 1 on a program
 /// error (added to `diags`). A trace cut at max_commands while the program goes on ends with
-/// the line `# truncated after N commands (--max-commands)` and note NC4903 in `diags`; it
+/// the line `# truncated after N commands (--max-commands)` and note NC4905 in `diags`; it
 /// still returns 0 (nothing is wrong with the program; the marker says the record is partial).
 int write_trace(const core::SourceFile& file, const machines::Machine& machine,
                 const TraceOptions& options, std::ostream& out, core::DiagnosticList& diags);
@@ -48,10 +48,11 @@ std::pair<std::array<double, 2>, std::array<double, 2>> arc_extent(const Motion&
 /// Commands a golden trace holds at most (endless programs are cut there).
 inline constexpr std::uint64_t kGoldenCommands = 400;
 
-/// Commands check_semantics interprets before it stops with note NC4902: at least
-/// kCheckMaxCommands, and kCheckCommandsPerLine per line of the program, so that a long
-/// program without loops is checked to its end and only loops that run on are cut.
-inline constexpr std::uint64_t kCheckMaxCommands = 100000;
+/// Commands check_semantics interprets at most: kCheckMaxCommands, or kCheckCommandsPerLine
+/// per line of the program if that is more (a long straight program is checked to its end).
+/// A program that neither ends nor returns to an earlier state (Interpreter::endless_from)
+/// within them gets warning NC4902.
+inline constexpr std::uint64_t kCheckMaxCommands = 50'000'000;
 inline constexpr std::uint64_t kCheckCommandsPerLine = 4;
 
 /// Semantic check: interprets the program without motion and reports its errors (axes the

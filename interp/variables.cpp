@@ -1,6 +1,7 @@
 #include "interp/variables.hpp"
 
 #include <cmath>
+#include <cstring>
 
 #include "core/number_text.hpp"
 
@@ -296,6 +297,77 @@ bool Variables::remove(const VarRef& ref) {
 const std::string* Variables::macro(std::string_view name) const {
   auto found = macros_.find(name);
   return found == macros_.end() ? nullptr : &found->second;
+}
+
+namespace {
+
+// splitmix64 finaliser: a well-mixed 64-bit hash of one word.
+std::uint64_t mix(std::uint64_t x) {
+  x += 0x9E3779B97F4A7C15ull;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
+std::uint64_t mix(std::uint64_t seed, std::uint64_t x) {
+  return mix(seed ^ mix(x));
+}
+std::uint64_t bits(double v) {
+  std::uint64_t b = 0;
+  std::memcpy(&b, &v, sizeof b);
+  return b;
+}
+std::uint64_t text_hash(std::string_view text) {
+  std::uint64_t h = mix(text.size());
+  for (const char c : text)
+    h = mix(h, static_cast<unsigned char>(c));
+  return h;
+}
+std::uint64_t variable_hash(const Variable& v, std::size_t& visited) {
+  std::uint64_t h = mix(static_cast<std::uint64_t>(v.type));
+  for (const std::uint32_t d : v.dims)
+    h = mix(h, d);
+  for (const double x : v.values)
+    h = mix(h, bits(x));
+  visited += v.values.size() + 1;
+  return mix(h, text_hash(v.text));
+}
+// Order-independent: the sum of the entries' hashes.
+template <typename Map>
+std::uint64_t map_hash(const Map& map, std::uint64_t salt, std::size_t& visited) {
+  std::uint64_t sum = mix(salt, map.size());
+  for (const auto& [name, v] : map)
+    sum += mix(text_hash(name), variable_hash(v, visited));
+  return sum;
+}
+
+}  // namespace
+
+std::uint64_t Variables::fingerprint(std::size_t& visited) const {
+  visited = p_values_.size();
+  std::uint64_t h = mix(p_values_.size());
+  for (std::size_t i = 0; i < p_values_.size(); ++i) {
+    if (p_set_[i] != 0) h = mix(h, mix(i, bits(p_values_[i])));
+  }
+  std::uint64_t arrays = 0;
+  for (const auto& [number, values] : p_arrays_) {
+    std::uint64_t a = mix(number);
+    for (const double x : values)
+      a = mix(a, bits(x));
+    visited += values.size();
+    arrays += a;
+  }
+  h = mix(h, arrays);
+  h = mix(h, map_hash(v_p_, 1, visited));
+  h = mix(h, map_hash(v_e_, 2, visited));
+  h = mix(h, map_hash(v_g_, 3, visited));
+  h = mix(h, map_hash(v_cyc_, 4, visited));
+  h = mix(h, map_hash(persistent_->values, 5, visited));
+  for (const Map& level : locals_)
+    h = mix(h, map_hash(level, 6, visited));
+  for (const auto& [name, text] : macros_)
+    h = mix(h, mix(text_hash(name), text_hash(text)));
+  visited += macros_.size();
+  return h;
 }
 
 }  // namespace ncsim::interp

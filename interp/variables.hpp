@@ -95,6 +95,11 @@ class Variables {
 
   std::size_t p_count() const { return p_values_.size(); }
 
+  /// A 64-bit hash of every value, name, type, scope and macro the store holds (equal stores
+  /// give equal hashes; the order maps are iterated in does not matter). `visited` is set to
+  /// the number of values hashed, the cost of the call.
+  std::uint64_t fingerprint(std::size_t& visited) const;
+
  private:
   using Map = std::unordered_map<std::string, Variable>;
   const Variable* find(const VarRef& ref) const;

@@ -104,6 +104,50 @@ expect "--syntax-only takes no machine" 2 '' 'takes no --machine' -- \
 expect "warnings keep status 0 and are counted in the verdict" 0 'no_end\.nc: ok, 1 warning' \
   'no_end\.nc:3:1: warning: .*\[NC2019\]' -- check "$fixtures/no_end.nc"
 expect "help exits 0" 0 'check' '' -- --help
+expect "an unknown command is named" 2 '' "unknown command 'chek'" -- chek "$fixtures/clean.nc"
+expect "a negative --max-commands is a usage error" 2 '' 'max-commands' -- \
+  trace --max-commands -1 "$fixtures/clean.nc"
+expect "a --ve name given twice is a usage error" 2 '' 'OFFSET is given more than once' -- \
+  trace "$fixtures/external.nc" --ve OFFSET=1 --ve OFFSET=2
+checks=$((checks + 1))
+if "$ncsim" check - <"$fixtures/clean.nc" 2>"$work/err" | grep -q '^<stdin>: ok$'; then
+  echo "ok   - reads the program from standard input"
+else
+  failures=$((failures + 1)); echo "FAIL - reads the program from standard input"
+  cat "$work/err"
+fi
+if [[ -w /dev/full ]]; then
+  checks=$((checks + 1))
+  "$ncsim" trace "$fixtures/clean.nc" >/dev/full 2>"$work/err"
+  got=$?
+  if [[ $got -ne 0 ]] && grep -q 'cannot write' "$work/err"; then
+    echo "ok   a write error fails the command with a message"
+  else
+    failures=$((failures + 1)); echo "FAIL a write error fails the command (exit $got)"
+    cat "$work/err"
+  fi
+  checks=$((checks + 1))
+  "$ncsim" check "$fixtures/clean.nc" >/dev/full 2>"$work/err"
+  got=$?
+  if [[ $got -eq 2 ]]; then
+    echo "ok   check's verdict that cannot be written fails"
+  else
+    failures=$((failures + 1)); echo "FAIL check's verdict that cannot be written (exit $got)"
+  fi
+fi
+mkdir -p "$work/sub"
+printf '%%main\nG00 X0\nL bad_sub.nc\nM30\n' >"$work/sub/main.nc"
+printf '%%bad_sub\nP1 = 1\n$IF P1 == 2\nG01 X[[1]\n$ENDIF\nM17\n' >"$work/sub/bad_sub.nc"
+expect "check reports the syntax errors of a called subroutine file" 1 '' \
+  'bad_sub\.nc:4:[0-9]+: error: .*\[NC1' -- check "$work/sub/main.nc"
+expect "check names a called subroutine file with syntax errors" 1 '' '\[NC4306\]' -- \
+  check "$work/sub/main.nc"
+printf '%%e\nP1 = 0\n$WHILE 1\nG01 X[P1] F600\nP1 = 1 - P1\n$ENDWHILE\nM30\n' >"$work/endless.nc"
+expect "an endless program is named in the verdict" 0 'ok \(runs endlessly from line [0-9]+\)' \
+  '' -- check "$work/endless.nc"
+printf '%%e\nP1 = 0\n$WHILE 1\nP1 = 1 - P1\n$ENDWHILE\nM30\n' >"$work/stuck.nc"
+expect "an endless loop without motion is an error" 1 '' 'stuck\.nc:3:1: error: .*cannot end.*\[NC4901\]' \
+  -- check "$work/stuck.nc"
 
 echo "cli: $((checks - failures)) passed, $failures failed"
 ((failures == 0))
