@@ -37,6 +37,16 @@ struct Metric {
 /// monotonically from lo (where it is >= r) to the corner end (at hi when `toward_hi`).
 double cut_point(const Segment& seg, const Metric& distance, const AxisVec& corner, double r,
                  double lo, double hi, bool toward_hi) {
+  if (seg.kind() == SegmentKind::line) {
+    // Closed form: the distance grows linearly with the arc length from the corner end.
+    const AxisVec dir = seg.at(0.0).d1;
+    const double rate = distance(dir, AxisVec{});
+    if (rate > 0.0) {
+      const double s_corner = toward_hi ? hi : lo;  // the corner is at the end of the search
+      const double s = toward_hi == (hi > lo) ? s_corner - r / rate : s_corner + r / rate;
+      return std::clamp(s, std::min(lo, hi), std::max(lo, hi));
+    }
+  }
   for (int iter = 0; iter < 64; ++iter) {
     const double mid = 0.5 * (lo + hi);
     const bool outside = distance(seg.point(mid), corner) > r;

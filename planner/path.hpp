@@ -64,7 +64,9 @@ struct BezierGeom {
 
 }  // namespace geom
 
-enum class SegmentKind : std::uint8_t { line, arc, blend };
+/// line and arc: closed form; blend: quintic Bezier of a tolerance ball; spline: one piece of an
+/// Akima or B-spline (#SPLINE), a cubic held as its degree-elevated quintic Bezier (spline.hpp).
+enum class SegmentKind : std::uint8_t { line, arc, blend, spline };
 
 /// One curve with arc-length parametrisation, restricted to a window [s_lo, s_hi] of its
 /// underlying geometry (trimming for tolerance balls moves the window, not the geometry).
@@ -84,6 +86,9 @@ class Segment {
   static Segment from_move(const Move& move);
   /// A quintic Bezier curve through control points p[0..5] (used by tolerance balls).
   static Segment bezier(std::uint8_t axis_count, AxisMask metric, const std::array<AxisVec, 6>& p);
+  /// A cubic Bezier piece of a spline through control points c[0..3], held exactly as its
+  /// degree-elevated quintic (same arc-length machinery as blends); kind() == spline.
+  static Segment cubic(std::uint8_t axis_count, AxisMask metric, const std::array<AxisVec, 4>& c);
 
   SegmentKind kind() const noexcept;
   std::uint8_t axis_count() const noexcept { return n_; }
@@ -116,8 +121,9 @@ class Segment {
   std::variant<LineGeom, ArcGeom, BezierGeom> geom_;
   std::uint8_t n_ = 0;
   AxisMask metric_ = 0;
-  double s_lo_ = 0.0;  ///< window start in the underlying geometry [mm]
-  double s_hi_ = 0.0;  ///< window end [mm]
+  double s_lo_ = 0.0;    ///< window start in the underlying geometry [mm]
+  double s_hi_ = 0.0;    ///< window end [mm]
+  bool spline_ = false;  ///< a Bezier that is a spline piece, not a blend
 };
 
 /// The metric used for a displacement: the path axes if they move, else every axis.
