@@ -289,15 +289,50 @@ DerivativeBounds Segment::bezier_bounds() const noexcept {
   const Hodographs h = hodographs(g.p, n_);
   const Tables& tab = tables();
   DerivativeBounds b;
+  // The formulas of arc_length_derivatives(), inlined without the position and without
+  // building PathPoints (this loop is most of the cost of a tolerance ball).
+  std::array<double, kMaxAxes> v1;  // first n_ entries set per sample
+  std::array<double, kMaxAxes> v2;
+  std::array<double, kMaxAxes> v3;
   for (std::size_t k = 0; k <= kSamples; ++k) {
     const double t = t0 + (t1 - t0) * static_cast<double>(k) / kSamples;
-    const Derivs d = whole ? eval_with(h, n_, tab.s5[k], tab.s4[k], tab.s3[k], tab.s2[k])
-                           : eval_with(h, n_, basis<5>(t), basis<4>(t), basis<3>(t), basis<2>(t));
-    const PathPoint p = arc_length_derivatives(d, n_, metric_);
+    const std::array<double, 5> b4 = whole ? tab.s4[k] : basis<4>(t);
+    const std::array<double, 4> b3 = whole ? tab.s3[k] : basis<3>(t);
+    const std::array<double, 3> b2 = whole ? tab.s2[k] : basis<2>(t);
+    double b11 = 0.0, b12 = 0.0, b22 = 0.0, b13 = 0.0;
     for (std::size_t i = 0; i < n_; ++i) {
-      b.d1[i] = std::max(b.d1[i], std::abs(p.d1[i]));
-      b.d2[i] = std::max(b.d2[i], std::abs(p.d2[i]));
-      b.d3[i] = std::max(b.d3[i], std::abs(p.d3[i]));
+      double a1 = 0.0, a2 = 0.0, a3 = 0.0;
+      for (std::size_t m = 0; m < 5; ++m)
+        a1 += b4[m] * h.c1[m][i];
+      for (std::size_t m = 0; m < 4; ++m)
+        a2 += b3[m] * h.c2[m][i];
+      for (std::size_t m = 0; m < 3; ++m)
+        a3 += b2[m] * h.c3[m][i];
+      v1[i] = a1;
+      v2[i] = a2;
+      v3[i] = a3;
+      if (has(metric_, i)) {
+        b11 += a1 * a1;
+        b12 += a1 * a2;
+        b22 += a2 * a2;
+        b13 += a1 * a3;
+      }
+    }
+    const double sg = std::sqrt(b11);
+    if (sg <= 0.0) continue;
+    const double inv = 1.0 / sg;
+    const double sg1 = b12 * inv;
+    const double sg2 = (b22 + b13 - sg1 * sg1) * inv;
+    const double i2 = inv * inv;
+    const double i3 = i2 * inv;
+    const double i4 = i3 * inv;
+    const double c1 = sg1 * i3;        // x'' = B2 / sg^2 - B1 c1
+    const double c2 = 3.0 * sg1 * i4;  // x''' = B3 / sg^3 - B2 c2 + B1 c3
+    const double c3 = 3.0 * sg1 * sg1 * i4 * inv - sg2 * i4;
+    for (std::size_t i = 0; i < n_; ++i) {
+      b.d1[i] = std::max(b.d1[i], std::abs(v1[i] * inv));
+      b.d2[i] = std::max(b.d2[i], std::abs(v2[i] * i2 - v1[i] * c1));
+      b.d3[i] = std::max(b.d3[i], std::abs(v3[i] * i3 - v2[i] * c2 + v1[i] * c3));
     }
   }
   for (std::size_t i = 0; i < n_; ++i) {
