@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "planner/limits.hpp"
+#include "planner/prepare.hpp"
 
 namespace {
 
@@ -256,5 +257,46 @@ TEST_CASE("property: motion inside the path limits of spline pieces keeps every 
         CHECK(worst <= 1.0 + 1e-9);
       }
     }
+  }
+}
+
+TEST_CASE("spline pieces go through the preparation: B-spline joints chain (C2), Akima are C1") {
+  std::vector<SplineVertex> pts(12);
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    pts[k].point[0] = 2.0 * static_cast<double>(k);
+    pts[k].point[1] = std::sin(0.8 * static_cast<double>(k));
+    pts[k].line = static_cast<std::uint32_t>(100 + k);
+    pts[k].feed = 30.0;
+  }
+  AxisLimits ax;
+  ax.v_max = ax.v_reference = ax.v_rapid = 500.0;
+  ax.a_max = ax.d_max = 5000.0;
+  ax.j_max = 1e6;
+  const std::array<AxisLimits, 3> axes = {ax, ax, ax};
+  Move modal;
+  modal.slope = SlopeType::trapez;
+  for (const SplineType type : {SplineType::bspline, SplineType::akima}) {
+    Preparer prep(axes, ChannelLimits{});
+    std::vector<PreparedSegment> out;
+    const auto pieces = build(type, pts);
+    for (const SplinePiece& p : pieces)
+      prep.push(p, modal, out);
+    prep.finish(out);
+    std::size_t parts = 0;
+    double length = 0.0;
+    double expected = 0.0;
+    for (const SplinePiece& p : pieces)
+      expected += p.curve.length();
+    for (const PreparedSegment& ps : out) {
+      parts += ps.path.parts();
+      length += ps.path.length();
+      if (ps.stop == StopReason::none)
+        CHECK(ps.joint ==
+              (type == SplineType::bspline ? TransitionClass::c2 : TransitionClass::c1));
+    }
+    CHECK(parts == pieces.size());
+    CHECK(length == doctest::Approx(expected).epsilon(1e-12));
+    CHECK(out.back().stop == StopReason::end_of_stream);
+    if (type == SplineType::bspline) CHECK(out.size() < pieces.size());  // chained through C2
   }
 }
