@@ -66,6 +66,9 @@ struct BezierGeom {
 
 /// line and arc: closed form; blend: quintic Bezier of a tolerance ball; spline: one piece of an
 /// Akima or B-spline (#SPLINE), a cubic held as its degree-elevated quintic Bezier (spline.hpp).
+/// Samples (uniform in the curve parameter) for the derivative bounds of a spline piece.
+inline constexpr std::size_t kSplineBoundSamples = 1024;
+
 enum class SegmentKind : std::uint8_t { line, arc, blend, spline };
 
 /// One curve with arc-length parametrisation, restricted to a window [s_lo, s_hi] of its
