@@ -116,6 +116,10 @@ struct Tables {
   std::array<std::array<double, 5>, kSamples + 1> s4{};
   std::array<std::array<double, 4>, kSamples + 1> s3{};
   std::array<std::array<double, 3>, kSamples + 1> s2{};
+  // The same for the spline pieces' kSplineBoundSamples (degrees 4, 3, 2 only).
+  std::array<std::array<double, 5>, kSplineBoundSamples + 1> f4{};
+  std::array<std::array<double, 4>, kSplineBoundSamples + 1> f3{};
+  std::array<std::array<double, 3>, kSplineBoundSamples + 1> f2{};
   Tables() {
     constexpr double dt = 1.0 / geom::BezierGeom::kTable;
     for (int k = 0; k < geom::BezierGeom::kTable; ++k)
@@ -128,6 +132,12 @@ struct Tables {
       s4[u] = basis<4>(t);
       s3[u] = basis<3>(t);
       s2[u] = basis<2>(t);
+    }
+    for (std::size_t k = 0; k <= kSplineBoundSamples; ++k) {
+      const double t = static_cast<double>(k) / static_cast<double>(kSplineBoundSamples);
+      f4[k] = basis<4>(t);
+      f3[k] = basis<3>(t);
+      f2[k] = basis<2>(t);
     }
   }
 };
@@ -286,7 +296,7 @@ DerivativeBounds Segment::bezier_bounds() const noexcept {
   constexpr double kMargin = 1.01;
   const BezierGeom& g = std::get<BezierGeom>(geom_);
   const bool whole = s_lo_ <= 0.0 && s_hi_ >= g.s_at[BezierGeom::kTable];
-  const bool table = whole && !spline_;
+  const bool table = whole;
   const double t0 = whole ? 0.0 : bezier_t(g, s_lo_);
   const double t1 = whole ? 1.0 : bezier_t(g, s_hi_);
   const Hodographs h = hodographs(g.p, n_);
@@ -299,9 +309,9 @@ DerivativeBounds Segment::bezier_bounds() const noexcept {
   std::array<double, kMaxAxes> v3;
   for (std::size_t k = 0; k <= samples; ++k) {
     const double t = t0 + (t1 - t0) * static_cast<double>(k) / static_cast<double>(samples);
-    const std::array<double, 5> b4 = table ? tab.s4[k] : basis<4>(t);
-    const std::array<double, 4> b3 = table ? tab.s3[k] : basis<3>(t);
-    const std::array<double, 3> b2 = table ? tab.s2[k] : basis<2>(t);
+    const std::array<double, 5> b4 = !table ? basis<4>(t) : spline_ ? tab.f4[k] : tab.s4[k];
+    const std::array<double, 4> b3 = !table ? basis<3>(t) : spline_ ? tab.f3[k] : tab.s3[k];
+    const std::array<double, 3> b2 = !table ? basis<2>(t) : spline_ ? tab.f2[k] : tab.s2[k];
     double b11 = 0.0, b12 = 0.0, b22 = 0.0, b13 = 0.0;
     for (std::size_t i = 0; i < n_; ++i) {
       double a1 = 0.0, a2 = 0.0, a3 = 0.0;
