@@ -105,7 +105,7 @@ class Segment {
   AxisVec start() const noexcept { return point(0.0); }
   AxisVec end() const noexcept { return point(length()); }
   /// Bounds of |x'_i|, |x''_i|, |x'''_i| over the segment (exact for lines and arcs,
-  /// 65 samples plus 1 % margin for blends: docs/planner.md "Geometry").
+  /// 65 samples plus 1 % margin for blends, 1024 for spline pieces: docs/planner.md "Geometry").
   DerivativeBounds bounds() const noexcept;
   /// The same curve restricted to [s0, s1] (0 <= s0 < s1 <= length()).
   Segment trimmed(double s0, double s1) const noexcept;

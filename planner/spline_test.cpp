@@ -300,3 +300,26 @@ TEST_CASE("spline pieces go through the preparation: B-spline joints chain (C2),
     if (type == SplineType::bspline) CHECK(out.size() < pieces.size());  // chained through C2
   }
 }
+
+TEST_CASE("spline pieces' derivative bounds hold against 2049 samples in arc length") {
+  std::mt19937 rng(91);
+  double worst = 0.0;  // largest sampled |derivative| over its bound
+  for (int trial = 0; trial < 10; ++trial) {
+    const auto pts = random_points(rng, 8);
+    for (const SplineType type : {SplineType::akima, SplineType::bspline}) {
+      for (const SplinePiece& piece : build(type, pts)) {
+        const DerivativeBounds b = piece.curve.bounds();
+        for (int k = 0; k <= 2048; ++k) {
+          const PathPoint p = piece.curve.at(piece.curve.length() * k / 2048.0);
+          for (std::size_t i = 0; i < 3; ++i) {
+            if (b.d1[i] > 0.0) worst = std::max(worst, std::abs(p.d1[i]) / b.d1[i]);
+            if (b.d2[i] > 0.0) worst = std::max(worst, std::abs(p.d2[i]) / b.d2[i]);
+            if (b.d3[i] > 0.0) worst = std::max(worst, std::abs(p.d3[i]) / b.d3[i]);
+          }
+        }
+      }
+    }
+  }
+  CHECK(worst <= 1.0);
+  CHECK(worst > 0.9);  // and they are not loose
+}
