@@ -12,7 +12,9 @@
 #include <random>
 #include <vector>
 
+#include "planner/limits.hpp"
 #include "planner/lookahead.hpp"
+#include "planner/spline.hpp"
 
 namespace {
 
@@ -119,6 +121,29 @@ void BM_Prepare(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_Prepare)->Arg(0)->Arg(1);
+
+// Spline pieces (Akima = 0, B-spline = 1) from a stream of CAM-like points 0.1 mm apart, with
+// the path limits of each piece: what a #SPLINE section costs per point.
+void BM_Spline(benchmark::State& state) {
+  const auto type = state.range(0) == 0 ? SplineType::akima : SplineType::bspline;
+  const auto ax = limits();
+  SplineBuilder builder(type, 3, 0b111);
+  Move m;
+  m.feed = 100.0;
+  m.slope = SlopeType::trapez;
+  SplineVertex v;
+  std::uint64_t k = 0;
+  for (auto _ : state) {
+    v.point[0] = 0.1 * static_cast<double>(k);
+    v.point[1] = 2.0 * std::sin(0.013 * static_cast<double>(k));
+    v.point[2] = 0.5 * std::cos(0.007 * static_cast<double>(k));
+    ++k;
+    for (const SplinePiece& p : builder.push(v))
+      benchmark::DoNotOptimize(path_limits(p.curve, m, ax).v_max);
+  }
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_Spline)->Arg(0)->Arg(1);
 
 }  // namespace
 

@@ -37,11 +37,10 @@ PathLimits path_limits(const Segment& segment, const Move& move, std::span<const
     throw std::invalid_argument("planner: " + std::to_string(axes.size()) +
                                 " axis limits for a segment of " + std::to_string(n) + " axes");
   const DerivativeBounds b = segment.bounds();
-  const bool jerk = jerk_limited(move.slope);
   const double length = segment.length();
 
-  PathLimits out;
   // The velocity the block asks for.
+  double v_programmed = 0.0;
   if (move.rapid) {
     // 000 l.360: each axis at MIN(rapid, reference, maximum); the slowest axis sets the time.
     double v = kInf;
@@ -50,13 +49,25 @@ PathLimits path_limits(const Segment& segment, const Move& move, std::span<const
       const AxisLimits& ax = axes[i];
       v = std::min(v, std::min({ax.v_rapid, ax.v_reference, ax.v_max}) / b.d1[i]);
     }
-    out.v_programmed = std::isfinite(v) ? v : 0.0;
+    v_programmed = std::isfinite(v) ? v : 0.0;
   } else if (move.block_time) {
-    out.v_programmed = *move.block_time > 0.0 ? length / *move.block_time : kInf;
+    v_programmed = *move.block_time > 0.0 ? length / *move.block_time : kInf;
   } else {
-    out.v_programmed = move.feed;
+    v_programmed = move.feed;
   }
+  PathLimits out = limits_from_bounds(b, axes.first(n), v_programmed, jerk_limited(move.slope));
+  // The rapid velocity already is the axes' own; it is never "capped".
+  if (move.rapid && out.limit == VelocityLimit::axis_velocity)
+    out.limit = VelocityLimit::programmed;
+  out.v_end = move.end_feed ? std::min(out.v_max, std::max(*move.end_feed, 0.0)) : out.v_max;
+  return out;
+}
 
+PathLimits limits_from_bounds(const DerivativeBounds& b, std::span<const AxisLimits> axes,
+                              double v_programmed, bool jerk) {
+  const std::size_t n = axes.size();
+  PathLimits out;
+  out.v_programmed = v_programmed;
   double cap = out.v_programmed;
   VelocityLimit limit = VelocityLimit::programmed;
   std::uint8_t limiting_axis = 0;
@@ -74,12 +85,10 @@ PathLimits path_limits(const Segment& segment, const Move& move, std::span<const
       lower(std::cbrt(kCurvatureJerkShare * ax.j_max / b.d3[i]), VelocityLimit::curvature_jerk,
             ax_id, cap, limit, limiting_axis);
   }
-  // The rapid velocity already is the axes' own; it is never "capped".
-  if (move.rapid && limit == VelocityLimit::axis_velocity) limit = VelocityLimit::programmed;
   out.v_max = std::max(cap, 0.0);
   out.limit = limit;
   out.limiting_axis = limiting_axis;
-  out.v_end = move.end_feed ? std::min(out.v_max, std::max(*move.end_feed, 0.0)) : out.v_max;
+  out.v_end = out.v_max;
 
   const double v = out.v_max;
   double a_plus = kInf;

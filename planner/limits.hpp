@@ -34,6 +34,7 @@ enum class VelocityLimit : std::uint8_t {
   axis_velocity,   ///< an axis maximum / reference velocity caps F (noted in time --blocks)
   centripetal,     ///< an axis acceleration on the curvature
   curvature_jerk,  ///< an axis jerk on the change of curvature
+  joint,           ///< a joint of the kinematic transform (v, a or j; joint_limits.hpp)
 };
 
 /// Path limits of one segment.
@@ -63,5 +64,12 @@ bool jerk_limited(SlopeType slope) noexcept;
 /// Path limits of `segment` (from `move`) under `axes` (one entry per machine axis in use).
 /// Throws std::invalid_argument when `axes` has fewer entries than the segment's axes.
 PathLimits path_limits(const Segment& segment, const Move& move, std::span<const AxisLimits> axes);
+
+/// The projection itself: limits of a curve whose per-axis derivative bounds are `b` (one
+/// entry of `axes` per axis), at most `v_programmed` [mm/s], with the jerk rules when `jerk`.
+/// path_limits() uses it for the machine axes, joint_limits.hpp for the joints of a
+/// kinematic transform. v_end = v_max.
+PathLimits limits_from_bounds(const DerivativeBounds& b, std::span<const AxisLimits> axes,
+                              double v_programmed, bool jerk);
 
 }  // namespace ncsim::planner

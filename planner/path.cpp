@@ -131,7 +131,7 @@ SegmentKind Segment::kind() const noexcept {
     case 1:
       return SegmentKind::arc;
     default:
-      return SegmentKind::blend;
+      return spline_ ? SegmentKind::spline : SegmentKind::blend;
   }
 }
 

@@ -64,7 +64,12 @@ struct BezierGeom {
 
 }  // namespace geom
 
-enum class SegmentKind : std::uint8_t { line, arc, blend };
+/// line and arc: closed form; blend: quintic Bezier of a tolerance ball; spline: one piece of an
+/// Akima or B-spline (#SPLINE), a cubic held as its degree-elevated quintic Bezier (spline.hpp).
+/// Samples (uniform in the curve parameter) for the derivative bounds of a spline piece.
+inline constexpr std::size_t kSplineBoundSamples = 1024;
+
+enum class SegmentKind : std::uint8_t { line, arc, blend, spline };
 
 /// One curve with arc-length parametrisation, restricted to a window [s_lo, s_hi] of its
 /// underlying geometry (trimming for tolerance balls moves the window, not the geometry).
@@ -84,6 +89,9 @@ class Segment {
   static Segment from_move(const Move& move);
   /// A quintic Bezier curve through control points p[0..5] (used by tolerance balls).
   static Segment bezier(std::uint8_t axis_count, AxisMask metric, const std::array<AxisVec, 6>& p);
+  /// A cubic Bezier piece of a spline through control points c[0..3], held exactly as its
+  /// degree-elevated quintic (same arc-length machinery as blends); kind() == spline.
+  static Segment cubic(std::uint8_t axis_count, AxisMask metric, const std::array<AxisVec, 4>& c);
 
   SegmentKind kind() const noexcept;
   std::uint8_t axis_count() const noexcept { return n_; }
@@ -97,7 +105,7 @@ class Segment {
   AxisVec start() const noexcept { return point(0.0); }
   AxisVec end() const noexcept { return point(length()); }
   /// Bounds of |x'_i|, |x''_i|, |x'''_i| over the segment (exact for lines and arcs,
-  /// 65 samples plus 1 % margin for blends: docs/planner.md "Geometry").
+  /// 65 samples plus 1 % margin for blends, 1024 for spline pieces: docs/planner.md "Geometry").
   DerivativeBounds bounds() const noexcept;
   /// The same curve restricted to [s0, s1] (0 <= s0 < s1 <= length()).
   Segment trimmed(double s0, double s1) const noexcept;
@@ -116,8 +124,9 @@ class Segment {
   std::variant<LineGeom, ArcGeom, BezierGeom> geom_;
   std::uint8_t n_ = 0;
   AxisMask metric_ = 0;
-  double s_lo_ = 0.0;  ///< window start in the underlying geometry [mm]
-  double s_hi_ = 0.0;  ///< window end [mm]
+  double s_lo_ = 0.0;    ///< window start in the underlying geometry [mm]
+  double s_hi_ = 0.0;    ///< window end [mm]
+  bool spline_ = false;  ///< a Bezier that is a spline piece, not a blend
 };
 
 /// The metric used for a displacement: the path axes if they move, else every axis.

@@ -50,40 +50,116 @@ struct Derivs {
   AxisVec b0{}, b1{}, b2{}, b3{};
 };
 
-/// B and its first three t-derivatives with one basis evaluation shared by every axis:
-/// dB = 5 sum b4_i D1_i, d2B = 20 sum b3_i D2_i, d3B = 60 sum b2_i D3_i (forward differences Dk).
-Derivs eval(const std::array<AxisVec, 6>& p, std::size_t n, double t) {
-  const auto b5 = basis<5>(t);
-  const auto b4 = basis<4>(t);
-  const auto b3 = basis<3>(t);
-  const auto b2 = basis<2>(t);
+/// Control points of B and of its first three t-derivatives (hodographs), per axis:
+/// dB = 5 sum b4_k D1_k, d2B = 20 sum b3_k D2_k, d3B = 60 sum b2_k D3_k (forward differences,
+/// scaled here once).
+struct Hodographs {
+  std::array<AxisVec, 6> c0{};
+  std::array<AxisVec, 5> c1{};
+  std::array<AxisVec, 4> c2{};
+  std::array<AxisVec, 3> c3{};
+};
+
+Hodographs hodographs(const std::array<AxisVec, 6>& p, std::size_t n) {
+  Hodographs h;
+  h.c0 = p;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t k = 0; k < 5; ++k)
+      h.c1[k][i] = p[k + 1][i] - p[k][i];
+    for (std::size_t k = 0; k < 4; ++k)
+      h.c2[k][i] = h.c1[k + 1][i] - h.c1[k][i];
+    for (std::size_t k = 0; k < 3; ++k)
+      h.c3[k][i] = h.c2[k + 1][i] - h.c2[k][i];
+    for (std::size_t k = 0; k < 5; ++k)
+      h.c1[k][i] *= 5.0;
+    for (std::size_t k = 0; k < 4; ++k)
+      h.c2[k][i] *= 20.0;
+    for (std::size_t k = 0; k < 3; ++k)
+      h.c3[k][i] *= 60.0;
+  }
+  return h;
+}
+
+/// B and its first three t-derivatives from the hodographs and the Bernstein values at t.
+Derivs eval_with(const Hodographs& h, std::size_t n, const std::array<double, 6>& b5,
+                 const std::array<double, 5>& b4, const std::array<double, 4>& b3,
+                 const std::array<double, 3>& b2) {
   Derivs d;
   for (std::size_t i = 0; i < n; ++i) {
-    std::array<double, 6> c = {p[0][i], p[1][i], p[2][i], p[3][i], p[4][i], p[5][i]};
-    double v0 = 0.0;
-    for (int k = 0; k <= 5; ++k)
-      v0 += b5[k] * c[k];
-    for (int k = 0; k < 5; ++k)
-      c[k] = c[k + 1] - c[k];
-    double v1 = 0.0;
-    for (int k = 0; k <= 4; ++k)
-      v1 += b4[k] * c[k];
-    for (int k = 0; k < 4; ++k)
-      c[k] = c[k + 1] - c[k];
-    double v2 = 0.0;
-    for (int k = 0; k <= 3; ++k)
-      v2 += b3[k] * c[k];
-    for (int k = 0; k < 3; ++k)
-      c[k] = c[k + 1] - c[k];
-    double v3 = 0.0;
-    for (int k = 0; k <= 2; ++k)
-      v3 += b2[k] * c[k];
+    double v0 = 0.0, v1 = 0.0, v2 = 0.0, v3 = 0.0;
+    for (std::size_t k = 0; k < 6; ++k)
+      v0 += b5[k] * h.c0[k][i];
+    for (std::size_t k = 0; k < 5; ++k)
+      v1 += b4[k] * h.c1[k][i];
+    for (std::size_t k = 0; k < 4; ++k)
+      v2 += b3[k] * h.c2[k][i];
+    for (std::size_t k = 0; k < 3; ++k)
+      v3 += b2[k] * h.c3[k][i];
     d.b0[i] = v0;
-    d.b1[i] = 5.0 * v1;
-    d.b2[i] = 20.0 * v2;
-    d.b3[i] = 60.0 * v3;
+    d.b1[i] = v1;
+    d.b2[i] = v2;
+    d.b3[i] = v3;
   }
   return d;
+}
+
+Derivs eval(const std::array<AxisVec, 6>& p, std::size_t n, double t) {
+  return eval_with(hodographs(p, n), n, basis<5>(t), basis<4>(t), basis<3>(t), basis<2>(t));
+}
+
+/// Bernstein values at fixed parameters, computed once: the arc-length table's Gauss nodes and
+/// the bound samples (the same t for every curve, so no basis is recomputed per curve).
+struct Tables {
+  static constexpr int kSamples = 64;  ///< bound samples: t = k / 64, k = 0..64
+  std::array<std::array<double, 5>, geom::BezierGeom::kTable * 5> gauss4{};
+  std::array<std::array<double, 6>, kSamples + 1> s5{};
+  std::array<std::array<double, 5>, kSamples + 1> s4{};
+  std::array<std::array<double, 4>, kSamples + 1> s3{};
+  std::array<std::array<double, 3>, kSamples + 1> s2{};
+  // The same for the spline pieces' kSplineBoundSamples (degrees 4, 3, 2 only).
+  std::array<std::array<double, 5>, kSplineBoundSamples + 1> f4{};
+  std::array<std::array<double, 4>, kSplineBoundSamples + 1> f3{};
+  std::array<std::array<double, 3>, kSplineBoundSamples + 1> f2{};
+  Tables() {
+    constexpr double dt = 1.0 / geom::BezierGeom::kTable;
+    for (int k = 0; k < geom::BezierGeom::kTable; ++k)
+      for (std::size_t g = 0; g < 5; ++g)
+        gauss4[static_cast<std::size_t>(k) * 5 + g] = basis<4>((k + 0.5) * dt + 0.5 * dt * kGlX[g]);
+    for (int k = 0; k <= kSamples; ++k) {
+      const double t = static_cast<double>(k) / kSamples;
+      const auto u = static_cast<std::size_t>(k);
+      s5[u] = basis<5>(t);
+      s4[u] = basis<4>(t);
+      s3[u] = basis<3>(t);
+      s2[u] = basis<2>(t);
+    }
+    for (std::size_t k = 0; k <= kSplineBoundSamples; ++k) {
+      const double t = static_cast<double>(k) / static_cast<double>(kSplineBoundSamples);
+      f4[k] = basis<4>(t);
+      f3[k] = basis<3>(t);
+      f2[k] = basis<2>(t);
+    }
+  }
+};
+
+const Tables& tables() {
+  static const Tables t;
+  return t;
+}
+
+/// Speed |B'| with a given degree-4 basis.
+double speed_with(const std::array<AxisVec, 6>& p, std::size_t n, AxisMask metric,
+                  const std::array<double, 5>& b4) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!has(metric, i)) continue;
+    double v = 0.0;
+    for (std::size_t k = 0; k < 5; ++k)
+      v += b4[k] * (p[k + 1][i] - p[k][i]);
+    v *= 5.0;
+    sum += v * v;
+  }
+  return std::sqrt(sum);
 }
 
 double speed(const std::array<AxisVec, 6>& p, std::size_t n, AxisMask metric, double t) {
@@ -110,6 +186,35 @@ double integrate_speed(const std::array<AxisVec, 6>& p, std::size_t n, AxisMask 
   return h * sum;
 }
 
+/// x', x'', x''' with respect to arc length from the t-derivatives (formulas at the top).
+PathPoint arc_length_derivatives(const Derivs& d, std::size_t n, AxisMask metric) {
+  double b11 = 0.0, b12 = 0.0, b22 = 0.0, b13 = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!has(metric, i)) continue;
+    b11 += d.b1[i] * d.b1[i];
+    b12 += d.b1[i] * d.b2[i];
+    b22 += d.b2[i] * d.b2[i];
+    b13 += d.b1[i] * d.b3[i];
+  }
+  PathPoint p;
+  p.x = d.b0;
+  const double sg = std::sqrt(b11);
+  if (sg <= 0.0) return p;
+  const double sg1 = b12 / sg;
+  const double sg2 = (b22 + b13 - sg1 * sg1) / sg;
+  const double s2 = sg * sg;
+  const double s3 = s2 * sg;
+  const double s4 = s3 * sg;
+  const double s5 = s4 * sg;
+  for (std::size_t i = 0; i < n; ++i) {
+    p.d1[i] = d.b1[i] / sg;
+    p.d2[i] = d.b2[i] / s2 - d.b1[i] * sg1 / s3;
+    p.d3[i] = d.b3[i] / s3 - 3.0 * d.b2[i] * sg1 / s4 - d.b1[i] * sg2 / s4 +
+              3.0 * d.b1[i] * sg1 * sg1 / s5;
+  }
+  return p;
+}
+
 }  // namespace
 
 Segment Segment::bezier(std::uint8_t axis_count, AxisMask metric, const std::array<AxisVec, 6>& p) {
@@ -122,15 +227,41 @@ Segment Segment::bezier(std::uint8_t axis_count, AxisMask metric, const std::arr
   BezierGeom g;
   g.p = p;
   constexpr double dt = 1.0 / BezierGeom::kTable;
-  for (int k = 0; k < BezierGeom::kTable; ++k)
-    g.s_at[k + 1] = g.s_at[k] + integrate_speed(p, axis_count, seg.metric_, k * dt, (k + 1) * dt);
+  const Tables& tab = tables();
+  for (std::size_t k = 0; k < BezierGeom::kTable; ++k) {
+    double sum = 0.0;
+    for (std::size_t q = 0; q < 5; ++q)
+      sum += kGlW[q] * speed_with(p, axis_count, seg.metric_, tab.gauss4[k * 5 + q]);
+    g.s_at[k + 1] = g.s_at[k] + 0.5 * dt * sum;
+  }
   seg.s_hi_ = g.s_at[BezierGeom::kTable];
   seg.geom_ = g;
   return seg;
 }
 
+Segment Segment::cubic(std::uint8_t axis_count, AxisMask metric, const std::array<AxisVec, 4>& c) {
+  // Degree elevation 3 -> 4 -> 5 (exact): Q_k = (k / (m + 1)) P_(k-1) + (1 - k / (m + 1)) P_k.
+  std::array<AxisVec, 5> q{};
+  std::array<AxisVec, 6> p{};
+  for (std::size_t i = 0; i < axis_count; ++i) {
+    q[0][i] = c[0][i];
+    for (int k = 1; k <= 3; ++k)
+      q[k][i] = (k / 4.0) * c[k - 1][i] + (1.0 - k / 4.0) * c[k][i];
+    q[4][i] = c[3][i];
+    p[0][i] = q[0][i];
+    for (int k = 1; k <= 4; ++k)
+      p[k][i] = (k / 5.0) * q[k - 1][i] + (1.0 - k / 5.0) * q[k][i];
+    p[5][i] = q[4][i];
+  }
+  Segment seg = bezier(axis_count, metric, p);
+  seg.spline_ = true;
+  return seg;
+}
+
 double Segment::bezier_t(const BezierGeom& g, double s) const noexcept {
   constexpr double dt = 1.0 / BezierGeom::kTable;
+  if (s <= 0.0) return 0.0;
+  if (s >= g.s_at[BezierGeom::kTable]) return 1.0;
   const auto it = std::upper_bound(g.s_at.begin(), g.s_at.end(), s);
   const int k = std::clamp(static_cast<int>(it - g.s_at.begin()) - 1, 0, BezierGeom::kTable - 1);
   const double t_k = k * dt;
@@ -149,32 +280,7 @@ double Segment::bezier_t(const BezierGeom& g, double s) const noexcept {
 }
 
 PathPoint Segment::bezier_at_t(const BezierGeom& g, double t) const noexcept {
-  const Derivs d = eval(g.p, n_, t);
-  double b11 = 0.0, b12 = 0.0, b22 = 0.0, b13 = 0.0;
-  for (std::size_t i = 0; i < n_; ++i) {
-    if (!has(metric_, i)) continue;
-    b11 += d.b1[i] * d.b1[i];
-    b12 += d.b1[i] * d.b2[i];
-    b22 += d.b2[i] * d.b2[i];
-    b13 += d.b1[i] * d.b3[i];
-  }
-  PathPoint p;
-  p.x = d.b0;
-  const double sg = std::sqrt(b11);
-  if (sg <= 0.0) return p;
-  const double sg1 = b12 / sg;
-  const double sg2 = (b22 + b13 - sg1 * sg1) / sg;
-  const double s2 = sg * sg;
-  const double s3 = s2 * sg;
-  const double s4 = s3 * sg;
-  const double s5 = s4 * sg;
-  for (std::size_t i = 0; i < n_; ++i) {
-    p.d1[i] = d.b1[i] / sg;
-    p.d2[i] = d.b2[i] / s2 - d.b1[i] * sg1 / s3;
-    p.d3[i] = d.b3[i] / s3 - 3.0 * d.b2[i] * sg1 / s4 - d.b1[i] * sg2 / s4 +
-              3.0 * d.b1[i] * sg1 * sg1 / s5;
-  }
-  return p;
+  return arc_length_derivatives(eval(g.p, n_, t), n_, metric_);
 }
 
 PathPoint Segment::bezier_at(const BezierGeom& g, double s) const noexcept {
@@ -182,19 +288,64 @@ PathPoint Segment::bezier_at(const BezierGeom& g, double s) const noexcept {
 }
 
 DerivativeBounds Segment::bezier_bounds() const noexcept {
-  // Uniform in the curve parameter t over the window (no arc-length inversion per sample).
-  constexpr int kSamples = 64;
+  // Uniform in the curve parameter t over the window (no arc-length inversion per sample); a
+  // whole curve (every blend and spline piece) uses the precomputed Bernstein tables.
+  // Spline pieces: the speed of a cubic between uneven points varies much more than a blend's,
+  // and 65 samples missed curvature peaks by up to 16 % (docs/planner.md "Geometry").
+  const std::size_t samples = spline_ ? kSplineBoundSamples : Tables::kSamples;
   constexpr double kMargin = 1.01;
   const BezierGeom& g = std::get<BezierGeom>(geom_);
-  const double t0 = bezier_t(g, s_lo_);
-  const double t1 = bezier_t(g, s_hi_);
+  const bool whole = s_lo_ <= 0.0 && s_hi_ >= g.s_at[BezierGeom::kTable];
+  const bool table = whole;
+  const double t0 = whole ? 0.0 : bezier_t(g, s_lo_);
+  const double t1 = whole ? 1.0 : bezier_t(g, s_hi_);
+  const Hodographs h = hodographs(g.p, n_);
+  const Tables& tab = tables();
   DerivativeBounds b;
-  for (int k = 0; k <= kSamples; ++k) {
-    const PathPoint p = bezier_at_t(g, t0 + (t1 - t0) * k / kSamples);
+  // The formulas of arc_length_derivatives(), inlined without the position and without
+  // building PathPoints (this loop is most of the cost of a tolerance ball).
+  std::array<double, kMaxAxes> v1;  // first n_ entries set per sample
+  std::array<double, kMaxAxes> v2;
+  std::array<double, kMaxAxes> v3;
+  for (std::size_t k = 0; k <= samples; ++k) {
+    const double t = t0 + (t1 - t0) * static_cast<double>(k) / static_cast<double>(samples);
+    const std::array<double, 5> b4 = !table ? basis<4>(t) : spline_ ? tab.f4[k] : tab.s4[k];
+    const std::array<double, 4> b3 = !table ? basis<3>(t) : spline_ ? tab.f3[k] : tab.s3[k];
+    const std::array<double, 3> b2 = !table ? basis<2>(t) : spline_ ? tab.f2[k] : tab.s2[k];
+    double b11 = 0.0, b12 = 0.0, b22 = 0.0, b13 = 0.0;
     for (std::size_t i = 0; i < n_; ++i) {
-      b.d1[i] = std::max(b.d1[i], std::abs(p.d1[i]));
-      b.d2[i] = std::max(b.d2[i], std::abs(p.d2[i]));
-      b.d3[i] = std::max(b.d3[i], std::abs(p.d3[i]));
+      double a1 = 0.0, a2 = 0.0, a3 = 0.0;
+      for (std::size_t m = 0; m < 5; ++m)
+        a1 += b4[m] * h.c1[m][i];
+      for (std::size_t m = 0; m < 4; ++m)
+        a2 += b3[m] * h.c2[m][i];
+      for (std::size_t m = 0; m < 3; ++m)
+        a3 += b2[m] * h.c3[m][i];
+      v1[i] = a1;
+      v2[i] = a2;
+      v3[i] = a3;
+      if (has(metric_, i)) {
+        b11 += a1 * a1;
+        b12 += a1 * a2;
+        b22 += a2 * a2;
+        b13 += a1 * a3;
+      }
+    }
+    const double sg = std::sqrt(b11);
+    if (sg <= 0.0) continue;
+    const double inv = 1.0 / sg;
+    const double sg1 = b12 * inv;
+    const double sg2 = (b22 + b13 - sg1 * sg1) * inv;
+    const double i2 = inv * inv;
+    const double i3 = i2 * inv;
+    const double i4 = i3 * inv;
+    const double c1 = sg1 * i3;        // x'' = B2 / sg^2 - B1 c1
+    const double c2 = 3.0 * sg1 * i4;  // x''' = B3 / sg^3 - B2 c2 + B1 c3
+    const double c3 = 3.0 * sg1 * sg1 * i4 * inv - sg2 * i4;
+    for (std::size_t i = 0; i < n_; ++i) {
+      b.d1[i] = std::max(b.d1[i], std::abs(v1[i] * inv));
+      b.d2[i] = std::max(b.d2[i], std::abs(v2[i] * i2 - v1[i] * c1));
+      b.d3[i] = std::max(b.d3[i], std::abs(v3[i] * i3 - v2[i] * c2 + v1[i] * c3));
     }
   }
   for (std::size_t i = 0; i < n_; ++i) {

@@ -103,7 +103,25 @@ void Preparer::output(PreparedSegment ps, std::vector<PreparedSegment>& out) {
 
 void Preparer::push(const Move& move, std::vector<PreparedSegment>& out) {
   validate(move);
-  const Segment seg = Segment::from_move(move);
+  push_path(move, Segment::from_move(move), out);
+}
+
+void Preparer::push(const SplinePiece& piece, const Move& modal,
+                    std::vector<PreparedSegment>& out) {
+  Move move = modal;
+  move.axis_count = piece.curve.axis_count();
+  move.start = piece.curve.start();
+  move.end = piece.curve.end();
+  move.arc.reset();
+  move.rapid = false;
+  move.block_time.reset();
+  move.feed = piece.feed;
+  move.line = piece.line;
+  validate(move);
+  push_path(move, piece.curve, out);
+}
+
+void Preparer::push_path(const Move& move, const Segment& seg, std::vector<PreparedSegment>& out) {
   if (seg.length() < kMinLength) {
     if (pending_ && pending_->stop == StopReason::none) pending_->stop = requested_stop(move);
     return;

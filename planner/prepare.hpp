@@ -26,6 +26,7 @@
 #include "planner/limits.hpp"
 #include "planner/move.hpp"
 #include "planner/path.hpp"
+#include "planner/spline.hpp"
 
 namespace ncsim::planner {
 
@@ -60,6 +61,11 @@ class Preparer {
   /// Adds the next Move; appends the segments that became complete. Throws
   /// std::invalid_argument when the Move is malformed (validate()).
   void push(const Move& move, std::vector<PreparedSegment>& out);
+  /// Adds a spline piece (spline.hpp) as the next block: the modal state (slope, contour,
+  /// transition, exact stop, path axes) comes from `modal`; start, end, feed and line from the
+  /// piece, whose curve is planned as it is (never chopped). Joints between pieces are then
+  /// classified like any other (Akima: C1, B-spline: C2, chained at one cap).
+  void push(const SplinePiece& piece, const Move& modal, std::vector<PreparedSegment>& out);
   /// End of the stream: appends the held segment, ending in a stop.
   void finish(std::vector<PreparedSegment>& out);
 
@@ -70,6 +76,8 @@ class Preparer {
     double full_length = 0;  ///< length before any trimming [mm]
     StopReason stop = StopReason::none;
   };
+  /// push() with the curve given (a Move's own curve or a spline piece).
+  void push_path(const Move& move, const Segment& seg, std::vector<PreparedSegment>& out);
   PreparedSegment make(const Segment& path, const Move& move, bool blend) const;
   /// Appends `in` with its end joint to `out_path` (velocity cap v_out) resolved.
   void emit_joint(PreparedSegment in, const Move& in_move, const Segment& out_path, double v_out,

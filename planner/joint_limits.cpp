@@ -1,0 +1,69 @@
+// planner/joint_limits: joint derivative bounds along a Cartesian segment (joint_limits.hpp).
+
+#include "planner/joint_limits.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ncsim::planner {
+
+std::optional<DerivativeBounds> joint_bounds(const Segment& segment, const JointMap& inverse,
+                                             std::size_t joint_count) {
+  const std::size_t n = segment.axis_count();
+  const double length = segment.length();
+  const int samples = std::clamp(static_cast<int>(std::ceil(length / kJointSpacing)),
+                                 kJointMinSamples, kJointMaxSamples);
+  const double ds = length / samples;
+  const double d = kJointStep;
+  DerivativeBounds b;
+  std::array<AxisVec, 5> q{};
+  for (int k = 0; k <= samples; ++k) {
+    const PathPoint p = segment.at(ds * k);
+    for (int m = 0; m < 5; ++m) {
+      const double h = (m - 2) * d;
+      AxisVec x = p.x;
+      for (std::size_t i = 0; i < n; ++i)
+        x[i] += h * p.d1[i] + 0.5 * h * h * p.d2[i] + h * h * h / 6.0 * p.d3[i];
+      if (!inverse(x, q[m])) return std::nullopt;
+    }
+    for (std::size_t i = 0; i < joint_count; ++i) {
+      const double q1 = (q[3][i] - q[1][i]) / (2.0 * d);
+      const double q2 = (q[3][i] - 2.0 * q[2][i] + q[1][i]) / (d * d);
+      const double q3 = (q[4][i] - 2.0 * q[3][i] + 2.0 * q[1][i] - q[0][i]) / (2.0 * d * d * d);
+      b.d1[i] = std::max(b.d1[i], std::abs(q1));
+      b.d2[i] = std::max(b.d2[i], std::abs(q2));
+      b.d3[i] = std::max(b.d3[i], std::abs(q3));
+    }
+  }
+  for (std::size_t i = 0; i < joint_count; ++i) {
+    b.d3[i] *= 1.0 + kJointMargin;
+    b.d2[i] += 0.5 * ds * b.d3[i];
+    b.d1[i] += 0.5 * ds * b.d2[i];
+  }
+  return b;
+}
+
+std::optional<PathLimits> path_limits(const Segment& segment, const Move& move,
+                                      std::span<const AxisLimits> axes, const JointMap& inverse,
+                                      std::span<const AxisLimits> joints) {
+  PathLimits out = path_limits(segment, move, axes);
+  if (segment.length() <= 0.0) return out;
+  const auto b = joint_bounds(segment, inverse, joints.size());
+  if (!b) return std::nullopt;
+  // The joints' own limits at most at the axis cap. Each of v, a, d, j is the smaller of the two
+  // sets; the joint set's a and j were derived at a velocity (and acceleration) no smaller than
+  // the combined ones, so they stay valid (the budgets used by v and a only shrink).
+  const PathLimits jl = limits_from_bounds(*b, joints, out.v_max, jerk_limited(move.slope));
+  if (jl.v_max < out.v_max) {
+    out.v_max = jl.v_max;
+    out.limit = VelocityLimit::joint;
+    out.limiting_axis = jl.limiting_axis;
+  }
+  out.v_end = std::min(out.v_end, out.v_max);
+  out.a_max = std::min(out.a_max, jl.a_max);
+  out.d_max = std::min(out.d_max, jl.d_max);
+  out.j_max = std::min(out.j_max, jl.j_max);
+  return out;
+}
+
+}  // namespace ncsim::planner

@@ -1,0 +1,163 @@
+// Joint limits under a kinematic transform (#TRAFO ON, delta #KIN ID[37]): a delta-robot move
+// planned in Cartesian space whose joints, computed with machines' delta kinematics from the
+// planned path sampled finely in time, stay inside their v, a, j; and the same moves planned
+// with the axis limits alone break them (so the check can fail).
+
+#include "planner/joint_limits.hpp"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "machines/delta_kinematics.hpp"
+#include "planner/lookahead.hpp"
+
+namespace {
+
+using namespace ncsim::planner;
+using ncsim::machines::DeltaGeometry;
+using ncsim::machines::DeltaKinematics;
+
+DeltaKinematics delta() {
+  // TF5264 pick & place listing (seed 004 §4.9.1), docs/machines.md "Kinematic 37".
+  DeltaGeometry g;
+  g.r_effector = 48.0;
+  g.r_base = 200.0;
+  g.l_lower = 1050.0;
+  g.l_upper = 465.544;
+  return DeltaKinematics(g);
+}
+
+JointMap joint_map(const DeltaKinematics& kin) {
+  return [&kin](const AxisVec& x, AxisVec& q) {
+    const auto r = kin.inverse(Eigen::Vector3d(x[0], x[1], x[2]));
+    if (!r.ok()) return false;
+    q = AxisVec{};
+    for (std::size_t i = 0; i < 3; ++i)
+      q[i] = r.value[static_cast<Eigen::Index>(i)];
+    return true;
+  };
+}
+
+AxisLimits limits(double v, double a, double j) {
+  AxisLimits ax;
+  ax.v_max = ax.v_reference = ax.v_rapid = v;
+  ax.a_max = ax.d_max = a;
+  ax.j_max = j;
+  return ax;
+}
+
+struct Peak {
+  std::array<double, 3> v{}, a{}, j{};  // largest |joint v, a, j| over the move [deg/s^k]
+};
+
+/// Plans `seg` from stop to stop with `pl` and measures the joints every dt.
+Peak joint_peaks(const Segment& seg, const PathLimits& pl, const DeltaKinematics& kin) {
+  PlannedSegment planned;
+  planned.segment.path = Chain(seg);
+  planned.segment.limits = pl;
+  planned.a_max = pl.a_max;
+  planned.d_max = pl.d_max;
+  planned.j_max = pl.j_max;
+  const ncsim::jerk::Move profile_move = profile(planned);
+  constexpr double dt = 2e-4;
+  const auto steps = static_cast<int>(std::ceil(profile_move.time() / dt)) + 8;
+  std::vector<Eigen::Vector3d> q;
+  for (int k = -4; k <= steps; ++k) {
+    const PathState st = profile_at(profile_move, 0.0, k * dt);
+    const AxisVec x = seg.point(st.s);
+    const auto r = kin.inverse(Eigen::Vector3d(x[0], x[1], x[2]));
+    REQUIRE(r.ok());
+    q.push_back(r.value);
+  }
+  Peak p;
+  for (std::size_t k = 2; k + 2 < q.size(); ++k)
+    for (Eigen::Index i = 0; i < 3; ++i) {
+      const auto u = static_cast<std::size_t>(i);
+      p.v[u] = std::max(p.v[u], std::abs(q[k + 1][i] - q[k - 1][i]) / (2 * dt));
+      p.a[u] = std::max(p.a[u], std::abs(q[k + 1][i] - 2 * q[k][i] + q[k - 1][i]) / (dt * dt));
+      p.j[u] =
+          std::max(p.j[u], std::abs(q[k + 2][i] - 3 * q[k + 1][i] + 3 * q[k][i] - q[k - 1][i]) /
+                               (dt * dt * dt));
+    }
+  return p;
+}
+
+std::vector<Move> delta_moves(const AxisVec& home) {
+  std::vector<Move> moves;
+  auto at = [&](double dx, double dy, double dz) {
+    AxisVec p = home;
+    p[0] += dx;
+    p[1] += dy;
+    p[2] += dz;
+    return p;
+  };
+  Move m;
+  m.feed = 2000.0;
+  m.slope = SlopeType::trapez;
+  m.start = at(-250, -100, 0);
+  m.end = at(250, 150, -80);  // a long diagonal pick-and-place stroke
+  moves.push_back(m);
+  m.start = at(0, 0, 100);
+  m.end = at(0, 0, -150);  // a vertical stroke
+  moves.push_back(m);
+  m.start = at(150, 0, 0);  // a full circle of R = 150 (G03)
+  m.end = m.start;
+  m.arc = Arc{0, 1, home[0], home[1], false, true};
+  moves.push_back(m);
+  return moves;
+}
+
+}  // namespace
+
+TEST_CASE("a delta-robot move planned in Cartesian space keeps every joint inside its limits") {
+  const DeltaKinematics kin = delta();
+  const auto home_r = kin.forward(Eigen::Vector3d(20, 20, 20));
+  REQUIRE(home_r.ok());
+  AxisVec home{};
+  for (std::size_t i = 0; i < 3; ++i)
+    home[i] = home_r.value[static_cast<Eigen::Index>(i)];
+  // Cartesian axes fast, joints slow: the joints must be what limits the path.
+  const std::array<AxisLimits, 3> axes = {limits(5000, 5e4, 5e6), limits(5000, 5e4, 5e6),
+                                          limits(5000, 5e4, 5e6)};
+  const std::array<AxisLimits, 3> joints = {limits(40, 400, 8000), limits(40, 400, 8000),
+                                            limits(40, 400, 8000)};
+  const JointMap ik = joint_map(kin);
+  double worst = 0.0;
+  for (const Move& m : delta_moves(home)) {
+    const Segment seg = Segment::from_move(m);
+    const auto pl = path_limits(seg, m, axes, ik, joints);
+    REQUIRE(pl.has_value());
+    CHECK(pl->limit == VelocityLimit::joint);
+    const Peak p = joint_peaks(seg, *pl, kin);
+    for (std::size_t i = 0; i < 3; ++i) {
+      CHECK(p.v[i] <= joints[i].v_max * (1 + 1e-6));
+      CHECK(p.a[i] <= joints[i].a_max * (1 + 1e-3));  // finite differences, dt = 0.2 ms
+      CHECK(p.j[i] <= joints[i].j_max * (1 + 1e-3));
+      worst = std::max(
+          {worst, p.v[i] / joints[i].v_max, p.a[i] / joints[i].a_max, p.j[i] / joints[i].j_max});
+    }
+    // The axis limits alone would break the joints' (the check above can fail).
+    const PathLimits axis_only = path_limits(seg, m, axes);
+    const Peak fast = joint_peaks(seg, axis_only, kin);
+    CHECK(std::max({fast.v[0], fast.v[1], fast.v[2]}) > 2 * joints[0].v_max);
+  }
+  // The bound is used, not wasted: some joint comes near one of its limits.
+  CHECK(worst > 0.5);
+  MESSAGE("largest joint v/a/j over its limit: " << worst);
+}
+
+TEST_CASE("a segment that leaves the delta's workspace cannot be planned") {
+  const DeltaKinematics kin = delta();
+  const std::array<AxisLimits, 3> lim = {limits(500, 5e3, 5e5), limits(500, 5e3, 5e5),
+                                         limits(500, 5e3, 5e5)};
+  Move m;
+  m.feed = 100.0;
+  m.start[2] = -900.0;
+  m.end[2] = 2000.0;  // far above the base
+  const Segment seg = Segment::from_move(m);
+  CHECK_FALSE(path_limits(seg, m, lim, joint_map(kin), lim).has_value());
+}

@@ -1,0 +1,192 @@
+// planner/spline: Akima and clamped cubic B-spline pieces from streamed points (spline.hpp).
+
+#include "planner/spline.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace ncsim::planner {
+
+namespace {
+
+constexpr double kSamePoint = 1e-9;  // [mm | deg] a point this close to the previous is dropped
+
+AxisVec axpy(const AxisVec& x, double a, const AxisVec& y, std::size_t n) {
+  AxisVec r = x;
+  for (std::size_t i = 0; i < n; ++i)
+    r[i] += a * y[i];
+  return r;
+}
+
+/// Metric of a piece: the path axes if its control polygon moves them, else every axis.
+AxisMask piece_metric(std::uint8_t n, AxisMask path_axes, const std::array<AxisVec, 4>& c) {
+  AxisVec travel{};
+  for (std::size_t m = 0; m < 3; ++m)
+    for (std::size_t i = 0; i < n; ++i)
+      travel[i] += std::abs(c[m + 1][i] - c[m][i]);
+  return effective_metric(n, path_axes, travel);
+}
+
+}  // namespace
+
+SplineBuilder::SplineBuilder(SplineType type, std::uint8_t axis_count, AxisMask path_axes)
+    : type_(type), n_(axis_count), path_axes_(path_axes) {
+  if (axis_count == 0 || axis_count > kMaxAxes)
+    throw std::invalid_argument("planner: spline axis_count " + std::to_string(axis_count) +
+                                " outside 1.." + std::to_string(kMaxAxes));
+}
+
+double SplineBuilder::chord_length(std::uint64_t k) const noexcept {
+  const AxisVec& a = vertex(k).point;
+  const AxisVec& b = vertex(k + 1).point;
+  AxisVec d{};
+  for (std::size_t i = 0; i < n_; ++i)
+    d[i] = b[i] - a[i];
+  const AxisMask metric = effective_metric(n_, path_axes_, d);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < n_; ++i)
+    if (((metric >> i) & 1U) != 0) sum += d[i] * d[i];
+  return std::sqrt(sum);
+}
+
+AxisVec SplineBuilder::chord(std::int64_t k) const noexcept {
+  const auto chords = static_cast<std::int64_t>(count_) - 1;
+  if (chords == 1) k = 0;  // one chord: every direction is that chord (a straight piece)
+  if (k < 0) {             // Akima's extrapolation: m_(-1) = 2 m_0 - m_1, m_(-2) = 2 m_(-1) - m_0
+    const AxisVec a = chord(k + 1);
+    const AxisVec b = chord(k + 2);
+    AxisVec r{};
+    for (std::size_t i = 0; i < n_; ++i)
+      r[i] = 2.0 * a[i] - b[i];
+    return r;
+  }
+  if (finished_ && k >= chords) {  // the mirror at the end
+    const AxisVec a = chord(k - 1);
+    const AxisVec b = chord(k - 2);
+    AxisVec r{};
+    for (std::size_t i = 0; i < n_; ++i)
+      r[i] = 2.0 * a[i] - b[i];
+    return r;
+  }
+  const auto uk = static_cast<std::uint64_t>(k);
+  const double h = chord_length(uk);
+  AxisVec r{};
+  for (std::size_t i = 0; i < n_; ++i)
+    r[i] = (vertex(uk + 1).point[i] - vertex(uk).point[i]) / h;
+  return r;
+}
+
+AxisVec SplineBuilder::akima_tangent(std::int64_t i) const noexcept {
+  const AxisVec m1 = chord(i - 2);
+  const AxisVec m2 = chord(i - 1);
+  const AxisVec m3 = chord(i);
+  const AxisVec m4 = chord(i + 1);
+  double w1 = 0.0;  // |m4 - m3|: weight of m2
+  double w2 = 0.0;  // |m2 - m1|: weight of m3
+  for (std::size_t a = 0; a < n_; ++a) {
+    w1 += (m4[a] - m3[a]) * (m4[a] - m3[a]);
+    w2 += (m2[a] - m1[a]) * (m2[a] - m1[a]);
+  }
+  w1 = std::sqrt(w1);
+  w2 = std::sqrt(w2);
+  AxisVec t{};
+  const double sum = w1 + w2;
+  for (std::size_t a = 0; a < n_; ++a)
+    t[a] = sum > 1e-12 ? (w1 * m2[a] + w2 * m3[a]) / sum : 0.5 * (m2[a] + m3[a]);
+  return t;
+}
+
+SplinePiece SplineBuilder::akima_piece(std::uint64_t k) const noexcept {
+  const auto ik = static_cast<std::int64_t>(k);
+  const double h = chord_length(k);
+  const AxisVec& p0 = vertex(k).point;
+  const AxisVec& p1 = vertex(k + 1).point;
+  // Cubic Hermite in u in [0, h] as a cubic Bezier: inner points at +-h t / 3.
+  const std::array<AxisVec, 4> c = {p0, axpy(p0, h / 3.0, akima_tangent(ik), n_),
+                                    axpy(p1, -h / 3.0, akima_tangent(ik + 1), n_), p1};
+  const SplineVertex& src = vertex(k + 1);
+  return {Segment::cubic(n_, piece_metric(n_, path_axes_, c), c), src.line, src.feed};
+}
+
+double SplineBuilder::knot(std::int64_t k) const noexcept {
+  // Clamped uniform: t_k = clamp(k - 3, 0, n - 3); n is known only when finished (callers
+  // ask for unclamped high knots only when the points are there).
+  const double t = static_cast<double>(std::max<std::int64_t>(k - 3, 0));
+  if (!finished_) return t;
+  return std::min(t, static_cast<double>(count_) - 3.0);
+}
+
+SplinePiece SplineBuilder::bspline_piece(std::uint64_t k) noexcept {
+  // De Boor span j = k + 3 (t_j = k <= u < k + 1 = t_(j+1)), control points k .. k + 3. Bezier
+  // point m is the blossom at (3 - m) times t_j and m times t_(j+1).
+  const auto j = static_cast<std::int64_t>(k) + 3;
+  const double lo = knot(j);
+  const double hi = knot(j + 1);
+  std::array<AxisVec, 4> c{};
+  for (int m = 0; m <= 3; ++m) {
+    std::array<AxisVec, 4> d{};
+    for (std::size_t i = 0; i < 4; ++i)
+      d[i] = vertex(k + i).point;
+    for (int r = 1; r <= 3; ++r) {
+      const double arg = r <= 3 - m ? lo : hi;
+      for (int i = 3; i >= r; --i) {
+        const std::int64_t g = j - 3 + i;
+        const double t0 = knot(g);
+        const double t1 = knot(g + 4 - r);
+        const double alpha = (arg - t0) / (t1 - t0);
+        for (std::size_t a = 0; a < n_; ++a)
+          d[i][a] = (1.0 - alpha) * d[i - 1][a] + alpha * d[i][a];
+      }
+    }
+    c[m] = d[3];
+  }
+  if (k > 0) c[0] = last_end_;  // bit-equal joints (the blossoms agree up to rounding)
+  last_end_ = c[3];
+  const bool last = finished_ && k + 4 == count_;
+  const SplineVertex& src = vertex(last ? count_ - 1 : k + 2);
+  return {Segment::cubic(n_, piece_metric(n_, path_axes_, c), c), src.line, src.feed};
+}
+
+void SplineBuilder::emit(std::uint64_t k) {
+  out_[out_n_] = type_ == SplineType::akima ? akima_piece(k) : bspline_piece(k);
+  ++out_n_;
+  ++emitted_;
+}
+
+std::span<const SplinePiece> SplineBuilder::push(const SplineVertex& v) {
+  out_n_ = 0;
+  if (count_ > 0) {
+    const AxisVec& last = vertex(count_ - 1).point;
+    bool same = true;
+    for (std::size_t i = 0; i < n_; ++i)
+      same = same && std::abs(v.point[i] - last[i]) <= kSamePoint;
+    if (same) return {};
+  }
+  ring_[count_ % kWindow] = v;
+  ++count_;
+  // Akima piece k needs points k - 2 .. k + 3; B-spline span k needs the knot t_(k+6)
+  // unclamped, i.e. points up to k + 5.
+  const std::uint64_t lead = type_ == SplineType::akima ? 4 : 6;
+  if (count_ >= lead) emit(count_ - lead);
+  return {out_.data(), out_n_};
+}
+
+std::span<const SplinePiece> SplineBuilder::finish() {
+  out_n_ = 0;
+  finished_ = true;
+  if (type_ == SplineType::bspline && count_ > 1 && count_ < 4)
+    throw std::invalid_argument("planner: a B-spline needs at least 4 control points, got " +
+                                std::to_string(count_) + " (NC4401)");
+  const std::uint64_t pieces =
+      count_ < 2 ? 0 : (type_ == SplineType::akima ? count_ - 1 : count_ - 3);
+  while (emitted_ < pieces)
+    emit(emitted_);
+  count_ = 0;
+  emitted_ = 0;
+  finished_ = false;
+  return {out_.data(), out_n_};
+}
+
+}  // namespace ncsim::planner
