@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ipo/interpolator.hpp"
+#include "planner/test_support.hpp"
 
 namespace ncsim::ipo::test {
 
@@ -26,22 +27,8 @@ class ListSource final : public Source {
   std::size_t next_ = 0;
 };
 
-inline AxisVec vec(double x, double y, double z = 0.0) {
-  AxisVec v{};
-  v[0] = x;
-  v[1] = y;
-  v[2] = z;
-  return v;
-}
-
-inline planner::AxisLimits axis(double v, double a, double j, double c0 = 1.0) {
-  planner::AxisLimits ax;
-  ax.v_max = ax.v_reference = ax.v_rapid = v;
-  ax.a_max = ax.d_max = a;
-  ax.j_max = j;
-  ax.c0 = c0;
-  return ax;
-}
+using planner::test::axis;
+using planner::test::vec;
 
 inline planner::Move line(const AxisVec& a, const AxisVec& b, double feed, std::uint32_t ln) {
   planner::Move m;

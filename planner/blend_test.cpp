@@ -11,18 +11,12 @@
 #include <random>
 
 #include "planner/corner.hpp"
+#include "planner/test_support.hpp"
 
 namespace {
 
 using namespace ncsim::planner;
-
-AxisVec vec(double x, double y, double z = 0.0) {
-  AxisVec v{};
-  v[0] = x;
-  v[1] = y;
-  v[2] = z;
-  return v;
-}
+using test::vec;
 
 double dist(const AxisVec& a, const AxisVec& b) {
   return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +

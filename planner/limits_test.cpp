@@ -12,25 +12,13 @@
 #include <random>
 #include <stdexcept>
 
+#include "planner/test_support.hpp"
+
 namespace {
 
 using namespace ncsim::planner;
-
-AxisVec vec(double x, double y, double z = 0.0) {
-  AxisVec v{};
-  v[0] = x;
-  v[1] = y;
-  v[2] = z;
-  return v;
-}
-
-AxisLimits axis(double v, double a, double j) {
-  AxisLimits ax;
-  ax.v_max = ax.v_reference = ax.v_rapid = v;
-  ax.a_max = ax.d_max = a;
-  ax.j_max = j;
-  return ax;
-}
+using test::axis;
+using test::vec;
 
 Move line(AxisVec a, AxisVec b, double feed, SlopeType slope = SlopeType::trapez) {
   Move m;

@@ -9,6 +9,8 @@
 #include <numbers>
 #include <random>
 
+#include "planner/test_support.hpp"
+
 namespace {
 
 using ncsim::planner::Arc;
@@ -17,16 +19,9 @@ using ncsim::planner::Move;
 using ncsim::planner::PathPoint;
 using ncsim::planner::Segment;
 using ncsim::planner::SegmentKind;
+using ncsim::planner::test::vec;
 
 constexpr double kPi = std::numbers::pi;
-
-AxisVec vec(double x, double y, double z = 0.0) {
-  AxisVec v{};
-  v[0] = x;
-  v[1] = y;
-  v[2] = z;
-  return v;
-}
 
 Move arc_move(AxisVec start, AxisVec end, double c1, double c2, bool cw, std::uint8_t a1 = 0,
               std::uint8_t a2 = 1) {

@@ -10,17 +10,12 @@
 #include <random>
 #include <vector>
 
+#include "planner/test_support.hpp"
+
 namespace {
 
 using namespace ncsim::planner;
-
-AxisVec vec(double x, double y, double z = 0.0) {
-  AxisVec v{};
-  v[0] = x;
-  v[1] = y;
-  v[2] = z;
-  return v;
-}
+using test::vec;
 
 std::array<AxisLimits, 3> limits() {
   AxisLimits ax;
