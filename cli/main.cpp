@@ -3,7 +3,8 @@
 //   ncsim check PROG.nc|- [--machine DIR] [--ve NAME=value] [--syntax-only]
 //                                              exit 0 ok, 1 program errors, 2 usage
 //   ncsim trace PROG.nc [--machine DIR] [--ve NAME=value] [--max-commands N]
-//   ncsim time|run|golden ...                               not built yet: "not supported"
+//   ncsim time|run ...                  cli/run_commands.hpp (exit 3: --audit violations)
+//   ncsim golden ...                                        not built yet: "not supported"
 //
 // Diagnostics go to stderr as `file:line:col: error: text [id]` with the source line and a
 // caret. The command never throws past main: every failure is a message and an exit status.
@@ -16,6 +17,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/run_commands.hpp"
 
 namespace {
 
@@ -73,10 +75,7 @@ int main(int argc, char** argv) {
 
   std::optional<std::string> unsupported;
   std::string unsupported_reason;
-  add_not_supported(app, "time", "Machining time with a per-block breakdown",
-                    "the planner and interpolator", unsupported, unsupported_reason);
-  add_not_supported(app, "run", "Run on the simulated machine and write every axis setpoint",
-                    "the planner and interpolator", unsupported, unsupported_reason);
+  ncsim::cli::RunCommands run_commands(app);  // binds its options: not const, not moved
   add_not_supported(app, "golden", "Regression against programs/*.golden",
                     "the interpolator and golden trajectories", unsupported, unsupported_reason);
 
@@ -108,6 +107,7 @@ int main(int argc, char** argv) {
     return kExitUsage;
   }
   try {
+    if (const auto status = run_commands.dispatch(std::cout, std::cerr)) return *status;
     if (trace_cmd->parsed()) return ncsim::cli::run_trace(trace, std::cout, std::cerr);
     return ncsim::cli::run_check(check, std::cout, std::cerr);
   } catch (const std::bad_alloc&) {

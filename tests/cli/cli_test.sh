@@ -53,8 +53,6 @@ expect "check needs a program" 2 '' '' -- check
 expect "scenarios are not supported yet" 2 '' 'not supported: --scenario' -- \
   check "$fixtures/clean.nc" --scenario "$fixtures/clean.nc"
 expect "trace needs a program" 2 '' '' -- trace
-expect "run is not supported yet" 2 '' 'not supported' -- run "$fixtures/clean.nc"
-expect "time is not supported yet" 2 '' 'not supported' -- time "$fixtures/clean.nc"
 expect "golden is not supported yet" 2 '' 'not supported' -- golden check
 root=$(cd "$fixtures/../.." && pwd)
 expect "a bundled machine can be named with --machine" 0 'clean\.nc: ok' '' -- \
@@ -148,6 +146,67 @@ expect "an endless program is named in the verdict" 0 'ok \(runs endlessly from 
 printf '%%e\nP1 = 0\n$WHILE 1\nP1 = 1 - P1\n$ENDWHILE\nM30\n' >"$work/stuck.nc"
 expect "an endless loop without motion is an error" 1 '' 'stuck\.nc:3:1: error: .*cannot end.*\[NC4901\]' \
   -- check "$work/stuck.nc"
+
+# time / run on the path interpolator (issue 12). long_line.nc: 1000 mm at 100 mm/s with
+# A = 3000 mm/s^2 (STEP, jerk A / T): 10 + 1/30 + 0.001 s, rounded up to the 1 ms cycle:
+# 10035 cycles.
+expect "time of a long line at F is length / F + F / A + T, to the cycle" 0 \
+  'long_line\.nc: 10\.035 s \(10035 cycles of 1 ms\)' '' -- time "$fixtures/long_line.nc"
+expect "time --blocks gives the line's time, distance and feeds" 0 \
+  '^3 10\.035 1000 6000 6000 0 10\.035 0 0 0$' '' -- time --blocks "$fixtures/long_line.nc"
+expect "time --json" 0 '"total_s":10\.035' '' -- time --json --blocks "$fixtures/long_line.nc"
+expect "time --audit passes on the long line" 0 '^audit: ok$' '' -- \
+  time --audit "$fixtures/long_line.nc"
+expect "run --audit passes on the long line" 0 '' '^audit: ok$' -- \
+  run --audit -o "$work/audit.csv" "$fixtures/long_line.nc"
+expect "an unsupported command answers not supported at its line, status 1" 1 '' \
+  'sync_in\.nc:4:1: error: not supported: #SYNC IN.*\[NC6001\]' -- \
+  time --machine "$root/machines/laser_portal" "$fixtures/sync_in.nc"
+expect "run stops at an unsupported command, status 1" 1 '' 'not supported: #SYNC IN' -- \
+  run --machine "$root/machines/laser_portal" -o "$work/sync.csv" "$fixtures/sync_in.nc"
+checks=$((checks + 1))
+if [[ -f $work/sync.csv && ! -e $work/sync.csv.tmp ]] &&
+  [[ $(tail -1 "$work/sync.csv") == "# error: "*"not supported: #SYNC IN"* ]]; then
+  echo "ok   run keeps the trajectory up to the error, with a closing comment"
+else
+  failures=$((failures + 1)); echo "FAIL run keeps the trajectory up to the error"
+  tail -3 "$work/sync.csv"
+fi
+expect "run to a full device is a write error, status 2" 2 '' 'cannot write' -- \
+  run -o /dev/full "$fixtures/long_line.nc"
+expect "run --every 0 is a usage error" 2 '' '' -- run --every 0 "$fixtures/long_line.nc"
+"$ncsim" run -o "$work/a.csv" "$fixtures/long_line.nc" 2>/dev/null
+"$ncsim" run -o "$work/b.csv" "$fixtures/long_line.nc" 2>/dev/null
+"$ncsim" run -o - "$fixtures/long_line.nc" >"$work/c.csv" 2>/dev/null
+checks=$((checks + 1))
+rows=$(grep -cv '^#' "$work/a.csv")
+last_t=$(tail -1 "$work/a.csv" | cut -d, -f1)
+if [[ $rows -eq 10036 && $last_t == "10.035" ]] && cmp -s "$work/a.csv" "$work/b.csv" &&
+  cmp -s "$work/a.csv" "$work/c.csv" && [[ $(sed -n 6p "$work/a.csv") == "t,line,X,Y,Z" ]]; then
+  echo "ok   run: one row per cycle (header + time / T), last t equals time, byte-identical reruns"
+else
+  failures=$((failures + 1)); echo "FAIL run rows / last t / reruns: rows $rows last t $last_t"
+  head -8 "$work/a.csv"
+fi
+# A program with arcs, a dwell and a blend: time's total equals run's last t to the cycle.
+isg="$root/programs/isg_reference_example/isg_reference_example.nc"
+total=$("$ncsim" time "$isg" 2>/dev/null | sed -E 's/^.*: ([0-9.e+-]+) s \(.*$/\1/')
+"$ncsim" run -o "$work/isg.csv" "$isg" 2>/dev/null
+checks=$((checks + 1))
+if [[ -n $total && $(tail -1 "$work/isg.csv" | cut -d, -f1) == "$total" ]]; then
+  echo "ok   time equals the last t of run on isg_reference_example ($total s)"
+else
+  failures=$((failures + 1)); echo "FAIL time ($total) vs run: $(tail -1 "$work/isg.csv")"
+fi
+"$ncsim" run --every 10 --detail -o "$work/d.csv" "$fixtures/long_line.nc" 2>/dev/null
+checks=$((checks + 1))
+if [[ $(grep -cv '^#' "$work/d.csv") -eq 1004 ]] &&
+  [[ $(sed -n 6p "$work/d.csv") == "t,line,X,Y,Z,X.v,X.a,Y.v,Y.a,Z.v,Z.a,v_path,feed" ]]; then
+  echo "ok   run --every 10 --detail: every 10th cycle, detail columns"
+else
+  failures=$((failures + 1)); echo "FAIL run --every 10 --detail"
+  head -8 "$work/d.csv"
+fi
 
 echo "cli: $((checks - failures)) passed, $failures failed"
 ((failures == 0))

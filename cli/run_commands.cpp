@@ -1,0 +1,516 @@
+#include "cli/run_commands.hpp"
+
+#include <CLI/CLI.hpp>
+#include <array>
+#include <cerrno>
+#include <charconv>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <ostream>
+#include <variant>
+
+#include "core/diagnostic.hpp"
+#include "core/source_file.hpp"
+#include "grammar/check.hpp"
+#include "interp/interpreter.hpp"
+#include "ipo/audit.hpp"
+#include "ipo/interpolator.hpp"
+#include "ipo/program_source.hpp"
+#include "ipo/time.hpp"
+#include "machines/loader.hpp"
+
+namespace ncsim::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Shortest round-trip text of `v` (std::to_chars): byte-identical reruns, exact values.
+std::string num(double v) {
+  std::array<char, 32> buf{};
+  const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
+  return std::string(buf.data(), r.ptr);
+}
+
+void append_num(std::string& s, double v) {
+  std::array<char, 32> buf{};
+  const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
+  s.append(buf.data(), r.ptr);
+}
+
+// The machine folder (design.md §5): --machine, else the bundled machine named in the program
+// folder's `machine` file, else the default bundled machine. (Same rule as check / trace.)
+std::optional<fs::path> machine_folder(const ProgramOptions& options, std::ostream& err) {
+  if (options.machine_dir) return *options.machine_dir;
+  const fs::path named = options.program.parent_path() / "machine";
+  std::string name(machines::kDefaultMachine);
+  if (fs::is_regular_file(named)) {
+    std::ifstream in(named);
+    std::string line;
+    std::getline(in, line);
+    const auto first = line.find_first_not_of(" \t\r");
+    const auto last = line.find_last_not_of(" \t\r");
+    if (first == std::string::npos) {
+      err << "ncsim: error: " << named.string() << " names no machine\n";
+      return std::nullopt;
+    }
+    name = line.substr(first, last - first + 1);
+  }
+  return machines::bundled_machine_dir(NCSIM_SOURCE_ROOT, name);
+}
+
+struct Loaded {
+  core::SourceFile file;
+  machines::Machine machine;
+  double t_cycle = 0.001;
+};
+
+// Program and machine, syntax-checked; an exit status on failure (printed on `err`).
+std::variant<Loaded, int> load(const ProgramOptions& options,
+                               const std::optional<std::uint64_t>& cycle_us, std::ostream& err) {
+  if (options.scenario) {
+    err << "ncsim: error: not supported: --scenario (scenario files come with the conveyor "
+           "simulation)\n";
+    return kExitUsage;
+  }
+  if (!options.external.empty()) {
+    err << "ncsim: error: not supported: --ve with time / run (V.E. values come with the "
+           "scenario)\n";
+    return kExitUsage;
+  }
+  std::error_code ec;
+  if (!fs::is_regular_file(options.program, ec)) {
+    err << "ncsim: error: no such file: '" << options.program.string() << "'\n";
+    return kExitUsage;
+  }
+  const std::optional<fs::path> dir = machine_folder(options, err);
+  if (!dir) return kExitUsage;
+  machines::LoadResult loaded = machines::load_machine(*dir);
+  for (const core::Diagnostic& d : loaded.diagnostics.items())
+    err << core::format(d);
+  if (!loaded.machine) {
+    err << "ncsim: error: machine '" << dir->string() << "' could not be loaded\n";
+    return kExitUsage;
+  }
+  core::SourceFile file = core::SourceFile::load(options.program);
+  const core::DiagnosticList syntax = grammar::check_program(file);
+  for (const core::Diagnostic& d : syntax.items())
+    err << core::format(d, file);
+  if (syntax.error_count() > 0) return kExitProgramErrors;
+  // The channel list has no cycle key in ncsim yet: 1 ms unless --cycle-us (docs/ipo.md).
+  const double t = cycle_us ? static_cast<double>(*cycle_us) * 1e-6 : 0.001;
+  return Loaded{std::move(file), std::move(*loaded.machine), t};
+}
+
+// The program error that ended a run, with its source line when it is in the main program.
+std::string diagnostic_text(const Loaded& in, const interp::Interpreter& interp,
+                            const ipo::ProgramSource& src, const std::string& fallback) {
+  const core::Diagnostic* d = src.error();
+  if (d == nullptr) d = interp.error();
+  if (d == nullptr) return "ncsim: error: " + fallback + "\n";
+  return d->file == in.file.name() ? core::format(*d, in.file) : core::format(*d);
+}
+
+std::string first_line(const std::string& s) {
+  return s.substr(0, s.find('\n'));
+}
+
+std::vector<std::string> axis_names(const machines::Machine& m) {
+  std::vector<std::string> out;
+  for (const std::uint8_t i : ipo::interpolated_axes(m))
+    out.push_back(m.axes[i].name);
+  return out;
+}
+
+const char* quantity_name(ipo::Quantity q) {
+  switch (q) {
+    case ipo::Quantity::velocity:
+      return "velocity";
+    case ipo::Quantity::acceleration:
+      return "acceleration";
+    case ipo::Quantity::jerk:
+      return "jerk";
+    case ipo::Quantity::contour:
+      return "contour";
+    case ipo::Quantity::velojump:
+      return "velojump";
+    case ipo::Quantity::c1_step:
+      return "c1-step";
+  }
+  return "?";
+}
+
+const char* method_name(ipo::Method m) {
+  switch (m) {
+    case ipo::Method::closed_form:
+      return "closed form";
+    case ipo::Method::finite_difference:
+      return "finite differences";
+    case ipo::Method::geometry:
+      return "geometry";
+    case ipo::Method::formula:
+      return "formula";
+  }
+  return "?";
+}
+
+// The audit verdict, one line per axis, then the documented steps and every violation listed.
+void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names, std::ostream& os) {
+  for (std::size_t i = 0; i < v.axes.size(); ++i) {
+    const ipo::AxisAudit& a = v.axes[i];
+    os << "audit: " << names[i] << " |v| " << num(std::max(a.v_closed, a.v_diff)) << " / "
+       << num(a.v_limit) << " mm/s, |a| " << num(std::max(a.a_closed, a.a_diff)) << " / "
+       << num(a.a_limit) << " mm/s^2, |j| " << num(std::max(a.j_closed, a.j_diff)) << " / "
+       << num(a.j_limit) << " mm/s^3\n";
+  }
+  os << "audit: contour deviation " << num(v.contour_max) << " mm (tolerance "
+     << num(v.contour_tolerance) << " mm), " << v.step_count
+     << " documented VELOJUMP / C1 steps within their formulas, " << v.cycles << " cycles\n";
+  for (const ipo::Violation& x : v.violations) {
+    os << "audit: violation t=" << num(x.t) << " s line " << x.line << " axis "
+       << (x.axis < names.size() ? names[x.axis] : std::to_string(x.axis)) << ' '
+       << quantity_name(x.quantity) << " (" << method_name(x.method) << ") " << num(x.value)
+       << " > " << num(x.limit) << '\n';
+  }
+  if (v.violation_count > v.violations.size()) {
+    os << "audit: ... " << (v.violation_count - v.violations.size()) << " more violations\n";
+  }
+  os << "audit: " << (v.ok() ? "ok" : std::to_string(v.violation_count) + " violations") << '\n';
+}
+
+/// A Sink that passes every cycle and joint to two sinks (either may be null).
+class Tee final : public ipo::Sink {
+ public:
+  Tee(ipo::Sink* a, ipo::Sink* b) : a_(a), b_(b) {}
+  void on_joint(const ipo::Joint& j) override {
+    if (a_) a_->on_joint(j);
+    if (b_) b_->on_joint(j);
+  }
+  void on_cycle(const ipo::Cycle& c) override {
+    if (a_) a_->on_cycle(c);
+    if (b_) b_->on_cycle(c);
+  }
+
+ private:
+  ipo::Sink* a_;
+  ipo::Sink* b_;
+};
+
+// Runs the program once with the audit sink (Detail::axes); returns the verdict, or the
+// program error text.
+std::variant<ipo::Verdict, std::string> audit_pass(const Loaded& in) {
+  interp::Interpreter interp(in.file, in.machine);
+  ipo::ProgramSource src(interp, in.machine);
+  ipo::Config cfg = ipo::machine_config(in.machine, in.t_cycle);
+  ipo::Audit audit(cfg.axes, cfg.channel.t_cycle, cfg.start);
+  ipo::PathInterpolator ipo(std::move(cfg), src, &audit);
+  ipo::Status s;
+  while ((s = ipo.step()) == ipo::Status::running) {
+  }
+  if (s == ipo::Status::error || src.error() != nullptr) {
+    return diagnostic_text(in, interp, src, ipo.message());
+  }
+  return audit.verdict();
+}
+
+void json_string(std::ostream& os, const std::string& s) {
+  os << '"';
+  for (const char c : s) {
+    if (c == '"' || c == '\\') {
+      os << '\\' << c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {
+      std::array<char, 8> buf{};
+      std::snprintf(buf.data(), buf.size(), "\\u%04x", c);
+      os << buf.data();
+    } else {
+      os << c;
+    }
+  }
+  os << '"';
+}
+
+void json_split(std::ostream& os, const ipo::TimeSplit& s) {
+  os << "{\"rapid\":" << num(s.rapid) << ",\"feed\":" << num(s.feed)
+     << ",\"dwell\":" << num(s.dwell) << ",\"exact_stop\":" << num(s.exact_stop)
+     << ",\"waiting\":" << num(s.starved) << '}';
+}
+
+}  // namespace
+
+int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
+  auto loaded = load(options.program, options.cycle_us, err);
+  if (const int* status = std::get_if<int>(&loaded)) return *status;
+  const Loaded& in = std::get<Loaded>(loaded);
+
+  interp::Interpreter interp(in.file, in.machine);
+  ipo::ProgramSource src(interp, in.machine);
+  bool first_block = true;
+  if (options.json) {
+    out << "{\"program\":";
+    json_string(out, in.file.name());
+    out << ",\"machine\":";
+    json_string(out, in.machine.name);
+    out << ",\"cycle_s\":" << num(in.t_cycle);
+    if (options.blocks) out << ",\"blocks\":[";
+  } else if (options.blocks) {
+    out << "# line time_s distance_mm feed_programmed_mm_min feed_reached_mm_min rapid_s feed_s "
+           "dwell_s exact_stop_s waiting_s\n";
+  }
+  const auto on_block = [&](const ipo::BlockTime& b) {
+    if (!options.blocks) return;
+    if (options.json) {
+      out << (first_block ? "" : ",") << "{\"line\":" << b.line << ",\"time_s\":" << num(b.time)
+          << ",\"distance_mm\":" << num(b.distance)
+          << ",\"feed_programmed_mm_min\":" << num(b.feed_programmed * 60.0)
+          << ",\"feed_reached_mm_min\":" << num(b.feed_reached * 60.0) << ",\"split_s\":";
+      json_split(out, b.split);
+      out << '}';
+    } else {
+      out << b.line << ' ' << num(b.time) << ' ' << num(b.distance) << ' '
+          << num(b.feed_programmed * 60.0) << ' ' << num(b.feed_reached * 60.0) << ' '
+          << num(b.split.rapid) << ' ' << num(b.split.feed) << ' ' << num(b.split.dwell) << ' '
+          << num(b.split.exact_stop) << ' ' << num(b.split.starved) << '\n';
+    }
+    first_block = false;
+  };
+  const ipo::TimeResult r =
+      ipo::machining_time(ipo::machine_config(in.machine, in.t_cycle), src, on_block);
+  // A program error ends the source: the blocks before it ran, then the channel stopped.
+  const bool failed = r.status == ipo::Status::error || src.error() != nullptr;
+  std::string error_text;
+  if (failed) error_text = diagnostic_text(in, interp, src, r.message);
+
+  if (options.json) {
+    if (options.blocks) out << ']';
+    out << ",\"status\":" << (failed ? "\"error\"" : "\"ok\"");
+    if (failed) {
+      out << ",\"error\":";
+      json_string(out, first_line(error_text));
+    }
+    out << ",\"cycles\":" << r.cycles << ",\"total_s\":" << num(r.total)
+        << ",\"distance_mm\":" << num(r.distance) << ",\"split_s\":";
+    json_split(out, r.split);
+    out << "}\n";
+  } else {
+    out << in.file.name() << ": " << (failed ? "stopped after " : "") << num(r.total) << " s ("
+        << r.cycles << " cycles of " << num(in.t_cycle * 1e3) << " ms), path " << num(r.distance)
+        << " mm; rapid " << num(r.split.rapid) << " s, feed " << num(r.split.feed) << " s, dwell "
+        << num(r.split.dwell) << " s, exact stop " << num(r.split.exact_stop) << " s, waiting "
+        << num(r.split.starved) << " s\n";
+  }
+  if (failed) {
+    err << error_text;
+    return kExitProgramErrors;
+  }
+  if (options.audit) {
+    auto verdict = audit_pass(in);
+    if (const auto* text = std::get_if<std::string>(&verdict)) {
+      err << *text;
+      return kExitProgramErrors;
+    }
+    const ipo::Verdict& v = std::get<ipo::Verdict>(verdict);
+    print_audit(v, axis_names(in.machine), options.json ? err : out);
+    if (!v.ok()) return kExitAudit;
+  }
+  return kExitOk;
+}
+
+namespace {
+
+/// Writes the CSV rows: buffered, numbers by std::to_chars.
+class CsvSink final : public ipo::Sink {
+ public:
+  CsvSink(std::FILE* f, std::size_t axes, std::uint64_t every, bool detail)
+      : f_(f), axes_(axes), every_(every), detail_(detail) {
+    buf_.reserve(kFlushAt + 4096);
+  }
+  void on_joint(const ipo::Joint&) override {}
+  void on_cycle(const ipo::Cycle& c) override {
+    if (c.index % every_ != 0) return;
+    append_num(buf_, c.t);
+    buf_ += ',';
+    buf_ += std::to_string(c.line);
+    for (std::size_t i = 0; i < axes_; ++i) {
+      buf_ += ',';
+      append_num(buf_, c.x[i]);
+    }
+    if (detail_) {
+      for (std::size_t i = 0; i < axes_; ++i) {
+        buf_ += ',';
+        append_num(buf_, c.v[i]);
+        buf_ += ',';
+        append_num(buf_, c.a[i]);
+      }
+      buf_ += ',';
+      append_num(buf_, c.path.v);
+      buf_ += ',';
+      append_num(buf_, c.feed);
+    }
+    buf_ += '\n';
+    ++rows_;
+    if (buf_.size() >= kFlushAt) flush();
+  }
+  void text(const std::string& s) {
+    buf_ += s;
+    if (buf_.size() >= kFlushAt) flush();
+  }
+  /// Writes what is buffered; false (errno kept) on a write error, which sticks.
+  bool flush() {
+    if (!failed_ && !buf_.empty() && std::fwrite(buf_.data(), 1, buf_.size(), f_) != buf_.size()) {
+      failed_ = true;
+      errno_ = errno;
+    }
+    buf_.clear();
+    return !failed_;
+  }
+  bool failed() const { return failed_; }
+  int error_number() const { return errno_; }
+  void set_failed(int e) {
+    failed_ = true;
+    errno_ = e;
+  }
+  std::uint64_t rows() const { return rows_; }
+
+ private:
+  static constexpr std::size_t kFlushAt = 1 << 20;
+  std::FILE* f_;
+  std::size_t axes_;
+  std::uint64_t every_;
+  bool detail_;
+  std::string buf_;
+  bool failed_ = false;
+  int errno_ = 0;
+  std::uint64_t rows_ = 0;
+};
+
+}  // namespace
+
+int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
+  if (options.every == 0) {
+    err << "ncsim: error: --every must be at least 1\n";
+    return kExitUsage;
+  }
+  auto loaded = load(options.program, options.cycle_us, err);
+  if (const int* status = std::get_if<int>(&loaded)) return *status;
+  const Loaded& in = std::get<Loaded>(loaded);
+
+  // Output: stdout through `out`'s buffer is avoided: the CSV goes through a FILE*. "-" writes
+  // to stdout; an existing non-regular target (a device, a pipe) is written directly; a file is
+  // written to `<file>.tmp` and renamed when complete.
+  const bool to_stdout = options.output == "-";
+  const fs::path target = options.output;
+  std::error_code ec;
+  const bool direct = to_stdout || (fs::exists(target, ec) && !fs::is_regular_file(target, ec));
+  const fs::path temp = direct ? target : fs::path(target.string() + ".tmp");
+  std::FILE* f = nullptr;
+  if (to_stdout) {
+    out.flush();
+    f = stdout;
+  } else {
+    f = std::fopen(temp.c_str(), "wb");
+    if (f == nullptr) {
+      err << "ncsim: error: cannot write '" << temp.string() << "': " << std::strerror(errno)
+          << '\n';
+      return kExitUsage;
+    }
+  }
+
+  interp::Interpreter interp(in.file, in.machine);
+  ipo::ProgramSource src(interp, in.machine);
+  ipo::Config cfg = ipo::machine_config(in.machine, in.t_cycle);
+  const std::vector<std::string> names = axis_names(in.machine);
+  CsvSink csv(f, names.size(), options.every, options.detail);
+  std::unique_ptr<ipo::Audit> audit;
+  if (options.audit) {
+    audit = std::make_unique<ipo::Audit>(cfg.axes, cfg.channel.t_cycle, cfg.start);
+  }
+  Tee tee(&csv, audit.get());
+
+  std::string head = "# ncsim run\n# program: " + in.file.name() +
+                     "\n# machine: " + in.machine.name + "\n# cycle: " + num(in.t_cycle) +
+                     " s\n# units: mm | deg, s; v [mm/s], a [mm/s^2]\nt,line";
+  for (const std::string& n : names)
+    head += ',' + n;
+  if (options.detail) {
+    for (const std::string& n : names)
+      head += ',' + n + ".v," + n + ".a";
+    head += ",v_path,feed";
+  }
+  head += '\n';
+  csv.text(head);
+
+  ipo::PathInterpolator ipo(std::move(cfg), src, &tee);
+  ipo::Status s;
+  while ((s = ipo.step()) == ipo::Status::running && !csv.failed()) {
+  }
+  std::string error_text;
+  if (s == ipo::Status::error || (s == ipo::Status::finished && src.error() != nullptr)) {
+    error_text = diagnostic_text(in, interp, src, ipo.message());
+    csv.text("# error: " + first_line(error_text) + "\n");
+  }
+  csv.flush();
+  if (!csv.failed() && std::fflush(f) != 0) csv.set_failed(errno);
+  if (!to_stdout && std::fclose(f) != 0 && !csv.failed()) csv.set_failed(errno);
+  if (csv.failed()) {
+    err << "ncsim: error: cannot write '" << (to_stdout ? std::string("stdout") : temp.string())
+        << "': " << std::strerror(csv.error_number()) << '\n';
+    if (!direct) fs::remove(temp, ec);
+    return kExitUsage;
+  }
+  if (!direct) {
+    fs::rename(temp, target, ec);
+    if (ec) {
+      err << "ncsim: error: cannot rename '" << temp.string() << "' to '" << target.string()
+          << "': " << ec.message() << '\n';
+      fs::remove(temp, ec);
+      return kExitUsage;
+    }
+  }
+  if (!error_text.empty()) {
+    err << error_text;
+    return kExitProgramErrors;
+  }
+  if (audit) {
+    print_audit(audit->verdict(), names, err);
+    if (!audit->verdict().ok()) return kExitAudit;
+  }
+  return kExitOk;
+}
+
+RunCommands::RunCommands(CLI::App& app) {
+  const auto add_program = [](CLI::App& cmd, ProgramOptions& p) {
+    cmd.add_option("program", p.program, "NC program file (.nc)")->required();
+    cmd.add_option("--machine", p.machine_dir,
+                   "Machine folder (parameter lists); default: the program folder's 'machine' "
+                   "file, else the bundled portal_3x");
+    cmd.add_option("--scenario", p.scenario, "Scenario file (not supported yet)");
+  };
+  time_cmd_ = app.add_subcommand("time", "Machining time, total and per block");
+  add_program(*time_cmd_, time_.program);
+  time_cmd_->add_flag("--blocks", time_.blocks, "Per executed block: time, distance, feeds, split");
+  time_cmd_->add_flag("--json", time_.json, "JSON instead of text");
+  time_cmd_->add_flag("--audit", time_.audit, "Check every limit; exit 3 on a violation");
+  time_cmd_->add_option("--cycle-us", time_.cycle_us, "Interpolation cycle [us] (default 1000)")
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
+
+  run_cmd_ = app.add_subcommand("run", "Run on the path interpolator and write the CSV trajectory");
+  add_program(*run_cmd_, run_.program);
+  run_cmd_->add_option("-o,--output", run_.output, "CSV file, '-' for stdout (default)");
+  run_cmd_->add_option("--every", run_.every, "One row every N cycles (default 1)")
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
+  run_cmd_->add_option("--cycle-us", run_.cycle_us, "Interpolation cycle [us] (default 1000)")
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
+  run_cmd_->add_flag("--audit", run_.audit, "Check every limit (verdict on stderr); exit 3");
+  run_cmd_->add_flag("--detail", run_.detail,
+                     "Add each axis's v and a, the path velocity and the programmed feed");
+}
+
+std::optional<int> RunCommands::dispatch(std::ostream& out, std::ostream& err) const {
+  if (time_cmd_->parsed()) return run_time(time_, out, err);
+  if (run_cmd_->parsed()) return run_run(run_, out, err);
+  return std::nullopt;
+}
+
+}  // namespace ncsim::cli

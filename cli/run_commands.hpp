@@ -1,0 +1,65 @@
+#pragma once
+// cli/run_commands: `ncsim time` and `ncsim run` on the path interpolator (design.md §5).
+//
+// Purpose: the first end-to-end pipeline program -> interpreter -> planner -> interpolator.
+// Inputs: the program, its machine (--machine, the program folder's `machine` file, else the
+// bundled default), the options below. Outputs: `time`: total and per-block times on `out`;
+// `run`: the CSV trajectory (stdout or a file written to `<file>.tmp` and renamed when
+// complete). Exit statuses: 0 ok, 1 program errors (file:line:col; `not supported: ...` is
+// NC6001), 2 usage, configuration or write errors, 3 audit violations (--audit).
+// Invariants: memory does not grow with the program (blocks and rows are streamed); reruns are
+// byte-identical (no wall clock, shortest round-trip number formatting).
+
+#include <cstdint>
+#include <iosfwd>
+#include <optional>
+#include <string>
+
+#include "cli/commands.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace ncsim::cli {
+
+inline constexpr int kExitAudit = 3;
+
+struct TimeOptions {
+  ProgramOptions program;
+  bool blocks = false;                    ///< --blocks: one record per executed block
+  bool json = false;                      ///< --json
+  bool audit = false;                     ///< --audit: a second pass with the audit sink
+  std::optional<std::uint64_t> cycle_us;  ///< --cycle-us: interpolation cycle [us]
+};
+
+struct RunOptions {
+  ProgramOptions program;
+  std::string output = "-";  ///< -o: CSV file, "-" for stdout
+  std::uint64_t every = 1;   ///< --every N: one row per N cycles
+  std::optional<std::uint64_t> cycle_us;
+  bool audit = false;   ///< --audit: the verdict on stderr, exit 3 on a violation
+  bool detail = false;  ///< --detail: per-axis v and a, path velocity, programmed feed
+};
+
+/// `ncsim time`.
+int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err);
+/// `ncsim run`; with output "-" the CSV goes to the process's stdout (a FILE*, after `out`
+/// is flushed), the audit verdict to `err`.
+int run_run(const RunOptions& options, std::ostream& out, std::ostream& err);
+
+/// The `time` and `run` subcommands of `app`: the hook main.cpp calls.
+class RunCommands {
+ public:
+  explicit RunCommands(CLI::App& app);
+  /// The exit status when `time` or `run` was parsed; nullopt otherwise.
+  std::optional<int> dispatch(std::ostream& out, std::ostream& err) const;
+
+ private:
+  TimeOptions time_;
+  RunOptions run_;
+  CLI::App* time_cmd_ = nullptr;
+  CLI::App* run_cmd_ = nullptr;
+};
+
+}  // namespace ncsim::cli

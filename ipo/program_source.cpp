@@ -1,0 +1,251 @@
+#include "ipo/program_source.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <type_traits>
+#include <variant>
+
+namespace ncsim::ipo {
+namespace {
+
+using machines::AxisKind;
+
+planner::Transition to_planner(interp::Transition t) {
+  switch (t) {
+    case interp::Transition::accelerate_at_start:
+      return planner::Transition::accelerate_at_start;
+    case interp::Transition::stop_at_end:
+      return planner::Transition::stop_at_end;
+    case interp::Transition::decel_at_end:
+      return planner::Transition::decel_at_end;
+    case interp::Transition::decel_after_end:
+      return planner::Transition::decel_after_end;
+  }
+  return planner::Transition::accelerate_at_start;
+}
+
+planner::SlopeType to_planner(interp::SlopeType s) {
+  switch (s) {
+    case interp::SlopeType::step:
+      return planner::SlopeType::step;
+    case interp::SlopeType::trapez:
+      return planner::SlopeType::trapez;
+    case interp::SlopeType::sin2:
+      return planner::SlopeType::sin2;
+    case interp::SlopeType::hsc:
+      return planner::SlopeType::hsc;
+  }
+  return planner::SlopeType::step;
+}
+
+const char* contour_name(interp::ContourKind k) {
+  switch (k) {
+    case interp::ContourKind::dev:
+      return "DEV";
+    case interp::ContourKind::dist:
+      return "DIST";
+    case interp::ContourKind::dist_soft:
+      return "DIST_SOFT";
+    case interp::ContourKind::dist_master:
+      return "DIST_MASTER";
+    case interp::ContourKind::pos:
+      return "POS";
+    case interp::ContourKind::ptp:
+      return "PTP";
+  }
+  return "?";
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> interpolated_axes(const machines::Machine& machine) {
+  std::vector<std::uint8_t> out;
+  const machines::AxisParams* conveyor = machine.conveyor_axis();
+  for (std::size_t i = 0; i < machine.axes.size(); ++i) {
+    const machines::AxisParams& a = machine.axes[i];
+    if (a.kind == AxisKind::spindle || a.encoder_only || &a == conveyor) continue;
+    out.push_back(static_cast<std::uint8_t>(i));
+  }
+  return out;
+}
+
+Config machine_config(const machines::Machine& machine, double t_cycle) {
+  Config c;
+  for (const std::uint8_t i : interpolated_axes(machine)) {
+    const machines::Dynamics& d = machine.axes[i].dynamics;
+    planner::AxisLimits l;
+    l.v_max = d.v_max;                          // P-AXIS-00212
+    l.v_reference = d.v_max;                    // ISG has no reference-velocity key
+    l.v_rapid = d.v_rapid;                      // P-AXIS-00209
+    l.a_max = std::min(d.acc_feed, d.acc_max);  // P-AXIS-00001 capped by P-AXIS-00008
+    l.d_max = std::min(d.dec_feed, d.acc_max);  // P-AXIS-00002 capped by P-AXIS-00008
+    l.j_max = d.jerk_feed();
+    l.c0 = d.velo_jump_factor;  // NCSIM-AXIS-020
+    c.axes.push_back(l);
+    const machines::Monitoring& m = machine.axes[i].monitoring;
+    c.exact_stop.push_back({m.exact_stop_window, m.settling_time.value_or(0.0)});
+  }
+  c.channel.t_cycle = t_cycle;
+  c.window = static_cast<std::size_t>(machine.channel.interpolator.look_ahead_blocks);
+  return c;
+}
+
+ProgramSource::ProgramSource(interp::Interpreter& interp, const machines::Machine& machine)
+    : interp_(interp),
+      machine_(machine),
+      axes_(interpolated_axes(machine)),
+      slot_(machine.axes.size(), -1) {
+  if (axes_.empty() || axes_.size() > planner::kMaxAxes) {
+    throw std::invalid_argument(
+        "machine '" + machine.name + "' has " + std::to_string(axes_.size()) +
+        " interpolated axes; the path interpolator needs 1.." + std::to_string(planner::kMaxAxes));
+  }
+  for (std::size_t k = 0; k < axes_.size(); ++k) {
+    slot_[axes_[k]] = static_cast<int>(k);
+    if (machine.axes[axes_[k]].kind == AxisKind::linear) path_axes_ |= planner::AxisMask{1} << k;
+  }
+  if (path_axes_ == 0) path_axes_ = (planner::AxisMask{1} << axes_.size()) - 1;
+}
+
+void ProgramSource::fail(std::uint32_t line, const std::string& what) {
+  core::Diagnostic d;
+  d.file = interp_.file_name(file_);
+  d.loc = {line, 1};
+  d.id = kNotSupportedId;
+  d.message = "not supported: " + what;
+  error_ = d;
+  throw Stop{};
+}
+
+planner::Move ProgramSource::to_move(const interp::Motion& m, std::uint32_t line) {
+  if (m.frame.space != interp::Space::mcs || m.frame.kinematics) {
+    fail(line, "motion in frame " + interp::frame_name(m.frame) +
+                   " (the interpolator takes MCS motion only; #CS, #SYNC and #TRAFO frames come "
+                   "with the channel loop)");
+  }
+  for (std::size_t i = 0; i < machine_.axes.size(); ++i) {
+    if (slot_[i] < 0 && (((m.programmed >> i) & 1u) != 0 || m.end[i] != m.start[i])) {
+      fail(line, "motion of axis " + machine_.axes[i].name +
+                     " (spindle / conveyor axes are not path-interpolated)");
+    }
+  }
+  planner::Move mv;
+  mv.axis_count = static_cast<std::uint8_t>(axes_.size());
+  mv.path_axes = path_axes_;
+  for (std::size_t k = 0; k < axes_.size(); ++k) {
+    mv.start[k] = m.start[axes_[k]];
+    mv.end[k] = m.end[axes_[k]];
+  }
+  mv.rapid = m.kind == interp::MotionKind::rapid;
+  mv.feed = m.feed;
+  mv.block_time = m.block_time;
+  mv.end_feed = m.end_feed;
+  if (m.arc) {
+    const int a1 = slot_[m.arc->axis_1];
+    const int a2 = slot_[m.arc->axis_2];
+    if (a1 < 0 || a2 < 0) fail(line, "arc in a plane with a non-interpolated axis");
+    planner::Arc arc;
+    arc.axis_1 = static_cast<std::uint8_t>(a1);
+    arc.axis_2 = static_cast<std::uint8_t>(a2);
+    arc.centre_1 = m.arc->centre_1;
+    arc.centre_2 = m.arc->centre_2;
+    arc.clockwise = m.kind == interp::MotionKind::arc_cw;
+    arc.full_circle = m.arc->full_circle;
+    mv.arc = arc;
+  }
+  const interp::ModalSnapshot& s = m.modal;
+  mv.transition = to_planner(s.transition);
+  mv.exact_stop = s.exact_stop;
+  if (s.contouring) {
+    if (s.contour.kind != interp::ContourKind::dev) {
+      fail(line, std::string("#CONTOUR MODE ") + contour_name(s.contour.kind) +
+                     " (only DEV is interpolated)");
+    }
+    mv.contour = planner::Contour::tolerance;
+    mv.path_dev = s.contour.path_dev;
+  }
+  mv.transvelmin = s.transvelmin;
+  mv.slope = to_planner(s.slope);
+  mv.line = line;
+  return mv;
+}
+
+bool ProgramSource::next(Item& out) {
+  if (error_) return false;
+  try {
+    return pull(out);
+  } catch (const Stop&) {
+    return false;  // error_ is set: the stream ends after the blocks before the faulty one
+  }
+}
+
+bool ProgramSource::pull(Item& out) {
+  for (;;) {
+    // Barriers are answered from the decode-only state (docs/ipo.md): run-time answers come
+    // with the channel loop.
+    std::optional<interp::Command> cmd = interp_.next_decode_only();
+    if (!cmd) {
+      if (const core::Diagnostic* e = interp_.error()) error_ = *e;
+      return false;
+    }
+    line_ = cmd->line;
+    const std::uint32_t line = cmd->line;
+    file_ = cmd->file;
+    bool produced = false;
+    bool ended = false;
+    std::visit(
+        [&](const auto& body) {
+          using T = std::decay_t<decltype(body)>;
+          if constexpr (std::is_same_v<T, interp::Motion>) {
+            out = to_move(body, line);
+            produced = true;
+          } else if constexpr (std::is_same_v<T, interp::Dwell>) {
+            out = Dwell{body.seconds, line};
+            produced = true;
+          } else if constexpr (std::is_same_v<T, interp::End>) {
+            ended = true;
+          } else if constexpr (std::is_same_v<T, interp::Tech> ||
+                               std::is_same_v<T, interp::Message> ||
+                               std::is_same_v<T, interp::ProgramStop> ||
+                               std::is_same_v<T, interp::Flush> ||
+                               std::is_same_v<T, interp::WaitIndp> ||
+                               std::is_same_v<T, interp::Barrier>) {
+            // pass: no motion (M00/M01 do not stop: there is no operator to press start)
+          } else if constexpr (std::is_same_v<T, interp::SelectCs>) {
+            // pass: a motion in the #CS frame is refused where it comes
+          } else if constexpr (std::is_same_v<T, interp::Kinematics>) {
+            if (body.trafo_on) fail(line, "#TRAFO ON (kinematics come with the channel loop)");
+          } else if constexpr (std::is_same_v<T, interp::CaxTrack>) {
+            if (body.on) fail(line, "#CAXTRACK ON");
+          } else if constexpr (std::is_same_v<T, interp::SplineBegin>) {
+            fail(line, "#SPLINE (spline paths are not interpolated yet)");
+          } else if constexpr (std::is_same_v<T, interp::SplinePoint> ||
+                               std::is_same_v<T, interp::SplineEnd>) {
+            fail(line, "#SPLINE (spline paths are not interpolated yet)");
+          } else if constexpr (std::is_same_v<T, interp::AxisCommand>) {
+            fail(line, "independent axis move INDP (comes with the axis layer)");
+          } else if constexpr (std::is_same_v<T, interp::MoveVelocity>) {
+            fail(line, "MC_MoveVelocity (comes with the axis layer)");
+          } else if constexpr (std::is_same_v<T, interp::ProbeArm>) {
+            fail(line, "MC_TouchProbe (comes with the conveyor simulation)");
+          } else if constexpr (std::is_same_v<T, interp::SyncIn>) {
+            fail(line, "#SYNC IN (conveyor tracking comes with the channel loop)");
+          } else if constexpr (std::is_same_v<T, interp::SyncOut>) {
+            fail(line, "#SYNC OUT (conveyor tracking comes with the channel loop)");
+          } else if constexpr (std::is_same_v<T, interp::MachineData>) {
+            fail(line, "#MACHINE DATA (parameters are fixed for a run for now)");
+          } else if constexpr (std::is_same_v<T, interp::Homing>) {
+            fail(line, "G74 homing");
+          } else if constexpr (std::is_same_v<T, interp::SetPosition>) {
+            fail(line, "G92 set position");
+          } else {
+            static_assert(!sizeof(T*), "every command kind is handled");
+          }
+        },
+        cmd->body);
+    if (ended) return false;
+    if (produced) return true;
+  }
+}
+
+}  // namespace ncsim::ipo

@@ -1,0 +1,173 @@
+// The interpreter -> interpolator adapter: commands become Moves and Dwells in the
+// interpolated-axis order with their modal settings; unsupported commands are NC6001 errors at
+// their line; the machine lists become the documented limits.
+
+#include "ipo/program_source.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/source_file.hpp"
+#include "interp/test_support.hpp"
+#include "ipo/time.hpp"
+
+namespace {
+
+using namespace ncsim;
+
+struct Pulled {
+  std::vector<ipo::Item> items;
+  std::string error_id;
+  std::uint32_t error_line = 0;
+  std::string error_message;
+};
+
+Pulled pull(const std::string& text, const std::string& machine_name = "portal_3x") {
+  const core::SourceFile file("t.nc", text);
+  const machines::Machine& m = interp::test::machine(machine_name);
+  interp::Interpreter in(file, m);
+  ipo::ProgramSource src(in, m);
+  Pulled p;
+  ipo::Item item;
+  while (src.next(item))
+    p.items.push_back(item);
+  CHECK_FALSE(src.next(item));  // the stream stays ended
+  if (const core::Diagnostic* e = src.error()) {
+    p.error_id = e->id;
+    p.error_line = e->loc.line;
+    p.error_message = e->message;
+  }
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("motion, feed, modal transition, contour and slope become the Move's fields") {
+  const Pulled p = pull(
+      "N10 G00 X10 Y5\n"
+      "N20 #SLOPE [TYPE=TRAPEZ]\n"
+      "N30 #CONTOUR MODE [DEV, PATH_DEV=0.5]\n"
+      "N40 G261 G01 X20 F600\n"
+      "N50 G09 G02 X30 Y15 I0 J10 E300\n"
+      "N60 G04 X2\n"
+      "N70 M30\n");
+  REQUIRE(p.error_id.empty());
+  REQUIRE(p.items.size() == 4);
+  const auto& rapid = std::get<planner::Move>(p.items[0]);
+  CHECK(rapid.rapid);
+  CHECK(rapid.line == 1);
+  CHECK(rapid.axis_count == 3);
+  CHECK(rapid.path_axes == 0b111u);
+  CHECK(rapid.end[0] == 10.0);
+  CHECK(rapid.end[1] == 5.0);
+  const auto& line = std::get<planner::Move>(p.items[1]);
+  CHECK_FALSE(line.rapid);
+  CHECK(line.feed == doctest::Approx(10.0));  // F600 mm/min
+  CHECK(line.start[0] == 10.0);
+  CHECK(line.contour == planner::Contour::tolerance);
+  CHECK(line.path_dev == 0.5);
+  CHECK(line.slope == planner::SlopeType::trapez);
+  const auto& arc = std::get<planner::Move>(p.items[2]);
+  REQUIRE(arc.arc.has_value());
+  CHECK(arc.arc->clockwise);
+  CHECK(arc.arc->axis_1 == 0);
+  CHECK(arc.arc->axis_2 == 1);
+  CHECK(arc.arc->centre_1 == doctest::Approx(20.0));
+  CHECK(arc.arc->centre_2 == doctest::Approx(15.0));
+  CHECK(arc.transition == planner::Transition::stop_at_end);
+  REQUIRE(arc.end_feed.has_value());
+  CHECK(*arc.end_feed == doctest::Approx(5.0));
+  const auto& dwell = std::get<ipo::Dwell>(p.items[3]);
+  CHECK(dwell.seconds == 2.0);
+  CHECK(dwell.line == 6);
+}
+
+TEST_CASE("G60 and G93 block time reach the Move") {
+  const Pulled p = pull("N10 G01 G60 X10 F600\nN20 G93 X20 F2\nN30 M30\n");
+  REQUIRE(p.error_id.empty());
+  REQUIRE(p.items.size() == 2);
+  CHECK(std::get<planner::Move>(p.items[0]).exact_stop);
+  const auto& timed = std::get<planner::Move>(p.items[1]);
+  CHECK_FALSE(timed.exact_stop);
+  CHECK(timed.block_time.has_value());
+}
+
+TEST_CASE("M00 / M01, M functions and messages pass without a stop") {
+  const Pulled p = pull("N10 G01 X10 F600\nN20 M00\nN30 M01\nN40 M08\nN50 X20\nN60 M30\n");
+  REQUIRE(p.error_id.empty());
+  CHECK(p.items.size() == 2);
+}
+
+TEST_CASE("an unsupported command is NC6001 at its line, never skipped") {
+  const Pulled set = pull("N10 G01 X10 F600\nN20 G92 X0\nN30 X5\nN40 M30\n");
+  CHECK(set.items.size() == 1);
+  CHECK(set.error_id == ipo::kNotSupportedId);
+  CHECK(set.error_line == 2);
+  CHECK(set.error_message.find("not supported: G92") == 0);
+
+  const Pulled cs = pull("N10 #CS ON [1][10, 0, 0, 0, 0, 0]\nN20 G01 X10 F600\nN30 M30\n");
+  CHECK(cs.error_id == ipo::kNotSupportedId);
+  CHECK(cs.error_line == 2);
+  CHECK(cs.error_message.find("frame PCS") != std::string::npos);
+}
+
+TEST_CASE("an interpreter error ends the stream with the interpreter's diagnostic") {
+  const Pulled p = pull("N10 G01 X10 F600\nN20 X[1/0]\nN30 M30\n");
+  CHECK(p.items.size() == 1);
+  CHECK_FALSE(p.error_id.empty());
+  CHECK(p.error_id != ipo::kNotSupportedId);
+  CHECK(p.error_line == 2);
+}
+
+TEST_CASE("machine limits: portal_3x axis lists map to the documented keys") {
+  const machines::Machine& m = interp::test::machine("portal_3x");
+  const ipo::Config c = ipo::machine_config(m, 0.001);
+  REQUIRE(c.axes.size() == 3);
+  const machines::Dynamics& x = m.axes[0].dynamics;
+  CHECK(c.axes[0].v_max == x.v_max);
+  CHECK(c.axes[0].v_reference == x.v_max);
+  CHECK(c.axes[0].v_rapid == x.v_rapid);
+  CHECK(c.axes[0].a_max == std::min(x.acc_feed, x.acc_max));
+  CHECK(c.axes[0].d_max == std::min(x.dec_feed, x.acc_max));
+  CHECK(c.axes[0].j_max == x.jerk_feed());
+  CHECK(c.axes[0].c0 == x.velo_jump_factor);
+  REQUIRE(c.exact_stop.size() == 3);
+  CHECK(c.exact_stop[0].window == m.axes[0].monitoring.exact_stop_window);
+  CHECK(c.exact_stop[0].settle_time == m.axes[0].monitoring.settling_time.value_or(0.0));
+  CHECK(c.window == static_cast<std::size_t>(m.channel.interpolator.look_ahead_blocks));
+  CHECK(c.channel.t_cycle == 0.001);
+}
+
+TEST_CASE("a long line at F takes length / F + F / A + T, rounded up to the cycle") {
+  // portal_3x: X A+ = A- = 3000 mm/s^2, STEP slope: 1000 mm at 100 mm/s is 10 s
+  // cruise-equivalent, plus v / A = 1/30 s for the two ramps, plus A / J = T because the
+  // planner gives STEP the jerk max(A+, A-) / T (docs/planner.md): 10.03433 s -> 10035 cycles.
+  const core::SourceFile file("t.nc", "N10 G01 X1000 F6000\nN20 M30\n");
+  const machines::Machine& m = interp::test::machine("portal_3x");
+  interp::Interpreter in(file, m);
+  ipo::ProgramSource src(in, m);
+  const ipo::TimeResult r = ipo::machining_time(ipo::machine_config(m, 0.001), src);
+  REQUIRE(r.status == ipo::Status::finished);
+  const double exact = 1000.0 / 100.0 + 100.0 / 3000.0 + 0.001;
+  CHECK(r.total >= exact - 1e-9);
+  CHECK(r.total < exact + 0.001 + 1e-9);
+  CHECK(r.cycles == 10035);
+}
+
+TEST_CASE("the blocks before a faulty one run to their end; then the error stands") {
+  // 100 mm at 100 mm/s with A = 3000 mm/s^2 (STEP): 1 + 1/30 + 0.001 s -> 1035 cycles.
+  const core::SourceFile file("t.nc", "N10 G01 X100 F6000\nN20 G92 X0\nN30 X5\nN40 M30\n");
+  const machines::Machine& m = interp::test::machine("portal_3x");
+  interp::Interpreter in(file, m);
+  ipo::ProgramSource src(in, m);
+  const ipo::TimeResult r = ipo::machining_time(ipo::machine_config(m, 0.001), src);
+  CHECK(r.status == ipo::Status::finished);
+  CHECK(r.cycles == 1035);
+  CHECK(r.distance == doctest::Approx(100.0));
+  REQUIRE(src.error() != nullptr);
+  CHECK(src.error()->loc.line == 2);
+}
