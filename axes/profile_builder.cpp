@@ -53,6 +53,14 @@ void ProfileBuilder::add(const Ramp& change, double sign) noexcept {
   state_.v = sign * change.v_end;
 }
 
+void ProfileBuilder::add(const jerk::Crossing& cross, double sign) noexcept {
+  if (!(cross.time() > 0.0)) return;
+  add(sign * cross.jerk[0], cross.duration[0], sign * cross.a_peak);
+  add(sign * cross.jerk[1], cross.duration[1], sign * cross.a_peak);
+  add(sign * cross.jerk[2], cross.duration[2], sign * cross.a_zero);
+  state_.v = 0.0;
+}
+
 void ProfileBuilder::finish(const MotionState* exact_end) noexcept {
   if (exact_end != nullptr) state_ = *exact_end;
   state_.a = 0.0;  // every planned motion ends with zero acceleration

@@ -20,6 +20,7 @@ namespace detail {
 
 void append_move(ProfileBuilder& b, const jerk::Move& m) noexcept {
   b.set_level(m.v_level);
+  b.add(m.cross, m.sign);
   b.add(m.first, m.sign);
   b.add(0.0, m.t_cruise);
   b.mark_brake();

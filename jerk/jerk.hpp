@@ -97,16 +97,41 @@ double reachable_velocity(double v0, double a0, double s, double a_lim, double j
 /// (By time reversal the speed-up from v_exit over s.) Monotone in s, >= v_exit.
 double entry_velocity_for_exit(double v_exit, double s, double d_max, double j) noexcept;
 
+/// Up to three constant-jerk phases that take a start moving backward in its frame (v0 < 0)
+/// through v = 0 with a positive acceleration: jerk up to a_peak, [hold], jerk to a_zero,
+/// reached exactly when v = 0. Path limits (002_* 2.1): while v < 0 the positive acceleration
+/// slows the motion (bounded by A-), after v = 0 it speeds it up (bounded by A+), so a_peak
+/// <= A- and a_zero <= min(A+, A-). All zero when a move has no such part.
+struct Crossing {
+  std::array<double, 3> jerk{};      ///< jerk of each phase [mm/s^3]
+  std::array<double, 3> duration{};  ///< duration of each phase [s], >= 0
+  double a_peak = 0.0;               ///< acceleration after phase 1 and in phase 2 [mm/s^2]
+  double a_zero = 0.0;               ///< acceleration at v = 0, after phase 3 [mm/s^2]
+  /// Total duration [s].
+  double time() const noexcept { return duration[0] + duration[1] + duration[2]; }
+};
+
+/// Time-optimal change from (v0, a0) moving backward (v0 < 0, or v0 >= 0 with an acceleration
+/// that reverses the motion: v0 + a0|a0|/(2J) < 0) to (v1 > 0, 0) through v = 0 under the
+/// path limits (A- before v = 0, A+ after it): `cross` takes the start to (0, cross.a_zero),
+/// `rest` from there to (v1, 0) (a positive pulse under A+). False when the change is not of
+/// that kind: no backward motion, v1 <= 0, a start acceleration beyond A-, or one that forces
+/// more than min(A+, A-) or than v1 allows at v = 0 (callers then use velocity_ramp).
+bool crossing_ramp(double v0, double a0, double v1, const Limits& limits, Crossing& cross,
+                   Ramp& rest) noexcept;
+
 /// A single-peak move: change to v_level, cruise, change to the end velocity. All values in
 /// the frame of the move (sign +1: forward, -1: backward; world = sign * frame).
 struct Move {
   double sign = 1.0;      ///< world direction of the frame, +1 or -1
-  Ramp first;             ///< (v0, a0) -> (v_level, 0), frame values
+  Crossing cross;         ///< frame start moving backward: its phases through v = 0 (else 0)
+  Ramp first;             ///< (v0, a0) -> (v_level, 0), frame values (from (0, cross.a_zero)
+                          ///< when cross has phases)
   double t_cruise = 0.0;  ///< cruise at v_level [s]
   Ramp second;            ///< (v_level, 0) -> (v1, 0), frame values
   double v_level = 0.0;   ///< frame velocity of the cruise [mm/s], >= 0
   /// Total duration [s].
-  double time() const noexcept { return first.time() + t_cruise + second.time(); }
+  double time() const noexcept { return cross.time() + first.time() + t_cruise + second.time(); }
 };
 
 /// Outcome of move_of_duration.

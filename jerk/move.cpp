@@ -53,20 +53,35 @@ Frame frame_of(const State& start, double p1, double v1) noexcept {
 }
 
 struct Level {
+  Crossing cross;
   Ramp first;
   Ramp second;
-  double dist = 0.0;    // distance of both ramps [mm]
-  double t_ramp = 0.0;  // time of both ramps [s]
+  double dist = 0.0;    // distance of all ramps [mm]
+  double t_ramp = 0.0;  // time of all ramps [s]
 };
 
 Level level(const Frame& f, double vm, const Limits& lim) noexcept {
   Level out;
-  // A first ramp from a frame velocity below 0 slows down (A-) until v = 0 and speeds up (A+)
-  // after it; one ramp has one limit per sign of acceleration, so it takes the smaller.
-  const double a_up = f.v0 < 0.0 ? std::min(lim.a_max, lim.d_max) : lim.a_max;
-  out.first = velocity_ramp(f.v0, f.a0, vm, a_up, lim.d_max, lim.j_max);
   out.second = velocity_ramp(vm, 0.0, f.v1, lim.a_max, lim.d_max, lim.j_max);
-  out.dist = distance(f.v0, f.a0, out.first) + distance(vm, 0.0, out.second);
+  out.dist = distance(vm, 0.0, out.second);
+  // A first ramp from a frame velocity below 0 slows down (A-) until v = 0 and speeds up (A+)
+  // after it: the crossing ramp switches the limit at v = 0. Where it does not apply (a start
+  // acceleration beyond A- or one forcing more than min(A+, A-) at v = 0), one ramp under the
+  // smaller limit.
+  if ((f.v0 < 0.0 || f.a0 < 0.0) && vm > 0.0 &&
+      crossing_ramp(f.v0, f.a0, vm, lim, out.cross, out.first)) {
+    State st{0.0, f.v0, f.a0};
+    for (std::size_t i = 0; i < 3; ++i)
+      st = advance(st, out.cross.jerk[i], out.cross.duration[i]);
+    out.dist += st.p + distance(0.0, out.cross.a_zero, out.first);
+    out.t_ramp = out.cross.time() + out.first.time() + out.second.time();
+    return out;
+  }
+  // (A stop from v0 < 0 only slows down: A-.)
+  const double a_up =
+      f.v0 < 0.0 ? (vm > 0.0 ? std::min(lim.a_max, lim.d_max) : lim.d_max) : lim.a_max;
+  out.first = velocity_ramp(f.v0, f.a0, vm, a_up, lim.d_max, lim.j_max);
+  out.dist += distance(f.v0, f.a0, out.first);
   out.t_ramp = out.first.time() + out.second.time();
   return out;
 }
@@ -150,6 +165,7 @@ bool finite(const State& s) noexcept {
 Move make_move(const Frame& f, double vm, const Level& lv, double t_cruise) noexcept {
   Move m;
   m.sign = f.sign;
+  m.cross = lv.cross;
   m.first = lv.first;
   m.second = lv.second;
   m.v_level = vm;
@@ -158,6 +174,46 @@ Move make_move(const Frame& f, double vm, const Level& lv, double t_cruise) noex
 }
 
 }  // namespace
+
+bool crossing_ramp(double v0, double a0, double v1, const Limits& lim, Crossing& cross,
+                   Ramp& rest) noexcept {
+  // Before v = 0 the acceleration is bounded by c = A-, after it by e = A+; at v = 0 it must
+  // lie within both. The fastest change keeps the acceleration as high as the bounds allow
+  // (the upper envelope of the reachable accelerations), so it reaches v = 0 with
+  //     a_z = min(A-, A+, sqrt(2 J v1), sqrt(a0^2 + 2 J |v0|))
+  // (the last two: no overshoot of v1 after v = 0; the highest acceleration the remaining
+  // velocity gain |v0| can build from a0). Before v = 0: jerk up to a_p, [hold at A-], jerk to
+  // a_z, with the gain (2 a_p^2 - a0^2 - a_z^2) / (2J) [+ hold] = |v0|.
+  // A forward start whose acceleration reverses the motion (v_zero < 0) crosses v = 0 twice;
+  // the same phases apply (the jerk-up from a0 < 0 passes a = 0 at v = v_zero < 0).
+  const double j = lim.j_max;
+  if (!(v1 > 0.0) || !(v0 < 0.0 || v0 + a0 * std::abs(a0) / (2.0 * j) < 0.0)) return false;
+  const double c = lim.d_max;
+  const double gain = -v0;
+  if (a0 > c) return false;  // beyond A- while slowing: the start forces its own ramp
+  const double a_z_min = a0 > 0.0 ? std::sqrt(std::max(0.0, a0 * a0 - 2.0 * j * gain)) : 0.0;
+  const double a_z =
+      std::min({c, lim.a_max, std::sqrt(2.0 * j * v1), std::sqrt(a0 * a0 + 2.0 * j * gain)});
+  if (a_z_min > a_z) return false;  // the start reaches v = 0 too fast (or overshoots v1)
+  double a_p = std::sqrt(0.5 * (2.0 * j * gain + a0 * a0 + a_z * a_z));
+  double t_hold = 0.0;
+  if (a_p > c) {
+    a_p = c;
+    const double dv_ramps = (2.0 * c * c - a0 * a0 - a_z * a_z) / (2.0 * j);
+    const double dv_hold = gain - dv_ramps;
+    if (dv_hold > kResidue * (gain + std::abs(dv_ramps))) t_hold = dv_hold / c;
+  }
+  a_p = std::max({a_p, a0, a_z});
+  const double up = a_p - a0;
+  const double down = a_p - a_z;
+  cross.jerk = {j, 0.0, -j};
+  cross.duration = {up > kResidue * a_p ? up / j : 0.0, t_hold,
+                    down > kResidue * a_p ? down / j : 0.0};
+  cross.a_peak = a_p;
+  cross.a_zero = a_z;
+  rest = velocity_ramp(0.0, a_z, v1, lim.a_max, lim.d_max, j);
+  return true;
+}
 
 double min_single_peak_time(const State& start, double p1, double v1, const Limits& lim) noexcept {
   if (!valid(lim) || !finite(start) || !std::isfinite(p1) || !std::isfinite(v1)) return -1.0;
@@ -253,6 +309,15 @@ State end_state(const State& start, const Move& move) noexcept {
   // Each phase starts from its intended boundary values (docs/axes-profile.md, "Numerics").
   const double s = move.sign;
   State st{s * start.p, s * start.v, s * start.a};
+  if (move.cross.time() > 0.0) {
+    st = advance(st, move.cross.jerk[0], move.cross.duration[0]);
+    st.a = move.cross.a_peak;
+    st = advance(st, move.cross.jerk[1], move.cross.duration[1]);
+    st.a = move.cross.a_peak;
+    st = advance(st, move.cross.jerk[2], move.cross.duration[2]);
+    st.a = move.cross.a_zero;
+    st.v = 0.0;
+  }
   const auto chain = [&](const Ramp& r) {
     st = advance(st, r.jerk[0], r.duration[0]);
     st.a = r.a_peak;

@@ -134,3 +134,74 @@ TEST_CASE("move_of_duration over seeded random cases: exact end, exact time, lim
   CHECK(solved > 30000);
   CHECK(unsupported < 2000);
 }
+
+TEST_CASE("crossing_ramp slows with A- before v = 0 and speeds up with A+ after it") {
+  // Hand-computed: v0 = -1000, a0 = 0 -> v1 = 2000, A- = 1000, A+ = 4000, J = 1e4.
+  // Before v = 0: up to A- in 0.1 s, hold 0.95 s (gain 50 + 950 mm/s), a_zero = A- = 1000.
+  // After: 1000 -> 4000 in 0.3 s, hold 0.1125 s, 4000 -> 0 in 0.4 s (gain 450 + 450 + 800 + 300).
+  // Total 1.8625 s; one ramp under min(A+, A-) takes 3.1 s, stop then go 1.1 + 0.9 = 2.0 s.
+  const Limits lim{5000.0, 4000.0, 1000.0, 1e4};
+  ncsim::jerk::Crossing cross;
+  ncsim::jerk::Ramp rest;
+  REQUIRE(ncsim::jerk::crossing_ramp(-1000.0, 0.0, 2000.0, lim, cross, rest));
+  CHECK(cross.duration[0] == doctest::Approx(0.1).epsilon(1e-14));
+  CHECK(cross.duration[1] == doctest::Approx(0.95).epsilon(1e-14));
+  CHECK(cross.duration[2] == 0.0);
+  CHECK(cross.a_zero == 1000.0);
+  CHECK(rest.duration[0] == doctest::Approx(0.3).epsilon(1e-14));
+  CHECK(rest.duration[1] == doctest::Approx(0.1125).epsilon(1e-14));
+  CHECK(rest.duration[2] == doctest::Approx(0.4).epsilon(1e-14));
+  CHECK(cross.time() + rest.time() == doctest::Approx(1.8625).epsilon(1e-14));
+  // A+ < A-: the acceleration comes down from A- to A+ before v = 0.
+  const Limits low_up{5000.0, 1000.0, 4000.0, 1e4};
+  REQUIRE(ncsim::jerk::crossing_ramp(-2000.0, 0.0, 1000.0, low_up, cross, rest));
+  CHECK(cross.a_peak == 4000.0);
+  CHECK(cross.a_zero == 1000.0);
+  // Gain 800 (up) + 750 (down to 1000) + hold 450 / 4000 = 0.1125 s.
+  CHECK(cross.duration[1] == doctest::Approx(0.1125).epsilon(1e-14));
+  CHECK(cross.duration[2] == doctest::Approx(0.3).epsilon(1e-14));
+  // Not a crossing: forward start, or a start acceleration beyond A-.
+  CHECK_FALSE(ncsim::jerk::crossing_ramp(10.0, 0.0, 2000.0, lim, cross, rest));
+  CHECK_FALSE(ncsim::jerk::crossing_ramp(-10.0, 1500.0, 2000.0, lim, cross, rest));
+}
+
+TEST_CASE("crossing_ramp from random backward starts ends at v = 0 then at v1, a = 0") {
+  std::mt19937_64 rng(77);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int crossed = 0;
+  for (int n = 0; n < 20000; ++n) {
+    const Limits lim{1e4, log_uniform(rng, 10.0, 1e5), log_uniform(rng, 10.0, 1e5),
+                     log_uniform(rng, 1e2, 1e7)};
+    // 30 %: a forward start whose acceleration reverses the motion.
+    const bool reversing = unit(rng) < 0.3;
+    const double a_lim = std::min(lim.a_max, lim.d_max);
+    const double a0 = reversing ? -a_lim * unit(rng) : (2.0 * unit(rng) - 1.0) * a_lim;
+    const double v0 =
+        reversing ? unit(rng) * a0 * a0 / (2.0 * lim.j_max) : -log_uniform(rng, 1e-3, 1e4);
+    const double v1 = log_uniform(rng, 1e-3, 1e4);
+    ncsim::jerk::Crossing cross;
+    ncsim::jerk::Ramp rest;
+    if (!ncsim::jerk::crossing_ramp(v0, a0, v1, lim, cross, rest)) continue;
+    ++crossed;
+    State st{0.0, v0, a0};
+    for (std::size_t i = 0; i < 3; ++i) {
+      st = ncsim::jerk::advance(st, cross.jerk[i], cross.duration[i]);
+      // Path limits: positive acceleration before v = 0 slows down (A-).
+      REQUIRE(st.a <= lim.d_max * (1.0 + 1e-12));
+    }
+    INFO("v0=", v0, " a0=", a0, " v1=", v1, " A+=", lim.a_max, " A-=", lim.d_max, " J=", lim.j_max);
+    REQUIRE(std::abs(st.v) <= 1e-9 * std::max(std::abs(v0), a0 * a0 / lim.j_max));
+    REQUIRE(std::abs(st.a - cross.a_zero) <= 1e-9 * lim.d_max);
+    REQUIRE(cross.a_zero <= std::min(lim.a_max, lim.d_max));
+    REQUIRE(std::abs(rest.a_peak) <= lim.a_max);
+    st = State{0.0, 0.0, cross.a_zero};
+    for (std::size_t i = 0; i < 3; ++i)
+      st = ncsim::jerk::advance(st, rest.jerk[i], rest.duration[i]);
+    REQUIRE(std::abs(st.v - v1) <= 1e-9 * std::max(v1, cross.a_zero * cross.a_zero / lim.j_max));
+    // Never slower than stopping with A-, then speeding up with A+ from rest.
+    const double stop_go = ncsim::jerk::velocity_change(v0, a0, 0.0, lim.d_max, lim.j_max).t +
+                           ncsim::jerk::velocity_change(0.0, 0.0, v1, lim.a_max, lim.j_max).t;
+    REQUIRE(cross.time() + rest.time() <= stop_go * (1.0 + 1e-12));
+  }
+  CHECK(crossed > 10000);
+}
