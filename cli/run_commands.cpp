@@ -35,9 +35,16 @@ std::string num(double v) {
 }
 
 void append_num(std::string& s, double v) {
+  s += num(v);
+}
+
+/// Text of `v` for people: 6 significant digits (3000.0000000000027 -> 3000, 0.14200000000000002
+/// -> 0.142). Machine-readable outputs (CSV, --json, --blocks, the total) keep num().
+std::string human(double v) {
   std::array<char, 32> buf{};
-  const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
-  s.append(buf.data(), r.ptr);
+  const auto r =
+      std::to_chars(buf.data(), buf.data() + buf.size(), v, std::chars_format::general, 6);
+  return std::string(buf.data(), r.ptr);
 }
 
 // The machine folder (design.md §5): --machine, else the bundled machine named in the program
@@ -160,13 +167,13 @@ const char* method_name(ipo::Method m) {
 void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names, std::ostream& os) {
   for (std::size_t i = 0; i < v.axes.size(); ++i) {
     const ipo::AxisAudit& a = v.axes[i];
-    os << "audit: " << names[i] << " |v| " << num(std::max(a.v_closed, a.v_diff)) << " / "
-       << num(a.v_limit) << " mm/s, |a| " << num(std::max(a.a_closed, a.a_diff)) << " / "
-       << num(a.a_limit) << " mm/s^2, |j| " << num(std::max(a.j_closed, a.j_diff)) << " / "
-       << num(a.j_limit) << " mm/s^3\n";
+    os << "audit: " << names[i] << " |v| " << human(std::max(a.v_closed, a.v_diff)) << " / "
+       << human(a.v_limit) << " mm/s, |a| " << human(std::max(a.a_closed, a.a_diff)) << " / "
+       << human(a.a_limit) << " mm/s^2, |j| " << human(std::max(a.j_closed, a.j_diff)) << " / "
+       << human(a.j_limit) << " mm/s^3\n";
   }
-  os << "audit: contour deviation " << num(v.contour_max) << " mm (tolerance "
-     << num(v.contour_tolerance) << " mm), " << v.step_count
+  os << "audit: contour deviation " << human(v.contour_max) << " mm (tolerance "
+     << human(v.contour_tolerance) << " mm), " << v.step_count
      << " documented VELOJUMP / C1 steps within their formulas, " << v.cycles << " cycles\n";
   for (const ipo::Violation& x : v.violations) {
     os << "audit: violation t=" << num(x.t) << " s line " << x.line << " axis "
@@ -295,10 +302,10 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
     out << "}\n";
   } else {
     out << in.file.name() << ": " << (failed ? "stopped after " : "") << num(r.total) << " s ("
-        << r.cycles << " cycles of " << num(in.t_cycle * 1e3) << " ms), path " << num(r.distance)
-        << " mm; rapid " << num(r.split.rapid) << " s, feed " << num(r.split.feed) << " s, dwell "
-        << num(r.split.dwell) << " s, exact stop " << num(r.split.exact_stop) << " s, waiting "
-        << num(r.split.starved) << " s\n";
+        << r.cycles << " cycles of " << num(in.t_cycle * 1e3) << " ms), path " << human(r.distance)
+        << " mm; rapid " << human(r.split.rapid) << " s, feed " << human(r.split.feed)
+        << " s, dwell " << human(r.split.dwell) << " s, exact stop " << human(r.split.exact_stop)
+        << " s, waiting " << human(r.split.starved) << " s\n";
   }
   if (failed) {
     err << error_text;
