@@ -42,29 +42,6 @@ std::optional<std::string> program_file_problem(const fs::path& path) {
   return std::nullopt;
 }
 
-// The machine folder a program runs on (design.md §5): --machine, else the bundled machine
-// named in the program folder's `machine` file, else the default bundled machine. Nothing when
-// the `machine` file names none (reported on `err`).
-std::optional<fs::path> machine_folder(const ProgramOptions& options, std::ostream& err) {
-  if (options.machine_dir) return *options.machine_dir;
-  const fs::path named =
-      (is_stdin(options.program) ? fs::path(".") : options.program.parent_path()) / "machine";
-  std::string name(machines::kDefaultMachine);
-  if (fs::is_regular_file(named)) {
-    std::ifstream in(named);
-    std::string line;
-    std::getline(in, line);
-    const auto first = line.find_first_not_of(" \t\r");
-    const auto last = line.find_last_not_of(" \t\r");
-    if (first == std::string::npos) {
-      err << "ncsim: error: " << named.string() << " names no machine\n";
-      return std::nullopt;
-    }
-    name = line.substr(first, last - first + 1);
-  }
-  return machines::bundled_machine_dir(source_root(), name);
-}
-
 // `--ve NAME=value` into the interpreter's V.E. table (names upper case, values numbers).
 std::optional<std::string> parse_external(const std::vector<std::string>& items,
                                           interp::Options& options) {
@@ -247,6 +224,27 @@ int run_trace(const TraceOptions& options, std::ostream& out, std::ostream& err)
   const int status = interp::write_trace(in.file, in.machine, trace_options, out, diagnostics);
   report.print(diagnostics);
   return report.finish(out, status == 0 ? kExitOk : kExitProgramErrors);
+}
+
+std::optional<std::filesystem::path> machine_folder(const ProgramOptions& options,
+                                                    std::ostream& err) {
+  if (options.machine_dir) return *options.machine_dir;
+  const fs::path named =
+      (is_stdin(options.program) ? fs::path(".") : options.program.parent_path()) / "machine";
+  std::string name(machines::kDefaultMachine);
+  if (fs::is_regular_file(named)) {
+    std::ifstream in(named);
+    std::string line;
+    std::getline(in, line);
+    const auto first = line.find_first_not_of(" \t\r");
+    const auto last = line.find_last_not_of(" \t\r");
+    if (first == std::string::npos) {
+      err << "ncsim: error: " << named.string() << " names no machine\n";
+      return std::nullopt;
+    }
+    name = line.substr(first, last - first + 1);
+  }
+  return machines::bundled_machine_dir(source_root(), name);
 }
 
 }  // namespace ncsim::cli

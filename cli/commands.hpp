@@ -33,6 +33,12 @@ struct CheckOptions {
   bool syntax_only = false;  ///< --syntax-only: grammar and structure, no machine, no interpreter
 };
 
+/// The machine folder a program runs on (design.md §5): --machine, else the bundled machine
+/// named in the program folder's `machine` file, else the default bundled machine; nothing
+/// (reported on `err`) when that file names none.
+std::optional<std::filesystem::path> machine_folder(const ProgramOptions& options,
+                                                    std::ostream& err);
+
 /// `ncsim check`: syntax, structure and semantics; every diagnostic to `err`, a one-line
 /// verdict to `out`.
 int run_check(const CheckOptions& options, std::ostream& out, std::ostream& err);

@@ -12,6 +12,7 @@
 #include <ostream>
 #include <variant>
 
+#include "cli/commands.hpp"
 #include "core/diagnostic.hpp"
 #include "core/source_file.hpp"
 #include "grammar/check.hpp"
@@ -45,27 +46,6 @@ std::string human(double v) {
   const auto r =
       std::to_chars(buf.data(), buf.data() + buf.size(), v, std::chars_format::general, 6);
   return std::string(buf.data(), r.ptr);
-}
-
-// The machine folder (design.md §5): --machine, else the bundled machine named in the program
-// folder's `machine` file, else the default bundled machine. (Same rule as check / trace.)
-std::optional<fs::path> machine_folder(const ProgramOptions& options, std::ostream& err) {
-  if (options.machine_dir) return *options.machine_dir;
-  const fs::path named = options.program.parent_path() / "machine";
-  std::string name(machines::kDefaultMachine);
-  if (fs::is_regular_file(named)) {
-    std::ifstream in(named);
-    std::string line;
-    std::getline(in, line);
-    const auto first = line.find_first_not_of(" \t\r");
-    const auto last = line.find_last_not_of(" \t\r");
-    if (first == std::string::npos) {
-      err << "ncsim: error: " << named.string() << " names no machine\n";
-      return std::nullopt;
-    }
-    name = line.substr(first, last - first + 1);
-  }
-  return machines::bundled_machine_dir(NCSIM_SOURCE_ROOT, name);
 }
 
 struct Loaded {
