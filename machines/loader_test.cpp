@@ -76,9 +76,11 @@ TEST_CASE("laser_portal: soft limits arrive in mm and the conveyor is the spindl
   CHECK(x->dynamics.acc_max == doctest::Approx(10000.0));   // P-AXIS-00008
   CHECK(x->dynamics.ramp_acc_up == doctest::Approx(0.05));  // 50000 us P-AXIS-00196
   CHECK(x->dynamics.jerk_feed() == doctest::Approx(200000.0));
-  CHECK(x->dynamics.dec_feedhold == doctest::Approx(10000.0));  // a_feedh 0: = a_grenz
-  CHECK(x->dynamics.ramp_feedhold == doctest::Approx(0.05));    // tr_feedh 0: = tr_grenz
-  CHECK(x->control.kv == doctest::Approx(20.0));                // 2000 x 0.01/s P-AXIS-00099
+  // Feed hold: P-AXIS-00053 a_feedh 0 stands for P-AXIS-00004 a_grenz, P-AXIS-00081 tr_feedh 0
+  // for P-AXIS-00200 tr_grenz.
+  CHECK(x->dynamics.dec_feedhold == doctest::Approx(10000.0));
+  CHECK(x->dynamics.ramp_feedhold == doctest::Approx(0.05));
+  CHECK(x->control.kv == doctest::Approx(20.0));  // 2000 x 0.01/s P-AXIS-00099
 }
 
 TEST_CASE("an axis list without dynamics gets the TF5200 defaults, converted") {
@@ -127,7 +129,7 @@ TEST_CASE("an unknown key close to a known one is answered with the known key an
   CHECK(r.diagnostics.items()[2].message.find("did you mean") == std::string::npos);
 }
 
-TEST_CASE("every retired key names its replacement, none is also a live key") {
+TEST_CASE("every retired key (NC3015, NC3013) names its replacement, none is also a live key") {
   for (const RetiredKey& k : retired_keys()) {
     CAPTURE(k.key);
     CHECK(find_param(k.list, k.key) == nullptr);
