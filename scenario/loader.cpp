@@ -111,6 +111,13 @@ bool is_name(std::string_view s) {
                      [&](char c) { return letter(c) || (c >= '0' && c <= '9') || c == '_'; });
 }
 
+// The last line of a file: a final line end does not start another line.
+std::uint32_t last_line(const core::SourceFile& file) {
+  const std::uint32_t n = file.line_count();
+  const std::string_view text = file.text();
+  return !text.empty() && text.back() == '\n' && n > 1 ? n - 1 : n;
+}
+
 // The number text a user wrote (integers without ".0").
 std::string value_text(double v) {
   return core::number_text(v);
@@ -220,10 +227,10 @@ class Reader {
     const auto v = integer(node, path, 1.0, kLineMax);
     if (!v) return std::nullopt;
     const auto line = static_cast<std::uint32_t>(*v);
-    if (context_.program_lines && line > *context_.program_lines) {
+    if (context_.program != nullptr && line > last_line(*context_.program)) {
       error(kLineBeyond, node.source(),
-            path + " = " + std::to_string(line) + " is beyond the program's last line " +
-                std::to_string(*context_.program_lines));
+            path + " = " + std::to_string(line) + " is beyond the last line (" +
+                std::to_string(last_line(*context_.program)) + ") of " + context_.program->name());
       return std::nullopt;
     }
     return line;

@@ -25,7 +25,9 @@ namespace ncsim::scenario {
 
 /// What a scenario is checked against besides its own rules (all optional).
 struct Context {
-  std::optional<std::uint32_t> program_lines;    ///< lines of the main program (NC7012)
+  /// The main program: `line` keys beyond its last line are NC7012 (its lines are counted
+  /// only when the scenario names a line).
+  const core::SourceFile* program = nullptr;
   std::optional<std::vector<std::string>> axes;  ///< the machine's axis names (NC7011)
 };
 

@@ -213,11 +213,15 @@ A = "x"
 }
 
 TEST_CASE("the context checks lines against the program and axes against the machine") {
+  std::string program;
+  for (int i = 0; i < 20; ++i)
+    program += "G01 X1 F100\n";
+  const core::SourceFile prog("p.nc", program);
   Context c;
-  c.program_lines = 20;
+  c.program = &prog;
   c.axes = std::vector<std::string>{"X", "Y", "Z", "C"};
   CHECK(has(only_error(parse("[[event]]\nline = 21\noverride = 5\n", c)), "NC7012", 2,
-            "event[1].line = 21 is beyond the program's last line 20"));
+            "event[1].line = 21 is beyond the last line (20) of p.nc"));
   CHECK(
       has(only_error(parse("[stop]\nline = 40\npasses = 2\n", c)), "NC7012", 2, "stop.line = 40"));
   CHECK(has(only_error(parse("[[event]]\nat = 1\naxis_override = { B = 50 }\n", c)), "NC7011", 3,
