@@ -27,6 +27,7 @@ constexpr const char* kName = "NC7008";
 constexpr const char* kUnreadable = "NC7010";
 constexpr const char* kUnknownAxis = "NC7011";
 constexpr const char* kLineBeyond = "NC7012";
+constexpr const char* kLineEmpty = "NC7013";
 
 constexpr double kTimeMax = 1e9;  // [s] largest `at`, `duration`, stop.time
 constexpr double kOverrideMaxPercent = kOverrideMax * 100.0;
@@ -118,6 +119,17 @@ std::uint32_t last_line(const core::SourceFile& file) {
   return !text.empty() && text.back() == '\n' && n > 1 ? n - 1 : n;
 }
 
+// True when a program line holds no block at all: blank, a `;` comment, or one `( ... )`
+// comment (such a line never starts executing, so a trigger on it never fires).
+bool holds_no_block(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t\r");
+  if (first == std::string_view::npos) return true;
+  const auto last = text.find_last_not_of(" \t\r");
+  const std::string_view t = text.substr(first, last - first + 1);
+  if (t.front() == ';') return true;
+  return t.front() == '(' && t.back() == ')' && t.find(')') == t.size() - 1;
+}
+
 // The number text a user wrote (integers without ".0").
 std::string value_text(double v) {
   return core::number_text(v);
@@ -196,7 +208,11 @@ class Reader {
       return std::nullopt;
     }
     const std::string u = unit.empty() ? "" : " " + std::string(unit);
-    if (!std::isfinite(v) || v < lo || v > hi) {
+    if (!std::isfinite(v)) {
+      error(kRange, node.source(), path + " = " + value_text(v) + u + " is not a finite number");
+      return std::nullopt;
+    }
+    if (v < lo || v > hi) {
       error(kRange, node.source(),
             path + " = " + value_text(v) + u + " is out of range " + value_text(lo) + " .. " +
                 value_text(hi) + u);
@@ -232,6 +248,17 @@ class Reader {
             path + " = " + std::to_string(line) + " is beyond the last line (" +
                 std::to_string(last_line(*context_.program)) + ") of " + context_.program->name());
       return std::nullopt;
+    }
+    if (context_.program != nullptr && holds_no_block(context_.program->line_text(line))) {
+      core::Diagnostic d;
+      d.severity = core::Severity::warning;
+      d.file = file_.name();
+      d.loc = loc(node.source());
+      d.id = kLineEmpty;
+      d.message = path + " = " + std::to_string(line) + ": line " + std::to_string(line) + " of " +
+                  context_.program->name() +
+                  " holds no block (blank or a comment): it never starts, so this never fires";
+      diags_.add(std::move(d));
     }
     return line;
   }
@@ -502,6 +529,16 @@ std::optional<double> Scenario::ve_initial(std::string_view name) const {
 
 LoadResult parse_scenario(const core::SourceFile& file, const Context& context) {
   LoadResult result;
+  if (file.text().size() > kMaxScenarioBytes) {
+    core::Diagnostic d;
+    d.file = file.name();
+    d.id = kUnreadable;
+    d.message = "the scenario has " + std::to_string(file.text().size()) +
+                " bytes; a scenario file holds at most " + std::to_string(kMaxScenarioBytes) +
+                " (is it the right file?)";
+    result.diagnostics.add(std::move(d));
+    return result;
+  }
   toml::table root;
   try {
     root = toml::parse(file.text(), file.name());

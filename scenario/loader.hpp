@@ -11,6 +11,7 @@
 // (docs/diagnostics.md). Never throws for bad input.
 // Invariants: a returned Scenario satisfies the invariants listed in scenario.hpp.
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -38,6 +39,9 @@ struct LoadResult {
 
 /// Name of the scenario file a program folder may hold (used by default).
 inline constexpr const char* kDefaultScenarioFile = "scenario.toml";
+
+/// Largest scenario file (the parsed tree is held in memory): 16 MiB, NC7010 beyond.
+inline constexpr std::size_t kMaxScenarioBytes = std::size_t{16} << 20;
 
 /// Validates `file` (its name is the one diagnostics show).
 LoadResult parse_scenario(const core::SourceFile& file, const Context& context = {});

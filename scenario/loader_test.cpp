@@ -142,7 +142,8 @@ TEST_CASE("an out-of-range value is NC7004 with value, range and unit") {
   CHECK(has(only_error(parse("[[event]]\nline = 0\noverride = 10\n")), "NC7004", 2,
             "event[1].line = 0 is out of range 1 .."));
   CHECK(has(only_error(parse("[[event]]\nat = nan\noverride = 10\n")), "NC7004", 2,
-            "event[1].at = nan s"));
+            "event[1].at = nan s is not a finite number"));
+  CHECK(has(only_error(parse("[ve]\nA = -inf\n")), "NC7004", 2, "ve.A = -inf is not a finite"));
   CHECK(has(only_error(parse("[stop]\ntime = 0\n")), "NC7004", 2, "stop.time = 0 s"));
   CHECK(has(only_error(parse("[[event]]\nat = 1\naxis_override = { C = -5 }\n")), "NC7004", 3,
             "event[1].axis_override.C = -5 %"));
@@ -227,6 +228,28 @@ TEST_CASE("the context checks lines against the program and axes against the mac
   CHECK(has(only_error(parse("[[event]]\nat = 1\naxis_override = { B = 50 }\n", c)), "NC7011", 3,
             "the machine has no axis B (axes: X, Y, Z, C)"));
   CHECK(parse("[[event]]\nline = 20\naxis_override = { c = 50 }\n", c).scenario);
+}
+
+TEST_CASE("a line that holds no block is warning NC7013; the scenario still loads") {
+  const core::SourceFile prog("p.nc", "%p\n; a comment\n\n(- a comment -)\nG01 X1 F100\nM30\n");
+  Context c;
+  c.program = &prog;
+  for (const char* line : {"2", "3", "4"}) {
+    CAPTURE(line);
+    const LoadResult r = parse(std::string("[[event]]\nline = ") + line + "\noverride = 5\n", c);
+    REQUIRE(r.scenario);
+    REQUIRE(r.diagnostics.items().size() == 1);
+    const core::Diagnostic& d = r.diagnostics.items()[0];
+    CHECK(d.severity == core::Severity::warning);
+    CHECK(has(d, "NC7013", 2, "holds no block"));
+  }
+  CHECK(parse("[[event]]\nline = 5\noverride = 5\n", c).diagnostics.items().empty());
+  CHECK(parse("[stop]\nline = 6\npasses = 1\n", c).diagnostics.items().empty());
+}
+
+TEST_CASE("a file larger than kMaxScenarioBytes is NC7010, not parsed") {
+  const LoadResult r = parse(std::string(kMaxScenarioBytes + 1, '#'));
+  CHECK(has(only_error(r), "NC7010", 0, "at most 16777216"));
 }
 
 TEST_CASE("a file that cannot be read is NC7010") {

@@ -36,10 +36,10 @@ Player::Player(const Scenario& scenario) : scenario_(scenario), ve_(scenario) {
     if (std::holds_alternative<AtTime>(e.trigger)) {
       time_events_.push_back(i);
     } else {
-      passes_[std::get<AtLine>(e.trigger).line] = 0;
+      lines_[std::get<AtLine>(e.trigger).line].events.push_back(i);
     }
   }
-  if (scenario.stop.line) passes_[*scenario.stop.line] = 0;
+  if (scenario.stop.line) lines_[*scenario.stop.line];  // counted, no event
 }
 
 void Player::block_started(std::uint32_t line) {
@@ -49,12 +49,11 @@ void Player::block_started(std::uint32_t line) {
     pass_stop_pending_ = true;
   }
   current_line_ = line;
-  const auto it = passes_.find(line);
-  if (it == passes_.end()) return;
-  const std::uint32_t pass = ++it->second;
-  for (std::size_t i = 0; i < scenario_.events.size(); ++i) {
-    const auto* at = std::get_if<AtLine>(&scenario_.events[i].trigger);
-    if (at != nullptr && at->line == line && at->pass == pass) line_due_.push_back(i);
+  const auto it = lines_.find(line);
+  if (it == lines_.end()) return;
+  const std::uint32_t pass = ++it->second.passes;
+  for (const std::size_t i : it->second.events) {
+    if (std::get<AtLine>(scenario_.events[i].trigger).pass == pass) line_due_.push_back(i);
   }
 }
 
@@ -139,8 +138,8 @@ double Player::axis_override(std::string_view axis) const {
 }
 
 std::uint32_t Player::passes(std::uint32_t line) const {
-  const auto it = passes_.find(line);
-  return it == passes_.end() ? 0 : it->second;
+  const auto it = lines_.find(line);
+  return it == lines_.end() ? 0 : it->second.passes;
 }
 
 }  // namespace ncsim::scenario

@@ -91,11 +91,15 @@ class Player {
 
   const Scenario& scenario_;
   VeStore ve_;
-  std::vector<std::size_t> time_events_;           // indices of `at` events (in time order)
-  std::size_t next_time_ = 0;                      // first time event not yet due
-  std::map<std::uint32_t, std::uint32_t> passes_;  // line -> passes started (named lines)
-  std::vector<std::size_t> line_due_;  // `line` events whose pass started, not yet fired
-  std::vector<Release> releases_;      // pending hold releases, sorted by (t, seq)
+  std::vector<std::size_t> time_events_;  // indices of `at` events (in time order)
+  std::size_t next_time_ = 0;             // first time event not yet due
+  struct LineCount {
+    std::uint32_t passes = 0;         // passes started
+    std::vector<std::size_t> events;  // `line` events on this line (indices, file order)
+  };
+  std::map<std::uint32_t, LineCount> lines_;  // the lines the scenario names
+  std::vector<std::size_t> line_due_;         // `line` events whose pass started, not yet fired
+  std::vector<Release> releases_;             // pending hold releases, sorted by (t, seq)
   std::uint64_t release_seq_ = 0;
   std::uint32_t current_line_ = 0;  // line of the block executing
   bool pass_stop_pending_ = false;  // the stop line's last pass ended
