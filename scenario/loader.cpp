@@ -145,6 +145,7 @@ class Reader {
     Scenario s;
     s.file = file_.name();
     for (auto&& [key, node] : root) {
+      key_ = key.source();
       const std::string name(key.str());
       if (name == "description") {
         if (const auto* str = node.as_string()) {
@@ -175,8 +176,10 @@ class Reader {
   }
 
  private:
+  // A node toml++ made implicitly (the `a` of a dotted key `a.b = 1`) has no position: the
+  // key being read stands in for it.
   void error(const char* id, const toml::source_region& at, std::string message) {
-    error(id, loc(at), std::move(message));
+    error(id, at.begin.line != 0 ? loc(at) : loc(key_), std::move(message));
   }
   void error(const char* id, core::SourceLoc at, std::string message) {
     core::Diagnostic d;
@@ -274,6 +277,7 @@ class Reader {
     }
     std::vector<std::string> seen;
     for (auto&& [key, value] : *t) {
+      key_ = key.source();
       const std::string name(key.str());
       const std::string item = path + "." + name;
       if (value.is_table() && upper(name) == "V") {
@@ -359,6 +363,7 @@ class Reader {
     const toml::node* pass_node = nullptr;
     bool unknown_key = false;  // a misspelt trigger or action: no "missing" error besides
     for (auto&& [key, node] : t) {
+      key_ = key.source();
       const std::string name(key.str());
       const std::string item = path + "." + name;
       if (name == "at") {
@@ -464,8 +469,9 @@ class Reader {
       return;
     }
     StopConditions& c = s.stop;
-    c.loc = loc(t->source());
+    c.loc = loc(t->source().begin.line != 0 ? t->source() : key_);
     for (auto&& [key, value] : *t) {
+      key_ = key.source();
       const std::string name(key.str());
       const std::string item = "stop." + name;
       if (name == "time") {
@@ -500,6 +506,7 @@ class Reader {
   const core::SourceFile& file_;
   const Context& context_;
   core::DiagnosticList& diags_;
+  toml::source_region key_;  // the key being read (position of nodes that have none)
 };
 
 }  // namespace

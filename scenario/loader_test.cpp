@@ -2,6 +2,7 @@
 
 #include <doctest/doctest.h>
 
+#include <random>
 #include <string>
 
 namespace ncsim::scenario {
@@ -250,6 +251,53 @@ TEST_CASE("a line that holds no block is warning NC7013; the scenario still load
 TEST_CASE("a file larger than kMaxScenarioBytes is NC7010, not parsed") {
   const LoadResult r = parse(std::string(kMaxScenarioBytes + 1, '#'));
   CHECK(has(only_error(r), "NC7010", 0, "at most 16777216"));
+}
+
+TEST_CASE("a dotted key's implicit table is located at its key") {
+  CHECK(has(only_error(parse("\nstop.line = 3\n")), "NC7006", 2, "go together"));
+  CHECK(has(only_error(parse("\n\nevent.at = 3\n")), "NC7003", 3, "event must be an array"));
+}
+
+TEST_CASE("seeded random corruptions never crash; every error has a position") {
+  const std::string valid = R"(description = "demo"
+[ve]
+PART = 2
+[[event]]
+at = 2.5
+override = 60
+[[event]]
+line = 12
+pass = 3
+feed_hold = true
+duration = 3
+[[event]]
+at = 4
+axis_override = { C = 50 }
+ve = { PART = 3 }
+[stop]
+time = 30
+line = 12
+passes = 5
+)";
+  const std::string alphabet = "[]{}=.,\"#\n 0123456789-+eE_atlinepsovrdfhuxyzVEC";
+  std::mt19937 rng(20261123);
+  std::uniform_int_distribution<std::size_t> pick(0, alphabet.size() - 1);
+  int loaded = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    std::string text = valid;
+    std::uniform_int_distribution<std::size_t> where(0, text.size() - 1);
+    for (int edits = 1 + trial % 4; edits > 0; --edits)
+      text[where(rng)] = alphabet[pick(rng)];
+    CAPTURE(text);
+    const LoadResult r = parse(text);
+    CHECK(r.scenario.has_value() == !r.diagnostics.has_errors());
+    for (const core::Diagnostic& d : r.diagnostics.items()) {
+      CHECK(d.loc.line >= 1);
+      CHECK(d.id.rfind("NC70", 0) == 0);
+    }
+    loaded += r.scenario ? 1 : 0;
+  }
+  CHECK(loaded > 0);  // some corruptions stay valid (a digit for a digit)
 }
 
 TEST_CASE("a file that cannot be read is NC7010") {
