@@ -16,6 +16,7 @@
 #include "grammar/keywords.hpp"
 #include "interp/trace.hpp"
 #include "machines/loader.hpp"
+#include "scenario/loader.hpp"
 
 namespace ncsim::cli {
 namespace {
@@ -86,11 +87,6 @@ struct Loaded {
 // Loads program and machine; on a usage or configuration problem prints it and returns the
 // exit status instead.
 std::variant<Loaded, int> load(const ProgramOptions& options, std::ostream& err) {
-  if (options.scenario) {
-    err << "ncsim: error: not supported: --scenario (scenario files come with the conveyor "
-           "simulation)\n";
-    return kExitUsage;
-  }
   if (const auto problem = program_file_problem(options.program)) {
     err << "ncsim: error: " << *problem << '\n';
     return kExitUsage;
@@ -110,6 +106,14 @@ std::variant<Loaded, int> load(const ProgramOptions& options, std::ostream& err)
     return kExitUsage;
   }
   core::SourceFile file = load_program(options.program);
+  // The scenario's V.E. values are the decode-only state; a --ve of the same name wins
+  // (docs/scenario.md "Decisions").
+  auto scenario = load_scenario_for(options, file, *loaded.machine, err);
+  if (const int* status = std::get_if<int>(&scenario)) return *status;
+  if (const auto& s = std::get<std::optional<scenario::Scenario>>(scenario)) {
+    for (const scenario::VeInitial& v : s->ve)
+      interp_options.external.emplace(v.name, v.value);
+  }
   core::DiagnosticList syntax = grammar::check_program(file);
   return Loaded{std::move(file), std::move(*loaded.machine), std::move(interp_options),
                 std::move(syntax)};
@@ -224,6 +228,50 @@ int run_trace(const TraceOptions& options, std::ostream& out, std::ostream& err)
   const int status = interp::write_trace(in.file, in.machine, trace_options, out, diagnostics);
   report.print(diagnostics);
   return report.finish(out, status == 0 ? kExitOk : kExitProgramErrors);
+}
+
+std::optional<std::filesystem::path> scenario_file(const ProgramOptions& options) {
+  if (options.scenario) return *options.scenario;
+  const fs::path named =
+      (is_stdin(options.program) ? fs::path(".") : options.program.parent_path()) /
+      scenario::kDefaultScenarioFile;
+  std::error_code ec;
+  if (fs::is_regular_file(named, ec)) return named;
+  return std::nullopt;
+}
+
+std::variant<std::optional<scenario::Scenario>, int> load_scenario_for(
+    const ProgramOptions& options, const core::SourceFile& program,
+    const machines::Machine& machine, std::ostream& err) {
+  const std::optional<fs::path> path = scenario_file(options);
+  if (!path) return std::optional<scenario::Scenario>{};
+  std::error_code ec;
+  if (!fs::is_regular_file(*path, ec)) {
+    err << "ncsim: error: no such scenario file: '" << path->string() << "'\n";
+    return kExitUsage;
+  }
+  scenario::Context context;
+  context.program = &program;
+  context.axes.emplace();
+  for (const machines::AxisParams& axis : machine.axes)
+    context.axes->push_back(axis.name);
+  std::optional<core::SourceFile> file;
+  try {
+    file.emplace(core::SourceFile::load(*path));
+  } catch (const std::exception& e) {
+    err << "ncsim: error: cannot read the scenario '" << path->string() << "': " << e.what()
+        << '\n';
+    return kExitUsage;
+  }
+  scenario::LoadResult loaded = scenario::parse_scenario(*file, context);
+  for (const core::Diagnostic& d : loaded.diagnostics.items())
+    err << core::format(d, *file);
+  if (!loaded.scenario) {
+    err << "ncsim: error: scenario '" << path->string() << "': " << loaded.diagnostics.error_count()
+        << " error" << (loaded.diagnostics.error_count() == 1 ? "" : "s") << '\n';
+    return kExitUsage;
+  }
+  return std::move(loaded.scenario);
 }
 
 std::optional<std::filesystem::path> machine_folder(const ProgramOptions& options,

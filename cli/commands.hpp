@@ -7,7 +7,12 @@
 #include <iosfwd>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
+
+#include "core/source_file.hpp"
+#include "machines/machine.hpp"
+#include "scenario/scenario.hpp"
 
 namespace ncsim::cli {
 
@@ -38,6 +43,17 @@ struct CheckOptions {
 /// (reported on `err`) when that file names none.
 std::optional<std::filesystem::path> machine_folder(const ProgramOptions& options,
                                                     std::ostream& err);
+
+/// The scenario file a program runs under (docs/scenario.md): --scenario, else the program
+/// folder's `scenario.toml` (the current folder's for `-`) when it exists, else none.
+std::optional<std::filesystem::path> scenario_file(const ProgramOptions& options);
+
+/// Loads and validates the scenario of `options` (scenario_file) against `program`'s lines and
+/// `machine`'s axis names. No scenario: nullopt. A missing --scenario file or any error in it:
+/// every diagnostic printed on `err` (with its source line) and the exit status kExitUsage.
+std::variant<std::optional<scenario::Scenario>, int> load_scenario_for(
+    const ProgramOptions& options, const core::SourceFile& program,
+    const machines::Machine& machine, std::ostream& err);
 
 /// `ncsim check`: syntax, structure and semantics; every diagnostic to `err`, a one-line
 /// verdict to `out`.

@@ -1,8 +1,8 @@
 // The `ncsim` command: the user-facing contract of design.md §5.
 //
-//   ncsim check PROG.nc|- [--machine DIR] [--ve NAME=value] [--syntax-only]
+//   ncsim check PROG.nc|- [--machine DIR] [--scenario FILE] [--ve NAME=value] [--syntax-only]
 //                                              exit 0 ok, 1 program errors, 2 usage
-//   ncsim trace PROG.nc [--machine DIR] [--ve NAME=value] [--max-commands N]
+//   ncsim trace PROG.nc [--machine DIR] [--scenario FILE] [--ve NAME=value] [--max-commands N]
 //   ncsim time|run ...                  cli/run_commands.hpp (exit 3: --audit violations)
 //   ncsim golden ...                                        not built yet: "not supported"
 //
@@ -49,9 +49,12 @@ int main(int argc, char** argv) {
     cmd.add_option("--machine", options.machine_dir,
                    "Machine folder (parameter lists); default: the program folder's "
                    "'machine' file, else the bundled portal_3x");
-    cmd.add_option("--scenario", options.scenario, "Scenario file (not supported yet)");
+    cmd.add_option("--scenario", options.scenario,
+                   "Scenario TOML file (docs/scenario.md); default: the program folder's "
+                   "scenario.toml; check and trace read its [ve] values");
     cmd.add_option("--ve", options.external,
-                   "V.E. variable value, NAME=value (repeatable; each NAME once)");
+                   "V.E. variable value, NAME=value (repeatable; each NAME once; wins over the "
+                   "scenario's [ve] value)");
   };
 
   ncsim::cli::CheckOptions check;

@@ -52,16 +52,12 @@ struct Loaded {
   core::SourceFile file;
   machines::Machine machine;
   double t_cycle = 0.001;
+  interp::Options interp;  ///< the scenario's V.E. initial values (barrier answers)
 };
 
 // Program and machine, syntax-checked; an exit status on failure (printed on `err`).
 std::variant<Loaded, int> load(const ProgramOptions& options,
                                const std::optional<std::uint64_t>& cycle_us, std::ostream& err) {
-  if (options.scenario) {
-    err << "ncsim: error: not supported: --scenario (scenario files come with the conveyor "
-           "simulation)\n";
-    return kExitUsage;
-  }
   if (!options.external.empty()) {
     err << "ncsim: error: not supported: --ve with time / run (V.E. values come with the "
            "scenario)\n";
@@ -82,13 +78,28 @@ std::variant<Loaded, int> load(const ProgramOptions& options,
     return kExitUsage;
   }
   core::SourceFile file = core::SourceFile::load(options.program);
+  // Scenario (docs/scenario.md): its V.E. initial values answer the barriers; events and stop
+  // conditions need the channel loop, which is not wired yet: refused, never ignored.
+  auto scenario = load_scenario_for(options, file, *loaded.machine, err);
+  if (const int* status = std::get_if<int>(&scenario)) return *status;
+  interp::Options interp_options;
+  if (const auto& s = std::get<std::optional<scenario::Scenario>>(scenario)) {
+    if (s->needs_channel()) {
+      err << "ncsim: error: not supported: scenario events in run/time ('" << s->file
+          << "': override, feed hold, V.E. writes and [stop] come with the channel loop; "
+             "check and trace read its [ve] values)\n";
+      return kExitUsage;
+    }
+    for (const scenario::VeInitial& v : s->ve)
+      interp_options.external.emplace(v.name, v.value);
+  }
   const core::DiagnosticList syntax = grammar::check_program(file);
   for (const core::Diagnostic& d : syntax.items())
     err << core::format(d, file);
   if (syntax.error_count() > 0) return kExitProgramErrors;
   // The channel list has no cycle key in ncsim yet: 1 ms unless --cycle-us (docs/ipo.md).
   const double t = cycle_us ? static_cast<double>(*cycle_us) * 1e-6 : 0.001;
-  return Loaded{std::move(file), std::move(*loaded.machine), t};
+  return Loaded{std::move(file), std::move(*loaded.machine), t, std::move(interp_options)};
 }
 
 // The program error that ended a run, with its source line when it is in the main program.
@@ -188,7 +199,7 @@ class Tee final : public ipo::Sink {
 // Runs the program once with the audit sink (Detail::axes); returns the verdict, or the
 // program error text.
 std::variant<ipo::Verdict, std::string> audit_pass(const Loaded& in) {
-  interp::Interpreter interp(in.file, in.machine);
+  interp::Interpreter interp(in.file, in.machine, in.interp);
   ipo::ProgramSource src(interp, in.machine);
   ipo::Config cfg = ipo::machine_config(in.machine, in.t_cycle);
   ipo::Audit audit(cfg.axes, cfg.channel.t_cycle, cfg.start);
@@ -231,7 +242,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
   if (const int* status = std::get_if<int>(&loaded)) return *status;
   const Loaded& in = std::get<Loaded>(loaded);
 
-  interp::Interpreter interp(in.file, in.machine);
+  interp::Interpreter interp(in.file, in.machine, in.interp);
   ipo::ProgramSource src(interp, in.machine);
   bool first_block = true;
   if (options.json) {
@@ -404,7 +415,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
     }
   }
 
-  interp::Interpreter interp(in.file, in.machine);
+  interp::Interpreter interp(in.file, in.machine, in.interp);
   ipo::ProgramSource src(interp, in.machine);
   ipo::Config cfg = ipo::machine_config(in.machine, in.t_cycle);
   const std::vector<std::string> names = axis_names(in.machine);
@@ -472,7 +483,9 @@ RunCommands::RunCommands(CLI::App& app) {
     cmd.add_option("--machine", p.machine_dir,
                    "Machine folder (parameter lists); default: the program folder's 'machine' "
                    "file, else the bundled portal_3x");
-    cmd.add_option("--scenario", p.scenario, "Scenario file (not supported yet)");
+    cmd.add_option("--scenario", p.scenario,
+                   "Scenario TOML file (docs/scenario.md); default: the program folder's "
+                   "scenario.toml");
   };
   time_cmd_ = app.add_subcommand("time", "Machining time, total and per block");
   add_program(*time_cmd_, time_.program);

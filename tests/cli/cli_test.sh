@@ -50,11 +50,47 @@ expect "a directory is not a program" 2 '' 'not a regular file' -- check "$fixtu
 expect "no subcommand is a usage error" 2 '' '' --
 expect "an unknown option is a usage error" 2 '' '' -- check --frobnicate "$fixtures/clean.nc"
 expect "check needs a program" 2 '' '' -- check
-expect "scenarios are not supported yet" 2 '' 'not supported: --scenario' -- \
-  check "$fixtures/clean.nc" --scenario "$fixtures/clean.nc"
 expect "trace needs a program" 2 '' '' -- trace
 expect "golden is not supported yet" 2 '' 'not supported' -- golden check
 root=$(cd "$fixtures/../.." && pwd)
+expect "a file that is no TOML is a bad scenario, status 2" 2 '' 'clean\.nc:[0-9]+:[0-9]+: error: TOML syntax.*\[NC7001\]' -- \
+  check "$fixtures/clean.nc" --scenario "$fixtures/clean.nc"
+expect "the scenario's V.E. values are the decode-only state" 0 'X=7\.5000' '' -- \
+  trace "$fixtures/external.nc" --scenario "$fixtures/scenario_ve.toml"
+expect "--ve wins over the scenario's value" 0 'X=12\.5000' '' -- \
+  trace "$fixtures/external.nc" --scenario "$fixtures/scenario_ve.toml" --ve OFFSET=12.5
+expect "every error of a bad scenario, with file:line, status 2" 2 '' \
+  'scenario_bad\.toml:3:[0-9]+: error: ve\.OFFSET must be a number, not a string \[NC7003\]' -- \
+  check "$fixtures/external.nc" --scenario "$fixtures/scenario_bad.toml"
+expect "the second error of a bad scenario is reported too" 2 '' \
+  'scenario_bad\.toml:6:[0-9]+: error: event\[1\]\.override = 150000 % is out of range.*\[NC7004\]' -- \
+  check "$fixtures/external.nc" --scenario "$fixtures/scenario_bad.toml"
+expect "a missing scenario file is a usage error" 2 '' 'no such scenario file' -- \
+  check "$fixtures/clean.nc" --scenario "$work/nope.toml"
+expect "a line the program does not have is NC7012" 2 '' \
+  'scenario_line\.toml:2:[0-9]+: error: event\[1\]\.line = 99 is beyond the last line.*\[NC7012\]' -- \
+  check "$fixtures/external.nc" --scenario "$fixtures/scenario_line.toml"
+expect "time with a scenario's V.E. values runs" 0 'external\.nc: [0-9.e-]+ s' '' -- \
+  time "$fixtures/external.nc" --scenario "$fixtures/scenario_ve.toml"
+expect "time refuses scenario events until the channel loop, status 2" 2 '' \
+  'not supported: scenario events in run/time' -- \
+  time "$fixtures/external.nc" --scenario "$fixtures/scenario_events.toml"
+expect "run refuses scenario events until the channel loop, status 2" 2 '' \
+  'not supported: scenario events in run/time' -- \
+  run "$fixtures/external.nc" --scenario "$fixtures/scenario_events.toml"
+mkdir -p "$work/sprog"
+cp "$fixtures/external.nc" "$work/sprog/"
+printf '[ve]\nOFFSET = 3.25\n' >"$work/sprog/scenario.toml"
+expect "the program folder's scenario.toml is used by default" 0 'X=3\.2500' '' -- \
+  trace "$work/sprog/external.nc"
+expect "--scenario overrides the program folder's scenario.toml" 0 'X=7\.5000' '' -- \
+  trace "$work/sprog/external.nc" --scenario "$fixtures/scenario_ve.toml"
+printf '[belt]\nvelocity = 300\n' >"$work/sprog/scenario.toml"
+expect "a conveyor table in the default scenario is refused, status 2" 2 '' \
+  'scenario\.toml:1:[0-9]+: error: not supported: \[belt\] \(conveyor tracking\).*\[NC7007\]' -- \
+  check "$work/sprog/external.nc"
+expect "the bundled part_variants program checks with its scenario" 0 'part_variants\.nc: ok' '' -- \
+  check "$root/programs/part_variants/part_variants.nc"
 expect "a bundled machine can be named with --machine" 0 'clean\.nc: ok' '' -- \
   check --machine "$root/machines/laser_portal" "$fixtures/clean.nc"
 expect "a missing machine folder is a configuration error" 2 '' 'could not be loaded' -- \

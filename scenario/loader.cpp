@@ -1,0 +1,583 @@
+#include "scenario/loader.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <initializer_list>
+#include <limits>
+#include <string_view>
+#include <utility>
+
+#include "core/number_text.hpp"
+
+namespace ncsim::scenario {
+namespace {
+
+// Diagnostic ids (docs/diagnostics.md "scenario/").
+constexpr const char* kSyntax = "NC7001";
+constexpr const char* kUnknownKey = "NC7002";
+constexpr const char* kWrongType = "NC7003";
+constexpr const char* kRange = "NC7004";
+constexpr const char* kOrder = "NC7005";
+constexpr const char* kCombination = "NC7006";
+constexpr const char* kConveyor = "NC7007";
+constexpr const char* kName = "NC7008";
+constexpr const char* kUnreadable = "NC7010";
+constexpr const char* kUnknownAxis = "NC7011";
+constexpr const char* kLineBeyond = "NC7012";
+constexpr const char* kLineEmpty = "NC7013";
+
+constexpr double kTimeMax = 1e9;  // [s] largest `at`, `duration`, stop.time
+constexpr double kOverrideMaxPercent = kOverrideMax * 100.0;
+constexpr double kLineMax = 4294967295.0;          // line and pass counts are 32-bit
+constexpr double kCyclesMax = 9.2233720368547e18;  // TOML integers are 64-bit signed
+
+// Tables and keys that conveyor tracking (issue 14) adds; reserved in docs/scenario.md.
+constexpr std::string_view kConveyorTables[] = {"belt", "workpiece", "probe", "filter"};
+constexpr std::string_view kConveyorEventKeys[] = {"reduced_filter"};
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j)
+    row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string upper(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) {
+    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+  }
+  return out;
+}
+
+// "; did you mean `x`?" for the closest candidate within two edits (case ignored); else "".
+std::string suggestion(std::string_view word, std::initializer_list<std::string_view> known) {
+  std::string_view best;
+  std::size_t best_distance = 3;
+  const std::string w = upper(word);
+  for (const std::string_view k : known) {
+    const std::size_t d = edit_distance(w, upper(k));
+    if (d < best_distance) {
+      best = k;
+      best_distance = d;
+    }
+  }
+  return best.empty() ? "" : "; did you mean `" + std::string(best) + "`?";
+}
+
+std::string_view type_name(const toml::node& node) {
+  switch (node.type()) {
+    case toml::node_type::table:
+      return "a table";
+    case toml::node_type::array:
+      return "an array";
+    case toml::node_type::string:
+      return "a string";
+    case toml::node_type::integer:
+      return "an integer";
+    case toml::node_type::floating_point:
+      return "a floating-point number";
+    case toml::node_type::boolean:
+      return "a boolean";
+    case toml::node_type::date:
+      return "a date";
+    case toml::node_type::time:
+      return "a time of day";
+    case toml::node_type::date_time:
+      return "a date-time";
+    case toml::node_type::none:
+      break;
+  }
+  return "nothing";
+}
+
+// A V.E. or axis name: a letter or '_', then letters, digits, '_' (the NC language's names).
+bool is_name(std::string_view s) {
+  if (s.empty()) return false;
+  const auto letter = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); };
+  if (!letter(s[0]) && s[0] != '_') return false;
+  return std::all_of(s.begin(), s.end(),
+                     [&](char c) { return letter(c) || (c >= '0' && c <= '9') || c == '_'; });
+}
+
+// The last line of a file: a final line end does not start another line.
+std::uint32_t last_line(const core::SourceFile& file) {
+  const std::uint32_t n = file.line_count();
+  const std::string_view text = file.text();
+  return !text.empty() && text.back() == '\n' && n > 1 ? n - 1 : n;
+}
+
+// True when a program line holds no block at all: blank, a `;` comment, or one `( ... )`
+// comment (such a line never starts executing, so a trigger on it never fires).
+bool holds_no_block(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t\r");
+  if (first == std::string_view::npos) return true;
+  const auto last = text.find_last_not_of(" \t\r");
+  const std::string_view t = text.substr(first, last - first + 1);
+  if (t.front() == ';') return true;
+  return t.front() == '(' && t.back() == ')' && t.find(')') == t.size() - 1;
+}
+
+// The number text a user wrote (integers without ".0").
+std::string value_text(double v) {
+  return core::number_text(v);
+}
+
+// Reads one file's tables into a Scenario, reporting every problem.
+class Reader {
+ public:
+  Reader(const core::SourceFile& file, const Context& context, core::DiagnosticList& diags)
+      : file_(file), context_(context), diags_(diags) {}
+
+  Scenario read(const toml::table& root) {
+    Scenario s;
+    s.file = file_.name();
+    for (auto&& [key, node] : root) {
+      key_ = key.source();
+      const std::string name(key.str());
+      if (name == "description") {
+        if (const auto* str = node.as_string()) {
+          s.description = str->get();
+        } else {
+          wrong_type(node, name, "a string");
+        }
+      } else if (name == "ve") {
+        read_ve(node, s);
+      } else if (name == "event") {
+        read_events(node, s);
+      } else if (name == "stop") {
+        read_stop(node, s);
+      } else if (std::find(std::begin(kConveyorTables), std::end(kConveyorTables), name) !=
+                 std::end(kConveyorTables)) {
+        error(kConveyor, key.source(),
+              "not supported: [" + name +
+                  "] (conveyor tracking): the belt, workpieces, touch probe and filters come "
+                  "with conveyor tracking; docs/scenario.md reserves their layout");
+      } else {
+        error(kUnknownKey, key.source(),
+              "unknown key `" + name + "`" +
+                  suggestion(name, {"description", "ve", "event", "stop", "belt", "workpiece",
+                                    "probe", "filter"}));
+      }
+    }
+    return s;
+  }
+
+ private:
+  // A node toml++ made implicitly (the `a` of a dotted key `a.b = 1`) has no position: the
+  // key being read stands in for it.
+  void error(const char* id, const toml::source_region& at, std::string message) {
+    error(id, at.begin.line != 0 ? loc(at) : loc(key_), std::move(message));
+  }
+  void error(const char* id, core::SourceLoc at, std::string message) {
+    core::Diagnostic d;
+    d.file = file_.name();
+    d.loc = at;
+    d.id = id;
+    d.message = std::move(message);
+    diags_.add(std::move(d));
+  }
+  static core::SourceLoc loc(const toml::source_region& at) {
+    return core::SourceLoc{at.begin.line, at.begin.column};
+  }
+
+  void wrong_type(const toml::node& node, const std::string& path, std::string_view expected) {
+    error(kWrongType, node.source(),
+          path + " must be " + std::string(expected) + ", not " + std::string(type_name(node)));
+  }
+
+  // A number (integer or float) in [lo, hi] (`unit` for the message); nullopt when reported.
+  std::optional<double> number(const toml::node& node, const std::string& path, double lo,
+                               double hi, std::string_view unit) {
+    double v = 0.0;
+    if (const auto* i = node.as_integer()) {
+      v = static_cast<double>(i->get());
+    } else if (const auto* f = node.as_floating_point()) {
+      v = f->get();
+    } else {
+      wrong_type(node, path, "a number");
+      return std::nullopt;
+    }
+    const std::string u = unit.empty() ? "" : " " + std::string(unit);
+    if (!std::isfinite(v)) {
+      error(kRange, node.source(), path + " = " + value_text(v) + u + " is not a finite number");
+      return std::nullopt;
+    }
+    if (v < lo || v > hi) {
+      error(kRange, node.source(),
+            path + " = " + value_text(v) + u + " is out of range " + value_text(lo) + " .. " +
+                value_text(hi) + u);
+      return std::nullopt;
+    }
+    return v;
+  }
+
+  // An integer in [lo, hi]; a float is a wrong type (a count is whole).
+  std::optional<std::uint64_t> integer(const toml::node& node, const std::string& path, double lo,
+                                       double hi) {
+    const auto* i = node.as_integer();
+    if (i == nullptr) {
+      wrong_type(node, path, "an integer");
+      return std::nullopt;
+    }
+    const double v = static_cast<double>(i->get());
+    if (v < lo || v > hi) {
+      error(kRange, node.source(),
+            path + " = " + std::to_string(i->get()) + " is out of range " + value_text(lo) +
+                " .. " + value_text(hi));
+      return std::nullopt;
+    }
+    return static_cast<std::uint64_t>(i->get());
+  }
+
+  std::optional<std::uint32_t> line_number(const toml::node& node, const std::string& path) {
+    const auto v = integer(node, path, 1.0, kLineMax);
+    if (!v) return std::nullopt;
+    const auto line = static_cast<std::uint32_t>(*v);
+    if (context_.program != nullptr && line > last_line(*context_.program)) {
+      error(kLineBeyond, node.source(),
+            path + " = " + std::to_string(line) + " is beyond the last line (" +
+                std::to_string(last_line(*context_.program)) + ") of " + context_.program->name());
+      return std::nullopt;
+    }
+    if (context_.program != nullptr && holds_no_block(context_.program->line_text(line))) {
+      core::Diagnostic d;
+      d.severity = core::Severity::warning;
+      d.file = file_.name();
+      d.loc = loc(node.source());
+      d.id = kLineEmpty;
+      d.message = path + " = " + std::to_string(line) + ": line " + std::to_string(line) + " of " +
+                  context_.program->name() +
+                  " holds no block (blank or a comment): it never starts, so this never fires";
+      diags_.add(std::move(d));
+    }
+    return line;
+  }
+
+  // NAME = number pairs of `[ve]` or an event's `ve` / `axis_override` (names upper-cased,
+  // unique ignoring case). `percent`: values are overrides in % (stored as fractions).
+  template <typename Out>
+  void read_named(const toml::node& node, const std::string& path, bool percent, Out&& out) {
+    const toml::table* t = node.as_table();
+    if (t == nullptr) {
+      wrong_type(node, path, "a table of NAME = number");
+      return;
+    }
+    std::vector<std::string> seen;
+    for (auto&& [key, value] : *t) {
+      key_ = key.source();
+      const std::string name(key.str());
+      const std::string item = path + "." + name;
+      if (value.is_table() && upper(name) == "V") {
+        error(kName, key.source(),
+              item +
+                  ": write V.E. names without the `V.E.` prefix (`PART = 3`, not "
+                  "`V.E.PART = 3`)");
+        continue;
+      }
+      if (!is_name(name)) {
+        error(
+            kName, key.source(),
+            item + ": `" + name + "` is not a name (a letter or `_`, then letters, digits or `_`)");
+        continue;
+      }
+      const std::string up = upper(name);
+      if (std::find(seen.begin(), seen.end(), up) != seen.end()) {
+        error(kName, key.source(), item + ": " + up + " is given twice (names ignore case)");
+        continue;
+      }
+      seen.push_back(up);
+      const auto v = percent ? number(value, item, 0.0, kOverrideMaxPercent, "%")
+                             : number(value, item, std::numeric_limits<double>::lowest(),
+                                      std::numeric_limits<double>::max(), "");
+      if (v) out(up, percent ? *v / 100.0 : *v, key.source());
+    }
+  }
+
+  void read_ve(const toml::node& node, Scenario& s) {
+    read_named(node, "ve", false, [&](const std::string& name, double v, const auto& at) {
+      s.ve.push_back(VeInitial{name, v, loc(at)});
+    });
+  }
+
+  void read_events(const toml::node& node, Scenario& s) {
+    const toml::array* list = node.as_array();
+    if (list == nullptr) {
+      wrong_type(node, "event", "an array of tables ([[event]])");
+      return;
+    }
+    std::optional<double> last_at;  // [s] of the last event with `at`
+    std::uint32_t last_at_line = 0;
+    std::string last_at_path;
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      const toml::node& item = *list->get(i);
+      const std::string path = "event[" + std::to_string(i + 1) + "]";
+      const toml::table* t = item.as_table();
+      if (t == nullptr) {
+        wrong_type(item, path, "a table ([[event]])");
+        continue;
+      }
+      std::optional<Event> e = read_event(*t, path);
+      if (!e) continue;
+      if (const auto* at = std::get_if<AtTime>(&e->trigger)) {
+        const toml::node* at_node = t->get("at");
+        if (last_at && at->t < *last_at) {
+          error(kOrder, at_node->source(),
+                path + ".at = " + value_text(at->t) + " s comes before " + last_at_path +
+                    ".at = " + value_text(*last_at) + " s (line " + std::to_string(last_at_line) +
+                    "): events with `at` must be in time order");
+        }
+        last_at = at->t;
+        last_at_line = at_node->source().begin.line;
+        last_at_path = path;
+      }
+      s.events.push_back(std::move(*e));
+    }
+  }
+
+  std::optional<Event> read_event(const toml::table& t, const std::string& path) {
+    Event e;
+    e.loc = loc(t.source());
+    const std::size_t errors_before = diags_.error_count();
+    std::optional<double> at;
+    std::optional<std::uint32_t> line;
+    std::optional<std::uint32_t> pass;
+    std::optional<double> path_override;
+    std::vector<Action> axis_overrides;
+    std::optional<bool> feed_hold;
+    std::optional<double> duration;
+    std::vector<Action> ve_writes;
+    const toml::node* duration_node = nullptr;
+    const toml::node* pass_node = nullptr;
+    bool unknown_key = false;  // a misspelt trigger or action: no "missing" error besides
+    for (auto&& [key, node] : t) {
+      key_ = key.source();
+      const std::string name(key.str());
+      const std::string item = path + "." + name;
+      if (name == "at") {
+        at = number(node, item, 0.0, kTimeMax, "s");
+      } else if (name == "line") {
+        line = line_number(node, item);
+      } else if (name == "pass") {
+        pass_node = &node;
+        if (const auto v = integer(node, item, 1.0, kLineMax))
+          pass = static_cast<std::uint32_t>(*v);
+      } else if (name == "override") {
+        if (const auto v = number(node, item, 0.0, kOverrideMaxPercent, "%")) {
+          path_override = *v / 100.0;
+        }
+      } else if (name == "axis_override") {
+        read_named(node, item, true, [&](const std::string& axis, double v, const auto& at_key) {
+          if (context_.axes && std::find(context_.axes->begin(), context_.axes->end(), axis) ==
+                                   context_.axes->end()) {
+            std::string names;
+            for (const std::string& a : *context_.axes)
+              names += (names.empty() ? "" : ", ") + a;
+            error(
+                kUnknownAxis, at_key,
+                item + "." + axis + ": the machine has no axis " + axis + " (axes: " + names + ")");
+            return;
+          }
+          axis_overrides.emplace_back(AxisOverride{axis, v});
+        });
+      } else if (name == "feed_hold") {
+        if (const auto* b = node.as_boolean()) {
+          feed_hold = b->get();
+        } else {
+          wrong_type(node, item, "a boolean (true: hold, false: release)");
+        }
+      } else if (name == "duration") {
+        duration_node = &node;
+        const auto v = number(node, item, 0.0, kTimeMax, "s");
+        if (v && *v <= 0.0) {
+          error(kRange, node.source(), item + " = 0 s: a hold lasts longer than 0 s");
+        } else {
+          duration = v;
+        }
+      } else if (name == "ve") {
+        read_named(node, item, false, [&](const std::string& ve, double v, const auto&) {
+          ve_writes.emplace_back(VeWrite{ve, v});
+        });
+      } else if (std::find(std::begin(kConveyorEventKeys), std::end(kConveyorEventKeys), name) !=
+                 std::end(kConveyorEventKeys)) {
+        error(kConveyor, key.source(),
+              "not supported: " + item +
+                  " (conveyor tracking): the reduced actual-value "
+                  "filter comes with conveyor tracking");
+      } else {
+        unknown_key = true;
+        error(kUnknownKey, key.source(),
+              "unknown key `" + item + "`" +
+                  suggestion(name, {"at", "line", "pass", "override", "axis_override", "feed_hold",
+                                    "duration", "ve", "reduced_filter"}));
+      }
+    }
+    // Combinations, reported at the event's first key.
+    const bool has_at = t.contains("at");
+    const bool has_line = t.contains("line");
+    if (!has_at && !has_line && !unknown_key) {
+      error(kCombination, e.loc, path + " has no trigger: give `at` (s) or `line`");
+    } else if (has_at && has_line) {
+      error(kCombination, e.loc, path + " has both `at` and `line`: give one trigger");
+    }
+    if (pass_node != nullptr && !has_line) {
+      error(kCombination, pass_node->source(), path + ".pass counts passes of a `line`: give one");
+    }
+    if (duration_node != nullptr && !(feed_hold && *feed_hold)) {
+      error(kCombination, duration_node->source(),
+            path + ".duration is how long a feed hold lasts: it needs feed_hold = true");
+    }
+    const bool has_action = t.contains("override") || t.contains("axis_override") ||
+                            t.contains("feed_hold") || t.contains("ve") ||
+                            t.contains("reduced_filter");
+    if (!has_action && !unknown_key) {
+      error(kCombination, e.loc,
+            path + " does nothing: give override, axis_override, feed_hold or ve");
+    }
+    if (diags_.error_count() != errors_before) return std::nullopt;
+
+    if (at) {
+      e.trigger = AtTime{*at};
+    } else {
+      e.trigger = AtLine{*line, pass.value_or(1)};
+    }
+    // Documented order: path override, axis overrides (by name), feed hold, V.E. writes.
+    if (path_override) e.actions.emplace_back(PathOverride{*path_override});
+    e.actions.insert(e.actions.end(), axis_overrides.begin(), axis_overrides.end());
+    if (feed_hold) e.actions.emplace_back(FeedHold{*feed_hold});
+    e.actions.insert(e.actions.end(), ve_writes.begin(), ve_writes.end());
+    e.hold_release = duration;
+    return e;
+  }
+
+  void read_stop(const toml::node& node, Scenario& s) {
+    const toml::table* t = node.as_table();
+    if (t == nullptr) {
+      wrong_type(node, "stop", "a table ([stop])");
+      return;
+    }
+    StopConditions& c = s.stop;
+    c.loc = loc(t->source().begin.line != 0 ? t->source() : key_);
+    for (auto&& [key, value] : *t) {
+      key_ = key.source();
+      const std::string name(key.str());
+      const std::string item = "stop." + name;
+      if (name == "time") {
+        const auto v = number(value, item, 0.0, kTimeMax, "s");
+        if (v && *v <= 0.0) {
+          error(kRange, value.source(), item + " = 0 s: the program would not start");
+        } else {
+          c.time = v;
+        }
+      } else if (name == "cycles") {
+        c.cycles = integer(value, item, 1.0, kCyclesMax);
+      } else if (name == "line") {
+        c.line = line_number(value, item);
+      } else if (name == "passes") {
+        if (const auto v = integer(value, item, 1.0, kLineMax)) {
+          c.passes = static_cast<std::uint32_t>(*v);
+        }
+      } else {
+        error(
+            kUnknownKey, key.source(),
+            "unknown key `" + item + "`" + suggestion(name, {"time", "cycles", "line", "passes"}));
+      }
+    }
+    if (t->contains("line") != t->contains("passes")) {
+      error(kCombination, c.loc,
+            "stop: `line` and `passes` go together (stop when the n-th pass of a line ends)");
+      c.line.reset();
+      c.passes.reset();
+    }
+  }
+
+  const core::SourceFile& file_;
+  const Context& context_;
+  core::DiagnosticList& diags_;
+  toml::source_region key_;  // the key being read (position of nodes that have none)
+};
+
+}  // namespace
+
+std::string_view to_string(StopReason reason) {
+  switch (reason) {
+    case StopReason::program_end:
+      return "program end";
+    case StopReason::error:
+      return "error";
+    case StopReason::time:
+      return "stop.time";
+    case StopReason::cycles:
+      return "stop.cycles";
+    case StopReason::line_passes:
+      return "stop.passes";
+  }
+  return "?";
+}
+
+std::optional<double> Scenario::ve_initial(std::string_view name) const {
+  for (const VeInitial& v : ve) {
+    if (v.name == name) return v.value;
+  }
+  return std::nullopt;
+}
+
+LoadResult parse_scenario(const core::SourceFile& file, const Context& context) {
+  LoadResult result;
+  if (file.text().size() > kMaxScenarioBytes) {
+    core::Diagnostic d;
+    d.file = file.name();
+    d.id = kUnreadable;
+    d.message = "the scenario has " + std::to_string(file.text().size()) +
+                " bytes; a scenario file holds at most " + std::to_string(kMaxScenarioBytes) +
+                " (is it the right file?)";
+    result.diagnostics.add(std::move(d));
+    return result;
+  }
+  toml::table root;
+  try {
+    root = toml::parse(file.text(), file.name());
+  } catch (const toml::parse_error& e) {
+    core::Diagnostic d;
+    d.file = file.name();
+    d.loc = core::SourceLoc{e.source().begin.line, e.source().begin.column};
+    d.id = kSyntax;
+    d.message = "TOML syntax: " + std::string(e.description());
+    result.diagnostics.add(std::move(d));
+    return result;
+  }
+  Reader reader(file, context, result.diagnostics);
+  Scenario s = reader.read(root);
+  result.diagnostics.sort_by_position();
+  if (!result.diagnostics.has_errors()) result.scenario = std::move(s);
+  return result;
+}
+
+LoadResult load_scenario(const std::filesystem::path& path, const Context& context) {
+  try {
+    const core::SourceFile file = core::SourceFile::load(path);
+    return parse_scenario(file, context);
+  } catch (const std::exception& e) {
+    LoadResult result;
+    core::Diagnostic d;
+    d.file = path.string();
+    d.id = kUnreadable;
+    d.message = std::string("cannot read the scenario: ") + e.what();
+    result.diagnostics.add(std::move(d));
+    return result;
+  }
+}
+
+}  // namespace ncsim::scenario
