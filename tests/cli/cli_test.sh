@@ -53,7 +53,7 @@ expect "check needs a program" 2 '' '' -- check
 expect "scenarios are not supported yet" 2 '' 'not supported: --scenario' -- \
   check "$fixtures/clean.nc" --scenario "$fixtures/clean.nc"
 expect "trace needs a program" 2 '' '' -- trace
-expect "golden is not supported yet" 2 '' 'not supported' -- golden check
+expect "golden needs check or bless" 2 '' '' -- golden
 root=$(cd "$fixtures/../.." && pwd)
 expect "a bundled machine can be named with --machine" 0 'clean\.nc: ok' '' -- \
   check --machine "$root/machines/laser_portal" "$fixtures/clean.nc"
