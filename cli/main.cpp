@@ -4,7 +4,7 @@
 //                                              exit 0 ok, 1 program errors, 2 usage
 //   ncsim trace PROG.nc [--machine DIR] [--scenario FILE] [--ve NAME=value] [--max-commands N]
 //   ncsim time|run ...                  cli/run_commands.hpp (exit 3: --audit violations)
-//   ncsim golden ...                                        not built yet: "not supported"
+//   ncsim golden check [PROGRAM...] | bless PROGRAM...|--all   cli/golden_command.hpp
 //
 // Diagnostics go to stderr as `file:line:col: error: text [id]` with the source line and a
 // caret. The command never throws past main: every failure is a message and an exit status.
@@ -17,23 +17,12 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/golden_command.hpp"
 #include "cli/run_commands.hpp"
 
 namespace {
 
 using ncsim::cli::kExitUsage;
-
-// Subcommands whose pipeline stage is not built yet: they parse nothing and answer clearly.
-void add_not_supported(CLI::App& app, const std::string& name, const std::string& what,
-                       const std::string& needs, std::optional<std::string>& chosen,
-                       std::string& reason) {
-  auto* sub = app.add_subcommand(name, what);
-  sub->allow_extras();
-  sub->callback([&chosen, &reason, name, needs] {
-    chosen = name;
-    reason = "not supported: 'ncsim " + name + "' needs " + needs + ", which is not built yet";
-  });
-}
 
 }  // namespace
 
@@ -76,11 +65,8 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
 
-  std::optional<std::string> unsupported;
-  std::string unsupported_reason;
-  ncsim::cli::RunCommands run_commands(app);  // binds its options: not const, not moved
-  add_not_supported(app, "golden", "Regression against programs/*.golden",
-                    "the interpolator and golden trajectories", unsupported, unsupported_reason);
+  ncsim::cli::RunCommands run_commands(app);        // binds its options: not const, not moved
+  ncsim::cli::GoldenCommands golden_commands(app);  // likewise
 
   // A first word that is no option and no subcommand is named (CLI11 would only say that a
   // subcommand is required).
@@ -105,12 +91,9 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : kExitUsage;
   }
 
-  if (unsupported) {
-    std::cerr << "ncsim: error: " << unsupported_reason << '\n';
-    return kExitUsage;
-  }
   try {
     if (const auto status = run_commands.dispatch(std::cout, std::cerr)) return *status;
+    if (const auto status = golden_commands.dispatch(std::cout, std::cerr)) return *status;
     if (trace_cmd->parsed()) return ncsim::cli::run_trace(trace, std::cout, std::cerr);
     return ncsim::cli::run_check(check, std::cout, std::cerr);
   } catch (const std::bad_alloc&) {

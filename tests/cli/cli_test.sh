@@ -51,7 +51,7 @@ expect "no subcommand is a usage error" 2 '' '' --
 expect "an unknown option is a usage error" 2 '' '' -- check --frobnicate "$fixtures/clean.nc"
 expect "check needs a program" 2 '' '' -- check
 expect "trace needs a program" 2 '' '' -- trace
-expect "golden is not supported yet" 2 '' 'not supported' -- golden check
+expect "golden needs check or bless" 2 '' '' -- golden
 root=$(cd "$fixtures/../.." && pwd)
 expect "a file that is no TOML is a bad scenario, status 2" 2 '' 'clean\.nc:[0-9]+:[0-9]+: error: TOML syntax.*\[NC7001\]' -- \
   check "$fixtures/clean.nc" --scenario "$fixtures/clean.nc"

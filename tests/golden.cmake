@@ -1,0 +1,23 @@
+# Golden trajectories (docs/golden.md):
+#   golden.<name>        - one test per program folder programs/<name>/: `ncsim golden check` on it
+#                          (the run must match programs/<name>/<name>.golden); independent, so
+#                          `ctest -j` runs them in parallel. A new folder is found at the next
+#                          build (CONFIGURE_DEPENDS).
+#   programs_check       - `ncsim check` (syntax and semantics) passes on every program
+#   golden_cli_tests     - the golden command: bless, check, deviations, exit statuses
+file(GLOB ncsim_golden_programs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/programs/*/*.nc)
+foreach(nc IN LISTS ncsim_golden_programs)
+  get_filename_component(folder ${nc} DIRECTORY)
+  get_filename_component(name ${folder} NAME)
+  get_filename_component(stem ${nc} NAME_WE)
+  if(name STREQUAL stem)
+    add_test(NAME golden.${name} COMMAND ncsim golden check ${folder})
+    set_tests_properties(golden.${name} PROPERTIES LABELS golden TIMEOUT 300)
+  endif()
+endforeach()
+
+add_test(NAME programs_check
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/golden/check_programs.sh $<TARGET_FILE:ncsim>
+                 ${PROJECT_SOURCE_DIR}/programs)
+add_test(NAME golden_cli_tests
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/golden/golden_cli_test.sh $<TARGET_FILE:ncsim>)
