@@ -14,6 +14,7 @@
 #include <random>
 #include <vector>
 
+#include "bench/move200.hpp"
 #include "ipo/audit.hpp"
 #include "ipo/interpolator.hpp"
 #include "ipo/time.hpp"
@@ -46,34 +47,9 @@ planner::AxisLimits axis(double v, double a, double j) {
 }
 
 std::vector<Item> lines_arcs() {
-  std::mt19937_64 rng(200);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
   std::vector<Item> items;
-  planner::AxisVec p{};
-  for (int k = 0; k < 200; ++k) {
-    planner::Move m;
-    m.start = p;
-    m.end = p;
-    m.feed = 20.0 + 30.0 * u(rng);
-    m.slope = planner::SlopeType::trapez;
-    m.line = static_cast<std::uint32_t>(k + 1);
-    if (k % 3 == 2) {
-      const double r = 5.0 + 25.0 * u(rng);
-      const double phi = 2.0 * std::numbers::pi * u(rng);
-      const double sweep = (0.5 + 2.6 * u(rng)) * (u(rng) < 0.5 ? 1 : -1);
-      m.arc =
-          planner::Arc{0, 1, p[0] - r * std::cos(phi), p[1] - r * std::sin(phi), sweep < 0, false};
-      m.end[0] = m.arc->centre_1 + r * std::cos(phi + sweep);
-      m.end[1] = m.arc->centre_2 + r * std::sin(phi + sweep);
-    } else {
-      const double len = 5.0 + 45.0 * u(rng);
-      const double dir = 2.0 * std::numbers::pi * u(rng);
-      m.end[0] += len * std::cos(dir);
-      m.end[1] += len * std::sin(dir);
-    }
+  for (const planner::Move& m : bench::move200())
     items.emplace_back(m);
-    p = m.end;
-  }
   return items;
 }
 

@@ -153,6 +153,7 @@ void PathInterpolator::sample(double distance) noexcept {
   planner::PathState ps = planner::profile_at(prof_, cur_.v_entry, t_in_);
   ps.s = t_in_ >= dur_ ? length : std::clamp(ps.s, 0.0, length);
   distance += ps.s - s_prev_;
+  const double s_from = s_prev_;
   s_prev_ = ps.s;
   const planner::Move& prog = programmed(path.line_at(ps.s));
   c.activity = Activity::motion;
@@ -165,6 +166,7 @@ void PathInterpolator::sample(double distance) noexcept {
   c.interval_jerk_limited = interval_jerk_limited_;
   c.programmed = &prog;
   if (detail_ != Detail::axes) return;
+  if (sink_ && path.parts() > 1) report_inner_joints(s_from, ps.s);
   const planner::PathPoint p = path.at(ps.s);
   const double v = ps.v;
   const double a = ps.a;
@@ -214,6 +216,41 @@ void PathInterpolator::report_joint(const planner::PlannedSegment& next, double 
     jt.da[i] = v * v * (p_out.d2[i] - p_in.d2[i]);
   }
   sink_->on_joint(jt);
+}
+
+void PathInterpolator::report_inner_joints(double s_from, double s_to) noexcept {
+  // Knees inside a chain (planner/corner.hpp knee_carries_acceleration) step the axis velocity
+  // by v dx' and the acceleration by v^2 dx'' + a dx' with the path acceleration carried; the
+  // audit needs both for its finite-difference allowances. The joint's own instant is not
+  // resolved: v is bounded by the chain's velocity cap and a by its path limits, which only
+  // widens the allowances by what a knee can cause; the VELOJUMP check of v dx' at the cap is
+  // the planner's own chaining condition (docs/ipo.md "The audit").
+  const planner::Chain& path = cur_.segment.path;
+  const double v = cur_.segment.limits.v_max;
+  const double a = std::max(cur_.segment.limits.a_max, cur_.segment.limits.d_max);
+  for (std::size_t k = 0; k + 1 < path.parts(); ++k) {
+    const double e = path.part_end(k);
+    if (!(e > s_from && e <= s_to)) continue;
+    const planner::Segment& in = path.part(k);
+    const planner::PathPoint p_in = in.at(in.length());
+    const planner::PathPoint p_out = path.part(k + 1).at(0.0);
+    const planner::Move& prog_in = programmed(path.part_line(k));
+    const planner::Move& prog_out = programmed(path.part_line(k + 1));
+    Joint jt;
+    jt.t = static_cast<double>(cycle_.index + 1) * t_;
+    jt.line = prog_in.line;
+    jt.cls = planner::TransitionClass::c2;
+    jt.stop = planner::StopReason::none;
+    jt.jerk_limited = planner::jerk_limited(prog_in.slope) && planner::jerk_limited(prog_out.slope);
+    jt.v = v;
+    for (std::size_t i = 0; i < axes_.size(); ++i) {
+      const double dt = p_out.d1[i] - p_in.d1[i];
+      jt.dv[i] = v * dt;
+      jt.da[i] = v * v * std::abs(p_out.d2[i] - p_in.d2[i]) + a * std::abs(dt);
+      if (dt != 0.0) jt.cls = planner::TransitionClass::c0;
+    }
+    sink_->on_joint(jt);
+  }
 }
 
 Status PathInterpolator::step() noexcept {
@@ -269,6 +306,9 @@ Status PathInterpolator::step() noexcept {
     t_in_ = dur_;
     const double length = cur_.segment.path.length();
     distance += length - s_prev_;
+    // Knees between the last sample and the end of a chain are passed in this cycle too.
+    if (sink_ && detail_ == Detail::axes && cur_.segment.path.parts() > 1)
+      report_inner_joints(s_prev_, length);
     s_prev_ = length;
     if (cur_.segment.stop == planner::StopReason::exact_stop) {
       // G60 / G360: the rest of the cycle is not carried; window and settling time follow.

@@ -181,6 +181,8 @@ class PathInterpolator {
   void sample(double distance) noexcept;
   /// Reports the joint between the ending cur_ and the next segment (Detail::axes).
   void report_joint(const planner::PlannedSegment& next, double t_joint) noexcept;
+  /// Reports the inner joints of cur_'s chain passed in (s_from, s_to] (Detail::axes, sink set).
+  void report_inner_joints(double s_from, double s_to) noexcept;
   const planner::Move& programmed(std::uint32_t token) const noexcept {
     return ring_[token & ring_mask_];
   }

@@ -35,6 +35,10 @@ class Chain {
   std::size_t parts() const noexcept { return parts_.size(); }
   const Segment& part(std::size_t i) const noexcept { return parts_[i]; }
   double length() const noexcept { return ends_.empty() ? 0.0 : ends_.back(); }  ///< [mm]
+  /// Arc length at the end of part i, from the chain start [mm].
+  double part_end(std::size_t i) const noexcept { return ends_[i]; }
+  /// Source line of part i.
+  std::uint32_t part_line(std::size_t i) const noexcept { return lines_[i]; }
   std::uint8_t axis_count() const noexcept;
   AxisMask metric() const noexcept;
 

@@ -68,6 +68,25 @@ double velojump_velocity(const AxisVec& t_in, const AxisVec& t_out,
   return v;
 }
 
+bool knee_carries_acceleration(const AxisVec& t_in, const AxisVec& t_out,
+                               std::span<const AxisLimits> axes, double t_cycle) noexcept {
+  // Bound of the path acceleration at the joint: the axis k with the largest |x'_k| on either
+  // side takes x'_k a of it, so |a| <= A_k / |x'_k| (path limits, limits.hpp).
+  double a_axis = 0.0;
+  double t_max = 0.0;
+  for (std::size_t i = 0; i < axes.size() && i < t_in.size(); ++i) {
+    a_axis = std::max({a_axis, axes[i].a_max, axes[i].d_max});
+    t_max = std::max({t_max, std::abs(t_in[i]), std::abs(t_out[i])});
+  }
+  if (!(t_max > 0.0)) return false;
+  const double a_path = a_axis / t_max;
+  for (std::size_t i = 0; i < axes.size() && i < t_in.size(); ++i) {
+    const double step = std::abs(t_out[i] - t_in[i]);  // |da_i| per unit path acceleration
+    if (!(a_path * step <= kKneeBudget * axes[i].j_max * t_cycle)) return false;
+  }
+  return true;
+}
+
 double c1_velocity(const AxisVec& k_in, const AxisVec& k_out, std::span<const AxisLimits> axes,
                    double t_cycle, std::uint8_t* axis) noexcept {
   double v = kInf;
@@ -110,6 +129,11 @@ Link link_velocity(const PathPoint& in_end, const PathPoint& out_start, std::siz
           link.rule = LinkRule::transvelmin;
         }
       }
+      // A knee that limits nothing and whose acceleration step fits the C1 budget carries the
+      // path acceleration (docs/planner.md "Corners", dense CAM chords).
+      if (link.rule == LinkRule::segment_caps)
+        link.zero_acceleration =
+            !knee_carries_acceleration(in_end.d1, out_start.d1, used, channel.t_cycle);
       break;
     }
     case TransitionClass::c1: {

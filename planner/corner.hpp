@@ -11,7 +11,10 @@
 //     C0_i * min(A+_i, |A-_i|) * T; v_link is the largest v meeting every axis, at most
 //     min(v_in, v_out); #TRANSVELMIN v_min has priority (000 l.108: "if v_link < v_min then
 //     v_link = v_min"), itself at most min(v_in, v_out). A reversal gets what the formula allows
-//     (half the step of a 90 degree corner, since |dx'_i| = 2). Path acceleration is 0 there.
+//     (half the step of a 90 degree corner, since |dx'_i| = 2). Path acceleration is 0 there,
+//     except at a knee that limits nothing (v_link = min(v_in, v_out)) and whose acceleration
+//     step at any path acceleration fits half the C1 budget (knee_carries_acceleration: the
+//     0.1 mm chords of CAM output), which carries it.
 //   C1 (tangent continuous, curvature jumps), P-CHAN-00009 semantics: the acceleration step
 //     v^2 |x''_out,i - x''_in,i| of every axis stays within its jerk budget j_i * T (one cycle
 //     at the axis jerk limit), for jerk-limited slopes when ChannelLimits::limit_c1_by_jerk.
@@ -70,6 +73,18 @@ TransitionClass classify(const PathPoint& in_end, const PathPoint& out_start,
 double velojump_velocity(const AxisVec& t_in, const AxisVec& t_out,
                          std::span<const AxisLimits> axes, double t_cycle,
                          std::uint8_t* axis = nullptr) noexcept;
+
+/// Share of the axis jerk budget j_i T that the acceleration step of a knee carrying the path
+/// acceleration may take (the rest stays for the curvature steps of curved neighbours).
+inline constexpr double kKneeBudget = 0.5;
+
+/// Whether a C0 knee may carry the path acceleration (docs/planner.md "Corners", decision for
+/// dense CAM chords): for every axis the acceleration step |a| |t_out,i - t_in,i| at the
+/// largest path acceleration the axes allow (|a| <= max_i max(A+_i, A-_i) / max_k |t_k|: the
+/// axis with the largest tangent component takes that share of a) stays within
+/// kKneeBudget * j_i * T.
+bool knee_carries_acceleration(const AxisVec& t_in, const AxisVec& t_out,
+                               std::span<const AxisLimits> axes, double t_cycle) noexcept;
 
 /// C1 bound alone: the largest v with v^2 |dk_i| <= j_i T for all i (+inf if none).
 double c1_velocity(const AxisVec& k_in, const AxisVec& k_out, std::span<const AxisLimits> axes,

@@ -148,3 +148,28 @@ TEST_CASE("#TRANSVELMIN does not act at tangent transitions") {
   CHECK(link_velocity(tangent(0), arc_start, 3, 0b111, ax, ChannelLimits{}, 100, 100, 90.0, true)
             .v_link == doctest::Approx(std::sqrt(1e5 * 1e-3 / 0.1)));
 }
+
+TEST_CASE("a knee that limits nothing and fits the acceleration budget carries the acceleration") {
+  // A = 10000 mm/s^2, J = 1e6 mm/s^3, T = 1 ms: budget 0.5 J T = 500 mm/s^2; the largest
+  // path acceleration on the X-dominated tangent is 10000 / 1, so |dx'_i| <= 0.05 carries.
+  const auto ax = limits(10000.0);
+  const Link small = link_velocity(tangent(0), tangent(2.0), 3, 0b111, ax, ChannelLimits{}, 100,
+                                   100, std::nullopt, true);
+  CHECK(small.cls == TransitionClass::c0);
+  CHECK(small.rule == LinkRule::segment_caps);
+  CHECK(small.v_link == doctest::Approx(100.0));
+  CHECK_FALSE(small.zero_acceleration);
+  // 4 degrees: |dy'| = 0.0698 > 0.05, the velocity is not limited but the acceleration step
+  // would exceed the budget: a = 0 there.
+  const Link wider = link_velocity(tangent(0), tangent(4.0), 3, 0b111, ax, ChannelLimits{}, 100,
+                                   100, std::nullopt, true);
+  CHECK(wider.rule == LinkRule::segment_caps);
+  CHECK(wider.zero_acceleration);
+  // The same 2 degree knee at a feed VELOJUMP limits (10 / 0.0349 = 286 mm/s): a = 0.
+  const Link fast = link_velocity(tangent(0), tangent(2.0), 3, 0b111, ax, ChannelLimits{}, 500, 500,
+                                  std::nullopt, true);
+  CHECK(fast.rule == LinkRule::velojump);
+  CHECK(fast.zero_acceleration);
+  CHECK(knee_carries_acceleration(tangent(0).d1, tangent(2.0).d1, ax, 0.001));
+  CHECK_FALSE(knee_carries_acceleration(tangent(0).d1, tangent(2.0).d1, ax, 0.0001));
+}

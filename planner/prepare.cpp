@@ -72,8 +72,9 @@ void Preparer::output(PreparedSegment ps, std::vector<PreparedSegment>& out) {
     PreparedSegment& h = *held_;
     const double cap = h.limits.v_max;
     const bool same_cap = std::abs(ps.limits.v_max - cap) <= 1e-9 * std::max(cap, 1.0);
-    const bool free_joint = h.stop == StopReason::none && !h.a_zero_at_end &&
-                            h.joint == TransitionClass::c2 && h.v_end >= cap * (1.0 - 1e-12);
+    // C2 joints and knees that carry the acceleration (corner.hpp) chain alike.
+    const bool free_joint =
+        h.stop == StopReason::none && !h.a_zero_at_end && h.v_end >= cap * (1.0 - 1e-12);
     if (same_cap && free_joint && h.path.parts() + ps.path.parts() <= Chain::kMaxParts) {
       h.path.append(ps.path);
       h.limits.a_max = std::min(h.limits.a_max, ps.limits.a_max);
@@ -92,9 +93,9 @@ void Preparer::output(PreparedSegment ps, std::vector<PreparedSegment>& out) {
     held_.reset();
   }
   // Hold only what a next segment could join; everything else leaves at once.
-  const bool open =
-      ps.stop == StopReason::none && !ps.a_zero_at_end && ps.joint == TransitionClass::c2 &&
-      ps.v_end >= ps.limits.v_max * (1.0 - 1e-12) && ps.path.parts() < Chain::kMaxParts;
+  const bool open = ps.stop == StopReason::none && !ps.a_zero_at_end &&
+                    ps.v_end >= ps.limits.v_max * (1.0 - 1e-12) &&
+                    ps.path.parts() < Chain::kMaxParts;
   if (open)
     held_ = std::move(ps);
   else

@@ -8,8 +8,9 @@
 // Inputs: Moves in program order (push), then finish() at the end of the stream (#FLUSH, M30).
 // Outputs: PreparedSegments appended to the caller's vector, in path order. A segment is only
 // emitted once its successor is known (the joint needs both), so the stage holds one Move.
-// Chains: consecutive segments joined C2 whose joint limits nothing and whose velocity caps are
-// equal are emitted as one Chain (at most Chain::kMaxParts), with the smallest a, d, j of its
+// Chains: consecutive segments joined C2 (or at a knee that carries the acceleration,
+// corner.hpp) whose joint limits nothing and whose velocity caps are equal are emitted as one
+// Chain (at most Chain::kMaxParts), with the smallest a, d, j of its
 // parts, so the look-ahead carries the acceleration through those joints.
 // Invariants: consecutive emitted segments join (end of one == start of the next); v_end of a
 // segment is its joint velocity cap (0 at a stop); memory is one pending Move and one held

@@ -183,3 +183,31 @@ TEST_CASE("property: random polylines give joined segments with bounded joint ve
     CHECK(emitted > 150);
   }
 }
+
+TEST_CASE("0.1 mm chords of a gentle curve leave as chains: the knees carry the acceleration") {
+  const auto ax = limits();
+  Preparer prep(ax, ChannelLimits{});
+  std::vector<PreparedSegment> out;
+  AxisVec p = vec(0, 0);
+  double dir = 0.0;
+  for (int k = 0; k < 200; ++k) {
+    dir += 0.1 / 20.0;  // radius of curvature 20 mm
+    const AxisVec q = vec(p[0] + 0.1 * std::cos(dir), p[1] + 0.1 * std::sin(dir));
+    prep.push(line(p, q, 100.0, static_cast<std::uint32_t>(k + 1)), out);
+    p = q;
+  }
+  prep.finish(out);
+  REQUIRE(out.size() == 4);  // 200 chords in chains of at most Chain::kMaxParts
+  std::size_t parts = 0;
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    parts += out[k].path.parts();
+    if (k + 1 < out.size()) {
+      CHECK(out[k].joint == TransitionClass::c0);
+      CHECK(out[k].v_end == doctest::Approx(100.0));
+    }
+  }
+  CHECK(parts == 200);
+  CHECK(out[0].path.parts() == Chain::kMaxParts);
+  CHECK(out[0].path.line_at(0.05) == 1);
+  CHECK(out[0].path.line_at(0.15) == 2);
+}
