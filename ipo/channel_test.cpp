@@ -259,3 +259,40 @@ TEST_CASE(
     }
   }
 }
+
+TEST_CASE(
+    "the interpolator's exact-stop hook: with hold_exact_stop a G60 stop waits until "
+    "release_exact_stop(), whatever the settling time; without it the settling time") {
+  using ipo::test::line;
+  using ipo::test::vec;
+  const auto make = [](bool hold) {
+    ipo::Config cfg;
+    cfg.axes.assign(3, planner::test::axis(100.0, 1000.0, 1e5));
+    cfg.exact_stop.assign(3, ipo::ExactStop{0.01, 0.02});  // 20 ms settling
+    cfg.channel.t_cycle = 0.001;
+    cfg.hold_exact_stop = hold;
+    return cfg;
+  };
+  planner::Move first = line(vec(0, 0), vec(10, 0), 50.0, 1);
+  first.exact_stop = true;
+  const std::vector<ipo::Item> items = {first, line(vec(10, 0), vec(20, 0), 50.0, 2)};
+  ipo::test::ListSource free_src(items);
+  ipo::PathInterpolator free_ipo(make(false), free_src);
+  std::size_t settle = 0;
+  while (free_ipo.step() == ipo::Status::running)
+    settle += free_ipo.cycle().activity == ipo::Activity::exact_stop ? 1 : 0;
+  CHECK(settle == 20);
+
+  ipo::test::ListSource held_src(items);
+  ipo::PathInterpolator held(make(true), held_src);
+  std::size_t waits = 0;
+  while (held.step() == ipo::Status::running) {
+    if (held.cycle().activity != ipo::Activity::exact_stop) continue;
+    CHECK(held.holding_exact_stop());
+    CHECK(held.cycle().line == 1);
+    if (++waits == 37) held.release_exact_stop();  // the channel decides when
+  }
+  CHECK(waits == 37);
+  CHECK_FALSE(held.holding_exact_stop());
+  CHECK(held.cycle().x[0] == 20.0);  // the program ran to its end after the release
+}
