@@ -13,11 +13,13 @@
 #include <variant>
 
 #include "cli/commands.hpp"
+#include "cli/run_progress.hpp"
 #include "core/diagnostic.hpp"
 #include "core/source_file.hpp"
 #include "grammar/check.hpp"
 #include "interp/interpreter.hpp"
 #include "ipo/audit.hpp"
+#include "ipo/channel.hpp"
 #include "ipo/interpolator.hpp"
 #include "ipo/program_source.hpp"
 #include "ipo/time.hpp"
@@ -196,21 +198,19 @@ class Tee final : public ipo::Sink {
   ipo::Sink* b_;
 };
 
-// Runs the program once with the audit sink (Detail::axes); returns the verdict, or the
-// program error text.
-std::variant<ipo::Verdict, std::string> audit_pass(const Loaded& in) {
-  interp::Interpreter interp(in.file, in.machine, in.interp);
-  ipo::ProgramSource src(interp, in.machine);
-  ipo::Config cfg = ipo::machine_config(in.machine, in.t_cycle);
-  ipo::Audit audit(cfg.axes, cfg.channel.t_cycle, cfg.start);
-  ipo::PathInterpolator ipo(std::move(cfg), src, &audit);
-  ipo::Status s;
-  while ((s = ipo.step()) == ipo::Status::running) {
+// The text of a run's end when it failed: the run-time error (file:line:col, the time, the id)
+// or the program error that ended the source.
+std::string failure_text(const Loaded& in, const interp::Interpreter& interp,
+                         const ipo::ProgramSource& src, const ipo::Channel& ch) {
+  if (const auto& e = ch.run_time_error()) {
+    core::Diagnostic d;
+    d.file = in.file.name();
+    d.loc = {e->line, 1};
+    d.id = e->id;
+    d.message = "run-time error at t=" + num(e->t) + " s: " + e->message;
+    return core::format(d, in.file);
   }
-  if (s == ipo::Status::error || src.error() != nullptr) {
-    return diagnostic_text(in, interp, src, ipo.message());
-  }
-  return audit.verdict();
+  return diagnostic_text(in, interp, src, ch.message());
 }
 
 void json_string(std::ostream& os, const std::string& s) {
@@ -273,12 +273,27 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
     }
     first_block = false;
   };
-  const ipo::TimeResult r =
-      ipo::machining_time(ipo::machine_config(in.machine, in.t_cycle), src, on_block);
-  // A program error ends the source: the blocks before it ran, then the channel stopped.
-  const bool failed = r.status == ipo::Status::error || src.error() != nullptr;
+  // The channel loop of `run` with the sinks off (the audit sink with --audit, in the same
+  // pass): the same cycles, so the total equals run's last t to the cycle.
+  ipo::ChannelConfig cfg = ipo::channel_config(in.machine, in.t_cycle);
+  std::unique_ptr<ipo::Audit> audit;
+  if (options.audit)
+    audit = std::make_unique<ipo::Audit>(cfg.path.axes, cfg.path.channel.t_cycle, cfg.path.start);
+  ipo::Channel channel(std::move(cfg), src, audit.get());
+  ipo::TimeCounter counter(channel.t_cycle(), on_block);
+  Progress progress(err);
+  ipo::Status status;
+  while ((status = channel.step()) == ipo::Status::running) {
+    counter.add(channel.cycle());
+    progress.update(channel.cycle().t, channel.cycle().line);
+  }
+  progress.finish();
+  const ipo::TimeResult r = counter.finish();
+  // A program error ends the source: the blocks before it ran, then the channel stopped. A
+  // run-time error stops the channel in the cycle it is raised.
+  const bool failed = status == ipo::Status::error || src.error() != nullptr;
   std::string error_text;
-  if (failed) error_text = diagnostic_text(in, interp, src, r.message);
+  if (failed) error_text = failure_text(in, interp, src, channel);
 
   if (options.json) {
     if (options.blocks) out << ']';
@@ -302,13 +317,8 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
     err << error_text;
     return kExitProgramErrors;
   }
-  if (options.audit) {
-    auto verdict = audit_pass(in);
-    if (const auto* text = std::get_if<std::string>(&verdict)) {
-      err << *text;
-      return kExitProgramErrors;
-    }
-    const ipo::Verdict& v = std::get<ipo::Verdict>(verdict);
+  if (audit) {
+    const ipo::Verdict& v = audit->verdict();
     print_audit(v, axis_names(in.machine), options.json ? err : out);
     if (!v.ok()) return kExitAudit;
   }
@@ -345,6 +355,10 @@ class CsvSink final : public ipo::Sink {
       append_num(buf_, c.path.v);
       buf_ += ',';
       append_num(buf_, c.feed);
+      for (std::size_t i = 0; i < axes_; ++i) {
+        buf_ += ',';
+        append_num(buf_, axes_state_ != nullptr ? axes_state_->following_error[i] : 0.0);
+      }
     }
     buf_ += '\n';
     ++rows_;
@@ -370,6 +384,8 @@ class CsvSink final : public ipo::Sink {
     errno_ = e;
   }
   std::uint64_t rows() const { return rows_; }
+  /// The axes whose following error --detail writes (the channel's, read at each on_cycle).
+  void set_axes(const ipo::AxesState* state) { axes_state_ = state; }
 
  private:
   static constexpr std::size_t kFlushAt = 1 << 20;
@@ -377,6 +393,7 @@ class CsvSink final : public ipo::Sink {
   std::size_t axes_;
   std::uint64_t every_;
   bool detail_;
+  const ipo::AxesState* axes_state_ = nullptr;
   std::string buf_;
   bool failed_ = false;
   int errno_ = 0;
@@ -417,12 +434,12 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
 
   interp::Interpreter interp(in.file, in.machine, in.interp);
   ipo::ProgramSource src(interp, in.machine);
-  ipo::Config cfg = ipo::machine_config(in.machine, in.t_cycle);
+  ipo::ChannelConfig cfg = ipo::channel_config(in.machine, in.t_cycle);
   const std::vector<std::string> names = axis_names(in.machine);
   CsvSink csv(f, names.size(), options.every, options.detail);
   std::unique_ptr<ipo::Audit> audit;
   if (options.audit) {
-    audit = std::make_unique<ipo::Audit>(cfg.axes, cfg.channel.t_cycle, cfg.start);
+    audit = std::make_unique<ipo::Audit>(cfg.path.axes, cfg.path.channel.t_cycle, cfg.path.start);
   }
   Tee tee(&csv, audit.get());
 
@@ -435,17 +452,23 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
     for (const std::string& n : names)
       head += ',' + n + ".v," + n + ".a";
     head += ",v_path,feed";
+    for (const std::string& n : names)
+      head += ',' + n + ".ferr";
   }
   head += '\n';
   csv.text(head);
 
-  ipo::PathInterpolator ipo(std::move(cfg), src, &tee);
+  ipo::Channel channel(std::move(cfg), src, &tee);
+  csv.set_axes(&channel.axes());
+  Progress progress(err);
   ipo::Status s;
-  while ((s = ipo.step()) == ipo::Status::running && !csv.failed()) {
+  while ((s = channel.step()) == ipo::Status::running && !csv.failed()) {
+    progress.update(channel.cycle().t, channel.cycle().line);
   }
+  progress.finish();
   std::string error_text;
   if (s == ipo::Status::error || (s == ipo::Status::finished && src.error() != nullptr)) {
-    error_text = diagnostic_text(in, interp, src, ipo.message());
+    error_text = failure_text(in, interp, src, channel);
     csv.text("# error: " + first_line(error_text) + "\n");
   }
   csv.flush();
@@ -503,8 +526,10 @@ RunCommands::RunCommands(CLI::App& app) {
   run_cmd_->add_option("--cycle-us", run_.cycle_us, "Interpolation cycle [us] (default 1000)")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
   run_cmd_->add_flag("--audit", run_.audit, "Check every limit (verdict on stderr); exit 3");
-  run_cmd_->add_flag("--detail", run_.detail,
-                     "Add each axis's v and a, the path velocity and the programmed feed");
+  run_cmd_->add_flag(
+      "--detail", run_.detail,
+      "Add each axis's v and a, the path velocity, the programmed feed and each axis's "
+      "following error");
 }
 
 std::optional<int> RunCommands::dispatch(std::ostream& out, std::ostream& err) const {

@@ -1,14 +1,17 @@
 #pragma once
-// cli/run_commands: `ncsim time` and `ncsim run` on the path interpolator (design.md §5).
+// cli/run_commands: `ncsim time` and `ncsim run` on the channel loop ipo::Channel (design.md §5).
 //
-// Purpose: the first end-to-end pipeline program -> interpreter -> planner -> interpolator.
+// Purpose: the end-to-end pipeline program -> interpreter -> planner -> interpolator -> axes.
 // Inputs: the program, its machine (--machine, the program folder's `machine` file, else the
 // bundled default), the options below. Outputs: `time`: total and per-block times on `out`;
 // `run`: the CSV trajectory (stdout or a file written to `<file>.tmp` and renamed when
 // complete). Exit statuses: 0 ok, 1 program errors (file:line:col; `not supported: ...` is
-// NC6001), 2 usage, configuration or write errors, 3 audit violations (--audit).
+// NC6001; run-time errors: file:line:col, the time and the id), 2 usage, configuration or
+// write errors, 3 audit violations (--audit). A run-time error keeps the CSV up to the stop
+// with a closing `# error: ...` comment.
 // Invariants: memory does not grow with the program (blocks and rows are streamed); reruns are
-// byte-identical (no wall clock, shortest round-trip number formatting).
+// byte-identical (shortest round-trip number formatting; the wall clock only decides whether
+// the progress bar is shown on a terminal, cli/run_progress.hpp).
 
 #include <cstdint>
 #include <iosfwd>
@@ -29,7 +32,7 @@ struct TimeOptions {
   ProgramOptions program;
   bool blocks = false;                    ///< --blocks: one record per executed block
   bool json = false;                      ///< --json
-  bool audit = false;                     ///< --audit: a second pass with the audit sink
+  bool audit = false;                     ///< --audit: the audit sink in the same pass
   std::optional<std::uint64_t> cycle_us;  ///< --cycle-us: interpolation cycle [us]
 };
 
@@ -39,7 +42,8 @@ struct RunOptions {
   std::uint64_t every = 1;   ///< --every N: one row per N cycles
   std::optional<std::uint64_t> cycle_us;
   bool audit = false;   ///< --audit: the verdict on stderr, exit 3 on a violation
-  bool detail = false;  ///< --detail: per-axis v and a, path velocity, programmed feed
+  bool detail = false;  ///< --detail: per-axis v and a, path velocity, programmed feed, per-axis
+                        ///< following error (`<axis>.ferr`, mm | deg)
 };
 
 /// `ncsim time`.

@@ -59,6 +59,7 @@ PathInterpolator::PathInterpolator(Config config, Source& source, Sink* sink)
                                   ": settling time P-AXIS-00532 must be >= 0, got " +
                                   std::to_string(e.settle_time));
   }
+  hold_exact_stop_ = config.hold_exact_stop;
   ring_.resize(ring_size(config.window));
   ring_mask_ = ring_.size() - 1;
   ready_.reserve(16);
@@ -259,9 +260,9 @@ Status PathInterpolator::step() noexcept {
   Cycle& c = cycle_;
   const double t_start = static_cast<double>(c.index) * t_;
   for (int zero_waits = 0;; ++zero_waits) {
-    if (wait_left_ > 0 || zero_waits >= kMaxZeroWaits) {
-      const bool waiting = wait_left_ > 0;
-      if (waiting) --wait_left_;
+    if (wait_left_ > 0 || held_ || zero_waits >= kMaxZeroWaits) {
+      const bool waiting = wait_left_ > 0 || held_;
+      if (wait_left_ > 0) --wait_left_;
       ++c.index;
       c.t = static_cast<double>(c.index) * t_;
       c.activity = waiting ? wait_kind_ : Activity::starved;
@@ -322,7 +323,8 @@ Status PathInterpolator::step() noexcept {
         // error model yet; docs/ipo.md): only the settling time P-AXIS-00532 is waited for.
         if (moved) settle = std::max(settle, exact_stop_[i].settle_time);
       }
-      wait_left_ = cycles_for(settle);
+      wait_left_ = hold_exact_stop_ ? 0 : cycles_for(settle);
+      held_ = hold_exact_stop_;  // the channel releases it (window on actual positions)
       wait_kind_ = Activity::exact_stop;
       wait_line_ = c.line;
       ++c.index;

@@ -88,6 +88,10 @@ struct Config {
   std::size_t window = 120;               ///< look-ahead entries (planner::window_size)
   AxisVec start{};                        ///< axis positions before the first move [mm | deg]
   Detail detail = Detail::axes;
+  /// Channel hook (ipo/channel.hpp): true makes a G60 / G360 stop wait, in exact_stop
+  /// cycles, until release_exact_stop() instead of for the settling time (the channel tests
+  /// the window P-AXIS-00236 on the axes' actual positions).
+  bool hold_exact_stop = false;
 };
 
 /// What the channel did in a cycle.
@@ -165,6 +169,10 @@ class PathInterpolator {
   std::size_t ring_capacity() const noexcept { return ring_.size(); }
   /// Entries in the look-ahead window now.
   std::size_t window_fill() const noexcept { return window_.size(); }
+  /// Channel hook (Config::hold_exact_stop): a G60 / G360 stop is waiting for release.
+  bool holding_exact_stop() const noexcept { return held_; }
+  /// Channel hook: ends the exact-stop wait; the next step() goes on with the path.
+  void release_exact_stop() noexcept { held_ = false; }
 
  private:
   struct PendingDwell {
@@ -220,6 +228,8 @@ class PathInterpolator {
   double s_prev_ = 0.0;
   bool interval_jerk_limited_ = true;  ///< every segment visited in this cycle is jerk-limited
   std::uint64_t wait_left_ = 0;        ///< dwell / settling cycles still to do
+  bool hold_exact_stop_ = false;       ///< Config::hold_exact_stop
+  bool held_ = false;                  ///< an exact stop waits for release_exact_stop()
   Activity wait_kind_ = Activity::dwell;
   std::uint32_t wait_line_ = 0;
   Cycle cycle_;

@@ -38,59 +38,74 @@ TimeSplit split_of(const Counts& n, double t) {
 
 }  // namespace
 
+TimeCounter::TimeCounter(double t_cycle, std::function<void(const BlockTime&)> on_block)
+    : t_(t_cycle), on_block_(std::move(on_block)) {}
+
+void TimeCounter::add(const Cycle& c) {
+  ++r_.cycles;
+  r_.distance += c.distance;
+  count(total_, c);
+  if (!on_block_) return;
+  if (open_ && c.line != block_.line) {
+    block_.time = static_cast<double>(block_cycles_) * t_;
+    block_.split = split_of(block_counts_, t_);
+    on_block_(block_);
+    open_ = false;
+  }
+  if (!open_) {
+    block_ = BlockTime{};
+    block_.line = c.line;
+    block_counts_ = {};
+    block_cycles_ = 0;
+    open_ = true;
+  }
+  ++block_cycles_;
+  block_.distance += c.distance;
+  if (c.activity == Activity::motion) {
+    block_.feed_programmed = std::max(block_.feed_programmed, c.feed);
+    block_.feed_reached = std::max(block_.feed_reached, c.path.v);
+  }
+  count(block_counts_, c);
+}
+
+TimeResult TimeCounter::finish() {
+  if (open_) {
+    block_.time = static_cast<double>(block_cycles_) * t_;
+    block_.split = split_of(block_counts_, t_);
+    on_block_(block_);
+    open_ = false;
+  }
+  r_.total = static_cast<double>(r_.cycles) * t_;
+  r_.split = split_of(total_, t_);
+  return r_;
+}
+
 TimeResult machining_time(Config config, Source& source,
                           const std::function<void(const BlockTime&)>& on_block,
                           std::uint64_t max_cycles) {
   config.detail = Detail::path;
   PathInterpolator ipo(std::move(config), source, nullptr);
-  const double t = ipo.t_cycle();
-  TimeResult r;
-  Counts total{};
-  BlockTime block;
-  Counts block_counts{};
-  std::uint64_t block_cycles = 0;
-  bool open = false;
-  auto close = [&] {
-    block.time = static_cast<double>(block_cycles) * t;
-    block.split = split_of(block_counts, t);
-    on_block(block);
-    open = false;
-  };
-  for (;;) {
-    if (max_cycles != 0 && r.cycles >= max_cycles) {
-      r.stopped = true;
+  TimeCounter counter(ipo.t_cycle(), on_block);
+  Status status = Status::finished;
+  std::string message;
+  bool stopped = false;
+  for (std::uint64_t n = 0;; ++n) {
+    if (max_cycles != 0 && n >= max_cycles) {
+      stopped = true;
       break;
     }
     const Status st = ipo.step();
     if (st != Status::running) {
-      r.status = st;
-      if (st == Status::error) r.message = ipo.message();
+      status = st;
+      if (st == Status::error) message = ipo.message();
       break;
     }
-    const Cycle& c = ipo.cycle();
-    ++r.cycles;
-    r.distance += c.distance;
-    count(total, c);
-    if (!on_block) continue;
-    if (open && c.line != block.line) close();
-    if (!open) {
-      block = BlockTime{};
-      block.line = c.line;
-      block_counts = {};
-      block_cycles = 0;
-      open = true;
-    }
-    ++block_cycles;
-    block.distance += c.distance;
-    if (c.activity == Activity::motion) {
-      block.feed_programmed = std::max(block.feed_programmed, c.feed);
-      block.feed_reached = std::max(block.feed_reached, c.path.v);
-    }
-    count(block_counts, c);
+    counter.add(ipo.cycle());
   }
-  if (open) close();
-  r.total = static_cast<double>(r.cycles) * t;
-  r.split = split_of(total, t);
+  TimeResult r = counter.finish();
+  r.status = status;
+  r.message = std::move(message);
+  r.stopped = stopped;
   return r;
 }
 

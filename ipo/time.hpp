@@ -12,6 +12,7 @@
 // a loop, is a new record): memory stays bounded whatever the program length.
 // Invariants: total == cycles * T == rapid + feed + dwell + exact_stop + starved.
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -47,6 +48,29 @@ struct TimeResult {
   double total = 0.0;     ///< cycles * T [s]
   double distance = 0.0;  ///< path length [mm]
   TimeSplit split;
+};
+
+/// The counting of machining_time, usable beside any loop that produces cycles (the channel
+/// loop of `ncsim time` and `ncsim run`): add() every cycle, then finish().
+class TimeCounter {
+ public:
+  explicit TimeCounter(double t_cycle, std::function<void(const BlockTime&)> on_block = {});
+  /// Counts one cycle (its T goes to the line it reports).
+  void add(const Cycle& c);
+  /// Closes the open block record; cycles, total, distance and split of what was added
+  /// (status, message and stopped are the caller's).
+  TimeResult finish();
+
+ private:
+  using Counts = std::array<std::uint64_t, 5>;  // rapid, feed, dwell, exact stop, starved
+  double t_ = 0.0;
+  std::function<void(const BlockTime&)> on_block_;
+  TimeResult r_;
+  Counts total_{};
+  BlockTime block_;
+  Counts block_counts_{};
+  std::uint64_t block_cycles_ = 0;
+  bool open_ = false;
 };
 
 /// Runs the program through the interpolator with the sinks off. `max_cycles` (0: none) stops

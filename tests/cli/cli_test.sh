@@ -187,10 +187,10 @@ expect "an endless loop without motion is an error" 1 '' 'stuck\.nc:3:1: error: 
 # A = 3000 mm/s^2 (STEP, jerk A / T): 10 + 1/30 + 0.001 s, rounded up to the 1 ms cycle:
 # 10035 cycles.
 expect "time of a long line at F is length / F + F / A + T, to the cycle" 0 \
-  'long_line\.nc: 10\.035 s \(10035 cycles of 1 ms\)' '' -- time "$fixtures/long_line.nc"
+  'long_line\.nc: 7\.035 s \(7035 cycles of 1 ms\)' '' -- time "$fixtures/long_line.nc"
 expect "time --blocks gives the line's time, distance and feeds" 0 \
-  '^3 10\.035 1000 6000 6000 0 10\.035 0 0 0$' '' -- time --blocks "$fixtures/long_line.nc"
-expect "time --json" 0 '"total_s":10\.035' '' -- time --json --blocks "$fixtures/long_line.nc"
+  '^4 7\.035 700 6000 6000 0 7\.035 0 0 0$' '' -- time --blocks "$fixtures/long_line.nc"
+expect "time --json" 0 '"total_s":7\.035' '' -- time --json --blocks "$fixtures/long_line.nc"
 expect "time --audit passes on the long line" 0 '^audit: ok$' '' -- \
   time --audit "$fixtures/long_line.nc"
 expect "run --audit passes on the long line" 0 '' '^audit: ok$' -- \
@@ -217,7 +217,7 @@ expect "run --every 0 is a usage error" 2 '' '' -- run --every 0 "$fixtures/long
 checks=$((checks + 1))
 rows=$(grep -cv '^#' "$work/a.csv")
 last_t=$(tail -1 "$work/a.csv" | cut -d, -f1)
-if [[ $rows -eq 10036 && $last_t == "10.035" ]] && cmp -s "$work/a.csv" "$work/b.csv" &&
+if [[ $rows -eq 7036 && $last_t == "7.035" ]] && cmp -s "$work/a.csv" "$work/b.csv" &&
   cmp -s "$work/a.csv" "$work/c.csv" && [[ $(sed -n 6p "$work/a.csv") == "t,line,X,Y,Z" ]]; then
   echo "ok   run: one row per cycle (header + time / T), last t equals time, byte-identical reruns"
 else
@@ -236,12 +236,42 @@ else
 fi
 "$ncsim" run --every 10 --detail -o "$work/d.csv" "$fixtures/long_line.nc" 2>/dev/null
 checks=$((checks + 1))
-if [[ $(grep -cv '^#' "$work/d.csv") -eq 1004 ]] &&
-  [[ $(sed -n 6p "$work/d.csv") == "t,line,X,Y,Z,X.v,X.a,Y.v,Y.a,Z.v,Z.a,v_path,feed" ]]; then
+if [[ $(grep -cv '^#' "$work/d.csv") -eq 704 ]] &&
+  [[ $(sed -n 6p "$work/d.csv") == "t,line,X,Y,Z,X.v,X.a,Y.v,Y.a,Z.v,Z.a,v_path,feed,X.ferr,Y.ferr,Z.ferr" ]]; then
   echo "ok   run --every 10 --detail: every 10th cycle, detail columns"
 else
   failures=$((failures + 1)); echo "FAIL run --every 10 --detail"
   head -8 "$work/d.csv"
+fi
+
+# The channel loop (issue 12): run-time errors stop the channel at file:line:col with the time
+# and the id, exit 1; the CSV keeps the trajectory up to the stop and names the error.
+expect "a soft limit reached at run time stops the channel: position, time, id" 1 \
+  'soft_limit\.nc: stopped after 8\.017 s' \
+  'soft_limit\.nc:4:1: error: run-time error at t=8\.018 s: axis X: command position .* above the maximum soft position limit 800 mm \(P-AXIS-00178\) \[NC5502\]' -- \
+  time "$fixtures/soft_limit.nc"
+status=0
+"$ncsim" run -o "$work/soft.csv" "$fixtures/soft_limit.nc" 2>/dev/null || status=$?
+checks=$((checks + 1))
+if [[ $status -eq 1 && -f $work/soft.csv ]] &&
+  [[ $(tail -1 "$work/soft.csv") == "# error: "*"soft_limit.nc:4:1: error: run-time error at t=8.018 s"*"[NC5502]" ]] &&
+  [[ $(tail -2 "$work/soft.csv" | head -1 | cut -d, -f1) == "8.017" ]] &&
+  [[ ! -e $work/soft.csv.tmp ]]; then
+  echo "ok   run stopped by a run-time error: rows up to the stop, closing # error comment"
+else
+  failures=$((failures + 1)); echo "FAIL run stopped by a run-time error"
+  tail -3 "$work/soft.csv"
+fi
+# G60 on actual positions: time and run agree to the cycle, exact-stop waiting included.
+total=$("$ncsim" time "$fixtures/exact_stop.nc" 2>/dev/null | sed -E 's/^.*: ([0-9.e+-]+) s \(.*$/\1/')
+"$ncsim" run --detail -o "$work/es.csv" "$fixtures/exact_stop.nc" 2>/dev/null
+checks=$((checks + 1))
+if [[ -n $total && $(tail -1 "$work/es.csv" | cut -d, -f1) == "$total" ]] &&
+  "$ncsim" time --blocks "$fixtures/exact_stop.nc" | grep -Eq '^3 [0-9.]+ 100 6000 6000 0 [0-9.]+ 0 0\.0[0-9]+ 0$'; then
+  echo "ok   G60 waits for the actual position (exact stop time > 0); time equals run ($total s)"
+else
+  failures=$((failures + 1)); echo "FAIL G60 exact stop: time $total, run $(tail -1 "$work/es.csv" | cut -d, -f1)"
+  "$ncsim" time --blocks "$fixtures/exact_stop.nc"
 fi
 
 echo "cli: $((checks - failures)) passed, $failures failed"

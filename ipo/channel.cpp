@@ -1,0 +1,206 @@
+// ipo/channel: the channel loop (see the header and docs/ipo.md "The channel loop").
+
+#include "ipo/channel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+#include <utility>
+
+namespace ncsim::ipo {
+
+namespace {
+
+Config prepared(Config config) {
+  config.detail = Detail::axes;   // the axes need the point every cycle
+  config.hold_exact_stop = true;  // the channel ends G60 / G360 waits on actual positions
+  return config;
+}
+
+std::string text(const char* format, double a, double b) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, format, a, b);
+  return buf;
+}
+
+}  // namespace
+
+Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
+    : relay_(sink),
+      ipo_(prepared(config.path), source, &relay_),
+      sink_(sink),
+      exact_stop_wait_max_(config.exact_stop_wait_max) {
+  if (config.axes.size() != ipo_.axis_count())
+    throw std::invalid_argument("ipo::Channel: " + std::to_string(config.axes.size()) +
+                                " channel axes for " + std::to_string(ipo_.axis_count()) +
+                                " interpolated axes");
+  if (!(exact_stop_wait_max_ > 0.0))
+    throw std::invalid_argument("ipo::Channel: exact_stop_wait_max must be > 0 s, got " +
+                                std::to_string(exact_stop_wait_max_));
+  const double t = ipo_.t_cycle();
+  // Same rounding as every wait (docs/ipo.md): the limit in whole cycles, never shorter.
+  wait_cycles_max_ = static_cast<std::uint64_t>(std::ceil(exact_stop_wait_max_ / t - 1e-9));
+  axes_.reserve(config.axes.size());
+  for (std::size_t i = 0; i < config.axes.size(); ++i) {
+    const double p0 = config.path.start[i];
+    ChannelAxis& a = config.axes[i];
+    try {
+      axes_.push_back(Axis{a, axes::PositionControlModel(a.control, t, p0),
+                           axes::AxisMonitor(a.monitor, t, static_cast<int>(i))});
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument("axis " + a.name + ": " + e.what());
+    }
+    state_.command[i] = p0;
+    state_.actual[i] = p0;
+  }
+}
+
+Status Channel::stop(const char* id, std::string message, const Cycle& c, int axis) noexcept {
+  try {
+    RunTimeError e;
+    e.id = id;
+    e.message = std::move(message);
+    e.line = c.line;
+    e.t = c.t;
+    e.axis = axis;
+    error_ = std::move(e);
+  } catch (...) {
+    std::abort();  // out of memory while reporting a run-time error: nothing sane is left
+  }
+  return Status::error;
+}
+
+void Channel::map_to_axes(const Cycle& c) noexcept {
+  // ---- The mapping path point -> machine axis setpoints. ----------------------------------
+  // Identity today: the path is planned in machine axis values (MCS, no kinematics).
+  // The joint stage (#TRAFO kinematics, #CS frames: the plan helper's) and the conveyor's
+  // moving PCS1 frame (issue 14) plug in here: they turn c.x, c.v, c.a, c.j into the setpoints
+  // of the machine axes (joints), which everything below drives and monitors.
+  for (std::size_t i = 0; i < axes_.size(); ++i)
+    setpoint_[i] = axes::Setpoint{c.x[i], c.v[i], c.a[i], c.j[i]};
+  // ---- end of the mapping -----------------------------------------------------------------
+}
+
+bool Channel::drive_axis(std::size_t i, const Cycle& c) noexcept {
+  Axis& a = axes_[i];
+  const axes::Setpoint& sp = setpoint_[i];
+  const int axis = static_cast<int>(i);
+  state_.command[i] = sp.p;
+  // Soft limits P-AXIS-00177 / 00178 on the command position, every cycle: the axis never
+  // receives a set position beyond them (an arc can cross a limit between its end points).
+  if (const auto alarm = axes::check_soft_limits(a.config.monitor.soft_limits, sp.p, axis, c.t)) {
+    const bool low = alarm->kind == axes::AlarmKind::soft_limit_min;
+    stop(alarm->id.data(),
+         "axis " + a.config.name +
+             text(low ? ": command position %.6g mm below the minimum soft position limit %.6g mm "
+                        "(P-AXIS-00177)"
+                      : ": command position %.6g mm above the maximum soft position limit %.6g mm "
+                        "(P-AXIS-00178)",
+                  sp.p, alarm->limit),
+         c, axis);
+    return false;
+  }
+  const axes::ActualValue act = a.control.step(sp);
+  state_.actual[i] = act.position;
+  state_.following_error[i] = act.following_error;
+  lag_max_[i] = std::max(lag_max_[i], std::fabs(act.following_error));
+  const bool waiting = in_exact_stop_ && ((moved_ >> i) & 1u) != 0;
+  axes::AxisSample s;
+  s.t = c.t;
+  s.command_position = sp.p;
+  s.actual_position = act.position;
+  s.motion_active = c.activity == Activity::motion && !waiting;
+  if (waiting) s.target = target_[i];
+  const auto alarm = a.monitor.step(s);
+  if (!alarm) return true;
+  std::string what;
+  switch (alarm->kind) {
+    case axes::AlarmKind::position_lag:
+      what = text(
+          ": position lag %.6g mm above the maximum %.6g mm for longer than the filter "
+          "time (NCSIM-AXIS-025 / 026)",
+          alarm->value, alarm->limit);
+      break;
+    case axes::AlarmKind::exact_stop_timeout:
+      what = text(
+                 ": exact stop window P-AXIS-00236 (%.6g mm) not reached within P-AXIS-00532 "
+                 "(%.6g s)",
+                 a.config.monitor.exact_stop.window, alarm->limit) +
+             text(", %.6g mm from the target after %.6g s", std::fabs(target_[i] - act.position),
+                  static_cast<double>(waited_) * ipo_.t_cycle());
+      break;
+    default:
+      what = ": " + axes::describe(*alarm);
+      break;
+  }
+  stop(alarm->id.data(), "axis " + a.config.name + what, c, axis);
+  return false;
+}
+
+bool Channel::exact_stop(const Cycle& c) noexcept {
+  bool all_in = true;
+  for (std::size_t i = 0; i < axes_.size(); ++i)
+    if (((moved_ >> i) & 1u) != 0 && !axes_[i].monitor.status().in_exact_stop_window)
+      all_in = false;
+  if (all_in) {
+    ipo_.release_exact_stop();
+    in_exact_stop_ = false;
+    return true;
+  }
+  if (c.activity == Activity::exact_stop) ++waited_;  // the stop cycle itself counts 0
+  const double waited = static_cast<double>(waited_) * ipo_.t_cycle();
+  if (waited_ > wait_cycles_max_) {
+    int worst = 0;
+    double worst_d = -1.0;
+    for (std::size_t i = 0; i < axes_.size(); ++i) {
+      const double d = std::fabs(target_[i] - state_.actual[i]);
+      if (((moved_ >> i) & 1u) != 0 && !axes_[i].monitor.status().in_exact_stop_window &&
+          d > worst_d) {
+        worst = static_cast<int>(i);
+        worst_d = d;
+      }
+    }
+    const std::size_t w = static_cast<std::size_t>(worst);
+    stop(kExactStopWaitId,
+         "axis " + axes_[w].config.name +
+             text(": exact stop window P-AXIS-00236 (%.6g mm) not reached, %.6g mm from the "
+                  "target",
+                  axes_[w].config.monitor.exact_stop.window, worst_d) +
+             text(" after %.6g s (P-AXIS-00532 does not monitor the time; ncsim's limit %.6g s)",
+                  waited, exact_stop_wait_max_),
+         c, worst);
+    return false;
+  }
+  return true;
+}
+
+Status Channel::step() noexcept {
+  if (error_) return Status::error;
+  const Status s = ipo_.step();
+  if (s != Status::running) return s;
+  const Cycle& c = ipo_.cycle();
+  if (!in_exact_stop_ && ipo_.holding_exact_stop()) {
+    // The command reached the end of a G60 / G360 block in this cycle (001 l.149: t_1).
+    in_exact_stop_ = true;
+    waited_ = 0;
+    moved_ = 0;
+    target_ = c.x;
+    if (const planner::Move* prog = c.programmed) {
+      for (std::size_t i = 0; i < axes_.size(); ++i) {
+        const bool moved = prog->end[i] != prog->start[i] ||
+                           (prog->arc && (prog->arc->axis_1 == i || prog->arc->axis_2 == i));
+        if (moved) moved_ |= 1u << i;
+      }
+    }
+  }
+  map_to_axes(c);
+  for (std::size_t i = 0; i < axes_.size(); ++i)
+    if (!drive_axis(i, c)) return Status::error;
+  if (in_exact_stop_ && !exact_stop(c)) return Status::error;
+  if (sink_) sink_->on_cycle(c);
+  return Status::running;
+}
+
+}  // namespace ncsim::ipo

@@ -1,0 +1,156 @@
+#pragma once
+// ipo/channel: the channel loop, one interpolation cycle T per Channel::step() (issue 12).
+//
+// Purpose: what the kernel's channel does each cycle after decoding: the path interpolator
+// gives the commanded path point; the point is mapped to machine axis setpoints; every axis
+// goes through the PTP axis core's position-control model (axes/control) giving its actual
+// position and following error; the monitors (axes/monitor) watch every axis; G60 / G360
+// exact stops wait for the actual positions. `ncsim run` and `ncsim time` both step it.
+// Inputs: a Source of program items (ipo::ProgramSource for a program), the ChannelConfig
+// (the interpolator's Config plus one ChannelAxis per interpolated axis: position control
+// P-AXIS-00099 / NCSIM-AXIS-023, monitors P-AXIS-00177/00178, NCSIM-AXIS-024..026, exact stop
+// P-AXIS-00236 / P-AXIS-00532), an optional Sink.
+// Outputs: step() returns running / finished / error; cycle() is the path record of the cycle
+// (its `x` is the axes' command position), axes() the command, actual position and following
+// error of every axis; run_time_error() says why the channel stopped (docs/ipo.md "The
+// channel loop").
+// Per cycle (Channel::step):
+//   1. PathInterpolator::step(): path state and point (Detail::axes).
+//   2. Mapping point -> machine axis setpoints: identity today; the one place where the joint
+//      stage (#TRAFO, #CS frames) and the conveyor's moving PCS1 frame plug in.
+//   3. Per axis: soft limits P-AXIS-00177 / 00178 on the command position (NC5501 / NC5502),
+//      PositionControlModel::step(), AxisMonitor::step() (position lag 0x4550, exact-stop
+//      window P-ERR-70082, and the other monitors the axis list enables).
+//   4. Exact stop (G60 / G360): from the cycle the command reaches the block end, the path
+//      waits until every axis that moved in the block has its actual position inside its
+//      window P-AXIS-00236 (001 l.149-150, l.172); P-AXIS-00532 is the longest time allowed
+//      for that (P-ERR-70082, 001 l.150, l.157); without time monitoring (P-AXIS-00532 = 0)
+//      the wait ends with NC6101 after ChannelConfig::exact_stop_wait_max.
+//   5. The Sink sees the joints of the cycle and then the cycle, only when no run-time error
+//      was raised in it: a stopped run's stream ends with the last good cycle.
+// Invariants: step() never throws (an error ends the stream with Status::error); it is
+// deterministic (encoder noise is seeded per axis); memory is the interpolator's (bounded by
+// the look-ahead window) plus one control model and one monitor per axis.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "axes/control.hpp"
+#include "axes/monitor.hpp"
+#include "ipo/interpolator.hpp"
+#include "machines/machine.hpp"
+
+namespace ncsim::ipo {
+
+/// NC6101: the exact-stop window P-AXIS-00236 was not reached within
+/// ChannelConfig::exact_stop_wait_max while P-AXIS-00532 does not monitor the time.
+inline constexpr const char* kExactStopWaitId = "NC6101";
+
+/// One interpolated axis as the channel drives it.
+struct ChannelAxis {
+  std::string name;                     ///< axis name (messages)
+  axes::PositionControlParams control;  ///< position control model (axes/control.hpp)
+  axes::AxisMonitorParams monitor;      ///< soft limits, lag, exact stop, ...
+};
+
+struct ChannelConfig {
+  Config path;                        ///< the interpolator's (detail and hold_exact_stop are set)
+  std::vector<ChannelAxis> axes;      ///< one per entry of path.axes, same order
+  double exact_stop_wait_max = 60.0;  ///< [s] longest exact-stop wait without P-AXIS-00532
+};
+
+/// The channel configuration of `machine` (docs/ipo.md "The channel loop"): the interpolator
+/// Config of machine_config() and, per interpolated axis, the axis core's position control and
+/// monitor parameters through axes/axis_config (the one machine -> axes adapter).
+ChannelConfig channel_config(const machines::Machine& machine, double t_cycle);
+
+/// A run-time error: the channel stopped as the kernel would (the axes and the path compound).
+struct RunTimeError {
+  std::string id;          ///< the manual's id (P-ERR-70082, 0x4550) or ncsim's (NC5501, NC6101)
+  std::string message;     ///< what happened, with the value and the limit
+  std::uint32_t line = 0;  ///< source line of the active block
+  double t = 0.0;          ///< [s] end of the cycle that raised it
+  int axis = -1;           ///< interpolated axis index
+};
+
+/// The axes after a cycle.
+struct AxesState {
+  AxisVec command{};          ///< set positions [mm | deg] (the mapped path point)
+  AxisVec actual{};           ///< measured actual positions [mm | deg]
+  AxisVec following_error{};  ///< set - actual [mm | deg] (000 7.1.5)
+};
+
+class Channel {
+ public:
+  /// Throws std::invalid_argument (value and parameter named) on an unusable configuration
+  /// (the interpolator's checks, the control model's Kv * T <= 1, the monitors'). `source`
+  /// must outlive the channel; `sink` may be null.
+  Channel(ChannelConfig config, Source& source, Sink* sink = nullptr);
+  Channel(const Channel&) = delete;
+  Channel& operator=(const Channel&) = delete;
+
+  /// One interpolation cycle. Never throws. Status::error: the source failed (message()) or
+  /// a run-time error stopped the channel (run_time_error()).
+  Status step() noexcept;
+  /// The path record of the last cycle step() reported.
+  const Cycle& cycle() const noexcept { return ipo_.cycle(); }
+  /// Command, actual position and following error of every axis after the last cycle.
+  const AxesState& axes() const noexcept { return state_; }
+  /// Why the channel stopped at run time, if it did.
+  const std::optional<RunTimeError>& run_time_error() const noexcept { return error_; }
+  /// The interpolator's message when the source failed.
+  const std::string& message() const noexcept { return ipo_.message(); }
+  double t_cycle() const noexcept { return ipo_.t_cycle(); }  ///< [s]
+  std::size_t axis_count() const noexcept { return axes_.size(); }
+  /// Largest |following error| seen per axis so far [mm | deg].
+  const AxisVec& following_error_max() const noexcept { return lag_max_; }
+
+ private:
+  /// Passes the interpolator's joints on at once; cycles are passed on by step().
+  class JointRelay final : public Sink {
+   public:
+    explicit JointRelay(Sink* sink) : sink_(sink) {}
+    void on_joint(const Joint& joint) override {
+      if (sink_) sink_->on_joint(joint);
+    }
+    void on_cycle(const Cycle&) override {}
+
+   private:
+    Sink* sink_;
+  };
+
+  struct Axis {
+    ChannelAxis config;
+    axes::PositionControlModel control;
+    axes::AxisMonitor monitor;
+  };
+
+  /// Step 2: the path point -> machine axis setpoints (identity today).
+  void map_to_axes(const Cycle& c) noexcept;
+  /// Step 3 for axis i; false when it raised a run-time error.
+  bool drive_axis(std::size_t i, const Cycle& c) noexcept;
+  /// Step 4: the exact-stop wait.
+  bool exact_stop(const Cycle& c) noexcept;
+  Status stop(const char* id, std::string message, const Cycle& c, int axis) noexcept;
+
+  JointRelay relay_;
+  PathInterpolator ipo_;
+  Sink* sink_ = nullptr;
+  std::vector<Axis> axes_;
+  double exact_stop_wait_max_ = 60.0;
+  std::uint64_t wait_cycles_max_ = 0;  ///< exact_stop_wait_max_ in cycles
+  AxesState state_;
+  std::array<axes::Setpoint, planner::kMaxAxes> setpoint_{};
+  AxisVec lag_max_{};
+  // Exact stop in progress: the block's moved axes and their targets.
+  bool in_exact_stop_ = false;
+  std::uint32_t moved_ = 0;  ///< bit i: axis i moved in the exact-stop block
+  AxisVec target_{};
+  std::uint64_t waited_ = 0;  ///< cycles waited at this exact stop
+  std::optional<RunTimeError> error_;
+};
+
+}  // namespace ncsim::ipo
