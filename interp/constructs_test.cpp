@@ -155,6 +155,16 @@ TEST_CASE("#VAR declares typed variables and 0-based arrays with initialisers") 
   CHECK(r.lines.at(0) == "7: G00 X=15.0000 Y=7.0000 Z=0.0000");  // integers truncate
 }
 
+TEST_CASE("an array index that is itself a variable reads the element it names") {
+  // Regression: the index expression used the same scratch reference as the array, so
+  // V.P.ARR[P2] read P2[1] (NC4010) instead of V.P.ARR[1].
+  auto r =
+      run("%t\n#VAR\nV.P.ARR[3] : REAL = [5, 10, 15]\n#ENDVAR\nP2 = 1\n"
+          "G00 X[V.P.ARR[P2]] Y[V.P.ARR[P2 + 1]] Z[V.P.ARR[V.P.ARR[0] - 4]]\nM30\n");
+  REQUIRE(r.error_id.empty());
+  CHECK(r.lines.at(0) == "6: G00 X=10.0000 Y=15.0000 Z=10.0000");
+}
+
 TEST_CASE("an integer variable out of its type's range is NC4013") {
   CHECK(run("%t\n#VAR\nV.P.B : UNS08\n#ENDVAR\nV.P.B = 300\nM30\n").error_id == "NC4013");
 }

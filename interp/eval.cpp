@@ -1,6 +1,7 @@
 #include "interp/eval.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -63,8 +64,21 @@ bool Evaluator::resolve(const ast::Block& block, ast::NodeIndex n, VarRef& out) 
   if (node.op != Op::variable) {
     return fail(node.loc, "NC4003", "a variable is expected here");
   }
+  // The indices first: an index expression may read a variable through the same `out`
+  // (the evaluator's scratch reference), so `out` is filled only after them.
+  std::array<double, 4> index{};
+  std::uint32_t index_count = 0;
+  for (ast::NodeIndex s = node.a; s != ast::kNoNode; s = block.exprs[s].next) {
+    if (index_count == index.size()) {
+      return fail(node.loc, "NC4015", "more than 4 indices: " + std::string(node.text));
+    }
+    auto v = eval(block, block.exprs[s].a);
+    if (!v) return false;
+    index[index_count++] = std::trunc(*v + (*v >= 0 ? 1e-9 : -1e-9));
+  }
   out.cls = node.var_class;
-  out.index_count = 0;
+  out.index = index;
+  out.index_count = index_count;
   if (node.var_class == ast::VarClass::p) {
     out.number = static_cast<std::uint32_t>(node.value);
     if (node.value < 0.0 || node.value != std::trunc(node.value)) out.number = 0;
@@ -74,14 +88,6 @@ bool Evaluator::resolve(const ast::Block& block, ast::NodeIndex n, VarRef& out) 
                 "variable " + std::string(node.text) + " is not supported by ncsim");
   } else {
     base_name(node.text, out.name);
-  }
-  for (ast::NodeIndex s = node.a; s != ast::kNoNode; s = block.exprs[s].next) {
-    if (out.index_count == out.index.size()) {
-      return fail(node.loc, "NC4015", "more than 4 indices: " + std::string(node.text));
-    }
-    auto v = eval(block, block.exprs[s].a);
-    if (!v) return false;
-    out.index[out.index_count++] = std::trunc(*v + (*v >= 0 ? 1e-9 : -1e-9));
   }
   return true;
 }
