@@ -168,6 +168,33 @@ Status fastest_move(const State& start, double p1, double v1, const Limits& limi
 /// World state at the end of `move` started from `start` (closed-form chain).
 State end_state(const State& start, const Move& move) noexcept;
 
+// --- ptp additions (issue 11): two-peak velocity changes.
+
+/// A velocity change (v0, a0) -> (v1, 0) whose acceleration keeps one sign and has two peaks
+/// (it does not return to 0 between them): jerk from a0 toward 0 down to a_dip, jerk to
+/// a_peak, [hold at the limit], jerk to 0. The time-optimal way to change the velocity over a
+/// distance between that of the direct ramp (a_dip = a0) and that of releasing a0 first
+/// (a_dip = 0), which no single-peak move (level with a = 0) reaches without a detour.
+struct TwoPeak {
+  std::array<double, 4> jerk{};      ///< jerk of each phase, frame values [mm/s^3]
+  std::array<double, 4> duration{};  ///< duration of each phase [s], >= 0
+  std::array<double, 4> a_end{};     ///< intended acceleration after each phase [mm/s^2]
+  double v_end = 0.0;                ///< velocity after the last phase (a = 0) [mm/s]
+  double sign = 1.0;                 ///< world direction of the frame, +1 or -1
+  /// Total duration [s].
+  double time() const noexcept { return duration[0] + duration[1] + duration[2] + duration[3]; }
+};
+
+/// The two-peak change from `start` to (p1, v1, a = 0) in the frame toward the target, when
+/// its distance lies between those of the direct ramp and of releasing the start acceleration
+/// first; the velocity stays monotone between v0 and v1 (both >= 0 in the frame, v0 <= V), so
+/// A+ bounds a speeding pulse and A- a braking one. Status::not_supported otherwise.
+Status two_peak_move(const State& start, double p1, double v1, const Limits& limits,
+                     TwoPeak& out) noexcept;
+
+/// World state at the end of `tp` started from `start` (closed-form chain).
+State end_state(const State& start, const TwoPeak& tp) noexcept;
+
 }  // namespace ncsim::jerk
 
 #include "jerk/ramp_inline.hpp"  // IWYU pragma: export
