@@ -139,6 +139,18 @@ bool plan_fastest(const MotionState& start, const PositionTarget& target, const 
     b.finish(&end);
     found = true;
   }
+  // Candidate 4: turn round once on the way to an arrival velocity (the target too close to
+  // arrive at v1 without a detour, or v1 against the direction of travel).
+  jerk::Reversal rev;
+  if (!direct && target.v != 0.0 &&
+      jerk::reversal_move(start, target.p, target.v, dyn, rev) == jerk::Status::ok &&
+      (!found || rev.time() < out.duration())) {
+    ProfileBuilder b(out, start);
+    append_move(b, rev.out);
+    append_move(b, rev.back);
+    b.finish(&end);
+    found = true;
+  }
   if (direct || (start.v == 0.0 && start.a == 0.0)) return found;
   Profile alt;
   ProfileBuilder b(alt, start);

@@ -86,13 +86,19 @@ Status two_peak_move(const State& start, double p1, double v1, const Limits& lim
   s.v1 = f * v1;
   s.j = lim.j_max;
   const double d = f * dp;
-  if (s.v0 < 0.0 || s.v1 < 0.0 || s.v0 > lim.v_max) return Status::not_supported;
+  if (s.v1 < 0.0 || std::abs(s.v0) > lim.v_max) return Status::not_supported;
   const double v_zero = s.v0 + s.a0 * std::abs(s.a0) / (2.0 * s.j);
   if (s.v1 == v_zero) return Status::not_supported;
   s.sigma = s.v1 > v_zero ? 1.0 : -1.0;
   s.alpha0 = s.sigma * s.a0;
   if (!(s.alpha0 > 0.0)) return Status::not_supported;  // no dip: a single ramp
   s.lim = s.sigma > 0.0 ? lim.a_max : lim.d_max;
+  if (s.v0 < 0.0) {
+    // Speeding up from a start moving backward: the acceleration slows the motion until v = 0
+    // (A-) and speeds it up after (A+); the peaks stay within both, and so must the start.
+    s.lim = std::min(lim.a_max, lim.d_max);
+    if (s.sigma < 0.0 || s.alpha0 > s.lim) return Status::not_supported;
+  }
   s.w = s.j * s.sigma * (s.v1 - s.v0);
   const double x_hi = std::min(s.alpha0, s.lim);
   const auto g = [&](double x) { return chain_distance(s, make(s, x)) - d; };
