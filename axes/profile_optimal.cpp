@@ -29,6 +29,14 @@ void append_move(ProfileBuilder& b, const jerk::Move& m) noexcept {
 
 namespace {
 
+void append_two_peak(ProfileBuilder& b, const jerk::TwoPeak& tp) noexcept {
+  b.set_level(std::abs(tp.v_end));
+  for (std::size_t i = 0; i < 4; ++i) {
+    if (i == 1) b.mark_brake();
+    b.add(tp.sign * tp.jerk[i], tp.duration[i], tp.sign * tp.a_end[i]);
+  }
+}
+
 // Level of the fastest rest-to-rest move under the real A+ and A-: the highest vm <= V with
 // d(vm) = ramp(vm, A+) + ramp(vm, A-) <= D, split by which limits the ramps reach:
 //  - neither (vm J <= min(A)^2):   D = 2 vm^1.5 / sqrt(J)          -> vm = cbrt(D^2 J / 4);
@@ -120,6 +128,28 @@ bool plan_fastest(const MotionState& start, const PositionTarget& target, const 
     found = true;
     // Toward the target without moving away: a stop first cannot be faster.
     direct = m.sign * start.v >= 0.0 && m.sign * (target.p - start.p) >= 0.0;
+  }
+  // Candidate 3: the two-peak change (the acceleration dips toward 0 without reaching it),
+  // for targets between the direct ramp and releasing the start acceleration first.
+  jerk::TwoPeak tp;
+  if (jerk::two_peak_move(start, target.p, target.v, dyn, tp) == jerk::Status::ok &&
+      (!found || tp.time() < out.duration())) {
+    ProfileBuilder b(out, start);
+    append_two_peak(b, tp);
+    b.finish(&end);
+    found = true;
+  }
+  // Candidate 4: turn round once on the way to an arrival velocity (the target too close to
+  // arrive at v1 without a detour, or v1 against the direction of travel).
+  jerk::Reversal rev;
+  if (!direct && target.v != 0.0 &&
+      jerk::reversal_move(start, target.p, target.v, dyn, rev) == jerk::Status::ok &&
+      (!found || rev.time() < out.duration())) {
+    ProfileBuilder b(out, start);
+    append_move(b, rev.out);
+    append_move(b, rev.back);
+    b.finish(&end);
+    found = true;
   }
   if (direct || (start.v == 0.0 && start.a == 0.0)) return found;
   Profile alt;

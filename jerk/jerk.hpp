@@ -168,6 +168,53 @@ Status fastest_move(const State& start, double p1, double v1, const Limits& limi
 /// World state at the end of `move` started from `start` (closed-form chain).
 State end_state(const State& start, const Move& move) noexcept;
 
+// --- ptp additions (issue 11): two-peak velocity changes.
+
+/// A velocity change (v0, a0) -> (v1, 0) whose acceleration keeps one sign and has two peaks
+/// (it does not return to 0 between them): jerk from a0 toward 0 down to a_dip, jerk to
+/// a_peak, [hold at the limit], jerk to 0. The time-optimal way to change the velocity over a
+/// distance between that of the direct ramp (a_dip = a0) and that of releasing a0 first
+/// (a_dip = 0), which no single-peak move (level with a = 0) reaches without a detour.
+struct TwoPeak {
+  std::array<double, 4> jerk{};      ///< jerk of each phase, frame values [mm/s^3]
+  std::array<double, 4> duration{};  ///< duration of each phase [s], >= 0
+  std::array<double, 4> a_end{};     ///< intended acceleration after each phase [mm/s^2]
+  double v_end = 0.0;                ///< velocity after the last phase (a = 0) [mm/s]
+  double sign = 1.0;                 ///< world direction of the frame, +1 or -1
+  /// Total duration [s].
+  double time() const noexcept { return duration[0] + duration[1] + duration[2] + duration[3]; }
+};
+
+/// The two-peak change from `start` to (p1, v1, a = 0) in the frame toward the target, when
+/// its distance lies between those of the direct ramp and of releasing the start acceleration
+/// first; the velocity stays monotone between v0 and v1 (v1 >= 0 in the frame, |v0| <= V), so
+/// A+ bounds a speeding pulse and A- a braking one; from a start moving backward (v0 < 0) the
+/// speeding pulse stays within min(A+, A-) (it slows the motion before v = 0 and speeds it up
+/// after). Status::not_supported otherwise.
+Status two_peak_move(const State& start, double p1, double v1, const Limits& limits,
+                     TwoPeak& out) noexcept;
+
+/// World state at the end of `tp` started from `start` (closed-form chain).
+State end_state(const State& start, const TwoPeak& tp) noexcept;
+
+/// A move that turns round once on the way to an arrival velocity v1 != 0: `out` goes in the
+/// direction -sign(v1) to a level (frame of `out`), cruises, and `back` turns into the
+/// direction of v1 and arrives at (p1, v1, 0). Both use the path limits through v = 0
+/// (crossing_ramp). Needed where the target is too close to arrive at v1 without a detour
+/// (overshoot and come back, or an arrival against the direction of travel).
+struct Reversal {
+  Move out;   ///< to the turning level and its cruise (sign = -sign(v1))
+  Move back;  ///< through v = 0 to (v1, 0) (sign = sign(v1))
+  /// Total duration [s].
+  double time() const noexcept { return out.time() + back.time(); }
+};
+
+/// The fastest Reversal from `start` to (p1, v1 != 0, a = 0): the highest turning level in
+/// (0, V] for which the turn still reaches p1 (root of the displacement, Illinois), with a
+/// cruise at V when V itself falls short. Status::not_supported when v1 == 0 or no level fits.
+Status reversal_move(const State& start, double p1, double v1, const Limits& limits,
+                     Reversal& out) noexcept;
+
 }  // namespace ncsim::jerk
 
 #include "jerk/ramp_inline.hpp"  // IWYU pragma: export
