@@ -22,6 +22,24 @@ StopReason requested_stop(const Move& move) {
   return StopReason::none;
 }
 
+/// A knee that VELOJUMP passes at both blocks' velocity caps and that carries the path
+/// acceleration (corner.hpp) is left unblended under G261: a blend could only be slower there
+/// (its change of curvature caps its velocity) and the programmed path is inside every ball
+/// (docs/planner.md "Tolerance balls").
+bool knee_needs_no_ball(const Segment& in, const Move& in_move, const Segment& out,
+                        const Move& out_move, std::span<const AxisLimits> axes,
+                        const ChannelLimits& channel) {
+  const std::uint8_t n = std::max(in.axis_count(), out.axis_count());
+  const PathPoint a = in.at(in.length());
+  const PathPoint b = out.at(0.0);
+  if (classify(a, b, n, in.metric() | out.metric()) != TransitionClass::c0) return false;
+  const std::span<const AxisLimits> used = axes.first(std::min<std::size_t>(axes.size(), n));
+  if (!knee_carries_acceleration(a.d1, b.d1, used, channel.t_cycle)) return false;
+  const double cap =
+      std::min(path_limits(in, in_move, axes).v_max, path_limits(out, out_move, axes).v_max);
+  return velojump_velocity(a.d1, b.d1, used, channel.t_cycle) >= cap;
+}
+
 }  // namespace
 
 Preparer::Preparer(std::span<const AxisLimits> axes, ChannelLimits channel)
@@ -141,7 +159,8 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
     return;
   }
 
-  if (p.move.contour == Contour::tolerance) {
+  if (p.move.contour == Contour::tolerance &&
+      !knee_needs_no_ball(p.path, p.move, seg, move, axes_, channel_)) {
     const auto ball = make_blend(p.path, seg, p.move.path_dev,
                                  std::min(p.full_length / 2, p.path.length()), seg.length() / 2);
     if (ball) {

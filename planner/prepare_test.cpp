@@ -211,3 +211,35 @@ TEST_CASE("0.1 mm chords of a gentle curve leave as chains: the knees carry the 
   CHECK(out[0].path.line_at(0.05) == 1);
   CHECK(out[0].path.line_at(0.15) == 2);
 }
+
+TEST_CASE("G261 leaves the small knees of dense chords unblended: they chain as without G261") {
+  const auto ax = limits();
+  Preparer prep(ax, ChannelLimits{});
+  std::vector<PreparedSegment> out;
+  AxisVec p = vec(0, 0);
+  double dir = 0.0;
+  for (int k = 0; k < 100; ++k) {
+    dir += 0.1 / 20.0;
+    const AxisVec q = vec(p[0] + 0.1 * std::cos(dir), p[1] + 0.1 * std::sin(dir));
+    Move m = line(p, q, 100.0, static_cast<std::uint32_t>(k + 1));
+    m.contour = Contour::tolerance;
+    m.path_dev = 0.01;
+    prep.push(m, out);
+    p = q;
+  }
+  // A 90 degree corner after them is still blended.
+  Move m = line(p, vec(p[0], p[1] + 10.0), 100.0, 101);
+  m.contour = Contour::tolerance;
+  m.path_dev = 0.01;
+  prep.push(m, out);
+  prep.finish(out);
+  std::size_t blends = 0;
+  std::size_t parts = 0;
+  for (const PreparedSegment& ps : out) {
+    blends += ps.blend ? 1 : 0;
+    parts += ps.path.parts();
+  }
+  CHECK(blends == 1);
+  CHECK(parts == 102);  // 101 blocks and the one blend
+  CHECK(out[0].path.parts() == Chain::kMaxParts);
+}
