@@ -2,6 +2,9 @@
 
 #include <doctest/doctest.h>
 
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <random>
 #include <string>
 
@@ -298,6 +301,37 @@ passes = 5
     loaded += r.scenario ? 1 : 0;
   }
   CHECK(loaded > 0);  // some corruptions stay valid (a digit for a digit)
+}
+
+// The n-th ```toml block of docs/scenario.md.
+std::string doc_block(int n) {
+  const char* dir = std::getenv("NCSIM_SOURCE_DIR");
+  const std::string root = dir != nullptr ? dir : NCSIM_SOURCE_ROOT;
+  std::ifstream in(root + "/docs/scenario.md");
+  REQUIRE(in.good());
+  const std::string doc((std::istreambuf_iterator<char>(in)), {});
+  std::size_t at = 0;
+  for (int i = 0; i <= n; ++i) {
+    at = doc.find("```toml\n", at);
+    REQUIRE(at != std::string::npos);
+    at += 8;
+  }
+  return doc.substr(at, doc.find("```", at) - at);
+}
+
+TEST_CASE("the complete example of docs/scenario.md loads") {
+  const LoadResult r = parse(doc_block(0));
+  CHECK(r.diagnostics.items().empty());
+  REQUIRE(r.scenario);
+  CHECK(r.scenario->events.size() == 4);
+  CHECK(r.scenario->stop.passes == 50u);
+}
+
+TEST_CASE("the reserved conveyor layout of docs/scenario.md is refused table by table") {
+  const LoadResult r = parse(doc_block(1));
+  REQUIRE(r.diagnostics.error_count() == 4);
+  for (const core::Diagnostic& d : r.diagnostics.items())
+    CHECK(d.id == "NC7007");
 }
 
 TEST_CASE("a file that cannot be read is NC7010") {
