@@ -32,10 +32,25 @@ Preparer::Preparer(std::span<const AxisLimits> axes, ChannelLimits channel)
                                 std::to_string(channel.t_cycle));
 }
 
+void Preparer::set_joints(JointLimits joints) {
+  if (!joints.inverse) throw std::invalid_argument("planner: joint limits without an inverse map");
+  validate(joints.joints);
+  joints_ = std::move(joints);
+}
+
+PathLimits Preparer::limits(const Segment& path, const Move& move) const {
+  if (!joints_) return path_limits(path, move, axes_);
+  const std::optional<PathLimits> l =
+      path_limits(path, move, axes_, joints_->inverse, joints_->joints);
+  if (!l)
+    throw KinematicError(move.line, "the path leaves the workspace of the kinematic transform");
+  return *l;
+}
+
 PreparedSegment Preparer::make(const Segment& path, const Move& move, bool blend) const {
   PreparedSegment ps;
   ps.path = Chain(path, move.line);
-  ps.limits = path_limits(path, move, axes_);
+  ps.limits = limits(path, move);
   ps.blend = blend;
   ps.line = move.line;
   return ps;
@@ -108,15 +123,7 @@ void Preparer::push(const Move& move, std::vector<PreparedSegment>& out) {
 
 void Preparer::push(const SplinePiece& piece, const Move& modal,
                     std::vector<PreparedSegment>& out) {
-  Move move = modal;
-  move.axis_count = piece.curve.axis_count();
-  move.start = piece.curve.start();
-  move.end = piece.curve.end();
-  move.arc.reset();
-  move.rapid = false;
-  move.block_time.reset();
-  move.feed = piece.feed;
-  move.line = piece.line;
+  const Move move = spline_move(piece, modal);
   validate(move);
   push_path(move, piece.curve, out);
 }
@@ -146,7 +153,7 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
     if (ball) {
       const Segment in_path = p.path.trimmed(0.0, p.path.length() - ball->cut_in);
       const Segment out_path = seg.trimmed(ball->cut_out, seg.length());
-      const PathLimits out_limits = path_limits(out_path, move, axes_);
+      const PathLimits out_limits = limits(out_path, move);
       // The blend moves at most at the slower of its neighbours' programmed velocities.
       PreparedSegment in_ps = make(in_path, p.move, false);
       Move blend_move = p.move;
@@ -162,7 +169,7 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
       return;
     }
   }
-  emit_joint(make(p.path, p.move, false), p.move, seg, path_limits(seg, move, axes_).v_max, out);
+  emit_joint(make(p.path, p.move, false), p.move, seg, limits(seg, move).v_max, out);
 }
 
 void Preparer::finish(std::vector<PreparedSegment>& out) {
