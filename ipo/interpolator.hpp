@@ -88,6 +88,10 @@ struct Config {
   std::size_t window = 120;               ///< look-ahead entries (planner::window_size)
   AxisVec start{};                        ///< axis positions before the first move [mm | deg]
   Detail detail = Detail::axes;
+  /// Under a kinematic transform (#TRAFO ON): `axes` are the Cartesian X, Y, Z (...) and the
+  /// path is also limited so that every joint keeps its own v, a, j (planner::Preparer::
+  /// set_joints); the per-cycle joint setpoints come from ipo::JointStage (joint_stage.hpp).
+  std::optional<planner::JointLimits> joints;
 };
 
 /// What the channel did in a cycle.
