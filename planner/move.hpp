@@ -14,6 +14,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 
@@ -72,17 +73,19 @@ struct SplineControl {
 
 /// One path block (a line, or an arc / helix when `arc` is set).
 struct Move {
-  std::uint8_t axis_count = 3;          ///< machine axes in use, 1..kMaxAxes
-  AxisMask path_axes = 0b111;           ///< axes whose motion measures the path length (main axes)
-  AxisVec start{};                      ///< [mm | deg]
-  AxisVec end{};                        ///< [mm | deg]
-  std::optional<Arc> arc;               ///< G02/G03: circle in the plane; other axes move linearly
-  std::optional<ArcPlane> arc_plane;    ///< with `arc`: a plane not spanned by two machine axes
-  std::optional<SplineControl> spline;  ///< a #SPLINE piece: cubic Bezier (not with `arc`)
-  bool rapid = false;                   ///< G00: per-axis MIN(rapid, reference, max) (000 l.360)
-  double feed = 0.0;                    ///< programmed F [mm/s]; ignored for rapid
-  std::optional<double> block_time;     ///< G93: machining time of the block [s]
-  std::optional<double> end_feed;       ///< E: feed at the block end [mm/s]
+  std::uint8_t axis_count = 3;        ///< machine axes in use, 1..kMaxAxes
+  AxisMask path_axes = 0b111;         ///< axes whose motion measures the path length (main axes)
+  AxisVec start{};                    ///< [mm | deg]
+  AxisVec end{};                      ///< [mm | deg]
+  std::optional<Arc> arc;             ///< G02/G03: circle in the plane; other axes move linearly
+  std::optional<ArcPlane> arc_plane;  ///< with `arc`: a plane not spanned by two machine axes
+  /// A #SPLINE piece: cubic Bezier (not with `arc`). Shared and immutable, so that lines and
+  /// arcs, the bulk of every program, do not carry 256 bytes of control points in each copy.
+  std::shared_ptr<const SplineControl> spline;
+  bool rapid = false;                ///< G00: per-axis MIN(rapid, reference, max) (000 l.360)
+  double feed = 0.0;                 ///< programmed F [mm/s]; ignored for rapid
+  std::optional<double> block_time;  ///< G93: machining time of the block [s]
+  std::optional<double> end_feed;    ///< E: feed at the block end [mm/s]
   Transition transition = Transition::accelerate_at_start;
   bool exact_stop = false;            ///< G60 / G360: velocity 0 and the window at the end
   Contour contour = Contour::none;    ///< G61 / G261 at the end of this block

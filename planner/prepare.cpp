@@ -67,9 +67,30 @@ void Preparer::emit_joint(PreparedSegment in, const Move& in_move, const Segment
       link_velocity(in.path.at(in.path.length()), out_path.at(0.0), n, metric, axes_, channel_,
                     in.limits.v_end, v_out, v_min, jerk_limited(in_move.slope));
   in.v_end = link.v_link;
+  if (joints_ && link.cls != TransitionClass::c2) {
+    // Under a transform the joints take their own steps at a C0 / C1 joint: the VELOJUMP and
+    // C1 rules per joint, on the joints' path derivatives (docs/planner.md "Kinematics").
+    const PathPoint a = in.path.at(in.path.length());
+    const PathPoint b = out_path.at(0.0);
+    AxisVec q1_in{}, q2_in{}, q1_out{}, q2_out{};
+    const std::size_t nj = joints_->joints.size();
+    if (!joint_derivatives(a, n, joints_->inverse, nj, q1_in, q2_in) ||
+        !joint_derivatives(b, n, joints_->inverse, nj, q1_out, q2_out))
+      throw KinematicError(in_move.line, "a corner outside the workspace of the transform");
+    // As on the axes: VELOJUMP at C0; the C1 budget on jerk-limited slopes (P-CHAN-00009).
+    double cap = in.v_end;
+    if (link.cls == TransitionClass::c0)
+      cap = velojump_velocity(q1_in, q1_out, joints_->joints, channel_.t_cycle);
+    else if (channel_.limit_c1_by_jerk && jerk_limited(in_move.slope))
+      cap = c1_velocity(q2_in, q2_out, joints_->joints, channel_.t_cycle);
+    if (cap < in.v_end) {
+      in.v_end = cap;
+      in.rule = link.cls == TransitionClass::c0 ? LinkRule::velojump : LinkRule::c1_jerk;
+    }
+  }
   in.a_zero_at_end = link.zero_acceleration;
   in.joint = link.cls;
-  in.rule = link.rule;
+  if (in.v_end == link.v_link) in.rule = link.rule;
   in.stop = StopReason::none;
   output(std::move(in), out);
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -28,7 +29,8 @@ Move spline_move(const SplinePiece& piece, const Move& modal) {
   move.start = piece.control[0];
   move.end = piece.control[3];
   move.arc.reset();
-  move.spline = SplineControl{piece.control[1], piece.control[2]};
+  move.spline =
+      std::make_shared<const SplineControl>(SplineControl{piece.control[1], piece.control[2]});
   move.rapid = false;
   move.block_time.reset();
   move.feed = piece.feed;
