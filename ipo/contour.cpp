@@ -3,6 +3,7 @@
 #include "ipo/contour.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <utility>
@@ -115,31 +116,35 @@ planner::AxisVec cubic_at(const planner::Move& m, double t) noexcept {
 }
 
 double spline_distance(const planner::Move& m, const planner::AxisVec& x) noexcept {
-  // Nearest sample of 64, then a golden-section search in the two intervals beside it (the
-  // distance is unimodal there for pieces that do not fold back within 1/64 of their
-  // parameter; the result is an upper bound of the true distance in any case).
-  constexpr int kSamples = 64;
-  int best = 0;
-  double best_d = point_distance(m, x, m.start);
-  for (int k = 1; k <= kSamples; ++k) {
-    const double d = point_distance(m, x, cubic_at(m, static_cast<double>(k) / kSamples));
-    if (d < best_d) {
-      best_d = d;
-      best = k;
-    }
-  }
-  double lo = std::max(0, best - 1) / static_cast<double>(kSamples);
-  double hi = std::min(kSamples, best + 1) / static_cast<double>(kSamples);
+  // The distance along the cubic sampled at 129 parameters; every local minimum of the samples
+  // is refined by a golden-section search in the two intervals beside it (a piece that folds
+  // back passes near itself: the nearest sample may lie on the other branch). The result is an
+  // upper bound of the true distance in any case, and exact where the refinement converges.
+  constexpr int kSamples = 128;
+  std::array<double, kSamples + 1> d{};
+  for (int k = 0; k <= kSamples; ++k)
+    d[static_cast<std::size_t>(k)] =
+        point_distance(m, x, cubic_at(m, static_cast<double>(k) / kSamples));
+  double best = *std::min_element(d.begin(), d.end());
   const double g = (std::sqrt(5.0) - 1.0) / 2.0;
-  for (int it = 0; it < 60 && hi - lo > 1e-15; ++it) {
-    const double a = hi - g * (hi - lo);
-    const double b = lo + g * (hi - lo);
-    if (point_distance(m, x, cubic_at(m, a)) < point_distance(m, x, cubic_at(m, b)))
-      hi = b;
-    else
-      lo = a;
+  for (int k = 0; k <= kSamples; ++k) {
+    const auto u = static_cast<std::size_t>(k);
+    const bool left = k == 0 || d[u] <= d[u - 1];
+    const bool right = k == kSamples || d[u] <= d[u + 1];
+    if (!left || !right) continue;
+    double lo = std::max(0, k - 1) / static_cast<double>(kSamples);
+    double hi = std::min(kSamples, k + 1) / static_cast<double>(kSamples);
+    for (int it = 0; it < 60 && hi - lo > 1e-15; ++it) {
+      const double a = hi - g * (hi - lo);
+      const double b = lo + g * (hi - lo);
+      if (point_distance(m, x, cubic_at(m, a)) < point_distance(m, x, cubic_at(m, b)))
+        hi = b;
+      else
+        lo = a;
+    }
+    best = std::min(best, point_distance(m, x, cubic_at(m, 0.5 * (lo + hi))));
   }
-  return std::min(best_d, point_distance(m, x, cubic_at(m, 0.5 * (lo + hi))));
+  return best;
 }
 
 }  // namespace

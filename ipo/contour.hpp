@@ -10,8 +10,8 @@
 // segment; for an arc the radial error in the plane combined with the error of the other axes
 // against their linear motion over the swept angle (an upper bound of the distance from a
 // helix, exact for a plane arc), never more than the distance from either end point; for a
-// spline piece the distance from its cubic Bezier (evaluated here, de Casteljau), nearest of 64
-// samples refined by a golden-section search.
+// spline piece the distance from its cubic Bezier (evaluated here), 129 samples with every
+// local minimum refined by a golden-section search.
 // Invariants: 0 for a point on the block (up to rounding); pure.
 
 #include "planner/move.hpp"

@@ -5,9 +5,14 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <numbers>
+#include <random>
+#include <sstream>
 #include <string>
 #include <variant>
 #include <vector>
@@ -71,7 +76,8 @@ Run run(const std::string& text, double t_cycle = 0.001) {
   while ((r.status = ipo.step()) == ipo::Status::running)
     ++r.cycles;
   r.verdict = rec.audit.verdict();
-  if (src.error() != nullptr) r.error = src.error()->id;
+  if (src.error() != nullptr) r.error = src.error()->id + " " + src.error()->message;
+  if (r.status == ipo::Status::error) r.error += ipo.message();
   return r;
 }
 
@@ -185,7 +191,7 @@ TEST_CASE("an Akima section becomes curve pieces that pass through its points; a
   const double pts[4][2] = {{10, 5}, {20, 0}, {30, -5}, {40, 0}};
   for (std::size_t k = 0; k < 4; ++k) {
     const planner::Move& piece = mv[1 + k];
-    CHECK(piece.spline.has_value());
+    CHECK(piece.spline != nullptr);
     CHECK(piece.line == 3 + k);
     CHECK(piece.feed == doctest::Approx(50.0));
     CHECK(piece.end[0] == doctest::Approx(pts[k][0]));
@@ -233,5 +239,116 @@ TEST_CASE("a B-spline section under #CS runs with the audit clean, 0.5 to 2 ms c
     CHECK(r.status == ipo::Status::finished);
     CHECK(r.verdict.ok());
     CHECK(r.verdict.contour_max < 1e-6);
+  }
+}
+
+TEST_CASE("the bundled cs_rotated_pocket and spline_akima_contour run with the audit clean") {
+  for (const std::string name : {"cs_rotated_pocket", "spline_akima_contour"}) {
+    CAPTURE(name);
+    std::ifstream in(std::string(NCSIM_SOURCE_ROOT) + "/programs/" + name + "/" + name + ".nc");
+    REQUIRE(in.good());
+    std::ostringstream text;
+    text << in.rdbuf();
+    const Run r = run(text.str());
+    CHECK(r.status == ipo::Status::finished);
+    CHECK(r.error.empty());
+    CHECK(r.verdict.ok());
+    CHECK(r.verdict.contour_max < 1e-9);
+    const double z_end = name == "spline_akima_contour" ? 5.0 : 20.0;  // the last G00
+    CHECK(r.final_x[2] == z_end);
+  }
+}
+
+namespace {
+
+/// A seeded random program in a random #CS (rotation about all three axes and a shift): lines,
+/// G17 and G18 arcs and helices given by R, Akima and B-spline sections; half of the programs
+/// with TRAPEZ slopes, a third with tolerance balls. Returns the text and the last PCS point.
+std::string random_program(std::mt19937_64& rng, std::array<double, 3>& last) {
+  std::uniform_real_distribution<double> pos(-100.0, 100.0);
+  std::uniform_real_distribution<double> zpos(-40.0, 40.0);
+  std::uniform_real_distribution<double> angle(-60.0, 60.0);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::ostringstream p;
+  p.setf(std::ios::fixed);
+  p.precision(6);
+  int n = 10;
+  const auto block = [&]() -> std::ostringstream& {
+    p << 'N' << n << ' ';
+    n += 10;
+    return p;
+  };
+  block() << "G00 X400 Y300 Z0\n";
+  if (unit(rng) < 0.5) block() << "#SLOPE [TYPE=TRAPEZ]\n";
+  const bool contouring = unit(rng) < 0.33;
+  if (contouring) {
+    block() << "#CONTOUR MODE [DEV, PATH_DEV=0.05]\n";
+    block() << "G261\n";
+  }
+  block() << "#CS ON [1][400, 300, 0, " << angle(rng) << ", " << angle(rng) << ", " << angle(rng)
+          << "]\n";
+  std::array<double, 3> at{0.0, 0.0, 0.0};
+  block() << "G01 X0 Y0 Z0 F" << 600.0 + 5400.0 * unit(rng) << '\n';
+  for (int k = 0; k < 10; ++k) {
+    const double pick = unit(rng);
+    if (pick < 0.35) {
+      at = {pos(rng), pos(rng), zpos(rng)};
+      block() << "G01 X" << at[0] << " Y" << at[1] << " Z" << at[2] << '\n';
+    } else if (pick < 0.75) {
+      const bool g18 = pick > 0.65;
+      std::array<double, 3> to{pos(rng), pos(rng), zpos(rng)};
+      // Chord in the plane (G17: X, Y; G18: Z, X) at least 5 mm; R 1.05..3 times its half.
+      const double d =
+          g18 ? std::hypot(to[2] - at[2], to[0] - at[0]) : std::hypot(to[0] - at[0], to[1] - at[1]);
+      if (d < 5.0) continue;
+      const double r = d / 2.0 * (1.05 + 1.95 * unit(rng));
+      block() << (g18 ? "G18 " : "G17 ") << (unit(rng) < 0.5 ? "G02" : "G03") << " X" << to[0]
+              << " Y" << to[1] << " Z" << to[2] << " R" << r << '\n';
+      at = to;
+    } else if (!contouring) {  // a spline with G261 is 120255 (the interpreter's rule)
+      block() << (unit(rng) < 0.5 ? "#SPLINE TYPE AKIMA\n" : "#SPLINE TYPE BSPLINE\n");
+      block() << "#SPLINE ON\n";
+      const int points = 4 + static_cast<int>(unit(rng) * 3);
+      for (int i = 0; i < points; ++i) {
+        at = {at[0] + 0.5 * pos(rng), at[1] + 0.5 * pos(rng), at[2] + 0.25 * zpos(rng)};
+        for (double& c : at)
+          c = std::clamp(c, -100.0, 100.0);
+        block() << "G01 X" << at[0] << " Y" << at[1] << " Z" << at[2] << '\n';
+      }
+      block() << "#SPLINE OFF\n";
+    }
+  }
+  block() << "G17\n";
+  block() << "#CS OFF\n";
+  block() << "M30\n";
+  last = at;
+  return p.str();
+}
+
+}  // namespace
+
+TEST_CASE("property: random programs in random #CS frames keep every limit and the contour") {
+  std::mt19937_64 rng(1212);
+  for (int trial = 0; trial < 24; ++trial) {
+    std::array<double, 3> last{};
+    const std::string text = random_program(rng, last);
+    CAPTURE(text);
+    const Run r = run(text, trial % 3 == 0 ? 0.0005 : 0.001);
+    CHECK(r.status == ipo::Status::finished);
+    CHECK_MESSAGE(r.error.empty(), r.error);
+    CHECK(r.verdict.ok());
+    if (!r.verdict.ok() && !r.verdict.violations.empty()) {
+      const ipo::Violation& v = r.verdict.violations.front();
+      MESSAGE("first violation: quantity "
+              << static_cast<int>(v.quantity) << " method " << static_cast<int>(v.method)
+              << " axis " << static_cast<int>(v.axis) << " line " << v.line << " value " << v.value
+              << " limit " << v.limit);
+    }
+    // The program ends on the last point; #CS OFF does not move the tool.
+    std::string error;
+    const std::vector<planner::Move> mv = moves(text, &error);
+    REQUIRE_FALSE(mv.empty());
+    for (std::size_t i = 0; i < 3; ++i)
+      CHECK(r.final_x[i] == doctest::Approx(mv.back().end[i]).epsilon(1e-9).scale(100.0));
   }
 }
