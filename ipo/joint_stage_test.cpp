@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "ipo/audit.hpp"
@@ -233,6 +234,7 @@ TEST_CASE("a move out of the delta's workspace is a positioned planning error, n
   const Result r = run({m}, home, true, joints, kin);
   CHECK(r.status == ipo::Status::error);
   CHECK(r.message.find("line 70") == 0);
+  CHECK(r.message.find("[NC3201]") != std::string::npos);
 }
 
 TEST_CASE("the joint stage: positions are the inverse transform; v, a, j by the chain rule") {

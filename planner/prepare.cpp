@@ -43,7 +43,8 @@ PathLimits Preparer::limits(const Segment& path, const Move& move) const {
   const std::optional<PathLimits> l =
       path_limits(path, move, axes_, joints_->inverse, joints_->joints);
   if (!l)
-    throw KinematicError(move.line, "the path leaves the workspace of the kinematic transform");
+    throw KinematicError(move.line,
+                         "the path leaves the workspace of the kinematic transform [NC3201]");
   return *l;
 }
 
@@ -76,7 +77,8 @@ void Preparer::emit_joint(PreparedSegment in, const Move& in_move, const Segment
     const std::size_t nj = joints_->joints.size();
     if (!joint_derivatives(a, n, joints_->inverse, nj, q1_in, q2_in) ||
         !joint_derivatives(b, n, joints_->inverse, nj, q1_out, q2_out))
-      throw KinematicError(in_move.line, "a corner outside the workspace of the transform");
+      throw KinematicError(in_move.line,
+                           "a corner outside the workspace of the kinematic transform [NC3201]");
     // As on the axes: VELOJUMP at C0; the C1 budget on jerk-limited slopes (P-CHAN-00009).
     double cap = in.v_end;
     if (link.cls == TransitionClass::c0)
