@@ -31,8 +31,9 @@ Audit::Audit(std::span<const planner::AxisLimits> axes, double t_cycle, const Ax
     const planner::AxisLimits& l = limits_[i];
     AxisAudit& a = verdict_.axes[i];
     a.v_limit = std::min(l.v_max, l.v_reference);
-    a.a_limit = std::max(l.a_max, l.d_max);
-    a.j_limit = l.j_max;
+    const planner::AxisLimits r = planner::rapid_limits(l);
+    a.a_limit = std::max({l.a_max, l.d_max, r.a_max});  // G00 slope P-AXIS-00004 included
+    a.j_limit = std::max(l.j_max, r.j_max);
   }
   x_.resize(limits_.size());
   for (std::size_t i = 0; i < limits_.size(); ++i)
@@ -42,11 +43,11 @@ Audit::Audit(std::span<const planner::AxisLimits> axes, double t_cycle, const Ax
 }
 
 void Audit::violate(Quantity q, Method m, std::size_t axis, double t, std::uint32_t line,
-                    double value, double limit) {
+                    double value, double limit, bool joint) {
   ++verdict_.violation_count;
   if (verdict_.violations.size() < kMaxListed)
     verdict_.violations.push_back(
-        Violation{q, m, static_cast<std::uint8_t>(axis), t, line, value, limit});
+        Violation{q, m, static_cast<std::uint8_t>(axis), t, line, value, limit, joint});
 }
 
 void Audit::check(Quantity q, Method m, std::size_t axis, const Cycle& c, double value,
@@ -55,6 +56,7 @@ void Audit::check(Quantity q, Method m, std::size_t axis, const Cycle& c, double
 }
 
 void Audit::on_joint(const Joint& jt) {
+  joint_seen_ = true;
   for (std::size_t i = 0; i < limits_.size(); ++i) {
     const planner::AxisLimits& l = limits_[i];
     const double dv = std::abs(jt.dv[i]);
@@ -89,10 +91,19 @@ void Audit::on_joint(const Joint& jt) {
 void Audit::on_cycle(const Cycle& c) {
   ++verdict_.cycles;
   jerk_limited_[0] = c.interval_jerk_limited;
+  rapid_[0] = c.rapid;
+  const bool any_rapid = rapid_[0] || rapid_[1] || rapid_[2];
   const double t2 = t_ * t_;
   const double t3 = t2 * t_;
   for (std::size_t i = 0; i < limits_.size(); ++i) {
-    const planner::AxisLimits& l = limits_[i];
+    // G00 is planned with its own slope (P-AXIS-00004 / 00200; planner::rapid_limits).
+    const planner::AxisLimits l = c.rapid ? planner::rapid_limits(limits_[i]) : limits_[i];
+    const planner::AxisLimits feed = limits_[i];
+    const planner::AxisLimits fast = planner::rapid_limits(feed);
+    // A finite-difference stencil that holds a G00 cycle is checked against the larger slope.
+    const double a_fd = any_rapid ? std::max({feed.a_max, feed.d_max, fast.a_max})
+                                  : std::max(feed.a_max, feed.d_max);
+    const double j_fd = any_rapid ? std::max(feed.j_max, fast.j_max) : feed.j_max;
     AxisAudit& aa = verdict_.axes[i];
     // Closed form.
     const double v = std::abs(c.v[i]);
@@ -122,16 +133,17 @@ void Audit::on_cycle(const Cycle& c) {
     check(Quantity::velocity, Method::finite_difference, i, c, vd, aa.v_limit + 2.0 * noise / t_);
     if (dv2 == 0.0) aa.a_diff = std::max(aa.a_diff, ad);
     check(Quantity::acceleration, Method::finite_difference, i, c, ad,
-          aa.a_limit + dv2 / t_ + 4.0 * noise / t2);
+          a_fd + dv2 / t_ + 4.0 * noise / t2);
     if (jerk_limited_[0] && jerk_limited_[1] && jerk_limited_[2]) {
       if (dv3 == 0.0 && da3 == 0.0) aa.j_diff = std::max(aa.j_diff, jd);
       check(Quantity::jerk, Method::finite_difference, i, c, jd,
-            aa.j_limit + da3 / t_ + dv3 / t2 + 8.0 * noise / t3);
+            j_fd + da3 / t_ + dv3 / t2 + 8.0 * noise / t3);
     }
     dv_[i] = {0.0, dv_[i][0], dv_[i][1]};
     da_[i] = {0.0, da_[i][0], da_[i][1]};
   }
   jerk_limited_ = {true, jerk_limited_[0], jerk_limited_[1]};
+  rapid_ = {false, rapid_[0], rapid_[1]};
   // Contour.
   if (c.activity == Activity::motion && c.programmed) {
     const planner::Move& m = *c.programmed;
@@ -148,6 +160,75 @@ void Audit::on_cycle(const Cycle& c) {
     }
     if (!(d <= allowed)) violate(Quantity::contour, Method::geometry, 0, c.t, c.line, d, allowed);
   }
+}
+
+void Audit::set_joint_limits(std::span<const planner::AxisLimits> joints, const AxisVec& start) {
+  if (joints.empty() || joints.size() > planner::kMaxAxes)
+    throw std::invalid_argument("ipo audit: " + std::to_string(joints.size()) + " joints");
+  planner::validate(joints);
+  joint_limits_.assign(joints.begin(), joints.end());
+  verdict_.joints.assign(joints.size(), AxisAudit{});
+  q_.resize(joints.size());
+  for (std::size_t i = 0; i < joints.size(); ++i) {
+    const planner::AxisLimits& l = joints[i];
+    verdict_.joints[i].v_limit = std::min(l.v_max, l.v_reference);
+    verdict_.joints[i].a_limit = std::max(l.a_max, l.d_max);
+    verdict_.joints[i].j_limit = l.j_max;
+    q_[i].fill(start[i]);
+  }
+}
+
+void Audit::check_joint(Quantity q, Method m, std::size_t joint, const Cycle& c, double value,
+                        double limit) {
+  if (!(value <= limit * (1.0 + kRelative))) violate(q, m, joint, c.t, c.line, value, limit, true);
+}
+
+void Audit::on_joints(const Cycle& c, const JointSetpoint& s) {
+  if (joint_limits_.empty()) return;
+  stepped_[0] = joint_seen_;
+  joint_seen_ = false;
+  joint_jerk_limited_[0] = c.interval_jerk_limited;
+  const bool clean = !stepped_[0] && !stepped_[1] && !stepped_[2];
+  const double t2 = t_ * t_;
+  const double t3 = t2 * t_;
+  for (std::size_t i = 0; i < joint_limits_.size(); ++i) {
+    const planner::AxisLimits& l = joint_limits_[i];
+    AxisAudit& aa = verdict_.joints[i];
+    const double v = std::abs(s.v[i]);
+    const double a = std::abs(s.a[i]);
+    const double j = std::abs(s.j[i]);
+    aa.v_closed = std::max(aa.v_closed, v);
+    aa.a_closed = std::max(aa.a_closed, a);
+    check_joint(Quantity::velocity, Method::closed_form, i, c, v, aa.v_limit);
+    const bool speeding_up = s.a[i] * s.v[i] >= 0.0;
+    check_joint(Quantity::acceleration, Method::closed_form, i, c, a,
+                speeding_up ? l.a_max : l.d_max);
+    if (c.jerk_limited) {
+      aa.j_closed = std::max(aa.j_closed, j);
+      check_joint(Quantity::jerk, Method::closed_form, i, c, j, l.j_max);
+    }
+    std::array<double, 4>& x = q_[i];
+    x = {s.q[i], x[0], x[1], x[2]};
+    const double mag = std::max({std::abs(x[0]), std::abs(x[1]), std::abs(x[2]), std::abs(x[3])});
+    const double noise = kPositionNoise + 4.0 * kEps * mag;
+    const double vd = std::abs(x[0] - x[1]) / t_;
+    const double ad = std::abs(x[0] - 2.0 * x[1] + x[2]) / t2;
+    const double jd = std::abs(x[0] - 3.0 * x[1] + 3.0 * x[2] - x[3]) / t3;
+    aa.v_diff = std::max(aa.v_diff, vd);
+    check_joint(Quantity::velocity, Method::finite_difference, i, c, vd,
+                aa.v_limit + 2.0 * noise / t_);
+    if (!clean) continue;
+    aa.a_diff = std::max(aa.a_diff, ad);
+    check_joint(Quantity::acceleration, Method::finite_difference, i, c, ad,
+                aa.a_limit + 4.0 * noise / t2);
+    if (joint_jerk_limited_[0] && joint_jerk_limited_[1] && joint_jerk_limited_[2]) {
+      aa.j_diff = std::max(aa.j_diff, jd);
+      check_joint(Quantity::jerk, Method::finite_difference, i, c, jd,
+                  aa.j_limit + 8.0 * noise / t3);
+    }
+  }
+  stepped_ = {false, stepped_[0], stepped_[1]};
+  joint_jerk_limited_ = {true, joint_jerk_limited_[0], joint_jerk_limited_[1]};
 }
 
 }  // namespace ncsim::ipo

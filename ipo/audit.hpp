@@ -11,7 +11,8 @@
 // Method:
 //  - closed form: v_i, a_i, j_i of each cycle sample (chain rule on the path state) against
 //    v_max (and the reference velocity), A+ when the axis speeds up / A- when it slows down,
-//    and J (jerk-limited slopes only: STEP is acceleration-limited by definition);
+//    and J (jerk-limited slopes only: STEP is acceleration-limited by definition); in G00
+//    cycles the G00 slope (planner::rapid_limits: P-AXIS-00004, P-AXIS-00200);
 //  - finite differences of the positions: v = dx / T, a = d2x / T^2, j = d3x / T^3 are
 //    weighted means of the continuous v, a, j over their stencil, so they are bounded by the
 //    same limits wherever v and a are continuous. A joint with a velocity step dv (C0,
@@ -24,6 +25,10 @@
 //    corner, which lies on the block), else within rounding.
 // Rounding: values within limit (1 + 1e-9) pass; finite differences also get the effect of a
 // position noise of 1e-10 mm + 4 eps |x| (2 / T, 4 / T^2, 8 / T^3).
+//  - joints (under a kinematic transform, on_joints()): each joint's v, a, j from the joint
+//    stage against its own limits (A+ / A- by the sign of v a, J on jerk-limited slopes), and
+//    finite differences of its positions; a joint has no step formula, so a stencil that holds
+//    a documented path step (VELOJUMP, C1) is checked for velocity only.
 // Memory: the lists keep the first kMaxListed entries; counts and maxima cover everything.
 
 #include <cstddef>
@@ -32,6 +37,7 @@
 #include <vector>
 
 #include "ipo/interpolator.hpp"
+#include "ipo/joint_stage.hpp"
 
 namespace ncsim::ipo {
 
@@ -48,8 +54,8 @@ struct AxisAudit {
   double v_closed = 0.0, a_closed = 0.0, j_closed = 0.0;  ///< max |v|, |a|, |j| closed form
   double v_diff = 0.0, a_diff = 0.0, j_diff = 0.0;        ///< max |v|, |a|, |j| finite differences
   double v_limit = 0.0;                                   ///< min(v_max, v_reference) [mm/s]
-  double a_limit = 0.0;                                   ///< max(A+, |A-|) [mm/s^2]
-  double j_limit = 0.0;                                   ///< J [mm/s^3]
+  double a_limit = 0.0;  ///< max(A+, |A-|, G00 acceleration P-AXIS-00004) [mm/s^2]
+  double j_limit = 0.0;  ///< max(J, G00 jerk) [mm/s^3]
 };
 
 struct Violation {
@@ -60,6 +66,7 @@ struct Violation {
   std::uint32_t line = 0;
   double value = 0.0;  ///< |value| measured
   double limit = 0.0;  ///< what was allowed
+  bool joint = false;  ///< `axis` is a joint of the kinematic transform (on_joints())
 };
 
 /// A documented step at a joint (the largest over the axes relative to its bound).
@@ -75,6 +82,7 @@ struct Step {
 
 struct Verdict {
   std::vector<AxisAudit> axes;
+  std::vector<AxisAudit> joints;   ///< under a transform: one per joint (set_joint_limits())
   double contour_max = 0.0;        ///< largest distance from the programmed contour [mm]
   double contour_tolerance = 0.0;  ///< tolerance where the largest ratio to it was seen [mm]
   std::uint64_t cycles = 0;        ///< cycles audited
@@ -94,12 +102,21 @@ class Audit final : public Sink {
 
   void on_joint(const Joint& joint) override;
   void on_cycle(const Cycle& cycle) override;
+  /// Under a kinematic transform: the joints' limits (one per joint, 1..kMaxAxes; throws
+  /// std::invalid_argument otherwise) and their positions before the first cycle.
+  void set_joint_limits(std::span<const planner::AxisLimits> joints, const AxisVec& start);
+  /// The joint setpoints of the cycle on_cycle() just saw (ipo::JointStage): each joint's
+  /// |v|, |a|, |j| against its own limits, from the stage's values and from finite differences
+  /// of the joint positions ("per axis, joints included"; docs/ipo.md "The audit").
+  void on_joints(const Cycle& cycle, const JointSetpoint& joints);
   const Verdict& verdict() const noexcept { return verdict_; }
 
  private:
   void violate(Quantity q, Method m, std::size_t axis, double t, std::uint32_t line, double value,
-               double limit);
+               double limit, bool joint = false);
   void check(Quantity q, Method m, std::size_t axis, const Cycle& c, double value, double limit);
+  void check_joint(Quantity q, Method m, std::size_t joint, const Cycle& c, double value,
+                   double limit);
 
   std::vector<planner::AxisLimits> limits_;
   double t_ = 0.001;
@@ -109,7 +126,16 @@ class Audit final : public Sink {
   std::vector<std::array<double, 3>> dv_;
   std::vector<std::array<double, 3>> da_;
   std::array<bool, 3> jerk_limited_{true, true, true};
+  std::array<bool, 3> rapid_{false, false, false};  ///< G00 in the last three cycles
   double contour_ratio_ = 0.0;
+  // Joints (set_joint_limits()): limits, last positions, and whether the last three cycles
+  // held a documented path step (a joint has no step formula of its own: those stencils are
+  // checked for velocity only).
+  std::vector<planner::AxisLimits> joint_limits_;
+  std::vector<std::array<double, 4>> q_;
+  std::array<bool, 3> stepped_{false, false, false};
+  std::array<bool, 3> joint_jerk_limited_{true, true, true};
+  bool joint_seen_ = false;  ///< on_joint() since the last on_joints()
 };
 
 }  // namespace ncsim::ipo

@@ -6,6 +6,8 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "ipo/test_support.hpp"
@@ -150,3 +152,46 @@ TEST_CASE("a real run audited against tighter limits than it was planned with fa
 }
 
 }  // namespace
+
+TEST_CASE("G00 runs and is audited with its own slope P-AXIS-00004 / 00200, G01 with the feed's") {
+  std::vector<planner::AxisLimits> axes = {axis(500.0, 1000.0, 1e5), axis(500.0, 1000.0, 1e5)};
+  for (planner::AxisLimits& a : axes) {
+    a.a_rapid = 3000.0;  // P-AXIS-00004: G00 speeds up 3x harder than feed motion
+    a.j_rapid = 3e5;     // a_rapid / P-AXIS-00200 (10 ms)
+  }
+  planner::Move g00 = line(vec(0, 0), vec(200, 0), 0.0, 1);
+  g00.axis_count = 2;
+  g00.rapid = true;
+  g00.slope = planner::SlopeType::trapez;
+  planner::Move g01 = line(vec(200, 0), vec(200, 200), 400.0, 2);
+  g01.axis_count = 2;
+  g01.slope = planner::SlopeType::trapez;
+  Config cfg;
+  cfg.axes = axes;
+  cfg.channel.t_cycle = 0.001;
+  ListSource src({g00, g01});
+  Audit audit(cfg.axes, cfg.channel.t_cycle, cfg.start);
+  PathInterpolator ipo(cfg, src, &audit);
+  double a_rapid = 0.0;
+  double a_feed = 0.0;
+  while (ipo.step() == Status::running) {
+    const Cycle& c = ipo.cycle();
+    (c.rapid ? a_rapid : a_feed) =
+        std::max(c.rapid ? a_rapid : a_feed, std::max(std::abs(c.a[0]), std::abs(c.a[1])));
+  }
+  const Verdict& v = audit.verdict();
+  CHECK(v.ok());
+  CHECK(a_rapid > 1000.0 * 1.5);          // the G00 slope is used ...
+  CHECK(a_rapid <= 3000.0 * (1 + 1e-9));  // ... and kept
+  CHECK(a_feed <= 1000.0 * (1 + 1e-9));   // the feed block keeps the feed slope
+  CHECK(v.axes[0].a_limit == 3000.0);     // the audit reports the larger allowed value
+  // The feed slope alone would be broken by the G00 cycles: the audit would say so.
+  for (planner::AxisLimits& a : axes)
+    a.a_rapid = a.j_rapid = 0.0;
+  Audit strict(axes, cfg.channel.t_cycle, cfg.start);
+  ListSource again({g00, g01});
+  PathInterpolator replay(cfg, again, &strict);
+  while (replay.step() == Status::running) {
+  }
+  CHECK_FALSE(strict.verdict().ok());
+}

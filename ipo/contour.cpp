@@ -3,8 +3,10 @@
 #include "ipo/contour.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace ncsim::ipo {
 
@@ -35,36 +37,120 @@ double line_distance(const planner::Move& m, const planner::AxisVec& x) noexcept
   return std::sqrt(sum);
 }
 
+/// The arc's plane as unit vectors over the machine axes and its centre (from the Move alone).
+struct Basis {
+  planner::AxisVec u{}, v{}, c{};
+};
+
+Basis arc_basis(const planner::Move& m) noexcept {
+  Basis b;
+  const planner::Arc& arc = *m.arc;
+  if (m.arc_plane) {
+    const planner::ArcPlane& p = *m.arc_plane;
+    for (std::size_t k = 0; k < 3; ++k) {
+      b.u[p.axes[k]] = p.u[k];
+      b.v[p.axes[k]] = p.v[k];
+      b.c[p.axes[k]] = p.centre[k];
+    }
+  } else {
+    b.u[arc.axis_1] = 1.0;
+    b.v[arc.axis_2] = 1.0;
+    b.c[arc.axis_1] = arc.centre_1;
+    b.c[arc.axis_2] = arc.centre_2;
+  }
+  return b;
+}
+
+/// In-plane coordinates of p relative to the centre.
+std::pair<double, double> in_plane(const Basis& b, const planner::Move& m,
+                                   const planner::AxisVec& p) noexcept {
+  double x = 0.0, y = 0.0;
+  for (std::size_t i = 0; i < m.axis_count; ++i) {
+    x += (p[i] - b.c[i]) * b.u[i];
+    y += (p[i] - b.c[i]) * b.v[i];
+  }
+  return {x, y};
+}
+
 double arc_distance(const planner::Move& m, const planner::AxisVec& x) noexcept {
   constexpr double kTwoPi = 2.0 * std::numbers::pi;
   const planner::Arc& arc = *m.arc;
-  const std::size_t a1 = arc.axis_1;
-  const std::size_t a2 = arc.axis_2;
-  const double r = std::hypot(m.start[a1] - arc.centre_1, m.start[a2] - arc.centre_2);
-  const double th0 = std::atan2(m.start[a2] - arc.centre_2, m.start[a1] - arc.centre_1);
-  const double th1 = std::atan2(m.end[a2] - arc.centre_2, m.end[a1] - arc.centre_1);
+  const Basis b = arc_basis(m);
+  const auto [x0, y0] = in_plane(b, m, m.start);
+  const auto [x1, y1] = in_plane(b, m, m.end);
+  const auto [px, py] = in_plane(b, m, x);
+  const double r = std::hypot(x0, y0);
+  const double th0 = std::atan2(y0, x0);
+  const double th1 = std::atan2(y1, x1);
   const double dir = arc.clockwise ? -1.0 : 1.0;
   // Swept angle in (0, 2 pi], measured in the direction of motion.
   double sweep = std::fmod(dir * (th1 - th0) + 2.0 * kTwoPi, kTwoPi);
   if (arc.full_circle || sweep <= 0.0) sweep = kTwoPi;
-  const double th = std::atan2(x[a2] - arc.centre_2, x[a1] - arc.centre_1);
+  const double th = std::atan2(py, px);
   const double off = std::fmod(dir * (th - th0) + 2.0 * kTwoPi, kTwoPi);
   const double ends = std::min(point_distance(m, x, m.start), point_distance(m, x, m.end));
   if (off > sweep && sweep < kTwoPi) return ends;  // beyond the arc: nearest is an end point
   const double u = off / sweep;
-  const double radial = std::hypot(x[a1] - arc.centre_1, x[a2] - arc.centre_2) - r;
+  const double radial = std::hypot(px, py) - r;
+  // Out of the plane: the point's displacement from the start without its in-plane part,
+  // against the share u of the block's own out-of-plane displacement (the helix rise).
   double sum = radial * radial;
   for (std::size_t i = 0; i < m.axis_count; ++i) {
-    if (i == a1 || i == a2) continue;
-    const double e = x[i] - (m.start[i] + u * (m.end[i] - m.start[i]));
+    const double have = x[i] - m.start[i] - (px - x0) * b.u[i] - (py - y0) * b.v[i];
+    const double rise = m.end[i] - m.start[i] - (x1 - x0) * b.u[i] - (y1 - y0) * b.v[i];
+    const double e = have - u * rise;
     sum += e * e;
   }
   return std::min(std::sqrt(sum), ends);
 }
 
+/// Cubic Bezier point of a spline piece at t (de Casteljau, independent of planner::Segment).
+planner::AxisVec cubic_at(const planner::Move& m, double t) noexcept {
+  planner::AxisVec p{};
+  const double s = 1.0 - t;
+  for (std::size_t i = 0; i < m.axis_count; ++i) {
+    const double c0 = m.start[i], c1 = m.spline->c1[i], c2 = m.spline->c2[i], c3 = m.end[i];
+    p[i] = s * s * s * c0 + 3.0 * s * s * t * c1 + 3.0 * s * t * t * c2 + t * t * t * c3;
+  }
+  return p;
+}
+
+double spline_distance(const planner::Move& m, const planner::AxisVec& x) noexcept {
+  // The distance along the cubic sampled at 129 parameters; every local minimum of the samples
+  // is refined by a golden-section search in the two intervals beside it (a piece that folds
+  // back passes near itself: the nearest sample may lie on the other branch). The result is an
+  // upper bound of the true distance in any case, and exact where the refinement converges.
+  constexpr int kSamples = 128;
+  std::array<double, kSamples + 1> d{};
+  for (int k = 0; k <= kSamples; ++k)
+    d[static_cast<std::size_t>(k)] =
+        point_distance(m, x, cubic_at(m, static_cast<double>(k) / kSamples));
+  double best = *std::min_element(d.begin(), d.end());
+  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+  for (int k = 0; k <= kSamples; ++k) {
+    const auto u = static_cast<std::size_t>(k);
+    const bool left = k == 0 || d[u] <= d[u - 1];
+    const bool right = k == kSamples || d[u] <= d[u + 1];
+    if (!left || !right) continue;
+    double lo = std::max(0, k - 1) / static_cast<double>(kSamples);
+    double hi = std::min(kSamples, k + 1) / static_cast<double>(kSamples);
+    for (int it = 0; it < 60 && hi - lo > 1e-15; ++it) {
+      const double a = hi - g * (hi - lo);
+      const double b = lo + g * (hi - lo);
+      if (point_distance(m, x, cubic_at(m, a)) < point_distance(m, x, cubic_at(m, b)))
+        hi = b;
+      else
+        lo = a;
+    }
+    best = std::min(best, point_distance(m, x, cubic_at(m, 0.5 * (lo + hi))));
+  }
+  return best;
+}
+
 }  // namespace
 
 double contour_distance(const planner::Move& move, const planner::AxisVec& x) noexcept {
+  if (move.spline) return spline_distance(move, x);
   return move.arc ? arc_distance(move, x) : line_distance(move, x);
 }
 

@@ -43,6 +43,7 @@ PathInterpolator::PathInterpolator(Config config, Source& source, Sink* sink)
   if (axes_.empty() || axes_.size() > planner::kMaxAxes)
     throw std::invalid_argument("ipo: " + std::to_string(axes_.size()) + " axes (1.." +
                                 std::to_string(planner::kMaxAxes) + ")");
+  if (config.joints) prep_.set_joints(std::move(*config.joints));
   if (exact_stop_.empty()) exact_stop_.resize(axes_.size());
   if (exact_stop_.size() != axes_.size())
     throw std::invalid_argument("ipo: " + std::to_string(exact_stop_.size()) +
@@ -118,6 +119,9 @@ bool PathInterpolator::fill() noexcept {
       prep_.push(m, ready_);
     }
     return true;
+  } catch (const planner::KinematicError& e) {  // the planner carries the ring token
+    message_ = "line " + std::to_string(programmed(e.line()).line) + ": " + e.what();
+    return false;
   } catch (const std::exception& e) {
     message_ = e.what();
     return false;
@@ -317,8 +321,11 @@ Status PathInterpolator::step() noexcept {
       const planner::Move& prog = *c.programmed;
       double settle = 0.0;
       for (std::size_t i = 0; i < axes_.size(); ++i) {
-        const bool moved = prog.end[i] != prog.start[i] ||
-                           (prog.arc && (prog.arc->axis_1 == i || prog.arc->axis_2 == i));
+        bool on_arc = prog.arc && (prog.arc->axis_1 == i || prog.arc->axis_2 == i);
+        if (prog.arc && prog.arc_plane)  // a plane under a rotated #CS: X, Y and Z move
+          on_arc = prog.arc_plane->axes[0] == i || prog.arc_plane->axes[1] == i ||
+                   prog.arc_plane->axes[2] == i;
+        const bool moved = prog.end[i] != prog.start[i] || on_arc;
         // The window P-AXIS-00236 is reached when the command is on the target (no following
         // error model yet; docs/ipo.md): only the settling time P-AXIS-00532 is waited for.
         if (moved) settle = std::max(settle, exact_stop_[i].settle_time);

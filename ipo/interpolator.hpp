@@ -92,6 +92,10 @@ struct Config {
   /// cycles, until release_exact_stop() instead of for the settling time (the channel tests
   /// the window P-AXIS-00236 on the axes' actual positions).
   bool hold_exact_stop = false;
+  /// Under a kinematic transform (#TRAFO ON): `axes` are the Cartesian X, Y, Z (...) and the
+  /// path is also limited so that every joint keeps its own v, a, j (planner::Preparer::
+  /// set_joints); the per-cycle joint setpoints come from ipo::JointStage (joint_stage.hpp).
+  std::optional<planner::JointLimits> joints;
 };
 
 /// What the channel did in a cycle.

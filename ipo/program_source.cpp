@@ -81,6 +81,9 @@ Config machine_config(const machines::Machine& machine, double t_cycle) {
     l.d_max = std::min(d.dec_feed, d.acc_max);  // P-AXIS-00002 capped by P-AXIS-00008
     l.j_max = d.jerk_feed();
     l.c0 = d.velo_jump_factor;  // NCSIM-AXIS-020
+    // G00 slope: P-AXIS-00004 capped by P-AXIS-00008; jerk P-AXIS-00004 / P-AXIS-00200.
+    l.a_rapid = std::min(d.acc_rapid, d.acc_max);
+    l.j_rapid = d.ramp_rapid > 0.0 ? d.jerk_rapid() : 0.0;
     c.axes.push_back(l);
     const machines::Monitoring& m = machine.axes[i].monitoring;
     c.exact_stop.push_back({m.exact_stop_window, m.settling_time.value_or(0.0)});
@@ -94,7 +97,8 @@ ProgramSource::ProgramSource(interp::Interpreter& interp, const machines::Machin
     : interp_(interp),
       machine_(machine),
       axes_(interpolated_axes(machine)),
-      slot_(machine.axes.size(), -1) {
+      slot_(machine.axes.size(), -1),
+      cs_(machine.channel.cs_rotation_sequence) {
   if (axes_.empty() || axes_.size() > planner::kMaxAxes) {
     throw std::invalid_argument(
         "machine '" + machine.name + "' has " + std::to_string(axes_.size()) +
@@ -105,6 +109,11 @@ ProgramSource::ProgramSource(interp::Interpreter& interp, const machines::Machin
     if (machine.axes[axes_[k]].kind == AxisKind::linear) path_axes_ |= planner::AxisMask{1} << k;
   }
   if (path_axes_ == 0) path_axes_ = (planner::AxisMask{1} << axes_.size()) - 1;
+  const char* names[3] = {"X", "Y", "Z"};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const machines::AxisParams* a = machine.find_axis(names[k]);
+    if (a != nullptr) xyz_[k] = static_cast<int>(a - machine.axes.data());
+  }
 }
 
 void ProgramSource::fail(std::uint32_t line, const std::string& what) {
@@ -118,11 +127,6 @@ void ProgramSource::fail(std::uint32_t line, const std::string& what) {
 }
 
 planner::Move ProgramSource::to_move(const interp::Motion& m, std::uint32_t line) {
-  if (m.frame.space != interp::Space::mcs || m.frame.kinematics) {
-    fail(line, "motion in frame " + interp::frame_name(m.frame) +
-                   " (the interpolator takes MCS motion only; #CS, #SYNC and #TRAFO frames come "
-                   "with the channel loop)");
-  }
   for (std::size_t i = 0; i < machine_.axes.size(); ++i) {
     if (slot_[i] < 0 && (((m.programmed >> i) & 1u) != 0 || m.end[i] != m.start[i])) {
       fail(line, "motion of axis " + machine_.axes[i].name +
@@ -132,28 +136,20 @@ planner::Move ProgramSource::to_move(const interp::Motion& m, std::uint32_t line
   planner::Move mv;
   mv.axis_count = static_cast<std::uint8_t>(axes_.size());
   mv.path_axes = path_axes_;
-  for (std::size_t k = 0; k < axes_.size(); ++k) {
-    mv.start[k] = m.start[axes_[k]];
-    mv.end[k] = m.end[axes_[k]];
-  }
+  mv.start = to_mcs(m.frame, m.start, line);
+  mv.end = to_mcs(m.frame, m.end, line);
   mv.rapid = m.kind == interp::MotionKind::rapid;
   mv.feed = m.feed;
   mv.block_time = m.block_time;
   mv.end_feed = m.end_feed;
-  if (m.arc) {
-    const int a1 = slot_[m.arc->axis_1];
-    const int a2 = slot_[m.arc->axis_2];
-    if (a1 < 0 || a2 < 0) fail(line, "arc in a plane with a non-interpolated axis");
-    planner::Arc arc;
-    arc.axis_1 = static_cast<std::uint8_t>(a1);
-    arc.axis_2 = static_cast<std::uint8_t>(a2);
-    arc.centre_1 = m.arc->centre_1;
-    arc.centre_2 = m.arc->centre_2;
-    arc.clockwise = m.kind == interp::MotionKind::arc_cw;
-    arc.full_circle = m.arc->full_circle;
-    mv.arc = arc;
-  }
-  const interp::ModalSnapshot& s = m.modal;
+  if (m.arc) arc_to_mcs(m, line, mv);
+  set_modal(m.modal, mv, line);
+  mv.line = line;
+  return mv;
+}
+
+void ProgramSource::set_modal(const interp::ModalSnapshot& s, planner::Move& mv,
+                              std::uint32_t line) {
   mv.transition = to_planner(s.transition);
   mv.exact_stop = s.exact_stop;
   if (s.contouring) {
@@ -166,8 +162,6 @@ planner::Move ProgramSource::to_move(const interp::Motion& m, std::uint32_t line
   }
   mv.transvelmin = s.transvelmin;
   mv.slope = to_planner(s.slope);
-  mv.line = line;
-  return mv;
 }
 
 bool ProgramSource::next(Item& out) {
@@ -181,6 +175,12 @@ bool ProgramSource::next(Item& out) {
 
 bool ProgramSource::pull(Item& out) {
   for (;;) {
+    if (queue_size_ > 0) {  // spline pieces first: they come before the next command
+      out = queue_[queue_head_];
+      queue_head_ = (queue_head_ + 1) % queue_.size();
+      --queue_size_;
+      return true;
+    }
     // Barriers are answered from the decode-only state (docs/ipo.md): run-time answers come
     // with the channel loop.
     std::optional<interp::Command> cmd = interp_.next_decode_only();
@@ -212,16 +212,17 @@ bool ProgramSource::pull(Item& out) {
                                std::is_same_v<T, interp::Barrier>) {
             // pass: no motion (M00/M01 do not stop: there is no operator to press start)
           } else if constexpr (std::is_same_v<T, interp::SelectCs>) {
-            // pass: a motion in the #CS frame is refused where it comes
+            select_cs(body, line);
           } else if constexpr (std::is_same_v<T, interp::Kinematics>) {
             if (body.trafo_on) fail(line, "#TRAFO ON (kinematics come with the channel loop)");
           } else if constexpr (std::is_same_v<T, interp::CaxTrack>) {
             if (body.on) fail(line, "#CAXTRACK ON");
           } else if constexpr (std::is_same_v<T, interp::SplineBegin>) {
-            fail(line, "#SPLINE (spline paths are not interpolated yet)");
-          } else if constexpr (std::is_same_v<T, interp::SplinePoint> ||
-                               std::is_same_v<T, interp::SplineEnd>) {
-            fail(line, "#SPLINE (spline paths are not interpolated yet)");
+            spline_begin(body, line);
+          } else if constexpr (std::is_same_v<T, interp::SplinePoint>) {
+            spline_point(body, line);
+          } else if constexpr (std::is_same_v<T, interp::SplineEnd>) {
+            spline_end(line);
           } else if constexpr (std::is_same_v<T, interp::AxisCommand>) {
             fail(line, "independent axis move INDP (comes with the axis layer)");
           } else if constexpr (std::is_same_v<T, interp::MoveVelocity>) {

@@ -6,25 +6,34 @@
 // Inputs: an interp::Interpreter (pulled lazily), the machine it decodes for.
 // Outputs: ipo::Item values (planner::Move / ipo::Dwell) in program order; Config with one
 // AxisLimits and one ExactStop per interpolated axis (docs/ipo.md "From program to cycles").
-// Method: Motion (rapid, linear, arc) in MCS becomes a Move in the interpolated-axis order; G04
-// a Dwell; Tech, Message, ProgramStop (M00/M01 do not stop in time/run: no operator), Flush,
-// WaitIndp, #CS selections and the switching-off forms of #TRAFO / #CAXTRACK pass; End ends
-// the stream. Barriers are answered from the decode-only state (next_decode_only): run-time
-// answers come with the channel loop. Every other command is a program error
-// `not supported: <what>` (NC6001) at its line: nothing is skipped silently.
-// Errors end the stream like End does, and error() holds the diagnostic: the blocks decoded
-// before the faulty one run to their end and the path stops there, then the caller reports
-// the error (the channel stops at the faulty block; docs/ipo.md). Memory: one Command.
+// Method: Motion (rapid, linear, arc) becomes a Move in the interpolated-axis order, in MCS:
+// under a #CS chain its points go through the chain's frame here (program_frames.cpp; an arc
+// under a rotation becomes an arc in the rotated plane, planner::ArcPlane); a #SPLINE section
+// (SplineBegin / SplinePoint / SplineEnd) goes through planner::SplineBuilder and becomes one
+// spline Move per curve piece (program_spline.cpp; never chopped into lines); G04 a Dwell;
+// Tech, Message, ProgramStop (M00/M01 do not stop in time/run: no operator), Flush, WaitIndp
+// and the switching-off forms of #TRAFO / #CAXTRACK pass; #CS selections update the adapter's
+// own #CS stack (the interpreter's rules, machines::CsStack); End ends the stream. Barriers are
+// answered from the decode-only state (next_decode_only): run-time answers come with the channel
+// loop. Every other command is a program error `not supported: <what>` (NC6001) at its line:
+// nothing is skipped silently. Errors end the stream like End does, and error() holds the
+// diagnostic: the blocks decoded before the faulty one run to their end and the path stops there,
+// then the caller reports the error (the channel stops at the faulty block; docs/ipo.md). Memory:
+// one Command.
 
+#include <array>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "core/diagnostic.hpp"
 #include "interp/interpreter.hpp"
 #include "ipo/interpolator.hpp"
+#include "machines/cs_stack.hpp"
 #include "machines/machine.hpp"
+#include "planner/spline.hpp"
 
 namespace ncsim::ipo {
 
@@ -38,9 +47,11 @@ std::vector<std::uint8_t> interpolated_axes(const machines::Machine& machine);
 /// The interpolator Config of `machine` (docs/ipo.md "Machine limits"): per interpolated axis
 /// v_max P-AXIS-00212, v_reference = v_max (no ISG key), v_rapid P-AXIS-00209,
 /// A+ = min(P-AXIS-00001, P-AXIS-00008), A- = min(P-AXIS-00002, P-AXIS-00008),
-/// J = Dynamics::jerk_feed(), C0 NCSIM-AXIS-020; ExactStop window P-AXIS-00236, settling
-/// P-AXIS-00532 (0 when not monitored); window P-CHAN-00650 look-ahead blocks; cycle `t_cycle`
-/// [s] (the channel list has no cycle key in ncsim yet: the CLI's default is 1 ms).
+/// J = Dynamics::jerk_feed(), C0 NCSIM-AXIS-020, G00 slope a_rapid = min(P-AXIS-00004,
+/// P-AXIS-00008) and j_rapid = a_rapid / P-AXIS-00200 (Dynamics::jerk_rapid); ExactStop window
+/// P-AXIS-00236, settling P-AXIS-00532 (0 when not monitored); window P-CHAN-00650 look-ahead
+/// blocks; cycle `t_cycle` [s] (the channel list has no cycle key in ncsim yet: the CLI's default
+/// is 1 ms).
 Config machine_config(const machines::Machine& machine, double t_cycle);
 
 class ProgramSource final : public Source {
@@ -61,6 +72,21 @@ class ProgramSource final : public Source {
   bool pull(Item& out);
   [[noreturn]] void fail(std::uint32_t line, const std::string& what);
   planner::Move to_move(const interp::Motion& m, std::uint32_t line);
+  /// The modal fields of a Move from the block's snapshot (transition, contour, slope, ...).
+  void set_modal(const interp::ModalSnapshot& s, planner::Move& mv, std::uint32_t line);
+  /// Interpolated-axis values of machine values `p` given in `frame`, in MCS (program_frames).
+  planner::AxisVec to_mcs(const interp::CoordFrame& frame, const interp::AxisValues& p,
+                          std::uint32_t line);
+  /// Sets move.arc (and move.arc_plane under a rotated #CS) from the motion's arc, in MCS
+  /// (program_frames.cpp).
+  void arc_to_mcs(const interp::Motion& m, std::uint32_t line, planner::Move& move);
+  /// #CS DEF / ON / OFF / OFF ALL on the adapter's stack (program_frames.cpp).
+  void select_cs(const interp::SelectCs& sel, std::uint32_t line);
+  /// #SPLINE section (program_spline.cpp): completed pieces are queued as spline Moves.
+  void spline_begin(const interp::SplineBegin& b, std::uint32_t line);
+  void spline_point(const interp::SplinePoint& p, std::uint32_t line);
+  void spline_end(std::uint32_t line);
+  void queue_pieces(std::span<const planner::SplinePiece> pieces);
 
   interp::Interpreter& interp_;
   const machines::Machine& machine_;
@@ -70,6 +96,17 @@ class ProgramSource final : public Source {
   std::optional<core::Diagnostic> error_;
   std::uint32_t line_ = 0;
   std::uint16_t file_ = 0;  ///< Command::file of the last command
+  // #CS frames (program_frames.cpp).
+  machines::CsStack cs_;
+  machines::Frame cs_frame_;            ///< cs_.active_frame(): PCS -> MCS
+  std::array<int, 3> xyz_{-1, -1, -1};  ///< machine indices of X, Y, Z (-1: none)
+  // #SPLINE (program_spline.cpp): the builder of the open section, its modal Move, and the
+  // pieces not yet handed out (at most 4: SplineBuilder::finish()).
+  std::optional<planner::SplineBuilder> spline_;
+  planner::Move spline_modal_;
+  std::array<planner::Move, 4> queue_{};
+  std::size_t queue_head_ = 0;
+  std::size_t queue_size_ = 0;
 };
 
 }  // namespace ncsim::ipo

@@ -109,10 +109,9 @@ TEST_CASE("an unsupported command is NC6001 at its line, never skipped") {
   CHECK(set.error_line == 2);
   CHECK(set.error_message.find("not supported: G92") == 0);
 
-  const Pulled cs = pull("N10 #CS ON [1][10, 0, 0, 0, 0, 0]\nN20 G01 X10 F600\nN30 M30\n");
-  CHECK(cs.error_id == ipo::kNotSupportedId);
-  CHECK(cs.error_line == 2);
-  CHECK(cs.error_message.find("frame PCS") != std::string::npos);
+  const Pulled kin = pull("N10 #TRAFO ON\nN20 G01 X10 F600\nN30 M30\n", "delta_picker");
+  CHECK(kin.error_id == ipo::kNotSupportedId);
+  CHECK(kin.error_line == 1);
 }
 
 TEST_CASE("an interpreter error ends the stream with the interpreter's diagnostic") {
@@ -135,6 +134,8 @@ TEST_CASE("machine limits: portal_3x axis lists map to the documented keys") {
   CHECK(c.axes[0].d_max == std::min(x.dec_feed, x.acc_max));
   CHECK(c.axes[0].j_max == x.jerk_feed());
   CHECK(c.axes[0].c0 == x.velo_jump_factor);
+  CHECK(c.axes[0].a_rapid == std::min(x.acc_rapid, x.acc_max));  // P-AXIS-00004, 00008
+  CHECK(c.axes[0].j_rapid == x.acc_rapid / x.ramp_rapid);        // P-AXIS-00004 / 00200
   REQUIRE(c.exact_stop.size() == 3);
   CHECK(c.exact_stop[0].window == m.axes[0].monitoring.exact_stop_window);
   CHECK(c.exact_stop[0].settle_time == m.axes[0].monitoring.settling_time.value_or(0.0));

@@ -43,6 +43,26 @@ std::optional<DerivativeBounds> joint_bounds(const Segment& segment, const Joint
   return b;
 }
 
+bool joint_derivatives(const PathPoint& p, std::size_t axis_count, const JointMap& inverse,
+                       std::size_t joint_count, AxisVec& d1, AxisVec& d2) {
+  const double d = kJointStep;
+  std::array<AxisVec, 3> q{};
+  for (int m = 0; m < 3; ++m) {
+    const double h = (m - 1) * d;
+    AxisVec x = p.x;
+    for (std::size_t i = 0; i < axis_count; ++i)
+      x[i] += h * p.d1[i] + 0.5 * h * h * p.d2[i] + h * h * h / 6.0 * p.d3[i];
+    if (!inverse(x, q[m])) return false;
+  }
+  d1 = AxisVec{};
+  d2 = AxisVec{};
+  for (std::size_t i = 0; i < joint_count; ++i) {
+    d1[i] = (q[2][i] - q[0][i]) / (2.0 * d);
+    d2[i] = (q[2][i] - 2.0 * q[1][i] + q[0][i]) / (d * d);
+  }
+  return true;
+}
+
 std::optional<PathLimits> path_limits(const Segment& segment, const Move& move,
                                       std::span<const AxisLimits> axes, const JointMap& inverse,
                                       std::span<const AxisLimits> joints) {

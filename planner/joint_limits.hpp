@@ -46,6 +46,13 @@ inline constexpr double kJointMargin = 0.05;   ///< relative margin on sampled |
 std::optional<DerivativeBounds> joint_bounds(const Segment& segment, const JointMap& inverse,
                                              std::size_t joint_count);
 
+/// dq/ds and d2q/ds2 of the joints at one path point (the same Taylor polynomial and central
+/// differences as joint_bounds); false when IK fails there. Used at corners: the joint
+/// velocity step at a C0 joint is v (q'_out - q'_in), the acceleration step at C1
+/// v^2 (q''_out - q''_in) (docs/planner.md "Kinematics").
+bool joint_derivatives(const PathPoint& point, std::size_t axis_count, const JointMap& inverse,
+                       std::size_t joint_count, AxisVec& d1, AxisVec& d2);
+
 /// Path limits of `segment` under the axis limits AND the joint limits (the smaller of each).
 /// nullopt when IK fails somewhere on the segment.
 std::optional<PathLimits> path_limits(const Segment& segment, const Move& move,

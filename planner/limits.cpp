@@ -3,6 +3,7 @@
 #include "planner/limits.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -55,7 +56,15 @@ PathLimits path_limits(const Segment& segment, const Move& move, std::span<const
   } else {
     v_programmed = move.feed;
   }
-  PathLimits out = limits_from_bounds(b, axes.first(n), v_programmed, jerk_limited(move.slope));
+  // G00 has its own slope (P-AXIS-00004 acceleration, P-AXIS-00200 ramp time; move.hpp).
+  std::array<AxisLimits, kMaxAxes> rapid{};
+  std::span<const AxisLimits> used = axes.first(n);
+  if (move.rapid) {
+    for (std::size_t i = 0; i < n; ++i)
+      rapid[i] = rapid_limits(axes[i]);
+    used = std::span<const AxisLimits>(rapid.data(), n);
+  }
+  PathLimits out = limits_from_bounds(b, used, v_programmed, jerk_limited(move.slope));
   // The rapid velocity already is the axes' own; it is never "capped".
   if (move.rapid && out.limit == VelocityLimit::axis_velocity)
     out.limit = VelocityLimit::programmed;

@@ -45,7 +45,38 @@ void validate(const Move& move) {
     finite(*move.transvelmin, at + "transvelmin");
     if (*move.transvelmin < 0.0) fail(at + "transvelmin < 0");
   }
-  if (move.arc) {
+  if (move.arc && move.spline) fail(at + "a move is an arc or a spline piece, not both");
+  if (move.spline) {
+    for (std::size_t i = 0; i < move.axis_count; ++i) {
+      finite(move.spline->c1[i], at + "spline c1[" + std::to_string(i) + "]");
+      finite(move.spline->c2[i], at + "spline c2[" + std::to_string(i) + "]");
+    }
+  }
+  if (move.arc && move.arc_plane) {
+    const ArcPlane& g = *move.arc_plane;
+    double uu = 0.0, vv = 0.0, uv = 0.0;
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (g.axes[k] >= move.axis_count)
+        fail(at + "arc plane axis " + std::to_string(g.axes[k]) + " invalid for " +
+             std::to_string(move.axis_count) + " axes");
+      finite(g.u[k], at + "arc plane u");
+      finite(g.v[k], at + "arc plane v");
+      finite(g.centre[k], at + "arc plane centre");
+      uu += g.u[k] * g.u[k];
+      vv += g.v[k] * g.v[k];
+      uv += g.u[k] * g.v[k];
+    }
+    if (g.axes[0] == g.axes[1] || g.axes[1] == g.axes[2] || g.axes[0] == g.axes[2])
+      fail(at + "arc plane axes not distinct");
+    if (std::abs(uu - 1.0) > 1e-9 || std::abs(vv - 1.0) > 1e-9 || std::abs(uv) > 1e-9)
+      fail(at + "arc plane u, v not orthonormal");
+    double x = 0.0, y = 0.0;
+    for (std::size_t k = 0; k < 3; ++k) {
+      x += (move.start[g.axes[k]] - g.centre[k]) * g.u[k];
+      y += (move.start[g.axes[k]] - g.centre[k]) * g.v[k];
+    }
+    positive(std::hypot(x, y), at + "arc radius");
+  } else if (move.arc) {
     const Arc& arc = *move.arc;
     if (arc.axis_1 >= move.axis_count || arc.axis_2 >= move.axis_count || arc.axis_1 == arc.axis_2)
       fail(at + "arc plane axes " + std::to_string(arc.axis_1) + "/" + std::to_string(arc.axis_2) +
@@ -72,8 +103,21 @@ void validate(std::span<const AxisLimits> limits) {
     positive(ax.d_max, at + "d_max");
     positive(ax.j_max, at + "j_max");
     finite(ax.c0, at + "c0 (VELOJUMP factor)");
+    finite(ax.a_rapid, at + "a_rapid (P-AXIS-00004)");
+    finite(ax.j_rapid, at + "j_rapid (P-AXIS-00004 / 00200)");
+    if (ax.a_rapid < 0.0)
+      fail(at + "a_rapid (P-AXIS-00004) < 0, got " + std::to_string(ax.a_rapid));
+    if (ax.j_rapid < 0.0)
+      fail(at + "j_rapid (P-AXIS-00004 / 00200) < 0, got " + std::to_string(ax.j_rapid));
     if (ax.c0 < 0.0) fail(at + "c0 (VELOJUMP factor) < 0, got " + std::to_string(ax.c0));
   }
+}
+
+AxisLimits rapid_limits(const AxisLimits& axis) noexcept {
+  AxisLimits r = axis;
+  if (axis.a_rapid > 0.0) r.a_max = r.d_max = axis.a_rapid;
+  if (axis.j_rapid > 0.0) r.j_max = axis.j_rapid;
+  return r;
 }
 
 }  // namespace ncsim::planner

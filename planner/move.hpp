@@ -14,6 +14,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 
@@ -41,7 +42,19 @@ enum class Contour : std::uint8_t {
   tolerance,  ///< G61 / G261 with #CONTOUR MODE DEV: a blend inside a ball of radius path_dev
 };
 
-/// Circle plane (G17 / G18 / G19) given as the two machine axes of the plane.
+/// A circle plane that is not spanned by two machine axes: an arc programmed under a rotated
+/// #CS frame, transformed to machine coordinates (docs/planner.md "Arcs in a general plane").
+/// The plane is spanned by the orthonormal u, v over the three machine axes `axes` (X, Y, Z);
+/// the arc turns from u towards v (counter-clockwise about n = u x v) unless `clockwise`.
+struct ArcPlane {
+  std::array<std::uint8_t, 3> axes{0, 1, 2};  ///< machine axes of u, v, centre components
+  std::array<double, 3> u{1.0, 0.0, 0.0};     ///< first in-plane unit vector [1]
+  std::array<double, 3> v{0.0, 1.0, 0.0};     ///< second in-plane unit vector, u . v = 0 [1]
+  std::array<double, 3> centre{};             ///< a point of the circle's axis [mm]
+};
+
+/// Circle plane (G17 / G18 / G19) given as the two machine axes of the plane (a general plane
+/// is Move::arc_plane, which then replaces axis_1 / axis_2 / centre_1 / centre_2).
 struct Arc {
   std::uint8_t axis_1 = 0;   ///< first plane axis (X for G17, Z for G18, Y for G19)
   std::uint8_t axis_2 = 1;   ///< second plane axis
@@ -51,13 +64,24 @@ struct Arc {
   bool full_circle = false;  ///< start == end in the plane means one full turn
 };
 
+/// Inner control points of a cubic Bezier spline piece (#SPLINE, spline.hpp); the outer ones
+/// are Move::start and Move::end.
+struct SplineControl {
+  AxisVec c1{};  ///< second control point [mm | deg]
+  AxisVec c2{};  ///< third control point [mm | deg]
+};
+
 /// One path block (a line, or an arc / helix when `arc` is set).
 struct Move {
-  std::uint8_t axis_count = 3;       ///< machine axes in use, 1..kMaxAxes
-  AxisMask path_axes = 0b111;        ///< axes whose motion measures the path length (main axes)
-  AxisVec start{};                   ///< [mm | deg]
-  AxisVec end{};                     ///< [mm | deg]
-  std::optional<Arc> arc;            ///< G02/G03: circle in the plane; other axes move linearly
+  std::uint8_t axis_count = 3;        ///< machine axes in use, 1..kMaxAxes
+  AxisMask path_axes = 0b111;         ///< axes whose motion measures the path length (main axes)
+  AxisVec start{};                    ///< [mm | deg]
+  AxisVec end{};                      ///< [mm | deg]
+  std::optional<Arc> arc;             ///< G02/G03: circle in the plane; other axes move linearly
+  std::optional<ArcPlane> arc_plane;  ///< with `arc`: a plane not spanned by two machine axes
+  /// A #SPLINE piece: cubic Bezier (not with `arc`). Shared and immutable, so that lines and
+  /// arcs, the bulk of every program, do not carry 256 bytes of control points in each copy.
+  std::shared_ptr<const SplineControl> spline;
   bool rapid = false;                ///< G00: per-axis MIN(rapid, reference, max) (000 l.360)
   double feed = 0.0;                 ///< programmed F [mm/s]; ignored for rapid
   std::optional<double> block_time;  ///< G93: machining time of the block [s]
@@ -80,7 +104,14 @@ struct AxisLimits {
   double d_max = 0.0;        ///< maximum deceleration |A-| [mm/s^2]
   double j_max = 0.0;        ///< maximum jerk [mm/s^3]
   double c0 = 1.0;           ///< VELOJUMP factor C0 (000 l.105-108), >= 0
+  /// G00 acceleration, both ways (P-AXIS-00004) [mm/s^2]; 0: G00 uses a_max / d_max.
+  double a_rapid = 0.0;
+  /// G00 jerk (P-AXIS-00004 / P-AXIS-00200) [mm/s^3]; 0: G00 uses j_max.
+  double j_rapid = 0.0;
 };
+
+/// The limits a G00 block is planned with: a_rapid / j_rapid where set, else the feed values.
+AxisLimits rapid_limits(const AxisLimits& axis) noexcept;
 
 /// Channel-wide planner settings.
 struct ChannelLimits {

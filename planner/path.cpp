@@ -1,6 +1,7 @@
 // planner/path: lines, arcs and helices (closed form); blends are in path_bezier.cpp.
-// Arc notation: theta(s) = theta0 + omega * s, omega = sweep / L; plane axis 1 is
-// c1 + r cos(theta), plane axis 2 is c2 + r sin(theta); every other axis moves linearly.
+// Arc notation: theta(s) = theta0 + omega * s, omega = sweep / L; x(s) = o + lin s +
+// r (cos(theta) u + sin(theta) v): for G17 / G18 / G19 u, v are the plane's unit axes (plane
+// axis 1 is c1 + r cos(theta), axis 2 c2 + r sin(theta)); every other axis moves linearly.
 
 #include "planner/path.hpp"
 
@@ -44,6 +45,15 @@ AxisMask effective_metric(std::uint8_t axis_count, AxisMask path_axes, const Axi
   return moved > 1e-12 ? (path_axes & all) : all;
 }
 
+AxisMask polygon_metric(std::uint8_t axis_count, AxisMask path_axes,
+                        const std::array<AxisVec, 4>& c) {
+  AxisVec travel{};
+  for (std::size_t m = 0; m < 3; ++m)
+    for (std::size_t i = 0; i < axis_count; ++i)
+      travel[i] += std::abs(c[m + 1][i] - c[m][i]);
+  return effective_metric(axis_count, path_axes, travel);
+}
+
 double Segment::metric_norm(const AxisVec& v) const noexcept {
   double sum = 0.0;
   for (std::size_t i = 0; i < n_; ++i)
@@ -75,14 +85,42 @@ Segment Segment::arc(const Move& move) {
   Segment seg;
   seg.n_ = move.axis_count;
   ArcGeom g;
-  g.a1 = arc.axis_1;
-  g.a2 = arc.axis_2;
-  g.c1 = arc.centre_1;
-  g.c2 = arc.centre_2;
-  const double x0 = move.start[g.a1] - g.c1;
-  const double y0 = move.start[g.a2] - g.c2;
-  const double x1 = move.end[g.a1] - g.c1;
-  const double y1 = move.end[g.a2] - g.c2;
+  AxisMask plane = 0;
+  if (move.arc_plane) {
+    // A general plane (docs/planner.md "Arcs in a general plane"): centre and u, v over X, Y, Z.
+    const ArcPlane& p = *move.arc_plane;
+    g.o = move.start;
+    for (std::size_t k = 0; k < 3; ++k) {
+      g.u[p.axes[k]] = p.u[k];
+      g.v[p.axes[k]] = p.v[k];
+      plane |= AxisMask{1} << p.axes[k];
+    }
+    // o: the start with its in-plane part replaced by the centre's.
+    double cu = 0.0, cv = 0.0, su = 0.0, sv = 0.0;
+    for (std::size_t k = 0; k < 3; ++k) {
+      cu += p.centre[k] * p.u[k];
+      cv += p.centre[k] * p.v[k];
+      su += move.start[p.axes[k]] * p.u[k];
+      sv += move.start[p.axes[k]] * p.v[k];
+    }
+    for (std::size_t k = 0; k < 3; ++k)
+      g.o[p.axes[k]] += (cu - su) * p.u[k] + (cv - sv) * p.v[k];
+  } else {
+    g.o = move.start;
+    g.o[arc.axis_1] = arc.centre_1;
+    g.o[arc.axis_2] = arc.centre_2;
+    g.u[arc.axis_1] = 1.0;
+    g.v[arc.axis_2] = 1.0;
+    plane = (AxisMask{1} << arc.axis_1) | (AxisMask{1} << arc.axis_2);
+  }
+  // In-plane coordinates of start and end relative to the centre.
+  double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;
+  for (std::size_t i = 0; i < move.axis_count; ++i) {
+    x0 += (move.start[i] - g.o[i]) * g.u[i];
+    y0 += (move.start[i] - g.o[i]) * g.v[i];
+    x1 += (move.end[i] - g.o[i]) * g.u[i];
+    y1 += (move.end[i] - g.o[i]) * g.v[i];
+  }
   g.radius = std::hypot(x0, y0);
   g.theta0 = std::atan2(y0, x0);
   // Sweep in (0, 2 pi] counter-clockwise, [-2 pi, 0) clockwise; a closed arc is a full turn.
@@ -94,21 +132,22 @@ Segment Segment::arc(const Move& move) {
     sweep = arc.clockwise ? -kTwoPi : kTwoPi;
   else
     sweep = arc.clockwise ? ccw - kTwoPi : ccw;
-  // Arc length: the plane axes always measure it; the other path axes add the helix rise.
+  // The rise: the displacement without its in-plane part (0 on the axes of a principal plane).
   AxisVec delta{};
-  for (std::size_t i = 0; i < move.axis_count; ++i)
-    if (i != g.a1 && i != g.a2) delta[i] = move.end[i] - move.start[i];
-  AxisMask metric = move.path_axes | (AxisMask{1} << g.a1) | (AxisMask{1} << g.a2);
+  for (std::size_t i = 0; i < move.axis_count; ++i) {
+    if (!move.arc_plane && has(plane, i)) continue;
+    delta[i] = move.end[i] - move.start[i] - (x1 - x0) * g.u[i] - (y1 - y0) * g.v[i];
+  }
+  // Arc length: the plane axes always measure it; the other path axes add the helix rise.
   AxisMask all = 0;
   for (std::size_t i = 0; i < move.axis_count; ++i)
     all |= AxisMask{1} << i;
-  seg.metric_ = metric & all;
+  seg.metric_ = (move.path_axes | plane) & all;
   double rise2 = 0.0;
   for (std::size_t i = 0; i < move.axis_count; ++i)
     if (has(seg.metric_, i)) rise2 += delta[i] * delta[i];
   const double planar = g.radius * std::abs(sweep);
   const double length = std::sqrt(planar * planar + rise2);
-  g.p0 = move.start;
   if (length > 0.0) {
     g.omega = sweep / length;
     for (std::size_t i = 0; i < move.axis_count; ++i)
@@ -121,6 +160,10 @@ Segment Segment::arc(const Move& move) {
 
 Segment Segment::from_move(const Move& move) {
   if (move.arc) return arc(move);
+  if (move.spline) {
+    const std::array<AxisVec, 4> c{move.start, move.spline->c1, move.spline->c2, move.end};
+    return cubic(move.axis_count, polygon_metric(move.axis_count, move.path_axes, c), c);
+  }
   return line(move.axis_count, move.path_axes, move.start, move.end);
 }
 
@@ -151,12 +194,12 @@ AxisVec Segment::point_raw(double s) const noexcept {
     return x;
   }
   if (const auto* a = std::get_if<ArcGeom>(&geom_)) {
-    AxisVec x = a->p0;
-    for (std::size_t i = 0; i < n_; ++i)
-      x[i] += a->lin[i] * s;
+    AxisVec x = a->o;
     const double th = a->theta0 + a->omega * s;
-    x[a->a1] = a->c1 + a->radius * std::cos(th);
-    x[a->a2] = a->c2 + a->radius * std::sin(th);
+    const double rc = a->radius * std::cos(th);
+    const double rs = a->radius * std::sin(th);
+    for (std::size_t i = 0; i < n_; ++i)
+      x[i] += a->lin[i] * s + rc * a->u[i] + rs * a->v[i];
     return x;
   }
   return at_raw(s).x;
@@ -179,23 +222,25 @@ DerivativeBounds Segment::bounds() const noexcept {
     return b;
   }
   if (const auto* a = std::get_if<ArcGeom>(&geom_)) {
-    for (std::size_t i = 0; i < n_; ++i)
-      b.d1[i] = std::abs(a->lin[i]);
     const double t0 = a->theta0 + a->omega * s_lo_;
     const double t1 = a->theta0 + a->omega * s_hi_;
     const double lo = std::min(t0, t1);
     const double hi = std::max(t0, t1);
     const double w = std::abs(a->omega);
     const double r = a->radius;
-    const double c = max_abs_cos(lo, hi);
-    const double s = max_abs_sin(lo, hi);
-    // x1 = r cos: |x1'| = r w |sin|, |x1''| = r w^2 |cos|, |x1'''| = r w^3 |sin|.
-    b.d1[a->a1] = r * w * s;
-    b.d2[a->a1] = r * w * w * c;
-    b.d3[a->a1] = r * w * w * w * s;
-    b.d1[a->a2] = r * w * c;
-    b.d2[a->a2] = r * w * w * s;
-    b.d3[a->a2] = r * w * w * w * c;
+    // Axis i's circle part is r A cos(theta - phi), A = |(u_i, v_i)|, phi = atan2(v_i, u_i):
+    // |x'| <= |lin| + r w A |sin|, |x''| = r w^2 A |cos|, |x'''| = r w^3 A |sin| over the range.
+    for (std::size_t i = 0; i < n_; ++i) {
+      const double amp = std::hypot(a->u[i], a->v[i]);
+      b.d1[i] = std::abs(a->lin[i]);
+      if (amp == 0.0) continue;
+      const double phi = std::atan2(a->v[i], a->u[i]);
+      const double c = max_abs_cos(lo - phi, hi - phi);
+      const double sn = max_abs_sin(lo - phi, hi - phi);
+      b.d1[i] += r * w * amp * sn;
+      b.d2[i] = r * w * w * amp * c;
+      b.d3[i] = r * w * w * w * amp * sn;
+    }
     return b;
   }
   return bezier_bounds();
@@ -210,18 +255,16 @@ PathPoint Segment::at_raw(double s) const noexcept {
   }
   if (const auto* a = std::get_if<ArcGeom>(&geom_)) {
     p.x = point_raw(s);
-    p.d1 = a->lin;
     const double th = a->theta0 + a->omega * s;
     const double c = std::cos(th);
     const double sn = std::sin(th);
     const double r = a->radius;
     const double w = a->omega;
-    p.d1[a->a1] = -r * w * sn;
-    p.d2[a->a1] = -r * w * w * c;
-    p.d3[a->a1] = r * w * w * w * sn;
-    p.d1[a->a2] = r * w * c;
-    p.d2[a->a2] = -r * w * w * sn;
-    p.d3[a->a2] = -r * w * w * w * c;
+    for (std::size_t i = 0; i < n_; ++i) {
+      p.d1[i] = a->lin[i] + r * w * (-sn * a->u[i] + c * a->v[i]);
+      p.d2[i] = -r * w * w * (c * a->u[i] + sn * a->v[i]);
+      p.d3[i] = r * w * w * w * (sn * a->u[i] - c * a->v[i]);
+    }
     return p;
   }
   return bezier_at(std::get<BezierGeom>(geom_), s);

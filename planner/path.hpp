@@ -43,17 +43,17 @@ struct LineGeom {
   AxisVec p0{};   ///< start [mm | deg]
   AxisVec dir{};  ///< (end - start) / length
 };
-/// An arc or helix.
+/// An arc or helix: x(s) = o + lin s + r (cos(theta) u + sin(theta) v), theta = theta0 +
+/// omega s, with u, v orthonormal (two unit machine axes for G17 / G18 / G19, any plane under a
+/// rotated #CS) and lin the helix rise, orthogonal to the plane.
 struct ArcGeom {
-  AxisVec p0{};         ///< start (non-plane axes) [mm | deg]
-  AxisVec lin{};        ///< d x_i/ds of the non-plane axes (0 for the plane axes)
-  std::uint8_t a1 = 0;  ///< plane axes
-  std::uint8_t a2 = 1;
-  double c1 = 0.0;  ///< centre [mm]
-  double c2 = 0.0;
+  AxisVec o{};          ///< centre, plus the start of the axes outside the plane [mm | deg]
+  AxisVec lin{};        ///< d x_i/ds of the linear (helix) part [1]
+  AxisVec u{};          ///< first in-plane unit vector [1]
+  AxisVec v{};          ///< second in-plane unit vector [1]
   double radius = 0.0;  ///< [mm]
   double theta0 = 0.0;  ///< start angle [rad]
-  double omega = 0.0;   ///< d theta / ds, signed (+ counter-clockwise) [rad/mm]
+  double omega = 0.0;   ///< d theta / ds, signed (+ from u towards v) [rad/mm]
 };
 /// A quintic Bezier curve with its arc-length table.
 struct BezierGeom {
@@ -83,9 +83,10 @@ class Segment {
   Segment() = default;
   /// A line from `a` to `b`; `metric` selects the axes that measure the length.
   static Segment line(std::uint8_t axis_count, AxisMask metric, const AxisVec& a, const AxisVec& b);
-  /// An arc or helix from the Move (plane axes from Arc; other axes move linearly in s).
+  /// An arc or helix from the Move (plane from Arc, principal or general; other axes move
+  /// linearly in s). A spline Move (Move::spline) is not an arc: use from_move().
   static Segment arc(const Move& move);
-  /// Line or arc/helix as the Move says.
+  /// Line, arc/helix or cubic spline piece as the Move says.
   static Segment from_move(const Move& move);
   /// A quintic Bezier curve through control points p[0..5] (used by tolerance balls).
   static Segment bezier(std::uint8_t axis_count, AxisMask metric, const std::array<AxisVec, 6>& p);
@@ -128,6 +129,11 @@ class Segment {
   double s_hi_ = 0.0;    ///< window end [mm]
   bool spline_ = false;  ///< a Bezier that is a spline piece, not a blend
 };
+
+/// The metric of a cubic spline piece with control points c: the path axes if its control
+/// polygon moves them, else every axis (spline.hpp).
+AxisMask polygon_metric(std::uint8_t axis_count, AxisMask path_axes,
+                        const std::array<AxisVec, 4>& c);
 
 /// The metric used for a displacement: the path axes if they move, else every axis.
 AxisMask effective_metric(std::uint8_t axis_count, AxisMask path_axes, const AxisVec& delta);

@@ -50,10 +50,26 @@ Preparer::Preparer(std::span<const AxisLimits> axes, ChannelLimits channel)
                                 std::to_string(channel.t_cycle));
 }
 
+void Preparer::set_joints(JointLimits joints) {
+  if (!joints.inverse) throw std::invalid_argument("planner: joint limits without an inverse map");
+  validate(joints.joints);
+  joints_ = std::move(joints);
+}
+
+PathLimits Preparer::limits(const Segment& path, const Move& move) const {
+  if (!joints_) return path_limits(path, move, axes_);
+  const std::optional<PathLimits> l =
+      path_limits(path, move, axes_, joints_->inverse, joints_->joints);
+  if (!l)
+    throw KinematicError(move.line,
+                         "the path leaves the workspace of the kinematic transform [NC3201]");
+  return *l;
+}
+
 PreparedSegment Preparer::make(const Segment& path, const Move& move, bool blend) const {
   PreparedSegment ps;
   ps.path = Chain(path, move.line);
-  ps.limits = path_limits(path, move, axes_);
+  ps.limits = limits(path, move);
   ps.blend = blend;
   ps.line = move.line;
   return ps;
@@ -70,9 +86,31 @@ void Preparer::emit_joint(PreparedSegment in, const Move& in_move, const Segment
       link_velocity(in.path.at(in.path.length()), out_path.at(0.0), n, metric, axes_, channel_,
                     in.limits.v_end, v_out, v_min, jerk_limited(in_move.slope));
   in.v_end = link.v_link;
+  if (joints_ && link.cls != TransitionClass::c2) {
+    // Under a transform the joints take their own steps at a C0 / C1 joint: the VELOJUMP and
+    // C1 rules per joint, on the joints' path derivatives (docs/planner.md "Kinematics").
+    const PathPoint a = in.path.at(in.path.length());
+    const PathPoint b = out_path.at(0.0);
+    AxisVec q1_in{}, q2_in{}, q1_out{}, q2_out{};
+    const std::size_t nj = joints_->joints.size();
+    if (!joint_derivatives(a, n, joints_->inverse, nj, q1_in, q2_in) ||
+        !joint_derivatives(b, n, joints_->inverse, nj, q1_out, q2_out))
+      throw KinematicError(in_move.line,
+                           "a corner outside the workspace of the kinematic transform [NC3201]");
+    // As on the axes: VELOJUMP at C0; the C1 budget on jerk-limited slopes (P-CHAN-00009).
+    double cap = in.v_end;
+    if (link.cls == TransitionClass::c0)
+      cap = velojump_velocity(q1_in, q1_out, joints_->joints, channel_.t_cycle);
+    else if (channel_.limit_c1_by_jerk && jerk_limited(in_move.slope))
+      cap = c1_velocity(q2_in, q2_out, joints_->joints, channel_.t_cycle);
+    if (cap < in.v_end) {
+      in.v_end = cap;
+      in.rule = link.cls == TransitionClass::c0 ? LinkRule::velojump : LinkRule::c1_jerk;
+    }
+  }
   in.a_zero_at_end = link.zero_acceleration;
   in.joint = link.cls;
-  in.rule = link.rule;
+  if (in.v_end == link.v_link) in.rule = link.rule;
   in.stop = StopReason::none;
   output(std::move(in), out);
 }
@@ -127,15 +165,7 @@ void Preparer::push(const Move& move, std::vector<PreparedSegment>& out) {
 
 void Preparer::push(const SplinePiece& piece, const Move& modal,
                     std::vector<PreparedSegment>& out) {
-  Move move = modal;
-  move.axis_count = piece.curve.axis_count();
-  move.start = piece.curve.start();
-  move.end = piece.curve.end();
-  move.arc.reset();
-  move.rapid = false;
-  move.block_time.reset();
-  move.feed = piece.feed;
-  move.line = piece.line;
+  const Move move = spline_move(piece, modal);
   validate(move);
   push_path(move, piece.curve, out);
 }
@@ -166,7 +196,7 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
     if (ball) {
       const Segment in_path = p.path.trimmed(0.0, p.path.length() - ball->cut_in);
       const Segment out_path = seg.trimmed(ball->cut_out, seg.length());
-      const PathLimits out_limits = path_limits(out_path, move, axes_);
+      const PathLimits out_limits = limits(out_path, move);
       // The blend moves at most at the slower of its neighbours' programmed velocities.
       PreparedSegment in_ps = make(in_path, p.move, false);
       Move blend_move = p.move;
@@ -182,7 +212,7 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
       return;
     }
   }
-  emit_joint(make(p.path, p.move, false), p.move, seg, path_limits(seg, move, axes_).v_max, out);
+  emit_joint(make(p.path, p.move, false), p.move, seg, limits(seg, move).v_max, out);
 }
 
 void Preparer::finish(std::vector<PreparedSegment>& out) {

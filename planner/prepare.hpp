@@ -20,10 +20,13 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "planner/chain.hpp"
 #include "planner/corner.hpp"
+#include "planner/joint_limits.hpp"
 #include "planner/limits.hpp"
 #include "planner/move.hpp"
 #include "planner/path.hpp"
@@ -53,6 +56,25 @@ struct PreparedSegment {
   std::uint32_t line = 0;  ///< source line (a blend carries its incoming block's line)
 };
 
+/// The planner cannot plan a segment under the kinematic transform: the inverse transform
+/// fails on it (a point outside the workspace). `line` is the Move's line (the interpolator's
+/// token: it maps it back to the source line).
+class KinematicError : public std::runtime_error {
+ public:
+  KinematicError(std::uint32_t line, const std::string& what)
+      : std::runtime_error(what), line_(line) {}
+  std::uint32_t line() const noexcept { return line_; }
+
+ private:
+  std::uint32_t line_;
+};
+
+/// Joint limits under a kinematic transform (#TRAFO ON; joint_limits.hpp).
+struct JointLimits {
+  JointMap inverse;                ///< Cartesian point -> joint values
+  std::vector<AxisLimits> joints;  ///< one per joint: v, a, j [deg | mm]
+};
+
 class Preparer {
  public:
   /// `axes` must outlive the Preparer (one entry per machine axis in use); throws
@@ -69,6 +91,11 @@ class Preparer {
   void push(const SplinePiece& piece, const Move& modal, std::vector<PreparedSegment>& out);
   /// End of the stream: appends the held segment, ending in a stop.
   void finish(std::vector<PreparedSegment>& out);
+  /// Under a kinematic transform: from now on every segment's limits also keep each joint
+  /// inside its own v, a, j (planner::path_limits with a JointMap; docs/planner.md
+  /// "Kinematics"); a segment the transform cannot map throws KinematicError. Throws
+  /// std::invalid_argument on an empty map or unusable joint limits.
+  void set_joints(JointLimits joints);
 
  private:
   struct Pending {
@@ -80,6 +107,8 @@ class Preparer {
   /// push() with the curve given (a Move's own curve or a spline piece).
   void push_path(const Move& move, const Segment& seg, std::vector<PreparedSegment>& out);
   PreparedSegment make(const Segment& path, const Move& move, bool blend) const;
+  /// Path limits of a segment: the axes', and the joints' under a transform.
+  PathLimits limits(const Segment& path, const Move& move) const;
   /// Appends `in` with its end joint to `out_path` (velocity cap v_out) resolved.
   void emit_joint(PreparedSegment in, const Move& in_move, const Segment& out_path, double v_out,
                   std::vector<PreparedSegment>& out);
@@ -93,6 +122,7 @@ class Preparer {
   ChannelLimits channel_;
   std::optional<Pending> pending_;
   std::optional<PreparedSegment> held_;  ///< chaining stage
+  std::optional<JointLimits> joints_;    ///< set_joints()
 };
 
 }  // namespace ncsim::planner

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -20,16 +21,22 @@ AxisVec axpy(const AxisVec& x, double a, const AxisVec& y, std::size_t n) {
   return r;
 }
 
-/// Metric of a piece: the path axes if its control polygon moves them, else every axis.
-AxisMask piece_metric(std::uint8_t n, AxisMask path_axes, const std::array<AxisVec, 4>& c) {
-  AxisVec travel{};
-  for (std::size_t m = 0; m < 3; ++m)
-    for (std::size_t i = 0; i < n; ++i)
-      travel[i] += std::abs(c[m + 1][i] - c[m][i]);
-  return effective_metric(n, path_axes, travel);
-}
-
 }  // namespace
+
+Move spline_move(const SplinePiece& piece, const Move& modal) {
+  Move move = modal;
+  move.axis_count = piece.curve.axis_count();
+  move.start = piece.control[0];
+  move.end = piece.control[3];
+  move.arc.reset();
+  move.spline =
+      std::make_shared<const SplineControl>(SplineControl{piece.control[1], piece.control[2]});
+  move.rapid = false;
+  move.block_time.reset();
+  move.feed = piece.feed;
+  move.line = piece.line;
+  return move;
+}
 
 SplineBuilder::SplineBuilder(SplineType type, std::uint8_t axis_count, AxisMask path_axes)
     : type_(type), n_(axis_count), path_axes_(path_axes) {
@@ -107,7 +114,7 @@ SplinePiece SplineBuilder::akima_piece(std::uint64_t k) const noexcept {
   const std::array<AxisVec, 4> c = {p0, axpy(p0, h / 3.0, akima_tangent(ik), n_),
                                     axpy(p1, -h / 3.0, akima_tangent(ik + 1), n_), p1};
   const SplineVertex& src = vertex(k + 1);
-  return {Segment::cubic(n_, piece_metric(n_, path_axes_, c), c), src.line, src.feed};
+  return {Segment::cubic(n_, polygon_metric(n_, path_axes_, c), c), src.line, src.feed, c};
 }
 
 double SplineBuilder::knot(std::int64_t k) const noexcept {
@@ -146,7 +153,7 @@ SplinePiece SplineBuilder::bspline_piece(std::uint64_t k) noexcept {
   last_end_ = c[3];
   const bool last = finished_ && k + 4 == count_;
   const SplineVertex& src = vertex(last ? count_ - 1 : k + 2);
-  return {Segment::cubic(n_, piece_metric(n_, path_axes_, c), c), src.line, src.feed};
+  return {Segment::cubic(n_, polygon_metric(n_, path_axes_, c), c), src.line, src.feed, c};
 }
 
 void SplineBuilder::emit(std::uint64_t k) {

@@ -55,10 +55,16 @@ struct SplineVertex {
 
 /// One piece of the spline curve.
 struct SplinePiece {
-  Segment curve;           ///< kind() == SegmentKind::spline
-  std::uint32_t line = 0;  ///< source line (see header comment)
-  double feed = 0.0;       ///< programmed F [mm/s]
+  Segment curve;                     ///< kind() == SegmentKind::spline
+  std::uint32_t line = 0;            ///< source line (see header comment)
+  double feed = 0.0;                 ///< programmed F [mm/s]
+  std::array<AxisVec, 4> control{};  ///< the cubic's Bezier control points (curve is exact)
 };
+
+/// The Move of a spline piece (what a Move stream carries): the modal state (slope, contour,
+/// transition, exact stop, path axes) from `modal`; start, end, feed and line from the piece;
+/// Move::spline its inner control points, so Segment::from_move() gives the same curve.
+Move spline_move(const SplinePiece& piece, const Move& modal);
 
 /// Builds the pieces of one spline section from its points, streaming.
 class SplineBuilder {

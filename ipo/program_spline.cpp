@@ -1,0 +1,59 @@
+// ipo/program_spline: #SPLINE sections at the adapter (docs/ipo.md "Splines at the adapter").
+//
+// SplineBegin opens a planner::SplineBuilder (Akima or B-spline, the interpolated axes, the
+// path axes) whose first vertex is the section's start; each SplinePoint adds its vertex (in MCS:
+// a section under #CS goes through the frame like any motion; Akima's weights and the B-spline's
+// blossoms commute with a rigid frame, so the curve is the frame's image of the PCS curve) with
+// its own line and feed; SplineEnd finishes the section. Every completed piece becomes one
+// spline Move (planner::spline_move: cubic Bezier, planned with arc-length parametrisation,
+// never chopped) carrying the modal state of the #SPLINE ON block. The builder holds a window
+// of 8 points and the queue at most 4 pieces: memory does not grow with the section.
+
+#include <string>
+
+#include "ipo/program_source.hpp"
+
+namespace ncsim::ipo {
+
+void ProgramSource::spline_begin(const interp::SplineBegin& b, std::uint32_t line) {
+  if (spline_) fail(line, "#SPLINE ON inside an open spline section");
+  spline_modal_ = planner::Move{};
+  spline_modal_.axis_count = static_cast<std::uint8_t>(axes_.size());
+  spline_modal_.path_axes = path_axes_;
+  set_modal(b.modal, spline_modal_, line);
+  const planner::SplineType type = b.type == interp::SplineType::bspline
+                                       ? planner::SplineType::bspline
+                                       : planner::SplineType::akima;
+  spline_.emplace(type, static_cast<std::uint8_t>(axes_.size()), path_axes_);
+  // The start vertex carries no feed: no piece takes its feed from it (spline.hpp).
+  queue_pieces(spline_->push({to_mcs(b.frame, b.start, line), line, 0.0}));
+}
+
+void ProgramSource::spline_point(const interp::SplinePoint& p, std::uint32_t line) {
+  if (!spline_) fail(line, "spline point outside a spline section");
+  for (std::size_t i = 0; i < machine_.axes.size(); ++i) {
+    if (slot_[i] < 0 && ((p.programmed >> i) & 1u) != 0) {
+      fail(line, "spline point on axis " + machine_.axes[i].name +
+                     " (spindle / conveyor axes are not path-interpolated)");
+    }
+  }
+  queue_pieces(spline_->push({to_mcs(p.frame, p.point, line), line, p.feed}));
+}
+
+void ProgramSource::spline_end(std::uint32_t line) {
+  if (!spline_) fail(line, "#SPLINE OFF without an open spline section");
+  queue_pieces(spline_->finish());
+  spline_.reset();
+}
+
+void ProgramSource::queue_pieces(std::span<const planner::SplinePiece> pieces) {
+  for (const planner::SplinePiece& piece : pieces) {
+    // Capacity: the queue is empty before each command (pull() hands it out first) and one
+    // command completes at most 4 pieces (SplineBuilder::finish()).
+    const std::size_t at = (queue_head_ + queue_size_) % queue_.size();
+    queue_[at] = planner::spline_move(piece, spline_modal_);
+    ++queue_size_;
+  }
+}
+
+}  // namespace ncsim::ipo
