@@ -216,6 +216,8 @@ void PathInterpolator::report_joint(const planner::PlannedSegment& next, double 
   // Both sides are planned with a = 0 at a window-entry joint: only the geometry steps.
   const double v = next.v_entry;
   jt.v = v;
+  jt.rule = cur_.segment.rule;
+  jt.transvelmin = prog_in.transvelmin.value_or(0.0);
   for (std::size_t i = 0; i < axes_.size(); ++i) {
     jt.dv[i] = v * (p_out.d1[i] - p_in.d1[i]);
     jt.da[i] = v * v * (p_out.d2[i] - p_in.d2[i]);

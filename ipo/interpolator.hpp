@@ -10,7 +10,7 @@
 // P-AXIS-00532 settling time), the channel settings (cycle T) and the look-ahead window size
 // (P-CHAN-00650).
 // Outputs: step() returns the Cycle record of the cycle just done; an optional Sink sees every
-// cycle and every joint the path passes (with its documented VELOJUMP / C1 step).
+// cycle and every joint the path passes (with its documented VELOJUMP / #TRANSVELMIN / C1 step).
 // Method (docs/ipo.md): the look-ahead window is kept full (planner::Preparer +
 // planner::LookAhead); the active segment's profile is evaluated at the local time t_in; a
 // cycle that reaches the end of a segment carries the rest of T into the next one exactly, so
@@ -131,8 +131,10 @@ struct Joint {
   std::uint32_t line = 0;  ///< line of the incoming block
   planner::TransitionClass cls = planner::TransitionClass::c0;
   planner::StopReason stop = planner::StopReason::none;
-  bool jerk_limited = true;  ///< both sides jerk-limited slopes
-  double v = 0.0;            ///< path velocity at the joint [mm/s]
+  bool jerk_limited = true;                                  ///< both sides jerk-limited slopes
+  double v = 0.0;                                            ///< path velocity at the joint [mm/s]
+  planner::LinkRule rule = planner::LinkRule::segment_caps;  ///< what set the link velocity
+  double transvelmin = 0.0;  ///< #TRANSVELMIN of the incoming block [mm/s] (0: not programmed)
   AxisVec dv{};              ///< axis velocity step out - in [mm/s] (VELOJUMP)
   AxisVec da{};              ///< axis acceleration step out - in [mm/s^2] (C1, and C0 on curves)
 };
