@@ -10,14 +10,14 @@ namespace ncsim::ipo {
 
 namespace {
 
-/// Cycles by activity (rapid, feed, dwell, exact stop, starved): integers, so the split adds up
-/// to the total exactly.
-using Counts = std::array<std::uint64_t, 5>;
+/// Cycles by activity (rapid, feed, dwell, exact stop, starved, held): integers, so the split
+/// adds up to the total exactly.
+using Counts = std::array<std::uint64_t, 6>;
 
 void count(Counts& n, const Cycle& c) {
   switch (c.activity) {
     case Activity::motion:
-      ++n[c.rapid ? 0 : 1];
+      ++n[c.held ? 5 : c.rapid ? 0 : 1];
       break;
     case Activity::dwell:
       ++n[2];
@@ -33,14 +33,14 @@ void count(Counts& n, const Cycle& c) {
 
 TimeSplit split_of(const Counts& n, double t) {
   auto s = [&](std::size_t i) { return static_cast<double>(n[i]) * t; };
-  return TimeSplit{s(0), s(1), s(2), s(3), s(4)};
+  return TimeSplit{s(0), s(1), s(2), s(3), s(4), s(5)};
 }
 
 }  // namespace
 
 TimeResult machining_time(Config config, Source& source,
                           const std::function<void(const BlockTime&)>& on_block,
-                          std::uint64_t max_cycles) {
+                          std::uint64_t max_cycles, const Operator& op) {
   config.detail = Detail::path;
   PathInterpolator ipo(std::move(config), source, nullptr);
   const double t = ipo.t_cycle();
@@ -61,6 +61,7 @@ TimeResult machining_time(Config config, Source& source,
       r.stopped = true;
       break;
     }
+    if (op) op(ipo, r.cycles);
     const Status st = ipo.step();
     if (st != Status::running) {
       r.status = st;
@@ -70,6 +71,7 @@ TimeResult machining_time(Config config, Source& source,
     const Cycle& c = ipo.cycle();
     ++r.cycles;
     r.distance += c.distance;
+    r.lost += c.lost;
     count(total, c);
     if (!on_block) continue;
     if (open && c.line != block.line) close();
@@ -82,6 +84,7 @@ TimeResult machining_time(Config config, Source& source,
     }
     ++block_cycles;
     block.distance += c.distance;
+    block.lost += c.lost;
     if (c.activity == Activity::motion) {
       block.feed_programmed = std::max(block.feed_programmed, c.feed);
       block.feed_reached = std::max(block.feed_reached, c.path.v);
