@@ -146,7 +146,8 @@ void PathInterpolator::begin(planner::PlannedSegment&& next) noexcept {
     has_ball_ = has_ball_ || cur_.segment.path.part(p).kind() == planner::SegmentKind::blend;
   if (!plan_entry()) {
     failed_ = true;
-    if (message_.empty()) message_ = "ipo: no velocity plan fits the entry under the override";
+    if (message_.empty())
+      message_ = "NC6300 ipo: no velocity plan fits the entry under the override (internal)";
   }
   interval_jerk_limited_ = interval_jerk_limited_ && std::isfinite(cur_.segment.limits.j_max);
   // The oldest Move still referenced (tokens are the low 32 bits of next_token_'s count).

@@ -420,8 +420,8 @@ TEST_CASE("property: random override and hold sequences keep limits and contour,
     p.moves = 30;
     auto items = random_program(rng, p);
     // One slope per program: a chain that joins a STEP blend to a TRAPEZ block is planned
-    // jerk-limited without the curvature-jerk cap of STEP, which the audit flags at 100 % too
-    // (planner matter, reported; not an override effect).
+    // jerk-limited without the curvature-jerk cap of STEP, which the audit flags (the path
+    // passed there below the 100 % plan's velocity: a planner matter, docs/ipo.md).
     const auto slope = rng() % 4 == 0 ? planner::SlopeType::step : planner::SlopeType::trapez;
     for (Item& it : items)
       if (auto* m = std::get_if<planner::Move>(&it)) m->slope = slope;
