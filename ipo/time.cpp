@@ -96,7 +96,7 @@ TimeResult machining_time(Config config, Source& source,
       stopped = true;
       break;
     }
-    if (op) op(ipo, r.cycles);
+    if (op) op(ipo, n);
     const Status st = ipo.step();
     if (st != Status::running) {
       status = st;
