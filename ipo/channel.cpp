@@ -8,6 +8,9 @@
 #include <cstdlib>
 #include <stdexcept>
 #include <utility>
+#include <variant>
+
+#include "ipo/program_source.hpp"
 
 namespace ncsim::ipo {
 
@@ -176,11 +179,67 @@ bool Channel::exact_stop(const Cycle& c) noexcept {
   return true;
 }
 
+void Channel::note_block(const Cycle& c) noexcept {
+  // A block starts when the active block changes (motion) or a dwell begins. Granularity is the
+  // cycle: a block traversed entirely inside one cycle is not seen (docs/ipo.md "Scenario").
+  if (c.activity == Activity::motion && c.programmed != nullptr && c.programmed != block_) {
+    block_ = c.programmed;
+    started_ = c.programmed->line;
+  } else if (c.activity == Activity::dwell && !in_dwell_) {
+    block_ = nullptr;
+    started_ = c.line;
+  }
+  in_dwell_ = c.activity == Activity::dwell;
+}
+
+bool Channel::play_cycle(Status& status) noexcept {
+  if (stopped_) {
+    status = Status::finished;
+    return false;
+  }
+  if (started_) {
+    player_->block_started(*started_);
+    started_.reset();
+  }
+  const Cycle& last = ipo_.cycle();
+  const std::uint64_t k = last.index;
+  const double t = static_cast<double>(k) * ipo_.t_cycle();
+  for (const scenario::Action& a : player_->step(k, t)) {
+    if (std::holds_alternative<scenario::VeWrite>(a)) continue;  // in player_->ve() already
+    const char* what = std::holds_alternative<scenario::PathOverride>(a)   ? "path override"
+                       : std::holds_alternative<scenario::AxisOverride>(a) ? "axis override"
+                                                                           : "feed hold";
+    Cycle at = last;
+    at.t = t;
+    status = stop(kNotSupportedId,
+                  std::string("not supported: scenario ") + what +
+                      " events in the channel loop (the interpolator's override comes with "
+                      "issue 13's override work)",
+                  at, -1);
+    return false;
+  }
+  if (const auto reason = player_->stop()) {
+    stopped_ = *reason;
+    status = Status::finished;
+    return false;
+  }
+  return true;
+}
+
 Status Channel::step() noexcept {
   if (error_) return Status::error;
+  if (ended_) return *ended_;  // the player sees each cycle once
+  if (player_ != nullptr) {
+    Status ended = Status::finished;
+    if (!play_cycle(ended)) return ended;
+  }
   const Status s = ipo_.step();
-  if (s != Status::running) return s;
+  if (s != Status::running) {
+    ended_ = s;
+    return s;
+  }
   const Cycle& c = ipo_.cycle();
+  if (player_ != nullptr) note_block(c);
   if (!in_exact_stop_ && ipo_.holding_exact_stop()) {
     // The command reached the end of a G60 / G360 block in this cycle (001 l.149: t_1).
     in_exact_stop_ = true;
