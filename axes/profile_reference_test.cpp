@@ -84,7 +84,11 @@ struct Ref {
         if (r > 0 && r < g.t) cut[static_cast<std::size_t>(nc++)] = r;
       }
       cut[static_cast<std::size_t>(nc++)] = g.t;
-      std::sort(cut.begin(), cut.begin() + nc);
+      for (int a_i = 1; a_i < nc; ++a_i)  // insertion sort of <= 5 cut times
+        for (int b_i = a_i;
+             b_i > 0 && cut[static_cast<std::size_t>(b_i)] < cut[static_cast<std::size_t>(b_i - 1)];
+             --b_i)
+          std::swap(cut[static_cast<std::size_t>(b_i)], cut[static_cast<std::size_t>(b_i - 1)]);
       const auto vel = [&](Real x) { return v + x * (a + x * g.j / 2); };
       for (int k = 0; k + 1 < nc; ++k) {
         const Real ta = cut[static_cast<std::size_t>(k)];

@@ -169,6 +169,8 @@ const char* quantity_name(ipo::Quantity q) {
       return "contour";
     case ipo::Quantity::velojump:
       return "velojump";
+    case ipo::Quantity::transvelmin:
+      return "transvelmin";
     case ipo::Quantity::c1_step:
       return "c1-step";
   }
@@ -200,7 +202,8 @@ void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names, s
   }
   os << "audit: contour deviation " << human(v.contour_max) << " mm (tolerance "
      << human(v.contour_tolerance) << " mm), " << v.step_count
-     << " documented VELOJUMP / C1 steps within their formulas, " << v.cycles << " cycles\n";
+     << " documented VELOJUMP / TRANSVELMIN / C1 steps within their formulas, " << v.cycles
+     << " cycles\n";
   for (const ipo::Violation& x : v.violations) {
     os << "audit: violation t=" << num(x.t) << " s line " << x.line << " axis "
        << (x.axis < names.size() ? names[x.axis] : std::to_string(x.axis)) << ' '

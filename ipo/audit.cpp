@@ -63,15 +63,20 @@ void Audit::on_joint(const Joint& jt) {
     const double da = std::abs(jt.da[i]);
     dv_[i][0] += dv;
     da_[i][0] += da;
-    // VELOJUMP (000 l.108): |dv_i| <= C0_i min(A+_i, |A-_i|) T.
+    // VELOJUMP (000 l.108): |dv_i| <= C0_i min(A+_i, |A-_i|) T. Where #TRANSVELMIN raised the
+    // link (isg-language.md 5.6: it has priority), the step is v |dx'_i| with |dx'_i| =
+    // |dv_i| / v, allowed up to the programmed v_min: |dv_i| <= v_min |dx'_i|.
     if (dv > 1e-12 * std::max(1.0, jt.v)) {
-      const double bound = l.c0 * std::min(l.a_max, l.d_max) * t_;
+      const bool raised = jt.rule == planner::LinkRule::transvelmin && jt.v > 0.0;
+      const Quantity q = raised ? Quantity::transvelmin : Quantity::velojump;
+      const double bound =
+          raised ? jt.transvelmin * (dv / jt.v) : l.c0 * std::min(l.a_max, l.d_max) * t_;
       ++verdict_.step_count;
       if (verdict_.steps.size() < kMaxListed)
         verdict_.steps.push_back(
-            Step{Quantity::velojump, static_cast<std::uint8_t>(i), jt.t, jt.line, jt.v, dv, bound});
+            Step{q, static_cast<std::uint8_t>(i), jt.t, jt.line, jt.v, dv, bound});
       if (!(dv <= bound * (1.0 + kRelative)))
-        violate(Quantity::velojump, Method::formula, i, jt.t, jt.line, dv, bound);
+        violate(q, Method::formula, i, jt.t, jt.line, dv, bound);
     }
     // C1 (P-CHAN-00009 semantics, docs/planner.md): |da_i| <= j_i T. At C0 the acceleration
     // step of a curved neighbour comes with the velocity step and has no rule of its own.

@@ -6,8 +6,8 @@
 // the cycle T, the start position.
 // Outputs: a Verdict: per axis the largest |v|, |a|, |j| from the closed-form values and from
 // finite differences of the cycle positions, against the limits; the largest distance from the
-// programmed contour; the documented VELOJUMP / C1 steps, listed apart and checked against
-// their formulas; every violation with time and line (docs/ipo.md "The audit").
+// programmed contour; the documented VELOJUMP / #TRANSVELMIN / C1 steps, listed apart and
+// checked against their formulas; every violation with time and line (docs/ipo.md "The audit").
 // Method:
 //  - closed form: v_i, a_i, j_i of each cycle sample (chain rule on the path state) against
 //    v_max (and the reference velocity), A+ when the axis speeds up / A- when it slows down,
@@ -19,7 +19,9 @@
 //    VELOJUMP) adds at most |dv| / T to a and |dv| / T^2 to j in the cycles whose stencil holds
 //    it; an acceleration step da (C1, or C0 on curves) adds at most |da| / T to j. Those cycles
 //    are checked against limit + that allowance; the steps themselves against their formulas:
-//    |dv_i| <= C0_i min(A+_i, |A-_i|) T (000 l.108), |da_i| <= j_i T at C1 (P-CHAN-00009);
+//    |dv_i| <= C0_i min(A+_i, |A-_i|) T (000 l.108), or at a link #TRANSVELMIN raised above
+//    that (Joint::rule) |dv_i| <= v_min |dx'_i| (isg-language.md 5.6, "#TRANSVELMIN takes
+//    priority"), |da_i| <= j_i T at C1 (P-CHAN-00009);
 //  - contour: each motion sample's distance from its programmed block (contour.hpp), within
 //    PATH_DEV where the block ends in a tolerance ball (a blend point is within r of the
 //    corner, which lies on the block), else within rounding.
@@ -41,7 +43,15 @@
 
 namespace ncsim::ipo {
 
-enum class Quantity : std::uint8_t { velocity, acceleration, jerk, contour, velojump, c1_step };
+enum class Quantity : std::uint8_t {
+  velocity,
+  acceleration,
+  jerk,
+  contour,
+  velojump,     ///< a C0 velocity step (000 l.108)
+  transvelmin,  ///< a C0 velocity step at a link #TRANSVELMIN raised (isg-language.md 5.6)
+  c1_step,      ///< a C1 acceleration step (P-CHAN-00009)
+};
 enum class Method : std::uint8_t {
   closed_form,        ///< the interpolator's v, a, j at the cycle instant
   finite_difference,  ///< differences of the cycle positions
@@ -71,13 +81,13 @@ struct Violation {
 
 /// A documented step at a joint (the largest over the axes relative to its bound).
 struct Step {
-  Quantity quantity = Quantity::velojump;  ///< velojump (dv) or c1_step (da)
+  Quantity quantity = Quantity::velojump;  ///< velojump / transvelmin (dv) or c1_step (da)
   std::uint8_t axis = 0;
   double t = 0.0;  ///< [s]
   std::uint32_t line = 0;
   double v_link = 0.0;  ///< path velocity at the joint [mm/s]
   double value = 0.0;   ///< |dv_i| [mm/s] or |da_i| [mm/s^2]
-  double bound = 0.0;   ///< C0_i min(A+_i, |A-_i|) T, or j_i T
+  double bound = 0.0;   ///< C0_i min(A+_i, |A-_i|) T, v_min |dx'_i| (#TRANSVELMIN), or j_i T
 };
 
 struct Verdict {

@@ -92,6 +92,42 @@ TEST_CASE("a VELOJUMP step above C0 min(A+, A-) T is a violation; one within is 
   CHECK(has(audit.verdict(), Quantity::velojump, Method::formula));
 }
 
+TEST_CASE("a #TRANSVELMIN link is checked against v_min |dx'_i|, not VELOJUMP; beyond it fails") {
+  // VELOJUMP allows 10 mm/s per axis (C0 = 1, A = 10000, T = 1 ms); #TRANSVELMIN 30 mm/s
+  // raised the link of a 90 degree corner (|dx'_i| = 1) to 30 mm/s (isg-language.md 5.6).
+  const std::vector<planner::AxisLimits> axes = {axis(100.0, 10000.0, 1e5, 1.0),
+                                                 axis(100.0, 10000.0, 1e5, 1.0)};
+  Audit audit(axes, 0.001, AxisVec{});
+  Joint j;
+  j.cls = planner::TransitionClass::c0;
+  j.rule = planner::LinkRule::transvelmin;
+  j.transvelmin = 30.0;
+  j.v = 30.0;
+  j.dv[0] = -30.0;
+  j.dv[1] = 30.0;
+  j.line = 6;
+  audit.on_joint(j);
+  CHECK(audit.verdict().ok());
+  REQUIRE(audit.verdict().step_count == 2);
+  CHECK(audit.verdict().steps[0].quantity == Quantity::transvelmin);
+  CHECK(audit.verdict().steps[0].bound == doctest::Approx(30.0));
+  CHECK(audit.verdict().steps[1].value == doctest::Approx(30.0));
+  // A link faster than #TRANSVELMIN allowed is caught under that rule.
+  j.v = 31.0;
+  j.dv[0] = -31.0;
+  j.dv[1] = 31.0;
+  audit.on_joint(j);
+  CHECK(has(audit.verdict(), Quantity::transvelmin, Method::formula));
+  CHECK_FALSE(has(audit.verdict(), Quantity::velojump, Method::formula));
+  CHECK(audit.verdict().violations.front().limit == doctest::Approx(30.0));
+  CHECK(audit.verdict().violations.front().line == 6);
+  // Without the rule the same step is a VELOJUMP violation.
+  Audit plain(axes, 0.001, AxisVec{});
+  j.rule = planner::LinkRule::velojump;
+  plain.on_joint(j);
+  CHECK(has(plain.verdict(), Quantity::velojump, Method::formula));
+}
+
 TEST_CASE("a point off its programmed block beyond the tolerance is a contour violation") {
   const std::vector<planner::AxisLimits> axes = {axis(1e3, 1e6, 1e9), axis(1e3, 1e6, 1e9)};
   planner::Move m = line(AxisVec{}, vec(10.0, 0.0), 10.0, 3);
@@ -136,6 +172,51 @@ TEST_CASE("a reversal at C0 = 1, A = 10000, T = 1 ms: link 5 mm/s, step 10 mm/s 
   CHECK(v.steps[0].value == doctest::Approx(10.0).epsilon(1e-12));
   CHECK(v.steps[0].bound == doctest::Approx(10.0).epsilon(1e-12));
   CHECK(v.steps[0].line == 1);
+}
+
+TEST_CASE("a #TRANSVELMIN corner above VELOJUMP passes the audit, its steps listed apart") {
+  // 90 degree corner: VELOJUMP gives 10 mm/s; #TRANSVELMIN 30 mm/s has priority (issue 12).
+  const std::vector<planner::AxisLimits> axes(3, axis(200.0, 10000.0, 1e5, 1.0));
+  planner::Move a = line(vec(0, 0), vec(40, 0), 100.0, 1);
+  planner::Move b = line(vec(40, 0), vec(40, 40), 100.0, 2);
+  a.transvelmin = 30.0;
+  b.transvelmin = 30.0;
+  Audit audit(axes, 0.001, AxisVec{});
+  run_into(audit, axes, {a, b});
+  const Verdict& v = audit.verdict();
+  CHECK(v.ok());
+  REQUIRE(v.step_count == 2);
+  for (const Step& s : v.steps) {
+    CHECK(s.quantity == Quantity::transvelmin);
+    CHECK(s.v_link == doctest::Approx(30.0).epsilon(1e-12));
+    CHECK(s.value == doctest::Approx(30.0).epsilon(1e-12));
+    CHECK(s.bound == doctest::Approx(30.0).epsilon(1e-12));
+    CHECK(s.line == 1);
+  }
+  // Audited against a lower #TRANSVELMIN than planned with, the corner fails under that rule.
+  const std::vector<planner::AxisLimits> same = axes;
+  class Lower final : public Sink {
+   public:
+    explicit Lower(Audit& a) : a_(a) {}
+    void on_joint(const Joint& j) override {
+      Joint k = j;
+      k.transvelmin = 20.0;
+      a_.on_joint(k);
+    }
+    void on_cycle(const Cycle& c) override { a_.on_cycle(c); }
+
+   private:
+    Audit& a_;
+  };
+  Audit strict(same, 0.001, AxisVec{});
+  Lower lower(strict);
+  ListSource src({a, b});
+  Config cfg;
+  cfg.axes = same;
+  PathInterpolator ipo(cfg, src, &lower);
+  while (ipo.step() == Status::running) {
+  }
+  CHECK(has(strict.verdict(), Quantity::transvelmin, Method::formula));
 }
 
 TEST_CASE("a real run audited against tighter limits than it was planned with fails") {

@@ -39,7 +39,8 @@ PathInterpolator::PathInterpolator(Config config, Source& source, Sink* sink)
       sink_(sink),
       prep_(axes_, config.channel),
       window_(config.window, config.channel.t_cycle),
-      item_(planner::Move{}) {
+      item_(planner::Move{}),
+      override_type_(config.override_type) {
   if (axes_.empty() || axes_.size() > planner::kMaxAxes)
     throw std::invalid_argument("ipo: " + std::to_string(axes_.size()) + " axes (1.." +
                                 std::to_string(planner::kMaxAxes) + ")");
@@ -140,10 +141,19 @@ bool PathInterpolator::start_next() noexcept {
 void PathInterpolator::begin(planner::PlannedSegment&& next) noexcept {
   cur_ = std::move(next);
   prof_ = planner::profile(cur_);
-  dur_ = prof_.time();
   t_in_ = 0.0;
   s_prev_ = 0.0;
+  t100_prev_ = 0.0;
   active_ = true;
+  raised_ready_ = false;
+  has_ball_ = false;
+  for (std::size_t p = 0; p < cur_.segment.path.parts(); ++p)
+    has_ball_ = has_ball_ || cur_.segment.path.part(p).kind() == planner::SegmentKind::blend;
+  if (!plan_entry()) {
+    failed_ = true;
+    if (message_.empty())
+      message_ = "NC6300 ipo: no velocity plan fits the entry under the override (internal)";
+  }
   interval_jerk_limited_ = interval_jerk_limited_ && std::isfinite(cur_.segment.limits.j_max);
   // The oldest Move still referenced (tokens are the low 32 bits of next_token_'s count).
   const std::uint32_t token = cur_.segment.path.line_at(0.0);
@@ -155,8 +165,9 @@ void PathInterpolator::sample(double distance) noexcept {
   Cycle& c = cycle_;
   const planner::Chain& path = cur_.segment.path;
   const double length = path.length();
-  planner::PathState ps = planner::profile_at(prof_, cur_.v_entry, t_in_);
-  ps.s = t_in_ >= dur_ ? length : std::clamp(ps.s, 0.0, length);
+  planner::PathState ps =
+      on_plan_ ? planner::profile_at(prof_, cur_.v_entry, t_in_) : plan_at(plan_, t_in_);
+  ps.s = t_in_ >= dur_ && !plan_.hold ? length : std::clamp(ps.s, 0.0, length);
   distance += ps.s - s_prev_;
   const double s_from = s_prev_;
   s_prev_ = ps.s;
@@ -214,8 +225,11 @@ void PathInterpolator::report_joint(const planner::PlannedSegment& next, double 
   jt.stop = cur_.segment.stop;
   jt.jerk_limited = planner::jerk_limited(prog_in.slope) && planner::jerk_limited(prog_out.slope);
   // Both sides are planned with a = 0 at a window-entry joint: only the geometry steps.
-  const double v = next.v_entry;
+  // The velocity is the one the path arrives with (below the plan's under an override).
+  const double v = v_arrive_;
   jt.v = v;
+  jt.rule = cur_.segment.rule;
+  jt.transvelmin = prog_in.transvelmin.value_or(0.0);
   for (std::size_t i = 0; i < axes_.size(); ++i) {
     jt.dv[i] = v * (p_out.d1[i] - p_in.d1[i]);
     jt.da[i] = v * v * (p_out.d2[i] - p_in.d2[i]);
@@ -274,6 +288,8 @@ Status PathInterpolator::step() noexcept {
       c.path.v = c.path.a = c.path.j = 0.0;
       c.interval_jerk_limited = true;
       c.distance = 0.0;
+      c.held = false;
+      c.lost = 0.0;
       c.v = {};
       c.a = {};
       c.j = {};
@@ -283,7 +299,10 @@ Status PathInterpolator::step() noexcept {
     }
     if (active_) break;
     if (!fill()) return fail("ipo: the program source failed");
-    if (start_next()) break;
+    if (start_next()) {
+      if (failed_) return Status::error;
+      break;
+    }
     if (dwell_) {
       wait_left_ = cycles_for(dwell_->seconds);
       wait_kind_ = Activity::dwell;
@@ -300,24 +319,45 @@ Status PathInterpolator::step() noexcept {
 
   // Motion: advance the path by exactly T, carrying the rest of T across segment ends.
   interval_jerk_limited_ = std::isfinite(cur_.segment.limits.j_max);
+  lost_ = 0.0;
+  if (const double f = effective_factor(); f != plan_factor_) {
+    // A change of the override waits until the tolerance ball is left (000 l.366); a stop
+    // (override 0, feed hold) has priority (002 l.391) and acts at once, and so does the
+    // release of a stop (a path standing in a ball would never leave it).
+    const planner::PathState st = plan_at(plan_, t_in_);
+    if (f == 0.0 || plan_factor_ == 0.0 || !has_ball_ || !in_ball(st.s))
+      replan(f, st.s, st.v, st.a);
+  }
   double rest = t_;
   double distance = 0.0;
+  bool held = false;
   for (;;) {
     if (t_in_ + rest < dur_) {
-      t_in_ += rest;
+      advance_to(t_in_ + rest);
       break;
     }
     rest = std::max(0.0, rest - (dur_ - t_in_));
-    t_in_ = dur_;
+    advance_to(dur_);
+    if (plan_.hold) {
+      // Feed hold / override 0: the path stands on the contour for the rest of the cycle.
+      held = true;
+      lost_ += rest;
+      break;
+    }
     const double length = cur_.segment.path.length();
     distance += length - s_prev_;
     // Knees between the last sample and the end of a chain are passed in this cycle too.
     if (sink_ && detail_ == Detail::axes && cur_.segment.path.parts() > 1)
       report_inner_joints(s_prev_, length);
     s_prev_ = length;
+    v_arrive_ = on_plan_ ? cur_.v_exit : plan_.v_exit();
     if (cur_.segment.stop == planner::StopReason::exact_stop) {
       // G60 / G360: the rest of the cycle is not carried; window and settling time follow.
       stop_at_end(distance);
+      v_arrive_ = 0.0;
+      c.held = false;
+      c.factor = plan_factor_;
+      c.lost = lost_;
       const planner::Move& prog = *c.programmed;
       double settle = 0.0;
       for (std::size_t i = 0; i < axes_.size(); ++i) {
@@ -343,6 +383,10 @@ Status PathInterpolator::step() noexcept {
     if (window_.empty()) {
       // Program end, a dwell, or nothing known beyond: the path stands; the cycle is whole.
       stop_at_end(distance);
+      v_arrive_ = 0.0;
+      c.held = false;
+      c.factor = plan_factor_;
+      c.lost = lost_;
       ++c.index;
       c.t = static_cast<double>(c.index) * t_;
       if (sink_) sink_->on_cycle(c);
@@ -351,12 +395,107 @@ Status PathInterpolator::step() noexcept {
     planner::PlannedSegment next = window_.pop();
     if (sink_ && detail_ == Detail::axes) report_joint(next, t_start + (t_ - rest));
     begin(std::move(next));
+    if (failed_) return Status::error;
   }
   sample(distance);
+  c.held = held;
+  c.factor = held ? 0.0 : plan_factor_;
+  c.lost = lost_;
   ++c.index;
   c.t = static_cast<double>(c.index) * t_;
   if (sink_) sink_->on_cycle(c);
   return Status::running;
+}
+
+// --- override additions (docs/ipo.md "Override and feed hold")
+
+void PathInterpolator::set_override(double factor) {
+  const double hi = max_override(override_type_);
+  if (!(factor >= 0.0) || !(factor <= hi))
+    throw std::invalid_argument("ipo: override " + std::to_string(factor) + " outside [0, " +
+                                std::to_string(hi) + "] for override type " +
+                                override_type_name(override_type_) + " (NCSIM-CHAN-630)");
+  override_ = factor;
+}
+
+bool PathInterpolator::plan_entry() noexcept {
+  const double f = effective_factor();
+  if (f == 1.0 && v_arrive_ == cur_.v_entry) {
+    // At 100 % every type asks for the look-ahead's own profile: follow it unchanged.
+    plan_ = PathPlan{prof_, 0.0, cur_.v_entry, 0.0, false, cur_.segment.path.length()};
+    on_plan_ = true;
+    plan_factor_ = 1.0;
+    dur_ = prof_.time();
+    return true;
+  }
+  if (replan(f, 0.0, v_arrive_, 0.0)) return true;
+  // Above 100 % the raised limits can be tighter than the planned ones: fall back to 100 %
+  // (the change is retried every cycle).
+  return f > 1.0 && replan(1.0, 0.0, v_arrive_, 0.0);
+}
+
+bool PathInterpolator::replan(double f, double s, double v, double a) noexcept {
+  const planner::PathLimits& lim = cur_.segment.limits;
+  PlanRequest r;
+  r.v0 = v;
+  r.a0 = a;
+  r.length = cur_.segment.path.length() - s;
+  r.a = cur_.a_max;
+  r.d = cur_.d_max;
+  r.j = cur_.j_max;
+  double cap = lim.v_max;
+  if (f > 1.0 && override_type_ == OverrideType::reduced_above_100) {
+    if (!raised_ready_) {
+      raised_ = raised_limits(cur_, axes_);
+      raised_ready_ = true;
+    }
+    cap = raised_.v_max;
+    r.a = raised_.a;
+    r.d = raised_.d;
+    r.j = raised_.j;
+  }
+  r.level = override_level(override_type_, f, prof_.v_level, lim.v_programmed, cap);
+  r.exit_wanted = override_exit(override_type_, f, cur_.v_exit, lim.v_programmed);
+  r.exit_cap = cur_.v_exit;
+  PathPlan np;
+  if (!make_plan(r, np)) return false;
+  np.s0 = s;
+  plan_ = np;
+  t_in_ = 0.0;
+  dur_ = plan_.time();
+  on_plan_ = false;
+  plan_factor_ = f;
+  return true;
+}
+
+bool PathInterpolator::in_ball(double s) const noexcept {
+  const planner::Chain& path = cur_.segment.path;
+  double end = 0.0;
+  for (std::size_t p = 0; p < path.parts(); ++p) {
+    const planner::Segment& part = path.part(p);
+    const double start = end;
+    end += part.length();
+    if (s < start) return false;
+    if (s <= end && part.kind() == planner::SegmentKind::blend) return true;
+  }
+  return false;
+}
+
+double PathInterpolator::t100(double s) const noexcept {
+  return profile_time_at(prof_, cur_.v_entry, s);
+}
+
+void PathInterpolator::advance_to(double t_new) noexcept {
+  if (on_plan_) {
+    t100_prev_ = t_new;
+  } else {
+    const double length = cur_.segment.path.length();
+    const double s = t_new >= dur_ && !plan_.hold ? length : plan_at(plan_, t_new).s;
+    const double t_ref = t100(s);
+    lost_ += (t_new - t_in_) - (t_ref - t100_prev_);
+    t100_prev_ = t_ref;
+  }
+  t_in_ = t_new;
 }
 
 }  // namespace ncsim::ipo

@@ -10,7 +10,7 @@
 // P-AXIS-00532 settling time), the channel settings (cycle T) and the look-ahead window size
 // (P-CHAN-00650).
 // Outputs: step() returns the Cycle record of the cycle just done; an optional Sink sees every
-// cycle and every joint the path passes (with its documented VELOJUMP / C1 step).
+// cycle and every joint the path passes (with its documented VELOJUMP / #TRANSVELMIN / C1 step).
 // Method (docs/ipo.md): the look-ahead window is kept full (planner::Preparer +
 // planner::LookAhead); the active segment's profile is evaluated at the local time t_in; a
 // cycle that reaches the end of a segment carries the rest of T into the next one exactly, so
@@ -33,6 +33,7 @@
 #include <variant>
 #include <vector>
 
+#include "ipo/override.hpp"
 #include "planner/lookahead.hpp"
 #include "planner/move.hpp"
 #include "planner/prepare.hpp"
@@ -96,6 +97,7 @@ struct Config {
   /// path is also limited so that every joint keeps its own v, a, j (planner::Preparer::
   /// set_joints); the per-cycle joint setpoints come from ipo::JointStage (joint_stage.hpp).
   std::optional<planner::JointLimits> joints;
+  OverrideType override_type = OverrideType::reduced;  ///< NCSIM-CHAN-630 (000 §7.5.6)
 };
 
 /// What the channel did in a cycle.
@@ -123,6 +125,10 @@ struct Cycle {
   AxisVec a{};                        ///< axis accelerations, closed form [mm/s^2]
   AxisVec j{};                        ///< axis jerks, closed form [mm/s^3]
   const planner::Move* programmed = nullptr;  ///< the block x belongs to (motion cycles)
+  // --- override additions (issue 13, docs/ipo.md "Override and feed hold")
+  bool held = false;    ///< motion cycle in which the path stands by feed hold / override 0
+  double factor = 1.0;  ///< override factor of the plan the path follows (0 while holding)
+  double lost = 0.0;    ///< time lost to override and holds in this cycle [s] (< 0: gained)
 };
 
 /// A joint between two planned segments, passed inside a cycle (Detail::axes only).
@@ -131,8 +137,10 @@ struct Joint {
   std::uint32_t line = 0;  ///< line of the incoming block
   planner::TransitionClass cls = planner::TransitionClass::c0;
   planner::StopReason stop = planner::StopReason::none;
-  bool jerk_limited = true;  ///< both sides jerk-limited slopes
-  double v = 0.0;            ///< path velocity at the joint [mm/s]
+  bool jerk_limited = true;                                  ///< both sides jerk-limited slopes
+  double v = 0.0;                                            ///< path velocity at the joint [mm/s]
+  planner::LinkRule rule = planner::LinkRule::segment_caps;  ///< what set the link velocity
+  double transvelmin = 0.0;  ///< #TRANSVELMIN of the incoming block [mm/s] (0: not programmed)
   AxisVec dv{};              ///< axis velocity step out - in [mm/s] (VELOJUMP)
   AxisVec da{};              ///< axis acceleration step out - in [mm/s^2] (C1, and C0 on curves)
 };
@@ -178,6 +186,18 @@ class PathInterpolator {
   /// Channel hook: ends the exact-stop wait; the next step() goes on with the path.
   void release_exact_stop() noexcept { held_ = false; }
 
+  // --- override additions (issue 13, docs/ipo.md "Override and feed hold")
+  /// Path override factor (1 = 100 %), in [0, max_override(type)]; takes effect from the next
+  /// step() with jerk-limited ramps (after the tolerance ball if the path is inside one).
+  /// Throws std::invalid_argument naming the value and NCSIM-CHAN-630 when out of range.
+  void set_override(double factor);
+  /// Feed hold: the path stops on the contour as soon as the ramps allow and holds until
+  /// released (then it resumes at the override). Acts inside a tolerance ball too (a stop).
+  void set_feed_hold(bool on) noexcept { hold_ = on; }
+  double override_factor() const noexcept { return override_; }  ///< set factor [1]
+  bool feed_hold() const noexcept { return hold_; }
+  OverrideType override_type() const noexcept { return override_type_; }
+
  private:
   struct PendingDwell {
     double seconds = 0.0;
@@ -202,6 +222,19 @@ class PathInterpolator {
   /// Ends the motion part of the cycle at a stop: axes exactly on the block's end point.
   void stop_at_end(double distance) noexcept;
   std::uint64_t cycles_for(double seconds) const noexcept;
+  // --- override additions
+  double effective_factor() const noexcept { return hold_ ? 0.0 : override_; }
+  /// Plans cur_ from its start at the arrival velocity (the 100 % profile when it applies).
+  bool plan_entry() noexcept;
+  /// Replans cur_ for factor f from the state (s [mm], v [mm/s], a [mm/s^2]); false (plan
+  /// kept) when nothing fits.
+  bool replan(double f, double s, double v, double a) noexcept;
+  /// True when s lies inside a tolerance-ball blend of cur_.
+  bool in_ball(double s) const noexcept;
+  /// Time of the 100 % profile at s on cur_ [s] (accounting of lost time).
+  double t100(double s) const noexcept;
+  /// Advances the plan time from t_in_ to t_new, accounting the time lost.
+  void advance_to(double t_new) noexcept;
 
   std::vector<planner::AxisLimits> axes_;
   std::vector<ExactStop> exact_stop_;
@@ -236,6 +269,19 @@ class PathInterpolator {
   bool held_ = false;                  ///< an exact stop waits for release_exact_stop()
   Activity wait_kind_ = Activity::dwell;
   std::uint32_t wait_line_ = 0;
+  // --- override additions
+  OverrideType override_type_ = OverrideType::reduced;
+  double override_ = 1.0;      ///< set factor
+  bool hold_ = false;          ///< feed hold requested
+  PathPlan plan_;              ///< the plan the path follows on cur_
+  bool on_plan_ = true;        ///< plan_ is the look-ahead's 100 % profile itself
+  double plan_factor_ = 1.0;   ///< factor plan_ was made for
+  double v_arrive_ = 0.0;      ///< path velocity at the end of the previous entry [mm/s]
+  bool has_ball_ = false;      ///< cur_ holds a tolerance-ball blend
+  bool raised_ready_ = false;  ///< raised_ computed for cur_
+  RaisedLimits raised_;        ///< cur_'s limits above 100 %
+  double t100_prev_ = 0.0;     ///< 100 % profile time at s_prev_ [s]
+  double lost_ = 0.0;          ///< time lost in the cycle being done [s]
   Cycle cycle_;
   std::string message_;
 };

@@ -90,6 +90,17 @@ Config machine_config(const machines::Machine& machine, double t_cycle) {
   }
   c.channel.t_cycle = t_cycle;
   c.window = static_cast<std::size_t>(machine.channel.interpolator.look_ahead_blocks);
+  switch (machine.channel.path_override_type) {  // NCSIM-CHAN-630 (000 §7.5.6)
+    case machines::PathOverrideType::reduced:
+      c.override_type = OverrideType::reduced;
+      break;
+    case machines::PathOverrideType::original:
+      c.override_type = OverrideType::original;
+      break;
+    case machines::PathOverrideType::reduced_above_100:
+      c.override_type = OverrideType::reduced_above_100;
+      break;
+  }
   return c;
 }
 

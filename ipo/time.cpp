@@ -10,14 +10,14 @@ namespace ncsim::ipo {
 
 namespace {
 
-/// Cycles by activity (rapid, feed, dwell, exact stop, starved): integers, so the split adds up
-/// to the total exactly.
-using Counts = std::array<std::uint64_t, 5>;
+/// Cycles by activity (rapid, feed, dwell, exact stop, starved, held): integers, so the split
+/// adds up to the total exactly.
+using Counts = std::array<std::uint64_t, 6>;
 
 void count(Counts& n, const Cycle& c) {
   switch (c.activity) {
     case Activity::motion:
-      ++n[c.rapid ? 0 : 1];
+      ++n[c.held ? 5 : c.rapid ? 0 : 1];
       break;
     case Activity::dwell:
       ++n[2];
@@ -33,7 +33,7 @@ void count(Counts& n, const Cycle& c) {
 
 TimeSplit split_of(const Counts& n, double t) {
   auto s = [&](std::size_t i) { return static_cast<double>(n[i]) * t; };
-  return TimeSplit{s(0), s(1), s(2), s(3), s(4)};
+  return TimeSplit{s(0), s(1), s(2), s(3), s(4), s(5)};
 }
 
 }  // namespace
@@ -44,6 +44,7 @@ TimeCounter::TimeCounter(double t_cycle, std::function<void(const BlockTime&)> o
 void TimeCounter::add(const Cycle& c) {
   ++r_.cycles;
   r_.distance += c.distance;
+  r_.lost += c.lost;
   count(total_, c);
   if (!on_block_) return;
   if (open_ && c.line != block_.line) {
@@ -61,6 +62,7 @@ void TimeCounter::add(const Cycle& c) {
   }
   ++block_cycles_;
   block_.distance += c.distance;
+  block_.lost += c.lost;
   if (c.activity == Activity::motion) {
     block_.feed_programmed = std::max(block_.feed_programmed, c.feed);
     block_.feed_reached = std::max(block_.feed_reached, c.path.v);
@@ -82,7 +84,7 @@ TimeResult TimeCounter::finish() {
 
 TimeResult machining_time(Config config, Source& source,
                           const std::function<void(const BlockTime&)>& on_block,
-                          std::uint64_t max_cycles) {
+                          std::uint64_t max_cycles, const Operator& op) {
   config.detail = Detail::path;
   PathInterpolator ipo(std::move(config), source, nullptr);
   TimeCounter counter(ipo.t_cycle(), on_block);
@@ -94,6 +96,7 @@ TimeResult machining_time(Config config, Source& source,
       stopped = true;
       break;
     }
+    if (op) op(ipo, n);
     const Status st = ipo.step();
     if (st != Status::running) {
       status = st;

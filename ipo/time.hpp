@@ -10,7 +10,11 @@
 // and the total equals the number of cycles `run` writes times T, to the cycle (test).
 // A block is a run of consecutive cycles with the same line (a line executed again later, in
 // a loop, is a new record): memory stays bounded whatever the program length.
-// Invariants: total == cycles * T == rapid + feed + dwell + exact_stop + starved.
+// Override and feed hold (issue 13, docs/ipo.md "Override and feed hold"): an optional
+// operator callback is called before every cycle (it may call set_override / set_feed_hold);
+// cycles in which the path stands by hold count as `held`, and each block carries the time
+// lost to override and holds, measured on the path (Cycle::lost).
+// Invariants: total == cycles * T == rapid + feed + dwell + exact_stop + starved + held.
 
 #include <array>
 #include <cstdint>
@@ -28,6 +32,7 @@ struct TimeSplit {
   double dwell = 0.0;       ///< G04
   double exact_stop = 0.0;  ///< G60 / G360 settling after the path stopped
   double starved = 0.0;     ///< cycles without anything to move (zero-length blocks only)
+  double held = 0.0;        ///< motion cycles standing by feed hold / override 0 (issue 13)
 };
 
 /// One block as executed.
@@ -37,6 +42,7 @@ struct BlockTime {
   double distance = 0.0;         ///< path length covered [mm]
   double feed_programmed = 0.0;  ///< programmed path velocity (largest seen) [mm/s]
   double feed_reached = 0.0;     ///< largest path velocity reached [mm/s]
+  double lost = 0.0;             ///< time lost to override and holds [s] (< 0: gained above 100 %)
   TimeSplit split;
 };
 
@@ -47,6 +53,7 @@ struct TimeResult {
   std::uint64_t cycles = 0;
   double total = 0.0;     ///< cycles * T [s]
   double distance = 0.0;  ///< path length [mm]
+  double lost = 0.0;      ///< time lost to override and holds [s] (sum of the blocks')
   TimeSplit split;
 };
 
@@ -62,7 +69,7 @@ class TimeCounter {
   TimeResult finish();
 
  private:
-  using Counts = std::array<std::uint64_t, 5>;  // rapid, feed, dwell, exact stop, starved
+  using Counts = std::array<std::uint64_t, 6>;  // rapid, feed, dwell, exact stop, starved, held
   double t_ = 0.0;
   std::function<void(const BlockTime&)> on_block_;
   TimeResult r_;
@@ -72,12 +79,15 @@ class TimeCounter {
   std::uint64_t block_cycles_ = 0;
   bool open_ = false;
 };
+/// Called before cycle `index` (0-based): the operator (override, feed hold) of a scenario.
+using Operator = std::function<void(PathInterpolator& ipo, std::uint64_t index)>;
 
 /// Runs the program through the interpolator with the sinks off. `max_cycles` (0: none) stops
 /// an endless program. Throws std::invalid_argument on an unusable Config (as the
-/// interpolator does); program and source errors come back in TimeResult.
+/// interpolator does) and whatever `op` throws; program and source errors come back in
+/// TimeResult.
 TimeResult machining_time(Config config, Source& source,
                           const std::function<void(const BlockTime&)>& on_block = {},
-                          std::uint64_t max_cycles = 0);
+                          std::uint64_t max_cycles = 0, const Operator& op = {});
 
 }  // namespace ncsim::ipo

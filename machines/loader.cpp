@@ -477,6 +477,10 @@ ChannelParams build_channel(const ListValues& v) {
   if (const auto seq = parse_rotation_sequence(v.text("coordinate_system.rotation_sequence"))) {
     ch.cs_rotation_sequence = *seq;
   }
+  const std::string override_type = v.text("ncsim.path_override_type");
+  if (override_type == "ORIGINAL") ch.path_override_type = PathOverrideType::original;
+  if (override_type == "REDUCED_ABOVE_100")
+    ch.path_override_type = PathOverrideType::reduced_above_100;
   ch.spindle_count = static_cast<int>(v.number("spdl_anzahl"));
   if (v.given("main_spindle_ax_nr")) {
     ch.main_spindle_number = static_cast<int>(v.number("main_spindle_ax_nr"));

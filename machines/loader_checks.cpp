@@ -309,6 +309,13 @@ void check_channel_refs(Machine& m, const ListValues& ch, Reporter& r) {
             param_ref("coordinate_system.rotation_sequence", ListKind::channel) + " = " + seq +
                 " must be one of XYZ XZY YXZ YZX ZXY ZYX XYX XZX YXY YZY ZXZ ZYZ");
   }
+  const std::string override_type = ch.text("ncsim.path_override_type");
+  if (override_type != "REDUCED" && override_type != "ORIGINAL" &&
+      override_type != "REDUCED_ABOVE_100") {
+    r.error(file, ch.loc("ncsim.path_override_type"), "NC3004",
+            param_ref("ncsim.path_override_type", ListKind::channel) + " = " + override_type +
+                " must be one of REDUCED ORIGINAL REDUCED_ABOVE_100");
+  }
   if (m.channel.main_spindle_number) {
     const AxisParams* a = m.find_axis_number(*m.channel.main_spindle_number);
     if (a == nullptr || a->kind != AxisKind::spindle) {

@@ -224,6 +224,44 @@ TEST_CASE("the parameter table has unique keys, sane ranges and docs for every k
   }
 }
 
+TEST_CASE("NCSIM-CHAN-630 path override type: REDUCED by default, ORIGINAL read, a typo refused") {
+  const auto base = source_root() / "machines" / "testdata" / "base";
+  auto load_with = [&](const std::string& line) {
+    const auto dir = std::filesystem::temp_directory_path() / "ncsim_machines_override_type";
+    std::filesystem::create_directories(dir);
+    {
+      std::ofstream channel(dir / "channel.lis");
+      channel << "configuration.interpolator.function FCT_DLM\n"
+              << "conveyor_sync.log_number_master 4\n"
+              << line << "\n";
+      std::ofstream index(dir / kMachineIndexFile);
+      index << "channel channel.lis\n";
+      for (const char* ax : {"X", "Y", "Z", "S"}) {
+        std::string file(ax);
+        file[0] = static_cast<char>(file[0] - 'A' + 'a');
+        index << "axis " << ax << ' ' << (base / (file + ".lis")).string() << "\n";
+      }
+    }
+    return load_machine(dir);
+  };
+  const LoadResult plain = load_with("");
+  INFO(all_diagnostics(plain));
+  REQUIRE(plain.machine.has_value());
+  CHECK(plain.machine->channel.path_override_type == PathOverrideType::reduced);
+  const LoadResult original = load_with("ncsim.path_override_type ORIGINAL");
+  REQUIRE(original.machine.has_value());
+  CHECK(original.machine->channel.path_override_type == PathOverrideType::original);
+  const LoadResult above = load_with("ncsim.path_override_type REDUCED_ABOVE_100");
+  REQUIRE(above.machine.has_value());
+  CHECK(above.machine->channel.path_override_type == PathOverrideType::reduced_above_100);
+  const LoadResult typo = load_with("ncsim.path_override_type REDUCE");
+  CHECK_FALSE(typo.machine.has_value());
+  REQUIRE_FALSE(typo.diagnostics.items().empty());
+  CHECK(typo.diagnostics.items()[0].id == "NC3004");
+  CHECK(typo.diagnostics.items()[0].loc.line == 3);
+  CHECK(typo.diagnostics.items()[0].message.find("NCSIM-CHAN-630") != std::string::npos);
+}
+
 TEST_CASE("a channel with more axes than ncsim supports is refused at the index line") {
   const auto dir = std::filesystem::temp_directory_path() / "ncsim_machines_too_many_axes";
   std::filesystem::create_directories(dir);

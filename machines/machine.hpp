@@ -162,15 +162,23 @@ struct TrafoParams {
   std::array<double, 74> param{};  ///< P-CHAN-00263, converted [mm | deg]
 };
 
+/// NCSIM-CHAN-630 ncsim.path_override_type: what the path override refers to (000 §7.5.6).
+enum class PathOverrideType {
+  reduced,            ///< REDUCED: "Reduced (iterated)", the default
+  original,           ///< ORIGINAL: "Original (iterated)"
+  reduced_above_100,  ///< REDUCED_ABOVE_100: "Reduced [0 .. >100 %]"
+};
+
 struct ChannelParams {
   InterpolatorFunction interpolator;
   std::optional<ConveyorSyncChannel> conveyor;  ///< set when FCT_DLM is given
   std::vector<TrafoParams> trafos;              ///< trafo[0..]; empty: no kinematic
-  RotationSequence cs_rotation_sequence = RotationSequence::ZYX;  ///< P-CHAN-00394
-  int spindle_count = 0;                                          ///< spdl_anzahl
-  std::optional<int> main_spindle_number;                         ///< main_spindle_ax_nr
-  std::string main_spindle_name;                                  ///< main_spindle_name
-  std::optional<int> tracking_axis_number;                        ///< log_number_tracking_axis
+  RotationSequence cs_rotation_sequence = RotationSequence::ZYX;    ///< P-CHAN-00394
+  int spindle_count = 0;                                            ///< spdl_anzahl
+  std::optional<int> main_spindle_number;                           ///< main_spindle_ax_nr
+  std::string main_spindle_name;                                    ///< main_spindle_name
+  std::optional<int> tracking_axis_number;                          ///< log_number_tracking_axis
+  PathOverrideType path_override_type = PathOverrideType::reduced;  ///< NCSIM-CHAN-630
 };
 
 struct Machine {
