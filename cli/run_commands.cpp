@@ -77,14 +77,27 @@ struct Playing {
   void attach(ipo::Channel& channel) { channel.play(player.get()); }
 };
 
-// The override / feed-hold actions of `s` the channel cannot play yet, by name ("" if none).
+// The actions of `s` the channel cannot play yet, by name ("" if none).
 std::string unplayable(const scenario::Scenario& s) {
   for (const scenario::Event& e : s.events)
-    for (const scenario::Action& a : e.actions) {
-      if (std::holds_alternative<scenario::PathOverride>(a)) return "path override";
+    for (const scenario::Action& a : e.actions)
       if (std::holds_alternative<scenario::AxisOverride>(a)) return "axis override";
-      if (std::holds_alternative<scenario::FeedHold>(a)) return "feed hold";
-    }
+  return "";
+}
+
+// A path override above what the machine's override type accepts (NCSIM-CHAN-630): the
+// message for the first one, "" if none.
+std::string override_beyond_type(const scenario::Scenario& s, const machines::Machine& m) {
+  const bool above_100 =
+      m.channel.path_override_type == machines::PathOverrideType::reduced_above_100;
+  for (const scenario::Event& e : s.events)
+    for (const scenario::Action& a : e.actions)
+      if (const auto* o = std::get_if<scenario::PathOverride>(&a);
+          o && o->fraction > 1.0 && !above_100)
+        return s.file + ":" + std::to_string(e.loc.line) + ":" + std::to_string(e.loc.column) +
+               ": error: override = " + human(o->fraction * 100.0) +
+               " % is above 100 %, the largest of the machine's path override type (NCSIM-CHAN-630 "
+               "ncsim.path_override_type; only REDUCED_ABOVE_100 goes beyond) [NC6102]\n";
   return "";
 }
 
@@ -112,7 +125,7 @@ std::variant<Loaded, int> load(const ProgramOptions& options,
   }
   core::SourceFile file = core::SourceFile::load(options.program);
   // Scenario (docs/scenario.md): its V.E. initial values answer the barriers; the channel
-  // plays its V.E. writes and [stop]; override and feed hold are refused, never ignored.
+  // plays its V.E. writes, [stop], path override and feed hold; an axis override is refused.
   auto scenario = load_scenario_for(options, file, *loaded.machine, err);
   if (const int* status = std::get_if<int>(&scenario)) return *status;
   interp::Options interp_options;
@@ -120,8 +133,11 @@ std::variant<Loaded, int> load(const ProgramOptions& options,
   if (s) {
     if (const std::string what = unplayable(*s); !what.empty()) {
       err << "ncsim: error: not supported: scenario " << what << " events in run/time ('" << s->file
-          << "': the channel plays V.E. writes and [stop]; override and feed hold "
-          << "come with the interpolator's override)\n";
+          << "': INDP axes are not in the channel loop yet)\n";
+      return kExitUsage;
+    }
+    if (const std::string beyond = override_beyond_type(*s, *loaded.machine); !beyond.empty()) {
+      err << beyond;
       return kExitUsage;
     }
     for (const scenario::VeInitial& v : s->ve)

@@ -206,15 +206,31 @@ bool Channel::play_cycle(Status& status) noexcept {
   const double t = static_cast<double>(k) * ipo_.t_cycle();
   for (const scenario::Action& a : player_->step(k, t)) {
     if (std::holds_alternative<scenario::VeWrite>(a)) continue;  // in player_->ve() already
-    const char* what = std::holds_alternative<scenario::PathOverride>(a)   ? "path override"
-                       : std::holds_alternative<scenario::AxisOverride>(a) ? "axis override"
-                                                                           : "feed hold";
+    if (const auto* h = std::get_if<scenario::FeedHold>(&a)) {
+      ipo_.set_feed_hold(h->on);
+      continue;
+    }
     Cycle at = last;
     at.t = t;
+    if (const auto* o = std::get_if<scenario::PathOverride>(&a)) {
+      const double max = max_override(ipo_.override_type());
+      if (o->fraction <= max) {
+        try {
+          ipo_.set_override(o->fraction);
+          continue;
+        } catch (const std::invalid_argument&) {
+        }
+      }
+      status = stop(kOverrideRangeId,
+                    text("scenario path override %.6g %% above %.6g %%, the largest of the "
+                         "channel's override type (NCSIM-CHAN-630)",
+                         o->fraction * 100.0, max * 100.0),
+                    at, -1);
+      return false;
+    }
     status = stop(kNotSupportedId,
-                  std::string("not supported: scenario ") + what +
-                      " events in the channel loop (the interpolator's override comes with "
-                      "issue 13's override work)",
+                  "not supported: scenario axis override events (INDP axes are not in the "
+                  "channel loop yet)",
                   at, -1);
     return false;
   }

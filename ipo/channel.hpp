@@ -32,8 +32,9 @@
 //      to Player::block_started, then Player::step(k, t) with k the cycle's index and t its
 //      start time; its V.E. writes are in the store the ProgramSource answers barriers from; a
 //      [stop] condition met ends the run before the cycle (Status::finished, scenario_stop());
-//      override, axis override and feed hold are not wired yet: such an action stops the
-//      channel with run-time error NC6001 `not supported: ...`, never ignored.
+//      path override and feed hold go to PathInterpolator::set_override / set_feed_hold (an
+//      override above the type's largest is run-time error NC6102); an axis override (INDP
+//      axes are not in the channel yet) stops with NC6001 `not supported: ...`, never ignored.
 // Invariants: step() never throws (an error ends the stream with Status::error); it is
 // deterministic (encoder noise is seeded per axis); memory is the interpolator's (bounded by
 // the look-ahead window) plus one control model and one monitor per axis.
@@ -55,6 +56,10 @@ namespace ncsim::ipo {
 /// NC6101: the exact-stop window P-AXIS-00236 was not reached within
 /// ChannelConfig::exact_stop_wait_max while P-AXIS-00532 does not monitor the time.
 inline constexpr const char* kExactStopWaitId = "NC6101";
+
+/// NC6102: a scenario's path override is above the largest the channel's override type
+/// (NCSIM-CHAN-630) accepts.
+inline constexpr const char* kOverrideRangeId = "NC6102";
 
 /// One interpolated axis as the channel drives it.
 struct ChannelAxis {

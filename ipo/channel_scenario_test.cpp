@@ -165,13 +165,42 @@ TEST_CASE("the flush stops the path at the barrier: no motion crosses it") {
   CHECK(stood);
 }
 
-TEST_CASE("an override event is refused at run time (NC6001), never ignored") {
-  const Played r = play(kBranch, "[ve]\nSEL = 0\n[[event]]\nat = 0.1\noverride = 50\n");
+TEST_CASE("path override and feed hold events reach the interpolator") {
+  const std::string ve = "[ve]\nSEL = 0\n";
+  const Played plain = play(kBranch, ve + "[stop]\ncycles = 1000000\n");
+  // A 0.5 s feed hold from 0.2 s: the run is longer by about the hold; the contour is the same.
+  const Played hold = play(kBranch, ve + "[[event]]\nat = 0.2\nfeed_hold = true\nduration = 0.5\n");
+  CHECK(hold.status == ipo::Status::finished);
+  CHECK_FALSE(hold.error);
+  const double t_plain = plain.cycles.back().t;
+  const double t_hold = hold.cycles.back().t;
+  CHECK(t_hold > t_plain + 0.45);
+  CHECK(t_hold < t_plain + 0.6);
+  CHECK(hold.cycles.back().x == plain.cycles.back().x);
+  bool stood = false;  // some cycle inside the hold stands on line 2 short of X10
+  for (const ipo::Cycle& c : hold.cycles)
+    if (c.t > 0.5 && c.t < 0.6 && c.line == 2 && c.path.v == 0.0 && c.x[0] < 10.0) stood = true;
+  CHECK(stood);
+  // 50 % from 0.1 s: slower (REDUCED type of portal_3x), same end point.
+  const Played half = play(kBranch, ve + "[[event]]\nat = 0.1\noverride = 50\n");
+  CHECK_FALSE(half.error);
+  CHECK(half.cycles.back().t > t_plain + 1.0);
+  CHECK(half.cycles.back().x == plain.cycles.back().x);
+}
+
+TEST_CASE(
+    "NC6102: a path override above the type's largest stops the channel; axis override is NC6001") {
+  const Played r = play(kBranch, "[ve]\nSEL = 0\n[[event]]\nat = 0.1\noverride = 150\n");
   CHECK(r.status == ipo::Status::error);
   REQUIRE(r.error);
-  CHECK(r.error->id == std::string(ipo::kNotSupportedId));
-  CHECK(r.error->message.find("not supported: scenario path override") != std::string::npos);
+  CHECK(r.error->id == std::string(ipo::kOverrideRangeId));
   CHECK(r.cycles.size() == 100);  // the run ends before the cycle at 0.1 s
+
+  const Played ax =
+      play(kBranch, "[ve]\nSEL = 0\n[[event]]\nat = 0.1\naxis_override = { X = 50 }\n");
+  REQUIRE(ax.error);
+  CHECK(ax.error->id == std::string(ipo::kNotSupportedId));
+  CHECK(ax.error->message.find("not supported: scenario axis override") != std::string::npos);
 }
 
 TEST_CASE("reruns under a scenario are identical to the bit") {
