@@ -24,6 +24,7 @@
 #include "ipo/program_source.hpp"
 #include "ipo/time.hpp"
 #include "machines/loader.hpp"
+#include "scenario/player.hpp"
 
 namespace ncsim::cli {
 namespace {
@@ -55,7 +56,50 @@ struct Loaded {
   machines::Machine machine;
   double t_cycle = 0.001;
   interp::Options interp;  ///< the scenario's V.E. initial values (barrier answers)
+  std::optional<scenario::Scenario> scenario;  ///< played by the channel when it has events
 };
+
+// What the channel plays of a scenario (docs/scenario.md "Wiring into the channel loop"):
+// built only when the scenario has events or [stop]; wires the barrier answers and the player.
+struct Playing {
+  std::unique_ptr<scenario::Player> player;
+  Playing(const Loaded& in, ipo::ProgramSource& src) {
+    if (!in.scenario || !in.scenario->needs_channel()) return;
+    player = std::make_unique<scenario::Player>(*in.scenario);
+    // A V.E. write at run time must reach the barrier after it: then the path stops before
+    // every V.E. read (the kernel's synchronous read); without writes the answer is known.
+    bool writes = false;
+    for (const scenario::Event& e : in.scenario->events)
+      for (const scenario::Action& a : e.actions)
+        writes = writes || std::holds_alternative<scenario::VeWrite>(a);
+    src.answer_barriers_from(&player->ve(), writes);
+  }
+  void attach(ipo::Channel& channel) { channel.play(player.get()); }
+};
+
+// The actions of `s` the channel cannot play yet, by name ("" if none).
+std::string unplayable(const scenario::Scenario& s) {
+  for (const scenario::Event& e : s.events)
+    for (const scenario::Action& a : e.actions)
+      if (std::holds_alternative<scenario::AxisOverride>(a)) return "axis override";
+  return "";
+}
+
+// A path override above what the machine's override type accepts (NCSIM-CHAN-630): the
+// message for the first one, "" if none.
+std::string override_beyond_type(const scenario::Scenario& s, const machines::Machine& m) {
+  const bool above_100 =
+      m.channel.path_override_type == machines::PathOverrideType::reduced_above_100;
+  for (const scenario::Event& e : s.events)
+    for (const scenario::Action& a : e.actions)
+      if (const auto* o = std::get_if<scenario::PathOverride>(&a);
+          o && o->fraction > 1.0 && !above_100)
+        return s.file + ":" + std::to_string(e.loc.line) + ":" + std::to_string(e.loc.column) +
+               ": error: override = " + human(o->fraction * 100.0) +
+               " % is above 100 %, the largest of the machine's path override type (NCSIM-CHAN-630 "
+               "ncsim.path_override_type; only REDUCED_ABOVE_100 goes beyond) [NC6102]\n";
+  return "";
+}
 
 // Program and machine, syntax-checked; an exit status on failure (printed on `err`).
 std::variant<Loaded, int> load(const ProgramOptions& options,
@@ -80,16 +124,20 @@ std::variant<Loaded, int> load(const ProgramOptions& options,
     return kExitUsage;
   }
   core::SourceFile file = core::SourceFile::load(options.program);
-  // Scenario (docs/scenario.md): its V.E. initial values answer the barriers; events and stop
-  // conditions need the channel loop, which is not wired yet: refused, never ignored.
+  // Scenario (docs/scenario.md): its V.E. initial values answer the barriers; the channel
+  // plays its V.E. writes, [stop], path override and feed hold; an axis override is refused.
   auto scenario = load_scenario_for(options, file, *loaded.machine, err);
   if (const int* status = std::get_if<int>(&scenario)) return *status;
   interp::Options interp_options;
-  if (const auto& s = std::get<std::optional<scenario::Scenario>>(scenario)) {
-    if (s->needs_channel()) {
-      err << "ncsim: error: not supported: scenario events in run/time ('" << s->file
-          << "': override, feed hold, V.E. writes and [stop] come with the channel loop; "
-             "check and trace read its [ve] values)\n";
+  auto& s = std::get<std::optional<scenario::Scenario>>(scenario);
+  if (s) {
+    if (const std::string what = unplayable(*s); !what.empty()) {
+      err << "ncsim: error: not supported: scenario " << what << " events in run/time ('" << s->file
+          << "': INDP axes are not in the channel loop yet)\n";
+      return kExitUsage;
+    }
+    if (const std::string beyond = override_beyond_type(*s, *loaded.machine); !beyond.empty()) {
+      err << beyond;
       return kExitUsage;
     }
     for (const scenario::VeInitial& v : s->ve)
@@ -101,7 +149,8 @@ std::variant<Loaded, int> load(const ProgramOptions& options,
   if (syntax.error_count() > 0) return kExitProgramErrors;
   // The channel list has no cycle key in ncsim yet: 1 ms unless --cycle-us (docs/ipo.md).
   const double t = cycle_us ? static_cast<double>(*cycle_us) * 1e-6 : 0.001;
-  return Loaded{std::move(file), std::move(*loaded.machine), t, std::move(interp_options)};
+  return Loaded{std::move(file), std::move(*loaded.machine), t, std::move(interp_options),
+                std::move(s)};
 }
 
 // The program error that ended a run, with its source line when it is in the main program.
@@ -282,7 +331,9 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
   std::unique_ptr<ipo::Audit> audit;
   if (options.audit)
     audit = std::make_unique<ipo::Audit>(cfg.path.axes, cfg.path.channel.t_cycle, cfg.path.start);
+  Playing playing(in, src);
   ipo::Channel channel(std::move(cfg), src, audit.get());
+  playing.attach(channel);
   ipo::TimeCounter counter(channel.t_cycle(), on_block);
   Progress progress(err);
   ipo::Status status;
@@ -294,7 +345,9 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
   const ipo::TimeResult r = counter.finish();
   // A program error ends the source: the blocks before it ran, then the channel stopped. A
   // run-time error stops the channel in the cycle it is raised.
-  const bool failed = status == ipo::Status::error || src.error() != nullptr;
+  // A [stop] of the scenario ends the run before a program error the look-ahead decoded later.
+  const bool failed =
+      status == ipo::Status::error || (src.error() != nullptr && !channel.scenario_stop());
   std::string error_text;
   if (failed) error_text = failure_text(in, interp, src, channel);
 
@@ -308,6 +361,10 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
     out << ",\"cycles\":" << r.cycles << ",\"total_s\":" << num(r.total)
         << ",\"distance_mm\":" << num(r.distance) << ",\"split_s\":";
     json_split(out, r.split);
+    if (const auto& stop = channel.scenario_stop()) {
+      out << ",\"stop\":";
+      json_string(out, std::string(scenario::to_string(*stop)));
+    }
     out << "}\n";
   } else {
     out << in.file.name() << ": " << (failed ? "stopped after " : "") << num(r.total) << " s ("
@@ -315,6 +372,9 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
         << " mm; rapid " << human(r.split.rapid) << " s, feed " << human(r.split.feed)
         << " s, dwell " << human(r.split.dwell) << " s, exact stop " << human(r.split.exact_stop)
         << " s, waiting " << human(r.split.starved) << " s\n";
+    if (const auto& stop = channel.scenario_stop())
+      out << "stop: " << scenario::to_string(*stop) << " (scenario '" << in.scenario->file
+          << "') at " << num(r.total) << " s\n";
   }
   if (failed) {
     err << error_text;
@@ -461,7 +521,9 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   head += '\n';
   csv.text(head);
 
+  Playing playing(in, src);
   ipo::Channel channel(std::move(cfg), src, &tee);
+  playing.attach(channel);
   csv.set_axes(&channel.axes());
   Progress progress(err);
   ipo::Status s;
@@ -470,9 +532,14 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   }
   progress.finish();
   std::string error_text;
-  if (s == ipo::Status::error || (s == ipo::Status::finished && src.error() != nullptr)) {
+  if (s == ipo::Status::error ||
+      (s == ipo::Status::finished && src.error() != nullptr && !channel.scenario_stop())) {
     error_text = failure_text(in, interp, src, channel);
     csv.text("# error: " + first_line(error_text) + "\n");
+  } else if (const auto& stop = channel.scenario_stop()) {
+    csv.text("# stop: " + std::string(scenario::to_string(*stop)) + "\n");
+    err << "ncsim: run stopped by the scenario ('" << in.scenario->file
+        << "'): " << scenario::to_string(*stop) << " at t=" << num(channel.cycle().t) << " s\n";
   }
   csv.flush();
   if (!csv.failed() && std::fflush(f) != 0) csv.set_failed(errno);

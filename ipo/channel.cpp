@@ -8,6 +8,9 @@
 #include <cstdlib>
 #include <stdexcept>
 #include <utility>
+#include <variant>
+
+#include "ipo/program_source.hpp"
 
 namespace ncsim::ipo {
 
@@ -176,11 +179,83 @@ bool Channel::exact_stop(const Cycle& c) noexcept {
   return true;
 }
 
+void Channel::note_block(const Cycle& c) noexcept {
+  // A block starts when the active block changes (motion) or a dwell begins. Granularity is the
+  // cycle: a block traversed entirely inside one cycle is not seen (docs/ipo.md "Scenario").
+  if (c.activity == Activity::motion && c.programmed != nullptr && c.programmed != block_) {
+    block_ = c.programmed;
+    started_ = c.programmed->line;
+  } else if (c.activity == Activity::dwell && !in_dwell_) {
+    block_ = nullptr;
+    started_ = c.line;
+  }
+  in_dwell_ = c.activity == Activity::dwell;
+}
+
+bool Channel::play_cycle(Status& status) noexcept {
+  if (stopped_) {
+    status = Status::finished;
+    return false;
+  }
+  if (started_) {
+    player_->block_started(*started_);
+    started_.reset();
+  }
+  const Cycle& last = ipo_.cycle();
+  const std::uint64_t k = last.index;
+  const double t = static_cast<double>(k) * ipo_.t_cycle();
+  for (const scenario::Action& a : player_->step(k, t)) {
+    if (std::holds_alternative<scenario::VeWrite>(a)) continue;  // in player_->ve() already
+    if (const auto* h = std::get_if<scenario::FeedHold>(&a)) {
+      ipo_.set_feed_hold(h->on);
+      continue;
+    }
+    Cycle at = last;
+    at.t = t;
+    if (const auto* o = std::get_if<scenario::PathOverride>(&a)) {
+      const double max = max_override(ipo_.override_type());
+      if (o->fraction <= max) {
+        try {
+          ipo_.set_override(o->fraction);
+          continue;
+        } catch (const std::invalid_argument&) {
+        }
+      }
+      status = stop(kOverrideRangeId,
+                    text("scenario path override %.6g %% above %.6g %%, the largest of the "
+                         "channel's override type (NCSIM-CHAN-630)",
+                         o->fraction * 100.0, max * 100.0),
+                    at, -1);
+      return false;
+    }
+    status = stop(kNotSupportedId,
+                  "not supported: scenario axis override events (INDP axes are not in the "
+                  "channel loop yet)",
+                  at, -1);
+    return false;
+  }
+  if (const auto reason = player_->stop()) {
+    stopped_ = *reason;
+    status = Status::finished;
+    return false;
+  }
+  return true;
+}
+
 Status Channel::step() noexcept {
   if (error_) return Status::error;
+  if (ended_) return *ended_;  // the player sees each cycle once
+  if (player_ != nullptr) {
+    Status ended = Status::finished;
+    if (!play_cycle(ended)) return ended;
+  }
   const Status s = ipo_.step();
-  if (s != Status::running) return s;
+  if (s != Status::running) {
+    ended_ = s;
+    return s;
+  }
   const Cycle& c = ipo_.cycle();
+  if (player_ != nullptr) note_block(c);
   if (!in_exact_stop_ && ipo_.holding_exact_stop()) {
     // The command reached the end of a G60 / G360 block in this cycle (001 l.149: t_1).
     in_exact_stop_ = true;

@@ -28,6 +28,13 @@
 //      the wait ends with NC6101 after ChannelConfig::exact_stop_wait_max.
 //   5. The Sink sees the joints of the cycle and then the cycle, only when no run-time error
 //      was raised in it: a stopped run's stream ends with the last good cycle.
+//   0. Under a scenario (play()), before 1: the blocks that started in the previous cycle go
+//      to Player::block_started, then Player::step(k, t) with k the cycle's index and t its
+//      start time; its V.E. writes are in the store the ProgramSource answers barriers from; a
+//      [stop] condition met ends the run before the cycle (Status::finished, scenario_stop());
+//      path override and feed hold go to PathInterpolator::set_override / set_feed_hold (an
+//      override above the type's largest is run-time error NC6102); an axis override (INDP
+//      axes are not in the channel yet) stops with NC6001 `not supported: ...`, never ignored.
 // Invariants: step() never throws (an error ends the stream with Status::error); it is
 // deterministic (encoder noise is seeded per axis); memory is the interpolator's (bounded by
 // the look-ahead window) plus one control model and one monitor per axis.
@@ -42,12 +49,17 @@
 #include "axes/monitor.hpp"
 #include "ipo/interpolator.hpp"
 #include "machines/machine.hpp"
+#include "scenario/player.hpp"
 
 namespace ncsim::ipo {
 
 /// NC6101: the exact-stop window P-AXIS-00236 was not reached within
 /// ChannelConfig::exact_stop_wait_max while P-AXIS-00532 does not monitor the time.
 inline constexpr const char* kExactStopWaitId = "NC6101";
+
+/// NC6102: a scenario's path override is above the largest the channel's override type
+/// (NCSIM-CHAN-630) accepts.
+inline constexpr const char* kOverrideRangeId = "NC6102";
 
 /// One interpolated axis as the channel drives it.
 struct ChannelAxis {
@@ -108,6 +120,13 @@ class Channel {
   /// Largest |following error| seen per axis so far [mm | deg].
   const AxisVec& following_error_max() const noexcept { return lag_max_; }
 
+  /// Plays `player`'s scenario from the next cycle on (step 0); null: none. `player` must
+  /// outlive the channel. The ProgramSource's barriers read player->ve() (the caller wires it:
+  /// ProgramSource::answer_barriers_from).
+  void play(scenario::Player* player) noexcept { player_ = player; }
+  /// The [stop] condition that ended the run, if one did (step() then returned finished).
+  const std::optional<scenario::StopReason>& scenario_stop() const noexcept { return stopped_; }
+
  private:
   /// Passes the interpolator's joints on at once; cycles are passed on by step().
   class JointRelay final : public Sink {
@@ -135,6 +154,10 @@ class Channel {
   /// Step 4: the exact-stop wait.
   bool exact_stop(const Cycle& c) noexcept;
   Status stop(const char* id, std::string message, const Cycle& c, int axis) noexcept;
+  /// Step 0: the scenario's cycle; false when the run ends before it (stop or error).
+  bool play_cycle(Status& status) noexcept;
+  /// After a cycle: note the block that started in it for the player.
+  void note_block(const Cycle& c) noexcept;
 
   JointRelay relay_;
   PathInterpolator ipo_;
@@ -151,6 +174,13 @@ class Channel {
   AxisVec target_{};
   std::uint64_t waited_ = 0;  ///< cycles waited at this exact stop
   std::optional<RunTimeError> error_;
+  // Scenario (step 0).
+  scenario::Player* player_ = nullptr;
+  std::optional<scenario::StopReason> stopped_;
+  const planner::Move* block_ = nullptr;  ///< the active block of the last cycle
+  bool in_dwell_ = false;                 ///< the last cycle was a dwell
+  std::optional<std::uint32_t> started_;  ///< line of a block started in the last cycle
+  std::optional<Status> ended_;           ///< the interpolator's stream ended so
 };
 
 }  // namespace ncsim::ipo

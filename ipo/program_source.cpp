@@ -184,6 +184,13 @@ bool ProgramSource::next(Item& out) {
   }
 }
 
+void ProgramSource::answer(const interp::Barrier& barrier) {
+  interp::RunState state = interp_.decode_only_state(barrier);
+  if (barrier.wants(interp::BarrierNeed::external))
+    store_->answer(barrier.external, state.external);
+  interp_.resume(state);
+}
+
 bool ProgramSource::pull(Item& out) {
   for (;;) {
     if (queue_size_ > 0) {  // spline pieces first: they come before the next command
@@ -192,9 +199,13 @@ bool ProgramSource::pull(Item& out) {
       --queue_size_;
       return true;
     }
-    // Barriers are answered from the decode-only state (docs/ipo.md): run-time answers come
-    // with the channel loop.
-    std::optional<interp::Command> cmd = interp_.next_decode_only();
+    // Barriers: the decode-only state (docs/ipo.md), or the scenario's V.E. store.
+    if (open_) {  // the flush's Dwell has passed: every block before the barrier ran
+      answer(*open_);
+      open_.reset();
+    }
+    std::optional<interp::Command> cmd =
+        store_ != nullptr ? interp_.next() : interp_.next_decode_only();
     if (!cmd) {
       if (const core::Diagnostic* e = interp_.error()) error_ = *e;
       return false;
@@ -219,9 +230,18 @@ bool ProgramSource::pull(Item& out) {
                                std::is_same_v<T, interp::Message> ||
                                std::is_same_v<T, interp::ProgramStop> ||
                                std::is_same_v<T, interp::Flush> ||
-                               std::is_same_v<T, interp::WaitIndp> ||
-                               std::is_same_v<T, interp::Barrier>) {
+                               std::is_same_v<T, interp::WaitIndp>) {
             // pass: no motion (M00/M01 do not stop: there is no operator to press start)
+          } else if constexpr (std::is_same_v<T, interp::Barrier>) {
+            if (store_ == nullptr) {
+              // answered by next_decode_only()
+            } else if (flush_ && body.wants(interp::BarrierNeed::external)) {
+              open_ = body;  // the path stops first: answered at the next pull
+              out = Dwell{0.0, line};
+              produced = true;
+            } else {
+              answer(body);
+            }
           } else if constexpr (std::is_same_v<T, interp::SelectCs>) {
             select_cs(body, line);
           } else if constexpr (std::is_same_v<T, interp::Kinematics>) {

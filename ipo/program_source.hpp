@@ -14,12 +14,14 @@
 // Tech, Message, ProgramStop (M00/M01 do not stop in time/run: no operator), Flush, WaitIndp
 // and the switching-off forms of #TRAFO / #CAXTRACK pass; #CS selections update the adapter's
 // own #CS stack (the interpreter's rules, machines::CsStack); End ends the stream. Barriers are
-// answered from the decode-only state (next_decode_only): run-time answers come with the channel
-// loop. Every other command is a program error `not supported: <what>` (NC6001) at its line:
-// nothing is skipped silently. Errors end the stream like End does, and error() holds the
-// diagnostic: the blocks decoded before the faulty one run to their end and the path stops there,
-// then the caller reports the error (the channel stops at the faulty block; docs/ipo.md). Memory:
-// one Command.
+// answered from the decode-only state (next_decode_only), or, under a scenario
+// (answer_barriers_from), their V.E. names from the scenario's VeStore; with `flush` the source
+// first hands out a 0 s Dwell, so the path stops and every block before the barrier has run when
+// the barrier is answered (the kernel's synchronous V.E. read; docs/ipo.md "Scenario"). Every other
+// command is a program error `not supported: <what>` (NC6001) at its line: nothing is skipped
+// silently. Errors end the stream like End does, and error() holds the diagnostic: the blocks
+// decoded before the faulty one run to their end and the path stops there, then the caller reports
+// the error (the channel stops at the faulty block; docs/ipo.md). Memory: one Command.
 
 #include <array>
 #include <cstdint>
@@ -34,6 +36,7 @@
 #include "machines/cs_stack.hpp"
 #include "machines/machine.hpp"
 #include "planner/spline.hpp"
+#include "scenario/player.hpp"
 
 namespace ncsim::ipo {
 
@@ -67,9 +70,19 @@ class ProgramSource final : public Source {
   /// after the interpolator finished: a stream that ends with an error is not a program end.
   const core::Diagnostic* error() const { return error_ ? &*error_ : nullptr; }
 
+  /// Barriers that want V.E. values are answered from `store` (must outlive the source; null:
+  /// the decode-only state again). `flush`: the path stops before each such barrier (a 0 s
+  /// Dwell is handed out first), so a value written while the blocks before it ran reaches it.
+  void answer_barriers_from(const scenario::VeStore* store, bool flush) {
+    store_ = store;
+    flush_ = flush;
+  }
+
  private:
   struct Stop {};  ///< thrown by fail() to leave the visit; caught in next()
   bool pull(Item& out);
+  /// Answers the open barrier: the decode-only state with the store's V.E. values.
+  void answer(const interp::Barrier& barrier);
   [[noreturn]] void fail(std::uint32_t line, const std::string& what);
   planner::Move to_move(const interp::Motion& m, std::uint32_t line);
   /// The modal fields of a Move from the block's snapshot (transition, contour, slope, ...).
@@ -107,6 +120,10 @@ class ProgramSource final : public Source {
   std::array<planner::Move, 4> queue_{};
   std::size_t queue_head_ = 0;
   std::size_t queue_size_ = 0;
+  // Run-time barrier answers (answer_barriers_from).
+  const scenario::VeStore* store_ = nullptr;
+  bool flush_ = false;
+  std::optional<interp::Barrier> open_;  ///< a barrier waiting for the flush's Dwell to pass
 };
 
 }  // namespace ncsim::ipo

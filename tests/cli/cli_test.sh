@@ -72,12 +72,48 @@ expect "a line the program does not have is NC7012" 2 '' \
   check "$fixtures/external.nc" --scenario "$fixtures/scenario_line.toml"
 expect "time with a scenario's V.E. values runs" 0 'external\.nc: [0-9.e-]+ s' '' -- \
   time "$fixtures/external.nc" --scenario "$fixtures/scenario_ve.toml"
-expect "time refuses scenario events until the channel loop, status 2" 2 '' \
-  'not supported: scenario events in run/time' -- \
+expect "time plays a scenario with an override event" 0 'external\.nc: [0-9.e-]+ s' '' -- \
   time "$fixtures/external.nc" --scenario "$fixtures/scenario_events.toml"
-expect "run refuses scenario events until the channel loop, status 2" 2 '' \
-  'not supported: scenario events in run/time' -- \
-  run "$fixtures/external.nc" --scenario "$fixtures/scenario_events.toml"
+printf '[[event]]\nat = 0.1\naxis_override = { X = 50 }\n' >"$work/axis_override.toml"
+expect "run refuses axis override events (no INDP axes yet), status 2" 2 '' \
+  'not supported: scenario axis override events in run/time' -- \
+  run "$fixtures/external.nc" --scenario "$work/axis_override.toml"
+printf '[[event]]\nat = 0.1\noverride = 150\n' >"$work/override_150.toml"
+expect "an override above 100 % under type REDUCED is refused with its position, status 2" 2 '' \
+  'override_150\.toml:1:1: error: override = 150 % is above 100 %.*NCSIM-CHAN-630.*\[NC6102\]' -- \
+  time "$fixtures/external.nc" --scenario "$work/override_150.toml"
+printf '[ve]\nSEL = 0\n[[event]]\nat = 0.2\nfeed_hold = true\nduration = 0.5\n' >"$work/hold.toml"
+expect "a 0.5 s feed hold makes the run (1.507 s) 0.5 s longer" 0 've_branch\.nc: 2\.007 s' '' -- \
+  time "$fixtures/ve_branch.nc" --scenario "$work/hold.toml"
+# The channel plays V.E. writes and [stop] (docs/scenario.md "Wiring into the channel loop").
+expect "a V.E. write at 0.5 s reaches the \$IF after the move: the Y20 branch (line 4) runs" 0 \
+  '^[0-9.e-]+,4,10,20,0$' '' -- \
+  run "$fixtures/ve_branch.nc" --scenario "$fixtures/scenario_ve_write.toml" -o -
+printf '[ve]\nSEL = 0\n[stop]\ncycles = 100000\n' >"$work/no_write.toml"
+expect "without the write the \$ELSE branch (line 6) runs" 0 '^[0-9.e-]+,6,10,5,0$' '' -- \
+  run "$fixtures/ve_branch.nc" --scenario "$work/no_write.toml" -o -
+expect "time reports a [stop] time with its reason, status 0" 0 \
+  '^stop: stop\.time .* at 0\.25 s$' '' -- \
+  time "$fixtures/ve_branch.nc" --scenario "$fixtures/scenario_stop.toml"
+expect "time --json names the stop" 0 '"stop":"stop\.time"' '' -- \
+  time "$fixtures/ve_branch.nc" --scenario "$fixtures/scenario_stop.toml" --json
+expect "run closes the CSV with the stop reason" 0 '^# stop: stop\.time$' \
+  'stopped by the scenario.*stop\.time at t=0\.25 s' -- \
+  run "$fixtures/ve_branch.nc" --scenario "$fixtures/scenario_stop.toml" -o -
+for sc in "$fixtures/scenario_ve_write.toml" "$work/hold.toml"; do
+  checks=$((checks + 1))
+  "$ncsim" run "$fixtures/ve_branch.nc" --scenario "$sc" -o "$work/w1.csv" 2>/dev/null
+  "$ncsim" run "$fixtures/ve_branch.nc" --scenario "$sc" -o "$work/w2.csv" 2>/dev/null
+  total=$("$ncsim" time "$fixtures/ve_branch.nc" --scenario "$sc" --json |
+    sed -E 's/.*"total_s":([^,]+).*/\1/')
+  if cmp -s "$work/w1.csv" "$work/w2.csv" && [[ $total == "$(tail -1 "$work/w1.csv" | cut -d, -f1)" ]]
+  then
+    echo "ok   under $(basename "$sc") time equals run's last t, and reruns are byte-identical"
+  else
+    failures=$((failures + 1))
+    echo "FAIL $(basename "$sc"): time $total, run $(tail -1 "$work/w1.csv" | cut -d, -f1)"
+  fi
+done
 mkdir -p "$work/sprog"
 cp "$fixtures/external.nc" "$work/sprog/"
 printf '[ve]\nOFFSET = 3.25\n' >"$work/sprog/scenario.toml"
