@@ -66,4 +66,8 @@ class DiagnosticList {
   std::size_t dropped_ = 0;
 };
 
+/// Edit distance (insertions, deletions, substitutions) between two short names: the measure
+/// of the "did you mean" suggestions of the machine and scenario loaders.
+std::size_t edit_distance(std::string_view a, std::string_view b);
+
 }  // namespace ncsim::core

@@ -67,3 +67,11 @@ TEST_CASE("a list keeps the first diagnostics up to its limit and counts the res
   CHECK(list.dropped() == 7);
   CHECK(list.error_count() == 5);
 }
+
+TEST_CASE("edit distance counts insertions, deletions and substitutions") {
+  CHECK(edit_distance("", "") == 0);
+  CHECK(edit_distance("swe_poss", "swe_pos") == 1);
+  CHECK(edit_distance("vb_eilgng", "vb_eilgang") == 1);
+  CHECK(edit_distance("kitten", "sitting") == 3);
+  CHECK(edit_distance("abc", "") == 3);
+}

@@ -53,23 +53,6 @@ std::optional<double> parse_real(std::string_view text) {
   return value;
 }
 
-// Edit distance (insert, delete, substitute) between two short keys.
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j)
-    row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
-
 std::string_view last_segment(std::string_view key) {
   const std::size_t dot = key.rfind('.');
   return dot == std::string_view::npos ? key : key.substr(dot + 1);
@@ -82,7 +65,7 @@ std::string suggestion(ListKind kind, std::string_view pattern) {
   std::size_t best_distance = 3;
   for (const ParamSpec& spec : param_table()) {
     if (spec.list != kind) continue;
-    std::size_t d = edit_distance(pattern, spec.key);
+    std::size_t d = core::edit_distance(pattern, spec.key);
     if (d >= 3 && last_segment(pattern) == last_segment(spec.key)) d = 2;
     if (d < best_distance) {
       best = &spec;

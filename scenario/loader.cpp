@@ -38,22 +38,6 @@ constexpr double kCyclesMax = 9.2233720368547e18;  // TOML integers are 64-bit s
 constexpr std::string_view kConveyorTables[] = {"belt", "workpiece", "probe", "filter"};
 constexpr std::string_view kConveyorEventKeys[] = {"reduced_filter"};
 
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j)
-    row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
-
 std::string upper(std::string_view s) {
   std::string out(s);
   for (char& c : out) {
@@ -68,7 +52,7 @@ std::string suggestion(std::string_view word, std::initializer_list<std::string_
   std::size_t best_distance = 3;
   const std::string w = upper(word);
   for (const std::string_view k : known) {
-    const std::size_t d = edit_distance(w, upper(k));
+    const std::size_t d = core::edit_distance(w, upper(k));
     if (d < best_distance) {
       best = k;
       best_distance = d;
