@@ -5,6 +5,8 @@
 #include <doctest/doctest.h>
 
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "axes/control.hpp"
@@ -139,6 +141,78 @@ TEST_CASE("ncsim.profile_rule (NCSIM-AXIS-030) selects the generator's profile r
   CHECK(make_generator_config(a).profile_rule == ProfileRule::manual);  // default: 002 rules
   a.dynamics.time_optimal_profiles = true;
   CHECK(make_generator_config(a).profile_rule == ProfileRule::time_optimal);
+}
+
+// A machine whose X list sets `ncsim.profile_rule time_optimal` (the other lists: the bad-list
+// corpus' base machine, table defaults): the loaded axis plans time-optimal profiles.
+machines::LoadResult load_base_with_x_line(const std::string& dir_name, const std::string& line) {
+  const char* root = std::getenv("NCSIM_SOURCE_DIR");
+  REQUIRE_MESSAGE(root != nullptr, "NCSIM_SOURCE_DIR must point to the repository");
+  const std::filesystem::path base = std::filesystem::path(root) / "machines" / "testdata" / "base";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / dir_name;
+  std::filesystem::create_directories(dir);
+  {
+    std::ifstream x_in(base / "x.lis");
+    std::ofstream x_out(dir / "x.lis");
+    x_out << x_in.rdbuf() << "\n" << line << "\n";
+    std::ofstream index(dir / machines::kMachineIndexFile);
+    index << "channel " << (base / "channel.lis").string() << "\n"
+          << "axis X " << (dir / "x.lis").string() << "\n"
+          << "axis Y " << (base / "y.lis").string() << "\n"
+          << "axis Z " << (base / "z.lis").string() << "\n"
+          << "axis S " << (base / "s.lis").string() << "\n";
+  }
+  return machines::load_machine(dir);
+}
+
+void step_ok(SetpointGenerator& g, double cycle) {
+  const Result r = g.step(cycle);
+  REQUIRE((r == Result::working || r == Result::finished));
+}
+
+// Time until the generator is idle after a new end position behind the axis at 60 % of the way.
+double time_with_new_end_position(const GeneratorConfig& config) {
+  SetpointGenerator g(config);
+  REQUIRE(g.start_position(100.0) == Result::ok);
+  double t = 0.0;
+  const double cycle = 0.001;
+  while (g.setpoint().p < 60.0) {
+    step_ok(g, cycle);
+    t += cycle;
+  }
+  REQUIRE(g.new_end_position(-50.0) == Result::ok);
+  while (g.moving()) {
+    step_ok(g, cycle);
+    t += cycle;
+    REQUIRE(t < 100.0);
+  }
+  CHECK(g.setpoint().p == -50.0);
+  return t;
+}
+
+TEST_CASE("a machine list with ncsim.profile_rule time_optimal gives the time-optimal profile") {
+  const machines::LoadResult plain = load_base_with_x_line("ncsim_axes_profile_rule_plain", "");
+  REQUIRE(plain.machine.has_value());
+  const machines::LoadResult fast =
+      load_base_with_x_line("ncsim_axes_profile_rule_fast", "ncsim.profile_rule time_optimal");
+  REQUIRE(fast.machine.has_value());
+  const GeneratorConfig manual = make_axis_config(axis(*plain.machine, "X")).generator;
+  const GeneratorConfig optimal = make_axis_config(axis(*fast.machine, "X")).generator;
+  CHECK(manual.profile_rule == ProfileRule::manual);  // NCSIM-AXIS-030 default
+  CHECK(optimal.profile_rule == ProfileRule::time_optimal);
+  // 002 2.3 (manual): stop, then return; time-optimal: reverse without a stop, earlier.
+  const double t_manual = time_with_new_end_position(manual);
+  const double t_optimal = time_with_new_end_position(optimal);
+  CHECK(t_optimal < t_manual);
+  // The plan itself equals plan_position under the loaded rule.
+  Profile from_config;
+  Profile direct;
+  const MotionState start{0.0, 100.0, 0.0};
+  REQUIRE(plan_position(start, PositionTarget{-10.0, 0.0}, optimal.dynamics, from_config,
+                        optimal.profile_rule) == Result::ok);
+  REQUIRE(plan_position(start, PositionTarget{-10.0, 0.0}, optimal.dynamics, direct,
+                        ProfileRule::time_optimal) == Result::ok);
+  CHECK(from_config.duration() == direct.duration());
 }
 
 TEST_CASE("machines and axes default Kv to the same P-AXIS-00099 value") {

@@ -6,7 +6,7 @@
 //  2. moving toward the target and able to arrive: one velocity change to a level vm, [cruise
 //     at V], one velocity change to the target velocity. vm = V when the distance allows
 //     (closed form); otherwise vm solves distance(vm) = remaining distance, a scalar equation
-//     with no closed form in the mixed cases, solved by a bracketed Illinois iteration;
+//     with no closed form in the mixed cases, solved by a bracketed regula falsi (Anderson-Bjorck);
 //  3. moving away, or unable to arrive without overshooting: stop, then return (002_* 2.3).
 
 #include <algorithm>
@@ -33,6 +33,14 @@ constexpr double kResidue = 8.0 * std::numeric_limits<double>::epsilon();
 
 bool finite(const MotionState& s) noexcept {
   return std::isfinite(s.p) && std::isfinite(s.v) && std::isfinite(s.a);
+}
+
+// Start within the limits: |v| <= V, |a| <= A- where it slows the motion, A+ where it speeds it
+// up, min(A+, A-) at rest.
+bool inside_limits(const MotionState& s, const Dynamics& dyn) noexcept {
+  const double av = s.a * s.v;
+  const double cap = av < 0.0 ? dyn.d_max : (av > 0.0 ? dyn.a_max : std::min(dyn.a_max, dyn.d_max));
+  return std::abs(s.v) <= dyn.v_max && std::abs(s.a) <= cap;
 }
 
 // Frame distance to rest from frame state (v, a) with v >= 0 moving forward: the acceleration
@@ -65,8 +73,8 @@ double level_distance(double v0, double a0, double vm, double vf, const Dynamics
 }
 
 // Level vm in [v_lo, v_hi] with level_distance(vm) == dist, given f(v_lo) <= dist < f(v_hi).
-// Illinois variant of regula falsi, with bisection as a fallback. The tolerance is relative to
-// dist only: f(v_hi) can exceed dist by many orders of magnitude (V = 5000 mm/s, A- = 5 mm/s^2
+// Regula falsi with the Anderson-Bjorck weight, bisection as a fallback. The tolerance is relative
+// to dist only: f(v_hi) can exceed dist by many orders of magnitude (V = 5000 mm/s, A- = 5 mm/s^2
 // against a 10 um move), and a tolerance tied to it let the chain miss the target. When the
 // bracket has shrunk to rounding size, the lower end is returned: its distance is <= dist, so
 // the remaining way is a short cruise and the target is still met.
@@ -84,14 +92,14 @@ double solve_level(double v0, double a0, double vf, double dist, double v_lo, do
     const double g = level_distance(v0, a0, x, vf, dyn) - dist;
     if (std::abs(g) <= tol) return x;
     if (g < 0.0) {
+      if (side == -1) g_hi *= jerk::detail::anderson_bjorck(g, g_lo);
       lo = x;
       g_lo = g;
-      if (side == -1) g_hi *= 0.5;
       side = -1;
     } else {
+      if (side == 1) g_lo *= jerk::detail::anderson_bjorck(g, g_hi);
       hi = x;
       g_hi = g;
-      if (side == 1) g_lo *= 0.5;
       side = 1;
     }
   }
@@ -124,11 +132,13 @@ Result plan_position(const MotionState& start, const PositionTarget& target, con
   }
   if (rule == ProfileRule::time_optimal) {
     // A direct move (toward the target, not moving away) is the single-peak family's best,
-    // which contains the manual's; otherwise the manual planner covers reversals the family
-    // cannot, so the faster of both is taken.
+    // which contains the manual's. To a target at rest from a start within the limits the
+    // candidates contain "stop, then the fastest rest-to-rest move", never slower than the
+    // manual's stop-and-return (its return uses the symmetric rule). Otherwise the manual planner
+    // covers reversals the family cannot, so the faster of both is taken.
     bool direct = false;
     const bool found = detail::plan_fastest(start, target, dyn, out, direct);
-    if (found && direct) return Result::ok;
+    if (found && (direct || (target.v == 0.0 && inside_limits(start, dyn)))) return Result::ok;
     Profile manual;
     plan_position(start, target, dyn, manual, ProfileRule::manual);
     if (!found || manual.duration() < out.duration()) out = manual;

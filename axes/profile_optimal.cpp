@@ -155,9 +155,14 @@ bool plan_fastest(const MotionState& start, const PositionTarget& target, const 
   Profile alt;
   ProfileBuilder b(alt, start);
   append_stop(b, dyn);
-  const MotionState rest{b.state().p, 0.0, 0.0};
-  if (jerk::fastest_move(rest, target.p, target.v, dyn, m) != jerk::Status::ok) return found;
-  append_move(b, m);
+  if (target.v == 0.0) {
+    // From rest to rest the fastest move is the closed form (no level search).
+    append_rest_to_rest_fastest(b, target.p, dyn);
+  } else {
+    const MotionState rest{b.state().p, 0.0, 0.0};
+    if (jerk::fastest_move(rest, target.p, target.v, dyn, m) != jerk::Status::ok) return found;
+    append_move(b, m);
+  }
   b.finish(&end);
   if (!found || alt.duration() < out.duration()) out = alt;
   return true;

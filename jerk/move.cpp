@@ -7,9 +7,9 @@
 // The minimum of the family is at the highest feasible level: V when dist(V) <= D, else a
 // root of dist(vm) = D, bracketed by dist(0) <= D < dist(V). T(vm) is continuous and grows
 // without bound as vm -> 0 when dist(0) < D, so every longer duration has a level in
-// (0, vm_top]; both roots are found by a bracketed Illinois iteration (guaranteed: the bracket
-// shrinks every step, with bisection as a fallback). When dist(0) == D the move can dwell at
-// rest between the ramps, which takes up any remaining time.
+// (0, vm_top]; both roots are found by a bracketed regula falsi (Anderson-Bjorck) (guaranteed: the
+// bracket shrinks every step, with bisection as a fallback). When dist(0) == D the move can dwell
+// at rest between the ramps, which takes up any remaining time.
 
 #include <algorithm>
 #include <array>
@@ -57,6 +57,7 @@ struct Level {
   Ramp first;
   Ramp second;
   double dist = 0.0;    // distance of all ramps [mm]
+  double path = 0.0;    // sum of the ramps' |distances| [mm]: the scale of dist's rounding
   double t_ramp = 0.0;  // time of all ramps [s]
 };
 
@@ -64,6 +65,7 @@ Level level(const Frame& f, double vm, const Limits& lim) noexcept {
   Level out;
   out.second = velocity_ramp(vm, 0.0, f.v1, lim.a_max, lim.d_max, lim.j_max);
   out.dist = distance(vm, 0.0, out.second);
+  out.path = std::abs(out.dist);
   // A first ramp from a frame velocity below 0 slows down (A-) until v = 0 and speeds up (A+)
   // after it: the crossing ramp switches the limit at v = 0. Where it does not apply (a start
   // acceleration beyond A- or one forcing more than min(A+, A-) at v = 0), one ramp under the
@@ -73,7 +75,9 @@ Level level(const Frame& f, double vm, const Limits& lim) noexcept {
     State st{0.0, f.v0, f.a0};
     for (std::size_t i = 0; i < 3; ++i)
       st = advance(st, out.cross.jerk[i], out.cross.duration[i]);
-    out.dist += st.p + distance(0.0, out.cross.a_zero, out.first);
+    const double d_first = distance(0.0, out.cross.a_zero, out.first);
+    out.dist += st.p + d_first;
+    out.path += std::abs(st.p) + std::abs(d_first);
     out.t_ramp = out.cross.time() + out.first.time() + out.second.time();
     return out;
   }
@@ -81,13 +85,15 @@ Level level(const Frame& f, double vm, const Limits& lim) noexcept {
   const double a_up =
       f.v0 < 0.0 ? (vm > 0.0 ? std::min(lim.a_max, lim.d_max) : lim.d_max) : lim.a_max;
   out.first = velocity_ramp(f.v0, f.a0, vm, a_up, lim.d_max, lim.j_max);
-  out.dist += distance(f.v0, f.a0, out.first);
+  const double d_first = distance(f.v0, f.a0, out.first);
+  out.dist += d_first;
+  out.path += std::abs(d_first);
   out.t_ramp = out.first.time() + out.second.time();
   return out;
 }
 
-// Root of g between x_neg (g <= 0) and x_pos (g > 0), in either order (Illinois, bisection
-// as a fallback); returns the final x_neg, where g <= 0.
+// Root of g between x_neg (g <= 0) and x_pos (g > 0), in either order (regula falsi with the
+// Anderson-Bjorck weight, bisection as a fallback); returns the final x_neg, where g <= 0.
 template <class G>
 double solve_bracket(double x_neg, double x_pos, double g_neg, double g_pos, double tol,
                      G g) noexcept {
@@ -98,15 +104,15 @@ double solve_bracket(double x_neg, double x_pos, double g_neg, double g_pos, dou
     if (!(x > std::min(x_neg, x_pos) && x < std::max(x_neg, x_pos))) x = 0.5 * (x_neg + x_pos);
     const double gx = g(x);
     if (gx <= 0.0) {
+      if (gx >= -tol) return x;
+      if (side == -1) g_pos *= detail::anderson_bjorck(gx, g_neg);
       x_neg = x;
       g_neg = gx;
-      if (gx >= -tol) return x;
-      if (side == -1) g_pos *= 0.5;
       side = -1;
     } else {
+      if (side == 1) g_neg *= detail::anderson_bjorck(gx, g_pos);
       x_pos = x;
       g_pos = gx;
-      if (side == 1) g_neg *= 0.5;
       side = 1;
     }
   }
@@ -120,8 +126,11 @@ double solve_bracket(double x_neg, double x_pos, double g_neg, double g_pos, dou
 // with vm, and the root of dist(vm) = D there is the highest feasible level.
 double top_level(const Frame& f, const Limits& lim) noexcept {
   const auto g = [&](double vm) { return level(f, vm, lim).dist - f.d; };
-  const double g_top = g(lim.v_max);
+  const Level top = level(f, lim.v_max, lim);
+  const double g_top = top.dist - f.d;
   if (g_top <= 0.0) return lim.v_max;
+  // Rounding of dist grows with the way the ramps travel (a detour much longer than D).
+  const double tol = kResidue * std::max(std::abs(f.d), top.path);
   const auto clamp = [&](double v) { return std::clamp(v, 0.0, lim.v_max); };
   const double v_zero = f.v0 + f.a0 * std::abs(f.a0) / (2.0 * lim.j_max);  // ramp 1 vanishes
   const std::array<double, 3> below{clamp(std::max(v_zero, f.v1)), clamp(std::min(v_zero, f.v1)),
@@ -132,7 +141,7 @@ double top_level(const Frame& f, const Limits& lim) noexcept {
     if (!(c < hi)) continue;
     const double g_c = g(c);
     if (g_c <= 0.0) {
-      return solve_bracket(c, hi, g_c, g_hi, kResidue * std::abs(f.d), g);
+      return solve_bracket(c, hi, g_c, g_hi, tol, g);
     }
     hi = c;
     g_hi = g_c;
@@ -153,8 +162,10 @@ double stretch_level(const Frame& f, const Limits& lim) noexcept {
 }
 
 double cruise_time(const Frame& f, double vm, const Level& lv) noexcept {
+  // A rest within the rounding of the ramps' distances is no cruise: at a low level it would
+  // turn a rounding residue into time (docs/axes-profile.md, "Numerics").
   const double rest = f.d - lv.dist;
-  if (!(vm > 0.0) || rest <= kResidue * std::abs(f.d)) return 0.0;
+  if (!(vm > 0.0) || rest <= kResidue * std::max(std::abs(f.d), lv.path)) return 0.0;
   return rest / vm;
 }
 
@@ -192,8 +203,8 @@ bool crossing_ramp(double v0, double a0, double v1, const Limits& lim, Crossing&
   const double gain = -v0;
   if (a0 > c) return false;  // beyond A- while slowing: the start forces its own ramp
   const double a_z_min = a0 > 0.0 ? std::sqrt(std::max(0.0, a0 * a0 - 2.0 * j * gain)) : 0.0;
-  const double a_z =
-      std::min({c, lim.a_max, std::sqrt(2.0 * j * v1), std::sqrt(a0 * a0 + 2.0 * j * gain)});
+  const double a_v1 = std::sqrt(2.0 * j * v1);  // releasing it from v = 0 gains exactly v1
+  const double a_z = std::min({c, lim.a_max, a_v1, std::sqrt(a0 * a0 + 2.0 * j * gain)});
   if (a_z_min > a_z) return false;  // the start reaches v = 0 too fast (or overshoots v1)
   double a_p = std::sqrt(0.5 * (2.0 * j * gain + a0 * a0 + a_z * a_z));
   double t_hold = 0.0;
@@ -211,6 +222,17 @@ bool crossing_ramp(double v0, double a0, double v1, const Limits& lim, Crossing&
                     down > kResidue * a_p ? down / j : 0.0};
   cross.a_peak = a_p;
   cross.a_zero = a_z;
+  if (a_z == a_v1) {
+    // Only the release of a_z: built directly, since velocity_ramp would see v1 == v_zero to
+    // rounding and answer a spurious pulse of sqrt(rounding) size (docs/axes-profile.md,
+    // "Numerics").
+    rest = Ramp{};
+    rest.jerk = {j, 0.0, -j};
+    rest.duration = {0.0, 0.0, a_z / j};
+    rest.a_peak = a_z;
+    rest.v_end = v1;
+    return true;
+  }
   rest = velocity_ramp(0.0, a_z, v1, lim.a_max, lim.d_max, j);
   return true;
 }

@@ -6,7 +6,7 @@
 // cruises there, and the second part (frame g) takes (-L, 0) through v = 0 to (v1, 0). The
 // displacement toward g without cruise, s(L), falls as L grows (the detour grows); the
 // fastest turn is at the highest level whose displacement still reaches the target,
-// s(L) = g (p1 - p0), found by an Illinois iteration on (0, V] (a cruise at V when s(V) is
+// s(L) = g (p1 - p0), found by regula falsi (Anderson-Bjorck) on (0, V] (a cruise at V when s(V) is
 // still beyond the target).
 
 #include <algorithm>
@@ -84,15 +84,18 @@ Status reversal_move(const State& start, double p1, double v1, const Limits& lim
       if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
       const double fx = f(x);
       if (fx >= 0.0) {
+        if (fx <= tol) {
+          lo = x;
+          break;
+        }
+        if (side == -1) f_hi *= detail::anderson_bjorck(fx, f_lo);
         lo = x;
         f_lo = fx;
-        if (fx <= tol) break;
-        if (side == -1) f_hi *= 0.5;
         side = -1;
       } else {
+        if (side == 1) f_lo *= detail::anderson_bjorck(fx, f_hi);
         hi = x;
         f_hi = fx;
-        if (side == 1) f_lo *= 0.5;
         side = 1;
       }
     }

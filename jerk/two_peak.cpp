@@ -11,8 +11,9 @@
 //     y = A, hold h = (2W - alpha0^2 + 2x^2 - 2A^2) / (2 J A).
 // x = min(alpha0, A) is the direct ramp, x = 0 releases a0 first (the single-peak family's
 // level v_zero); between them the distance d(x) moves monotonically from one to the other, and
-// the root of d(x) = D is found by a bracketed Illinois iteration. The dip does not cross 0,
-// so the velocity is monotone between v0 and v1: A+ bounds a speeding change, A- a braking one.
+// the root of d(x) = D is found by a bracketed regula falsi (Anderson-Bjorck). The dip does not
+// cross 0, so the velocity is monotone between v0 and v1: A+ bounds a speeding change, A- a braking
+// one.
 
 #include <algorithm>
 #include <cmath>
@@ -105,7 +106,8 @@ Status two_peak_move(const State& start, double p1, double v1, const Limits& lim
   double g_lo = g(0.0);
   double g_hi = g(x_hi);
   if (!(g_lo * g_hi < 0.0)) return Status::not_supported;  // D outside (d(0), d(x_hi))
-  // Illinois iteration on x in [0, x_hi] (bisection fallback); g changes sign in between.
+  // Regula falsi (Anderson-Bjorck weight) on x in [0, x_hi] (bisection fallback); g changes sign in
+  // between.
   double lo = 0.0;
   double hi = x_hi;
   int side = 0;
@@ -119,14 +121,14 @@ Status two_peak_move(const State& start, double p1, double v1, const Limits& lim
       break;
     }
     if ((gx < 0.0) == (g_lo < 0.0)) {
+      if (side == -1) g_hi *= detail::anderson_bjorck(gx, g_lo);
       lo = x;
       g_lo = gx;
-      if (side == -1) g_hi *= 0.5;
       side = -1;
     } else {
+      if (side == 1) g_lo *= detail::anderson_bjorck(gx, g_hi);
       hi = x;
       g_hi = gx;
-      if (side == 1) g_lo *= 0.5;
       side = 1;
     }
   }
