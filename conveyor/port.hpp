@@ -17,8 +17,11 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "interp/command.hpp"
+#include "machines/machine.hpp"
 
 namespace ncsim::conveyor {
 
@@ -33,6 +36,17 @@ struct BeltState {
 struct PortError {
   std::string id;       ///< the manual's id (P-ERR-44009, ...) or ncsim's (NC90xx)
   std::string message;  ///< what happened, with the values
+};
+
+/// What the world knows about the latch take_latch() handed out last (conveyor-world,
+/// docs/conveyor.md "The world"): the workpiece it belongs to, the V.E. values the PLC side
+/// writes for it, and the truth the measured value approximates.
+struct LatchInfo {
+  std::uint64_t workpiece = 0;  ///< 1-based number in order of arrival at the sensor; 0: none
+  double position = 0.0;        ///< [mm] the latched value (what take_latch() returned)
+  double true_position = 0.0;   ///< [mm] the real conveyor position when the front edge passed
+  double sensor_x = 0.0;        ///< [mm] MCS X of the real sensor (scenario, else P-CHAN-00368)
+  std::vector<std::pair<std::string, double>> ve;  ///< V.E. NAME (upper case), value
 };
 
 class Port {
@@ -55,7 +69,8 @@ class Port {
 
   /// S1[MC_MoveVelocity ...] on the conveying axis (spindle mode): the belt ramps to the new
   /// velocity with the command's (or the axis list's) dynamics from the next step() on.
-  /// Ignored (returns false) in encoder mode, where the scenario moves the belt.
+  /// Returns false when not taken: in encoder mode, where the scenario moves the belt, and for
+  /// a velocity above the axis's P-AXIS-00212; error() then says why (NC9006, NC9005).
   virtual bool command_velocity(const interp::MoveVelocity& command) noexcept = 0;
   /// S1[MC_TouchProbe ...]: arms the latch. A retrigger while armed is P-ERR-44009 (error()).
   virtual void arm_probe(const interp::ProbeArm& command) noexcept = 0;
@@ -68,6 +83,21 @@ class Port {
 
   /// The error raised by the world, if any (the channel stops with it).
   virtual const std::optional<PortError>& error() const noexcept = 0;
+
+  /// `#MACHINE DATA` on the conveyor axis's conv_sync.* (P-AXIS-00620..00626): the filters
+  /// restart from the current measured value with the new orders, the delay time applies
+  /// from the next step(). Returns false when this Port does not support it (the default).
+  virtual bool set_axis_params(const machines::ConveyorAxisParams& params) noexcept {
+    (void)params;
+    return false;
+  }
+
+  /// The latch take_latch() returned last (workpiece 0 before the first; a test double
+  /// without workpieces may keep this default).
+  virtual const LatchInfo& last_latch() const noexcept {
+    static const LatchInfo kNone;
+    return kNone;
+  }
 };
 
 }  // namespace ncsim::conveyor

@@ -397,6 +397,8 @@ AxisParams build_axis(const ListValues& v, core::DiagnosticList& diagnostics) {
   a.modulo_upper = v.internal("getriebe[0].moduloo");
   a.drive_type = static_cast<int>(v.number("kenngr.antr_typ"));
   a.measure_signal = v.text("kenngr.measure.signal");
+  a.measure_input = static_cast<int>(v.number("kenngr.measure.input"));
+  a.measure_edge = v.text("kenngr.measure.edge");
   a.soft_limits = SoftLimits{v.internal("kenngr.swe_neg"), v.internal("kenngr.swe_pos")};
 
   // Gear 0 only (docs/machines.md): getriebe[1..7] are accepted and not used.

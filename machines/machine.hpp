@@ -111,7 +111,9 @@ struct AxisParams {
   double modulo_lower = 0.0;    ///< P-AXIS-00127 getriebe[0].modulou [mm | deg]
   double modulo_upper = 360.0;  ///< P-AXIS-00126 getriebe[0].moduloo, > modulo_lower [mm | deg]
   int drive_type = 0;           ///< kenngr.antr_typ P-AXIS-00020 (stored, not interpreted)
-  std::string measure_signal;   ///< kenngr.measure.signal
+  std::string measure_signal;   ///< kenngr.measure.signal P-AXIS-00516
+  int measure_input = 1;        ///< kenngr.measure.input P-AXIS-00517, the probing input
+  std::string measure_edge;     ///< kenngr.measure.edge P-AXIS-00518: POS or NEG
   SoftLimits soft_limits;
   Dynamics dynamics;
   Monitoring monitoring;

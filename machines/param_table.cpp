@@ -37,6 +37,8 @@ constexpr std::array kTable = {
   ParamSpec{"P-AXIS-00178", "kenngr.swe_pos", A, ValueType::sgn32, kSgn32Min, kSgn32Max, "0.1 um | 0.0001 deg", kTenthMicron, "mm | deg", "10000000", kOpt, -1, -1, "004 §5.2.1"},
   ParamSpec{"P-AXIS-00555", "kenngr.conv_sync_optim", A, ValueType::boolean, 0, 1, "", 1, "", "0", kOpt, -1, -1, "004 §5.2.1"},
   ParamSpec{"P-AXIS-00516", "kenngr.measure.signal", A, ValueType::word, 0, 0, "", 1, "", "DRIVE_TYPE_DEFAULT", kOpt, -1, -1, "004 §4.3 (id inferred)"},
+  ParamSpec{"P-AXIS-00517", "kenngr.measure.input", A, ValueType::uns16, 0, 255, "", 1, "", "1", kOpt, -1, -1, "TF5200 P-AXIS-00517 (UNS08; default: ncsim, the seeds' Channel=1)"},
+  ParamSpec{"P-AXIS-00518", "kenngr.measure.edge", A, ValueType::word, 0, 0, "POS | NEG", 1, "", "POS", kOpt, -1, -1, "TF5200 P-AXIS-00518 (blank: P-AXIS-00113 = 0, positive)"},
   ParamSpec{"NCSIM-AXIS-004", "kenngr.messachse", A, ValueType::boolean, 0, 1, "", 1, "", "0", kOpt, -1, -1, "004 §4.9.1 (listing)"},
   // ---- axis list: conveyor axis (seed 004 §5.2.1) -----------------------------------------
   ParamSpec{"P-AXIS-00620", "conv_sync.enable_filter", A, ValueType::boolean, 0, 1, "", 1, "", "0", kOpt, -1, -1, "004 §5.2.1"},

@@ -11,32 +11,10 @@
 #include <utility>
 
 #include "core/number_text.hpp"
+#include "scenario/loader_detail.hpp"
 
 namespace ncsim::scenario {
-namespace {
-
-// Diagnostic ids (docs/diagnostics.md "scenario/").
-constexpr const char* kSyntax = "NC7001";
-constexpr const char* kUnknownKey = "NC7002";
-constexpr const char* kWrongType = "NC7003";
-constexpr const char* kRange = "NC7004";
-constexpr const char* kOrder = "NC7005";
-constexpr const char* kCombination = "NC7006";
-constexpr const char* kConveyor = "NC7007";
-constexpr const char* kName = "NC7008";
-constexpr const char* kUnreadable = "NC7010";
-constexpr const char* kUnknownAxis = "NC7011";
-constexpr const char* kLineBeyond = "NC7012";
-constexpr const char* kLineEmpty = "NC7013";
-
-constexpr double kTimeMax = 1e9;  // [s] largest `at`, `duration`, stop.time
-constexpr double kOverrideMaxPercent = kOverrideMax * 100.0;
-constexpr double kLineMax = 4294967295.0;          // line and pass counts are 32-bit
-constexpr double kCyclesMax = 9.2233720368547e18;  // TOML integers are 64-bit signed
-
-// Tables and keys that conveyor tracking (issue 14) adds; reserved in docs/scenario.md.
-constexpr std::string_view kConveyorTables[] = {"belt", "workpiece", "probe", "filter"};
-constexpr std::string_view kConveyorEventKeys[] = {"reduced_filter"};
+namespace detail {
 
 std::string upper(std::string_view s) {
   std::string out(s);
@@ -119,11 +97,19 @@ std::string value_text(double v) {
   return core::number_text(v);
 }
 
+}  // namespace detail
+
+namespace {
+
+using namespace detail;
+
+// Tables an earlier docs/scenario.md reserved for conveyor tracking; [conveyor] holds them now.
+constexpr std::string_view kOldConveyorTables[] = {"belt", "workpiece", "probe", "filter"};
+
 // Reads one file's tables into a Scenario, reporting every problem.
-class Reader {
+class Reader : public ReaderBase {
  public:
-  Reader(const core::SourceFile& file, const Context& context, core::DiagnosticList& diags)
-      : file_(file), context_(context), diags_(diags) {}
+  using ReaderBase::ReaderBase;
 
   Scenario read(const toml::table& root) {
     Scenario s;
@@ -143,89 +129,24 @@ class Reader {
         read_events(node, s);
       } else if (name == "stop") {
         read_stop(node, s);
-      } else if (std::find(std::begin(kConveyorTables), std::end(kConveyorTables), name) !=
-                 std::end(kConveyorTables)) {
-        error(kConveyor, key.source(),
-              "not supported: [" + name +
-                  "] (conveyor tracking): the belt, workpieces, touch probe and filters come "
-                  "with conveyor tracking; docs/scenario.md reserves their layout");
+      } else if (name == "conveyor") {
+        read_conveyor(*this, node, s);
+      } else if (std::find(std::begin(kOldConveyorTables), std::end(kOldConveyorTables), name) !=
+                 std::end(kOldConveyorTables)) {
+        error(kUnknownKey, key.source(),
+              "unknown key `" + name +
+                  "`: the belt, its sensor and the workpieces are the [conveyor] table "
+                  "(docs/scenario.md \"[conveyor]\")");
       } else {
         error(kUnknownKey, key.source(),
               "unknown key `" + name + "`" +
-                  suggestion(name, {"description", "ve", "event", "stop", "belt", "workpiece",
-                                    "probe", "filter"}));
+                  suggestion(name, {"description", "ve", "event", "stop", "conveyor"}));
       }
     }
     return s;
   }
 
  private:
-  // A node toml++ made implicitly (the `a` of a dotted key `a.b = 1`) has no position: the
-  // key being read stands in for it.
-  void error(const char* id, const toml::source_region& at, std::string message) {
-    error(id, at.begin.line != 0 ? loc(at) : loc(key_), std::move(message));
-  }
-  void error(const char* id, core::SourceLoc at, std::string message) {
-    core::Diagnostic d;
-    d.file = file_.name();
-    d.loc = at;
-    d.id = id;
-    d.message = std::move(message);
-    diags_.add(std::move(d));
-  }
-  static core::SourceLoc loc(const toml::source_region& at) {
-    return core::SourceLoc{at.begin.line, at.begin.column};
-  }
-
-  void wrong_type(const toml::node& node, const std::string& path, std::string_view expected) {
-    error(kWrongType, node.source(),
-          path + " must be " + std::string(expected) + ", not " + std::string(type_name(node)));
-  }
-
-  // A number (integer or float) in [lo, hi] (`unit` for the message); nullopt when reported.
-  std::optional<double> number(const toml::node& node, const std::string& path, double lo,
-                               double hi, std::string_view unit) {
-    double v = 0.0;
-    if (const auto* i = node.as_integer()) {
-      v = static_cast<double>(i->get());
-    } else if (const auto* f = node.as_floating_point()) {
-      v = f->get();
-    } else {
-      wrong_type(node, path, "a number");
-      return std::nullopt;
-    }
-    const std::string u = unit.empty() ? "" : " " + std::string(unit);
-    if (!std::isfinite(v)) {
-      error(kRange, node.source(), path + " = " + value_text(v) + u + " is not a finite number");
-      return std::nullopt;
-    }
-    if (v < lo || v > hi) {
-      error(kRange, node.source(),
-            path + " = " + value_text(v) + u + " is out of range " + value_text(lo) + " .. " +
-                value_text(hi) + u);
-      return std::nullopt;
-    }
-    return v;
-  }
-
-  // An integer in [lo, hi]; a float is a wrong type (a count is whole).
-  std::optional<std::uint64_t> integer(const toml::node& node, const std::string& path, double lo,
-                                       double hi) {
-    const auto* i = node.as_integer();
-    if (i == nullptr) {
-      wrong_type(node, path, "an integer");
-      return std::nullopt;
-    }
-    const double v = static_cast<double>(i->get());
-    if (v < lo || v > hi) {
-      error(kRange, node.source(),
-            path + " = " + std::to_string(i->get()) + " is out of range " + value_text(lo) +
-                " .. " + value_text(hi));
-      return std::nullopt;
-    }
-    return static_cast<std::uint64_t>(i->get());
-  }
-
   std::optional<std::uint32_t> line_number(const toml::node& node, const std::string& path) {
     const auto v = integer(node, path, 1.0, kLineMax);
     if (!v) return std::nullopt;
@@ -248,46 +169,6 @@ class Reader {
       diags_.add(std::move(d));
     }
     return line;
-  }
-
-  // NAME = number pairs of `[ve]` or an event's `ve` / `axis_override` (names upper-cased,
-  // unique ignoring case). `percent`: values are overrides in % (stored as fractions).
-  template <typename Out>
-  void read_named(const toml::node& node, const std::string& path, bool percent, Out&& out) {
-    const toml::table* t = node.as_table();
-    if (t == nullptr) {
-      wrong_type(node, path, "a table of NAME = number");
-      return;
-    }
-    std::vector<std::string> seen;
-    for (auto&& [key, value] : *t) {
-      key_ = key.source();
-      const std::string name(key.str());
-      const std::string item = path + "." + name;
-      if (value.is_table() && upper(name) == "V") {
-        error(kName, key.source(),
-              item +
-                  ": write V.E. names without the `V.E.` prefix (`PART = 3`, not "
-                  "`V.E.PART = 3`)");
-        continue;
-      }
-      if (!is_name(name)) {
-        error(
-            kName, key.source(),
-            item + ": `" + name + "` is not a name (a letter or `_`, then letters, digits or `_`)");
-        continue;
-      }
-      const std::string up = upper(name);
-      if (std::find(seen.begin(), seen.end(), up) != seen.end()) {
-        error(kName, key.source(), item + ": " + up + " is given twice (names ignore case)");
-        continue;
-      }
-      seen.push_back(up);
-      const auto v = percent ? number(value, item, 0.0, kOverrideMaxPercent, "%")
-                             : number(value, item, std::numeric_limits<double>::lowest(),
-                                      std::numeric_limits<double>::max(), "");
-      if (v) out(up, percent ? *v / 100.0 : *v, key.source());
-    }
   }
 
   void read_ve(const toml::node& node, Scenario& s) {
@@ -343,6 +224,7 @@ class Reader {
     std::optional<bool> feed_hold;
     std::optional<double> duration;
     std::vector<Action> ve_writes;
+    std::optional<bool> reduced_filter;
     const toml::node* duration_node = nullptr;
     const toml::node* pass_node = nullptr;
     bool unknown_key = false;  // a misspelt trigger or action: no "missing" error besides
@@ -394,12 +276,18 @@ class Reader {
         read_named(node, item, false, [&](const std::string& ve, double v, const auto&) {
           ve_writes.emplace_back(VeWrite{ve, v});
         });
-      } else if (std::find(std::begin(kConveyorEventKeys), std::end(kConveyorEventKeys), name) !=
-                 std::end(kConveyorEventKeys)) {
-        error(kConveyor, key.source(),
-              "not supported: " + item +
-                  " (conveyor tracking): the reduced actual-value "
-                  "filter comes with conveyor tracking");
+      } else if (name == "reduced_filter") {
+        if (const auto* b = node.as_boolean()) {
+          reduced_filter = b->get();
+          if (!context_.conveyor_wired) {
+            error(kConveyor, key.source(),
+                  "not supported: " + item +
+                      " (MCV_SetReducedFilter): the channel loop does not play the conveyor "
+                      "yet (docs/conveyor.md)");
+          }
+        } else {
+          wrong_type(node, item, "a boolean (true: reduced filter, false: normal filter)");
+        }
       } else {
         unknown_key = true;
         error(kUnknownKey, key.source(),
@@ -428,7 +316,7 @@ class Reader {
                             t.contains("reduced_filter");
     if (!has_action && !unknown_key) {
       error(kCombination, e.loc,
-            path + " does nothing: give override, axis_override, feed_hold or ve");
+            path + " does nothing: give override, axis_override, feed_hold, ve or reduced_filter");
     }
     if (diags_.error_count() != errors_before) return std::nullopt;
 
@@ -437,11 +325,13 @@ class Reader {
     } else {
       e.trigger = AtLine{*line, pass.value_or(1)};
     }
-    // Documented order: path override, axis overrides (by name), feed hold, V.E. writes.
+    // Documented order: path override, axis overrides (by name), feed hold, V.E. writes,
+    // reduced filter.
     if (path_override) e.actions.emplace_back(PathOverride{*path_override});
     e.actions.insert(e.actions.end(), axis_overrides.begin(), axis_overrides.end());
     if (feed_hold) e.actions.emplace_back(FeedHold{*feed_hold});
     e.actions.insert(e.actions.end(), ve_writes.begin(), ve_writes.end());
+    if (reduced_filter) e.actions.emplace_back(ReducedFilter{*reduced_filter});
     e.hold_release = duration;
     return e;
   }
@@ -486,11 +376,6 @@ class Reader {
       c.passes.reset();
     }
   }
-
-  const core::SourceFile& file_;
-  const Context& context_;
-  core::DiagnosticList& diags_;
-  toml::source_region key_;  // the key being read (position of nodes that have none)
 };
 
 }  // namespace

@@ -30,6 +30,9 @@ struct Context {
   /// only when the scenario names a line).
   const core::SourceFile* program = nullptr;
   std::optional<std::vector<std::string>> axes;  ///< the machine's axis names (NC7011)
+  /// True once the channel loop plays the conveyor world: until then `[conveyor]` and the
+  /// event key `reduced_filter` are validated and then refused as not supported (NC7007).
+  bool conveyor_wired = false;
 };
 
 struct LoadResult {

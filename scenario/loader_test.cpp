@@ -181,13 +181,20 @@ TEST_CASE("bad combinations are NC7006") {
   CHECK(has(only_error(parse("[stop]\nline = 4\n")), "NC7006", 1, "go together"));
 }
 
-TEST_CASE("conveyor tracking tables are refused, not ignored (NC7007)") {
-  CHECK(has(only_error(parse("[belt]\nvelocity = 300\n")), "NC7007", 1,
-            "not supported: [belt] (conveyor tracking)"));
-  CHECK(has(only_error(parse("[[workpiece]]\nat = 1\n")), "NC7007", 1,
-            "not supported: [workpiece] (conveyor tracking)"));
+TEST_CASE("the old reserved conveyor tables are unknown keys that point to [conveyor]") {
+  CHECK(has(only_error(parse("[belt]\nvelocity = 300\n")), "NC7002", 1, "[conveyor] table"));
+  CHECK(has(only_error(parse("[[workpiece]]\nat = 1\n")), "NC7002", 1, "[conveyor] table"));
+}
+
+TEST_CASE("reduced_filter events are refused until the channel plays the conveyor (NC7007)") {
   CHECK(has(only_error(parse("[[event]]\nat = 1\nreduced_filter = true\n")), "NC7007", 3,
-            "not supported: event[1].reduced_filter (conveyor tracking)"));
+            "not supported: event[1].reduced_filter"));
+  Context wired;
+  wired.conveyor_wired = true;
+  const LoadResult r = parse("[[event]]\nat = 1\nreduced_filter = true\n", wired);
+  REQUIRE(r.scenario);
+  REQUIRE(r.scenario->events[0].actions.size() == 1);
+  CHECK(std::get<ReducedFilter>(r.scenario->events[0].actions[0]).on);
 }
 
 TEST_CASE("bad and duplicate names are NC7008") {
@@ -327,11 +334,24 @@ TEST_CASE("the complete example of docs/scenario.md loads") {
   CHECK(r.scenario->stop.passes == 50u);
 }
 
-TEST_CASE("the reserved conveyor layout of docs/scenario.md is refused table by table") {
-  const LoadResult r = parse(doc_block(1));
-  REQUIRE(r.diagnostics.error_count() == 4);
-  for (const core::Diagnostic& d : r.diagnostics.items())
-    CHECK(d.id == "NC7007");
+TEST_CASE("the [conveyor] example of docs/scenario.md loads; unwired it is NC7007 once") {
+  const LoadResult unwired = parse(doc_block(1));
+  CHECK(has(only_error(unwired), "NC7007", only_error(unwired).loc.line, "not supported"));
+  Context wired;
+  wired.conveyor_wired = true;
+  const LoadResult r = parse(doc_block(1), wired);
+  CHECK(r.diagnostics.items().empty());
+  REQUIRE(r.scenario);
+  REQUIRE(r.scenario->conveyor);
+  const Conveyor& c = *r.scenario->conveyor;
+  CHECK(c.mode == ConveyorMode::encoder);
+  CHECK(c.velocity == 300.0);
+  CHECK(c.profile.size() == 2);
+  CHECK(c.dead_time == doctest::Approx(0.017455));
+  REQUIRE(c.fluctuation);
+  CHECK(c.fluctuation->amplitude == doctest::Approx(0.05));  // 5 %
+  REQUIRE(c.series);
+  CHECK(c.series->count == 20u);
 }
 
 TEST_CASE("a file that cannot be read is NC7010") {

@@ -67,6 +67,8 @@ void Player::apply(const Action& action) {
           axis_override_[a.axis] = a.fraction;
         } else if constexpr (std::is_same_v<T, FeedHold>) {
           feed_hold_ = a.on;
+        } else if constexpr (std::is_same_v<T, ReducedFilter>) {
+          reduced_filter_ = a.on;
         } else {
           ve_.write(a.name, a.value);
         }

@@ -77,6 +77,8 @@ class Player {
   double axis_override(std::string_view axis) const;
   /// Feed hold in force.
   bool feed_hold() const { return feed_hold_; }
+  /// The reduced actual-value filter (MCV_SetReducedFilter) as the events last set it.
+  bool reduced_filter() const { return reduced_filter_; }
   /// Passes of main-program line `line` started so far (0 for a line the scenario does not
   /// name: only those are counted).
   std::uint32_t passes(std::uint32_t line) const;
@@ -110,6 +112,7 @@ class Player {
   double path_override_ = 1.0;
   std::map<std::string, double, std::less<>> axis_override_;
   bool feed_hold_ = false;
+  bool reduced_filter_ = false;
 };
 
 }  // namespace ncsim::scenario

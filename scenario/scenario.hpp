@@ -59,8 +59,13 @@ struct VeWrite {
   double value = 0.0;
 };
 
+/// MCV_SetReducedFilter from the PLC side: the conveyor's reduced actual-value filter on/off.
+struct ReducedFilter {
+  bool on = true;
+};
+
 /// One effect of an event; a Player yields these in order.
-using Action = std::variant<PathOverride, AxisOverride, FeedHold, VeWrite>;
+using Action = std::variant<PathOverride, AxisOverride, FeedHold, VeWrite, ReducedFilter>;
 
 /// One `[[event]]` of the file.
 struct Event {
@@ -95,6 +100,76 @@ struct VeInitial {
   core::SourceLoc loc;
 };
 
+/// How the conveyor belt moves (docs/scenario.md "[conveyor]").
+enum class ConveyorMode {
+  encoder,  ///< the scenario moves the belt; the conveyor axis is an encoder (ACHSMODE_COUNTER)
+  spindle,  ///< the program drives it (S1[MC_MoveVelocity ...])
+};
+
+/// A change of the encoder belt's velocity: from `t` on, linear in time over `ramp` to `velocity`
+/// (ramp 0: a step).
+struct BeltChange {
+  double t = 0.0;         ///< [s] start of the change
+  double velocity = 0.0;  ///< [mm/s] velocity after the change (0: the belt stops)
+  double ramp = 0.0;      ///< [s] duration of the linear change, >= 0
+};
+
+/// Periodic fluctuation of the belt velocity: v = v_profile (1 + amplitude sin(2 pi f t)).
+struct BeltFluctuation {
+  double amplitude = 0.0;  ///< [-] fraction of the velocity, 0 .. 1
+  double frequency = 0.0;  ///< [Hz] > 0
+};
+
+/// Gaussian white noise on the conveyor axis's measured position, seeded.
+struct BeltNoise {
+  double sigma = 0.0;      ///< [mm] standard deviation, >= 0
+  std::uint64_t seed = 1;  ///< seed of ncsim's own generator (same seed, same run)
+};
+
+/// The measuring unit.
+enum class SensorKind {
+  light_barrier,  ///< the signal is on while a workpiece blocks the beam (front edge .. rear edge)
+  camera,         ///< one trigger pulse at each front edge (both edges there)
+};
+
+struct Sensor {
+  SensorKind kind = SensorKind::light_barrier;
+  std::optional<double> position;  ///< [mm] MCS X of the sensor; nullopt: P-CHAN-00368
+  bool front_edge_rising = true;   ///< light barrier: the front edge makes a rising edge
+  std::uint32_t queue = 16;        ///< PLC-side queue length of measured values (method 3)
+};
+
+/// One workpiece: its front edge passes the sensor at a belt travel or at a time.
+struct Workpiece {
+  std::optional<double> travel;  ///< [mm] conveyor axis position at the front edge's arrival
+  std::optional<double> t;       ///< [s] time of the front edge's arrival (exactly one is set)
+  double length = 100.0;         ///< [mm] front edge to rear edge along the belt, > 0
+  std::vector<VeWrite> ve;       ///< V.E. values written when the workpiece is measured
+  core::SourceLoc loc;           ///< its table in the file
+};
+
+/// `[conveyor.workpieces]`: `count` workpieces, the first at `first` (travel or time), then one
+/// every `pitch` (travel or time, same kind as `first`).
+struct WorkpieceSeries {
+  Workpiece first;          ///< the first workpiece (travel or t), its length and V.E. values
+  double pitch = 0.0;       ///< [mm] or [s] between consecutive front edges, > 0
+  std::uint64_t count = 0;  ///< >= 1
+};
+
+/// `[conveyor]`: the conveyor world (docs/scenario.md, docs/conveyor.md "The world").
+struct Conveyor {
+  ConveyorMode mode = ConveyorMode::spindle;
+  double velocity = 0.0;            ///< [mm/s] encoder belt velocity at t = 0
+  std::vector<BeltChange> profile;  ///< encoder only; in time order, not overlapping
+  std::optional<BeltFluctuation> fluctuation;
+  std::optional<BeltNoise> noise;
+  double dead_time = 0.0;  ///< [s] real belt -> its measured value, >= 0
+  Sensor sensor;
+  std::vector<Workpiece> workpieces;      ///< `[[conveyor.workpiece]]`, in file order
+  std::optional<WorkpieceSeries> series;  ///< `[conveyor.workpieces]`
+  core::SourceLoc loc;                    ///< the [conveyor] table
+};
+
 /// Largest override: 1000 % (docs/scenario.md "Decisions").
 inline constexpr double kOverrideMax = 10.0;
 /// Tolerance of time comparisons [s]: cycle times are sums of t_cycle, not exact decimals.
@@ -102,11 +177,12 @@ inline constexpr double kTimeEpsilon = 1e-9;
 
 /// The scenario: built only by load_scenario(); immutable afterwards.
 struct Scenario {
-  std::string file;           ///< the file it was read from, as given
-  std::string description;    ///< `description`, free text
-  std::vector<VeInitial> ve;  ///< `[ve]`, in file order
-  std::vector<Event> events;  ///< `[[event]]`, in file order
-  StopConditions stop;        ///< `[stop]`
+  std::string file;                  ///< the file it was read from, as given
+  std::string description;           ///< `description`, free text
+  std::vector<VeInitial> ve;         ///< `[ve]`, in file order
+  std::vector<Event> events;         ///< `[[event]]`, in file order
+  StopConditions stop;               ///< `[stop]`
+  std::optional<Conveyor> conveyor;  ///< `[conveyor]` (conveyor tracking, issue 14)
 
   /// True when something needs the channel loop (events or stop conditions), i.e. more than
   /// the V.E. initial values that decode-only commands (`check`, `trace`) read.
