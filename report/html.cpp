@@ -131,6 +131,16 @@ std::string json(const ReportData& d) {
   for (std::size_t i = 0; i < d.axes.size(); ++i)
     s += (i > 0 ? "," : "") + json_quote(d.axes[i]);
   s += "],";
+  key(s, "soft_limits");
+  s += '[';
+  for (std::size_t i = 0; i < d.soft_limits.size(); ++i) {
+    s += i > 0 ? ",[" : "[";
+    value(s, d.soft_limits[i][0]);
+    s += ',';
+    value(s, d.soft_limits[i][1]);
+    s += ']';
+  }
+  s += "],";
   key(s, "bucket_cycles");
   s += std::to_string(d.bucket_width);
   s += ',';

@@ -200,7 +200,11 @@
   D.axes.forEach(function (name, i) {
     var L = A.axes[i];
     el('h2', root, 'Axis ' + name);
-    timeChart(root, name + ' position', 'mm', [{label: name, data: series(5 * i), color: COLORS[0]}]);
+    var pos = [{label: name, data: series(5 * i), color: COLORS[0]}];
+    var soft = D.soft_limits[i] || [null, null];
+    if (soft[0] !== null) pos.push({label: 'min (P-AXIS-00177)', data: constant(soft[0]), color: COLORS[1], dash: [6, 4]});
+    if (soft[1] !== null) pos.push({label: 'max (P-AXIS-00178)', data: constant(soft[1]), color: COLORS[1], dash: [6, 4]});
+    timeChart(root, name + ' position', 'mm', pos);
     [['velocity', 'mm/s', 1, L.v_limit, ''], ['acceleration', 'mm/s^2', 2, L.a_limit, ''],
      ['jerk', 'mm/s^3', 3, L.j_limit, ' (limit holds on jerk-limited slopes; STEP is not)']
     ].forEach(function (q) {

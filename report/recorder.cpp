@@ -24,6 +24,16 @@ Recorder::Recorder(std::vector<std::string> axes, std::span<const planner::AxisL
     throw std::invalid_argument("report recorder: " + std::to_string(names_.size()) +
                                 " axis names for " + std::to_string(limits.size()) + " limits");
   values_.assign(series_.series(), std::numeric_limits<double>::quiet_NaN());
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  soft_limits_.assign(names_.size(), {nan, nan});
+}
+
+void Recorder::set_soft_limits(const ipo::ChannelConfig& config) {
+  for (std::size_t i = 0; i < names_.size() && i < config.axes.size(); ++i) {
+    const axes::SoftLimitParams& l = config.axes[i].monitor.soft_limits;
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    soft_limits_[i] = {l.min_enabled ? l.min_position : nan, l.max_enabled ? l.max_position : nan};
+  }
 }
 
 void Recorder::set_pcs1(std::span<const double> p) {
@@ -83,6 +93,7 @@ ReportData Recorder::finish(const RunEnd& end) {
   d.time = series_.finish();
   d.bucket_width = series_.bucket_width();
   d.named = named_;
+  d.soft_limits = soft_limits_;
   d.path_dims = mcs_.dims();
   d.path_mcs = mcs_.finish();
   d.path_tolerance = mcs_.tolerance();

@@ -15,6 +15,7 @@
 // Invariants: memory bounded by the decimation sizes and kSlowest, never by the run length;
 // deterministic.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -46,8 +47,10 @@ struct ReportData {
   /// 4 following error [mm|deg]}; then path velocity [mm/s], programmed feed [mm/s]; then the
   /// named series in order.
   Decimated time;
-  std::uint64_t bucket_width = 1;       ///< cycles per decimation bucket
-  std::vector<NamedSeries> named;       ///< the named series (empty: no conveyor panels)
+  std::uint64_t bucket_width = 1;  ///< cycles per decimation bucket
+  std::vector<NamedSeries> named;  ///< the named series (empty: no conveyor panels)
+  /// Per axis the soft position limits P-AXIS-00177 / 00178 [mm | deg] (NaN: not monitored).
+  std::vector<std::array<double, 2>> soft_limits;
   std::size_t path_dims = 0;            ///< coordinates per toolpath point (first axes, <= 3)
   std::vector<double> path_mcs;         ///< thinned toolpath in MCS, path_dims per point
   double path_tolerance = 0.0;          ///< thinning tolerance reached [mm]
@@ -85,6 +88,9 @@ class Recorder final : public ipo::Sink {
 
   /// The axes whose following error is recorded (read at each on_cycle); null: zero.
   void set_axes(const ipo::AxesState* state) noexcept { axes_state_ = state; }
+  /// The soft position limits of the channel's axes (P-AXIS-00177 / 00178, where enabled),
+  /// drawn on the position charts; `config.axes` in the recorder's axis order.
+  void set_soft_limits(const ipo::ChannelConfig& config);
   /// The PCS1 tool point of the cycle on_cycle() sees next (mm; enables the PCS1 panels).
   void set_pcs1(std::span<const double> p);
   /// Named series `index` (constructor order) for the next cycle; held until set again.
@@ -110,6 +116,7 @@ class Recorder final : public ipo::Sink {
   std::vector<double> pcs1_point_;
   std::vector<double> values_;  ///< one row of series_
   const ipo::AxesState* axes_state_ = nullptr;
+  std::vector<std::array<double, 2>> soft_limits_;
   std::vector<ipo::BlockTime> slowest_;  ///< longest first, ties in execution order
   std::uint64_t blocks_ = 0;
 };

@@ -133,6 +133,22 @@ TEST_CASE("named series and the PCS1 path appear only when given; the outcome na
         doctest::Approx(10.0 - 0.1 * static_cast<double>(feed.n - 1)));
 }
 
+TEST_CASE("soft position limits: the enabled ones, NaN where not monitored") {
+  ChannelConfig cc;
+  cc.path.axes.assign(2, axis(100, 1000, 10000));
+  cc.axes.resize(2);
+  cc.axes[0].monitor.soft_limits = {true, -5.0, true, 800.0};
+  cc.axes[1].monitor.soft_limits = {false, -1.0, true, 300.0};
+  Recorder rec({"X", "Y"}, cc.path.axes, 0.001, cc.path.start);
+  rec.set_soft_limits(cc);
+  const ReportData d = rec.finish({"p.nc", "m", "", ""});
+  REQUIRE(d.soft_limits.size() == 2);
+  CHECK(d.soft_limits[0][0] == -5.0);
+  CHECK(d.soft_limits[0][1] == 800.0);
+  CHECK(std::isnan(d.soft_limits[1][0]));
+  CHECK(d.soft_limits[1][1] == 300.0);
+}
+
 TEST_CASE("a recorder needs one name per axis limit") {
   Config cfg;
   cfg.axes.assign(2, axis(100, 1000, 10000));

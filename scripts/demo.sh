@@ -30,10 +30,15 @@ report=build/release/isg_reference_example.html
 echo "\$ ncsim report -o $report $example"
 build/release/cli/ncsim report -o "$report" "$example"
 shot=build/release/isg_reference_example.png
+rm -f "$shot"
 if command -v chromium >/dev/null 2>&1; then
   timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-dev-shm-usage \
-    --user-data-dir=build/release/chromium-profile --virtual-time-budget=10000 \
-    --window-size=1280,2400 --screenshot="$shot" "file://$PWD/$report" >/dev/null 2>&1 &&
-    echo "screenshot: $shot"
+    --user-data-dir="$PWD/build/release/chromium-profile" --virtual-time-budget=10000 \
+    --window-size=1280,2400 --screenshot="$PWD/$shot" "file://$PWD/$report" >/dev/null 2>&1 || true
 fi
-echo "report: $PWD/$report (open it in a browser)"
+if [[ -s $shot ]]; then
+  echo "screenshot: $PWD/$shot"
+else
+  echo "screenshot: not made (chromium missing or failed; scripts/deps.sh installs it)"
+fi
+echo "open in a browser: file://$PWD/$report"
