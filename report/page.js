@@ -78,6 +78,7 @@
 
   // A chart over time: defs = [{label, data, color, dash}].
   function timeChart(parent, title, unit, defs) {
+    if (D.t.length === 0) return null;  // no cycle: the header says so, no empty chart
     var data = [D.t];
     var series = [{label: 't [s]'}];
     var points = 0;
@@ -101,6 +102,7 @@
   // A toolpath view: coordinates a and b of the thinned path, equal scales.
   function pathChart(parent, title, pts, a, b) {
     var dims = D.path.dims, xs = [], ys = [];
+    if (pts.length < dims) return null;
     for (var i = 0; i + dims - 1 < pts.length; i += dims) {
       xs.push(pts[i + a]);
       ys.push(b < dims ? pts[i + b] : 0);
@@ -143,6 +145,7 @@
   el('span', outcome, D.outcome, D.outcome === 'ok' ? 'ok' : 'bad');
   if (D.stop) el('p', root, 'stop reason: ' + D.stop);
   if (D.error) el('pre', root, D.error, 'err');
+  if (D.t.length === 0) el('p', root, 'The run has no interpolation cycle: nothing to chart.', 'bad');
   var sp = D.total.split;
   table(root, ['rapid [s]', 'feed [s]', 'dwell [s]', 'exact stop [s]', 'waiting [s]', 'held [s]'],
         [[fmt(sp.rapid), fmt(sp.feed), fmt(sp.dwell), fmt(sp.exact_stop), fmt(sp.waiting),
