@@ -3,7 +3,7 @@
 //   ncsim check PROG.nc|- [--machine DIR] [--scenario FILE] [--ve NAME=value] [--syntax-only]
 //                                              exit 0 ok, 1 program errors, 2 usage
 //   ncsim trace PROG.nc [--machine DIR] [--scenario FILE] [--ve NAME=value] [--max-commands N]
-//   ncsim time|run ...                  cli/run_commands.hpp (exit 3: --audit violations)
+//   ncsim time|run|report ...           cli/run_commands.hpp (exit 3: --audit violations)
 //   ncsim golden check [PROGRAM...] | bless PROGRAM...|--all   cli/golden_command.hpp
 //
 // Diagnostics go to stderr as `file:line:col: error: text [id]` with the source line and a

@@ -24,6 +24,8 @@
 #include "ipo/program_source.hpp"
 #include "ipo/time.hpp"
 #include "machines/loader.hpp"
+#include "report/html.hpp"      // --- report:
+#include "report/recorder.hpp"  // --- report:
 #include "scenario/player.hpp"
 
 namespace ncsim::cli {
@@ -433,7 +435,8 @@ class CsvSink final : public ipo::Sink {
   }
   /// Writes what is buffered; false (errno kept) on a write error, which sticks.
   bool flush() {
-    if (!failed_ && !buf_.empty() && std::fwrite(buf_.data(), 1, buf_.size(), f_) != buf_.size()) {
+    if (!failed_ && f_ != nullptr && !buf_.empty() &&
+        std::fwrite(buf_.data(), 1, buf_.size(), f_) != buf_.size()) {
       failed_ = true;
       errno_ = errno;
     }
@@ -480,10 +483,14 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   const bool to_stdout = options.output == "-";
   const fs::path target = options.output;
   std::error_code ec;
-  const bool direct = to_stdout || (fs::exists(target, ec) && !fs::is_regular_file(target, ec));
+  // --- report: `ncsim report` (csv false) opens no file
+  const bool direct =
+      !options.csv || to_stdout || (fs::exists(target, ec) && !fs::is_regular_file(target, ec));
   const fs::path temp = direct ? target : fs::path(target.string() + ".tmp");
   std::FILE* f = nullptr;
-  if (to_stdout) {
+  if (!options.csv) {
+    // --- report: no CSV
+  } else if (to_stdout) {
     out.flush();
     f = stdout;
   } else {
@@ -504,7 +511,14 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   if (options.audit) {
     audit = std::make_unique<ipo::Audit>(cfg.path.axes, cfg.path.channel.t_cycle, cfg.path.start);
   }
-  Tee tee(&csv, audit.get());
+  Tee tee(options.csv ? &csv : nullptr, audit.get());
+  // --- report: the page's recorder sees the same joints and cycles (docs/report.md)
+  std::unique_ptr<report::Recorder> recorder;
+  if (!options.report.empty())
+    recorder = std::make_unique<report::Recorder>(names, cfg.path.axes, cfg.path.channel.t_cycle,
+                                                  cfg.path.start);
+  if (recorder) recorder->set_soft_limits(cfg);
+  Tee with_report(&tee, recorder.get());
 
   std::string head = "# ncsim run\n# program: " + in.file.name() +
                      "\n# machine: " + in.machine.name + "\n# cycle: " + num(in.t_cycle) +
@@ -522,9 +536,10 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   csv.text(head);
 
   Playing playing(in, src);
-  ipo::Channel channel(std::move(cfg), src, &tee);
+  ipo::Channel channel(std::move(cfg), src, &with_report);
   playing.attach(channel);
   csv.set_axes(&channel.axes());
+  if (recorder) recorder->set_axes(&channel.axes());  // --- report:
   Progress progress(err);
   ipo::Status s;
   while ((s = channel.step()) == ipo::Status::running && !csv.failed()) {
@@ -542,8 +557,8 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
         << "'): " << scenario::to_string(*stop) << " at t=" << num(channel.cycle().t) << " s\n";
   }
   csv.flush();
-  if (!csv.failed() && std::fflush(f) != 0) csv.set_failed(errno);
-  if (!to_stdout && std::fclose(f) != 0 && !csv.failed()) csv.set_failed(errno);
+  if (f != nullptr && !csv.failed() && std::fflush(f) != 0) csv.set_failed(errno);
+  if (f != nullptr && !to_stdout && std::fclose(f) != 0 && !csv.failed()) csv.set_failed(errno);
   if (csv.failed()) {
     err << "ncsim: error: cannot write '" << (to_stdout ? std::string("stdout") : temp.string())
         << "': " << std::strerror(csv.error_number()) << '\n';
@@ -559,6 +574,19 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
       return kExitUsage;
     }
   }
+  // --- report: the page, also after a run-time error (it shows it)
+  if (recorder) {
+    const auto& stop = channel.scenario_stop();
+    const report::ReportData data = recorder->finish(
+        {in.file.name(), in.machine.name,
+         stop ? std::string(scenario::to_string(*stop)) : std::string(), error_text});
+    std::string why;
+    if (!report::write_html_file(data, options.report, why)) {
+      err << "ncsim: error: " << why << '\n';
+      return kExitUsage;
+    }
+    (options.csv ? err : out) << "report: " << options.report << '\n';
+  }
   if (!error_text.empty()) {
     err << error_text;
     return kExitProgramErrors;
@@ -568,6 +596,20 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
     if (!audit->verdict().ok()) return kExitAudit;
   }
   return kExitOk;
+}
+
+// --- report:
+int run_report(const ReportOptions& options, std::ostream& out, std::ostream& err) {
+  RunOptions run;
+  run.program = options.program;
+  run.cycle_us = options.cycle_us;
+  run.report = options.output;
+  run.csv = false;
+  if (run.report.empty()) {
+    err << "ncsim: error: report: -o needs a file name [NC8101]\n";
+    return kExitUsage;
+  }
+  return run_run(run, out, err);
 }
 
 RunCommands::RunCommands(CLI::App& app) {
@@ -600,11 +642,23 @@ RunCommands::RunCommands(CLI::App& app) {
       "--detail", run_.detail,
       "Add each axis's v and a, the path velocity, the programmed feed and each axis's "
       "following error");
+  run_cmd_->add_option(
+      "--report", run_.report,
+      "Also write the HTML run report of the same pass (docs/report.md)");  // --- report:
+
+  // --- report:
+  report_cmd_ = app.add_subcommand(
+      "report", "Run on the path interpolator and write the HTML run report (docs/report.md)");
+  add_program(*report_cmd_, report_.program);
+  report_cmd_->add_option("-o,--output", report_.output, "HTML file (default report.html)");
+  report_cmd_->add_option("--cycle-us", report_.cycle_us, "Interpolation cycle [us] (default 1000)")
+      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
 }
 
 std::optional<int> RunCommands::dispatch(std::ostream& out, std::ostream& err) const {
   if (time_cmd_->parsed()) return run_time(time_, out, err);
   if (run_cmd_->parsed()) return run_run(run_, out, err);
+  if (report_cmd_->parsed()) return run_report(report_, out, err);  // --- report:
   return std::nullopt;
 }
 

@@ -4,14 +4,14 @@
 // Purpose: the end-to-end pipeline program -> interpreter -> planner -> interpolator -> axes.
 // Inputs: the program, its machine (--machine, the program folder's `machine` file, else the
 // bundled default), the options below. Outputs: `time`: total and per-block times on `out`;
-// `run`: the CSV trajectory (stdout or a file written to `<file>.tmp` and renamed when
-// complete). Exit statuses: 0 ok, 1 program errors (file:line:col; `not supported: ...` is
-// NC6001; run-time errors: file:line:col, the time and the id), 2 usage, configuration or
-// write errors, 3 audit violations (--audit). A run-time error keeps the CSV up to the stop
-// with a closing `# error: ...` comment.
-// Invariants: memory does not grow with the program (blocks and rows are streamed); reruns are
-// byte-identical (shortest round-trip number formatting; the wall clock only decides whether
-// the progress bar is shown on a terminal, cli/run_progress.hpp).
+// `run`: the CSV trajectory (and with --report the HTML page, `report` the page alone) (stdout or a
+// file written to `<file>.tmp` and renamed when complete). Exit statuses: 0 ok, 1 program errors
+// (file:line:col; `not supported: ...` is NC6001; run-time errors: file:line:col, the time and the
+// id), 2 usage, configuration or write errors, 3 audit violations (--audit). A run-time error keeps
+// the CSV up to the stop with a closing `# error: ...` comment. Invariants: memory does not grow
+// with the program (blocks and rows are streamed); reruns are byte-identical (shortest round-trip
+// number formatting; the wall clock only decides whether the progress bar is shown on a terminal,
+// cli/run_progress.hpp).
 
 #include <cstdint>
 #include <iosfwd>
@@ -44,6 +44,16 @@ struct RunOptions {
   bool audit = false;   ///< --audit: the verdict on stderr, exit 3 on a violation
   bool detail = false;  ///< --detail: per-axis v and a, path velocity, programmed feed, per-axis
                         ///< following error (`<axis>.ferr`, mm | deg)
+  // --- report: the HTML run report of the same pass (docs/report.md)
+  std::string report;  ///< --report FILE: also write the report page ("" none)
+  bool csv = true;     ///< false for `ncsim report`: no CSV at all
+};
+
+// --- report: `ncsim report PROG.nc -o FILE` (docs/report.md)
+struct ReportOptions {
+  ProgramOptions program;
+  std::string output = "report.html";  ///< -o: the page
+  std::optional<std::uint64_t> cycle_us;
 };
 
 /// `ncsim time`.
@@ -51,6 +61,8 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err);
 /// `ncsim run`; with output "-" the CSV goes to the process's stdout (a FILE*, after `out`
 /// is flushed), the audit verdict to `err`.
 int run_run(const RunOptions& options, std::ostream& out, std::ostream& err);
+/// `ncsim report`: run_run without CSV, with the report page (exit statuses as run).
+int run_report(const ReportOptions& options, std::ostream& out, std::ostream& err);
 
 /// The `time` and `run` subcommands of `app`: the hook main.cpp calls.
 class RunCommands {
@@ -62,8 +74,10 @@ class RunCommands {
  private:
   TimeOptions time_;
   RunOptions run_;
+  ReportOptions report_;  // --- report:
   CLI::App* time_cmd_ = nullptr;
   CLI::App* run_cmd_ = nullptr;
+  CLI::App* report_cmd_ = nullptr;  // --- report:
 };
 
 }  // namespace ncsim::cli

@@ -1,0 +1,346 @@
+#include "report/html.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <ostream>
+#include <string>
+
+#include "report/assets.hpp"
+
+namespace ncsim::report {
+
+namespace {
+
+/// Shortest round-trip text (times: exact); null for a non-finite value.
+void exact(std::string& s, double v) {
+  if (!std::isfinite(v)) {
+    s += "null";
+    return;
+  }
+  std::array<char, 32> buf{};
+  const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
+  s.append(buf.data(), r.ptr);
+}
+
+/// 7 significant digits (display values: a pixel is far coarser); null when not finite.
+void value(std::string& s, double v) {
+  if (!std::isfinite(v)) {
+    s += "null";
+    return;
+  }
+  std::array<char, 32> buf{};
+  const auto r =
+      std::to_chars(buf.data(), buf.data() + buf.size(), v, std::chars_format::general, 7);
+  s.append(buf.data(), r.ptr);
+}
+
+template <class F>
+void array(std::string& s, const std::vector<double>& v, F&& f) {
+  s += '[';
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (i > 0) s += ',';
+    f(s, v[i]);
+  }
+  s += ']';
+}
+
+void key(std::string& s, const char* k) {
+  s += '"';
+  s += k;
+  s += "\":";
+}
+
+void split(std::string& s, const ipo::TimeSplit& x) {
+  s += "{\"rapid\":";
+  exact(s, x.rapid);
+  s += ",\"feed\":";
+  exact(s, x.feed);
+  s += ",\"dwell\":";
+  exact(s, x.dwell);
+  s += ",\"exact_stop\":";
+  exact(s, x.exact_stop);
+  s += ",\"waiting\":";
+  exact(s, x.starved);
+  s += ",\"held\":";
+  exact(s, x.held);
+  s += '}';
+}
+
+const char* quantity(ipo::Quantity q) {
+  switch (q) {
+    case ipo::Quantity::velocity:
+      return "velocity";
+    case ipo::Quantity::acceleration:
+      return "acceleration";
+    case ipo::Quantity::jerk:
+      return "jerk";
+    case ipo::Quantity::contour:
+      return "contour";
+    case ipo::Quantity::velojump:
+      return "velojump";
+    case ipo::Quantity::transvelmin:
+      return "transvelmin";
+    case ipo::Quantity::c1_step:
+      return "c1-step";
+  }
+  return "?";
+}
+
+const char* method(ipo::Method m) {
+  switch (m) {
+    case ipo::Method::closed_form:
+      return "closed form";
+    case ipo::Method::finite_difference:
+      return "finite differences";
+    case ipo::Method::geometry:
+      return "geometry";
+    case ipo::Method::formula:
+      return "formula";
+  }
+  return "?";
+}
+
+std::string json(const ReportData& d) {
+  std::string s;
+  s.reserve(1 << 20);
+  s += '{';
+  key(s, "program");
+  s += json_quote(d.program);
+  s += ',';
+  key(s, "machine");
+  s += json_quote(d.machine);
+  s += ',';
+  key(s, "cycle_s");
+  exact(s, d.t_cycle);
+  s += ',';
+  key(s, "outcome");
+  s += json_quote(d.outcome);
+  s += ',';
+  key(s, "stop");
+  s += json_quote(d.stop);
+  s += ',';
+  key(s, "error");
+  s += json_quote(d.error);
+  s += ',';
+  key(s, "axes");
+  s += '[';
+  for (std::size_t i = 0; i < d.axes.size(); ++i)
+    s += (i > 0 ? "," : "") + json_quote(d.axes[i]);
+  s += "],";
+  key(s, "soft_limits");
+  s += '[';
+  for (std::size_t i = 0; i < d.soft_limits.size(); ++i) {
+    s += i > 0 ? ",[" : "[";
+    value(s, d.soft_limits[i][0]);
+    s += ',';
+    value(s, d.soft_limits[i][1]);
+    s += ']';
+  }
+  s += "],";
+  key(s, "bucket_cycles");
+  s += std::to_string(d.bucket_width);
+  s += ',';
+  key(s, "t");
+  array(s, d.time.t, exact);
+  s += ',';
+  key(s, "s");
+  s += '[';
+  for (std::size_t k = 0; k < d.time.series.size(); ++k) {
+    if (k > 0) s += ',';
+    array(s, d.time.series[k], value);
+  }
+  s += "],";
+  key(s, "named");
+  s += '[';
+  for (std::size_t k = 0; k < d.named.size(); ++k)
+    s += (k > 0 ? "," : "") + std::string("{\"name\":") + json_quote(d.named[k].name) +
+         ",\"unit\":" + json_quote(d.named[k].unit) + '}';
+  s += "],";
+  key(s, "path");
+  s += "{\"dims\":" + std::to_string(d.path_dims) + ",\"tol_mm\":";
+  value(s, d.path_tolerance);
+  s += ",\"mcs\":";
+  array(s, d.path_mcs, value);
+  s += ",\"pcs1\":";
+  array(s, d.path_pcs1, value);
+  s += "},";
+  key(s, "total");
+  s += "{\"cycles\":" + std::to_string(d.time_total.cycles) + ",\"total_s\":";
+  exact(s, d.time_total.total);
+  s += ",\"distance_mm\":";
+  exact(s, d.time_total.distance);
+  s += ",\"split\":";
+  split(s, d.time_total.split);
+  s += "},";
+  key(s, "blocks");
+  s += std::to_string(d.blocks);
+  s += ',';
+  key(s, "slowest");
+  s += '[';
+  for (std::size_t k = 0; k < d.slowest.size(); ++k) {
+    const ipo::BlockTime& b = d.slowest[k];
+    s += (k > 0 ? ",{\"line\":" : "{\"line\":") + std::to_string(b.line) + ",\"time_s\":";
+    exact(s, b.time);
+    s += ",\"distance_mm\":";
+    exact(s, b.distance);
+    s += ",\"feed_programmed_mm_min\":";
+    exact(s, b.feed_programmed * 60.0);
+    s += ",\"feed_reached_mm_min\":";
+    exact(s, b.feed_reached * 60.0);
+    s += ",\"split\":";
+    split(s, b.split);
+    s += '}';
+  }
+  s += "],";
+  const ipo::Verdict& v = d.verdict;
+  key(s, "audit");
+  s += std::string("{\"ok\":") + (v.ok() ? "true" : "false") + ",\"contour_mm\":";
+  value(s, v.contour_max);
+  s += ",\"contour_tolerance_mm\":";
+  value(s, v.contour_tolerance);
+  s += ",\"steps\":" + std::to_string(v.step_count) + ",\"cycles\":" + std::to_string(v.cycles) +
+       ",\"violation_count\":" + std::to_string(v.violation_count) + ",\"axes\":[";
+  for (std::size_t i = 0; i < v.axes.size(); ++i) {
+    const ipo::AxisAudit& a = v.axes[i];
+    s += i > 0 ? ",{\"v\":" : "{\"v\":";
+    value(s, std::max(a.v_closed, a.v_diff));
+    s += ",\"v_limit\":";
+    value(s, a.v_limit);
+    s += ",\"a\":";
+    value(s, std::max(a.a_closed, a.a_diff));
+    s += ",\"a_limit\":";
+    value(s, a.a_limit);
+    s += ",\"j\":";
+    value(s, std::max(a.j_closed, a.j_diff));
+    s += ",\"j_limit\":";
+    value(s, a.j_limit);
+    s += '}';
+  }
+  s += "],\"violations\":[";
+  const std::size_t listed = std::min(v.violations.size(), kPageViolations);
+  for (std::size_t k = 0; k < listed; ++k) {
+    const ipo::Violation& x = v.violations[k];
+    const std::string axis = x.joint                  ? "joint " + std::to_string(x.axis)
+                             : x.axis < d.axes.size() ? d.axes[x.axis]
+                                                      : std::to_string(x.axis);
+    s += (k > 0 ? ",{\"t\":" : "{\"t\":");
+    exact(s, x.t);
+    s += ",\"line\":" + std::to_string(x.line) + ",\"axis\":" + json_quote(axis) +
+         ",\"quantity\":" + json_quote(quantity(x.quantity)) +
+         ",\"method\":" + json_quote(method(x.method)) + ",\"value\":";
+    value(s, x.value);
+    s += ",\"limit\":";
+    value(s, x.limit);
+    s += '}';
+  }
+  s += "]}}";
+  return s;
+}
+
+std::string html_text(std::string_view s) {
+  std::string out;
+  for (const char c : s) {
+    switch (c) {
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+// Installed before any other script: every error, rejection and console.error is counted and
+// marked on #ncsim-status (the headless test and a person both see it).
+constexpr const char* kErrorCapture = R"(window.__ncsimErrors = [];
+(function () {
+  function note(m) {
+    window.__ncsimErrors.push(String(m));
+    var s = document.getElementById('ncsim-status');
+    if (s) { s.dataset.errors = String(window.__ncsimErrors.length); s.dataset.state = 'error';
+             s.textContent = 'page error: ' + window.__ncsimErrors.join('; '); }
+  }
+  window.addEventListener('error', function (e) { note(e.message || 'resource failed to load'); }, true);
+  window.addEventListener('unhandledrejection', function (e) { note(e.reason); });
+  var ce = console.error;
+  console.error = function () { note(Array.prototype.join.call(arguments, ' ')); return ce.apply(console, arguments); };
+})();
+)";
+
+}  // namespace
+
+std::string json_quote(std::string_view s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += c;
+    } else if (u < 0x20 || c == '<' || c == '>' || c == '&') {
+      std::array<char, 8> buf{};
+      std::snprintf(buf.data(), buf.size(), "\\u%04x", u);
+      out += buf.data();
+    } else {
+      out += c;
+    }
+  }
+  out += '"';
+  return out;
+}
+
+void write_html(const ReportData& data, std::ostream& os) {
+  os << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+     << "<meta name=\"generator\" content=\"ncsim report, uPlot " << uplot_version() << "\">\n"
+     << "<title>ncsim report: " << html_text(data.program) << "</title>\n"
+     << "<script>\n"
+     << kErrorCapture << "</script>\n<style>\n"
+     << uplot_css() << "\n</style>\n<style>\n"
+     << page_css() << "</style>\n</head>\n<body>\n"
+     << "<div id=\"ncsim-status\" data-state=\"loading\" data-charts=\"0\" data-drawn=\"0\" "
+        "data-empty=\"0\" data-errors=\"0\">loading</div>\n"
+     << "<main id=\"report\"></main>\n"
+     << "<script type=\"application/json\" id=\"ncsim-data\">" << json(data) << "</script>\n"
+     << "<script>\n"
+     << uplot_js() << "\n</script>\n<script>\n"
+     << page_js() << "</script>\n</body>\n</html>\n";
+}
+
+bool write_html_file(const ReportData& data, const std::filesystem::path& path, std::string& why) {
+  const std::filesystem::path temp = path.string() + ".tmp";
+  {
+    std::ofstream f(temp, std::ios::binary | std::ios::trunc);
+    if (f) write_html(data, f);
+    if (f) f.flush();
+    if (!f) {
+      why = "cannot write the report '" + temp.string() + "' [NC8100]";
+      std::error_code ec;
+      std::filesystem::remove(temp, ec);
+      return false;
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(temp, path, ec);
+  if (ec) {
+    why = "cannot rename '" + temp.string() + "' to '" + path.string() + "': " + ec.message() +
+          " [NC8100]";
+    std::filesystem::remove(temp, ec);
+    return false;
+  }
+  return true;
+}
+
+}  // namespace ncsim::report

@@ -1,0 +1,34 @@
+#pragma once
+// report/html: the self-contained HTML page of a run report (docs/report.md).
+//
+// Purpose: one file that opens offline in a browser: uPlot's script and style (inlined from
+// the npm package at build time, report/assets.hpp), the page's own script and style, and the
+// run's data as one JSON object.
+// Inputs: ReportData (report/recorder.hpp). Outputs: the page on a stream.
+// Invariants: byte-identical output for identical data (numbers by std::to_chars: times
+// shortest round-trip, values 7 significant digits); no external reference (no URL is
+// loaded); strings are escaped so no data can close the script element.
+
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+#include <string_view>
+
+#include "report/recorder.hpp"
+
+namespace ncsim::report {
+
+/// Violations embedded in the page at most (the verdict's count covers all).
+inline constexpr std::size_t kPageViolations = 200;
+
+/// Writes the page of `data` to `os`.
+void write_html(const ReportData& data, std::ostream& os);
+
+/// Writes the page to `<path>.tmp` and renames it to `path` when complete; false with the
+/// reason in `why` (the temporary file removed) on a write error.
+bool write_html_file(const ReportData& data, const std::filesystem::path& path, std::string& why);
+
+/// `s` as a JSON string literal, with '<', '>' and '&' escaped (safe inside <script>).
+std::string json_quote(std::string_view s);
+
+}  // namespace ncsim::report

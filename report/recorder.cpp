@@ -1,0 +1,110 @@
+#include "report/recorder.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+
+namespace ncsim::report {
+
+namespace {
+constexpr std::size_t kPerAxis = 5;  // position, v, a, j, following error
+}  // namespace
+
+Recorder::Recorder(std::vector<std::string> axes, std::span<const planner::AxisLimits> limits,
+                   double t_cycle, const ipo::AxisVec& start, std::vector<NamedSeries> named)
+    : names_(std::move(axes)),
+      named_(std::move(named)),
+      t_cycle_(t_cycle),
+      audit_(limits, t_cycle, start),
+      counter_(t_cycle, [this](const ipo::BlockTime& b) { block_done(b); }),
+      series_(kPerAxis * names_.size() + 2 + named_.size(), kBuckets),
+      mcs_(std::clamp<std::size_t>(names_.size(), 1, 3), kPathPoints) {
+  if (names_.empty() || names_.size() != limits.size())
+    throw std::invalid_argument("report recorder: " + std::to_string(names_.size()) +
+                                " axis names for " + std::to_string(limits.size()) + " limits");
+  values_.assign(series_.series(), std::numeric_limits<double>::quiet_NaN());
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  soft_limits_.assign(names_.size(), {nan, nan});
+}
+
+void Recorder::set_soft_limits(const ipo::ChannelConfig& config) {
+  for (std::size_t i = 0; i < names_.size() && i < config.axes.size(); ++i) {
+    const axes::SoftLimitParams& l = config.axes[i].monitor.soft_limits;
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    soft_limits_[i] = {l.min_enabled ? l.min_position : nan, l.max_enabled ? l.max_position : nan};
+  }
+}
+
+void Recorder::set_pcs1(std::span<const double> p) {
+  if (!pcs1_) pcs1_ = std::make_unique<PathThinner>(mcs_.dims(), kPathPoints);
+  pcs1_point_.assign(p.begin(), p.begin() + static_cast<long>(std::min(p.size(), mcs_.dims())));
+  pcs1_point_.resize(mcs_.dims(), 0.0);
+}
+
+void Recorder::set_value(std::size_t index, double value) {
+  if (index >= named_.size())
+    throw std::invalid_argument("report recorder: named series " + std::to_string(index) + " of " +
+                                std::to_string(named_.size()));
+  values_[kPerAxis * names_.size() + 2 + index] = value;
+}
+
+void Recorder::on_joint(const ipo::Joint& joint) {
+  audit_.on_joint(joint);
+}
+
+void Recorder::on_cycle(const ipo::Cycle& c) {
+  audit_.on_cycle(c);
+  counter_.add(c);
+  const std::size_t n = names_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    double* v = values_.data() + kPerAxis * i;
+    v[0] = c.x[i];
+    v[1] = c.v[i];
+    v[2] = c.a[i];
+    v[3] = c.j[i];
+    v[4] = axes_state_ != nullptr ? axes_state_->following_error[i] : 0.0;
+  }
+  values_[kPerAxis * n] = c.path.v;
+  values_[kPerAxis * n + 1] = c.feed;
+  series_.add(c.t, values_);
+  mcs_.add(std::span<const double>(c.x.data(), mcs_.dims()));
+  if (pcs1_ && !pcs1_point_.empty()) pcs1_->add(pcs1_point_);
+}
+
+void Recorder::block_done(const ipo::BlockTime& b) {
+  ++blocks_;
+  if (slowest_.size() == kSlowest && !(b.time > slowest_.back().time)) return;
+  // Longest first; an equal time goes after the earlier block (execution order).
+  const auto at = std::upper_bound(
+      slowest_.begin(), slowest_.end(), b,
+      [](const ipo::BlockTime& x, const ipo::BlockTime& y) { return x.time > y.time; });
+  slowest_.insert(at, b);
+  if (slowest_.size() > kSlowest) slowest_.pop_back();
+}
+
+ReportData Recorder::finish(const RunEnd& end) {
+  ReportData d;
+  d.time_total = counter_.finish();
+  d.program = end.program;
+  d.machine = end.machine;
+  d.t_cycle = t_cycle_;
+  d.axes = names_;
+  d.time = series_.finish();
+  d.bucket_width = series_.bucket_width();
+  d.named = named_;
+  d.soft_limits = soft_limits_;
+  d.path_dims = mcs_.dims();
+  d.path_mcs = mcs_.finish();
+  d.path_tolerance = mcs_.tolerance();
+  if (pcs1_) d.path_pcs1 = pcs1_->finish();
+  d.blocks = blocks_;
+  d.slowest = slowest_;
+  d.verdict = audit_.verdict();
+  d.stop = end.stop;
+  d.error = end.error;
+  d.outcome = !end.error.empty() ? "error" : !end.stop.empty() ? "stopped" : "ok";
+  return d;
+}
+
+}  // namespace ncsim::report

@@ -1,0 +1,124 @@
+#pragma once
+// report/recorder: what the HTML run report shows, gathered from the channel loop in one pass
+// (docs/report.md).
+//
+// Purpose: `ncsim report` and `ncsim run --report` run the channel once; this Sink sees every
+// joint and cycle and keeps, in bounded memory, what the page plots and lists.
+// Inputs: the cycle stream (ipo::Sink: on_joint / on_cycle), the axes' state after each cycle
+// (set_axes(): following error), the axis limits and cycle of the channel configuration;
+// optionally per cycle the PCS1 tool point and named conveyor series (set_pcs1(), set_value():
+// the conveyor work fills them); at the end the run's outcome (finish()).
+// Outputs: ReportData: decimated time series (per axis position, v, a, j, following error;
+// path velocity and programmed feed; the named series), the thinned toolpath in MCS (and PCS1),
+// the slowest blocks (ipo::TimeCounter, the machinery of `time --blocks`), the audit verdict
+// (ipo::Audit in the same pass), the totals, the stop reason and the run-time error.
+// Invariants: memory bounded by the decimation sizes and kSlowest, never by the run length;
+// deterministic.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "ipo/audit.hpp"
+#include "ipo/channel.hpp"
+#include "ipo/interpolator.hpp"
+#include "ipo/time.hpp"
+#include "report/decimate.hpp"
+
+namespace ncsim::report {
+
+/// A named series beside the axes (conveyor: current_pos_master, synchro_lag, ...).
+struct NamedSeries {
+  std::string name;  ///< column name (docs/report.md "Data contract")
+  std::string unit;  ///< e.g. "mm", "mm/s"
+};
+
+/// Everything the page shows.
+struct ReportData {
+  std::string program;            ///< program file as given
+  std::string machine;            ///< machine name
+  double t_cycle = 0.0;           ///< [s]
+  std::vector<std::string> axes;  ///< interpolated axis names, channel order
+  /// Series per axis i at 5 i + {0 position [mm|deg], 1 v [/s], 2 a [/s^2], 3 j [/s^3],
+  /// 4 following error [mm|deg]}; then path velocity [mm/s], programmed feed [mm/s]; then the
+  /// named series in order.
+  Decimated time;
+  std::uint64_t bucket_width = 1;  ///< cycles per decimation bucket
+  std::vector<NamedSeries> named;  ///< the named series (empty: no conveyor panels)
+  /// Per axis the soft position limits P-AXIS-00177 / 00178 [mm | deg] (NaN: not monitored).
+  std::vector<std::array<double, 2>> soft_limits;
+  std::size_t path_dims = 0;            ///< coordinates per toolpath point (first axes, <= 3)
+  std::vector<double> path_mcs;         ///< thinned toolpath in MCS, path_dims per point
+  double path_tolerance = 0.0;          ///< thinning tolerance reached [mm]
+  std::vector<double> path_pcs1;        ///< thinned toolpath in PCS1 (empty: no conveyor frame)
+  ipo::TimeResult time_total;           ///< cycles, total, distance, split
+  std::uint64_t blocks = 0;             ///< block records (time --blocks rows)
+  std::vector<ipo::BlockTime> slowest;  ///< the kSlowest longest blocks, longest first
+  ipo::Verdict verdict;                 ///< the audit of the same pass
+  std::string outcome = "ok";           ///< "ok", "stopped" (scenario [stop]) or "error"
+  std::string stop;                     ///< the scenario's stop reason, if any
+  std::string error;                    ///< the run-time / program error text, if any
+};
+
+/// The run's end as the caller saw it.
+struct RunEnd {
+  std::string program;
+  std::string machine;
+  std::string stop;   ///< scenario stop reason ("" if none)
+  std::string error;  ///< error text ("" if none)
+};
+
+class Recorder final : public ipo::Sink {
+ public:
+  static constexpr std::size_t kSlowest = 50;    ///< blocks listed
+  static constexpr std::size_t kBuckets = 2000;  ///< time buckets per series
+  static constexpr std::size_t kPathPoints =
+      1600;  ///< toolpath vertices at most (< 4 x chart pixels)
+
+  /// `axes` names and `limits` one per interpolated axis (same order; std::invalid_argument
+  /// otherwise), `start` the positions before the first cycle, `named` the extra series.
+  Recorder(std::vector<std::string> axes, std::span<const planner::AxisLimits> limits,
+           double t_cycle, const ipo::AxisVec& start, std::vector<NamedSeries> named = {});
+  Recorder(const Recorder&) = delete;
+  Recorder& operator=(const Recorder&) = delete;
+
+  /// The axes whose following error is recorded (read at each on_cycle); null: zero.
+  void set_axes(const ipo::AxesState* state) noexcept { axes_state_ = state; }
+  /// The soft position limits of the channel's axes (P-AXIS-00177 / 00178, where enabled),
+  /// drawn on the position charts; `config.axes` in the recorder's axis order.
+  void set_soft_limits(const ipo::ChannelConfig& config);
+  /// The PCS1 tool point of the cycle on_cycle() sees next (mm; enables the PCS1 panels).
+  void set_pcs1(std::span<const double> p);
+  /// Named series `index` (constructor order) for the next cycle; held until set again.
+  void set_value(std::size_t index, double value);
+
+  void on_joint(const ipo::Joint& joint) override;
+  void on_cycle(const ipo::Cycle& cycle) override;
+
+  /// The page's data; the recorder is spent afterwards.
+  ReportData finish(const RunEnd& end);
+
+ private:
+  void block_done(const ipo::BlockTime& b);
+
+  std::vector<std::string> names_;
+  std::vector<NamedSeries> named_;
+  double t_cycle_;
+  ipo::Audit audit_;
+  ipo::TimeCounter counter_;
+  MinMaxDecimator series_;
+  PathThinner mcs_;
+  std::unique_ptr<PathThinner> pcs1_;
+  std::vector<double> pcs1_point_;
+  std::vector<double> values_;  ///< one row of series_
+  const ipo::AxesState* axes_state_ = nullptr;
+  std::vector<std::array<double, 2>> soft_limits_;
+  std::vector<ipo::BlockTime> slowest_;  ///< longest first, ties in execution order
+  std::uint64_t blocks_ = 0;
+};
+
+}  // namespace ncsim::report

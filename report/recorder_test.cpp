@@ -1,0 +1,158 @@
+// The recorder: one pass of the cycle stream gives the same totals and block records as
+// `time`, the same verdict as the audit, every axis's extremes, and a bounded toolpath.
+
+#include "report/recorder.hpp"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+#include "ipo/test_support.hpp"
+
+namespace {
+
+using namespace ncsim;
+using namespace ncsim::ipo;
+using namespace ncsim::ipo::test;
+using ncsim::report::NamedSeries;
+using ncsim::report::Recorder;
+using ncsim::report::ReportData;
+
+/// Passes the cycles to a recorder and a separate audit.
+struct Both final : Sink {
+  Recorder* r;
+  Audit* a;
+  double v_max[3] = {0, 0, 0};
+  void on_joint(const Joint& j) override {
+    r->on_joint(j);
+    a->on_joint(j);
+  }
+  void on_cycle(const Cycle& c) override {
+    r->on_cycle(c);
+    a->on_cycle(c);
+    for (int i = 0; i < 3; ++i)
+      v_max[i] = std::max(v_max[i], std::fabs(c.v[static_cast<std::size_t>(i)]));
+  }
+};
+
+TEST_CASE("one pass: totals and slowest blocks as time, the audit's verdict, the v extremes") {
+  std::mt19937_64 rng(1515);
+  for (int trial = 0; trial < 8; ++trial) {
+    Config cfg;
+    cfg.axes = random_limits(rng);
+    cfg.channel.t_cycle = 0.001;
+    const auto items = random_program(rng, RandomProgram{});
+    ListSource src(items);
+    Recorder rec({"X", "Y", "Z"}, cfg.axes, cfg.channel.t_cycle, cfg.start);
+    Audit audit(cfg.axes, cfg.channel.t_cycle, cfg.start);
+    Both both;
+    both.r = &rec;
+    both.a = &audit;
+    PathInterpolator ipo(cfg, src, &both);
+    AxisVec last{};
+    while (ipo.step() == Status::running)
+      last = ipo.cycle().x;
+    const ReportData d = rec.finish({"p.nc", "m", "", ""});
+
+    ListSource time_src(items);
+    std::vector<BlockTime> blocks;
+    const TimeResult r =
+        machining_time(cfg, time_src, [&](const BlockTime& b) { blocks.push_back(b); });
+    CAPTURE(trial);
+    CHECK(d.time_total.cycles == r.cycles);
+    CHECK(d.time_total.total == r.total);
+    CHECK(d.blocks == blocks.size());
+    std::stable_sort(blocks.begin(), blocks.end(),
+                     [](const BlockTime& a, const BlockTime& b) { return a.time > b.time; });
+    REQUIRE(d.slowest.size() == std::min(blocks.size(), Recorder::kSlowest));
+    for (std::size_t k = 0; k < d.slowest.size(); ++k) {
+      CHECK(d.slowest[k].line == blocks[k].line);
+      CHECK(d.slowest[k].time == blocks[k].time);
+    }
+    CHECK(d.verdict.violation_count == audit.verdict().violation_count);
+    CHECK(d.verdict.cycles == audit.verdict().cycles);
+    CHECK(d.verdict.contour_max == audit.verdict().contour_max);
+    CHECK(d.outcome == "ok");
+    // Each axis's velocity series (index 5 i + 1) keeps its largest |v|.
+    for (std::size_t i = 0; i < 3; ++i) {
+      const auto& v = d.time.series[5 * i + 1];
+      double m = 0.0;
+      for (const double x : v)
+        m = std::max(m, std::fabs(x));
+      CHECK(m == both.v_max[i]);
+    }
+    CHECK(d.time.t.size() <= 2 * Recorder::kBuckets);
+    REQUIRE(d.path_dims == 3);
+    CHECK(d.path_mcs.size() / 3 <= Recorder::kPathPoints + 1);
+    CHECK(std::equal(d.path_mcs.end() - 3, d.path_mcs.end(), last.begin()));
+    CHECK(d.path_pcs1.empty());
+  }
+}
+
+TEST_CASE("named series and the PCS1 path appear only when given; the outcome names the end") {
+  Config cfg;
+  cfg.axes.assign(3, axis(100, 1000, 10000));
+  cfg.channel.t_cycle = 0.001;
+  const std::vector<Item> items = {Item{line(vec(0, 0), vec(10, 5), 50.0, 1)}};
+  ListSource src(items);
+  Recorder rec({"X", "Y", "Z"}, cfg.axes, 0.001, cfg.start,
+               {NamedSeries{"current_pos_master", "mm"}, NamedSeries{"synchro_lag", "mm"}});
+  struct Feed final : Sink {
+    Recorder* r;
+    std::uint64_t n = 0;
+    void on_joint(const Joint& j) override { r->on_joint(j); }
+    void on_cycle(const Cycle& c) override {
+      const double belt = 0.1 * static_cast<double>(n++);
+      r->set_value(0, belt);
+      r->set_value(1, -belt);
+      const double p[3] = {c.x[0] - belt, c.x[1], c.x[2]};
+      r->set_pcs1(p);
+      r->on_cycle(c);
+    }
+  } feed;
+  feed.r = &rec;
+  PathInterpolator ipo(cfg, src, &feed);
+  while (ipo.step() == Status::running) {
+  }
+  REQUIRE(feed.n > 10);
+  CHECK_THROWS_AS(rec.set_value(2, 0.0), std::invalid_argument);
+  const ReportData d = rec.finish({"p.nc", "m", "", "p.nc:1:1: error: boom"});
+  CHECK(d.outcome == "error");
+  REQUIRE(d.named.size() == 2);
+  REQUIRE(d.time.series.size() == 5 * 3 + 2 + 2);
+  const auto& master = d.time.series[17];
+  CHECK(master.front() == 0.0);
+  CHECK(master.back() == doctest::Approx(0.1 * static_cast<double>(feed.n - 1)));
+  REQUIRE(d.path_dims == 3);
+  REQUIRE(d.path_pcs1.size() >= 6);
+  CHECK(d.path_pcs1[d.path_pcs1.size() - 3] ==
+        doctest::Approx(10.0 - 0.1 * static_cast<double>(feed.n - 1)));
+}
+
+TEST_CASE("soft position limits: the enabled ones, NaN where not monitored") {
+  ChannelConfig cc;
+  cc.path.axes.assign(2, axis(100, 1000, 10000));
+  cc.axes.resize(2);
+  cc.axes[0].monitor.soft_limits = {true, -5.0, true, 800.0};
+  cc.axes[1].monitor.soft_limits = {false, -1.0, true, 300.0};
+  Recorder rec({"X", "Y"}, cc.path.axes, 0.001, cc.path.start);
+  rec.set_soft_limits(cc);
+  const ReportData d = rec.finish({"p.nc", "m", "", ""});
+  REQUIRE(d.soft_limits.size() == 2);
+  CHECK(d.soft_limits[0][0] == -5.0);
+  CHECK(d.soft_limits[0][1] == 800.0);
+  CHECK(std::isnan(d.soft_limits[1][0]));
+  CHECK(d.soft_limits[1][1] == 300.0);
+}
+
+TEST_CASE("a recorder needs one name per axis limit") {
+  Config cfg;
+  cfg.axes.assign(2, axis(100, 1000, 10000));
+  CHECK_THROWS_AS(Recorder({"X"}, cfg.axes, 0.001, cfg.start), std::invalid_argument);
+}
+
+}  // namespace

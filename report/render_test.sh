@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# report/render_test.sh NCSIM SOURCE_DIR WORK_DIR: renders the report of a bundled example in
+# headless Chromium (Debian's `chromium`) and fails on any console message, script error or
+# empty chart. The page marks #ncsim-status data-state="ready" once every chart has drawn with
+# > 0 points (report/page.js); any error turns it to "error".
+# Exit 77 (ctest: skipped) only when chromium is absent and CI is not set; in CI it fails.
+set -euo pipefail
+ncsim=$1
+src=$2
+work=$3
+browser=$(command -v chromium || command -v chromium-browser || true)
+if [[ -z $browser ]]; then
+  if [[ -n ${CI:-} ]]; then
+    echo "render_test: chromium is not installed but CI is set (scripts/deps.sh installs it)" >&2
+    exit 1
+  fi
+  echo "render_test: SKIPPED: chromium is not installed (apt-get install chromium, or scripts/deps.sh)"
+  exit 77
+fi
+mkdir -p "$work"
+work=$(cd "$work" && pwd)  # file:// needs an absolute path
+# The README's example, and a run that ends in a run-time error (its page shows the error).
+for program in programs/isg_reference_example/isg_reference_example.nc tests/cli/soft_limit.nc; do
+  example=$(basename "$program" .nc)
+  page=$work/$example.html
+  status=0
+  "$ncsim" report "$src/$program" -o "$page" >/dev/null 2>&1 || status=$?
+  # A run-time error still writes the page (exit 1); a usage error (2) writes none.
+  if [[ $status -ne 0 && $status -ne 1 ]] || [[ ! -s $page ]]; then
+    echo "render_test: ncsim report failed ($status) for $example" >&2
+    exit 1
+  fi
+  dom=$work/$example.dom.html
+  log=$work/$example.chromium.log
+  # Its own profile directory: no state from another run, nothing written to $HOME.
+  timeout 120 "$browser" --headless --no-sandbox --disable-gpu --disable-dev-shm-usage \
+    --user-data-dir="$work/profile" --enable-logging=stderr --v=0 \
+    --virtual-time-budget=10000 --window-size=1280,900 \
+    --dump-dom "file://$page" >"$dom" 2>"$log" || {
+    echo "render_test: chromium failed for $example:" >&2
+    tail -n 20 "$log" >&2
+    exit 1
+  }
+  marker=$(grep -o '<div id="ncsim-status"[^>]*>[^<]*' "$dom" || true)
+  echo "render_test: $example: $marker"
+  if ! grep -q 'data-state="ready"' <<<"$marker" || ! grep -q 'data-errors="0"' <<<"$marker" ||
+    ! grep -q 'data-empty="0"' <<<"$marker"; then
+    echo "render_test: $example: the page did not draw every chart without error" >&2
+    exit 1
+  fi
+  charts=$(sed -E 's/.*data-charts="([0-9]+)".*/\1/' <<<"$marker")
+  if ((charts < 5)); then
+    echo "render_test: $example: only $charts charts" >&2
+    exit 1
+  fi
+  # The page logs nothing: any console line Chromium reports is an error.
+  if grep -E ':CONSOLE|Uncaught' "$log"; then
+    echo "render_test: $example: console messages (above)" >&2
+    exit 1
+  fi
+done
+echo "render_test: ok"
