@@ -93,6 +93,9 @@ struct Move {
   std::optional<double> transvelmin;  ///< #TRANSVELMIN [mm/s]
   SlopeType slope = SlopeType::step;  ///< #SLOPE TYPE
   std::uint32_t line = 0;             ///< source line, for notes and reports
+  /// #TRAFO ON: X, Y, Z are the Cartesian TCP and the joints of the kinematic transform limit
+  /// the path (Preparer::set_joints); false: axis values (docs/planner.md "Kinematics").
+  bool transformed = false;
 };
 
 /// One machine axis's dynamics as the planner uses them (000 l.75, l.105-108, l.360).
