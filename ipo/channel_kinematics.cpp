@@ -12,11 +12,21 @@
 #include <string>
 
 #include "ipo/channel.hpp"
+#include "ipo/program_source.hpp"
 
 namespace ncsim::ipo {
 
 bool Channel::map_joints(const Cycle& c) noexcept {
   transformed_ = true;
+  if (ipo_.override_factor() > 1.0) {
+    // Above 100 % the raised cap is the axes' G00 velocity along the path (docs/ipo.md
+    // "Override and feed hold"): for the TCP these are stand-ins, not the joints' limits.
+    stop(kNotSupportedId,
+         "not supported: path override above 100 % under #TRAFO ON (the raised cap does not "
+         "know the joints' limits)",
+         c, -1);
+    return false;
+  }
   JointSetpoint s;
   if (!stage_->step(c.x, c.v, c.a, c.j, s)) {
     const AxisVec& p = stage_->failed_point();

@@ -18,6 +18,8 @@
 #include "ipo/channel.hpp"
 #include "ipo/program_source.hpp"
 #include "machines/delta_kinematics.hpp"
+#include "scenario/loader.hpp"
+#include "scenario/player.hpp"
 
 namespace {
 
@@ -51,18 +53,21 @@ struct Result {
   std::optional<ipo::RunTimeError> error;
 };
 
-Result run(const std::string& text) {
+Result run(const std::string& text, scenario::Player* player = nullptr,
+           ipo::OverrideType type = ipo::OverrideType::reduced) {
   const core::SourceFile file("t.nc", text);
   const machines::Machine& m = interp::test::machine("delta_picker");
   interp::Interpreter in(file, m);
   ipo::ProgramSource src(in, m);
   ipo::ChannelConfig cfg = ipo::channel_config(m, 0.001);
+  cfg.path.override_type = type;
   REQUIRE(cfg.path.joints);
   ipo::Audit audit(cfg.path.axes, 0.001, cfg.path.start);
   audit.set_joint_limits(cfg.path.joints->joints, cfg.path.start, true);
   Recorder rec;
   Both both(&audit, &rec);
   ipo::Channel ch(std::move(cfg), src, &both);
+  ch.play(player);
   Result r;
   for (int guard = 0; guard < 1'000'000; ++guard) {
     r.status = ch.step();
@@ -213,4 +218,35 @@ TEST_CASE("a path that leaves the workspace between reachable end points is refu
   CHECK(r.source_error->id == "NC3201");
   CHECK(r.source_error->loc.line == 4);
   CHECK(r.source_error->message.find("path point") != std::string::npos);
+}
+
+TEST_CASE("a path override above 100 % under #TRAFO ON is NC6001, never run on stand-in limits") {
+  const core::SourceFile toml("s.toml", "[[event]]\nat = 0.05\noverride = 150\n");
+  scenario::LoadResult loaded = scenario::parse_scenario(toml);
+  REQUIRE(loaded.scenario);
+  scenario::Player player(*loaded.scenario);
+  const Result r =
+      run("N10 #KIN ID[37]\n"
+          "N20 #TRAFO ON\n"
+          "N30 G01 X-100 Y0 Z-700 F60000\n"
+          "N40 M30\n",
+          &player, ipo::OverrideType::reduced_above_100);
+  REQUIRE(r.error);
+  CHECK(r.error->id == ipo::kNotSupportedId);
+  CHECK(r.error->message.find("override above 100 %") != std::string::npos);
+  CHECK(r.error->line == 3);
+  // 100 % and below run.
+  const core::SourceFile half("s.toml", "[[event]]\nat = 0.05\noverride = 50\n");
+  scenario::LoadResult loaded_half = scenario::parse_scenario(half);
+  REQUIRE(loaded_half.scenario);
+  scenario::Player slow(*loaded_half.scenario);
+  const Result ok =
+      run("N10 #KIN ID[37]\n"
+          "N20 #TRAFO ON\n"
+          "N30 G01 X-100 Y0 Z-700 F60000\n"
+          "N40 M30\n",
+          &slow, ipo::OverrideType::reduced_above_100);
+  CHECK_FALSE(ok.error);
+  CHECK(ok.status == ipo::Status::finished);
+  CHECK(ok.verdict.ok());
 }
