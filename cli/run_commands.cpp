@@ -218,6 +218,15 @@ void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names, s
        << human(a.a_limit) << " mm/s^2, |j| " << human(std::max(a.j_closed, a.j_diff)) << " / "
        << human(a.j_limit) << " mm/s^3\n";
   }
+  // --- trafo: under #TRAFO ON the joints (the machine axes) are checked apart.
+  for (std::size_t i = 0; i < v.joints.size(); ++i) {
+    const ipo::AxisAudit& a = v.joints[i];
+    if (a.v_closed == 0.0 && a.v_diff == 0.0) continue;  // no transformed cycle moved it
+    os << "audit: " << (i < names.size() ? names[i] : std::to_string(i)) << " under #TRAFO |v| "
+       << human(std::max(a.v_closed, a.v_diff)) << " / " << human(a.v_limit) << ", |a| "
+       << human(std::max(a.a_closed, a.a_diff)) << " / " << human(a.a_limit) << ", |j| "
+       << human(std::max(a.j_closed, a.j_diff)) << " / " << human(a.j_limit) << " (deg | mm, s)\n";
+  }
   os << "audit: contour deviation " << human(v.contour_max) << " mm (tolerance "
      << human(v.contour_tolerance) << " mm), " << v.step_count
      << " documented VELOJUMP / TRANSVELMIN / C1 steps within their formulas, " << v.cycles
@@ -333,6 +342,8 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
   std::unique_ptr<ipo::Audit> audit;
   if (options.audit)
     audit = std::make_unique<ipo::Audit>(cfg.path.axes, cfg.path.channel.t_cycle, cfg.path.start);
+  if (audit && cfg.path.joints)  // --- trafo: the joints are the machine axes
+    audit->set_joint_limits(cfg.path.joints->joints, cfg.path.start, true);
   Playing playing(in, src);
   ipo::Channel channel(std::move(cfg), src, audit.get());
   playing.attach(channel);
@@ -340,6 +351,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
   Progress progress(err);
   ipo::Status status;
   while ((status = channel.step()) == ipo::Status::running) {
+    if (audit && channel.transformed()) audit->on_joints(channel.cycle(), channel.joints());
     counter.add(channel.cycle());
     progress.update(channel.cycle().t, channel.cycle().line);
   }
@@ -405,16 +417,17 @@ class CsvSink final : public ipo::Sink {
     append_num(buf_, c.t);
     buf_ += ',';
     buf_ += std::to_string(c.line);
+    // The machine axes' setpoints (the channel's; under #TRAFO the joints, not the TCP).
     for (std::size_t i = 0; i < axes_; ++i) {
       buf_ += ',';
-      append_num(buf_, c.x[i]);
+      append_num(buf_, set_ != nullptr ? (*set_)[i].p : c.x[i]);
     }
     if (detail_) {
       for (std::size_t i = 0; i < axes_; ++i) {
         buf_ += ',';
-        append_num(buf_, c.v[i]);
+        append_num(buf_, set_ != nullptr ? (*set_)[i].v : c.v[i]);
         buf_ += ',';
-        append_num(buf_, c.a[i]);
+        append_num(buf_, set_ != nullptr ? (*set_)[i].a : c.a[i]);
       }
       buf_ += ',';
       append_num(buf_, c.path.v);
@@ -452,6 +465,8 @@ class CsvSink final : public ipo::Sink {
   std::uint64_t rows() const { return rows_; }
   /// The axes whose following error --detail writes (the channel's, read at each on_cycle).
   void set_axes(const ipo::AxesState* state) { axes_state_ = state; }
+  /// --- trafo: the setpoints the axes received (the joints under #TRAFO), read at each on_cycle.
+  void set_setpoints(const std::array<axes::Setpoint, planner::kMaxAxes>* set) { set_ = set; }
 
  private:
   static constexpr std::size_t kFlushAt = 1 << 20;
@@ -460,6 +475,7 @@ class CsvSink final : public ipo::Sink {
   std::uint64_t every_;
   bool detail_;
   const ipo::AxesState* axes_state_ = nullptr;
+  const std::array<axes::Setpoint, planner::kMaxAxes>* set_ = nullptr;
   std::string buf_;
   bool failed_ = false;
   int errno_ = 0;
@@ -510,6 +526,8 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   std::unique_ptr<ipo::Audit> audit;
   if (options.audit) {
     audit = std::make_unique<ipo::Audit>(cfg.path.axes, cfg.path.channel.t_cycle, cfg.path.start);
+    if (cfg.path.joints)  // --- trafo: the joints are the machine axes
+      audit->set_joint_limits(cfg.path.joints->joints, cfg.path.start, true);
   }
   Tee tee(options.csv ? &csv : nullptr, audit.get());
   // --- report: the page's recorder sees the same joints and cycles (docs/report.md)
@@ -540,9 +558,11 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   playing.attach(channel);
   csv.set_axes(&channel.axes());
   if (recorder) recorder->set_axes(&channel.axes());  // --- report:
+  csv.set_setpoints(&channel.setpoints());
   Progress progress(err);
   ipo::Status s;
   while ((s = channel.step()) == ipo::Status::running && !csv.failed()) {
+    if (audit && channel.transformed()) audit->on_joints(channel.cycle(), channel.joints());
     progress.update(channel.cycle().t, channel.cycle().line);
   }
   progress.finish();

@@ -51,12 +51,19 @@ void Audit::violate(Quantity q, Method m, std::size_t axis, double t, std::uint3
 }
 
 void Audit::check(Quantity q, Method m, std::size_t axis, const Cycle& c, double value,
-                  double limit) {
-  if (!(value <= limit * (1.0 + kRelative))) violate(q, m, axis, c.t, c.line, value, limit);
+                  double limit, bool joint) {
+  if (!(value <= limit * (1.0 + kRelative))) violate(q, m, axis, c.t, c.line, value, limit, joint);
 }
 
 void Audit::on_joint(const Joint& jt) {
   joint_seen_ = true;
+  // Under #TRAFO the steps are Cartesian: the joints' checks take over (on_joints()). The state
+  // is the last cycle's: a switch happens with the path standing, and the first cycle after it
+  // starts from rest, so it passes no joint unless its segment is shorter than J T^3 / 6.
+  if (!transformed_) step_formulas(jt);
+}
+
+void Audit::step_formulas(const Joint& jt) {
   for (std::size_t i = 0; i < limits_.size(); ++i) {
     const planner::AxisLimits& l = limits_[i];
     const double dv = std::abs(jt.dv[i]);
@@ -93,63 +100,88 @@ void Audit::on_joint(const Joint& jt) {
   }
 }
 
+void Audit::check_motion(std::size_t i, bool joint, const Stencil& st, AxisAudit& aa,
+                         std::array<double, 4>& x, const Cycle& c, double pos, double v_signed,
+                         double a_signed, double j_signed) {
+  const double t2 = t_ * t_;
+  const double t3 = t2 * t_;
+  // G00 is planned with its own slope (P-AXIS-00004 / 00200; planner::rapid_limits).
+  const planner::AxisLimits fast = planner::rapid_limits(st.feed);
+  const planner::AxisLimits& l = st.rapid ? fast : st.feed;
+  // A finite-difference stencil that holds a G00 cycle is checked against the larger slope.
+  const double a_fd = st.any_rapid ? std::max({st.feed.a_max, st.feed.d_max, fast.a_max})
+                                   : std::max(st.feed.a_max, st.feed.d_max);
+  const double j_fd = st.any_rapid ? std::max(st.feed.j_max, fast.j_max) : st.feed.j_max;
+  // Closed form.
+  const double v = std::abs(v_signed);
+  const double a = std::abs(a_signed);
+  const double j = std::abs(j_signed);
+  aa.v_closed = std::max(aa.v_closed, v);
+  aa.a_closed = std::max(aa.a_closed, a);
+  check(Quantity::velocity, Method::closed_form, i, c, v, aa.v_limit, joint);
+  const bool speeding_up = a_signed * v_signed >= 0.0;
+  check(Quantity::acceleration, Method::closed_form, i, c, a, speeding_up ? l.a_max : l.d_max,
+        joint);
+  if (st.jerk_closed) {
+    aa.j_closed = std::max(aa.j_closed, j);
+    check(Quantity::jerk, Method::closed_form, i, c, j, l.j_max, joint);
+  }
+  // Finite differences of the positions.
+  x = {pos, x[0], x[1], x[2]};
+  const double mag = std::max({std::abs(x[0]), std::abs(x[1]), std::abs(x[2]), std::abs(x[3])});
+  const double noise = kPositionNoise + 4.0 * kEps * mag;
+  const double vd = std::abs(x[0] - x[1]) / t_;
+  const double ad = std::abs(x[0] - 2.0 * x[1] + x[2]) / t2;
+  const double jd = std::abs(x[0] - 3.0 * x[1] + 3.0 * x[2] - x[3]) / t3;
+  aa.v_diff = std::max(aa.v_diff, vd);
+  check(Quantity::velocity, Method::finite_difference, i, c, vd, aa.v_limit + 2.0 * noise / t_,
+        joint);
+  if (st.velocity_only) return;
+  if (st.dv2 == 0.0) aa.a_diff = std::max(aa.a_diff, ad);
+  check(Quantity::acceleration, Method::finite_difference, i, c, ad,
+        a_fd + st.dv2 / t_ + 4.0 * noise / t2, joint);
+  if (st.jerk_fd) {
+    if (st.dv3 == 0.0 && st.da3 == 0.0) aa.j_diff = std::max(aa.j_diff, jd);
+    check(Quantity::jerk, Method::finite_difference, i, c, jd,
+          j_fd + st.da3 / t_ + st.dv3 / t2 + 8.0 * noise / t3, joint);
+  }
+}
+
+void Audit::switch_transform(bool on) {
+  transformed_ = on;
+  if (!joints_are_axes_) return;  // joints apart from the axes (a bare interpolator)
+  if (on)
+    q_ = x_;
+  else
+    x_ = q_;
+}
+
 void Audit::on_cycle(const Cycle& c) {
   ++verdict_.cycles;
+  const bool trafo = transformed(c, transformed_);
+  if (trafo != transformed_) switch_transform(trafo);
   jerk_limited_[0] = c.interval_jerk_limited;
   rapid_[0] = c.rapid;
   const bool any_rapid = rapid_[0] || rapid_[1] || rapid_[2];
-  const double t2 = t_ * t_;
-  const double t3 = t2 * t_;
+  for (std::size_t i = 0; i < limits_.size() && !trafo; ++i) {
+    Stencil st;
+    st.feed = limits_[i];
+    st.rapid = c.rapid;
+    st.any_rapid = any_rapid;
+    st.jerk_closed = c.jerk_limited;
+    st.jerk_fd = jerk_limited_[0] && jerk_limited_[1] && jerk_limited_[2];
+    st.dv2 = dv_[i][0] + dv_[i][1];
+    st.dv3 = st.dv2 + dv_[i][2];
+    st.da3 = da_[i][0] + da_[i][1] + da_[i][2];
+    check_motion(i, false, st, verdict_.axes[i], x_[i], c, c.x[i], c.v[i], c.a[i], c.j[i]);
+  }
   for (std::size_t i = 0; i < limits_.size(); ++i) {
-    // G00 is planned with its own slope (P-AXIS-00004 / 00200; planner::rapid_limits).
-    const planner::AxisLimits l = c.rapid ? planner::rapid_limits(limits_[i]) : limits_[i];
-    const planner::AxisLimits feed = limits_[i];
-    const planner::AxisLimits fast = planner::rapid_limits(feed);
-    // A finite-difference stencil that holds a G00 cycle is checked against the larger slope.
-    const double a_fd = any_rapid ? std::max({feed.a_max, feed.d_max, fast.a_max})
-                                  : std::max(feed.a_max, feed.d_max);
-    const double j_fd = any_rapid ? std::max(feed.j_max, fast.j_max) : feed.j_max;
-    AxisAudit& aa = verdict_.axes[i];
-    // Closed form.
-    const double v = std::abs(c.v[i]);
-    const double a = std::abs(c.a[i]);
-    const double j = std::abs(c.j[i]);
-    aa.v_closed = std::max(aa.v_closed, v);
-    aa.a_closed = std::max(aa.a_closed, a);
-    check(Quantity::velocity, Method::closed_form, i, c, v, aa.v_limit);
-    const bool speeding_up = c.a[i] * c.v[i] >= 0.0;
-    check(Quantity::acceleration, Method::closed_form, i, c, a, speeding_up ? l.a_max : l.d_max);
-    if (c.jerk_limited) {
-      aa.j_closed = std::max(aa.j_closed, j);
-      check(Quantity::jerk, Method::closed_form, i, c, j, l.j_max);
-    }
-    // Finite differences of the positions.
-    std::array<double, 4>& x = x_[i];
-    x = {c.x[i], x[0], x[1], x[2]};
-    const double mag = std::max({std::abs(x[0]), std::abs(x[1]), std::abs(x[2]), std::abs(x[3])});
-    const double noise = kPositionNoise + 4.0 * kEps * mag;
-    const double vd = std::abs(x[0] - x[1]) / t_;
-    const double ad = std::abs(x[0] - 2.0 * x[1] + x[2]) / t2;
-    const double jd = std::abs(x[0] - 3.0 * x[1] + 3.0 * x[2] - x[3]) / t3;
-    const double dv2 = dv_[i][0] + dv_[i][1];
-    const double dv3 = dv2 + dv_[i][2];
-    const double da3 = da_[i][0] + da_[i][1] + da_[i][2];
-    aa.v_diff = std::max(aa.v_diff, vd);
-    check(Quantity::velocity, Method::finite_difference, i, c, vd, aa.v_limit + 2.0 * noise / t_);
-    if (dv2 == 0.0) aa.a_diff = std::max(aa.a_diff, ad);
-    check(Quantity::acceleration, Method::finite_difference, i, c, ad,
-          a_fd + dv2 / t_ + 4.0 * noise / t2);
-    if (jerk_limited_[0] && jerk_limited_[1] && jerk_limited_[2]) {
-      if (dv3 == 0.0 && da3 == 0.0) aa.j_diff = std::max(aa.j_diff, jd);
-      check(Quantity::jerk, Method::finite_difference, i, c, jd,
-            j_fd + da3 / t_ + dv3 / t2 + 8.0 * noise / t3);
-    }
     dv_[i] = {0.0, dv_[i][0], dv_[i][1]};
     da_[i] = {0.0, da_[i][0], da_[i][1]};
   }
   jerk_limited_ = {true, jerk_limited_[0], jerk_limited_[1]};
   rapid_ = {false, rapid_[0], rapid_[1]};
-  // Contour.
+  // Contour (under #TRAFO the TCP against the Cartesian block).
   if (c.activity == Activity::motion && c.programmed) {
     const planner::Move& m = *c.programmed;
     double mag = 1.0;
@@ -167,9 +199,14 @@ void Audit::on_cycle(const Cycle& c) {
   }
 }
 
-void Audit::set_joint_limits(std::span<const planner::AxisLimits> joints, const AxisVec& start) {
+void Audit::set_joint_limits(std::span<const planner::AxisLimits> joints, const AxisVec& start,
+                             bool joints_are_axes) {
   if (joints.empty() || joints.size() > planner::kMaxAxes)
     throw std::invalid_argument("ipo audit: " + std::to_string(joints.size()) + " joints");
+  if (joints_are_axes && joints.size() != limits_.size())
+    throw std::invalid_argument("ipo audit: " + std::to_string(joints.size()) +
+                                " joints are not the " + std::to_string(limits_.size()) + " axes");
+  joints_are_axes_ = joints_are_axes;
   planner::validate(joints);
   joint_limits_.assign(joints.begin(), joints.end());
   verdict_.joints.assign(joints.size(), AxisAudit{});
@@ -183,54 +220,21 @@ void Audit::set_joint_limits(std::span<const planner::AxisLimits> joints, const 
   }
 }
 
-void Audit::check_joint(Quantity q, Method m, std::size_t joint, const Cycle& c, double value,
-                        double limit) {
-  if (!(value <= limit * (1.0 + kRelative))) violate(q, m, joint, c.t, c.line, value, limit, true);
-}
-
 void Audit::on_joints(const Cycle& c, const JointSetpoint& s) {
   if (joint_limits_.empty()) return;
   stepped_[0] = joint_seen_;
   joint_seen_ = false;
   joint_jerk_limited_[0] = c.interval_jerk_limited;
   const bool clean = !stepped_[0] && !stepped_[1] && !stepped_[2];
-  const double t2 = t_ * t_;
-  const double t3 = t2 * t_;
   for (std::size_t i = 0; i < joint_limits_.size(); ++i) {
-    const planner::AxisLimits& l = joint_limits_[i];
-    AxisAudit& aa = verdict_.joints[i];
-    const double v = std::abs(s.v[i]);
-    const double a = std::abs(s.a[i]);
-    const double j = std::abs(s.j[i]);
-    aa.v_closed = std::max(aa.v_closed, v);
-    aa.a_closed = std::max(aa.a_closed, a);
-    check_joint(Quantity::velocity, Method::closed_form, i, c, v, aa.v_limit);
-    const bool speeding_up = s.a[i] * s.v[i] >= 0.0;
-    check_joint(Quantity::acceleration, Method::closed_form, i, c, a,
-                speeding_up ? l.a_max : l.d_max);
-    if (c.jerk_limited) {
-      aa.j_closed = std::max(aa.j_closed, j);
-      check_joint(Quantity::jerk, Method::closed_form, i, c, j, l.j_max);
-    }
-    std::array<double, 4>& x = q_[i];
-    x = {s.q[i], x[0], x[1], x[2]};
-    const double mag = std::max({std::abs(x[0]), std::abs(x[1]), std::abs(x[2]), std::abs(x[3])});
-    const double noise = kPositionNoise + 4.0 * kEps * mag;
-    const double vd = std::abs(x[0] - x[1]) / t_;
-    const double ad = std::abs(x[0] - 2.0 * x[1] + x[2]) / t2;
-    const double jd = std::abs(x[0] - 3.0 * x[1] + 3.0 * x[2] - x[3]) / t3;
-    aa.v_diff = std::max(aa.v_diff, vd);
-    check_joint(Quantity::velocity, Method::finite_difference, i, c, vd,
-                aa.v_limit + 2.0 * noise / t_);
-    if (!clean) continue;
-    aa.a_diff = std::max(aa.a_diff, ad);
-    check_joint(Quantity::acceleration, Method::finite_difference, i, c, ad,
-                aa.a_limit + 4.0 * noise / t2);
-    if (joint_jerk_limited_[0] && joint_jerk_limited_[1] && joint_jerk_limited_[2]) {
-      aa.j_diff = std::max(aa.j_diff, jd);
-      check_joint(Quantity::jerk, Method::finite_difference, i, c, jd,
-                  aa.j_limit + 8.0 * noise / t3);
-    }
+    // The joints are planned with their feed slope, G00 included (docs/planner.md
+    // "Kinematics"), and a joint has no step formula: a stencil with a path step is v only.
+    Stencil st;
+    st.feed = joint_limits_[i];
+    st.jerk_closed = c.jerk_limited;
+    st.jerk_fd = joint_jerk_limited_[0] && joint_jerk_limited_[1] && joint_jerk_limited_[2];
+    st.velocity_only = !clean;
+    check_motion(i, true, st, verdict_.joints[i], q_[i], c, s.q[i], s.v[i], s.a[i], s.j[i]);
   }
   stepped_ = {false, stepped_[0], stepped_[1]};
   joint_jerk_limited_ = {true, joint_jerk_limited_[0], joint_jerk_limited_[1]};

@@ -29,8 +29,14 @@
 // position noise of 1e-10 mm + 4 eps |x| (2 / T, 4 / T^2, 8 / T^3).
 //  - joints (under a kinematic transform, on_joints()): each joint's v, a, j from the joint
 //    stage against its own limits (A+ / A- by the sign of v a, J on jerk-limited slopes), and
-//    finite differences of its positions; a joint has no step formula, so a stencil that holds
-//    a documented path step (VELOJUMP, C1) is checked for velocity only.
+//    finite differences of its positions, by the same checks as an axis (check_motion); a joint
+//    has no step formula, so a stencil that holds a documented path step (VELOJUMP, C1) is
+//    checked for velocity only.
+//  - transformed cycles (#TRAFO ON, ipo::transformed()): the cycle's x is the TCP, which has no
+//    limits of its own; the axis checks and the path joints' step formulas (Cartesian steps)
+//    are left to the joints (on_joints()), the contour is checked on the TCP. When the joints
+//    are the machine axes (set_joint_limits(..., true): the channel), the two share one position
+//    history at a switch, so the finite differences run on across #TRAFO ON / OFF.
 // Memory: the lists keep the first kMaxListed entries; counts and maxima cover everything.
 
 #include <cstddef>
@@ -114,7 +120,10 @@ class Audit final : public Sink {
   void on_cycle(const Cycle& cycle) override;
   /// Under a kinematic transform: the joints' limits (one per joint, 1..kMaxAxes; throws
   /// std::invalid_argument otherwise) and their positions before the first cycle.
-  void set_joint_limits(std::span<const planner::AxisLimits> joints, const AxisVec& start);
+  /// `joints_are_axes`: the joints are the machine axes the cycles hold outside #TRAFO (the
+  /// channel; as many joints as axes): one position history runs on across a switch.
+  void set_joint_limits(std::span<const planner::AxisLimits> joints, const AxisVec& start,
+                        bool joints_are_axes = false);
   /// The joint setpoints of the cycle on_cycle() just saw (ipo::JointStage): each joint's
   /// |v|, |a|, |j| against its own limits, from the stage's values and from finite differences
   /// of the joint positions ("per axis, joints included"; docs/ipo.md "The audit").
@@ -122,11 +131,29 @@ class Audit final : public Sink {
   const Verdict& verdict() const noexcept { return verdict_; }
 
  private:
+  /// What one axis or joint is checked against in a cycle (check_motion).
+  struct Stencil {
+    planner::AxisLimits feed;     ///< its limits (feed slope)
+    bool rapid = false;           ///< this cycle is G00: closed form against the G00 slope
+    bool any_rapid = false;       ///< the stencil holds a G00 cycle: the larger slope
+    bool jerk_closed = true;      ///< closed-form jerk is checked (jerk-limited slope)
+    bool jerk_fd = true;          ///< the jerk stencil holds jerk-limited cycles only
+    double dv2 = 0.0, dv3 = 0.0;  ///< velocity steps in the a / j stencils [mm/s]
+    double da3 = 0.0;             ///< acceleration steps in the j stencil [mm/s^2]
+    bool velocity_only = false;   ///< a step without a formula is inside: v only
+  };
   void violate(Quantity q, Method m, std::size_t axis, double t, std::uint32_t line, double value,
                double limit, bool joint = false);
-  void check(Quantity q, Method m, std::size_t axis, const Cycle& c, double value, double limit);
-  void check_joint(Quantity q, Method m, std::size_t joint, const Cycle& c, double value,
-                   double limit);
+  void check(Quantity q, Method m, std::size_t axis, const Cycle& c, double value, double limit,
+             bool joint = false);
+  /// The closed-form and finite-difference checks of one axis or joint (one helper for both).
+  void check_motion(std::size_t i, bool joint, const Stencil& st, AxisAudit& aa,
+                    std::array<double, 4>& history, const Cycle& c, double x, double v, double a,
+                    double j);
+  /// A path joint's documented steps against their formulas (axis cycles only).
+  void step_formulas(const Joint& joint);
+  /// A switch of #TRAFO: the history of the side taken over continues the other's.
+  void switch_transform(bool on);
 
   std::vector<planner::AxisLimits> limits_;
   double t_ = 0.001;
@@ -145,7 +172,9 @@ class Audit final : public Sink {
   std::vector<std::array<double, 4>> q_;
   std::array<bool, 3> stepped_{false, false, false};
   std::array<bool, 3> joint_jerk_limited_{true, true, true};
-  bool joint_seen_ = false;  ///< on_joint() since the last on_joints()
+  bool joint_seen_ = false;       ///< on_joint() since the last on_joints()
+  bool transformed_ = false;      ///< the last cycle ran under #TRAFO ON
+  bool joints_are_axes_ = false;  ///< set_joint_limits(..., true)
 };
 
 }  // namespace ncsim::ipo

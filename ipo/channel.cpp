@@ -36,6 +36,8 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
       source_(source),
       sink_(sink),
       exact_stop_wait_max_(config.exact_stop_wait_max) {
+  // --- trafo: the joint stage maps the TCP to the machine axes under #TRAFO ON.
+  if (config.path.joints) stage_.emplace(config.path.joints->inverse, config.axes.size());
   if (config.axes.size() != ipo_.axis_count())
     throw std::invalid_argument("ipo::Channel: " + std::to_string(config.axes.size()) +
                                 " channel axes for " + std::to_string(ipo_.axis_count()) +
@@ -77,14 +79,17 @@ Status Channel::stop(const char* id, std::string message, const Cycle& c, int ax
   return Status::error;
 }
 
-void Channel::map_to_axes(const Cycle& c) noexcept {
+bool Channel::map_to_axes(const Cycle& c) noexcept {
   // ---- The mapping path point -> machine axis setpoints. ----------------------------------
-  // Identity today: the path is planned in machine axis values (MCS, no kinematics).
-  // The joint stage (#TRAFO kinematics, #CS frames: the plan helper's) and the conveyor's
-  // moving PCS1 frame (issue 14) plug in here: they turn c.x, c.v, c.a, c.j into the setpoints
-  // of the machine axes (joints), which everything below drives and monitors.
+  // Identity outside #TRAFO: the path is planned in machine axis values (MCS).
+  // The conveyor's moving PCS1 frame (issue 14) plugs in here: it turns c.x, c.v, c.a, c.j
+  // into the setpoints of the machine axes, which everything below drives and monitors.
+  // --- trafo: under #TRAFO ON the joint stage gives the joints (channel_kinematics.cpp).
+  if (stage_ && ipo::transformed(c, transformed_)) return map_joints(c);
+  transformed_ = false;
   for (std::size_t i = 0; i < axes_.size(); ++i)
     setpoint_[i] = axes::Setpoint{c.x[i], c.v[i], c.a[i], c.j[i]};
+  return true;
   // ---- end of the mapping -----------------------------------------------------------------
 }
 
@@ -274,21 +279,23 @@ Status Channel::step() noexcept {
   if (!blocked_) run_events(c.event_tag);
   if (error_) return Status::error;
   if (player_ != nullptr) note_block(c);
+  if (!map_to_axes(c)) return Status::error;
   if (!in_exact_stop_ && ipo_.holding_exact_stop()) {
     // The command reached the end of a G60 / G360 block in this cycle (001 l.149: t_1).
     in_exact_stop_ = true;
     waited_ = 0;
     moved_ = 0;
-    target_ = c.x;
+    for (std::size_t i = 0; i < axes_.size(); ++i)
+      target_[i] = setpoint_[i].p;  // --- trafo: the joints' end point under #TRAFO
     if (const planner::Move* prog = c.programmed) {
       for (std::size_t i = 0; i < axes_.size(); ++i) {
         const bool moved = prog->end[i] != prog->start[i] ||
                            (prog->arc && (prog->arc->axis_1 == i || prog->arc->axis_2 == i));
-        if (moved) moved_ |= 1u << i;
+        // --- trafo: every joint of a transformed block is waited for
+        if (moved || transformed_) moved_ |= 1u << i;
       }
     }
   }
-  map_to_axes(c);
   for (std::size_t i = 0; i < axes_.size(); ++i)
     if (!drive_axis(i, c)) return Status::error;
   if (in_exact_stop_ && !exact_stop(c)) return Status::error;

@@ -16,8 +16,9 @@
 // channel loop").
 // Per cycle (Channel::step):
 //   1. PathInterpolator::step(): path state and point (Detail::axes).
-//   2. Mapping point -> machine axis setpoints: identity today; the one place where the joint
-//      stage (#TRAFO, #CS frames) and the conveyor's moving PCS1 frame plug in.
+//   2. Mapping point -> machine axis setpoints: identity, or under #TRAFO ON the joint stage
+//      (the TCP point -> joint setpoints, ipo/joint_stage.hpp); the place where the conveyor's
+//      moving PCS1 frame plugs in.
 //   3. Per axis: soft limits P-AXIS-00177 / 00178 on the command position (NC5501 / NC5502),
 //      PositionControlModel::step(), AxisMonitor::step() (position lag 0x4550, exact-stop
 //      window P-ERR-70082, and the other monitors the axis list enables).
@@ -57,6 +58,7 @@
 #include "axes/monitor.hpp"
 #include "ipo/channel_event.hpp"
 #include "ipo/interpolator.hpp"
+#include "ipo/joint_stage.hpp"
 #include "machines/machine.hpp"
 #include "scenario/player.hpp"
 
@@ -136,6 +138,16 @@ class Channel {
   /// The [stop] condition that ended the run, if one did (step() then returned finished).
   const std::optional<scenario::StopReason>& scenario_stop() const noexcept { return stopped_; }
 
+  // --- trafo: kinematics (channel_kinematics.cpp, docs/ipo.md "Kinematics in run and time")
+  /// The last cycle ran under #TRAFO ON: cycle().x is the TCP, the axes got joints().
+  bool transformed() const noexcept { return transformed_; }
+  /// The joint setpoints of the last transformed cycle (machine axes in interpolated order).
+  const JointSetpoint& joints() const noexcept { return joints_; }
+  /// The setpoint (p, v, a, j) every axis received in the last cycle [mm | deg, /s ...].
+  const std::array<axes::Setpoint, planner::kMaxAxes>& setpoints() const noexcept {
+    return setpoint_;
+  }
+
  private:
   /// What executing a channel event gave (ipo/channel_events.cpp).
   enum class EventOutcome : std::uint8_t {
@@ -180,8 +192,11 @@ class Channel {
     axes::AxisMonitor monitor;
   };
 
-  /// Step 2: the path point -> machine axis setpoints (identity today).
-  void map_to_axes(const Cycle& c) noexcept;
+  /// Step 2: the path point -> machine axis setpoints (identity, or the joint stage under
+  /// #TRAFO); false when it raised a run-time error.
+  bool map_to_axes(const Cycle& c) noexcept;
+  /// --- trafo: step 2 under #TRAFO ON (channel_kinematics.cpp); false: run-time error.
+  bool map_joints(const Cycle& c) noexcept;
   /// Step 3 for axis i; false when it raised a run-time error.
   bool drive_axis(std::size_t i, const Cycle& c) noexcept;
   /// Step 4: the exact-stop wait.
@@ -220,6 +235,10 @@ class Channel {
   std::optional<ChannelEvent> blocked_;  ///< an event not done yet (EventOutcome::blocking)
   std::uint32_t wait_tag_ = 0;           ///< tag of the ChannelWait the path holds at
   ChannelEvent event_;                   ///< scratch: the event being taken
+  // --- trafo: the joint stage (Config::joints) and the state of the last cycle.
+  std::optional<JointStage> stage_;
+  bool transformed_ = false;
+  JointSetpoint joints_{};
 };
 
 }  // namespace ncsim::ipo

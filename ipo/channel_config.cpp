@@ -1,6 +1,7 @@
 // ipo/channel_config: a machine's channel configuration (see ipo/channel.hpp).
 
 #include <stdexcept>
+#include <utility>
 
 #include "axes/axis_config.hpp"
 #include "ipo/channel.hpp"
@@ -11,6 +12,8 @@ namespace ncsim::ipo {
 ChannelConfig channel_config(const machines::Machine& machine, double t_cycle) {
   ChannelConfig c;
   c.path = machine_config(machine, t_cycle);
+  // --- trafo: with a kinematic, transformed Moves are limited by the joints (ipo/trafo.hpp).
+  if (auto trafo = machine_trafo(machine, c.path)) c.path.joints = std::move(trafo->limits);
   for (const std::uint8_t i : interpolated_axes(machine)) {
     const machines::AxisParams& axis = machine.axes[i];
     ChannelAxis a;

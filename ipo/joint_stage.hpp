@@ -25,6 +25,7 @@
 
 #include <cstddef>
 
+#include "ipo/interpolator.hpp"
 #include "planner/joint_limits.hpp"
 
 namespace ncsim::ipo {
@@ -62,5 +63,14 @@ class JointStage {
   std::size_t n_ = 0;
   mutable AxisVec failed_{};
 };
+
+/// Whether cycle `c` runs under the transform (#TRAFO ON): its programmed block's
+/// Move::transformed for a motion cycle; otherwise (dwell, exact stop, starved) the state of the
+/// cycle before, `last`. The path stands at every switch (docs/ipo.md "Kinematics in run and
+/// time"), so no cycle mixes the two.
+inline bool transformed(const Cycle& c, bool last) noexcept {
+  return c.activity == Activity::motion && c.programmed != nullptr ? c.programmed->transformed
+                                                                   : last;
+}
 
 }  // namespace ncsim::ipo

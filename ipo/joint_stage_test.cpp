@@ -101,7 +101,7 @@ Result run(const std::vector<planner::Move>& moves, const AxisVec& start, bool w
   cfg.channel.t_cycle = 0.001;
   cfg.start = start;
   if (with_joints)
-    cfg.joints = planner::JointLimits{joint_map(kin), {joints.begin(), joints.end()}};
+    cfg.joints = planner::JointLimits{joint_map(kin), {joints.begin(), joints.end()}, {}};
   std::size_t next = 0;
   ipo::CallbackSource src([&](ipo::Item& item) {
     if (next >= moves.size()) return false;
@@ -136,6 +136,7 @@ std::vector<planner::Move> strokes(const AxisVec& home) {
   m.feed = 2000.0;
   m.slope = planner::SlopeType::trapez;
   m.transition = planner::Transition::stop_at_end;
+  m.transformed = true;  // #TRAFO ON: X, Y, Z are the TCP
   m.line = 10;
   m.start = home;
   m.end = at(250, 150, -80);  // a long diagonal pick-and-place stroke
@@ -208,7 +209,9 @@ TEST_CASE("a delta corner passed without a stop: each joint's velocity step keep
   const Result r = run(moves, home, true, joints, kin);
   CHECK(r.status == ipo::Status::finished);
   CHECK(r.verdict.ok());
-  CHECK(r.verdict.step_count > 0);  // the corner was passed moving: a documented step
+  // Under #TRAFO the path's Cartesian steps are not checked by formula (the joints' checks
+  // take over, docs/ipo.md "Kinematics in run and time"): none is listed.
+  CHECK(r.verdict.step_count == 0);
   // Between two cycles a joint's velocity changes by at most A T (its acceleration) plus the
   // VELOJUMP step C0 A T (C0 = 1): 0.8 deg/s.
   CHECK(r.dv_max <= 2.0 * 400.0 * 0.001 * (1 + 1e-3));
@@ -225,6 +228,7 @@ TEST_CASE("a move out of the delta's workspace is a positioned planning error, n
   planner::Move m;
   m.axis_count = 3;
   m.feed = 100.0;
+  m.transformed = true;
   m.line = 70;
   m.start = home;
   m.end = home;
@@ -267,4 +271,37 @@ TEST_CASE("the joint stage: positions are the inverse transform; v, a, j by the 
   CHECK(failing.failed_point()[0] == x[0]);
   CHECK(s.q[0] == before.q[0]);
   CHECK_THROWS_AS(ipo::JointStage(planner::JointMap{}, 3), std::invalid_argument);
+}
+
+TEST_CASE("the joint limits apply to transformed Moves only; a #TRAFO switch needs a stop") {
+  const machines::DeltaKinematics kin = delta();
+  const auto home_r = kin.forward(Eigen::Vector3d(20, 20, 20));
+  REQUIRE(home_r.ok());
+  AxisVec home{};
+  for (std::size_t i = 0; i < 3; ++i)
+    home[i] = home_r.value[static_cast<Eigen::Index>(i)];
+  const std::vector<planner::AxisLimits> axes(3, limits(5000, 5e4, 5e6));
+  planner::Preparer prep(axes, planner::ChannelLimits{});
+  prep.set_joints(planner::JointLimits{
+      joint_map(kin), {limits(40, 400, 8000), limits(40, 400, 8000), limits(40, 400, 8000)}, {}});
+  const std::vector<planner::Move> moves = strokes(home);  // transformed
+  planner::Move plain = moves[0];
+  plain.transformed = false;  // the same numbers as axis values: the axes' limits alone
+  std::vector<planner::PreparedSegment> out;
+  prep.push(plain, out);
+  prep.finish(out);
+  REQUIRE(out.size() == 1);
+  const double v_plain = out[0].limits.v_max;
+  out.clear();
+  prep.push(moves[0], out);
+  prep.finish(out);
+  REQUIRE(out.size() == 1);
+  CHECK(out[0].limits.v_max < 0.5 * v_plain);  // the joints limit the TCP
+  CHECK(out[0].limits.limit == planner::VelocityLimit::joint);
+  out.clear();
+  prep.push(plain, out);
+  CHECK_THROWS_AS(prep.push(moves[1], out), std::invalid_argument);  // no stop between
+  CHECK_THROWS_AS(prep.set_joints(planner::JointLimits{
+                      joint_map(kin), {limits(40, 400, 8000)}, {limits(1, 1, 1)}}),
+                  std::invalid_argument);  // one Cartesian limit for three axes
 }

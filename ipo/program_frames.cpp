@@ -6,7 +6,8 @@
 // axes pass unchanged. F is rigid, so a line stays a line; an arc stays an arc of the same
 // radius in the rotated plane spanned by F's images of its two plane axes (planner::ArcPlane),
 // turning the same way about the image of the third axis; the helix rise is rotated with it.
-// Under #SYNC (PCS1) and #TRAFO ON the motion is still refused here (NC6001).
+// Under #SYNC (PCS1) the motion is still refused here (NC6001). Under #TRAFO ON the result is
+// the Cartesian TCP in MCS (the transform acts below the #CS chain, as in the interpreter).
 
 #include <cmath>
 #include <string>
@@ -45,9 +46,6 @@ void ProgramSource::select_cs(const interp::SelectCs& sel, std::uint32_t line) {
 
 planner::AxisVec ProgramSource::to_mcs(const interp::CoordFrame& frame, const interp::AxisValues& p,
                                        std::uint32_t line) {
-  if (frame.kinematics)
-    fail(line, "motion in frame " + interp::frame_name(frame) +
-                   " (#TRAFO ON: kinematics come with the channel loop)");
   if (frame.space == interp::Space::pcs1)
     fail(line, "motion in frame " + interp::frame_name(frame) +
                    " (#SYNC: conveyor tracking comes with the channel loop)");

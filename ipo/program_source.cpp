@@ -156,6 +156,7 @@ planner::Move ProgramSource::to_move(const interp::Motion& m, std::uint32_t line
   if (m.arc) arc_to_mcs(m, line, mv);
   set_modal(m.modal, mv, line);
   mv.line = line;
+  if (mv.transformed) check_workspace(mv, line);  // --- trafo
   return mv;
 }
 
@@ -173,6 +174,7 @@ void ProgramSource::set_modal(const interp::ModalSnapshot& s, planner::Move& mv,
   }
   mv.transvelmin = s.transvelmin;
   mv.slope = to_planner(s.slope);
+  mv.transformed = s.kinematics_on;  // --- trafo: X, Y, Z are the TCP (program_kinematics.cpp)
 }
 
 bool ProgramSource::next(Item& out) {
@@ -264,7 +266,7 @@ bool ProgramSource::pull(Item& out) {
           } else if constexpr (std::is_same_v<T, interp::SelectCs>) {
             select_cs(body, line);
           } else if constexpr (std::is_same_v<T, interp::Kinematics>) {
-            if (body.trafo_on) fail(line, "#TRAFO ON (kinematics come with the channel loop)");
+            produced = kinematics(body, line, out);  // --- trafo: a switch stops the path
           } else if constexpr (std::is_same_v<T, interp::CaxTrack>) {
             if (body.on) fail(line, "#CAXTRACK ON");
           } else if constexpr (std::is_same_v<T, interp::SplineBegin>) {

@@ -35,6 +35,7 @@
 #include "interp/interpreter.hpp"
 #include "ipo/channel_event.hpp"
 #include "ipo/interpolator.hpp"
+#include "ipo/trafo.hpp"
 #include "machines/cs_stack.hpp"
 #include "machines/machine.hpp"
 #include "planner/spline.hpp"
@@ -134,6 +135,19 @@ class ProgramSource final : public Source {
   std::uint32_t tag_ = 0;            ///< tag of the last event queued
   std::uint32_t given_ = 0;          ///< largest tag handed out with an item
   bool end_reached_ = false;         ///< End came after a final ChannelWait
+  // --- trafo: #TRAFO ON / OFF (program_kinematics.cpp, docs/ipo.md "Kinematics in run and
+  // time").
+  /// #KIN ID / #TRAFO: at a switch of #TRAFO a 0 s Dwell goes out first (the path stands at the
+  /// switch; true: `out` holds it); #TRAFO ON with another kinematic than the machine's first
+  /// is NC6001.
+  bool kinematics(const interp::Kinematics& k, std::uint32_t line, Item& out);
+  /// A transformed Move whose path leaves the kinematic's workspace: the kinematic's error
+  /// (NC3201 / NC3202) at its line.
+  void check_workspace(const planner::Move& move, std::uint32_t line);
+  [[noreturn]] void fail_with(std::uint32_t line, const std::string& id, const std::string& what);
+  std::optional<MachineTrafo> trafo_;  ///< the machine's kinematic, built at the first #TRAFO
+  bool trafo_on_ = false;              ///< #TRAFO ON as handed out
+  // --- end trafo
 };
 
 }  // namespace ncsim::ipo

@@ -108,10 +108,30 @@ TEST_CASE("an unsupported command is NC6001 at its line, never skipped") {
   CHECK(set.error_id == ipo::kNotSupportedId);
   CHECK(set.error_line == 2);
   CHECK(set.error_message.find("not supported: G92") == 0);
+}
 
-  const Pulled kin = pull("N10 #TRAFO ON\nN20 G01 X10 F600\nN30 M30\n", "delta_picker");
-  CHECK(kin.error_id == ipo::kNotSupportedId);
-  CHECK(kin.error_line == 1);
+TEST_CASE("#TRAFO ON / OFF: a 0 s dwell at each switch, the moves between are transformed") {
+  const Pulled p = pull(
+      "N10 #KIN ID[37]\nN20 #TRAFO ON\nN30 G01 X10 Y0 Z-750 F600\nN40 #TRAFO OFF\n"
+      "N50 G01 X0 Y0 Z0\nN60 M30\n",
+      "delta_picker");
+  REQUIRE(p.error_id.empty());
+  REQUIRE(p.items.size() == 4);
+  const auto* on = std::get_if<ipo::Dwell>(&p.items[0]);
+  REQUIRE(on != nullptr);
+  CHECK(on->seconds == 0.0);
+  CHECK(on->line == 2);
+  const auto* tcp = std::get_if<planner::Move>(&p.items[1]);
+  REQUIRE(tcp != nullptr);
+  CHECK(tcp->transformed);
+  CHECK(tcp->end[2] == -750.0);  // the TCP, not a drive angle
+  const auto* off = std::get_if<ipo::Dwell>(&p.items[2]);
+  REQUIRE(off != nullptr);
+  CHECK(off->line == 4);
+  const auto* axes = std::get_if<planner::Move>(&p.items[3]);
+  REQUIRE(axes != nullptr);
+  CHECK_FALSE(axes->transformed);
+  CHECK(axes->end[2] == 0.0);
 }
 
 TEST_CASE("an interpreter error ends the stream with the interpreter's diagnostic") {

@@ -96,6 +96,9 @@ struct Move {
   /// Channel events (ipo/channel_event.hpp) up to this tag fire when the block starts; tags
   /// increase in program order, 0: none.
   std::uint32_t event_tag = 0;
+  /// #TRAFO ON: X, Y, Z are the Cartesian TCP and the joints of the kinematic transform limit
+  /// the path (Preparer::set_joints); false: axis values (docs/planner.md "Kinematics").
+  bool transformed = false;
 };
 
 /// One machine axis's dynamics as the planner uses them (000 l.75, l.105-108, l.360).

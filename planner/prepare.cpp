@@ -53,13 +53,30 @@ Preparer::Preparer(std::span<const AxisLimits> axes, ChannelLimits channel)
 void Preparer::set_joints(JointLimits joints) {
   if (!joints.inverse) throw std::invalid_argument("planner: joint limits without an inverse map");
   validate(joints.joints);
+  if (!joints.cartesian.empty()) {
+    if (joints.cartesian.size() != axes_.size())
+      throw std::invalid_argument("planner: " + std::to_string(joints.cartesian.size()) +
+                                  " Cartesian limits for " + std::to_string(axes_.size()) +
+                                  " axes");
+    validate(joints.cartesian);
+  }
   joints_ = std::move(joints);
 }
 
+std::span<const AxisLimits> Preparer::axes_for(const Move& move) const {
+  if (move.transformed && joints_ && !joints_->cartesian.empty()) return joints_->cartesian;
+  return axes_;
+}
+
+const JointLimits* Preparer::joints_for(const Move& move) const {
+  return move.transformed && joints_ ? &*joints_ : nullptr;
+}
+
 PathLimits Preparer::limits(const Segment& path, const Move& move) const {
-  if (!joints_) return path_limits(path, move, axes_);
+  const JointLimits* joints = joints_for(move);
+  if (joints == nullptr) return path_limits(path, move, axes_);
   const std::optional<PathLimits> l =
-      path_limits(path, move, axes_, joints_->inverse, joints_->joints);
+      path_limits(path, move, axes_for(move), joints->inverse, joints->joints);
   if (!l)
     throw KinematicError(move.line,
                          "the path leaves the workspace of the kinematic transform [NC3201]");
@@ -83,10 +100,10 @@ void Preparer::emit_joint(PreparedSegment in, const Move& in_move, const Segment
   const std::optional<double> v_min =
       in_move.contour == Contour::tolerance ? std::nullopt : in_move.transvelmin;
   const Link link =
-      link_velocity(in.path.at(in.path.length()), out_path.at(0.0), n, metric, axes_, channel_,
-                    in.limits.v_end, v_out, v_min, jerk_limited(in_move.slope));
+      link_velocity(in.path.at(in.path.length()), out_path.at(0.0), n, metric, axes_for(in_move),
+                    channel_, in.limits.v_end, v_out, v_min, jerk_limited(in_move.slope));
   in.v_end = link.v_link;
-  if (joints_ && link.cls != TransitionClass::c2) {
+  if (joints_for(in_move) != nullptr && link.cls != TransitionClass::c2) {
     // Under a transform the joints take their own steps at a C0 / C1 joint: the VELOJUMP and
     // C1 rules per joint, on the joints' path derivatives (docs/planner.md "Kinematics").
     const PathPoint a = in.path.at(in.path.length());
@@ -108,7 +125,10 @@ void Preparer::emit_joint(PreparedSegment in, const Move& in_move, const Segment
       in.rule = link.cls == TransitionClass::c0 ? LinkRule::velojump : LinkRule::c1_jerk;
     }
   }
-  in.a_zero_at_end = link.zero_acceleration;
+  // Under a transform a knee does not carry the acceleration (decision, docs/planner.md
+  // "Kinematics"): the knee rule knows the Cartesian stand-in limits, not the joints'.
+  in.a_zero_at_end =
+      link.zero_acceleration || (joints_for(in_move) != nullptr && link.cls == TransitionClass::c0);
   in.joint = link.cls;
   if (in.v_end == link.v_link) in.rule = link.rule;
   in.stop = StopReason::none;
@@ -179,6 +199,9 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
     pending_ = Pending{move, seg, seg.length(), StopReason::none};
     return;
   }
+  if (pending_->move.transformed != move.transformed)
+    throw std::invalid_argument("planner: line " + std::to_string(move.line) +
+                                " switches #TRAFO without a stop before it (finish())");
   Pending p = std::move(*pending_);
   pending_ = Pending{move, seg, seg.length(), StopReason::none};
 
@@ -190,7 +213,8 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
   }
 
   if (p.move.contour == Contour::tolerance &&
-      !knee_needs_no_ball(p.path, p.move, seg, move, axes_, channel_)) {
+      (joints_for(move) != nullptr ||  // under a transform every G261 corner gets its ball
+       !knee_needs_no_ball(p.path, p.move, seg, move, axes_, channel_))) {
     const auto ball = make_blend(p.path, seg, p.move.path_dev,
                                  std::min(p.full_length / 2, p.path.length()), seg.length() / 2);
     if (ball) {

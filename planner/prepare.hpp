@@ -73,6 +73,10 @@ class KinematicError : public std::runtime_error {
 struct JointLimits {
   JointMap inverse;                ///< Cartesian point -> joint values
   std::vector<AxisLimits> joints;  ///< one per joint: v, a, j [deg | mm]
+  /// The path axes' own limits under the transform (X, Y, Z Cartesian; one per axis in use);
+  /// empty: the Preparer's axes. The corner, knee and blend rules use them for transformed
+  /// Moves, the joint rules apply on top.
+  std::vector<AxisLimits> cartesian;
 };
 
 class Preparer {
@@ -91,10 +95,13 @@ class Preparer {
   void push(const SplinePiece& piece, const Move& modal, std::vector<PreparedSegment>& out);
   /// End of the stream: appends the held segment, ending in a stop.
   void finish(std::vector<PreparedSegment>& out);
-  /// Under a kinematic transform: from now on every segment's limits also keep each joint
-  /// inside its own v, a, j (planner::path_limits with a JointMap; docs/planner.md
-  /// "Kinematics"); a segment the transform cannot map throws KinematicError. Throws
-  /// std::invalid_argument on an empty map or unusable joint limits.
+  /// Under a kinematic transform: from now on the limits of every segment of a transformed
+  /// Move (Move::transformed: #TRAFO ON) also keep each joint inside its own v, a, j
+  /// (planner::path_limits with a JointMap; docs/planner.md "Kinematics"), with
+  /// `joints.cartesian` as the axes' limits; Moves without the flag keep the axes' limits alone.
+  /// A segment the transform cannot map throws KinematicError. Throws std::invalid_argument on
+  /// an empty map or unusable joint or Cartesian limits. A Move whose `transformed` differs from
+  /// the Move before it without a stop between (finish()) throws std::invalid_argument.
   void set_joints(JointLimits joints);
 
  private:
@@ -109,6 +116,10 @@ class Preparer {
   PreparedSegment make(const Segment& path, const Move& move, bool blend) const;
   /// Path limits of a segment: the axes', and the joints' under a transform.
   PathLimits limits(const Segment& path, const Move& move) const;
+  /// The axis limits a Move is planned with (the Cartesian ones for a transformed Move).
+  std::span<const AxisLimits> axes_for(const Move& move) const;
+  /// The joint limits that apply to a Move (null: none).
+  const JointLimits* joints_for(const Move& move) const;
   /// Appends `in` with its end joint to `out_path` (velocity cap v_out) resolved.
   void emit_joint(PreparedSegment in, const Move& in_move, const Segment& out_path, double v_out,
                   std::vector<PreparedSegment>& out);

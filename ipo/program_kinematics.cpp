@@ -1,0 +1,81 @@
+// ipo/program_kinematics: #KIN ID / #TRAFO ON / OFF at the adapter (docs/ipo.md "Kinematics in
+// run and time").
+//
+// Under #TRAFO ON the interpreter gives X, Y, Z as the Cartesian TCP (re-based at the switch by
+// the kinematic's forward / inverse transform); the Moves carry Move::transformed and the
+// planner limits them by the joints (planner::Preparer::set_joints). Here:
+// - a switch of #TRAFO (ON after OFF or OFF after ON) hands out a 0 s Dwell first: the path
+//   stops at the block end before the switch, the rest of that cycle is dropped, and the next
+//   Move starts from the transformed position (decision: the kernel's axes and TCP views cannot
+//   both be interpolated across one cycle; 0 s costs no time beyond the stop itself);
+// - only the machine's first kinematic (trafo[0]) is wired into the channel: #TRAFO ON with
+//   another #KIN ID is NC6001 `not supported`;
+// - a transformed Move is sampled along its path (the planner's spacing, planner::kJointSpacing)
+//   through the inverse transform: a point outside the workspace or beyond a drive limit is the
+//   kinematic's error (NC3201 / NC3202, machines/delta_kinematics.hpp) at the block's line, so
+//   the program stops at the last good block with a positioned diagnostic.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "ipo/program_source.hpp"
+#include "planner/joint_limits.hpp"
+#include "planner/path.hpp"
+
+namespace ncsim::ipo {
+
+void ProgramSource::fail_with(std::uint32_t line, const std::string& id, const std::string& what) {
+  core::Diagnostic d;
+  d.file = interp_.file_name(file_);
+  d.loc = {line, 1};
+  d.id = id;
+  d.message = what;
+  error_ = d;
+  throw Stop{};
+}
+
+bool ProgramSource::kinematics(const interp::Kinematics& k, std::uint32_t line, Item& out) {
+  if (k.trafo_on == trafo_on_) return false;  // #KIN ID alone, or no change
+  if (k.trafo_on) {
+    if (!trafo_) trafo_ = machine_trafo(machine_, machine_config(machine_, 0.001));
+    if (!trafo_)
+      fail(line, "#TRAFO ON: machine '" + machine_.name + "' has no kinematic ncsim can build");
+    if (k.kin_id && *k.kin_id != trafo_->kin_id)
+      fail(line, "#TRAFO ON with kinematic id " + std::to_string(*k.kin_id) +
+                     " (the channel drives the machine's first kinematic, id " +
+                     std::to_string(trafo_->kin_id) + ")");
+  }
+  trafo_on_ = k.trafo_on;
+  out = Dwell{0.0, line};  // the path stands at the switch
+  return true;
+}
+
+void ProgramSource::check_workspace(const planner::Move& move, std::uint32_t line) {
+  if (!trafo_) fail(line, "motion under #TRAFO ON without a kinematic");
+  const planner::Segment seg = planner::Segment::from_move(move);
+  const double length = seg.length();
+  const int n = std::clamp(static_cast<int>(std::ceil(length / planner::kJointSpacing)),
+                           planner::kJointMinSamples, planner::kJointMaxSamples);
+  const std::array<int, 3>& xyz = trafo_->xyz;
+  // The target first (its error names the programmed point), then the path towards it.
+  for (int i = 0; i <= n; ++i) {
+    const int k = i == 0 ? n : i - 1;
+    const double s = length * static_cast<double>(k) / n;
+    const planner::AxisVec x = k == n ? move.end : seg.point(s);
+    Eigen::Vector3d p = Eigen::Vector3d::Zero();
+    for (std::size_t a = 0; a < 3; ++a)
+      if (xyz[a] >= 0) p[static_cast<Eigen::Index>(a)] = x[static_cast<std::size_t>(xyz[a])];
+    const machines::KinResult r = trafo_->kinematics->inverse(p);
+    if (r.ok()) continue;
+    char where[160];
+    std::snprintf(where, sizeof where, "TCP X%.6g Y%.6g Z%.6g", p[0], p[1], p[2]);
+    fail_with(line, r.error->id,
+              std::string(k == n ? "target " : "path point ") + where +
+                  " under #TRAFO ON (kinematic " + std::to_string(trafo_->kin_id) +
+                  "): " + r.error->message);
+  }
+}
+
+}  // namespace ncsim::ipo
