@@ -3,6 +3,7 @@
 #include "ipo/conveyor_sync.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -10,7 +11,10 @@ namespace ncsim::ipo {
 
 ConveyorSync::ConveyorSync(const machines::ConveyorSyncChannel& channel,
                            std::span<const SyncAxis> axes, double t_cycle)
-    : frame_(channel), tolerance_(channel.sync_in_tolerance), t_cycle_(t_cycle) {
+    : frame_(channel),
+      box_(channel.workspace),
+      tolerance_(channel.sync_in_tolerance),
+      t_cycle_(t_cycle) {
   if (axes.size() > planner::kMaxAxes)
     throw std::invalid_argument("ipo::ConveyorSync: " + std::to_string(axes.size()) + " axes");
   if (!(t_cycle > 0.0))
@@ -146,6 +150,28 @@ axes::Result ConveyorSync::start_departure(std::span<const axes::MotionState> st
 
 axes::Setpoint ConveyorSync::catch_up_setpoint(std::size_t i) const noexcept {
   return catch_sp_[i];
+}
+
+std::optional<SyncError> ConveyorSync::workspace(const Eigen::Vector3d& p_mcs) const {
+  if (!synchronised_) return std::nullopt;
+  const auto v = check_workspace(box_, frame_.direction(), p_mcs);
+  if (!v) return std::nullopt;
+  static constexpr const char* kNames[3] = {"X", "Y", "Z"};
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%s %.6g mm beyond the conveyor workspace's %s face %.6g mm",
+                kNames[v->coord], v->value, v->upper ? "upper" : "lower", v->limit);
+  switch (v->face) {
+    case WorkspaceFace::conveying:
+      return SyncError{kWorkspaceConveyingId,
+                       std::string(buf) + " in the conveying direction while synchronised"};
+    case WorkspaceFace::side:
+      return SyncError{kWorkspaceSideId, std::string(buf) + " (a side face) while synchronised"};
+    case WorkspaceFace::against:
+      break;
+  }
+  return SyncError{"NC6001", "not supported: " + std::string(buf) +
+                                 " against the conveying direction (the hold methods of "
+                                 "P-AXIS-00555 / P-CHAN-00366 / P-CHAN-00374 are not built)"};
 }
 
 MasterDisplay ConveyorSync::display() const noexcept {

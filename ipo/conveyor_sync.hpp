@@ -30,6 +30,7 @@
 #include "ipo/catch_up.hpp"
 #include "ipo/sync_checks.hpp"
 #include "ipo/sync_frame.hpp"
+#include "ipo/workspace.hpp"
 #include "machines/machine.hpp"
 #include "planner/move.hpp"
 
@@ -109,12 +110,18 @@ class ConveyorSync {
   double travel() const noexcept { return s_; }  ///< master travel since the latch [mm]
   /// Time spent waiting for the measured value so far [s].
   double waited() const noexcept { return waited_; }
+  /// The workspace (004 §2.1.3, §4.4) for the commanded TCP `p_mcs` [mm], only while
+  /// synchronised: the conveying face NC9052, a side face NC9053, the face against the
+  /// conveying direction NC6001 `not supported` (the hold methods of P-AXIS-00555 need the
+  /// planner; docs/conveyor.md "Workspace").
+  std::optional<SyncError> workspace(const Eigen::Vector3d& p_mcs) const;
   /// The display variables of the current cycle.
   MasterDisplay display() const noexcept;
   std::size_t axis_count() const noexcept { return n_; }
 
  private:
   SyncFrame frame_;
+  machines::Workspace box_;
   double tolerance_ = 0.0;  ///< P-CHAN-00365 [mm]
   double t_cycle_ = 0.0;
   std::array<SyncAxis, planner::kMaxAxes> axes_{};

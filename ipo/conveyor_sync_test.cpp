@@ -65,9 +65,11 @@ interp::SyncIn sync_in(double conv_vel) {
 struct Run {
   FakePort port{300.0};
   std::vector<SyncAxis> ax = xyz();
-  ConveyorSync sync{channel(), ax, kT};
+  ConveyorSync sync;
   std::uint64_t k = 0;
-  Run() { sync.attach(&port); }
+  explicit Run(const ncsim::machines::ConveyorSyncChannel& c = channel()) : sync(c, ax, kT) {
+    sync.attach(&port);
+  }
   std::optional<SyncError> cycle() { return sync.step(static_cast<double>(++k) * kT); }
 };
 
@@ -194,6 +196,31 @@ TEST_CASE("#SYNC OUT: the axes move on with the belt, the departure leaves from 
   CHECK(r.sync.catch_up_setpoint(0).p == doctest::Approx(-200.0));
   CHECK(r.sync.catch_up_setpoint(0).v == doctest::Approx(0.0).epsilon(1e-9));
   CHECK(r.sync.catch_up_setpoint(2).p == doctest::Approx(50.0));
+}
+
+TEST_CASE("the workspace is monitored only while synchronised, each face with its id") {
+  auto c = channel();
+  c.workspace.lower = Eigen::Vector3d(-200.0, -200.0, -100.0);
+  c.workspace.upper = Eigen::Vector3d(4000.0, 2500.0, 300.0);
+  Run r(c);
+  const Eigen::Vector3d out(4001.0, 0.0, 0.0);
+  CHECK_FALSE(r.sync.workspace(out));  // not synchronised
+  REQUIRE_FALSE(r.sync.sync_in(sync_in(300.0)));
+  r.port.latches_.push_back(0.0);
+  REQUIRE_FALSE(r.cycle());
+  const std::array<axes::MotionState, 3> start{};
+  const std::array<double, 3> target{0.0, 0.0, 0.0};
+  REQUIRE(r.sync.start_catch_up(start, target, 0.0) == axes::Result::ok);
+  while (r.sync.phase() != SyncPhase::tracking)
+    REQUIRE_FALSE(r.cycle());
+  REQUIRE(r.sync.synchronised());
+  CHECK_FALSE(r.sync.workspace(Eigen::Vector3d(3999.0, 0.0, 0.0)));
+  CHECK(r.sync.workspace(out)->id == "NC9052");
+  CHECK(r.sync.workspace(Eigen::Vector3d(0.0, 2550.0, 0.0))->id == "NC9053");
+  const auto against = r.sync.workspace(Eigen::Vector3d(-201.0, 0.0, 0.0));
+  REQUIRE(against);
+  CHECK(against->id == "NC6001");
+  CHECK(against->message.find("not supported") == 0);
 }
 
 TEST_CASE("without a Port nothing moves and nothing is checked") {
