@@ -58,6 +58,8 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
     state_.command[i] = p0;
     state_.actual[i] = p0;
   }
+  // --- conveyor-sync: conveyor tracking on FCT_DLM channels
+  if (config.conveyor) sync_.emplace(*config.conveyor, config.sync_axes, t);
 }
 
 Status Channel::stop(const char* id, std::string message, const Cycle& c, int axis) noexcept {
@@ -83,6 +85,17 @@ void Channel::map_to_axes(const Cycle& c) noexcept {
   // of the machine axes (joints), which everything below drives and monitors.
   for (std::size_t i = 0; i < axes_.size(); ++i)
     setpoint_[i] = axes::Setpoint{c.x[i], c.v[i], c.a[i], c.j[i]};
+  // --- conveyor-sync: the catch-up / departure drive the axes; PCS1 moves with the belt.
+  if (sync_ && sync_->driving()) {
+    for (std::size_t i = 0; i < axes_.size(); ++i)
+      setpoint_[i] = sync_->catch_up_setpoint(i);
+  } else if (sync_ && sync_->moving_frame()) {
+    for (std::size_t i = 0; i < axes_.size(); ++i) {
+      setpoint_[i].p += sync_->offset(i);
+      setpoint_[i].v += sync_->offset_v(i);
+      setpoint_[i].a += sync_->offset_a(i);
+    }
+  }
   // ---- end of the mapping -----------------------------------------------------------------
 }
 
@@ -270,7 +283,12 @@ Status Channel::step() noexcept {
       }
     }
   }
+  // --- conveyor-sync: the conveyor world's cycle (latch, 50653, the Port's errors).
+  if (sync_) {
+    if (auto e = sync_->step(c.t)) return stop(e->id.c_str(), std::move(e->message), c, -1);
+  }
   map_to_axes(c);
+  if (sync_ && !sync_check_workspace(c)) return Status::error;  // --- conveyor-sync
   for (std::size_t i = 0; i < axes_.size(); ++i)
     if (!drive_axis(i, c)) return Status::error;
   if (in_exact_stop_ && !exact_stop(c)) return Status::error;

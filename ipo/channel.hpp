@@ -16,8 +16,10 @@
 // channel loop").
 // Per cycle (Channel::step):
 //   1. PathInterpolator::step(): path state and point (Detail::axes).
-//   2. Mapping point -> machine axis setpoints: identity today; the one place where the joint
-//      stage (#TRAFO, #CS frames) and the conveyor's moving PCS1 frame plug in.
+//   2. Mapping point -> machine axis setpoints: identity, plus the conveyor's moving PCS1
+//      frame (ConveyorSync: the Port is stepped first; the catch-up / departure profiles drive
+//      the axes while they run; PCS1 blocks get the frame's offset); the joint stage (#TRAFO,
+//      #CS frames) plugs in here too.
 //   3. Per axis: soft limits P-AXIS-00177 / 00178 on the command position (NC5501 / NC5502),
 //      PositionControlModel::step(), AxisMonitor::step() (position lag 0x4550, exact-stop
 //      window P-ERR-70082, and the other monitors the axis list enables).
@@ -47,6 +49,7 @@
 
 #include "axes/control.hpp"
 #include "axes/monitor.hpp"
+#include "ipo/conveyor_sync.hpp"  // --- conveyor-sync
 #include "ipo/interpolator.hpp"
 #include "machines/machine.hpp"
 #include "scenario/player.hpp"
@@ -72,6 +75,9 @@ struct ChannelConfig {
   Config path;                        ///< the interpolator's (detail and hold_exact_stop are set)
   std::vector<ChannelAxis> axes;      ///< one per entry of path.axes, same order
   double exact_stop_wait_max = 60.0;  ///< [s] longest exact-stop wait without P-AXIS-00532
+  // --- conveyor-sync: conveyor tracking (docs/conveyor.md "Synchronisation")
+  std::optional<machines::ConveyorSyncChannel> conveyor;  ///< FCT_DLM channels only
+  std::vector<SyncAxis> sync_axes;  ///< one per entry of path.axes (with `conveyor`)
 };
 
 /// The channel configuration of `machine` (docs/ipo.md "The channel loop"): the interpolator
@@ -127,6 +133,16 @@ class Channel {
   /// The [stop] condition that ended the run, if one did (step() then returned finished).
   const std::optional<scenario::StopReason>& scenario_stop() const noexcept { return stopped_; }
 
+  // --- conveyor-sync: conveyor tracking (docs/conveyor.md "Synchronisation")
+  /// The conveyor world the channel steps every cycle and tracks between #SYNC IN and
+  /// #SYNC OUT (null: none; #SYNC IN is then NC6001 `not supported`). Must outlive the channel.
+  /// Ignored on a channel without conveyor tracking (no FCT_DLM).
+  void attach_conveyor(conveyor::Port* port) noexcept {
+    if (sync_) sync_->attach(port);
+  }
+  /// The channel's conveyor tracking state; null without FCT_DLM.
+  const ConveyorSync* conveyor_sync() const noexcept { return sync_ ? &*sync_ : nullptr; }
+
  private:
   /// Passes the interpolator's joints on at once; cycles are passed on by step().
   class JointRelay final : public Sink {
@@ -158,6 +174,9 @@ class Channel {
   bool play_cycle(Status& status) noexcept;
   /// After a cycle: note the block that started in it for the player.
   void note_block(const Cycle& c) noexcept;
+  // --- conveyor-sync (ipo/channel_conveyor.cpp)
+  /// The conveyor workspace on the cycle's MCS setpoints while synchronised; false: stopped.
+  bool sync_check_workspace(const Cycle& c) noexcept;
 
   JointRelay relay_;
   PathInterpolator ipo_;
@@ -181,6 +200,7 @@ class Channel {
   bool in_dwell_ = false;                 ///< the last cycle was a dwell
   std::optional<std::uint32_t> started_;  ///< line of a block started in the last cycle
   std::optional<Status> ended_;           ///< the interpolator's stream ended so
+  std::optional<ConveyorSync> sync_;      ///< --- conveyor-sync: with FCT_DLM only
 };
 
 }  // namespace ncsim::ipo

@@ -118,6 +118,8 @@ class ConveyorSync {
   /// The display variables of the current cycle.
   MasterDisplay display() const noexcept;
   std::size_t axis_count() const noexcept { return n_; }
+  /// 0, 1, 2: interpolated axis i is X, Y, Z; -1: none.
+  int xyz(std::size_t i) const noexcept { return axes_[i].xyz; }
 
  private:
   SyncFrame frame_;

@@ -7,8 +7,9 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <deque>
 #include <vector>
+
+#include "ipo/test_port.hpp"
 
 namespace {
 
@@ -16,32 +17,7 @@ using namespace ncsim::ipo;
 namespace axes = ncsim::axes;
 namespace conveyor = ncsim::conveyor;
 namespace interp = ncsim::interp;
-
-/// A belt at constant velocity; latches pushed by the test; no noise, no dead time.
-class FakePort final : public conveyor::Port {
- public:
-  explicit FakePort(double v) : v_(v) {}
-  void step(double t) noexcept override { state_ = conveyor::BeltState{p0_ + v_ * t, v_, 0.0}; }
-  const conveyor::BeltState& actual() const noexcept override { return state_; }
-  const conveyor::BeltState& measured() const noexcept override { return state_; }
-  const conveyor::BeltState& master() const noexcept override { return state_; }
-  bool command_velocity(const interp::MoveVelocity&) noexcept override { return false; }
-  void arm_probe(const interp::ProbeArm&) noexcept override {}
-  std::optional<double> take_latch() noexcept override {
-    if (latches_.empty()) return std::nullopt;
-    const double l = latches_.front();
-    latches_.pop_front();
-    return l;
-  }
-  void set_reduced_filter(bool) noexcept override {}
-  const std::optional<conveyor::PortError>& error() const noexcept override { return error_; }
-
-  std::deque<double> latches_;
-  std::optional<conveyor::PortError> error_;
-  double v_ = 0.0;
-  double p0_ = 0.0;
-  conveyor::BeltState state_;
-};
+using ncsim::ipo::test::FakePort;
 
 constexpr double kT = 0.001;
 

@@ -90,6 +90,8 @@ class ProgramSource final : public Source {
   /// Interpolated-axis values of machine values `p` given in `frame`, in MCS (program_frames).
   planner::AxisVec to_mcs(const interp::CoordFrame& frame, const interp::AxisValues& p,
                           std::uint32_t line);
+  /// --- conveyor-sync: the frame `frame` -> MCS: the #CS chain, then T0 under PCS1.
+  machines::Frame frame_to_mcs(const interp::CoordFrame& frame) const;
   /// Sets move.arc (and move.arc_plane under a rotated #CS) from the motion's arc, in MCS
   /// (program_frames.cpp).
   void arc_to_mcs(const interp::Motion& m, std::uint32_t line, planner::Move& move);
