@@ -30,6 +30,14 @@
 //      the wait ends with NC6101 after ChannelConfig::exact_stop_wait_max.
 //   5. The Sink sees the joints of the cycle and then the cycle, only when no run-time error
 //      was raised in it: a stopped run's stream ends with the last good cycle.
+//   1a. Channel events (ipo/channel_event.hpp, docs/ipo.md "Channel events"): the events due
+//      (Cycle::event_tag) are dispatched by kind (ipo/channel_events.cpp) after the
+//      interpolator's step; at a ChannelWait the interpolator asks the channel (on_wait) inside
+//      its step, and a wait whose events are not done holds the path (Activity::channel) until
+//      they are: a blocking event is dispatched again at the start of every cycle, and when it
+//      and the events after it up to the wait's tag are done, the path is released before the
+//      interpolator's step of that cycle. An event kind the channel cannot execute is run-time
+//      error NC6001 `not supported: ...` at the event's line.
 //   0. Under a scenario (play()), before 1: the blocks that started in the previous cycle go
 //      to Player::block_started, then Player::step(k, t) with k the cycle's index and t its
 //      start time; its V.E. writes are in the store the ProgramSource answers barriers from; a
@@ -49,6 +57,7 @@
 
 #include "axes/control.hpp"
 #include "axes/monitor.hpp"
+#include "ipo/channel_event.hpp"
 #include "ipo/conveyor_sync.hpp"  // --- conveyor-sync
 #include "ipo/interpolator.hpp"
 #include "machines/machine.hpp"
@@ -144,6 +153,38 @@ class Channel {
   const ConveyorSync* conveyor_sync() const noexcept { return sync_ ? &*sync_ : nullptr; }
 
  private:
+  /// What executing a channel event gave (ipo/channel_events.cpp).
+  enum class EventOutcome : std::uint8_t {
+    done,      ///< executed; the next event may follow
+    blocking,  ///< not done yet: dispatched again next cycle, the path holds meanwhile
+    error,     ///< a run-time error was raised (error_)
+  };
+  /// Hands the interpolator's ChannelWait to the channel.
+  class WaitRelay final : public WaitHandler {
+   public:
+    explicit WaitRelay(Channel& channel) : channel_(channel) {}
+    bool on_wait(const ChannelWait& wait) noexcept override { return channel_.on_wait(wait); }
+
+   private:
+    Channel& channel_;
+  };
+  /// Executes one event by kind (ipo/channel_events.cpp: the one dispatch point).
+  EventOutcome dispatch(const ChannelEvent& event) noexcept;
+  /// Dispatches the blocked event and then the due events up to `up_to`; false when one
+  /// blocks (kept in blocked_) or raised an error.
+  bool run_events(std::uint32_t up_to) noexcept;
+  /// The path reached a ChannelWait: true when its events are all done (the path goes on).
+  bool on_wait(const ChannelWait& wait) noexcept;
+  /// Raises a run-time error at an event's line, at the time of the cycle being computed.
+  EventOutcome event_error(const char* id, std::string message, const ChannelEvent& e) noexcept;
+  // --- conveyor-sync: the conveyor events (ipo/channel_conveyor.cpp)
+  EventOutcome on_sync_in(const interp::SyncIn& command, const ChannelEvent& e) noexcept;
+  EventOutcome on_sync_out(const interp::SyncOut& command, const ChannelEvent& e) noexcept;
+  /// The catch-up after #SYNC IN / the departure after #SYNC OUT (ProgramSource::sync_motion).
+  EventOutcome on_sync_motion(const interp::Motion& motion, const ChannelEvent& e) noexcept;
+  EventOutcome on_probe_arm(const interp::ProbeArm& command, const ChannelEvent& e) noexcept;
+  EventOutcome on_move_velocity(const interp::MoveVelocity& command,
+                                const ChannelEvent& e) noexcept;
   /// Passes the interpolator's joints on at once; cycles are passed on by step().
   class JointRelay final : public Sink {
    public:
@@ -179,7 +220,9 @@ class Channel {
   bool sync_check_workspace(const Cycle& c) noexcept;
 
   JointRelay relay_;
+  WaitRelay wait_relay_{*this};
   PathInterpolator ipo_;
+  Source& source_;
   Sink* sink_ = nullptr;
   std::vector<Axis> axes_;
   double exact_stop_wait_max_ = 60.0;
@@ -200,7 +243,12 @@ class Channel {
   bool in_dwell_ = false;                 ///< the last cycle was a dwell
   std::optional<std::uint32_t> started_;  ///< line of a block started in the last cycle
   std::optional<Status> ended_;           ///< the interpolator's stream ended so
-  std::optional<ConveyorSync> sync_;      ///< --- conveyor-sync: with FCT_DLM only
+  // Channel events.
+  std::optional<ChannelEvent> blocked_;  ///< an event not done yet (EventOutcome::blocking)
+  std::uint32_t wait_tag_ = 0;           ///< tag of the ChannelWait the path holds at
+  ChannelEvent event_;                   ///< scratch: the event being taken
+  std::optional<ConveyorSync> sync_;     ///< --- conveyor-sync: with FCT_DLM only
+  std::uint32_t sync_tag_ = 0;           ///< --- conveyor-sync: the event being executed
 };
 
 }  // namespace ncsim::ipo

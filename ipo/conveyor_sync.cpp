@@ -46,7 +46,7 @@ std::optional<SyncError> ConveyorSync::sync_in(const interp::SyncIn& command) {
 
 void ConveyorSync::sync_out(const interp::SyncOut&) noexcept {
   synchronised_ = false;
-  phase_ = SyncPhase::leaving;
+  phase_ = phase_ == SyncPhase::tracking ? SyncPhase::leaving : SyncPhase::off;
 }
 
 std::optional<SyncError> ConveyorSync::step(double t) noexcept {
@@ -72,7 +72,7 @@ std::optional<SyncError> ConveyorSync::step(double t) noexcept {
     }
   }
   const conveyor::BeltState& m = port_->master();
-  if (moving_frame() || driving()) {
+  if (frame_.latched() && phase_ != SyncPhase::off && phase_ != SyncPhase::waiting) {
     s_ = frame_.travel(m.p);
     v_ = frame_.along_x(m.v);
     a_ = frame_.along_x(m.a);
@@ -131,7 +131,8 @@ axes::Result ConveyorSync::start_catch_up(std::span<const axes::MotionState> sta
 
 axes::Result ConveyorSync::start_departure(std::span<const axes::MotionState> start,
                                            std::span<const double> target) noexcept {
-  if (phase_ != SyncPhase::leaving || start.size() != n_ || target.size() != n_)
+  if ((phase_ != SyncPhase::leaving && phase_ != SyncPhase::off) || start.size() != n_ ||
+      target.size() != n_)
     return axes::Result::error_invalid_input;
   std::array<CatchUpAxis, planner::kMaxAxes> in{};
   for (std::size_t i = 0; i < n_; ++i) {

@@ -67,10 +67,12 @@ class ConveyorSync {
   /// more than an axis's V on it (a rotated T0; X is the interpreter's check).
   std::optional<SyncError> sync_in(const interp::SyncIn& command);
   /// #SYNC OUT: back to MCS. The axes keep moving with the belt until the next motion, which
-  /// leaves from that moving state (start_departure).
+  /// leaves from that moving state (start_departure). Before the catch-up ran (no motion
+  /// between #SYNC IN and #SYNC OUT) nothing moved with the belt: straight back to off.
   void sync_out(const interp::SyncOut& command) noexcept;
   /// Starts the desynchronisation movement: every axis from its moving command state `start`
-  /// to the fixed MCS point `target`, at rest, all axes together (FEED_CONT 0).
+  /// to the fixed MCS point `target`, at rest, all axes together (FEED_CONT 0); also from off
+  /// (a #SYNC OUT before any catch-up: the first motion after it is still a PTP).
   axes::Result start_departure(std::span<const axes::MotionState> start,
                                std::span<const double> target) noexcept;
 
@@ -92,11 +94,10 @@ class ConveyorSync {
   bool driving() const noexcept {
     return phase_ == SyncPhase::catching_up || phase_ == SyncPhase::departing;
   }
-  /// True while PCS1 moves (latched, catching up, tracking, leaving): the path's point is
-  /// shifted by offset().
+  /// True while the path's point is in PCS1 and shifted by offset() (tracking, leaving). Before
+  /// the catch-up the path still stands at its MCS point.
   bool moving_frame() const noexcept {
-    return phase_ == SyncPhase::latched || phase_ == SyncPhase::catching_up ||
-           phase_ == SyncPhase::tracking || phase_ == SyncPhase::leaving;
+    return phase_ == SyncPhase::tracking || phase_ == SyncPhase::leaving;
   }
   /// The PCS1 offset of axis i in MCS in the current cycle (0 off the conveyor's X/Y/Z share).
   double offset(std::size_t i) const noexcept { return share_[i] * s_; }

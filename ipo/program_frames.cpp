@@ -54,6 +54,17 @@ machines::Frame ProgramSource::frame_to_mcs(const interp::CoordFrame& frame) con
   return cs_frame_;
 }
 
+interp::CommandBody ProgramSource::sync_motion(const interp::CommandBody& motion,
+                                               std::uint32_t line) {
+  interp::Motion m = std::get<interp::Motion>(motion);
+  const planner::AxisVec end = to_mcs(m.frame, m.end, line);
+  m.end = interp::AxisValues{};
+  for (std::size_t k = 0; k < axes_.size(); ++k)
+    m.end[k] = end[k];
+  m.frame = interp::CoordFrame{};
+  return m;
+}
+
 planner::AxisVec ProgramSource::to_mcs(const interp::CoordFrame& frame, const interp::AxisValues& p,
                                        std::uint32_t line) {
   if (frame.kinematics)

@@ -25,6 +25,7 @@
 
 #include <array>
 #include <cstdint>
+#include <deque>
 #include <optional>
 #include <span>
 #include <string>
@@ -32,6 +33,7 @@
 
 #include "core/diagnostic.hpp"
 #include "interp/interpreter.hpp"
+#include "ipo/channel_event.hpp"
 #include "ipo/interpolator.hpp"
 #include "machines/cs_stack.hpp"
 #include "machines/machine.hpp"
@@ -63,8 +65,11 @@ class ProgramSource final : public Source {
   /// machine has no interpolated axis.
   ProgramSource(interp::Interpreter& interp, const machines::Machine& machine);
 
-  /// The next Move or Dwell; false at End or at a program error (error() then holds it).
+  /// The next Move, Dwell or ChannelWait; false at End or at a program error (error() then
+  /// holds it).
   bool next(Item& out) override;
+  /// The oldest channel event with tag <= up_to (ipo/channel_event.hpp).
+  bool take_event(std::uint32_t up_to, ChannelEvent& out) override;
 
   /// The error that ended the stream: the interpreter's, or the adapter's NC6001. Check it
   /// after the interpolator finished: a stream that ends with an error is not a program end.
@@ -92,6 +97,9 @@ class ProgramSource final : public Source {
                           std::uint32_t line);
   /// --- conveyor-sync: the frame `frame` -> MCS: the #CS chain, then T0 under PCS1.
   machines::Frame frame_to_mcs(const interp::CoordFrame& frame) const;
+  /// --- conveyor-sync: the catch-up / departure Motion as a channel event body: `end` holds
+  /// the interpolated axes' values in MCS at belt travel 0 (interpolated order, frame MCS).
+  interp::CommandBody sync_motion(const interp::CommandBody& motion, std::uint32_t line);
   /// Sets move.arc (and move.arc_plane under a rotated #CS) from the motion's arc, in MCS
   /// (program_frames.cpp).
   void arc_to_mcs(const interp::Motion& m, std::uint32_t line, planner::Move& move);
@@ -126,6 +134,12 @@ class ProgramSource final : public Source {
   const scenario::VeStore* store_ = nullptr;
   bool flush_ = false;
   std::optional<interp::Barrier> open_;  ///< a barrier waiting for the flush's Dwell to pass
+  // Channel events (ipo/channel_event.hpp).
+  std::deque<ChannelEvent> events_;  ///< not yet taken by the channel
+  std::uint32_t tag_ = 0;            ///< tag of the last event queued
+  std::uint32_t given_ = 0;          ///< largest tag handed out with an item
+  bool end_reached_ = false;         ///< End came after a final ChannelWait
+  bool sync_motion_ = false;  ///< --- conveyor-sync: the next Motion is a catch-up / departure
 };
 
 }  // namespace ncsim::ipo
