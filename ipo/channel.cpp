@@ -87,7 +87,12 @@ void Channel::map_to_axes(const Cycle& c) noexcept {
   // of the machine axes (joints), which everything below drives and monitors.
   for (std::size_t i = 0; i < axes_.size(); ++i)
     setpoint_[i] = axes::Setpoint{c.x[i], c.v[i], c.a[i], c.j[i]};
-  // --- conveyor-sync: the catch-up / departure drive the axes; PCS1 moves with the belt.
+  // --- conveyor-sync: the catch-up / departure drive the axes; PCS1 moves with the belt. After
+  // one, the path stands where it ended (sync_hold_) until its next block moves.
+  if (c.activity == Activity::motion) sync_hold_.reset();
+  if (sync_hold_)
+    for (std::size_t i = 0; i < axes_.size(); ++i)
+      setpoint_[i] = axes::Setpoint{(*sync_hold_)[i]};
   if (sync_ && sync_->driving()) {
     for (std::size_t i = 0; i < axes_.size(); ++i)
       setpoint_[i] = sync_->catch_up_setpoint(i);

@@ -249,6 +249,8 @@ class Channel {
   ChannelEvent event_;                   ///< scratch: the event being taken
   std::optional<ConveyorSync> sync_;     ///< --- conveyor-sync: with FCT_DLM only
   std::uint32_t sync_tag_ = 0;           ///< --- conveyor-sync: the event being executed
+  /// --- conveyor-sync: where the path stands after a catch-up / departure until it moves.
+  std::optional<AxisVec> sync_hold_;
 };
 
 }  // namespace ncsim::ipo

@@ -109,7 +109,13 @@ Channel::EventOutcome Channel::on_sync_motion(const interp::Motion& motion,
   const axes::Result r =
       catch_up ? sync_->start_catch_up(std::span(start.data(), n), std::span(target.data(), n), 0.0)
                : sync_->start_departure(std::span(start.data(), n), std::span(target.data(), n));
-  if (r == axes::Result::ok) return EventOutcome::blocking;
+  if (r == axes::Result::ok) {
+    AxisVec hold{};  // the path's own coordinates: PCS1 at travel 0 (catch-up), MCS (departure)
+    for (std::size_t i = 0; i < n; ++i)
+      hold[i] = target[i];
+    sync_hold_ = hold;
+    return EventOutcome::blocking;
+  }
   try {
     const int axis = sync_->catch_up().failed_axis();
     std::string what = catch_up ? "the catch-up after #SYNC IN" : "the departure after #SYNC OUT";

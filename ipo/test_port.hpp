@@ -20,6 +20,7 @@ class FakePort final : public ncsim::conveyor::Port {
     t_ = t;
     state_ = ncsim::conveyor::BeltState{p_, v_, 0.0};
     ++steps_;
+    if (latch_at_ && steps_ == *latch_at_) latches_.push_back(p_);
   }
   const ncsim::conveyor::BeltState& actual() const noexcept override { return state_; }
   const ncsim::conveyor::BeltState& measured() const noexcept override { return state_; }
@@ -43,6 +44,7 @@ class FakePort final : public ncsim::conveyor::Port {
   double p_ = 0.0;  ///< belt position [mm]
   double t_ = 0.0;  ///< time of the last step [s]
   long steps_ = 0;
+  std::optional<long> latch_at_;  ///< at this step the belt's position is latched
   ncsim::conveyor::BeltState state_;
 };
 
