@@ -62,6 +62,8 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
     state_.command[i] = p0;
     state_.actual[i] = p0;
   }
+  // --- conveyor-sync: conveyor tracking on FCT_DLM channels
+  if (config.conveyor) sync_.emplace(*config.conveyor, config.sync_axes, t);
 }
 
 Status Channel::stop(const char* id, std::string message, const Cycle& c, int axis) noexcept {
@@ -85,10 +87,35 @@ bool Channel::map_to_axes(const Cycle& c) noexcept {
   // The conveyor's moving PCS1 frame (issue 14) plugs in here: it turns c.x, c.v, c.a, c.j
   // into the setpoints of the machine axes, which everything below drives and monitors.
   // --- trafo: under #TRAFO ON the joint stage gives the joints (channel_kinematics.cpp).
-  if (stage_ && ipo::transformed(c, transformed_)) return map_joints(c);
+  if (stage_ && ipo::transformed(c, transformed_)) {
+    if (sync_ && (sync_->driving() || sync_->moving_frame())) {  // --- conveyor-sync + trafo
+      stop(kNotSupportedId,
+           "not supported: conveyor tracking under #TRAFO ON (the PCS1 frame is not applied "
+           "before the kinematic yet)",
+           c, -1);
+      return false;
+    }
+    return map_joints(c);
+  }
   transformed_ = false;
   for (std::size_t i = 0; i < axes_.size(); ++i)
     setpoint_[i] = axes::Setpoint{c.x[i], c.v[i], c.a[i], c.j[i]};
+  // --- conveyor-sync: the catch-up / departure drive the axes; PCS1 moves with the belt. After
+  // one, the path stands where it ended (sync_hold_) until its next block moves.
+  if (c.activity == Activity::motion) sync_hold_.reset();
+  if (sync_hold_)
+    for (std::size_t i = 0; i < axes_.size(); ++i)
+      setpoint_[i] = axes::Setpoint{(*sync_hold_)[i]};
+  if (sync_ && sync_->driving()) {
+    for (std::size_t i = 0; i < axes_.size(); ++i)
+      setpoint_[i] = sync_->catch_up_setpoint(i);
+  } else if (sync_ && sync_->moving_frame()) {
+    for (std::size_t i = 0; i < axes_.size(); ++i) {
+      setpoint_[i].p += sync_->offset(i);
+      setpoint_[i].v += sync_->offset_v(i);
+      setpoint_[i].a += sync_->offset_a(i);
+    }
+  }
   return true;
   // ---- end of the mapping -----------------------------------------------------------------
 }
@@ -279,7 +306,12 @@ Status Channel::step() noexcept {
   if (!blocked_) run_events(c.event_tag);
   if (error_) return Status::error;
   if (player_ != nullptr) note_block(c);
+  // --- conveyor-sync: the conveyor world's cycle (latch, 50653, the Port's errors).
+  if (sync_) {
+    if (auto e = sync_->step(c.t)) return stop(e->id.c_str(), std::move(e->message), c, -1);
+  }
   if (!map_to_axes(c)) return Status::error;
+  if (sync_ && !sync_check_workspace(c)) return Status::error;  // --- conveyor-sync
   if (!in_exact_stop_ && ipo_.holding_exact_stop()) {
     // The command reached the end of a G60 / G360 block in this cycle (001 l.149: t_1).
     in_exact_stop_ = true;

@@ -17,8 +17,10 @@
 // Per cycle (Channel::step):
 //   1. PathInterpolator::step(): path state and point (Detail::axes).
 //   2. Mapping point -> machine axis setpoints: identity, or under #TRAFO ON the joint stage
-//      (the TCP point -> joint setpoints, ipo/joint_stage.hpp); the place where the conveyor's
-//      moving PCS1 frame plugs in.
+//      (the TCP point -> joint setpoints, ipo/joint_stage.hpp), plus the conveyor's moving PCS1
+//      frame (ConveyorSync: the Port is stepped first; the catch-up / departure profiles drive
+//      the axes while they run; PCS1 blocks get the frame's offset). Conveyor tracking under
+//      #TRAFO ON is not supported yet (NC6001).
 //   3. Per axis: soft limits P-AXIS-00177 / 00178 on the command position (NC5501 / NC5502),
 //      PositionControlModel::step(), AxisMonitor::step() (position lag 0x4550, exact-stop
 //      window P-ERR-70082, and the other monitors the axis list enables).
@@ -57,6 +59,7 @@
 #include "axes/control.hpp"
 #include "axes/monitor.hpp"
 #include "ipo/channel_event.hpp"
+#include "ipo/conveyor_sync.hpp"  // --- conveyor-sync
 #include "ipo/interpolator.hpp"
 #include "ipo/joint_stage.hpp"
 #include "machines/machine.hpp"
@@ -83,6 +86,9 @@ struct ChannelConfig {
   Config path;                        ///< the interpolator's (detail and hold_exact_stop are set)
   std::vector<ChannelAxis> axes;      ///< one per entry of path.axes, same order
   double exact_stop_wait_max = 60.0;  ///< [s] longest exact-stop wait without P-AXIS-00532
+  // --- conveyor-sync: conveyor tracking (docs/conveyor.md "Synchronisation")
+  std::optional<machines::ConveyorSyncChannel> conveyor;  ///< FCT_DLM channels only
+  std::vector<SyncAxis> sync_axes;  ///< one per entry of path.axes (with `conveyor`)
 };
 
 /// The channel configuration of `machine` (docs/ipo.md "The channel loop"): the interpolator
@@ -147,6 +153,15 @@ class Channel {
   const std::array<axes::Setpoint, planner::kMaxAxes>& setpoints() const noexcept {
     return setpoint_;
   }
+  // --- conveyor-sync: conveyor tracking (docs/conveyor.md "Synchronisation")
+  /// The conveyor world the channel steps every cycle and tracks between #SYNC IN and
+  /// #SYNC OUT (null: none; #SYNC IN is then NC6001 `not supported`). Must outlive the channel.
+  /// Ignored on a channel without conveyor tracking (no FCT_DLM).
+  void attach_conveyor(conveyor::Port* port) noexcept {
+    if (sync_) sync_->attach(port);
+  }
+  /// The channel's conveyor tracking state; null without FCT_DLM.
+  const ConveyorSync* conveyor_sync() const noexcept { return sync_ ? &*sync_ : nullptr; }
 
  private:
   /// What executing a channel event gave (ipo/channel_events.cpp).
@@ -173,6 +188,14 @@ class Channel {
   bool on_wait(const ChannelWait& wait) noexcept;
   /// Raises a run-time error at an event's line, at the time of the cycle being computed.
   EventOutcome event_error(const char* id, std::string message, const ChannelEvent& e) noexcept;
+  // --- conveyor-sync: the conveyor events (ipo/channel_conveyor.cpp)
+  EventOutcome on_sync_in(const interp::SyncIn& command, const ChannelEvent& e) noexcept;
+  EventOutcome on_sync_out(const interp::SyncOut& command, const ChannelEvent& e) noexcept;
+  /// The catch-up after #SYNC IN / the departure after #SYNC OUT (ProgramSource::sync_motion).
+  EventOutcome on_sync_motion(const interp::Motion& motion, const ChannelEvent& e) noexcept;
+  EventOutcome on_probe_arm(const interp::ProbeArm& command, const ChannelEvent& e) noexcept;
+  EventOutcome on_move_velocity(const interp::MoveVelocity& command,
+                                const ChannelEvent& e) noexcept;
   /// Passes the interpolator's joints on at once; cycles are passed on by step().
   class JointRelay final : public Sink {
    public:
@@ -206,6 +229,9 @@ class Channel {
   bool play_cycle(Status& status) noexcept;
   /// After a cycle: note the block that started in it for the player.
   void note_block(const Cycle& c) noexcept;
+  // --- conveyor-sync (ipo/channel_conveyor.cpp)
+  /// The conveyor workspace on the cycle's MCS setpoints while synchronised; false: stopped.
+  bool sync_check_workspace(const Cycle& c) noexcept;
 
   JointRelay relay_;
   WaitRelay wait_relay_{*this};
@@ -239,6 +265,10 @@ class Channel {
   std::optional<JointStage> stage_;
   bool transformed_ = false;
   JointSetpoint joints_{};
+  std::optional<ConveyorSync> sync_;     ///< --- conveyor-sync: with FCT_DLM only
+  std::uint32_t sync_tag_ = 0;           ///< --- conveyor-sync: the event being executed
+  /// --- conveyor-sync: where the path stands after a catch-up / departure until it moves.
+  std::optional<AxisVec> sync_hold_;
 };
 
 }  // namespace ncsim::ipo

@@ -1,5 +1,6 @@
 // ipo/channel_config: a machine's channel configuration (see ipo/channel.hpp).
 
+#include <array>
 #include <stdexcept>
 #include <utility>
 
@@ -21,6 +22,23 @@ ChannelConfig channel_config(const machines::Machine& machine, double t_cycle) {
     a.control = axes::make_position_control(axis);  // P-AXIS-00099, NCSIM-AXIS-023
     a.monitor = axes::make_monitor_params(axis);    // P-AXIS-00177/178/236/532, NCSIM-AXIS-024..
     c.axes.push_back(std::move(a));
+  }
+  // --- conveyor-sync: conveyor tracking (docs/conveyor.md "Synchronisation")
+  if (machine.channel.conveyor) {
+    c.conveyor = machine.channel.conveyor;
+    const std::array<const char*, 3> xyz{"X", "Y", "Z"};
+    for (const std::uint8_t i : interpolated_axes(machine)) {
+      const machines::AxisParams& axis = machine.axes[i];
+      SyncAxis a;
+      a.name = axis.name;
+      for (int k = 0; k < 3; ++k)  // X, Y, Z as the interpreter and ProgramSource find them
+        if (machine.find_axis(xyz[static_cast<std::size_t>(k)]) == &axis) a.xyz = k;
+      // The catch-up's V is P-AXIS-00212 (the target moves: the conveying axis must exceed the
+      // belt, which 50587 keeps below it); A+, A-, J are the PTP generator's.
+      a.dynamics = axes::make_generator_config(axis).dynamics;
+      a.dynamics.v_max = axis.dynamics.v_max;
+      c.sync_axes.push_back(std::move(a));
+    }
   }
   return c;
 }

@@ -34,20 +34,16 @@ Channel::EventOutcome Channel::dispatch(const ChannelEvent& e) noexcept {
           return event_error(
               kNotSupportedId,
               "not supported: independent axis move INDP (comes with the axis layer)", e);
-        } else if constexpr (std::is_same_v<T, interp::MoveVelocity>) {
-          return event_error(kNotSupportedId,
-                             "not supported: MC_MoveVelocity (comes with the conveyor simulation)",
-                             e);
-        } else if constexpr (std::is_same_v<T, interp::ProbeArm>) {
-          return event_error(kNotSupportedId,
-                             "not supported: MC_TouchProbe (comes with the conveyor simulation)",
-                             e);
-        } else if constexpr (std::is_same_v<T, interp::SyncIn>) {
-          return event_error(kNotSupportedId,
-                             "not supported: #SYNC IN (conveyor tracking is being built)", e);
-        } else if constexpr (std::is_same_v<T, interp::SyncOut>) {
-          return event_error(kNotSupportedId,
-                             "not supported: #SYNC OUT (conveyor tracking is being built)", e);
+        } else if constexpr (std::is_same_v<T, interp::Motion>) {  // --- conveyor-sync
+          return on_sync_motion(body, e);
+        } else if constexpr (std::is_same_v<T, interp::MoveVelocity>) {  // --- conveyor-sync
+          return on_move_velocity(body, e);
+        } else if constexpr (std::is_same_v<T, interp::ProbeArm>) {  // --- conveyor-sync
+          return on_probe_arm(body, e);
+        } else if constexpr (std::is_same_v<T, interp::SyncIn>) {  // --- conveyor-sync
+          return on_sync_in(body, e);
+        } else if constexpr (std::is_same_v<T, interp::SyncOut>) {  // --- conveyor-sync
+          return on_sync_out(body, e);
         } else {
           return event_error(kNotSupportedId, "not supported: this command in the channel", e);
         }

@@ -6,8 +6,9 @@
 // axes pass unchanged. F is rigid, so a line stays a line; an arc stays an arc of the same
 // radius in the rotated plane spanned by F's images of its two plane axes (planner::ArcPlane),
 // turning the same way about the image of the third axis; the helix rise is rotated with it.
-// Under #SYNC (PCS1) the motion is still refused here (NC6001). Under #TRAFO ON the result is
-// the Cartesian TCP in MCS (the transform acts below the #CS chain, as in the interpreter).
+// Under #SYNC (PCS1) the points go through T0 after the chain: the MCS point at belt travel 0;
+// the channel adds the travel (ipo/conveyor_sync). Under #TRAFO ON the result is the Cartesian
+// TCP in MCS (the transform acts below the #CS chain, as in the interpreter).
 
 #include <cmath>
 #include <string>
@@ -44,20 +45,37 @@ void ProgramSource::select_cs(const interp::SelectCs& sel, std::uint32_t line) {
   cs_frame_ = cs_.active_frame();
 }
 
+machines::Frame ProgramSource::frame_to_mcs(const interp::CoordFrame& frame) const {
+  // --- conveyor-sync: PCS1 at belt travel 0 is PCS0, placed in MCS by T0 (P-CHAN-00368..00373);
+  // the channel adds the belt travel (ipo/conveyor_sync, docs/conveyor.md). #CS systems
+  // selected after the catch-up sit on PCS1.
+  if (frame.space == interp::Space::pcs1 && machine_.channel.conveyor)
+    return machine_.channel.conveyor->t0() * cs_frame_;
+  return cs_frame_;
+}
+
+interp::CommandBody ProgramSource::sync_motion(const interp::CommandBody& motion,
+                                               std::uint32_t line) {
+  interp::Motion m = std::get<interp::Motion>(motion);
+  const planner::AxisVec end = to_mcs(m.frame, m.end, line);
+  m.end = interp::AxisValues{};
+  for (std::size_t k = 0; k < axes_.size(); ++k)
+    m.end[k] = end[k];
+  m.frame = interp::CoordFrame{};
+  return m;
+}
+
 planner::AxisVec ProgramSource::to_mcs(const interp::CoordFrame& frame, const interp::AxisValues& p,
                                        std::uint32_t line) {
-  if (frame.space == interp::Space::pcs1)
-    fail(line, "motion in frame " + interp::frame_name(frame) +
-                   " (#SYNC: conveyor tracking comes with the channel loop)");
   interp::AxisValues m = p;
-  if (frame.space == interp::Space::pcs) {
+  if (frame.space != interp::Space::mcs) {
     if (frame.cs_depth != cs_.active_count())
       fail(line, "motion in frame " + interp::frame_name(frame) + " with " +
                      std::to_string(cs_.active_count()) + " #CS systems known to the adapter");
     Eigen::Vector3d q = Eigen::Vector3d::Zero();
     for (std::size_t k = 0; k < 3; ++k)
       if (xyz_[k] >= 0) q[static_cast<Eigen::Index>(k)] = p[static_cast<std::size_t>(xyz_[k])];
-    q = cs_frame_.apply(q);
+    q = frame_to_mcs(frame).apply(q);
     for (std::size_t k = 0; k < 3; ++k) {
       const double value = q[static_cast<Eigen::Index>(k)];
       if (xyz_[k] >= 0) {
@@ -87,7 +105,8 @@ void ProgramSource::arc_to_mcs(const interp::Motion& m, std::uint32_t line, plan
   arc.clockwise = m.kind == interp::MotionKind::arc_cw;
   arc.full_circle = in.full_circle;
   move.arc = arc;
-  if (m.frame.space != interp::Space::pcs) return;
+  if (m.frame.space == interp::Space::mcs) return;
+  const machines::Frame f = frame_to_mcs(m.frame);
 
   int k1 = -1;
   int k2 = -1;
@@ -102,8 +121,8 @@ void ProgramSource::arc_to_mcs(const interp::Motion& m, std::uint32_t line, plan
     if (xyz_[k] >= 0) c[static_cast<Eigen::Index>(k)] = m.start[static_cast<std::size_t>(xyz_[k])];
   c[k1] = in.centre_1;
   c[k2] = in.centre_2;
-  c = cs_frame_.apply(c);
-  const Eigen::Matrix3d& r = cs_frame_.rotation;
+  c = f.apply(c);
+  const Eigen::Matrix3d& r = f.rotation;
   if (r == Eigen::Matrix3d::Identity()) {  // a shift only: the same principal plane
     move.arc->centre_1 = c[k1];
     move.arc->centre_2 = c[k2];

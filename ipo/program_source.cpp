@@ -223,6 +223,18 @@ bool ProgramSource::pull(Item& out) {
     line_ = cmd->line;
     const std::uint32_t line = cmd->line;
     file_ = cmd->file;
+    // --- conveyor-sync: the first motion after #SYNC IN / #SYNC OUT is the catch-up /
+    // departure, a PTP motion the channel runs while the path stands (ipo/conveyor_sync).
+    if (sync_motion_ && std::holds_alternative<interp::Motion>(cmd->body)) {
+      sync_motion_ = false;
+      events_.push_back(ChannelEvent{++tag_, line, cmd->file, sync_motion(cmd->body, line)});
+      out = ChannelWait{line, tag_};
+      given_ = tag_;
+      return true;
+    }
+    if (std::holds_alternative<interp::SyncIn>(cmd->body) ||
+        std::holds_alternative<interp::SyncOut>(cmd->body))
+      sync_motion_ = true;  // --- conveyor-sync (end)
     if (is_channel_event(cmd->body)) {
       const bool stops = stops_path(cmd->body);
       events_.push_back(ChannelEvent{++tag_, line, cmd->file, std::move(cmd->body)});

@@ -96,6 +96,11 @@ class ProgramSource final : public Source {
   /// Interpolated-axis values of machine values `p` given in `frame`, in MCS (program_frames).
   planner::AxisVec to_mcs(const interp::CoordFrame& frame, const interp::AxisValues& p,
                           std::uint32_t line);
+  /// --- conveyor-sync: the frame `frame` -> MCS: the #CS chain, then T0 under PCS1.
+  machines::Frame frame_to_mcs(const interp::CoordFrame& frame) const;
+  /// --- conveyor-sync: the catch-up / departure Motion as a channel event body: `end` holds
+  /// the interpolated axes' values in MCS at belt travel 0 (interpolated order, frame MCS).
+  interp::CommandBody sync_motion(const interp::CommandBody& motion, std::uint32_t line);
   /// Sets move.arc (and move.arc_plane under a rotated #CS) from the motion's arc, in MCS
   /// (program_frames.cpp).
   void arc_to_mcs(const interp::Motion& m, std::uint32_t line, planner::Move& move);
@@ -148,6 +153,7 @@ class ProgramSource final : public Source {
   std::optional<MachineTrafo> trafo_;  ///< the machine's kinematic, built at the first #TRAFO
   bool trafo_on_ = false;              ///< #TRAFO ON as handed out
   // --- end trafo
+  bool sync_motion_ = false;  ///< --- conveyor-sync: the next Motion is a catch-up / departure
 };
 
 }  // namespace ncsim::ipo

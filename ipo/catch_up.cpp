@@ -1,0 +1,188 @@
+// ipo/catch_up: the synchronisation movement after #SYNC IN (see the header).
+
+#include "ipo/catch_up.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace ncsim::ipo {
+
+namespace {
+
+using axes::MotionState;
+using axes::PositionTarget;
+using axes::Profile;
+using axes::Result;
+
+bool finite(const MotionState& s) noexcept {
+  return std::isfinite(s.p) && std::isfinite(s.v) && std::isfinite(s.a);
+}
+
+}  // namespace
+
+Result plan_meeting(const MotionState& start, double p1, double w, double r,
+                    const axes::Dynamics& dyn, Profile& out, double& t_meet) noexcept {
+  if (r == 0.0) return axes::plan_moving_target(start, p1, w, dyn, out, t_meet);
+  const double v_end = w + r;
+  if (!axes::valid(dyn) || !finite(start) || !std::isfinite(p1) || !std::isfinite(v_end) ||
+      std::abs(v_end) > dyn.v_max) {
+    return Result::error_invalid_input;
+  }
+  // The same search as plan_moving_target, with the meeting velocity w + r instead of w: the
+  // earliest T at which the fastest profile reaches p1 + w T with velocity w + r within T.
+  Profile probe;
+  const auto can_meet = [&](double t) {
+    return axes::plan_position(start, PositionTarget{p1 + w * t, v_end}, dyn, probe,
+                               axes::ProfileRule::time_optimal) == Result::ok &&
+           probe.duration() <= t;
+  };
+  const bool static_ok = axes::plan_position(start, PositionTarget{p1, v_end}, dyn, probe,
+                                             axes::ProfileRule::time_optimal) == Result::ok;
+  double t_hi = (static_ok && probe.duration() > 0.0 ? probe.duration() : 1.0) * 0x1p-20;
+  double t_lo = 0.0;
+  if (can_meet(0.0)) {
+    t_hi = 0.0;
+  } else {
+    int k = 0;
+    while (!can_meet(t_hi)) {
+      t_lo = t_hi;
+      t_hi *= 2.0;
+      if (++k > 100) return Result::error_not_synchronizable;  // the target runs away
+    }
+    for (int i = 0; i < 200 && t_hi - t_lo > 4.0 * std::numeric_limits<double>::epsilon() * t_hi;
+         ++i) {
+      const double mid = 0.5 * (t_lo + t_hi);
+      (can_meet(mid) ? t_hi : t_lo) = mid;
+    }
+  }
+  const PositionTarget target{p1 + w * t_hi, v_end};
+  if (axes::plan_position_of_duration(start, target, dyn, t_hi, out) == Result::ok) {
+    t_meet = out.duration();
+    return Result::ok;
+  }
+  if (axes::plan_position(start, target, dyn, out, axes::ProfileRule::time_optimal) == Result::ok &&
+      std::abs(out.duration() - t_hi) <= 1e-9 * std::max(t_hi, 1e-9)) {
+    t_meet = out.duration();
+    return Result::ok;
+  }
+  return Result::error_not_synchronizable;
+}
+
+namespace {
+
+// The axis in the frame moving with its target's velocity w: the target stands, the axis
+// starts at velocity v - w, and |v' + w| <= V holds wherever |v'| <= V - |w|.
+MotionState in_belt_frame(const MotionState& s, double w) noexcept {
+  return {s.p, s.v - w, s.a};
+}
+
+axes::Dynamics belt_frame_dynamics(axes::Dynamics d, double w) noexcept {
+  d.v_max -= std::abs(w);
+  return d;
+}
+
+}  // namespace
+
+Result CatchUp::plan(std::span<const CatchUpAxis> axes, double s0, double v_belt) noexcept {
+  n_ = 0;
+  duration_ = 0.0;
+  failed_ = -1;
+  s0_ = s0;
+  v_belt_ = v_belt;
+  if (axes.empty() || axes.size() > kMaxAxes || !std::isfinite(s0) || !std::isfinite(v_belt)) {
+    return Result::error_invalid_input;
+  }
+  n_ = axes.size();
+  // 1. Each axis alone: its earliest meeting with its target p1 + w t. Where the PTP core's
+  // single-peak family has no such profile in MCS (a moving axis ahead of a faster target
+  // would need a velocity dip below both its start and end velocity), the axis is planned in
+  // the frame moving with its target: an ordinary position move there (stop and return
+  // included), under V - |w|.
+  std::size_t slowest = 0;
+  for (std::size_t i = 0; i < n_; ++i) {
+    axes_[i] = axes[i];
+    belt_frame_[i] = false;
+    const CatchUpAxis& a = axes_[i];
+    const double w = a.conveying * v_belt;
+    double t = 0.0;
+    Result r = plan_meeting(a.start, a.target, w, a.v_relative, a.dynamics, profiles_[i], t);
+    if (r == Result::error_not_synchronizable && w != 0.0) {
+      const axes::Dynamics d = belt_frame_dynamics(a.dynamics, w);
+      r = axes::valid(d) ? axes::plan_position(in_belt_frame(a.start, w),
+                                               PositionTarget{a.target, a.v_relative}, d,
+                                               profiles_[i], axes::ProfileRule::time_optimal)
+                         : Result::error_invalid_input;
+      belt_frame_[i] = r == Result::ok;
+      t = profiles_[i].duration();
+    }
+    if (r != Result::ok) {
+      failed_ = static_cast<int>(i);
+      return r;
+    }
+    meet_[i] = t;
+    if (t > duration_) {
+      duration_ = t;
+      slowest = i;
+    }
+  }
+  // 2. Every other axis in exactly T: the target is then at p1 + w T (MCS), or still at p1
+  // in the frame moving with it.
+  for (std::size_t i = 0; i < n_; ++i) {
+    if (i == slowest || meet_[i] == duration_) continue;
+    const CatchUpAxis& a = axes_[i];
+    const double w = a.conveying * v_belt;
+    Profile stretched;
+    if (axes::plan_position_of_duration(a.start,
+                                        PositionTarget{a.target + w * duration_, w + a.v_relative},
+                                        a.dynamics, duration_, stretched) == Result::ok) {
+      profiles_[i] = stretched;
+      belt_frame_[i] = false;
+      meet_[i] = duration_;
+      continue;
+    }
+    const axes::Dynamics d = belt_frame_dynamics(a.dynamics, w);
+    if (w != 0.0 && axes::valid(d) &&
+        axes::plan_position_of_duration(in_belt_frame(a.start, w),
+                                        PositionTarget{a.target, a.v_relative}, d, duration_,
+                                        stretched) == Result::ok) {
+      profiles_[i] = stretched;
+      belt_frame_[i] = true;
+      meet_[i] = duration_;
+      continue;
+    }
+    // Not stretchable: an axis meeting at the target's velocity meets early and rides along
+    // (Profile::at continues at the end velocity); one meeting at another velocity would
+    // drift away from its target before T.
+    if (a.v_relative != 0.0) {
+      failed_ = static_cast<int>(i);
+      return Result::error_not_synchronizable;
+    }
+  }
+  return Result::ok;
+}
+
+axes::Setpoint CatchUp::setpoint(std::size_t i, double t, double s, double v,
+                                 double a) const noexcept {
+  axes::Setpoint sp = profiles_[i].at(t);
+  if (belt_frame_[i]) {  // back from the frame moving with the forecast target
+    const double w = axes_[i].conveying * v_belt_;
+    sp.p += w * t;
+    sp.v += w;
+  }
+  // The plan forecast the belt at constant velocity v_belt_ from s0_; its deviation from that
+  // forecast moves the target, and with it the axis.
+  const double c = axes_[i].conveying;
+  if (c != 0.0) {
+    sp.p += c * (s - s0_ - v_belt_ * t);
+    sp.v += c * (v - v_belt_);
+    sp.a += c * a;
+  }
+  return sp;
+}
+
+double CatchUp::target_at(std::size_t i, double s) const noexcept {
+  return axes_[i].target + axes_[i].conveying * (s - s0_);
+}
+
+}  // namespace ncsim::ipo

@@ -1,0 +1,161 @@
+// ipo/channel_conveyor: the channel's conveyor tracking (issue 14; docs/conveyor.md
+// "Synchronisation"): the Channel members conveyor-sync owns, kept out of channel.cpp.
+//
+// Event flow (ipo/channel_event.hpp): #SYNC IN stops the path; its handler blocks while the
+// Port has no latch ("waiting for measured value"). The first motion after it reaches the
+// channel as a Motion event (ProgramSource::sync_motion, end in MCS at belt travel 0): the
+// catch-up PTP runs while the path stands, and its handler blocks until the profile has met
+// the moving target. The path's PCS1 blocks then run with the frame's offset (map_to_axes).
+// #SYNC OUT switches to `leaving` (the axes move on with the belt); the first motion after it
+// is the departure PTP from that moving state.
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <utility>
+
+#include "ipo/channel.hpp"
+#include "ipo/program_source.hpp"
+
+namespace ncsim::ipo {
+
+namespace {
+
+constexpr const char* kNeedsWorld =
+    " needs the conveyor world: run with a scenario that has a [conveyor] section (no conveyor "
+    "is attached to the channel)";
+
+}  // namespace
+
+bool Channel::sync_check_workspace(const Cycle& c) noexcept {
+  if (!sync_->synchronised()) return true;
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < axes_.size(); ++i)
+    if (const int k = sync_->xyz(i); k >= 0) p[k] = setpoint_[i].p;
+  try {
+    if (auto e = sync_->workspace(p)) {
+      stop(e->id.c_str(), std::move(e->message), c, -1);
+      return false;
+    }
+  } catch (...) {
+    std::abort();  // out of memory while reporting a run-time error
+  }
+  return true;
+}
+
+Channel::EventOutcome Channel::on_sync_in(const interp::SyncIn& command,
+                                          const ChannelEvent& e) noexcept {
+  try {
+    if (!sync_ || sync_->port() == nullptr)
+      return event_error(kNotSupportedId, std::string("not supported: #SYNC IN") + kNeedsWorld, e);
+    if (command.feed_cont_auto)
+      return event_error(kNotSupportedId,
+                         "not supported: #SYNC IN FEED_CONT_AUTO (the manual gives no formula for "
+                         "\"the maximum permissible dynamic relative velocity\")",
+                         e);
+    if (command.feed_cont && *command.feed_cont > 0.0)
+      return event_error(kNotSupportedId,
+                         "not supported: #SYNC IN FEED_CONT > 0 (the catch-up can meet the "
+                         "workpiece moving, but the path starts the first PCS1 block at rest)",
+                         e);
+    if (sync_tag_ != e.tag) {  // first dispatch: from now the path waits for the measured value
+      sync_tag_ = e.tag;
+      if (auto err = sync_->sync_in(command))
+        return event_error(err->id.c_str(), std::move(err->message), e);
+      return EventOutcome::blocking;
+    }
+    return sync_->phase() == SyncPhase::waiting ? EventOutcome::blocking : EventOutcome::done;
+  } catch (...) {
+    std::abort();  // out of memory while reporting a run-time error
+  }
+}
+
+Channel::EventOutcome Channel::on_sync_out(const interp::SyncOut& command,
+                                           const ChannelEvent& e) noexcept {
+  try {
+    if (!sync_ || sync_->port() == nullptr)
+      return event_error(kNotSupportedId, std::string("not supported: #SYNC OUT") + kNeedsWorld, e);
+    if (command.feed_cont_auto || (command.feed_cont && *command.feed_cont > 0.0))
+      return event_error(kNotSupportedId,
+                         "not supported: #SYNC OUT FEED_CONT > 0 / FEED_CONT_AUTO (the departure "
+                         "ends at rest)",
+                         e);
+  } catch (...) {
+    std::abort();
+  }
+  sync_->sync_out(command);
+  return EventOutcome::done;
+}
+
+Channel::EventOutcome Channel::on_sync_motion(const interp::Motion& motion,
+                                              const ChannelEvent& e) noexcept {
+  if (!sync_) {
+    return event_error(kNotSupportedId, "not supported: a synchronisation motion without FCT_DLM",
+                       e);
+  }
+  if (sync_tag_ == e.tag) {  // dispatched again: blocking while the profile runs
+    return sync_->driving() ? EventOutcome::blocking : EventOutcome::done;
+  }
+  sync_tag_ = e.tag;
+  const std::size_t n = axes_.size();
+  std::array<axes::MotionState, planner::kMaxAxes> start{};
+  std::array<double, planner::kMaxAxes> target{};
+  for (std::size_t i = 0; i < n; ++i) {
+    // The command state at the end of the last cycle (the catch-up starts in the next one).
+    start[i] = axes::MotionState{state_.command[i], setpoint_[i].v, setpoint_[i].a};
+    target[i] = motion.end[i];  // interpolated order, MCS at belt travel 0
+  }
+  const bool catch_up = sync_->phase() == SyncPhase::latched;
+  const axes::Result r =
+      catch_up ? sync_->start_catch_up(std::span(start.data(), n), std::span(target.data(), n), 0.0)
+               : sync_->start_departure(std::span(start.data(), n), std::span(target.data(), n));
+  if (r == axes::Result::ok) {
+    AxisVec hold{};  // the path's own coordinates: PCS1 at travel 0 (catch-up), MCS (departure)
+    for (std::size_t i = 0; i < n; ++i)
+      hold[i] = target[i];
+    sync_hold_ = hold;
+    return EventOutcome::blocking;
+  }
+  try {
+    const int axis = sync_->catch_up().failed_axis();
+    std::string what = catch_up ? "the catch-up after #SYNC IN" : "the departure after #SYNC OUT";
+    if (axis >= 0) what += " of axis " + axes_[static_cast<std::size_t>(axis)].config.name;
+    return event_error(kCatchUpNotSynchronizableId,
+                       what + ": " + std::string(axes::describe(r)) + " (" +
+                           std::string(axes::diagnostic_id(r)) + ")",
+                       e);
+  } catch (...) {
+    std::abort();
+  }
+}
+
+Channel::EventOutcome Channel::on_probe_arm(const interp::ProbeArm& command,
+                                            const ChannelEvent& e) noexcept {
+  if (!sync_ || sync_->port() == nullptr) {
+    try {
+      return event_error(kNotSupportedId, std::string("not supported: MC_TouchProbe") + kNeedsWorld,
+                         e);
+    } catch (...) {
+      std::abort();
+    }
+  }
+  sync_->port()->arm_probe(command);  // a retrigger is the Port's P-ERR-44009 (next step)
+  return EventOutcome::done;
+}
+
+Channel::EventOutcome Channel::on_move_velocity(const interp::MoveVelocity& command,
+                                                const ChannelEvent& e) noexcept {
+  if (!sync_ || sync_->port() == nullptr) {
+    try {
+      return event_error(kNotSupportedId,
+                         std::string("not supported: MC_MoveVelocity") + kNeedsWorld, e);
+    } catch (...) {
+      std::abort();
+    }
+  }
+  // In encoder mode the scenario moves the belt and the Port ignores the command (its contract).
+  sync_->port()->command_velocity(command);
+  return EventOutcome::done;
+}
+
+}  // namespace ncsim::ipo

@@ -1,0 +1,183 @@
+// ipo/conveyor_sync: the channel's conveyor tracking (see the header).
+
+#include "ipo/conveyor_sync.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <stdexcept>
+
+namespace ncsim::ipo {
+
+ConveyorSync::ConveyorSync(const machines::ConveyorSyncChannel& channel,
+                           std::span<const SyncAxis> axes, double t_cycle)
+    : frame_(channel),
+      box_(channel.workspace),
+      tolerance_(channel.sync_in_tolerance),
+      t_cycle_(t_cycle) {
+  if (axes.size() > planner::kMaxAxes)
+    throw std::invalid_argument("ipo::ConveyorSync: " + std::to_string(axes.size()) + " axes");
+  if (!(t_cycle > 0.0))
+    throw std::invalid_argument("ipo::ConveyorSync: cycle time " + std::to_string(t_cycle));
+  n_ = axes.size();
+  for (std::size_t i = 0; i < n_; ++i) {
+    axes_[i] = axes[i];
+    if (!axes::valid(axes[i].dynamics))
+      throw std::invalid_argument("ipo::ConveyorSync: axis " + axes[i].name +
+                                  ": PTP dynamics not usable (V " +
+                                  std::to_string(axes[i].dynamics.v_max) + ")");
+    share_[i] = axes[i].xyz >= 0 && axes[i].xyz < 3 ? frame_.direction()[axes[i].xyz] : 0.0;
+    if (std::fabs(share_[i]) < 1e-12) share_[i] = 0.0;  // rounding of an unrotated T0
+  }
+}
+
+std::optional<SyncError> ConveyorSync::sync_in(const interp::SyncIn& command) {
+  for (std::size_t i = 0; i < n_; ++i) {
+    planner::AxisLimits l;
+    l.v_max = axes_[i].dynamics.v_max;
+    if (auto e = check_conv_vel(l, share_[i], command.conv_vel, axes_[i].name)) return e;
+  }
+  conv_vel_ = command.conv_vel;
+  phase_ = SyncPhase::waiting;
+  synchronised_ = false;
+  waited_ = 0.0;
+  return std::nullopt;
+}
+
+void ConveyorSync::sync_out(const interp::SyncOut&) noexcept {
+  synchronised_ = false;
+  phase_ = phase_ == SyncPhase::tracking ? SyncPhase::leaving : SyncPhase::off;
+}
+
+std::optional<SyncError> ConveyorSync::step(double t) noexcept {
+  if (port_ == nullptr) return std::nullopt;
+  // A profile that ended in the previous cycle hands over now (its last setpoint was exact).
+  if (driving() && t_catch_ >= catch_up_.duration()) {
+    phase_ = phase_ == SyncPhase::catching_up ? SyncPhase::tracking : SyncPhase::off;
+  }
+  port_->step(t);
+  if (const auto& e = port_->error()) {
+    try {
+      return SyncError{e->id, e->message};
+    } catch (...) {
+      std::abort();  // out of memory while reporting a run-time error
+    }
+  }
+  if (phase_ == SyncPhase::waiting) {
+    if (const auto latch = port_->take_latch()) {
+      frame_.latch(*latch);
+      phase_ = SyncPhase::latched;
+    } else {
+      waited_ += t_cycle_;
+    }
+  }
+  const conveyor::BeltState& m = port_->master();
+  if (frame_.latched() && phase_ != SyncPhase::off && phase_ != SyncPhase::waiting) {
+    s_ = frame_.travel(m.p);
+    v_ = frame_.along_x(m.v);
+    a_ = frame_.along_x(m.a);
+  }
+  const bool checked = phase_ == SyncPhase::waiting || phase_ == SyncPhase::latched ||
+                       phase_ == SyncPhase::catching_up || phase_ == SyncPhase::tracking;
+  if (checked) {
+    try {
+      if (auto e = check_belt_velocity(m.v, conv_vel_)) return e;
+    } catch (...) {
+      std::abort();  // out of memory while reporting a run-time error
+    }
+  }
+  if (driving()) {
+    t_catch_ += t_cycle_;
+    bool within = true;
+    for (std::size_t i = 0; i < n_; ++i) {
+      catch_sp_[i] = catch_up_.setpoint(i, t_catch_, s_, v_, a_);
+      if (std::fabs(catch_sp_[i].p - catch_up_.target_at(i, s_)) > tolerance_ &&
+          t_catch_ < catch_up_.duration())
+        within = false;
+    }
+    if (phase_ == SyncPhase::catching_up && within) synchronised_ = true;
+  }
+  return std::nullopt;
+}
+
+axes::Result ConveyorSync::start_catch_up(std::span<const axes::MotionState> start,
+                                          std::span<const double> target,
+                                          double feed_cont) noexcept {
+  if (phase_ != SyncPhase::latched || start.size() != n_ || target.size() != n_)
+    return axes::Result::error_invalid_input;
+  std::array<CatchUpAxis, planner::kMaxAxes> in{};
+  // FEED_CONT's direction: the catch-up's own, start to target over X/Y/Z (docs/conveyor.md).
+  double norm2 = 0.0;
+  for (std::size_t i = 0; i < n_; ++i) {
+    in[i].start = start[i];
+    in[i].target = target[i] + share_[i] * s_;
+    in[i].conveying = share_[i];
+    in[i].dynamics = axes_[i].dynamics;
+    if (axes_[i].xyz >= 0) norm2 += std::pow(in[i].target - start[i].p, 2);
+  }
+  if (feed_cont > 0.0 && norm2 > 0.0) {
+    const double k = feed_cont / std::sqrt(norm2);
+    for (std::size_t i = 0; i < n_; ++i)
+      if (axes_[i].xyz >= 0) in[i].v_relative = k * (in[i].target - start[i].p);
+  }
+  const axes::Result r = catch_up_.plan(std::span(in.data(), n_), s_, v_);
+  if (r != axes::Result::ok) return r;
+  phase_ = SyncPhase::catching_up;
+  t_catch_ = 0.0;
+  for (std::size_t i = 0; i < n_; ++i)
+    catch_sp_[i] = catch_up_.setpoint(i, 0.0, s_, v_, a_);
+  return r;
+}
+
+axes::Result ConveyorSync::start_departure(std::span<const axes::MotionState> start,
+                                           std::span<const double> target) noexcept {
+  if ((phase_ != SyncPhase::leaving && phase_ != SyncPhase::off) || start.size() != n_ ||
+      target.size() != n_)
+    return axes::Result::error_invalid_input;
+  std::array<CatchUpAxis, planner::kMaxAxes> in{};
+  for (std::size_t i = 0; i < n_; ++i) {
+    in[i].start = start[i];
+    in[i].target = target[i];
+    in[i].dynamics = axes_[i].dynamics;  // conveying 0: fixed targets in MCS
+  }
+  const axes::Result r = catch_up_.plan(std::span(in.data(), n_), 0.0, 0.0);
+  if (r != axes::Result::ok) return r;
+  phase_ = SyncPhase::departing;
+  t_catch_ = 0.0;
+  for (std::size_t i = 0; i < n_; ++i)
+    catch_sp_[i] = catch_up_.setpoint(i, 0.0, 0.0, 0.0, 0.0);
+  return r;
+}
+
+axes::Setpoint ConveyorSync::catch_up_setpoint(std::size_t i) const noexcept {
+  return catch_sp_[i];
+}
+
+std::optional<SyncError> ConveyorSync::workspace(const Eigen::Vector3d& p_mcs) const {
+  if (!synchronised_) return std::nullopt;
+  const auto v = check_workspace(box_, frame_.direction(), p_mcs);
+  if (!v) return std::nullopt;
+  static constexpr const char* kNames[3] = {"X", "Y", "Z"};
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%s %.6g mm beyond the conveyor workspace's %s face %.6g mm",
+                kNames[v->coord], v->value, v->upper ? "upper" : "lower", v->limit);
+  switch (v->face) {
+    case WorkspaceFace::conveying:
+      return SyncError{kWorkspaceConveyingId,
+                       std::string(buf) + " in the conveying direction while synchronised"};
+    case WorkspaceFace::side:
+      return SyncError{kWorkspaceSideId, std::string(buf) + " (a side face) while synchronised"};
+    case WorkspaceFace::against:
+      break;
+  }
+  return SyncError{"NC6001", "not supported: " + std::string(buf) +
+                                 " against the conveying direction (the hold methods of "
+                                 "P-AXIS-00555 / P-CHAN-00366 / P-CHAN-00374 are not built)"};
+}
+
+MasterDisplay ConveyorSync::display() const noexcept {
+  if (port_ == nullptr) return MasterDisplay{};
+  return master_display(frame_, port_->measured(), port_->master());
+}
+
+}  // namespace ncsim::ipo

@@ -1,0 +1,144 @@
+#pragma once
+// ipo/conveyor_sync: the channel's conveyor tracking, #SYNC IN to #SYNC OUT (seed 004 §2.1,
+// §3; docs/conveyor.md "Synchronisation").
+//
+// Purpose: the state the channel keeps while it tracks a conveyor, apart from the channel loop
+// so that it can be tested against a test-double conveyor::Port.
+// Inputs: the channel's conveyor_sync parameters, one SyncAxis per interpolated axis (its
+// X/Y/Z slot and PTP dynamics), the Port (attach()), the program's SyncIn / SyncOut, the axes'
+// command states when the catch-up starts, the cycle times.
+// Outputs: per cycle the MCS offset of every interpolated axis (position, velocity,
+// acceleration of the PCS1 frame against PCS0), the catch-up setpoints, the phase (waiting for
+// the measured value, catching up, synchronised), errors with the manual's ids.
+// Phases: off -> (sync_in) waiting: the path stands until the Port has a latch, "waiting for
+// measured value" -> (a latch) latched: the frame moves, the next G00/G01 is the catch-up ->
+// (start_catch_up) catching_up -> (profile ended) tracking: PCS1 blocks run on the moving
+// frame -> (sync_out) off, the axes keep the belt's velocity until the next motion.
+// Invariants: step() never throws; the offset is continuous (it is the master travel, which
+// the Port makes continuous) except at a new latch, where it restarts at the master travel
+// since that latch (the frame is re-based while the path stands).
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+
+#include "axes/profile.hpp"
+#include "conveyor/port.hpp"
+#include "interp/command.hpp"
+#include "ipo/catch_up.hpp"
+#include "ipo/sync_checks.hpp"
+#include "ipo/sync_frame.hpp"
+#include "ipo/workspace.hpp"
+#include "machines/machine.hpp"
+#include "planner/move.hpp"
+
+namespace ncsim::ipo {
+
+/// One interpolated axis as conveyor tracking sees it.
+struct SyncAxis {
+  std::string name;         ///< axis name (messages)
+  int xyz = -1;             ///< 0, 1, 2: the axis is X, Y, Z (its share of the belt); -1: none
+  axes::Dynamics dynamics;  ///< PTP dynamics of the catch-up (V, A+, A-, J)
+};
+
+enum class SyncPhase : std::uint8_t {
+  off,          ///< not synchronised: MCS
+  waiting,      ///< after #SYNC IN, until the Port has a latch ("waiting for measured value")
+  latched,      ///< PCS1 moves with the belt; the next G00/G01 is the catch-up
+  catching_up,  ///< the catch-up profile runs
+  tracking,     ///< synchronised: PCS1 blocks run on the moving frame
+  leaving,      ///< after #SYNC OUT: MCS, the axes still move with the belt until the next motion
+  departing,    ///< the desynchronisation PTP from the moving state to a fixed MCS target
+};
+
+class ConveyorSync {
+ public:
+  /// Throws std::invalid_argument when an axis's dynamics are not usable (value named).
+  ConveyorSync(const machines::ConveyorSyncChannel& channel, std::span<const SyncAxis> axes,
+               double t_cycle);
+
+  /// The conveyor world (null: none; then #SYNC IN is not supported). Must outlive this.
+  void attach(conveyor::Port* port) noexcept { port_ = port; }
+  conveyor::Port* port() const noexcept { return port_; }
+
+  /// #SYNC IN: from now the path waits for the measured value. Error 50587 when CONV_VEL puts
+  /// more than an axis's V on it (a rotated T0; X is the interpreter's check).
+  std::optional<SyncError> sync_in(const interp::SyncIn& command);
+  /// #SYNC OUT: back to MCS. The axes keep moving with the belt until the next motion, which
+  /// leaves from that moving state (start_departure). Before the catch-up ran (no motion
+  /// between #SYNC IN and #SYNC OUT) nothing moved with the belt: straight back to off.
+  void sync_out(const interp::SyncOut& command) noexcept;
+  /// Starts the desynchronisation movement: every axis from its moving command state `start`
+  /// to the fixed MCS point `target`, at rest, all axes together (FEED_CONT 0); also from off
+  /// (a #SYNC OUT before any catch-up: the first motion after it is still a PTP).
+  axes::Result start_departure(std::span<const axes::MotionState> start,
+                               std::span<const double> target) noexcept;
+
+  /// Once per cycle, before the path: steps the Port to `t` [s] (end of the cycle), takes a
+  /// latch while waiting, checks 50653 while synchronised and passes the Port's error on with its
+  /// own id.
+  std::optional<SyncError> step(double t) noexcept;
+
+  /// Starts the catch-up at the end of the cycle just done: `start` the command state of every
+  /// interpolated axis (MCS), `target` the programmed point in MCS at belt travel 0 (T0
+  /// applied: the ProgramSource's Move end), `feed_cont` the relative velocity [mm/s].
+  axes::Result start_catch_up(std::span<const axes::MotionState> start,
+                              std::span<const double> target, double feed_cont) noexcept;
+  /// The setpoint of axis i in the cycle step() prepared (catching_up and departing only).
+  axes::Setpoint catch_up_setpoint(std::size_t i) const noexcept;
+  const CatchUp& catch_up() const noexcept { return catch_up_; }
+
+  /// True while the channel drives the axes from the catch-up or departure profile.
+  bool driving() const noexcept {
+    return phase_ == SyncPhase::catching_up || phase_ == SyncPhase::departing;
+  }
+  /// True while the path's point is in PCS1 and shifted by offset() (tracking, leaving). Before
+  /// the catch-up the path still stands at its MCS point.
+  bool moving_frame() const noexcept {
+    return phase_ == SyncPhase::tracking || phase_ == SyncPhase::leaving;
+  }
+  /// The PCS1 offset of axis i in MCS in the current cycle (0 off the conveyor's X/Y/Z share).
+  double offset(std::size_t i) const noexcept { return share_[i] * s_; }
+  double offset_v(std::size_t i) const noexcept { return share_[i] * v_; }  ///< [mm/s]
+  double offset_a(std::size_t i) const noexcept { return share_[i] * a_; }  ///< [mm/s^2]
+
+  SyncPhase phase() const noexcept { return phase_; }
+  /// Within P-CHAN-00365 of the target since the catch-up (docs/conveyor.md).
+  bool synchronised() const noexcept { return synchronised_; }
+  const SyncFrame& frame() const noexcept { return frame_; }
+  double travel() const noexcept { return s_; }  ///< master travel since the latch [mm]
+  /// Time spent waiting for the measured value so far [s].
+  double waited() const noexcept { return waited_; }
+  /// The workspace (004 §2.1.3, §4.4) for the commanded TCP `p_mcs` [mm], only while
+  /// synchronised: the conveying face NC9052, a side face NC9053, the face against the
+  /// conveying direction NC6001 `not supported` (the hold methods of P-AXIS-00555 need the
+  /// planner; docs/conveyor.md "Workspace").
+  std::optional<SyncError> workspace(const Eigen::Vector3d& p_mcs) const;
+  /// The display variables of the current cycle.
+  MasterDisplay display() const noexcept;
+  std::size_t axis_count() const noexcept { return n_; }
+  /// 0, 1, 2: interpolated axis i is X, Y, Z; -1: none.
+  int xyz(std::size_t i) const noexcept { return axes_[i].xyz; }
+
+ private:
+  SyncFrame frame_;
+  machines::Workspace box_;
+  double tolerance_ = 0.0;  ///< P-CHAN-00365 [mm]
+  double t_cycle_ = 0.0;
+  std::array<SyncAxis, planner::kMaxAxes> axes_{};
+  std::array<double, planner::kMaxAxes> share_{};  ///< conveying component per axis
+  std::size_t n_ = 0;
+  conveyor::Port* port_ = nullptr;
+  SyncPhase phase_ = SyncPhase::off;
+  bool synchronised_ = false;
+  double conv_vel_ = 0.0;               ///< CONV_VEL [mm/s]
+  double s_ = 0.0, v_ = 0.0, a_ = 0.0;  ///< master travel, velocity, acceleration along PCS0 X
+  double waited_ = 0.0;
+  CatchUp catch_up_;
+  double t_catch_ = 0.0;  ///< time since the catch-up started [s] (the prepared cycle's end)
+  std::array<axes::Setpoint, planner::kMaxAxes> catch_sp_{};
+};
+
+}  // namespace ncsim::ipo
