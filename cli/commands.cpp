@@ -252,6 +252,7 @@ std::variant<std::optional<scenario::Scenario>, int> load_scenario_for(
   }
   scenario::Context context;
   context.program = &program;
+  context.conveyor_wired = true;  // run / time play the conveyor world (docs/conveyor.md)
   context.axes.emplace();
   for (const machines::AxisParams& axis : machine.axes)
     context.axes->push_back(axis.name);

@@ -14,6 +14,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/run_progress.hpp"
+#include "conveyor/world.hpp"
 #include "core/diagnostic.hpp"
 #include "core/source_file.hpp"
 #include "grammar/check.hpp"
@@ -59,6 +60,8 @@ struct Loaded {
   double t_cycle = 0.001;
   interp::Options interp;  ///< the scenario's V.E. initial values (barrier answers)
   std::optional<scenario::Scenario> scenario;  ///< played by the channel when it has events
+  /// The conveyor world (docs/conveyor.md "The world") on a machine with a conveyor axis.
+  std::unique_ptr<conveyor::Port> port;
 };
 
 // What the channel plays of a scenario (docs/scenario.md "Wiring into the channel loop"):
@@ -76,7 +79,10 @@ struct Playing {
         writes = writes || std::holds_alternative<scenario::VeWrite>(a);
     src.answer_barriers_from(&player->ve(), writes);
   }
-  void attach(ipo::Channel& channel) { channel.play(player.get()); }
+  void attach(ipo::Channel& channel, conveyor::Port* port) {
+    channel.play(player.get());
+    channel.attach_conveyor(port);
+  }
 };
 
 // The actions of `s` the channel cannot play yet, by name ("" if none).
@@ -151,8 +157,20 @@ std::variant<Loaded, int> load(const ProgramOptions& options,
   if (syntax.error_count() > 0) return kExitProgramErrors;
   // The channel list has no cycle key in ncsim yet: 1 ms unless --cycle-us (docs/ipo.md).
   const double t = cycle_us ? static_cast<double>(*cycle_us) * 1e-6 : 0.001;
-  return Loaded{std::move(file), std::move(*loaded.machine), t, std::move(interp_options),
-                std::move(s)};
+  // The conveyor world (belt, encoder, probe, filters) of a machine with a conveyor axis.
+  std::unique_ptr<conveyor::Port> port;
+  if (loaded.machine->conveyor_axis() != nullptr) {
+    try {
+      port = conveyor::make_port(*loaded.machine, s ? &*s : nullptr, t);
+    } catch (const std::invalid_argument& e) {
+      err << "ncsim: error: the conveyor of machine '" << dir->string() << "': " << e.what()
+          << '\n';
+      return kExitUsage;
+    }
+  }
+  return Loaded{
+      std::move(file), std::move(*loaded.machine), t, std::move(interp_options), std::move(s),
+      std::move(port)};
 }
 
 // The program error that ended a run, with its source line when it is in the main program.
@@ -346,7 +364,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
     audit->set_joint_limits(cfg.path.joints->joints, cfg.path.start, true);
   Playing playing(in, src);
   ipo::Channel channel(std::move(cfg), src, audit.get());
-  playing.attach(channel);
+  playing.attach(channel, in.port.get());
   ipo::TimeCounter counter(channel.t_cycle(), on_block);
   Progress progress(err);
   ipo::Status status;
@@ -555,7 +573,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
 
   Playing playing(in, src);
   ipo::Channel channel(std::move(cfg), src, &with_report);
-  playing.attach(channel);
+  playing.attach(channel, in.port.get());
   csv.set_axes(&channel.axes());
   if (recorder) recorder->set_axes(&channel.axes());  // --- report:
   csv.set_setpoints(&channel.setpoints());

@@ -268,6 +268,8 @@ bool Channel::play_cycle(Status& status) noexcept {
                   at, -1);
     return false;
   }
+  // MCV_SetReducedFilter from the PLC side (docs/conveyor.md "Filters").
+  if (port_ != nullptr) port_->set_reduced_filter(player_->reduced_filter());
   if (const auto reason = player_->stop()) {
     stopped_ = *reason;
     status = Status::finished;

@@ -158,6 +158,7 @@ class Channel {
   /// #SYNC OUT (null: none; #SYNC IN is then NC6001 `not supported`). Must outlive the channel.
   /// Ignored on a channel without conveyor tracking (no FCT_DLM).
   void attach_conveyor(conveyor::Port* port) noexcept {
+    port_ = port;
     if (sync_) sync_->attach(port);
   }
   /// The channel's conveyor tracking state; null without FCT_DLM.
@@ -265,8 +266,9 @@ class Channel {
   std::optional<JointStage> stage_;
   bool transformed_ = false;
   JointSetpoint joints_{};
-  std::optional<ConveyorSync> sync_;     ///< --- conveyor-sync: with FCT_DLM only
-  std::uint32_t sync_tag_ = 0;           ///< --- conveyor-sync: the event being executed
+  std::optional<ConveyorSync> sync_;  ///< --- conveyor-sync: with FCT_DLM only
+  conveyor::Port* port_ = nullptr;    ///< the attached conveyor world (reduced filter)
+  std::uint32_t sync_tag_ = 0;        ///< --- conveyor-sync: the event being executed
   /// --- conveyor-sync: where the path stands after a catch-up / departure until it moves.
   std::optional<AxisVec> sync_hold_;
 };
