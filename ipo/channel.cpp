@@ -179,17 +179,40 @@ bool Channel::exact_stop(const Cycle& c) noexcept {
   return true;
 }
 
-void Channel::note_block(const Cycle& c) noexcept {
-  // A block starts when the active block changes (motion) or a dwell begins. Granularity is the
-  // cycle: a block traversed entirely inside one cycle is not seen (docs/ipo.md "Scenario").
-  if (c.activity == Activity::motion && c.programmed != nullptr && c.programmed != block_) {
-    block_ = c.programmed;
-    started_ = c.programmed->line;
-  } else if (c.activity == Activity::dwell && !in_dwell_) {
-    block_ = nullptr;
-    started_ = c.line;
+// --- operator: block starts and scenario actions (docs/scenario.md "When events fire")
+
+void Channel::block_started(std::uint32_t line) noexcept {
+  player_->block_started(line);
+  for (const scenario::Action& a : player_->fire_lines()) {
+    if (failed_) break;
+    failed_ = act(a);
   }
-  in_dwell_ = c.activity == Activity::dwell;
+}
+
+std::optional<std::pair<const char*, std::string>> Channel::act(
+    const scenario::Action& a) noexcept {
+  if (std::holds_alternative<scenario::VeWrite>(a)) return std::nullopt;  // in player_->ve()
+  if (const auto* h = std::get_if<scenario::FeedHold>(&a)) {
+    ipo_.set_feed_hold(h->on);
+    return std::nullopt;
+  }
+  if (const auto* o = std::get_if<scenario::PathOverride>(&a)) {
+    const double max = max_override(ipo_.override_type());
+    if (o->fraction <= max) {
+      try {
+        ipo_.set_override(o->fraction);
+        return std::nullopt;
+      } catch (const std::invalid_argument&) {
+      }
+    }
+    return std::pair{kOverrideRangeId,
+                     text("scenario path override %.6g %% above %.6g %%, the largest of the "
+                          "channel's override type (NCSIM-CHAN-630)",
+                          o->fraction * 100.0, max * 100.0)};
+  }
+  return std::pair{kNotSupportedId,
+                   std::string("not supported: scenario axis override events (INDP axes are not "
+                               "in the channel loop yet)")};
 }
 
 bool Channel::play_cycle(Status& status) noexcept {
@@ -197,42 +220,16 @@ bool Channel::play_cycle(Status& status) noexcept {
     status = Status::finished;
     return false;
   }
-  if (started_) {
-    player_->block_started(*started_);
-    started_.reset();
-  }
   const Cycle& last = ipo_.cycle();
   const std::uint64_t k = last.index;
   const double t = static_cast<double>(k) * ipo_.t_cycle();
   for (const scenario::Action& a : player_->step(k, t)) {
-    if (std::holds_alternative<scenario::VeWrite>(a)) continue;  // in player_->ve() already
-    if (const auto* h = std::get_if<scenario::FeedHold>(&a)) {
-      ipo_.set_feed_hold(h->on);
-      continue;
-    }
-    Cycle at = last;
-    at.t = t;
-    if (const auto* o = std::get_if<scenario::PathOverride>(&a)) {
-      const double max = max_override(ipo_.override_type());
-      if (o->fraction <= max) {
-        try {
-          ipo_.set_override(o->fraction);
-          continue;
-        } catch (const std::invalid_argument&) {
-        }
-      }
-      status = stop(kOverrideRangeId,
-                    text("scenario path override %.6g %% above %.6g %%, the largest of the "
-                         "channel's override type (NCSIM-CHAN-630)",
-                         o->fraction * 100.0, max * 100.0),
-                    at, -1);
+    if (auto e = act(a)) {
+      Cycle at = last;
+      at.t = t;
+      status = stop(e->first, std::move(e->second), at, -1);
       return false;
     }
-    status = stop(kNotSupportedId,
-                  "not supported: scenario axis override events (INDP axes are not in the "
-                  "channel loop yet)",
-                  at, -1);
-    return false;
   }
   if (const auto reason = player_->stop()) {
     stopped_ = *reason;
@@ -255,7 +252,7 @@ Status Channel::step() noexcept {
     return s;
   }
   const Cycle& c = ipo_.cycle();
-  if (player_ != nullptr) note_block(c);
+  if (failed_) return stop(failed_->first, std::move(failed_->second), c, -1);  // --- operator
   if (!in_exact_stop_ && ipo_.holding_exact_stop()) {
     // The command reached the end of a G60 / G360 block in this cycle (001 l.149: t_1).
     in_exact_stop_ = true;
