@@ -175,3 +175,41 @@ TEST_CASE("a 4 ms cycle: every pass of a short block counts and events fire once
   CHECK(r.passes[4 - 1] == 200);
   CHECK(r.seen.back().x == doctest::Approx(10.0));
 }
+
+// The program writes V.E.SEL = 1 before it reads it in $IF (a barrier answered from the store).
+const char* const kOwnWrite =
+    "%v\n"                // 1
+    "N10 G01 X10 F600\n"  // 2: 1 s
+    "V.E.SEL = 1\n"       // 3
+    "$IF V.E.SEL == 1\n"  // 4
+    "N20 G01 Y20\n"       // 5
+    "$ELSE\n"             // 6
+    "N30 G01 Y5\n"        // 7
+    "$ENDIF\n"            // 8
+    "N40 M30\n";          // 9
+
+TEST_CASE("the program's own V.E. write reaches the store: a later barrier reads it") {
+  SUBCASE("with the flush (the scenario writes V.E. too)") {
+    const Run r = play(kOwnWrite, "[ve]\nSEL = 0\n[[event]]\nat = 5\nve = { OTHER = 1 }\n", 0);
+    CHECK(ran_line(r, 5));
+    CHECK_FALSE(ran_line(r, 7));
+    CHECK(r.ve.at("SEL") == 1.0);
+  }
+  SUBCASE("without the flush (no V.E. write events)") {
+    const Run r = play(kOwnWrite, "[ve]\nSEL = 0\n[[event]]\nat = 0.1\noverride = 50\n", 0);
+    CHECK(ran_line(r, 5));
+    CHECK_FALSE(ran_line(r, 7));
+  }
+  SUBCASE("a name the scenario never gave is in the store after the program wrote it") {
+    const Run r = play("%v\nN10 G01 X1 F600\nV.E.NEW = 4\nN20 M30\n",
+                       "[[event]]\nat = 0.05\noverride = 50\n", 0);
+    CHECK(r.ve.at("NEW") == 4.0);
+  }
+  SUBCASE("the write is performed when it is decoded: a PLC write at 0.5 s comes later") {
+    // Decision (docs/scenario.md): the look-ahead decoded line 3 at the start; the scenario's
+    // write at 0.5 s, before the barrier is answered at 1 s, is the later one.
+    const Run r = play(kOwnWrite, "[ve]\nSEL = 0\n[[event]]\nat = 0.5\nve = { SEL = 2 }\n", 0);
+    CHECK(ran_line(r, 7));
+    CHECK(r.ve.at("SEL") == 2.0);
+  }
+}
