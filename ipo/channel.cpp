@@ -253,6 +253,13 @@ Status Channel::step() noexcept {
   }
   const Cycle& c = ipo_.cycle();
   if (failed_) return stop(failed_->first, std::move(failed_->second), c, -1);  // --- operator
+  if (player_ != nullptr && c.held && !player_->more_to_come())  // --- operator: no endless hold
+    return stop(kHeldForeverId,
+                ipo_.feed_hold() ? "the path stands by feed hold and no later scenario event "
+                                   "releases it: the run would never end"
+                                 : "the path stands at override 0 and no later scenario event "
+                                   "raises it: the run would never end",
+                c, -1);
   if (!in_exact_stop_ && ipo_.holding_exact_stop()) {
     // The command reached the end of a G60 / G360 block in this cycle (001 l.149: t_1).
     in_exact_stop_ = true;

@@ -64,6 +64,10 @@ inline constexpr const char* kExactStopWaitId = "NC6101";
 /// (NCSIM-CHAN-630) accepts.
 inline constexpr const char* kOverrideRangeId = "NC6102";
 
+/// NC6301: the path stands by feed hold or override 0 and nothing in the scenario can release
+/// it (the run would never end). --- operator
+inline constexpr const char* kHeldForeverId = "NC6301";
+
 /// One interpolated axis as the channel drives it.
 struct ChannelAxis {
   std::string name;                     ///< axis name (messages)

@@ -75,6 +75,14 @@ class Player {
   /// before the next cycle).
   const std::vector<Action>& fire_lines();
 
+  /// True while a later step() may still fire something or end the run without a block
+  /// starting: a time event not yet due, a pending hold release, or a [stop] time / cycles.
+  /// False: a path standing by feed hold or override 0 stands forever (the channel's NC6301).
+  bool more_to_come() const {
+    return next_time_ < time_events_.size() || !releases_.empty() || scenario_.stop.time ||
+           scenario_.stop.cycles;
+  }
+
   /// Set by the step() that met a [stop] condition: the run ends before that cycle.
   std::optional<StopReason> stop() const { return stop_; }
   /// The world's V.E. values.

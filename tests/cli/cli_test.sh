@@ -112,6 +112,10 @@ expect "time --json names the stop" 0 '"stop":"stop\.time"' '' -- \
 expect "run closes the CSV with the stop reason" 0 '^# stop: stop\.time$' \
   'stopped by the scenario.*stop\.time at t=0\.25 s' -- \
   run "$fixtures/ve_branch.nc" --scenario "$fixtures/scenario_stop.toml" -o -
+printf '[ve]\nSEL = 0\n[[event]]\nat = 0.2\nfeed_hold = true\n' >"$work/hold_forever.toml"
+expect "a hold nothing releases ends the run with NC6301 instead of hanging, status 1" 1 \
+  '"stop":"error"' 'run-time error at t=0\.[0-9]+ s: the path stands by feed hold.*\[NC6301\]' -- \
+  time --json "$fixtures/ve_branch.nc" --scenario "$work/hold_forever.toml"
 # The stop reason, always (docs/scenario.md "[stop]"): time --json "stop", the CSV's last line.
 expect "time --json names the program end" 0 '"stop":"program end"\}$' '' -- \
   time --json "$fixtures/long_line.nc"
