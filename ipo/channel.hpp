@@ -28,6 +28,14 @@
 //      the wait ends with NC6101 after ChannelConfig::exact_stop_wait_max.
 //   5. The Sink sees the joints of the cycle and then the cycle, only when no run-time error
 //      was raised in it: a stopped run's stream ends with the last good cycle.
+//   1a. Channel events (ipo/channel_event.hpp, docs/ipo.md "Channel events"): the events due
+//      (Cycle::event_tag) are dispatched by kind (ipo/channel_events.cpp) after the
+//      interpolator's step; at a ChannelWait the interpolator asks the channel (on_wait) inside
+//      its step, and a wait whose events are not done holds the path (Activity::channel) until
+//      they are: a blocking event is dispatched again at the start of every cycle, and when it
+//      and the events after it up to the wait's tag are done, the path is released before the
+//      interpolator's step of that cycle. An event kind the channel cannot execute is run-time
+//      error NC6001 `not supported: ...` at the event's line.
 //   0. Under a scenario (play()), before 1: Player::step(k, t) with k the cycle's index and t
 //      its start time; its V.E. writes are in the store the ProgramSource answers barriers from; a
 //      [stop] condition met ends the run before the cycle (Status::finished, scenario_stop());
@@ -50,6 +58,7 @@
 
 #include "axes/control.hpp"
 #include "axes/monitor.hpp"
+#include "ipo/channel_event.hpp"
 #include "ipo/interpolator.hpp"
 #include "machines/machine.hpp"
 #include "scenario/player.hpp"
@@ -138,6 +147,30 @@ class Channel {
   const std::optional<scenario::StopReason>& scenario_stop() const noexcept { return stopped_; }
 
  private:
+  /// What executing a channel event gave (ipo/channel_events.cpp).
+  enum class EventOutcome : std::uint8_t {
+    done,      ///< executed; the next event may follow
+    blocking,  ///< not done yet: dispatched again next cycle, the path holds meanwhile
+    error,     ///< a run-time error was raised (error_)
+  };
+  /// Hands the interpolator's ChannelWait to the channel.
+  class WaitRelay final : public WaitHandler {
+   public:
+    explicit WaitRelay(Channel& channel) : channel_(channel) {}
+    bool on_wait(const ChannelWait& wait) noexcept override { return channel_.on_wait(wait); }
+
+   private:
+    Channel& channel_;
+  };
+  /// Executes one event by kind (ipo/channel_events.cpp: the one dispatch point).
+  EventOutcome dispatch(const ChannelEvent& event) noexcept;
+  /// Dispatches the blocked event and then the due events up to `up_to`; false when one
+  /// blocks (kept in blocked_) or raised an error.
+  bool run_events(std::uint32_t up_to) noexcept;
+  /// The path reached a ChannelWait: true when its events are all done (the path goes on).
+  bool on_wait(const ChannelWait& wait) noexcept;
+  /// Raises a run-time error at an event's line, at the time of the cycle being computed.
+  EventOutcome event_error(const char* id, std::string message, const ChannelEvent& e) noexcept;
   /// Passes the interpolator's joints on at once; cycles are passed on by step().
   class JointRelay final : public Sink {
    public:
@@ -184,7 +217,9 @@ class Channel {
   std::optional<std::pair<const char*, std::string>> act(const scenario::Action& a) noexcept;
 
   JointRelay relay_;
+  WaitRelay wait_relay_{*this};
   PathInterpolator ipo_;
+  Source& source_;
   Sink* sink_ = nullptr;
   std::vector<Axis> axes_;
   double exact_stop_wait_max_ = 60.0;
@@ -204,6 +239,10 @@ class Channel {
   std::optional<Status> ended_;  ///< the interpolator's stream ended so
   BlockRelay blocks_{*this};     ///< --- operator
   std::optional<std::pair<const char*, std::string>> failed_;  ///< an action's error, mid-cycle
+  // Channel events.
+  std::optional<ChannelEvent> blocked_;  ///< an event not done yet (EventOutcome::blocking)
+  std::uint32_t wait_tag_ = 0;           ///< tag of the ChannelWait the path holds at
+  ChannelEvent event_;                   ///< scratch: the event being taken
 };
 
 }  // namespace ncsim::ipo

@@ -191,7 +191,15 @@ void ProgramSource::answer(const interp::Barrier& barrier) {
   interp_.resume(state);
 }
 
+bool ProgramSource::take_event(std::uint32_t up_to, ChannelEvent& out) {
+  if (events_.empty() || events_.front().tag > up_to) return false;
+  out = std::move(events_.front());
+  events_.pop_front();
+  return true;
+}
+
 bool ProgramSource::pull(Item& out) {
+  if (end_reached_) return false;
   for (;;) {
     if (queue_size_ > 0) {  // spline pieces first: they come before the next command
       out = queue_[queue_head_];
@@ -218,6 +226,16 @@ bool ProgramSource::pull(Item& out) {
     line_ = cmd->line;
     const std::uint32_t line = cmd->line;
     file_ = cmd->file;
+    if (is_channel_event(cmd->body)) {
+      const bool stops = stops_path(cmd->body);
+      events_.push_back(ChannelEvent{++tag_, line, cmd->file, std::move(cmd->body)});
+      if (stops || tag_ - given_ >= kMaxPendingEvents) {
+        out = ChannelWait{line, tag_};
+        given_ = tag_;
+        return true;
+      }
+      continue;
+    }
     bool produced = false;
     bool ended = false;
     std::visit(
@@ -225,17 +243,18 @@ bool ProgramSource::pull(Item& out) {
           using T = std::decay_t<decltype(body)>;
           if constexpr (std::is_same_v<T, interp::Motion>) {
             out = to_move(body, line);
+            std::get<planner::Move>(out).event_tag = tag_;
+            given_ = tag_;
             produced = true;
           } else if constexpr (std::is_same_v<T, interp::Dwell>) {
-            out = Dwell{body.seconds, line};
+            out = Dwell{body.seconds, line, tag_};
+            given_ = tag_;
             produced = true;
           } else if constexpr (std::is_same_v<T, interp::End>) {
             ended = true;
-          } else if constexpr (std::is_same_v<T, interp::Tech> ||
-                               std::is_same_v<T, interp::Message> ||
+          } else if constexpr (std::is_same_v<T, interp::Message> ||
                                std::is_same_v<T, interp::ProgramStop> ||
-                               std::is_same_v<T, interp::Flush> ||
-                               std::is_same_v<T, interp::WaitIndp>) {
+                               std::is_same_v<T, interp::Flush>) {
             // pass: no motion (M00/M01 do not stop: there is no operator to press start)
           } else if constexpr (std::is_same_v<T, interp::Barrier>) {
             if (store_ == nullptr) {
@@ -259,16 +278,14 @@ bool ProgramSource::pull(Item& out) {
             spline_point(body, line);
           } else if constexpr (std::is_same_v<T, interp::SplineEnd>) {
             spline_end(line);
-          } else if constexpr (std::is_same_v<T, interp::AxisCommand>) {
-            fail(line, "independent axis move INDP (comes with the axis layer)");
-          } else if constexpr (std::is_same_v<T, interp::MoveVelocity>) {
-            fail(line, "MC_MoveVelocity (comes with the axis layer)");
-          } else if constexpr (std::is_same_v<T, interp::ProbeArm>) {
-            fail(line, "MC_TouchProbe (comes with the conveyor simulation)");
-          } else if constexpr (std::is_same_v<T, interp::SyncIn>) {
-            fail(line, "#SYNC IN (conveyor tracking comes with the channel loop)");
-          } else if constexpr (std::is_same_v<T, interp::SyncOut>) {
-            fail(line, "#SYNC OUT (conveyor tracking comes with the channel loop)");
+          } else if constexpr (std::is_same_v<T, interp::Tech> ||
+                               std::is_same_v<T, interp::WaitIndp> ||
+                               std::is_same_v<T, interp::AxisCommand> ||
+                               std::is_same_v<T, interp::MoveVelocity> ||
+                               std::is_same_v<T, interp::ProbeArm> ||
+                               std::is_same_v<T, interp::SyncIn> ||
+                               std::is_same_v<T, interp::SyncOut>) {
+            // channel events: queued above (is_channel_event), never here
           } else if constexpr (std::is_same_v<T, interp::MachineData>) {
             fail(line, "#MACHINE DATA (parameters are fixed for a run for now)");
           } else if constexpr (std::is_same_v<T, interp::Homing>) {
@@ -280,9 +297,34 @@ bool ProgramSource::pull(Item& out) {
           }
         },
         cmd->body);
-    if (ended) return false;
+    if (ended) {
+      if (tag_ == given_) return false;
+      // Events after the last motion: the channel executes them before the program ends.
+      end_reached_ = true;
+      out = ChannelWait{line, tag_};
+      given_ = tag_;
+      return true;
+    }
     if (produced) return true;
   }
+}
+
+bool is_channel_event(const interp::CommandBody& body) noexcept {
+  return std::holds_alternative<interp::Tech>(body) ||
+         std::holds_alternative<interp::WaitIndp>(body) ||
+         std::holds_alternative<interp::AxisCommand>(body) ||
+         std::holds_alternative<interp::MoveVelocity>(body) ||
+         std::holds_alternative<interp::ProbeArm>(body) ||
+         std::holds_alternative<interp::SyncIn>(body) ||
+         std::holds_alternative<interp::SyncOut>(body);
+}
+
+bool stops_path(const interp::CommandBody& body) noexcept {
+  if (const auto* a = std::get_if<interp::AxisCommand>(&body))
+    return a->kind == interp::IndpKind::syn;
+  return std::holds_alternative<interp::WaitIndp>(body) ||
+         std::holds_alternative<interp::SyncIn>(body) ||
+         std::holds_alternative<interp::SyncOut>(body);
 }
 
 }  // namespace ncsim::ipo

@@ -261,7 +261,7 @@ expect "time --audit passes on the long line" 0 '^audit: ok$' '' -- \
 expect "run --audit passes on the long line" 0 '' '^audit: ok$' -- \
   run --audit -o "$work/audit.csv" "$fixtures/long_line.nc"
 expect "an unsupported command answers not supported at its line, status 1" 1 '' \
-  'sync_in\.nc:4:1: error: not supported: #SYNC IN.*\[NC6001\]' -- \
+  'sync_in\.nc:4:1: error: run-time error at t=0 s: not supported: #SYNC IN.*\[NC6001\]' -- \
   time --machine "$root/machines/laser_portal" "$fixtures/sync_in.nc"
 expect "run stops at an unsupported command, status 1" 1 '' 'not supported: #SYNC IN' -- \
   run --machine "$root/machines/laser_portal" -o "$work/sync.csv" "$fixtures/sync_in.nc"
