@@ -310,10 +310,17 @@ void json_string(std::ostream& os, const std::string& s) {
   os << '"';
 }
 
+// Why a run ended (docs/scenario.md "[stop]"): an error, the scenario's [stop], or the end.
+std::string stop_reason(bool failed, const ipo::Channel& ch) {
+  if (failed) return std::string(scenario::to_string(scenario::StopReason::error));
+  if (const auto& s = ch.scenario_stop()) return std::string(scenario::to_string(*s));
+  return std::string(scenario::to_string(scenario::StopReason::program_end));
+}
+
 void json_split(std::ostream& os, const ipo::TimeSplit& s) {
   os << "{\"rapid\":" << num(s.rapid) << ",\"feed\":" << num(s.feed)
      << ",\"dwell\":" << num(s.dwell) << ",\"exact_stop\":" << num(s.exact_stop)
-     << ",\"waiting\":" << num(s.starved) << '}';
+     << ",\"waiting\":" << num(s.starved) << ",\"held\":" << num(s.held) << '}';
 }
 
 }  // namespace
@@ -335,7 +342,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
     if (options.blocks) out << ",\"blocks\":[";
   } else if (options.blocks) {
     out << "# line time_s distance_mm feed_programmed_mm_min feed_reached_mm_min rapid_s feed_s "
-           "dwell_s exact_stop_s waiting_s\n";
+           "dwell_s exact_stop_s waiting_s held_s lost_s\n";
   }
   const auto on_block = [&](const ipo::BlockTime& b) {
     if (!options.blocks) return;
@@ -343,14 +350,16 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
       out << (first_block ? "" : ",") << "{\"line\":" << b.line << ",\"time_s\":" << num(b.time)
           << ",\"distance_mm\":" << num(b.distance)
           << ",\"feed_programmed_mm_min\":" << num(b.feed_programmed * 60.0)
-          << ",\"feed_reached_mm_min\":" << num(b.feed_reached * 60.0) << ",\"split_s\":";
+          << ",\"feed_reached_mm_min\":" << num(b.feed_reached * 60.0)
+          << ",\"lost_s\":" << num(b.lost) << ",\"split_s\":";
       json_split(out, b.split);
       out << '}';
     } else {
       out << b.line << ' ' << num(b.time) << ' ' << num(b.distance) << ' '
           << num(b.feed_programmed * 60.0) << ' ' << num(b.feed_reached * 60.0) << ' '
           << num(b.split.rapid) << ' ' << num(b.split.feed) << ' ' << num(b.split.dwell) << ' '
-          << num(b.split.exact_stop) << ' ' << num(b.split.starved) << '\n';
+          << num(b.split.exact_stop) << ' ' << num(b.split.starved) << ' ' << num(b.split.held)
+          << ' ' << num(b.lost) << '\n';
     }
     first_block = false;
   };
@@ -365,6 +374,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
   Playing playing(in, src);
   ipo::Channel channel(std::move(cfg), src, audit.get());
   playing.attach(channel, in.port.get());
+  const bool channel_plays = playing.player != nullptr;
   ipo::TimeCounter counter(channel.t_cycle(), on_block);
   Progress progress(err);
   ipo::Status status;
@@ -391,19 +401,21 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
       json_string(out, first_line(error_text));
     }
     out << ",\"cycles\":" << r.cycles << ",\"total_s\":" << num(r.total)
-        << ",\"distance_mm\":" << num(r.distance) << ",\"split_s\":";
+        << ",\"distance_mm\":" << num(r.distance) << ",\"lost_s\":" << num(r.lost)
+        << ",\"split_s\":";
     json_split(out, r.split);
-    if (const auto& stop = channel.scenario_stop()) {
-      out << ",\"stop\":";
-      json_string(out, std::string(scenario::to_string(*stop)));
-    }
+    out << ",\"stop\":";
+    json_string(out, stop_reason(failed, channel));
     out << "}\n";
   } else {
     out << in.file.name() << ": " << (failed ? "stopped after " : "") << num(r.total) << " s ("
         << r.cycles << " cycles of " << num(in.t_cycle * 1e3) << " ms), path " << human(r.distance)
         << " mm; rapid " << human(r.split.rapid) << " s, feed " << human(r.split.feed)
         << " s, dwell " << human(r.split.dwell) << " s, exact stop " << human(r.split.exact_stop)
-        << " s, waiting " << human(r.split.starved) << " s\n";
+        << " s, waiting " << human(r.split.starved) << " s, held " << human(r.split.held) << " s";
+    // Under a scenario: the time lost to override and holds (docs/ipo.md "Time lost").
+    if (channel_plays) out << "; lost to override and holds " << human(r.lost) << " s";
+    out << '\n';
     if (const auto& stop = channel.scenario_stop())
       out << "stop: " << scenario::to_string(*stop) << " (scenario '" << in.scenario->file
           << "') at " << num(r.total) << " s\n";
@@ -585,15 +597,19 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   }
   progress.finish();
   std::string error_text;
-  if (s == ipo::Status::error ||
-      (s == ipo::Status::finished && src.error() != nullptr && !channel.scenario_stop())) {
+  const bool failed =
+      s == ipo::Status::error ||
+      (s == ipo::Status::finished && src.error() != nullptr && !channel.scenario_stop());
+  if (failed) {
     error_text = failure_text(in, interp, src, channel);
     csv.text("# error: " + first_line(error_text) + "\n");
   } else if (const auto& stop = channel.scenario_stop()) {
-    csv.text("# stop: " + std::string(scenario::to_string(*stop)) + "\n");
     err << "ncsim: run stopped by the scenario ('" << in.scenario->file
         << "'): " << scenario::to_string(*stop) << " at t=" << num(channel.cycle().t) << " s\n";
   }
+  // The closing comment: why the run ended (program end, error, stop.time, ...), when it did
+  // (not after a write error, which ends the loop early).
+  if (s != ipo::Status::running) csv.text("# stop: " + stop_reason(failed, channel) + "\n");
   csv.flush();
   if (f != nullptr && !csv.failed() && std::fflush(f) != 0) csv.set_failed(errno);
   if (f != nullptr && !to_stdout && std::fclose(f) != 0 && !csv.failed()) csv.set_failed(errno);

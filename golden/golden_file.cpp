@@ -10,41 +10,17 @@
 #include <string_view>
 
 #include "golden/golden.hpp"
+#include "golden/text.hpp"
 
 namespace ncsim::golden {
 namespace {
 
 constexpr int kFormatVersion = 1;
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r'))
-    s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
-    s.remove_suffix(1);
-  return s;
-}
-
-std::vector<std::string_view> words(std::string_view s) {
-  std::vector<std::string_view> out;
-  while (true) {
-    s = trim(s);
-    if (s.empty()) return out;
-    const std::size_t sp = s.find_first_of(" \t");
-    out.push_back(s.substr(0, sp));
-    if (sp == std::string_view::npos) return out;
-    s.remove_prefix(sp);
-  }
-}
-
-bool parse_double(std::string_view s, double& v) {
-  const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
-  return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(v);
-}
-
-bool parse_u64(std::string_view s, std::uint64_t& v) {
-  const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
-  return r.ec == std::errc() && r.ptr == s.data() + s.size();
-}
+using text::parse_double;
+using text::parse_u64;
+using text::trim;
+using text::words;
 
 // A value rounded to 1e-6 of its unit, without trailing zeros; never "-0".
 std::string value_text(double v) {

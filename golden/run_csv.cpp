@@ -5,27 +5,14 @@
 #include <string_view>
 
 #include "golden/golden.hpp"
+#include "golden/text.hpp"
 
 namespace ncsim::golden {
 namespace {
 
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r'))
-    s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
-    s.remove_suffix(1);
-  return s;
-}
-
-bool parse_double(std::string_view s, double& v) {
-  const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
-  return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(v);
-}
-
-bool parse_u64(std::string_view s, std::uint64_t& v) {
-  const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
-  return r.ec == std::errc() && r.ptr == s.data() + s.size();
-}
+using text::parse_double;
+using text::parse_u64;
+using text::trim;
 
 [[noreturn]] void fail(std::uint64_t line, const std::string& what) {
   throw std::runtime_error("run CSV line " + std::to_string(line) + ": " + what);

@@ -818,6 +818,15 @@ std::optional<Command> Interpreter::next() {
   return std::nullopt;
 }
 
+// --- operator
+void Interpreter::record_ve_writes(bool on) {
+  impl_->vars.record_ve_writes(on);
+}
+
+std::map<std::string, double> Interpreter::take_ve_writes() {
+  return impl_->vars.take_ve_writes();
+}
+
 std::optional<std::uint32_t> Interpreter::endless_from() const {
   return impl_->endless_from;
 }

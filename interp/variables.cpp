@@ -93,6 +93,13 @@ Variables::Variables(PersistentVariables* persistent, std::map<std::string, doub
   locals_.emplace_back();
 }
 
+// --- operator: the program's own V.E. writes (docs/scenario.md "The program's V.E. writes")
+void Variables::note_ve_write(const VarRef& ref) {
+  if (!record_ve_ || ref.cls != VarClass::v_e || ref.index_count != 0) return;
+  VarError err;
+  if (const auto v = read(ref, err)) ve_written_[ref.name] = *v;
+}
+
 Variables::Map* Variables::map_for(VarClass cls) {
   switch (cls) {
     case VarClass::v_p:

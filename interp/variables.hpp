@@ -17,6 +17,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "grammar/ast.hpp"
@@ -95,6 +96,16 @@ class Variables {
 
   std::size_t p_count() const { return p_values_.size(); }
 
+  // --- operator: the program's own V.E. writes for the run time's shared store
+  // (docs/scenario.md "The program's V.E. writes").
+  /// Starts (or stops) recording the program's scalar V.E. writes; off by default.
+  void record_ve_writes(bool on) { record_ve_ = on; }
+  /// A program assignment wrote `ref`: recorded (its stored value, the last per name) when on.
+  void note_ve_write(const VarRef& ref);
+  /// The recorded writes since the last call, by name; clears them. Bounded by the number of
+  /// V.E. names the program writes.
+  std::map<std::string, double> take_ve_writes() { return std::exchange(ve_written_, {}); }
+
   /// A 64-bit hash of every value, name, type, scope and macro the store holds (equal stores
   /// give equal hashes; the order maps are iterated in does not matter). `visited` is set to
   /// the number of values hashed, the cost of the call.
@@ -115,6 +126,8 @@ class Variables {
   PersistentVariables* persistent_;
   std::vector<Map> locals_;  // one per program level; back() is the current one
   std::map<std::string, std::string, std::less<>> macros_;
+  bool record_ve_ = false;                    // --- operator
+  std::map<std::string, double> ve_written_;  // --- operator
 };
 
 }  // namespace ncsim::interp

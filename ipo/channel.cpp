@@ -213,17 +213,40 @@ bool Channel::exact_stop(const Cycle& c) noexcept {
   return true;
 }
 
-void Channel::note_block(const Cycle& c) noexcept {
-  // A block starts when the active block changes (motion) or a dwell begins. Granularity is the
-  // cycle: a block traversed entirely inside one cycle is not seen (docs/ipo.md "Scenario").
-  if (c.activity == Activity::motion && c.programmed != nullptr && c.programmed != block_) {
-    block_ = c.programmed;
-    started_ = c.programmed->line;
-  } else if (c.activity == Activity::dwell && !in_dwell_) {
-    block_ = nullptr;
-    started_ = c.line;
+// --- operator: block starts and scenario actions (docs/scenario.md "When events fire")
+
+void Channel::block_started(std::uint32_t line) noexcept {
+  player_->block_started(line);
+  for (const scenario::Action& a : player_->fire_lines()) {
+    if (failed_) break;
+    failed_ = act(a);
   }
-  in_dwell_ = c.activity == Activity::dwell;
+}
+
+std::optional<std::pair<const char*, std::string>> Channel::act(
+    const scenario::Action& a) noexcept {
+  if (std::holds_alternative<scenario::VeWrite>(a)) return std::nullopt;  // in player_->ve()
+  if (const auto* h = std::get_if<scenario::FeedHold>(&a)) {
+    ipo_.set_feed_hold(h->on);
+    return std::nullopt;
+  }
+  if (const auto* o = std::get_if<scenario::PathOverride>(&a)) {
+    const double max = max_override(ipo_.override_type());
+    if (o->fraction <= max) {
+      try {
+        ipo_.set_override(o->fraction);
+        return std::nullopt;
+      } catch (const std::invalid_argument&) {
+      }
+    }
+    return std::pair{kOverrideRangeId,
+                     text("scenario path override %.6g %% above %.6g %%, the largest of the "
+                          "channel's override type (NCSIM-CHAN-630)",
+                          o->fraction * 100.0, max * 100.0)};
+  }
+  return std::pair{kNotSupportedId,
+                   std::string("not supported: scenario axis override events (INDP axes are not "
+                               "in the channel loop yet)")};
 }
 
 bool Channel::play_cycle(Status& status) noexcept {
@@ -231,42 +254,16 @@ bool Channel::play_cycle(Status& status) noexcept {
     status = Status::finished;
     return false;
   }
-  if (started_) {
-    player_->block_started(*started_);
-    started_.reset();
-  }
   const Cycle& last = ipo_.cycle();
   const std::uint64_t k = last.index;
   const double t = static_cast<double>(k) * ipo_.t_cycle();
   for (const scenario::Action& a : player_->step(k, t)) {
-    if (std::holds_alternative<scenario::VeWrite>(a)) continue;  // in player_->ve() already
-    if (const auto* h = std::get_if<scenario::FeedHold>(&a)) {
-      ipo_.set_feed_hold(h->on);
-      continue;
-    }
-    Cycle at = last;
-    at.t = t;
-    if (const auto* o = std::get_if<scenario::PathOverride>(&a)) {
-      const double max = max_override(ipo_.override_type());
-      if (o->fraction <= max) {
-        try {
-          ipo_.set_override(o->fraction);
-          continue;
-        } catch (const std::invalid_argument&) {
-        }
-      }
-      status = stop(kOverrideRangeId,
-                    text("scenario path override %.6g %% above %.6g %%, the largest of the "
-                         "channel's override type (NCSIM-CHAN-630)",
-                         o->fraction * 100.0, max * 100.0),
-                    at, -1);
+    if (auto e = act(a)) {
+      Cycle at = last;
+      at.t = t;
+      status = stop(e->first, std::move(e->second), at, -1);
       return false;
     }
-    status = stop(kNotSupportedId,
-                  "not supported: scenario axis override events (INDP axes are not in the "
-                  "channel loop yet)",
-                  at, -1);
-    return false;
   }
   // MCV_SetReducedFilter from the PLC side (docs/conveyor.md "Filters").
   if (port_ != nullptr) port_->set_reduced_filter(player_->reduced_filter());
@@ -304,10 +301,17 @@ Status Channel::step() noexcept {
     return s;
   }
   const Cycle& c = ipo_.cycle();
+  if (failed_) return stop(failed_->first, std::move(failed_->second), c, -1);  // --- operator
+  if (player_ != nullptr && c.held && !player_->more_to_come())  // --- operator: no endless hold
+    return stop(kHeldForeverId,
+                ipo_.feed_hold() ? "the path stands by feed hold and no later scenario event "
+                                   "releases it: the run would never end"
+                                 : "the path stands at override 0 and no later scenario event "
+                                   "raises it: the run would never end",
+                c, -1);
   // Events riding on the blocks started in this cycle.
   if (!blocked_) run_events(c.event_tag);
   if (error_) return Status::error;
-  if (player_ != nullptr) note_block(c);
   // --- conveyor-sync: the conveyor world's cycle (latch, 50653, the Port's errors).
   if (sync_) {
     if (auto e = sync_->step(c.t)) return stop(e->id.c_str(), std::move(e->message), c, -1);

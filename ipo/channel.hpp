@@ -39,13 +39,15 @@
 //      and the events after it up to the wait's tag are done, the path is released before the
 //      interpolator's step of that cycle. An event kind the channel cannot execute is run-time
 //      error NC6001 `not supported: ...` at the event's line.
-//   0. Under a scenario (play()), before 1: the blocks that started in the previous cycle go
-//      to Player::block_started, then Player::step(k, t) with k the cycle's index and t its
-//      start time; its V.E. writes are in the store the ProgramSource answers barriers from; a
+//   0. Under a scenario (play()), before 1: Player::step(k, t) with k the cycle's index and t
+//      its start time; its V.E. writes are in the store the ProgramSource answers barriers from; a
 //      [stop] condition met ends the run before the cycle (Status::finished, scenario_stop());
 //      path override and feed hold go to PathInterpolator::set_override / set_feed_hold (an
 //      override above the type's largest is run-time error NC6102); an axis override (INDP
 //      axes are not in the channel yet) stops with NC6001 `not supported: ...`, never ignored.
+//      During 1, every block that starts (also several in one cycle: the interpolator's
+//      BlockObserver) goes to Player::block_started and its `line` events fire at once
+//      (Player::fire_lines): they belong to the cycle in which the block starts.
 // Invariants: step() never throws (an error ends the stream with Status::error); it is
 // deterministic (encoder noise is seeded per axis); memory is the interpolator's (bounded by
 // the look-ahead window) plus one control model and one monitor per axis.
@@ -54,6 +56,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "axes/control.hpp"
@@ -74,6 +77,10 @@ inline constexpr const char* kExactStopWaitId = "NC6101";
 /// NC6102: a scenario's path override is above the largest the channel's override type
 /// (NCSIM-CHAN-630) accepts.
 inline constexpr const char* kOverrideRangeId = "NC6102";
+
+/// NC6301: the path stands by feed hold or override 0 and nothing in the scenario can release
+/// it (the run would never end). --- operator
+inline constexpr const char* kHeldForeverId = "NC6301";
 
 /// One interpolated axis as the channel drives it.
 struct ChannelAxis {
@@ -140,7 +147,10 @@ class Channel {
   /// Plays `player`'s scenario from the next cycle on (step 0); null: none. `player` must
   /// outlive the channel. The ProgramSource's barriers read player->ve() (the caller wires it:
   /// ProgramSource::answer_barriers_from).
-  void play(scenario::Player* player) noexcept { player_ = player; }
+  void play(scenario::Player* player) noexcept {
+    player_ = player;
+    ipo_.observe_blocks(player != nullptr ? &blocks_ : nullptr);  // --- operator
+  }
   /// The [stop] condition that ended the run, if one did (step() then returned finished).
   const std::optional<scenario::StopReason>& scenario_stop() const noexcept { return stopped_; }
 
@@ -228,11 +238,25 @@ class Channel {
   Status stop(const char* id, std::string message, const Cycle& c, int axis) noexcept;
   /// Step 0: the scenario's cycle; false when the run ends before it (stop or error).
   bool play_cycle(Status& status) noexcept;
-  /// After a cycle: note the block that started in it for the player.
-  void note_block(const Cycle& c) noexcept;
   // --- conveyor-sync (ipo/channel_conveyor.cpp)
   /// The conveyor workspace on the cycle's MCS setpoints while synchronised; false: stopped.
   bool sync_check_workspace(const Cycle& c) noexcept;
+  // --- operator: block starts and the actions of scenario events
+  /// Passes the interpolator's block starts to the channel's player.
+  class BlockRelay final : public BlockObserver {
+   public:
+    explicit BlockRelay(Channel& channel) : channel_(channel) {}
+    void on_block_started(std::uint32_t line) noexcept override { channel_.block_started(line); }
+
+   private:
+    Channel& channel_;
+  };
+  /// A block starts inside the cycle being computed: the player counts it and fires its
+  /// `line` events now; an action's run-time error waits in failed_ for the cycle's end.
+  void block_started(std::uint32_t line) noexcept;
+  /// Applies one scenario action to the interpolator; the run-time error (id, text) it
+  /// raises, if any.
+  std::optional<std::pair<const char*, std::string>> act(const scenario::Action& a) noexcept;
 
   JointRelay relay_;
   WaitRelay wait_relay_{*this};
@@ -254,10 +278,9 @@ class Channel {
   // Scenario (step 0).
   scenario::Player* player_ = nullptr;
   std::optional<scenario::StopReason> stopped_;
-  const planner::Move* block_ = nullptr;  ///< the active block of the last cycle
-  bool in_dwell_ = false;                 ///< the last cycle was a dwell
-  std::optional<std::uint32_t> started_;  ///< line of a block started in the last cycle
-  std::optional<Status> ended_;           ///< the interpolator's stream ended so
+  std::optional<Status> ended_;  ///< the interpolator's stream ended so
+  BlockRelay blocks_{*this};     ///< --- operator
+  std::optional<std::pair<const char*, std::string>> failed_;  ///< an action's error, mid-cycle
   // Channel events.
   std::optional<ChannelEvent> blocked_;  ///< an event not done yet (EventOutcome::blocking)
   std::uint32_t wait_tag_ = 0;           ///< tag of the ChannelWait the path holds at

@@ -164,6 +164,7 @@ void PathInterpolator::begin(planner::PlannedSegment&& next) noexcept {
   const std::uint32_t token = cur_.segment.path.line_at(0.0);
   oldest_ =
       next_token_ - static_cast<std::uint32_t>(static_cast<std::uint32_t>(next_token_) - token);
+  if (observer_ != nullptr) report_starts_to(token);  // --- operator
 }
 
 void PathInterpolator::sample(double distance) noexcept {
@@ -186,6 +187,7 @@ void PathInterpolator::sample(double distance) noexcept {
   c.distance = distance;
   c.interval_jerk_limited = interval_jerk_limited_;
   c.programmed = &prog;
+  if (observer_ != nullptr && path.parts() > 1) report_part_starts(s_from, ps.s);  // --- operator
   c.event_tag = std::max(c.event_tag, prog.event_tag);
   if (detail_ != Detail::axes) return;
   if (sink_ && path.parts() > 1) report_inner_joints(s_from, ps.s);
@@ -313,6 +315,9 @@ Status PathInterpolator::step() noexcept {
       wait_left_ = cycles_for(dwell_->seconds);
       wait_kind_ = Activity::dwell;
       wait_line_ = dwell_->line;
+      // --- operator: a G04 starts (a 0 s dwell is the source's flush before a barrier, or
+      // takes no cycle: not reported).
+      if (observer_ != nullptr && wait_left_ > 0) observer_->on_block_started(wait_line_);
       c.event_tag = std::max(c.event_tag, dwell_->event_tag);
       dwell_.reset();
       continue;
@@ -367,6 +372,8 @@ Status PathInterpolator::step() noexcept {
     // Knees between the last sample and the end of a chain are passed in this cycle too.
     if (sink_ && detail_ == Detail::axes && cur_.segment.path.parts() > 1)
       report_inner_joints(s_prev_, length);
+    if (observer_ != nullptr && cur_.segment.path.parts() > 1)  // --- operator
+      report_part_starts(s_prev_, length);
     s_prev_ = length;
     v_arrive_ = on_plan_ ? cur_.v_exit : plan_.v_exit();
     if (cur_.segment.stop == planner::StopReason::exact_stop) {
@@ -423,6 +430,27 @@ Status PathInterpolator::step() noexcept {
   c.t = static_cast<double>(c.index) * t_;
   if (sink_) sink_->on_cycle(c);
   return Status::running;
+}
+
+// --- operator: block starts (docs/ipo.md "Block starts")
+
+void PathInterpolator::report_starts_to(std::uint32_t token) noexcept {
+  // Tokens count the ring's Moves in order; the ring still holds every token from the last
+  // reported one on (fill() reuses only slots below oldest_, which is at most the active one).
+  const std::uint64_t full =
+      next_token_ - static_cast<std::uint32_t>(static_cast<std::uint32_t>(next_token_) - token);
+  for (; reported_ <= full; ++reported_)
+    observer_->on_block_started(ring_[reported_ & ring_mask_].line);
+}
+
+void PathInterpolator::report_part_starts(double s_from, double s_to) noexcept {
+  // Part k + 1 starts at the end of part k (Chain::at: an inner joint belongs to the later
+  // part); parts of one block (a blend carries its incoming block's token) are reported once.
+  const planner::Chain& path = cur_.segment.path;
+  for (std::size_t k = 0; k + 1 < path.parts(); ++k) {
+    const double e = path.part_end(k);
+    if (e > s_from && e <= s_to) report_starts_to(path.part_line(k + 1));
+  }
 }
 
 // --- override additions (docs/ipo.md "Override and feed hold")

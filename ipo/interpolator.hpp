@@ -191,6 +191,17 @@ enum class Status : std::uint8_t {
   error,     ///< the source failed or gave a malformed Move; message() says why
 };
 
+// --- operator: every block start (issue 13, docs/ipo.md "Block starts")
+/// Told of every block that starts executing, in execution order, inside the step() of the
+/// cycle in which it starts (also when several start in one cycle).
+class BlockObserver {
+ public:
+  virtual ~BlockObserver() = default;
+  /// A programmed Move (at its first path point) or a G04 dwell (> 0 s) of source line `line`.
+  virtual void on_block_started(std::uint32_t line) noexcept = 0;
+};
+// --- operator: end
+
 class PathInterpolator {
  public:
   /// Throws std::invalid_argument (value and parameter named) on unusable limits, window,
@@ -234,6 +245,8 @@ class PathInterpolator {
   double override_factor() const noexcept { return override_; }  ///< set factor [1]
   bool feed_hold() const noexcept { return hold_; }
   OverrideType override_type() const noexcept { return override_type_; }
+  // --- operator: block starts (null: none); `observer` must outlive the interpolator.
+  void observe_blocks(BlockObserver* observer) noexcept { observer_ = observer; }
 
  private:
   struct PendingDwell {
@@ -323,6 +336,13 @@ class PathInterpolator {
   RaisedLimits raised_;        ///< cur_'s limits above 100 %
   double t100_prev_ = 0.0;     ///< 100 % profile time at s_prev_ [s]
   double lost_ = 0.0;          ///< time lost in the cycle being done [s]
+  // --- operator: block starts
+  /// Reports the Moves up to ring token `token` (low 32 bits) not reported yet.
+  void report_starts_to(std::uint32_t token) noexcept;
+  /// Reports the parts of cur_'s chain starting in (s_from, s_to].
+  void report_part_starts(double s_from, double s_to) noexcept;
+  BlockObserver* observer_ = nullptr;
+  std::uint64_t reported_ = 0;  ///< tokens below this one were reported started
   Cycle cycle_;
   std::string message_;
 };

@@ -216,6 +216,11 @@ bool ProgramSource::pull(Item& out) {
     }
     std::optional<interp::Command> cmd =
         store_ != nullptr ? interp_.next() : interp_.next_decode_only();
+    // --- operator: the program's V.E. assignments decoded so far reach the shared store
+    // before any barrier after them is answered.
+    if (store_ != nullptr)
+      for (const auto& [name, value] : interp_.take_ve_writes())
+        store_->write(name, value);
     if (!cmd) {
       if (const core::Diagnostic* e = interp_.error()) error_ = *e;
       return false;

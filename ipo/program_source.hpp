@@ -79,9 +79,12 @@ class ProgramSource final : public Source {
   /// Barriers that want V.E. values are answered from `store` (must outlive the source; null:
   /// the decode-only state again). `flush`: the path stops before each such barrier (a 0 s
   /// Dwell is handed out first), so a value written while the blocks before it ran reaches it.
-  void answer_barriers_from(const scenario::VeStore* store, bool flush) {
+  /// The program's own V.E. assignments are written into `store` as they are decoded
+  /// (docs/scenario.md "The program's V.E. writes").
+  void answer_barriers_from(scenario::VeStore* store, bool flush) {
     store_ = store;
     flush_ = flush;
+    interp_.record_ve_writes(store != nullptr);  // --- operator
   }
 
  private:
@@ -132,7 +135,7 @@ class ProgramSource final : public Source {
   std::size_t queue_head_ = 0;
   std::size_t queue_size_ = 0;
   // Run-time barrier answers (answer_barriers_from).
-  const scenario::VeStore* store_ = nullptr;
+  scenario::VeStore* store_ = nullptr;
   bool flush_ = false;
   std::optional<interp::Barrier> open_;  ///< a barrier waiting for the flush's Dwell to pass
   // Channel events (ipo/channel_event.hpp).

@@ -134,6 +134,19 @@ const std::vector<Action>& Player::step(std::uint64_t cycle, double t) {
   return due_;
 }
 
+const std::vector<Action>& Player::fire_lines() {
+  due_.clear();
+  if (stop_ || pass_stop_pending_) {
+    line_due_.clear();
+    return due_;
+  }
+  std::sort(line_due_.begin(), line_due_.end());
+  for (const std::size_t i : line_due_)
+    fire(scenario_.events[i], last_t_);
+  line_due_.clear();
+  return due_;
+}
+
 double Player::axis_override(std::string_view axis) const {
   const auto it = axis_override_.find(axis);
   return it == axis_override_.end() ? 1.0 : it->second;

@@ -67,10 +67,28 @@ class Player {
   /// among them are already in ve(), overrides and feed hold already in the state below.
   const std::vector<Action>& step(std::uint64_t cycle, double t);
 
+  /// Fires now, at the time of the last step(), the `line` events whose pass a block_started()
+  /// since the last step() or fire_lines() began: the channel calls it right after
+  /// block_started() inside the cycle in which the block starts (docs/scenario.md "When events
+  /// fire"). Returns their actions, in order (valid until the next call), applied as step()'s
+  /// are; nothing once a [stop] is met or the stop line's last pass has ended (the run ends
+  /// before the next cycle).
+  const std::vector<Action>& fire_lines();
+
+  /// True while a later step() may still fire something or end the run without a block
+  /// starting: a time event not yet due, a pending hold release, or a [stop] time / cycles.
+  /// False: a path standing by feed hold or override 0 stands forever (the channel's NC6301).
+  bool more_to_come() const {
+    return next_time_ < time_events_.size() || !releases_.empty() || scenario_.stop.time ||
+           scenario_.stop.cycles;
+  }
+
   /// Set by the step() that met a [stop] condition: the run ends before that cycle.
   std::optional<StopReason> stop() const { return stop_; }
   /// The world's V.E. values.
   const VeStore& ve() const { return ve_; }
+  /// The same store, writable: the program's own V.E. writes go in too (ProgramSource).
+  VeStore& ve() { return ve_; }
   /// Path override in force [-] (1.0 = 100 %).
   double path_override() const { return path_override_; }
   /// Override in force for INDP axis `axis` [-]; 1.0 when no event set one.

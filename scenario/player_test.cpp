@@ -86,6 +86,28 @@ TEST_CASE("a block too short for a cycle still counts its pass") {
   CHECK(texts(p.step(0, 0.0)) == "ovr 0.200000");
 }
 
+TEST_CASE("fire_lines fires a line event inside the cycle its block starts, at that time") {
+  const Scenario s = load(
+      "[[event]]\nline = 3\npass = 2\nfeed_hold = true\nduration = 0.002\n"
+      "[[event]]\nline = 3\npass = 2\nve = { A = 1 }\n"
+      "[stop]\nline = 4\npasses = 1\n");
+  Player p(s);
+  CHECK(p.step(0, 0.0).empty());
+  p.block_started(3);
+  CHECK(p.fire_lines().empty());  // pass 1: no event
+  CHECK(p.step(1, kCycle).empty());
+  p.block_started(3);
+  CHECK(texts(p.fire_lines()) == "hold; ve A=1.000000");  // in cycle 1, not at step(2)
+  CHECK(p.ve().read("A") == 1.0);
+  CHECK(p.step(2, 2 * kCycle).empty());              // fired once
+  CHECK(texts(p.step(3, 3 * kCycle)) == "release");  // 0.002 s after cycle 1's time
+  p.block_started(4);
+  p.block_started(3);  // the stop line's pass ended: the run ends before the next cycle
+  CHECK(p.fire_lines().empty());
+  CHECK(p.step(4, 4 * kCycle).empty());
+  CHECK(p.stop() == StopReason::line_passes);
+}
+
 TEST_CASE("events due in one cycle fire in file order, releases first") {
   const Scenario s = load(R"(
 [[event]]

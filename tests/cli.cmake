@@ -2,3 +2,8 @@
 add_test(NAME cli_tests
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/cli_test.sh $<TARGET_FILE:ncsim>
                  ${CMAKE_CURRENT_SOURCE_DIR}/cli)
+# Seeded random override / feed-hold scenarios over random programs (issue 13): audit clean,
+# the program completes, time equals run, reruns identical (tests/cli/random_scenarios.sh).
+add_test(NAME cli_random_scenarios
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/random_scenarios.sh $<TARGET_FILE:ncsim>
+                 ${PROJECT_SOURCE_DIR} 12 13)

@@ -8,27 +8,8 @@ trap 'rm -rf "$work"' EXIT
 failures=0
 checks=0
 
-# expect NAME STATUS PATTERN_STDOUT PATTERN_STDERR -- ARGS...: runs ncsim, compares the exit
-# status, and greps stdout/stderr for extended regular expressions ('' = no requirement).
-expect() {
-  local name=$1 want=$2 out_re=$3 err_re=$4
-  shift 5
-  checks=$((checks + 1))
-  "$ncsim" "$@" >"$work/out" 2>"$work/err" </dev/null
-  local got=$?
-  local ok=1
-  [[ $got -eq $want ]] || ok=0
-  if [[ -n $out_re ]] && ! grep -Eq -- "$out_re" "$work/out"; then ok=0; fi
-  if [[ -n $err_re ]] && ! grep -Eq -- "$err_re" "$work/err"; then ok=0; fi
-  if ((ok)); then
-    echo "ok   $name"
-  else
-    failures=$((failures + 1))
-    echo "FAIL $name: exit $got (want $want)"
-    sed 's/^/  stdout: /' "$work/out"
-    sed 's/^/  stderr: /' "$work/err"
-  fi
-}
+# expect, same: tests/cli/expect.sh.
+source "$(dirname "${BASH_SOURCE[0]}")/expect.sh"
 
 expect "a clean program checks with status 0" 0 'clean\.nc: ok' '' -- check "$fixtures/clean.nc"
 expect "every error is reported, status 1" 1 '' 'two_errors\.nc: 2 errors' -- \
@@ -85,6 +66,37 @@ expect "an override above 100 % under type REDUCED is refused with its position,
 printf '[ve]\nSEL = 0\n[[event]]\nat = 0.2\nfeed_hold = true\nduration = 0.5\n' >"$work/hold.toml"
 expect "a 0.5 s feed hold makes the run (1.507 s) 0.5 s longer" 0 've_branch\.nc: 2\.007 s' '' -- \
   time "$fixtures/ve_branch.nc" --scenario "$work/hold.toml"
+# time --blocks under a scenario: the held time and the time lost to override and holds, per
+# block and in the total (docs/ipo.md "Time lost"). The 0.5 s hold falls in line 2 (X10 at
+# 10 mm/s takes 1 s): line 2 stands for the hold less its ramp down and loses 0.5 s (the
+# ramps down and up too).
+checks=$((checks + 1))
+"$ncsim" time --blocks "$fixtures/ve_branch.nc" --scenario "$work/hold.toml" >"$work/hb" 2>&1
+"$ncsim" time --blocks --json "$fixtures/ve_branch.nc" --scenario "$work/hold.toml" >"$work/hj" 2>&1
+held2=$(awk '$1 == 2 { print $11 }' "$work/hb")
+lost2=$(awk '$1 == 2 { print $12 }' "$work/hb")
+held_sum=$(awk '!/^#/ && NF == 12 { s += $11 } END { print s }' "$work/hb")
+lost_sum=$(awk '!/^#/ && NF == 12 { s += $12 } END { printf "%.9f", s }' "$work/hb")
+lost_total=$(sed -E 's/.*"total_s":[^,]+,"distance_mm":[^,]+,"lost_s":([^,]+),.*/\1/' "$work/hj")
+if grep -q '^# line .* waiting_s held_s lost_s$' "$work/hb" &&
+  [[ $held_sum == "$held2" ]] &&
+  awk -v h="$held2" -v l="$lost2" 'BEGIN { exit !(h > 0.4 && h <= 0.5 && l >= 0.5 && l < 0.6) }' &&
+  awk -v a="$lost_sum" -v b="$lost_total" 'BEGIN { d = a - b; exit !(d < 1e-9 && d > -1e-9) }' &&
+  grep -q "\"held\":$held2}" "$work/hj" &&
+  grep -Eq 'held 0\.4[0-9]* s; lost to override and holds 0\.5[0-9]* s$' \
+    <("$ncsim" time "$fixtures/ve_branch.nc" --scenario "$work/hold.toml"); then
+  echo "ok   time --blocks under a scenario: held and lost per block and in the total"
+else
+  failures=$((failures + 1))
+  echo "FAIL time --blocks held / lost: held $held2 (sum $held_sum), lost $lost2 (sum $lost_sum, total $lost_total)"
+  cat "$work/hb" "$work/hj"
+fi
+printf '[ve]\nOFFSET = 7.5\n[[event]]\nat = 0.1\noverride = 50\n' >"$work/half.toml"
+expect "an override of 50 % from 0.1 s loses time, none held" 0 \
+  'held 0 s; lost to override and holds 0\.[0-9]+ s$' '' -- \
+  time "$fixtures/external.nc" --scenario "$work/half.toml"
+expect "without a scenario time prints no lost time" 0 'held 0 s$' '' -- \
+  time "$fixtures/long_line.nc"
 # The channel plays V.E. writes and [stop] (docs/scenario.md "Wiring into the channel loop").
 expect "a V.E. write at 0.5 s reaches the \$IF after the move: the Y20 branch (line 4) runs" 0 \
   '^[0-9.e-]+,4,10,20,0$' '' -- \
@@ -100,18 +112,35 @@ expect "time --json names the stop" 0 '"stop":"stop\.time"' '' -- \
 expect "run closes the CSV with the stop reason" 0 '^# stop: stop\.time$' \
   'stopped by the scenario.*stop\.time at t=0\.25 s' -- \
   run "$fixtures/ve_branch.nc" --scenario "$fixtures/scenario_stop.toml" -o -
+printf '[ve]\nSEL = 0\n[[event]]\nat = 0.2\nfeed_hold = true\n' >"$work/hold_forever.toml"
+expect "a hold nothing releases ends the run with NC6301 instead of hanging, status 1" 1 \
+  '"stop":"error"' 'run-time error at t=0\.[0-9]+ s: the path stands by feed hold.*\[NC6301\]' -- \
+  time --json "$fixtures/ve_branch.nc" --scenario "$work/hold_forever.toml"
+# The stop reason, always (docs/scenario.md "[stop]"): time --json "stop", the CSV's last line.
+expect "time --json names the program end" 0 '"stop":"program end"\}$' '' -- \
+  time --json "$fixtures/long_line.nc"
+expect "time --json names an error as the stop" 1 '"status":"error".*"stop":"error"\}$' '' -- \
+  time --json --machine "$root/machines/laser_portal" "$fixtures/sync_in.nc"
+expect "run closes the CSV with # stop: program end" 0 '^# stop: program end$' '' -- \
+  run "$fixtures/long_line.nc" --every 1000 -o -
+printf '[stop]\ncycles = 10\n' >"$work/stop_cycles.toml"
+expect "time --json names stop.cycles" 0 '"cycles":10,.*"stop":"stop\.cycles"' '' -- \
+  time --json "$fixtures/long_line.nc" --scenario "$work/stop_cycles.toml"
+printf '[ve]\nSEL = 0\n[stop]\nline = 2\npasses = 1\n' >"$work/stop_passes.toml"
+expect "run closes the CSV with # stop: stop.passes" 0 '^# stop: stop\.passes$' '' -- \
+  run "$fixtures/ve_branch.nc" --scenario "$work/stop_passes.toml" -o -
 for sc in "$fixtures/scenario_ve_write.toml" "$work/hold.toml"; do
   checks=$((checks + 1))
   "$ncsim" run "$fixtures/ve_branch.nc" --scenario "$sc" -o "$work/w1.csv" 2>/dev/null
   "$ncsim" run "$fixtures/ve_branch.nc" --scenario "$sc" -o "$work/w2.csv" 2>/dev/null
   total=$("$ncsim" time "$fixtures/ve_branch.nc" --scenario "$sc" --json |
     sed -E 's/.*"total_s":([^,]+).*/\1/')
-  if cmp -s "$work/w1.csv" "$work/w2.csv" && [[ $total == "$(tail -1 "$work/w1.csv" | cut -d, -f1)" ]]
+  if cmp -s "$work/w1.csv" "$work/w2.csv" && [[ $total == "$(grep -v "^#" "$work/w1.csv" | tail -1 | cut -d, -f1)" ]]
   then
     echo "ok   under $(basename "$sc") time equals run's last t, and reruns are byte-identical"
   else
     failures=$((failures + 1))
-    echo "FAIL $(basename "$sc"): time $total, run $(tail -1 "$work/w1.csv" | cut -d, -f1)"
+    echo "FAIL $(basename "$sc"): time $total, run $(grep -v "^#" "$work/w1.csv" | tail -1 | cut -d, -f1)"
   fi
 done
 mkdir -p "$work/sprog"
@@ -225,7 +254,7 @@ expect "an endless loop without motion is an error" 1 '' 'stuck\.nc:3:1: error: 
 expect "time of a long line at F is length / F + F / A + T, to the cycle" 0 \
   'long_line\.nc: 7\.035 s \(7035 cycles of 1 ms\)' '' -- time "$fixtures/long_line.nc"
 expect "time --blocks gives the line's time, distance and feeds" 0 \
-  '^4 7\.035 700 6000 6000 0 7\.035 0 0 0$' '' -- time --blocks "$fixtures/long_line.nc"
+  '^4 7\.035 700 6000 6000 0 7\.035 0 0 0 0 0$' '' -- time --blocks "$fixtures/long_line.nc"
 expect "time --json" 0 '"total_s":7\.035' '' -- time --json --blocks "$fixtures/long_line.nc"
 expect "time --audit passes on the long line" 0 '^audit: ok$' '' -- \
   time --audit "$fixtures/long_line.nc"
@@ -238,7 +267,8 @@ expect "run stops at an unsupported command, status 1" 1 '' 'not supported: #SYN
   run --machine "$root/machines/laser_portal" -o "$work/sync.csv" "$fixtures/sync_in.nc"
 checks=$((checks + 1))
 if [[ -f $work/sync.csv && ! -e $work/sync.csv.tmp ]] &&
-  [[ $(tail -1 "$work/sync.csv") == "# error: "*"not supported: #SYNC IN"* ]]; then
+  [[ $(tail -2 "$work/sync.csv" | head -1) == "# error: "*"not supported: #SYNC IN"* ]] &&
+  [[ $(tail -1 "$work/sync.csv") == "# stop: error" ]]; then
   echo "ok   run keeps the trajectory up to the error, with a closing comment"
 else
   failures=$((failures + 1)); echo "FAIL run keeps the trajectory up to the error"
@@ -252,7 +282,7 @@ expect "run --every 0 is a usage error" 2 '' '' -- run --every 0 "$fixtures/long
 "$ncsim" run -o - "$fixtures/long_line.nc" >"$work/c.csv" 2>/dev/null
 checks=$((checks + 1))
 rows=$(grep -cv '^#' "$work/a.csv")
-last_t=$(tail -1 "$work/a.csv" | cut -d, -f1)
+last_t=$(grep -v "^#" "$work/a.csv" | tail -1 | cut -d, -f1)
 if [[ $rows -eq 7036 && $last_t == "7.035" ]] && cmp -s "$work/a.csv" "$work/b.csv" &&
   cmp -s "$work/a.csv" "$work/c.csv" && [[ $(sed -n 6p "$work/a.csv") == "t,line,X,Y,Z" ]]; then
   echo "ok   run: one row per cycle (header + time / T), last t equals time, byte-identical reruns"
@@ -265,10 +295,10 @@ isg="$root/programs/isg_reference_example/isg_reference_example.nc"
 total=$("$ncsim" time "$isg" 2>/dev/null | sed -E 's/^.*: ([0-9.e+-]+) s \(.*$/\1/')
 "$ncsim" run -o "$work/isg.csv" "$isg" 2>/dev/null
 checks=$((checks + 1))
-if [[ -n $total && $(tail -1 "$work/isg.csv" | cut -d, -f1) == "$total" ]]; then
+if [[ -n $total && $(grep -v "^#" "$work/isg.csv" | tail -1 | cut -d, -f1) == "$total" ]]; then
   echo "ok   time equals the last t of run on isg_reference_example ($total s)"
 else
-  failures=$((failures + 1)); echo "FAIL time ($total) vs run: $(tail -1 "$work/isg.csv")"
+  failures=$((failures + 1)); echo "FAIL time ($total) vs run: $(grep -v "^#" "$work/isg.csv" | tail -1)"
 fi
 "$ncsim" run --every 10 --detail -o "$work/d.csv" "$fixtures/long_line.nc" 2>/dev/null
 checks=$((checks + 1))
@@ -290,8 +320,9 @@ status=0
 "$ncsim" run -o "$work/soft.csv" "$fixtures/soft_limit.nc" 2>/dev/null || status=$?
 checks=$((checks + 1))
 if [[ $status -eq 1 && -f $work/soft.csv ]] &&
-  [[ $(tail -1 "$work/soft.csv") == "# error: "*"soft_limit.nc:4:1: error: run-time error at t=8.018 s"*"[NC5502]" ]] &&
-  [[ $(tail -2 "$work/soft.csv" | head -1 | cut -d, -f1) == "8.017" ]] &&
+  [[ $(tail -2 "$work/soft.csv" | head -1) == "# error: "*"soft_limit.nc:4:1: error: run-time error at t=8.018 s"*"[NC5502]" ]] &&
+  [[ $(tail -1 "$work/soft.csv") == "# stop: error" ]] &&
+  [[ $(tail -3 "$work/soft.csv" | head -1 | cut -d, -f1) == "8.017" ]] &&
   [[ ! -e $work/soft.csv.tmp ]]; then
   echo "ok   run stopped by a run-time error: rows up to the stop, closing # error comment"
 else
@@ -302,11 +333,11 @@ fi
 total=$("$ncsim" time "$fixtures/exact_stop.nc" 2>/dev/null | sed -E 's/^.*: ([0-9.e+-]+) s \(.*$/\1/')
 "$ncsim" run --detail -o "$work/es.csv" "$fixtures/exact_stop.nc" 2>/dev/null
 checks=$((checks + 1))
-if [[ -n $total && $(tail -1 "$work/es.csv" | cut -d, -f1) == "$total" ]] &&
-  "$ncsim" time --blocks "$fixtures/exact_stop.nc" | grep -Eq '^3 [0-9.]+ 100 6000 6000 0 [0-9.]+ 0 0\.0[0-9]+ 0$'; then
+if [[ -n $total && $(grep -v "^#" "$work/es.csv" | tail -1 | cut -d, -f1) == "$total" ]] &&
+  "$ncsim" time --blocks "$fixtures/exact_stop.nc" | grep -Eq '^3 [0-9.]+ 100 6000 6000 0 [0-9.]+ 0 0\.0[0-9]+ 0 0 0$'; then
   echo "ok   G60 waits for the actual position (exact stop time > 0); time equals run ($total s)"
 else
-  failures=$((failures + 1)); echo "FAIL G60 exact stop: time $total, run $(tail -1 "$work/es.csv" | cut -d, -f1)"
+  failures=$((failures + 1)); echo "FAIL G60 exact stop: time $total, run $(grep -v "^#" "$work/es.csv" | tail -1 | cut -d, -f1)"
   "$ncsim" time --blocks "$fixtures/exact_stop.nc"
 fi
 

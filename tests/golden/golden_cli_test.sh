@@ -8,37 +8,8 @@ trap 'rm -rf "$work"' EXIT
 failures=0
 checks=0
 
-# expect NAME STATUS PATTERN_STDOUT PATTERN_STDERR -- ARGS...: as tests/cli/cli_test.sh.
-expect() {
-  local name=$1 want=$2 out_re=$3 err_re=$4
-  shift 5
-  checks=$((checks + 1))
-  "$ncsim" "$@" >"$work/out" 2>"$work/err" </dev/null
-  local got=$?
-  local ok=1
-  [[ $got -eq $want ]] || ok=0
-  if [[ -n $out_re ]] && ! grep -Eq -- "$out_re" "$work/out"; then ok=0; fi
-  if [[ -n $err_re ]] && ! grep -Eq -- "$err_re" "$work/err"; then ok=0; fi
-  if ((ok)); then
-    echo "ok   $name"
-  else
-    failures=$((failures + 1))
-    echo "FAIL $name: exit $got (want $want)"
-    sed 's/^/  stdout: /' "$work/out"
-    sed 's/^/  stderr: /' "$work/err"
-  fi
-}
-# same NAME FILE_A FILE_B: the two files are byte-identical.
-same() {
-  checks=$((checks + 1))
-  if cmp -s "$2" "$3"; then
-    echo "ok   $1"
-  else
-    failures=$((failures + 1))
-    echo "FAIL $1"
-    diff "$2" "$3" | head -20
-  fi
-}
+# expect, same: shared with tests/cli/cli_test.sh.
+source "$(dirname "${BASH_SOURCE[0]}")/../cli/expect.sh"
 
 lib=$work/programs
 mkdir -p "$lib/square" "$lib/stops" "$lib/empty"
