@@ -35,7 +35,8 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
       ipo_(prepared(config.path), source, &relay_),
       source_(source),
       sink_(sink),
-      exact_stop_wait_max_(config.exact_stop_wait_max) {
+      exact_stop_wait_max_(config.exact_stop_wait_max),
+      measured_value_wait_max_(config.measured_value_wait_max) {
   // --- trafo: the joint stage maps the TCP to the machine axes under #TRAFO ON.
   if (config.path.joints) stage_.emplace(config.path.joints->inverse, config.axes.size());
   if (config.axes.size() != ipo_.axis_count())
@@ -48,6 +49,11 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
   const double t = ipo_.t_cycle();
   // Same rounding as every wait (docs/ipo.md): the limit in whole cycles, never shorter.
   wait_cycles_max_ = static_cast<std::uint64_t>(std::ceil(exact_stop_wait_max_ / t - 1e-9));
+  if (!(measured_value_wait_max_ > 0.0))
+    throw std::invalid_argument("ipo::Channel: measured_value_wait_max must be > 0 s, got " +
+                                std::to_string(measured_value_wait_max_));
+  measure_wait_cycles_max_ =
+      static_cast<std::uint64_t>(std::ceil(measured_value_wait_max_ / t - 1e-9));
   ipo_.set_wait_handler(&wait_relay_);
   axes_.reserve(config.axes.size());
   for (std::size_t i = 0; i < config.axes.size(); ++i) {

@@ -82,6 +82,10 @@ inline constexpr const char* kOverrideRangeId = "NC6102";
 /// it (the run would never end). --- operator
 inline constexpr const char* kHeldForeverId = "NC6301";
 
+/// NC9054: #SYNC IN waited longer than ChannelConfig::measured_value_wait_max for its measured
+/// value (no workpiece edge latched).
+inline constexpr const char* kMeasuredValueWaitId = "NC9054";
+
 /// One interpolated axis as the channel drives it.
 struct ChannelAxis {
   std::string name;                     ///< axis name (messages)
@@ -93,6 +97,7 @@ struct ChannelConfig {
   Config path;                        ///< the interpolator's (detail and hold_exact_stop are set)
   std::vector<ChannelAxis> axes;      ///< one per entry of path.axes, same order
   double exact_stop_wait_max = 60.0;  ///< [s] longest exact-stop wait without P-AXIS-00532
+  double measured_value_wait_max = 600.0;  ///< [s] longest #SYNC IN wait for a measured value
   // --- conveyor-sync: conveyor tracking (docs/conveyor.md "Synchronisation")
   std::optional<machines::ConveyorSyncChannel> conveyor;  ///< FCT_DLM channels only
   std::vector<SyncAxis> sync_axes;  ///< one per entry of path.axes (with `conveyor`)

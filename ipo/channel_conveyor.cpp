@@ -60,11 +60,23 @@ Channel::EventOutcome Channel::on_sync_in(const interp::SyncIn& command,
                          e);
     if (sync_tag_ != e.tag) {  // first dispatch: from now the path waits for the measured value
       sync_tag_ = e.tag;
+      measure_waited_ = 0;
       if (auto err = sync_->sync_in(command))
         return event_error(err->id.c_str(), std::move(err->message), e);
       return EventOutcome::blocking;
     }
-    return sync_->phase() == SyncPhase::waiting ? EventOutcome::blocking : EventOutcome::done;
+    if (sync_->phase() != SyncPhase::waiting) return EventOutcome::done;
+    // A measured value that never comes (no workpiece left, the belt stopped, the probe armed
+    // for an edge that never passes) must not make the run endless: ncsim's limit (NC9054).
+    if (++measure_waited_ > measure_wait_cycles_max_) {
+      char buf[160];
+      std::snprintf(buf, sizeof buf,
+                    "#SYNC IN: no measured value within %.6g s (ncsim's limit): no workpiece "
+                    "edge was latched while the probe was armed",
+                    measured_value_wait_max_);
+      return event_error(kMeasuredValueWaitId, buf, e);
+    }
+    return EventOutcome::blocking;
   } catch (...) {
     std::abort();  // out of memory while reporting a run-time error
   }

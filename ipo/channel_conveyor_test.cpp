@@ -218,3 +218,23 @@ TEST_CASE("FEED_CONT > 0 on #SYNC IN and FEED_CONT_AUTO are not supported (NC600
   CHECK(r.error->id == "NC6001");
   CHECK(r.error->message.find("FEED_CONT") != std::string::npos);
 }
+
+TEST_CASE("NC9054: #SYNC IN whose measured value never comes ends at ncsim's wait limit") {
+  ipo::test::FakePort port(300.0);  // never latches
+  const core::SourceFile file("t.nc", kSync);
+  const machines::Machine& m = interp::test::machine("laser_portal");
+  interp::Interpreter in(file, m);
+  ipo::ProgramSource src(in, m);
+  ipo::ChannelConfig cfg = ipo::channel_config(m, 0.001);
+  cfg.measured_value_wait_max = 0.25;
+  ipo::Channel ch(std::move(cfg), src);
+  ch.attach_conveyor(&port);
+  ipo::Status s = ipo::Status::running;
+  for (int guard = 0; guard < 100'000 && s == ipo::Status::running; ++guard)
+    s = ch.step();
+  REQUIRE(s == ipo::Status::error);
+  REQUIRE(ch.run_time_error());
+  CHECK(ch.run_time_error()->id == "NC9054");
+  CHECK(ch.run_time_error()->line == 3);
+  CHECK(ch.run_time_error()->t == doctest::Approx(0.25).epsilon(0.02));
+}
