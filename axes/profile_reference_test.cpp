@@ -398,11 +398,11 @@ TEST_CASE("time-optimal from moving starts is never slower than the independent 
 TEST_CASE("time-optimal starts that overshoot or move away are never slower than the reference") {
   // The reference may reverse (v down to -V, path limits switching at v = 0). Starts v0 in
   // [-V, V] with a0 inside the path limits, targets ahead (D > 0) at 1e-4..1e2 of V^2/A, so
-  // that most of them must overshoot or turn round.
+  // that most of them must overshoot or turn round, then 200 over the issue's 1e-4..1e4 mm.
   std::mt19937_64 rng(20261124);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   int checked = 0;
-  const int cases = 300;
+  const int cases = 500;
   for (int n = 0; n < cases; ++n) {
     Dynamics d{log_uniform(rng, 1.0, 1e4), log_uniform(rng, 10.0, 1e5), log_uniform(rng, 10.0, 1e5),
                log_uniform(rng, 1e2, 1e7)};
@@ -416,7 +416,8 @@ TEST_CASE("time-optimal starts that overshoot or move away are never slower than
         speeding * s0 * std::min(speeding > 0.0 ? d.a_max : d.d_max, cap_v) * unit(rng);
     const double v1 = unit(rng) < 0.4 ? 0.0 : d.v_max * unit(rng);
     const double scale = d.v_max * d.v_max / std::min(d.a_max, d.d_max);
-    const double dist = scale * log_uniform(rng, 1e-4, 1e2);
+    // The first 300 relative to the braking scale, the rest over the issue's absolute range.
+    const double dist = n < 300 ? scale * log_uniform(rng, 1e-4, 1e2) : log_uniform(rng, 1e-4, 1e4);
     Ref ref{v0, a0, v1, dist, d.v_max, d.a_max, d.d_max, d.j_max};
     ref.reverse = true;
     const Real t_ref = ref.min_time();
