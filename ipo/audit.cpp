@@ -102,7 +102,9 @@ void Audit::on_cycle(const Cycle& c) {
   const double t3 = t2 * t_;
   for (std::size_t i = 0; i < limits_.size(); ++i) {
     // G00 is planned with its own slope (P-AXIS-00004 / 00200; planner::rapid_limits).
-    const planner::AxisLimits l = c.rapid ? planner::rapid_limits(limits_[i]) : limits_[i];
+    // --- indp: an INDP motion (Cycle::independent) keeps the axis's G01 limits, jerk-limited.
+    const bool indp = ((c.independent >> i) & 1u) != 0;
+    const planner::AxisLimits l = c.rapid && !indp ? planner::rapid_limits(limits_[i]) : limits_[i];
     const planner::AxisLimits feed = limits_[i];
     const planner::AxisLimits fast = planner::rapid_limits(feed);
     // A finite-difference stencil that holds a G00 cycle is checked against the larger slope.
@@ -119,7 +121,7 @@ void Audit::on_cycle(const Cycle& c) {
     check(Quantity::velocity, Method::closed_form, i, c, v, aa.v_limit);
     const bool speeding_up = c.a[i] * c.v[i] >= 0.0;
     check(Quantity::acceleration, Method::closed_form, i, c, a, speeding_up ? l.a_max : l.d_max);
-    if (c.jerk_limited) {
+    if (c.jerk_limited || indp) {
       aa.j_closed = std::max(aa.j_closed, j);
       check(Quantity::jerk, Method::closed_form, i, c, j, l.j_max);
     }
@@ -157,7 +159,10 @@ void Audit::on_cycle(const Cycle& c) {
       mag = std::max(mag, std::abs(c.x[i]));
     const double tol = m.contour == planner::Contour::tolerance ? m.path_dev : 0.0;
     const double allowed = tol + 1e-9 * mag;
-    const double d = contour_distance(m, c.x);
+    AxisVec x = c.x;  // --- indp: INDP axes are not part of the block's contour
+    for (std::size_t i = 0; i < limits_.size(); ++i)
+      if (((c.independent >> i) & 1u) != 0) x[i] = m.start[i];
+    const double d = contour_distance(m, x);
     verdict_.contour_max = std::max(verdict_.contour_max, d);
     if (d / allowed > contour_ratio_) {
       contour_ratio_ = d / allowed;

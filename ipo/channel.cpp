@@ -22,6 +22,14 @@ Config prepared(Config config) {
   return config;
 }
 
+// --- indp:
+std::vector<IndpAxisConfig> indp_configs(const ChannelConfig& config) {
+  std::vector<IndpAxisConfig> out;
+  for (const ChannelAxis& a : config.axes)
+    out.push_back(a.indp);
+  return out;
+}
+
 std::string text(const char* format, double a, double b) {
   char buf[256];
   std::snprintf(buf, sizeof buf, format, a, b);
@@ -34,7 +42,8 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
     : relay_(sink),
       ipo_(prepared(config.path), source, &relay_),
       sink_(sink),
-      exact_stop_wait_max_(config.exact_stop_wait_max) {
+      exact_stop_wait_max_(config.exact_stop_wait_max),
+      indp_(indp_configs(config), ipo_.t_cycle(), config.path.start) {  // --- indp
   if (config.axes.size() != ipo_.axis_count())
     throw std::invalid_argument("ipo::Channel: " + std::to_string(config.axes.size()) +
                                 " channel axes for " + std::to_string(ipo_.axis_count()) +
@@ -114,7 +123,8 @@ bool Channel::drive_axis(std::size_t i, const Cycle& c) noexcept {
   s.t = c.t;
   s.command_position = sp.p;
   s.actual_position = act.position;
-  s.motion_active = c.activity == Activity::motion && !waiting;
+  s.motion_active = indp_.owned(i) ? !indp_.in_position(i)  // --- indp
+                                   : c.activity == Activity::motion && !waiting;
   if (waiting) s.target = target_[i];
   const auto alarm = a.monitor.step(s);
   if (!alarm) return true;
@@ -228,11 +238,11 @@ bool Channel::play_cycle(Status& status) noexcept {
                     at, -1);
       return false;
     }
-    status = stop(kNotSupportedId,
-                  "not supported: scenario axis override events (INDP axes are not in the "
-                  "channel loop yet)",
-                  at, -1);
-    return false;
+    if (const auto* o = std::get_if<scenario::AxisOverride>(&a)) {  // --- indp
+      if (indp_override(*o, at)) continue;
+      status = Status::error;
+      return false;
+    }
   }
   if (const auto reason = player_->stop()) {
     stopped_ = *reason;
@@ -271,10 +281,11 @@ Status Channel::step() noexcept {
     }
   }
   map_to_axes(c);
+  if (!indp_cycle(c)) return Status::error;  // --- indp
   for (std::size_t i = 0; i < axes_.size(); ++i)
     if (!drive_axis(i, c)) return Status::error;
   if (in_exact_stop_ && !exact_stop(c)) return Status::error;
-  if (sink_) sink_->on_cycle(c);
+  if (sink_) sink_->on_cycle(cycle());  // --- indp: with the INDP axes' setpoints
   return Status::running;
 }
 

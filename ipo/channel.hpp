@@ -47,6 +47,7 @@
 
 #include "axes/control.hpp"
 #include "axes/monitor.hpp"
+#include "ipo/indp_axes.hpp"
 #include "ipo/interpolator.hpp"
 #include "machines/machine.hpp"
 #include "scenario/player.hpp"
@@ -61,11 +62,19 @@ inline constexpr const char* kExactStopWaitId = "NC6101";
 /// (NCSIM-CHAN-630) accepts.
 inline constexpr const char* kOverrideRangeId = "NC6102";
 
+// --- indp:
+/// NC6103: the path programs an axis while its INDP motion runs or away from where it left it.
+inline constexpr const char* kIndpPathId = "NC6103";
+/// NC6105: a scenario axis override names no channel axis or is outside 0 .. 100 %.
+inline constexpr const char* kIndpOverrideId = "NC6105";
+
 /// One interpolated axis as the channel drives it.
 struct ChannelAxis {
   std::string name;                     ///< axis name (messages)
   axes::PositionControlParams control;  ///< position control model (axes/control.hpp)
   axes::AxisMonitorParams monitor;      ///< soft limits, lag, exact stop, ...
+  // --- indp:
+  IndpAxisConfig indp;  ///< the axis as an INDP axis (ipo/indp_axes.hpp)
 };
 
 struct ChannelConfig {
@@ -107,8 +116,8 @@ class Channel {
   /// One interpolation cycle. Never throws. Status::error: the source failed (message()) or
   /// a run-time error stopped the channel (run_time_error()).
   Status step() noexcept;
-  /// The path record of the last cycle step() reported.
-  const Cycle& cycle() const noexcept { return ipo_.cycle(); }
+  /// The path record of the last cycle step() reported (INDP axes: their setpoints).
+  const Cycle& cycle() const noexcept { return shown_ ? *shown_ : ipo_.cycle(); }
   /// Command, actual position and following error of every axis after the last cycle.
   const AxesState& axes() const noexcept { return state_; }
   /// Why the channel stopped at run time, if it did.
@@ -126,6 +135,11 @@ class Channel {
   void play(scenario::Player* player) noexcept { player_ = player; }
   /// The [stop] condition that ended the run, if one did (step() then returned finished).
   const std::optional<scenario::StopReason>& scenario_stop() const noexcept { return stopped_; }
+
+  // --- indp: independent axes (ipo/channel_indp.cpp, docs/ipo.md "INDP axes and technology
+  // functions"). Conveyor tracking calls indp().interrupt(axis) at #SYNC IN.
+  IndpAxes& indp() noexcept { return indp_; }
+  const IndpAxes& indp() const noexcept { return indp_; }
 
  private:
   /// Passes the interpolator's joints on at once; cycles are passed on by step().
@@ -158,6 +172,12 @@ class Channel {
   bool play_cycle(Status& status) noexcept;
   /// After a cycle: note the block that started in it for the player.
   void note_block(const Cycle& c) noexcept;
+  // --- indp: (ipo/channel_indp.cpp)
+  /// After step 2: advances the INDP axes and gives each axis they own its INDP setpoint;
+  /// false when a run-time error stopped the channel (NC6103).
+  bool indp_cycle(const Cycle& c) noexcept;
+  /// A scenario axis override (step 0); false when it stopped the channel (NC6105).
+  bool indp_override(const scenario::AxisOverride& o, const Cycle& at) noexcept;
 
   JointRelay relay_;
   PathInterpolator ipo_;
@@ -181,6 +201,10 @@ class Channel {
   bool in_dwell_ = false;                 ///< the last cycle was a dwell
   std::optional<std::uint32_t> started_;  ///< line of a block started in the last cycle
   std::optional<Status> ended_;           ///< the interpolator's stream ended so
+  // --- indp:
+  IndpAxes indp_;
+  Cycle patched_;                 ///< the cycle with the INDP axes' setpoints
+  const Cycle* shown_ = nullptr;  ///< &patched_ while INDP axes are owned, else null
 };
 
 }  // namespace ncsim::ipo

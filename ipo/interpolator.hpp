@@ -129,6 +129,10 @@ struct Cycle {
   bool held = false;    ///< motion cycle in which the path stands by feed hold / override 0
   double factor = 1.0;  ///< override factor of the plan the path follows (0 while holding)
   double lost = 0.0;    ///< time lost to override and holds in this cycle [s] (< 0: gained)
+  // --- indp: set by ipo::Channel (docs/ipo.md "INDP axes and technology functions")
+  /// Bit i: axis i is driven by its INDP motion in this cycle; x, v, a, j are then the INDP
+  /// setpoint's, and the axis is not part of the block's contour.
+  planner::AxisMask independent = 0;
 };
 
 /// A joint between two planned segments, passed inside a cycle (Detail::axes only).
