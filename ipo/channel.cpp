@@ -41,6 +41,7 @@ std::string text(const char* format, double a, double b) {
 Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
     : relay_(sink),
       ipo_(prepared(config.path), source, &relay_),
+      source_(source),
       sink_(sink),
       exact_stop_wait_max_(config.exact_stop_wait_max),
       indp_(indp_configs(config), ipo_.t_cycle(), config.path.start) {  // --- indp
@@ -54,6 +55,7 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
   const double t = ipo_.t_cycle();
   // Same rounding as every wait (docs/ipo.md): the limit in whole cycles, never shorter.
   wait_cycles_max_ = static_cast<std::uint64_t>(std::ceil(exact_stop_wait_max_ / t - 1e-9));
+  ipo_.set_wait_handler(&wait_relay_);
   axes_.reserve(config.axes.size());
   for (std::size_t i = 0; i < config.axes.size(); ++i) {
     const double p0 = config.path.start[i];
@@ -253,18 +255,37 @@ bool Channel::play_cycle(Status& status) noexcept {
 }
 
 Status Channel::step() noexcept {
+  tech_.clear();  // --- indp: the technology functions of this cycle
   if (error_) return Status::error;
   if (ended_) return *ended_;  // the player sees each cycle once
   if (player_ != nullptr) {
     Status ended = Status::finished;
     if (!play_cycle(ended)) return ended;
   }
-  const Status s = ipo_.step();
+  // A blocked event is dispatched again each cycle; a path holding at a ChannelWait goes on in
+  // this cycle once the events up to the wait's tag are done.
+  if (blocked_ || ipo_.holding_channel()) {
+    const bool holding = ipo_.holding_channel();
+    const bool done = run_events(holding ? wait_tag_ : ipo_.cycle().event_tag);
+    if (error_) return Status::error;
+    if (done && holding && indp_syn_done()) ipo_.release_wait();  // --- indp: INDP_SYN axes
+  }
+  Status s = ipo_.step();
+  if (error_) return Status::error;  // raised by an event at a ChannelWait inside the step
+  if (s == Status::finished) {
+    run_events(~std::uint32_t{0});  // none left: ProgramSource ends with a ChannelWait
+    if (error_) s = Status::error;
+  }
+  if (s == Status::finished && !indp_.in_position_mask(0))  // --- indp: the end waits for them
+    return indp_tail();
   if (s != Status::running) {
     ended_ = s;
     return s;
   }
   const Cycle& c = ipo_.cycle();
+  // Events riding on the blocks started in this cycle.
+  if (!blocked_) run_events(c.event_tag);
+  if (error_) return Status::error;
   if (player_ != nullptr) note_block(c);
   if (!in_exact_stop_ && ipo_.holding_exact_stop()) {
     // The command reached the end of a G60 / G360 block in this cycle (001 l.149: t_1).

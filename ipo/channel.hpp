@@ -28,13 +28,25 @@
 //      the wait ends with NC6101 after ChannelConfig::exact_stop_wait_max.
 //   5. The Sink sees the joints of the cycle and then the cycle, only when no run-time error
 //      was raised in it: a stopped run's stream ends with the last good cycle.
+//   1a. Channel events (ipo/channel_event.hpp, docs/ipo.md "Channel events"): the events due
+//      (Cycle::event_tag) are dispatched by kind (ipo/channel_events.cpp) after the
+//      interpolator's step; at a ChannelWait the interpolator asks the channel (on_wait) inside
+//      its step, and a wait whose events are not done holds the path (Activity::channel) until
+//      they are: a blocking event is dispatched again at the start of every cycle, and when it
+//      and the events after it up to the wait's tag are done, the path is released before the
+//      interpolator's step of that cycle. An event kind the channel cannot execute is run-time
+//      error NC6001 `not supported: ...` at the event's line.
 //   0. Under a scenario (play()), before 1: the blocks that started in the previous cycle go
 //      to Player::block_started, then Player::step(k, t) with k the cycle's index and t its
 //      start time; its V.E. writes are in the store the ProgramSource answers barriers from; a
 //      [stop] condition met ends the run before the cycle (Status::finished, scenario_stop());
 //      path override and feed hold go to PathInterpolator::set_override / set_feed_hold (an
-//      override above the type's largest is run-time error NC6102); an axis override (INDP
-//      axes are not in the channel yet) stops with NC6001 `not supported: ...`, never ignored.
+//      override above the type's largest is run-time error NC6102); an axis override goes to
+//      IndpAxes::set_override (002 2.2; NC6105 above 100 % or for no channel axis).
+//   2b. (indp) INDP axes (ipo/channel_indp.cpp): IndpAxes::step(); an axis the INDP layer owns
+//      gets its INDP setpoint instead of the path's (Cycle::independent); X[INDP_SYN ...],
+//      X[INDP_ASYN ...], #WAIT INDP and M/H/S/T/D arrive as channel events (docs/ipo.md "INDP
+//      axes and technology functions").
 // Invariants: step() never throws (an error ends the stream with Status::error); it is
 // deterministic (encoder noise is seeded per axis); memory is the interpolator's (bounded by
 // the look-ahead window) plus one control model and one monitor per axis.
@@ -47,6 +59,7 @@
 
 #include "axes/control.hpp"
 #include "axes/monitor.hpp"
+#include "ipo/channel_event.hpp"
 #include "ipo/indp_axes.hpp"
 #include "ipo/interpolator.hpp"
 #include "machines/machine.hpp"
@@ -67,6 +80,15 @@ inline constexpr const char* kOverrideRangeId = "NC6102";
 inline constexpr const char* kIndpPathId = "NC6103";
 /// NC6105: a scenario axis override names no channel axis or is outside 0 .. 100 %.
 inline constexpr const char* kIndpOverrideId = "NC6105";
+
+/// A technology function the channel output (M/H/S/T/D, to the PLC side).
+struct TechOutput {
+  double t = 0.0;          ///< [s] end of the cycle in which it was output
+  std::uint32_t line = 0;  ///< source line
+  std::uint16_t file = 0;  ///< interp::Command::file (0: the main program)
+  interp::TechKind kind = interp::TechKind::m;
+  double value = 0.0;  ///< the function's number (M3 -> 3)
+};
 
 /// One interpolated axis as the channel drives it.
 struct ChannelAxis {
@@ -140,8 +162,35 @@ class Channel {
   // functions"). Conveyor tracking calls indp().interrupt(axis) at #SYNC IN.
   IndpAxes& indp() noexcept { return indp_; }
   const IndpAxes& indp() const noexcept { return indp_; }
+  /// The technology functions (M/H/S/T/D) the channel output in the last step(), in program
+  /// order (`run` writes them as CSV comments; docs/ipo.md "INDP axes and technology functions").
+  const std::vector<TechOutput>& tech_outputs() const noexcept { return tech_; }
 
  private:
+  /// What executing a channel event gave (ipo/channel_events.cpp).
+  enum class EventOutcome : std::uint8_t {
+    done,      ///< executed; the next event may follow
+    blocking,  ///< not done yet: dispatched again next cycle, the path holds meanwhile
+    error,     ///< a run-time error was raised (error_)
+  };
+  /// Hands the interpolator's ChannelWait to the channel.
+  class WaitRelay final : public WaitHandler {
+   public:
+    explicit WaitRelay(Channel& channel) : channel_(channel) {}
+    bool on_wait(const ChannelWait& wait) noexcept override { return channel_.on_wait(wait); }
+
+   private:
+    Channel& channel_;
+  };
+  /// Executes one event by kind (ipo/channel_events.cpp: the one dispatch point).
+  EventOutcome dispatch(const ChannelEvent& event) noexcept;
+  /// Dispatches the blocked event and then the due events up to `up_to`; false when one
+  /// blocks (kept in blocked_) or raised an error.
+  bool run_events(std::uint32_t up_to) noexcept;
+  /// The path reached a ChannelWait: true when its events are all done (the path goes on).
+  bool on_wait(const ChannelWait& wait) noexcept;
+  /// Raises a run-time error at an event's line, at the time of the cycle being computed.
+  EventOutcome event_error(const char* id, std::string message, const ChannelEvent& e) noexcept;
   /// Passes the interpolator's joints on at once; cycles are passed on by step().
   class JointRelay final : public Sink {
    public:
@@ -178,9 +227,19 @@ class Channel {
   bool indp_cycle(const Cycle& c) noexcept;
   /// A scenario axis override (step 0); false when it stopped the channel (NC6105).
   bool indp_override(const scenario::AxisOverride& o, const Cycle& at) noexcept;
+  /// Event handlers: X[INDP_SYN / INDP_ASYN ...], #WAIT INDP, M/H/S/T/D.
+  EventOutcome indp_command(const interp::AxisCommand& c, const ChannelEvent& e) noexcept;
+  EventOutcome indp_wait(const interp::WaitIndp& w, const ChannelEvent& e) noexcept;
+  EventOutcome indp_tech(const interp::Tech& t, const ChannelEvent& e) noexcept;
+  /// True when every INDP_SYN motion started is in position (the next block may start).
+  bool indp_syn_done() noexcept;
+  /// A cycle after the path's end while INDP axes still move (the program end waits for them).
+  Status indp_tail() noexcept;
 
   JointRelay relay_;
+  WaitRelay wait_relay_{*this};
   PathInterpolator ipo_;
+  Source& source_;
   Sink* sink_ = nullptr;
   std::vector<Axis> axes_;
   double exact_stop_wait_max_ = 60.0;
@@ -201,10 +260,18 @@ class Channel {
   bool in_dwell_ = false;                 ///< the last cycle was a dwell
   std::optional<std::uint32_t> started_;  ///< line of a block started in the last cycle
   std::optional<Status> ended_;           ///< the interpolator's stream ended so
+  // Channel events.
+  std::optional<ChannelEvent> blocked_;  ///< an event not done yet (EventOutcome::blocking)
+  std::uint32_t wait_tag_ = 0;           ///< tag of the ChannelWait the path holds at
+  ChannelEvent event_;                   ///< scratch: the event being taken
   // --- indp:
   IndpAxes indp_;
   Cycle patched_;                 ///< the cycle with the INDP axes' setpoints
   const Cycle* shown_ = nullptr;  ///< &patched_ while INDP axes are owned, else null
+  planner::AxisMask syn_ = 0;     ///< axes of INDP_SYN motions the path waits for
+  std::vector<TechOutput> tech_;  ///< technology functions output in this step
+  Cycle tail_;                    ///< the last cycle, then the cycles after the path's end
+  bool in_tail_ = false;          ///< the path has ended, INDP axes still move
 };
 
 }  // namespace ncsim::ipo

@@ -3,9 +3,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "ipo/channel.hpp"
+#include "ipo/program_source.hpp"
 
 namespace ncsim::ipo {
 
@@ -22,6 +24,10 @@ std::string number(double x) {
 bool Channel::indp_cycle(const Cycle& c) noexcept {
   indp_.step();
   planner::AxisMask owned = indp_.owned_mask();
+  // An axis the path drives: its INDP state follows the path's setpoint, so an INDP command
+  // starts from where (and how fast) the axis is.
+  for (std::size_t i = 0; i < axes_.size(); ++i)
+    if (((owned >> i) & 1u) == 0) indp_.follow(i, setpoint_[i]);
   if (owned == 0) {
     shown_ = nullptr;
     return true;
@@ -50,6 +56,7 @@ bool Channel::indp_cycle(const Cycle& c) noexcept {
         return false;
       }
       indp_.release(i);
+      indp_.follow(i, setpoint_[i]);
       owned &= ~(planner::AxisMask{1} << i);
     }
   }
@@ -89,6 +96,89 @@ bool Channel::indp_override(const scenario::AxisOverride& o, const Cycle& at) no
     return false;
   }
   return true;
+}
+
+Channel::EventOutcome Channel::indp_command(const interp::AxisCommand& c,
+                                            const ChannelEvent& e) noexcept {
+  std::size_t i = 0;
+  while (i < axes_.size() && axes_[i].config.indp.machine_index != c.axis)
+    ++i;
+  if (i == axes_.size())
+    return event_error(kNotSupportedId,
+                       "not supported: INDP motion of a spindle, the conveyor or an encoder axis "
+                       "(only interpolated axes move independently)",
+                       e);
+  // isg-language.md 6.1: "By default no offsets are applied": POS is the axis value (MCS) under
+  // a #CS too; under #SYNC (PCS1) or #TRAFO ON the target would need the moving frame or the
+  // kinematics.
+  if (c.frame.space == interp::Space::pcs1 || c.frame.kinematics)
+    return event_error(kNotSupportedId,
+                       "not supported: INDP motion of axis " + axes_[i].config.name +
+                           (c.frame.kinematics ? " under #TRAFO ON" : " while synchronised (PCS1)"),
+                       e);
+  IndpMove m;
+  m.target = c.target;
+  m.rapid = c.rapid;
+  m.feed = c.feed;
+  m.time = c.time;
+  // INTERRUPTIBLE belongs to INDP_SYN motions after #SYNC OUT (TF5264 examples); with
+  // INDP_ASYN it is ignored (docs/ipo.md).
+  m.interruptible = c.interruptible && c.kind == interp::IndpKind::syn;
+  if (const auto err = indp_.command(i, m)) return event_error(err->id.c_str(), err->message, e);
+  if (c.kind == interp::IndpKind::syn) syn_ |= planner::AxisMask{1} << i;
+  return EventOutcome::done;
+}
+
+Channel::EventOutcome Channel::indp_wait(const interp::WaitIndp& w, const ChannelEvent&) noexcept {
+  // #WAIT INDP [axes] / ALL: "waits until axis Z's command value reaches its target"
+  // (isg-language.md 6.1): blocking until then, the path holding at the wait.
+  planner::AxisMask mask = 0;
+  for (std::size_t i = 0; i < axes_.size(); ++i)
+    if (w.axes == 0 || ((w.axes >> axes_[i].config.indp.machine_index) & 1u) != 0)
+      mask |= planner::AxisMask{1} << i;
+  if (mask == 0) return EventOutcome::done;  // none of the named axes is a channel axis
+  return indp_.in_position_mask(mask) ? EventOutcome::done : EventOutcome::blocking;
+}
+
+Channel::EventOutcome Channel::indp_tech(const interp::Tech& t, const ChannelEvent& e) noexcept {
+  try {
+    tech_.push_back(TechOutput{static_cast<double>(ipo_.cycle().index) * ipo_.t_cycle(), e.line,
+                               e.file, t.kind, t.value});
+  } catch (...) {
+    std::abort();  // out of memory: bounded by the events of one cycle (kMaxPendingEvents)
+  }
+  return EventOutcome::done;
+}
+
+bool Channel::indp_syn_done() noexcept {
+  if (syn_ != 0 && !indp_.in_position_mask(syn_)) return false;
+  syn_ = 0;
+  return true;
+}
+
+Status Channel::indp_tail() noexcept {
+  // The path stands at its end; the cycles go on (Activity::channel, counted as waiting by
+  // `time`) until every INDP axis is in position, so `run` and `time` cover the whole motion.
+  if (!in_tail_) {
+    tail_ = ipo_.cycle();
+    in_tail_ = true;
+    tail_.activity = Activity::channel;
+    tail_.programmed = nullptr;
+    tail_.path.v = tail_.path.a = tail_.path.j = 0.0;
+    tail_.distance = 0.0;
+    tail_.lost = 0.0;
+    tail_.v = AxisVec{};
+    tail_.a = AxisVec{};
+    tail_.j = AxisVec{};
+  }
+  ++tail_.index;
+  tail_.t = static_cast<double>(tail_.index) * ipo_.t_cycle();
+  map_to_axes(tail_);
+  if (!indp_cycle(tail_)) return Status::error;
+  for (std::size_t i = 0; i < axes_.size(); ++i)
+    if (!drive_axis(i, tail_)) return Status::error;
+  if (sink_) sink_->on_cycle(cycle());
+  return Status::running;
 }
 
 }  // namespace ncsim::ipo

@@ -129,3 +129,29 @@ TEST_CASE("the INDP target beyond the soft limit is refused before the axis move
   CHECK(e->id == "NC5502");
   CHECK_FALSE(ch.indp().owned(1));
 }
+
+TEST_CASE("M / H functions are output in the cycle the next block starts, in program order") {
+  const core::SourceFile file("t.nc",
+                              "%t\nN10 G01 X10 F3000\nN20 M50\nN30 X20\nN40 H7 M51\nN50 M30\n");
+  const machines::Machine& m = interp::test::machine("portal_3x");
+  interp::Interpreter in(file, m, interp::Options{});
+  ipo::ProgramSource src(in, m);
+  ipo::Channel ch(ipo::channel_config(m, 0.001), src);
+  std::vector<ipo::TechOutput> out;
+  double t_x20_start = -1.0;
+  ipo::Status s;
+  while ((s = ch.step()) == ipo::Status::running) {
+    if (t_x20_start < 0.0 && ch.cycle().line == 4) t_x20_start = ch.cycle().t;
+    out.insert(out.end(), ch.tech_outputs().begin(), ch.tech_outputs().end());
+  }
+  out.insert(out.end(), ch.tech_outputs().begin(), ch.tech_outputs().end());
+  CHECK(s == ipo::Status::finished);
+  REQUIRE(out.size() == 3);
+  CHECK(out[0].kind == interp::TechKind::m);
+  CHECK(out[0].value == 50.0);
+  CHECK(out[0].line == 3);
+  CHECK(out[0].t == doctest::Approx(t_x20_start));
+  CHECK(out[1].line == 5);
+  CHECK(out[2].line == 5);
+  CHECK(out[1].t >= out[0].t);
+}

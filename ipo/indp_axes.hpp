@@ -63,11 +63,12 @@ inline constexpr const char* kIndpPlanId = "NC6104";
 
 /// What the INDP layer needs of one channel axis.
 struct IndpAxisConfig {
-  std::string name;              ///< axis name (messages)
-  axes::Dynamics feed;           ///< G01: v_max = P-AXIS-00212, A+, A-, J [mm/s, mm/s^2, mm/s^3]
-  axes::Dynamics rapid;          ///< G00: v_max = P-AXIS-00209, slope (decisions above)
-  double increment = 1e-4;       ///< moves shorter than this do not start [mm | deg] (002_* 2.1)
-  axes::SoftLimitParams limits;  ///< P-AXIS-00177 / 00178
+  std::string name;                ///< axis name (messages)
+  std::uint8_t machine_index = 0;  ///< index in machines::Machine::axes (the commands\' axis)
+  axes::Dynamics feed;             ///< G01: v_max = P-AXIS-00212, A+, A-, J [mm/s, mm/s^2, mm/s^3]
+  axes::Dynamics rapid;            ///< G00: v_max = P-AXIS-00209, slope (decisions above)
+  double increment = 1e-4;         ///< moves shorter than this do not start [mm | deg] (002_* 2.1)
+  axes::SoftLimitParams limits;    ///< P-AXIS-00177 / 00178
   axes::ProfileRule rule = axes::ProfileRule::manual;  ///< NCSIM-AXIS-030
   axes::OverrideType override_type = axes::OverrideType::reduced_iterated;
 };
@@ -123,6 +124,14 @@ class IndpAxes {
   bool in_position(std::size_t i) const noexcept { return axes_[i].mode == Mode::idle; }
   /// True when every axis of `mask` (bit i: axis i; 0: all) is in position.
   bool in_position_mask(planner::AxisMask mask) const noexcept;
+  /// Axis `i`, not owned, is at `sp` (the path's setpoint of this cycle): an INDP command starts
+  /// from there. No effect on an owned axis.
+  void follow(std::size_t i, const axes::Setpoint& sp) noexcept {
+    if (!axes_[i].owned) {
+      axes_[i].sp = sp;
+      axes_[i].target = sp.p;
+    }
+  }
   /// Hands axis `i` back to the path (it must be in position). Its setpoint stays as it is.
   void release(std::size_t i) noexcept { axes_[i].owned = false; }
   /// Setpoint of axis `i` after the last step() [mm | deg, /s, /s^2, /s^3].

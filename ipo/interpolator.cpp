@@ -89,7 +89,7 @@ bool PathInterpolator::fill() noexcept {
       }
       ready_.clear();
       ready_next_ = 0;
-      if (source_done_ || dwell_) break;
+      if (source_done_ || dwell_ || wait_) break;
       if (next_token_ - oldest_ >= ring_.size()) break;  // every ring slot still referenced
       if (pulls++ >= kMaxPulls) break;
       if (!source_.next(item_)) {
@@ -103,8 +103,13 @@ bool PathInterpolator::fill() noexcept {
                      std::to_string(d->seconds) + " s (line " + std::to_string(d->line) + ")";
           return false;
         }
-        dwell_ = PendingDwell{d->seconds, d->line};
+        dwell_ = PendingDwell{d->seconds, d->line, d->event_tag};
         prep_.finish(ready_);  // the path stops before the dwell
+        continue;
+      }
+      if (const ChannelWait* w = std::get_if<ChannelWait>(&item_)) {
+        wait_ = *w;
+        prep_.finish(ready_);  // the path stops before the wait
         continue;
       }
       planner::Move& m = std::get<planner::Move>(item_);
@@ -181,6 +186,7 @@ void PathInterpolator::sample(double distance) noexcept {
   c.distance = distance;
   c.interval_jerk_limited = interval_jerk_limited_;
   c.programmed = &prog;
+  c.event_tag = std::max(c.event_tag, prog.event_tag);
   if (detail_ != Detail::axes) return;
   if (sink_ && path.parts() > 1) report_inner_joints(s_from, ps.s);
   const planner::PathPoint p = path.at(ps.s);
@@ -278,8 +284,8 @@ Status PathInterpolator::step() noexcept {
   Cycle& c = cycle_;
   const double t_start = static_cast<double>(c.index) * t_;
   for (int zero_waits = 0;; ++zero_waits) {
-    if (wait_left_ > 0 || held_ || zero_waits >= kMaxZeroWaits) {
-      const bool waiting = wait_left_ > 0 || held_;
+    if (wait_left_ > 0 || held_ || channel_held_ || zero_waits >= kMaxZeroWaits) {
+      const bool waiting = wait_left_ > 0 || held_ || channel_held_;
       if (wait_left_ > 0) --wait_left_;
       ++c.index;
       c.t = static_cast<double>(c.index) * t_;
@@ -307,7 +313,19 @@ Status PathInterpolator::step() noexcept {
       wait_left_ = cycles_for(dwell_->seconds);
       wait_kind_ = Activity::dwell;
       wait_line_ = dwell_->line;
+      c.event_tag = std::max(c.event_tag, dwell_->event_tag);
       dwell_.reset();
+      continue;
+    }
+    if (wait_) {
+      // The path stands at the end of the block before: the channel decides.
+      const ChannelWait w = *wait_;
+      wait_.reset();
+      c.event_tag = std::max(c.event_tag, w.tag);
+      c.line = w.line;
+      channel_held_ = wait_handler_ != nullptr && !wait_handler_->on_wait(w);
+      wait_kind_ = Activity::channel;
+      wait_line_ = w.line;
       continue;
     }
     if (source_done_) {

@@ -44,12 +44,24 @@ using planner::AxisVec;
 
 /// G04: dwell between motions [s] (the path stops before it).
 struct Dwell {
-  double seconds = 0.0;    ///< programmed dwell time [s], >= 0
-  std::uint32_t line = 0;  ///< source line of the G04 block
+  double seconds = 0.0;         ///< programmed dwell time [s], >= 0
+  std::uint32_t line = 0;       ///< source line of the G04 block
+  std::uint32_t event_tag = 0;  ///< channel events up to this tag fire when the dwell starts
+};
+
+/// A point of the program where the channel takes over (ipo/channel_event.hpp): the path
+/// stops exactly at the end of the block before it (the look-ahead ends there, as at a dwell);
+/// the WaitHandler then decides whether the path goes on at once or holds (Activity::channel
+/// cycles) until release_wait().
+struct ChannelWait {
+  std::uint32_t line = 0;  ///< source line of the command that needs the standing path
+  std::uint32_t tag = 0;   ///< channel events up to this tag are due at the wait
 };
 
 /// One item of the program stream.
-using Item = std::variant<planner::Move, Dwell>;
+using Item = std::variant<planner::Move, Dwell, ChannelWait>;
+
+struct ChannelEvent;  // ipo/channel_event.hpp
 
 /// Where the interpolator pulls its items from. next() fills `out` and returns true, or
 /// returns false at the end of the program. May be endless; may throw (the interpolator
@@ -58,6 +70,21 @@ class Source {
  public:
   virtual ~Source() = default;
   virtual bool next(Item& out) = 0;
+  /// The oldest channel event whose tag is <= `up_to`, removed from the source; false when
+  /// there is none (sources without events: always).
+  virtual bool take_event(std::uint32_t up_to, ChannelEvent& out) {
+    (void)up_to;
+    (void)out;
+    return false;
+  }
+};
+
+/// Called by the interpolator when the path has stopped at a ChannelWait (inside step()).
+class WaitHandler {
+ public:
+  virtual ~WaitHandler() = default;
+  /// True: the path goes on in the same step(); false: it holds until release_wait().
+  virtual bool on_wait(const ChannelWait& wait) noexcept = 0;
 };
 
 /// A Source from a callable `bool(Item&)` (the adapter from the interpreter's commands).
@@ -106,6 +133,7 @@ enum class Activity : std::uint8_t {
   dwell,       ///< G04 dwell
   exact_stop,  ///< G60 / G360: waiting for the window and the settling time
   starved,     ///< the source gave nothing that moves (zero-length blocks only)
+  channel,     ///< the path stands at a ChannelWait until the channel releases it
 };
 
 /// The cycle just done.
@@ -129,6 +157,9 @@ struct Cycle {
   bool held = false;    ///< motion cycle in which the path stands by feed hold / override 0
   double factor = 1.0;  ///< override factor of the plan the path follows (0 while holding)
   double lost = 0.0;    ///< time lost to override and holds in this cycle [s] (< 0: gained)
+  /// Channel events up to this tag are due: the largest event_tag of the blocks and dwells
+  /// started so far and of the waits reached (never decreases).
+  std::uint32_t event_tag = 0;
   // --- indp: set by ipo::Channel (docs/ipo.md "INDP axes and technology functions")
   /// Bit i: axis i is driven by its INDP motion in this cycle; x, v, a, j are then the INDP
   /// setpoint's, and the axis is not part of the block's contour.
@@ -189,6 +220,12 @@ class PathInterpolator {
   bool holding_exact_stop() const noexcept { return held_; }
   /// Channel hook: ends the exact-stop wait; the next step() goes on with the path.
   void release_exact_stop() noexcept { held_ = false; }
+  /// Channel hook: who decides at a ChannelWait (null: the path goes on at once).
+  void set_wait_handler(WaitHandler* handler) noexcept { wait_handler_ = handler; }
+  /// The path holds at a ChannelWait.
+  bool holding_channel() const noexcept { return channel_held_; }
+  /// Channel hook: ends the hold at a ChannelWait; the next step() goes on with the path.
+  void release_wait() noexcept { channel_held_ = false; }
 
   // --- override additions (issue 13, docs/ipo.md "Override and feed hold")
   /// Path override factor (1 = 100 %), in [0, max_override(type)]; takes effect from the next
@@ -206,6 +243,7 @@ class PathInterpolator {
   struct PendingDwell {
     double seconds = 0.0;
     std::uint32_t line = 0;
+    std::uint32_t event_tag = 0;
   };
   /// Keeps the window full: pulls items, prepares Moves, pushes segments. Returns false on error.
   bool fill() noexcept;
@@ -260,6 +298,9 @@ class PathInterpolator {
   bool finished_ = false;
   bool failed_ = false;
   std::optional<PendingDwell> dwell_;  ///< G04 after the moves in the window
+  std::optional<ChannelWait> wait_;    ///< ChannelWait after the moves in the window
+  WaitHandler* wait_handler_ = nullptr;
+  bool channel_held_ = false;  ///< the path holds at a ChannelWait until release_wait()
 
   bool active_ = false;  ///< cur_ is being traversed
   planner::PlannedSegment cur_;

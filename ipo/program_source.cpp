@@ -191,7 +191,15 @@ void ProgramSource::answer(const interp::Barrier& barrier) {
   interp_.resume(state);
 }
 
+bool ProgramSource::take_event(std::uint32_t up_to, ChannelEvent& out) {
+  if (events_.empty() || events_.front().tag > up_to) return false;
+  out = std::move(events_.front());
+  events_.pop_front();
+  return true;
+}
+
 bool ProgramSource::pull(Item& out) {
+  if (end_reached_) return false;
   for (;;) {
     if (queue_size_ > 0) {  // spline pieces first: they come before the next command
       out = queue_[queue_head_];
@@ -204,15 +212,51 @@ bool ProgramSource::pull(Item& out) {
       answer(*open_);
       open_.reset();
     }
-    std::optional<interp::Command> cmd =
-        store_ != nullptr ? interp_.next() : interp_.next_decode_only();
+    std::optional<interp::Command> cmd;
+    if (held_) {  // --- indp: the command after a block's INDP_SYN commands
+      cmd = std::move(held_);
+      held_.reset();
+    } else {
+      cmd = store_ != nullptr ? interp_.next() : interp_.next_decode_only();
+    }
     if (!cmd) {
       if (const core::Diagnostic* e = interp_.error()) error_ = *e;
       return false;
     }
+    // --- indp: the INDP_SYN commands of one block share one ChannelWait after the last of them,
+    // so their axes start together and the next block waits for all (isg-language.md 6.1).
+    if (syn_wait_) {
+      const auto* a = std::get_if<interp::AxisCommand>(&cmd->body);
+      const bool same_block = cmd->line == syn_wait_->line && cmd->file == file_ &&
+                              is_channel_event(cmd->body) &&
+                              (!stops_path(cmd->body) || a != nullptr);
+      if (!same_block) {
+        held_ = std::move(cmd);
+        out = *syn_wait_;
+        given_ = syn_wait_->tag;
+        syn_wait_.reset();
+        return true;
+      }
+    }
     line_ = cmd->line;
     const std::uint32_t line = cmd->line;
     file_ = cmd->file;
+    if (is_channel_event(cmd->body)) {
+      const bool stops = stops_path(cmd->body);
+      const bool syn = std::holds_alternative<interp::AxisCommand>(cmd->body) && stops;
+      events_.push_back(ChannelEvent{++tag_, line, cmd->file, std::move(cmd->body)});
+      if ((syn || syn_wait_) && tag_ - given_ < kMaxPendingEvents) {  // --- indp
+        syn_wait_ = ChannelWait{line, tag_};  // the block's later events are due with it
+        continue;
+      }
+      syn_wait_.reset();
+      if (stops || tag_ - given_ >= kMaxPendingEvents) {
+        out = ChannelWait{line, tag_};
+        given_ = tag_;
+        return true;
+      }
+      continue;
+    }
     bool produced = false;
     bool ended = false;
     std::visit(
@@ -220,17 +264,18 @@ bool ProgramSource::pull(Item& out) {
           using T = std::decay_t<decltype(body)>;
           if constexpr (std::is_same_v<T, interp::Motion>) {
             out = to_move(body, line);
+            std::get<planner::Move>(out).event_tag = tag_;
+            given_ = tag_;
             produced = true;
           } else if constexpr (std::is_same_v<T, interp::Dwell>) {
-            out = Dwell{body.seconds, line};
+            out = Dwell{body.seconds, line, tag_};
+            given_ = tag_;
             produced = true;
           } else if constexpr (std::is_same_v<T, interp::End>) {
             ended = true;
-          } else if constexpr (std::is_same_v<T, interp::Tech> ||
-                               std::is_same_v<T, interp::Message> ||
+          } else if constexpr (std::is_same_v<T, interp::Message> ||
                                std::is_same_v<T, interp::ProgramStop> ||
-                               std::is_same_v<T, interp::Flush> ||
-                               std::is_same_v<T, interp::WaitIndp>) {
+                               std::is_same_v<T, interp::Flush>) {
             // pass: no motion (M00/M01 do not stop: there is no operator to press start)
           } else if constexpr (std::is_same_v<T, interp::Barrier>) {
             if (store_ == nullptr) {
@@ -254,16 +299,14 @@ bool ProgramSource::pull(Item& out) {
             spline_point(body, line);
           } else if constexpr (std::is_same_v<T, interp::SplineEnd>) {
             spline_end(line);
-          } else if constexpr (std::is_same_v<T, interp::AxisCommand>) {
-            fail(line, "independent axis move INDP (comes with the axis layer)");
-          } else if constexpr (std::is_same_v<T, interp::MoveVelocity>) {
-            fail(line, "MC_MoveVelocity (comes with the axis layer)");
-          } else if constexpr (std::is_same_v<T, interp::ProbeArm>) {
-            fail(line, "MC_TouchProbe (comes with the conveyor simulation)");
-          } else if constexpr (std::is_same_v<T, interp::SyncIn>) {
-            fail(line, "#SYNC IN (conveyor tracking comes with the channel loop)");
-          } else if constexpr (std::is_same_v<T, interp::SyncOut>) {
-            fail(line, "#SYNC OUT (conveyor tracking comes with the channel loop)");
+          } else if constexpr (std::is_same_v<T, interp::Tech> ||
+                               std::is_same_v<T, interp::WaitIndp> ||
+                               std::is_same_v<T, interp::AxisCommand> ||
+                               std::is_same_v<T, interp::MoveVelocity> ||
+                               std::is_same_v<T, interp::ProbeArm> ||
+                               std::is_same_v<T, interp::SyncIn> ||
+                               std::is_same_v<T, interp::SyncOut>) {
+            // channel events: queued above (is_channel_event), never here
           } else if constexpr (std::is_same_v<T, interp::MachineData>) {
             fail(line, "#MACHINE DATA (parameters are fixed for a run for now)");
           } else if constexpr (std::is_same_v<T, interp::Homing>) {
@@ -275,9 +318,34 @@ bool ProgramSource::pull(Item& out) {
           }
         },
         cmd->body);
-    if (ended) return false;
+    if (ended) {
+      if (tag_ == given_) return false;
+      // Events after the last motion: the channel executes them before the program ends.
+      end_reached_ = true;
+      out = ChannelWait{line, tag_};
+      given_ = tag_;
+      return true;
+    }
     if (produced) return true;
   }
+}
+
+bool is_channel_event(const interp::CommandBody& body) noexcept {
+  return std::holds_alternative<interp::Tech>(body) ||
+         std::holds_alternative<interp::WaitIndp>(body) ||
+         std::holds_alternative<interp::AxisCommand>(body) ||
+         std::holds_alternative<interp::MoveVelocity>(body) ||
+         std::holds_alternative<interp::ProbeArm>(body) ||
+         std::holds_alternative<interp::SyncIn>(body) ||
+         std::holds_alternative<interp::SyncOut>(body);
+}
+
+bool stops_path(const interp::CommandBody& body) noexcept {
+  if (const auto* a = std::get_if<interp::AxisCommand>(&body))
+    return a->kind == interp::IndpKind::syn;
+  return std::holds_alternative<interp::WaitIndp>(body) ||
+         std::holds_alternative<interp::SyncIn>(body) ||
+         std::holds_alternative<interp::SyncOut>(body);
 }
 
 }  // namespace ncsim::ipo

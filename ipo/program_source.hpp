@@ -25,6 +25,7 @@
 
 #include <array>
 #include <cstdint>
+#include <deque>
 #include <optional>
 #include <span>
 #include <string>
@@ -32,6 +33,7 @@
 
 #include "core/diagnostic.hpp"
 #include "interp/interpreter.hpp"
+#include "ipo/channel_event.hpp"
 #include "ipo/interpolator.hpp"
 #include "machines/cs_stack.hpp"
 #include "machines/machine.hpp"
@@ -63,8 +65,11 @@ class ProgramSource final : public Source {
   /// machine has no interpolated axis.
   ProgramSource(interp::Interpreter& interp, const machines::Machine& machine);
 
-  /// The next Move or Dwell; false at End or at a program error (error() then holds it).
+  /// The next Move, Dwell or ChannelWait; false at End or at a program error (error() then
+  /// holds it).
   bool next(Item& out) override;
+  /// The oldest channel event with tag <= up_to (ipo/channel_event.hpp).
+  bool take_event(std::uint32_t up_to, ChannelEvent& out) override;
 
   /// The error that ended the stream: the interpreter's, or the adapter's NC6001. Check it
   /// after the interpolator finished: a stream that ends with an error is not a program end.
@@ -124,6 +129,14 @@ class ProgramSource final : public Source {
   const scenario::VeStore* store_ = nullptr;
   bool flush_ = false;
   std::optional<interp::Barrier> open_;  ///< a barrier waiting for the flush's Dwell to pass
+  // Channel events (ipo/channel_event.hpp).
+  std::deque<ChannelEvent> events_;  ///< not yet taken by the channel
+  std::uint32_t tag_ = 0;            ///< tag of the last event queued
+  std::uint32_t given_ = 0;          ///< largest tag handed out with an item
+  bool end_reached_ = false;         ///< End came after a final ChannelWait
+  // --- indp: a block's INDP_SYN commands share one ChannelWait (program_source.cpp).
+  std::optional<ChannelWait> syn_wait_;  ///< the wait after the block's INDP_SYN commands
+  std::optional<interp::Command> held_;  ///< the command that ended that block
 };
 
 }  // namespace ncsim::ipo

@@ -26,6 +26,7 @@ void count(Counts& n, const Cycle& c) {
       ++n[3];
       break;
     case Activity::starved:
+    case Activity::channel:  // the path stands for a channel event: "waiting" too
       ++n[4];
       break;
   }

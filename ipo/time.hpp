@@ -31,7 +31,8 @@ struct TimeSplit {
   double feed = 0.0;        ///< G01/G02/G03 motion (blends count with their incoming block)
   double dwell = 0.0;       ///< G04
   double exact_stop = 0.0;  ///< G60 / G360 settling after the path stopped
-  double starved = 0.0;     ///< cycles without anything to move (zero-length blocks only)
+  double starved = 0.0;     ///< waiting: the path stands for a channel event (ChannelWait:
+                            ///< #SYNC IN, INDP, #WAIT INDP) or has nothing to move
   double held = 0.0;        ///< motion cycles standing by feed hold / override 0 (issue 13)
 };
 

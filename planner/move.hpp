@@ -93,6 +93,9 @@ struct Move {
   std::optional<double> transvelmin;  ///< #TRANSVELMIN [mm/s]
   SlopeType slope = SlopeType::step;  ///< #SLOPE TYPE
   std::uint32_t line = 0;             ///< source line, for notes and reports
+  /// Channel events (ipo/channel_event.hpp) up to this tag fire when the block starts; tags
+  /// increase in program order, 0: none.
+  std::uint32_t event_tag = 0;
 };
 
 /// One machine axis's dynamics as the planner uses them (000 l.75, l.105-108, l.360).
