@@ -85,11 +85,14 @@ struct Playing {
   }
 };
 
-// The actions of `s` the channel cannot play yet, by name ("" if none).
+// --- indp: an INDP axis override above 100 % (002_* 2.2: 0 .. 100 %): the message, "" if none.
 std::string unplayable(const scenario::Scenario& s) {
   for (const scenario::Event& e : s.events)
     for (const scenario::Action& a : e.actions)
-      if (std::holds_alternative<scenario::AxisOverride>(a)) return "axis override";
+      if (const auto* o = std::get_if<scenario::AxisOverride>(&a); o && o->fraction > 1.0)
+        return s.file + ":" + std::to_string(e.loc.line) + ":" + std::to_string(e.loc.column) +
+               ": error: axis_override " + o->axis + " = " + human(o->fraction * 100.0) +
+               " % is above 100 %, the largest an INDP axis accepts (002 2.2) [NC6105]\n";
   return "";
 }
 
@@ -139,9 +142,8 @@ std::variant<Loaded, int> load(const ProgramOptions& options,
   interp::Options interp_options;
   auto& s = std::get<std::optional<scenario::Scenario>>(scenario);
   if (s) {
-    if (const std::string what = unplayable(*s); !what.empty()) {
-      err << "ncsim: error: not supported: scenario " << what << " events in run/time ('" << s->file
-          << "': INDP axes are not in the channel loop yet)\n";
+    if (const std::string what = unplayable(*s); !what.empty()) {  // --- indp
+      err << what;
       return kExitUsage;
     }
     if (const std::string beyond = override_beyond_type(*s, *loaded.machine); !beyond.empty()) {
@@ -512,6 +514,20 @@ class CsvSink final : public ipo::Sink {
   std::uint64_t rows_ = 0;
 };
 
+// --- indp: the technology functions output in the last step as comments
+// `# tech t=<s> line=<n> M3` (docs/ipo.md "INDP axes and technology functions").
+void write_tech(const ipo::Channel& channel, CsvSink& csv) {
+  static constexpr char kLetter[] = {'M', 'H', 'S', 'T', 'D'};
+  for (const ipo::TechOutput& o : channel.tech_outputs()) {
+    std::string s = "# tech t=" + num(o.t) + " line=" + std::to_string(o.line);
+    if (o.file != 0) s += " file=" + std::to_string(o.file);
+    s += ' ';
+    s += kLetter[static_cast<std::size_t>(o.kind)];
+    s += num(o.value) + '\n';
+    csv.text(s);
+  }
+}
+
 }  // namespace
 
 int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
@@ -594,7 +610,9 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   while ((s = channel.step()) == ipo::Status::running && !csv.failed()) {
     if (audit && channel.transformed()) audit->on_joints(channel.cycle(), channel.joints());
     progress.update(channel.cycle().t, channel.cycle().line);
+    write_tech(channel, csv);  // --- indp
   }
+  write_tech(channel, csv);  // --- indp: those of the program's final wait
   progress.finish();
   std::string error_text;
   const bool failed =

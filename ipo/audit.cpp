@@ -164,11 +164,13 @@ void Audit::on_cycle(const Cycle& c) {
   rapid_[0] = c.rapid;
   const bool any_rapid = rapid_[0] || rapid_[1] || rapid_[2];
   for (std::size_t i = 0; i < limits_.size() && !trafo; ++i) {
+    // --- indp: an INDP motion (Cycle::independent) keeps the axis's G01 limits, jerk-limited.
+    const bool indp = ((c.independent >> i) & 1u) != 0;
     Stencil st;
     st.feed = limits_[i];
-    st.rapid = c.rapid;
+    st.rapid = c.rapid && !indp;
     st.any_rapid = any_rapid;
-    st.jerk_closed = c.jerk_limited;
+    st.jerk_closed = c.jerk_limited || indp;
     st.jerk_fd = jerk_limited_[0] && jerk_limited_[1] && jerk_limited_[2];
     st.dv2 = dv_[i][0] + dv_[i][1];
     st.dv3 = st.dv2 + dv_[i][2];
@@ -189,7 +191,10 @@ void Audit::on_cycle(const Cycle& c) {
       mag = std::max(mag, std::abs(c.x[i]));
     const double tol = m.contour == planner::Contour::tolerance ? m.path_dev : 0.0;
     const double allowed = tol + 1e-9 * mag;
-    const double d = contour_distance(m, c.x);
+    AxisVec x = c.x;  // --- indp: INDP axes are not part of the block's contour
+    for (std::size_t i = 0; i < limits_.size(); ++i)
+      if (((c.independent >> i) & 1u) != 0) x[i] = m.start[i];
+    const double d = contour_distance(m, x);
     verdict_.contour_max = std::max(verdict_.contour_max, d);
     if (d / allowed > contour_ratio_) {
       contour_ratio_ = d / allowed;

@@ -22,6 +22,14 @@ Config prepared(Config config) {
   return config;
 }
 
+// --- indp:
+std::vector<IndpAxisConfig> indp_configs(const ChannelConfig& config) {
+  std::vector<IndpAxisConfig> out;
+  for (const ChannelAxis& a : config.axes)
+    out.push_back(a.indp);
+  return out;
+}
+
 std::string text(const char* format, double a, double b) {
   char buf[256];
   std::snprintf(buf, sizeof buf, format, a, b);
@@ -36,7 +44,8 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
       source_(source),
       sink_(sink),
       exact_stop_wait_max_(config.exact_stop_wait_max),
-      measured_value_wait_max_(config.measured_value_wait_max) {
+      measured_value_wait_max_(config.measured_value_wait_max),
+      indp_(indp_configs(config), ipo_.t_cycle(), config.path.start) {  // --- indp
   // --- trafo: the joint stage maps the TCP to the machine axes under #TRAFO ON.
   if (config.path.joints) stage_.emplace(config.path.joints->inverse, config.axes.size());
   if (config.axes.size() != ipo_.axis_count())
@@ -154,7 +163,8 @@ bool Channel::drive_axis(std::size_t i, const Cycle& c) noexcept {
   s.t = c.t;
   s.command_position = sp.p;
   s.actual_position = act.position;
-  s.motion_active = c.activity == Activity::motion && !waiting;
+  s.motion_active = indp_.owned(i) ? !indp_.in_position(i)  // --- indp
+                                   : c.activity == Activity::motion && !waiting;
   if (waiting) s.target = target_[i];
   const auto alarm = a.monitor.step(s);
   if (!alarm) return true;
@@ -250,9 +260,7 @@ std::optional<std::pair<const char*, std::string>> Channel::act(
                           "channel's override type (NCSIM-CHAN-630)",
                           o->fraction * 100.0, max * 100.0)};
   }
-  return std::pair{kNotSupportedId,
-                   std::string("not supported: scenario axis override events (INDP axes are not "
-                               "in the channel loop yet)")};
+  return indp_override(std::get<scenario::AxisOverride>(a));  // --- indp
 }
 
 bool Channel::play_cycle(Status& status) noexcept {
@@ -282,6 +290,7 @@ bool Channel::play_cycle(Status& status) noexcept {
 }
 
 Status Channel::step() noexcept {
+  tech_.clear();  // --- indp: the technology functions of this cycle
   if (error_) return Status::error;
   if (ended_) return *ended_;  // the player sees each cycle once
   if (player_ != nullptr) {
@@ -294,7 +303,7 @@ Status Channel::step() noexcept {
     const bool holding = ipo_.holding_channel();
     const bool done = run_events(holding ? wait_tag_ : ipo_.cycle().event_tag);
     if (error_) return Status::error;
-    if (done && holding) ipo_.release_wait();
+    if (done && holding && indp_syn_done()) ipo_.release_wait();  // --- indp: INDP_SYN axes
   }
   Status s = ipo_.step();
   if (error_) return Status::error;  // raised by an event at a ChannelWait inside the step
@@ -302,6 +311,8 @@ Status Channel::step() noexcept {
     run_events(~std::uint32_t{0});  // none left: ProgramSource ends with a ChannelWait
     if (error_) s = Status::error;
   }
+  if (s == Status::finished && !indp_.in_position_mask(0))  // --- indp: the end waits for them
+    return indp_tail();
   if (s != Status::running) {
     ended_ = s;
     return s;
@@ -340,10 +351,11 @@ Status Channel::step() noexcept {
       }
     }
   }
+  if (!indp_cycle(c)) return Status::error;  // --- indp
   for (std::size_t i = 0; i < axes_.size(); ++i)
     if (!drive_axis(i, c)) return Status::error;
   if (in_exact_stop_ && !exact_stop(c)) return Status::error;
-  if (sink_) sink_->on_cycle(c);
+  if (sink_) sink_->on_cycle(cycle());  // --- indp: with the INDP axes' setpoints
   return Status::running;
 }
 

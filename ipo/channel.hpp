@@ -43,11 +43,15 @@
 //      its start time; its V.E. writes are in the store the ProgramSource answers barriers from; a
 //      [stop] condition met ends the run before the cycle (Status::finished, scenario_stop());
 //      path override and feed hold go to PathInterpolator::set_override / set_feed_hold (an
-//      override above the type's largest is run-time error NC6102); an axis override (INDP
-//      axes are not in the channel yet) stops with NC6001 `not supported: ...`, never ignored.
+//      override above the type's largest is run-time error NC6102); an axis override goes to
+//      IndpAxes::set_override (002 2.2; NC6105 above 100 % or for no channel axis).
 //      During 1, every block that starts (also several in one cycle: the interpolator's
 //      BlockObserver) goes to Player::block_started and its `line` events fire at once
 //      (Player::fire_lines): they belong to the cycle in which the block starts.
+//   2b. (indp) INDP axes (ipo/channel_indp.cpp): IndpAxes::step(); an axis the INDP layer owns
+//      gets its INDP setpoint instead of the path's (Cycle::independent); X[INDP_SYN ...],
+//      X[INDP_ASYN ...], #WAIT INDP and M/H/S/T/D arrive as channel events (docs/ipo.md "INDP
+//      axes and technology functions").
 // Invariants: step() never throws (an error ends the stream with Status::error); it is
 // deterministic (encoder noise is seeded per axis); memory is the interpolator's (bounded by
 // the look-ahead window) plus one control model and one monitor per axis.
@@ -63,6 +67,7 @@
 #include "axes/monitor.hpp"
 #include "ipo/channel_event.hpp"
 #include "ipo/conveyor_sync.hpp"  // --- conveyor-sync
+#include "ipo/indp_axes.hpp"
 #include "ipo/interpolator.hpp"
 #include "ipo/joint_stage.hpp"
 #include "machines/machine.hpp"
@@ -85,12 +90,28 @@ inline constexpr const char* kHeldForeverId = "NC6301";
 /// NC9054: #SYNC IN waited longer than ChannelConfig::measured_value_wait_max for its measured
 /// value (no workpiece edge latched).
 inline constexpr const char* kMeasuredValueWaitId = "NC9054";
+// --- indp:
+/// NC6103: the path programs an axis while its INDP motion runs or away from where it left it.
+inline constexpr const char* kIndpPathId = "NC6103";
+/// NC6105: a scenario axis override names no channel axis or is outside 0 .. 100 %.
+inline constexpr const char* kIndpOverrideId = "NC6105";
+
+/// A technology function the channel output (M/H/S/T/D, to the PLC side).
+struct TechOutput {
+  double t = 0.0;          ///< [s] end of the cycle in which it was output
+  std::uint32_t line = 0;  ///< source line
+  std::uint16_t file = 0;  ///< interp::Command::file (0: the main program)
+  interp::TechKind kind = interp::TechKind::m;
+  double value = 0.0;  ///< the function's number (M3 -> 3)
+};
 
 /// One interpolated axis as the channel drives it.
 struct ChannelAxis {
   std::string name;                     ///< axis name (messages)
   axes::PositionControlParams control;  ///< position control model (axes/control.hpp)
   axes::AxisMonitorParams monitor;      ///< soft limits, lag, exact stop, ...
+  // --- indp:
+  IndpAxisConfig indp;  ///< the axis as an INDP axis (ipo/indp_axes.hpp)
 };
 
 struct ChannelConfig {
@@ -136,8 +157,8 @@ class Channel {
   /// One interpolation cycle. Never throws. Status::error: the source failed (message()) or
   /// a run-time error stopped the channel (run_time_error()).
   Status step() noexcept;
-  /// The path record of the last cycle step() reported.
-  const Cycle& cycle() const noexcept { return ipo_.cycle(); }
+  /// The path record of the last cycle step() reported (INDP axes: their setpoints).
+  const Cycle& cycle() const noexcept { return shown_ ? *shown_ : ipo_.cycle(); }
   /// Command, actual position and following error of every axis after the last cycle.
   const AxesState& axes() const noexcept { return state_; }
   /// Why the channel stopped at run time, if it did.
@@ -178,6 +199,13 @@ class Channel {
   }
   /// The channel's conveyor tracking state; null without FCT_DLM.
   const ConveyorSync* conveyor_sync() const noexcept { return sync_ ? &*sync_ : nullptr; }
+  // --- indp: independent axes (ipo/channel_indp.cpp, docs/ipo.md "INDP axes and technology
+  // functions"). Conveyor tracking calls indp().interrupt(axis) at #SYNC IN.
+  IndpAxes& indp() noexcept { return indp_; }
+  const IndpAxes& indp() const noexcept { return indp_; }
+  /// The technology functions (M/H/S/T/D) the channel output in the last step(), in program
+  /// order (`run` writes them as CSV comments; docs/ipo.md "INDP axes and technology functions").
+  const std::vector<TechOutput>& tech_outputs() const noexcept { return tech_; }
 
  private:
   /// What executing a channel event gave (ipo/channel_events.cpp).
@@ -262,6 +290,21 @@ class Channel {
   /// Applies one scenario action to the interpolator; the run-time error (id, text) it
   /// raises, if any.
   std::optional<std::pair<const char*, std::string>> act(const scenario::Action& a) noexcept;
+  // --- indp: (ipo/channel_indp.cpp)
+  /// After step 2: advances the INDP axes and gives each axis they own its INDP setpoint;
+  /// false when a run-time error stopped the channel (NC6103).
+  bool indp_cycle(const Cycle& c) noexcept;
+  /// A scenario axis override: the run-time error (NC6105) it raises, if any.
+  std::optional<std::pair<const char*, std::string>> indp_override(
+      const scenario::AxisOverride& o) noexcept;
+  /// Event handlers: X[INDP_SYN / INDP_ASYN ...], #WAIT INDP, M/H/S/T/D.
+  EventOutcome indp_command(const interp::AxisCommand& c, const ChannelEvent& e) noexcept;
+  EventOutcome indp_wait(const interp::WaitIndp& w, const ChannelEvent& e) noexcept;
+  EventOutcome indp_tech(const interp::Tech& t, const ChannelEvent& e) noexcept;
+  /// True when every INDP_SYN motion started is in position (the next block may start).
+  bool indp_syn_done() noexcept;
+  /// A cycle after the path's end while INDP axes still move (the program end waits for them).
+  Status indp_tail() noexcept;
 
   JointRelay relay_;
   WaitRelay wait_relay_{*this};
@@ -299,6 +342,14 @@ class Channel {
   std::uint32_t sync_tag_ = 0;        ///< --- conveyor-sync: the event being executed
   /// --- conveyor-sync: where the path stands after a catch-up / departure until it moves.
   std::optional<AxisVec> sync_hold_;
+  // --- indp:
+  IndpAxes indp_;
+  Cycle patched_;                 ///< the cycle with the INDP axes' setpoints
+  const Cycle* shown_ = nullptr;  ///< &patched_ while INDP axes are owned, else null
+  planner::AxisMask syn_ = 0;     ///< axes of INDP_SYN motions the path waits for
+  std::vector<TechOutput> tech_;  ///< technology functions output in this step
+  Cycle tail_;                    ///< the last cycle, then the cycles after the path's end
+  bool in_tail_ = false;          ///< the path has ended, INDP axes still move
 };
 
 }  // namespace ncsim::ipo

@@ -21,6 +21,8 @@ ChannelConfig channel_config(const machines::Machine& machine, double t_cycle) {
     a.name = axis.name;
     a.control = axes::make_position_control(axis);  // P-AXIS-00099, NCSIM-AXIS-023
     a.monitor = axes::make_monitor_params(axis);    // P-AXIS-00177/178/236/532, NCSIM-AXIS-024..
+    a.indp = indp_axis_config(axis);  // --- indp: G01 / G00 dynamics, soft limits, rule
+    a.indp.machine_index = i;
     c.axes.push_back(std::move(a));
   }
   // --- conveyor-sync: conveyor tracking (docs/conveyor.md "Synchronisation")

@@ -26,14 +26,13 @@ Channel::EventOutcome Channel::dispatch(const ChannelEvent& e) noexcept {
   return std::visit(
       [&](const auto& body) -> EventOutcome {
         using T = std::decay_t<decltype(body)>;
+        // --- indp: M/H/S/T/D, #WAIT INDP, INDP (ipo/channel_indp.cpp)
         if constexpr (std::is_same_v<T, interp::Tech>) {
-          return EventOutcome::done;  // M/H/S/T: no PLC side to answer yet
+          return indp_tech(body, e);
         } else if constexpr (std::is_same_v<T, interp::WaitIndp>) {
-          return EventOutcome::done;  // no INDP axis moves in the channel yet: nothing to wait for
+          return indp_wait(body, e);
         } else if constexpr (std::is_same_v<T, interp::AxisCommand>) {
-          return event_error(
-              kNotSupportedId,
-              "not supported: independent axis move INDP (comes with the axis layer)", e);
+          return indp_command(body, e);
         } else if constexpr (std::is_same_v<T, interp::Motion>) {  // --- conveyor-sync
           return on_sync_motion(body, e);
         } else if constexpr (std::is_same_v<T, interp::MoveVelocity>) {  // --- conveyor-sync
@@ -74,7 +73,7 @@ bool Channel::run_events(std::uint32_t up_to) noexcept {
 
 bool Channel::on_wait(const ChannelWait& wait) noexcept {
   wait_tag_ = wait.tag;
-  return !blocked_ && run_events(wait.tag);
+  return !blocked_ && run_events(wait.tag) && indp_syn_done();  // --- indp: INDP_SYN axes
 }
 
 }  // namespace ncsim::ipo

@@ -104,24 +104,48 @@ TEST_CASE("#WAIT INDP stops the path at the end of the block before it, then it 
   CHECK(waited.cycles.back().x[0] == doctest::Approx(20.0).epsilon(1e-12));
 }
 
-TEST_CASE("NC6001: an event kind the channel cannot execute yet stops the run at its line") {
+// --- indp: INDP moves are executed now (ipo/channel_indp.cpp, docs/ipo.md "INDP axes ...").
+TEST_CASE("INDP_ASYN rides on the next block and runs beside the path; the end waits for it") {
+  const Result plain = run("%t\nG01 X10 F3000\nX20\nM30\n");
   const Result r = run("%t\nG01 X10 F3000\nY[INDP_ASYN G01 POS5 FEED600]\nX20\nM30\n");
-  REQUIRE(r.status == ipo::Status::error);
-  REQUIRE(r.error);
-  CHECK(r.error->id == "NC6001");
-  CHECK(r.error->line == 3);
-  CHECK(r.error->message.find("not supported: independent axis move INDP") == 0);
-  CHECK(r.error->t > 0.1);  // at run time, when the path reached it
-  CHECK(r.cycles.back().x[0] > 5.0);
+  REQUIRE(r.status == ipo::Status::finished);
+  CHECK_FALSE(r.error);
+  // The path does not stop for it: it reaches X20 when it would without.
+  std::size_t k20 = 0;
+  while (k20 < r.cycles.size() && r.cycles[k20].x[0] != 20.0)
+    ++k20;
+  CHECK(k20 + 1 == plain.cycles.size());
+  CHECK(r.cycles[k20].x[1] > 0.0);
+  CHECK(r.cycles[k20].x[1] < 5.0);
+  CHECK(r.cycles.back().x[1] == 5.0);  // the program end waits for the INDP axis
+  CHECK(r.cycles.back().activity == ipo::Activity::channel);
+}
+
+TEST_CASE(
+    "INDP_SYN: the path stops before it and the next block starts when the axes are in "
+    "position") {
+  const Result r =
+      run("%t\nG01 X10 F3000\nY[INDP_SYN G01 POS5 FEED600] Z[INDP_SYN G00 POS2]\n"
+          "X20\nM30\n");
+  REQUIRE(r.status == ipo::Status::finished);
+  CHECK_FALSE(r.error);
+  bool y_and_z_together = false;
+  for (const ipo::Cycle& c : r.cycles) {
+    if (c.x[1] > 0.0 && c.x[1] < 5.0 && c.x[2] > 0.0 && c.x[2] < 2.0) y_and_z_together = true;
+    if (c.x[0] > 10.0) {  // line 4 runs only with Y and Z in position
+      CHECK(c.x[1] == 5.0);
+      CHECK(c.x[2] == 2.0);
+    }
+  }
+  CHECK(y_and_z_together);  // one block's INDP_SYN axes start together
+  CHECK(r.cycles.back().x[0] == 20.0);
 }
 
 TEST_CASE("events after the last motion run before the program ends, never dropped") {
   const Result r = run("%t\nG01 X10 F3000\nY[INDP_SYN G01 POS5 FEED600]\nM30\n");
-  REQUIRE(r.status == ipo::Status::error);
-  REQUIRE(r.error);
-  CHECK(r.error->id == "NC6001");
-  CHECK(r.error->line == 3);
-  CHECK(r.cycles.back().x[0] == 10.0);  // the path stood at the end of line 2
+  REQUIRE(r.status == ipo::Status::finished);
+  CHECK(r.cycles.back().x[0] == 10.0);
+  CHECK(r.cycles.back().x[1] == 5.0);
 }
 
 TEST_CASE("a ChannelWait answered at once costs no cycle; held, it costs exactly the held cycles") {

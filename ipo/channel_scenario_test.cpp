@@ -189,18 +189,29 @@ TEST_CASE("path override and feed hold events reach the interpolator") {
 }
 
 TEST_CASE(
-    "NC6102: a path override above the type's largest stops the channel; axis override is NC6001") {
+    "NC6102: a path override above the type's largest stops the channel; NC6105 an axis "
+    "override above 100 % or of no channel axis") {
   const Played r = play(kBranch, "[ve]\nSEL = 0\n[[event]]\nat = 0.1\noverride = 150\n");
   CHECK(r.status == ipo::Status::error);
   REQUIRE(r.error);
   CHECK(r.error->id == std::string(ipo::kOverrideRangeId));
   CHECK(r.cycles.size() == 100);  // the run ends before the cycle at 0.1 s
 
+  // An axis with no INDP motion keeps the override for its next one (002_* 2.2).
+  const Played plain = play(kBranch, "[ve]\nSEL = 0\n");
   const Played ax =
       play(kBranch, "[ve]\nSEL = 0\n[[event]]\nat = 0.1\naxis_override = { X = 50 }\n");
-  REQUIRE(ax.error);
-  CHECK(ax.error->id == std::string(ipo::kNotSupportedId));
-  CHECK(ax.error->message.find("not supported: scenario axis override") != std::string::npos);
+  CHECK_FALSE(ax.error);
+  CHECK(ax.cycles.size() == plain.cycles.size());
+  const Played high =
+      play(kBranch, "[ve]\nSEL = 0\n[[event]]\nat = 0.1\naxis_override = { X = 150 }\n");
+  REQUIRE(high.error);
+  CHECK(high.error->id == std::string(ipo::kIndpOverrideId));
+  CHECK(high.cycles.size() == 100);
+  const Played none =
+      play(kBranch, "[ve]\nSEL = 0\n[[event]]\nat = 0.1\naxis_override = { S = 50 }\n");
+  REQUIRE(none.error);
+  CHECK(none.error->id == std::string(ipo::kIndpOverrideId));
 }
 
 TEST_CASE("reruns under a scenario are identical to the bit") {

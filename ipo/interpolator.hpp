@@ -160,6 +160,10 @@ struct Cycle {
   /// Channel events up to this tag are due: the largest event_tag of the blocks and dwells
   /// started so far and of the waits reached (never decreases).
   std::uint32_t event_tag = 0;
+  // --- indp: set by ipo::Channel (docs/ipo.md "INDP axes and technology functions")
+  /// Bit i: axis i is driven by its INDP motion in this cycle; x, v, a, j are then the INDP
+  /// setpoint's, and the axis is not part of the block's contour.
+  planner::AxisMask independent = 0;
 };
 
 /// A joint between two planned segments, passed inside a cycle (Detail::axes only).

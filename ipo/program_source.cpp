@@ -214,8 +214,13 @@ bool ProgramSource::pull(Item& out) {
       answer(*open_);
       open_.reset();
     }
-    std::optional<interp::Command> cmd =
-        store_ != nullptr ? interp_.next() : interp_.next_decode_only();
+    std::optional<interp::Command> cmd;
+    if (held_) {  // --- indp: the command after a block's INDP_SYN commands
+      cmd = std::move(held_);
+      held_.reset();
+    } else {
+      cmd = store_ != nullptr ? interp_.next() : interp_.next_decode_only();
+    }
     // --- operator: the program's V.E. assignments decoded so far reach the shared store
     // before any barrier after them is answered.
     if (store_ != nullptr)
@@ -224,6 +229,21 @@ bool ProgramSource::pull(Item& out) {
     if (!cmd) {
       if (const core::Diagnostic* e = interp_.error()) error_ = *e;
       return false;
+    }
+    // --- indp: the INDP_SYN commands of one block share one ChannelWait after the last of them,
+    // so their axes start together and the next block waits for all (isg-language.md 6.1).
+    if (syn_wait_) {
+      const auto* a = std::get_if<interp::AxisCommand>(&cmd->body);
+      const bool same_block = cmd->line == syn_wait_->line && cmd->file == file_ &&
+                              is_channel_event(cmd->body) &&
+                              (!stops_path(cmd->body) || a != nullptr);
+      if (!same_block) {
+        held_ = std::move(cmd);
+        out = *syn_wait_;
+        given_ = syn_wait_->tag;
+        syn_wait_.reset();
+        return true;
+      }
     }
     line_ = cmd->line;
     const std::uint32_t line = cmd->line;
@@ -242,7 +262,13 @@ bool ProgramSource::pull(Item& out) {
       sync_motion_ = true;  // --- conveyor-sync (end)
     if (is_channel_event(cmd->body)) {
       const bool stops = stops_path(cmd->body);
+      const bool syn = std::holds_alternative<interp::AxisCommand>(cmd->body) && stops;
       events_.push_back(ChannelEvent{++tag_, line, cmd->file, std::move(cmd->body)});
+      if ((syn || syn_wait_) && tag_ - given_ < kMaxPendingEvents) {  // --- indp
+        syn_wait_ = ChannelWait{line, tag_};  // the block's later events are due with it
+        continue;
+      }
+      syn_wait_.reset();
       if (stops || tag_ - given_ >= kMaxPendingEvents) {
         out = ChannelWait{line, tag_};
         given_ = tag_;

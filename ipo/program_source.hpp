@@ -157,6 +157,9 @@ class ProgramSource final : public Source {
   bool trafo_on_ = false;              ///< #TRAFO ON as handed out
   // --- end trafo
   bool sync_motion_ = false;  ///< --- conveyor-sync: the next Motion is a catch-up / departure
+  // --- indp: a block's INDP_SYN commands share one ChannelWait (program_source.cpp).
+  std::optional<ChannelWait> syn_wait_;  ///< the wait after the block's INDP_SYN commands
+  std::optional<interp::Command> held_;  ///< the command that ended that block
 };
 
 }  // namespace ncsim::ipo

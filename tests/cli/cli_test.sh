@@ -55,9 +55,9 @@ expect "time with a scenario's V.E. values runs" 0 'external\.nc: [0-9.e-]+ s' '
   time "$fixtures/external.nc" --scenario "$fixtures/scenario_ve.toml"
 expect "time plays a scenario with an override event" 0 'external\.nc: [0-9.e-]+ s' '' -- \
   time "$fixtures/external.nc" --scenario "$fixtures/scenario_events.toml"
-printf '[[event]]\nat = 0.1\naxis_override = { X = 50 }\n' >"$work/axis_override.toml"
-expect "run refuses axis override events (no INDP axes yet), status 2" 2 '' \
-  'not supported: scenario axis override events in run/time' -- \
+printf '[[event]]\nat = 0.1\naxis_override = { X = 150 }\n' >"$work/axis_override.toml"
+expect "run refuses an INDP axis override above 100 % with its position, status 2" 2 '' \
+  'axis_override\.toml:1:[0-9]+: error: axis_override X = 150 % is above 100 %.*\[NC6105\]' -- \
   run "$fixtures/external.nc" --scenario "$work/axis_override.toml"
 printf '[[event]]\nat = 0.1\noverride = 150\n' >"$work/override_150.toml"
 expect "an override above 100 % under type REDUCED is refused with its position, status 2" 2 '' \
