@@ -150,9 +150,9 @@ expect "the program folder's scenario.toml is used by default" 0 'X=3\.2500' '' 
   trace "$work/sprog/external.nc"
 expect "--scenario overrides the program folder's scenario.toml" 0 'X=7\.5000' '' -- \
   trace "$work/sprog/external.nc" --scenario "$fixtures/scenario_ve.toml"
-printf '[belt]\nvelocity = 300\n' >"$work/sprog/scenario.toml"
+printf '[conveyor]\nmode = "encoder"\nvelocity = 300\n' >"$work/sprog/scenario.toml"
 expect "a conveyor table in the default scenario is refused, status 2" 2 '' \
-  'scenario\.toml:1:[0-9]+: error: not supported: \[belt\] \(conveyor tracking\).*\[NC7007\]' -- \
+  'scenario\.toml:1:[0-9]+: error: not supported: \[conveyor\] is valid, but the channel loop does not play.*\[NC7007\]' -- \
   check "$work/sprog/external.nc"
 expect "the bundled part_variants program checks with its scenario" 0 'part_variants\.nc: ok' '' -- \
   check "$root/programs/part_variants/part_variants.nc"
