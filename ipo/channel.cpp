@@ -242,6 +242,8 @@ void Channel::block_started(std::uint32_t line) noexcept {
 std::optional<std::pair<const char*, std::string>> Channel::act(
     const scenario::Action& a) noexcept {
   if (std::holds_alternative<scenario::VeWrite>(a)) return std::nullopt;  // in player_->ve()
+  // MCV_SetReducedFilter: play_cycle hands player_->reduced_filter() to the Port every cycle.
+  if (std::holds_alternative<scenario::ReducedFilter>(a)) return std::nullopt;
   if (const auto* h = std::get_if<scenario::FeedHold>(&a)) {
     ipo_.set_feed_hold(h->on);
     return std::nullopt;
