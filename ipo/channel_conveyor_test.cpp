@@ -177,6 +177,26 @@ TEST_CASE("#SYNC IN: catch-up, standing still in PCS1, F relative to the workpie
   CHECK(r.phase.back() == ipo::SyncPhase::off);
 }
 
+TEST_CASE("a belt slowing down during the catch-up: the tool still ends standing still in PCS1") {
+  ipo::test::FakePort port(300.0);
+  port.latch_at_ = 1;
+  port.v_change_at_ = 60;  // inside the catch-up (it starts at step 3)
+  port.v_new_ = 200.0;
+  const Tracked r = track(kSync, &port);
+  REQUIRE_FALSE(r.error);
+  bool changed_while_catching = false;
+  std::size_t dwell = 0;
+  for (std::size_t k = 0; k < r.x.size(); ++k) {
+    if (k == 60 && r.phase[k] == ipo::SyncPhase::catching_up) changed_while_catching = true;
+    if (r.phase[k] == ipo::SyncPhase::tracking && r.line[k] == 5) {
+      ++dwell;
+      CHECK(r.x[k][0] - r.offset[k][0] == doctest::Approx(100.0).epsilon(1e-12));
+    }
+  }
+  CHECK(changed_while_catching);
+  CHECK(dwell >= 490);
+}
+
 TEST_CASE("#SYNC IN without a conveyor world attached is NC6001 naming the scenario [conveyor]") {
   const Tracked r = track(kSync, nullptr);
   CHECK(r.status == ipo::Status::error);
