@@ -337,9 +337,12 @@ class Channel {
   std::optional<JointStage> stage_;
   bool transformed_ = false;
   JointSetpoint joints_{};
-  std::optional<ConveyorSync> sync_;  ///< --- conveyor-sync: with FCT_DLM only
-  conveyor::Port* port_ = nullptr;    ///< the attached conveyor world (reduced filter)
-  std::uint32_t sync_tag_ = 0;        ///< --- conveyor-sync: the event being executed
+  std::optional<ConveyorSync> sync_;           ///< --- conveyor-sync: with FCT_DLM only
+  conveyor::Port* port_ = nullptr;             ///< the attached conveyor world (reduced filter)
+  double measured_value_wait_max_ = 600.0;     ///< ChannelConfig::measured_value_wait_max [s]
+  std::uint64_t measure_wait_cycles_max_ = 0;  ///< the same in cycles
+  std::uint64_t measure_waited_ = 0;           ///< cycles #SYNC IN waited so far
+  std::uint32_t sync_tag_ = 0;                 ///< --- conveyor-sync: the event being executed
   /// --- conveyor-sync: where the path stands after a catch-up / departure until it moves.
   std::optional<AxisVec> sync_hold_;
   // --- indp:
