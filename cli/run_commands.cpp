@@ -73,7 +73,7 @@ struct Playing {
     player = std::make_unique<scenario::Player>(*in.scenario);
     // A V.E. write at run time must reach the barrier after it: then the path stops before
     // every V.E. read (the kernel's synchronous read); without writes the answer is known.
-    bool writes = false;
+    bool writes = in.scenario->workpiece_ve();  // written when a workpiece is measured
     for (const scenario::Event& e : in.scenario->events)
       for (const scenario::Action& a : e.actions)
         writes = writes || std::holds_alternative<scenario::VeWrite>(a);

@@ -334,6 +334,18 @@ Status Channel::step() noexcept {
   // --- conveyor-sync: the conveyor world's cycle (latch, 50653, the Port's errors).
   if (sync_) {
     if (auto e = sync_->step(c.t)) return stop(e->id.c_str(), std::move(e->message), c, -1);
+    // The V.E. values of the workpiece just measured go to the world's store, where the next
+    // barrier reads them (docs/conveyor.md "Wiring").
+    if (port_ != nullptr && player_ != nullptr && port_->last_latch().workpiece != ve_workpiece_) {
+      const conveyor::LatchInfo& l = port_->last_latch();
+      ve_workpiece_ = l.workpiece;
+      try {
+        for (const auto& [name, value] : l.ve)
+          player_->ve().write(name, value);
+      } catch (...) {
+        std::abort();  // out of memory writing a V.E. value
+      }
+    }
   }
   if (!map_to_axes(c)) return Status::error;
   if (sync_ && !sync_check_workspace(c)) return Status::error;  // --- conveyor-sync

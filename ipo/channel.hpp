@@ -342,7 +342,8 @@ class Channel {
   double measured_value_wait_max_ = 600.0;     ///< ChannelConfig::measured_value_wait_max [s]
   std::uint64_t measure_wait_cycles_max_ = 0;  ///< the same in cycles
   std::uint64_t measure_waited_ = 0;           ///< cycles #SYNC IN waited so far
-  std::uint32_t sync_tag_ = 0;                 ///< --- conveyor-sync: the event being executed
+  std::uint64_t ve_workpiece_ = 0;  ///< the measured workpiece whose V.E. values were written
+  std::uint32_t sync_tag_ = 0;      ///< --- conveyor-sync: the event being executed
   /// --- conveyor-sync: where the path stands after a catch-up / departure until it moves.
   std::optional<AxisVec> sync_hold_;
   // --- indp:

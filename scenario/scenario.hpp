@@ -186,7 +186,14 @@ struct Scenario {
 
   /// True when something needs the channel loop (events or stop conditions), i.e. more than
   /// the V.E. initial values that decode-only commands (`check`, `trace`) read.
-  bool needs_channel() const { return !events.empty() || stop.any(); }
+  bool needs_channel() const { return !events.empty() || stop.any() || workpiece_ve(); }
+  /// True when a workpiece of `[conveyor]` carries V.E. values (written when it is measured).
+  bool workpiece_ve() const {
+    if (!conveyor) return false;
+    for (const Workpiece& w : conveyor->workpieces)
+      if (!w.ve.empty()) return true;
+    return conveyor->series && !conveyor->series->first.ve.empty();
+  }
   /// The V.E. initial value of `name` (upper case), if given.
   std::optional<double> ve_initial(std::string_view name) const;
 };

@@ -273,6 +273,9 @@ else
   failures=$((failures + 1)); echo "FAIL run keeps the trajectory up to the error"
   tail -3 "$work/sync.csv"
 fi
+expect "the measured workpiece's V.E. values reach the program after #SYNC IN" 0 \
+  ',8,[-0-9.e]+,107,0$' '' -- \
+  run --machine "$root/machines/laser_portal" -o - "$fixtures/conveyor_ve/conveyor_ve.nc"
 expect "run to a full device is a write error, status 2" 2 '' 'cannot write' -- \
   run -o /dev/full "$fixtures/long_line.nc"
 expect "run --every 0 is a usage error" 2 '' '' -- run --every 0 "$fixtures/long_line.nc"
