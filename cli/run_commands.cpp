@@ -469,6 +469,14 @@ class CsvSink final : public ipo::Sink {
         buf_ += ',';
         append_num(buf_, axes_state_ != nullptr ? axes_state_->following_error[i] : 0.0);
       }
+      if (conveyor_ != nullptr) {  // the conveyor display variables (seed 004 §6)
+        const ipo::MasterDisplay d = conveyor_->display();
+        for (const double v : {d.current_pos_master, d.current_v_master, d.current_a_master,
+                               d.pos_master_comp, d.v_master_comp, d.a_master_comp}) {
+          buf_ += ',';
+          append_num(buf_, v);
+        }
+      }
     }
     buf_ += '\n';
     ++rows_;
@@ -497,6 +505,8 @@ class CsvSink final : public ipo::Sink {
   std::uint64_t rows() const { return rows_; }
   /// The axes whose following error --detail writes (the channel's, read at each on_cycle).
   void set_axes(const ipo::AxesState* state) { axes_state_ = state; }
+  /// The channel's conveyor tracking whose display variables --detail writes (null: none).
+  void set_conveyor(const ipo::ConveyorSync* sync) { conveyor_ = sync; }
   /// --- trafo: the setpoints the axes received (the joints under #TRAFO), read at each on_cycle.
   void set_setpoints(const std::array<axes::Setpoint, planner::kMaxAxes>* set) { set_ = set; }
 
@@ -507,6 +517,7 @@ class CsvSink final : public ipo::Sink {
   std::uint64_t every_;
   bool detail_;
   const ipo::AxesState* axes_state_ = nullptr;
+  const ipo::ConveyorSync* conveyor_ = nullptr;
   const std::array<axes::Setpoint, planner::kMaxAxes>* set_ = nullptr;
   std::string buf_;
   bool failed_ = false;
@@ -596,12 +607,20 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
     for (const std::string& n : names)
       head += ',' + n + ".ferr";
   }
-  head += '\n';
-  csv.text(head);
 
   Playing playing(in, src);
   ipo::Channel channel(std::move(cfg), src, &with_report);
   playing.attach(channel, in.port.get());
+  // The conveyor display variables (seed 004 §6; docs/conveyor.md) with --detail on a channel
+  // that tracks a conveyor: mm, mm/s, mm/s^2, 0 before the first measurement.
+  if (options.detail && in.port != nullptr && channel.conveyor_sync() != nullptr) {
+    head +=
+        ",current_pos_master,current_v_master,current_a_master,pos_master_comp,v_master_comp,"
+        "a_master_comp";
+    csv.set_conveyor(channel.conveyor_sync());
+  }
+  head += '\n';
+  csv.text(head);
   csv.set_axes(&channel.axes());
   if (recorder) recorder->set_axes(&channel.axes());  // --- report:
   csv.set_setpoints(&channel.setpoints());
