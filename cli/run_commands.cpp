@@ -195,40 +195,6 @@ std::vector<std::string> axis_names(const machines::Machine& m) {
   return out;
 }
 
-const char* quantity_name(ipo::Quantity q) {
-  switch (q) {
-    case ipo::Quantity::velocity:
-      return "velocity";
-    case ipo::Quantity::acceleration:
-      return "acceleration";
-    case ipo::Quantity::jerk:
-      return "jerk";
-    case ipo::Quantity::contour:
-      return "contour";
-    case ipo::Quantity::velojump:
-      return "velojump";
-    case ipo::Quantity::transvelmin:
-      return "transvelmin";
-    case ipo::Quantity::c1_step:
-      return "c1-step";
-  }
-  return "?";
-}
-
-const char* method_name(ipo::Method m) {
-  switch (m) {
-    case ipo::Method::closed_form:
-      return "closed form";
-    case ipo::Method::finite_difference:
-      return "finite differences";
-    case ipo::Method::geometry:
-      return "geometry";
-    case ipo::Method::formula:
-      return "formula";
-  }
-  return "?";
-}
-
 // The audit verdict, one line per axis, then the documented steps and every violation listed.
 void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names, std::ostream& os) {
   for (std::size_t i = 0; i < v.axes.size(); ++i) {
@@ -254,8 +220,8 @@ void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names, s
   for (const ipo::Violation& x : v.violations) {
     os << "audit: violation t=" << num(x.t) << " s line " << x.line << " axis "
        << (x.axis < names.size() ? names[x.axis] : std::to_string(x.axis)) << ' '
-       << quantity_name(x.quantity) << " (" << method_name(x.method) << ") " << num(x.value)
-       << " > " << num(x.limit) << '\n';
+       << ipo::quantity_name(x.quantity) << " (" << ipo::method_name(x.method) << ") "
+       << num(x.value) << " > " << num(x.limit) << '\n';
   }
   if (v.violation_count > v.violations.size()) {
     os << "audit: ... " << (v.violation_count - v.violations.size()) << " more violations\n";

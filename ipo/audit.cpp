@@ -245,4 +245,38 @@ void Audit::on_joints(const Cycle& c, const JointSetpoint& s) {
   joint_jerk_limited_ = {true, joint_jerk_limited_[0], joint_jerk_limited_[1]};
 }
 
+const char* quantity_name(Quantity q) noexcept {
+  switch (q) {
+    case Quantity::velocity:
+      return "velocity";
+    case Quantity::acceleration:
+      return "acceleration";
+    case Quantity::jerk:
+      return "jerk";
+    case Quantity::contour:
+      return "contour";
+    case Quantity::velojump:
+      return "velojump";
+    case Quantity::transvelmin:
+      return "transvelmin";
+    case Quantity::c1_step:
+      return "c1-step";
+  }
+  return "?";
+}
+
+const char* method_name(Method m) noexcept {
+  switch (m) {
+    case Method::closed_form:
+      return "closed form";
+    case Method::finite_difference:
+      return "finite differences";
+    case Method::geometry:
+      return "geometry";
+    case Method::formula:
+      return "formula";
+  }
+  return "?";
+}
+
 }  // namespace ncsim::ipo

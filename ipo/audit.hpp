@@ -177,4 +177,9 @@ class Audit final : public Sink {
   bool joints_are_axes_ = false;  ///< set_joint_limits(..., true)
 };
 
+/// The name of a quantity in reports ("velocity", "c1-step", ...).
+const char* quantity_name(Quantity q) noexcept;
+/// The name of a checking method in reports ("closed form", "finite differences", ...).
+const char* method_name(Method m) noexcept;
+
 }  // namespace ncsim::ipo

@@ -70,40 +70,6 @@ void split(std::string& s, const ipo::TimeSplit& x) {
   s += '}';
 }
 
-const char* quantity(ipo::Quantity q) {
-  switch (q) {
-    case ipo::Quantity::velocity:
-      return "velocity";
-    case ipo::Quantity::acceleration:
-      return "acceleration";
-    case ipo::Quantity::jerk:
-      return "jerk";
-    case ipo::Quantity::contour:
-      return "contour";
-    case ipo::Quantity::velojump:
-      return "velojump";
-    case ipo::Quantity::transvelmin:
-      return "transvelmin";
-    case ipo::Quantity::c1_step:
-      return "c1-step";
-  }
-  return "?";
-}
-
-const char* method(ipo::Method m) {
-  switch (m) {
-    case ipo::Method::closed_form:
-      return "closed form";
-    case ipo::Method::finite_difference:
-      return "finite differences";
-    case ipo::Method::geometry:
-      return "geometry";
-    case ipo::Method::formula:
-      return "formula";
-  }
-  return "?";
-}
-
 std::string json(const ReportData& d) {
   std::string s;
   s.reserve(1 << 20);
@@ -230,8 +196,8 @@ std::string json(const ReportData& d) {
     s += (k > 0 ? ",{\"t\":" : "{\"t\":");
     exact(s, x.t);
     s += ",\"line\":" + std::to_string(x.line) + ",\"axis\":" + json_quote(axis) +
-         ",\"quantity\":" + json_quote(quantity(x.quantity)) +
-         ",\"method\":" + json_quote(method(x.method)) + ",\"value\":";
+         ",\"quantity\":" + json_quote(ipo::quantity_name(x.quantity)) +
+         ",\"method\":" + json_quote(ipo::method_name(x.method)) + ",\"value\":";
     value(s, x.value);
     s += ",\"limit\":";
     value(s, x.limit);
