@@ -342,6 +342,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
   Playing playing(in, src);
   ipo::Channel channel(std::move(cfg), src, audit.get());
   playing.attach(channel, in.port.get());
+  if (audit) audit->set_setpoints(&channel.setpoints());  // axis limits on the setpoints
   const bool channel_plays = playing.player != nullptr;
   ipo::TimeCounter counter(channel.t_cycle(), on_block);
   Progress progress(err);
@@ -577,6 +578,8 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   Playing playing(in, src);
   ipo::Channel channel(std::move(cfg), src, &with_report);
   playing.attach(channel, in.port.get());
+  if (audit) audit->set_setpoints(&channel.setpoints());  // axis limits on the setpoints
+  if (recorder) recorder->set_setpoints(&channel.setpoints());
   // The conveyor display variables (seed 004 §6; docs/conveyor.md) with --detail on a channel
   // that tracks a conveyor: mm, mm/s, mm/s^2, 0 before the first measurement.
   if (options.detail && in.port != nullptr && channel.conveyor_sync() != nullptr) {

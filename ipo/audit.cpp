@@ -175,7 +175,12 @@ void Audit::on_cycle(const Cycle& c) {
     st.dv2 = dv_[i][0] + dv_[i][1];
     st.dv3 = st.dv2 + dv_[i][2];
     st.da3 = da_[i][0] + da_[i][1] + da_[i][2];
-    check_motion(i, false, st, verdict_.axes[i], x_[i], c, c.x[i], c.v[i], c.a[i], c.j[i]);
+    if (set_ != nullptr) {
+      const axes::Setpoint& sp = (*set_)[i];
+      check_motion(i, false, st, verdict_.axes[i], x_[i], c, sp.p, sp.v, sp.a, sp.j);
+    } else {
+      check_motion(i, false, st, verdict_.axes[i], x_[i], c, c.x[i], c.v[i], c.a[i], c.j[i]);
+    }
   }
   for (std::size_t i = 0; i < limits_.size(); ++i) {
     dv_[i] = {0.0, dv_[i][0], dv_[i][1]};

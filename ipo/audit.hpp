@@ -44,6 +44,7 @@
 #include <span>
 #include <vector>
 
+#include "axes/control.hpp"
 #include "ipo/interpolator.hpp"
 #include "ipo/joint_stage.hpp"
 
@@ -118,6 +119,13 @@ class Audit final : public Sink {
 
   void on_joint(const Joint& joint) override;
   void on_cycle(const Cycle& cycle) override;
+  /// The setpoints the machine axes received (the channel's Channel::setpoints(), read at each
+  /// on_cycle): the axis limits are checked on them, the contour on the cycle's path point.
+  /// They differ from the path point while a conveyor moves PCS1 or a catch-up drives the
+  /// axes (docs/conveyor.md). Null (default): the cycle's own values.
+  void set_setpoints(const std::array<axes::Setpoint, planner::kMaxAxes>* set) noexcept {
+    set_ = set;
+  }
   /// Under a kinematic transform: the joints' limits (one per joint, 1..kMaxAxes; throws
   /// std::invalid_argument otherwise) and their positions before the first cycle.
   /// `joints_are_axes`: the joints are the machine axes the cycles hold outside #TRAFO (the
@@ -175,6 +183,7 @@ class Audit final : public Sink {
   bool joint_seen_ = false;       ///< on_joint() since the last on_joints()
   bool transformed_ = false;      ///< the last cycle ran under #TRAFO ON
   bool joints_are_axes_ = false;  ///< set_joint_limits(..., true)
+  const std::array<axes::Setpoint, planner::kMaxAxes>* set_ = nullptr;  ///< set_setpoints()
 };
 
 /// The name of a quantity in reports ("velocity", "c1-step", ...).

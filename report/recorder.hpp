@@ -88,6 +88,11 @@ class Recorder final : public ipo::Sink {
 
   /// The axes whose following error is recorded (read at each on_cycle); null: zero.
   void set_axes(const ipo::AxesState* state) noexcept { axes_state_ = state; }
+  /// The setpoints the machine axes received: the recorder's audit checks the axis limits on
+  /// them (ipo::Audit::set_setpoints).
+  void set_setpoints(const std::array<axes::Setpoint, planner::kMaxAxes>* set) noexcept {
+    audit_.set_setpoints(set);
+  }
   /// The soft position limits of the channel's axes (P-AXIS-00177 / 00178, where enabled),
   /// drawn on the position charts; `config.axes` in the recorder's axis order.
   void set_soft_limits(const ipo::ChannelConfig& config);
