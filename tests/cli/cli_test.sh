@@ -279,6 +279,8 @@ expect "the measured workpiece's V.E. values reach the program after #SYNC IN" 0
 expect "run --detail adds the conveyor display variables on a conveyor machine" 0 \
   '^t,line,X,Y,Z,.*,Z\.ferr,current_pos_master,current_v_master,current_a_master,pos_master_comp,v_master_comp,a_master_comp$' '' -- \
   run --detail --machine "$root/machines/laser_portal" -o - "$fixtures/conveyor_ve/conveyor_ve.nc"
+expect "time --audit of conveyor tracking checks the axes on their setpoints (belt offset, catch-up): ok" 0 \
+  '^audit: ok$' '' -- time --audit "$root/programs/conveyor_squares/conveyor_squares.nc"
 expect "run to a full device is a write error, status 2" 2 '' 'cannot write' -- \
   run -o /dev/full "$fixtures/long_line.nc"
 expect "run --every 0 is a usage error" 2 '' '' -- run --every 0 "$fixtures/long_line.nc"
