@@ -57,19 +57,44 @@ void Recorder::on_cycle(const ipo::Cycle& c) {
   audit_.on_cycle(c);
   counter_.add(c);
   const std::size_t n = names_.size();
+  // The axis charts show what each machine axis received (the setpoints: the joints under
+  // #TRAFO, PCS1 + the belt's travel under conveyor tracking), as the CSV and the audit do.
   for (std::size_t i = 0; i < n; ++i) {
     double* v = values_.data() + kPerAxis * i;
-    v[0] = c.x[i];
-    v[1] = c.v[i];
-    v[2] = c.a[i];
-    v[3] = c.j[i];
+    if (set_ != nullptr) {
+      const axes::Setpoint& sp = (*set_)[i];
+      v[0] = sp.p;
+      v[1] = sp.v;
+      v[2] = sp.a;
+      v[3] = sp.j;
+    } else {
+      v[0] = c.x[i];
+      v[1] = c.v[i];
+      v[2] = c.a[i];
+      v[3] = c.j[i];
+    }
     v[4] = axes_state_ != nullptr ? axes_state_->following_error[i] : 0.0;
   }
   values_[kPerAxis * n] = c.path.v;
   values_[kPerAxis * n + 1] = c.feed;
   series_.add(c.t, values_);
-  mcs_.add(std::span<const double>(c.x.data(), mcs_.dims()));
-  if (pcs1_ && !pcs1_point_.empty()) pcs1_->add(pcs1_point_);
+  // Toolpaths: on a channel that tracks a conveyor the MCS toolpath is the setpoints (the
+  // path point is in PCS1 while it is synchronised, and stands during a catch-up or departure)
+  // and the path point is the PCS1 toolpath while PCS1 moves or a catch-up drives the axes;
+  // elsewhere the path point is the MCS toolpath (the TCP under #TRAFO).
+  if (conveyor_ != nullptr && set_ != nullptr) {
+    mcs_point_.resize(mcs_.dims());
+    for (std::size_t i = 0; i < mcs_point_.size(); ++i)
+      mcs_point_[i] = (*set_)[i].p;
+    mcs_.add(mcs_point_);
+    if (conveyor_->driving() || conveyor_->moving_frame()) {
+      if (!pcs1_) pcs1_ = std::make_unique<PathThinner>(mcs_.dims(), kPathPoints);
+      pcs1_->add(std::span<const double>(c.x.data(), mcs_.dims()));
+    }
+  } else {
+    mcs_.add(std::span<const double>(c.x.data(), mcs_.dims()));
+    if (pcs1_ && !pcs1_point_.empty()) pcs1_->add(pcs1_point_);
+  }
 }
 
 void Recorder::block_done(const ipo::BlockTime& b) {

@@ -25,6 +25,7 @@
 
 #include "ipo/audit.hpp"
 #include "ipo/channel.hpp"
+#include "ipo/conveyor_sync.hpp"
 #include "ipo/interpolator.hpp"
 #include "ipo/time.hpp"
 #include "report/decimate.hpp"
@@ -92,7 +93,11 @@ class Recorder final : public ipo::Sink {
   /// them (ipo::Audit::set_setpoints).
   void set_setpoints(const std::array<axes::Setpoint, planner::kMaxAxes>* set) noexcept {
     audit_.set_setpoints(set);
+    set_ = set;
   }
+  /// The channel's conveyor tracking (null: none): the setpoints are then the MCS toolpath, and
+  /// while it moves PCS1 or drives a catch-up the cycle's path point is the PCS1 toolpath.
+  void set_conveyor(const ipo::ConveyorSync* sync) noexcept { conveyor_ = sync; }
   /// The soft position limits of the channel's axes (P-AXIS-00177 / 00178, where enabled),
   /// drawn on the position charts; `config.axes` in the recorder's axis order.
   void set_soft_limits(const ipo::ChannelConfig& config);
@@ -119,7 +124,10 @@ class Recorder final : public ipo::Sink {
   PathThinner mcs_;
   std::unique_ptr<PathThinner> pcs1_;
   std::vector<double> pcs1_point_;
-  std::vector<double> values_;  ///< one row of series_
+  const std::array<axes::Setpoint, planner::kMaxAxes>* set_ = nullptr;  ///< set_setpoints()
+  const ipo::ConveyorSync* conveyor_ = nullptr;                         ///< set_conveyor()
+  std::vector<double> mcs_point_;  ///< scratch: the MCS tool point of the cycle
+  std::vector<double> values_;     ///< one row of series_
   const ipo::AxesState* axes_state_ = nullptr;
   std::vector<std::array<double, 2>> soft_limits_;
   std::vector<ipo::BlockTime> slowest_;  ///< longest first, ties in execution order

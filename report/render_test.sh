@@ -19,8 +19,10 @@ if [[ -z $browser ]]; then
 fi
 mkdir -p "$work"
 work=$(cd "$work" && pwd)  # file:// needs an absolute path
-# The README's example, and a run that ends in a run-time error (its page shows the error).
-for program in programs/isg_reference_example/isg_reference_example.nc tests/cli/soft_limit.nc; do
+# The README's old example, a run that ends in a run-time error (its page shows the error), and
+# the conveyor example (its PCS1 toolpath panels).
+for program in programs/isg_reference_example/isg_reference_example.nc tests/cli/soft_limit.nc \
+  programs/conveyor_squares/conveyor_squares.nc; do
   example=$(basename "$program" .nc)
   page=$work/$example.html
   status=0
