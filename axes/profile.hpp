@@ -161,6 +161,10 @@ Result plan_synchronized(std::span<const MotionState> starts,
 /// `t_meet` receives the meeting time [s] (the profile's duration).
 Result plan_moving_target(const MotionState& start, double p1, double v1, const Dynamics& dynamics,
                           Profile& out, double& t_meet) noexcept;
+/// As above, meeting the target's position with velocity `v_arrive` [mm/s] instead of v1
+/// (|v_arrive| <= V): the conveyor catch-up's relative velocity FEED_CONT (ipo/catch_up).
+Result plan_moving_target(const MotionState& start, double p1, double v1, double v_arrive,
+                          const Dynamics& dynamics, Profile& out, double& t_meet) noexcept;
 
 /// Plans from `start` to the signed velocity `v_target` [mm/s] and constant velocity after it
 /// (endless motion). A sign change stops first (A-), then speeds up the other way (A+).

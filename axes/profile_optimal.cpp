@@ -216,19 +216,24 @@ Result plan_synchronized(std::span<const MotionState> starts,
 
 Result plan_moving_target(const MotionState& start, double p1, double v1, const Dynamics& dyn,
                           Profile& out, double& t_meet) noexcept {
+  return plan_moving_target(start, p1, v1, v1, dyn, out, t_meet);
+}
+
+Result plan_moving_target(const MotionState& start, double p1, double v1, double v_arrive,
+                          const Dynamics& dyn, Profile& out, double& t_meet) noexcept {
   if (!valid(dyn) || !finite(start) || !std::isfinite(p1) || !std::isfinite(v1) ||
-      std::abs(v1) > dyn.v_max) {
+      !std::isfinite(v_arrive) || std::abs(v_arrive) > dyn.v_max) {
     return Result::error_invalid_input;
   }
-  // can_meet(T): the time-optimal profile reaches p1 + v1 T with velocity v1 in at most T.
+  // can_meet(T): the time-optimal profile reaches p1 + v1 T with velocity v_arrive in at most T.
   Profile probe;
   const auto can_meet = [&](double t) {
-    return plan_position(start, PositionTarget{p1 + v1 * t, v1}, dyn, probe,
+    return plan_position(start, PositionTarget{p1 + v1 * t, v_arrive}, dyn, probe,
                          ProfileRule::time_optimal) == Result::ok &&
            probe.duration() <= t;
   };
   // Grow T from well below the static target's time, so an approaching target is met early.
-  const bool static_ok = plan_position(start, PositionTarget{p1, v1}, dyn, probe,
+  const bool static_ok = plan_position(start, PositionTarget{p1, v_arrive}, dyn, probe,
                                        ProfileRule::time_optimal) == Result::ok;
   double t_hi = (static_ok && probe.duration() > 0.0 ? probe.duration() : 1.0) * 0x1p-20;
   double t_lo = 0.0;
@@ -249,7 +254,7 @@ Result plan_moving_target(const MotionState& start, double p1, double v1, const 
     }
   }
   t_meet = t_hi;
-  const PositionTarget target{p1 + v1 * t_hi, v1};
+  const PositionTarget target{p1 + v1 * t_hi, v_arrive};
   // A meeting time found means a profile of exactly that duration exists unless the family
   // cannot be stretched to it (a moving start that would have to reverse).
   if (plan_position_of_duration(start, target, dyn, t_hi, out) == Result::ok) {
@@ -258,7 +263,7 @@ Result plan_moving_target(const MotionState& start, double p1, double v1, const 
   }
   // At the meeting time the fastest profile itself takes T (to rounding).
   if (plan_position(start, target, dyn, out, ProfileRule::time_optimal) == Result::ok &&
-      std::abs(out.duration() - t_hi) <= 1e-9 * t_hi) {
+      std::abs(out.duration() - t_hi) <= 1e-9 * std::max(t_hi, 1e-9)) {
     t_meet = out.duration();
     return Result::ok;
   }

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace ncsim::ipo {
 
@@ -15,58 +14,11 @@ using axes::PositionTarget;
 using axes::Profile;
 using axes::Result;
 
-bool finite(const MotionState& s) noexcept {
-  return std::isfinite(s.p) && std::isfinite(s.v) && std::isfinite(s.a);
-}
-
 }  // namespace
 
 Result plan_meeting(const MotionState& start, double p1, double w, double r,
                     const axes::Dynamics& dyn, Profile& out, double& t_meet) noexcept {
-  if (r == 0.0) return axes::plan_moving_target(start, p1, w, dyn, out, t_meet);
-  const double v_end = w + r;
-  if (!axes::valid(dyn) || !finite(start) || !std::isfinite(p1) || !std::isfinite(v_end) ||
-      std::abs(v_end) > dyn.v_max) {
-    return Result::error_invalid_input;
-  }
-  // The same search as plan_moving_target, with the meeting velocity w + r instead of w: the
-  // earliest T at which the fastest profile reaches p1 + w T with velocity w + r within T.
-  Profile probe;
-  const auto can_meet = [&](double t) {
-    return axes::plan_position(start, PositionTarget{p1 + w * t, v_end}, dyn, probe,
-                               axes::ProfileRule::time_optimal) == Result::ok &&
-           probe.duration() <= t;
-  };
-  const bool static_ok = axes::plan_position(start, PositionTarget{p1, v_end}, dyn, probe,
-                                             axes::ProfileRule::time_optimal) == Result::ok;
-  double t_hi = (static_ok && probe.duration() > 0.0 ? probe.duration() : 1.0) * 0x1p-20;
-  double t_lo = 0.0;
-  if (can_meet(0.0)) {
-    t_hi = 0.0;
-  } else {
-    int k = 0;
-    while (!can_meet(t_hi)) {
-      t_lo = t_hi;
-      t_hi *= 2.0;
-      if (++k > 100) return Result::error_not_synchronizable;  // the target runs away
-    }
-    for (int i = 0; i < 200 && t_hi - t_lo > 4.0 * std::numeric_limits<double>::epsilon() * t_hi;
-         ++i) {
-      const double mid = 0.5 * (t_lo + t_hi);
-      (can_meet(mid) ? t_hi : t_lo) = mid;
-    }
-  }
-  const PositionTarget target{p1 + w * t_hi, v_end};
-  if (axes::plan_position_of_duration(start, target, dyn, t_hi, out) == Result::ok) {
-    t_meet = out.duration();
-    return Result::ok;
-  }
-  if (axes::plan_position(start, target, dyn, out, axes::ProfileRule::time_optimal) == Result::ok &&
-      std::abs(out.duration() - t_hi) <= 1e-9 * std::max(t_hi, 1e-9)) {
-    t_meet = out.duration();
-    return Result::ok;
-  }
-  return Result::error_not_synchronizable;
+  return axes::plan_moving_target(start, p1, w, w + r, dyn, out, t_meet);
 }
 
 namespace {
