@@ -559,7 +559,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   if (!options.report.empty())
     recorder = std::make_unique<report::Recorder>(names, cfg.path.axes, cfg.path.channel.t_cycle,
                                                   cfg.path.start);
-  if (recorder) recorder->set_soft_limits(cfg);
+  if (recorder) recorder->set_limits(cfg);
   Tee with_report(&tee, recorder.get());
 
   std::string head = "# ncsim run\n# program: " + in.file.name() +

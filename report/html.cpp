@@ -107,6 +107,26 @@ std::string json(const ReportData& d) {
     s += ']';
   }
   s += "],";
+  key(s, "workspace");
+  if (d.workspace) {
+    const WorkspaceView& w = *d.workspace;
+    s += "{\"lower\":[";
+    for (int k = 0; k < 3; ++k) {
+      if (k > 0) s += ',';
+      value(s, w.lower[k]);
+    }
+    s += "],\"upper\":[";
+    for (int k = 0; k < 3; ++k) {
+      if (k > 0) s += ',';
+      value(s, w.upper[k]);
+    }
+    s += "],\"pos_limit\":";
+    value(s, w.pos_limit);
+    s += std::string(",\"along_x\":") + (w.along_x ? "true" : "false") +
+         ",\"sign\":" + std::to_string(w.sign) + "},";
+  } else {
+    s += "null,";
+  }
   key(s, "bucket_cycles");
   s += std::to_string(d.bucket_width);
   s += ',';

@@ -76,6 +76,58 @@
     return a;
   }
 
+  // --- Named series by name (docs/report.md "Data contract"); the conveyor's sync phases are
+  // 0/1 indicators drawn as shaded bands behind every time chart.
+  var nAxes = D.axes.length;
+  function named(name) {
+    for (var k = 0; k < D.named.length; k++)
+      if (D.named[k].name === name) return D.s[5 * nAxes + 2 + k];
+    return null;
+  }
+  var PHASES = [['phase.waiting', 'waiting for the measured value', 'rgba(255,170,0,0.16)'],
+                ['phase.catch_up', 'catch-up', 'rgba(214,39,40,0.13)'],
+                ['phase.synchronised', 'synchronised', 'rgba(44,160,44,0.13)'],
+                ['phase.leaving', 'leaving (after #SYNC OUT)', 'rgba(148,103,189,0.15)']];
+  // Per phase the [t0, t1] intervals where its indicator is 1 in a row or the next (a
+  // decimated bucket that holds the phase at all is shaded whole).
+  var bands = [];
+  PHASES.forEach(function (p) {
+    var d = named(p[0]);
+    if (!d) return;
+    var iv = [];
+    for (var r = 0; r < D.t.length; r++) {
+      if (d[r] !== 1) continue;
+      var t0 = r > 0 && d[r - 1] !== 1 ? D.t[r - 1] : D.t[r];
+      var t1 = r + 1 < D.t.length ? D.t[r + 1] : D.t[r];
+      if (iv.length > 0 && iv[iv.length - 1][1] >= t0) iv[iv.length - 1][1] = t1;
+      else iv.push([t0, t1]);
+    }
+    bands.push({label: p[1], color: p[2], iv: iv});
+  });
+  var bandCount = 0;
+  bands.forEach(function (b) { bandCount += b.iv.length; });
+  function drawBands(u) {
+    var ctx = u.ctx, top = u.bbox.top, h = u.bbox.height;
+    ctx.save();
+    bands.forEach(function (b) {
+      ctx.fillStyle = b.color;
+      b.iv.forEach(function (iv) {
+        var x0 = u.valToPos(iv[0], 'x', true), x1 = u.valToPos(iv[1], 'x', true);
+        ctx.fillRect(x0, top, Math.max(1, x1 - x0), h);
+      });
+    });
+    ctx.restore();
+  }
+  function bandLegend(parent) {
+    if (bandCount === 0) return;
+    var p = el('p', parent, 'sync phases (shaded on every time chart): ', 'note');
+    bands.forEach(function (b) {
+      var sw = el('span', p, '\u00a0\u00a0\u00a0\u00a0', 'swatch');
+      sw.style.background = b.color.replace(/[0-9.]+\)$/, '0.5)');
+      el('span', p, ' ' + b.label + ' (' + b.iv.length + ')  ');
+    });
+  }
+
   // A chart over time: defs = [{label, data, color, dash}].
   function timeChart(parent, title, unit, defs) {
     if (D.t.length === 0) return null;  // no cycle: the header says so, no empty chart
@@ -95,29 +147,43 @@
       scales: {x: {time: false}},
       axes: [{label: 't [s]'}, {label: unit, size: 70}],
       series: series,
-      hooks: {draw: [drawHook(title, points)]},
+      hooks: {draw: [drawHook(title, points)], drawClear: bandCount > 0 ? [drawBands] : []},
     }, data, box);
   }
 
-  // A toolpath view: coordinates a and b of the thinned path, equal scales.
-  function pathChart(parent, title, pts, a, b) {
+  // A toolpath view: coordinates a and b of the thinned path, equal scales. `extras`:
+  // outlines drawn with it ({label, color, dash, xs, ys}; xs/ys null: filled in across the
+  // view), included in the view.
+  function pathChart(parent, title, pts, a, b, extras) {
     var dims = D.path.dims, xs = [], ys = [];
+    extras = extras || [];
     if (pts.length < dims) return null;
     for (var i = 0; i + dims - 1 < pts.length; i += dims) {
       xs.push(pts[i + a]);
       ys.push(b < dims ? pts[i + b] : 0);
     }
     var lo = [Infinity, Infinity], hi = [-Infinity, -Infinity];
-    for (var k = 0; k < xs.length; k++) {
-      lo[0] = Math.min(lo[0], xs[k]); hi[0] = Math.max(hi[0], xs[k]);
-      lo[1] = Math.min(lo[1], ys[k]); hi[1] = Math.max(hi[1], ys[k]);
+    function grow(x, y) {
+      if (x !== null) { lo[0] = Math.min(lo[0], x); hi[0] = Math.max(hi[0], x); }
+      if (y !== null) { lo[1] = Math.min(lo[1], y); hi[1] = Math.max(hi[1], y); }
     }
+    for (var k = 0; k < xs.length; k++) grow(xs[k], ys[k]);
+    extras.forEach(function (e) {
+      for (var q = 0; q < e.xs.length; q++) grow(e.xs[q], e.ys[q]);
+    });
+
     var span = Math.max(hi[0] - lo[0], hi[1] - lo[1], 1e-3) * 1.08;
     var cx = (lo[0] + hi[0]) / 2, cy = (lo[1] + hi[1]) / 2;
+    extras.forEach(function (e) {  // a line across the view: x or y open
+      for (var q = 0; q < e.xs.length; q++) {
+        if (e.xs[q] === null) e.xs[q] = cx + (q === 0 ? -span : span) / 2;
+        if (e.ys[q] === null) e.ys[q] = cy + (q === 0 ? -span : span) / 2;
+      }
+    });
     var na = D.axes[a], nb = b < D.axes.length ? D.axes[b] : '-';
     expected++;
     var box = el('div', parent);
-    return new uPlot({
+    var u = new uPlot({
       mode: 2, title: title, width: 480, height: 480,
       legend: {show: false},
       cursor: {show: false, drag: {x: false, y: false}},
@@ -127,9 +193,40 @@
       },
       axes: [{label: na + ' [mm]'}, {label: nb + ' [mm]', size: 70}],
       series: [{}, {label: title, stroke: COLORS[0], width: 1.5, points: {show: false},
-                    paths: uPlot.paths.linear()}],
+                    paths: uPlot.paths.linear()}].concat(extras.map(function (e) {
+        return {label: e.label, stroke: e.color, width: 1, dash: e.dash, points: {show: false},
+                paths: uPlot.paths.linear()};
+      })),
       hooks: {draw: [drawHook(title, xs.length)]},
-    }, [null, [xs, ys]], box);
+    }, [null, [xs, ys]].concat(extras.map(function (e) { return [e.xs, e.ys]; })), box);
+    // uPlot's line builder decimates at >= 4 points per pixel assuming x sorted, which would
+    // draw a toolpath wrong (docs/report.md "Decimation"): an error, never a silent one.
+    if (xs.length - 1 >= 4 * u.bbox.width)
+      console.error('toolpath ' + title + ': ' + xs.length + ' points for ' +
+                    Math.round(u.bbox.width) + ' px');
+    return u;
+  }
+
+  // The conveyor workspace (seed 004 §2.1.3, §4.4) on the view of MCS coordinates a, b: the
+  // cuboid's rectangle and the pos_limit line (P-CHAN-00374, an MCS X position); on the PCS1
+  // view only the faces that stand still against the workpiece (`sides`: those parallel to
+  // a belt along MCS X), as lines across the view.
+  function workspaceOutlines(a, b, sides) {
+    var w = D.workspace;
+    if (!w || b >= 3 || a >= 3) return [];
+    var L = w.lower, U = w.upper, out = [];
+    if (!sides) {
+      out.push({label: 'workspace', color: COLORS[4], dash: [8, 4],
+                xs: [L[a], U[a], U[a], L[a], L[a]], ys: [L[b], L[b], U[b], U[b], L[b]]});
+      if (a === 0) out.push({label: 'pos_limit (P-CHAN-00374)', color: COLORS[1], dash: [3, 3],
+                             xs: [w.pos_limit, w.pos_limit], ys: [L[b], U[b]]});
+    } else if (w.along_x && a === 0) {
+      out.push({label: 'workspace face', color: COLORS[4], dash: [8, 4], xs: [null, null],
+                ys: [L[b], L[b]]});
+      out.push({label: 'workspace face', color: COLORS[4], dash: [8, 4], xs: [null, null],
+                ys: [U[b], U[b]]});
+    }
+    return out;
   }
 
   function series(i) { return D.s[i]; }
@@ -179,21 +276,31 @@
   el('p', root, D.path.mcs.length / D.path.dims + ' points, thinned to ' + fmt(D.path.tol_mm) +
      ' mm', 'note');
   var row = el('div', root, null, 'row');
+  if (D.workspace)
+    el('p', root, 'dashed: the conveyor workspace (monitored while synchronised) and, dotted, ' +
+       'pos_limit P-CHAN-00374 = ' + fmt(D.workspace.pos_limit) + ' mm', 'note');
   if (D.path.dims >= 2) {
-    pathChart(row, 'MCS ' + D.axes[0] + D.axes[1], D.path.mcs, 0, 1);
-    if (D.path.dims >= 3) pathChart(row, 'MCS ' + D.axes[0] + D.axes[2], D.path.mcs, 0, 2);
+    pathChart(row, 'MCS ' + D.axes[0] + D.axes[1], D.path.mcs, 0, 1, workspaceOutlines(0, 1, false));
+    if (D.path.dims >= 3)
+      pathChart(row, 'MCS ' + D.axes[0] + D.axes[2], D.path.mcs, 0, 2, workspaceOutlines(0, 2, false));
   }
   if (D.path.pcs1.length > 0) {
     el('h2', root, 'Toolpath (PCS1, on the conveyor)');
+    el('p', root, 'the tool on the workpiece, drawn at belt travel 0 (T0 applied)' +
+       (D.workspace && D.workspace.along_x ? '; dashed: the workspace faces beside the belt, ' +
+        'which stand still against the workpiece (those across the belt move with it)' : ''),
+       'note');
     var row2 = el('div', root, null, 'row');
-    pathChart(row2, 'PCS1 ' + D.axes[0] + D.axes[1], D.path.pcs1, 0, 1);
-    if (D.path.dims >= 3) pathChart(row2, 'PCS1 ' + D.axes[0] + D.axes[2], D.path.pcs1, 0, 2);
+    pathChart(row2, 'PCS1 ' + D.axes[0] + D.axes[1], D.path.pcs1, 0, 1, workspaceOutlines(0, 1, true));
+    if (D.path.dims >= 3)
+      pathChart(row2, 'PCS1 ' + D.axes[0] + D.axes[2], D.path.pcs1, 0, 2, workspaceOutlines(0, 2, true));
   }
 
   // --- Path velocity.
   var n = D.axes.length;
   el('h2', root, 'Path velocity');
   el('p', root, 'decimated: min and max of every ' + D.bucket_cycles + ' cycles', 'note');
+  bandLegend(root);
   timeChart(root, 'path velocity against programmed feed', 'mm/s', [
     {label: 'v_path', data: series(5 * n), color: COLORS[0]},
     {label: 'feed (programmed)', data: series(5 * n + 1), color: COLORS[1], dash: [6, 4]},
@@ -221,13 +328,38 @@
               [{label: name + '.ferr', data: series(5 * i + 4), color: COLORS[2]}]);
   });
 
-  // --- Conveyor (named series, when the run has them).
+  // --- Conveyor (named series, when the run has them): grouped charts for the known names,
+  // one chart for any other; the phase indicators are the bands, not charts.
+  var GROUPS = [
+    ['belt velocity: real, measured (raw) and filtered (what PCS1 follows)', 'mm/s',
+     [['belt_v_actual', 'real'], ['belt_v_raw', 'measured (raw)'], ['belt_v_filtered', 'filtered']]],
+    ['current_pos_master (measured) and pos_master_comp (filtered + delay compensation)', 'mm',
+     [['current_pos_master', 'current_pos_master'], ['pos_master_comp', 'pos_master_comp']]],
+    ['synchro_lag (> 0: the machine ahead of the workpiece)', 'mm',
+     [['synchro_lag', 'synchro_lag']]]];
+  var grouped = {};
+  var conveyorCharts = 0;
   if (D.named.length > 0) {
     el('h2', root, 'Conveyor');
+    bandLegend(root);
+    GROUPS.forEach(function (g) {
+      var defs = [];
+      g[2].forEach(function (m, j) {
+        grouped[m[0]] = true;
+        var d = named(m[0]);
+        if (d) defs.push({label: m[1], data: d, color: COLORS[j % 10], dash: j === 0 && g[2].length > 2 ? [4, 3] : undefined});
+      });
+      if (defs.length > 0 && timeChart(root, g[0], g[1], defs)) conveyorCharts++;
+    });
     D.named.forEach(function (s, k) {
-      timeChart(root, s.name, s.unit, [{label: s.name, data: series(5 * n + 2 + k), color: COLORS[k % 10]}]);
+      if (grouped[s.name] || s.unit === 'phase') return;
+      if (timeChart(root, s.name, s.unit, [{label: s.name, data: series(5 * n + 2 + k), color: COLORS[k % 10]}]))
+        conveyorCharts++;
     });
   }
+  status.dataset.conveyor = String(conveyorCharts);
+  status.dataset.bands = String(bandCount);
+  status.dataset.workspace = D.workspace ? '1' : '0';
 
   // --- Blocks.
   el('h2', root, 'Slowest blocks');

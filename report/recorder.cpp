@@ -1,6 +1,7 @@
 #include "report/recorder.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <utility>
@@ -28,12 +29,59 @@ Recorder::Recorder(std::vector<std::string> axes, std::span<const planner::AxisL
   soft_limits_.assign(names_.size(), {nan, nan});
 }
 
-void Recorder::set_soft_limits(const ipo::ChannelConfig& config) {
+void Recorder::set_limits(const ipo::ChannelConfig& config) {
   for (std::size_t i = 0; i < names_.size() && i < config.axes.size(); ++i) {
     const axes::SoftLimitParams& l = config.axes[i].monitor.soft_limits;
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
     soft_limits_[i] = {l.min_enabled ? l.min_position : nan, l.max_enabled ? l.max_position : nan};
   }
+  workspace_.reset();
+  if (config.conveyor) {
+    const machines::ConveyorSyncChannel& c = *config.conveyor;
+    WorkspaceView w;
+    w.lower = c.workspace.lower;
+    w.upper = c.workspace.upper;
+    w.pos_limit = c.pos_limit;
+    // PCS0 +X in MCS (R0 e_x); along MCS X when T0 turns only about X.
+    const ipo::SyncFrame frame(c);
+    const Eigen::Vector3d e = frame.direction();
+    w.along_x = std::abs(std::abs(e.x()) - 1.0) < 1e-9;
+    w.sign = e.x() < 0.0 ? -1 : 1;
+    workspace_ = w;
+  }
+}
+
+void Recorder::set_conveyor(const ipo::ConveyorSync* sync) {
+  if (started_) throw std::logic_error("report recorder: set_conveyor after the first cycle");
+  conveyor_ = sync;
+  if (sync == nullptr || sync->port() == nullptr || conveyor_series_) return;
+  // The conveyor series go after the named ones: the decimator is made anew (no cycle yet).
+  conveyor_first_ = kPerAxis * names_.size() + 2 + named_.size();
+  for (const auto& [name, unit] : kConveyorSeries)
+    named_.push_back({name, unit});
+  series_ = MinMaxDecimator(kPerAxis * names_.size() + 2 + named_.size(), kBuckets);
+  values_.resize(series_.series(), std::numeric_limits<double>::quiet_NaN());
+  conveyor_series_ = true;
+}
+
+void Recorder::conveyor_values() {
+  const conveyor::Port& port = *conveyor_->port();
+  double* v = values_.data() + conveyor_first_;
+  v[0] = port.actual().v;
+  v[1] = port.measured().v;
+  v[2] = port.master().v;
+  const ipo::MasterDisplay d = conveyor_->display();
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  v[3] = d.valid ? d.current_pos_master : nan;
+  v[4] = d.valid ? d.pos_master_comp : nan;
+  // The phases of docs/report.md "Conveyor": synchronised from the catch-up's P-CHAN-00365
+  // status (ConveyorSync::synchronised()) to #SYNC OUT.
+  const ipo::SyncPhase p = conveyor_->phase();
+  const bool sync = conveyor_->synchronised() || p == ipo::SyncPhase::tracking;
+  v[5] = p == ipo::SyncPhase::waiting ? 1.0 : 0.0;
+  v[6] = !sync && (p == ipo::SyncPhase::latched || p == ipo::SyncPhase::catching_up) ? 1.0 : 0.0;
+  v[7] = sync ? 1.0 : 0.0;
+  v[8] = p == ipo::SyncPhase::leaving || p == ipo::SyncPhase::departing ? 1.0 : 0.0;
 }
 
 void Recorder::set_pcs1(std::span<const double> p) {
@@ -77,6 +125,8 @@ void Recorder::on_cycle(const ipo::Cycle& c) {
   }
   values_[kPerAxis * n] = c.path.v;
   values_[kPerAxis * n + 1] = c.feed;
+  if (conveyor_series_) conveyor_values();
+  started_ = true;
   series_.add(c.t, values_);
   // Toolpaths: on a channel that tracks a conveyor the MCS toolpath is the setpoints (the
   // path point is in PCS1 while it is synchronised, and stands during a catch-up or departure)
@@ -119,6 +169,7 @@ ReportData Recorder::finish(const RunEnd& end) {
   d.bucket_width = series_.bucket_width();
   d.named = named_;
   d.soft_limits = soft_limits_;
+  if (conveyor_ != nullptr) d.workspace = workspace_;
   d.path_dims = mcs_.dims();
   d.path_mcs = mcs_.finish();
   d.path_tolerance = mcs_.tolerance();

@@ -6,10 +6,14 @@
 // joint and cycle and keeps, in bounded memory, what the page plots and lists.
 // Inputs: the cycle stream (ipo::Sink: on_joint / on_cycle), the axes' state after each cycle
 // (set_axes(): following error), the axis limits and cycle of the channel configuration;
-// optionally per cycle the PCS1 tool point and named conveyor series (set_pcs1(), set_value():
-// the conveyor work fills them); at the end the run's outcome (finish()).
+// optionally per cycle the PCS1 tool point and named series (set_pcs1(), set_value()); on a
+// channel that tracks a conveyor (set_conveyor()) the conveyor series, read from its
+// ipo::ConveyorSync and conveyor::Port each cycle (belt velocity real / measured / filtered,
+// current_pos_master, pos_master_comp, the sync phases), and its workspace cuboid and pos_limit
+// (set_limits()); at the end the run's outcome (finish()).
 // Outputs: ReportData: decimated time series (per axis position, v, a, j, following error;
-// path velocity and programmed feed; the named series), the thinned toolpath in MCS (and PCS1),
+// path velocity and programmed feed; the named series, the conveyor's among them), the thinned
+// toolpath in MCS (and PCS1), the workspace cuboid and pos_limit line,
 // the slowest blocks (ipo::TimeCounter, the machinery of `time --blocks`), the audit verdict
 // (ipo::Audit in the same pass), the totals, the stop reason and the run-time error.
 // Invariants: memory bounded by the decimation sizes and kSlowest, never by the run length;
@@ -19,6 +23,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -38,6 +43,17 @@ struct NamedSeries {
   std::string unit;  ///< e.g. "mm", "mm/s"
 };
 
+/// The conveyor's workspace as the toolpath panels draw it (seed 004 §2.1.3, §4.4).
+struct WorkspaceView {
+  Eigen::Vector3d lower = Eigen::Vector3d::Zero();  ///< cuboid in MCS X, Y, Z [mm]
+  Eigen::Vector3d upper = Eigen::Vector3d::Zero();  ///< (P-CHAN-00859..00864 or soft limits)
+  double pos_limit = 0.0;                           ///< P-CHAN-00374, an MCS X position [mm]
+  /// PCS0 +X in MCS is +-MCS X (T0 without rotation in XY/XZ): the Y and Z faces stand still
+  /// against the workpiece and are drawn on the PCS1 panels too.
+  bool along_x = true;
+  int sign = 1;  ///< +1: the belt conveys towards +X (P-CHAN-00363), -1: towards -X
+};
+
 /// Everything the page shows.
 struct ReportData {
   std::string program;            ///< program file as given
@@ -52,17 +68,18 @@ struct ReportData {
   std::vector<NamedSeries> named;  ///< the named series (empty: no conveyor panels)
   /// Per axis the soft position limits P-AXIS-00177 / 00178 [mm | deg] (NaN: not monitored).
   std::vector<std::array<double, 2>> soft_limits;
-  std::size_t path_dims = 0;            ///< coordinates per toolpath point (first axes, <= 3)
-  std::vector<double> path_mcs;         ///< thinned toolpath in MCS, path_dims per point
-  double path_tolerance = 0.0;          ///< thinning tolerance reached [mm]
-  std::vector<double> path_pcs1;        ///< thinned toolpath in PCS1 (empty: no conveyor frame)
-  ipo::TimeResult time_total;           ///< cycles, total, distance, split
-  std::uint64_t blocks = 0;             ///< block records (time --blocks rows)
-  std::vector<ipo::BlockTime> slowest;  ///< the kSlowest longest blocks, longest first
-  ipo::Verdict verdict;                 ///< the audit of the same pass
-  std::string outcome = "ok";           ///< "ok", "stopped" (scenario [stop]) or "error"
-  std::string stop;                     ///< the scenario's stop reason, if any
-  std::string error;                    ///< the run-time / program error text, if any
+  std::size_t path_dims = 0;               ///< coordinates per toolpath point (first axes, <= 3)
+  std::vector<double> path_mcs;            ///< thinned toolpath in MCS, path_dims per point
+  double path_tolerance = 0.0;             ///< thinning tolerance reached [mm]
+  std::vector<double> path_pcs1;           ///< thinned toolpath in PCS1 (empty: no conveyor frame)
+  std::optional<WorkspaceView> workspace;  ///< only on a channel that tracks a conveyor
+  ipo::TimeResult time_total;              ///< cycles, total, distance, split
+  std::uint64_t blocks = 0;                ///< block records (time --blocks rows)
+  std::vector<ipo::BlockTime> slowest;     ///< the kSlowest longest blocks, longest first
+  ipo::Verdict verdict;                    ///< the audit of the same pass
+  std::string outcome = "ok";              ///< "ok", "stopped" (scenario [stop]) or "error"
+  std::string stop;                        ///< the scenario's stop reason, if any
+  std::string error;                       ///< the run-time / program error text, if any
 };
 
 /// The run's end as the caller saw it.
@@ -77,8 +94,24 @@ class Recorder final : public ipo::Sink {
  public:
   static constexpr std::size_t kSlowest = 50;    ///< blocks listed
   static constexpr std::size_t kBuckets = 2000;  ///< time buckets per series
-  static constexpr std::size_t kPathPoints =
-      1600;  ///< toolpath vertices at most (< 4 x chart pixels)
+  /// Toolpath vertices at most: below 4 per pixel of a view's ~380 px plot area, where uPlot's
+  /// line builder starts a decimation that assumes x sorted (docs/report.md "Decimation").
+  static constexpr std::size_t kPathPoints = 1000;
+  /// The conveyor series set_conveyor() appends, in this order (docs/report.md "Conveyor"):
+  /// belt velocity real, measured (raw) and filtered [mm/s]; current_pos_master and
+  /// pos_master_comp [mm] (null before the first measurement); then one 0/1 indicator per sync
+  /// phase (unit "phase"): waiting, catch_up, synchronised, leaving.
+  static constexpr std::array<std::array<const char*, 2>, 9> kConveyorSeries{{
+      {"belt_v_actual", "mm/s"},
+      {"belt_v_raw", "mm/s"},
+      {"belt_v_filtered", "mm/s"},
+      {"current_pos_master", "mm"},
+      {"pos_master_comp", "mm"},
+      {"phase.waiting", "phase"},
+      {"phase.catch_up", "phase"},
+      {"phase.synchronised", "phase"},
+      {"phase.leaving", "phase"},
+  }};
 
   /// `axes` names and `limits` one per interpolated axis (same order; std::invalid_argument
   /// otherwise), `start` the positions before the first cycle, `named` the extra series.
@@ -96,11 +129,14 @@ class Recorder final : public ipo::Sink {
     set_ = set;
   }
   /// The channel's conveyor tracking (null: none): the setpoints are then the MCS toolpath, and
-  /// while it moves PCS1 or drives a catch-up the cycle's path point is the PCS1 toolpath.
-  void set_conveyor(const ipo::ConveyorSync* sync) noexcept { conveyor_ = sync; }
+  /// while it moves PCS1 or drives a catch-up the cycle's path point is the PCS1 toolpath. With
+  /// a conveyor world attached (sync->port()) the conveyor series kConveyorSeries are appended
+  /// to the named series; call before the first cycle (std::logic_error otherwise).
+  void set_conveyor(const ipo::ConveyorSync* sync);
   /// The soft position limits of the channel's axes (P-AXIS-00177 / 00178, where enabled),
-  /// drawn on the position charts; `config.axes` in the recorder's axis order.
-  void set_soft_limits(const ipo::ChannelConfig& config);
+  /// drawn on the position charts, `config.axes` in the recorder's axis order; and the
+  /// conveyor workspace and pos_limit of `config.conveyor` (drawn when set_conveyor() gave one).
+  void set_limits(const ipo::ChannelConfig& config);
   /// The PCS1 tool point of the cycle on_cycle() sees next (mm; enables the PCS1 panels).
   void set_pcs1(std::span<const double> p);
   /// Named series `index` (constructor order) for the next cycle; held until set again.
@@ -114,6 +150,7 @@ class Recorder final : public ipo::Sink {
 
  private:
   void block_done(const ipo::BlockTime& b);
+  void conveyor_values();
 
   std::vector<std::string> names_;
   std::vector<NamedSeries> named_;
@@ -130,7 +167,11 @@ class Recorder final : public ipo::Sink {
   std::vector<double> values_;     ///< one row of series_
   const ipo::AxesState* axes_state_ = nullptr;
   std::vector<std::array<double, 2>> soft_limits_;
-  std::vector<ipo::BlockTime> slowest_;  ///< longest first, ties in execution order
+  std::optional<WorkspaceView> workspace_;  ///< set_limits(), with config.conveyor
+  std::size_t conveyor_first_ = 0;          ///< values_ index of kConveyorSeries[0]
+  bool conveyor_series_ = false;            ///< kConveyorSeries are recorded
+  bool started_ = false;                    ///< a cycle was seen
+  std::vector<ipo::BlockTime> slowest_;     ///< longest first, ties in execution order
   std::uint64_t blocks_ = 0;
 };
 

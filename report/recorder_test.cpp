@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "ipo/test_port.hpp"
 #include "ipo/test_support.hpp"
 
 namespace {
@@ -140,13 +141,86 @@ TEST_CASE("soft position limits: the enabled ones, NaN where not monitored") {
   cc.axes[0].monitor.soft_limits = {true, -5.0, true, 800.0};
   cc.axes[1].monitor.soft_limits = {false, -1.0, true, 300.0};
   Recorder rec({"X", "Y"}, cc.path.axes, 0.001, cc.path.start);
-  rec.set_soft_limits(cc);
+  rec.set_limits(cc);
   const ReportData d = rec.finish({"p.nc", "m", "", ""});
   REQUIRE(d.soft_limits.size() == 2);
   CHECK(d.soft_limits[0][0] == -5.0);
   CHECK(d.soft_limits[0][1] == 800.0);
   CHECK(std::isnan(d.soft_limits[1][0]));
   CHECK(d.soft_limits[1][1] == 300.0);
+}
+
+TEST_CASE("a conveyor channel: belt velocities, current_pos_master and the sync phases") {
+  const axes::Dynamics dyn{1000.0, 5000.0, 5000.0, 50000.0};
+  const std::vector<SyncAxis> sync_axes{SyncAxis{"X", 0, dyn}, SyncAxis{"Y", 1, dyn},
+                                        SyncAxis{"Z", 2, dyn}};
+  ChannelConfig cc;
+  cc.path.axes.assign(3, axis(1000, 5000, 50000));
+  cc.axes.resize(3);
+  machines::ConveyorSyncChannel conv;
+  conv.t0_shift = Eigen::Vector3d(-100.0, 0.0, 0.0);
+  conv.workspace = {Eigen::Vector3d(-200.0, 0.0, -100.0), Eigen::Vector3d(4000.0, 2500.0, 300.0)};
+  conv.pos_limit = -190.0;
+  cc.conveyor = conv;
+  test::FakePort port(300.0);
+  ConveyorSync sync(conv, sync_axes, 0.001);
+  sync.attach(&port);
+  Recorder rec({"X", "Y", "Z"}, cc.path.axes, 0.001, cc.path.start);
+  rec.set_limits(cc);
+  rec.set_conveyor(&sync);
+  REQUIRE_FALSE(sync.sync_in([] {
+    interp::SyncIn in;
+    in.conv_vel = 300.0;
+    return in;
+  }()));
+  Cycle c{};
+  for (int k = 1; k <= 300; ++k) {
+    c.t = 0.001 * k;
+    if (k == 101) port.latches_.push_back(port.p_);  // the front edge at the sensor
+    REQUIRE_FALSE(sync.step(c.t));
+    rec.on_cycle(c);
+  }
+  CHECK_THROWS_AS(rec.set_conveyor(&sync), std::logic_error);
+  const ReportData d = rec.finish({"p.nc", "m", "", ""});
+  REQUIRE(d.named.size() == Recorder::kConveyorSeries.size());
+  const auto at = [&](const char* name) -> const std::vector<double>& {
+    for (std::size_t k = 0; k < d.named.size(); ++k)
+      if (d.named[k].name == name) return d.time.series[5 * 3 + 2 + k];
+    FAIL("no series " << name);
+    return d.time.series.front();
+  };
+  const auto& t = d.time.t;
+  REQUIRE(t.size() >= 300);  // 300 cycles: fewer than the buckets, no merge
+  for (const char* v : {"belt_v_actual", "belt_v_raw", "belt_v_filtered"})
+    CHECK(at(v).back() == doctest::Approx(300.0));
+  // Null before the measurement; then the jump to P-CHAN-00368 and the belt's travel.
+  const auto& pos = at("current_pos_master");
+  CHECK(std::isnan(pos.front()));
+  CHECK(pos.back() == doctest::Approx(-100.0 + 300.0 * 0.2).epsilon(1e-3));
+  CHECK(at("phase.waiting").front() == 1.0);
+  CHECK(at("phase.waiting").back() == 0.0);
+  CHECK(at("phase.catch_up").front() == 0.0);
+  CHECK(at("phase.catch_up").back() == 1.0);  // latched: the next motion is the catch-up
+  CHECK(at("phase.synchronised").back() == 0.0);
+  REQUIRE(d.workspace);
+  CHECK(d.workspace->lower.x() == -200.0);
+  CHECK(d.workspace->upper.y() == 2500.0);
+  CHECK(d.workspace->pos_limit == -190.0);
+  CHECK(d.workspace->along_x);
+  CHECK(d.workspace->sign == 1);
+}
+
+TEST_CASE("no conveyor tracking: no conveyor series, no workspace") {
+  ChannelConfig cc;
+  cc.path.axes.assign(3, axis(1000, 5000, 50000));
+  cc.axes.resize(3);
+  cc.conveyor = machines::ConveyorSyncChannel{};
+  Recorder rec({"X", "Y", "Z"}, cc.path.axes, 0.001, cc.path.start);
+  rec.set_limits(cc);
+  rec.set_conveyor(nullptr);
+  const ReportData d = rec.finish({"p.nc", "m", "", ""});
+  CHECK(d.named.empty());
+  CHECK_FALSE(d.workspace);
 }
 
 TEST_CASE("a recorder needs one name per axis limit") {
