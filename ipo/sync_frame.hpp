@@ -80,6 +80,9 @@ struct MasterDisplay {
   double pos_master_comp = 0.0;
   double v_master_comp = 0.0;  ///< master velocity along PCS0 X [mm/s]
   double a_master_comp = 0.0;  ///< master acceleration along PCS0 X [mm/s^2]
+  // --- line: filled by Channel::master_display() (ipo/synchro_lag.hpp), 0 elsewhere
+  /// Machine minus real workpiece along the conveying direction [mm] while the frame moves.
+  double synchro_lag = 0.0;
 };
 
 /// The display variables of `frame` for the conveyor's measured and master states.

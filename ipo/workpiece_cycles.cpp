@@ -1,0 +1,109 @@
+// ipo/workpiece_cycles: the time per workpiece of a conveyor program (see the header).
+
+#include "ipo/workpiece_cycles.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace ncsim::ipo {
+
+WorkpieceCycles::WorkpieceCycles(double t_cycle, std::function<void(const WorkpieceCycle&)> on_row)
+    : t_(t_cycle), on_row_(std::move(on_row)) {
+  if (!(t_cycle > 0.0))
+    throw std::invalid_argument("workpiece cycles: cycle time " + std::to_string(t_cycle) +
+                                " s must be > 0");
+}
+
+void WorkpieceCycles::add(SyncPhase phase, std::uint64_t workpiece) noexcept {
+  // A #SYNC IN: the phase becomes `waiting` (from any other). It also starts a row when the
+  // measured value is already there and the phase passes `waiting` within the cycle.
+  const bool entered =
+      (phase == SyncPhase::waiting && last_ != SyncPhase::waiting) ||
+      ((phase == SyncPhase::latched || phase == SyncPhase::catching_up) &&
+       (last_ == SyncPhase::off || last_ == SyncPhase::leaving || last_ == SyncPhase::departing));
+  if (entered) {
+    if (open_) close();
+    open_ = true;
+    complete_ = false;
+    start_ = cycles_;
+    row_ = Counts{};
+    workpiece_ = 0;
+  }
+  ++cycles_;
+  last_ = phase;
+  if (!open_) {
+    ++lead_in_;
+    return;
+  }
+  if (phase != SyncPhase::waiting) workpiece_ = workpiece;  // the latch of this row
+  switch (phase) {
+    case SyncPhase::waiting:
+      ++row_.waiting;
+      break;
+    case SyncPhase::latched:
+    case SyncPhase::catching_up:
+      ++row_.catch_up;
+      break;
+    case SyncPhase::tracking:
+      ++row_.machining;
+      break;
+    case SyncPhase::leaving:
+    case SyncPhase::departing:
+      ++row_.desync;
+      complete_ = true;
+      break;
+    case SyncPhase::off:
+      ++row_.off_belt;
+      // Back to off after tracking: #SYNC OUT with nothing moving with the belt.
+      if (row_.machining > 0 || row_.desync > 0) complete_ = true;
+      break;
+  }
+}
+
+void WorkpieceCycles::close() {
+  WorkpieceCycle r;
+  r.index = sum_.workpieces + 1;
+  r.workpiece = workpiece_;
+  r.t_start = static_cast<double>(start_) * t_;
+  r.waiting = static_cast<double>(row_.waiting) * t_;
+  r.catch_up = static_cast<double>(row_.catch_up) * t_;
+  r.machining = static_cast<double>(row_.machining) * t_;
+  r.desync = static_cast<double>(row_.desync) * t_;
+  r.off_belt = static_cast<double>(row_.off_belt) * t_;
+  const std::uint64_t n =
+      row_.waiting + row_.catch_up + row_.machining + row_.desync + row_.off_belt;
+  r.total = static_cast<double>(n) * t_;
+  r.complete = complete_;
+  ++sum_.workpieces;
+  sum_.sum.waiting += r.waiting;
+  sum_.sum.catch_up += r.catch_up;
+  sum_.sum.machining += r.machining;
+  sum_.sum.desync += r.desync;
+  sum_.sum.off_belt += r.off_belt;
+  sum_.sum.total += r.total;
+  if (r.complete) {
+    if (sum_.complete == 0 || r.total < sum_.total_min) sum_.total_min = r.total;
+    if (sum_.complete == 0 || r.total > sum_.total_max) sum_.total_max = r.total;
+    ++sum_.complete;
+    complete_total_ += r.total;
+  }
+  open_ = false;
+  if (on_row_) on_row_(r);
+}
+
+WorkpieceSummary WorkpieceCycles::finish() {
+  if (open_) close();
+  sum_.lead_in = static_cast<double>(lead_in_) * t_;
+  sum_.per_minute =
+      complete_total_ > 0.0 ? 60.0 * static_cast<double>(sum_.complete) / complete_total_ : 0.0;
+  WorkpieceSummary out = sum_;
+  sum_ = WorkpieceSummary{};
+  lead_in_ = 0;
+  cycles_ = 0;
+  complete_total_ = 0.0;
+  last_ = SyncPhase::off;
+  return out;
+}
+
+}  // namespace ncsim::ipo
