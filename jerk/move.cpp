@@ -124,13 +124,23 @@ double solve_bracket(double x_neg, double x_pos, double g_neg, double g_pos, dou
 // not be one interval. The candidates V, max(v_zero, v1), min(v_zero, v1), 0 (clamped to [0, V])
 // are tried from the top; between the first feasible one and the next higher one both ramps grow
 // with vm, and the root of dist(vm) = D there is the highest feasible level.
-double top_level(const Frame& f, const Limits& lim) noexcept {
-  const auto g = [&](double vm) { return level(f, vm, lim).dist - f.d; };
-  const Level top = level(f, lim.v_max, lim);
-  const double g_top = top.dist - f.d;
+// `out` receives the Level of the answer (evaluated once: the caller needs its ramps).
+double top_level(const Frame& f, const Limits& lim, Level& out) noexcept {
+  // The last level evaluated is kept: the root solver usually returns it.
+  double last_vm = -1.0;
+  const auto g = [&](double vm) {
+    out = level(f, vm, lim);
+    last_vm = vm;
+    return out.dist - f.d;
+  };
+  const auto answer = [&](double vm) {
+    if (vm != last_vm) out = level(f, vm, lim);
+    return vm;
+  };
+  const double g_top = g(lim.v_max);
   if (g_top <= 0.0) return lim.v_max;
   // Rounding of dist grows with the way the ramps travel (a detour much longer than D).
-  const double tol = kResidue * std::max(std::abs(f.d), top.path);
+  const double tol = kResidue * std::max(std::abs(f.d), out.path);  // out: the level at V
   const auto clamp = [&](double v) { return std::clamp(v, 0.0, lim.v_max); };
   const double v_zero = f.v0 + f.a0 * std::abs(f.a0) / (2.0 * lim.j_max);  // ramp 1 vanishes
   const std::array<double, 3> below{clamp(std::max(v_zero, f.v1)), clamp(std::min(v_zero, f.v1)),
@@ -140,9 +150,7 @@ double top_level(const Frame& f, const Limits& lim) noexcept {
   for (const double c : below) {
     if (!(c < hi)) continue;
     const double g_c = g(c);
-    if (g_c <= 0.0) {
-      return solve_bracket(c, hi, g_c, g_hi, tol, g);
-    }
+    if (g_c <= 0.0) return answer(solve_bracket(c, hi, g_c, g_hi, tol, g));
     hi = c;
     g_hi = g_c;
   }
@@ -314,9 +322,15 @@ Status fastest_move(const State& start, double p1, double v1, const Limits& lim,
     if (sign != sign0 && v1 != 0.0) break;
     const Frame f = frame_of(start, p1, v1, sign);
     if (f.v1 < 0.0) continue;
-    const double vm = top_level(f, lim);
+    // A target behind (d < 0) cannot be reached by a frame start that never moves backward
+    // (v0 >= 0 and the release velocity v_zero >= 0: every ramp of the family then keeps
+    // v >= 0, so every level covers a distance >= 0). Decided before any level is evaluated.
+    if (f.d < 0.0 && f.v0 >= 0.0 && f.v0 + f.a0 * std::abs(f.a0) / (2.0 * lim.j_max) >= 0.0) {
+      continue;
+    }
+    Level lv;
+    const double vm = top_level(f, lim, lv);
     if (vm < 0.0) continue;
-    const Level lv = level(f, vm, lim);
     const double t_cruise = cruise_time(f, vm, lv);
     if (lv.t_ramp + t_cruise < best) {
       best = lv.t_ramp + t_cruise;
