@@ -175,6 +175,14 @@ Result plan_position(const MotionState& start, const PositionTarget& target, con
   const double dist = s * (target.p - b.state().p);
   const double vf = std::abs(target.v);
   const double j = dyn.j_max;
+  // A target behind (an arrival velocity pointing away from it) with a start that never moves
+  // backward in this frame (v1 >= 0, release velocity v_zero >= 0): every level's chain keeps
+  // v >= 0 and covers a distance >= 0 > dist, so no level fits. Case 3 without evaluating one.
+  if (dist < 0.0 && v1 >= 0.0 && v1 + a1 * std::abs(a1) / (2.0 * j) >= 0.0) {
+    append_stop_and_return(b, target, dyn);
+    b.finish(&end);
+    return Result::ok;
+  }
   const double f_hi = level_distance(v1, a1, dyn.v_max, vf, dyn);
   double vm = dyn.v_max;
   double t_cruise = 0.0;

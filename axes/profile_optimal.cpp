@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "axes/profile.hpp"
@@ -116,41 +117,50 @@ bool plan_fastest(const MotionState& start, const PositionTarget& target, const 
     direct = true;
     return true;
   }
+  // The candidates are compared by their phase times; only the fastest is built.
   // Candidate 1: one single-peak move (reversing without a stop where the target lies behind).
-  // Candidate 2 (starts moving away): stop with A-, then the fastest move from rest; a
-  // reversing ramp can only use min(A+, A-) across v = 0, so the stop can be faster.
+  enum class Pick : std::uint8_t { none, single, two_peak, reversal };
+  Pick pick = Pick::none;
+  double t_best = std::numeric_limits<double>::infinity();
   jerk::Move m;
-  bool found = false;
   if (jerk::fastest_move(start, target.p, target.v, dyn, m) == jerk::Status::ok) {
-    ProfileBuilder b(out, start);
-    append_move(b, m);
-    b.finish(&end);
-    found = true;
+    pick = Pick::single;
+    t_best = m.time();
     // Toward the target without moving away: a stop first cannot be faster.
     direct = m.sign * start.v >= 0.0 && m.sign * (target.p - start.p) >= 0.0;
   }
-  // Candidate 3: the two-peak change (the acceleration dips toward 0 without reaching it),
+  // Candidate 2: the two-peak change (the acceleration dips toward 0 without reaching it),
   // for targets between the direct ramp and releasing the start acceleration first.
   jerk::TwoPeak tp;
   if (jerk::two_peak_move(start, target.p, target.v, dyn, tp) == jerk::Status::ok &&
-      (!found || tp.time() < out.duration())) {
-    ProfileBuilder b(out, start);
-    append_two_peak(b, tp);
-    b.finish(&end);
-    found = true;
+      tp.time() < t_best) {
+    pick = Pick::two_peak;
+    t_best = tp.time();
   }
-  // Candidate 4: turn round once on the way to an arrival velocity (the target too close to
+  // Candidate 3: turn round once on the way to an arrival velocity (the target too close to
   // arrive at v1 without a detour, or v1 against the direction of travel).
   jerk::Reversal rev;
   if (!direct && target.v != 0.0 &&
       jerk::reversal_move(start, target.p, target.v, dyn, rev) == jerk::Status::ok &&
-      (!found || rev.time() < out.duration())) {
-    ProfileBuilder b(out, start);
-    append_move(b, rev.out);
-    append_move(b, rev.back);
-    b.finish(&end);
-    found = true;
+      rev.time() < t_best) {
+    pick = Pick::reversal;
+    t_best = rev.time();
   }
+  const bool found = pick != Pick::none;
+  if (found) {
+    ProfileBuilder b(out, start);
+    if (pick == Pick::single) {
+      append_move(b, m);
+    } else if (pick == Pick::two_peak) {
+      append_two_peak(b, tp);
+    } else {
+      append_move(b, rev.out);
+      append_move(b, rev.back);
+    }
+    b.finish(&end);
+  }
+  // Candidate 4 (starts moving away): stop with A-, then the fastest move from rest; a
+  // reversing ramp can only use min(A+, A-) across v = 0, so the stop can be faster.
   if (direct || (start.v == 0.0 && start.a == 0.0)) return found;
   Profile alt;
   ProfileBuilder b(alt, start);

@@ -59,7 +59,23 @@ struct Level {
   double dist = 0.0;    // distance of all ramps [mm]
   double path = 0.0;    // sum of the ramps' |distances| [mm]: the scale of dist's rounding
   double t_ramp = 0.0;  // time of all ramps [s]
+  double slope = std::numeric_limits<double>::quiet_NaN();  // d dist / d vm [s], level_slope
 };
+
+// d dist / d vm of a level [s]. A ramp from a fixed start ending at vm with signed peak a_p
+// covers a distance whose derivative in vm is vm / a_p + |a_p| / (2J) (with a hold at the
+// limit as well: then the hold's length is what changes); the second ramp, read backward in
+// time (the same distance), is a ramp ending at vm with peak -a_p. A crossing through v = 0 is
+// fixed unless its a_zero is sqrt(2 J vm) (then the first ramp only releases it and both move
+// with vm). NaN there and where a ramp vanishes (the distance has a kink with an infinite slope).
+double level_slope(const Level& lv, double vm, double j) noexcept {
+  const double p1 = lv.first.a_peak;
+  const double p2 = lv.second.a_peak;
+  const bool cross_fixed =
+      !(lv.cross.time() > 0.0) || lv.cross.a_zero < (1.0 - 1e-9) * std::sqrt(2.0 * j * vm);
+  if (!cross_fixed || p1 == 0.0 || p2 == 0.0) return std::numeric_limits<double>::quiet_NaN();
+  return vm / p1 - vm / p2 + (std::abs(p1) + std::abs(p2)) / (2.0 * j);
+}
 
 Level level(const Frame& f, double vm, const Limits& lim) noexcept {
   Level out;
@@ -79,6 +95,7 @@ Level level(const Frame& f, double vm, const Limits& lim) noexcept {
     out.dist += st.p + d_first;
     out.path += std::abs(st.p) + std::abs(d_first);
     out.t_ramp = out.cross.time() + out.first.time() + out.second.time();
+    out.slope = level_slope(out, vm, lim.j_max);
     return out;
   }
   // (A stop from v0 < 0 only slows down: A-.)
@@ -89,6 +106,7 @@ Level level(const Frame& f, double vm, const Limits& lim) noexcept {
   out.dist += d_first;
   out.path += std::abs(d_first);
   out.t_ramp = out.first.time() + out.second.time();
+  out.slope = level_slope(out, vm, lim.j_max);
   return out;
 }
 
@@ -119,18 +137,81 @@ double solve_bracket(double x_neg, double x_pos, double g_neg, double g_pos, dou
   return x_neg;
 }
 
+// Root of g between x_neg (g <= 0) and x_pos (g > 0) like solve_bracket, for the level's chain
+// distance, whose slope is known in closed form (level_slope): a Newton step from the end
+// nearer the root (aimed a little below it, at g = -tol / 2, so it lands on the feasible side)
+// wherever it stays inside the bracket, else the regula falsi step. Returns the final x_neg.
+// `gs(x, slope)` evaluates g and stores the slope at x in `slope` (NaN where unknown).
+template <class G>
+double solve_level(double x_neg, double x_pos, double g_neg, double g_pos, double s_neg,
+                   double s_pos, double tol, G gs) noexcept {
+  double w_neg = g_neg;  // the regula falsi's (weighted) end values
+  double w_pos = g_pos;
+  int side = 0;
+  for (int i = 0; i < 200; ++i) {
+    if (std::abs(x_pos - x_neg) <= kResidue * std::max(std::abs(x_neg), std::abs(x_pos))) break;
+    const bool from_neg = -g_neg <= g_pos;
+    const double x0 = from_neg ? x_neg : x_pos;
+    const double g0 = from_neg ? g_neg : g_pos;
+    // Without a slope, an end within tol above the root (where regula falsi would crawl from
+    // the far end) steps by the secant of the bracket.
+    const double s0 = from_neg                            ? s_neg
+                      : std::isnan(s_pos) && g_pos <= tol ? (g_pos - g_neg) / (x_pos - x_neg)
+                                                          : s_pos;
+    double x = x0 - (g0 + 0.5 * tol) / s0;
+    const bool newton = s0 > 0.0 && x > std::min(x_neg, x_pos) && x < std::max(x_neg, x_pos);
+    if (!newton) {
+      x = (x_neg * w_pos - x_pos * w_neg) / (w_pos - w_neg);
+      if (!(x > std::min(x_neg, x_pos) && x < std::max(x_neg, x_pos))) x = 0.5 * (x_neg + x_pos);
+    }
+    double slope = 0.0;
+    const double gx = gs(x, slope);
+    if (gx <= 0.0) {
+      if (gx >= -tol) return x;
+      if (!newton && side == -1) w_pos *= detail::anderson_bjorck(gx, w_neg);
+      x_neg = x;
+      g_neg = w_neg = gx;
+      s_neg = slope;
+      side = newton ? 0 : -1;
+    } else {
+      if (!newton && side == 1) w_neg *= detail::anderson_bjorck(gx, w_pos);
+      x_pos = x;
+      g_pos = w_pos = gx;
+      s_pos = slope;
+      side = newton ? 0 : 1;
+    }
+  }
+  return x_neg;
+}
+
 // Highest feasible level; negative when no level in [0, V] fits. dist(vm) is not monotone:
 // it dips where a ramp vanishes (vm = v_zero of the start, vm = v1), so the feasible levels need
 // not be one interval. The candidates V, max(v_zero, v1), min(v_zero, v1), 0 (clamped to [0, V])
 // are tried from the top; between the first feasible one and the next higher one both ramps grow
 // with vm, and the root of dist(vm) = D there is the highest feasible level.
-double top_level(const Frame& f, const Limits& lim) noexcept {
-  const auto g = [&](double vm) { return level(f, vm, lim).dist - f.d; };
-  const Level top = level(f, lim.v_max, lim);
-  const double g_top = top.dist - f.d;
+// `out` receives the Level of the answer (evaluated once: the caller needs its ramps).
+double top_level(const Frame& f, const Limits& lim, Level& out) noexcept {
+  // The last level evaluated is kept: the root solver usually returns it.
+  double last_vm = -1.0;
+  const auto g = [&](double vm) {
+    out = level(f, vm, lim);
+    last_vm = vm;
+    return out.dist - f.d;
+  };
+  const auto answer = [&](double vm) {
+    if (vm != last_vm) out = level(f, vm, lim);
+    return vm;
+  };
+  const auto gs = [&](double vm, double& slope) {
+    const double gv = g(vm);
+    slope = out.slope;
+    return gv;
+  };
+  const double g_top = g(lim.v_max);
   if (g_top <= 0.0) return lim.v_max;
+  double s_hi = out.slope;
   // Rounding of dist grows with the way the ramps travel (a detour much longer than D).
-  const double tol = kResidue * std::max(std::abs(f.d), top.path);
+  const double tol = kResidue * std::max(std::abs(f.d), out.path);  // out: the level at V
   const auto clamp = [&](double v) { return std::clamp(v, 0.0, lim.v_max); };
   const double v_zero = f.v0 + f.a0 * std::abs(f.a0) / (2.0 * lim.j_max);  // ramp 1 vanishes
   const std::array<double, 3> below{clamp(std::max(v_zero, f.v1)), clamp(std::min(v_zero, f.v1)),
@@ -141,10 +222,11 @@ double top_level(const Frame& f, const Limits& lim) noexcept {
     if (!(c < hi)) continue;
     const double g_c = g(c);
     if (g_c <= 0.0) {
-      return solve_bracket(c, hi, g_c, g_hi, tol, g);
+      return answer(solve_level(c, hi, g_c, g_hi, out.slope, s_hi, tol, gs));
     }
     hi = c;
     g_hi = g_c;
+    s_hi = out.slope;
   }
   return -1.0;
 }
@@ -314,9 +396,15 @@ Status fastest_move(const State& start, double p1, double v1, const Limits& lim,
     if (sign != sign0 && v1 != 0.0) break;
     const Frame f = frame_of(start, p1, v1, sign);
     if (f.v1 < 0.0) continue;
-    const double vm = top_level(f, lim);
+    // A target behind (d < 0) cannot be reached by a frame start that never moves backward
+    // (v0 >= 0 and the release velocity v_zero >= 0: every ramp of the family then keeps
+    // v >= 0, so every level covers a distance >= 0). Decided before any level is evaluated.
+    if (f.d < 0.0 && f.v0 >= 0.0 && f.v0 + f.a0 * std::abs(f.a0) / (2.0 * lim.j_max) >= 0.0) {
+      continue;
+    }
+    Level lv;
+    const double vm = top_level(f, lim, lv);
     if (vm < 0.0) continue;
-    const Level lv = level(f, vm, lim);
     const double t_cruise = cruise_time(f, vm, lv);
     if (lv.t_ramp + t_cruise < best) {
       best = lv.t_ramp + t_cruise;
