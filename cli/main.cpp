@@ -5,6 +5,8 @@
 //   ncsim trace PROG.nc [--machine DIR] [--scenario FILE] [--ve NAME=value] [--max-commands N]
 //   ncsim time|run|report ...           cli/run_commands.hpp (exit 3: --audit violations)
 //   ncsim golden check [PROGRAM...] | bless PROGRAM...|--all   cli/golden_command.hpp
+//   ncsim sweep PROG.nc --belt-velocity LO:HI    cli/sweep_command.hpp   (--- line)
+//   ncsim tune-delay PROG.nc                     cli/tune_delay.hpp
 //
 // Diagnostics go to stderr as `file:line:col: error: text [id]` with the source line and a
 // caret. The command never throws past main: every failure is a message and an exit status.
@@ -19,6 +21,8 @@
 #include "cli/commands.hpp"
 #include "cli/golden_command.hpp"
 #include "cli/run_commands.hpp"
+#include "cli/sweep_command.hpp"  // --- line
+#include "cli/tune_delay.hpp"     // --- line
 
 namespace {
 
@@ -65,8 +69,10 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
 
-  ncsim::cli::RunCommands run_commands(app);        // binds its options: not const, not moved
-  ncsim::cli::GoldenCommands golden_commands(app);  // likewise
+  ncsim::cli::RunCommands run_commands(app);             // binds its options: not const, not moved
+  ncsim::cli::GoldenCommands golden_commands(app);       // likewise
+  ncsim::cli::SweepCommand sweep_command(app);           // --- line: likewise
+  ncsim::cli::TuneDelayCommand tune_delay_command(app);  // --- line: likewise
 
   // A first word that is no option and no subcommand is named (CLI11 would only say that a
   // subcommand is required).
@@ -94,6 +100,9 @@ int main(int argc, char** argv) {
   try {
     if (const auto status = run_commands.dispatch(std::cout, std::cerr)) return *status;
     if (const auto status = golden_commands.dispatch(std::cout, std::cerr)) return *status;
+    if (const auto status = sweep_command.dispatch(std::cout, std::cerr)) return *status;  // line
+    if (const auto status = tune_delay_command.dispatch(std::cout, std::cerr))  // --- line
+      return *status;
     if (trace_cmd->parsed()) return ncsim::cli::run_trace(trace, std::cout, std::cerr);
     return ncsim::cli::run_check(check, std::cout, std::cerr);
   } catch (const std::bad_alloc&) {

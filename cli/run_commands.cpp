@@ -9,11 +9,14 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <ostream>
+#include <stdexcept>
 #include <variant>
 
 #include "cli/commands.hpp"
 #include "cli/run_progress.hpp"
+#include "cli/workpiece_report.hpp"  // --- line
 #include "conveyor/world.hpp"
 #include "core/diagnostic.hpp"
 #include "core/source_file.hpp"
@@ -24,6 +27,7 @@
 #include "ipo/interpolator.hpp"
 #include "ipo/program_source.hpp"
 #include "ipo/time.hpp"
+#include "ipo/workpiece_cycles.hpp"  // --- line
 #include "machines/loader.hpp"
 #include "report/html.hpp"      // --- report:
 #include "report/recorder.hpp"  // --- report:
@@ -345,11 +349,25 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
   if (audit) audit->set_setpoints(&channel.setpoints());  // axis limits on the setpoints
   const bool channel_plays = playing.player != nullptr;
   ipo::TimeCounter counter(channel.t_cycle(), on_block);
+  // --- line: the time per workpiece on a channel that tracks a conveyor (cli/workpiece_report)
+  const ipo::ConveyorSync* sync = in.port != nullptr ? channel.conveyor_sync() : nullptr;
+  std::optional<WorkpieceReport> rows;
+  std::optional<ipo::WorkpieceCycles> cycles;
+  if (sync != nullptr) {
+    try {
+      rows.emplace(options.json);
+    } catch (const std::runtime_error& e) {
+      err << "ncsim: error: " << e.what() << '\n';
+      return kExitUsage;
+    }
+    cycles.emplace(channel.t_cycle(), [&rows](const ipo::WorkpieceCycle& r) { rows->on_row(r); });
+  }
   Progress progress(err);
   ipo::Status status;
   while ((status = channel.step()) == ipo::Status::running) {
     if (audit && channel.transformed()) audit->on_joints(channel.cycle(), channel.joints());
     counter.add(channel.cycle());
+    if (cycles) cycles->add(sync->phase(), in.port->last_latch().workpiece);  // --- line
     progress.update(channel.cycle().t, channel.cycle().line);
   }
   progress.finish();
@@ -361,6 +379,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
       status == ipo::Status::error || (src.error() != nullptr && !channel.scenario_stop());
   std::string error_text;
   if (failed) error_text = failure_text(in, interp, src, channel);
+  bool spooled = true;  // --- line: the workpiece rows were copied out
 
   if (options.json) {
     if (options.blocks) out << ']';
@@ -373,6 +392,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
         << ",\"distance_mm\":" << num(r.distance) << ",\"lost_s\":" << num(r.lost)
         << ",\"split_s\":";
     json_split(out, r.split);
+    spooled = !cycles || rows->finish(cycles->finish(), out);  // --- line: before "stop"
     out << ",\"stop\":";
     json_string(out, stop_reason(failed, channel));
     out << "}\n";
@@ -385,9 +405,14 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
     // Under a scenario: the time lost to override and holds (docs/ipo.md "Time lost").
     if (channel_plays) out << "; lost to override and holds " << human(r.lost) << " s";
     out << '\n';
+    spooled = !cycles || rows->finish(cycles->finish(), out);  // --- line
     if (const auto& stop = channel.scenario_stop())
       out << "stop: " << scenario::to_string(*stop) << " (scenario '" << in.scenario->file
           << "') at " << num(r.total) << " s\n";
+  }
+  if (!spooled) {  // --- line
+    err << "ncsim: error: cannot read back the workpiece rows' temporary file\n";
+    return kExitUsage;
   }
   if (failed) {
     err << error_text;
@@ -437,9 +462,11 @@ class CsvSink final : public ipo::Sink {
         append_num(buf_, axes_state_ != nullptr ? axes_state_->following_error[i] : 0.0);
       }
       if (conveyor_ != nullptr) {  // the conveyor display variables (seed 004 §6)
-        const ipo::MasterDisplay d = conveyor_->display();
-        for (const double v : {d.current_pos_master, d.current_v_master, d.current_a_master,
-                               d.pos_master_comp, d.v_master_comp, d.a_master_comp}) {
+        // --- line: with synchro_lag (Channel::master_display, ipo/synchro_lag.hpp)
+        const ipo::MasterDisplay d = conveyor_->master_display();
+        for (const double v :
+             {d.current_pos_master, d.current_v_master, d.current_a_master, d.pos_master_comp,
+              d.v_master_comp, d.a_master_comp, d.synchro_lag}) {
           buf_ += ',';
           append_num(buf_, v);
         }
@@ -472,8 +499,8 @@ class CsvSink final : public ipo::Sink {
   std::uint64_t rows() const { return rows_; }
   /// The axes whose following error --detail writes (the channel's, read at each on_cycle).
   void set_axes(const ipo::AxesState* state) { axes_state_ = state; }
-  /// The channel's conveyor tracking whose display variables --detail writes (null: none).
-  void set_conveyor(const ipo::ConveyorSync* sync) { conveyor_ = sync; }
+  /// The channel whose conveyor display variables --detail writes (null: none). --- line
+  void set_conveyor(const ipo::Channel* channel) { conveyor_ = channel; }
   /// --- trafo: the setpoints the axes received (the joints under #TRAFO), read at each on_cycle.
   void set_setpoints(const std::array<axes::Setpoint, planner::kMaxAxes>* set) { set_ = set; }
 
@@ -484,7 +511,7 @@ class CsvSink final : public ipo::Sink {
   std::uint64_t every_;
   bool detail_;
   const ipo::AxesState* axes_state_ = nullptr;
-  const ipo::ConveyorSync* conveyor_ = nullptr;
+  const ipo::Channel* conveyor_ = nullptr;  // --- line: the channel's master_display()
   const std::array<axes::Setpoint, planner::kMaxAxes>* set_ = nullptr;
   std::string buf_;
   bool failed_ = false;
@@ -582,12 +609,13 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   if (recorder) recorder->set_setpoints(&channel.setpoints());
   if (recorder) recorder->set_conveyor(channel.conveyor_sync());
   // The conveyor display variables (seed 004 §6; docs/conveyor.md) with --detail on a channel
-  // that tracks a conveyor: mm, mm/s, mm/s^2, 0 before the first measurement.
+  // that tracks a conveyor: mm, mm/s, mm/s^2, 0 before the first measurement; synchro_lag
+  // [mm] machine minus real workpiece (ipo/synchro_lag.hpp), 0 unless the frame moves.
   if (options.detail && in.port != nullptr && channel.conveyor_sync() != nullptr) {
     head +=
         ",current_pos_master,current_v_master,current_a_master,pos_master_comp,v_master_comp,"
-        "a_master_comp";
-    csv.set_conveyor(channel.conveyor_sync());
+        "a_master_comp,synchro_lag";  // --- line: synchro_lag
+    csv.set_conveyor(&channel);
   }
   head += '\n';
   csv.text(head);
@@ -671,6 +699,75 @@ int run_report(const ReportOptions& options, std::ostream& out, std::ostream& er
     return kExitUsage;
   }
   return run_run(run, out, err);
+}
+
+// --- line: one headless run (cli/run_commands.hpp LineRun)
+LineOutcome run_line(const ProgramOptions& program, std::optional<std::uint64_t> cycle_us,
+                     const LineRun& run, std::ostream& err) {
+  LineOutcome o;
+  auto loaded = load(program, cycle_us, err);
+  if (const int* status = std::get_if<int>(&loaded)) {
+    o.status = *status;
+    o.error = "the program, machine or scenario could not be loaded";
+    return o;
+  }
+  Loaded& in = std::get<Loaded>(loaded);
+  if (run.adjust) {
+    run.adjust(in.machine, in.scenario);
+    if (in.machine.conveyor_axis() != nullptr) {
+      try {
+        in.port =
+            conveyor::make_port(in.machine, in.scenario ? &*in.scenario : nullptr, in.t_cycle);
+      } catch (const std::invalid_argument& e) {
+        o.status = kExitUsage;
+        o.error = std::string("the conveyor: ") + e.what();
+        return o;
+      }
+    }
+  }
+  if (run.wrap && in.port) in.port = run.wrap(std::move(in.port));
+  interp::Interpreter interp(in.file, in.machine, in.interp);
+  ipo::ProgramSource src(interp, in.machine);
+  ipo::ChannelConfig cfg = ipo::channel_config(in.machine, in.t_cycle);
+  std::unique_ptr<ipo::Audit> audit;
+  if (run.audit) {
+    audit = std::make_unique<ipo::Audit>(cfg.path.axes, cfg.path.channel.t_cycle, cfg.path.start);
+    if (cfg.path.joints) audit->set_joint_limits(cfg.path.joints->joints, cfg.path.start, true);
+  }
+  Playing playing(in, src);
+  ipo::Channel channel(std::move(cfg), src, audit.get());
+  playing.attach(channel, in.port.get());
+  if (audit) audit->set_setpoints(&channel.setpoints());
+  ipo::Status status;
+  while ((status = channel.step()) == ipo::Status::running) {
+    if (audit && channel.transformed()) audit->on_joints(channel.cycle(), channel.joints());
+    if (run.on_cycle) run.on_cycle(channel);
+  }
+  o.t_end = channel.cycle().t;
+  const bool failed =
+      status == ipo::Status::error || (src.error() != nullptr && !channel.scenario_stop());
+  if (failed) {
+    o.status = kExitProgramErrors;
+    o.error = first_line(failure_text(in, interp, src, channel));
+    if (const auto& e = channel.run_time_error()) {
+      o.id = e->id;
+    } else if (const core::Diagnostic* d = src.error() ? src.error() : interp.error()) {
+      o.id = d->id;
+    }
+    return o;
+  }
+  if (audit && !audit->verdict().ok()) {
+    const ipo::Verdict& v = audit->verdict();
+    o.status = kExitAudit;
+    o.audit_violations = v.violation_count;
+    if (!v.violations.empty()) {
+      const ipo::Violation& x = v.violations.front();
+      o.error = "audit: t=" + num(x.t) + " s line " + std::to_string(x.line) + " " +
+                std::string(ipo::quantity_name(x.quantity)) + " " + num(x.value) + " > " +
+                num(x.limit);
+    }
+  }
+  return o;
 }
 
 RunCommands::RunCommands(CLI::App& app) {

@@ -14,11 +14,17 @@
 // cli/run_progress.hpp).
 
 #include <cstdint>
+#include <functional>  // --- line
 #include <iosfwd>
+#include <memory>  // --- line
 #include <optional>
 #include <string>
 
 #include "cli/commands.hpp"
+#include "conveyor/port.hpp"      // --- line
+#include "ipo/channel.hpp"        // --- line
+#include "machines/machine.hpp"   // --- line
+#include "scenario/scenario.hpp"  // --- line
 
 namespace CLI {
 class App;
@@ -63,6 +69,29 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err);
 int run_run(const RunOptions& options, std::ostream& out, std::ostream& err);
 /// `ncsim report`: run_run without CSV, with the report page (exit statuses as run).
 int run_report(const ReportOptions& options, std::ostream& out, std::ostream& err);
+
+// --- line: one headless run of a program for `ncsim sweep` / `ncsim tune-delay` and the
+// accuracy benchmark (cli/line_commands.hpp): the pass of `time --audit`, with the world
+// adjusted before it is built and the channel shown to the caller after every cycle.
+struct LineRun {
+  /// Changes the loaded machine and scenario before the conveyor world is built (may be empty).
+  std::function<void(machines::Machine&, std::optional<scenario::Scenario>&)> adjust;
+  /// Wraps the conveyor world (may be empty): e.g. a belt velocity override.
+  std::function<std::unique_ptr<conveyor::Port>(std::unique_ptr<conveyor::Port>)> wrap;
+  /// Sees the channel after every running cycle (may be empty).
+  std::function<void(const ipo::Channel&)> on_cycle;
+  bool audit = true;  ///< the audit on the axes' setpoints (as `time --audit`)
+};
+struct LineOutcome {
+  int status = kExitOk;  ///< kExitOk, kExitProgramErrors (error), kExitUsage (load), kExitAudit
+  std::string id;        ///< the error's id (run-time or program error), "" when none
+  std::string error;     ///< the error's first line, or the audit's first violation
+  double t_end = 0.0;    ///< [s] end of the last cycle
+  std::uint64_t audit_violations = 0;
+};
+/// Loads `program` (diagnostics on `err`) and runs it once as `run` says.
+LineOutcome run_line(const ProgramOptions& program, std::optional<std::uint64_t> cycle_us,
+                     const LineRun& run, std::ostream& err);
 
 /// The `time` and `run` subcommands of `app`: the hook main.cpp calls.
 class RunCommands {

@@ -199,6 +199,9 @@ class Channel {
   }
   /// The channel's conveyor tracking state; null without FCT_DLM.
   const ConveyorSync* conveyor_sync() const noexcept { return sync_ ? &*sync_ : nullptr; }
+  // --- line: the display variables of seed 004 §6 with synchro_lag (ipo/synchro_lag.hpp) of
+  // the last cycle; all 0 without FCT_DLM (ipo/channel_lag.cpp).
+  MasterDisplay master_display() const noexcept;
   // --- indp: independent axes (ipo/channel_indp.cpp, docs/ipo.md "INDP axes and technology
   // functions"). Conveyor tracking calls indp().interrupt(axis) at #SYNC IN.
   IndpAxes& indp() noexcept { return indp_; }

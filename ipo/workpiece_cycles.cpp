@@ -76,12 +76,11 @@ void WorkpieceCycles::close() {
   r.total = static_cast<double>(n) * t_;
   r.complete = complete_;
   ++sum_.workpieces;
-  sum_.sum.waiting += r.waiting;
-  sum_.sum.catch_up += r.catch_up;
-  sum_.sum.machining += r.machining;
-  sum_.sum.desync += r.desync;
-  sum_.sum.off_belt += r.off_belt;
-  sum_.sum.total += r.total;
+  sums_.waiting += row_.waiting;
+  sums_.catch_up += row_.catch_up;
+  sums_.machining += row_.machining;
+  sums_.desync += row_.desync;
+  sums_.off_belt += row_.off_belt;
   if (r.complete) {
     if (sum_.complete == 0 || r.total < sum_.total_min) sum_.total_min = r.total;
     if (sum_.complete == 0 || r.total > sum_.total_max) sum_.total_max = r.total;
@@ -95,12 +94,21 @@ void WorkpieceCycles::close() {
 WorkpieceSummary WorkpieceCycles::finish() {
   if (open_) close();
   sum_.lead_in = static_cast<double>(lead_in_) * t_;
+  sum_.sum.waiting = static_cast<double>(sums_.waiting) * t_;
+  sum_.sum.catch_up = static_cast<double>(sums_.catch_up) * t_;
+  sum_.sum.machining = static_cast<double>(sums_.machining) * t_;
+  sum_.sum.desync = static_cast<double>(sums_.desync) * t_;
+  sum_.sum.off_belt = static_cast<double>(sums_.off_belt) * t_;
+  sum_.sum.total = static_cast<double>(sums_.waiting + sums_.catch_up + sums_.machining +
+                                       sums_.desync + sums_.off_belt) *
+                   t_;
   sum_.per_minute =
       complete_total_ > 0.0 ? 60.0 * static_cast<double>(sum_.complete) / complete_total_ : 0.0;
   WorkpieceSummary out = sum_;
   sum_ = WorkpieceSummary{};
   lead_in_ = 0;
   cycles_ = 0;
+  sums_ = Counts{};
   complete_total_ = 0.0;
   last_ = SyncPhase::off;
   return out;

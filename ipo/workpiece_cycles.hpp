@@ -82,6 +82,7 @@ class WorkpieceCycles {
   std::uint64_t workpiece_ = 0;
   SyncPhase last_ = SyncPhase::off;
   Counts row_;
+  Counts sums_;  ///< cycles per field over every row (summed exactly, multiplied once)
   WorkpieceSummary sum_;
   double complete_total_ = 0.0;  ///< sum of the complete rows' totals [s]
 };

@@ -32,7 +32,8 @@ Machine load_bundled(std::string_view name) {
 }
 
 TEST_CASE("every bundled machine loads without any diagnostic") {
-  for (const char* name : {"laser_portal", "delta_picker", "static_saw", "portal_3x"}) {
+  for (const char* name :
+       {"laser_portal", "delta_picker", "static_saw", "portal_3x", "laser_portal_encoder"}) {
     CAPTURE(name);
     const Machine m = load_bundled(name);
     CHECK(m.name == name);

@@ -7,3 +7,6 @@ add_test(NAME cli_tests
 add_test(NAME cli_random_scenarios
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/random_scenarios.sh $<TARGET_FILE:ncsim>
                  ${PROJECT_SOURCE_DIR} 12 13)
+# --- line: time per workpiece, synchro_lag, sweep, tune-delay (docs/conveyor.md)
+add_test(NAME cli_line_test
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/line_test.sh $<TARGET_FILE:ncsim>)

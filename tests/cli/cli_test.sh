@@ -277,7 +277,7 @@ expect "the measured workpiece's V.E. values reach the program after #SYNC IN" 0
   ',8,[-0-9.e]+,107,0$' '' -- \
   run --machine "$root/machines/laser_portal" -o - "$fixtures/conveyor_ve/conveyor_ve.nc"
 expect "run --detail adds the conveyor display variables on a conveyor machine" 0 \
-  '^t,line,X,Y,Z,.*,Z\.ferr,current_pos_master,current_v_master,current_a_master,pos_master_comp,v_master_comp,a_master_comp$' '' -- \
+  '^t,line,X,Y,Z,.*,Z\.ferr,current_pos_master,current_v_master,current_a_master,pos_master_comp,v_master_comp,a_master_comp,synchro_lag$' '' -- \
   run --detail --machine "$root/machines/laser_portal" -o - "$fixtures/conveyor_ve/conveyor_ve.nc"
 expect "time --audit of conveyor tracking checks the axes on their setpoints (belt offset, catch-up): ok" 0 \
   '^audit: ok$' '' -- time --audit "$root/programs/conveyor_squares/conveyor_squares.nc"

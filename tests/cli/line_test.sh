@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# line_test.sh NCSIM: end-to-end checks of the line's limits (issue 14; docs/conveyor.md "The
+# line's limits offline"): the time per workpiece, synchro_lag in run --detail, sweep and
+# tune-delay with their errors.
+set -uo pipefail
+ncsim=$1
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+checks=0
+source "$(dirname "${BASH_SOURCE[0]}")/expect.sh"
+squares=$root/programs/conveyor_squares/conveyor_squares.nc
+comoving=$root/programs/synchro_lag_comoving/synchro_lag_comoving.nc
+
+# conveyor_squares: three sheets 600 mm apart at 100 mm/s: 6 s per sheet once the loop runs.
+expect "time: one row per workpiece, waiting / catch-up / machining / desync / off belt" 0 \
+  '^workpiece 2 \[#2\]: waiting 1\.899 s, catch-up 0\.258 s, machining 3\.301 s, desync 0\.541 s, off belt 0\.001 s, total 6 s$' \
+  '' -- time "$squares"
+expect "time: the workpieces' summary and workpieces per minute" 0 \
+  '^workpieces: 3 complete of 3; lead-in 0 s; .*per workpiece 5\.127 to 6 s; 10\.5097 per minute$' \
+  '' -- time "$squares"
+expect "time --json: the rows and the summary" 0 \
+  '"workpieces":\[\{"index":1,"workpiece":1,"t_start_s":0,.*"workpiece_summary":\{"workpieces":3,"complete":3,"lead_in_s":0,.*"total_s":17\.127,' \
+  '' -- time --json "$squares"
+# The rows add up to the total, to the cycle.
+"$ncsim" time --json "$squares" >"$work/t.json" 2>/dev/null
+checks=$((checks + 1))
+total=$(grep -o '"total_s":[0-9.e+-]*' "$work/t.json" | head -1 | cut -d: -f2)
+sum=$(grep -o '"index":[0-9]*,[^}]*"total_s":[0-9.e+-]*' "$work/t.json" | sed 's/.*"total_s"://' |
+  awk '{ s += $1 } END { printf "%.6f", s }')
+lead=$(grep -o '"lead_in_s":[0-9.e+-]*' "$work/t.json" | cut -d: -f2)
+if [[ $(awk -v a="$sum" -v b="$lead" 'BEGIN { printf "%.6f", a + b }') == $(printf "%.6f" "$total") ]]; then
+  echo "ok   the workpiece rows plus the lead-in add up to the total ($total s)"
+else
+  failures=$((failures + 1)); echo "FAIL rows $sum + lead-in $lead != total $total"
+fi
+# synchro_lag: the last column of run --detail; conveyor_squares has no dead time but the
+# listing's delay time 17455 us: the machine runs ahead of the sheet (> 0).
+"$ncsim" run --detail -o "$work/sq.csv" "$squares" 2>/dev/null
+checks=$((checks + 1))
+if awk -F, '!/^#/ && NR > 7 && $1 == 4.285 { exit !($NF > 1.4 && $NF < 1.7) }' "$work/sq.csv"; then
+  echo "ok   run --detail: synchro_lag > 0 when the delay time exceeds the delays (machine ahead)"
+else
+  failures=$((failures + 1)); echo "FAIL synchro_lag at t=4.285: $(grep '^4.285,' "$work/sq.csv")"
+fi
+
+# sweep: conveyor_squares' CONV_VEL 6000 mm/min: 50653 above 110 mm/s.
+expect "sweep: the highest belt velocity, each candidate's verdict, the workspace margin" 0 \
+  '^sweep: highest belt velocity 109\.766 mm/s \(6\.58594 m/min\), 110\.352 mm/s fails' '' -- \
+  sweep "$squares" --belt-velocity 50:200 --tolerance 2
+expect "sweep: a candidate fails with its id" 0 '^round 0: 200 mm/s \(12 m/min\): fails \[50653\]' '' -- \
+  sweep "$squares" --belt-velocity 50:200 --tolerance 2
+expect "sweep: the same sequence on one thread (deterministic)" 0 \
+  '^round 4: 109\.766 mm/s \(6\.58594 m/min\): ok, workspace margin 3587\.7 mm$' '' -- \
+  sweep "$squares" --belt-velocity 50:200 --tolerance 2 --jobs 1
+expect "sweep: a range in which even LO fails: exit 1" 1 '^sweep: no belt velocity in 150 \.\. 200' '' -- \
+  sweep "$squares" --belt-velocity 150:200
+expect "sweep: --belt-velocity not LO:HI: NC9120, exit 2" 2 '' '\[NC9120\]' -- \
+  sweep "$squares" --belt-velocity 200:50
+expect "sweep: --tolerance 0: NC9121, exit 2" 2 '' '\[NC9121\]' -- \
+  sweep "$squares" --belt-velocity 50:200 --tolerance 0
+expect "sweep: a machine without conveyor tracking: NC9122, exit 2" 2 '' '\[NC9122\]' -- \
+  sweep --machine "$root/machines/portal_3x" "$squares" --belt-velocity 50:200
+
+# tune-delay: 17.455 ms dead time, position filter average 4 (1.5 ms), drive latch.
+expect "tune-delay: proposes the delay time that zeroes the mean synchro_lag (dead time + filter)" 0 \
+  '^tune-delay: proposed P-AXIS-00626 conv_sync\.delay_time = 18950 us' '' -- tune-delay "$comoving"
+expect "tune-delay: the static part is near zero with the proposal" 0 \
+  '^tune-delay: check with P-AXIS-00626 = 18950 us: synchro_lag mean -?[0-9.]+e-0[6-9] mm' '' -- \
+  tune-delay "$comoving"
+expect "tune-delay: a machine without conveyor tracking: NC9126, exit 2" 2 '' '\[NC9126\]' -- \
+  tune-delay --machine "$root/machines/portal_3x" "$squares"
+
+echo "line: $((checks - failures)) passed, $failures failed"
+((failures == 0))
