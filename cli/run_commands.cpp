@@ -345,6 +345,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
     audit->set_joint_limits(cfg.path.joints->joints, cfg.path.start, true);
   Playing playing(in, src);
   ipo::Channel channel(std::move(cfg), src, audit.get());
+  src.answer_positions_from(&channel.axes().command);  // --- planner: position barriers
   playing.attach(channel, in.port.get());
   if (audit) audit->set_setpoints(&channel.setpoints());  // axis limits on the setpoints
   const bool channel_plays = playing.player != nullptr;
@@ -604,6 +605,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
 
   Playing playing(in, src);
   ipo::Channel channel(std::move(cfg), src, &with_report);
+  src.answer_positions_from(&channel.axes().command);  // --- planner: position barriers
   playing.attach(channel, in.port.get());
   if (audit) audit->set_setpoints(&channel.setpoints());  // axis limits on the setpoints
   if (recorder) recorder->set_setpoints(&channel.setpoints());

@@ -96,7 +96,18 @@ bool Interpreter::Impl::axis_indp(const ast::Block& b, const ast::AxisCommand& a
   position[axis] = c.target;
   // INDP_ASYN runs on beside the program; INTERRUPTIBLE may be cut short by the next #SYNC IN:
   // where the axis is afterwards is run-time state (decode-only: the target).
-  if (c.kind == IndpKind::asyn || c.interruptible) unknown_axes |= AxisMask{1} << axis;
+  if (c.kind == IndpKind::asyn || c.interruptible) {
+    const AxisMask bit = AxisMask{1} << axis;
+    // INDP_ASYN: asked for only by the blocks that program the axis again (P-CHAN-00451). An
+    // INTERRUPTIBLE motion (cut short by the next #SYNC IN) and an axis unknown for another
+    // reason (#SYNC, G74) stay asked for by every block that uses the position.
+    const bool other = (unknown_axes & ~indp_unknown & bit) != 0;
+    if (c.kind == IndpKind::asyn && !other)
+      indp_unknown |= bit;
+    else
+      indp_unknown &= ~bit;
+    unknown_axes |= bit;
+  }
   emit(line, c);
   blocks_without_motion = 0;
   return true;

@@ -456,6 +456,7 @@ void Interpreter::Impl::run_homing(const BlockWords& bw) {
   for (const auto& [axis, order] : bw.axis_words) {
     h.axes.emplace_back(axis, static_cast<int>(order));
     unknown_axes |= AxisMask{1} << axis;  // the reference position: run-time state
+    indp_unknown &= ~(AxisMask{1} << axis);
   }
   emit(line, std::move(h));
   blocks_without_motion = 0;
@@ -469,6 +470,7 @@ void Interpreter::Impl::run_set_position(const BlockWords& bw) {
     s.axes |= AxisMask{1} << axis;
     position[axis] = s.values[axis];
     unknown_axes &= ~(AxisMask{1} << axis);  // known again: the program says where it is
+    indp_unknown &= unknown_axes;
   }
   emit(line, std::move(s));
 }

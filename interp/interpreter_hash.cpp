@@ -199,6 +199,7 @@ bool Interpreter::Impl::hash_sync_in(const ast::Block& b, const ast::HashCommand
   // next block that uses the position); decode-only: belt travel 0.
   position = sync_rebased(true);
   unknown_axes = path_axes;
+  indp_unknown &= ~path_axes;
   modal.synchronised = true;
   motion_since_sync = false;
   return true;
@@ -249,6 +250,7 @@ bool Interpreter::Impl::hash_sync_out(const ast::Block& b, const ast::HashComman
   emit(line, s);
   position = sync_rebased(false);
   unknown_axes = path_axes;  // where the tool left the moving workpiece: run time
+  indp_unknown &= ~path_axes;
   modal.synchronised = false;
   motion_since_sync = true;
   return true;

@@ -212,7 +212,11 @@ struct Interpreter::Impl {
   RunState decode_only(const Barrier& barrier) const;
   bool resumed = false;       // the barrier before the block at pc was answered
   AxisMask unknown_axes = 0;  // axes whose actual position only the run time knows
-  double latch = 0.0;         // conveyor position latched before the last #SYNC IN [mm]
+  // The part of unknown_axes that only an INDP_ASYN motion made unknown: a
+  // block asks for them only when it programs them (P-CHAN-00451: programming the axis again
+  // synchronises it: docs/ipo.md "Position barriers"). Always a subset of unknown_axes.
+  AxisMask indp_unknown = 0;
+  double latch = 0.0;  // conveyor position latched before the last #SYNC IN [mm]
   void emit(std::uint32_t line, CommandBody body);
   const ast::Block* expand_macros(const ast::Block& b);
 

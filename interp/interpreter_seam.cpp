@@ -172,7 +172,31 @@ AxisMask Interpreter::Impl::position_needs(const ast::Block& b) const {
            w.kind == ast::WordKind::j || w.kind == ast::WordKind::k || w.kind == ast::WordKind::r ||
            (w.kind == ast::WordKind::g && w.code == 151);
   });
-  if (!std::holds_alternative<ast::Words>(b.body) || moves) return unknown_axes;
+  if (!std::holds_alternative<ast::Words>(b.body)) return unknown_axes;
+  if (moves) {
+    // An axis an INDP motion made unknown is asked for only by a block that names it
+    // (isg-language.md 6.1: INDP_ASYN is synchronised by #WAIT INDP or by programming the axis
+    // again as a path axis); a block with I / J / K / R or #SPLINE ON asks for every one.
+    AxisMask named = 0;
+    for (const ast::Word& w : b.words) {
+      switch (w.kind) {
+        case ast::WordKind::axis:
+          if (auto axis = axis_index(w.name)) named |= AxisMask{1} << *axis;
+          break;
+        case ast::WordKind::i:
+        case ast::WordKind::j:
+        case ast::WordKind::k:
+        case ast::WordKind::r:
+          return unknown_axes;
+        case ast::WordKind::g:
+          if (w.code == 151) return unknown_axes;
+          break;
+        default:
+          break;
+      }
+    }
+    return (unknown_axes & ~indp_unknown) | (indp_unknown & named);
+  }
   // Only axis-bracket commands: an INDP move needs the position of its own axis only.
   AxisMask mask = 0;
   for (const ast::AxisCommand& ac : b.axis_commands) {
@@ -202,6 +226,7 @@ void Interpreter::Impl::apply(const RunState& state, const Barrier& barrier) {
       if ((barrier.axes >> i) & 1u) position[i] = state.position[i];
     }
     unknown_axes &= ~barrier.axes;
+    indp_unknown &= unknown_axes;
   }
   // A run-time answer is time passing (the channel drained its queue and waited), as motion
   // is: a loop that waits for a V.E. value the outside world writes is not "cannot end".

@@ -209,11 +209,33 @@ TEST_CASE("after INDP_ASYN the axis position is run-time state; INDP_SYN is not"
       "G01 Y6 F600\nM30\n");
   REQUIRE(s.error_id.empty());
   CHECK(line_at(s, 4, "BARRIER").empty());
-  CHECK(line_at(s, 6, "BARRIER") == "6: BARRIER POSITION frame=MCS X");
+  // --- planner: a block that does not program X does not ask for it (P-CHAN-00451).
+  CHECK(line_at(s, 6, "BARRIER").empty());
   const Motion* m = motion_at(s, 6);
   REQUIRE(m != nullptr);
-  CHECK(m->start[0] == 20.0);  // decode-only: the target
+  CHECK(m->start[0] == 20.0);  // the decoder carries the target; the INDP layer owns X
   CHECK(line_at(s, 5, "INDP_ASYN").ends_with(" frame=MCS"));
+}
+
+// --- planner: isg-language.md 6.1, INDP_ASYN "is synchronised by #WAIT INDP or by programming
+// the axis again as a path axis" (P-CHAN-00451, docs/ipo.md "Position barriers").
+TEST_CASE("after INDP_ASYN only a block that programs the axis asks for it, with implicit sync") {
+  auto s = stream("%t\nX[INDP_ASYN POS20 FEED600]\nG01 Y6 F600\nG91 X2\nG90 G01 Y7\nY8 X30\nM30\n");
+  REQUIRE(s.error_id.empty());
+  CHECK(line_at(s, 3, "BARRIER").empty());  // Y only: X runs on beside it
+  CHECK(line_at(s, 4, "BARRIER") == "4: BARRIER POSITION frame=MCS X");
+  const Motion* m = motion_at(s, 4);
+  REQUIRE(m != nullptr);
+  CHECK(m->start[0] == 20.0);  // decode-only answer: the target
+  CHECK(m->end[0] == 22.0);
+  CHECK(line_at(s, 5, "BARRIER").empty());  // known again
+  CHECK(line_at(s, 6, "BARRIER").empty());
+}
+
+TEST_CASE("after INDP_ASYN an arc asks for every unknown axis: its plane may hold it") {
+  auto s = stream("%t\nG00 X0 Y0\nX[INDP_ASYN POS20 FEED600]\nG02 Y6 I0 J3 F600\nM30\n");
+  REQUIRE(s.error_id.empty());
+  CHECK(line_at(s, 4, "BARRIER") == "4: BARRIER POSITION frame=MCS X");
 }
 
 TEST_CASE("a V.E. read between motions: the barrier stands before the block that reads it") {

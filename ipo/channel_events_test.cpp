@@ -10,6 +10,7 @@
 #include "core/source_file.hpp"
 #include "interp/test_support.hpp"
 #include "ipo/channel.hpp"
+#include "ipo/channel_test_support.hpp"
 #include "ipo/program_source.hpp"
 #include "ipo/test_support.hpp"
 
@@ -17,11 +18,7 @@ namespace {
 
 using namespace ncsim;
 
-struct Recorder final : ipo::Sink {
-  std::vector<ipo::Cycle> cycles;
-  void on_joint(const ipo::Joint&) override {}
-  void on_cycle(const ipo::Cycle& c) override { cycles.push_back(c); }
-};
+using ipo::test::Recorder;
 
 struct Result {
   ipo::Status status = ipo::Status::finished;
@@ -37,10 +34,7 @@ Result run(const std::string& text) {
   Recorder rec;
   ipo::Channel ch(ipo::channel_config(m, 0.001), src, &rec);
   Result r;
-  for (int guard = 0; guard < 1'000'000; ++guard) {
-    r.status = ch.step();
-    if (r.status != ipo::Status::running) break;
-  }
+  r.status = ipo::test::run_to_end(ch);
   r.cycles = std::move(rec.cycles);
   r.error = ch.run_time_error();
   return r;

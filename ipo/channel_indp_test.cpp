@@ -15,17 +15,14 @@
 #include "interp/test_support.hpp"
 #include "ipo/audit.hpp"
 #include "ipo/channel.hpp"
+#include "ipo/channel_test_support.hpp"
 #include "ipo/program_source.hpp"
 
 namespace {
 
 using namespace ncsim;
 
-struct Recorder final : ipo::Sink {
-  std::vector<ipo::Cycle> cycles;
-  void on_joint(const ipo::Joint&) override {}
-  void on_cycle(const ipo::Cycle& c) override { cycles.push_back(c); }
-};
+using ipo::test::Recorder;
 
 struct Run {
   ipo::Status status = ipo::Status::finished;
@@ -42,26 +39,12 @@ Run run(const std::string& program, std::size_t axis, const ipo::IndpMove& move)
   ipo::ProgramSource src(in, m);
   ipo::ChannelConfig cfg = ipo::channel_config(m, 0.001);
   ipo::Audit audit(cfg.path.axes, cfg.path.channel.t_cycle, cfg.path.start);
-  struct Tee final : ipo::Sink {
-    Recorder* r;
-    ipo::Audit* a;
-    void on_joint(const ipo::Joint& j) override { a->on_joint(j); }
-    void on_cycle(const ipo::Cycle& c) override {
-      r->on_cycle(c);
-      a->on_cycle(c);
-    }
-  };
   Recorder rec;
-  Tee tee;
-  tee.r = &rec;
-  tee.a = &audit;
+  ipo::test::AuditedRecorder tee(&audit, &rec);
   ipo::Channel ch(std::move(cfg), src, &tee);
   REQUIRE_FALSE(ch.indp().command(axis, move));
   Run r;
-  for (int guard = 0; guard < 1'000'000; ++guard) {
-    r.status = ch.step();
-    if (r.status != ipo::Status::running) break;
-  }
+  r.status = ipo::test::run_to_end(ch);
   r.cycles = std::move(rec.cycles);
   r.error = ch.run_time_error();
   r.verdict = audit.verdict();

@@ -11,6 +11,7 @@
 #include "core/source_file.hpp"
 #include "interp/test_support.hpp"
 #include "ipo/channel.hpp"
+#include "ipo/channel_test_support.hpp"
 #include "ipo/program_source.hpp"
 #include "scenario/loader.hpp"
 #include "scenario/player.hpp"
@@ -19,11 +20,7 @@ namespace {
 
 using namespace ncsim;
 
-struct Recorder final : ipo::Sink {
-  std::vector<ipo::Cycle> cycles;
-  void on_joint(const ipo::Joint&) override {}
-  void on_cycle(const ipo::Cycle& c) override { cycles.push_back(c); }
-};
+using ipo::test::Recorder;
 
 struct Played {
   ipo::Status status = ipo::Status::finished;
@@ -56,10 +53,7 @@ Played play(const std::string& program, const std::string& toml, bool flush = tr
   ipo::Channel ch(ipo::channel_config(m, 0.001), src, &rec);
   ch.play(&player);
   Played r;
-  for (int guard = 0; guard < 1'000'000; ++guard) {
-    r.status = ch.step();
-    if (r.status != ipo::Status::running) break;
-  }
+  r.status = ipo::test::run_to_end(ch);
   CHECK(ch.step() == r.status);  // the stream stays ended
   r.cycles = std::move(rec.cycles);
   r.stop = ch.scenario_stop();

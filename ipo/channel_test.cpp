@@ -13,6 +13,7 @@
 
 #include "core/source_file.hpp"
 #include "interp/test_support.hpp"
+#include "ipo/channel_test_support.hpp"
 #include "ipo/program_source.hpp"
 #include "ipo/test_support.hpp"
 
@@ -20,13 +21,7 @@ namespace {
 
 using namespace ncsim;
 
-/// Records what the channel's sink receives.
-struct Recorder final : ipo::Sink {
-  std::vector<ipo::Cycle> cycles;
-  std::size_t joints = 0;
-  void on_joint(const ipo::Joint&) override { ++joints; }
-  void on_cycle(const ipo::Cycle& c) override { cycles.push_back(c); }
-};
+using ipo::test::Recorder;
 
 struct Result {
   ipo::Status status = ipo::Status::finished;
@@ -49,11 +44,8 @@ Result run(const std::string& text, const Tweak& tweak = {},
   Recorder rec;
   ipo::Channel ch(std::move(cfg), src, &rec);
   Result r;
-  for (int guard = 0; guard < 10'000'000; ++guard) {
-    r.status = ch.step();
-    if (r.status != ipo::Status::running) break;
-    r.axes.push_back(ch.axes());
-  }
+  r.status = ipo::test::run_to_end(
+      ch, [&] { r.axes.push_back(ch.axes()); }, 10'000'000);
   r.cycles = std::move(rec.cycles);
   r.error = ch.run_time_error();
   if (const core::Diagnostic* d = src.error()) r.source_error = d->id;

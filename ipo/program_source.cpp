@@ -188,8 +188,9 @@ bool ProgramSource::next(Item& out) {
 
 void ProgramSource::answer(const interp::Barrier& barrier) {
   interp::RunState state = interp_.decode_only_state(barrier);
-  if (barrier.wants(interp::BarrierNeed::external))
+  if (store_ != nullptr && barrier.wants(interp::BarrierNeed::external))
     store_->answer(barrier.external, state.external);
+  if (run_time_ != 0) answer_positions(barrier, state);  // --- planner
   interp_.resume(state);
 }
 
@@ -219,7 +220,8 @@ bool ProgramSource::pull(Item& out) {
       cmd = std::move(held_);
       held_.reset();
     } else {
-      cmd = store_ != nullptr ? interp_.next() : interp_.next_decode_only();
+      cmd =
+          store_ != nullptr || positions_ != nullptr ? interp_.next() : interp_.next_decode_only();
     }
     // --- operator: the program's V.E. assignments decoded so far reach the shared store
     // before any barrier after them is answered.
@@ -261,6 +263,7 @@ bool ProgramSource::pull(Item& out) {
         std::holds_alternative<interp::SyncOut>(cmd->body))
       sync_motion_ = true;  // --- conveyor-sync (end)
     if (is_channel_event(cmd->body)) {
+      note_indp(cmd->body);  // --- planner
       const bool stops = stops_path(cmd->body);
       const bool syn = std::holds_alternative<interp::AxisCommand>(cmd->body) && stops;
       events_.push_back(ChannelEvent{++tag_, line, cmd->file, std::move(cmd->body)});
@@ -297,8 +300,21 @@ bool ProgramSource::pull(Item& out) {
                                std::is_same_v<T, interp::Flush>) {
             // pass: no motion (M00/M01 do not stop: there is no operator to press start)
           } else if constexpr (std::is_same_v<T, interp::Barrier>) {
-            if (store_ == nullptr) {
+            // --- planner: P-CHAN-00451 implicit synchronisation (docs/ipo.md "Position
+            // barriers"): the block programs again an axis whose INDP motion may still run.
+            const interp::AxisMask sync =
+                positions_ != nullptr && body.wants(interp::BarrierNeed::position)
+                    ? body.axes & indp_running_
+                    : 0;
+            if (store_ == nullptr && positions_ == nullptr) {
               // answered by next_decode_only()
+            } else if (sync != 0) {
+              events_.push_back(ChannelEvent{++tag_, line, file_, interp::WaitIndp{sync}});
+              open_ = body;  // answered at the next pull, with the path standing
+              run_time_ = sync;
+              out = ChannelWait{line, tag_};
+              given_ = tag_;
+              produced = true;
             } else if (flush_ && body.wants(interp::BarrierNeed::external)) {
               open_ = body;  // the path stops first: answered at the next pull
               out = Dwell{0.0, line};

@@ -86,12 +86,25 @@ class ProgramSource final : public Source {
     flush_ = flush;
     interp_.record_ve_writes(store != nullptr);  // --- operator
   }
+  // --- planner: position barriers from run time (docs/ipo.md "Position barriers").
+  /// Position barriers are answered from `set_positions`: the channel's set positions after
+  /// its last cycle (Channel::axes().command, interpolated order; must outlive the source;
+  /// null: the decode-only state). A barrier that asks for an axis an INDP_ASYN motion may
+  /// still move (the interpreter asks for such an axis only when the block programs it again)
+  /// first stops the path and waits for that motion (a `#WAIT INDP` of those axes: P-CHAN-00451's
+  /// implicit synchronisation); the answer then gives those axes where they stand.
+  void answer_positions_from(const AxisVec* set_positions) noexcept { positions_ = set_positions; }
 
  private:
   struct Stop {};  ///< thrown by fail() to leave the visit; caught in next()
   bool pull(Item& out);
-  /// Answers the open barrier: the decode-only state with the store's V.E. values.
+  /// Answers the open barrier: the decode-only state with the store's V.E. values and, for
+  /// the axes waited for (run_time_), the set positions.
   void answer(const interp::Barrier& barrier);
+  /// --- planner: state.position of the run_time_ axes from *positions_, in barrier.frame.
+  void answer_positions(const interp::Barrier& barrier, interp::RunState& state);
+  /// --- planner: keeps indp_running_ current for an event queued.
+  void note_indp(const interp::CommandBody& body) noexcept;
   [[noreturn]] void fail(std::uint32_t line, const std::string& what);
   planner::Move to_move(const interp::Motion& m, std::uint32_t line);
   /// The modal fields of a Move from the block's snapshot (transition, contour, slope, ...).
@@ -138,6 +151,10 @@ class ProgramSource final : public Source {
   scenario::VeStore* store_ = nullptr;
   bool flush_ = false;
   std::optional<interp::Barrier> open_;  ///< a barrier waiting for the flush's Dwell to pass
+  // --- planner: run-time position answers (answer_positions_from).
+  const AxisVec* positions_ = nullptr;  ///< the channel's set positions; null: none
+  interp::AxisMask indp_running_ = 0;   ///< machine axes an INDP_ASYN motion may still move
+  interp::AxisMask run_time_ = 0;       ///< axes the open barrier answers from run time
   // Channel events (ipo/channel_event.hpp).
   std::deque<ChannelEvent> events_;  ///< not yet taken by the channel
   std::uint32_t tag_ = 0;            ///< tag of the last event queued

@@ -16,6 +16,7 @@
 #include "interp/test_support.hpp"
 #include "ipo/audit.hpp"
 #include "ipo/channel.hpp"
+#include "ipo/channel_test_support.hpp"
 #include "ipo/program_source.hpp"
 #include "machines/delta_kinematics.hpp"
 #include "scenario/loader.hpp"
@@ -25,23 +26,7 @@ namespace {
 
 using namespace ncsim;
 
-struct Recorder final : ipo::Sink {
-  std::vector<ipo::Cycle> cycles;
-  void on_joint(const ipo::Joint&) override {}
-  void on_cycle(const ipo::Cycle& c) override { cycles.push_back(c); }
-};
-
-/// Audit and recorder behind one sink, as the CLI wires them.
-struct Both final : ipo::Sink {
-  ipo::Audit* audit;
-  Recorder* rec;
-  Both(ipo::Audit* a, Recorder* r) : audit(a), rec(r) {}
-  void on_joint(const ipo::Joint& j) override { audit->on_joint(j); }
-  void on_cycle(const ipo::Cycle& c) override {
-    audit->on_cycle(c);
-    rec->on_cycle(c);
-  }
-};
+using ipo::test::Recorder;
 
 struct Result {
   ipo::Status status = ipo::Status::finished;
@@ -65,17 +50,15 @@ Result run(const std::string& text, scenario::Player* player = nullptr,
   ipo::Audit audit(cfg.path.axes, 0.001, cfg.path.start);
   audit.set_joint_limits(cfg.path.joints->joints, cfg.path.start, true);
   Recorder rec;
-  Both both(&audit, &rec);
+  ipo::test::AuditedRecorder both(&audit, &rec);
   ipo::Channel ch(std::move(cfg), src, &both);
   ch.play(player);
   Result r;
-  for (int guard = 0; guard < 1'000'000; ++guard) {
-    r.status = ch.step();
-    if (r.status != ipo::Status::running) break;
+  r.status = ipo::test::run_to_end(ch, [&] {
     if (ch.transformed()) audit.on_joints(ch.cycle(), ch.joints());
     r.axes.push_back(ch.axes());
     r.transformed.push_back(ch.transformed());
-  }
+  });
   r.cycles = std::move(rec.cycles);
   r.verdict = audit.verdict();
   if (const core::Diagnostic* d = src.error()) r.source_error = *d;

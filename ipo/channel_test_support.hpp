@@ -1,0 +1,50 @@
+#pragma once
+// ipo/channel_test_support: the sinks and the run loop the channel tests share (beside
+// ipo/test_support.hpp, which stays free of the channel so that the interpolator's tests need
+// only ncsim_ipo).
+
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include "ipo/audit.hpp"
+#include "ipo/channel.hpp"
+#include "ipo/interpolator.hpp"
+
+namespace ncsim::ipo::test {
+
+/// Records what a channel's sink receives: every cycle, and how many joint reports.
+struct Recorder final : Sink {
+  std::vector<Cycle> cycles;
+  std::size_t joints = 0;
+  void on_joint(const Joint&) override { ++joints; }
+  void on_cycle(const Cycle& c) override { cycles.push_back(c); }
+};
+
+/// The audit and a recorder behind one sink, as the CLI wires them: the audit sees the joints
+/// and the cycles, the recorder the cycles.
+struct AuditedRecorder final : Sink {
+  Audit* audit;
+  Recorder* rec;
+  AuditedRecorder(Audit* a, Recorder* r) : audit(a), rec(r) {}
+  void on_joint(const Joint& j) override { audit->on_joint(j); }
+  void on_cycle(const Cycle& c) override {
+    audit->on_cycle(c);
+    rec->on_cycle(c);
+  }
+};
+
+/// Steps `ch` until it stops running (at most `guard` steps); `after_step` runs after each
+/// step that left it running. Returns the last status.
+inline Status run_to_end(Channel& ch, const std::function<void()>& after_step = {},
+                         int guard = 1'000'000) {
+  Status status = Status::finished;
+  for (int k = 0; k < guard; ++k) {
+    status = ch.step();
+    if (status != Status::running) break;
+    if (after_step) after_step();
+  }
+  return status;
+}
+
+}  // namespace ncsim::ipo::test
