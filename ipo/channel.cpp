@@ -282,7 +282,10 @@ bool Channel::play_cycle(Status& status) noexcept {
     }
   }
   // MCV_SetReducedFilter from the PLC side (docs/conveyor.md "Filters").
-  if (port_ != nullptr) port_->set_reduced_filter(player_->reduced_filter());
+  // --- sync-feed: and the channel's feed hold while it tracks the conveyor (docs/conveyor.md
+  // F-4: P-AXIS-00624/00625 "in the case of feedhold").
+  if (port_ != nullptr)
+    port_->set_reduced_filter(player_->reduced_filter() || (ipo_.feed_hold() && sync_tracking()));
   if (const auto reason = player_->stop()) {
     stopped_ = *reason;
     status = Status::finished;

@@ -203,7 +203,8 @@ class Channel {
   // the last cycle; all 0 without FCT_DLM (ipo/channel_lag.cpp).
   MasterDisplay master_display() const noexcept;
   // --- indp: independent axes (ipo/channel_indp.cpp, docs/ipo.md "INDP axes and technology
-  // functions"). Conveyor tracking calls indp().interrupt(axis) at #SYNC IN.
+  // functions"). Conveyor tracking takes an INTERRUPTIBLE INDP_SYN motion over, moving, when
+  // the catch-up after the next #SYNC IN starts (IndpAxes::hand_over, docs/conveyor.md S-4).
   IndpAxes& indp() noexcept { return indp_; }
   const IndpAxes& indp() const noexcept { return indp_; }
   /// The technology functions (M/H/S/T/D) the channel output in the last step(), in program
@@ -238,6 +239,15 @@ class Channel {
   // --- conveyor-sync: the conveyor events (ipo/channel_conveyor.cpp)
   EventOutcome on_sync_in(const interp::SyncIn& command, const ChannelEvent& e) noexcept;
   EventOutcome on_sync_out(const interp::SyncOut& command, const ChannelEvent& e) noexcept;
+  /// --- sync-feed: hands the INDP axes to the catch-up / departure starting now: in position
+  /// ones released, INTERRUPTIBLE INDP_SYN ones taken over moving; false while another INDP
+  /// motion still runs (the motion event waits for it).
+  bool sync_take_indp_axes() noexcept;
+  /// --- sync-feed: the channel moves with the conveyor (catch-up or PCS1 tracking).
+  bool sync_tracking() const noexcept {
+    return sync_ &&
+           (sync_->phase() == SyncPhase::catching_up || sync_->phase() == SyncPhase::tracking);
+  }
   /// The catch-up after #SYNC IN / the departure after #SYNC OUT (ProgramSource::sync_motion).
   EventOutcome on_sync_motion(const interp::Motion& motion, const ChannelEvent& e) noexcept;
   EventOutcome on_probe_arm(const interp::ProbeArm& command, const ChannelEvent& e) noexcept;
@@ -335,6 +345,7 @@ class Channel {
   // Channel events.
   std::optional<ChannelEvent> blocked_;  ///< an event not done yet (EventOutcome::blocking)
   std::uint32_t wait_tag_ = 0;           ///< tag of the ChannelWait the path holds at
+  bool wait_interruptible_ = false;      ///< --- sync-feed: ChannelWait::interruptible of that wait
   ChannelEvent event_;                   ///< scratch: the event being taken
   // --- trafo: the joint stage (Config::joints) and the state of the last cycle.
   std::optional<JointStage> stage_;

@@ -87,11 +87,10 @@ Channel::EventOutcome Channel::on_sync_out(const interp::SyncOut& command,
   try {
     if (!sync_ || sync_->port() == nullptr)
       return event_error(kNotSupportedId, std::string("not supported: #SYNC OUT") + kNeedsWorld, e);
-    if (command.feed_cont_auto || (command.feed_cont && *command.feed_cont > 0.0))
-      return event_error(kNotSupportedId,
-                         "not supported: #SYNC OUT FEED_CONT > 0 / FEED_CONT_AUTO (the departure "
-                         "ends at rest)",
-                         e);
+    // --- sync-feed: FEED_CONT / FEED_CONT_AUTO of #SYNC OUT, the velocity the
+    // desynchronisation movement terminates at (004 l.529), is "reduced as required" (l.284) to
+    // 0: that movement is INDP positioning (l.535-552) or the departure PTP, both ending in
+    // position, and what follows them starts at rest (docs/conveyor.md S-2).
   } catch (...) {
     std::abort();
   }
@@ -108,6 +107,8 @@ Channel::EventOutcome Channel::on_sync_motion(const interp::Motion& motion,
   if (sync_tag_ == e.tag) {  // dispatched again: blocking while the profile runs
     return sync_->driving() ? EventOutcome::blocking : EventOutcome::done;
   }
+  // --- sync-feed: the INDP axes go to the catch-up / departure (docs/conveyor.md S-4).
+  if (!sync_take_indp_axes()) return EventOutcome::blocking;
   sync_tag_ = e.tag;
   const std::size_t n = axes_.size();
   std::array<axes::MotionState, planner::kMaxAxes> start{};
@@ -139,6 +140,20 @@ Channel::EventOutcome Channel::on_sync_motion(const interp::Motion& motion,
   } catch (...) {
     std::abort();
   }
+}
+
+// --- sync-feed: the on-the-fly change (004 l.277-279, docs/conveyor.md S-4).
+bool Channel::sync_take_indp_axes() noexcept {
+  bool ready = true;
+  for (std::size_t i = 0; i < axes_.size(); ++i) {
+    if (!indp_.owned(i)) continue;
+    if (indp_.in_position(i)) {
+      indp_.release(i);  // its setpoint (setpoint_[i]) is where the INDP motion left it
+    } else if (!indp_.hand_over(i)) {
+      ready = false;  // not INTERRUPTIBLE (or INDP_ASYN): the motion first ends in position
+    }
+  }
+  return ready;
 }
 
 Channel::EventOutcome Channel::on_probe_arm(const interp::ProbeArm& command,

@@ -73,6 +73,7 @@ bool Channel::run_events(std::uint32_t up_to) noexcept {
 
 bool Channel::on_wait(const ChannelWait& wait) noexcept {
   wait_tag_ = wait.tag;
+  wait_interruptible_ = wait.interruptible;                     // --- sync-feed
   return !blocked_ && run_events(wait.tag) && indp_syn_done();  // --- indp: INDP_SYN axes
 }
 

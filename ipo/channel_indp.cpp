@@ -150,7 +150,13 @@ Channel::EventOutcome Channel::indp_tech(const interp::Tech& t, const ChannelEve
 }
 
 bool Channel::indp_syn_done() noexcept {
-  if (syn_ != 0 && !indp_.in_position_mask(syn_)) return false;
+  planner::AxisMask wait = syn_;
+  // --- sync-feed: before the next synchronisation the program goes on while INTERRUPTIBLE
+  // INDP_SYN motions run; the catch-up takes them over (docs/conveyor.md S-4).
+  if (wait_interruptible_)
+    for (std::size_t i = 0; i < axes_.size(); ++i)
+      if (indp_.interruptible(i)) wait &= ~(planner::AxisMask{1} << i);
+  if (wait != 0 && !indp_.in_position_mask(wait)) return false;
   syn_ = 0;
   return true;
 }

@@ -207,6 +207,17 @@ bool IndpAxes::interrupt(std::size_t i) noexcept {
   return true;
 }
 
+// --- sync-feed
+bool IndpAxes::hand_over(std::size_t i) noexcept {
+  if (!interruptible(i)) return false;
+  Axis& a = axes_[i];
+  a.interruptible = false;
+  a.mode = Mode::idle;
+  a.target = a.sp.p;
+  a.owned = false;
+  return true;
+}
+
 void IndpAxes::step() noexcept {
   for (Axis& a : axes_) {
     if (a.mode == Mode::idle) continue;

@@ -134,6 +134,11 @@ class IndpAxes {
   }
   /// Hands axis `i` back to the path (it must be in position). Its setpoint stays as it is.
   void release(std::size_t i) noexcept { axes_[i].owned = false; }
+  // --- sync-feed: the on-the-fly change (004 l.277-279).
+  /// Ends the INTERRUPTIBLE INDP_SYN motion of axis `i` where it is, moving, and hands the axis
+  /// to a motion that starts from its state (the catch-up after the next #SYNC IN). True when
+  /// a motion was handed over; false (nothing changed) when the axis runs none.
+  bool hand_over(std::size_t i) noexcept;
   /// Setpoint of axis `i` after the last step() [mm | deg, /s, /s^2, /s^3].
   const axes::Setpoint& setpoint(std::size_t i) const noexcept { return axes_[i].sp; }
   /// The axis's INDP target [mm | deg].

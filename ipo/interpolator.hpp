@@ -56,6 +56,9 @@ struct Dwell {
 struct ChannelWait {
   std::uint32_t line = 0;  ///< source line of the command that needs the standing path
   std::uint32_t tag = 0;   ///< channel events up to this tag are due at the wait
+  /// --- sync-feed: the wait after a block of INDP_SYN ... INTERRUPTIBLE motions followed by
+  /// MC_TouchProbe or #SYNC IN: it need not wait for them (the catch-up takes them over).
+  bool interruptible = false;
 };
 
 /// One item of the program stream.

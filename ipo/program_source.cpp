@@ -156,7 +156,8 @@ planner::Move ProgramSource::to_move(const interp::Motion& m, std::uint32_t line
   if (m.arc) arc_to_mcs(m, line, mv);
   set_modal(m.modal, mv, line);
   mv.line = line;
-  if (mv.transformed) check_workspace(mv, line);  // --- trafo
+  if (mv.transformed) check_workspace(mv, line);              // --- trafo
+  if (m.frame.space == interp::Space::pcs1) mv.belt = belt_;  // --- sync-feed
   return mv;
 }
 
@@ -240,6 +241,10 @@ bool ProgramSource::pull(Item& out) {
                               is_channel_event(cmd->body) &&
                               (!stops_path(cmd->body) || a != nullptr);
       if (!same_block) {
+        // --- sync-feed: an INTERRUPTIBLE block before the next synchronisation (S-4).
+        syn_wait_->interruptible =
+            syn_interruptible_ && (std::holds_alternative<interp::ProbeArm>(cmd->body) ||
+                                   std::holds_alternative<interp::SyncIn>(cmd->body));
         held_ = std::move(cmd);
         out = *syn_wait_;
         given_ = syn_wait_->tag;
@@ -262,10 +267,15 @@ bool ProgramSource::pull(Item& out) {
     if (std::holds_alternative<interp::SyncIn>(cmd->body) ||
         std::holds_alternative<interp::SyncOut>(cmd->body))
       sync_motion_ = true;  // --- conveyor-sync (end)
+    sync_belt(cmd->body);   // --- sync-feed: the PCS1 velocity split
     if (is_channel_event(cmd->body)) {
       note_indp(cmd->body);  // --- planner
       const bool stops = stops_path(cmd->body);
       const bool syn = std::holds_alternative<interp::AxisCommand>(cmd->body) && stops;
+      if (syn) {  // --- sync-feed: every INDP_SYN motion of the block INTERRUPTIBLE
+        const bool interruptible = std::get<interp::AxisCommand>(cmd->body).interruptible;
+        syn_interruptible_ = (syn_wait_ ? syn_interruptible_ : true) && interruptible;
+      }
       events_.push_back(ChannelEvent{++tag_, line, cmd->file, std::move(cmd->body)});
       if ((syn || syn_wait_) && tag_ - given_ < kMaxPendingEvents) {  // --- indp
         syn_wait_ = ChannelWait{line, tag_};  // the block's later events are due with it

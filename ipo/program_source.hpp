@@ -174,8 +174,14 @@ class ProgramSource final : public Source {
   bool trafo_on_ = false;              ///< #TRAFO ON as handed out
   // --- end trafo
   bool sync_motion_ = false;  ///< --- conveyor-sync: the next Motion is a catch-up / departure
+  /// --- sync-feed: the velocity the belt takes of each interpolated axis while synchronised
+  /// (ipo::pcs1_belt of the last #SYNC IN's CONV_VEL; planner::Move::belt of PCS1 blocks).
+  planner::AxisVec belt_{};
+  /// --- sync-feed: sets belt_ at #SYNC IN, clears it at #SYNC OUT (program_sync.cpp).
+  void sync_belt(const interp::CommandBody& body);
   // --- indp: a block's INDP_SYN commands share one ChannelWait (program_source.cpp).
   std::optional<ChannelWait> syn_wait_;  ///< the wait after the block's INDP_SYN commands
+  bool syn_interruptible_ = false;       ///< --- sync-feed: all of them INTERRUPTIBLE so far
   std::optional<interp::Command> held_;  ///< the command that ended that block
 };
 

@@ -37,14 +37,11 @@ std::optional<SyncError> check_conv_vel(const planner::AxisLimits& axis, double 
 
 planner::AxisLimits pcs1_limits(const planner::AxisLimits& axis, double conveying,
                                 double conv_vel) {
-  const double share = std::fabs(conveying) * kBeltVelocityTolerance * conv_vel;
-  if (share == 0.0) return axis;
-  const auto left = [share](double v) { return std::max(v - share, 0.01 * v); };
-  planner::AxisLimits out = axis;
-  out.v_max = left(axis.v_max);
-  out.v_reference = left(axis.v_reference);
-  out.v_rapid = left(axis.v_rapid);
-  return out;
+  return planner::belt_limits(axis, pcs1_belt(conveying, conv_vel));
+}
+
+double pcs1_belt(double conveying, double conv_vel) noexcept {  // --- sync-feed
+  return std::fabs(conveying) * kBeltVelocityTolerance * conv_vel;
 }
 
 }  // namespace ncsim::ipo

@@ -47,5 +47,8 @@ std::optional<SyncError> check_conv_vel(const planner::AxisLimits& axis, double 
 /// unchanged: the belt's own acceleration adds to them (docs/conveyor.md). Requires
 /// check_conv_vel() passed; a v_max that would drop to 0 or less is kept at 1 % of itself.
 planner::AxisLimits pcs1_limits(const planner::AxisLimits& axis, double conveying, double conv_vel);
+/// --- sync-feed: the velocity the belt takes of that axis in pcs1_limits [mm/s]:
+/// |conveying| * 1.10 * conv_vel (what ProgramSource puts into planner::Move::belt).
+double pcs1_belt(double conveying, double conv_vel) noexcept;
 
 }  // namespace ncsim::ipo

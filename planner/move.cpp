@@ -2,6 +2,7 @@
 
 #include "planner/move.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -111,6 +112,17 @@ void validate(std::span<const AxisLimits> limits) {
       fail(at + "j_rapid (P-AXIS-00004 / 00200) < 0, got " + std::to_string(ax.j_rapid));
     if (ax.c0 < 0.0) fail(at + "c0 (VELOJUMP factor) < 0, got " + std::to_string(ax.c0));
   }
+}
+
+// --- sync-feed
+AxisLimits belt_limits(const AxisLimits& axis, double taken) noexcept {
+  if (!(taken > 0.0)) return axis;
+  const auto left = [taken](double v) { return std::max(v - taken, 0.01 * v); };
+  AxisLimits out = axis;
+  out.v_max = left(axis.v_max);
+  out.v_reference = left(axis.v_reference);
+  out.v_rapid = left(axis.v_rapid);
+  return out;
 }
 
 AxisLimits rapid_limits(const AxisLimits& axis) noexcept {

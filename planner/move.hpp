@@ -99,6 +99,10 @@ struct Move {
   /// #TRAFO ON: X, Y, Z are the Cartesian TCP and the joints of the kinematic transform limit
   /// the path (Preparer::set_joints); false: axis values (docs/planner.md "Kinematics").
   bool transformed = false;
+  /// --- sync-feed: while synchronised (PCS1), the velocity the conveyor takes of each axis
+  /// [mm/s]: the block is planned with v_max, v_reference and v_rapid lowered by it
+  /// (belt_limits; 004 l.311-319, docs/conveyor.md "velocity split"); all 0 off the conveyor.
+  AxisVec belt{};
 };
 
 /// One machine axis's dynamics as the planner uses them (000 l.75, l.105-108, l.360).
@@ -118,6 +122,11 @@ struct AxisLimits {
 
 /// The limits a G00 block is planned with: a_rapid / j_rapid where set, else the feed values.
 AxisLimits rapid_limits(const AxisLimits& axis) noexcept;
+
+/// --- sync-feed: the limits of an axis of which a conveyor takes `taken` >= 0 [mm/s] (004
+/// l.311-319): v_max, v_reference and v_rapid lowered by it, each kept at >= 1 % of itself;
+/// accelerations and jerk unchanged. taken 0: the axis as it is.
+AxisLimits belt_limits(const AxisLimits& axis, double taken) noexcept;
 
 /// Channel-wide planner settings.
 struct ChannelLimits {

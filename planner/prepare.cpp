@@ -64,8 +64,14 @@ void Preparer::set_joints(JointLimits joints) {
 }
 
 std::span<const AxisLimits> Preparer::axes_for(const Move& move) const {
-  if (move.transformed && joints_ && !joints_->cartesian.empty()) return joints_->cartesian;
-  return axes_;
+  std::span<const AxisLimits> axes = axes_;
+  if (move.transformed && joints_ && !joints_->cartesian.empty()) axes = joints_->cartesian;
+  // --- sync-feed: a PCS1 block on a conveyor: the belt's share taken off (belt_limits).
+  if (std::all_of(move.belt.begin(), move.belt.end(), [](double b) { return b == 0.0; }))
+    return axes;
+  for (std::size_t i = 0; i < axes.size() && i < belt_axes_.size(); ++i)
+    belt_axes_[i] = belt_limits(axes[i], move.belt[i]);
+  return std::span<const AxisLimits>(belt_axes_.data(), std::min(axes.size(), belt_axes_.size()));
 }
 
 const JointLimits* Preparer::joints_for(const Move& move) const {
@@ -74,7 +80,7 @@ const JointLimits* Preparer::joints_for(const Move& move) const {
 
 PathLimits Preparer::limits(const Segment& path, const Move& move) const {
   const JointLimits* joints = joints_for(move);
-  if (joints == nullptr) return path_limits(path, move, axes_);
+  if (joints == nullptr) return path_limits(path, move, axes_for(move));  // --- sync-feed
   const std::optional<PathLimits> l =
       path_limits(path, move, axes_for(move), joints->inverse, joints->joints);
   if (!l)

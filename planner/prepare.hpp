@@ -17,6 +17,7 @@
 // chain, whatever the length of the stream. Zero-length moves (below 1e-9 mm) are dropped; their
 // stop request (G09, G60) passes to the joint before them.
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -134,6 +135,8 @@ class Preparer {
   std::optional<Pending> pending_;
   std::optional<PreparedSegment> held_;  ///< chaining stage
   std::optional<JointLimits> joints_;    ///< set_joints()
+  /// --- sync-feed: axes_for()'s limits of a Move on a conveyor (Move::belt), rewritten per call.
+  mutable std::array<AxisLimits, kMaxAxes> belt_axes_{};
 };
 
 }  // namespace ncsim::planner

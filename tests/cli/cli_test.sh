@@ -281,6 +281,9 @@ expect "run --detail adds the conveyor display variables on a conveyor machine" 
   run --detail --machine "$root/machines/laser_portal" -o - "$fixtures/conveyor_ve/conveyor_ve.nc"
 expect "time --audit of conveyor tracking checks the axes on their setpoints (belt offset, catch-up): ok" 0 \
   '^audit: ok$' '' -- time --audit "$root/programs/conveyor_squares/conveyor_squares.nc"
+expect "time --audit: full feed in +X and -X on a fast belt keeps X within v_max (PCS1 velocity split)" 0 \
+  '^audit: ok$' '' -- \
+  time --audit --machine "$root/machines/laser_portal" "$fixtures/conveyor_split/conveyor_split.nc"
 expect "run to a full device is a write error, status 2" 2 '' 'cannot write' -- \
   run -o /dev/full "$fixtures/long_line.nc"
 expect "run --every 0 is a usage error" 2 '' '' -- run --every 0 "$fixtures/long_line.nc"

@@ -1,0 +1,292 @@
+// What runs around the synchronisation (issue 14, sync-feed; docs/conveyor.md S-1..S-6):
+// #SYNC OUT FEED_CONT, INDP motions after #SYNC OUT leaving from the moving state, the
+// on-the-fly change (INDP_SYN ... INTERRUPTIBLE taken over by the next catch-up), the PCS1
+// velocity split in the planner.
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/source_file.hpp"
+#include "interp/test_support.hpp"
+#include "ipo/channel.hpp"
+#include "ipo/program_source.hpp"
+#include "ipo/test_port.hpp"
+#include "scenario/loader.hpp"
+#include "scenario/player.hpp"
+
+namespace {
+
+using namespace ncsim;
+
+constexpr double kT = 0.001;
+
+struct Run {
+  ipo::Status status = ipo::Status::finished;
+  std::vector<std::uint32_t> line;
+  std::vector<ipo::SyncPhase> phase;
+  std::vector<std::array<double, 3>> x;  // command X, Y, Z (MCS)
+  std::vector<double> offset_x;          // PCS1 offset on X
+  std::vector<bool> x_indp;              // X driven by the INDP layer in that cycle
+  std::optional<ipo::RunTimeError> error;
+  std::string source_error;
+};
+
+// laser_portal: X v_max 1000 mm/s, A 10000 mm/s^2; the belt at 300 mm/s.
+Run run(const std::string& program, ipo::test::FakePort& port) {
+  const core::SourceFile file("t.nc", program);
+  const machines::Machine& m = interp::test::machine("laser_portal");
+  interp::Interpreter in(file, m);
+  ipo::ProgramSource src(in, m);
+  ipo::Channel ch(ipo::channel_config(m, kT), src);
+  ch.attach_conveyor(&port);
+  Run r;
+  for (int guard = 0; guard < 100'000; ++guard) {
+    r.status = ch.step();
+    if (r.status != ipo::Status::running) break;
+    const ipo::ConveyorSync& s = *ch.conveyor_sync();
+    r.line.push_back(ch.cycle().line);
+    r.phase.push_back(s.phase());
+    r.x.push_back({ch.axes().command[0], ch.axes().command[1], ch.axes().command[2]});
+    r.offset_x.push_back(s.offset(0));
+    r.x_indp.push_back(ch.indp().owned(0) && !ch.indp().in_position(0));
+  }
+  r.error = ch.run_time_error();
+  if (const core::Diagnostic* d = src.error()) r.source_error = d->id;
+  if (r.error)
+    MESSAGE(r.error->id << " line " << r.error->line << " t " << r.error->t << ": "
+                        << r.error->message);
+  return r;
+}
+
+double velocity(const Run& r, std::size_t k, std::size_t axis = 0) {
+  return (r.x[k][axis] - r.x[k - 1][axis]) / kT;
+}
+
+// X continuous within its V and (a few % for the difference estimate) its A.
+void check_smooth(const Run& r) {
+  for (std::size_t k = 2; k < r.x.size(); ++k) {
+    CAPTURE(k);
+    CHECK(std::fabs(velocity(r, k)) <= 1000.0 * (1 + 1e-9));
+    const double a = (r.x[k][0] - 2 * r.x[k - 1][0] + r.x[k - 2][0]) / (kT * kT);
+    CHECK(std::fabs(a) <= 10000.0 * 1.05);
+  }
+}
+
+}  // namespace
+
+TEST_CASE(
+    "#SYNC OUT FEED_CONT=5 and FEED_CONT_AUTO: the desynchronisation ends in position (S-2)") {
+  for (const char* out : {"#SYNC OUT [FEED_CONT=5]", "#SYNC OUT [FEED_CONT_AUTO]"}) {
+    CAPTURE(out);
+    ipo::test::FakePort port(300.0);
+    port.latch_at_ = 1;
+    const Run r = run(std::string("%t\nN10 G01 X0 Y0 Z0 F6000\nN20 #SYNC IN [CONV_VEL=18000]\n"
+                                  "N30 G01 X100 Y50 F6000\nN40 G04 0.1\nN50 ") +
+                          out + "\nN60 G00 X-100 Y0\nN70 M30\n",
+                      port);
+    REQUIRE(r.status == ipo::Status::finished);
+    REQUIRE(r.x.size() > 3);
+    CHECK(r.x.back()[0] == doctest::Approx(-100.0));
+    CHECK(std::fabs(velocity(r, r.x.size() - 1)) < 1e-6);  // terminates at velocity 0
+    check_smooth(r);
+  }
+}
+
+TEST_CASE("INDP after #SYNC OUT leaves from the moving state (004 §4.7 desynchronisation)") {
+  ipo::test::FakePort port(300.0);
+  port.latch_at_ = 1;
+  const Run r =
+      run("%t\nN10 G01 X0 Y0 Z0 F6000\nN20 #SYNC IN [CONV_VEL=18000]\nN30 G01 X100 Y50 F6000\n"
+          "N40 G04 0.2\nN50 #SYNC OUT [FEED_CONT=5]\n"
+          "N60 X[INDP_SYN G0 G90 POS0 INTERRUPTIBLE] Y[INDP_SYN G0 G90 POS400 INTERRUPTIBLE]\n"
+          "N70 M30\n",
+          port);
+  REQUIRE(r.status == ipo::Status::finished);
+  std::size_t first = 0;  // the first cycle X runs its INDP motion
+  for (std::size_t k = 1; k < r.x.size() && first == 0; ++k)
+    if (r.x_indp[k]) first = k;
+  REQUIRE(first > 1);
+  // The cycle before, X moved with the belt (300 mm/s); the INDP motion starts from there.
+  CHECK(velocity(r, first - 1) == doctest::Approx(300.0).epsilon(1e-6));
+  CHECK(std::fabs(velocity(r, first) - 300.0) <= 10000.0 * kT * 1.05);
+  check_smooth(r);
+  CHECK(r.x.back()[0] == doctest::Approx(0.0));
+  CHECK(r.x.back()[1] == doctest::Approx(400.0));
+}
+
+namespace {
+
+// Two workpieces; the desynchronisation from the first runs X far back (X -150) as an INDP
+// motion; the second workpiece is measured at once.
+std::string two_workpieces(const char* indp) {
+  return std::string(
+             "%t\nN10 G01 X0 Y0 Z0 F6000\nN20 #SYNC IN [CONV_VEL=18000]\nN30 G01 X100 Y50 "
+             "F6000\nN40 G04 0.1\nN50 #SYNC OUT [FEED_CONT=5]\nN60 X[") +
+         indp +
+         " G0 G90 POS-150 INTERRUPTIBLE]\nN70 S1 [MC_TouchProbe Channel=1]\n"
+         "N80 #SYNC IN [CONV_VEL=18000]\nN90 G01 X100 Y50 F6000\nN100 G04 0.1\n"
+         "N110 #SYNC OUT\nN120 M30\n";
+}
+
+}  // namespace
+
+TEST_CASE(
+    "INDP_SYN ... INTERRUPTIBLE is taken over by the next catch-up (on-the-fly change, S-4)") {
+  ipo::test::FakePort port(300.0);
+  port.latches_ = {0.0, 0.0};  // both measured values wait for their #SYNC IN
+  const Run r = run(two_workpieces("INDP_SYN"), port);
+  REQUIRE(r.status == ipo::Status::finished);
+  REQUIRE_FALSE(r.error);
+  check_smooth(r);
+  // The second catch-up starts while the INDP motion still runs: X never reaches -150.
+  std::size_t catch2 = 0;
+  for (std::size_t k = 1; k < r.x.size(); ++k)
+    if (r.line[k] == 10 && r.phase[k] == ipo::SyncPhase::catching_up && catch2 == 0) catch2 = k;
+  REQUIRE(catch2 > 0);
+  CHECK(r.x_indp[catch2 - 1]);  // the INDP motion ran up to the catch-up
+  const double x_min = std::min_element(r.x.begin(), r.x.end(), [](const auto& a, const auto& b) {
+                         return a[0] < b[0];
+                       })->at(0);
+  CHECK(x_min > -149.0);
+  // The second workpiece is tracked: X stands at PCS1 100 during its dwell.
+  std::size_t dwell = 0;
+  for (std::size_t k = 0; k < r.x.size(); ++k)
+    if (r.line[k] == 11 && r.phase[k] == ipo::SyncPhase::tracking) {
+      ++dwell;
+      CHECK(r.x[k][0] - r.offset_x[k] == doctest::Approx(100.0).epsilon(1e-9));
+    }
+  CHECK(dwell >= 90);
+}
+
+TEST_CASE("INTERRUPTIBLE with INDP_ASYN is ignored: the catch-up waits for the motion's end") {
+  ipo::test::FakePort port(300.0);
+  port.latches_ = {0.0, 0.0};
+  const Run r = run(two_workpieces("INDP_ASYN"), port);
+  REQUIRE(r.status == ipo::Status::finished);
+  REQUIRE_FALSE(r.error);
+  check_smooth(r);
+  const double x_min = std::min_element(r.x.begin(), r.x.end(), [](const auto& a, const auto& b) {
+                         return a[0] < b[0];
+                       })->at(0);
+  CHECK(x_min == doctest::Approx(-150.0));
+}
+
+TEST_CASE("PCS1 velocity split: full feed in +X and -X on a 300 mm/s belt keeps X within v_max") {
+  // F 60000 mm/min = 1000 mm/s = X's v_max: without the split X would command 1300 mm/s in the
+  // conveying direction. With it the block runs at 1000 - 1.1 x 300 = 670 mm/s both ways
+  // (docs/conveyor.md "velocity split").
+  ipo::test::FakePort port(300.0);
+  port.latch_at_ = 1;
+  const Run r =
+      run("%t\nN10 G01 X0 Y0 Z0 F6000\nN20 #SYNC IN [CONV_VEL=18000]\nN30 G01 X100 Y50 F6000\n"
+          "N40 G01 X900 F60000\nN50 G01 X100 F60000\nN60 #SYNC OUT\nN70 M30\n",
+          port);
+  REQUIRE(r.status == ipo::Status::finished);
+  double v_plus = 0.0, v_minus = 0.0;
+  for (std::size_t k = 1; k < r.x.size(); ++k) {
+    CAPTURE(k);
+    CHECK(std::fabs(velocity(r, k)) <= 1000.0 * (1 + 1e-9));
+    if (r.phase[k] == ipo::SyncPhase::tracking && r.phase[k - 1] == ipo::SyncPhase::tracking) {
+      const double v_rel = velocity(r, k) - (r.offset_x[k] - r.offset_x[k - 1]) / kT;
+      v_plus = std::max(v_plus, v_rel);
+      v_minus = std::min(v_minus, v_rel);
+    }
+  }
+  CHECK(v_plus == doctest::Approx(670.0).epsilon(1e-6));
+  CHECK(v_minus == doctest::Approx(-670.0).epsilon(1e-6));
+}
+
+TEST_CASE("a belt stopped while synchronised stops the machine with it (004 §2.3)") {
+  ipo::test::FakePort port(300.0);
+  port.latch_at_ = 1;
+  port.v_change_at_ = 400;  // during the dwell on the workpiece
+  port.v_new_ = 0.0;
+  const Run r =
+      run("%t\nN10 G01 X0 Y0 Z0 F6000\nN20 #SYNC IN [CONV_VEL=18000]\nN30 G01 X100 Y50 F6000\n"
+          "N40 G04 1\nN50 #SYNC OUT\nN60 M30\n",
+          port);
+  REQUIRE(r.status == ipo::Status::finished);
+  std::size_t still = 0;
+  for (std::size_t k = 401; k < r.x.size(); ++k)
+    if (r.line[k] == 5 && r.phase[k] == ipo::SyncPhase::tracking) {
+      ++still;
+      CHECK(velocity(r, k) == doctest::Approx(0.0));
+      CHECK(r.x[k][0] - r.offset_x[k] == doctest::Approx(100.0).epsilon(1e-9));
+    }
+  CHECK(still > 100);
+}
+
+namespace {
+
+// FakePort that records the reduced-filter switch per step.
+class FilterPort final : public conveyor::Port {
+ public:
+  explicit FilterPort(double v) : belt(v) {}
+  void step(double t) noexcept override {
+    belt.step(t);
+    reduced_at_step.push_back(reduced);
+  }
+  const conveyor::BeltState& actual() const noexcept override { return belt.actual(); }
+  const conveyor::BeltState& measured() const noexcept override { return belt.measured(); }
+  const conveyor::BeltState& master() const noexcept override { return belt.master(); }
+  bool command_velocity(const interp::MoveVelocity& c) noexcept override {
+    return belt.command_velocity(c);
+  }
+  void arm_probe(const interp::ProbeArm& c) noexcept override { belt.arm_probe(c); }
+  std::optional<double> take_latch() noexcept override { return belt.take_latch(); }
+  void set_reduced_filter(bool on) noexcept override { reduced = on; }
+  const std::optional<conveyor::PortError>& error() const noexcept override { return belt.error(); }
+  ipo::test::FakePort belt;
+  bool reduced = false;
+  std::vector<bool> reduced_at_step;
+};
+
+}  // namespace
+
+TEST_CASE("a feed hold while synchronised switches the conveyor's reduced filter (F-4)") {
+  const char* program =
+      "%t\nN10 G01 X0 Y0 Z0 F6000\nN20 #SYNC IN [CONV_VEL=18000]\nN30 G01 X100 Y50 F6000\n"
+      "N40 G01 X150 F600\nN50 #SYNC OUT\nN60 G01 Y0 F6000\nN65 G01 Y10 F600\nN70 M30\n";
+  // Two holds: one while machining on the workpiece, one after #SYNC OUT.
+  const core::SourceFile toml("s.toml",
+                              "[[event]]\nat = 0.5\nfeed_hold = true\nduration = 0.2\n"
+                              "[[event]]\nline = 8\nfeed_hold = true\nduration = 0.2\n");
+  scenario::LoadResult loaded = scenario::parse_scenario(toml);
+  REQUIRE(loaded.scenario);
+  const core::SourceFile file("t.nc", program);
+  const machines::Machine& m = interp::test::machine("laser_portal");
+  interp::Interpreter in(file, m);
+  ipo::ProgramSource src(in, m);
+  scenario::Player player(*loaded.scenario);
+  src.answer_barriers_from(&player.ve(), true);
+  ipo::Channel ch(ipo::channel_config(m, kT), src);
+  FilterPort port(300.0);
+  port.belt.latch_at_ = 1;
+  ch.attach_conveyor(&port);
+  ch.play(&player);
+  std::vector<bool> held, tracking;
+  ipo::Status st = ipo::Status::running;
+  for (int guard = 0; guard < 100'000 && st == ipo::Status::running; ++guard) {
+    st = ch.step();
+    held.push_back(ch.cycle().held);
+    tracking.push_back(ch.conveyor_sync()->phase() == ipo::SyncPhase::tracking);
+  }
+  REQUIRE(st == ipo::Status::finished);
+  // The switch is handed over at the start of the cycle; the Port is stepped later in it.
+  std::size_t on_tracking = 0, held_off_sync = 0;
+  for (std::size_t k = 1; k + 1 < held.size() && k < port.reduced_at_step.size(); ++k) {
+    if (held[k - 1] && tracking[k - 1] && port.reduced_at_step[k]) ++on_tracking;
+    if (held[k - 1] && !tracking[k - 1]) {
+      ++held_off_sync;
+      CHECK_FALSE(port.reduced_at_step[k]);
+    }
+  }
+  CHECK(on_tracking > 100);
+  CHECK(held_off_sync > 100);
+}
