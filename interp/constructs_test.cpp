@@ -376,6 +376,24 @@ TEST_CASE("#CAXTRACK ON/OFF become commands; values out of range are 21135") {
   CHECK(run("%t\n#CAXTRACK ON [AX=C ANGLIMIT=400]\nM30\n", "static_saw").error_id == "21135");
 }
 
+// --- static-saw
+TEST_CASE("#CAXTRACK keeps ROTMODE, whether ANGPOS was given and the first word ncsim lacks") {
+  auto c = commands(
+      "%t\n#CAXTRACK ON [AX=C, ANGLIMIT 3, OFFSET 180, ROTMODE=1]\n#CAXTRACK OFF\n"
+      "#CAXTRACK ON [OPTALIGN=10]\n#CAXTRACK OFF [ANGPOS=5]\nM30\n",
+      "static_saw");
+  REQUIRE(c.error_id.empty());
+  const auto& on = std::get<CaxTrack>(c.items.at(0).body);
+  CHECK(on.rotmode == 1.0);
+  CHECK(on.offset == 180.0);
+  CHECK(on.anglimit == 3.0);
+  CHECK(on.unsupported.empty());
+  CHECK_FALSE(std::get<CaxTrack>(c.items.at(1).body).angpos_given);
+  CHECK(std::get<CaxTrack>(c.items.at(2).body).unsupported == "OPTALIGN");
+  CHECK(std::get<CaxTrack>(c.items.at(3).body).angpos_given);
+  CHECK(std::get<CaxTrack>(c.items.at(3).body).angpos == 5.0);
+}
+
 TEST_CASE("#SYNC OUT without #SYNC IN is NC4503; #SYNC IN without CONV_VEL is NC4507") {
   CHECK(run("%t\n#SYNC OUT\nM30\n", "laser_portal").error_id == "NC4503");
   CHECK(run("%t\n#SYNC IN\nM30\n", "laser_portal").error_id == "NC4507");

@@ -375,6 +375,15 @@ bool Interpreter::Impl::hash_caxtrack(const ast::Block& b, const ast::HashComman
       *slot = *v;
     }
   }
+  // --- static-saw: ROTMODE, ANGPOS given, the words ncsim does not run (docs/caxtrack.md)
+  c.angpos_given = items.find("ANGPOS") != nullptr;
+  if (const ast::Item* it = items.find("ROTMODE")) {
+    auto v = item_value(b, it);
+    if (!v) return false;
+    c.rotmode = *v;
+  }
+  for (const char* key : {"OPTALIGN", "SCALEFACT", "AXNR", "START_STROKE"})
+    if (c.unsupported.empty() && items.find(key) != nullptr) c.unsupported = key;
   if (c.anglimit < 0.0 || c.anglimit > 360.0 || std::fabs(c.offset) > 360.0 ||
       std::fabs(c.angpos) > 360.0) {
     return fail(at, "21135", "#CAXTRACK: ANGLIMIT, OFFSET or ANGPOS out of range");

@@ -78,7 +78,10 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
     state_.actual[i] = p0;
   }
   // --- conveyor-sync: conveyor tracking on FCT_DLM channels
-  if (config.conveyor) sync_.emplace(*config.conveyor, config.sync_axes, t);
+  if (config.conveyor) {
+    sync_.emplace(*config.conveyor, config.sync_axes, t);
+    static_unit_ = config.conveyor->x_virtual;  // --- static-saw
+  }
 }
 
 Status Channel::stop(const char* id, std::string message, const Cycle& c, int axis) noexcept {
@@ -310,6 +313,7 @@ Status Channel::step() noexcept {
     if (error_) return Status::error;
     if (done && holding && indp_syn_done()) ipo_.release_wait();  // --- indp: INDP_SYN axes
   }
+  static_override();  // --- static-saw: a synchronised static unit's path follows the belt
   Status s = ipo_.step();
   if (error_) return Status::error;  // raised by an event at a ChannelWait inside the step
   if (s == Status::finished) {

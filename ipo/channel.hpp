@@ -287,6 +287,13 @@ class Channel {
   // --- conveyor-sync (ipo/channel_conveyor.cpp)
   /// The conveyor workspace on the cycle's MCS setpoints while synchronised; false: stopped.
   bool sync_check_workspace(const Cycle& c) noexcept;
+  // --- static-saw (ipo/channel_static.cpp)
+  /// A synchronised static unit (P-CHAN-00364): the path override is the belt's master
+  /// velocity over the planned kXvPlanFactor * CONV_VEL, so the virtual X follows the belt;
+  /// the operator's override is restored after #SYNC OUT.
+  void static_override() noexcept;
+  bool static_unit_ = false;                 ///< P-CHAN-00364 x_virtual
+  std::optional<double> operator_override_;  ///< the override before the static unit took it
   // --- operator: block starts and the actions of scenario events
   /// Passes the interpolator's block starts to the channel's player.
   class BlockRelay final : public BlockObserver {

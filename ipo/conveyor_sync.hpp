@@ -105,6 +105,7 @@ class ConveyorSync {
   double offset_a(std::size_t i) const noexcept { return share_[i] * a_; }  ///< [mm/s^2]
 
   SyncPhase phase() const noexcept { return phase_; }
+  double conv_vel() const noexcept { return conv_vel_; }  ///< CONV_VEL [mm/s] --- static-saw
   /// Within P-CHAN-00365 of the target since the catch-up (docs/conveyor.md).
   bool synchronised() const noexcept { return synchronised_; }
   const SyncFrame& frame() const noexcept { return frame_; }

@@ -205,10 +205,9 @@ bool ProgramSource::take_event(std::uint32_t up_to, ChannelEvent& out) {
 bool ProgramSource::pull(Item& out) {
   if (end_reached_) return false;
   for (;;) {
-    if (queue_size_ > 0) {  // spline pieces first: they come before the next command
-      out = queue_[queue_head_];
-      queue_head_ = (queue_head_ + 1) % queue_.size();
-      --queue_size_;
+    if (!queue_.empty()) {  // queued items first: they come before the next command
+      out = std::move(queue_.front());
+      queue_.pop_front();
       return true;
     }
     // Barriers: the decode-only state (docs/ipo.md), or the scenario's V.E. store.
@@ -265,9 +264,11 @@ bool ProgramSource::pull(Item& out) {
       return true;
     }
     if (std::holds_alternative<interp::SyncIn>(cmd->body) ||
-        std::holds_alternative<interp::SyncOut>(cmd->body))
-      sync_motion_ = true;  // --- conveyor-sync (end)
-    sync_belt(cmd->body);   // --- sync-feed: the PCS1 velocity split
+        std::holds_alternative<interp::SyncOut>(cmd->body)) {
+      sync_motion_ = true;     // --- conveyor-sync (end)
+      static_sync(cmd->body);  // --- static-saw
+    }
+    sync_belt(cmd->body);  // --- sync-feed: the PCS1 velocity split
     if (is_channel_event(cmd->body)) {
       note_indp(cmd->body);  // --- planner
       const bool stops = stops_path(cmd->body);
@@ -295,11 +296,12 @@ bool ProgramSource::pull(Item& out) {
         [&](const auto& body) {
           using T = std::decay_t<decltype(body)>;
           if constexpr (std::is_same_v<T, interp::Motion>) {
-            out = to_move(body, line);
-            std::get<planner::Move>(out).event_tag = tag_;
+            planner::Move mv = to_move(body, line);
+            mv.event_tag = tag_;
             given_ = tag_;
-            produced = true;
+            emit_path(std::move(mv));  // --- static-saw: queued, handed out at the loop's top
           } else if constexpr (std::is_same_v<T, interp::Dwell>) {
+            static_dwell(line);  // --- static-saw
             out = Dwell{body.seconds, line, tag_};
             given_ = tag_;
             produced = true;
@@ -337,7 +339,7 @@ bool ProgramSource::pull(Item& out) {
           } else if constexpr (std::is_same_v<T, interp::Kinematics>) {
             produced = kinematics(body, line, out);  // --- trafo: a switch stops the path
           } else if constexpr (std::is_same_v<T, interp::CaxTrack>) {
-            if (body.on) fail(line, "#CAXTRACK ON");
+            caxtrack(body, line);  // --- static-saw
           } else if constexpr (std::is_same_v<T, interp::SplineBegin>) {
             spline_begin(body, line);
           } else if constexpr (std::is_same_v<T, interp::SplinePoint>) {

@@ -33,9 +33,11 @@
 
 #include "core/diagnostic.hpp"
 #include "interp/interpreter.hpp"
+#include "ipo/caxtrack.hpp"  // --- static-saw
 #include "ipo/channel_event.hpp"
 #include "ipo/interpolator.hpp"
 #include "ipo/trafo.hpp"
+#include "ipo/x_virtual.hpp"  // --- static-saw
 #include "machines/cs_stack.hpp"
 #include "machines/machine.hpp"
 #include "planner/spline.hpp"
@@ -140,13 +142,12 @@ class ProgramSource final : public Source {
   machines::CsStack cs_;
   machines::Frame cs_frame_;            ///< cs_.active_frame(): PCS -> MCS
   std::array<int, 3> xyz_{-1, -1, -1};  ///< machine indices of X, Y, Z (-1: none)
-  // #SPLINE (program_spline.cpp): the builder of the open section, its modal Move, and the
-  // pieces not yet handed out (at most 4: SplineBuilder::finish()).
+  // #SPLINE (program_spline.cpp): the builder of the open section and its modal Move.
   std::optional<planner::SplineBuilder> spline_;
   planner::Move spline_modal_;
-  std::array<planner::Move, 4> queue_{};
-  std::size_t queue_head_ = 0;
-  std::size_t queue_size_ = 0;
+  /// Items of the last command not yet handed out (spline pieces, #CAXTRACK turn blocks, the
+  /// static unit's parts: emit_path()); empty before each command is pulled.
+  std::deque<Item> queue_;
   // Run-time barrier answers (answer_barriers_from).
   scenario::VeStore* store_ = nullptr;
   bool flush_ = false;
@@ -183,6 +184,30 @@ class ProgramSource final : public Source {
   std::optional<ChannelWait> syn_wait_;  ///< the wait after the block's INDP_SYN commands
   bool syn_interruptible_ = false;       ///< --- sync-feed: all of them INTERRUPTIBLE so far
   std::optional<interp::Command> held_;  ///< the command that ended that block
+  // --- static-saw: #CAXTRACK and the static unit (program_static.cpp)
+  /// Every path Move goes out here: #CAXTRACK sets the tracking axis, a synchronised static
+  /// unit (P-CHAN-00364) the belt feed; the results are queued.
+  void emit_path(planner::Move mv);
+  /// #CAXTRACK ON / OFF: 120626 (a main axis), NC9103 (no tracking axis), NC6001 (ROTMODE
+  /// other than 0 / 1, OPTALIGN, SCALEFACT, AXNR, START_STROKE, ANGPOS).
+  void caxtrack(const interp::CaxTrack& c, std::uint32_t line);
+  /// #SYNC IN / #SYNC OUT as the adapter sees them: the static unit's belt feed on / off.
+  void static_sync(const interp::CommandBody& body);
+  /// G04 while the static unit is synchronised: NC9101.
+  void static_dwell(std::uint32_t line);
+  struct CaxState {
+    CaxTrackParams params;
+    int slot = -1;                      ///< interpolated slot of the tracking axis
+    std::optional<CaxTracker> tracker;  ///< built at the first Move (its start is the axis's)
+  };
+  std::optional<CaxState> cax_;
+  std::optional<double> c_hold_;  ///< after OFF: where tracking left the axis [deg]
+  int c_hold_slot_ = -1;
+  std::optional<XVirtualParams> xv_;            ///< set while a static unit is synchronised
+  std::vector<planner::AxisLimits> xv_limits_;  ///< the planner's limits (NC9100)
+  std::vector<std::string> xv_names_;           ///< interpolated axis names
+  std::optional<double> xv_tangent_;            ///< XY tangent at the last block's end [deg]
+  // --- end static-saw
 };
 
 }  // namespace ncsim::ipo

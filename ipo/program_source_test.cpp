@@ -192,3 +192,44 @@ TEST_CASE("the blocks before a faulty one run to their end; then the error stand
   REQUIRE(src.error() != nullptr);
   CHECK(src.error()->loc.line == 2);
 }
+
+// --- static-saw: #CAXTRACK at the adapter (docs/caxtrack.md)
+TEST_CASE("#CAXTRACK: C follows the tangent + OFFSET; a corner above ANGLIMIT stops and turns C") {
+  const Pulled p = pull(
+      "N10 G00 X0 Y0 C0\n"
+      "N20 #CAXTRACK ON [AX=C, ANGLIMIT 3, OFFSET 10]\n"
+      "N30 G01 X10 F600\n"
+      "N40 X20 Y0.1\n"
+      "N50 Y10\n"
+      "N60 #CAXTRACK OFF\n"
+      "N70 X0\n"
+      "N80 M30\n",
+      "static_saw");
+  REQUIRE(p.error_id.empty());
+  // G00, [stop, turn to 10], X10 at 10, X20 turning within ANGLIMIT, [stop, turn], Y10, X0
+  REQUIRE(p.items.size() == 9);
+  const auto move = [&](std::size_t i) { return std::get<planner::Move>(p.items.at(i)); };
+  constexpr std::size_t kC = 3;
+  CHECK(std::get<ipo::Dwell>(p.items[1]).seconds == 0.0);
+  CHECK(move(2).rapid);
+  CHECK(move(2).end[kC] == doctest::Approx(10.0));
+  CHECK(move(3).start[kC] == doctest::Approx(10.0));
+  CHECK(move(3).end[kC] == doctest::Approx(10.0));
+  const double small = std::atan2(0.1, 10.0) * 180.0 / 3.14159265358979;
+  CHECK(move(4).start[kC] == doctest::Approx(10.0));  // turned through within the block
+  CHECK(move(4).end[kC] == doctest::Approx(10.0 + small));
+  CHECK(std::holds_alternative<ipo::Dwell>(p.items[5]));
+  CHECK(move(6).end[kC] == doctest::Approx(100.0));  // +Y: 90 + OFFSET
+  CHECK(move(7).end[kC] == doctest::Approx(100.0));
+  CHECK(move(8).start[kC] == doctest::Approx(100.0));  // after OFF C stays where it was left
+  CHECK(move(8).end[kC] == doctest::Approx(100.0));
+}
+
+TEST_CASE("#CAXTRACK: a main axis is 120626; ROTMODE 2 and OPTALIGN are not supported") {
+  CHECK(pull("N10 #CAXTRACK ON [AX=Y]\nN20 G01 X1 F600\nM30\n", "static_saw").error_id == "120626");
+  const Pulled r = pull("N10 #CAXTRACK ON [AX=C, ROTMODE=2]\nN20 G01 X1 F600\nM30\n", "static_saw");
+  CHECK(r.error_id == ipo::kNotSupportedId);
+  CHECK(r.error_message.find("ROTMODE=2") != std::string::npos);
+  CHECK(pull("N10 #CAXTRACK ON [AX=C, OPTALIGN=5]\nM30\n", "static_saw").error_id ==
+        ipo::kNotSupportedId);
+}

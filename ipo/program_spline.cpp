@@ -6,8 +6,10 @@
 // blossoms commute with a rigid frame, so the curve is the frame's image of the PCS curve) with
 // its own line and feed; SplineEnd finishes the section. Every completed piece becomes one
 // spline Move (planner::spline_move: cubic Bezier, planned with arc-length parametrisation,
-// never chopped) carrying the modal state of the #SPLINE ON block. The builder holds a window
-// of 8 points and the queue at most 4 pieces: memory does not grow with the section.
+// never chopped) carrying the modal state of the #SPLINE ON block; it leaves through
+// emit_path() (program_static.cpp: #CAXTRACK, the static unit's belt feed may halve it). The
+// builder holds a window of 8 points and the queue the parts of at most 4 pieces: memory does
+// not grow with the section.
 
 #include <string>
 
@@ -47,13 +49,10 @@ void ProgramSource::spline_end(std::uint32_t line) {
 }
 
 void ProgramSource::queue_pieces(std::span<const planner::SplinePiece> pieces) {
-  for (const planner::SplinePiece& piece : pieces) {
-    // Capacity: the queue is empty before each command (pull() hands it out first) and one
-    // command completes at most 4 pieces (SplineBuilder::finish()).
-    const std::size_t at = (queue_head_ + queue_size_) % queue_.size();
-    queue_[at] = planner::spline_move(piece, spline_modal_);
-    ++queue_size_;
-  }
+  // The queue is empty before each command (pull() hands it out first); one command completes
+  // at most 4 pieces (SplineBuilder::finish()), each of which emit_path() may split.
+  for (const planner::SplinePiece& piece : pieces)
+    emit_path(planner::spline_move(piece, spline_modal_));
 }
 
 }  // namespace ncsim::ipo

@@ -1,0 +1,120 @@
+// The static processing unit, P-CHAN-00364 x_virtual (seed 004 §2.1.6 l.432-443, §4.1.2
+// l.617-621; seed-reading question 13, A22): the belt feed whose X component is the belt's, the
+// direction rule, the "dynamic error" NC9100 (docs/conveyor.md "Static processing unit").
+
+#include "ipo/x_virtual.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "planner/move.hpp"
+
+namespace {
+
+using ncsim::ipo::belt_feed;
+using ncsim::ipo::XVirtualParams;
+using ncsim::planner::AxisLimits;
+using ncsim::planner::Move;
+
+Move line(double x0, double y0, double x1, double y1) {
+  Move m;
+  m.axis_count = 4;
+  m.path_axes = 0b111;
+  m.start[0] = x0;
+  m.start[1] = y0;
+  m.end[0] = x1;
+  m.end[1] = y1;
+  m.feed = 100.0 / 60.0;  // F100: ignored (004 l.1011)
+  return m;
+}
+
+std::vector<AxisLimits> limits(double y_a_max = 10000.0, double x_v_max = 2000.0) {
+  AxisLimits l{1000.0, 1000.0, 1000.0, 20000.0, 20000.0, 200000.0, 1.0, 0.0, 0.0};
+  std::vector<AxisLimits> v(4, l);
+  v[0].v_max = v[0].v_reference = v[0].v_rapid = x_v_max;
+  v[1].a_max = v[1].d_max = y_a_max;
+  return v;
+}
+
+const std::vector<std::string> kNames{"X", "Y", "Z", "C"};
+
+}  // namespace
+
+TEST_CASE("A22: the diagonal X-550 Y-550 gets the feed whose X component is the belt's") {
+  const XVirtualParams p{0, 1.0, 200.0, 0b111};
+  const auto o = belt_feed(line(0, 0, -550, -550), p, limits(), kNames);
+  REQUIRE_FALSE(o.error);
+  REQUIRE(o.moves.size() == 1);
+  // Y moves like the virtual X, at 200 mm/s: the path at sqrt(2) * 200 mm/s, 2.75 s.
+  CHECK(o.moves[0].feed == doctest::Approx(200.0 * std::sqrt(2.0)));
+  CHECK(ncsim::ipo::line_belt_feed(line(0, 0, -550, -550), p) ==
+        doctest::Approx(200.0 * std::sqrt(2.0)));
+  CHECK_FALSE(o.moves[0].rapid);
+}
+
+TEST_CASE("a block along the belt or with it is NC9102; the sign follows P-CHAN-00363") {
+  const XVirtualParams p{0, 1.0, 200.0, 0b111};
+  const auto o = belt_feed(line(0, 0, 0, -50), p, limits(), kNames);
+  REQUIRE(o.error);
+  CHECK(std::string(o.error->id) == "NC9102");
+  CHECK(belt_feed(line(0, 0, 50, 0), p, limits(), kNames).error);
+  const XVirtualParams q{0, -1.0, 200.0, 0b111};  // the belt moves in -X: the contour runs +X
+  CHECK_FALSE(belt_feed(line(0, 0, 50, 0), q, limits(), kNames).error);
+}
+
+TEST_CASE("a spline is cut into parts whose X component stays within 1 % of the belt") {
+  const XVirtualParams p{0, 1.0, 300.0, 0b111};
+  Move m = line(0, 0, -200, -30);
+  auto c = std::make_shared<ncsim::planner::SplineControl>();
+  c->c1[0] = -50;
+  c->c2[0] = -150;
+  c->c1[1] = 0;
+  c->c2[1] = -40;
+  m.spline = std::move(c);
+  const auto o = belt_feed(m, p, limits(), kNames);
+  REQUIRE_FALSE(o.error);
+  CHECK(o.moves.size() > 1);
+  for (const Move& part : o.moves) {
+    for (double u = 0.0; u <= 1.0; u += 0.125) {
+      const double w = 1.0 - u;
+      auto d = [&](std::size_t i) {
+        return 3 * (w * w * (part.spline->c1[i] - part.start[i]) +
+                    2 * w * u * (part.spline->c2[i] - part.spline->c1[i]) +
+                    u * u * (part.end[i] - part.spline->c2[i]));
+      };
+      const double vx = part.feed * std::fabs(d(0)) / std::hypot(d(0), d(1));
+      CHECK(vx == doctest::Approx(300.0).epsilon(0.011));
+    }
+  }
+}
+
+TEST_CASE("NC9100: a belt too fast for Y's acceleration on the curve is a dynamic error") {
+  Move m = line(0, 0, -200, -30);
+  auto c = std::make_shared<ncsim::planner::SplineControl>();
+  c->c1[0] = -50;
+  c->c2[0] = -150;
+  c->c1[1] = 0;
+  c->c2[1] = -40;
+  m.spline = std::move(c);
+  const XVirtualParams slow{0, 1.0, 300.0, 0b111};
+  CHECK_FALSE(belt_feed(m, slow, limits(), kNames).error);
+  const XVirtualParams fast{0, 1.0, 3000.0, 0b111};
+  const auto o = belt_feed(m, fast, limits(), kNames);
+  REQUIRE(o.error);
+  CHECK(std::string(o.error->id) == "NC9100");
+  CHECK(o.error->message.find("axis Y") != std::string::npos);
+  // The virtual X is planned in PCS1 at the belt's velocity: its list must allow it (004
+  // l.617-618: "a simulation axis with sufficient dynamics to cater for the conveyor").
+  const auto x = belt_feed(m, fast, limits(1e7), kNames);
+  REQUIRE(x.error);
+  CHECK(x.error->message.find("axis X") != std::string::npos);
+  // The same contour passes at the fast belt when X and Y can follow.
+  std::vector<AxisLimits> big = limits(1e7, 1e5);
+  big[0].a_max = big[0].d_max = 1e7;
+  const auto ok = belt_feed(m, fast, big, kNames);
+  CHECK_MESSAGE(!ok.error, (ok.error ? ok.error->message : std::string()));
+}
