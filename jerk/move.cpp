@@ -17,6 +17,7 @@
 #include <limits>
 
 #include "jerk/jerk.hpp"
+#include "jerk/root.hpp"
 
 namespace ncsim::jerk {
 
@@ -137,53 +138,6 @@ double solve_bracket(double x_neg, double x_pos, double g_neg, double g_pos, dou
   return x_neg;
 }
 
-// Root of g between x_neg (g <= 0) and x_pos (g > 0) like solve_bracket, for the level's chain
-// distance, whose slope is known in closed form (level_slope): a Newton step from the end
-// nearer the root (aimed a little below it, at g = -tol / 2, so it lands on the feasible side)
-// wherever it stays inside the bracket, else the regula falsi step. Returns the final x_neg.
-// `gs(x, slope)` evaluates g and stores the slope at x in `slope` (NaN where unknown).
-template <class G>
-double solve_level(double x_neg, double x_pos, double g_neg, double g_pos, double s_neg,
-                   double s_pos, double tol, G gs) noexcept {
-  double w_neg = g_neg;  // the regula falsi's (weighted) end values
-  double w_pos = g_pos;
-  int side = 0;
-  for (int i = 0; i < 200; ++i) {
-    if (std::abs(x_pos - x_neg) <= kResidue * std::max(std::abs(x_neg), std::abs(x_pos))) break;
-    const bool from_neg = -g_neg <= g_pos;
-    const double x0 = from_neg ? x_neg : x_pos;
-    const double g0 = from_neg ? g_neg : g_pos;
-    // Without a slope, an end within tol above the root (where regula falsi would crawl from
-    // the far end) steps by the secant of the bracket.
-    const double s0 = from_neg                            ? s_neg
-                      : std::isnan(s_pos) && g_pos <= tol ? (g_pos - g_neg) / (x_pos - x_neg)
-                                                          : s_pos;
-    double x = x0 - (g0 + 0.5 * tol) / s0;
-    const bool newton = s0 > 0.0 && x > std::min(x_neg, x_pos) && x < std::max(x_neg, x_pos);
-    if (!newton) {
-      x = (x_neg * w_pos - x_pos * w_neg) / (w_pos - w_neg);
-      if (!(x > std::min(x_neg, x_pos) && x < std::max(x_neg, x_pos))) x = 0.5 * (x_neg + x_pos);
-    }
-    double slope = 0.0;
-    const double gx = gs(x, slope);
-    if (gx <= 0.0) {
-      if (gx >= -tol) return x;
-      if (!newton && side == -1) w_pos *= detail::anderson_bjorck(gx, w_neg);
-      x_neg = x;
-      g_neg = w_neg = gx;
-      s_neg = slope;
-      side = newton ? 0 : -1;
-    } else {
-      if (!newton && side == 1) w_neg *= detail::anderson_bjorck(gx, w_pos);
-      x_pos = x;
-      g_pos = w_pos = gx;
-      s_pos = slope;
-      side = newton ? 0 : 1;
-    }
-  }
-  return x_neg;
-}
-
 // Highest feasible level; negative when no level in [0, V] fits. dist(vm) is not monotone:
 // it dips where a ramp vanishes (vm = v_zero of the start, vm = v1), so the feasible levels need
 // not be one interval. The candidates V, max(v_zero, v1), min(v_zero, v1), 0 (clamped to [0, V])
@@ -222,7 +176,7 @@ double top_level(const Frame& f, const Limits& lim, Level& out) noexcept {
     if (!(c < hi)) continue;
     const double g_c = g(c);
     if (g_c <= 0.0) {
-      return answer(solve_level(c, hi, g_c, g_hi, out.slope, s_hi, tol, gs));
+      return answer(detail::solve_with_slope(c, hi, g_c, g_hi, out.slope, s_hi, tol, gs));
     }
     hi = c;
     g_hi = g_c;

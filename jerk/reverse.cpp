@@ -6,14 +6,16 @@
 // cruises there, and the second part (frame g) takes (-L, 0) through v = 0 to (v1, 0). The
 // displacement toward g without cruise, s(L), falls as L grows (the detour grows); the
 // fastest turn is at the highest level whose displacement still reaches the target,
-// s(L) = g (p1 - p0), found by regula falsi (Anderson-Bjorck) on (0, V] (a cruise at V when s(V) is
-// still beyond the target).
+// s(L) = g (p1 - p0), found on (0, V] by Newton steps with the closed-form slope of s(L) where
+// it exists, else regula falsi (jerk/root.hpp); a cruise at V when s(V) is still beyond the
+// target.
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "jerk/jerk.hpp"
+#include "jerk/root.hpp"
 
 namespace ncsim::jerk {
 
@@ -56,6 +58,27 @@ double reach(const State& start, const Reversal& r, double g) noexcept {
   return g * (end_state(mid, r.back).p - start.p);
 }
 
+// d s / d L [mm per mm/s] (NaN where unknown). A piece from a fixed start ending at velocity
+// vm with signed peak a_p covers a distance whose derivative in vm is vm / a_p + |a_p| / (2J)
+// (jerk/move.cpp, level_slope): the out part ends at L; the back part read backward in time
+// ends at -L with the peak of its piece from -L (its crossing, else its one ramp). Crossings
+// are fixed unless their a_zero is sqrt(2 J L) (then they move with L: NaN).
+double reach_slope(const Reversal& r, double level, double j) noexcept {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double a_level = (1.0 - 1e-9) * std::sqrt(2.0 * j * level);
+  const double p_out = r.out.first.a_peak;
+  if (p_out == 0.0 || (r.out.cross.time() > 0.0 && !(r.out.cross.a_zero < a_level))) return nan;
+  double p_back = std::abs(r.back.first.a_peak);
+  if (r.back.cross.time() > 0.0) {
+    if (!(r.back.cross.a_zero < a_level)) return nan;
+    p_back = r.back.cross.a_peak;
+  }
+  if (!(p_back > 0.0)) return nan;
+  const double d_out = level / p_out + std::abs(p_out) / (2.0 * j);
+  const double d_back = -(level / p_back + p_back / (2.0 * j));
+  return -d_out + d_back;
+}
+
 }  // namespace
 
 Status reversal_move(const State& start, double p1, double v1, const Limits& lim,
@@ -68,42 +91,33 @@ Status reversal_move(const State& start, double p1, double v1, const Limits& lim
   if (v1 == 0.0) return Status::not_supported;
   const double g = v1 > 0.0 ? 1.0 : -1.0;
   const double d = g * (p1 - start.p);
-  const auto f = [&](double level) { return reach(start, make(start, g, level, v1, lim), g) - d; };
-  const double f_top = f(lim.v_max);
+  // h(L) = d - s(L) rises with L; feasible (the turn still reaches the target) is h <= 0.
+  // The turn and h of the last level evaluated are kept: the solver usually returns it.
+  Reversal r;
+  double last = -1.0;
+  double h_last = 0.0;
+  const auto h = [&](double level, double& slope) {
+    r = make(start, g, level, v1, lim);
+    last = level;
+    slope = -reach_slope(r, level, lim.j_max);
+    h_last = d - reach(start, r, g);
+    return h_last;
+  };
+  double slope = 0.0;
+  const double h_top = h(lim.v_max, slope);
   double level = lim.v_max;
-  if (f_top < 0.0) {
-    double lo = 0.0;  // f > 0 side (a shorter detour still overshoots the target)
-    double hi = lim.v_max;
-    double f_lo = f(0.0);
-    double f_hi = f_top;
-    if (!(f_lo > 0.0)) return Status::not_supported;  // no detour needed (or none helps)
-    int side = 0;
+  if (h_top > 0.0) {
+    const double s_top = slope;
+    const double h_zero = h(0.0, slope);
+    if (!(h_zero < 0.0)) return Status::not_supported;  // no detour needed (or none helps)
     const double tol = 8.0 * kEps * std::abs(d);
-    for (int i = 0; i < 200 && hi - lo > 4.0 * kEps * hi; ++i) {
-      double x = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
-      if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
-      const double fx = f(x);
-      if (fx >= 0.0) {
-        if (fx <= tol) {
-          lo = x;
-          break;
-        }
-        if (side == -1) f_hi *= detail::anderson_bjorck(fx, f_lo);
-        lo = x;
-        f_lo = fx;
-        side = -1;
-      } else {
-        if (side == 1) f_lo *= detail::anderson_bjorck(fx, f_hi);
-        hi = x;
-        f_hi = fx;
-        side = 1;
-      }
-    }
-    level = lo;  // reach >= d: the rest is a (rounding-size) cruise backward
+    level = detail::solve_with_slope(0.0, lim.v_max, h_zero, h_top, slope, s_top, tol, h);
+    if (!(level > 0.0)) return Status::not_supported;
+    if (last != level) h(level, slope);
   }
-  if (!(level > 0.0)) return Status::not_supported;
-  out = make(start, g, level, v1, lim);
-  const double rest = f(level);  // >= 0: covered by cruising backward at the level
+  out = r;
+  const double h_level = h_last;
+  const double rest = -h_level;  // >= 0: covered by cruising backward at the level
   out.out.t_cruise = rest > 8.0 * kEps * std::abs(d) ? rest / level : 0.0;
   return Status::ok;
 }

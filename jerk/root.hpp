@@ -1,0 +1,79 @@
+#pragma once
+// jerk/root: the bracketed root solver of the level searches (jerk/move.cpp, jerk/reverse.cpp).
+//
+// Purpose: the highest feasible parameter x of a move (a cruise level, a turning level) is the
+// root of an increasing g(x) = covered distance - D; feasible is g <= 0 (the rest of the way
+// is then a cruise). Input: a bracket x_neg (g <= 0), x_pos (g > 0), the slopes g' at both
+// ends (NaN where unknown), a tolerance tol on g [mm], and gs(x, slope) evaluating g and its
+// slope. Output: an x with -tol <= g(x) <= 0, or the last x_neg when the bracket has shrunk to
+// rounding. Invariants: every step stays inside the bracket; nothing allocates or throws.
+// Internal to jerk/ (not part of jerk.hpp).
+
+#include <algorithm>
+#include <cmath>
+
+#include "jerk/jerk.hpp"
+
+namespace ncsim::jerk::detail {
+
+// A Newton step from the end nearer the root (aimed a little below it, at g = -tol / 2, so it
+// lands on the feasible side) wherever it stays inside the bracket, else the regula falsi step
+// (Anderson-Bjorck weight, bisection as a fallback). Without a slope, an end within tol above the
+// root (where regula falsi would crawl from the far end) steps by the secant of the bracket. After
+// three Newton steps in a row that shrank the bracket by less than 10 % a regula falsi step
+// follows, so a poor slope costs steps, never convergence.
+template <class G>
+double solve_with_slope(double x_neg, double x_pos, double g_neg, double g_pos, double s_neg,
+                        double s_pos, double tol, G gs) noexcept {
+  double w_neg = g_neg;  // the regula falsi's (weighted) end values
+  double w_pos = g_pos;
+  int side = 0;
+  int slow = 0;  // Newton steps in a row that shrank the bracket by < 10 % (a poor slope)
+  for (int i = 0; i < 200; ++i) {
+    const double width = std::abs(x_pos - x_neg);
+    if (width <= kResidue * std::max(std::abs(x_neg), std::abs(x_pos))) break;
+    const double lo = std::min(x_neg, x_pos);
+    const double hi = std::max(x_neg, x_pos);
+    // Newton from either end (on a convex g both land at or above the root: the nearer one is
+    // taken), aimed at g = -tol / 2.
+    double x = hi;
+    bool newton = false;
+    const auto try_newton = [&](double x0, double g0, double s0) {
+      if (!(s0 > 0.0)) return;
+      const double xn = x0 - (g0 + 0.5 * tol) / s0;
+      if (xn > lo && xn < hi && (!newton || std::abs(xn - x_neg) < std::abs(x - x_neg))) {
+        x = xn;
+        newton = true;
+      }
+    };
+    if (slow < 3) {
+      try_newton(x_neg, g_neg, s_neg);
+      try_newton(x_pos, g_pos,
+                 std::isnan(s_pos) && g_pos <= tol ? (g_pos - g_neg) / (x_pos - x_neg) : s_pos);
+    }
+    if (!newton) {
+      x = (x_neg * w_pos - x_pos * w_neg) / (w_pos - w_neg);
+      if (!(x > lo && x < hi)) x = 0.5 * (x_neg + x_pos);
+    }
+    double slope = 0.0;
+    const double gx = gs(x, slope);
+    if (gx <= 0.0) {
+      if (gx >= -tol) return x;
+      if (!newton && side == -1) w_pos *= anderson_bjorck(gx, w_neg);
+      x_neg = x;
+      g_neg = w_neg = gx;
+      s_neg = slope;
+      side = newton ? 0 : -1;
+    } else {
+      if (!newton && side == 1) w_neg *= anderson_bjorck(gx, w_pos);
+      x_pos = x;
+      g_pos = w_pos = gx;
+      s_pos = slope;
+      side = newton ? 0 : 1;
+    }
+    slow = newton && std::abs(x_pos - x_neg) > 0.9 * width ? slow + 1 : 0;
+  }
+  return x_neg;
+}
+
+}  // namespace ncsim::jerk::detail
