@@ -111,11 +111,18 @@ Derivs eval(const std::array<AxisVec, 6>& p, std::size_t n, double t) {
 /// the bound samples (the same t for every curve, so no basis is recomputed per curve).
 struct Tables {
   static constexpr int kSamples = 64;  ///< bound samples: t = k / 64, k = 0..64
-  std::array<std::array<double, 5>, geom::BezierGeom::kTable * 5> gauss4{};
+  /// Degree-8 Bernstein values at the Gauss nodes: |B'|^2 is a degree-8 polynomial.
+  std::array<std::array<double, 9>, geom::BezierGeom::kTable * 5> gauss8{};
   std::array<std::array<double, 6>, kSamples + 1> s5{};
   std::array<std::array<double, 5>, kSamples + 1> s4{};
   std::array<std::array<double, 4>, kSamples + 1> s3{};
   std::array<std::array<double, 3>, kSamples + 1> s2{};
+  /// The same values by degree index first (u4[m][k] = s4[k][m]), padded to an even count with
+  /// the last sample repeated: the blend bound loop runs over k innermost (blend_bounds).
+  static constexpr std::size_t kPadded = kSamples + 2;
+  std::array<std::array<double, kPadded>, 5> u4{};
+  std::array<std::array<double, kPadded>, 4> u3{};
+  std::array<std::array<double, kPadded>, 3> u2{};
   // The same for the spline pieces' kSplineBoundSamples (degrees 4, 3, 2 only).
   std::array<std::array<double, 5>, kSplineBoundSamples + 1> f4{};
   std::array<std::array<double, 4>, kSplineBoundSamples + 1> f3{};
@@ -124,7 +131,7 @@ struct Tables {
     constexpr double dt = 1.0 / geom::BezierGeom::kTable;
     for (int k = 0; k < geom::BezierGeom::kTable; ++k)
       for (std::size_t g = 0; g < 5; ++g)
-        gauss4[static_cast<std::size_t>(k) * 5 + g] = basis<4>((k + 0.5) * dt + 0.5 * dt * kGlX[g]);
+        gauss8[static_cast<std::size_t>(k) * 5 + g] = basis<8>((k + 0.5) * dt + 0.5 * dt * kGlX[g]);
     for (int k = 0; k <= kSamples; ++k) {
       const double t = static_cast<double>(k) / kSamples;
       const auto u = static_cast<std::size_t>(k);
@@ -132,6 +139,15 @@ struct Tables {
       s4[u] = basis<4>(t);
       s3[u] = basis<3>(t);
       s2[u] = basis<2>(t);
+    }
+    for (std::size_t k = 0; k < kPadded; ++k) {
+      const std::size_t from = std::min<std::size_t>(k, kSamples);
+      for (std::size_t m = 0; m < 5; ++m)
+        u4[m][k] = s4[from][m];
+      for (std::size_t m = 0; m < 4; ++m)
+        u3[m][k] = s3[from][m];
+      for (std::size_t m = 0; m < 3; ++m)
+        u2[m][k] = s2[from][m];
     }
     for (std::size_t k = 0; k <= kSplineBoundSamples; ++k) {
       const double t = static_cast<double>(k) / static_cast<double>(kSplineBoundSamples);
@@ -147,19 +163,103 @@ const Tables& tables() {
   return t;
 }
 
-/// Speed |B'| with a given degree-4 basis.
-double speed_with(const std::array<AxisVec, 6>& p, std::size_t n, AxisMask metric,
-                  const std::array<double, 5>& b4) {
-  double sum = 0.0;
+/// The bounds of a whole blend on the 65 tabled parameters: the arithmetic of the general loop
+/// in Segment::bezier_bounds (the same operations in the same order per sample, so the same
+/// values), with the samples innermost so that the compiler can vectorise; the padding sample
+/// repeats the last one (maxima unchanged).
+DerivativeBounds blend_bounds(const Hodographs& h, std::size_t n, AxisMask metric) {
+  constexpr std::size_t kN = Tables::kPadded;
+  const Tables& tab = tables();
+  std::array<std::array<double, kN>, kMaxAxes> v1;  // first n rows set
+  std::array<std::array<double, kN>, kMaxAxes> v2;
+  std::array<std::array<double, kN>, kMaxAxes> v3;
+  std::array<double, kN> b11{}, b12{}, b22{}, b13{};
+  for (std::size_t i = 0; i < n; ++i) {
+    std::array<double, kN>& a1 = v1[i];
+    std::array<double, kN>& a2 = v2[i];
+    std::array<double, kN>& a3 = v3[i];
+    a1.fill(0.0);
+    a2.fill(0.0);
+    a3.fill(0.0);
+    for (std::size_t m = 0; m < 5; ++m) {
+      const double c = h.c1[m][i];
+      for (std::size_t k = 0; k < kN; ++k)
+        a1[k] += tab.u4[m][k] * c;
+    }
+    for (std::size_t m = 0; m < 4; ++m) {
+      const double c = h.c2[m][i];
+      for (std::size_t k = 0; k < kN; ++k)
+        a2[k] += tab.u3[m][k] * c;
+    }
+    for (std::size_t m = 0; m < 3; ++m) {
+      const double c = h.c3[m][i];
+      for (std::size_t k = 0; k < kN; ++k)
+        a3[k] += tab.u2[m][k] * c;
+    }
+    if (!has(metric, i)) continue;
+    for (std::size_t k = 0; k < kN; ++k) {
+      b11[k] += a1[k] * a1[k];
+      b12[k] += a1[k] * a2[k];
+      b22[k] += a2[k] * a2[k];
+      b13[k] += a1[k] * a3[k];
+    }
+  }
+  // Per sample: 1 / sg and the factors of the second and third derivatives (the general loop's
+  // i2, i3, c1, c2, c3); a sample with sg = 0 contributes nothing (all its factors 0).
+  std::array<double, kN> inv{}, i2{}, i3{}, c1{}, c2{}, c3{};
+  for (std::size_t k = 0; k < kN; ++k) {
+    const double sg = std::sqrt(b11[k]);
+    if (sg <= 0.0) continue;
+    const double iv = 1.0 / sg;
+    const double sg1 = b12[k] * iv;
+    const double sg2 = (b22[k] + b13[k] - sg1 * sg1) * iv;
+    const double q2 = iv * iv;
+    const double q3 = q2 * iv;
+    const double q4 = q3 * iv;
+    inv[k] = iv;
+    i2[k] = q2;
+    i3[k] = q3;
+    c1[k] = sg1 * q3;
+    c2[k] = 3.0 * sg1 * q4;
+    c3[k] = 3.0 * sg1 * sg1 * q4 * iv - sg2 * q4;
+  }
+  DerivativeBounds b;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::array<double, kN>& a1 = v1[i];
+    const std::array<double, kN>& a2 = v2[i];
+    const std::array<double, kN>& a3 = v3[i];
+    double d1 = 0.0, d2 = 0.0, d3 = 0.0;
+    for (std::size_t k = 0; k < kN; ++k) {
+      d1 = std::max(d1, std::abs(a1[k] * inv[k]));
+      d2 = std::max(d2, std::abs(a2[k] * i2[k] - a1[k] * c1[k]));
+      d3 = std::max(d3, std::abs(a3[k] * i3[k] - a2[k] * c2[k] + a1[k] * c3[k]));
+    }
+    b.d1[i] = d1;
+    b.d2[i] = d2;
+    b.d3[i] = d3;
+  }
+  return b;
+}
+
+/// |B'|^2 over the metric axes as a degree-8 Bernstein polynomial: the square of each axis's
+/// degree-4 hodograph, B4_a B4_b = C(4,a) C(4,b) / C(8,a+b) B8_(a+b).
+std::array<double, 9> squared_speed(const std::array<AxisVec, 6>& p, std::size_t n,
+                                    AxisMask metric) {
+  constexpr std::array<double, 5> c4 = {1.0, 4.0, 6.0, 4.0, 1.0};
+  constexpr std::array<double, 9> c8 = {1.0, 8.0, 28.0, 56.0, 70.0, 56.0, 28.0, 8.0, 1.0};
+  std::array<double, 9> beta{};
   for (std::size_t i = 0; i < n; ++i) {
     if (!has(metric, i)) continue;
-    double v = 0.0;
+    std::array<double, 5> d{};
     for (std::size_t k = 0; k < 5; ++k)
-      v += b4[k] * (p[k + 1][i] - p[k][i]);
-    v *= 5.0;
-    sum += v * v;
+      d[k] = 5.0 * (p[k + 1][i] - p[k][i]);
+    for (std::size_t a = 0; a < 5; ++a)
+      for (std::size_t b = 0; b < 5; ++b)
+        beta[a + b] += c4[a] * c4[b] * d[a] * d[b];
   }
-  return std::sqrt(sum);
+  for (std::size_t j = 0; j < 9; ++j)
+    beta[j] /= c8[j];
+  return beta;
 }
 
 double speed(const std::array<AxisVec, 6>& p, std::size_t n, AxisMask metric, double t) {
@@ -228,10 +328,17 @@ Segment Segment::bezier(std::uint8_t axis_count, AxisMask metric, const std::arr
   g.p = p;
   constexpr double dt = 1.0 / BezierGeom::kTable;
   const Tables& tab = tables();
+  // 160 speeds from |B'|^2 in Bernstein form: 9 products and a root each, whatever the axes.
+  const std::array<double, 9> beta = squared_speed(p, axis_count, seg.metric_);
   for (std::size_t k = 0; k < BezierGeom::kTable; ++k) {
     double sum = 0.0;
-    for (std::size_t q = 0; q < 5; ++q)
-      sum += kGlW[q] * speed_with(p, axis_count, seg.metric_, tab.gauss4[k * 5 + q]);
+    for (std::size_t q = 0; q < 5; ++q) {
+      const std::array<double, 9>& b8 = tab.gauss8[k * 5 + q];
+      double sq = 0.0;
+      for (std::size_t j = 0; j < 9; ++j)
+        sq += beta[j] * b8[j];
+      sum += kGlW[q] * std::sqrt(std::max(sq, 0.0));
+    }
     g.s_at[k + 1] = g.s_at[k] + 0.5 * dt * sum;
   }
   seg.s_hi_ = g.s_at[BezierGeom::kTable];
@@ -302,50 +409,54 @@ DerivativeBounds Segment::bezier_bounds() const noexcept {
   const Hodographs h = hodographs(g.p, n_);
   const Tables& tab = tables();
   DerivativeBounds b;
-  // The formulas of arc_length_derivatives(), inlined without the position and without
-  // building PathPoints (this loop is most of the cost of a tolerance ball).
-  std::array<double, kMaxAxes> v1;  // first n_ entries set per sample
-  std::array<double, kMaxAxes> v2;
-  std::array<double, kMaxAxes> v3;
-  for (std::size_t k = 0; k <= samples; ++k) {
-    const double t = t0 + (t1 - t0) * static_cast<double>(k) / static_cast<double>(samples);
-    const std::array<double, 5> b4 = !table ? basis<4>(t) : spline_ ? tab.f4[k] : tab.s4[k];
-    const std::array<double, 4> b3 = !table ? basis<3>(t) : spline_ ? tab.f3[k] : tab.s3[k];
-    const std::array<double, 3> b2 = !table ? basis<2>(t) : spline_ ? tab.f2[k] : tab.s2[k];
-    double b11 = 0.0, b12 = 0.0, b22 = 0.0, b13 = 0.0;
-    for (std::size_t i = 0; i < n_; ++i) {
-      double a1 = 0.0, a2 = 0.0, a3 = 0.0;
-      for (std::size_t m = 0; m < 5; ++m)
-        a1 += b4[m] * h.c1[m][i];
-      for (std::size_t m = 0; m < 4; ++m)
-        a2 += b3[m] * h.c2[m][i];
-      for (std::size_t m = 0; m < 3; ++m)
-        a3 += b2[m] * h.c3[m][i];
-      v1[i] = a1;
-      v2[i] = a2;
-      v3[i] = a3;
-      if (has(metric_, i)) {
-        b11 += a1 * a1;
-        b12 += a1 * a2;
-        b22 += a2 * a2;
-        b13 += a1 * a3;
+  if (table && !spline_) {
+    b = blend_bounds(h, n_, metric_);
+  } else {
+    // The formulas of arc_length_derivatives(), inlined without the position and without
+    // building PathPoints (this loop is most of the cost of a tolerance ball).
+    std::array<double, kMaxAxes> v1;  // first n_ entries set per sample
+    std::array<double, kMaxAxes> v2;
+    std::array<double, kMaxAxes> v3;
+    for (std::size_t k = 0; k <= samples; ++k) {
+      const double t = t0 + (t1 - t0) * static_cast<double>(k) / static_cast<double>(samples);
+      const std::array<double, 5> b4 = !table ? basis<4>(t) : spline_ ? tab.f4[k] : tab.s4[k];
+      const std::array<double, 4> b3 = !table ? basis<3>(t) : spline_ ? tab.f3[k] : tab.s3[k];
+      const std::array<double, 3> b2 = !table ? basis<2>(t) : spline_ ? tab.f2[k] : tab.s2[k];
+      double b11 = 0.0, b12 = 0.0, b22 = 0.0, b13 = 0.0;
+      for (std::size_t i = 0; i < n_; ++i) {
+        double a1 = 0.0, a2 = 0.0, a3 = 0.0;
+        for (std::size_t m = 0; m < 5; ++m)
+          a1 += b4[m] * h.c1[m][i];
+        for (std::size_t m = 0; m < 4; ++m)
+          a2 += b3[m] * h.c2[m][i];
+        for (std::size_t m = 0; m < 3; ++m)
+          a3 += b2[m] * h.c3[m][i];
+        v1[i] = a1;
+        v2[i] = a2;
+        v3[i] = a3;
+        if (has(metric_, i)) {
+          b11 += a1 * a1;
+          b12 += a1 * a2;
+          b22 += a2 * a2;
+          b13 += a1 * a3;
+        }
       }
-    }
-    const double sg = std::sqrt(b11);
-    if (sg <= 0.0) continue;
-    const double inv = 1.0 / sg;
-    const double sg1 = b12 * inv;
-    const double sg2 = (b22 + b13 - sg1 * sg1) * inv;
-    const double i2 = inv * inv;
-    const double i3 = i2 * inv;
-    const double i4 = i3 * inv;
-    const double c1 = sg1 * i3;        // x'' = B2 / sg^2 - B1 c1
-    const double c2 = 3.0 * sg1 * i4;  // x''' = B3 / sg^3 - B2 c2 + B1 c3
-    const double c3 = 3.0 * sg1 * sg1 * i4 * inv - sg2 * i4;
-    for (std::size_t i = 0; i < n_; ++i) {
-      b.d1[i] = std::max(b.d1[i], std::abs(v1[i] * inv));
-      b.d2[i] = std::max(b.d2[i], std::abs(v2[i] * i2 - v1[i] * c1));
-      b.d3[i] = std::max(b.d3[i], std::abs(v3[i] * i3 - v2[i] * c2 + v1[i] * c3));
+      const double sg = std::sqrt(b11);
+      if (sg <= 0.0) continue;
+      const double inv = 1.0 / sg;
+      const double sg1 = b12 * inv;
+      const double sg2 = (b22 + b13 - sg1 * sg1) * inv;
+      const double i2 = inv * inv;
+      const double i3 = i2 * inv;
+      const double i4 = i3 * inv;
+      const double c1 = sg1 * i3;        // x'' = B2 / sg^2 - B1 c1
+      const double c2 = 3.0 * sg1 * i4;  // x''' = B3 / sg^3 - B2 c2 + B1 c3
+      const double c3 = 3.0 * sg1 * sg1 * i4 * inv - sg2 * i4;
+      for (std::size_t i = 0; i < n_; ++i) {
+        b.d1[i] = std::max(b.d1[i], std::abs(v1[i] * inv));
+        b.d2[i] = std::max(b.d2[i], std::abs(v2[i] * i2 - v1[i] * c1));
+        b.d3[i] = std::max(b.d3[i], std::abs(v3[i] * i3 - v2[i] * c2 + v1[i] * c3));
+      }
     }
   }
   for (std::size_t i = 0; i < n_; ++i) {
