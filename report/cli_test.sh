@@ -51,16 +51,20 @@ expect "a scenario stop writes the page, exit 0" 0 '' '' -- \
   report "$fixtures/ve_branch.nc" --scenario "$fixtures/scenario_stop.toml" -o "$work/stop.html"
 holds "the page shows the stop reason" grep -q '"outcome":"stopped","stop":"[^"]' "$work/stop.html"
 
-# A conveyor run (docs/report.md "Conveyor"): the belt series, the phases, the workspace.
+# A conveyor run (docs/report.md "Conveyor"): the belt series, the phases, the workspace, the
+# three sheets' rows of the time per workpiece.
 expect "the conveyor example's report exits 0" 0 '' '' -- \
   report "$programs/conveyor_squares/conveyor_squares.nc" -o "$work/conv.html"
 for name in belt_v_actual belt_v_raw belt_v_filtered current_pos_master pos_master_comp \
-  phase.waiting phase.catch_up phase.synchronised phase.leaving; do
+  synchro_lag phase.waiting phase.catch_up phase.synchronised phase.leaving; do
   holds "the conveyor page has the series $name" grep -q "{\"name\":\"$name\"" "$work/conv.html"
 done
 holds "the conveyor page has the workspace and pos_limit of laser_portal" \
   grep -q '"workspace":{"lower":\[-200,-200,-100\],"upper":\[4000,2500,300\],"pos_limit":-190,' \
   "$work/conv.html"
+
+holds "the conveyor page has three complete workpiece rows" \
+  grep -q '"workpieces":{"count":3,"complete":3,' "$work/conv.html"
 
 expect "an unwritable page exits 2 with NC8100 naming the file" 2 '' \
   "cannot write the report '$work/no/such/dir/x\.html\.tmp' \[NC8100\]" -- \

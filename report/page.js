@@ -347,9 +347,14 @@
       g[2].forEach(function (m, j) {
         grouped[m[0]] = true;
         var d = named(m[0]);
-        if (d) defs.push({label: m[1], data: d, color: COLORS[j % 10], dash: j === 0 && g[2].length > 2 ? [4, 3] : undefined});
+        if (d && finiteCount(d) > 0) defs.push({label: m[1], data: d, color: COLORS[j % 10], dash: j === 0 && g[2].length > 2 ? [4, 3] : undefined});
       });
-      if (defs.length > 0 && timeChart(root, g[0], g[1], defs)) conveyorCharts++;
+      if (defs.length > 0) {
+        if (timeChart(root, g[0], g[1], defs)) conveyorCharts++;
+      } else if (g[2].some(function (m) { return named(m[0]); })) {
+        el('p', root, g[0] + ': no value in this run (before the first measurement, or PCS1 ' +
+           'never moved)', 'note');
+      }
     });
     D.named.forEach(function (s, k) {
       if (grouped[s.name] || s.unit === 'phase') return;
@@ -360,6 +365,26 @@
   status.dataset.conveyor = String(conveyorCharts);
   status.dataset.bands = String(bandCount);
   status.dataset.workspace = D.workspace ? '1' : '0';
+
+  // --- Per workpiece (ipo::WorkpieceCycles: one row per #SYNC IN).
+  var WP = D.workpieces;
+  if (WP) {
+    el('h2', root, 'Per workpiece');
+    el('p', root, WP.count + ' workpieces (' + WP.complete + ' reached #SYNC OUT), ' +
+       fmt(WP.per_minute) + ' per minute; cycle ' + fmt(WP.total_min) + ' .. ' +
+       fmt(WP.total_max) + ' s; lead-in before the first #SYNC IN ' + fmt(WP.lead_in) + ' s' +
+       (WP.rows.length < WP.count ? '; the first ' + WP.rows.length + ' rows listed' : ''),
+       'note');
+    var wrow = function (r, first) {
+      return [first, r.workpiece || '\u2013', fmt(r.t_start, 9), fmt(r.waiting), fmt(r.catch_up),
+              fmt(r.machining), fmt(r.desync), fmt(r.off_belt), fmt(r.total)];
+    };
+    table(root, ['#', 'workpiece', 'start [s]', 'waiting [s]', 'catch-up [s]', 'machining [s]',
+                 'desync [s]', 'off belt [s]', 'total [s]'],
+          WP.rows.map(function (r) { return wrow(r, r.index + (r.complete ? '' : ' (incomplete)')); })
+            .concat([wrow(WP.sum, 'sum')]), [0]);
+  }
+  status.dataset.workpieces = WP ? String(WP.rows.length) : '0';
 
   // --- Blocks.
   el('h2', root, 'Slowest blocks');

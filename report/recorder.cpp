@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <utility>
 
+#include "ipo/synchro_lag.hpp"
+
 namespace ncsim::report {
 
 namespace {
@@ -62,6 +64,9 @@ void Recorder::set_conveyor(const ipo::ConveyorSync* sync) {
   series_ = MinMaxDecimator(kPerAxis * names_.size() + 2 + named_.size(), kBuckets);
   values_.resize(series_.series(), std::numeric_limits<double>::quiet_NaN());
   conveyor_series_ = true;
+  cycles_ = std::make_unique<ipo::WorkpieceCycles>(t_cycle_, [this](const ipo::WorkpieceCycle& r) {
+    if (rows_.size() < kWorkpieceRows) rows_.push_back(r);
+  });
 }
 
 void Recorder::conveyor_values() {
@@ -74,14 +79,29 @@ void Recorder::conveyor_values() {
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   v[3] = d.valid ? d.current_pos_master : nan;
   v[4] = d.valid ? d.pos_master_comp : nan;
+  // synchro_lag against the real workpiece (ipo/synchro_lag.hpp): the MCS command and actual
+  // position of the axes that are X, Y, Z.
+  v[5] = nan;
+  if (axes_state_ != nullptr) {
+    Eigen::Vector3d command = Eigen::Vector3d::Zero();
+    Eigen::Vector3d actual = Eigen::Vector3d::Zero();
+    for (std::size_t i = 0; i < conveyor_->axis_count() && i < names_.size(); ++i) {
+      const int k = conveyor_->xyz(i);
+      if (k < 0) continue;
+      command[k] = axes_state_->command[i];
+      actual[k] = axes_state_->actual[i];
+    }
+    if (const auto lag = ipo::tracking_lag(*conveyor_, command, actual)) v[5] = *lag;
+  }
   // The phases of docs/report.md "Conveyor": synchronised from the catch-up's P-CHAN-00365
   // status (ConveyorSync::synchronised()) to #SYNC OUT.
   const ipo::SyncPhase p = conveyor_->phase();
   const bool sync = conveyor_->synchronised() || p == ipo::SyncPhase::tracking;
-  v[5] = p == ipo::SyncPhase::waiting ? 1.0 : 0.0;
-  v[6] = !sync && (p == ipo::SyncPhase::latched || p == ipo::SyncPhase::catching_up) ? 1.0 : 0.0;
-  v[7] = sync ? 1.0 : 0.0;
-  v[8] = p == ipo::SyncPhase::leaving || p == ipo::SyncPhase::departing ? 1.0 : 0.0;
+  v[6] = p == ipo::SyncPhase::waiting ? 1.0 : 0.0;
+  v[7] = !sync && (p == ipo::SyncPhase::latched || p == ipo::SyncPhase::catching_up) ? 1.0 : 0.0;
+  v[8] = sync ? 1.0 : 0.0;
+  v[9] = p == ipo::SyncPhase::leaving || p == ipo::SyncPhase::departing ? 1.0 : 0.0;
+  cycles_->add(p, port.last_latch().workpiece);
 }
 
 void Recorder::set_pcs1(std::span<const double> p) {
@@ -170,6 +190,10 @@ ReportData Recorder::finish(const RunEnd& end) {
   d.named = named_;
   d.soft_limits = soft_limits_;
   if (conveyor_ != nullptr) d.workspace = workspace_;
+  if (cycles_) {
+    d.workpieces = cycles_->finish();
+    d.workpiece_rows = std::move(rows_);
+  }
   d.path_dims = mcs_.dims();
   d.path_mcs = mcs_.finish();
   d.path_tolerance = mcs_.tolerance();

@@ -9,14 +9,16 @@
 // optionally per cycle the PCS1 tool point and named series (set_pcs1(), set_value()); on a
 // channel that tracks a conveyor (set_conveyor()) the conveyor series, read from its
 // ipo::ConveyorSync and conveyor::Port each cycle (belt velocity real / measured / filtered,
-// current_pos_master, pos_master_comp, the sync phases), and its workspace cuboid and pos_limit
-// (set_limits()); at the end the run's outcome (finish()).
+// current_pos_master, pos_master_comp, synchro_lag, the sync phases; the time per workpiece),
+// and its workspace cuboid and pos_limit (set_limits()); at the end the run's outcome
+// (finish()).
 // Outputs: ReportData: decimated time series (per axis position, v, a, j, following error;
 // path velocity and programmed feed; the named series, the conveyor's among them), the thinned
-// toolpath in MCS (and PCS1), the workspace cuboid and pos_limit line,
+// toolpath in MCS (and PCS1), the workspace cuboid and pos_limit line, the per-workpiece rows,
 // the slowest blocks (ipo::TimeCounter, the machinery of `time --blocks`), the audit verdict
 // (ipo::Audit in the same pass), the totals, the stop reason and the run-time error.
-// Invariants: memory bounded by the decimation sizes and kSlowest, never by the run length;
+// Invariants: memory bounded by the decimation sizes, kSlowest and kWorkpieceRows, never by the
+// run length;
 // deterministic.
 
 #include <array>
@@ -33,6 +35,7 @@
 #include "ipo/conveyor_sync.hpp"
 #include "ipo/interpolator.hpp"
 #include "ipo/time.hpp"
+#include "ipo/workpiece_cycles.hpp"
 #include "report/decimate.hpp"
 
 namespace ncsim::report {
@@ -73,13 +76,17 @@ struct ReportData {
   double path_tolerance = 0.0;             ///< thinning tolerance reached [mm]
   std::vector<double> path_pcs1;           ///< thinned toolpath in PCS1 (empty: no conveyor frame)
   std::optional<WorkspaceView> workspace;  ///< only on a channel that tracks a conveyor
-  ipo::TimeResult time_total;              ///< cycles, total, distance, split
-  std::uint64_t blocks = 0;                ///< block records (time --blocks rows)
-  std::vector<ipo::BlockTime> slowest;     ///< the kSlowest longest blocks, longest first
-  ipo::Verdict verdict;                    ///< the audit of the same pass
-  std::string outcome = "ok";              ///< "ok", "stopped" (scenario [stop]) or "error"
-  std::string stop;                        ///< the scenario's stop reason, if any
-  std::string error;                       ///< the run-time / program error text, if any
+  /// Time per workpiece (ipo::WorkpieceCycles; only with a conveyor world): the summary of
+  /// every row and the first kWorkpieceRows rows.
+  std::optional<ipo::WorkpieceSummary> workpieces;
+  std::vector<ipo::WorkpieceCycle> workpiece_rows;
+  ipo::TimeResult time_total;           ///< cycles, total, distance, split
+  std::uint64_t blocks = 0;             ///< block records (time --blocks rows)
+  std::vector<ipo::BlockTime> slowest;  ///< the kSlowest longest blocks, longest first
+  ipo::Verdict verdict;                 ///< the audit of the same pass
+  std::string outcome = "ok";           ///< "ok", "stopped" (scenario [stop]) or "error"
+  std::string stop;                     ///< the scenario's stop reason, if any
+  std::string error;                    ///< the run-time / program error text, if any
 };
 
 /// The run's end as the caller saw it.
@@ -92,21 +99,24 @@ struct RunEnd {
 
 class Recorder final : public ipo::Sink {
  public:
-  static constexpr std::size_t kSlowest = 50;    ///< blocks listed
-  static constexpr std::size_t kBuckets = 2000;  ///< time buckets per series
+  static constexpr std::size_t kSlowest = 50;         ///< blocks listed
+  static constexpr std::size_t kBuckets = 2000;       ///< time buckets per series
+  static constexpr std::size_t kWorkpieceRows = 500;  ///< per-workpiece rows kept (the first)
   /// Toolpath vertices at most: below 4 per pixel of a view's ~380 px plot area, where uPlot's
   /// line builder starts a decimation that assumes x sorted (docs/report.md "Decimation").
   static constexpr std::size_t kPathPoints = 1000;
   /// The conveyor series set_conveyor() appends, in this order (docs/report.md "Conveyor"):
   /// belt velocity real, measured (raw) and filtered [mm/s]; current_pos_master and
-  /// pos_master_comp [mm] (null before the first measurement); then one 0/1 indicator per sync
-  /// phase (unit "phase"): waiting, catch_up, synchronised, leaving.
-  static constexpr std::array<std::array<const char*, 2>, 9> kConveyorSeries{{
+  /// pos_master_comp [mm] (null before the first measurement); synchro_lag [mm]
+  /// (ipo::tracking_lag: null unless PCS1 moves); then one 0/1 indicator per sync phase (unit
+  /// "phase"): waiting, catch_up, synchronised, leaving.
+  static constexpr std::array<std::array<const char*, 2>, 10> kConveyorSeries{{
       {"belt_v_actual", "mm/s"},
       {"belt_v_raw", "mm/s"},
       {"belt_v_filtered", "mm/s"},
       {"current_pos_master", "mm"},
       {"pos_master_comp", "mm"},
+      {"synchro_lag", "mm"},
       {"phase.waiting", "phase"},
       {"phase.catch_up", "phase"},
       {"phase.synchronised", "phase"},
@@ -167,11 +177,13 @@ class Recorder final : public ipo::Sink {
   std::vector<double> values_;     ///< one row of series_
   const ipo::AxesState* axes_state_ = nullptr;
   std::vector<std::array<double, 2>> soft_limits_;
-  std::optional<WorkspaceView> workspace_;  ///< set_limits(), with config.conveyor
-  std::size_t conveyor_first_ = 0;          ///< values_ index of kConveyorSeries[0]
-  bool conveyor_series_ = false;            ///< kConveyorSeries are recorded
-  bool started_ = false;                    ///< a cycle was seen
-  std::vector<ipo::BlockTime> slowest_;     ///< longest first, ties in execution order
+  std::optional<WorkspaceView> workspace_;        ///< set_limits(), with config.conveyor
+  std::size_t conveyor_first_ = 0;                ///< values_ index of kConveyorSeries[0]
+  bool conveyor_series_ = false;                  ///< kConveyorSeries are recorded
+  bool started_ = false;                          ///< a cycle was seen
+  std::unique_ptr<ipo::WorkpieceCycles> cycles_;  ///< with the conveyor series
+  std::vector<ipo::WorkpieceCycle> rows_;         ///< the first kWorkpieceRows rows
+  std::vector<ipo::BlockTime> slowest_;           ///< longest first, ties in execution order
   std::uint64_t blocks_ = 0;
 };
 

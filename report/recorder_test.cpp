@@ -150,7 +150,8 @@ TEST_CASE("soft position limits: the enabled ones, NaN where not monitored") {
   CHECK(d.soft_limits[1][1] == 300.0);
 }
 
-TEST_CASE("a conveyor channel: belt velocities, current_pos_master and the sync phases") {
+TEST_CASE(
+    "a conveyor channel: belt velocities, current_pos_master, the sync phases, per workpiece") {
   const axes::Dynamics dyn{1000.0, 5000.0, 5000.0, 50000.0};
   const std::vector<SyncAxis> sync_axes{SyncAxis{"X", 0, dyn}, SyncAxis{"Y", 1, dyn},
                                         SyncAxis{"Z", 2, dyn}};
@@ -202,6 +203,16 @@ TEST_CASE("a conveyor channel: belt velocities, current_pos_master and the sync 
   CHECK(at("phase.catch_up").front() == 0.0);
   CHECK(at("phase.catch_up").back() == 1.0);  // latched: the next motion is the catch-up
   CHECK(at("phase.synchronised").back() == 0.0);
+  CHECK(std::isnan(at("synchro_lag").back()));  // only while PCS1 moves (tracking, leaving)
+  // The time per workpiece (ipo::WorkpieceCycles): one open row, waiting then catch-up.
+  REQUIRE(d.workpieces);
+  CHECK(d.workpieces->workpieces == 1);
+  CHECK(d.workpieces->complete == 0);
+  REQUIRE(d.workpiece_rows.size() == 1);
+  CHECK(d.workpiece_rows[0].waiting == doctest::Approx(0.1));
+  CHECK(d.workpiece_rows[0].catch_up == doctest::Approx(0.2));
+  CHECK(d.workpiece_rows[0].total == doctest::Approx(0.3));
+  CHECK_FALSE(d.workpiece_rows[0].complete);
   REQUIRE(d.workspace);
   CHECK(d.workspace->lower.x() == -200.0);
   CHECK(d.workspace->upper.y() == 2500.0);
@@ -221,6 +232,7 @@ TEST_CASE("no conveyor tracking: no conveyor series, no workspace") {
   const ReportData d = rec.finish({"p.nc", "m", "", ""});
   CHECK(d.named.empty());
   CHECK_FALSE(d.workspace);
+  CHECK_FALSE(d.workpieces);
 }
 
 TEST_CASE("a recorder needs one name per axis limit") {

@@ -56,11 +56,15 @@ for program in programs/isg_reference_example/isg_reference_example.nc tests/cli
     exit 1
   fi
   # The conveyor example: its conveyor charts (belt velocity, current_pos_master, ...) drew
-  # with points (an empty one turns the state to error above), the sync phases are shaded and
-  # the workspace is drawn on the toolpath panels.
+  # with points (an empty one turns the state to error above), the sync phases are shaded, the
+  # workspace is drawn on the toolpath panels and the per-workpiece table has its three sheets.
   if [[ $example == conveyor_squares ]]; then
     conv=$(sed -E 's/.*data-conveyor="([0-9]+)".*/\1/' <<<"$marker")
     bands=$(sed -E 's/.*data-bands="([0-9]+)".*/\1/' <<<"$marker")
+    if ! grep -q 'data-workpieces="3"' <<<"$marker"; then
+      echo "render_test: $example: the per-workpiece table has not its three rows" >&2
+      exit 1
+    fi
     if ! [[ $conv =~ ^[0-9]+$ ]] || ((conv < 2)) || ! [[ $bands =~ ^[0-9]+$ ]] || ((bands < 3)) ||
       ! grep -q 'data-workspace="1"' <<<"$marker"; then
       echo "render_test: $example: conveyor charts '$conv' (>= 2), phase bands '$bands' (>= 3)," \
