@@ -157,6 +157,7 @@ planner::Move ProgramSource::to_move(const interp::Motion& m, std::uint32_t line
   set_modal(m.modal, mv, line);
   mv.line = line;
   if (mv.transformed) check_workspace(mv, line);  // --- trafo
+  if (mv.transformed && m.frame.space == interp::Space::pcs1) reserve_belt_share(mv, line);
   return mv;
 }
 
@@ -260,6 +261,8 @@ bool ProgramSource::pull(Item& out) {
     if (std::holds_alternative<interp::SyncIn>(cmd->body) ||
         std::holds_alternative<interp::SyncOut>(cmd->body))
       sync_motion_ = true;  // --- conveyor-sync (end)
+    if (const auto* in = std::get_if<interp::SyncIn>(&cmd->body))
+      belt_conv_vel_ = in->conv_vel;  // --- trafo: the belt's share under #TRAFO ON
     if (is_channel_event(cmd->body)) {
       const bool stops = stops_path(cmd->body);
       const bool syn = std::holds_alternative<interp::AxisCommand>(cmd->body) && stops;
