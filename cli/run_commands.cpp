@@ -266,6 +266,20 @@ std::string failure_text(const Loaded& in, const interp::Interpreter& interp,
   return diagnostic_text(in, interp, src, ch.message());
 }
 
+// --- trafo: the channel's warning (NC6210: a joint beyond its dynamics while synchronised
+// under #TRAFO ON), positioned like a run-time error; the run goes on.
+std::string warning_text(const Loaded& in, const ipo::Channel& ch) {
+  const auto& w = ch.trafo_warning();
+  if (!w) return {};
+  core::Diagnostic d;
+  d.severity = core::Severity::warning;
+  d.file = in.file.name();
+  d.loc = {w->line, 1};
+  d.id = w->id;
+  d.message = "at t=" + num(w->t) + " s: " + w->message;
+  return core::format(d, in.file);
+}
+
 void json_string(std::ostream& os, const std::string& s) {
   os << '"';
   for (const char c : s) {
@@ -415,6 +429,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
     err << "ncsim: error: cannot read back the workpiece rows' temporary file\n";
     return kExitUsage;
   }
+  err << warning_text(in, channel);  // --- trafo
   if (failed) {
     err << error_text;
     return kExitProgramErrors;
@@ -678,6 +693,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
     }
     (options.csv ? err : out) << "report: " << options.report << '\n';
   }
+  err << warning_text(in, channel);  // --- trafo
   if (!error_text.empty()) {
     err << error_text;
     return kExitProgramErrors;

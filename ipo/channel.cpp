@@ -105,16 +105,8 @@ bool Channel::map_to_axes(const Cycle& c) noexcept {
   // The conveyor's moving PCS1 frame (issue 14) plugs in here: it turns c.x, c.v, c.a, c.j
   // into the setpoints of the machine axes, which everything below drives and monitors.
   // --- trafo: under #TRAFO ON the joint stage gives the joints (channel_kinematics.cpp).
-  if (stage_ && ipo::transformed(c, transformed_)) {
-    if (sync_ && (sync_->driving() || sync_->moving_frame())) {  // --- conveyor-sync + trafo
-      stop(kNotSupportedId,
-           "not supported: conveyor tracking under #TRAFO ON (the PCS1 frame is not applied "
-           "before the kinematic yet)",
-           c, -1);
-      return false;
-    }
-    return map_joints(c);
-  }
+  // The PCS1 frame and the catch-up act on the TCP there, before the kinematic.
+  if (stage_ && ipo::transformed(c, transformed_)) return map_joints(c);
   transformed_ = false;
   for (std::size_t i = 0; i < axes_.size(); ++i)
     setpoint_[i] = axes::Setpoint{c.x[i], c.v[i], c.a[i], c.j[i]};

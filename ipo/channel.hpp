@@ -163,6 +163,9 @@ class Channel {
   const AxesState& axes() const noexcept { return state_; }
   /// Why the channel stopped at run time, if it did.
   const std::optional<RunTimeError>& run_time_error() const noexcept { return error_; }
+  /// --- trafo: the first joint overrun while synchronised under #TRAFO ON (warning NC6210,
+  /// ipo/trafo_sync.hpp); the run goes on (004 l.609: the joint dynamics are not ensured).
+  const std::optional<RunTimeError>& trafo_warning() const noexcept { return trafo_warning_; }
   /// The interpolator's message when the source failed.
   const std::string& message() const noexcept { return ipo_.message(); }
   double t_cycle() const noexcept { return ipo_.t_cycle(); }  ///< [s]
@@ -358,6 +361,15 @@ class Channel {
   std::optional<JointStage> stage_;
   bool transformed_ = false;
   JointSetpoint joints_{};
+  /// The TCP setpoint of the last cycle under #TRAFO ON (PCS1 offset, catch-up included).
+  std::array<axes::Setpoint, planner::kMaxAxes> tcp_{};
+  std::optional<RunTimeError> trafo_warning_;  ///< the first NC6210 of the run
+  /// The catch-up / departure under #TRAFO ON: the TCP's dynamics from the joints
+  /// (ipo/trafo_sync); false: the plan failed (`r` holds why). channel_kinematics.cpp.
+  bool trafo_sync_motion(bool catch_up, std::span<const axes::MotionState> start,
+                         std::span<const double> target, axes::Result& r) noexcept;
+  /// Checks the joints of a synchronised cycle under #TRAFO ON (NC6210 warning).
+  void trafo_sync_check(const Cycle& c, const JointSetpoint& s) noexcept;
   std::optional<ConveyorSync> sync_;           ///< --- conveyor-sync: with FCT_DLM only
   conveyor::Port* port_ = nullptr;             ///< the attached conveyor world (reduced filter)
   double measured_value_wait_max_ = 600.0;     ///< ChannelConfig::measured_value_wait_max [s]

@@ -31,7 +31,8 @@ bool Channel::sync_check_workspace(const Cycle& c) noexcept {
   if (!sync_->synchronised()) return true;
   Eigen::Vector3d p = Eigen::Vector3d::Zero();
   for (std::size_t i = 0; i < axes_.size(); ++i)
-    if (const int k = sync_->xyz(i); k >= 0) p[k] = setpoint_[i].p;
+    if (const int k = sync_->xyz(i); k >= 0)
+      p[k] = transformed_ ? tcp_[i].p : setpoint_[i].p;  // --- trafo: the TCP under #TRAFO
   try {
     if (auto e = sync_->workspace(p)) {
       stop(e->id.c_str(), std::move(e->message), c, -1);
@@ -116,12 +117,19 @@ Channel::EventOutcome Channel::on_sync_motion(const interp::Motion& motion,
   for (std::size_t i = 0; i < n; ++i) {
     // The command state at the end of the last cycle (the catch-up starts in the next one).
     start[i] = axes::MotionState{state_.command[i], setpoint_[i].v, setpoint_[i].a};
+    // --- trafo: under #TRAFO ON the catch-up is a TCP motion (004 l.609)
+    if (stage_ && transformed_) start[i] = axes::MotionState{tcp_[i].p, tcp_[i].v, tcp_[i].a};
     target[i] = motion.end[i];  // interpolated order, MCS at belt travel 0
   }
   const bool catch_up = sync_->phase() == SyncPhase::latched;
-  const axes::Result r =
-      catch_up ? sync_->start_catch_up(std::span(start.data(), n), std::span(target.data(), n), 0.0)
-               : sync_->start_departure(std::span(start.data(), n), std::span(target.data(), n));
+  axes::Result r = axes::Result::ok;
+  if (stage_ && transformed_) {  // --- trafo
+    trafo_sync_motion(catch_up, std::span(start.data(), n), std::span(target.data(), n), r);
+  } else {
+    r = catch_up
+            ? sync_->start_catch_up(std::span(start.data(), n), std::span(target.data(), n), 0.0)
+            : sync_->start_departure(std::span(start.data(), n), std::span(target.data(), n));
+  }
   if (r == axes::Result::ok) {
     AxisVec hold{};  // the path's own coordinates: PCS1 at travel 0 (catch-up), MCS (departure)
     for (std::size_t i = 0; i < n; ++i)

@@ -8,27 +8,52 @@
 // adapter and the planner check every block before, so only a broken invariant of theirs gets
 // here) stops the channel with the kinematic's workspace error NC3201 at the active block.
 
+#include <algorithm>
+#include <array>
 #include <cstdio>
+#include <cstdlib>
+#include <span>
 #include <string>
 
 #include "ipo/channel.hpp"
 #include "ipo/program_source.hpp"
+#include "ipo/trafo_sync.hpp"
 
 namespace ncsim::ipo {
 
 bool Channel::map_joints(const Cycle& c) noexcept {
   transformed_ = true;
-  if (ipo_.override_factor() > 1.0) {
-    // Above 100 % the raised cap is the axes' G00 velocity along the path (docs/ipo.md
-    // "Override and feed hold"): for the TCP these are stand-ins, not the joints' limits.
-    stop(kNotSupportedId,
-         "not supported: path override above 100 % under #TRAFO ON (the raised cap does not "
-         "know the joints' limits)",
-         c, -1);
-    return false;
+  // The TCP of this cycle: the path's point, or where a catch-up / departure left it, or the
+  // catch-up's own setpoint, or the path's PCS1 point moved by the belt (docs/conveyor.md
+  // "Conveyor tracking under #TRAFO ON"): PCS1 -> MCS TCP -> joints.
+  AxisVec x = c.x;
+  AxisVec v = c.v;
+  AxisVec a = c.a;
+  AxisVec j = c.j;
+  if (c.activity == Activity::motion) sync_hold_.reset();
+  if (sync_hold_) {
+    x = *sync_hold_;
+    v = a = j = AxisVec{};
   }
+  if (sync_ && sync_->driving()) {
+    for (std::size_t i = 0; i < axes_.size(); ++i) {
+      const axes::Setpoint sp = sync_->catch_up_setpoint(i);
+      x[i] = sp.p;
+      v[i] = sp.v;
+      a[i] = sp.a;
+      j[i] = sp.j;
+    }
+  } else if (sync_ && sync_->moving_frame()) {
+    for (std::size_t i = 0; i < axes_.size(); ++i) {
+      x[i] += sync_->offset(i);
+      v[i] += sync_->offset_v(i);
+      a[i] += sync_->offset_a(i);
+    }
+  }
+  for (std::size_t i = 0; i < axes_.size(); ++i)
+    tcp_[i] = axes::Setpoint{x[i], v[i], a[i], j[i]};
   JointSetpoint s;
-  if (!stage_->step(c.x, c.v, c.a, c.j, s)) {
+  if (!stage_->step(x, v, a, j, s)) {
     const AxisVec& p = stage_->failed_point();
     char text[200];
     std::snprintf(text, sizeof text,
@@ -38,10 +63,88 @@ bool Channel::map_joints(const Cycle& c) noexcept {
     stop("NC3201", text, c, -1);
     return false;
   }
+  if (sync_ && (sync_->driving() || sync_->moving_frame())) trafo_sync_check(c, s);
   joints_ = s;
   for (std::size_t i = 0; i < axes_.size(); ++i)
     setpoint_[i] = axes::Setpoint{s.q[i], s.v[i], s.a[i], s.j[i]};
   return true;
+}
+
+void Channel::trafo_sync_check(const Cycle& c, const JointSetpoint& s) noexcept {
+  if (trafo_warning_) return;  // the first overrun of the run; the audit lists every one
+  std::array<axes::Dynamics, planner::kMaxAxes> dyn{};
+  const std::size_t n = std::min(axes_.size(), sync_->axis_count());
+  for (std::size_t i = 0; i < n; ++i)
+    dyn[i] = sync_->dynamics(i);
+  const auto o = joint_overrun(s, std::span(dyn.data(), n));
+  if (!o) return;
+  const char* phase = sync_->phase() == SyncPhase::catching_up ? "the catch-up"
+                      : sync_->phase() == SyncPhase::departing ? "the departure"
+                                                               : "synchronised motion";
+  char text[300];
+  std::snprintf(text, sizeof text,
+                "joint %s: |%s| %.6g above its %.6g (P-AXIS-%s) in %s under #TRAFO ON (004 "
+                "l.609: the joint dynamics are not ensured there; reduce the belt velocity or "
+                "the feed)",
+                axes_[o->joint].config.name.c_str(), o->quantity == 'v' ? "v" : "a", o->value,
+                o->limit, o->quantity == 'v' ? "00212" : "00008", phase);
+  try {
+    RunTimeError w;
+    w.id = kTrafoSyncOverrunId;
+    w.message = text;
+    w.line = c.line;
+    w.t = c.t;
+    w.axis = static_cast<int>(o->joint);
+    trafo_warning_ = std::move(w);
+  } catch (...) {
+    std::abort();  // out of memory while reporting a warning
+  }
+}
+
+bool Channel::trafo_sync_motion(bool catch_up, std::span<const axes::MotionState> start,
+                                std::span<const double> target, axes::Result& r) noexcept {
+  const std::size_t n = start.size();
+  std::array<axes::Dynamics, planner::kMaxAxes> joints{};
+  std::array<axes::Dynamics, planner::kMaxAxes> tcp{};
+  for (std::size_t i = 0; i < n; ++i)
+    joints[i] = tcp[i] = sync_->dynamics(i);
+  const planner::JointMap& inverse = stage_->inverse();
+  std::array<int, 3> xyz{-1, -1, -1};
+  for (std::size_t i = 0; i < n; ++i)
+    if (const int k = sync_->xyz(i); k >= 0) xyz[static_cast<std::size_t>(k)] = static_cast<int>(i);
+  // The points the TCP passes: the start, the target (at the start), and for a catch-up the
+  // meeting point and the middle between start and meeting.
+  std::array<AxisVec, 4> points{};
+  for (std::size_t i = 0; i < n; ++i) {
+    points[0][i] = start[i].p;
+    points[1][i] = target[i];
+    points[2][i] = (start[i].p + target[i]) / 2.0;
+  }
+  std::size_t count = 3;
+  for (int pass = 0; pass < 2; ++pass) {
+    const auto d =
+        tcp_dynamics(inverse, xyz, std::span(joints.data(), n), std::span(points.data(), count));
+    if (!d) {
+      r = axes::Result::error_invalid_input;
+      return false;
+    }
+    for (const int k : xyz)
+      if (k >= 0) tcp[static_cast<std::size_t>(k)] = *d;
+    r = catch_up ? sync_->start_catch_up(start, target, 0.0, std::span(tcp.data(), n))
+                 : sync_->start_departure(start, target, std::span(tcp.data(), n));
+    if (r != axes::Result::ok || !catch_up) return r == axes::Result::ok;
+    // The meeting point is known now: cover it and the way there, then plan again.
+    const CatchUp& cu = sync_->catch_up();
+    const double vb = sync_->belt_velocity();
+    const double s_meet = sync_->travel() + vb * cu.duration();  // the forecast belt
+    for (std::size_t i = 0; i < n; ++i) {
+      const axes::Setpoint end = cu.setpoint(i, cu.duration(), s_meet, vb, 0.0);
+      points[2][i] = end.p;
+      points[3][i] = (start[i].p + end.p) / 2.0;
+    }
+    count = 4;
+  }
+  return r == axes::Result::ok;
 }
 
 }  // namespace ncsim::ipo

@@ -101,9 +101,12 @@ std::optional<SyncError> ConveyorSync::step(double t) noexcept {
 }
 
 axes::Result ConveyorSync::start_catch_up(std::span<const axes::MotionState> start,
-                                          std::span<const double> target,
-                                          double feed_cont) noexcept {
-  if (phase_ != SyncPhase::latched || start.size() != n_ || target.size() != n_)
+                                          std::span<const double> target, double feed_cont,
+                                          std::span<const axes::Dynamics> dynamics) noexcept {
+  // --- trafo: a catch-up not stepped yet may be re-planned (t_catch_ 0).
+  const bool again = phase_ == SyncPhase::catching_up && t_catch_ == 0.0;
+  if ((phase_ != SyncPhase::latched && !again) || start.size() != n_ || target.size() != n_ ||
+      (!dynamics.empty() && dynamics.size() != n_))
     return axes::Result::error_invalid_input;
   std::array<CatchUpAxis, planner::kMaxAxes> in{};
   // FEED_CONT's direction: the catch-up's own, start to target over X/Y/Z (docs/conveyor.md).
@@ -112,7 +115,7 @@ axes::Result ConveyorSync::start_catch_up(std::span<const axes::MotionState> sta
     in[i].start = start[i];
     in[i].target = target[i] + share_[i] * s_;
     in[i].conveying = share_[i];
-    in[i].dynamics = axes_[i].dynamics;
+    in[i].dynamics = dynamics.empty() ? axes_[i].dynamics : dynamics[i];  // --- trafo
     if (axes_[i].xyz >= 0) norm2 += std::pow(in[i].target - start[i].p, 2);
   }
   if (feed_cont > 0.0 && norm2 > 0.0) {
@@ -130,15 +133,17 @@ axes::Result ConveyorSync::start_catch_up(std::span<const axes::MotionState> sta
 }
 
 axes::Result ConveyorSync::start_departure(std::span<const axes::MotionState> start,
-                                           std::span<const double> target) noexcept {
+                                           std::span<const double> target,
+                                           std::span<const axes::Dynamics> dynamics) noexcept {
   if ((phase_ != SyncPhase::leaving && phase_ != SyncPhase::off) || start.size() != n_ ||
-      target.size() != n_)
+      target.size() != n_ || (!dynamics.empty() && dynamics.size() != n_))
     return axes::Result::error_invalid_input;
   std::array<CatchUpAxis, planner::kMaxAxes> in{};
   for (std::size_t i = 0; i < n_; ++i) {
     in[i].start = start[i];
     in[i].target = target[i];
-    in[i].dynamics = axes_[i].dynamics;  // conveying 0: fixed targets in MCS
+    // conveying 0: fixed targets in MCS; --- trafo: the TCP's dynamics under #TRAFO ON
+    in[i].dynamics = dynamics.empty() ? axes_[i].dynamics : dynamics[i];
   }
   const axes::Result r = catch_up_.plan(std::span(in.data(), n_), 0.0, 0.0);
   if (r != axes::Result::ok) return r;

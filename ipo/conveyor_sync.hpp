@@ -74,7 +74,8 @@ class ConveyorSync {
   /// to the fixed MCS point `target`, at rest, all axes together (FEED_CONT 0); also from off
   /// (a #SYNC OUT before any catch-up: the first motion after it is still a PTP).
   axes::Result start_departure(std::span<const axes::MotionState> start,
-                               std::span<const double> target) noexcept;
+                               std::span<const double> target,
+                               std::span<const axes::Dynamics> dynamics = {}) noexcept;
 
   /// Once per cycle, before the path: steps the Port to `t` [s] (end of the cycle), takes a
   /// latch while waiting, checks 50653 while synchronised and passes the Port's error on with its
@@ -84,8 +85,12 @@ class ConveyorSync {
   /// Starts the catch-up at the end of the cycle just done: `start` the command state of every
   /// interpolated axis (MCS), `target` the programmed point in MCS at belt travel 0 (T0
   /// applied: the ProgramSource's Move end), `feed_cont` the relative velocity [mm/s].
+  /// --- trafo: `dynamics` (one per axis, or empty: the axes' own) replaces the axes' PTP
+  /// dynamics (under #TRAFO ON the TCP's, ipo/trafo_sync); a catch-up not stepped yet may be
+  /// started again (re-planned with other dynamics).
   axes::Result start_catch_up(std::span<const axes::MotionState> start,
-                              std::span<const double> target, double feed_cont) noexcept;
+                              std::span<const double> target, double feed_cont,
+                              std::span<const axes::Dynamics> dynamics = {}) noexcept;
   /// The setpoint of axis i in the cycle step() prepared (catching_up and departing only).
   axes::Setpoint catch_up_setpoint(std::size_t i) const noexcept;
   const CatchUp& catch_up() const noexcept { return catch_up_; }
@@ -109,7 +114,8 @@ class ConveyorSync {
   /// Within P-CHAN-00365 of the target since the catch-up (docs/conveyor.md).
   bool synchronised() const noexcept { return synchronised_; }
   const SyncFrame& frame() const noexcept { return frame_; }
-  double travel() const noexcept { return s_; }  ///< master travel since the latch [mm]
+  double travel() const noexcept { return s_; }         ///< master travel since the latch [mm]
+  double belt_velocity() const noexcept { return v_; }  ///< along PCS0 X [mm/s] (--- trafo)
   /// Time spent waiting for the measured value so far [s].
   double waited() const noexcept { return waited_; }
   /// The workspace (004 §2.1.3, §4.4) for the commanded TCP `p_mcs` [mm], only while
@@ -120,6 +126,8 @@ class ConveyorSync {
   /// The display variables of the current cycle.
   MasterDisplay display() const noexcept;
   std::size_t axis_count() const noexcept { return n_; }
+  /// --- trafo: the PTP dynamics of axis i (V [mm/s | deg/s], A+, A-, J).
+  const axes::Dynamics& dynamics(std::size_t i) const noexcept { return axes_[i].dynamics; }
   /// 0, 1, 2: interpolated axis i is X, Y, Z; -1: none.
   int xyz(std::size_t i) const noexcept { return axes_[i].xyz; }
 

@@ -44,7 +44,10 @@ PathInterpolator::PathInterpolator(Config config, Source& source, Sink* sink)
   if (axes_.empty() || axes_.size() > planner::kMaxAxes)
     throw std::invalid_argument("ipo: " + std::to_string(axes_.size()) + " axes (1.." +
                                 std::to_string(planner::kMaxAxes) + ")");
-  if (config.joints) prep_.set_joints(std::move(*config.joints));
+  if (config.joints) {
+    joints_ = config.joints;  // --- trafo-conveyor: the raised cap above 100 % (override_trafo)
+    prep_.set_joints(std::move(*config.joints));
+  }
   if (exact_stop_.empty()) exact_stop_.resize(axes_.size());
   if (exact_stop_.size() != axes_.size())
     throw std::invalid_argument("ipo: " + std::to_string(exact_stop_.size()) +
@@ -492,7 +495,10 @@ bool PathInterpolator::replan(double f, double s, double v, double a) noexcept {
   double cap = lim.v_max;
   if (f > 1.0 && override_type_ == OverrideType::reduced_above_100) {
     if (!raised_ready_) {
-      raised_ = raised_limits(cur_, axes_);
+      // --- trafo-conveyor: under #TRAFO ON the joints' G00 rule (ipo/override_trafo.cpp)
+      const planner::Move& prog = programmed(cur_.segment.path.line_at(0.0));
+      raised_ = joints_ && prog.transformed ? raised_limits_joints(cur_, *joints_)
+                                            : raised_limits(cur_, axes_);
       raised_ready_ = true;
     }
     cap = raised_.v_max;

@@ -295,6 +295,7 @@ class PathInterpolator {
   void advance_to(double t_new) noexcept;
 
   std::vector<planner::AxisLimits> axes_;
+  std::optional<planner::JointLimits> joints_;  ///< --- trafo-conveyor: Config::joints
   std::vector<ExactStop> exact_stop_;
   double t_ = 0.001;
   Detail detail_ = Detail::axes;

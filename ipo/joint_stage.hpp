@@ -55,6 +55,8 @@ class JointStage {
             JointSetpoint& out) const noexcept;
 
   std::size_t joint_count() const noexcept { return n_; }
+  /// The inverse transform the stage maps with.
+  const planner::JointMap& inverse() const noexcept { return inverse_; }
   /// The Cartesian point at which the last failing step() could not be transformed [mm].
   const AxisVec& failed_point() const noexcept { return failed_; }
 

@@ -25,8 +25,10 @@
 
 #include "jerk/jerk.hpp"
 #include "planner/chain.hpp"
+#include "planner/joint_limits.hpp"
 #include "planner/lookahead.hpp"
 #include "planner/move.hpp"
+#include "planner/prepare.hpp"
 
 namespace ncsim::ipo {
 
@@ -68,6 +70,12 @@ struct RaisedLimits {
 };
 RaisedLimits raised_limits(const planner::PlannedSegment& entry,
                            std::span<const planner::AxisLimits> axes) noexcept;
+/// --- trafo-conveyor: the same under #TRAFO ON (ipo/override_trafo.cpp): the joints' G00 rule
+/// MIN(rapid, reference, maximum) per joint along the joints' derivative bounds of the entry
+/// (planner::joint_bounds), each joint inside its a and j; a, d, j at most the planned ones.
+/// The planned limits when the inverse fails or nothing is gained.
+RaisedLimits raised_limits_joints(const planner::PlannedSegment& entry,
+                                  const planner::JointLimits& joints) noexcept;
 
 /// A velocity plan on the active entry from the state at s0 to the entry's end (or to a hold).
 struct PathPlan {

@@ -471,3 +471,49 @@ TEST_CASE("property: random override and hold sequences keep limits and contour,
 }
 
 }  // namespace
+
+TEST_CASE("above 100 % under #TRAFO ON the raised cap is the joints' G00 rule, not the TCP's") {
+  // trafo-conveyor (issue 12; ipo/override_trafo.cpp): a 100 mm line along X whose joints are
+  // q = 2 x (2 deg per mm): each joint at MIN(rapid, reference, max) = 100 deg/s gives a path
+  // cap of 50 mm/s; a, j from the joints too, and never above the planned ones.
+  planner::Move m;
+  m.feed = 20.0;
+  m.end[0] = 100.0;
+  const planner::Segment seg = planner::Segment::from_move(m);
+  planner::PlannedSegment e;
+  e.segment.path = planner::Chain(seg);
+  e.segment.limits.v_max = 20.0;
+  e.segment.limits.a_max = e.segment.limits.d_max = 1000.0;
+  e.segment.limits.j_max = 1e5;
+  e.a_max = e.d_max = 1000.0;
+  e.j_max = 1e5;
+  planner::JointLimits joints;
+  joints.inverse = [](const planner::AxisVec& x, planner::AxisVec& q) {
+    for (std::size_t i = 0; i < planner::kMaxAxes; ++i)
+      q[i] = 2.0 * x[i];
+    return true;
+  };
+  planner::AxisLimits j;
+  j.v_max = 150.0;
+  j.v_reference = 200.0;
+  j.v_rapid = 100.0;          // the G00 velocity decides: MIN(100, 200, 150)
+  j.a_max = j.d_max = 400.0;  // the path's a at most 200 mm/s^2 through the joints
+  j.j_max = 1e6;
+  joints.joints = {j, j, j};
+  const RaisedLimits r = raised_limits_joints(e, joints);
+  CHECK(r.v_max == doctest::Approx(50.0).epsilon(1e-6));
+  CHECK(r.a <= 200.0 * (1 + 1e-9));
+  CHECK(r.d <= 200.0 * (1 + 1e-9));
+  CHECK(r.j <= 1e5);
+  // The Cartesian stand-ins would have raised it without bound (why NC6001 stood here before).
+  std::vector<planner::AxisLimits> cart(3);
+  for (planner::AxisLimits& c : cart) {
+    c.v_max = c.v_reference = c.v_rapid = 1e6;
+    c.a_max = c.d_max = 1e9;
+    c.j_max = 1e12;
+  }
+  CHECK(raised_limits(e, cart).v_max > 1000.0);
+  // A map that fails keeps the planned limits.
+  joints.inverse = [](const planner::AxisVec&, planner::AxisVec&) { return false; };
+  CHECK(raised_limits_joints(e, joints).v_max == doctest::Approx(20.0));
+}

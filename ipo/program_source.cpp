@@ -156,8 +156,15 @@ planner::Move ProgramSource::to_move(const interp::Motion& m, std::uint32_t line
   if (m.arc) arc_to_mcs(m, line, mv);
   set_modal(m.modal, mv, line);
   mv.line = line;
-  if (mv.transformed) check_workspace(mv, line);              // --- trafo
-  if (m.frame.space == interp::Space::pcs1) mv.belt = belt_;  // --- sync-feed
+  if (mv.transformed) check_workspace(mv, line);  // --- trafo
+  if (m.frame.space == interp::Space::pcs1) {
+    // The belt's share: under #TRAFO ON reserved on the joints (trafo), else the PCS1
+    // velocity split on the axes (sync-feed, docs/conveyor.md S-5).
+    if (mv.transformed)
+      reserve_belt_share(mv, line);
+    else
+      mv.belt = belt_;
+  }
   return mv;
 }
 
@@ -269,6 +276,8 @@ bool ProgramSource::pull(Item& out) {
       static_sync(cmd->body);  // --- static-saw
     }
     sync_belt(cmd->body);  // --- sync-feed: the PCS1 velocity split
+    if (const auto* in = std::get_if<interp::SyncIn>(&cmd->body))
+      belt_conv_vel_ = in->conv_vel;  // --- trafo: the belt's share under #TRAFO ON
     if (is_channel_event(cmd->body)) {
       note_indp(cmd->body);  // --- planner
       const bool stops = stops_path(cmd->body);

@@ -171,8 +171,14 @@ class ProgramSource final : public Source {
   /// (NC3201 / NC3202) at its line.
   void check_workspace(const planner::Move& move, std::uint32_t line);
   [[noreturn]] void fail_with(std::uint32_t line, const std::string& id, const std::string& what);
+  /// A transformed G01 / G02 / G03 Move in PCS1: its F is capped so that every joint keeps
+  /// the belt's share (1.1 x CONV_VEL, the 50653 margin) of its V wherever the belt carries the
+  /// block inside the conveyor workspace (docs/conveyor.md "Conveyor tracking under #TRAFO
+  /// ON"); NC6211 when the belt alone needs more than a joint's V.
+  void reserve_belt_share(planner::Move& move, std::uint32_t line);
   std::optional<MachineTrafo> trafo_;  ///< the machine's kinematic, built at the first #TRAFO
   bool trafo_on_ = false;              ///< #TRAFO ON as handed out
+  double belt_conv_vel_ = 0.0;         ///< CONV_VEL of the last #SYNC IN [mm/s]
   // --- end trafo
   bool sync_motion_ = false;  ///< --- conveyor-sync: the next Motion is a catch-up / departure
   /// --- sync-feed: the velocity the belt takes of each interpolated axis while synchronised

@@ -3,6 +3,7 @@
 #include "planner/joint_limits.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace ncsim::planner {
@@ -73,7 +74,21 @@ std::optional<PathLimits> path_limits(const Segment& segment, const Move& move,
   // The joints' own limits at most at the axis cap. Each of v, a, d, j is the smaller of the two
   // sets; the joint set's a and j were derived at a velocity (and acceleration) no smaller than
   // the combined ones, so they stay valid (the budgets used by v and a only shrink).
-  const PathLimits jl = limits_from_bounds(*b, joints, out.v_max, jerk_limited(move.slope));
+  // --- trafo-conveyor: G00 under a transform (issue 12): each joint at its own rapid rule,
+  // MIN(rapid P-AXIS-00209, reference, maximum) (000 l.360), with its G00 slope (P-AXIS-00004
+  // acceleration, P-AXIS-00200 ramp time; planner::rapid_limits); the slowest joint sets the
+  // time. Feed blocks keep the joints' feed limits.
+  std::array<AxisLimits, kMaxAxes> rapid{};
+  std::span<const AxisLimits> used = joints;
+  if (move.rapid && joints.size() <= kMaxAxes) {
+    for (std::size_t i = 0; i < joints.size(); ++i) {
+      rapid[i] = rapid_limits(joints[i]);
+      rapid[i].v_max = std::min({joints[i].v_rapid, joints[i].v_reference, joints[i].v_max});
+    }
+    used = std::span<const AxisLimits>(rapid.data(), joints.size());
+  }
+  const PathLimits jl = limits_from_bounds(*b, used, out.v_max, jerk_limited(move.slope));
+  // --- end trafo-conveyor
   if (jl.v_max < out.v_max) {
     out.v_max = jl.v_max;
     out.limit = VelocityLimit::joint;

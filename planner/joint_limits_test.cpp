@@ -161,3 +161,47 @@ TEST_CASE("a segment that leaves the delta's workspace cannot be planned") {
   const Segment seg = Segment::from_move(m);
   CHECK_FALSE(path_limits(seg, m, lim, joint_map(kin), lim).has_value());
 }
+
+TEST_CASE("G00 under a transform: each joint at MIN(rapid, reference, max) with its G00 slope") {
+  // issue 12 (trafo-conveyor): 000 l.360 per joint; P-AXIS-00004 / 00200 as a_rapid / j_rapid.
+  const DeltaKinematics kin = delta();
+  const auto home_r = kin.forward(Eigen::Vector3d(20, 20, 20));
+  REQUIRE(home_r.ok());
+  AxisVec home{};
+  for (std::size_t i = 0; i < 3; ++i)
+    home[i] = home_r.value[static_cast<Eigen::Index>(i)];
+  const std::array<AxisLimits, 3> axes = {limits(5000, 5e4, 5e6), limits(5000, 5e4, 5e6),
+                                          limits(5000, 5e4, 5e6)};
+  std::array<AxisLimits, 3> joints = {limits(40, 400, 8000), limits(40, 400, 8000),
+                                      limits(40, 400, 8000)};
+  Move m = delta_moves(home)[0];  // the long diagonal stroke
+  m.rapid = true;
+  const Segment seg = Segment::from_move(m);
+  const JointMap ik = joint_map(kin);
+  const auto same = path_limits(seg, m, axes, ik, joints);
+  REQUIRE(same.has_value());
+  // A slower rapid velocity, G00 acceleration and G00 jerk of the joints: the G00 block obeys
+  // them, the same block as G01 at a high F does not.
+  for (AxisLimits& j : joints) {
+    j.v_rapid = 20.0;
+    j.a_rapid = 100.0;
+    j.j_rapid = 1000.0;
+  }
+  const auto slow = path_limits(seg, m, axes, ik, joints);
+  REQUIRE(slow.has_value());
+  CHECK(slow->v_max == doctest::Approx(same->v_max / 2.0).epsilon(1e-9));
+  CHECK(slow->a_max < same->a_max / 3.0);
+  CHECK(slow->j_max < same->j_max / 7.0);
+  const Peak p = joint_peaks(seg, *slow, kin);
+  for (std::size_t i = 0; i < 3; ++i) {
+    CHECK(p.v[i] <= 20.0 * (1 + 1e-6));
+    CHECK(p.a[i] <= 100.0 * (1 + 1e-3));
+    CHECK(p.j[i] <= 1000.0 * (1 + 1e-3));
+  }
+  Move g1 = m;
+  g1.rapid = false;
+  g1.feed = 1e5;
+  const auto feed = path_limits(seg, g1, axes, ik, joints);
+  REQUIRE(feed.has_value());
+  CHECK(feed->v_max == doctest::Approx(same->v_max).epsilon(1e-9));
+}
