@@ -274,6 +274,8 @@ class Channel {
   // --- conveyor-sync (ipo/channel_conveyor.cpp)
   /// The conveyor workspace on the cycle's MCS setpoints while synchronised; false: stopped.
   bool sync_check_workspace(const Cycle& c) noexcept;
+  /// --- workspace: gives the interpolator the hold's path velocity cap (channel_workspace.cpp).
+  void sync_workspace_cap(const Cycle& c) noexcept;
   // --- operator: block starts and the actions of scenario events
   /// Passes the interpolator's block starts to the channel's player.
   class BlockRelay final : public BlockObserver {

@@ -23,8 +23,8 @@ namespace fs = std::filesystem;
 namespace {
 
 // The machines bundled under machines/ (docs/programs.md).
-constexpr std::array<std::string_view, 4> kMachines = {"laser_portal", "delta_picker", "static_saw",
-                                                       "portal_3x"};
+constexpr std::array<std::string_view, 5> kMachines = {"laser_portal", "delta_picker", "static_saw",
+                                                       "portal_3x", "laser_portal_simple"};
 
 // The seed's listings (TF5264, seed 004) and the reference's section 10 example: these must
 // never silently disappear from programs/.
