@@ -348,6 +348,7 @@ Status Channel::step() noexcept {
   }
   if (!map_to_axes(c)) return Status::error;
   if (sync_ && !sync_check_workspace(c)) return Status::error;  // --- conveyor-sync
+  if (sync_) sync_workspace_cap(c);  // --- workspace: the hold against the conveying direction
   if (!in_exact_stop_ && ipo_.holding_exact_stop()) {
     // The command reached the end of a G60 / G360 block in this cycle (001 l.149: t_1).
     in_exact_stop_ = true;

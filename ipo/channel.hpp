@@ -297,6 +297,8 @@ class Channel {
   void static_override() noexcept;
   bool static_unit_ = false;                 ///< P-CHAN-00364 x_virtual
   std::optional<double> operator_override_;  ///< the override before the static unit took it
+  /// --- workspace: gives the interpolator the hold's path velocity cap (channel_workspace.cpp).
+  void sync_workspace_cap(const Cycle& c) noexcept;
   // --- operator: block starts and the actions of scenario events
   /// Passes the interpolator's block starts to the channel's player.
   class BlockRelay final : public BlockObserver {

@@ -29,6 +29,13 @@ ConveyorSync::ConveyorSync(const machines::ConveyorSyncChannel& channel,
     share_[i] = axes[i].xyz >= 0 && axes[i].xyz < 3 ? frame_.direction()[axes[i].xyz] : 0.0;
     if (std::fabs(share_[i]) < 1e-12) share_[i] = 0.0;  // rounding of an unrotated T0
   }
+  // --- workspace: the hold line against the conveying direction
+  std::array<int, planner::kMaxAxes> xyz{};
+  for (std::size_t i = 0; i < n_; ++i)
+    xyz[i] = axes_[i].xyz;
+  if (auto h =
+          hold_config(channel, frame_.direction(), channel.optimised_monitoring, xyz.data(), n_))
+    hold_.emplace(*h);
 }
 
 std::optional<SyncError> ConveyorSync::sync_in(const interp::SyncIn& command) {
@@ -160,6 +167,10 @@ axes::Setpoint ConveyorSync::catch_up_setpoint(std::size_t i) const noexcept {
 
 std::optional<SyncError> ConveyorSync::workspace(const Eigen::Vector3d& p_mcs) const {
   if (!synchronised_) return std::nullopt;
+  if (hold_) {  // --- workspace: the hold line + P-CHAN-00367
+    if (auto m = hold_->check(p_mcs[hold_->config().coord]))
+      return SyncError{kWorkspaceHoldId, std::move(*m)};
+  }
   const auto v = check_workspace(box_, frame_.direction(), p_mcs);
   if (!v) return std::nullopt;
   static constexpr const char* kNames[3] = {"X", "Y", "Z"};
@@ -175,9 +186,20 @@ std::optional<SyncError> ConveyorSync::workspace(const Eigen::Vector3d& p_mcs) c
     case WorkspaceFace::against:
       break;
   }
-  return SyncError{"NC6001", "not supported: " + std::string(buf) +
-                                 " against the conveying direction (the hold methods of "
-                                 "P-AXIS-00555 / P-CHAN-00366 / P-CHAN-00374 are not built)"};
+  return SyncError{kWorkspaceHoldId,
+                   std::string(buf) + " against the conveying direction while synchronised"};
+}
+
+double ConveyorSync::workspace_cap(HoldState st) noexcept {  // --- workspace
+  if (!hold_) return WorkspaceHold::kNone;
+  if (!synchronised_ || phase_ != SyncPhase::tracking) {
+    hold_->reset();
+    return WorkspaceHold::kNone;
+  }
+  st.travel = s_;
+  st.belt_v = v_;
+  st.t_cycle = t_cycle_;
+  return hold_->decide(st);
 }
 
 MasterDisplay ConveyorSync::display() const noexcept {

@@ -31,6 +31,7 @@
 #include "ipo/sync_checks.hpp"
 #include "ipo/sync_frame.hpp"
 #include "ipo/workspace.hpp"
+#include "ipo/workspace_hold.hpp"
 #include "machines/machine.hpp"
 #include "planner/move.hpp"
 
@@ -120,9 +121,16 @@ class ConveyorSync {
   double waited() const noexcept { return waited_; }
   /// The workspace (004 §2.1.3, §4.4) for the commanded TCP `p_mcs` [mm], only while
   /// synchronised: the conveying face NC9052, a side face NC9053, the face against the
-  /// conveying direction NC6001 `not supported` (the hold methods of P-AXIS-00555 need the
-  /// planner; docs/conveyor.md "Workspace").
+  /// conveying direction or the hold line + P-CHAN-00367 NC9080 (docs/conveyor.md "Workspace").
   std::optional<SyncError> workspace(const Eigen::Vector3d& p_mcs) const;
+  // --- workspace: the hold methods against the conveying direction (ipo/workspace_hold.hpp)
+  /// The path velocity cap for the next cycle [mm/s] (+inf: none): while tracking and
+  /// synchronised, the hold decision on `st` (path, s, v, a, feed, line, d, j of the cycle
+  /// just done; travel, belt velocity and cycle time are filled in here).
+  double workspace_cap(HoldState st) noexcept;
+  /// The hold (none when no face is against the conveying direction or no axis is on it).
+  const WorkspaceHold* hold() const noexcept { return hold_ ? &*hold_ : nullptr; }
+  // --- workspace: end
   /// The display variables of the current cycle.
   MasterDisplay display() const noexcept;
   std::size_t axis_count() const noexcept { return n_; }
@@ -148,6 +156,7 @@ class ConveyorSync {
   CatchUp catch_up_;
   double t_catch_ = 0.0;  ///< time since the catch-up started [s] (the prepared cycle's end)
   std::array<axes::Setpoint, planner::kMaxAxes> catch_sp_{};
+  std::optional<WorkspaceHold> hold_;  ///< --- workspace
 };
 
 }  // namespace ncsim::ipo

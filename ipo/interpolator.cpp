@@ -346,12 +346,13 @@ Status PathInterpolator::step() noexcept {
   // Motion: advance the path by exactly T, carrying the rest of T across segment ends.
   interval_jerk_limited_ = std::isfinite(cur_.segment.limits.j_max);
   lost_ = 0.0;
-  if (const double f = effective_factor(); f != plan_factor_) {
+  if (const double f = effective_factor(); f != plan_factor_ || cap_ != plan_cap_) {
     // A change of the override waits until the tolerance ball is left (000 l.366); a stop
     // (override 0, feed hold) has priority (002 l.391) and acts at once, and so does the
     // release of a stop (a path standing in a ball would never leave it).
     const planner::PathState st = plan_at(plan_, t_in_);
-    if (f == 0.0 || plan_factor_ == 0.0 || !has_ball_ || !in_ball(st.s))
+    if (f == 0.0 || plan_factor_ == 0.0 || !has_ball_ || !in_ball(st.s) ||
+        cap_ != plan_cap_)  // --- workspace: a cap acts at once, as a stop does
       replan(f, st.s, st.v, st.a);
   }
   double rest = t_;
@@ -469,11 +470,12 @@ void PathInterpolator::set_override(double factor) {
 
 bool PathInterpolator::plan_entry() noexcept {
   const double f = effective_factor();
-  if (f == 1.0 && v_arrive_ == cur_.v_entry) {
+  if (f == 1.0 && v_arrive_ == cur_.v_entry && !(cap_ < prof_.v_level)) {  // --- workspace
     // At 100 % every type asks for the look-ahead's own profile: follow it unchanged.
     plan_ = PathPlan{prof_, 0.0, cur_.v_entry, 0.0, false, cur_.segment.path.length()};
     on_plan_ = true;
     plan_factor_ = 1.0;
+    plan_cap_ = cap_;  // --- workspace
     dur_ = prof_.time();
     return true;
   }
@@ -509,8 +511,12 @@ bool PathInterpolator::replan(double f, double s, double v, double a) noexcept {
   r.level = override_level(override_type_, f, prof_.v_level, lim.v_programmed, cap);
   r.exit_wanted = override_exit(override_type_, f, cur_.v_exit, lim.v_programmed);
   r.exit_cap = cur_.v_exit;
+  // --- workspace: the cap lowers the level and the exit (never below 0)
+  r.level = std::min(r.level, cap_);
+  r.exit_wanted = std::min(r.exit_wanted, cap_);
   PathPlan np;
   if (!make_plan(r, np)) return false;
+  plan_cap_ = cap_;
   np.s0 = s;
   plan_ = np;
   t_in_ = 0.0;

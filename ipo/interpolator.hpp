@@ -26,6 +26,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -254,6 +255,15 @@ class PathInterpolator {
   OverrideType override_type() const noexcept { return override_type_; }
   // --- operator: block starts (null: none); `observer` must outlive the interpolator.
   void observe_blocks(BlockObserver* observer) noexcept { observer_ = observer; }
+  // --- workspace: a path velocity cap from outside (issue 14, ipo/workspace_hold.hpp)
+  /// Caps the path velocity [mm/s] (+inf: none) from the next step(): a jerk-limited replan
+  /// from the path state as for an override change (also inside a tolerance ball); the entry
+  /// that starts while capped starts capped. Negative or NaN values are taken as 0.
+  void set_velocity_cap(double cap) noexcept { cap_ = cap >= 0.0 ? cap : 0.0; }
+  double velocity_cap() const noexcept { return cap_; }  ///< [mm/s]
+  /// The entry the path is on (null: none yet); valid until the next step().
+  const planner::PlannedSegment* active_entry() const noexcept { return active_ ? &cur_ : nullptr; }
+  // --- workspace: end
 
  private:
   struct PendingDwell {
@@ -344,6 +354,9 @@ class PathInterpolator {
   RaisedLimits raised_;        ///< cur_'s limits above 100 %
   double t100_prev_ = 0.0;     ///< 100 % profile time at s_prev_ [s]
   double lost_ = 0.0;          ///< time lost in the cycle being done [s]
+  // --- workspace
+  double cap_ = std::numeric_limits<double>::infinity();       ///< velocity cap set [mm/s]
+  double plan_cap_ = std::numeric_limits<double>::infinity();  ///< cap plan_ was made for
   // --- operator: block starts
   /// Reports the Moves up to ring token `token` (low 32 bits) not reported yet.
   void report_starts_to(std::uint32_t token) noexcept;

@@ -441,6 +441,7 @@ AxisParams build_axis(const ListValues& v, core::DiagnosticList& diagnostics) {
   a.control.kv = v.internal("getriebe[0].kv");
   a.control.pt1_time = v.internal("drive.pt1_time");
 
+  a.conv_sync_optim = v.number("kenngr.conv_sync_optim") != 0.0;  // --- workspace
   if (v.number("conv_sync.is_master") != 0.0) {
     ConveyorAxisParams c;
     c.enable_filter = v.number("conv_sync.enable_filter") != 0.0;

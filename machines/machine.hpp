@@ -119,7 +119,9 @@ struct AxisParams {
   Monitoring monitoring;
   ControlLoop control;
   std::optional<ConveyorAxisParams> conveyor;  ///< set on the conveyor axis only
-  std::string list_file;                       ///< list the axis came from (for messages)
+  /// kenngr.conv_sync_optim P-AXIS-00555 of this axis list (4.8.1 sets it on X; --- workspace)
+  bool conv_sync_optim = false;
+  std::string list_file;  ///< list the axis came from (for messages)
 };
 
 /// Look-ahead and functions of P-CHAN-00650.
@@ -153,6 +155,9 @@ struct ConveyorSyncChannel {
   /// P-CHAN-00859..00864; when not configured: soft limits of the first three axes (§4.4.1).
   Workspace workspace;
   bool workspace_configured = false;  ///< true when any of 00859..00864 was given
+  /// --- workspace: P-AXIS-00555 = 1 on the X axis (axis index 0, 4.8.1 l.798) or on the
+  /// conveyor axis (l.347): the optimised hold method (docs/conveyor.md)
+  bool optimised_monitoring = false;
 
   /// PCS0 -> MCS.
   Frame t0() const { return t0_frame(t0_shift, t0_rot_abc); }

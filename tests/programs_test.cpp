@@ -22,11 +22,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The machines bundled under machines/ (docs/programs.md).
-// --- report-lib: laser_queue (laser_portal with measuring method 3, light_barrier_queue)
-constexpr std::array<std::string_view, 7> kMachines = {
-    "laser_portal",         "delta_picker", "static_saw",       "portal_3x",
-    "laser_portal_encoder", "laser_queue",  "delta_picker_belt"};
+// The machines bundled under machines/ (laser_queue: report-lib, laser_portal_encoder: line,
+// delta_picker_belt: trafo-conveyor, laser_portal_simple: workspace).
+constexpr std::array<std::string_view, 8> kMachines = {
+    "laser_portal", "delta_picker",         "static_saw",        "portal_3x",
+    "laser_queue",  "laser_portal_encoder", "delta_picker_belt", "laser_portal_simple"};
 
 // The seed's listings (TF5264, seed 004) and the reference's section 10 example: these must
 // never silently disappear from programs/.
