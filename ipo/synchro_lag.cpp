@@ -2,6 +2,8 @@
 
 #include "ipo/synchro_lag.hpp"
 
+#include <algorithm>
+
 namespace ncsim::ipo {
 
 double real_travel(const ConveyorSync& sync) noexcept {
@@ -20,6 +22,21 @@ std::optional<double> tracking_lag(const ConveyorSync& sync, const Eigen::Vector
   const SyncFrame& f = sync.frame();
   const Eigen::Vector3d p_pcs1 = f.to_pcs1(x_command, sync.travel());
   return synchro_lag(f, x_actual, p_pcs1, real_travel(sync));
+}
+
+std::optional<double> axes_lag(const ConveyorSync& sync, std::span<const double> command,
+                               std::span<const double> actual, bool transformed) noexcept {
+  if (transformed) return std::nullopt;
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  Eigen::Vector3d a = Eigen::Vector3d::Zero();
+  const std::size_t n = std::min({sync.axis_count(), command.size(), actual.size()});
+  for (std::size_t i = 0; i < n; ++i) {
+    if (const int k = sync.xyz(i); k >= 0) {
+      c[k] = command[i];
+      a[k] = actual[i];
+    }
+  }
+  return tracking_lag(sync, c, a);
 }
 
 }  // namespace ncsim::ipo

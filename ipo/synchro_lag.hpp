@@ -25,6 +25,7 @@
 
 #include <Eigen/Core>
 #include <optional>
+#include <span>
 
 #include "ipo/conveyor_sync.hpp"
 
@@ -34,6 +35,13 @@ namespace ncsim::ipo {
 /// cycle `sync` last stepped; nullopt unless sync.moving_frame() and a Port is attached.
 std::optional<double> tracking_lag(const ConveyorSync& sync, const Eigen::Vector3d& x_command,
                                    const Eigen::Vector3d& x_actual) noexcept;
+
+/// synchro_lag from the channel's per-axis set (`command`) and actual positions [mm | deg],
+/// gathered into X/Y/Z by sync.xyz(i); nullopt as tracking_lag() and under #TRAFO ON
+/// (`transformed`: the axes are joints, not X/Y/Z). The one place the channel's display
+/// (Channel::master_display) and the report take it from.
+std::optional<double> axes_lag(const ConveyorSync& sync, std::span<const double> command,
+                               std::span<const double> actual, bool transformed) noexcept;
 
 /// The real workpiece's travel [mm] equivalent to the frame's travel (the frame's s when the NC
 /// were exact): the real belt since the real front edge passed the sensor, plus the sensor's

@@ -141,3 +141,18 @@ TEST_CASE("synchro_lag sees a sensor mounted off T0: the real workpiece is ahead
   CHECK(*lag == doctest::Approx(-2.0).epsilon(1e-9));
   CHECK(real_travel(r.sync) == doctest::Approx(r.sync.travel() + 2.0).epsilon(1e-9));
 }
+
+TEST_CASE("synchro_lag from the axes: their X/Y/Z slots, and none under #TRAFO ON (joints)") {
+  Tracking r(0.017455, -100.0);
+  r.catch_up();
+  r.cycle();
+  const Eigen::Vector3d c = r.command();
+  const std::array<double, 3> command{c.x(), c.y(), c.z()};
+  const std::array<double, 3> actual{c.x() + 0.2, c.y(), c.z()};
+  const auto lag = axes_lag(r.sync, command, actual, false);
+  REQUIRE(lag);
+  CHECK(*lag == doctest::Approx(*tracking_lag(r.sync, c, c + Eigen::Vector3d(0.2, 0.0, 0.0))));
+  // Under #TRAFO ON the axes' positions are joint angles: no synchro_lag (the report took
+  // them for X/Y/Z before).
+  CHECK_FALSE(axes_lag(r.sync, command, actual, true));
+}

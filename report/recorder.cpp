@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "ipo/joint_stage.hpp"
 #include "ipo/synchro_lag.hpp"
 
 namespace ncsim::report {
@@ -79,19 +80,13 @@ void Recorder::conveyor_values() {
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   v[3] = d.valid ? d.current_pos_master : nan;
   v[4] = d.valid ? d.pos_master_comp : nan;
-  // synchro_lag against the real workpiece (ipo/synchro_lag.hpp): the MCS command and actual
-  // position of the axes that are X, Y, Z.
+  // synchro_lag against the real workpiece (ipo/synchro_lag.hpp), none under #TRAFO ON.
   v[5] = nan;
   if (axes_state_ != nullptr) {
-    Eigen::Vector3d command = Eigen::Vector3d::Zero();
-    Eigen::Vector3d actual = Eigen::Vector3d::Zero();
-    for (std::size_t i = 0; i < conveyor_->axis_count() && i < names_.size(); ++i) {
-      const int k = conveyor_->xyz(i);
-      if (k < 0) continue;
-      command[k] = axes_state_->command[i];
-      actual[k] = axes_state_->actual[i];
-    }
-    if (const auto lag = ipo::tracking_lag(*conveyor_, command, actual)) v[5] = *lag;
+    const std::size_t n = names_.size();
+    if (const auto lag = ipo::axes_lag(*conveyor_, {axes_state_->command.data(), n},
+                                       {axes_state_->actual.data(), n}, transformed_))
+      v[5] = *lag;
   }
   // The phases of docs/report.md "Conveyor": synchronised from the catch-up's P-CHAN-00365
   // status (ConveyorSync::synchronised()) to #SYNC OUT.
@@ -123,6 +118,7 @@ void Recorder::on_joint(const ipo::Joint& joint) {
 
 void Recorder::on_cycle(const ipo::Cycle& c) {
   audit_.on_cycle(c);
+  transformed_ = ipo::transformed(c, transformed_);
   counter_.add(c);
   const std::size_t n = names_.size();
   // The axis charts show what each machine axis received (the setpoints: the joints under

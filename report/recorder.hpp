@@ -176,6 +176,7 @@ class Recorder final : public ipo::Sink {
   std::vector<double> mcs_point_;  ///< scratch: the MCS tool point of the cycle
   std::vector<double> values_;     ///< one row of series_
   const ipo::AxesState* axes_state_ = nullptr;
+  bool transformed_ = false;  ///< the last cycle ran under #TRAFO ON (ipo::transformed)
   std::vector<std::array<double, 2>> soft_limits_;
   std::optional<WorkspaceView> workspace_;        ///< set_limits(), with config.conveyor
   std::size_t conveyor_first_ = 0;                ///< values_ index of kConveyorSeries[0]
