@@ -788,18 +788,19 @@ LineOutcome run_line(const ProgramOptions& program, std::optional<std::uint64_t>
   return o;
 }
 
+void add_run_program_options(CLI::App& cmd, ProgramOptions& program) {
+  cmd.add_option("program", program.program, "NC program file (.nc)")->required();
+  cmd.add_option("--machine", program.machine_dir,
+                 "Machine folder (parameter lists); default: the program folder's 'machine' "
+                 "file, else the bundled portal_3x");
+  cmd.add_option("--scenario", program.scenario,
+                 "Scenario TOML file (docs/scenario.md); default: the program folder's "
+                 "scenario.toml");
+}
+
 RunCommands::RunCommands(CLI::App& app) {
-  const auto add_program = [](CLI::App& cmd, ProgramOptions& p) {
-    cmd.add_option("program", p.program, "NC program file (.nc)")->required();
-    cmd.add_option("--machine", p.machine_dir,
-                   "Machine folder (parameter lists); default: the program folder's 'machine' "
-                   "file, else the bundled portal_3x");
-    cmd.add_option("--scenario", p.scenario,
-                   "Scenario TOML file (docs/scenario.md); default: the program folder's "
-                   "scenario.toml");
-  };
   time_cmd_ = app.add_subcommand("time", "Machining time, total and per block");
-  add_program(*time_cmd_, time_.program);
+  add_run_program_options(*time_cmd_, time_.program);
   time_cmd_->add_flag("--blocks", time_.blocks, "Per executed block: time, distance, feeds, split");
   time_cmd_->add_flag("--json", time_.json, "JSON instead of text");
   time_cmd_->add_flag("--audit", time_.audit, "Check every limit; exit 3 on a violation");
@@ -807,7 +808,7 @@ RunCommands::RunCommands(CLI::App& app) {
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
 
   run_cmd_ = app.add_subcommand("run", "Run on the path interpolator and write the CSV trajectory");
-  add_program(*run_cmd_, run_.program);
+  add_run_program_options(*run_cmd_, run_.program);
   run_cmd_->add_option("-o,--output", run_.output, "CSV file, '-' for stdout (default)");
   run_cmd_->add_option("--every", run_.every, "One row every N cycles (default 1)")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
@@ -825,7 +826,7 @@ RunCommands::RunCommands(CLI::App& app) {
   // --- report:
   report_cmd_ = app.add_subcommand(
       "report", "Run on the path interpolator and write the HTML run report (docs/report.md)");
-  add_program(*report_cmd_, report_.program);
+  add_run_program_options(*report_cmd_, report_.program);
   report_cmd_->add_option("-o,--output", report_.output, "HTML file (default report.html)");
   report_cmd_->add_option("--cycle-us", report_.cycle_us, "Interpolation cycle [us] (default 1000)")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));

@@ -94,6 +94,10 @@ LineOutcome run_line(const ProgramOptions& program, std::optional<std::uint64_t>
                      const LineRun& run, std::ostream& err);
 
 /// The `time` and `run` subcommands of `app`: the hook main.cpp calls.
+/// The program, --machine and --scenario options of the subcommands that run a program on the
+/// channel (time, run, report, sweep, tune-delay).
+void add_run_program_options(CLI::App& cmd, ProgramOptions& program);
+
 class RunCommands {
  public:
   explicit RunCommands(CLI::App& app);

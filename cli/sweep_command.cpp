@@ -195,11 +195,7 @@ SweepCommand::SweepCommand(CLI::App& app) {
   cmd_ = app.add_subcommand("sweep",
                             "Highest belt velocity at which a conveyor program runs through "
                             "(docs/conveyor.md \"The line's limits offline\")");
-  cmd_->add_option("program", options_.program.program, "NC program file (.nc)")->required();
-  cmd_->add_option("--machine", options_.program.machine_dir,
-                   "Machine folder; default: the program folder's 'machine' file");
-  cmd_->add_option("--scenario", options_.program.scenario,
-                   "Scenario TOML file; default: the program folder's scenario.toml");
+  add_run_program_options(*cmd_, options_.program);
   cmd_->add_option("--belt-velocity", options_.belt_velocity, "LO:HI belt velocities [mm/s]")
       ->required();
   cmd_->add_option("--tolerance", options_.tolerance,

@@ -181,11 +181,7 @@ TuneDelayCommand::TuneDelayCommand(CLI::App& app) {
   cmd_ = app.add_subcommand("tune-delay",
                             "Propose the delay time P-AXIS-00626 that zeroes the mean synchro_lag "
                             "(docs/conveyor.md \"Tuning the delay time offline\")");
-  cmd_->add_option("program", options_.program.program, "NC program file (.nc)")->required();
-  cmd_->add_option("--machine", options_.program.machine_dir,
-                   "Machine folder; default: the program folder's 'machine' file");
-  cmd_->add_option("--scenario", options_.program.scenario,
-                   "Scenario TOML file; default: the program folder's scenario.toml");
+  add_run_program_options(*cmd_, options_.program);
   cmd_->add_option("--cycle-us", options_.cycle_us, "Interpolation cycle [us] (default 1000)")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
   cmd_->add_flag("--contour", options_.contour,
