@@ -13,6 +13,7 @@
 #include "core/source_file.hpp"
 #include "interp/test_support.hpp"
 #include "ipo/channel.hpp"
+#include "ipo/channel_test_support.hpp"
 #include "ipo/program_source.hpp"
 #include "ipo/test_port.hpp"
 
@@ -31,20 +32,13 @@ struct Ran {
 // Runs `program` on `machine_name` (1 ms) with `port` attached (null: none).
 Ran run(const std::string& program, conveyor::Port* port,
         const std::string& machine_name = "laser_portal") {
-  const core::SourceFile file("t.nc", program);
   const machines::Machine& m = interp::test::machine(machine_name);
-  interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
-  ipo::Channel ch(ipo::channel_config(m, 0.001), src);
-  ch.attach_conveyor(port);
+  ipo::test::ConveyorRig rig(program, m, ipo::channel_config(m, 0.001), port);
   Ran r;
-  for (int guard = 0; guard < 200'000; ++guard) {
-    r.status = ch.step();
-    if (r.status != ipo::Status::running) break;
-    r.axes.push_back(ch.axes());
-  }
-  r.error = ch.run_time_error();
-  if (const core::Diagnostic* d = src.error()) {
+  r.status = ipo::test::run_to_end(
+      rig.ch, [&] { r.axes.push_back(rig.ch.axes()); }, 200'000);
+  r.error = rig.ch.run_time_error();
+  if (const core::Diagnostic* d = rig.src.error()) {
     r.source_error = d->id;
     r.source_message = d->message;
   }
@@ -90,25 +84,23 @@ struct Tracked {
 constexpr double kT = 0.001;
 
 Tracked track(const std::string& program, ipo::test::FakePort* port) {
-  const core::SourceFile file("t.nc", program);
   const machines::Machine& m = interp::test::machine("laser_portal");
-  interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
-  ipo::Channel ch(ipo::channel_config(m, kT), src);
-  ch.attach_conveyor(port);
+  ipo::test::ConveyorRig rig(program, m, ipo::channel_config(m, kT), port);
+  const ipo::Channel& ch = rig.ch;
   Tracked r;
-  for (int guard = 0; guard < 100'000; ++guard) {
-    r.status = ch.step();
-    if (r.status != ipo::Status::running) break;
-    const ipo::ConveyorSync& s = *ch.conveyor_sync();
-    r.line.push_back(ch.cycle().line);
-    r.phase.push_back(s.phase());
-    r.x.push_back({ch.axes().command[0], ch.axes().command[1], ch.axes().command[2]});
-    r.offset.push_back({s.offset(0), s.offset(1), s.offset(2)});
-    r.waited.push_back(s.waited());
-  }
+  r.status = ipo::test::run_to_end(
+      rig.ch,
+      [&] {
+        const ipo::ConveyorSync& s = *ch.conveyor_sync();
+        r.line.push_back(ch.cycle().line);
+        r.phase.push_back(s.phase());
+        r.x.push_back({ch.axes().command[0], ch.axes().command[1], ch.axes().command[2]});
+        r.offset.push_back({s.offset(0), s.offset(1), s.offset(2)});
+        r.waited.push_back(s.waited());
+      },
+      100'000);
   r.error = ch.run_time_error();
-  if (const core::Diagnostic* d = src.error()) r.source_error = d->id;
+  if (const core::Diagnostic* d = rig.src.error()) r.source_error = d->id;
   return r;
 }
 

@@ -5,11 +5,18 @@
 
 #include <cstddef>
 #include <functional>
+#include <string>
+#include <utility>
 #include <vector>
 
+#include "conveyor/port.hpp"
+#include "core/source_file.hpp"
+#include "interp/interpreter.hpp"
 #include "ipo/audit.hpp"
 #include "ipo/channel.hpp"
 #include "ipo/interpolator.hpp"
+#include "ipo/program_source.hpp"
+#include "machines/machine.hpp"
 
 namespace ncsim::ipo::test {
 
@@ -46,5 +53,20 @@ inline Status run_to_end(Channel& ch, const std::function<void()>& after_step = 
   }
   return status;
 }
+
+/// A program on a channel with a conveyor: the source file, the interpreter, the adapter and the
+/// channel of machine `m` (which must outlive the rig), `port` attached (null: none). The
+/// conveyor tests' common set-up; they step `ch` with run_to_end().
+struct ConveyorRig {
+  core::SourceFile file;
+  interp::Interpreter in;
+  ProgramSource src;
+  Channel ch;
+  ConveyorRig(const std::string& text, const machines::Machine& m, ChannelConfig config,
+              conveyor::Port* port, Sink* sink = nullptr)
+      : file("t.nc", text), in(file, m), src(in, m), ch(std::move(config), src, sink) {
+    ch.attach_conveyor(port);
+  }
+};
 
 }  // namespace ncsim::ipo::test

@@ -14,6 +14,7 @@
 #include "core/source_file.hpp"
 #include "interp/test_support.hpp"
 #include "ipo/channel.hpp"
+#include "ipo/channel_test_support.hpp"
 #include "ipo/program_source.hpp"
 #include "ipo/test_port.hpp"
 
@@ -36,27 +37,25 @@ struct Held {
 };
 
 Held run(const std::string& program, bool optimised, double factor) {
-  const core::SourceFile file("t.nc", program);
   machines::Machine m = interp::test::machine("laser_portal");
   m.channel.conveyor->optimised_monitoring = optimised;
   m.channel.conveyor->hold_limit_vel_factor = factor;
-  interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
-  ipo::Channel ch(ipo::channel_config(m, kT), src);
   ipo::test::FakePort port(kBelt);
   port.latch_at_ = 1;
-  ch.attach_conveyor(&port);
+  ipo::test::ConveyorRig rig(program, m, ipo::channel_config(m, kT), &port);
+  const ipo::Channel& ch = rig.ch;
   Held r;
-  for (int guard = 0; guard < 60'000; ++guard) {
-    r.status = ch.step();
-    if (r.status != ipo::Status::running) break;
-    const ipo::ConveyorSync& s = *ch.conveyor_sync();
-    r.line.push_back(ch.cycle().line);
-    r.x.push_back(ch.axes().command[0]);
-    r.x_rel.push_back(ch.axes().command[0] - s.offset(0));
-    r.v_rel.push_back(ch.cycle().path.v);
-    r.cap.push_back(s.hold() ? s.hold()->cap() : -1.0);
-  }
+  r.status = ipo::test::run_to_end(
+      rig.ch,
+      [&] {
+        const ipo::ConveyorSync& s = *ch.conveyor_sync();
+        r.line.push_back(ch.cycle().line);
+        r.x.push_back(ch.axes().command[0]);
+        r.x_rel.push_back(ch.axes().command[0] - s.offset(0));
+        r.v_rel.push_back(ch.cycle().path.v);
+        r.cap.push_back(s.hold() ? s.hold()->cap() : -1.0);
+      },
+      60'000);
   r.error = ch.run_time_error();
   return r;
 }
@@ -183,25 +182,23 @@ struct Slowed {
 // kLine, optimised, factor 1000; the belt drops from 100 to 50 mm/s at 3 s, while the tool
 // stands at the line: the cap follows the belt with the path's ramp, which passes the line.
 Slowed slowed(double tolerance) {
-  const core::SourceFile file("t.nc", kLine);
   machines::Machine m = interp::test::machine("laser_portal");
   m.channel.conveyor->optimised_monitoring = true;
   m.channel.conveyor->hold_limit_vel_factor = 1.0;
   m.channel.conveyor->hold_limit_tolerance = tolerance;
-  interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
-  ipo::Channel ch(ipo::channel_config(m, kT), src);
   ipo::test::FakePort port(kBelt);
   port.latch_at_ = 1;
   port.v_change_at_ = 3000;
   port.v_new_ = 50.0;
-  ch.attach_conveyor(&port);
+  ipo::test::ConveyorRig rig(kLine, m, ipo::channel_config(m, kT), &port);
+  const ipo::Channel& ch = rig.ch;
   Slowed r;
-  for (int guard = 0; guard < 60'000; ++guard) {
-    r.status = ch.step();
-    if (r.status != ipo::Status::running) break;
-    if (ch.cycle().line == 4) r.min_x = std::min(r.min_x, ch.axes().command[0]);
-  }
+  r.status = ipo::test::run_to_end(
+      rig.ch,
+      [&] {
+        if (ch.cycle().line == 4) r.min_x = std::min(r.min_x, ch.axes().command[0]);
+      },
+      60'000);
   r.error = ch.run_time_error();
   return r;
 }

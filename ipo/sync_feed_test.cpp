@@ -15,6 +15,7 @@
 #include "core/source_file.hpp"
 #include "interp/test_support.hpp"
 #include "ipo/channel.hpp"
+#include "ipo/channel_test_support.hpp"
 #include "ipo/program_source.hpp"
 #include "ipo/test_port.hpp"
 #include "scenario/loader.hpp"
@@ -39,25 +40,23 @@ struct Run {
 
 // laser_portal: X v_max 1000 mm/s, A 10000 mm/s^2; the belt at 300 mm/s.
 Run run(const std::string& program, ipo::test::FakePort& port) {
-  const core::SourceFile file("t.nc", program);
   const machines::Machine& m = interp::test::machine("laser_portal");
-  interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
-  ipo::Channel ch(ipo::channel_config(m, kT), src);
-  ch.attach_conveyor(&port);
+  ipo::test::ConveyorRig rig(program, m, ipo::channel_config(m, kT), &port);
+  const ipo::Channel& ch = rig.ch;
   Run r;
-  for (int guard = 0; guard < 100'000; ++guard) {
-    r.status = ch.step();
-    if (r.status != ipo::Status::running) break;
-    const ipo::ConveyorSync& s = *ch.conveyor_sync();
-    r.line.push_back(ch.cycle().line);
-    r.phase.push_back(s.phase());
-    r.x.push_back({ch.axes().command[0], ch.axes().command[1], ch.axes().command[2]});
-    r.offset_x.push_back(s.offset(0));
-    r.x_indp.push_back(ch.indp().owned(0) && !ch.indp().in_position(0));
-  }
+  r.status = ipo::test::run_to_end(
+      rig.ch,
+      [&] {
+        const ipo::ConveyorSync& s = *ch.conveyor_sync();
+        r.line.push_back(ch.cycle().line);
+        r.phase.push_back(s.phase());
+        r.x.push_back({ch.axes().command[0], ch.axes().command[1], ch.axes().command[2]});
+        r.offset_x.push_back(s.offset(0));
+        r.x_indp.push_back(ch.indp().owned(0) && !ch.indp().in_position(0));
+      },
+      100'000);
   r.error = ch.run_time_error();
-  if (const core::Diagnostic* d = src.error()) r.source_error = d->id;
+  if (const core::Diagnostic* d = rig.src.error()) r.source_error = d->id;
   if (r.error)
     MESSAGE(r.error->id << " line " << r.error->line << " t " << r.error->t << ": "
                         << r.error->message);

@@ -18,6 +18,7 @@
 #include "interp/test_support.hpp"
 #include "ipo/audit.hpp"
 #include "ipo/channel.hpp"
+#include "ipo/channel_test_support.hpp"
 #include "ipo/program_source.hpp"
 #include "ipo/test_port.hpp"
 #include "ipo/trafo.hpp"
@@ -53,36 +54,34 @@ struct Tracked {
 
 Tracked track(const std::string& program, ipo::test::FakePort* port,
               const machines::Machine& m = picker()) {
-  const core::SourceFile file("t.nc", program);
-  interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
   ipo::ChannelConfig cfg = ipo::channel_config(m, kT);
   REQUIRE(cfg.path.joints);
   const auto trafo = ipo::machine_trafo(m, cfg.path);
   REQUIRE(trafo);
   ipo::Audit audit(cfg.path.axes, kT, cfg.path.start);
   audit.set_joint_limits(cfg.path.joints->joints, cfg.path.start, true);
-  ipo::Channel ch(std::move(cfg), src, &audit);
-  ch.attach_conveyor(port);
+  ipo::test::ConveyorRig rig(program, m, std::move(cfg), port, &audit);
+  const ipo::Channel& ch = rig.ch;
   Tracked r;
-  for (int guard = 0; guard < 100'000; ++guard) {
-    r.status = ch.step();
-    if (r.status != ipo::Status::running) break;
-    if (ch.transformed()) audit.on_joints(ch.cycle(), ch.joints());
-    const ipo::ConveyorSync& s = *ch.conveyor_sync();
-    r.line.push_back(ch.cycle().line);
-    r.phase.push_back(s.phase());
-    const auto& q = ch.axes().command;
-    const auto p = trafo->kinematics->forward(Eigen::Vector3d(q[0], q[1], q[2]));
-    REQUIRE(p.ok());
-    r.tcp.push_back({p.value[0], p.value[1], p.value[2]});
-    r.offset.push_back({s.offset(0), s.offset(1), s.offset(2)});
-    r.joints.push_back(ch.joints());
-  }
+  r.status = ipo::test::run_to_end(
+      rig.ch,
+      [&] {
+        if (ch.transformed()) audit.on_joints(ch.cycle(), ch.joints());
+        const ipo::ConveyorSync& s = *ch.conveyor_sync();
+        r.line.push_back(ch.cycle().line);
+        r.phase.push_back(s.phase());
+        const auto& q = ch.axes().command;
+        const auto p = trafo->kinematics->forward(Eigen::Vector3d(q[0], q[1], q[2]));
+        REQUIRE(p.ok());
+        r.tcp.push_back({p.value[0], p.value[1], p.value[2]});
+        r.offset.push_back({s.offset(0), s.offset(1), s.offset(2)});
+        r.joints.push_back(ch.joints());
+      },
+      100'000);
   r.error = ch.run_time_error();
   r.warning = ch.trafo_warning();
   r.verdict = audit.verdict();
-  if (const core::Diagnostic* d = src.error()) r.source_error = d->id + ": " + d->message;
+  if (const core::Diagnostic* d = rig.src.error()) r.source_error = d->id + ": " + d->message;
   return r;
 }
 
