@@ -225,6 +225,33 @@ TEST_CASE("#CAXTRACK: C follows the tangent + OFFSET; a corner above ANGLIMIT st
   CHECK(move(8).end[kC] == doctest::Approx(100.0));
 }
 
+TEST_CASE("#CAXTRACK without AX= on a machine without P-CHAN-00095 has no tracking axis: NC9103") {
+  const Pulled p = pull("N10 #CAXTRACK ON\nN20 G01 X1 F600\nM30\n", "portal_3x");
+  CHECK(p.error_id == "NC9103");
+  CHECK(p.error_line == 1);
+}
+
+TEST_CASE("x_virtual: a dwell or a corner while synchronised would stop the path: NC9101") {
+  // static_saw: P-CHAN-00364 x_virtual = 1; the contour runs against the conveying direction.
+  const Pulled dwell = pull(
+      "N10 #SYNC IN [CONVEYOR=S1, CONV_VEL=6000]\n"
+      "N20 G01 X0 Y0 F100\n"  // the catch-up
+      "N30 G04 0.5\n"
+      "M30\n",
+      "static_saw");
+  CHECK(dwell.error_id == "NC9101");
+  CHECK(dwell.error_line == 3);
+  const Pulled corner = pull(
+      "N10 #SYNC IN [CONVEYOR=S1, CONV_VEL=6000]\n"
+      "N20 G01 X0 Y0 F100\n"  // the catch-up
+      "N30 G01 X-10 Y0\n"
+      "N40 G01 X-20 Y10\n"  // a 45 deg corner between unblended lines
+      "M30\n",
+      "static_saw");
+  CHECK(corner.error_id == "NC9101");
+  CHECK(corner.error_line == 4);
+}
+
 TEST_CASE("#CAXTRACK: a main axis is 120626; ROTMODE 2 and OPTALIGN are not supported") {
   CHECK(pull("N10 #CAXTRACK ON [AX=Y]\nN20 G01 X1 F600\nM30\n", "static_saw").error_id == "120626");
   const Pulled r = pull("N10 #CAXTRACK ON [AX=C, ROTMODE=2]\nN20 G01 X1 F600\nM30\n", "static_saw");
