@@ -15,6 +15,7 @@
 #include <variant>
 
 #include "cli/commands.hpp"
+#include "cli/number_format.hpp"
 #include "cli/run_progress.hpp"
 #include "cli/workpiece_report.hpp"  // --- line
 #include "conveyor/world.hpp"
@@ -38,24 +39,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// Shortest round-trip text of `v` (std::to_chars): byte-identical reruns, exact values.
-std::string num(double v) {
-  std::array<char, 32> buf{};
-  const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
-  return std::string(buf.data(), r.ptr);
-}
-
 void append_num(std::string& s, double v) {
   s += num(v);
-}
-
-/// Text of `v` for people: 6 significant digits (3000.0000000000027 -> 3000, 0.14200000000000002
-/// -> 0.142). Machine-readable outputs (CSV, --json, --blocks, the total) keep num().
-std::string human(double v) {
-  std::array<char, 32> buf{};
-  const auto r =
-      std::to_chars(buf.data(), buf.data() + buf.size(), v, std::chars_format::general, 6);
-  return std::string(buf.data(), r.ptr);
 }
 
 struct Loaded {

@@ -17,17 +17,11 @@
 #include <vector>
 
 #include "cli/line_world.hpp"
+#include "cli/number_format.hpp"
 #include "cli/run_commands.hpp"
 
 namespace ncsim::cli {
 namespace {
-
-std::string human(double v) {
-  std::array<char, 32> buf{};
-  const auto r =
-      std::to_chars(buf.data(), buf.data() + buf.size(), v, std::chars_format::general, 6);
-  return std::string(buf.data(), r.ptr);
-}
 
 std::optional<double> parse_number(std::string_view s) {
   double v = 0.0;

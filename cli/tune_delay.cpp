@@ -10,18 +10,12 @@
 #include <ostream>
 #include <string>
 
+#include "cli/number_format.hpp"
 #include "cli/run_commands.hpp"
 #include "ipo/synchro_lag.hpp"
 
 namespace ncsim::cli {
 namespace {
-
-std::string human(double v) {
-  std::array<char, 32> buf{};
-  const auto r =
-      std::to_chars(buf.data(), buf.data() + buf.size(), v, std::chars_format::general, 6);
-  return std::string(buf.data(), r.ptr);
-}
 
 machines::ConveyorAxisParams* conveyor_params(machines::Machine& m) {
   for (machines::AxisParams& a : m.axes)

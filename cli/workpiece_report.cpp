@@ -7,23 +7,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "cli/number_format.hpp"
+
 namespace ncsim::cli {
-namespace {
-
-std::string num(double v) {  // shortest round trip (JSON)
-  std::array<char, 32> buf{};
-  const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
-  return std::string(buf.data(), r.ptr);
-}
-
-std::string human(double v) {  // 6 significant digits (text)
-  std::array<char, 32> buf{};
-  const auto r =
-      std::to_chars(buf.data(), buf.data() + buf.size(), v, std::chars_format::general, 6);
-  return std::string(buf.data(), r.ptr);
-}
-
-}  // namespace
 
 WorkpieceReport::WorkpieceReport(bool json) : json_(json), spool_(std::tmpfile()) {
   if (!spool_) throw std::runtime_error("cannot create a temporary file for the workpiece rows");

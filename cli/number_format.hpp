@@ -1,0 +1,28 @@
+#pragma once
+// cli/number_format: the two ways the ncsim command writes numbers (locale-independent).
+// num(): the shortest text that reads back to the same double, for machine-readable outputs
+// (CSV, --json, --blocks, the totals): exact values, byte-identical reruns. human(): 6
+// significant digits for people (3000.0000000000027 -> 3000, 0.14200000000000002 -> 0.142).
+
+#include <array>
+#include <charconv>
+#include <string>
+
+namespace ncsim::cli {
+
+/// Shortest round-trip text of `v` (std::to_chars).
+inline std::string num(double v) {
+  std::array<char, 32> buf{};
+  const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
+  return std::string(buf.data(), r.ptr);
+}
+
+/// Text of `v` for people: 6 significant digits.
+inline std::string human(double v) {
+  std::array<char, 32> buf{};
+  const auto r =
+      std::to_chars(buf.data(), buf.data() + buf.size(), v, std::chars_format::general, 6);
+  return std::string(buf.data(), r.ptr);
+}
+
+}  // namespace ncsim::cli
