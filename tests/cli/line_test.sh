@@ -12,6 +12,7 @@ checks=0
 source "$(dirname "${BASH_SOURCE[0]}")/expect.sh"
 squares=$root/programs/conveyor_squares/conveyor_squares.nc
 comoving=$root/programs/synchro_lag_comoving/synchro_lag_comoving.nc
+static=$root/programs/synchro_lag_static/synchro_lag_static.nc
 
 # conveyor_squares: three sheets 600 mm apart at 100 mm/s: 6 s per sheet once the loop runs.
 expect "time: one row per workpiece, waiting / catch-up / machining / desync / off belt" 0 \
@@ -69,6 +70,10 @@ expect "tune-delay: proposes the delay time that zeroes the mean synchro_lag (de
 expect "tune-delay: the static part is near zero with the proposal" 0 \
   '^tune-delay: check with P-AXIS-00626 = 18950 us: synchro_lag mean -?[0-9.]+e-0[6-9] mm' '' -- \
   tune-delay "$comoving"
+# The static unit's listing (x_virtual: Y's targets equal the virtual X's): 200 mm/s, the same
+# dead time and filter: the proposal lands within 50 us above dead time + filter delay (18955 us).
+expect "tune-delay: the static unit's synchro_lag listing gets dead time + filter delay too" 0 \
+  '^tune-delay: proposed P-AXIS-00626 conv_sync\.delay_time = 189[5-9][0-9] us' '' -- tune-delay "$static"
 expect "tune-delay: a machine without conveyor tracking: NC9126, exit 2" 2 '' '\[NC9126\]' -- \
   tune-delay --machine "$root/machines/portal_3x" "$squares"
 
