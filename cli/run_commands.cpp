@@ -184,14 +184,29 @@ std::vector<std::string> axis_names(const machines::Machine& m) {
   return out;
 }
 
+// The length unit of each interpolated axis: deg for a rotary axis, mm otherwise.
+std::vector<std::string> axis_units(const machines::Machine& m) {
+  std::vector<std::string> out;
+  for (const std::uint8_t i : ipo::interpolated_axes(m))
+    out.push_back(m.axes[i].kind == machines::AxisKind::rotary ? "deg" : "mm");
+  return out;
+}
+
 // The audit verdict, one line per axis, then the documented steps and every violation listed.
-void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names, std::ostream& os) {
+void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names,
+                 const std::vector<std::string>& units, std::ostream& os) {
   for (std::size_t i = 0; i < v.axes.size(); ++i) {
     const ipo::AxisAudit& a = v.axes[i];
+    const std::string& u = i < units.size() ? units[i] : std::string("mm");
     os << "audit: " << names[i] << " |v| " << human(std::max(a.v_closed, a.v_diff)) << " / "
-       << human(a.v_limit) << " mm/s, |a| " << human(std::max(a.a_closed, a.a_diff)) << " / "
-       << human(a.a_limit) << " mm/s^2, |j| " << human(std::max(a.j_closed, a.j_diff)) << " / "
-       << human(a.j_limit) << " mm/s^3\n";
+       << human(a.v_limit) << ' ' << u << "/s, |a| " << human(std::max(a.a_closed, a.a_diff))
+       << " / " << human(a.a_limit) << ' ' << u << "/s^2, |j| ";
+    if (a.jerk_cycles == 0) {  // STEP slope throughout: the jerk is not limited, not audited
+      os << "not limited (acceleration-limited slope)\n";
+      continue;
+    }
+    os << human(std::max(a.j_closed, a.j_diff)) << " / " << human(a.j_limit) << ' ' << u
+       << "/s^3\n";
   }
   // --- trafo: under #TRAFO ON the joints (the machine axes) are checked apart.
   for (std::size_t i = 0; i < v.joints.size(); ++i) {
@@ -421,7 +436,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
   }
   if (audit) {
     const ipo::Verdict& v = audit->verdict();
-    print_audit(v, axis_names(in.machine), options.json ? err : out);
+    print_audit(v, axis_names(in.machine), axis_units(in.machine), options.json ? err : out);
     if (!v.ok()) return kExitAudit;
   }
   return kExitOk;
@@ -684,7 +699,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
     return kExitProgramErrors;
   }
   if (audit) {
-    print_audit(audit->verdict(), names, err);
+    print_audit(audit->verdict(), names, axis_units(in.machine), err);
     if (!audit->verdict().ok()) return kExitAudit;
   }
   return kExitOk;

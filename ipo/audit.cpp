@@ -123,6 +123,7 @@ void Audit::check_motion(std::size_t i, bool joint, const Stencil& st, AxisAudit
   check(Quantity::acceleration, Method::closed_form, i, c, a, speeding_up ? l.a_max : l.d_max,
         joint);
   if (st.jerk_closed) {
+    ++aa.jerk_cycles;
     aa.j_closed = std::max(aa.j_closed, j);
     check(Quantity::jerk, Method::closed_form, i, c, j, l.j_max, joint);
   }

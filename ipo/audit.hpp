@@ -71,8 +71,9 @@ struct AxisAudit {
   double v_closed = 0.0, a_closed = 0.0, j_closed = 0.0;  ///< max |v|, |a|, |j| closed form
   double v_diff = 0.0, a_diff = 0.0, j_diff = 0.0;        ///< max |v|, |a|, |j| finite differences
   double v_limit = 0.0;                                   ///< min(v_max, v_reference) [mm/s]
-  double a_limit = 0.0;  ///< max(A+, |A-|, G00 acceleration P-AXIS-00004) [mm/s^2]
-  double j_limit = 0.0;  ///< max(J, G00 jerk) [mm/s^3]
+  double a_limit = 0.0;           ///< max(A+, |A-|, G00 acceleration P-AXIS-00004) [mm/s^2]
+  double j_limit = 0.0;           ///< max(J, G00 jerk) [mm/s^3]
+  std::uint64_t jerk_cycles = 0;  ///< cycles whose jerk was checked (a jerk-limited slope)
 };
 
 struct Violation {

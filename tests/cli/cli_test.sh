@@ -279,6 +279,12 @@ expect "the measured workpiece's V.E. values reach the program after #SYNC IN" 0
 expect "run --detail adds the conveyor display variables on a conveyor machine" 0 \
   '^t,line,X,Y,Z,.*,Z\.ferr,current_pos_master,current_v_master,current_a_master,pos_master_comp,v_master_comp,a_master_comp,synchro_lag$' '' -- \
   run --detail --machine "$root/machines/laser_portal" -o - "$fixtures/conveyor_ve/conveyor_ve.nc"
+expect "time --audit names a rotary axis's units in degrees" 0 \
+  '^audit: C \|v\| [0-9.]+ / 1080 deg/s, \|a\| [0-9.]+ / 20000 deg/s\^2' '' -- \
+  time --audit "$root/programs/rotary_table/rotary_table.nc"
+expect "time --audit says the jerk is not limited under an acceleration-limited slope (never |j| 0)" 0 \
+  '^audit: X .*\|j\| not limited \(acceleration-limited slope\)$' '' -- \
+  time --audit "$root/programs/rotary_table/rotary_table.nc"
 expect "time --audit of conveyor tracking checks the axes on their setpoints (belt offset, catch-up): ok" 0 \
   '^audit: ok$' '' -- time --audit "$root/programs/conveyor_squares/conveyor_squares.nc"
 expect "time --audit: full feed in +X and -X on a fast belt keeps X within v_max (PCS1 velocity split)" 0 \
