@@ -233,3 +233,45 @@ TEST_CASE("FEED_CONT > 0 on a static unit and under #TRAFO ON: not supported (NC
     CHECK(r.error->message.find("#TRAFO ON") != std::string::npos);
   }
 }
+
+TEST_CASE(
+    "a FEED_CONT no axis can meet is reduced to the largest the catch-up plans; the "
+    "moving hand-over is due in the cycle of the meeting") {
+  ipo::test::FakePort port(kBelt);
+  const axes::Dynamics d{1000.0, 5000.0, 5000.0, 50000.0};
+  const std::vector<ipo::SyncAxis> ax{ipo::SyncAxis{"X", 0, d}, ipo::SyncAxis{"Y", 1, d},
+                                      ipo::SyncAxis{"Z", 2, d}};
+  ipo::ConveyorSync sync(machines::ConveyorSyncChannel{}, ax, kT);
+  sync.attach(&port);
+  interp::SyncIn in;
+  in.conv_vel = kBelt;
+  in.feed_cont_auto = true;
+  REQUIRE_FALSE(sync.sync_in(in));
+  CHECK(std::isinf(sync.feed_cont_wanted()));
+  port.latches_.push_back(0.0);
+  std::uint64_t k = 0;
+  REQUIRE_FALSE(sync.step(static_cast<double>(++k) * kT));
+  REQUIRE(sync.phase() == ipo::SyncPhase::latched);
+  // Along +X: the belt's 300 mm/s and 800 mm/s relative would need X at 1100 > V 1000.
+  const std::array<axes::MotionState, 3> start{};
+  const std::array<double, 3> target{200.0, 0.0, 0.0};
+  const planner::AxisVec u = sync.catch_up_direction(start, target);
+  CHECK(u[0] == doctest::Approx(1.0));
+  REQUIRE(sync.start_catch_up(start, target, 800.0) == axes::Result::ok);
+  CHECK(sync.v_relative() < 700.0 + 1e-6);
+  CHECK(sync.v_relative() > 600.0);  // the bisection's largest that plans, below V - belt
+  const double t_meet = sync.catch_up().duration();
+  // The hand-over is announced for the cycle that contains the meeting, with its lag in it.
+  while (!sync.handover_lag()) {
+    REQUIRE(sync.phase() == ipo::SyncPhase::catching_up);
+    REQUIRE_FALSE(sync.step(static_cast<double>(++k) * kT));
+    REQUIRE(static_cast<double>(k) * kT < 10.0);
+  }
+  const double lag = *sync.handover_lag();
+  CHECK(lag >= 0.0);
+  CHECK(lag < kT);
+  REQUIRE_FALSE(sync.step(static_cast<double>(++k) * kT));
+  CHECK(sync.phase() == ipo::SyncPhase::tracking);
+  CHECK(sync.synchronised());
+  CHECK(t_meet == doctest::Approx(static_cast<double>(k - 2) * kT + lag).epsilon(1e-12));
+}
