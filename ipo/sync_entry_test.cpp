@@ -275,3 +275,39 @@ TEST_CASE(
   CHECK(sync.synchronised());
   CHECK(t_meet == doctest::Approx(static_cast<double>(k - 2) * kT + lag).epsilon(1e-12));
 }
+
+TEST_CASE("seeded: any FEED_CONT, direction, first block and belt: audit clean, f as reduced") {
+  // ncsim's own generator (no library distribution: the same numbers everywhere).
+  std::uint64_t state = 0x5EEDF00Du;
+  auto uniform = [&](double lo, double hi) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return lo + (hi - lo) * static_cast<double>(state >> 11) * 0x1.0p-53;
+  };
+  const machines::Machine& m = interp::test::machine("laser_portal");
+  for (int n = 0; n < 12; ++n) {
+    const double belt = uniform(50.0, 300.0);
+    const double f = uniform(0.0, 12000.0);  // [mm/min]
+    const bool automatic = uniform(0.0, 1.0) < 0.25;
+    const double angle = uniform(-3.14159, 3.14159);
+    const double length = uniform(0.0, 1.0) < 0.3 ? uniform(0.005, 0.5) : uniform(5.0, 60.0);
+    const double feed = uniform(600.0, 12000.0);  // [mm/min]
+    char text[512];
+    std::snprintf(
+        text, sizeof text,
+        "%%t\nN10 G01 X0 Y0 Z0 F6000\nN20 #SYNC IN [CONV_VEL=%.6f %s]\n"
+        "N30 G01 X%.4f Y%.4f F6000\nN40 G91 G01 X%.6f Y%.6f F%.3f\nN50 G90 G04 0.05\n"
+        "N60 #SYNC OUT\nN70 M30\n",
+        belt * 60.0,
+        automatic ? "FEED_CONT_AUTO" : (std::string("FEED_CONT=") + std::to_string(f)).c_str(),
+        uniform(60.0, 150.0), uniform(0.0, 80.0), length * std::cos(angle),
+        length * std::sin(angle), feed);
+    CAPTURE(text);
+    const Run r = run(text, m, belt);
+    REQUIRE(r.status == ipo::Status::finished);
+    REQUIRE(r.handover > 2);
+    const double v = r.v_relative[r.handover];
+    CHECK(v >= 0.0);
+    CHECK(v <= (automatic ? feed / 60.0 : std::min(f, feed) / 60.0) * (1 + 1e-9));
+    CHECK(r.verdict.violation_count == 0);
+  }
+}
