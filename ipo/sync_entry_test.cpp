@@ -164,6 +164,16 @@ TEST_CASE("FEED_CONT_AUTO: the largest relative velocity the first block takes (
       CHECK(relative(r, k)[0] == doctest::Approx(100.0).epsilon(1e-3));
     CHECK(r.verdict.violation_count == 0);
   }
+  SUBCASE("a fast block: its entry cap is the PCS1 velocity split's (S-5)") {
+    // F = 1000 mm/s along +X: X keeps 1000 - 1.1 x 300 = 670 mm/s relative, so the catch-up
+    // meets at 670 and X runs at 970 mm/s in MCS, inside its V.
+    const Run r = run(program("FEED_CONT_AUTO", "N40 G01 X800 F60000\n"), m);
+    REQUIRE(r.status == ipo::Status::finished);
+    REQUIRE(r.handover > 2);
+    CHECK(r.v_relative[r.handover] == doctest::Approx(670.0));
+    CHECK(relative(r, r.handover + 1)[0] == doctest::Approx(670.0).epsilon(1e-3));
+    CHECK(r.verdict.violation_count == 0);
+  }
   SUBCASE("into a corner at the VELOJUMP velocity") {
     const Run r = run(program("FEED_CONT_AUTO", "N40 G01 Y100 F6000\n"), m);
     REQUIRE(r.status == ipo::Status::finished);
