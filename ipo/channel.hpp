@@ -70,6 +70,7 @@
 #include "ipo/indp_axes.hpp"
 #include "ipo/interpolator.hpp"
 #include "ipo/joint_stage.hpp"
+#include "ipo/sync_entry.hpp"  // --- sync-feed
 #include "machines/machine.hpp"
 #include "scenario/player.hpp"
 
@@ -253,6 +254,16 @@ class Channel {
   }
   /// The catch-up after #SYNC IN / the departure after #SYNC OUT (ProgramSource::sync_motion).
   EventOutcome on_sync_motion(const interp::Motion& motion, const ChannelEvent& e) noexcept;
+  // --- sync-feed: FEED_CONT > 0 / FEED_CONT_AUTO (ipo/channel_sync_entry.cpp, S-1)
+  /// The relative velocity the catch-up from `start` to `target` meets its target with: the
+  /// #SYNC IN's, reduced to what the path's first block allows (ipo/sync_entry); 0: at rest.
+  double sync_entry_velocity(std::span<const axes::MotionState> start,
+                             std::span<const double> target) noexcept;
+  /// The catch-up meets its target `lag` [s] into this cycle: the path starts there, moving.
+  EventOutcome sync_hand_over(double lag, const ChannelEvent& e) noexcept;
+  SyncEntry sync_entry_{};     ///< the hand-over decided at the catch-up's start
+  planner::AxisVec sync_u_{};  ///< the catch-up's direction (FEED_CONT's) [1]
+  // --- sync-feed: end
   EventOutcome on_probe_arm(const interp::ProbeArm& command, const ChannelEvent& e) noexcept;
   EventOutcome on_move_velocity(const interp::MoveVelocity& command,
                                 const ChannelEvent& e) noexcept;

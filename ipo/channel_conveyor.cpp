@@ -49,15 +49,12 @@ Channel::EventOutcome Channel::on_sync_in(const interp::SyncIn& command,
   try {
     if (!sync_ || sync_->port() == nullptr)
       return event_error(kNotSupportedId, std::string("not supported: #SYNC IN") + kNeedsWorld, e);
-    if (command.feed_cont_auto)
+    // --- sync-feed: FEED_CONT > 0 / FEED_CONT_AUTO run (S-1), not on a static unit
+    if (static_unit_ && (command.feed_cont_auto || command.feed_cont.value_or(0.0) > 0.0))
       return event_error(kNotSupportedId,
-                         "not supported: #SYNC IN FEED_CONT_AUTO (the manual gives no formula for "
-                         "\"the maximum permissible dynamic relative velocity\")",
-                         e);
-    if (command.feed_cont && *command.feed_cont > 0.0)
-      return event_error(kNotSupportedId,
-                         "not supported: #SYNC IN FEED_CONT > 0 (the catch-up can meet the "
-                         "workpiece moving, but the path starts the first PCS1 block at rest)",
+                         "not supported: #SYNC IN FEED_CONT > 0 or FEED_CONT_AUTO with the static "
+                         "processing unit (P-CHAN-00364 x_virtual): its path runs at the belt "
+                         "feed and starts from rest after the catch-up",
                          e);
     if (sync_tag_ != e.tag) {  // first dispatch: from now the path waits for the measured value
       sync_tag_ = e.tag;
@@ -106,6 +103,7 @@ Channel::EventOutcome Channel::on_sync_motion(const interp::Motion& motion,
                        e);
   }
   if (sync_tag_ == e.tag) {  // dispatched again: blocking while the profile runs
+    if (const auto lag = sync_->handover_lag()) return sync_hand_over(*lag, e);  // --- sync-feed
     return sync_->driving() ? EventOutcome::blocking : EventOutcome::done;
   }
   // --- sync-feed: the INDP axes go to the catch-up / departure (docs/conveyor.md S-4).
@@ -122,19 +120,32 @@ Channel::EventOutcome Channel::on_sync_motion(const interp::Motion& motion,
     target[i] = motion.end[i];  // interpolated order, MCS at belt travel 0
   }
   const bool catch_up = sync_->phase() == SyncPhase::latched;
+  // --- sync-feed: a catch-up meeting the workpiece moving (FEED_CONT > 0, FEED_CONT_AUTO)
+  const bool moving = catch_up && sync_->feed_cont_wanted() > 0.0;
+  if (moving && stage_ && transformed_) {
+    return event_error(kNotSupportedId,
+                       "not supported: #SYNC IN FEED_CONT > 0 or FEED_CONT_AUTO under #TRAFO ON "
+                       "(the catch-up is a TCP motion whose joint dynamics are derived for a "
+                       "meeting at rest)",
+                       e);
+  }
   axes::Result r = axes::Result::ok;
   if (stage_ && transformed_) {  // --- trafo
     trafo_sync_motion(catch_up, std::span(start.data(), n), std::span(target.data(), n), r);
   } else {
-    r = catch_up
-            ? sync_->start_catch_up(std::span(start.data(), n), std::span(target.data(), n), 0.0)
-            : sync_->start_departure(std::span(start.data(), n), std::span(target.data(), n));
+    const double f =
+        moving ? sync_entry_velocity(std::span(start.data(), n), std::span(target.data(), n))
+               : 0.0;  // --- sync-feed
+    r = catch_up ? sync_->start_catch_up(std::span(start.data(), n), std::span(target.data(), n), f)
+                 : sync_->start_departure(std::span(start.data(), n), std::span(target.data(), n));
   }
   if (r == axes::Result::ok) {
     AxisVec hold{};  // the path's own coordinates: PCS1 at travel 0 (catch-up), MCS (departure)
     for (std::size_t i = 0; i < n; ++i)
       hold[i] = target[i];
     sync_hold_ = hold;
+    // --- sync-feed: a moving catch-up shorter than a cycle hands over in this one
+    if (const auto lag = sync_->handover_lag()) return sync_hand_over(*lag, e);
     return EventOutcome::blocking;
   }
   try {

@@ -221,16 +221,6 @@ TEST_CASE("NC9052: the belt carries the tool out of the workspace in the conveyi
   CHECK(r.x.back()[0] <= 4000.0);
 }
 
-TEST_CASE("FEED_CONT > 0 on #SYNC IN and FEED_CONT_AUTO are not supported (NC6001)") {
-  ipo::test::FakePort port(300.0);
-  port.latch_at_ = 1;
-  Tracked r =
-      track("%t\nN20 #SYNC IN [CONV_VEL=18000 FEED_CONT=600]\nN30 G01 X10\nN40 M30\n", &port);
-  REQUIRE(r.error);
-  CHECK(r.error->id == "NC6001");
-  CHECK(r.error->message.find("FEED_CONT") != std::string::npos);
-}
-
 TEST_CASE("NC9054: #SYNC IN whose measured value never comes ends at ncsim's wait limit") {
   ipo::test::FakePort port(300.0);  // never latches
   const core::SourceFile file("t.nc", kSync);

@@ -2,9 +2,11 @@
 
 #include "ipo/conveyor_sync.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <stdexcept>
 
 namespace ncsim::ipo {
@@ -45,6 +47,9 @@ std::optional<SyncError> ConveyorSync::sync_in(const interp::SyncIn& command) {
     if (auto e = check_conv_vel(l, share_[i], command.conv_vel, axes_[i].name)) return e;
   }
   conv_vel_ = command.conv_vel;
+  // --- sync-feed: FEED_CONT (mm/s here) or FEED_CONT_AUTO, reduced at the catch-up
+  feed_cont_ = command.feed_cont_auto ? std::numeric_limits<double>::infinity()
+                                      : std::max(0.0, command.feed_cont.value_or(0.0));
   phase_ = SyncPhase::waiting;
   synchronised_ = false;
   waited_ = 0.0;
@@ -59,7 +64,10 @@ void ConveyorSync::sync_out(const interp::SyncOut&) noexcept {
 std::optional<SyncError> ConveyorSync::step(double t) noexcept {
   if (port_ == nullptr) return std::nullopt;
   // A profile that ended in the previous cycle hands over now (its last setpoint was exact).
-  if (driving() && t_catch_ >= catch_up_.duration()) {
+  // --- sync-feed: one meeting the target moving hands over in the cycle it meets it: the
+  // path starts at the meeting inside this cycle (Channel::on_sync_motion, docs/conveyor.md S-1).
+  if (handover_due()) synchronised_ = true;
+  if (driving() && (t_catch_ >= catch_up_.duration() || handover_due())) {
     phase_ = phase_ == SyncPhase::catching_up ? SyncPhase::tracking : SyncPhase::off;
   }
   port_->step(t);
@@ -117,21 +125,34 @@ axes::Result ConveyorSync::start_catch_up(std::span<const axes::MotionState> sta
     return axes::Result::error_invalid_input;
   std::array<CatchUpAxis, planner::kMaxAxes> in{};
   // FEED_CONT's direction: the catch-up's own, start to target over X/Y/Z (docs/conveyor.md).
-  double norm2 = 0.0;
+  const planner::AxisVec u = catch_up_direction(start, target);
   for (std::size_t i = 0; i < n_; ++i) {
     in[i].start = start[i];
     in[i].target = target[i] + share_[i] * s_;
     in[i].conveying = share_[i];
     in[i].dynamics = dynamics.empty() ? axes_[i].dynamics : dynamics[i];  // --- trafo
-    if (axes_[i].xyz >= 0) norm2 += std::pow(in[i].target - start[i].p, 2);
   }
-  if (feed_cont > 0.0 && norm2 > 0.0) {
-    const double k = feed_cont / std::sqrt(norm2);
+  auto plan = [&](double f) {
     for (std::size_t i = 0; i < n_; ++i)
-      if (axes_[i].xyz >= 0) in[i].v_relative = k * (in[i].target - start[i].p);
+      in[i].v_relative = f * u[i];
+    return catch_up_.plan(std::span(in.data(), n_), s_, v_);
+  };
+  if (!(feed_cont > 0.0) || u == planner::AxisVec{}) feed_cont = 0.0;
+  axes::Result r = plan(feed_cont);
+  // --- sync-feed: "reduced as required" (004 l.284): no catch-up meets the target at
+  // feed_cont (an axis would need more than its V): the largest relative velocity that plans.
+  if (r != axes::Result::ok && feed_cont > 0.0 && plan(0.0) == axes::Result::ok) {
+    double lo = 0.0;
+    double hi = feed_cont;
+    for (int iter = 0; iter < 40 && hi - lo > 1e-9 * std::max(1.0, hi); ++iter) {
+      const double mid = 0.5 * (lo + hi);
+      (plan(mid) == axes::Result::ok ? lo : hi) = mid;
+    }
+    feed_cont = lo;
+    r = plan(feed_cont);
   }
-  const axes::Result r = catch_up_.plan(std::span(in.data(), n_), s_, v_);
   if (r != axes::Result::ok) return r;
+  v_relative_ = feed_cont;
   phase_ = SyncPhase::catching_up;
   t_catch_ = 0.0;
   for (std::size_t i = 0; i < n_; ++i)
@@ -154,11 +175,33 @@ axes::Result ConveyorSync::start_departure(std::span<const axes::MotionState> st
   }
   const axes::Result r = catch_up_.plan(std::span(in.data(), n_), 0.0, 0.0);
   if (r != axes::Result::ok) return r;
+  v_relative_ = 0.0;  // --- sync-feed: the departure ends at rest (S-2)
   phase_ = SyncPhase::departing;
   t_catch_ = 0.0;
   for (std::size_t i = 0; i < n_; ++i)
     catch_sp_[i] = catch_up_.setpoint(i, 0.0, 0.0, 0.0, 0.0);
   return r;
+}
+
+planner::AxisVec ConveyorSync::catch_up_direction(std::span<const axes::MotionState> start,
+                                                  std::span<const double> target) const noexcept {
+  planner::AxisVec u{};
+  double norm2 = 0.0;
+  for (std::size_t i = 0; i < n_ && i < start.size() && i < target.size(); ++i) {
+    if (axes_[i].xyz < 0) continue;
+    u[i] = target[i] + share_[i] * s_ - start[i].p;
+    norm2 += u[i] * u[i];
+  }
+  if (!(norm2 > 0.0)) return planner::AxisVec{};
+  const double k = 1.0 / std::sqrt(norm2);
+  for (double& c : u)
+    c *= k;
+  return u;
+}
+
+std::optional<double> ConveyorSync::handover_lag() const noexcept {
+  if (!handover_due()) return std::nullopt;
+  return std::clamp(catch_up_.duration() - t_catch_, 0.0, t_cycle_);
 }
 
 axes::Setpoint ConveyorSync::catch_up_setpoint(std::size_t i) const noexcept {

@@ -85,13 +85,32 @@ class ConveyorSync {
 
   /// Starts the catch-up at the end of the cycle just done: `start` the command state of every
   /// interpolated axis (MCS), `target` the programmed point in MCS at belt travel 0 (T0
-  /// applied: the ProgramSource's Move end), `feed_cont` the relative velocity [mm/s].
+  /// applied: the ProgramSource's Move end), `feed_cont` the relative velocity [mm/s] along
+  /// catch_up_direction(), --- sync-feed: reduced to the largest one the axes can meet the
+  /// target with ("reduced as required", 004 l.284) when no plan exists for it.
   /// --- trafo: `dynamics` (one per axis, or empty: the axes' own) replaces the axes' PTP
   /// dynamics (under #TRAFO ON the TCP's, ipo/trafo_sync); a catch-up not stepped yet may be
   /// started again (re-planned with other dynamics).
   axes::Result start_catch_up(std::span<const axes::MotionState> start,
                               std::span<const double> target, double feed_cont,
                               std::span<const axes::Dynamics> dynamics = {}) noexcept;
+  // --- sync-feed: FEED_CONT > 0 / FEED_CONT_AUTO (docs/conveyor.md S-1, ipo/sync_entry.hpp)
+  /// The relative velocity #SYNC IN asked for [mm/s]: FEED_CONT, +inf for FEED_CONT_AUTO, 0
+  /// without either.
+  double feed_cont_wanted() const noexcept { return feed_cont_; }
+  /// FEED_CONT's direction for a catch-up from `start` to `target` (start_catch_up's
+  /// arguments): the unit vector over the X/Y/Z axes from the start to where the target is now
+  /// (0 on the other axes; all 0 when they coincide).
+  planner::AxisVec catch_up_direction(std::span<const axes::MotionState> start,
+                                      std::span<const double> target) const noexcept;
+  /// The relative velocity the running catch-up meets its target with [mm/s] (start_catch_up's
+  /// `feed_cont` as reduced there).
+  double v_relative() const noexcept { return v_relative_; }
+  /// A catch-up that meets its target moving (v_relative() > 0) hands over to the path inside
+  /// the next cycle: the time from that cycle's start to the meeting [s], in [0, T); none
+  /// otherwise (a catch-up at rest relative to the target rides along until the cycle after).
+  std::optional<double> handover_lag() const noexcept;
+  // --- sync-feed: end
   /// The setpoint of axis i in the cycle step() prepared (catching_up and departing only).
   axes::Setpoint catch_up_setpoint(std::size_t i) const noexcept;
   const CatchUp& catch_up() const noexcept { return catch_up_; }
@@ -157,6 +176,13 @@ class ConveyorSync {
   double t_catch_ = 0.0;  ///< time since the catch-up started [s] (the prepared cycle's end)
   std::array<axes::Setpoint, planner::kMaxAxes> catch_sp_{};
   std::optional<WorkspaceHold> hold_;  ///< --- workspace
+  double feed_cont_ = 0.0;             ///< --- sync-feed: feed_cont_wanted() [mm/s]
+  double v_relative_ = 0.0;            ///< --- sync-feed: v_relative() [mm/s]
+  /// --- sync-feed: the moving hand-over is due in the cycle being prepared.
+  bool handover_due() const noexcept {
+    return phase_ == SyncPhase::catching_up && v_relative_ > 0.0 &&
+           t_catch_ + t_cycle_ > catch_up_.duration();
+  }
 };
 
 }  // namespace ncsim::ipo

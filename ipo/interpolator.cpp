@@ -355,7 +355,8 @@ Status PathInterpolator::step() noexcept {
         cap_ != plan_cap_)  // --- workspace: a cap acts at once, as a stop does
       replan(f, st.s, st.v, st.a);
   }
-  double rest = t_;
+  double rest = t_ - start_lag_;  // --- sync-feed: a start after a moving hand-over
+  start_lag_ = 0.0;
   double distance = 0.0;
   bool held = false;
   for (;;) {
@@ -434,6 +435,24 @@ Status PathInterpolator::step() noexcept {
   c.t = static_cast<double>(c.index) * t_;
   if (sink_) sink_->on_cycle(c);
   return Status::running;
+}
+
+// --- sync-feed: a path that starts moving (docs/conveyor.md S-1)
+
+bool PathInterpolator::prefill() noexcept {
+  if (failed_ || active_) return !failed_;
+  if (!fill()) {
+    failed_ = true;
+    if (message_.empty()) message_ = "ipo: the program source failed";
+    return false;
+  }
+  return true;
+}
+
+double PathInterpolator::start_moving(double v, double lag) noexcept {
+  v_arrive_ = window_.start_at(v);
+  start_lag_ = std::clamp(lag, 0.0, t_);
+  return v_arrive_;
 }
 
 // --- operator: block starts (docs/ipo.md "Block starts")

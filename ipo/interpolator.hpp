@@ -264,6 +264,19 @@ class PathInterpolator {
   /// The entry the path is on (null: none yet); valid until the next step().
   const planner::PlannedSegment* active_entry() const noexcept { return active_ ? &cur_ : nullptr; }
   // --- workspace: end
+  // --- sync-feed: a path that starts moving after a catch-up (issue 14, ipo/sync_entry.hpp)
+  /// While the path holds at a ChannelWait: pulls and prepares what follows the wait into the
+  /// look-ahead window (as the path's own start would), so that its first segment is known.
+  /// False when the source failed (the next step() reports it).
+  bool prefill() noexcept;
+  /// The first segment the path will run after the hold (null: none known: a dwell, a wait or
+  /// the end follows) and the highest velocity it may be entered with [mm/s].
+  const planner::PreparedSegment* next_segment() const noexcept { return window_.front(); }
+  double next_entry_cap() const noexcept { return window_.front_entry_cap(); }
+  /// The path's next segment starts at `v` [mm/s] (at most next_entry_cap()), and `lag` [s]
+  /// (in [0, T)) after the start of the next cycle. Returns the velocity set.
+  double start_moving(double v, double lag) noexcept;
+  // --- sync-feed: end
 
  private:
   struct PendingDwell {
@@ -357,6 +370,7 @@ class PathInterpolator {
   // --- workspace
   double cap_ = std::numeric_limits<double>::infinity();       ///< velocity cap set [mm/s]
   double plan_cap_ = std::numeric_limits<double>::infinity();  ///< cap plan_ was made for
+  double start_lag_ = 0.0;  ///< --- sync-feed: start_moving()'s lag, used by the next motion [s]
   // --- operator: block starts
   /// Reports the Moves up to ring token `token` (low 32 bits) not reported yet.
   void report_starts_to(std::uint32_t token) noexcept;

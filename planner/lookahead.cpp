@@ -166,6 +166,11 @@ double LookAhead::feasible_exit(double v_entry, double v_upper, const Slot& s) c
   return lo;
 }
 
+double LookAhead::start_at(double v) noexcept {  // --- sync-feed
+  v_committed_ = std::clamp(v, 0.0, front_entry_cap());
+  return v_committed_;
+}
+
 PlannedSegment LookAhead::pop() {
   if (empty()) throw std::logic_error("planner: pop from an empty look-ahead window");
   Slot& s = at(0);

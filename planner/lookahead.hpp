@@ -87,6 +87,17 @@ class LookAhead {
   PlannedSegment pop();
   /// Velocity at the end of the last popped segment [mm/s] (entry of the next).
   double v_committed() const noexcept { return v_committed_; }
+  // --- sync-feed: a path that starts moving (the hand-over from the catch-up, issue 14)
+  /// The oldest segment not popped yet (null: the window is empty).
+  const PreparedSegment* front() const noexcept {
+    return empty() ? nullptr : &slots_[head_].segment;
+  }
+  /// The highest velocity the oldest segment may be entered with [mm/s]: its cap and what its
+  /// braking within the window allows (the backward pass's entry cap; 0 when empty).
+  double front_entry_cap() const noexcept { return empty() ? 0.0 : slots_[head_].entry_cap; }
+  /// The next pop() starts at `v` [mm/s] instead of v_committed(): clamped to [0,
+  /// front_entry_cap()], so the plan stays feasible. Returns the velocity set.
+  double start_at(double v) noexcept;
 
  private:
   struct Slot {
