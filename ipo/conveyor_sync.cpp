@@ -58,6 +58,8 @@ void ConveyorSync::sync_out(const interp::SyncOut&) noexcept {
 
 std::optional<SyncError> ConveyorSync::step(double t) noexcept {
   if (port_ == nullptr) return std::nullopt;
+  if (t <= stepped_t_) return std::nullopt;  // --- workspace: once per cycle (channel_sync_error)
+  stepped_t_ = t;
   // A profile that ended in the previous cycle hands over now (its last setpoint was exact).
   if (driving() && t_catch_ >= catch_up_.duration()) {
     phase_ = phase_ == SyncPhase::catching_up ? SyncPhase::tracking : SyncPhase::off;

@@ -80,7 +80,7 @@ class ConveyorSync {
 
   /// Once per cycle, before the path: steps the Port to `t` [s] (end of the cycle), takes a
   /// latch while waiting, checks 50653 while synchronised and passes the Port's error on with its
-  /// own id.
+  /// own id. A second call for the same (or an earlier) t does nothing.
   std::optional<SyncError> step(double t) noexcept;
 
   /// Starts the catch-up at the end of the cycle just done: `start` the command state of every
@@ -157,6 +157,7 @@ class ConveyorSync {
   double t_catch_ = 0.0;  ///< time since the catch-up started [s] (the prepared cycle's end)
   std::array<axes::Setpoint, planner::kMaxAxes> catch_sp_{};
   std::optional<WorkspaceHold> hold_;  ///< --- workspace
+  double stepped_t_ = -1.0;            ///< --- workspace: the last step()'s t [s]
 };
 
 }  // namespace ncsim::ipo

@@ -23,10 +23,11 @@ namespace fs = std::filesystem;
 namespace {
 
 // The machines bundled under machines/ (laser_queue: report-lib, laser_portal_encoder: line,
-// delta_picker_belt: trafo-conveyor, laser_portal_simple: workspace).
-constexpr std::array<std::string_view, 8> kMachines = {
-    "laser_portal", "delta_picker",         "static_saw",        "portal_3x",
-    "laser_queue",  "laser_portal_encoder", "delta_picker_belt", "laser_portal_simple"};
+// delta_picker_belt: trafo-conveyor, laser_portal_simple and laser_portal_workspace: workspace).
+constexpr std::array<std::string_view, 9> kMachines = {
+    "laser_portal",      "delta_picker",        "static_saw",
+    "portal_3x",         "laser_queue",         "laser_portal_encoder",
+    "delta_picker_belt", "laser_portal_simple", "laser_portal_workspace"};
 
 // The seed's listings (TF5264, seed 004) and the reference's section 10 example: these must
 // never silently disappear from programs/.
