@@ -655,6 +655,11 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   if (failed) {
     error_text = failure_text(in, interp, src, channel);
     csv.text("# error: " + first_line(error_text) + "\n");
+    // --- workspace: an error while synchronised: the motion after it (004 §2.3)
+    if (const std::string note = channel.after_error_note(); !note.empty()) {
+      csv.text("# after the error: " + note + "\n");
+      error_text += "ncsim: note: " + note + "\n";
+    }
   } else if (const auto& stop = channel.scenario_stop()) {
     err << "ncsim: run stopped by the scenario ('" << in.scenario->file
         << "'): " << scenario::to_string(*stop) << " at t=" << num(channel.cycle().t) << " s\n";

@@ -81,6 +81,11 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
   if (config.conveyor) {
     sync_.emplace(*config.conveyor, config.sync_axes, t);
     static_unit_ = config.conveyor->x_virtual;  // --- static-saw
+    // --- workspace: the stop after an error while synchronised (ipo/sync_error.hpp)
+    std::vector<AfterErrorAxis> after;
+    for (std::size_t i = 0; i < config.axes.size(); ++i)
+      after.push_back(after_error_axis(config.path.axes[i], config.axes[i].monitor.soft_limits));
+    after_.configure(after, t);
   }
 }
 
@@ -227,6 +232,7 @@ bool Channel::exact_stop(const Cycle& c) noexcept {
 // --- operator: block starts and scenario actions (docs/scenario.md "When events fire")
 
 void Channel::block_started(std::uint32_t line) noexcept {
+  if (sync_error_) return;  // --- workspace: the program is aborted (its blocks only brake)
   player_->block_started(line);
   for (const scenario::Action& a : player_->fire_lines()) {
     if (failed_) break;
@@ -291,6 +297,15 @@ bool Channel::play_cycle(Status& status) noexcept {
 
 Status Channel::step() noexcept {
   tech_.clear();  // --- indp: the technology functions of this cycle
+  // --- workspace: after an error while synchronised the machine moves on (004 §2.3).
+  if (sync_error_ && !error_) return sync_error_cycle(true);
+  const std::uint64_t before = ipo_.cycle().index;
+  const Status s = step_program();
+  if (s != Status::error || !sync_error_begin()) return s;
+  return sync_error_cycle(ipo_.cycle().index == before);
+}
+
+Status Channel::step_program() noexcept {
   if (error_) return Status::error;
   if (ended_) return *ended_;  // the player sees each cycle once
   if (player_ != nullptr) {
@@ -319,6 +334,7 @@ Status Channel::step() noexcept {
     return s;
   }
   const Cycle& c = ipo_.cycle();
+  driven_ = 0;                                                                  // --- workspace
   if (failed_) return stop(failed_->first, std::move(failed_->second), c, -1);  // --- operator
   if (player_ != nullptr && c.held && !player_->more_to_come())  // --- operator: no endless hold
     return stop(kHeldForeverId,
@@ -366,8 +382,10 @@ Status Channel::step() noexcept {
     }
   }
   if (!indp_cycle(c)) return Status::error;  // --- indp
-  for (std::size_t i = 0; i < axes_.size(); ++i)
+  for (std::size_t i = 0; i < axes_.size(); ++i) {
+    driven_ = i + 1;  // --- workspace: a monitor's alarm comes after the axis's control step
     if (!drive_axis(i, c)) return Status::error;
+  }
   if (in_exact_stop_ && !exact_stop(c)) return Status::error;
   if (sink_) sink_->on_cycle(cycle());  // --- indp: with the INDP axes' setpoints
   return Status::running;

@@ -71,6 +71,7 @@
 #include "ipo/interpolator.hpp"
 #include "ipo/joint_stage.hpp"
 #include "ipo/sync_entry.hpp"  // --- sync-feed
+#include "ipo/sync_error.hpp"  // --- workspace
 #include "machines/machine.hpp"
 #include "scenario/player.hpp"
 
@@ -214,6 +215,11 @@ class Channel {
   /// The technology functions (M/H/S/T/D) the channel output in the last step(), in program
   /// order (`run` writes them as CSV comments; docs/ipo.md "INDP axes and technology functions").
   const std::vector<TechOutput>& tech_outputs() const noexcept { return tech_; }
+  // --- workspace: an error while synchronised keeps the synchronisation (seed 004 §2.3,
+  // ipo/sync_error.hpp, ipo/channel_sync_error.cpp, docs/conveyor.md "Errors while
+  // synchronised"): the run goes on until the machine stands, then ends with that error.
+  /// What the machine did after such an error (empty: none): the following, the stop, why.
+  std::string after_error_note() const;
 
  private:
   /// What executing a channel event gave (ipo/channel_events.cpp).
@@ -310,6 +316,24 @@ class Channel {
   std::optional<double> operator_override_;  ///< the override before the static unit took it
   /// --- workspace: gives the interpolator the hold's path velocity cap (channel_workspace.cpp).
   void sync_workspace_cap(const Cycle& c) noexcept;
+  // --- workspace: after an error while synchronised (channel_sync_error.cpp)
+  /// One cycle of the program (the channel loop before an error kept synchronisation).
+  Status step_program() noexcept;
+  /// The error just raised keeps the synchronisation: it is held back (sync_error_), the
+  /// path brakes by feed hold; false: the run ends with it as always.
+  bool sync_error_begin() noexcept;
+  /// One cycle after the error: the path brakes, the axes follow the belt or brake before
+  /// their soft limits. `fresh`: a new cycle (else the error's own cycle is completed).
+  Status sync_error_cycle(bool fresh) noexcept;
+  std::optional<RunTimeError> sync_error_;  ///< the error held back while the machine moves
+  SyncErrorStop after_;                     ///< the axes' stop after it
+  Cycle after_cycle_;                       ///< the cycle shown while after the error
+  bool after_begun_ = false;                ///< an error kept synchronisation (once a run)
+  bool after_path_ended_ = false;           ///< the interpolator gave its last cycle
+  double after_end_t_ = 0.0;                ///< [s] the machine stood
+  std::string after_passed_;                ///< a soft limit passed after all (the note says it)
+  std::size_t driven_ = 0;                  ///< axes driven in the cycle being computed (step 3)
+  // --- workspace: end
   // --- operator: block starts and the actions of scenario events
   /// Passes the interpolator's block starts to the channel's player.
   class BlockRelay final : public BlockObserver {

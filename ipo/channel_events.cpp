@@ -72,6 +72,7 @@ bool Channel::run_events(std::uint32_t up_to) noexcept {
 }
 
 bool Channel::on_wait(const ChannelWait& wait) noexcept {
+  if (sync_error_) return false;  // --- workspace: after the error nothing more is executed
   wait_tag_ = wait.tag;
   wait_interruptible_ = wait.interruptible;                     // --- sync-feed
   return !blocked_ && run_events(wait.tag) && indp_syn_done();  // --- indp: INDP_SYN axes

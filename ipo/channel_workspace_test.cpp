@@ -198,7 +198,7 @@ Slowed slowed(double tolerance) {
       [&] {
         if (ch.cycle().line == 4) r.min_x = std::min(r.min_x, ch.axes().command[0]);
       },
-      60'000);
+      150'000);  // after NC9080 the tool follows the belt to X's soft limit (004 §2.3)
   r.error = ch.run_time_error();
   return r;
 }

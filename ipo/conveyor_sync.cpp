@@ -63,6 +63,8 @@ void ConveyorSync::sync_out(const interp::SyncOut&) noexcept {
 
 std::optional<SyncError> ConveyorSync::step(double t) noexcept {
   if (port_ == nullptr) return std::nullopt;
+  if (t <= stepped_t_) return std::nullopt;  // --- workspace: once per cycle (channel_sync_error)
+  stepped_t_ = t;
   // A profile that ended in the previous cycle hands over now (its last setpoint was exact).
   // --- sync-feed: one meeting the target moving hands over in the cycle it meets it: the
   // path starts at the meeting inside this cycle (Channel::on_sync_motion, docs/conveyor.md S-1).

@@ -80,7 +80,7 @@ class ConveyorSync {
 
   /// Once per cycle, before the path: steps the Port to `t` [s] (end of the cycle), takes a
   /// latch while waiting, checks 50653 while synchronised and passes the Port's error on with its
-  /// own id.
+  /// own id. A second call for the same (or an earlier) t does nothing.
   std::optional<SyncError> step(double t) noexcept;
 
   /// Starts the catch-up at the end of the cycle just done: `start` the command state of every
@@ -183,6 +183,7 @@ class ConveyorSync {
     return phase_ == SyncPhase::catching_up && v_relative_ > 0.0 &&
            t_catch_ + t_cycle_ > catch_up_.duration();
   }
+  double stepped_t_ = -1.0;  ///< --- workspace: the last step()'s t [s]
 };
 
 }  // namespace ncsim::ipo

@@ -10,3 +10,6 @@ add_test(NAME cli_random_scenarios
 # --- line: time per workpiece, synchro_lag, sweep, tune-delay (docs/conveyor.md)
 add_test(NAME cli_line_test
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/line_test.sh $<TARGET_FILE:ncsim>)
+# --- workspace: an error while synchronised keeps the synchronisation (docs/conveyor.md)
+add_test(NAME cli_sync_error_test
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/sync_error_test.sh $<TARGET_FILE:ncsim>)

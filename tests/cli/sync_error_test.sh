@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# sync_error_test.sh NCSIM: an error while synchronised (seed 004 §2.3; docs/conveyor.md
+# "Errors while synchronised"): the run ends with the original error (id, line, time), the CSV
+# holds the motion after it, marked by a closing comment naming the error and the stop.
+set -uo pipefail
+ncsim=$1
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+checks=0
+source "$(dirname "${BASH_SOURCE[0]}")/expect.sh"
+prog=$root/programs/error_while_synchronised/error_while_synchronised.nc
+
+expect "run: NC9052 at N70 with its time, exit 1, and the note of the motion after it" 1 '' \
+  'error_while_synchronised\.nc:14:1: error: run-time error at t=10\.895 s: X 3000\.29 mm beyond .*\[NC9052\]' \
+  -- run -o "$work/e.csv" "$prog"
+checks=$((checks + 1))
+if grep -q 'synchronisation kept after NC9052 .*followed the belt for 3\.294 s; axis X braked before its soft limit 4000 mm (P-AXIS-00178)' "$work/err"; then
+  echo "ok   run: stderr says what the machine did after the error"
+else
+  failures=$((failures + 1)); echo "FAIL run: no note on stderr"; cat "$work/err"
+fi
+# The CSV: rows after the error's time up to the stop, X never above 4000 mm, the last row
+# at rest, then the error, the note and the stop.
+checks=$((checks + 1))
+verdict=$(grep -v '^#' "$work/e.csv" | awk -F, 'NR > 1 {
+    if ($1 + 0 > 10.895) after++; if ($3 + 0 > xmax) xmax = $3 + 0; t = $1; x = $3
+  } END { printf "%d %.6f %s %.6f", after, xmax, t, x }')
+read -r after xmax t_last x_last <<<"$verdict"
+if ((after > 3000)) && awk -v m="$xmax" 'BEGIN { exit !(m <= 4000 && m > 3999) }' &&
+  [[ $t_last == 14.266 ]]; then
+  echo "ok   run: the CSV holds $after cycles after the error, X stops at $x_last mm (<= 4000)"
+else
+  failures=$((failures + 1)); echo "FAIL run: after=$after xmax=$xmax t_last=$t_last"
+fi
+checks=$((checks + 1))
+if tail -3 "$work/e.csv" | head -1 | grep -q '^# error: .*\[NC9052\]' &&
+  tail -2 "$work/e.csv" | head -1 | grep -q '^# after the error: synchronisation kept after NC9052 .*it stood at t=14\.266 s' &&
+  tail -1 "$work/e.csv" | grep -q '^# stop: error'; then
+  echo "ok   run: the CSV ends with the error, what followed it, and the stop"
+else
+  failures=$((failures + 1)); echo "FAIL run: closing comments"; tail -3 "$work/e.csv"
+fi
+expect "time: the run stops after the motion that follows the error" 1 \
+  'stopped after 14\.266 s' '\[NC9052\]' -- time "$prog"
+
+echo "sync_error: $((checks - failures)) passed, $failures failed"
+((failures == 0))
