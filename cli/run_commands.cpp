@@ -192,9 +192,31 @@ std::vector<std::string> axis_units(const machines::Machine& m) {
   return out;
 }
 
+// --- planner: where a block is, in `time --blocks` and the audit's violations: its line in
+// the main program, `file:line` in a subroutine file (docs/ipo.md "Blocks of subroutine files").
+std::string block_where(const interp::Interpreter& interp, std::uint16_t file, std::uint32_t line) {
+  if (file == 0) return std::to_string(line);
+  return interp.file_name(file) + ':' + std::to_string(line);
+}
+
+// A run-time position as a diagnostic in its own file (the main program or a subroutine
+// file), echoing the block's text.
+std::string positioned(const interp::Interpreter& interp, const ipo::RunTimeError& e,
+                       core::Severity severity, const std::string& message) {
+  const core::SourceFile& file = interp.source_file(e.file);
+  core::Diagnostic d;
+  d.severity = severity;
+  d.file = file.name();
+  d.loc = {e.line, 1};
+  d.id = e.id;
+  d.message = message;
+  return core::format(d, file);
+}
+
 // The audit verdict, one line per axis, then the documented steps and every violation listed.
 void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names,
-                 const std::vector<std::string>& units, std::ostream& os) {
+                 const std::vector<std::string>& units, const interp::Interpreter& interp,
+                 std::ostream& os) {
   for (std::size_t i = 0; i < v.axes.size(); ++i) {
     const ipo::AxisAudit& a = v.axes[i];
     const std::string& u = i < units.size() ? units[i] : std::string("mm");
@@ -222,8 +244,8 @@ void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names,
      << " documented VELOJUMP / TRANSVELMIN / C1 steps within their formulas, " << v.cycles
      << " cycles\n";
   for (const ipo::Violation& x : v.violations) {
-    os << "audit: violation t=" << num(x.t) << " s line " << x.line << " axis "
-       << (x.axis < names.size() ? names[x.axis] : std::to_string(x.axis)) << ' '
+    os << "audit: violation t=" << num(x.t) << " s line " << block_where(interp, x.file, x.line)
+       << " axis " << (x.axis < names.size() ? names[x.axis] : std::to_string(x.axis)) << ' '
        << ipo::quantity_name(x.quantity) << " (" << ipo::method_name(x.method) << ") "
        << num(x.value) << " > " << num(x.limit) << '\n';
   }
@@ -255,29 +277,18 @@ class Tee final : public ipo::Sink {
 // or the program error that ended the source.
 std::string failure_text(const Loaded& in, const interp::Interpreter& interp,
                          const ipo::ProgramSource& src, const ipo::Channel& ch) {
-  if (const auto& e = ch.run_time_error()) {
-    core::Diagnostic d;
-    d.file = in.file.name();
-    d.loc = {e->line, 1};
-    d.id = e->id;
-    d.message = "run-time error at t=" + num(e->t) + " s: " + e->message;
-    return core::format(d, in.file);
-  }
+  if (const auto& e = ch.run_time_error())
+    return positioned(interp, *e, core::Severity::error,
+                      "run-time error at t=" + num(e->t) + " s: " + e->message);
   return diagnostic_text(in, interp, src, ch.message());
 }
 
 // --- trafo: the channel's warning (NC6210: a joint beyond its dynamics while synchronised
 // under #TRAFO ON), positioned like a run-time error; the run goes on.
-std::string warning_text(const Loaded& in, const ipo::Channel& ch) {
+std::string warning_text(const interp::Interpreter& interp, const ipo::Channel& ch) {
   const auto& w = ch.trafo_warning();
   if (!w) return {};
-  core::Diagnostic d;
-  d.severity = core::Severity::warning;
-  d.file = in.file.name();
-  d.loc = {w->line, 1};
-  d.id = w->id;
-  d.message = "at t=" + num(w->t) + " s: " + w->message;
-  return core::format(d, in.file);
+  return positioned(interp, *w, core::Severity::warning, "at t=" + num(w->t) + " s: " + w->message);
 }
 
 void json_string(std::ostream& os, const std::string& s) {
@@ -333,16 +344,20 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
   const auto on_block = [&](const ipo::BlockTime& b) {
     if (!options.blocks) return;
     if (options.json) {
-      out << (first_block ? "" : ",") << "{\"line\":" << b.line << ",\"time_s\":" << num(b.time)
-          << ",\"distance_mm\":" << num(b.distance)
+      out << (first_block ? "" : ",") << "{\"line\":" << b.line;
+      if (b.file != 0) {  // --- planner: a block of a subroutine file
+        out << ",\"file\":";
+        json_string(out, interp.file_name(b.file));
+      }
+      out << ",\"time_s\":" << num(b.time) << ",\"distance_mm\":" << num(b.distance)
           << ",\"feed_programmed_mm_min\":" << num(b.feed_programmed * 60.0)
           << ",\"feed_reached_mm_min\":" << num(b.feed_reached * 60.0)
           << ",\"lost_s\":" << num(b.lost) << ",\"split_s\":";
       json_split(out, b.split);
       out << '}';
     } else {
-      out << b.line << ' ' << num(b.time) << ' ' << num(b.distance) << ' '
-          << num(b.feed_programmed * 60.0) << ' ' << num(b.feed_reached * 60.0) << ' '
+      out << block_where(interp, b.file, b.line) << ' ' << num(b.time) << ' ' << num(b.distance)
+          << ' ' << num(b.feed_programmed * 60.0) << ' ' << num(b.feed_reached * 60.0) << ' '
           << num(b.split.rapid) << ' ' << num(b.split.feed) << ' ' << num(b.split.dwell) << ' '
           << num(b.split.exact_stop) << ' ' << num(b.split.starved) << ' ' << num(b.split.held)
           << ' ' << num(b.lost) << '\n';
@@ -429,14 +444,15 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
     err << "ncsim: error: cannot read back the workpiece rows' temporary file\n";
     return kExitUsage;
   }
-  err << warning_text(in, channel);  // --- trafo
+  err << warning_text(interp, channel);  // --- trafo
   if (failed) {
     err << error_text;
     return kExitProgramErrors;
   }
   if (audit) {
     const ipo::Verdict& v = audit->verdict();
-    print_audit(v, axis_names(in.machine), axis_units(in.machine), options.json ? err : out);
+    print_audit(v, axis_names(in.machine), axis_units(in.machine), interp,
+                options.json ? err : out);
     if (!v.ok()) return kExitAudit;
   }
   return kExitOk;
@@ -698,13 +714,13 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
     }
     (options.csv ? err : out) << "report: " << options.report << '\n';
   }
-  err << warning_text(in, channel);  // --- trafo
+  err << warning_text(interp, channel);  // --- trafo
   if (!error_text.empty()) {
     err << error_text;
     return kExitProgramErrors;
   }
   if (audit) {
-    print_audit(audit->verdict(), names, axis_units(in.machine), err);
+    print_audit(audit->verdict(), names, axis_units(in.machine), interp, err);
     if (!audit->verdict().ok()) return kExitAudit;
   }
   return kExitOk;
@@ -785,7 +801,7 @@ LineOutcome run_line(const ProgramOptions& program, std::optional<std::uint64_t>
     o.audit_violations = v.violation_count;
     if (!v.violations.empty()) {
       const ipo::Violation& x = v.violations.front();
-      o.error = "audit: t=" + num(x.t) + " s line " + std::to_string(x.line) + " " +
+      o.error = "audit: t=" + num(x.t) + " s line " + block_where(interp, x.file, x.line) + " " +
                 std::string(ipo::quantity_name(x.quantity)) + " " + num(x.value) + " > " +
                 num(x.limit);
     }

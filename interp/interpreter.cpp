@@ -835,6 +835,10 @@ const std::string& Interpreter::file_name(std::uint16_t file) const {
   return impl_->files.at(file)->file->name();
 }
 
+const core::SourceFile& Interpreter::source_file(std::uint16_t file) const {
+  return *impl_->files.at(file)->file;
+}
+
 Interpreter::Footprint Interpreter::footprint() const {
   const Impl& s = *impl_;
   std::size_t indexed = 0;

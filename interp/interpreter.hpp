@@ -105,6 +105,9 @@ class Interpreter {
   std::map<std::string, double> take_ve_writes();
   /// File name of Command::file (0: the main program).
   const std::string& file_name(std::uint16_t file) const;
+  /// The source of Command::file (0: the main program), for echoing a block's text in a
+  /// run-time error. Valid as long as the interpreter.
+  const core::SourceFile& source_file(std::uint16_t file) const;
 
   /// Sizes of the containers that must stay bounded (for tests).
   struct Footprint {

@@ -43,16 +43,17 @@ Audit::Audit(std::span<const planner::AxisLimits> axes, double t_cycle, const Ax
 }
 
 void Audit::violate(Quantity q, Method m, std::size_t axis, double t, std::uint32_t line,
-                    double value, double limit, bool joint) {
+                    std::uint16_t file, double value, double limit, bool joint) {
   ++verdict_.violation_count;
   if (verdict_.violations.size() < kMaxListed)
     verdict_.violations.push_back(
-        Violation{q, m, static_cast<std::uint8_t>(axis), t, line, value, limit, joint});
+        Violation{q, m, static_cast<std::uint8_t>(axis), t, line, value, limit, joint, file});
 }
 
 void Audit::check(Quantity q, Method m, std::size_t axis, const Cycle& c, double value,
                   double limit, bool joint) {
-  if (!(value <= limit * (1.0 + kRelative))) violate(q, m, axis, c.t, c.line, value, limit, joint);
+  if (!(value <= limit * (1.0 + kRelative)))
+    violate(q, m, axis, c.t, c.line, c.file, value, limit, joint);
 }
 
 void Audit::on_joint(const Joint& jt) {
@@ -83,7 +84,7 @@ void Audit::step_formulas(const Joint& jt) {
         verdict_.steps.push_back(
             Step{q, static_cast<std::uint8_t>(i), jt.t, jt.line, jt.v, dv, bound});
       if (!(dv <= bound * (1.0 + kRelative)))
-        violate(q, Method::formula, i, jt.t, jt.line, dv, bound);
+        violate(q, Method::formula, i, jt.t, jt.line, jt.file, dv, bound);
     }
     // C1 (P-CHAN-00009 semantics, docs/planner.md): |da_i| <= j_i T. At C0 the acceleration
     // step of a curved neighbour comes with the velocity step and has no rule of its own.
@@ -95,7 +96,7 @@ void Audit::step_formulas(const Joint& jt) {
         verdict_.steps.push_back(
             Step{Quantity::c1_step, static_cast<std::uint8_t>(i), jt.t, jt.line, jt.v, da, bound});
       if (!(da <= bound * (1.0 + kRelative)))
-        violate(Quantity::c1_step, Method::formula, i, jt.t, jt.line, da, bound);
+        violate(Quantity::c1_step, Method::formula, i, jt.t, jt.line, jt.file, da, bound);
     }
   }
 }
@@ -206,7 +207,8 @@ void Audit::on_cycle(const Cycle& c) {
       contour_ratio_ = d / allowed;
       verdict_.contour_tolerance = tol;
     }
-    if (!(d <= allowed)) violate(Quantity::contour, Method::geometry, 0, c.t, c.line, d, allowed);
+    if (!(d <= allowed))
+      violate(Quantity::contour, Method::geometry, 0, c.t, c.line, c.file, d, allowed);
   }
 }
 

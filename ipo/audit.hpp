@@ -82,9 +82,10 @@ struct Violation {
   std::uint8_t axis = 0;
   double t = 0.0;  ///< [s]
   std::uint32_t line = 0;
-  double value = 0.0;  ///< |value| measured
-  double limit = 0.0;  ///< what was allowed
-  bool joint = false;  ///< `axis` is a joint of the kinematic transform (on_joints())
+  double value = 0.0;      ///< |value| measured
+  double limit = 0.0;      ///< what was allowed
+  bool joint = false;      ///< `axis` is a joint of the kinematic transform (on_joints())
+  std::uint16_t file = 0;  ///< source file of `line` (interp::Command::file, 0: main program)
 };
 
 /// A documented step at a joint (the largest over the axes relative to its bound).
@@ -151,8 +152,8 @@ class Audit final : public Sink {
     double da3 = 0.0;             ///< acceleration steps in the j stencil [mm/s^2]
     bool velocity_only = false;   ///< a step without a formula is inside: v only
   };
-  void violate(Quantity q, Method m, std::size_t axis, double t, std::uint32_t line, double value,
-               double limit, bool joint = false);
+  void violate(Quantity q, Method m, std::size_t axis, double t, std::uint32_t line,
+               std::uint16_t file, double value, double limit, bool joint = false);
   void check(Quantity q, Method m, std::size_t axis, const Cycle& c, double value, double limit,
              bool joint = false);
   /// The closed-form and finite-difference checks of one axis or joint (one helper for both).

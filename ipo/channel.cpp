@@ -95,6 +95,7 @@ Status Channel::stop(const char* id, std::string message, const Cycle& c, int ax
     e.id = id;
     e.message = std::move(message);
     e.line = c.line;
+    e.file = c.file;
     e.t = c.t;
     e.axis = axis;
     error_ = std::move(e);

@@ -136,6 +136,7 @@ struct RunTimeError {
   std::string id;          ///< the manual's id (P-ERR-70082, 0x4550) or ncsim's (NC5501, NC6101)
   std::string message;     ///< what happened, with the value and the limit
   std::uint32_t line = 0;  ///< source line of the active block
+  std::uint16_t file = 0;  ///< source file of `line` (interp::Command::file, 0: main program)
   double t = 0.0;          ///< [s] end of the cycle that raised it
   int axis = -1;           ///< interpolated axis index
 };
@@ -339,7 +340,9 @@ class Channel {
   class BlockRelay final : public BlockObserver {
    public:
     explicit BlockRelay(Channel& channel) : channel_(channel) {}
-    void on_block_started(std::uint32_t line) noexcept override { channel_.block_started(line); }
+    void on_block_started(std::uint32_t line, std::uint16_t file) noexcept override {
+      channel_.block_started(file == 0 ? line : 0);  // --- planner: scenario lines are the main's
+    }
 
    private:
     Channel& channel_;

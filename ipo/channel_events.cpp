@@ -17,6 +17,7 @@ Channel::EventOutcome Channel::event_error(const char* id, std::string message,
                                            const ChannelEvent& e) noexcept {
   Cycle at = ipo_.cycle();
   at.line = e.line;
+  at.file = e.file;
   at.t = static_cast<double>(at.index) * ipo_.t_cycle();
   stop(id, std::move(message), at, -1);
   return EventOutcome::error;

@@ -93,6 +93,7 @@ void Channel::trafo_sync_check(const Cycle& c, const JointSetpoint& s) noexcept 
     w.id = kTrafoSyncOverrunId;
     w.message = text;
     w.line = c.line;
+    w.file = c.file;
     w.t = c.t;
     w.axis = static_cast<int>(o->joint);
     trafo_warning_ = std::move(w);

@@ -106,7 +106,7 @@ bool PathInterpolator::fill() noexcept {
                      std::to_string(d->seconds) + " s (line " + std::to_string(d->line) + ")";
           return false;
         }
-        dwell_ = PendingDwell{d->seconds, d->line, d->event_tag};
+        dwell_ = PendingDwell{d->seconds, d->line, d->event_tag, d->file};
         prep_.finish(ready_);  // the path stops before the dwell
         continue;
       }
@@ -183,6 +183,7 @@ void PathInterpolator::sample(double distance) noexcept {
   const planner::Move& prog = programmed(path.line_at(ps.s));
   c.activity = Activity::motion;
   c.line = prog.line;
+  c.file = prog.file;
   c.rapid = prog.rapid;
   c.jerk_limited = planner::jerk_limited(prog.slope);
   c.feed = cur_.segment.limits.v_programmed;
@@ -232,6 +233,7 @@ void PathInterpolator::report_joint(const planner::PlannedSegment& next, double 
   Joint jt;
   jt.t = t_joint;
   jt.line = prog_in.line;
+  jt.file = prog_in.file;
   jt.cls = cur_.segment.joint;
   jt.stop = cur_.segment.stop;
   jt.jerk_limited = planner::jerk_limited(prog_in.slope) && planner::jerk_limited(prog_out.slope);
@@ -269,6 +271,7 @@ void PathInterpolator::report_inner_joints(double s_from, double s_to) noexcept 
     Joint jt;
     jt.t = static_cast<double>(cycle_.index + 1) * t_;
     jt.line = prog_in.line;
+    jt.file = prog_in.file;
     jt.cls = planner::TransitionClass::c2;
     jt.stop = planner::StopReason::none;
     jt.jerk_limited = planner::jerk_limited(prog_in.slope) && planner::jerk_limited(prog_out.slope);
@@ -296,6 +299,7 @@ Status PathInterpolator::step() noexcept {
       c.t = static_cast<double>(c.index) * t_;
       c.activity = waiting ? wait_kind_ : Activity::starved;
       c.line = waiting ? wait_line_ : c.line;
+      c.file = waiting ? wait_file_ : c.file;
       c.path.v = c.path.a = c.path.j = 0.0;
       c.interval_jerk_limited = true;
       c.distance = 0.0;
@@ -318,9 +322,11 @@ Status PathInterpolator::step() noexcept {
       wait_left_ = cycles_for(dwell_->seconds);
       wait_kind_ = Activity::dwell;
       wait_line_ = dwell_->line;
+      wait_file_ = dwell_->file;
       // --- operator: a G04 starts (a 0 s dwell is the source's flush before a barrier, or
       // takes no cycle: not reported).
-      if (observer_ != nullptr && wait_left_ > 0) observer_->on_block_started(wait_line_);
+      if (observer_ != nullptr && wait_left_ > 0)
+        observer_->on_block_started(wait_line_, wait_file_);
       c.event_tag = std::max(c.event_tag, dwell_->event_tag);
       dwell_.reset();
       continue;
@@ -331,9 +337,11 @@ Status PathInterpolator::step() noexcept {
       wait_.reset();
       c.event_tag = std::max(c.event_tag, w.tag);
       c.line = w.line;
+      c.file = w.file;
       channel_held_ = wait_handler_ != nullptr && !wait_handler_->on_wait(w);
       wait_kind_ = Activity::channel;
       wait_line_ = w.line;
+      wait_file_ = w.file;
       continue;
     }
     if (source_done_) {
@@ -404,6 +412,7 @@ Status PathInterpolator::step() noexcept {
       held_ = hold_exact_stop_;  // the channel releases it (window on actual positions)
       wait_kind_ = Activity::exact_stop;
       wait_line_ = c.line;
+      wait_file_ = c.file;
       ++c.index;
       c.t = static_cast<double>(c.index) * t_;
       if (sink_) sink_->on_cycle(c);
@@ -463,7 +472,8 @@ void PathInterpolator::report_starts_to(std::uint32_t token) noexcept {
   const std::uint64_t full =
       next_token_ - static_cast<std::uint32_t>(static_cast<std::uint32_t>(next_token_) - token);
   for (; reported_ <= full; ++reported_)
-    observer_->on_block_started(ring_[reported_ & ring_mask_].line);
+    observer_->on_block_started(ring_[reported_ & ring_mask_].line,
+                                ring_[reported_ & ring_mask_].file);
 }
 
 void PathInterpolator::report_part_starts(double s_from, double s_to) noexcept {

@@ -48,6 +48,7 @@ struct Dwell {
   double seconds = 0.0;         ///< programmed dwell time [s], >= 0
   std::uint32_t line = 0;       ///< source line of the G04 block
   std::uint32_t event_tag = 0;  ///< channel events up to this tag fire when the dwell starts
+  std::uint16_t file = 0;       ///< source file of `line` (interp::Command::file, 0: main)
 };
 
 /// A point of the program where the channel takes over (ipo/channel_event.hpp): the path
@@ -60,6 +61,7 @@ struct ChannelWait {
   /// --- sync-feed: the wait after a block of INDP_SYN ... INTERRUPTIBLE motions followed by
   /// MC_TouchProbe or #SYNC IN: it need not wait for them (the catch-up takes them over).
   bool interruptible = false;
+  std::uint16_t file = 0;  ///< source file of `line` (interp::Command::file, 0: main)
 };
 
 /// One item of the program stream.
@@ -145,6 +147,7 @@ struct Cycle {
   std::uint64_t index = 0;  ///< cycles done so far, this one included
   double t = 0.0;           ///< time at the end of this cycle [s] (index * T)
   std::uint32_t line = 0;   ///< source line of the active block
+  std::uint16_t file = 0;   ///< source file of `line` (interp::Command::file, 0: main program)
   Activity activity = Activity::motion;
   bool rapid = false;                 ///< the active block is G00
   bool jerk_limited = true;           ///< the active block's slope is TRAPEZ / SIN2 / HSC
@@ -174,6 +177,7 @@ struct Cycle {
 struct Joint {
   double t = 0.0;          ///< time of the joint [s]
   std::uint32_t line = 0;  ///< line of the incoming block
+  std::uint16_t file = 0;  ///< source file of `line` (interp::Command::file, 0: main program)
   planner::TransitionClass cls = planner::TransitionClass::c0;
   planner::StopReason stop = planner::StopReason::none;
   bool jerk_limited = true;                                  ///< both sides jerk-limited slopes
@@ -205,8 +209,9 @@ enum class Status : std::uint8_t {
 class BlockObserver {
  public:
   virtual ~BlockObserver() = default;
-  /// A programmed Move (at its first path point) or a G04 dwell (> 0 s) of source line `line`.
-  virtual void on_block_started(std::uint32_t line) noexcept = 0;
+  /// A programmed Move (at its first path point) or a G04 dwell (> 0 s) of source line `line`
+  /// in source file `file` (interp::Command::file, 0: the main program).
+  virtual void on_block_started(std::uint32_t line, std::uint16_t file) noexcept = 0;
 };
 // --- operator: end
 
@@ -283,6 +288,7 @@ class PathInterpolator {
     double seconds = 0.0;
     std::uint32_t line = 0;
     std::uint32_t event_tag = 0;
+    std::uint16_t file = 0;
   };
   /// Keeps the window full: pulls items, prepares Moves, pushes segments. Returns false on error.
   bool fill() noexcept;
@@ -354,6 +360,7 @@ class PathInterpolator {
   bool held_ = false;                  ///< an exact stop waits for release_exact_stop()
   Activity wait_kind_ = Activity::dwell;
   std::uint32_t wait_line_ = 0;
+  std::uint16_t wait_file_ = 0;  ///< source file of wait_line_
   // --- override additions
   OverrideType override_type_ = OverrideType::reduced;
   double override_ = 1.0;      ///< set factor

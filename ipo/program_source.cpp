@@ -188,7 +188,12 @@ void ProgramSource::set_modal(const interp::ModalSnapshot& s, planner::Move& mv,
 bool ProgramSource::next(Item& out) {
   if (error_) return false;
   try {
-    return pull(out);
+    if (!pull(out)) return false;
+    // --- planner: every item names the file of its line. Items go out before the next command
+    // is pulled (queued items are the last command's; the INDP_SYN wait leaves before the
+    // command after it is taken), so file_ is theirs.
+    std::visit([this](auto& item) { item.file = file_; }, out);
+    return true;
   } catch (const Stop&) {
     return false;  // error_ is set: the stream ends after the blocks before the faulty one
   }

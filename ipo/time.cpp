@@ -48,7 +48,7 @@ void TimeCounter::add(const Cycle& c) {
   r_.lost += c.lost;
   count(total_, c);
   if (!on_block_) return;
-  if (open_ && c.line != block_.line) {
+  if (open_ && (c.line != block_.line || c.file != block_.file)) {
     block_.time = static_cast<double>(block_cycles_) * t_;
     block_.split = split_of(block_counts_, t_);
     on_block_(block_);
@@ -57,6 +57,7 @@ void TimeCounter::add(const Cycle& c) {
   if (!open_) {
     block_ = BlockTime{};
     block_.line = c.line;
+    block_.file = c.file;
     block_counts_ = {};
     block_cycles_ = 0;
     open_ = true;

@@ -8,13 +8,13 @@
 // Method: the PathInterpolator is stepped until the program ends; each cycle counts T for
 // the line it reports (the `line` column of `run`), so the per-block times sum to the total
 // and the total equals the number of cycles `run` writes times T, to the cycle (test).
-// A block is a run of consecutive cycles with the same line (a line executed again later, in
-// a loop, is a new record): memory stays bounded whatever the program length.
-// Override and feed hold (issue 13, docs/ipo.md "Override and feed hold"): an optional
-// operator callback is called before every cycle (it may call set_override / set_feed_hold);
-// cycles in which the path stands by hold count as `held`, and each block carries the time
-// lost to override and holds, measured on the path (Cycle::lost).
-// Invariants: total == cycles * T == rapid + feed + dwell + exact_stop + starved + held.
+// A block is a run of consecutive cycles with the same file and line (a line executed again later,
+// in a loop, is a new record): memory stays bounded whatever the program length. Override and feed
+// hold (issue 13, docs/ipo.md "Override and feed hold"): an optional operator callback is called
+// before every cycle (it may call set_override / set_feed_hold); cycles in which the path stands by
+// hold count as `held`, and each block carries the time lost to override and holds, measured on the
+// path (Cycle::lost). Invariants: total == cycles * T == rapid + feed + dwell + exact_stop +
+// starved + held.
 
 #include <array>
 #include <cstdint>
@@ -39,6 +39,7 @@ struct TimeSplit {
 /// One block as executed.
 struct BlockTime {
   std::uint32_t line = 0;
+  std::uint16_t file = 0;        ///< source file of `line` (interp::Command::file, 0: main)
   double time = 0.0;             ///< [s]
   double distance = 0.0;         ///< path length covered [mm]
   double feed_programmed = 0.0;  ///< programmed path velocity (largest seen) [mm/s]

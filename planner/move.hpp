@@ -93,6 +93,9 @@ struct Move {
   std::optional<double> transvelmin;  ///< #TRANSVELMIN [mm/s]
   SlopeType slope = SlopeType::step;  ///< #SLOPE TYPE
   std::uint32_t line = 0;             ///< source line, for notes and reports
+  /// Source file of `line`: an index into the interpreter's file table (interp::Command::file,
+  /// 0: the main program), so a run-time error in a subroutine file names that file.
+  std::uint16_t file = 0;
   /// Channel events (ipo/channel_event.hpp) up to this tag fire when the block starts; tags
   /// increase in program order, 0: none.
   std::uint32_t event_tag = 0;

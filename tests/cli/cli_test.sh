@@ -345,6 +345,31 @@ else
   failures=$((failures + 1)); echo "FAIL run stopped by a run-time error"
   tail -3 "$work/soft.csv"
 fi
+# --- planner: a run-time error in a block of a subroutine file names that file and its line
+# (docs/ipo.md "Blocks of subroutine files"); `time --blocks` names such blocks file:line.
+sub_prog="$fixtures/../../programs/subroutine_soft_limit/subroutine_soft_limit.nc"
+expect "a soft limit reached in a subroutine file names the subroutine file and its line" 1 '' \
+  'part_contour\.sub:10:1: error: run-time error at t=[0-9.]+ s: axis X: .*\(P-AXIS-00178\) \[NC5502\]' -- \
+  time "$sub_prog"
+checks=$((checks + 1))
+if grep -q '^N70 G03' "$work/err" && ! grep -q 'subroutine_soft_limit\.nc:10:' "$work/err"; then
+  echo "ok   the subroutine file's block is echoed, the main program is not named"
+else
+  failures=$((failures + 1)); echo "FAIL the subroutine file's block is echoed"
+  cat "$work/err"
+fi
+expect "time --blocks names a subroutine file's blocks file:line, the main's by line" 1 \
+  '^[^ ]*part_contour\.sub:4 [0-9.]+ ' '' -- time --blocks "$sub_prog"
+status=0
+"$ncsim" run -o "$work/sub.csv" "$sub_prog" 2>/dev/null || status=$?
+checks=$((checks + 1))
+if [[ $status -eq 1 ]] &&
+  [[ $(tail -2 "$work/sub.csv" | head -1) == "# error: "*"part_contour.sub:10:1: error: run-time error"*"[NC5502]" ]]; then
+  echo "ok   the CSV's closing comment names the subroutine file"
+else
+  failures=$((failures + 1)); echo "FAIL the CSV's closing comment names the subroutine file"
+  tail -2 "$work/sub.csv"
+fi
 # G60 on actual positions: time and run agree to the cycle, exact-stop waiting included.
 total=$("$ncsim" time "$fixtures/exact_stop.nc" 2>/dev/null | sed -E 's/^.*: ([0-9.e+-]+) s \(.*$/\1/')
 "$ncsim" run --detail -o "$work/es.csv" "$fixtures/exact_stop.nc" 2>/dev/null

@@ -1,0 +1,86 @@
+// Run-time positions in subroutine files: a cycle, a block record and a run-time error carry
+// the file of their block (an index into the interpreter's file table, interp::Command::file),
+// so a block of a global subroutine file (`L name`) is named in its own file, not the main
+// program's (docs/ipo.md "Blocks of subroutine files").
+
+#include <doctest/doctest.h>
+
+#include <string>
+#include <vector>
+
+#include "core/source_file.hpp"
+#include "interp/interpreter.hpp"
+#include "interp/test_support.hpp"
+#include "ipo/channel.hpp"
+#include "ipo/channel_test_support.hpp"
+#include "ipo/program_source.hpp"
+#include "ipo/time.hpp"
+
+namespace {
+
+using namespace ncsim;
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "NC5502 in a block of a subroutine file names that file and its line, not the calling "
+    "main program's") {
+  const core::SourceFile file = core::SourceFile::load(
+      interp::test::source_root() / "programs/subroutine_soft_limit/subroutine_soft_limit.nc");
+  const machines::Machine& m = interp::test::machine("portal_3x");
+  interp::Options options;
+  options.external.emplace("PART_X", 765.0);  // both parts beyond the limit (no scenario here)
+  interp::Interpreter in(file, m, options);
+  ipo::ProgramSource src(in, m);
+  ipo::test::Recorder rec;
+  ipo::Channel ch(ipo::channel_config(m, 0.001), src, &rec);
+  REQUIRE(ipo::test::run_to_end(ch, {}, 10'000'000) == ipo::Status::error);
+  const auto& e = ch.run_time_error();
+  REQUIRE(e);
+  CHECK(e->id == "NC5502");
+  CHECK(e->message.find("P-AXIS-00178") != std::string::npos);
+  REQUIRE(e->file != 0);
+  CHECK(ends_with(in.file_name(e->file), "part_contour.sub"));
+  CHECK(e->line == 10);  // N70 G03 of part_contour.sub; the main program's line 10 is N20
+  CHECK(&in.source_file(e->file) != &file);
+  CHECK(in.source_file(e->file).line_text(10).starts_with("N70 G03"));
+  // Every motion cycle is a block of the subroutine file (the main program has no motion).
+  REQUIRE_FALSE(rec.cycles.empty());
+  for (const ipo::Cycle& c : rec.cycles)
+    CHECK(c.file == e->file);
+}
+
+TEST_CASE(
+    "cycles and block records keep main-program blocks at file 0 and give a subroutine file's "
+    "blocks its index") {
+  // l_main.nc: line 4 `L sub_move.nc`, line 5 `G00 Y[P2] Z[V.P.LEN]`; sub_move.nc line 2
+  // `G00 X[P1]`.
+  const core::SourceFile file =
+      core::SourceFile::load(interp::test::source_root() / "interp/testdata/l_main.nc");
+  const machines::Machine& m = interp::test::machine("portal_3x");
+  interp::Interpreter in(file, m);
+  ipo::ProgramSource src(in, m);
+  ipo::test::Recorder rec;
+  ipo::Channel ch(ipo::channel_config(m, 0.001), src, &rec);
+  std::vector<ipo::BlockTime> blocks;
+  ipo::TimeCounter counter(0.001, [&](const ipo::BlockTime& b) { blocks.push_back(b); });
+  REQUIRE(ipo::test::run_to_end(
+              ch, [&] { counter.add(ch.cycle()); }, 1'000'000) == ipo::Status::finished);
+  counter.finish();
+  REQUIRE(blocks.size() == 2);
+  CHECK(blocks[0].line == 2);
+  REQUIRE(blocks[0].file != 0);
+  CHECK(ends_with(in.file_name(blocks[0].file), "sub_move.nc"));
+  CHECK(blocks[1].line == 5);
+  CHECK(blocks[1].file == 0);
+  std::size_t in_sub = 0;
+  for (const ipo::Cycle& c : rec.cycles) {
+    CHECK(c.file == (c.line == 2 ? blocks[0].file : 0));
+    in_sub += c.file != 0 ? 1 : 0;
+  }
+  CHECK(in_sub > 0);
+}
