@@ -171,6 +171,7 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
   BlockWords& bw = block_words;  // reused: its vectors keep their capacity across blocks
   bw.clear();
   if (!read_g_codes(b, bw) || !read_addresses(b, bw)) return false;
+  if (bw.g74 && !check_homing(b, bw)) return false;  // --- static-saw: before S is emitted
   for (const auto& [kind, value] : bw.tech)
     emit(line, Tech{kind, value});
   bool ok = true;

@@ -142,9 +142,10 @@ struct Interpreter::Impl {
   bool run_assignments(const ast::Block& b);
   bool read_g_codes(const ast::Block& b, BlockWords& bw);
   bool read_addresses(const ast::Block& b, BlockWords& bw);
-  bool run_dwell(const ast::Block& b, const BlockWords& bw);  // G04
-  void run_homing(const BlockWords& bw);                      // G74
-  void run_set_position(const BlockWords& bw);                // G92
+  bool run_dwell(const ast::Block& b, const BlockWords& bw);     // G04
+  void run_homing(const BlockWords& bw);                         // G74
+  bool check_homing(const ast::Block& b, const BlockWords& bw);  // --- static-saw: own file
+  void run_set_position(const BlockWords& bw);                   // G92
   bool run_block_motion(const ast::Block& b, const BlockWords& bw);
   bool run_program_m(const ast::Block& b, int code);              // M00/M01/M02/M30/M17/M29
   bool run_hash(const ast::Block& b, const ast::HashCommand& h);  // dispatches to hash_*

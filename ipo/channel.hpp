@@ -114,6 +114,9 @@ struct ChannelAxis {
   axes::AxisMonitorParams monitor;      ///< soft limits, lag, exact stop, ...
   // --- indp:
   IndpAxisConfig indp;  ///< the axis as an INDP axis (ipo/indp_axes.hpp)
+  // --- static-saw: G74 (ipo/channel_homing.cpp, docs/homing.md)
+  double reference_position = 0.0;  ///< P-AXIS-00152 pos_refpkt [mm | deg]
+  double homing_velocity = 83.333;  ///< P-AXIS-00219 vb_refmax [mm/s | deg/s]
 };
 
 struct ChannelConfig {
@@ -313,7 +316,10 @@ class Channel {
   /// velocity over the planned kXvPlanFactor * CONV_VEL, so the virtual X follows the belt;
   /// the operator's override is restored after #SYNC OUT.
   void static_override() noexcept;
-  bool static_unit_ = false;                 ///< P-CHAN-00364 x_virtual
+  bool static_unit_ = false;  ///< P-CHAN-00364 x_virtual
+  /// G74: each order's axes drive to P-AXIS-00152 as INDP motions (ipo/channel_homing.cpp).
+  EventOutcome on_homing(const interp::Homing& command, const ChannelEvent& e) noexcept;
+  std::optional<int> homing_order_;          ///< the order number homing now; empty: none started
   std::optional<double> operator_override_;  ///< the override before the static unit took it
   /// --- workspace: gives the interpolator the hold's path velocity cap (channel_workspace.cpp).
   void sync_workspace_cap(const Cycle& c) noexcept;

@@ -23,6 +23,8 @@ ChannelConfig channel_config(const machines::Machine& machine, double t_cycle) {
     a.monitor = axes::make_monitor_params(axis);    // P-AXIS-00177/178/236/532, NCSIM-AXIS-024..
     a.indp = indp_axis_config(axis);  // --- indp: G01 / G00 dynamics, soft limits, rule
     a.indp.machine_index = i;
+    a.reference_position = axis.reference_position;  // --- static-saw: G74, P-AXIS-00152
+    a.homing_velocity = axis.homing_velocity;        // --- static-saw: G74, P-AXIS-00219
     c.axes.push_back(std::move(a));
   }
   // --- conveyor-sync: conveyor tracking (docs/conveyor.md "Synchronisation")

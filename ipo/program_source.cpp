@@ -284,7 +284,8 @@ bool ProgramSource::pull(Item& out) {
     if (const auto* in = std::get_if<interp::SyncIn>(&cmd->body))
       belt_conv_vel_ = in->conv_vel;  // --- trafo: the belt's share under #TRAFO ON
     if (is_channel_event(cmd->body)) {
-      note_indp(cmd->body);  // --- planner
+      note_indp(cmd->body);    // --- planner
+      note_homing(cmd->body);  // --- static-saw: homed axes are answered at run time
       const bool stops = stops_path(cmd->body);
       const bool syn = std::holds_alternative<interp::AxisCommand>(cmd->body) && stops;
       if (syn) {  // --- sync-feed: every INDP_SYN motion of the block INTERRUPTIBLE
@@ -366,12 +367,11 @@ bool ProgramSource::pull(Item& out) {
                                std::is_same_v<T, interp::MoveVelocity> ||
                                std::is_same_v<T, interp::ProbeArm> ||
                                std::is_same_v<T, interp::SyncIn> ||
-                               std::is_same_v<T, interp::SyncOut>) {
+                               std::is_same_v<T, interp::SyncOut> ||
+                               std::is_same_v<T, interp::Homing>) {  // --- static-saw
             // channel events: queued above (is_channel_event), never here
           } else if constexpr (std::is_same_v<T, interp::MachineData>) {
             fail(line, "#MACHINE DATA (parameters are fixed for a run for now)");
-          } else if constexpr (std::is_same_v<T, interp::Homing>) {
-            fail(line, "G74 homing");
           } else if constexpr (std::is_same_v<T, interp::SetPosition>) {
             fail(line, "G92 set position");
           } else {
@@ -398,7 +398,8 @@ bool is_channel_event(const interp::CommandBody& body) noexcept {
          std::holds_alternative<interp::MoveVelocity>(body) ||
          std::holds_alternative<interp::ProbeArm>(body) ||
          std::holds_alternative<interp::SyncIn>(body) ||
-         std::holds_alternative<interp::SyncOut>(body);
+         std::holds_alternative<interp::SyncOut>(body) ||
+         std::holds_alternative<interp::Homing>(body);  // --- static-saw: G74
 }
 
 bool stops_path(const interp::CommandBody& body) noexcept {
@@ -406,7 +407,8 @@ bool stops_path(const interp::CommandBody& body) noexcept {
     return a->kind == interp::IndpKind::syn;
   return std::holds_alternative<interp::WaitIndp>(body) ||
          std::holds_alternative<interp::SyncIn>(body) ||
-         std::holds_alternative<interp::SyncOut>(body);
+         std::holds_alternative<interp::SyncOut>(body) ||
+         std::holds_alternative<interp::Homing>(body);  // --- static-saw: G74
 }
 
 }  // namespace ncsim::ipo

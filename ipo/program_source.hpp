@@ -201,6 +201,9 @@ class ProgramSource final : public Source {
   void static_sync(const interp::CommandBody& body);
   /// G04 while the static unit is synchronised: NC9101.
   void static_dwell(std::uint32_t line);
+  /// G74: the homed axes stand at P-AXIS-00152 when the channel is done; the next position
+  /// barrier takes them from the channel's set positions (docs/homing.md).
+  void note_homing(const interp::CommandBody& body) noexcept;
   struct CaxState {
     CaxTrackParams params;
     int slot = -1;                      ///< interpolated slot of the tracking axis

@@ -146,10 +146,9 @@ void ProgramSource::emit_path(planner::Move mv) {
       queue_.push_back(std::move(m));
       continue;
     }
-    if (m.arc)
-      fail(m.line,
-           "G02/G03 under x_virtual (the static unit's belt feed is built for lines "
-           "and splines)");
+    if (m.arc && (m.arc_plane || m.arc->axis_1 != xv_->x ||
+                  static_cast<int>(m.arc->axis_2) != slot_[static_cast<std::size_t>(xyz_[1])]))
+      fail(m.line, "G02/G03 outside the XY plane (G17) under x_virtual");
     if (m.exact_stop || m.transition == planner::Transition::stop_at_end)
       fail_with(m.line, kXvStopId,
                 "x_virtual: an exact stop would stop the path on the moving belt (004 l.438-440)");

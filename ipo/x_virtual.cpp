@@ -15,8 +15,10 @@ namespace ncsim::ipo {
 
 namespace {
 
-constexpr int kMaxDepth = 6;  ///< halvings of a spline piece at most (64 parts)
-constexpr int kSamples = 16;  ///< X-share samples per spline part
+constexpr int kMaxDepth = 6;      ///< halvings of a spline piece at most (64 parts)
+constexpr int kMaxArcDepth = 10;  ///< halvings of an arc at most (1024 parts)
+constexpr int kSamples = 16;      ///< X-share samples per spline / arc part
+constexpr double kTwoPi = 6.283185307179586;
 
 bool metric(const XVirtualParams& p, std::size_t i) {
   return ((p.path_axes >> i) & 1u) != 0;
@@ -37,6 +39,83 @@ std::pair<double, double> speeds(const planner::Move& mv, const XVirtualParams& 
     if (metric(p, i)) sum += d1(mv, i, u) * d1(mv, i, u);
   return {std::sqrt(sum), d1(mv, static_cast<std::size_t>(p.x), u)};
 }
+
+/// An arc Move (G17/G18/G19 plane of two machine axes) as angle(u) = phi0 + dir * sweep * u,
+/// u in [0, 1]; the other axes (a helix's, a tracking C) linear in u, as the planner and
+/// ipo/caxtrack run them.
+struct ArcGeom {
+  std::size_t a1 = 0, a2 = 1;  ///< plane axes (slots)
+  double c1 = 0.0, c2 = 0.0;   ///< centre [mm]
+  double r = 0.0;              ///< radius at the start [mm]
+  double phi0 = 0.0;           ///< start angle [rad]
+  double sweep = 0.0;          ///< swept angle, > 0 [rad]
+  double dir = 1.0;            ///< +1 G03, -1 G02
+};
+
+ArcGeom arc_geom(const planner::Move& mv) {
+  const planner::Arc& a = *mv.arc;
+  ArcGeom g;
+  g.a1 = a.axis_1;
+  g.a2 = a.axis_2;
+  g.c1 = a.centre_1;
+  g.c2 = a.centre_2;
+  const double rx = mv.start[g.a1] - g.c1, ry = mv.start[g.a2] - g.c2;
+  const double ex = mv.end[g.a1] - g.c1, ey = mv.end[g.a2] - g.c2;
+  g.r = std::hypot(rx, ry);
+  g.dir = a.clockwise ? -1.0 : 1.0;
+  g.phi0 = std::atan2(ry, rx);
+  g.sweep = (std::atan2(ey, ex) - g.phi0) * g.dir;
+  while (g.sweep <= 1e-12)
+    g.sweep += kTwoPi;
+  if (a.full_circle) g.sweep = kTwoPi;
+  return g;
+}
+
+/// d/du of the arc Move's axis i at u.
+double arc_d1(const planner::Move& mv, const ArcGeom& g, std::size_t i, double u) {
+  const double phi = g.phi0 + g.dir * g.sweep * u;
+  if (i == g.a1) return -g.r * std::sin(phi) * g.dir * g.sweep;
+  if (i == g.a2) return g.r * std::cos(phi) * g.dir * g.sweep;
+  return mv.end[i] - mv.start[i];
+}
+
+/// The arc Move's point at u (axis i).
+double arc_point(const planner::Move& mv, const ArcGeom& g, std::size_t i, double u) {
+  const double phi = g.phi0 + g.dir * g.sweep * u;
+  if (i == g.a1) return g.c1 + g.r * std::cos(phi);
+  if (i == g.a2) return g.c2 + g.r * std::sin(phi);
+  return mv.start[i] + (mv.end[i] - mv.start[i]) * u;
+}
+
+/// |dP/du| over the path axes and dX/du of an arc Move at u.
+std::pair<double, double> arc_speeds(const planner::Move& mv, const XVirtualParams& p, double u) {
+  const ArcGeom g = arc_geom(mv);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < mv.axis_count; ++i)
+    if (metric(p, i)) sum += arc_d1(mv, g, i, u) * arc_d1(mv, g, i, u);
+  return {std::sqrt(sum), arc_d1(mv, g, static_cast<std::size_t>(p.x), u)};
+}
+
+/// Path length of an arc / helix Move over the path axes (constant speed in u: exact).
+double arc_length(const planner::Move& mv, const XVirtualParams& p) {
+  return arc_speeds(mv, p, 0.0).first;
+}
+
+}  // namespace
+
+std::pair<planner::Move, planner::Move> split_arc(const planner::Move& mv) {
+  const ArcGeom g = arc_geom(mv);
+  planner::Move a = mv;
+  planner::Move b = mv;
+  for (std::size_t i = 0; i < mv.axis_count; ++i)
+    a.end[i] = b.start[i] = arc_point(mv, g, i, 0.5);
+  a.arc->full_circle = false;
+  b.arc->full_circle = false;
+  b.event_tag = 0;  // the events fire once, when the first half starts
+  return {std::move(a), std::move(b)};
+}
+
+namespace {
 
 /// Arc length of a spline Move over the path axes (Gauss-Legendre, 5 points).
 double spline_length(const planner::Move& mv, const XVirtualParams& p) {
@@ -59,15 +138,21 @@ std::string format(const char* fmt, double a, double b) {
 /// Sets the belt feed of one part and checks it against the planner's limits.
 std::optional<XvError> finish(planner::Move& mv, double length, const XVirtualParams& p,
                               std::span<const planner::AxisLimits> limits,
-                              std::span<const std::string> names) {
+                              std::span<const std::string> names, double peak_feed = 0.0) {
   const double dx = mv.end[static_cast<std::size_t>(p.x)] - mv.start[static_cast<std::size_t>(p.x)];
   mv.rapid = false;
   mv.block_time.reset();
   mv.end_feed.reset();
   mv.feed = p.v_belt * length / std::fabs(dx);
-  const planner::Segment seg = planner::Segment::from_move(mv);
-  const planner::PathLimits pl = planner::path_limits(seg, mv, limits);
-  if (pl.v_max >= mv.feed * (1.0 - 1e-9)) return std::nullopt;
+
+  // An arc part: the path velocity the belt needs where its X share is smallest (the tangent
+  // turning towards perpendicular to the belt) must be allowed too.
+  const double need = std::max(mv.feed, peak_feed);
+  planner::Move probe = mv;  // the planner caps at the programmed feed: ask for `need`
+  probe.feed = need;
+  const planner::Segment seg = planner::Segment::from_move(probe);
+  const planner::PathLimits pl = planner::path_limits(seg, probe, limits);
+  if (pl.v_max >= need * (1.0 - 1e-9)) return std::nullopt;
   const char* what = pl.limit == planner::VelocityLimit::axis_velocity ? "velocity"
                      : pl.limit == planner::VelocityLimit::centripetal ? "acceleration"
                                                                        : "jerk";
@@ -77,7 +162,7 @@ std::optional<XvError> finish(planner::Move& mv, double length, const XVirtualPa
                 "x_virtual: a belt at %.6g mm/s (1.1 x CONV_VEL, the fastest before 50653) needs a "
                 "path velocity of %.6g mm/s here; axis %s's %s allows only %.6g mm/s: a dynamic "
                 "error, the belt cannot be slowed (004 l.440, l.621)",
-                p.v_belt, mv.feed, names[axis].c_str(), what, pl.v_max);
+                p.v_belt, need, names[axis].c_str(), what, pl.v_max);
   return XvError{kXvTooFastId, buf};
 }
 
@@ -104,7 +189,7 @@ XvOutcome belt_feed(const planner::Move& mv, const XVirtualParams& p,
                     std::span<const std::string> names) {
   XvOutcome out;
   const auto x = static_cast<std::size_t>(p.x);
-  if (!mv.spline) {
+  if (!mv.spline && !mv.arc) {
     const double dx = mv.end[x] - mv.start[x];
     if (dx * p.sign >= -1e-9) {
       out.error = XvError{kXvDirectionId,
@@ -124,7 +209,11 @@ XvOutcome belt_feed(const planner::Move& mv, const XVirtualParams& p,
     out.moves.push_back(std::move(m));
     return out;
   }
-  // A spline piece: halve it until the X share varies little over each part.
+  // A spline piece or an arc: halve it until the X share varies little over each part.
+  const bool arc = mv.arc.has_value();
+  const auto at = [&](const planner::Move& m, double u) {
+    return arc ? arc_speeds(m, p, u) : speeds(m, p, u);
+  };
   std::vector<std::pair<planner::Move, int>> todo{{mv, 0}};
   while (!todo.empty()) {
     auto [part, depth] = std::move(todo.front());
@@ -132,12 +221,15 @@ XvOutcome belt_feed(const planner::Move& mv, const XVirtualParams& p,
     double lo = 1e300, hi = 0.0;
     for (int k = 0; k <= kSamples; ++k) {
       const double u = static_cast<double>(k) / kSamples;
-      const auto [speed, vx] = speeds(part, p, std::clamp(u, 1e-4, 1.0 - 1e-4));
+      const auto [speed, vx] = at(part, std::clamp(u, 1e-4, 1.0 - 1e-4));
       if (vx * p.sign >= 0.0 || speed <= 0.0) {
         out.error = XvError{kXvDirectionId,
-                            format("x_virtual: the spline must run against the conveying "
-                                   "direction everywhere (004 l.439): X turns near X = %.6g mm "
-                                   "(the belt moves in %+g X)",
+                            format(arc ? "x_virtual: the arc must run against the conveying "
+                                         "direction everywhere (004 l.439): X turns near X = "
+                                         "%.6g mm (the belt moves in %+g X)"
+                                       : "x_virtual: the spline must run against the conveying "
+                                         "direction everywhere (004 l.439): X turns near X = "
+                                         "%.6g mm (the belt moves in %+g X)",
                                    part.start[x], p.sign)};
         return out;
       }
@@ -145,13 +237,14 @@ XvOutcome belt_feed(const planner::Move& mv, const XVirtualParams& p,
       lo = std::min(lo, share);
       hi = std::max(hi, share);
     }
-    if ((hi - lo) > kXvFeedSpread * lo && depth < kMaxDepth) {
-      auto [a, b] = split_spline(part);
+    if ((hi - lo) > kXvFeedSpread * lo && depth < (arc ? kMaxArcDepth : kMaxDepth)) {
+      auto [a, b] = arc ? split_arc(part) : split_spline(part);
       todo.insert(todo.begin(), {std::move(b), depth + 1});
       todo.insert(todo.begin(), {std::move(a), depth + 1});
       continue;
     }
-    if (auto e = finish(part, spline_length(part, p), p, limits, names)) {
+    const double length = arc ? arc_length(part, p) : spline_length(part, p);
+    if (auto e = finish(part, length, p, limits, names, arc ? p.v_belt / lo : 0.0)) {
       out.error = std::move(e);
       return out;
     }

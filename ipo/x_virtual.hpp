@@ -15,9 +15,9 @@
 // Inputs: a Move in MCS at belt travel 0 (interpolated order), the X slot, the conveying sign
 // (P-CHAN-00363), the belt velocity to plan for (the adapter passes kXvPlanFactor x CONV_VEL)
 // [mm/s], the axis limits the planner plans with.
-// Outputs: the Move(s) with their feed set (a spline piece halved until its X component's
-// feed varies by at most kXvFeedSpread), or a positioned program error: NC9100 the belt is
-// too fast for the contour (an axis's velocity, acceleration or jerk bound would make the
+// Outputs: the Move(s) with their feed set (a spline piece or an arc halved until its X
+// component's feed varies by at most kXvFeedSpread), or a positioned program error: NC9100 the belt
+// is too fast for the contour (an axis's velocity, acceleration or jerk bound would make the
 // planner slow the path below the belt: "it is not possible to reduce conveyor velocity",
 // l.440, "the CNC will output a dynamic error", l.621), NC9101 a corner the path would stop
 // at, NC9102 a block that does not run against the conveying direction (l.439).
@@ -65,14 +65,20 @@ struct XvOutcome {
   std::optional<XvError> error;
 };
 
+/// The two halves (by angle) of arc Move `mv` (not full_circle afterwards); the axes outside
+/// the plane, a helix's and a tracking C, are split linearly in the angle.
+std::pair<planner::Move, planner::Move> split_arc(const planner::Move& mv);
+
 /// |dX/ds| of a line (the X share of its path length) [1].
 double x_share(const planner::Move& mv, const XVirtualParams& p) noexcept;
 /// The feed [mm/s] of line `mv` whose X component is the belt's: v_belt / x_share.
 double line_belt_feed(const planner::Move& mv, const XVirtualParams& p) noexcept;
 
-/// The belt feed for one synchronised path block (line or spline; arcs are NC6001 at the
-/// caller), checked against the planner's own limits `limits` and named by `names` (one per
-/// interpolated axis).
+/// The belt feed for one synchronised path block (line, spline piece or arc), checked against
+/// the planner's own limits `limits` and named by `names` (one per interpolated axis). An arc
+/// is halved (by angle) until the X share varies by at most kXvFeedSpread over each part (at
+/// most 1024 parts), each part with its own feed; a part is NC9100 also when the velocity the
+/// belt needs where its X share is smallest exceeds the limits (docs/conveyor.md "arcs").
 XvOutcome belt_feed(const planner::Move& mv, const XVirtualParams& p,
                     std::span<const planner::AxisLimits> limits,
                     std::span<const std::string> names);

@@ -118,6 +118,9 @@ struct AxisParams {
   Dynamics dynamics;
   Monitoring monitoring;
   ControlLoop control;
+  // --- static-saw: G74 homing (docs/homing.md)
+  double reference_position = 0.0;  ///< getriebe[0].pos_refpkt P-AXIS-00152 [mm | deg]
+  double homing_velocity = 83.333;  ///< getriebe[0].vb_refmax P-AXIS-00219 [mm/s | deg/s]
   std::optional<ConveyorAxisParams> conveyor;  ///< set on the conveyor axis only
   /// kenngr.conv_sync_optim P-AXIS-00555 of this axis list (4.8.1 sets it on X; --- workspace)
   bool conv_sync_optim = false;

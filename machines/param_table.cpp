@@ -69,6 +69,9 @@ constexpr std::array kTable = {
   ParamSpec{"P-AXIS-00081", "getriebe[].slope_profil.tr_feedh", A, ValueType::uns32, 0, kUns32Max, "us", kMicrosecond, "s", "0", kOpt, 7, -1, "TF5200 P-AXIS-00081 (0: = P-AXIS-00200)"},
   ParamSpec{"P-AXIS-00201", "getriebe[].dynamik.tr_min", A, ValueType::uns32, 0, kUns32Max, "us", kMicrosecond, "s", "10000", kOpt, 7, -1, "TF5200 P-AXIS-00201"},
   ParamSpec{"P-AXIS-00199", "getriebe[].dynamik.tr_geom", A, ValueType::uns32, 0, kUns32Max, "us", kMicrosecond, "s", "10000", kOpt, 7, -1, "TF5200 P-AXIS-00199"},
+  // ---- axis list: homing, G74 (--- static-saw; TF5200 homing parameters) ---------------------
+  ParamSpec{"P-AXIS-00152", "getriebe[].pos_refpkt", A, ValueType::sgn32, kSgn32Min, kSgn32Max, "0.1 um | 0.0001 deg", kTenthMicron, "mm | deg", "0", kOpt, 7, -1, "TF5200 P-AXIS-00152"},
+  ParamSpec{"P-AXIS-00219", "getriebe[].vb_refmax", A, ValueType::uns32, 1, 2000000000, "um/s | 0.001 deg/s", kMilli, "mm/s | deg/s", "83333", kOpt, 7, -1, "TF5200 P-AXIS-00219 (capped at P-AXIS-00212)"},
   // ---- axis list: the NC I path model (seed 000 §7.1.7); no ISG key, ncsim ids --------------
   ParamSpec{"NCSIM-AXIS-020", "nci.velo_jump_factor", A, ValueType::real64, 0, kRealMax, "", 1, "", "1.0", kOpt, -1, -1, "000 §7.1.7 (C0)"},
   ParamSpec{"NCSIM-AXIS-030", "ncsim.profile_rule", A, ValueType::word, 0, 0, "manual | time_optimal", 1, "", "manual", kOpt, -1, -1, "002 2.1, 2.3 (manual); docs/axes-profile.md"},

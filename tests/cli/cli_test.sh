@@ -382,5 +382,15 @@ else
   "$ncsim" time --blocks "$fixtures/exact_stop.nc"
 fi
 
+# --- static-saw: G74 (docs/homing.md): X then Y home to P-AXIS-00152 (0) at P-AXIS-00219; the
+# homing time is counted on the G74 line (waiting), and the path goes on from the reference point.
+expect "time --blocks shows the G74 homing time on its line" 0 \
+  '^5 1\.964 0 0 0 0 0 0 0 1\.964 0 0$' '' -- time --blocks "$fixtures/homing.nc"
+expect "after G74 the next block starts at the reference point" 0 \
+  '^6 0\.135 10 6000' '' -- time --blocks "$fixtures/homing.nc"
+printf '%%h\n#TRAFO ON\nG74 X1\nM30\n' >"$work/g74_trafo.nc"
+expect "G74 with an active coupling is 20137 at its line" 1 '' \
+  'g74_trafo\.nc:3:1: error: .*\[20137\]' -- check --machine "$root/machines/delta_picker" "$work/g74_trafo.nc"
+
 echo "cli: $((checks - failures)) passed, $failures failed"
 ((failures == 0))
