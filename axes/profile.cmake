@@ -18,4 +18,5 @@ ncsim_add_test(NAME axes_profile_tests
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_start_state_test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_optimal_test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_reference_test.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/profile_duration_test.cpp
   LIBS ncsim_axes)

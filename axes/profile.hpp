@@ -143,21 +143,32 @@ Result plan_position(const MotionState& start, const PositionTarget& target,
                      ProfileRule rule = ProfileRule::manual) noexcept;
 
 /// Plans a profile from `start` to `target` taking exactly `duration` [s] (>= the motion's
-/// own minimum): the cruise level is lowered (jerk::move_of_duration). Returns
-/// error_not_synchronizable when no single-peak profile of that duration exists.
+/// own minimum): the cruise level is lowered (jerk::move_of_duration, in the reversed frame for
+/// an overshoot), else the turning level of a turn to the arrival velocity
+/// (jerk::reversal_of_duration). Returns error_not_synchronizable [NC5015] when neither family
+/// has a profile of that duration (a gap: see next_feasible_duration).
 Result plan_position_of_duration(const MotionState& start, const PositionTarget& target,
                                  const Dynamics& dynamics, double duration, Profile& out) noexcept;
 
+/// Where the durations of plan_position_of_duration resume after a gap: the shortest start of
+/// a stretchable range beyond `duration` [s] (the single-peak family's lower range, the fastest
+/// turn to an arrival velocity), negative when none is known. A moving start can have a gap:
+/// too fast to dip much within the distance, and a turn takes far longer.
+double next_feasible_duration(const MotionState& start, const PositionTarget& target,
+                              const Dynamics& dynamics, double duration) noexcept;
+
 /// Time-synchronised multi-axis motion (catch-up "all axes at once", INDP TIME=): each axis is
 /// first planned alone under `rule`; every axis then gets a profile of exactly the longest
-/// duration, or of `min_duration` [s] when that is longer (TIME=). All spans have one size.
+/// duration, or of `min_duration` [s] when that is longer (TIME=); where an axis has no profile
+/// of that duration (a gap), the common duration moves to next_feasible_duration. All spans
+/// have one size.
 Result plan_synchronized(std::span<const MotionState> starts,
                          std::span<const PositionTarget> targets,
                          std::span<const Dynamics> dynamics, ProfileRule rule, double min_duration,
                          std::span<Profile> out) noexcept;
 
 /// A target moving with constant velocity: p1 + v1 t (t [s] from now). Plans the earliest
-/// meeting in position, velocity (v1) and acceleration (0) within the single-peak family;
+/// meeting in position, velocity (v1) and acceleration (0) (single-peak profiles, turns);
 /// `t_meet` receives the meeting time [s] (the profile's duration).
 Result plan_moving_target(const MotionState& start, double p1, double v1, const Dynamics& dynamics,
                           Profile& out, double& t_meet) noexcept;

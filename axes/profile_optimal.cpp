@@ -190,15 +190,34 @@ bool finite(const MotionState& s) noexcept {
 
 Result plan_position_of_duration(const MotionState& start, const PositionTarget& target,
                                  const Dynamics& dyn, double duration, Profile& out) noexcept {
+  // The single-peak family (in the reversed frame for an overshoot to a target at rest), else a
+  // turn on the way to an arrival velocity, each with its level lowered to the duration.
+  const MotionState end{target.p, target.v, 0.0};
   jerk::Move m;
   const jerk::Status st = jerk::move_of_duration(start, target.p, target.v, duration, dyn, m);
   if (st == jerk::Status::invalid_input) return Result::error_invalid_input;
-  if (st != jerk::Status::ok) return Result::error_not_synchronizable;
-  detail::ProfileBuilder b(out, start);
-  detail::append_move(b, m);
-  const MotionState end{target.p, target.v, 0.0};
-  b.finish(&end);
-  return Result::ok;
+  if (st == jerk::Status::ok) {
+    detail::ProfileBuilder b(out, start);
+    detail::append_move(b, m);
+    b.finish(&end);
+    return Result::ok;
+  }
+  jerk::Reversal rev;
+  if (target.v != 0.0 && jerk::reversal_of_duration(start, target.p, target.v, duration, dyn,
+                                                    rev) == jerk::Status::ok) {
+    detail::ProfileBuilder b(out, start);
+    detail::append_move(b, rev.out);
+    detail::append_move(b, rev.back);
+    b.finish(&end);
+    return Result::ok;
+  }
+  // The duration of the fastest profile itself (e.g. a two-peak change, which has no slower
+  // variant in these families).
+  if (plan_position(start, target, dyn, out, ProfileRule::time_optimal) == Result::ok &&
+      std::abs(out.duration() - duration) <= 1e-12 * duration) {
+    return Result::ok;
+  }
+  return Result::error_not_synchronizable;
 }
 
 Result plan_synchronized(std::span<const MotionState> starts,
@@ -216,12 +235,43 @@ Result plan_synchronized(std::span<const MotionState> starts,
     if (r != Result::ok) return r;
     t_sync = std::max(t_sync, out[i].duration());
   }
-  for (std::size_t i = 0; i < n; ++i) {
-    if (out[i].duration() == t_sync) continue;  // the slowest axis keeps its own profile
-    const Result r = plan_position_of_duration(starts[i], targets[i], dynamics[i], t_sync, out[i]);
-    if (r != Result::ok) return r;
+  // Every axis in exactly t_sync. An axis without a profile of that duration (a gap between
+  // the longest single-peak profile and the fastest turn, docs/axes-profile.md) moves t_sync
+  // to the start of its next feasible range, and every axis is planned again (Ruckig's
+  // "blocked intervals"); each round moves t_sync onto the start of a range, so a few rounds
+  // suffice (bounded: 2 n + 2).
+  for (std::size_t round = 0; round <= 2 * n + 1; ++round) {
+    double t_next = t_sync;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (round == 0 && out[i].duration() == t_sync) continue;  // the slowest keeps its own
+      const Result r =
+          plan_position_of_duration(starts[i], targets[i], dynamics[i], t_sync, out[i]);
+      if (r == Result::ok) continue;
+      if (r != Result::error_not_synchronizable) return r;
+      const double t_resume = next_feasible_duration(starts[i], targets[i], dynamics[i], t_sync);
+      if (!(t_resume > t_sync)) return r;
+      t_next = std::max(t_next, t_resume);
+    }
+    if (t_next == t_sync) return Result::ok;
+    t_sync = t_next;
   }
-  return Result::ok;
+  return Result::error_not_synchronizable;
+}
+
+double next_feasible_duration(const MotionState& start, const PositionTarget& target,
+                              const Dynamics& dyn, double duration) noexcept {
+  // The ranges of the families plan_position_of_duration stretches start at the single-peak
+  // family's root bracketed from 0 and at the fastest turn.
+  double next = std::numeric_limits<double>::infinity();
+  const double t_single = jerk::min_single_peak_time(start, target.p, target.v, dyn);
+  if (t_single > duration) next = t_single;
+  jerk::Reversal rev;
+  if (target.v != 0.0 &&
+      jerk::reversal_move(start, target.p, target.v, dyn, rev) == jerk::Status::ok &&
+      rev.time() > duration) {
+    next = std::min(next, rev.time());
+  }
+  return std::isfinite(next) ? next : -1.0;
 }
 
 Result plan_moving_target(const MotionState& start, double p1, double v1, const Dynamics& dyn,
@@ -235,49 +285,82 @@ Result plan_moving_target(const MotionState& start, double p1, double v1, double
       !std::isfinite(v_arrive) || std::abs(v_arrive) > dyn.v_max) {
     return Result::error_invalid_input;
   }
-  // can_meet(T): the time-optimal profile reaches p1 + v1 T with velocity v_arrive in at most T.
+  // reach(T): the fastest profile reaches p1 + v1 T with velocity v_arrive within T. Necessary
+  // for a meeting at T; where the fastest takes exactly T (the boundary the search converges
+  // to) it is the meeting itself.
   Profile probe;
-  const auto can_meet = [&](double t) {
-    return plan_position(start, PositionTarget{p1 + v1 * t, v_arrive}, dyn, probe,
-                         ProfileRule::time_optimal) == Result::ok &&
+  const auto target_at = [&](double t) { return PositionTarget{p1 + v1 * t, v_arrive}; };
+  const auto reach = [&](double t) {
+    return plan_position(start, target_at(t), dyn, probe, ProfileRule::time_optimal) ==
+               Result::ok &&
            probe.duration() <= t;
   };
-  // Grow T from well below the static target's time, so an approaching target is met early.
-  const bool static_ok = plan_position(start, PositionTarget{p1, v_arrive}, dyn, probe,
-                                       ProfileRule::time_optimal) == Result::ok;
-  double t_hi = (static_ok && probe.duration() > 0.0 ? probe.duration() : 1.0) * 0x1p-20;
-  double t_lo = 0.0;
-  if (can_meet(0.0)) {
-    t_hi = 0.0;
-  } else {
-    int k = 0;
-    while (!can_meet(t_hi)) {
-      t_lo = t_hi;
-      t_hi *= 2.0;
-      if (++k > 100) return Result::error_not_synchronizable;  // the target runs away
+  // meet(T): a profile of exactly T meets the target (into `out`). A moving start can have
+  // durations between its fastest and its slower families that no profile takes (a gap), so
+  // reach(T) does not imply meet(T).
+  const auto meet = [&](double t) {
+    if (!reach(t)) return false;
+    if (plan_position_of_duration(start, target_at(t), dyn, t, out) == Result::ok) return true;
+    if (std::abs(probe.duration() - t) <= 1e-9 * std::max(t, 1e-9)) {
+      out = probe;  // at the boundary of reach: the fastest profile takes T
+      return true;
     }
-    // Earliest: shrink [t_lo, t_hi] to rounding, keeping can_meet(t_hi).
+    return false;
+  };
+
+  // The earliest T with pred(T): grow T geometrically from t_start, then bisect to rounding
+  // between the last T without and the first with. Decision: a window shorter than the
+  // doubling step can be missed (docs/axes-profile.md).
+  const auto earliest = [&](double t_start, double t_step, auto pred, double& t_found) {
+    double t_lo = t_start;
+    double step = t_step;
+    double t_hi = t_start + step;
+    for (int k = 0; !pred(t_hi); ++k) {
+      if (k > 100) return false;  // the target runs away
+      t_lo = t_hi;
+      step *= 2.0;
+      t_hi = t_start + step;
+    }
     for (int i = 0; i < 200 && t_hi - t_lo > 4.0 * std::numeric_limits<double>::epsilon() * t_hi;
          ++i) {
       const double mid = 0.5 * (t_lo + t_hi);
-      (can_meet(mid) ? t_hi : t_lo) = mid;
+      (pred(mid) ? t_hi : t_lo) = mid;
+    }
+    t_found = t_hi;
+    return true;
+  };
+  // From well below the static target's time, so an approaching target is met early.
+  const bool static_ok =
+      plan_position(start, target_at(0.0), dyn, probe, ProfileRule::time_optimal) == Result::ok;
+  const double t_scale = static_ok && probe.duration() > 0.0 ? probe.duration() : 1.0;
+  double t_found = 0.0;
+  if (!meet(0.0)) {
+    // The boundary of reach first: there the fastest profile takes T (met exactly); past a gap,
+    // the earliest T from there on at which a profile of exactly T exists.
+    if (!earliest(0.0, t_scale * 0x1p-20, reach, t_found)) return Result::error_not_synchronizable;
+    if (!meet(t_found)) {
+      if (!earliest(t_found, t_found * 0x1p-20, meet, t_found)) {
+        return Result::error_not_synchronizable;
+      }
+      // meet is not monotone: the bisection can end inside a window of meetings; walk back
+      // (doubling steps) to the window's start and bisect there.
+      double step = t_found * 0x1p-20;
+      double t_ok = t_found;
+      for (int k = 0; k < 60 && t_ok - step > 0.0 && meet(t_ok - step); ++k) {
+        t_ok -= step;
+        step *= 2.0;
+      }
+      double t_no = std::max(0.0, t_ok - step);
+      for (int i = 0; i < 200 && t_ok - t_no > 4.0 * std::numeric_limits<double>::epsilon() * t_ok;
+           ++i) {
+        const double mid = 0.5 * (t_no + t_ok);
+        (meet(mid) ? t_ok : t_no) = mid;
+      }
+      if (!meet(t_ok)) return Result::error_not_synchronizable;
     }
   }
-  t_meet = t_hi;
-  const PositionTarget target{p1 + v1 * t_hi, v_arrive};
-  // A meeting time found means a profile of exactly that duration exists unless the family
-  // cannot be stretched to it (a moving start that would have to reverse).
-  if (plan_position_of_duration(start, target, dyn, t_hi, out) == Result::ok) {
-    t_meet = out.duration();  // T to rounding; the profile's own end is the meeting
-    return Result::ok;
-  }
-  // At the meeting time the fastest profile itself takes T (to rounding).
-  if (plan_position(start, target, dyn, out, ProfileRule::time_optimal) == Result::ok &&
-      std::abs(out.duration() - t_hi) <= 1e-9 * std::max(t_hi, 1e-9)) {
-    t_meet = out.duration();
-    return Result::ok;
-  }
-  return Result::error_not_synchronizable;
+  t_meet = out.duration();  // T to rounding; the profile's own end is the meeting
+  return Result::ok;
 }
 
 }  // namespace ncsim::axes

@@ -448,3 +448,78 @@ TEST_CASE("time-optimal starts that overshoot or move away are never slower than
   MESSAGE("checked ", checked);
   CHECK(checked > cases / 2);
 }
+
+TEST_CASE("a moving target is met at the reference's earliest meeting or past a gap") {
+  // The target p1 + v1 t (p1 > 0, v1 in [0, V]) from starts v0 in [-V, V]: many must turn
+  // round (moving away) or overshoot (too fast for a close target) - NC5015 before. The
+  // reference's earliest meeting: the first T at which its minimum time to p1 + v1 T is <= T
+  // (a doubling scan from 1e-3 of its time to p1, then a bisection on T in long double).
+  std::mt19937_64 rng(20261125);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int checked = 0;
+  int past_gap = 0;
+  const int cases = 16;
+  for (int n = 0; n < cases; ++n) {
+    Dynamics d{log_uniform(rng, 1.0, 1e4), log_uniform(rng, 10.0, 1e5), log_uniform(rng, 10.0, 1e5),
+               log_uniform(rng, 1e2, 1e7)};
+    const double v0 = d.v_max * (2.0 * unit(rng) - 1.0);
+    const double v1 = d.v_max * 0.8 * unit(rng);
+    const double scale = d.v_max * d.v_max / std::min(d.a_max, d.d_max);
+    const double p1 = scale * log_uniform(rng, 1e-3, 1e1);
+    const auto ref_time = [&](Real t) {
+      Ref ref{v0, 0.0, v1, static_cast<double>(p1 + v1 * t), d.v_max, d.a_max, d.d_max, d.j_max};
+      ref.reverse = true;
+      return ref.min_time();
+    };
+    const auto feasible = [&](Real t) {
+      const Real tr = ref_time(t);
+      return std::isfinite(static_cast<double>(tr)) && tr <= t;
+    };
+    const Real t_static = ref_time(0);
+    if (!std::isfinite(static_cast<double>(t_static))) continue;
+    Real lo = 0;
+    Real hi = t_static * Real(1e-3);
+    int k = 0;
+    while (!feasible(hi) && ++k < 60) {
+      lo = hi;
+      hi *= 2;
+    }
+    if (k >= 60) continue;
+    for (int i = 0; i < 40; ++i) {
+      const Real mid = (lo + hi) / 2;
+      (feasible(mid) ? hi : lo) = mid;
+    }
+    Profile p;
+    double t_meet = 0.0;
+    INFO("v0=", v0, " p1=", p1, " v1=", v1, " V=", d.v_max, " A+=", d.a_max, " A-=", d.d_max,
+         " J=", d.j_max, " t_ref=", static_cast<double>(hi));
+    REQUIRE(ncsim::axes::plan_moving_target(MotionState{0.0, v0, 0.0}, p1, v1, d, p, t_meet) ==
+            Result::ok);
+    INFO("t_meet=", t_meet);
+    // The reference's T bounds the meeting from below only where a profile of exactly T exists;
+    // a later meeting is one past a gap of the start's durations (e.g. a start too fast to
+    // brake to v1 before p1 + v1 T: past the boundary the fastest profile is far shorter than
+    // T and no profile of the families dips long enough), and then the kernel has no profile
+    // of the reference's time either.
+    const double t_ref = static_cast<double>(hi);
+    if (t_meet > t_ref * (1.0 + 1e-9)) {
+      Profile q;
+      for (const double f : {1e-6, 1e-3, 1e-1}) {
+        const double t = t_ref * (1.0 + f);
+        if (t < t_meet) {
+          CHECK(ncsim::axes::plan_position_of_duration(MotionState{0.0, v0, 0.0},
+                                                       PositionTarget{p1 + v1 * t, v1}, d, t,
+                                                       q) == Result::error_not_synchronizable);
+        }
+      }
+      ++past_gap;
+    }
+    const auto end = p.at(t_meet);
+    CHECK(end.p == doctest::Approx(p1 + v1 * t_meet).epsilon(1e-12));
+    CHECK(end.v == v1);
+    CHECK(end.a == 0.0);
+    ++checked;
+  }
+  MESSAGE("checked ", checked, ", met past a gap ", past_gap);
+  CHECK(checked > cases / 2);
+}

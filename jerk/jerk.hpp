@@ -143,10 +143,12 @@ enum class Status : std::uint8_t {
 };
 
 /// A move from `start` to (p1, v1, a = 0) that takes exactly `duration` [s]: the single-peak
-/// ramp-cruise-ramp family with the cruise level lowered until the time matches. Limits hold
-/// (V, A+, A-, J) from starts inside them. Not supported (Status::not_supported): moves that
-/// must reverse (the frame of travel from p0 to p1 disagrees with v1 or the start cannot stop
-/// within the distance and come back). The end state is met exactly by the chain to rounding.
+/// ramp-cruise-ramp family with the cruise level lowered until the time matches; a target at
+/// rest the start cannot stop before is met by overshooting and returning at a lowered level
+/// (the reversed frame). Limits hold (V, A+, A-, J) from starts inside them. Not supported
+/// (Status::not_supported): an arrival velocity that needs a turn (the frame of travel from
+/// p0 to p1 disagrees with v1, or the start cannot stop within the distance: see
+/// reversal_of_duration). The end state is met exactly by the chain to rounding.
 Status move_of_duration(const State& start, double p1, double v1, double duration,
                         const Limits& limits, Move& out) noexcept;
 
@@ -214,6 +216,14 @@ struct Reversal {
 /// cruise at V when V itself falls short. Status::not_supported when v1 == 0 or no level fits.
 Status reversal_move(const State& start, double p1, double v1, const Limits& limits,
                      Reversal& out) noexcept;
+
+/// A Reversal from `start` to (p1, v1 != 0, a = 0) taking exactly `duration` [s] (>= the
+/// fastest Reversal's time): the turning level lowered below the fastest one, the rest of the
+/// way cruised at it (time synchronisation of a move that must turn). Status::too_short below
+/// the fastest time, not_supported where no Reversal applies or stop-and-go already fills the
+/// way (no slower turn exists).
+Status reversal_of_duration(const State& start, double p1, double v1, double duration,
+                            const Limits& limits, Reversal& out) noexcept;
 
 }  // namespace ncsim::jerk
 

@@ -283,16 +283,14 @@ double min_single_peak_time(const State& start, double p1, double v1, const Limi
   return lv.t_ramp + cruise_time(f, vm, lv);
 }
 
-Status move_of_duration(const State& start, double p1, double v1, double duration,
-                        const Limits& lim, Move& out) noexcept {
-  if (!valid(lim) || !finite(start) || !std::isfinite(p1) || !std::isfinite(v1) ||
-      !std::isfinite(duration) || duration < 0.0 || std::abs(v1) > lim.v_max) {
-    return Status::invalid_input;
-  }
-  const Frame f = frame_of(start, p1, v1);
-  if (f.v1 < 0.0) return Status::not_supported;
-  const double vm_top = stretch_level(f, lim);
-  if (vm_top < 0.0) return Status::not_supported;
+namespace {
+
+// move_of_duration in one frame (its distance f.d may be negative: the reversed frame of an
+// overshoot, whose levels are the return velocity toward the target).
+// The level is lowered from vm_top (feasible: dist(vm_top) <= D) through the range below it.
+Status stretch_from(const Frame& f, double vm_top, double duration, const Limits& lim,
+                    Move& out) noexcept {
+  const double d_abs = std::abs(f.d);
   const Level top = level(f, vm_top, lim);
   const double t_min = top.t_ramp + cruise_time(f, vm_top, top);
   if (duration <= t_min) {
@@ -304,10 +302,10 @@ Status move_of_duration(const State& start, double p1, double v1, double duratio
   // the distance, else the root of dist(vm) = D below vm_top (cruise 0 there).
   const Level rest = level(f, 0.0, lim);
   const auto g_dist = [&](double vm) { return level(f, vm, lim).dist - f.d; };
-  const bool dwell = std::abs(rest.dist - f.d) <= kResidue * std::max(f.d, std::abs(rest.dist));
+  const bool dwell = std::abs(rest.dist - f.d) <= kResidue * std::max(d_abs, std::abs(rest.dist));
   double vm_low = 0.0;
   if (rest.dist > f.d && !dwell) {
-    vm_low = solve_bracket(vm_top, 0.0, g_dist(vm_top), rest.dist - f.d, kResidue * f.d, g_dist);
+    vm_low = solve_bracket(vm_top, 0.0, g_dist(vm_top), rest.dist - f.d, kResidue * d_abs, g_dist);
   }
   if (vm_low == 0.0 && dwell && duration >= rest.t_ramp) {
     out = make_move(f, 0.0, rest, duration - rest.t_ramp);  // dwell at rest in between
@@ -331,9 +329,42 @@ Status move_of_duration(const State& start, double p1, double v1, double duratio
   if (!(g_lo > 0.0)) return Status::not_supported;  // slower than the family allows
   const double vm = solve_bracket(vm_top, lo, g(vm_top), g_lo, kResidue * duration, g);
   const Level lv = level(f, vm, lim);
-  if (lv.dist > f.d + 1e-9 * f.d) return Status::not_supported;  // range not connected
+  if (lv.dist > f.d + 1e-9 * d_abs) return Status::not_supported;  // range not connected
   out = make_move(f, vm, lv, cruise_time(f, vm, lv));
   return Status::ok;
+}
+
+// Lowered from the highest feasible level first (the fastest of the family: a start too fast
+// for the target, e.g. at the arrival velocity just behind it, can only dip a little, and the
+// levels near 0 are out of reach), else from the root bracketed from 0 (where the feasible
+// levels are not one interval and the top one cannot be lowered far enough).
+Status stretch_in_frame(const Frame& f, double duration, const Limits& lim, Move& out) noexcept {
+  if (f.v1 < 0.0) return Status::not_supported;
+  Level top;
+  const double vm_top = top_level(f, lim, top);
+  if (vm_top < 0.0) return Status::not_supported;
+  const Status st = stretch_from(f, vm_top, duration, lim, out);
+  if (st != Status::not_supported) return st;
+  const double vm_zero = stretch_level(f, lim);
+  if (vm_zero < 0.0 || vm_zero == vm_top) return st;
+  return stretch_from(f, vm_zero, duration, lim, out);
+}
+
+}  // namespace
+
+Status move_of_duration(const State& start, double p1, double v1, double duration,
+                        const Limits& lim, Move& out) noexcept {
+  if (!valid(lim) || !finite(start) || !std::isfinite(p1) || !std::isfinite(v1) ||
+      !std::isfinite(duration) || duration < 0.0 || std::abs(v1) > lim.v_max) {
+    return Status::invalid_input;
+  }
+  const double sign = natural_sign(start, p1, v1);
+  const Status st = stretch_in_frame(frame_of(start, p1, v1, sign), duration, lim, out);
+  if (st != Status::not_supported) return st;
+  // A target the start cannot stop before, at rest or to be met moving back (v1 against the
+  // way to it): overshoot and return, the reversed frame (its level is the return velocity;
+  // lowering it toward 0 stretches the move without bound).
+  return stretch_in_frame(frame_of(start, p1, v1, -sign), duration, lim, out);
 }
 
 Status fastest_move(const State& start, double p1, double v1, const Limits& lim,
@@ -342,12 +373,14 @@ Status fastest_move(const State& start, double p1, double v1, const Limits& lim,
       std::abs(v1) > lim.v_max) {
     return Status::invalid_input;
   }
-  // The natural frame, and for targets at rest approached from the wrong side the reversed one
-  // (overshoot and return without a stop in between); the faster of the two.
+  // The natural frame, and for targets approached from the wrong side the reversed one (overshoot
+  // and return without a stop in between: to a target at rest, or one to be met moving back);
+  // the faster of the two.
   const double sign0 = natural_sign(start, p1, v1);
   double best = std::numeric_limits<double>::infinity();
   for (const double sign : {sign0, -sign0}) {
-    if (sign != sign0 && v1 != 0.0) break;
+    // (The reversed frame with v1 != 0: an arrival velocity pointing back from beyond the
+    // target; the natural frame then has f.v1 < 0 and is skipped.)
     const Frame f = frame_of(start, p1, v1, sign);
     if (f.v1 < 0.0) continue;
     // A target behind (d < 0) cannot be reached by a frame start that never moves backward

@@ -76,13 +76,32 @@ TEST_CASE("a stop-and-go that fills the distance dwells at rest for the remainin
   CHECK(end.v == 100.0);
 }
 
-TEST_CASE("a move that must reverse is not supported by the single-peak family") {
+TEST_CASE("a target at rest the start cannot stop before is met after an overshoot") {
   const Limits d{1000.0, 1000.0, 1000.0, 1e4};
   Move m;
-  // Moving fast toward a target 1 mm away, to be met at rest after 10 s: needs an overshoot.
-  CHECK(ncsim::jerk::move_of_duration(State{0.0, 1000.0, 0.0}, 1.0, 0.0, 10.0, d, m) ==
-        Status::not_supported);
+  // Moving fast toward a target 1 mm away, to be met at rest after 10 s: the natural frame's
+  // family has no level (min_single_peak_time < 0); the reversed frame overshoots and returns.
   CHECK(ncsim::jerk::min_single_peak_time(State{0.0, 1000.0, 0.0}, 1.0, 0.0, d) < 0.0);
+  REQUIRE(ncsim::jerk::move_of_duration(State{0.0, 1000.0, 0.0}, 1.0, 0.0, 10.0, d, m) ==
+          Status::ok);
+  CHECK(m.sign == -1.0);
+  CHECK(m.time() == doctest::Approx(10.0).epsilon(1e-12));
+  const State end = ncsim::jerk::end_state(State{0.0, 1000.0, 0.0}, m);
+  CHECK(end.p == doctest::Approx(1.0).epsilon(1e-12));
+  CHECK(end.v == 0.0);
+  // An arrival velocity needing a turn is the Reversal's (reversal_of_duration).
+  CHECK(ncsim::jerk::move_of_duration(State{0.0, 1000.0, 0.0}, 1.0, 500.0, 10.0, d, m) ==
+        Status::not_supported);
+  ncsim::jerk::Reversal r;
+  REQUIRE(ncsim::jerk::reversal_of_duration(State{0.0, 1000.0, 0.0}, 1.0, 500.0, 10.0, d, r) ==
+          Status::ok);
+  CHECK(r.time() == doctest::Approx(10.0).epsilon(1e-12));
+  const State turned =
+      ncsim::jerk::end_state(ncsim::jerk::end_state(State{0.0, 1000.0, 0.0}, r.out), r.back);
+  CHECK(turned.p == doctest::Approx(1.0).epsilon(1e-9));
+  CHECK(turned.v == 500.0);
+  CHECK(ncsim::jerk::reversal_of_duration(State{0.0, 1000.0, 0.0}, 1.0, 500.0, 0.1, d, r) ==
+        Status::too_short);
 }
 
 TEST_CASE("move_of_duration over seeded random cases: exact end, exact time, limits hold") {

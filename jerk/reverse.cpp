@@ -123,3 +123,57 @@ Status reversal_move(const State& start, double p1, double v1, const Limits& lim
 }
 
 }  // namespace ncsim::jerk
+
+namespace ncsim::jerk {
+
+Status reversal_of_duration(const State& start, double p1, double v1, double duration,
+                            const Limits& lim, Reversal& out) noexcept {
+  if (!std::isfinite(duration) || duration < 0.0) return Status::invalid_input;
+  Reversal fastest;
+  const Status st = reversal_move(start, p1, v1, lim, fastest);
+  if (st != Status::ok) return st;
+  const double t_min = fastest.time();
+  if (duration <= t_min) {
+    if (duration < t_min * (1.0 - 1e-12)) return Status::too_short;
+    out = fastest;
+    return Status::ok;
+  }
+  // Below the fastest turning level L_top every level still reaches the target (the detour
+  // shrinks as L falls); the rest of the way is cruised backward at L, so
+  // T(L) = ramps(L) + rest(L) / L, continuous, T(L_top) = t_min, unbounded as L -> 0 where the
+  // stop-and-go alone overshoots the target (rest(0) > 0). A root of T(L) = duration lies
+  // between L_top and the first halving of L that is too slow.
+  const double g = v1 > 0.0 ? 1.0 : -1.0;
+  const double d = g * (p1 - start.p);
+  const double tol_rest = 8.0 * kEps * std::abs(d);
+  Reversal r;
+  double last = -1.0;
+  const auto timed = [&](double level, double& slope) {
+    r = make(start, g, level, v1, lim);
+    last = level;
+    slope = std::numeric_limits<double>::quiet_NaN();
+    const double rest = reach(start, r, g) - d;
+    if (rest < -tol_rest) return -duration;  // beyond the fastest level: infeasible (fast side)
+    r.out.t_cruise = rest > tol_rest ? rest / level : 0.0;
+    return r.time() - duration;
+  };
+  const double l_top = fastest.out.v_level;
+  double slope = 0.0;
+  double l_low = l_top;
+  double t_low = 0.0;
+  for (int i = 0; i < 200; ++i) {
+    l_low *= 0.5;
+    t_low = timed(l_low, slope);
+    if (t_low > 0.0 || !(l_low > 0.0)) break;
+  }
+  if (!(t_low > 0.0)) return Status::not_supported;  // stop-and-go fills the way: no slower turn
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  // solve_with_slope wants g rising from x_neg to x_pos in value only (either order).
+  const double level = detail::solve_with_slope(l_top, l_low, t_min - duration, t_low, nan, nan,
+                                                8.0 * kEps * duration, timed);
+  if (last != level) timed(level, slope);
+  out = r;
+  return Status::ok;
+}
+
+}  // namespace ncsim::jerk
