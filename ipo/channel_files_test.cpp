@@ -15,6 +15,8 @@
 #include "ipo/channel_test_support.hpp"
 #include "ipo/program_source.hpp"
 #include "ipo/time.hpp"
+#include "scenario/loader.hpp"
+#include "scenario/player.hpp"
 
 namespace {
 
@@ -83,4 +85,30 @@ TEST_CASE(
     in_sub += c.file != 0 ? 1 : 0;
   }
   CHECK(in_sub > 0);
+}
+
+TEST_CASE(
+    "a scenario line event counts main-program lines only: a subroutine file's block of the same "
+    "number neither fires it nor counts as its pass") {
+  // sub_move.nc line 2 `G00 X[P1]` runs; the main program's line 2 is `P1 = 4` (no block that
+  // starts); the main's line 5 `G00 Y[P2] Z[V.P.LEN]` runs once.
+  const core::SourceFile file =
+      core::SourceFile::load(interp::test::source_root() / "interp/testdata/l_main.nc");
+  const machines::Machine& m = interp::test::machine("portal_3x");
+  const core::SourceFile toml("s.toml",
+                              "[[event]]\nline = 2\nve = { HIT = 1 }\n"
+                              "[[event]]\nline = 5\nve = { MAIN = 1 }\n");
+  scenario::LoadResult loaded = scenario::parse_scenario(toml);
+  REQUIRE(loaded.scenario);
+  interp::Interpreter in(file, m);
+  ipo::ProgramSource src(in, m);
+  scenario::Player player(*loaded.scenario);
+  src.answer_barriers_from(&player.ve(), true);
+  ipo::Channel ch(ipo::channel_config(m, 0.001), src);
+  ch.play(&player);
+  REQUIRE(ipo::test::run_to_end(ch, {}, 1'000'000) == ipo::Status::finished);
+  CHECK(player.passes(2) == 0);
+  CHECK(player.passes(5) == 1);
+  CHECK_FALSE(player.ve().read("HIT"));
+  CHECK(player.ve().read("MAIN") == 1.0);
 }

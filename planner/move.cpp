@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace ncsim::planner {
 
@@ -15,42 +16,56 @@ namespace {
   throw std::invalid_argument("planner: " + what);
 }
 
-void finite(double value, const std::string& field) {
-  if (!std::isfinite(value)) fail(field + " is not finite (" + std::to_string(value) + ")");
+/// A field's name for a message: a string, or a callable that builds it. validate(Move) runs
+/// for every block, so its names are built only when a check fails.
+template <class Name>
+std::string name_of(const Name& field) {
+  if constexpr (std::is_invocable_v<const Name&>)
+    return field();
+  else
+    return std::string(field);
 }
 
-void positive(double value, const std::string& field) {
+template <class Name>
+void finite(double value, const Name& field) {
+  if (!std::isfinite(value))
+    fail(name_of(field) + " is not finite (" + std::to_string(value) + ")");
+}
+
+template <class Name>
+void positive(double value, const Name& field) {
   finite(value, field);
-  if (value <= 0.0) fail(field + " must be > 0, got " + std::to_string(value));
+  if (value <= 0.0) fail(name_of(field) + " must be > 0, got " + std::to_string(value));
 }
 
 }  // namespace
 
 void validate(const Move& move) {
-  const std::string at = "line " + std::to_string(move.line) + ": ";
+  const auto at = [&move] { return "line " + std::to_string(move.line) + ": "; };
   if (move.axis_count == 0 || move.axis_count > kMaxAxes)
-    fail(at + "axis_count " + std::to_string(move.axis_count) + " outside 1.." +
+    fail(at() + "axis_count " + std::to_string(move.axis_count) + " outside 1.." +
          std::to_string(kMaxAxes));
   for (std::size_t i = 0; i < move.axis_count; ++i) {
-    finite(move.start[i], at + "start[" + std::to_string(i) + "]");
-    finite(move.end[i], at + "end[" + std::to_string(i) + "]");
+    finite(move.start[i], [&] { return at() + "start[" + std::to_string(i) + "]"; });
+    finite(move.end[i], [&] { return at() + "end[" + std::to_string(i) + "]"; });
   }
-  if (!move.rapid && !move.block_time) positive(move.feed, at + "feed");
-  if (move.block_time) positive(*move.block_time, at + "block_time (G93)");
+  if (!move.rapid && !move.block_time) positive(move.feed, [&] { return at() + "feed"; });
+  if (move.block_time) positive(*move.block_time, [&] { return at() + "block_time (G93)"; });
   if (move.end_feed) {
-    finite(*move.end_feed, at + "end_feed (E)");
-    if (*move.end_feed < 0.0) fail(at + "end_feed (E) < 0");
+    finite(*move.end_feed, [&] { return at() + "end_feed (E)"; });
+    if (*move.end_feed < 0.0) fail(at() + "end_feed (E) < 0");
   }
-  if (move.contour == Contour::tolerance) positive(move.path_dev, at + "path_dev (PATH_DEV)");
+  if (move.contour == Contour::tolerance)
+    positive(move.path_dev, [&] { return at() + "path_dev (PATH_DEV)"; });
   if (move.transvelmin) {
-    finite(*move.transvelmin, at + "transvelmin");
-    if (*move.transvelmin < 0.0) fail(at + "transvelmin < 0");
+    finite(*move.transvelmin, [&] { return at() + "transvelmin"; });
+    if (*move.transvelmin < 0.0) fail(at() + "transvelmin < 0");
   }
-  if (move.arc && move.spline) fail(at + "a move is an arc or a spline piece, not both");
+  if (move.arc && move.spline) fail(at() + "a move is an arc or a spline piece, not both");
   if (move.spline) {
     for (std::size_t i = 0; i < move.axis_count; ++i) {
-      finite(move.spline->c1[i], at + "spline c1[" + std::to_string(i) + "]");
-      finite(move.spline->c2[i], at + "spline c2[" + std::to_string(i) + "]");
+      finite(move.spline->c1[i], [&] { return at() + "spline c1[" + std::to_string(i) + "]"; });
+      finite(move.spline->c2[i], [&] { return at() + "spline c2[" + std::to_string(i) + "]"; });
     }
   }
   if (move.arc && move.arc_plane) {
@@ -58,35 +73,36 @@ void validate(const Move& move) {
     double uu = 0.0, vv = 0.0, uv = 0.0;
     for (std::size_t k = 0; k < 3; ++k) {
       if (g.axes[k] >= move.axis_count)
-        fail(at + "arc plane axis " + std::to_string(g.axes[k]) + " invalid for " +
+        fail(at() + "arc plane axis " + std::to_string(g.axes[k]) + " invalid for " +
              std::to_string(move.axis_count) + " axes");
-      finite(g.u[k], at + "arc plane u");
-      finite(g.v[k], at + "arc plane v");
-      finite(g.centre[k], at + "arc plane centre");
+      finite(g.u[k], [&] { return at() + "arc plane u"; });
+      finite(g.v[k], [&] { return at() + "arc plane v"; });
+      finite(g.centre[k], [&] { return at() + "arc plane centre"; });
       uu += g.u[k] * g.u[k];
       vv += g.v[k] * g.v[k];
       uv += g.u[k] * g.v[k];
     }
     if (g.axes[0] == g.axes[1] || g.axes[1] == g.axes[2] || g.axes[0] == g.axes[2])
-      fail(at + "arc plane axes not distinct");
+      fail(at() + "arc plane axes not distinct");
     if (std::abs(uu - 1.0) > 1e-9 || std::abs(vv - 1.0) > 1e-9 || std::abs(uv) > 1e-9)
-      fail(at + "arc plane u, v not orthonormal");
+      fail(at() + "arc plane u, v not orthonormal");
     double x = 0.0, y = 0.0;
     for (std::size_t k = 0; k < 3; ++k) {
       x += (move.start[g.axes[k]] - g.centre[k]) * g.u[k];
       y += (move.start[g.axes[k]] - g.centre[k]) * g.v[k];
     }
-    positive(std::hypot(x, y), at + "arc radius");
+    positive(std::hypot(x, y), [&] { return at() + "arc radius"; });
   } else if (move.arc) {
     const Arc& arc = *move.arc;
     if (arc.axis_1 >= move.axis_count || arc.axis_2 >= move.axis_count || arc.axis_1 == arc.axis_2)
-      fail(at + "arc plane axes " + std::to_string(arc.axis_1) + "/" + std::to_string(arc.axis_2) +
-           " invalid for " + std::to_string(move.axis_count) + " axes");
-    finite(arc.centre_1, at + "arc centre_1");
-    finite(arc.centre_2, at + "arc centre_2");
+      fail(at() + "arc plane axes " + std::to_string(arc.axis_1) + "/" +
+           std::to_string(arc.axis_2) + " invalid for " + std::to_string(move.axis_count) +
+           " axes");
+    finite(arc.centre_1, [&] { return at() + "arc centre_1"; });
+    finite(arc.centre_2, [&] { return at() + "arc centre_2"; });
     const double r =
         std::hypot(move.start[arc.axis_1] - arc.centre_1, move.start[arc.axis_2] - arc.centre_2);
-    positive(r, at + "arc radius");
+    positive(r, [&] { return at() + "arc radius"; });
   }
 }
 
