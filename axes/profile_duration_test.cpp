@@ -12,6 +12,7 @@
 
 #include "axes/profile.hpp"
 #include "jerk/jerk.hpp"
+#include "jerk/test_random.hpp"
 
 namespace {
 
@@ -22,10 +23,7 @@ using ncsim::axes::Profile;
 using ncsim::axes::ProfileRule;
 using ncsim::axes::Result;
 
-double log_uniform(std::mt19937_64& rng, double lo, double hi) {
-  std::uniform_real_distribution<double> u(std::log(lo), std::log(hi));
-  return std::exp(u(rng));
-}
+using ncsim::test::log_uniform;
 
 // Path limits on a grid: |v| <= V, A+ where the acceleration speeds the motion up, A- where it
 // slows it down (beyond them only what the start forces), |j| = J in every jerk phase.

@@ -11,6 +11,7 @@
 #include <random>
 
 #include "axes/profile.hpp"
+#include "jerk/test_random.hpp"
 
 namespace {
 
@@ -21,10 +22,7 @@ using ncsim::axes::Profile;
 using ncsim::axes::ProfileRule;
 using ncsim::axes::Result;
 
-double log_uniform(std::mt19937_64& rng, double lo, double hi) {
-  std::uniform_real_distribution<double> u(std::log(lo), std::log(hi));
-  return std::exp(u(rng));
-}
+using ncsim::test::log_uniform;
 
 // Reference, written apart from the kernel: S-ramp from rest to v (time, mean velocity v/2).
 double ref_ramp_time(double v, double a, double j) {

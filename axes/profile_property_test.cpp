@@ -15,6 +15,7 @@
 #include <string>
 
 #include "axes/profile.hpp"
+#include "jerk/test_random.hpp"
 
 namespace {
 
@@ -46,10 +47,7 @@ std::string describe(const Case& c) {
   return out.str();
 }
 
-double log_uniform(std::mt19937_64& rng, double lo, double hi) {
-  std::uniform_real_distribution<double> u(std::log(lo), std::log(hi));
-  return std::exp(u(rng));
-}
+using ncsim::test::log_uniform;
 
 // A start state inside the limits from which releasing the acceleration neither exceeds V nor
 // reverses the motion (the planner's contract for "limits hold"; other starts: own tests).

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "axes/profile.hpp"
+#include "jerk/test_random.hpp"
 
 namespace {
 
@@ -320,10 +321,7 @@ struct Ref {
   }
 };
 
-double log_uniform(std::mt19937_64& rng, double lo, double hi) {
-  std::uniform_real_distribution<double> u(std::log(lo), std::log(hi));
-  return std::exp(u(rng));
-}
+using ncsim::test::log_uniform;
 
 }  // namespace
 

@@ -13,14 +13,13 @@
 #include <random>
 #include <vector>
 
+#include "jerk/test_random.hpp"
+
 namespace {
 
 using ncsim::jerk::Ramp;
 
-double log_uniform(std::mt19937_64& rng, double lo, double hi) {
-  std::uniform_real_distribution<double> u(std::log(lo), std::log(hi));
-  return std::exp(u(rng));
-}
+using ncsim::test::log_uniform;
 
 struct Dyn {
   double v = 0.0;

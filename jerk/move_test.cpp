@@ -8,6 +8,7 @@
 #include <random>
 
 #include "jerk/jerk.hpp"
+#include "jerk/test_random.hpp"
 
 namespace {
 
@@ -16,10 +17,7 @@ using ncsim::jerk::Move;
 using ncsim::jerk::State;
 using ncsim::jerk::Status;
 
-double log_uniform(std::mt19937_64& rng, double lo, double hi) {
-  std::uniform_real_distribution<double> u(std::log(lo), std::log(hi));
-  return std::exp(u(rng));
-}
+using ncsim::test::log_uniform;
 
 // Independent minimum time of a change from rest to dv > 0 (textbook S-ramp).
 double rest_ramp_time(double dv, double a, double j) {
