@@ -21,12 +21,7 @@ namespace {
 
 using namespace ncsim;
 
-struct Run {
-  ipo::Status status = ipo::Status::finished;
-  std::vector<ipo::Cycle> cycles;
-  std::optional<ipo::RunTimeError> error;
-  ipo::Verdict verdict;
-};
+using Run = ipo::test::AuditedRun;
 
 // portal_3x with X homing to 100 at 50 mm/s, Y to 50 at 25 mm/s, Z to -20 at 10 mm/s.
 machines::Machine homing_machine() {
@@ -50,12 +45,7 @@ Run run(const std::string& program, const machines::Machine& m) {
   ipo::test::AuditedRecorder tee(&audit, &rec);
   ipo::Channel ch(std::move(cfg), src, &tee);
   src.answer_positions_from(&ch.axes().command);  // as run and time wire it
-  Run r;
-  r.status = ipo::test::run_to_end(ch);
-  r.cycles = std::move(rec.cycles);
-  r.error = ch.run_time_error();
-  r.verdict = audit.verdict();
-  return r;
+  return ipo::test::finish(ch, rec, audit);
 }
 
 // Index of the first cycle in which axis `i` moves (|v| > 0), or cycles.size().

@@ -24,12 +24,7 @@ using namespace ncsim;
 
 using ipo::test::Recorder;
 
-struct Run {
-  ipo::Status status = ipo::Status::finished;
-  std::vector<ipo::Cycle> cycles;
-  std::optional<ipo::RunTimeError> error;
-  ipo::Verdict verdict;
-};
+using Run = ipo::test::AuditedRun;
 
 // Runs `program` on portal_3x (1 ms); before the first cycle axis `axis` gets `move`.
 Run run(const std::string& program, std::size_t axis, const ipo::IndpMove& move) {
@@ -43,12 +38,7 @@ Run run(const std::string& program, std::size_t axis, const ipo::IndpMove& move)
   ipo::test::AuditedRecorder tee(&audit, &rec);
   ipo::Channel ch(std::move(cfg), src, &tee);
   REQUIRE_FALSE(ch.indp().command(axis, move));
-  Run r;
-  r.status = ipo::test::run_to_end(ch);
-  r.cycles = std::move(rec.cycles);
-  r.error = ch.run_time_error();
-  r.verdict = audit.verdict();
-  return r;
+  return ipo::test::finish(ch, rec, audit);
 }
 
 ipo::IndpMove to(double target, double feed) {

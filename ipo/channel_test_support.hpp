@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -52,6 +53,24 @@ inline Status run_to_end(Channel& ch, const std::function<void()>& after_step = 
     if (after_step) after_step();
   }
   return status;
+}
+
+/// What a test reads back from an audited run: the end, every cycle, the error, the verdict.
+struct AuditedRun {
+  Status status = Status::finished;
+  std::vector<Cycle> cycles;
+  std::optional<RunTimeError> error;
+  Verdict verdict;
+};
+
+/// Steps `ch` to its end (run_to_end) and collects what `rec` recorded and `audit` judged.
+inline AuditedRun finish(Channel& ch, Recorder& rec, const Audit& audit) {
+  AuditedRun r;
+  r.status = run_to_end(ch);
+  r.cycles = std::move(rec.cycles);
+  r.error = ch.run_time_error();
+  r.verdict = audit.verdict();
+  return r;
 }
 
 /// A program on a channel with a conveyor: the source file, the interpreter, the adapter and the
