@@ -337,7 +337,8 @@ Status Channel::step_program() noexcept {
   const Cycle& c = ipo_.cycle();
   driven_ = 0;                                                                  // --- workspace
   if (failed_) return stop(failed_->first, std::move(failed_->second), c, -1);  // --- operator
-  if (player_ != nullptr && c.held && !player_->more_to_come())  // --- operator: no endless hold
+  // --- operator: no endless hold; --- workspace: unless the hold waits for the belt (NC9081)
+  if (player_ != nullptr && c.held && !player_->more_to_come() && !workspace_hold_waits())
     return stop(kHeldForeverId,
                 ipo_.feed_hold() ? "the path stands by feed hold and no later scenario event "
                                    "releases it: the run would never end"
@@ -365,7 +366,8 @@ Status Channel::step_program() noexcept {
   }
   if (!map_to_axes(c)) return Status::error;
   if (sync_ && !sync_check_workspace(c)) return Status::error;  // --- conveyor-sync
-  if (sync_) sync_workspace_cap(c);  // --- workspace: the hold against the conveying direction
+  // --- workspace: the hold against the conveying direction
+  if (sync_ && !sync_workspace_cap(c)) return Status::error;
   if (!in_exact_stop_ && ipo_.holding_exact_stop()) {
     // The command reached the end of a G60 / G360 block in this cycle (001 l.149: t_1).
     in_exact_stop_ = true;

@@ -89,6 +89,10 @@ inline constexpr const char* kOverrideRangeId = "NC6102";
 /// it (the run would never end). --- operator
 inline constexpr const char* kHeldForeverId = "NC6301";
 
+/// NC9081: the belt stood while the workspace hold kept the tool at the hold line for longer
+/// than ChannelConfig::measured_value_wait_max (the belt was not restarted). --- workspace
+inline constexpr const char* kHoldBeltStoodId = "NC9081";
+
 /// NC9054: #SYNC IN waited longer than ChannelConfig::measured_value_wait_max for its measured
 /// value (no workpiece edge latched).
 inline constexpr const char* kMeasuredValueWaitId = "NC9054";
@@ -321,8 +325,13 @@ class Channel {
   EventOutcome on_homing(const interp::Homing& command, const ChannelEvent& e) noexcept;
   std::optional<int> homing_order_;          ///< the order number homing now; empty: none started
   std::optional<double> operator_override_;  ///< the override before the static unit took it
-  /// --- workspace: gives the interpolator the hold's path velocity cap (channel_workspace.cpp).
-  void sync_workspace_cap(const Cycle& c) noexcept;
+  /// --- workspace: gives the interpolator the hold's path velocity cap (channel_workspace.cpp);
+  /// false: NC9081 (the belt stood under the hold longer than ncsim's wait limit).
+  bool sync_workspace_cap(const Cycle& c) noexcept;
+  /// --- workspace: the hold caps the path at 0 (the belt stands): the tool waits for the belt,
+  /// not for the operator (no NC6301).
+  bool workspace_hold_waits() const noexcept;
+  std::uint64_t hold_stood_ = 0;  ///< --- workspace: cycles the belt stood under the hold
   // --- workspace: after an error while synchronised (channel_sync_error.cpp)
   /// One cycle of the program (the channel loop before an error kept synchronisation).
   Status step_program() noexcept;

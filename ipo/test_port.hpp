@@ -17,6 +17,7 @@ class FakePort final : public ncsim::conveyor::Port {
   explicit FakePort(double v) : v_(v) {}
   void step(double t) noexcept override {
     if (v_change_at_ && steps_ + 1 == *v_change_at_) v_ = v_new_;
+    if (v_change2_at_ && steps_ + 1 == *v_change2_at_) v_ = v_new2_;
     p_ += v_ * (t - t_);
     t_ = t;
     state_ = ncsim::conveyor::BeltState{p_, v_, 0.0};
@@ -45,9 +46,11 @@ class FakePort final : public ncsim::conveyor::Port {
   double p_ = 0.0;  ///< belt position [mm]
   double t_ = 0.0;  ///< time of the last step [s]
   long steps_ = 0;
-  std::optional<long> latch_at_;     ///< at this step the belt's position is latched
-  std::optional<long> v_change_at_;  ///< from this step on the belt moves at v_new_
-  double v_new_ = 0.0;               ///< [mm/s]
+  std::optional<long> latch_at_;      ///< at this step the belt's position is latched
+  std::optional<long> v_change_at_;   ///< from this step on the belt moves at v_new_
+  double v_new_ = 0.0;                ///< [mm/s]
+  std::optional<long> v_change2_at_;  ///< from this step on the belt moves at v_new2_
+  double v_new2_ = 0.0;               ///< [mm/s]
   ncsim::conveyor::BeltState state_;
 };
 
