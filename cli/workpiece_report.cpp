@@ -18,12 +18,8 @@ WorkpieceReport::WorkpieceReport(bool json) : json_(json), spool_(std::tmpfile()
 void WorkpieceReport::on_row(const ipo::WorkpieceCycle& r) {
   std::string s;
   if (json_) {
-    s = std::string(rows_ == 0 ? "" : ",") + "{\"index\":" + std::to_string(r.index) +
-        ",\"workpiece\":" + std::to_string(r.workpiece) + ",\"t_start_s\":" + num(r.t_start) +
-        ",\"waiting_s\":" + num(r.waiting) + ",\"catch_up_s\":" + num(r.catch_up) +
-        ",\"machining_s\":" + num(r.machining) + ",\"desync_s\":" + num(r.desync) +
-        ",\"off_belt_s\":" + num(r.off_belt) + ",\"total_s\":" + num(r.total) +
-        ",\"complete\":" + (r.complete ? "true" : "false") + "}";
+    if (rows_ != 0) s += ',';
+    ipo::append_json(s, r);
   } else {
     s = "workpiece " + std::to_string(r.index);
     if (r.workpiece != 0) s += " [#" + std::to_string(r.workpiece) + "]";
@@ -49,13 +45,10 @@ bool WorkpieceReport::finish(const ipo::WorkpieceSummary& w, std::ostream& out) 
     failed_ = true;
   }
   if (json_) {
-    out << "],\"workpiece_summary\":{\"workpieces\":" << w.workpieces
-        << ",\"complete\":" << w.complete << ",\"lead_in_s\":" << num(w.lead_in)
-        << ",\"waiting_s\":" << num(w.sum.waiting) << ",\"catch_up_s\":" << num(w.sum.catch_up)
-        << ",\"machining_s\":" << num(w.sum.machining) << ",\"desync_s\":" << num(w.sum.desync)
-        << ",\"off_belt_s\":" << num(w.sum.off_belt) << ",\"total_s\":" << num(w.sum.total)
-        << ",\"total_min_s\":" << num(w.total_min) << ",\"total_max_s\":" << num(w.total_max)
-        << ",\"per_minute\":" << num(w.per_minute) << '}';
+    out << "],\"workpiece_summary\":";
+    std::string summary;
+    ipo::append_json(summary, w);
+    out << summary;
   } else {
     out << "workpieces: " << w.complete << " complete of " << w.workpieces << "; lead-in "
         << human(w.lead_in) << " s; waiting " << human(w.sum.waiting) << " s, catch-up "

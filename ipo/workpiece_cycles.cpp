@@ -2,11 +2,72 @@
 
 #include "ipo/workpiece_cycles.hpp"
 
+#include <array>
+#include <charconv>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 namespace ncsim::ipo {
+
+namespace {
+
+/// `"key":value`, the value the shortest text that reads back to the same double (null when
+/// not finite: JSON has no inf / nan).
+void field(std::string& out, const char* key, double v) {
+  out += '"';
+  out += key;
+  out += "\":";
+  if (!std::isfinite(v)) {
+    out += "null";
+    return;
+  }
+  std::array<char, 32> buf{};
+  const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
+  out.append(buf.data(), r.ptr);
+}
+
+/// The five phases and their total, `"waiting_s":..,...,"total_s":..`.
+void phases(std::string& out, const WorkpieceCycle& r) {
+  field(out, "waiting_s", r.waiting);
+  out += ',';
+  field(out, "catch_up_s", r.catch_up);
+  out += ',';
+  field(out, "machining_s", r.machining);
+  out += ',';
+  field(out, "desync_s", r.desync);
+  out += ',';
+  field(out, "off_belt_s", r.off_belt);
+  out += ',';
+  field(out, "total_s", r.total);
+}
+
+}  // namespace
+
+void append_json(std::string& out, const WorkpieceCycle& row) {
+  out += "{\"index\":" + std::to_string(row.index) +
+         ",\"workpiece\":" + std::to_string(row.workpiece) + ',';
+  field(out, "t_start_s", row.t_start);
+  out += ',';
+  phases(out, row);
+  out += std::string(",\"complete\":") + (row.complete ? "true" : "false") + '}';
+}
+
+void append_json(std::string& out, const WorkpieceSummary& summary) {
+  out += "{\"workpieces\":" + std::to_string(summary.workpieces) +
+         ",\"complete\":" + std::to_string(summary.complete) + ',';
+  field(out, "lead_in_s", summary.lead_in);
+  out += ',';
+  phases(out, summary.sum);
+  out += ',';
+  field(out, "total_min_s", summary.total_min);
+  out += ',';
+  field(out, "total_max_s", summary.total_max);
+  out += ',';
+  field(out, "per_minute", summary.per_minute);
+  out += '}';
+}
 
 WorkpieceCycles::WorkpieceCycles(double t_cycle, std::function<void(const WorkpieceCycle&)> on_row)
     : t_(t_cycle), on_row_(std::move(on_row)) {

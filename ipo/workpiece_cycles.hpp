@@ -20,9 +20,12 @@
 // Invariants: lead_in + sum of every row's total == cycles added * T (to rounding); a row's
 // total == waiting + catch_up + machining + desync + off_belt. Memory is O(1): rows stream
 // out through the callback and are never stored, whatever the number of workpieces.
+// JSON: append_json() is the one form of a row and of the summary, in `ncsim time --json` and
+// in the report's data (times in s with an `_s` suffix, shortest round-trip numbers).
 
 #include <cstdint>
 #include <functional>
+#include <string>
 
 #include "ipo/conveyor_sync.hpp"
 
@@ -55,6 +58,14 @@ struct WorkpieceSummary {
   /// 60 x complete / (sum of the complete rows' totals) [1/min]; 0 without a complete row.
   double per_minute = 0.0;
 };
+
+/// Appends the row as a JSON object: {"index", "workpiece", "t_start_s", "waiting_s",
+/// "catch_up_s", "machining_s", "desync_s", "off_belt_s", "total_s", "complete"}.
+void append_json(std::string& out, const WorkpieceCycle& row);
+/// Appends the summary as a JSON object: {"workpieces", "complete", "lead_in_s", "waiting_s",
+/// "catch_up_s", "machining_s", "desync_s", "off_belt_s", "total_s" (the sums), "total_min_s",
+/// "total_max_s", "per_minute"}.
+void append_json(std::string& out, const WorkpieceSummary& summary);
 
 class WorkpieceCycles {
  public:

@@ -7,14 +7,18 @@
 #include <doctest/doctest.h>
 
 #include <cstdint>
+#include <limits>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace {
 
+using ncsim::ipo::append_json;
 using ncsim::ipo::SyncPhase;
 using ncsim::ipo::WorkpieceCycle;
 using ncsim::ipo::WorkpieceCycles;
+using ncsim::ipo::WorkpieceSummary;
 
 constexpr double kT = 0.001;
 
@@ -136,4 +140,37 @@ TEST_CASE("workpiece cycles (seeded property): every cycle is counted once, in o
     CHECK(s.lead_in + rows_total == doctest::Approx(static_cast<double>(cycles) * kT));
     CHECK(s.sum.total == doctest::Approx(rows_total));
   }
+}
+
+TEST_CASE("workpiece cycles: the JSON of a row and of the summary, exact numbers, null for inf") {
+  WorkpieceCycle r;
+  r.index = 2;
+  r.workpiece = 7;
+  r.t_start = 0.1;
+  r.waiting = 0.25;
+  r.catch_up = 1.0 / 3.0;
+  r.machining = 6.0;
+  r.total = 0.25 + 1.0 / 3.0 + 6.0;
+  r.complete = true;
+  std::string s;
+  append_json(s, r);
+  CHECK(s ==
+        "{\"index\":2,\"workpiece\":7,\"t_start_s\":0.1,\"waiting_s\":0.25,"
+        "\"catch_up_s\":0.3333333333333333,\"machining_s\":6,\"desync_s\":0,\"off_belt_s\":0,"
+        "\"total_s\":6.583333333333333,\"complete\":true}");
+  WorkpieceSummary w;
+  w.workpieces = 3;
+  w.complete = 2;
+  w.lead_in = 0.5;
+  w.sum = r;
+  w.total_min = 5.0;
+  w.total_max = 6.583333333333333;
+  w.per_minute = std::numeric_limits<double>::infinity();
+  s.clear();
+  append_json(s, w);
+  CHECK(s ==
+        "{\"workpieces\":3,\"complete\":2,\"lead_in_s\":0.5,\"waiting_s\":0.25,"
+        "\"catch_up_s\":0.3333333333333333,\"machining_s\":6,\"desync_s\":0,\"off_belt_s\":0,"
+        "\"total_s\":6.583333333333333,\"total_min_s\":5,\"total_max_s\":6.583333333333333,"
+        "\"per_minute\":null}");
 }

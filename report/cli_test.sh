@@ -8,23 +8,8 @@ set -uo pipefail
 ncsim=$1
 fixtures=$2
 programs=$fixtures/../../programs
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
 # shellcheck source=../tests/cli/expect.sh
 source "$(dirname "$0")/../tests/cli/expect.sh"
-
-# holds NAME COMMAND...: a condition on the files written (a command that succeeds).
-holds() {
-  local name=$1
-  shift
-  checks=$((checks + 1))
-  if "$@"; then
-    echo "ok   $name"
-  else
-    failures=$((failures + 1))
-    echo "FAIL $name"
-  fi
-}
 
 expect "report exits 0 and prints where the page is" 0 "^report: $work/a.html\$" '' -- \
   report "$fixtures/clean.nc" -o "$work/a.html"
@@ -64,7 +49,11 @@ holds "the conveyor page has the workspace and pos_limit of laser_portal" \
   "$work/conv.html"
 
 holds "the conveyor page has three complete workpiece rows" \
-  grep -q '"workpieces":{"count":3,"complete":3,' "$work/conv.html"
+  grep -q '"workpieces":{"summary":{"workpieces":3,"complete":3,' "$work/conv.html"
+summary=$("$ncsim" time "$programs/conveyor_squares/conveyor_squares.nc" --json |
+  grep -o '"workpiece_summary":{[^}]*}' | sed 's/^"workpiece_summary"://')
+holds "the page's time per workpiece is time --json's, to the byte" \
+  grep -qF "\"workpieces\":{\"summary\":$summary,\"rows\":[{\"index\":1," "$work/conv.html"
 
 expect "an unwritable page exits 2 with NC8100 naming the file" 2 '' \
   "cannot write the report '$work/no/such/dir/x\.html\.tmp' \[NC8100\]" -- \
@@ -73,5 +62,4 @@ expect "an empty -o exits 2 with NC8101" 2 '' 'NC8101' -- report "$fixtures/clea
 expect "a missing program exits 2" 2 '' '' -- report "$work/missing.nc" -o "$work/m.html"
 holds "a missing program writes no page" test ! -e "$work/m.html"
 
-echo "report cli: $checks checks, $failures failed"
-((failures == 0))
+summary "report cli"

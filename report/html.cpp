@@ -129,40 +129,13 @@ std::string json(const ReportData& d) {
   }
   key(s, "workpieces");
   if (d.workpieces) {
-    const ipo::WorkpieceSummary& w = *d.workpieces;
-    const auto row = [&s](const ipo::WorkpieceCycle& r) {
-      s += "{\"index\":" + std::to_string(r.index) +
-           ",\"workpiece\":" + std::to_string(r.workpiece) + ",\"t_start\":";
-      exact(s, r.t_start);
-      s += ",\"waiting\":";
-      exact(s, r.waiting);
-      s += ",\"catch_up\":";
-      exact(s, r.catch_up);
-      s += ",\"machining\":";
-      exact(s, r.machining);
-      s += ",\"desync\":";
-      exact(s, r.desync);
-      s += ",\"off_belt\":";
-      exact(s, r.off_belt);
-      s += ",\"total\":";
-      exact(s, r.total);
-      s += std::string(",\"complete\":") + (r.complete ? "true" : "false") + '}';
-    };
-    s += "{\"count\":" + std::to_string(w.workpieces) +
-         ",\"complete\":" + std::to_string(w.complete) + ",\"lead_in\":";
-    exact(s, w.lead_in);
-    s += ",\"total_min\":";
-    exact(s, w.total_min);
-    s += ",\"total_max\":";
-    exact(s, w.total_max);
-    s += ",\"per_minute\":";
-    exact(s, w.per_minute);
-    s += ",\"sum\":";
-    row(w.sum);
+    // The same objects as `ncsim time --json` (ipo::append_json).
+    s += "{\"summary\":";
+    ipo::append_json(s, *d.workpieces);
     s += ",\"rows\":[";
     for (std::size_t k = 0; k < d.workpiece_rows.size(); ++k) {
       if (k > 0) s += ',';
-      row(d.workpiece_rows[k]);
+      ipo::append_json(s, d.workpiece_rows[k]);
     }
     s += "]},";
   } else {

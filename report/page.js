@@ -367,22 +367,25 @@
   status.dataset.workspace = D.workspace ? '1' : '0';
 
   // --- Per workpiece (ipo::WorkpieceCycles: one row per #SYNC IN).
+  // The same objects as `ncsim time --json`: {summary, rows}, times in s.
   var WP = D.workpieces;
   if (WP) {
+    var S = WP.summary;
     el('h2', root, 'Per workpiece');
-    el('p', root, WP.count + ' workpieces (' + WP.complete + ' reached #SYNC OUT), ' +
-       fmt(WP.per_minute) + ' per minute; cycle ' + fmt(WP.total_min) + ' .. ' +
-       fmt(WP.total_max) + ' s; lead-in before the first #SYNC IN ' + fmt(WP.lead_in) + ' s' +
-       (WP.rows.length < WP.count ? '; the first ' + WP.rows.length + ' rows listed' : ''),
+    el('p', root, S.workpieces + ' workpieces (' + S.complete + ' reached #SYNC OUT), ' +
+       fmt(S.per_minute) + ' per minute; cycle ' + fmt(S.total_min_s) + ' .. ' +
+       fmt(S.total_max_s) + ' s; lead-in before the first #SYNC IN ' + fmt(S.lead_in_s) + ' s' +
+       (WP.rows.length < S.workpieces ? '; the first ' + WP.rows.length + ' rows listed' : ''),
        'note');
     var wrow = function (r, first) {
-      return [first, r.workpiece || '\u2013', fmt(r.t_start, 9), fmt(r.waiting), fmt(r.catch_up),
-              fmt(r.machining), fmt(r.desync), fmt(r.off_belt), fmt(r.total)];
+      return [first, r.workpiece || '\u2013', fmt(r.t_start_s, 9), fmt(r.waiting_s),
+              fmt(r.catch_up_s), fmt(r.machining_s), fmt(r.desync_s), fmt(r.off_belt_s),
+              fmt(r.total_s)];
     };
     table(root, ['#', 'workpiece', 'start [s]', 'waiting [s]', 'catch-up [s]', 'machining [s]',
                  'desync [s]', 'off belt [s]', 'total [s]'],
           WP.rows.map(function (r) { return wrow(r, r.index + (r.complete ? '' : ' (incomplete)')); })
-            .concat([wrow(WP.sum, 'sum')]), [0]);
+            .concat([wrow(S, 'sum')]), [0]);
   }
   status.dataset.workpieces = WP ? String(WP.rows.length) : '0';
 
