@@ -3,10 +3,6 @@
 set -uo pipefail
 ncsim=$1
 fixtures=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-checks=0
 
 # expect, same: tests/cli/expect.sh.
 source "$(dirname "${BASH_SOURCE[0]}")/expect.sh"
@@ -392,5 +388,4 @@ printf '%%h\n#TRAFO ON\nG74 X1\nM30\n' >"$work/g74_trafo.nc"
 expect "G74 with an active coupling is 20137 at its line" 1 '' \
   'g74_trafo\.nc:3:1: error: .*\[20137\]' -- check --machine "$root/machines/delta_picker" "$work/g74_trafo.nc"
 
-echo "cli: $((checks - failures)) passed, $failures failed"
-((failures == 0))
+summary cli

@@ -1,6 +1,11 @@
-# tests/cli/expect.sh: helpers shared by the shell tests of the ncsim command (cli_test.sh,
-# tests/golden/golden_cli_test.sh). Source it after setting `ncsim` (the binary) and `work` (a
-# scratch folder); it counts in `checks` and `failures`.
+# tests/cli/expect.sh: the preamble and helpers of the shell tests of the ncsim command
+# (tests/cli/*_test.sh, tests/golden/golden_cli_test.sh, report/cli_test.sh). Source it after
+# setting `ncsim` (the binary). It makes `work`, a scratch folder removed at exit (unless the
+# test set one), and counts in `checks` and `failures`; `summary NAME` ends the test.
+if [[ -z ${work:-} ]]; then
+  work=$(mktemp -d)
+  trap 'rm -rf "$work"' EXIT
+fi
 checks=${checks:-0}
 failures=${failures:-0}
 
@@ -36,4 +41,23 @@ same() {
     echo "FAIL $1"
     diff "$2" "$3" | head -20
   fi
+}
+
+# holds NAME COMMAND...: a condition on the files written (a command that succeeds).
+holds() {
+  local name=$1
+  shift
+  checks=$((checks + 1))
+  if "$@"; then
+    echo "ok   $name"
+  else
+    failures=$((failures + 1))
+    echo "FAIL $name"
+  fi
+}
+
+# summary NAME: the last line of a test: the counts, and the status (0 when nothing failed).
+summary() {
+  echo "$1: $((checks - failures)) passed, $failures failed"
+  ((failures == 0))
 }

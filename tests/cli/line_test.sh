@@ -5,10 +5,6 @@
 set -uo pipefail
 ncsim=$1
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-checks=0
 source "$(dirname "${BASH_SOURCE[0]}")/expect.sh"
 squares=$root/programs/conveyor_squares/conveyor_squares.nc
 comoving=$root/programs/synchro_lag_comoving/synchro_lag_comoving.nc
@@ -77,5 +73,4 @@ expect "tune-delay: the static unit's synchro_lag listing gets dead time + filte
 expect "tune-delay: a machine without conveyor tracking: NC9126, exit 2" 2 '' '\[NC9126\]' -- \
   tune-delay --machine "$root/machines/portal_3x" "$squares"
 
-echo "line: $((checks - failures)) passed, $failures failed"
-((failures == 0))
+summary line

@@ -3,10 +3,6 @@
 # (docs/golden.md) on a small program library made in a temporary folder.
 set -uo pipefail
 ncsim=$1
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-failures=0
-checks=0
 
 # expect, same: shared with tests/cli/cli_test.sh.
 source "$(dirname "${BASH_SOURCE[0]}")/../cli/expect.sh"
@@ -110,5 +106,4 @@ cp "$work/moved.golden" "$g"
 expect "one mismatch fails the library check" 1 'golden: 2 programs, 1 ok, 1 mismatched' '' -- \
   golden check --programs "$lib"
 
-echo "golden_cli_tests: $checks checks, $failures failed"
-((failures == 0))
+summary golden_cli
