@@ -29,7 +29,7 @@ StopPoint stop_point(const MotionState& start, const Dynamics& dyn) noexcept;
 double rest_to_rest_fastest_time(double dist, const Dynamics& dyn) noexcept;
 
 /// Lower bound [s] of "stop, then the fastest move from rest to the target" (plan_fastest's
-/// candidate 4).
+/// candidate 4) for a target at rest; 0 for an arrival velocity.
 double stop_then_go_bound(const MotionState& start, const PositionTarget& target,
                           const Dynamics& dyn) noexcept;
 
