@@ -16,6 +16,7 @@
 
 #include "axes/profile.hpp"
 #include "axes/profile_builder.hpp"
+#include "axes/profile_classify.hpp"
 
 namespace ncsim::axes {
 
@@ -139,6 +140,9 @@ Result plan_position(const MotionState& start, const PositionTarget& target, con
     bool direct = false;
     const bool found = detail::plan_fastest(start, target, dyn, out, direct);
     if (found && (direct || (target.v == 0.0 && inside_limits(start, dyn)))) return Result::ok;
+    // --- ptp-speed: the manual's stop-and-return skipped where its lower bound shows it cannot
+    // be faster (axes/profile_classify.hpp).
+    if (found && detail::manual_bound(start, target, dyn) >= out.duration()) return Result::ok;
     Profile manual;
     plan_position(start, target, dyn, manual, ProfileRule::manual);
     if (!found || manual.duration() < out.duration()) out = manual;

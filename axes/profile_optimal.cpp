@@ -14,6 +14,7 @@
 
 #include "axes/profile.hpp"
 #include "axes/profile_builder.hpp"
+#include "axes/profile_classify.hpp"
 
 namespace ncsim::axes {
 
@@ -106,6 +107,17 @@ void append_rest_to_rest_fastest(ProfileBuilder& b, double p_target, const Dynam
 
 }  // namespace
 
+double rest_to_rest_fastest_time(double dist, const Dynamics& dyn) noexcept {
+  // The durations append_rest_to_rest_fastest plans (without a profile).
+  if (!(dist > 0.0)) return 0.0;
+  const double vm = std::min(dyn.v_max, rest_to_rest_level(dist, dyn));
+  const double j = dyn.j_max;
+  const double d_cruise = dist - ramp_distance(vm, dyn.a_max, j) - ramp_distance(vm, dyn.d_max, j);
+  const double t_cruise = d_cruise > 0.0 ? d_cruise / vm : 0.0;
+  return velocity_ramp(0.0, 0.0, vm, dyn.a_max, dyn.d_max, j).time() + t_cruise +
+         velocity_ramp(vm, 0.0, 0.0, dyn.a_max, dyn.d_max, j).time();
+}
+
 bool plan_fastest(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
                   Profile& out, bool& direct) noexcept {
   direct = false;
@@ -162,6 +174,8 @@ bool plan_fastest(const MotionState& start, const PositionTarget& target, const 
   // Candidate 4 (starts moving away): stop with A-, then the fastest move from rest; a
   // reversing ramp can only use min(A+, A-) across v = 0, so the stop can be faster.
   if (direct || (start.v == 0.0 && start.a == 0.0)) return found;
+  // --- ptp-speed: skipped where its lower bound shows it cannot be faster (profile_classify).
+  if (found && stop_then_go_bound(start, target, dyn) >= out.duration()) return found;
   Profile alt;
   ProfileBuilder b(alt, start);
   append_stop(b, dyn);

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <limits>
 
+#include "jerk/crossing.hpp"
 #include "jerk/jerk.hpp"
 #include "jerk/root.hpp"
 
@@ -32,6 +33,7 @@ struct Frame {
   double a0 = 0.0;
   double v1 = 0.0;
   double d = 0.0;
+  detail::CrossingStart cs;  // the start's part of a crossing through v = 0 (jerk/crossing.hpp)
 };
 
 // The natural frame: toward the target, else the direction of arrival or of motion.
@@ -45,12 +47,14 @@ double natural_sign(const State& start, double p1, double v1) noexcept {
 
 // Frame with the given sign; its distance d is negative when the target lies behind (a move
 // that overshoots and comes back at a level vm >= 0 in this frame).
-Frame frame_of(const State& start, double p1, double v1, double sign) noexcept {
-  return Frame{sign, sign * start.v, sign * start.a, sign * v1, sign * (p1 - start.p)};
+Frame frame_of(const State& start, double p1, double v1, double sign, const Limits& lim) noexcept {
+  Frame f{sign, sign * start.v, sign * start.a, sign * v1, sign * (p1 - start.p), {}};
+  if (f.v0 < 0.0 || f.a0 < 0.0) f.cs = detail::crossing_start(f.v0, f.a0, lim, true);
+  return f;
 }
 
-Frame frame_of(const State& start, double p1, double v1) noexcept {
-  return frame_of(start, p1, v1, natural_sign(start, p1, v1));
+Frame frame_of(const State& start, double p1, double v1, const Limits& lim) noexcept {
+  return frame_of(start, p1, v1, natural_sign(start, p1, v1), lim);
 }
 
 struct Level {
@@ -78,8 +82,10 @@ double level_slope(const Level& lv, double vm, double j) noexcept {
   return vm / p1 - vm / p2 + (std::abs(p1) + std::abs(p2)) / (2.0 * j);
 }
 
-Level level(const Frame& f, double vm, const Limits& lim) noexcept {
-  Level out;
+// Evaluates the level vm into `out` (every member written: the root searches evaluate many
+// levels into one Level without constructing and copying a new one each time).
+void level_into(const Frame& f, double vm, const Limits& lim, Level& out) noexcept {
+  out.cross = Crossing{};
   out.second = velocity_ramp(vm, 0.0, f.v1, lim.a_max, lim.d_max, lim.j_max);
   out.dist = distance(vm, 0.0, out.second);
   out.path = std::abs(out.dist);
@@ -87,17 +93,16 @@ Level level(const Frame& f, double vm, const Limits& lim) noexcept {
   // after it: the crossing ramp switches the limit at v = 0. Where it does not apply (a start
   // acceleration beyond A- or one forcing more than min(A+, A-) at v = 0), one ramp under the
   // smaller limit.
+  // (The start's part of the crossing is prepared once per frame: frame_of.)
+  double d_cross = 0.0;
   if ((f.v0 < 0.0 || f.a0 < 0.0) && vm > 0.0 &&
-      crossing_ramp(f.v0, f.a0, vm, lim, out.cross, out.first)) {
-    State st{0.0, f.v0, f.a0};
-    for (std::size_t i = 0; i < 3; ++i)
-      st = advance(st, out.cross.jerk[i], out.cross.duration[i]);
+      detail::crossing_from(f.cs, vm, lim, out.cross, out.first, &d_cross)) {
     const double d_first = distance(0.0, out.cross.a_zero, out.first);
-    out.dist += st.p + d_first;
-    out.path += std::abs(st.p) + std::abs(d_first);
+    out.dist += d_cross + d_first;
+    out.path += std::abs(d_cross) + std::abs(d_first);
     out.t_ramp = out.cross.time() + out.first.time() + out.second.time();
     out.slope = level_slope(out, vm, lim.j_max);
-    return out;
+    return;
   }
   // (A stop from v0 < 0 only slows down: A-.)
   const double a_up =
@@ -108,6 +113,11 @@ Level level(const Frame& f, double vm, const Limits& lim) noexcept {
   out.path += std::abs(d_first);
   out.t_ramp = out.first.time() + out.second.time();
   out.slope = level_slope(out, vm, lim.j_max);
+}
+
+Level level(const Frame& f, double vm, const Limits& lim) noexcept {
+  Level out;
+  level_into(f, vm, lim, out);
   return out;
 }
 
@@ -148,12 +158,12 @@ double top_level(const Frame& f, const Limits& lim, Level& out) noexcept {
   // The last level evaluated is kept: the root solver usually returns it.
   double last_vm = -1.0;
   const auto g = [&](double vm) {
-    out = level(f, vm, lim);
+    level_into(f, vm, lim, out);
     last_vm = vm;
     return out.dist - f.d;
   };
   const auto answer = [&](double vm) {
-    if (vm != last_vm) out = level(f, vm, lim);
+    if (vm != last_vm) level_into(f, vm, lim, out);
     return vm;
   };
   const auto gs = [&](double vm, double& slope) {
@@ -233,49 +243,14 @@ bool crossing_ramp(double v0, double a0, double v1, const Limits& lim, Crossing&
   // a_z, with the gain (2 a_p^2 - a0^2 - a_z^2) / (2J) [+ hold] = |v0|.
   // A forward start whose acceleration reverses the motion (v_zero < 0) crosses v = 0 twice;
   // the same phases apply (the jerk-up from a0 < 0 passes a = 0 at v = v_zero < 0).
-  const double j = lim.j_max;
-  if (!(v1 > 0.0) || !(v0 < 0.0 || v0 + a0 * std::abs(a0) / (2.0 * j) < 0.0)) return false;
-  const double c = lim.d_max;
-  const double gain = -v0;
-  if (a0 > c) return false;  // beyond A- while slowing: the start forces its own ramp
-  const double a_z_min = a0 > 0.0 ? std::sqrt(std::max(0.0, a0 * a0 - 2.0 * j * gain)) : 0.0;
-  const double a_v1 = std::sqrt(2.0 * j * v1);  // releasing it from v = 0 gains exactly v1
-  const double a_z = std::min({c, lim.a_max, a_v1, std::sqrt(a0 * a0 + 2.0 * j * gain)});
-  if (a_z_min > a_z) return false;  // the start reaches v = 0 too fast (or overshoots v1)
-  double a_p = std::sqrt(0.5 * (2.0 * j * gain + a0 * a0 + a_z * a_z));
-  double t_hold = 0.0;
-  if (a_p > c) {
-    a_p = c;
-    const double dv_ramps = (2.0 * c * c - a0 * a0 - a_z * a_z) / (2.0 * j);
-    const double dv_hold = gain - dv_ramps;
-    if (dv_hold > kResidue * (gain + std::abs(dv_ramps))) t_hold = dv_hold / c;
-  }
-  a_p = std::max({a_p, a0, a_z});
-  const double up = a_p - a0;
-  const double down = a_p - a_z;
-  cross.jerk = {j, 0.0, -j};
-  cross.duration = {up > kResidue * a_p ? up / j : 0.0, t_hold,
-                    down > kResidue * a_p ? down / j : 0.0};
-  cross.a_peak = a_p;
-  cross.a_zero = a_z;
-  if (a_z == a_v1) {
-    // Only the release of a_z: built directly, since velocity_ramp would see v1 == v_zero to
-    // rounding and answer a spurious pulse of sqrt(rounding) size (docs/axes-profile.md,
-    // "Numerics").
-    rest = Ramp{};
-    rest.jerk = {j, 0.0, -j};
-    rest.duration = {0.0, 0.0, a_z / j};
-    rest.a_peak = a_z;
-    rest.v_end = v1;
-    return true;
-  }
-  rest = velocity_ramp(0.0, a_z, v1, lim.a_max, lim.d_max, j);
-  return true;
+  // (The expressions live in jerk/crossing.hpp, split by what depends on the start only.)
+  return detail::crossing_from(detail::crossing_start(v0, a0, lim, false), v1, lim, cross, rest,
+                               nullptr);
 }
 
 double min_single_peak_time(const State& start, double p1, double v1, const Limits& lim) noexcept {
   if (!valid(lim) || !finite(start) || !std::isfinite(p1) || !std::isfinite(v1)) return -1.0;
-  const Frame f = frame_of(start, p1, v1);
+  const Frame f = frame_of(start, p1, v1, lim);
   if (f.v1 < 0.0 || f.v1 > lim.v_max) return -1.0;
   const double vm = stretch_level(f, lim);
   if (vm < 0.0) return -1.0;
@@ -359,12 +334,12 @@ Status move_of_duration(const State& start, double p1, double v1, double duratio
     return Status::invalid_input;
   }
   const double sign = natural_sign(start, p1, v1);
-  const Status st = stretch_in_frame(frame_of(start, p1, v1, sign), duration, lim, out);
+  const Status st = stretch_in_frame(frame_of(start, p1, v1, sign, lim), duration, lim, out);
   if (st != Status::not_supported) return st;
   // A target the start cannot stop before, at rest or to be met moving back (v1 against the
   // way to it): overshoot and return, the reversed frame (its level is the return velocity;
   // lowering it toward 0 stretches the move without bound).
-  return stretch_in_frame(frame_of(start, p1, v1, -sign), duration, lim, out);
+  return stretch_in_frame(frame_of(start, p1, v1, -sign, lim), duration, lim, out);
 }
 
 Status fastest_move(const State& start, double p1, double v1, const Limits& lim,
@@ -381,7 +356,7 @@ Status fastest_move(const State& start, double p1, double v1, const Limits& lim,
   for (const double sign : {sign0, -sign0}) {
     // (The reversed frame with v1 != 0: an arrival velocity pointing back from beyond the
     // target; the natural frame then has f.v1 < 0 and is skipped.)
-    const Frame f = frame_of(start, p1, v1, sign);
+    const Frame f = frame_of(start, p1, v1, sign, lim);
     if (f.v1 < 0.0) continue;
     // A target behind (d < 0) cannot be reached by a frame start that never moves backward
     // (v0 >= 0 and the release velocity v_zero >= 0: every ramp of the family then keeps

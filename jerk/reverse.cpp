@@ -14,6 +14,7 @@
 #include <cmath>
 #include <limits>
 
+#include "jerk/crossing.hpp"
 #include "jerk/jerk.hpp"
 #include "jerk/root.hpp"
 
@@ -25,10 +26,13 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 // Frame change (v0, a0) -> (level > = 0, 0): through v = 0 with the path limits where the
 // frame start moves backward, else one ramp (under min(A+, A-) when it crosses v = 0).
-void ramp_to(double v0, double a0, double level, const Limits& lim, Crossing& cross,
-             Ramp& ramp) noexcept {
+// `cs`: the start's part of the crossing prepared once (jerk/crossing.hpp), else nullptr.
+void ramp_to(double v0, double a0, double level, const Limits& lim, Crossing& cross, Ramp& ramp,
+             const detail::CrossingStart* cs = nullptr) noexcept {
   cross = Crossing{};
-  if ((v0 < 0.0 || a0 < 0.0) && level > 0.0 && crossing_ramp(v0, a0, level, lim, cross, ramp)) {
+  if ((v0 < 0.0 || a0 < 0.0) && level > 0.0 &&
+      (cs != nullptr ? detail::crossing_from(*cs, level, lim, cross, ramp, nullptr)
+                     : crossing_ramp(v0, a0, level, lim, cross, ramp))) {
     return;
   }
   cross = Crossing{};
@@ -37,10 +41,12 @@ void ramp_to(double v0, double a0, double level, const Limits& lim, Crossing& cr
   ramp = velocity_ramp(v0, a0, level, a_up, lim.d_max, lim.j_max);
 }
 
-Reversal make(const State& start, double g, double level, double v1, const Limits& lim) noexcept {
+// `cs_out`: crossing_start of the out part's start (-g v0, -g a0), prepared once per search.
+Reversal make(const State& start, double g, double level, double v1, const Limits& lim,
+              const detail::CrossingStart* cs_out = nullptr) noexcept {
   Reversal r;
   r.out.sign = -g;
-  ramp_to(-g * start.v, -g * start.a, level, lim, r.out.cross, r.out.first);
+  ramp_to(-g * start.v, -g * start.a, level, lim, r.out.cross, r.out.first, cs_out);
   r.out.v_level = level;
   r.out.second = Ramp{};
   r.out.second.v_end = level;
@@ -96,8 +102,10 @@ Status reversal_move(const State& start, double p1, double v1, const Limits& lim
   Reversal r;
   double last = -1.0;
   double h_last = 0.0;
+  const detail::CrossingStart cs_out =
+      detail::crossing_start(-g * start.v, -g * start.a, lim, true);
   const auto h = [&](double level, double& slope) {
-    r = make(start, g, level, v1, lim);
+    r = make(start, g, level, v1, lim, &cs_out);
     last = level;
     slope = -reach_slope(r, level, lim.j_max);
     h_last = d - reach(start, r, g);

@@ -1,0 +1,41 @@
+#pragma once
+// axes/profile_classify: cheap closed-form lower bounds on the duration of the time-optimal
+// rule's slower candidates, so plan_fastest / plan_position decide before solving that a
+// candidate cannot win and skip it (issue 11, "Speed"; docs/axes-profile.md).
+//
+// Inputs: the start state, the target, the dynamics (as plan_position).
+// Outputs: durations [s]; a lower bound is <= the candidate's planned duration (with a margin
+// of 1e-9 relative for rounding), 0 where no bound is known (the candidate is then evaluated).
+// Invariants: skipping a candidate whose bound is >= the best duration found changes nothing
+// (plan_fastest keeps a candidate only when it is strictly faster); checked against the full
+// search by profile_classify_test.cpp. Nothing allocates, nothing throws.
+
+#include "axes/profile.hpp"
+
+namespace ncsim::axes::detail {
+
+/// The stop of plan_fastest's candidate 4 and of the manual's stop-and-return (append_stop):
+/// its duration [s] and the world position at rest [mm] (to rounding).
+struct StopPoint {
+  double t = 0.0;  ///< duration of the stop [s]
+  double p = 0.0;  ///< position at rest [mm]
+};
+
+/// The stop append_stop plans from `start` (acceleration clamp, then the ramp to v = 0).
+StopPoint stop_point(const MotionState& start, const Dynamics& dyn) noexcept;
+
+/// Duration [s] of the fastest rest-to-rest move over `dist` >= 0 [mm] under the real A+, A-
+/// (the closed form of profile_optimal.cpp).
+double rest_to_rest_fastest_time(double dist, const Dynamics& dyn) noexcept;
+
+/// Lower bound [s] of "stop, then the fastest move from rest to the target" (plan_fastest's
+/// candidate 4) for a target at rest; 0 for an arrival velocity.
+double stop_then_go_bound(const MotionState& start, const PositionTarget& target,
+                          const Dynamics& dyn) noexcept;
+
+/// Lower bound [s] of the manual plan (ProfileRule::manual) where it stops and returns
+/// (a start moving away from the arrival direction); 0 otherwise.
+double manual_bound(const MotionState& start, const PositionTarget& target,
+                    const Dynamics& dyn) noexcept;
+
+}  // namespace ncsim::axes::detail
