@@ -76,15 +76,17 @@ Result plan_phase_synchronized(std::span<const MotionState> starts,
     if (r != Result::ok) return r;
     t_slowest = std::max(t_slowest, out[i].duration());
   }
-  if (!moving || !valid(du)) {  // nothing moves (or distances below any scale): all at rest
-    if (!moving) {
-      for (std::size_t i = 0; i < n; ++i)
-        out[i] = Profile::at_rest(targets[i].p);
-      if (used != nullptr) *used = SyncKind::phase;
-      return Result::ok;
+  if (!moving) {  // nothing moves: every axis rests for min_duration (TIME=), else 0 s
+    for (std::size_t i = 0; i < n; ++i) {
+      detail::ProfileBuilder b(out[i], starts[i]);
+      b.add(0.0, std::max(min_duration, 0.0));
+      const MotionState end{targets[i].p, 0.0, 0.0};
+      b.finish(&end);
     }
-    return time_sync();
+    if (used != nullptr) *used = SyncKind::phase;
+    return Result::ok;
   }
+  if (!valid(du)) return time_sync();  // distances below any scale of the limits
   Profile u;
   const MotionState u0{};
   const PositionTarget u1{1.0, 0.0};

@@ -131,6 +131,14 @@ TEST_CASE(
   CHECK(used == SyncKind::time);
   CHECK(out[0].at(out[0].duration()).p == 100.0);
   CHECK(out[1].at(out[1].duration()).p == 100.0);
+  // Nothing moves: every axis rests for TIME=.
+  const std::array<PositionTarget, 2> here{PositionTarget{0.0, 0.0}, PositionTarget{0.0, 0.0}};
+  REQUIRE(ncsim::axes::plan_phase_synchronized(rest, here, dyn, ProfileRule::manual, 0.7, out,
+                                               &used) == Result::ok);
+  CHECK(used == SyncKind::phase);
+  CHECK(out[0].duration() == 0.7);
+  CHECK(out[1].at(0.35).p == 0.0);
+  CHECK(out[1].at(0.35).v == 0.0);
   // Mismatched spans: invalid input.
   std::array<Profile, 1> one;
   CHECK(ncsim::axes::plan_phase_synchronized(rest, far, dyn, ProfileRule::manual, 0.0, one) ==
