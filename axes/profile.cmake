@@ -7,6 +7,8 @@ target_sources(ncsim_axes PRIVATE
   ${CMAKE_CURRENT_SOURCE_DIR}/profile_velocity.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/profile_optimal.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/profile_classify.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/profile_outside.cpp
+  ${CMAKE_CURRENT_SOURCE_DIR}/phase_sync.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/profile_compensation.cpp
   ${CMAKE_CURRENT_SOURCE_DIR}/profile_generator.cpp
 )
@@ -21,4 +23,6 @@ ncsim_add_test(NAME axes_profile_tests
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_reference_test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_duration_test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_classify_test.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/profile_outside_test.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/phase_sync_test.cpp
   LIBS ncsim_axes)

@@ -17,6 +17,7 @@
 #include "axes/profile.hpp"
 #include "axes/profile_builder.hpp"
 #include "axes/profile_classify.hpp"
+#include "axes/profile_outside.hpp"
 
 namespace ncsim::axes {
 
@@ -132,6 +133,11 @@ Result plan_position(const MotionState& start, const PositionTarget& target, con
     return Result::error_invalid_input;
   }
   if (rule == ProfileRule::time_optimal) {
+    // --- ptp-limits: a start outside the limits is first brought back inside
+    // (axes/profile_outside.hpp, docs/axes-profile-outside.md).
+    if (detail::outside_limits(start, dyn) && detail::plan_from_outside(start, target, dyn, out)) {
+      return Result::ok;
+    }
     // A direct move (toward the target, not moving away) is the single-peak family's best,
     // which contains the manual's. To a target at rest from a start within the limits the
     // candidates contain "stop, then the fastest rest-to-rest move", never slower than the

@@ -11,6 +11,7 @@
 #include <random>
 
 #include "axes/profile.hpp"
+#include "axes/profile_outside.hpp"
 #include "jerk/test_random.hpp"
 
 namespace {
@@ -240,7 +241,11 @@ TEST_CASE("time-optimal from random moving states: never slower than the manual,
             Result::ok);
     REQUIRE(ncsim::axes::plan_position(start, PositionTarget{dist, v_end}, d, fast,
                                        ProfileRule::time_optimal) == Result::ok);
-    REQUIRE(fast.duration() <= manual.duration() * (1.0 + 1e-9));
+    // --- ptp-limits: a start outside the limits (or forced beyond V by its release) is first
+    // brought inside as fast as possible, which can cost total time (profile_outside_test.cpp).
+    if (!ncsim::axes::detail::outside_limits(start, d)) {
+      REQUIRE(fast.duration() <= manual.duration() * (1.0 + 1e-9));
+    }
     const auto end = fast.at(fast.duration());
     REQUIRE(end.p == dist);
     REQUIRE(end.v == v_end);
@@ -352,7 +357,10 @@ TEST_CASE("time-optimal from random starts moving away keeps the path limits A-/
                                        ProfileRule::time_optimal) == Result::ok);
     REQUIRE(ncsim::axes::plan_position(start, PositionTarget{dist, v_end}, d, manual) ==
             Result::ok);
-    REQUIRE(fast.duration() <= manual.duration() * (1.0 + 1e-9));
+    // --- ptp-limits: as above, only starts inside the limits.
+    if (!ncsim::axes::detail::outside_limits(start, d)) {
+      REQUIRE(fast.duration() <= manual.duration() * (1.0 + 1e-9));
+    }
     const auto end = fast.at(fast.duration());
     REQUIRE(end.p == dist);
     REQUIRE(end.v == v_end);
