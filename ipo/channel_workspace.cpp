@@ -2,7 +2,10 @@
 // direction (ipo/workspace_hold.hpp; docs/conveyor.md "Workspace: the hold methods"): after
 // each cycle the hold decides on the path state of that cycle, and its cap acts on the
 // interpolator from the next one (PathInterpolator::set_velocity_cap, a jerk-limited replan).
+// The hold looks across block ends: the active entry and the look-ahead window's next entries
+// (PathInterpolator::queued_entry, at most kHoldAhead).
 
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 
@@ -12,6 +15,7 @@ namespace ncsim::ipo {
 
 bool Channel::sync_workspace_cap(const Cycle& c) noexcept {
   HoldState st;
+  std::array<HoldEntry, kHoldAhead> ahead{};  // the look-ahead window's next entries
   const planner::PlannedSegment* e = ipo_.active_entry();
   if (c.activity == Activity::motion && e != nullptr && c.programmed != nullptr) {
     st.path = &e->segment.path;
@@ -22,6 +26,15 @@ bool Channel::sync_workspace_cap(const Cycle& c) noexcept {
     st.line = c.line;
     st.d_max = e->d_max;
     st.j_max = e->j_max;
+    st.stops = e->segment.stop != planner::StopReason::none;
+    for (std::size_t k = 0; k < ahead.size(); ++k) {
+      const planner::PreparedSegment* next = ipo_.queued_entry(k);
+      if (next == nullptr) break;
+      ahead[k] = HoldEntry{&next->path, next->limits.v_programmed,
+                           next->stop != planner::StopReason::none};
+      st.ahead_count = k + 1;
+    }
+    st.ahead = ahead.data();
   }
   const double cap = sync_->workspace_cap(st);
   ipo_.set_velocity_cap(cap);

@@ -35,8 +35,11 @@ ConveyorSync::ConveyorSync(const machines::ConveyorSyncChannel& channel,
   std::array<int, planner::kMaxAxes> xyz{};
   for (std::size_t i = 0; i < n_; ++i)
     xyz[i] = axes_[i].xyz;
+  // --- hold: none on a static unit (P-CHAN-00364 = 1): its path's X component is the belt's
+  // (ipo/channel_static.cpp), so X never moves against the conveying direction in MCS.
   if (auto h =
-          hold_config(channel, frame_.direction(), channel.optimised_monitoring, xyz.data(), n_))
+          hold_config(channel, frame_.direction(), channel.optimised_monitoring, xyz.data(), n_);
+      h && !channel.x_virtual)
     hold_.emplace(*h);
 }
 

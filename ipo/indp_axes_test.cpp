@@ -283,3 +283,17 @@ TEST_CASE("seeded random INDP commands and overrides keep v, a, j within the axi
     }
   }
 }
+
+// --- hold: NC6104 had no test (issue 14, the ids without a test)
+TEST_CASE("NC6104: an INDP motion the PTP core cannot plan names the axis and the core's id") {
+  IndpAxisConfig c = axis_config("C");
+  c.feed = {0.0, 0.0, 0.0, 0.0};  // unusable dynamics: the core answers NC5001
+  ncsim::planner::AxisVec p{};
+  IndpAxes ax({c}, kT, p);
+  const auto e = ax.command(0, feed_move(100.0, 200.0));
+  REQUIRE(e);
+  CHECK(e->id == "NC6104");
+  CHECK(e->message.find("axis C") != std::string::npos);
+  CHECK(e->message.find("NC5001") != std::string::npos);
+  CHECK(ax.in_position(0));  // nothing started
+}

@@ -268,6 +268,10 @@ class PathInterpolator {
   double velocity_cap() const noexcept { return cap_; }  ///< [mm/s]
   /// The entry the path is on (null: none yet); valid until the next step().
   const planner::PlannedSegment* active_entry() const noexcept { return active_ ? &cur_ : nullptr; }
+  /// --- hold: the k-th entry after the active one in the look-ahead window (null: none known).
+  const planner::PreparedSegment* queued_entry(std::size_t k) const noexcept {
+    return window_.queued(k);
+  }
   // --- workspace: end
   // --- sync-feed: a path that starts moving after a catch-up (issue 14, ipo/sync_entry.hpp)
   /// While the path holds at a ChannelWait: pulls and prepares what follows the wait into the

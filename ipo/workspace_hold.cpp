@@ -15,8 +15,12 @@ namespace {
 constexpr double kCos60 = 0.5;
 constexpr double kSampleStep = 0.5;  ///< simple method: contour sample spacing [mm]
 constexpr int kMaxSamples = 256;     ///< simple method: samples per block, at most
+constexpr int kSampleBudget = 2048;  ///< simple method: samples per cycle over the blocks ahead
 constexpr int kRampSamples = 8;      ///< optimised method: samples per ramp phase
 constexpr double kEps = 1e-9;        ///< [mm]
+/// A block moves against the conveying direction when its coordinate goes back by more than
+/// this between two samples [mm] (a Y line's rounding does not count).
+constexpr double kMoveEps = 1e-6;
 /// The cap follows the belt's velocity only when factor x v_conv moved by more than this share
 /// of it (plus kCapSlack): a noisy belt would replan every cycle otherwise.
 constexpr double kCapHysteresis = 0.01;
@@ -55,44 +59,93 @@ std::optional<HoldConfig> hold_config(const machines::ConveyorSyncChannel& chann
   return std::nullopt;
 }
 
-double WorkspaceHold::inside_at(const HoldState& st, double s, double dt) const noexcept {
-  const double x =
-      st.path->point(std::clamp(s, 0.0, st.path->length()))[static_cast<std::size_t>(cfg_.axis)];
-  const double q = x + cfg_.share * (st.travel + st.belt_v * dt);
-  return inside(q);
+HoldPath WorkspaceHold::path_of(const HoldState& st) const noexcept {
+  return HoldPath(*st.path, st.s, st.feed, st.stops, st.ahead, st.ahead_count, cfg_.axis,
+                  cfg_.sign);
 }
 
-bool WorkspaceHold::block_crosses(const HoldState& st) const noexcept {
-  const planner::Chain& path = *st.path;
-  // The end of the block the path is on: the end of the chain's part that contains s.
-  double end = path.length();
-  for (std::size_t k = 0; k < path.parts(); ++k) {
-    if (path.part_end(k) > st.s) {
-      end = path.part_end(k);
-      break;
-    }
-  }
-  const double v_run = std::max({st.feed, st.v, 1e-9});
-  const double rest = std::max(0.0, end - st.s);
-  const int n = std::clamp(static_cast<int>(std::ceil(rest / kSampleStep)), 1, kMaxSamples);
-  for (int m = 0; m <= n; ++m) {
-    const double s = st.s + rest * static_cast<double>(m) / n;
-    if (inside_at(st, s, (s - st.s) / v_run) < 0.0) return true;
+double WorkspaceHold::inside_at(const HoldState& st, double q, double dt) const noexcept {
+  return inside(q + cfg_.share * (st.travel + st.belt_v * dt));
+}
+
+namespace {
+
+/// Samples of one block: n + 1 points [from, to], n = ceil(length / kSampleStep) in
+/// [1, kMaxSamples].
+int samples_of(const HoldBlock& b) noexcept {
+  return std::clamp(static_cast<int>(std::ceil((b.to - b.from) / kSampleStep)), 1, kMaxSamples);
+}
+
+}  // namespace
+
+bool WorkspaceHold::active_block_against(const HoldState& st) const noexcept {
+  HoldPath path = path_of(st);
+  HoldBlock b;
+  if (!path.next_block(b)) return false;
+  const auto coord = static_cast<std::size_t>(cfg_.axis);
+  const int n = samples_of(b);
+  double q_prev = b.path->point(b.from)[coord];
+  for (int m = 1; m <= n; ++m) {
+    const double q = b.path->point(b.from + (b.to - b.from) * m / n)[coord];
+    if (cfg_.sign * (q - q_prev) < -kMoveEps) return true;
+    q_prev = q;
   }
   return false;
 }
 
+bool WorkspaceHold::run_crosses(const HoldState& st, double target) const noexcept {
+  HoldPath path = path_of(st);
+  const auto coord = static_cast<std::size_t>(cfg_.axis);
+  // Nothing known ahead can reach the line when the TCP is farther from it than the known
+  // path is long (|dq/ds| <= 1, a belt moving on carries the TCP away).
+  if (st.belt_v >= 0.0 && inside_at(st, path.q(0.0), 0.0) > path.known() + kEps) return false;
+  double t = 0.0;              // time ahead at the block's start [s]
+  double run_start = -1.0;     // distance ahead where the run against starts [mm]
+  int budget = kSampleBudget;  // samples left this cycle
+  HoldBlock b;
+  bool crossing = false;
+  while (!crossing && budget > 0 && path.next_block(b)) {
+    const double v_run = std::max({b.feed, st.v, 1e-9});
+    const int n = samples_of(b);
+    budget -= n + 1;
+    bool against = false;
+    double q_prev = b.path->point(b.from)[coord];
+    for (int m = 0; m <= n && !crossing; ++m) {
+      const double s = b.from + (b.to - b.from) * m / n;
+      const double q = m == 0 ? q_prev : b.path->point(s)[coord];
+      if (cfg_.sign * (q - q_prev) < -kMoveEps) against = true;
+      q_prev = q;
+      crossing = against && inside_at(st, q, t + (s - b.from) / v_run) < 0.0;
+    }
+    if (against && run_start < 0.0) run_start = b.ahead;
+    if (!against && run_start >= 0.0) break;  // the run ended inside the line
+    t += (b.to - b.from) / v_run;
+  }
+  if (!crossing) return false;
+  if (run_start <= kEps) return true;
+  // The run starts later: enter it at factor x v_conv, braking as late as the ramp allows.
+  const double tc = st.t_cycle;
+  const double d1 = std::max(0.0, st.v * tc + 0.5 * st.a * tc * tc);
+  const double v1 = std::max(0.0, st.v + st.a * tc);
+  if (v1 <= target) return d1 >= run_start;
+  const double d = st.d_max > 0.0 ? st.d_max : 1.0;
+  const double j = st.j_max > 0.0 && std::isfinite(st.j_max) ? st.j_max : d / tc;
+  const jerk::Ramp ramp = jerk::velocity_ramp(v1, st.a, target, d, d, j);
+  return d1 + jerk::distance(v1, st.a, ramp) >= run_start;
+}
+
 bool WorkspaceHold::can_wait_a_cycle(const HoldState& st, double target) const noexcept {
+  HoldPath path = path_of(st);
   // The state one cycle ahead at the present acceleration (the plan's jerk is not known here:
   // the ramps that follow are sampled against the line, so a small error is on the early side).
   const double t = st.t_cycle;
-  const double s1 = st.s + std::max(0.0, st.v * t + 0.5 * st.a * t * t);
+  const double d1 = std::max(0.0, st.v * t + 0.5 * st.a * t * t);
   const double v1 = std::max(0.0, st.v + st.a * t);
-  if (inside_at(st, s1, t) < 0.0) return false;
+  if (inside_at(st, path.q(d1), t) < 0.0) return false;
   const double d = st.d_max > 0.0 ? st.d_max : 1.0;
   const double j = st.j_max > 0.0 && std::isfinite(st.j_max) ? st.j_max : d / t;
   const jerk::Ramp ramp = jerk::velocity_ramp(v1, st.a, target, d, d, j);
-  jerk::State x{s1, v1, st.a};
+  jerk::State x{d1, v1, st.a};
   double elapsed = t;
   for (int p = 0; p < 3; ++p) {
     const double dur = ramp.duration[static_cast<std::size_t>(p)];
@@ -102,7 +155,7 @@ bool WorkspaceHold::can_wait_a_cycle(const HoldState& st, double target) const n
     for (int m = 1; m <= kRampSamples; ++m) {
       const double dt = dur * static_cast<double>(m) / kRampSamples;
       const jerk::State at = jerk::advance(from, jp, dt);
-      if (inside_at(st, at.p, elapsed + dt) < 0.0) return false;
+      if (inside_at(st, path.q(std::max(0.0, at.p)), elapsed + dt) < 0.0) return false;
     }
     x = jerk::advance(from, jp, dur);
     elapsed += dur;
@@ -113,14 +166,21 @@ bool WorkspaceHold::can_wait_a_cycle(const HoldState& st, double target) const n
 double WorkspaceHold::decide(const HoldState& st) noexcept {
   if (st.path == nullptr || cfg_.axis < 0) return cap_;
   const double target = cfg_.factor * std::max(0.0, st.belt_v);
-  if (capped_ && st.line != line_) reset();  // the capped block has ended
+  if (capped_ && st.line != line_) {
+    // A block end while capped: the cap holds while the path goes on against the conveying
+    // direction; else it is released and decided afresh (so a run ahead keeps it at once).
+    if (active_block_against(st))
+      line_ = st.line;
+    else
+      reset();
+  }
   if (capped_) {
     // The cap follows the belt (a belt slowing down must slow the tool too), with hysteresis.
     if (std::fabs(target - cap_) > kCapHysteresis * cap_ + kCapSlack) cap_ = target;
     return cap_;
   }
   const bool brake =
-      cfg_.method == HoldMethod::simple ? block_crosses(st) : !can_wait_a_cycle(st, target);
+      cfg_.method == HoldMethod::simple ? run_crosses(st, target) : !can_wait_a_cycle(st, target);
   if (brake) {
     capped_ = true;
     line_ = st.line;

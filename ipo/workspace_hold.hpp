@@ -5,14 +5,19 @@
 //
 // Purpose: decide, once per cycle while synchronised, whether the path velocity must be capped
 // at hold_limit_vel_factor x v_conv so that the TCP does not cross the hold line in MCS against
-// the conveying direction: the simple method (P-AXIS-00555 = 0) caps the whole rest of a block
-// whose contour, run at its feed, would cross the line; the optimised method (= 1) caps at the
-// last cycle from which a jerk-limited braking ramp still reaches factor x v_conv before the
-// line. The cap is released when the active block changes. A path velocity <= v_conv never
-// moves the TCP against the conveying direction in MCS (|dx/ds| <= 1), so once capped a line
-// stands at the line (factor 1000) or drifts away (950), and an arc is pushed away.
+// the conveying direction: the simple method (P-AXIS-00555 = 0) caps the whole run of blocks
+// against the conveying direction whose contour, run at its feeds, would cross the line; the
+// optimised method (= 1) caps at the last cycle from which a jerk-limited braking ramp still
+// reaches factor x v_conv before the line. Both look across block ends into the look-ahead
+// window (ipo/hold_path: the rest of the active entry and up to kHoldAhead following entries;
+// beyond them the worst case). The cap holds while the path runs against the conveying
+// direction: at a block end it is kept when the new block moves against it, else released
+// (and decided afresh in the same cycle). A path velocity <= v_conv never moves the TCP
+// against the conveying direction in MCS (|dx/ds| <= 1), so once capped a line stands at the
+// line (factor 1000) or drifts away (950), and an arc is pushed away.
 // Inputs: HoldConfig (from the machine), per cycle HoldState (the active path chain, s, v, a,
-// the line of the active block, the belt travel and velocity along the conveying direction).
+// the line of the active block, the following look-ahead entries, the belt travel and
+// velocity along the conveying direction).
 // Outputs: the path velocity cap [mm/s] (+inf: none), which the channel gives the interpolator
 // (PathInterpolator::set_velocity_cap: a jerk-limited replan, the override machinery), and the
 // check of the line + P-CHAN-00367 on the commanded TCP (NC9080).
@@ -23,6 +28,7 @@
 #include <optional>
 #include <string>
 
+#include "ipo/hold_path.hpp"
 #include "machines/machine.hpp"
 #include "planner/chain.hpp"
 
@@ -71,6 +77,9 @@ struct HoldState {
   double travel = 0.0;                   ///< belt travel since the latch [mm]
   double belt_v = 0.0;                   ///< belt velocity along the conveying direction [mm/s]
   double t_cycle = 0.001;                ///< [s]
+  bool stops = false;                    ///< the path stops at the end of the active entry
+  const HoldEntry* ahead = nullptr;      ///< the following look-ahead entries, in path order
+  std::size_t ahead_count = 0;           ///< entries at `ahead` (kHoldAhead are used at most)
 };
 
 class WorkspaceHold {
@@ -97,16 +106,22 @@ class WorkspaceHold {
   /// tolerance or beyond the face; nullopt otherwise.
   std::optional<std::string> check(double q) const;
 
-  /// Simple method: the rest of the block of `st` (to the end of its part), run at
-  /// max(feed, v) with the belt at its velocity, crosses the line.
-  bool block_crosses(const HoldState& st) const noexcept;
+  /// Simple method: the run against the conveying direction that starts at the active block
+  /// or after the blocks before it (each block run at max(its feed, v), the belt at its
+  /// velocity) crosses the line, and the cap must start now: at once when the run is the
+  /// active block, else when braking to `target` from one cycle ahead no longer fits before
+  /// the run starts.
+  bool run_crosses(const HoldState& st, double target) const noexcept;
   /// Optimised method: a braking ramp from the state one cycle ahead would still keep the
   /// TCP inside (false: brake now).
   bool can_wait_a_cycle(const HoldState& st, double target) const noexcept;
+  /// The rest of the active block moves against the conveying direction (in PCS1).
+  bool active_block_against(const HoldState& st) const noexcept;
 
  private:
-  /// MCS distance to the line of the path point at arc length s at time dt from now.
-  double inside_at(const HoldState& st, double s, double dt) const noexcept;
+  HoldPath path_of(const HoldState& st) const noexcept;
+  /// MCS distance to the line of the PCS1 coordinate q at time dt from now.
+  double inside_at(const HoldState& st, double q, double dt) const noexcept;
 
   HoldConfig cfg_;
   bool capped_ = false;

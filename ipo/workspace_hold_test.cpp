@@ -161,3 +161,80 @@ TEST_CASE("NC9080 only beyond the line by more than hold_limit_tolerance, or bey
   REQUIRE(f);
   CHECK(f->find("face") != std::string::npos);
 }
+
+// --- hold: across block ends (docs/conveyor.md "Across block ends")
+TEST_CASE("simple method across block ends: the run that crosses in a later block caps now") {
+  // 5 blocks of -120 mm at 200 mm/s against a 100 mm/s belt: the crossing (MCS X -190) lies in
+  // the 4th block; the whole run is capped from the first one.
+  std::array<planner::Chain, 4> next;
+  std::array<ipo::HoldEntry, 4> ahead;
+  for (std::size_t k = 0; k < next.size(); ++k) {
+    const double x = -120.0 * static_cast<double>(k + 1);
+    next[k] = line_chain(x, x - 120.0);
+    ahead[k] = ipo::HoldEntry{&next[k], 200.0, k + 1 == next.size()};
+  }
+  const planner::Chain first = line_chain(0.0, -120.0);
+  HoldState st;
+  st.path = &first;
+  st.line = 7;
+  st.feed = 200.0;
+  st.belt_v = 100.0;
+  WorkspaceHold h(config(-190.0, false, 1.0));
+  CHECK(h.decide(st) == WorkspaceHold::kNone);  // nothing ahead known: block 1 alone is inside
+  st.ahead = ahead.data();
+  st.ahead_count = ahead.size();
+  CHECK(h.decide(st) == doctest::Approx(100.0));
+  // The next block goes on against the belt: the cap holds.
+  st.path = &next[0];
+  st.line = 8;
+  st.ahead = ahead.data() + 1;
+  st.ahead_count = ahead.size() - 1;
+  CHECK(h.decide(st) == doctest::Approx(100.0));
+  // A block along +Y ends the run: released, and nothing ahead crosses.
+  planner::AxisVec a{}, b{};
+  b[1] = 100.0;
+  const planner::Chain y(planner::Segment::line(3, 0b111, a, b), 9);
+  st.path = &y;
+  st.line = 9;
+  st.ahead_count = 0;
+  CHECK(h.decide(st) == WorkspaceHold::kNone);
+  // A run that stays inside the line: no cap.
+  WorkspaceHold far(config(-190.0, false, 1.0));
+  st.path = &first;
+  st.line = 7;
+  st.ahead = ahead.data();
+  st.ahead_count = 1;  // 240 mm: MCS X ends at -120
+  CHECK(far.decide(st) == WorkspaceHold::kNone);
+}
+
+TEST_CASE(
+    "optimised method across block ends: braking for a line that continues in the next "
+    "entry") {
+  // The active entry ends 10 mm before the line; at 300 mm/s, 14 mm before it, the ramp to
+  // v_conv (about 15 mm in MCS) must start now, and runs on in the next entry.
+  const double d = 2000.0, j = 40000.0;
+  const planner::Chain active = line_chain(0.0, -180.0);
+  const planner::Chain next = line_chain(-180.0, -1000.0);
+  const std::array<ipo::HoldEntry, 1> ahead{ipo::HoldEntry{&next, 300.0, false}};
+  HoldState st;
+  st.path = &active;
+  st.line = 7;
+  st.feed = 300.0;
+  st.v = 300.0;
+  st.d_max = d;
+  st.j_max = j;
+  st.belt_v = 100.0;
+  st.s = 176.0;  // MCS X -176 (travel 0)
+  st.ahead = ahead.data();
+  st.ahead_count = 1;
+  WorkspaceHold h(config(-190.0, true, 1.0));
+  CHECK(h.decide(st) == doctest::Approx(100.0));
+  // Without the next entry known the worst case is taken: the same decision.
+  WorkspaceHold w(config(-190.0, true, 1.0));
+  st.ahead_count = 0;
+  CHECK(w.decide(st) == doctest::Approx(100.0));
+  // The active entry ends with a stop: the path stands at -180, inside: no cap.
+  WorkspaceHold s(config(-190.0, true, 1.0));
+  st.stops = true;
+  CHECK(s.decide(st) == WorkspaceHold::kNone);
+}

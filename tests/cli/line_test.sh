@@ -72,5 +72,13 @@ expect "tune-delay: the static unit's synchro_lag listing gets dead time + filte
   '^tune-delay: proposed P-AXIS-00626 conv_sync\.delay_time = 189[5-9][0-9] us' '' -- tune-delay "$static"
 expect "tune-delay: a machine without conveyor tracking: NC9126, exit 2" 2 '' '\[NC9126\]' -- \
   tune-delay --machine "$root/machines/portal_3x" "$squares"
+# --- hold: the ids without a test (issue 14)
+expect "sweep: an encoder belt standing at t = 0 has no velocity to scale: NC9123, exit 2" 2 '' \
+  'encoder belt has velocity 0 at t = 0.*\[NC9123\]' -- \
+  sweep --scenario "$root/tests/cli/scenario_encoder_zero.toml" "$comoving" --belt-velocity 50:200
+expect "tune-delay: a program that never runs synchronised with a moving belt: NC9125, exit 1" 1 \
+  '' 'never ran synchronised with a moving belt.*\[NC9125\]' -- \
+  tune-delay --machine "$root/machines/laser_portal_encoder" --scenario "$(dirname "$comoving")/scenario.toml" \
+  "$root/tests/cli/clean.nc"
 
 summary line
