@@ -52,18 +52,20 @@ struct Derivs {
 
 /// Control points of B and of its first three t-derivatives (hodographs), per axis:
 /// dB = 5 sum b4_k D1_k, d2B = 20 sum b3_k D2_k, d3B = 60 sum b2_k D3_k (forward differences,
-/// scaled here once).
+/// scaled here once). Only the first n axes are set (and read): zeroing all kMaxAxes cost
+/// more than computing the n used (docs/benchmarks.md, issue 12 session 21).
 struct Hodographs {
-  std::array<AxisVec, 6> c0{};
-  std::array<AxisVec, 5> c1{};
-  std::array<AxisVec, 4> c2{};
-  std::array<AxisVec, 3> c3{};
+  std::array<AxisVec, 6> c0;
+  std::array<AxisVec, 5> c1;
+  std::array<AxisVec, 4> c2;
+  std::array<AxisVec, 3> c3;
 };
 
 Hodographs hodographs(const std::array<AxisVec, 6>& p, std::size_t n) {
   Hodographs h;
-  h.c0 = p;
   for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t k = 0; k < 6; ++k)
+      h.c0[k][i] = p[k][i];
     for (std::size_t k = 0; k < 5; ++k)
       h.c1[k][i] = p[k + 1][i] - p[k][i];
     for (std::size_t k = 0; k < 4; ++k)
@@ -166,8 +168,11 @@ const Tables& tables() {
 /// The bounds of a whole blend on the 65 tabled parameters: the arithmetic of the general loop
 /// in Segment::bezier_bounds (the same operations in the same order per sample, so the same
 /// values), with the samples innermost so that the compiler can vectorise; the padding sample
-/// repeats the last one (maxima unchanged).
-DerivativeBounds blend_bounds(const Hodographs& h, std::size_t n, AxisMask metric) {
+/// repeats the last one (maxima unchanged). An axis outside `moving` (constant on the curve:
+/// every hodograph value 0) is skipped: its terms would add +0 to the sums and its bounds are
+/// 0, the values the loops would compute.
+DerivativeBounds blend_bounds(const Hodographs& h, std::size_t n, AxisMask metric,
+                              AxisMask moving) {
   constexpr std::size_t kN = Tables::kPadded;
   const Tables& tab = tables();
   std::array<std::array<double, kN>, kMaxAxes> v1;  // first n rows set
@@ -175,6 +180,7 @@ DerivativeBounds blend_bounds(const Hodographs& h, std::size_t n, AxisMask metri
   std::array<std::array<double, kN>, kMaxAxes> v3;
   std::array<double, kN> b11{}, b12{}, b22{}, b13{};
   for (std::size_t i = 0; i < n; ++i) {
+    if (!has(moving, i)) continue;
     std::array<double, kN>& a1 = v1[i];
     std::array<double, kN>& a2 = v2[i];
     std::array<double, kN>& a3 = v3[i];
@@ -223,8 +229,9 @@ DerivativeBounds blend_bounds(const Hodographs& h, std::size_t n, AxisMask metri
     c2[k] = 3.0 * sg1 * q4;
     c3[k] = 3.0 * sg1 * sg1 * q4 * iv - sg2 * q4;
   }
-  DerivativeBounds b;
+  DerivativeBounds b;  // zero: the bounds of the constant axes
   for (std::size_t i = 0; i < n; ++i) {
+    if (!has(moving, i)) continue;
     const std::array<double, kN>& a1 = v1[i];
     const std::array<double, kN>& a2 = v2[i];
     const std::array<double, kN>& a3 = v3[i];
@@ -326,6 +333,9 @@ Segment Segment::bezier(std::uint8_t axis_count, AxisMask metric, const std::arr
   seg.metric_ = metric & all;  // the caller passes the metric of the blended segments
   BezierGeom g;
   g.p = p;
+  for (std::size_t i = 0; i < axis_count; ++i)
+    for (std::size_t k = 1; k < 6; ++k)
+      if (p[k][i] != p[0][i]) g.moving |= AxisMask{1} << i;
   constexpr double dt = 1.0 / BezierGeom::kTable;
   const Tables& tab = tables();
   // 160 speeds from |B'|^2 in Bernstein form: 9 products and a root each, whatever the axes.
@@ -375,10 +385,12 @@ double Segment::bezier_t(const BezierGeom& g, double s) const noexcept {
   const double s_k = g.s_at[k];
   const double span = g.s_at[k + 1] - s_k;
   double t = span > 0.0 ? t_k + dt * std::clamp((s - s_k) / span, 0.0, 1.0) : t_k;
+  // A constant metric axis adds exactly +0 to the squared speed: leaving it out is the same sum.
+  const AxisMask metric = metric_ & g.moving;
   for (int iter = 0; iter < 6; ++iter) {
-    const double sp = speed(g.p, n_, metric_, t);
+    const double sp = speed(g.p, n_, metric, t);
     if (sp <= 0.0) break;
-    const double f = integrate_speed(g.p, n_, metric_, t_k, t) - (s - s_k);
+    const double f = integrate_speed(g.p, n_, metric, t_k, t) - (s - s_k);
     const double step = f / sp;
     t = std::clamp(t - step, t_k, t_k + dt);
     if (std::abs(step) < 1e-15) break;
@@ -410,7 +422,7 @@ DerivativeBounds Segment::bezier_bounds() const noexcept {
   const Tables& tab = tables();
   DerivativeBounds b;
   if (table && !spline_) {
-    b = blend_bounds(h, n_, metric_);
+    b = blend_bounds(h, n_, metric_, g.moving);
   } else {
     // The formulas of arc_length_derivatives(), inlined without the position and without
     // building PathPoints (this loop is most of the cost of a tolerance ball).
