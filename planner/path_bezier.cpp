@@ -113,8 +113,10 @@ Derivs eval(const std::array<AxisVec, 6>& p, std::size_t n, double t) {
 /// the bound samples (the same t for every curve, so no basis is recomputed per curve).
 struct Tables {
   static constexpr int kSamples = 64;  ///< bound samples: t = k / 64, k = 0..64
-  /// Degree-8 Bernstein values at the Gauss nodes: |B'|^2 is a degree-8 polynomial.
-  std::array<std::array<double, 9>, geom::BezierGeom::kTable * 5> gauss8{};
+  static constexpr std::size_t kNodes = geom::BezierGeom::kTable * 5;  ///< Gauss nodes
+  /// Degree-8 Bernstein values at the Gauss nodes (|B'|^2 is a degree-8 polynomial), by degree
+  /// index first (gauss8[j][node]): Segment::bezier runs over the nodes innermost.
+  std::array<std::array<double, kNodes>, 9> gauss8{};
   std::array<std::array<double, 6>, kSamples + 1> s5{};
   std::array<std::array<double, 5>, kSamples + 1> s4{};
   std::array<std::array<double, 4>, kSamples + 1> s3{};
@@ -132,8 +134,11 @@ struct Tables {
   Tables() {
     constexpr double dt = 1.0 / geom::BezierGeom::kTable;
     for (int k = 0; k < geom::BezierGeom::kTable; ++k)
-      for (std::size_t g = 0; g < 5; ++g)
-        gauss8[static_cast<std::size_t>(k) * 5 + g] = basis<8>((k + 0.5) * dt + 0.5 * dt * kGlX[g]);
+      for (std::size_t g = 0; g < 5; ++g) {
+        const auto b8 = basis<8>((k + 0.5) * dt + 0.5 * dt * kGlX[g]);
+        for (std::size_t j = 0; j < 9; ++j)
+          gauss8[j][static_cast<std::size_t>(k) * 5 + g] = b8[j];
+      }
     for (int k = 0; k <= kSamples; ++k) {
       const double t = static_cast<double>(k) / kSamples;
       const auto u = static_cast<std::size_t>(k);
@@ -184,23 +189,16 @@ DerivativeBounds blend_bounds(const Hodographs& h, std::size_t n, AxisMask metri
     std::array<double, kN>& a1 = v1[i];
     std::array<double, kN>& a2 = v2[i];
     std::array<double, kN>& a3 = v3[i];
-    a1.fill(0.0);
-    a2.fill(0.0);
-    a3.fill(0.0);
-    for (std::size_t m = 0; m < 5; ++m) {
-      const double c = h.c1[m][i];
-      for (std::size_t k = 0; k < kN; ++k)
-        a1[k] += tab.u4[m][k] * c;
-    }
-    for (std::size_t m = 0; m < 4; ++m) {
-      const double c = h.c2[m][i];
-      for (std::size_t k = 0; k < kN; ++k)
-        a2[k] += tab.u3[m][k] * c;
-    }
-    for (std::size_t m = 0; m < 3; ++m) {
-      const double c = h.c3[m][i];
-      for (std::size_t k = 0; k < kN; ++k)
-        a3[k] += tab.u2[m][k] * c;
+    // Each value summed over m in order from 0.0 (as the general loop does), in registers.
+    const std::array<double, 5> e1 = {h.c1[0][i], h.c1[1][i], h.c1[2][i], h.c1[3][i], h.c1[4][i]};
+    const std::array<double, 4> e2 = {h.c2[0][i], h.c2[1][i], h.c2[2][i], h.c2[3][i]};
+    const std::array<double, 3> e3 = {h.c3[0][i], h.c3[1][i], h.c3[2][i]};
+    for (std::size_t k = 0; k < kN; ++k) {
+      a1[k] = 0.0 + tab.u4[0][k] * e1[0] + tab.u4[1][k] * e1[1] + tab.u4[2][k] * e1[2] +
+              tab.u4[3][k] * e1[3] + tab.u4[4][k] * e1[4];
+      a2[k] = 0.0 + tab.u3[0][k] * e2[0] + tab.u3[1][k] * e2[1] + tab.u3[2][k] * e2[2] +
+              tab.u3[3][k] * e2[3];
+      a3[k] = 0.0 + tab.u2[0][k] * e3[0] + tab.u2[1][k] * e3[1] + tab.u2[2][k] * e3[2];
     }
     if (!has(metric, i)) continue;
     for (std::size_t k = 0; k < kN; ++k) {
@@ -339,16 +337,22 @@ Segment Segment::bezier(std::uint8_t axis_count, AxisMask metric, const std::arr
   constexpr double dt = 1.0 / BezierGeom::kTable;
   const Tables& tab = tables();
   // 160 speeds from |B'|^2 in Bernstein form: 9 products and a root each, whatever the axes.
+  // Each node's sum runs over j in order (the same value as node by node); the nodes are
+  // innermost so the compiler can vectorise.
   const std::array<double, 9> beta = squared_speed(p, axis_count, seg.metric_);
+  std::array<double, Tables::kNodes> node_speed{};
+  for (std::size_t j = 0; j < 9; ++j) {
+    const double c = beta[j];
+    const std::array<double, Tables::kNodes>& b8 = tab.gauss8[j];
+    for (std::size_t q = 0; q < Tables::kNodes; ++q)
+      node_speed[q] += c * b8[q];
+  }
+  for (double& v : node_speed)
+    v = std::sqrt(std::max(v, 0.0));
   for (std::size_t k = 0; k < BezierGeom::kTable; ++k) {
     double sum = 0.0;
-    for (std::size_t q = 0; q < 5; ++q) {
-      const std::array<double, 9>& b8 = tab.gauss8[k * 5 + q];
-      double sq = 0.0;
-      for (std::size_t j = 0; j < 9; ++j)
-        sq += beta[j] * b8[j];
-      sum += kGlW[q] * std::sqrt(std::max(sq, 0.0));
-    }
+    for (std::size_t q = 0; q < 5; ++q)
+      sum += kGlW[q] * node_speed[k * 5 + q];
     g.s_at[k + 1] = g.s_at[k] + 0.5 * dt * sum;
   }
   seg.s_hi_ = g.s_at[BezierGeom::kTable];
