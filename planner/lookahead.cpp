@@ -19,6 +19,70 @@ double ramps_distance(double v_entry, double level, double v_exit, double a, dou
   return jerk::distance(v_entry, 0.0, up) + jerk::distance(level, 0.0, down);
 }
 
+/// Weight of the stale end of the bracket when the same end moved twice in a row
+/// (Anderson-Bjorck: 1 - g_new / g_replaced; Illinois' 1/2 where that is not in (0, 1)).
+double stale_weight(double g_new, double g_replaced) noexcept {
+  const double m = 1.0 - g_new / g_replaced;
+  return m > 0.0 ? m : 0.5;
+}
+
+/// The level the bisection "keep lo while distance(mid) <= length" on [lo, hi] would return,
+/// to the last bit, with about a quarter of its distance evaluations (docs/planner.md
+/// "Profile level"). distance(hi) > length on entry; distance() rises with the level.
+/// First a bracketed secant (Anderson-Bjorck, which keeps a sign-changing bracket) narrows
+/// [fit, miss] around the root: distance(fit) <= length < distance(miss), both evaluated.
+/// Then the bisection is replayed on its own midpoints: a midpoint at or below `fit` fits and
+/// one at or above `miss` does not (monotonicity), so only midpoints inside the narrow bracket
+/// are evaluated.
+/// `g_hi` = distance(hi) - length > 0.
+template <class Distance>
+double level_search(double lo, double hi, double g_hi, const Distance& distance, double length) {
+  // g < 0 exactly when distance < length: a difference of doubles has the exact sign.
+  const auto g = [&](double x) { return distance(x) - length; };
+  double fit = lo;
+  double miss = hi;
+  double g_fit = g(lo);
+  if (g_fit > 0.0) {
+    miss = lo;  // nothing fits: every midpoint misses, the bisection ends at lo
+  } else {
+    double g_miss = g_hi;
+    int side = 0;  // which end moved last: -1 fit, +1 miss
+    const double width = 0.25e-12 * std::max(1.0, hi);
+    for (int iter = 0; iter < 40 && miss - fit > width; ++iter) {
+      double x = (fit * g_miss - miss * g_fit) / (g_miss - g_fit);
+      if (!(x > fit && x < miss)) x = 0.5 * (fit + miss);
+      const double gx = g(x);
+      if (gx <= 0.0) {
+        if (side == -1) g_miss *= stale_weight(gx, g_fit);
+        fit = x;
+        g_fit = gx;
+        side = -1;
+      } else {
+        if (side == 1) g_fit *= stale_weight(gx, g_miss);
+        miss = x;
+        g_miss = gx;
+        side = 1;
+      }
+    }
+  }
+  // The bisection of the reference (profile() before the secant, same loop bounds).
+  for (int iter = 0; iter < 100 && hi - lo > 1e-12 * std::max(1.0, hi); ++iter) {
+    const double mid = 0.5 * (lo + hi);
+    bool fits = false;
+    if (mid <= fit) {
+      fits = true;
+    } else if (mid < miss) {
+      fits = g(mid) <= 0.0;
+      (fits ? fit : miss) = mid;
+    }
+    if (fits)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  return lo;
+}
+
 }  // namespace
 
 std::size_t window_size(LookAheadKind kind, std::optional<std::size_t> custom,
@@ -49,19 +113,13 @@ jerk::Move profile(const PlannedSegment& planned) noexcept {
   const double v0 = planned.v_entry;
   const double v1 = planned.v_exit;
   // Highest level in [max(v0, v1), cap] whose two ramps fit the length (monotone in level).
-  double lo = std::max(v0, v1);
-  double hi = std::max(cap, lo);
+  const double lo = std::max(v0, v1);
+  const double hi = std::max(cap, lo);
   double level = hi;
-  if (ramps_distance(v0, hi, v1, a, d, j) > length) {
-    for (int iter = 0; iter < 100 && hi - lo > 1e-12 * std::max(1.0, hi); ++iter) {
-      const double mid = 0.5 * (lo + hi);
-      if (ramps_distance(v0, mid, v1, a, d, j) <= length)
-        lo = mid;
-      else
-        hi = mid;
-    }
-    level = lo;
-  }
+  const double g_hi = ramps_distance(v0, hi, v1, a, d, j) - length;
+  if (g_hi > 0.0)
+    level = level_search(
+        lo, hi, g_hi, [&](double x) { return ramps_distance(v0, x, v1, a, d, j); }, length);
   jerk::Move move;
   move.sign = 1.0;
   move.v_level = level;

@@ -228,3 +228,68 @@ TEST_CASE("property: random lines and arcs with random limits never exceed an ax
   CHECK(segments > 1000);
   CHECK(chained > 20);
 }
+
+namespace {
+
+/// The level search of profile() before the secant (a plain bisection to 1e-12 relative):
+/// the oracle the faster search must match to the last bit.
+double bisection_level(const PlannedSegment& p) {
+  const double length = p.segment.path.length();
+  auto ramps = [&](double level) {
+    const jerk::Ramp up = jerk::velocity_ramp(p.v_entry, 0.0, level, p.a_max, p.d_max, p.j_max);
+    const jerk::Ramp down = jerk::velocity_ramp(level, 0.0, p.v_exit, p.a_max, p.d_max, p.j_max);
+    return jerk::distance(p.v_entry, 0.0, up) + jerk::distance(level, 0.0, down);
+  };
+  double lo = std::max(p.v_entry, p.v_exit);
+  double hi = std::max(p.segment.limits.v_max, lo);
+  if (ramps(hi) <= length) return hi;
+  for (int iter = 0; iter < 100 && hi - lo > 1e-12 * std::max(1.0, hi); ++iter) {
+    const double mid = 0.5 * (lo + hi);
+    if (ramps(mid) <= length)
+      lo = mid;
+    else
+      hi = mid;
+  }
+  return lo;
+}
+
+}  // namespace
+
+TEST_CASE("property: the profile's level is the bisection's to the last bit (secant + replay)") {
+  std::mt19937 rng(1212);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  auto range = [&](double lo, double hi) { return lo * std::pow(hi / lo, u(rng)); };
+  std::size_t searched = 0;
+  std::size_t none_fits = 0;
+  for (int run = 0; run < 20; ++run) {
+    std::array<AxisLimits, 3> ax{};
+    for (auto& a : ax)
+      a = axis(range(20, 500), range(200, 1e4), range(1e4, 1e7));
+    std::vector<Move> moves;
+    AxisVec p = vec(0, 0);
+    for (int k = 0; k < 100; ++k) {
+      Move m = line(
+          p, vec(p[0] + range(0.01, 50) * (u(rng) - 0.5), p[1] + range(0.01, 50) * (u(rng) - 0.5)),
+          range(5, 600));
+      m.contour = run % 2 == 0 ? Contour::tolerance : Contour::none;
+      m.path_dev = range(0.001, 0.1);
+      moves.push_back(m);
+      p = m.end;
+    }
+    for (PlannedSegment ps : plan(moves, ax, 30)) {
+      // The planned joints, then arbitrary ones (some too far apart for the length).
+      for (int variant = 0; variant < 4; ++variant) {
+        if (variant > 0) {
+          ps.v_entry = ps.segment.limits.v_max * u(rng);
+          ps.v_exit = ps.segment.limits.v_max * u(rng) * u(rng);
+        }
+        const double expected = bisection_level(ps);
+        CHECK(profile(ps).v_level == expected);
+        if (expected < ps.segment.limits.v_max) ++searched;
+        if (expected == std::max(ps.v_entry, ps.v_exit)) ++none_fits;
+      }
+    }
+  }
+  CHECK(searched > 1000);
+  CHECK(none_fits > 20);
+}

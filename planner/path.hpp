@@ -60,6 +60,7 @@ struct BezierGeom {
   static constexpr int kTable = 32;  ///< arc-length table intervals
   std::array<AxisVec, 6> p{};
   std::array<double, kTable + 1> s_at{};  ///< arc length at t = k / kTable
+  AxisMask moving = 0;  ///< axes whose control points are not all equal (the rest are constant)
 };
 
 }  // namespace geom

@@ -52,18 +52,20 @@ struct Derivs {
 
 /// Control points of B and of its first three t-derivatives (hodographs), per axis:
 /// dB = 5 sum b4_k D1_k, d2B = 20 sum b3_k D2_k, d3B = 60 sum b2_k D3_k (forward differences,
-/// scaled here once).
+/// scaled here once). Only the first n axes are set (and read): zeroing all kMaxAxes cost
+/// more than computing the n used (docs/benchmarks.md, issue 12 session 21).
 struct Hodographs {
-  std::array<AxisVec, 6> c0{};
-  std::array<AxisVec, 5> c1{};
-  std::array<AxisVec, 4> c2{};
-  std::array<AxisVec, 3> c3{};
+  std::array<AxisVec, 6> c0;
+  std::array<AxisVec, 5> c1;
+  std::array<AxisVec, 4> c2;
+  std::array<AxisVec, 3> c3;
 };
 
 Hodographs hodographs(const std::array<AxisVec, 6>& p, std::size_t n) {
   Hodographs h;
-  h.c0 = p;
   for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t k = 0; k < 6; ++k)
+      h.c0[k][i] = p[k][i];
     for (std::size_t k = 0; k < 5; ++k)
       h.c1[k][i] = p[k + 1][i] - p[k][i];
     for (std::size_t k = 0; k < 4; ++k)
@@ -111,8 +113,10 @@ Derivs eval(const std::array<AxisVec, 6>& p, std::size_t n, double t) {
 /// the bound samples (the same t for every curve, so no basis is recomputed per curve).
 struct Tables {
   static constexpr int kSamples = 64;  ///< bound samples: t = k / 64, k = 0..64
-  /// Degree-8 Bernstein values at the Gauss nodes: |B'|^2 is a degree-8 polynomial.
-  std::array<std::array<double, 9>, geom::BezierGeom::kTable * 5> gauss8{};
+  static constexpr std::size_t kNodes = geom::BezierGeom::kTable * 5;  ///< Gauss nodes
+  /// Degree-8 Bernstein values at the Gauss nodes (|B'|^2 is a degree-8 polynomial), by degree
+  /// index first (gauss8[j][node]): Segment::bezier runs over the nodes innermost.
+  std::array<std::array<double, kNodes>, 9> gauss8{};
   std::array<std::array<double, 6>, kSamples + 1> s5{};
   std::array<std::array<double, 5>, kSamples + 1> s4{};
   std::array<std::array<double, 4>, kSamples + 1> s3{};
@@ -130,8 +134,11 @@ struct Tables {
   Tables() {
     constexpr double dt = 1.0 / geom::BezierGeom::kTable;
     for (int k = 0; k < geom::BezierGeom::kTable; ++k)
-      for (std::size_t g = 0; g < 5; ++g)
-        gauss8[static_cast<std::size_t>(k) * 5 + g] = basis<8>((k + 0.5) * dt + 0.5 * dt * kGlX[g]);
+      for (std::size_t g = 0; g < 5; ++g) {
+        const auto b8 = basis<8>((k + 0.5) * dt + 0.5 * dt * kGlX[g]);
+        for (std::size_t j = 0; j < 9; ++j)
+          gauss8[j][static_cast<std::size_t>(k) * 5 + g] = b8[j];
+      }
     for (int k = 0; k <= kSamples; ++k) {
       const double t = static_cast<double>(k) / kSamples;
       const auto u = static_cast<std::size_t>(k);
@@ -166,8 +173,11 @@ const Tables& tables() {
 /// The bounds of a whole blend on the 65 tabled parameters: the arithmetic of the general loop
 /// in Segment::bezier_bounds (the same operations in the same order per sample, so the same
 /// values), with the samples innermost so that the compiler can vectorise; the padding sample
-/// repeats the last one (maxima unchanged).
-DerivativeBounds blend_bounds(const Hodographs& h, std::size_t n, AxisMask metric) {
+/// repeats the last one (maxima unchanged). An axis outside `moving` (constant on the curve:
+/// every hodograph value 0) is skipped: its terms would add +0 to the sums and its bounds are
+/// 0, the values the loops would compute.
+DerivativeBounds blend_bounds(const Hodographs& h, std::size_t n, AxisMask metric,
+                              AxisMask moving) {
   constexpr std::size_t kN = Tables::kPadded;
   const Tables& tab = tables();
   std::array<std::array<double, kN>, kMaxAxes> v1;  // first n rows set
@@ -175,26 +185,20 @@ DerivativeBounds blend_bounds(const Hodographs& h, std::size_t n, AxisMask metri
   std::array<std::array<double, kN>, kMaxAxes> v3;
   std::array<double, kN> b11{}, b12{}, b22{}, b13{};
   for (std::size_t i = 0; i < n; ++i) {
+    if (!has(moving, i)) continue;
     std::array<double, kN>& a1 = v1[i];
     std::array<double, kN>& a2 = v2[i];
     std::array<double, kN>& a3 = v3[i];
-    a1.fill(0.0);
-    a2.fill(0.0);
-    a3.fill(0.0);
-    for (std::size_t m = 0; m < 5; ++m) {
-      const double c = h.c1[m][i];
-      for (std::size_t k = 0; k < kN; ++k)
-        a1[k] += tab.u4[m][k] * c;
-    }
-    for (std::size_t m = 0; m < 4; ++m) {
-      const double c = h.c2[m][i];
-      for (std::size_t k = 0; k < kN; ++k)
-        a2[k] += tab.u3[m][k] * c;
-    }
-    for (std::size_t m = 0; m < 3; ++m) {
-      const double c = h.c3[m][i];
-      for (std::size_t k = 0; k < kN; ++k)
-        a3[k] += tab.u2[m][k] * c;
+    // Each value summed over m in order from 0.0 (as the general loop does), in registers.
+    const std::array<double, 5> e1 = {h.c1[0][i], h.c1[1][i], h.c1[2][i], h.c1[3][i], h.c1[4][i]};
+    const std::array<double, 4> e2 = {h.c2[0][i], h.c2[1][i], h.c2[2][i], h.c2[3][i]};
+    const std::array<double, 3> e3 = {h.c3[0][i], h.c3[1][i], h.c3[2][i]};
+    for (std::size_t k = 0; k < kN; ++k) {
+      a1[k] = 0.0 + tab.u4[0][k] * e1[0] + tab.u4[1][k] * e1[1] + tab.u4[2][k] * e1[2] +
+              tab.u4[3][k] * e1[3] + tab.u4[4][k] * e1[4];
+      a2[k] = 0.0 + tab.u3[0][k] * e2[0] + tab.u3[1][k] * e2[1] + tab.u3[2][k] * e2[2] +
+              tab.u3[3][k] * e2[3];
+      a3[k] = 0.0 + tab.u2[0][k] * e3[0] + tab.u2[1][k] * e3[1] + tab.u2[2][k] * e3[2];
     }
     if (!has(metric, i)) continue;
     for (std::size_t k = 0; k < kN; ++k) {
@@ -223,8 +227,9 @@ DerivativeBounds blend_bounds(const Hodographs& h, std::size_t n, AxisMask metri
     c2[k] = 3.0 * sg1 * q4;
     c3[k] = 3.0 * sg1 * sg1 * q4 * iv - sg2 * q4;
   }
-  DerivativeBounds b;
+  DerivativeBounds b;  // zero: the bounds of the constant axes
   for (std::size_t i = 0; i < n; ++i) {
+    if (!has(moving, i)) continue;
     const std::array<double, kN>& a1 = v1[i];
     const std::array<double, kN>& a2 = v2[i];
     const std::array<double, kN>& a3 = v3[i];
@@ -326,19 +331,28 @@ Segment Segment::bezier(std::uint8_t axis_count, AxisMask metric, const std::arr
   seg.metric_ = metric & all;  // the caller passes the metric of the blended segments
   BezierGeom g;
   g.p = p;
+  for (std::size_t i = 0; i < axis_count; ++i)
+    for (std::size_t k = 1; k < 6; ++k)
+      if (p[k][i] != p[0][i]) g.moving |= AxisMask{1} << i;
   constexpr double dt = 1.0 / BezierGeom::kTable;
   const Tables& tab = tables();
   // 160 speeds from |B'|^2 in Bernstein form: 9 products and a root each, whatever the axes.
+  // Each node's sum runs over j in order (the same value as node by node); the nodes are
+  // innermost so the compiler can vectorise.
   const std::array<double, 9> beta = squared_speed(p, axis_count, seg.metric_);
+  std::array<double, Tables::kNodes> node_speed{};
+  for (std::size_t j = 0; j < 9; ++j) {
+    const double c = beta[j];
+    const std::array<double, Tables::kNodes>& b8 = tab.gauss8[j];
+    for (std::size_t q = 0; q < Tables::kNodes; ++q)
+      node_speed[q] += c * b8[q];
+  }
+  for (double& v : node_speed)
+    v = std::sqrt(std::max(v, 0.0));
   for (std::size_t k = 0; k < BezierGeom::kTable; ++k) {
     double sum = 0.0;
-    for (std::size_t q = 0; q < 5; ++q) {
-      const std::array<double, 9>& b8 = tab.gauss8[k * 5 + q];
-      double sq = 0.0;
-      for (std::size_t j = 0; j < 9; ++j)
-        sq += beta[j] * b8[j];
-      sum += kGlW[q] * std::sqrt(std::max(sq, 0.0));
-    }
+    for (std::size_t q = 0; q < 5; ++q)
+      sum += kGlW[q] * node_speed[k * 5 + q];
     g.s_at[k + 1] = g.s_at[k] + 0.5 * dt * sum;
   }
   seg.s_hi_ = g.s_at[BezierGeom::kTable];
@@ -375,10 +389,12 @@ double Segment::bezier_t(const BezierGeom& g, double s) const noexcept {
   const double s_k = g.s_at[k];
   const double span = g.s_at[k + 1] - s_k;
   double t = span > 0.0 ? t_k + dt * std::clamp((s - s_k) / span, 0.0, 1.0) : t_k;
+  // A constant metric axis adds exactly +0 to the squared speed: leaving it out is the same sum.
+  const AxisMask metric = metric_ & g.moving;
   for (int iter = 0; iter < 6; ++iter) {
-    const double sp = speed(g.p, n_, metric_, t);
+    const double sp = speed(g.p, n_, metric, t);
     if (sp <= 0.0) break;
-    const double f = integrate_speed(g.p, n_, metric_, t_k, t) - (s - s_k);
+    const double f = integrate_speed(g.p, n_, metric, t_k, t) - (s - s_k);
     const double step = f / sp;
     t = std::clamp(t - step, t_k, t_k + dt);
     if (std::abs(step) < 1e-15) break;
@@ -410,7 +426,7 @@ DerivativeBounds Segment::bezier_bounds() const noexcept {
   const Tables& tab = tables();
   DerivativeBounds b;
   if (table && !spline_) {
-    b = blend_bounds(h, n_, metric_);
+    b = blend_bounds(h, n_, metric_, g.moving);
   } else {
     // The formulas of arc_length_derivatives(), inlined without the position and without
     // building PathPoints (this loop is most of the cost of a tolerance ball).
