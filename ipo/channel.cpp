@@ -86,6 +86,7 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
     for (std::size_t i = 0; i < config.axes.size(); ++i)
       after.push_back(after_error_axis(config.path.axes[i], config.axes[i].monitor.soft_limits));
     after_.configure(after, t);
+    after_box_ = config.conveyor->workspace;  // --- sync-trafo
   }
 }
 

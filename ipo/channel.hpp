@@ -96,6 +96,9 @@ inline constexpr const char* kHoldBeltStoodId = "NC9081";
 /// NC9054: #SYNC IN waited longer than ChannelConfig::measured_value_wait_max for its measured
 /// value (no workpiece edge latched).
 inline constexpr const char* kMeasuredValueWaitId = "NC9054";
+/// --- sync-trafo: #SYNC IN FEED_CONT > 0 / FEED_CONT_AUTO on a static processing unit
+/// (x_virtual): its feed follows the belt (004 l.438); docs/conveyor.md S-1.
+inline constexpr const char* kStaticFeedContId = "NC9060";
 // --- indp:
 /// NC6103: the path programs an axis while its INDP motion runs or away from where it left it.
 inline constexpr const char* kIndpPathId = "NC6103";
@@ -348,7 +351,20 @@ class Channel {
   bool after_path_ended_ = false;           ///< the interpolator gave its last cycle
   double after_end_t_ = 0.0;                ///< [s] the machine stood
   std::string after_passed_;                ///< a soft limit passed after all (the note says it)
-  std::size_t driven_ = 0;                  ///< axes driven in the cycle being computed (step 3)
+  // --- sync-trafo: the same under #TRAFO ON (channel_sync_error_trafo.cpp): the TCP brakes
+  // before the conveyor workspace's face (ipo/sync_error_trafo.hpp), the joints are checked.
+  bool sync_error_trafo_begin() noexcept;
+  /// The after-error setpoints of a transformed cycle (tcp_ and the joints from it); false: the
+  /// TCP left the kinematic's reach (the run ends there, the note says it).
+  bool sync_error_trafo_step(const Cycle& c, bool& end) noexcept;
+  std::string after_error_trafo_note() const;
+  SyncErrorStop after_tcp_;        ///< the TCP's stop (X, Y, Z: the workspace box)
+  machines::Workspace after_box_;  ///< P-CHAN-00859..00864 [mm]
+  bool after_trafo_ = false;       ///< the error came under #TRAFO ON
+  int after_joint_ = -1;           ///< the joint whose limit decided the stop (-1: the TCP's)
+  AfterErrorEnd after_joint_why_ = AfterErrorEnd::soft_limit;  ///< why for that joint
+  // --- sync-trafo: end
+  std::size_t driven_ = 0;  ///< axes driven in the cycle being computed (step 3)
   // --- workspace: end
   // --- operator: block starts and the actions of scenario events
   /// Passes the interpolator's block starts to the channel's player.

@@ -49,12 +49,14 @@ Channel::EventOutcome Channel::on_sync_in(const interp::SyncIn& command,
   try {
     if (!sync_ || sync_->port() == nullptr)
       return event_error(kNotSupportedId, std::string("not supported: #SYNC IN") + kNeedsWorld, e);
-    // --- sync-feed: FEED_CONT > 0 / FEED_CONT_AUTO run (S-1), not on a static unit
+    // --- sync-feed: FEED_CONT > 0 / FEED_CONT_AUTO run (S-1); --- sync-trafo: on a static unit
+    // they have nothing to act on (docs/conveyor.md S-1): NC9060
     if (static_unit_ && (command.feed_cont_auto || command.feed_cont.value_or(0.0) > 0.0))
-      return event_error(kNotSupportedId,
-                         "not supported: #SYNC IN FEED_CONT > 0 or FEED_CONT_AUTO with the static "
-                         "processing unit (P-CHAN-00364 x_virtual): its path runs at the belt "
-                         "feed and starts from rest after the catch-up",
+      return event_error(kStaticFeedContId,
+                         "#SYNC IN FEED_CONT > 0 or FEED_CONT_AUTO on the static processing unit "
+                         "(P-CHAN-00364 x_virtual): its feed is the belt's and \"cannot be "
+                         "influenced independently\" (004 l.438), the contour starts from the "
+                         "catch-up at rest (l.443); remove FEED_CONT",
                          e);
     if (sync_tag_ != e.tag) {  // first dispatch: from now the path waits for the measured value
       sync_tag_ = e.tag;

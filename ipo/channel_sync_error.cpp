@@ -42,12 +42,14 @@ const char* end_text(AfterErrorEnd why) noexcept {
 bool Channel::sync_error_begin() noexcept {
   if (!error_ || after_begun_ || !sync_ || !after_.usable()) return false;  // once a run
   if (sync_->phase() != SyncPhase::tracking || !sync_->synchronised()) return false;
-  // Not built (docs/conveyor.md): under #TRAFO ON (the joints' stop), a static unit (no real X
-  // follows the belt), INDP axes moving.
-  if (transformed_ || static_unit_) return false;
+  // Not built (docs/conveyor.md): a static unit (no real X follows the belt), INDP axes moving.
+  if (static_unit_) return false;
   for (std::size_t i = 0; i < axes_.size(); ++i)
     if (indp_.owned(i)) return false;
   if (!SyncErrorStop::keeps_synchronisation(error_->id)) return false;
+  // --- sync-trafo: under #TRAFO ON the TCP's stop (channel_sync_error_trafo.cpp)
+  after_trafo_ = false;
+  if (transformed_ && !sync_error_trafo_begin()) return false;
   after_begun_ = true;
   sync_error_ = std::move(error_);
   error_.reset();
@@ -83,10 +85,17 @@ Status Channel::sync_error_cycle(bool fresh) noexcept {
   const Cycle& c = after_cycle_;
   // The belt's world goes on (its errors are not raised again: the channel is in error).
   (void)sync_->step(c.t);
-  map_to_axes(c);
+  if (!after_trafo_) map_to_axes(c);
   std::span<axes::Setpoint> sp(setpoint_.data(), axes_.size());
   bool end = false;
-  if (after_.stopping()) {
+  if (after_trafo_) {  // --- sync-trafo: the TCP's stop and the joints from it
+    if (!sync_error_trafo_step(c, end)) {
+      after_passed_ = "; the TCP would have left the kinematic's reach: the run ended there";
+      after_end_t_ = c.t - t_cycle;
+      error_ = sync_error_;
+      return Status::error;
+    }
+  } else if (after_.stopping()) {
     after_.step(sp);
     end = after_.stood();
   } else {
@@ -147,6 +156,7 @@ Status Channel::sync_error_cycle(bool fresh) noexcept {
 
 std::string Channel::after_error_note() const {
   if (!sync_error_) return {};
+  if (after_trafo_) return after_error_trafo_note();  // --- sync-trafo
   char buf[512];
   std::string axis;
   std::string limit;

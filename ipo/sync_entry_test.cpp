@@ -219,14 +219,26 @@ TEST_CASE("sync_entry: the smallest of FEED_CONT, the link and the entry cap, an
   CHECK(ipo::sync_entry(50.0, minus_y, &seg, 100.0, axes, kT).v == doctest::Approx(5.0));
 }
 
-TEST_CASE("FEED_CONT > 0 on a static unit and under #TRAFO ON: not supported (NC6001)") {
-  SUBCASE("static processing unit (P-CHAN-00364 x_virtual)") {
-    const Run r = run("%t\nN20 #SYNC IN [CONV_VEL=18000 FEED_CONT=600]\nN30 G01 X10\nN40 M30\n",
+TEST_CASE(
+    "FEED_CONT > 0 on a static unit is NC9060 (004 l.438); under #TRAFO ON not supported "
+    "(NC6001)") {
+  SUBCASE("static processing unit (P-CHAN-00364 x_virtual): NC9060 at the #SYNC IN line") {
+    for (const char* feed : {"FEED_CONT=600", "FEED_CONT_AUTO"}) {
+      CAPTURE(feed);
+      const Run r =
+          run(std::string("%t\nN20 #SYNC IN [CONV_VEL=18000 ") + feed + "]\nN30 G01 X10\nN40 M30\n",
+              interp::test::machine("static_saw"));
+      REQUIRE(r.error);
+      CHECK(r.error->id == "NC9060");
+      CHECK(r.error->line == 2);
+      CHECK(r.error->message.find("x_virtual") != std::string::npos);
+      CHECK(r.error->message.find("l.438") != std::string::npos);
+    }
+  }
+  SUBCASE("static processing unit: FEED_CONT=0 is FEED_CONT absent (no error at #SYNC IN)") {
+    const Run r = run("%t\nN20 #SYNC IN [CONV_VEL=18000 FEED_CONT=0]\nN30 G01 X10\nN40 M30\n",
                       interp::test::machine("static_saw"));
-    REQUIRE(r.error);
-    CHECK(r.error->id == "NC6001");
-    CHECK(r.error->line == 2);
-    CHECK(r.error->message.find("x_virtual") != std::string::npos);
+    if (r.error) CHECK(r.error->id != "NC9060");
   }
   SUBCASE("#TRAFO ON (the delta picker)") {
     machines::Machine m = interp::test::machine("delta_picker");

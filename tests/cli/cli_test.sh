@@ -255,14 +255,14 @@ expect "time --audit passes on the long line" 0 '^audit: ok$' '' -- \
   time --audit "$fixtures/long_line.nc"
 expect "run --audit passes on the long line" 0 '' '^audit: ok$' -- \
   run --audit -o "$work/audit.csv" "$fixtures/long_line.nc"
-expect "an unsupported command answers not supported at its line, status 1" 1 '' \
-  'sync_in\.nc:4:1: error: run-time error at t=0 s: not supported: #SYNC IN FEED_CONT.*FEED_CONT_AUTO.*x_virtual.*\[NC6001\]' -- \
+expect "a run-time error at its line (FEED_CONT on a static unit), status 1" 1 '' \
+  'sync_in\.nc:4:1: error: run-time error at t=0 s: #SYNC IN FEED_CONT.*FEED_CONT_AUTO.*x_virtual.*\[NC9060\]' -- \
   time --machine "$root/machines/static_saw" "$fixtures/sync_in.nc"
-expect "run stops at an unsupported command, status 1" 1 '' 'not supported: #SYNC IN' -- \
+expect "run stops at a run-time error, status 1" 1 '' '#SYNC IN FEED_CONT.*\[NC9060\]' -- \
   run --machine "$root/machines/static_saw" -o "$work/sync.csv" "$fixtures/sync_in.nc"
 checks=$((checks + 1))
 if [[ -f $work/sync.csv && ! -e $work/sync.csv.tmp ]] &&
-  [[ $(tail -2 "$work/sync.csv" | head -1) == "# error: "*"not supported: #SYNC IN"* ]] &&
+  [[ $(tail -2 "$work/sync.csv" | head -1) == "# error: "*"#SYNC IN FEED_CONT"*"NC9060"* ]] &&
   [[ $(tail -1 "$work/sync.csv") == "# stop: error" ]]; then
   echo "ok   run keeps the trajectory up to the error, with a closing comment"
 else
