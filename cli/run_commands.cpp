@@ -640,6 +640,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   playing.attach(channel, in.port.get());
   if (audit) audit->set_setpoints(&channel.setpoints());  // axis limits on the setpoints
   if (recorder) recorder->set_setpoints(&channel.setpoints());
+  if (recorder) recorder->set_tcp(&channel.tcp());
   if (recorder) recorder->set_conveyor(channel.conveyor_sync());
   // The conveyor display variables (seed 004 §6; docs/conveyor.md) with --detail on a channel
   // that tracks a conveyor: mm, mm/s, mm/s^2, 0 before the first measurement; synchro_lag

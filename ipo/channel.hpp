@@ -201,6 +201,9 @@ class Channel {
   bool transformed() const noexcept { return transformed_; }
   /// The joint setpoints of the last transformed cycle (machine axes in interpolated order).
   const JointSetpoint& joints() const noexcept { return joints_; }
+  /// The TCP setpoint of the last transformed cycle, in MCS (X, Y, Z first; the PCS1 offset
+  /// and the catch-up included): what the joints() were computed from [mm, mm/s, ...].
+  const std::array<axes::Setpoint, planner::kMaxAxes>& tcp() const noexcept { return tcp_; }
   /// The setpoint (p, v, a, j) every axis received in the last cycle [mm | deg, /s ...].
   const std::array<axes::Setpoint, planner::kMaxAxes>& setpoints() const noexcept {
     return setpoint_;

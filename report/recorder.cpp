@@ -147,11 +147,13 @@ void Recorder::on_cycle(const ipo::Cycle& c) {
   // Toolpaths: on a channel that tracks a conveyor the MCS toolpath is the setpoints (the
   // path point is in PCS1 while it is synchronised, and stands during a catch-up or departure)
   // and the path point is the PCS1 toolpath while PCS1 moves or a catch-up drives the axes;
-  // elsewhere the path point is the MCS toolpath (the TCP under #TRAFO).
+  // elsewhere the path point is the MCS toolpath (the TCP under #TRAFO). Under #TRAFO on a
+  // conveyor channel the setpoints are joints: the MCS toolpath is then the TCP (set_tcp()).
   if (conveyor_ != nullptr && set_ != nullptr) {
+    const auto& mcs = transformed_ && tcp_ != nullptr ? *tcp_ : *set_;
     mcs_point_.resize(mcs_.dims());
     for (std::size_t i = 0; i < mcs_point_.size(); ++i)
-      mcs_point_[i] = (*set_)[i].p;
+      mcs_point_[i] = mcs[i].p;
     mcs_.add(mcs_point_);
     if (conveyor_->driving() || conveyor_->moving_frame()) {
       if (!pcs1_) pcs1_ = std::make_unique<PathThinner>(mcs_.dims(), kPathPoints);

@@ -138,6 +138,9 @@ class Recorder final : public ipo::Sink {
     audit_.set_setpoints(set);
     set_ = set;
   }
+  /// The TCP in MCS of a cycle under #TRAFO ON (ipo::Channel::tcp(); null: none): on a
+  /// conveyor channel the MCS toolpath of a transformed cycle (the setpoints are joints there).
+  void set_tcp(const std::array<axes::Setpoint, planner::kMaxAxes>* tcp) noexcept { tcp_ = tcp; }
   /// The channel's conveyor tracking (null: none): the setpoints are then the MCS toolpath, and
   /// while it moves PCS1 or drives a catch-up the cycle's path point is the PCS1 toolpath. With
   /// a conveyor world attached (sync->port()) the conveyor series kConveyorSeries are appended
@@ -173,6 +176,7 @@ class Recorder final : public ipo::Sink {
   std::vector<double> pcs1_point_;
   const std::array<axes::Setpoint, planner::kMaxAxes>* set_ = nullptr;  ///< set_setpoints()
   const ipo::ConveyorSync* conveyor_ = nullptr;                         ///< set_conveyor()
+  const std::array<axes::Setpoint, planner::kMaxAxes>* tcp_ = nullptr;  ///< set_tcp()
   std::vector<double> mcs_point_;  ///< scratch: the MCS tool point of the cycle
   std::vector<double> values_;     ///< one row of series_
   const ipo::AxesState* axes_state_ = nullptr;

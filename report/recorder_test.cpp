@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -219,6 +220,47 @@ TEST_CASE(
   CHECK(d.workspace->pos_limit == -190.0);
   CHECK(d.workspace->along_x);
   CHECK(d.workspace->sign == 1);
+}
+
+TEST_CASE("a conveyor channel under #TRAFO ON: the MCS toolpath is the TCP, not the joints") {
+  const axes::Dynamics dyn{1000.0, 5000.0, 5000.0, 50000.0};
+  const std::vector<SyncAxis> sync_axes{SyncAxis{"X", 0, dyn}, SyncAxis{"Y", 1, dyn},
+                                        SyncAxis{"Z", 2, dyn}};
+  ChannelConfig cc;
+  cc.path.axes.assign(3, axis(1000, 5000, 50000));
+  cc.axes.resize(3);
+  machines::ConveyorSyncChannel conv;
+  cc.conveyor = conv;
+  ConveyorSync sync(conv, sync_axes, 0.001);
+  Recorder rec({"X", "Y", "Z"}, cc.path.axes, 0.001, cc.path.start);
+  std::array<axes::Setpoint, planner::kMaxAxes> joints{}, tcp{};
+  rec.set_setpoints(&joints);
+  rec.set_tcp(&tcp);
+  rec.set_conveyor(&sync);
+  planner::Move move;
+  move.transformed = true;
+  Cycle c{};
+  c.activity = Activity::motion;
+  c.programmed = &move;
+  for (int k = 1; k <= 3; ++k) {
+    c.t = 0.001 * k;
+    for (std::size_t i = 0; i < 3; ++i) {
+      joints[i].p = 10.0 * k + static_cast<double>(i);  // joint angles [deg]
+      tcp[i].p = -500.0 * k - static_cast<double>(i);   // the TCP [mm]
+    }
+    rec.on_cycle(c);
+  }
+  move.transformed = false;  // the same channel without the transform: the setpoints
+  c.t = 0.004;
+  joints[0].p = 77.0;
+  rec.on_cycle(c);
+  const ReportData d = rec.finish({"p.nc", "m", "", ""});
+  REQUIRE(d.path_dims == 3);
+  REQUIRE(d.path_mcs.size() >= 6);
+  CHECK(d.path_mcs[0] == -500.0);
+  CHECK(d.path_mcs[1] == -501.0);
+  CHECK(d.path_mcs[2] == -502.0);
+  CHECK(d.path_mcs[d.path_mcs.size() - 3] == 77.0);
 }
 
 TEST_CASE("no conveyor tracking: no conveyor series, no workspace") {
