@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job on a bundled conveyor example: install what is missing, build ncsim, then check,
 # time (with the audit), run and report programs/conveyor_squares (three sheets on a moving belt,
-# each measured, caught up, cut while it moves and left), and print where the report is.
+# each measured, caught up, cut while it moves and left), and print where the report is; then
+# the reports of one bundled example of each other kind of machine, with screenshots.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/deps.sh
@@ -25,17 +26,33 @@ echo
 report=build/release/conveyor_squares.html
 echo "\$ ncsim report -o $report $example"
 build/release/cli/ncsim report -o "$report" "$example"
-shot=build/release/conveyor_squares.png
-rm -f "$shot"
-if command -v chromium >/dev/null 2>&1; then
+# screenshot PAGE PNG: headless Chromium's picture of a report page (empty when it fails).
+screenshot() {
+  rm -f "$2"
+  command -v chromium >/dev/null 2>&1 || return 0
   timeout 120 chromium --headless --no-sandbox --disable-gpu --disable-dev-shm-usage \
     --user-data-dir="$PWD/build/release/chromium-profile" --virtual-time-budget=10000 \
-    --window-size=1280,2400 --screenshot="$PWD/$shot" "file://$PWD/$report" >/dev/null 2>&1 || true
-fi
+    --window-size=1280,2400 --screenshot="$PWD/$2" "file://$PWD/$1" >/dev/null 2>&1 || true
+}
+shot=build/release/conveyor_squares.png
+screenshot "$report" "$shot"
 if [[ -s $shot ]]; then
   echo "screenshot: $PWD/$shot"
 else
   echo "screenshot: not made (chromium missing or failed; scripts/deps.sh installs it)"
 fi
+echo
+# The other bundled examples, one of each kind of machine: their reports and screenshots in
+# build/release/reports (a run-time error would be on its page; each of these runs through).
+mkdir -p build/release/reports
+echo "reports of the other bundled examples (build/release/reports):"
+for name in laser_coil pick_and_place_50 static_saw_repaired override_above_100 dense_cam; do
+  page=build/release/reports/$name.html
+  build/release/cli/ncsim report -o "$page" "programs/$name/$name.nc" >/dev/null
+  screenshot "$page" "build/release/reports/$name.png"
+  printf '  %-22s %s%s\n' "$name" "$PWD/$page" \
+    "$([[ -s build/release/reports/$name.png ]] && echo ' (+ .png)')"
+done
+echo
 echo "report: $PWD/$report"
 echo "open in a browser: file://$PWD/$report"
