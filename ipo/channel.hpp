@@ -19,8 +19,8 @@
 //   2. Mapping point -> machine axis setpoints: identity, or under #TRAFO ON the joint stage
 //      (the TCP point -> joint setpoints, ipo/joint_stage.hpp), plus the conveyor's moving PCS1
 //      frame (ConveyorSync: the Port is stepped first; the catch-up / departure profiles drive
-//      the axes while they run; PCS1 blocks get the frame's offset). Conveyor tracking under
-//      #TRAFO ON is not supported yet (NC6001).
+//      the axes while they run; PCS1 blocks get the frame's offset; under #TRAFO ON the
+//      offset moves the TCP before the joint stage, docs/conveyor.md).
 //   3. Per axis: soft limits P-AXIS-00177 / 00178 on the command position (NC5501 / NC5502),
 //      PositionControlModel::step(), AxisMonitor::step() (position lag 0x4550, exact-stop
 //      window P-ERR-70082, and the other monitors the axis list enables).

@@ -43,6 +43,15 @@ struct Outcome {
   std::optional<ipo::RunTimeError> error;
 };
 
+/// Runs the rig to its end: the status, the program error, the run-time error.
+Outcome outcome(ipo::test::ConveyorRig& rig) {
+  Outcome r;
+  r.status = ipo::test::run_to_end(rig.ch, {}, 100'000);
+  if (const core::Diagnostic* d = rig.src.error()) r.source_error = *d;
+  r.error = rig.ch.run_time_error();
+  return r;
+}
+
 /// The delta picker (workspace holding its working height) with the joints Y and Z at
 /// `v_joint` [deg/s] (X, the channel's first axis, keeps its 720 deg/s: 50587 compares CONV_VEL
 /// with it).
@@ -57,11 +66,7 @@ Outcome run(double v_joint) {
   ipo::test::FakePort port(10.0);
   port.latch_at_ = 100;
   ipo::test::ConveyorRig rig(kPick, m, ipo::channel_config(m, kT), &port);
-  Outcome r;
-  r.status = ipo::test::run_to_end(rig.ch, {}, 100'000);
-  if (const core::Diagnostic* d = rig.src.error()) r.source_error = *d;
-  r.error = rig.ch.run_time_error();
-  return r;
+  return outcome(rig);
 }
 
 }  // namespace
@@ -104,11 +109,7 @@ Outcome catch_up(double v_x) {
   ipo::test::FakePort port(108.0);
   port.latch_at_ = 1;
   ipo::test::ConveyorRig rig(kCatchUp, m, ipo::channel_config(m, kT), &port);
-  Outcome r;
-  r.status = ipo::test::run_to_end(rig.ch, {}, 100'000);
-  if (const core::Diagnostic* d = rig.src.error()) r.source_error = *d;
-  r.error = rig.ch.run_time_error();
-  return r;
+  return outcome(rig);
 }
 
 }  // namespace
