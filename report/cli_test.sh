@@ -14,6 +14,8 @@ source "$(dirname "$0")/../tests/cli/expect.sh"
 expect "report exits 0 and prints where the page is" 0 "^report: $work/a.html\$" '' -- \
   report "$fixtures/clean.nc" -o "$work/a.html"
 holds "the page is written" test -s "$work/a.html"
+holds "the audit table knows an acceleration-limited slope (no jerk checked), as the CLI" \
+  grep -q '"j_limit":[0-9.e+]*,"jerk_cycles":0}' "$work/a.html"
 holds "no temporary file is left" test ! -e "$work/a.html.tmp"
 holds "the page inlines uPlot" grep -q 'uPlot (v1\.6\.32)' "$work/a.html"
 holds "the page says the run was ok" grep -q '"outcome":"ok"' "$work/a.html"
@@ -48,6 +50,8 @@ holds "the conveyor page has the workspace and pos_limit of laser_portal" \
   grep -q '"workspace":{"lower":\[-200,-200,-100\],"upper":\[4000,2500,300\],"pos_limit":-190,' \
   "$work/conv.html"
 
+holds "the conveyor page's axes were jerk-checked (jerk-limited slope while synchronised)" \
+  grep -q '"jerk_cycles":[1-9][0-9]*}' "$work/conv.html"
 holds "the conveyor page has three complete workpiece rows" \
   grep -q '"workpieces":{"summary":{"workpieces":3,"complete":3,' "$work/conv.html"
 summary=$("$ncsim" time "$programs/conveyor_squares/conveyor_squares.nc" --json |

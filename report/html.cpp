@@ -218,7 +218,7 @@ std::string json(const ReportData& d) {
     value(s, std::max(a.j_closed, a.j_diff));
     s += ",\"j_limit\":";
     value(s, a.j_limit);
-    s += '}';
+    s += ",\"jerk_cycles\":" + std::to_string(a.jerk_cycles) + '}';
   }
   s += "],\"violations\":[";
   const std::size_t listed = std::min(v.violations.size(), kPageViolations);

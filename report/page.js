@@ -259,8 +259,10 @@
      'formulas, ' + A.cycles + ' cycles');
   table(root, ['axis', 'max |v|', 'v limit', 'max |a|', 'a limit', 'max |j|', 'j limit'],
         A.axes.map(function (x, i) {
-          return [D.axes[i], fmt(x.v), fmt(x.v_limit), fmt(x.a), fmt(x.a_limit), fmt(x.j),
-                  fmt(x.j_limit)];
+          // No cycle on a jerk-limited slope: |j| is not limited (the CLI's audit says so too).
+          var jerk = x.jerk_cycles > 0;
+          return [D.axes[i], fmt(x.v), fmt(x.v_limit), fmt(x.a), fmt(x.a_limit),
+                  jerk ? fmt(x.j) : '\u2013', jerk ? fmt(x.j_limit) : 'not limited (STEP)'];
         }), [0]);
   if (A.violations.length > 0) {
     el('h3', root, 'Violations' + (A.violation_count > A.violations.length ?
