@@ -47,11 +47,15 @@ struct After {
   ipo::Verdict verdict;
 };
 
-After run(const char* program = kProgram) {
+After run(const char* program = kProgram, long belt_stop_at = 0) {
   machines::Machine m = interp::test::machine("laser_portal");
   m.channel.conveyor->workspace.upper[0] = 3000.0;
   ipo::test::FakePort port(kBelt);
   port.latch_at_ = 1;
+  if (belt_stop_at > 0) {
+    port.v_change_at_ = belt_stop_at;
+    port.v_new_ = 0.0;
+  }
   ipo::ChannelConfig cfg = ipo::channel_config(m, kT);
   ipo::Audit audit(cfg.path.axes, kT, cfg.path.start);
   ipo::test::ConveyorRig rig(program, m, cfg, &port, &audit);
@@ -151,4 +155,24 @@ TEST_CASE(
     CHECK(r.t.back() <= r.error->t + 1e-9);
     CHECK(r.verdict.violation_count == 0);
   }
+}
+
+TEST_CASE(
+    "an error while synchronised with an INDP axis, the belt stopped meanwhile: the machine "
+    "stands with the belt once the INDP axis stands too") {
+  const After free = run();
+  REQUIRE(free.error);
+  const long stop_at = static_cast<long>(std::lround((free.error->t + 1.0) / kT));
+  const After r = run(kProgram, stop_at);
+  REQUIRE(r.error);
+  CHECK(r.error->id == "NC9052");
+  CHECK(r.error->t == free.error->t);
+  MESSAGE(r.note);
+  CHECK(r.note.find("stood with the belt") != std::string::npos);
+  CHECK(r.note.find("INDP axis Z braked on its own ramp") != std::string::npos);
+  CHECK(r.z.back() == free.z.back());  // Z stood long before, where it stood without the stop
+  CHECK(r.vz.back() == 0.0);
+  CHECK(r.x.back() < 4000.0 - 100.0);
+  CHECK(r.t.back() <= static_cast<double>(stop_at) * kT + 0.002);
+  // (No audit here: the FakePort's belt steps from 300 mm/s to 0 in one cycle, and X with it.)
 }
