@@ -367,6 +367,21 @@ class Channel {
   int after_joint_ = -1;           ///< the joint whose limit decided the stop (-1: the TCP's)
   AfterErrorEnd after_joint_why_ = AfterErrorEnd::soft_limit;  ///< why for that joint
   // --- sync-trafo: end
+  // --- trafo-feed: INDP axes owned at the error (channel_sync_error_indp.cpp): each brakes on
+  // its own deceleration ramp while the path axes follow the belt (docs/conveyor.md).
+  /// Stops the owned INDP axes; false: not built (INDP axes under #TRAFO ON), the run ends.
+  bool sync_error_indp_begin() noexcept;
+  /// Steps the INDP axes once for cycle `c` (unless indp_cycle() did) and applies them.
+  void sync_error_indp_step(const Cycle& c) noexcept;
+  /// Their setpoints into setpoint_ and the shown cycle (after SyncErrorStop wrote all axes).
+  void sync_error_indp_apply() noexcept;
+  /// setpoint_ with the INDP axes at rest: what SyncErrorStop decides on (not theirs to stop).
+  std::array<axes::Setpoint, planner::kMaxAxes> sync_error_path_axes() const noexcept;
+  /// Every INDP axis braked at the error stands.
+  bool sync_error_indp_stood() const noexcept;
+  planner::AxisMask after_indp_ = 0;                ///< the INDP axes owned at the error
+  std::uint64_t indp_stepped_ = ~std::uint64_t{0};  ///< the cycle indp_.step() last ran for
+  // --- trafo-feed: end
   std::size_t driven_ = 0;  ///< axes driven in the cycle being computed (step 3)
   // --- workspace: end
   // --- operator: block starts and the actions of scenario events
@@ -440,8 +455,10 @@ class Channel {
   std::optional<RunTimeError> trafo_warning_;  ///< the first NC6210 of the run
   /// The catch-up / departure under #TRAFO ON: the TCP's dynamics from the joints
   /// (ipo/trafo_sync); false: the plan failed (`r` holds why). channel_kinematics.cpp.
+  /// --- trafo-feed: `feed_cont` [mm/s] the catch-up's relative velocity at the meeting (S-1).
   bool trafo_sync_motion(bool catch_up, std::span<const axes::MotionState> start,
-                         std::span<const double> target, axes::Result& r) noexcept;
+                         std::span<const double> target, double feed_cont,
+                         axes::Result& r) noexcept;
   /// Checks the joints of a synchronised cycle under #TRAFO ON (NC6210 warning).
   void trafo_sync_check(const Cycle& c, const JointSetpoint& s) noexcept;
   std::optional<ConveyorSync> sync_;           ///< --- conveyor-sync: with FCT_DLM only

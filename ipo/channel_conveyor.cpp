@@ -32,7 +32,9 @@ bool Channel::sync_check_workspace(const Cycle& c) noexcept {
   Eigen::Vector3d p = Eigen::Vector3d::Zero();
   for (std::size_t i = 0; i < axes_.size(); ++i)
     if (const int k = sync_->xyz(i); k >= 0)
-      p[k] = transformed_ ? tcp_[i].p : setpoint_[i].p;  // --- trafo: the TCP under #TRAFO
+      p[k] = transformed_     ? tcp_[i].p            // --- trafo: the TCP under #TRAFO
+             : indp_.owned(i) ? indp_.setpoint(i).p  // --- trafo-feed: the INDP axis's own
+                              : setpoint_[i].p;
   try {
     if (auto e = sync_->workspace(p)) {
       stop(e->id.c_str(), std::move(e->message), c, -1);
@@ -122,22 +124,15 @@ Channel::EventOutcome Channel::on_sync_motion(const interp::Motion& motion,
     target[i] = motion.end[i];  // interpolated order, MCS at belt travel 0
   }
   const bool catch_up = sync_->phase() == SyncPhase::latched;
-  // --- sync-feed: a catch-up meeting the workpiece moving (FEED_CONT > 0, FEED_CONT_AUTO)
+  // --- sync-feed: a catch-up meeting the workpiece moving (FEED_CONT > 0, FEED_CONT_AUTO);
+  // --- trafo-feed: under #TRAFO ON too, as a TCP motion (docs/conveyor.md S-1)
   const bool moving = catch_up && sync_->feed_cont_wanted() > 0.0;
-  if (moving && stage_ && transformed_) {
-    return event_error(kNotSupportedId,
-                       "not supported: #SYNC IN FEED_CONT > 0 or FEED_CONT_AUTO under #TRAFO ON "
-                       "(the catch-up is a TCP motion whose joint dynamics are derived for a "
-                       "meeting at rest)",
-                       e);
-  }
+  const double f =
+      moving ? sync_entry_velocity(std::span(start.data(), n), std::span(target.data(), n)) : 0.0;
   axes::Result r = axes::Result::ok;
   if (stage_ && transformed_) {  // --- trafo
-    trafo_sync_motion(catch_up, std::span(start.data(), n), std::span(target.data(), n), r);
+    trafo_sync_motion(catch_up, std::span(start.data(), n), std::span(target.data(), n), f, r);
   } else {
-    const double f =
-        moving ? sync_entry_velocity(std::span(start.data(), n), std::span(target.data(), n))
-               : 0.0;  // --- sync-feed
     r = catch_up ? sync_->start_catch_up(std::span(start.data(), n), std::span(target.data(), n), f)
                  : sync_->start_departure(std::span(start.data(), n), std::span(target.data(), n));
   }

@@ -23,6 +23,7 @@ std::string number(double x) {
 
 bool Channel::indp_cycle(const Cycle& c) noexcept {
   indp_.step();
+  indp_stepped_ = c.index;  // --- trafo-feed: sync_error_indp_step() steps it once a cycle
   planner::AxisMask owned = indp_.owned_mask();
   // An axis the path drives: its INDP state follows the path's setpoint, so an INDP command
   // starts from where (and how fast) the axis is.
@@ -110,7 +111,14 @@ Channel::EventOutcome Channel::indp_command(const interp::AxisCommand& c,
   // isg-language.md 6.1: "By default no offsets are applied": POS is the axis value (MCS) under
   // a #CS too; under #SYNC (PCS1) or #TRAFO ON the target would need the moving frame or the
   // kinematics.
-  if (c.frame.space == interp::Space::pcs1 || c.frame.kinematics)
+  // --- trafo-feed: while synchronised an axis the belt does not move (its share of T0's X is
+  // 0: Z, C) has PCS1 = MCS up to T0's constant offset: POS is its MCS value as outside #SYNC
+  // (docs/conveyor.md "With INDP axes"). An axis the belt moves would need the moving frame.
+  const bool belt_moves =
+      c.frame.space == interp::Space::pcs1 &&
+      (!sync_ || (sync_->xyz(i) >= 0 && sync_->xyz(i) < 3 &&
+                  std::fabs(sync_->frame().direction()[sync_->xyz(i)]) >= 1e-12));
+  if (belt_moves || c.frame.kinematics)
     return event_error(kNotSupportedId,
                        "not supported: INDP motion of axis " + axes_[i].config.name +
                            (c.frame.kinematics ? " under #TRAFO ON" : " while synchronised (PCS1)"),

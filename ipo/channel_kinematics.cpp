@@ -103,7 +103,8 @@ void Channel::trafo_sync_check(const Cycle& c, const JointSetpoint& s) noexcept 
 }
 
 bool Channel::trafo_sync_motion(bool catch_up, std::span<const axes::MotionState> start,
-                                std::span<const double> target, axes::Result& r) noexcept {
+                                std::span<const double> target, double feed_cont,
+                                axes::Result& r) noexcept {
   const std::size_t n = start.size();
   std::array<axes::Dynamics, planner::kMaxAxes> joints{};
   std::array<axes::Dynamics, planner::kMaxAxes> tcp{};
@@ -131,7 +132,9 @@ bool Channel::trafo_sync_motion(bool catch_up, std::span<const axes::MotionState
     }
     for (const int k : xyz)
       if (k >= 0) tcp[static_cast<std::size_t>(k)] = *d;
-    r = catch_up ? sync_->start_catch_up(start, target, 0.0, std::span(tcp.data(), n))
+    // --- trafo-feed: FEED_CONT > 0 meets the workpiece moving; the meeting point, its
+    // velocity belt + f u inside the TCP's V, is covered by the second pass (S-1).
+    r = catch_up ? sync_->start_catch_up(start, target, feed_cont, std::span(tcp.data(), n))
                  : sync_->start_departure(start, target, std::span(tcp.data(), n));
     if (r != axes::Result::ok || !catch_up) return r == axes::Result::ok;
     // The meeting point is known now: cover it and the way there, then plan again.

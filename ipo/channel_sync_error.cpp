@@ -42,11 +42,10 @@ const char* end_text(AfterErrorEnd why) noexcept {
 bool Channel::sync_error_begin() noexcept {
   if (!error_ || after_begun_ || !sync_ || !after_.usable()) return false;  // once a run
   if (sync_->phase() != SyncPhase::tracking || !sync_->synchronised()) return false;
-  // Not built (docs/conveyor.md): a static unit (no real X follows the belt), INDP axes moving.
+  // Not built (docs/conveyor.md): a static unit (no real X follows the belt).
   if (static_unit_) return false;
-  for (std::size_t i = 0; i < axes_.size(); ++i)
-    if (indp_.owned(i)) return false;
   if (!SyncErrorStop::keeps_synchronisation(error_->id)) return false;
+  if (!sync_error_indp_begin()) return false;  // --- trafo-feed: the INDP axes brake
   // --- sync-trafo: under #TRAFO ON the TCP's stop (channel_sync_error_trafo.cpp)
   after_trafo_ = false;
   if (transformed_ && !sync_error_trafo_begin()) return false;
@@ -86,6 +85,7 @@ Status Channel::sync_error_cycle(bool fresh) noexcept {
   // The belt's world goes on (its errors are not raised again: the channel is in error).
   (void)sync_->step(c.t);
   if (!after_trafo_) map_to_axes(c);
+  sync_error_indp_step(c);  // --- trafo-feed
   std::span<axes::Setpoint> sp(setpoint_.data(), axes_.size());
   bool end = false;
   if (after_trafo_) {  // --- sync-trafo: the TCP's stop and the joints from it
@@ -97,17 +97,21 @@ Status Channel::sync_error_cycle(bool fresh) noexcept {
     }
   } else if (after_.stopping()) {
     after_.step(sp);
-    end = after_.stood();
+    sync_error_indp_apply();  // --- trafo-feed
+    end = after_.stood() && sync_error_indp_stood();
   } else {
     AfterErrorEnd why = AfterErrorEnd::soft_limit;
     int axis = -1;
     const bool path_stands = c.path.v == 0.0 && c.path.a == 0.0;
     const bool belt_stands = std::fabs(sync_->belt_velocity()) <= SyncErrorStop::kStandstill;
+    // --- trafo-feed: the path axes decide; the INDP axes brake on their own
+    const auto path_axes = sync_error_path_axes();
+    const std::span<const axes::Setpoint> seen(path_axes.data(), axes_.size());
     if (path_stands && belt_stands) {
-      after_.start_stopping(sp, AfterErrorEnd::belt_stop, -1);
-      end = true;
-    } else if (after_.must_stop(sp, why, axis)) {
-      after_.start_stopping(sp, why, axis);  // this cycle as computed, braking from the next
+      after_.start_stopping(seen, AfterErrorEnd::belt_stop, -1);
+      end = sync_error_indp_stood();
+    } else if (after_.must_stop(seen, why, axis)) {
+      after_.start_stopping(seen, why, axis);  // this cycle as computed, braking from the next
     }
     after_.follow_cycle();
   }
@@ -180,7 +184,11 @@ std::string Channel::after_error_note() const {
                 "machine followed the belt for %.6g s;%s %s%s; it stood at t=%.6g s",
                 sync_error_->id.c_str(), after_.followed(), axis.c_str(), end_text(after_.why()),
                 limit.c_str(), after_end_t_);
-  return std::string(buf) + after_passed_;
+  std::string indp;  // --- trafo-feed
+  for (std::size_t i = 0; i < axes_.size(); ++i)
+    if ((after_indp_ >> i) & 1u) indp += (indp.empty() ? "" : ", ") + axes_[i].config.name;
+  if (!indp.empty()) indp = "; INDP axis " + indp + " braked on its own ramp";
+  return std::string(buf) + indp + after_passed_;
 }
 
 }  // namespace ncsim::ipo

@@ -207,6 +207,22 @@ bool IndpAxes::interrupt(std::size_t i) noexcept {
   return true;
 }
 
+// --- trafo-feed
+bool IndpAxes::stop(std::size_t i) noexcept {
+  Axis& a = axes_[i];
+  if (a.mode == Mode::idle) return false;
+  a.interruptible = false;
+  axes::Profile p;
+  if (axes::plan_stop(state(a), a.dynamics, p) != axes::Result::ok) {
+    std::abort();  // the stop from a state inside the limits always plans
+  }
+  a.profile = p;
+  a.k = 0;
+  a.t = 0.0;
+  a.mode = Mode::stopping;
+  return true;
+}
+
 // --- sync-feed
 bool IndpAxes::hand_over(std::size_t i) noexcept {
   if (!interruptible(i)) return false;

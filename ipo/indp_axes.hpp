@@ -111,6 +111,11 @@ class IndpAxes {
   bool interrupt(std::size_t i) noexcept;
   /// True when axis `i` runs an INTERRUPTIBLE INDP_SYN motion.
   bool interruptible(std::size_t i) const noexcept;
+  // --- trafo-feed: an error while synchronised (004 §2.3, docs/conveyor.md).
+  /// Stops the motion of axis `i`, whatever it is, on its deceleration ramp (the fastest stop
+  /// with the motion's own A- and J, plan_stop); the motion counts as done where it stops.
+  /// False when the axis runs none (in position).
+  bool stop(std::size_t i) noexcept;
 
   /// Advances every owned axis by one cycle T.
   void step() noexcept;

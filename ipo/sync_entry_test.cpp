@@ -219,9 +219,8 @@ TEST_CASE("sync_entry: the smallest of FEED_CONT, the link and the entry cap, an
   CHECK(ipo::sync_entry(50.0, minus_y, &seg, 100.0, axes, kT).v == doctest::Approx(5.0));
 }
 
-TEST_CASE(
-    "FEED_CONT > 0 on a static unit is NC9060 (004 l.438); under #TRAFO ON not supported "
-    "(NC6001)") {
+// --- trafo-feed: under #TRAFO ON it runs (ipo/trafo_feed_test.cpp).
+TEST_CASE("FEED_CONT > 0 on a static unit is NC9060 (004 l.438)") {
   SUBCASE("static processing unit (P-CHAN-00364 x_virtual): NC9060 at the #SYNC IN line") {
     for (const char* feed : {"FEED_CONT=600", "FEED_CONT_AUTO"}) {
       CAPTURE(feed);
@@ -239,20 +238,6 @@ TEST_CASE(
     const Run r = run("%t\nN20 #SYNC IN [CONV_VEL=18000 FEED_CONT=0]\nN30 G01 X10\nN40 M30\n",
                       interp::test::machine("static_saw"));
     if (r.error) CHECK(r.error->id != "NC9060");
-  }
-  SUBCASE("#TRAFO ON (the delta picker)") {
-    machines::Machine m = interp::test::machine("delta_picker");
-    m.channel.conveyor->workspace.lower = Eigen::Vector3d(-600, -600, -900);
-    m.channel.conveyor->workspace.upper = Eigen::Vector3d(600, 600, 0);
-    const Run r =
-        run("%t\nN10 #KIN ID[37]\nN20 #TRAFO ON\nN30 G01 X-150 Y0 Z-700 F60000\n"
-            "N40 #SYNC IN [CONV_VEL=6000 FEED_CONT_AUTO]\nN50 G01 X-100 Y20 Z-700 F60000\n"
-            "N60 G01 Z-800 F30000\nN70 M30\n",
-            m, 100.0);
-    REQUIRE(r.error);
-    CHECK(r.error->id == "NC6001");
-    CHECK(r.error->line == 6);
-    CHECK(r.error->message.find("#TRAFO ON") != std::string::npos);
   }
 }
 
