@@ -48,6 +48,21 @@ void check_exact(const Profile& p, const PositionTarget& target, double duration
 
 }  // namespace
 
+TEST_CASE("a duration of a lower interval of levels is met, not NC5015") {
+  // The feasible levels of the single-peak family form two intervals here (jerk's
+  // stretch_scan, jerk/move_duration_test.cpp): 0.049766 s lies in the lower one, around
+  // v1 = 1.074 mm/s. Before: error_not_synchronizable (NC5015).
+  const Dynamics d{0x1.1d4dc12cfe2c2p+1, 0x1.9018ea2a1e8d2p+4, 0x1.88cd4f356d4efp+12,
+                   0x1.c12deebe7f7a5p+6};
+  const MotionState start{0.0, 0x1.1e9014d68625dp+0, -0x1.0bef59a708025p+0};
+  const PositionTarget target{0x1.bd61c67b785eap-5, 0x1.1306a06c69872p+0};
+  const double duration = 0x1.97ae32a3972cbp-5;
+  Profile p;
+  REQUIRE(ncsim::axes::plan_position_of_duration(start, target, d, duration, p) == Result::ok);
+  check_exact(p, target, duration);
+  check_path_limits(p, d, start);
+}
+
 TEST_CASE("a prescribed duration overshoots a target at rest the start cannot stop before") {
   // 1000 mm/s toward a target 1 mm away, to be met at rest after 10 s (was NC5015).
   const Dynamics d{1000.0, 1000.0, 1000.0, 1e4};

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include "jerk/crossing.hpp"
@@ -309,6 +310,105 @@ Status stretch_from(const Frame& f, double vm_top, double duration, const Limits
   return Status::ok;
 }
 
+// The fallback of stretch_in_frame (issue 11, late round): the feasible levels below vm_top
+// (dist(vm) <= D) can form several intervals, because dist dips where a ramp vanishes (vm =
+// v_zero, vm = v1) and need not be monotone between; each interval has its own range of
+// durations, and the two stretches above see only the interval of vm_top and the one reached
+// from 0 (a root near vm_top can end a range faster than the duration while a lower interval
+// takes it: NC5015 at the axis, sporadic near the start of a range). The levels are sampled on
+// a grid of kScan steps with the dips v_zero and v1 added; every run of feasible samples is
+// taken as an interval whose ends are refined to roots of dist(vm) = D (the feasible side), and
+// the first interval whose durations enclose the prescribed one gives its level. A hole
+// narrower than the grid between two feasible samples shows as an infeasible level found
+// there: it is added as a sample, which splits the run, and the scan starts again (at most
+// kSplits times).
+Status stretch_scan(const Frame& f, double vm_top, double duration, const Limits& lim,
+                    Move& out) noexcept {
+  constexpr int kScan = 16;
+  constexpr int kSplits = 8;
+  constexpr int kCap = kScan + 3 + kSplits;
+  const double d_abs = std::abs(f.d);
+  const double tol_d = kResidue * d_abs;
+  std::array<double, kCap> x{};   // sampled levels, descending [mm/s]
+  std::array<double, kCap> gd{};  // dist(x) - D [mm]
+  int n = 0;
+  for (int k = kScan; k >= 0; --k)
+    x[static_cast<std::size_t>(n++)] = vm_top * k / kScan;
+  const double v_zero = f.v0 + f.a0 * std::abs(f.a0) / (2.0 * lim.j_max);
+  for (const double kink : {v_zero, f.v1}) {
+    if (kink > 0.0 && kink < vm_top) x[static_cast<std::size_t>(n++)] = kink;
+  }
+  std::sort(x.begin(), x.begin() + n, std::greater<>());
+  const auto g_dist = [&](double vm) { return level(f, vm, lim).dist - f.d; };
+  Level lv;
+  for (int i = 0; i < n; ++i) {
+    level_into(f, x[static_cast<std::size_t>(i)], lim, lv);
+    gd[static_cast<std::size_t>(i)] = lv.dist - f.d;
+  }
+  gd[0] = std::min(gd[0], 0.0);  // vm_top is feasible (top_level / stretch_level)
+  const Level rest = level(f, 0.0, lim);
+  const bool dwell = std::abs(rest.dist - f.d) <= kResidue * std::max(d_abs, std::abs(rest.dist));
+  // g(vm) = T(vm) - duration on a feasible level (the dwell at vm = 0 when stop-and-go fills D).
+  const auto g = [&](double vm) {
+    const Level l = level(f, vm, lim);
+    if (!(vm > 0.0)) return dwell ? l.t_ramp - duration : std::numeric_limits<double>::max();
+    return l.t_ramp + std::max(0.0, f.d - l.dist) / vm - duration;
+  };
+  const auto at = [&](int k) { return x[static_cast<std::size_t>(k)]; };
+  const auto g_at = [&](int k) { return gd[static_cast<std::size_t>(k)]; };
+  const auto feasible = [&](int k) { return g_at(k) <= 0.0 || (at(k) == 0.0 && dwell); };
+  for (int split = 0; split <= kSplits; ++split) {
+    double hole = -1.0;  // an infeasible level found inside a run
+    for (int i = 0; i < n && hole < 0.0;) {
+      if (!feasible(i)) {
+        ++i;
+        continue;
+      }
+      int j = i;  // the run of feasible samples i..j (descending levels)
+      while (j + 1 < n && feasible(j + 1))
+        ++j;
+      const double hi =
+          i == 0 ? at(0) : solve_bracket(at(i), at(i - 1), g_at(i), g_at(i - 1), tol_d, g_dist);
+      const double g_hi = g(hi);
+      double lo = at(j);
+      if (at(j) > 0.0 && j + 1 < n) {
+        lo = solve_bracket(at(j), at(j + 1), g_at(j), g_at(j + 1), tol_d, g_dist);
+      }
+      double g_lo = g(lo);
+      if (lo == 0.0 && dwell && duration >= rest.t_ramp && g_hi <= 0.0) {
+        out = make_move(f, 0.0, rest, duration - rest.t_ramp);  // dwell at rest in between
+        return Status::ok;
+      }
+      if (lo == 0.0 && !dwell) {  // T grows without bound as vm -> 0: halve until too slow
+        lo = hi;
+        do {
+          lo *= 0.5;
+          g_lo = g(lo);
+        } while (g_lo <= 0.0 && lo > 0.0);
+      }
+      if (g_hi <= 0.0 && g_lo > 0.0) {
+        const double vm = solve_bracket(hi, lo, g_hi, g_lo, kResidue * duration, g);
+        level_into(f, vm, lim, lv);
+        if (lv.dist <= f.d + kResidue * std::max(d_abs, lv.path)) {
+          out = make_move(f, vm, lv, cruise_time(f, vm, lv));
+          return Status::ok;
+        }
+        if (n < kCap && vm < at(i) && vm > at(j)) hole = vm;  // split the run there
+      }
+      i = j + 1;
+    }
+    if (hole < 0.0) break;
+    const auto pos = std::lower_bound(x.begin(), x.begin() + n, hole, std::greater<>());
+    const auto k = pos - x.begin();
+    std::copy_backward(x.begin() + k, x.begin() + n, x.begin() + n + 1);
+    std::copy_backward(gd.begin() + k, gd.begin() + n, gd.begin() + n + 1);
+    x[static_cast<std::size_t>(k)] = hole;
+    gd[static_cast<std::size_t>(k)] = g_dist(hole);
+    ++n;
+  }
+  return Status::not_supported;
+}
+
 // Lowered from the highest feasible level first (the fastest of the family: a start too fast
 // for the target, e.g. at the arrival velocity just behind it, can only dip a little, and the
 // levels near 0 are out of reach), else from the root bracketed from 0 (where the feasible
@@ -321,8 +421,11 @@ Status stretch_in_frame(const Frame& f, double duration, const Limits& lim, Move
   const Status st = stretch_from(f, vm_top, duration, lim, out);
   if (st != Status::not_supported) return st;
   const double vm_zero = stretch_level(f, lim);
-  if (vm_zero < 0.0 || vm_zero == vm_top) return st;
-  return stretch_from(f, vm_zero, duration, lim, out);
+  if (vm_zero >= 0.0 && vm_zero != vm_top &&
+      stretch_from(f, vm_zero, duration, lim, out) == Status::ok) {
+    return Status::ok;
+  }
+  return stretch_scan(f, vm_top, duration, lim, out);
 }
 
 }  // namespace
