@@ -659,7 +659,10 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   Progress progress(err);
   ipo::Status s;
   while ((s = channel.step()) == ipo::Status::running && !csv.failed()) {
-    if (audit && channel.transformed()) audit->on_joints(channel.cycle(), channel.joints());
+    if (channel.transformed()) {
+      if (audit) audit->on_joints(channel.cycle(), channel.joints());
+      if (recorder) recorder->on_joints(channel.cycle(), channel.joints());
+    }
     progress.update(channel.cycle().t, channel.cycle().line);
     write_tech(channel, csv);  // --- indp
   }

@@ -59,6 +59,13 @@ summary=$("$ncsim" time "$programs/conveyor_squares/conveyor_squares.nc" --json 
 holds "the page's time per workpiece is time --json's, to the byte" \
   grep -qF "\"workpieces\":{\"summary\":$summary,\"rows\":[{\"index\":1," "$work/conv.html"
 
+# Under #TRAFO ON the joints are audited apart (docs/report.md "Audit"), as the CLI lists them.
+expect "the delta picker's report exits 0" 0 '' '' -- \
+  report "$programs/delta_pick/delta_pick.nc" -o "$work/delta.html"
+holds "the delta page lists the three moved joints under #TRAFO, jerk-checked" \
+  grep -qE '"joints":\[(\{[^}]*"jerk_cycles":[1-9][0-9]*,"index":[0-2]\},?){3}\]' "$work/delta.html"
+holds "a page without #TRAFO lists no joint" grep -q '"joints":\[\]' "$work/a.html"
+
 expect "an unwritable page exits 2 with NC8100 naming the file" 2 '' \
   "cannot write the report '$work/no/such/dir/x\.html\.tmp' \[NC8100\]" -- \
   report "$fixtures/clean.nc" -o "$work/no/such/dir/x.html"

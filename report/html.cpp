@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <ostream>
 #include <string>
 
@@ -67,6 +68,26 @@ void split(std::string& s, const ipo::TimeSplit& x) {
   exact(s, x.starved);
   s += ",\"held\":";
   exact(s, x.held);
+  s += '}';
+}
+
+// One axis's audit extremes and limits as a JSON object; `joint` adds the index of a joint
+// checked under #TRAFO ON.
+void axis_audit(std::string& s, const ipo::AxisAudit& a, std::optional<std::size_t> joint) {
+  s += "{\"v\":";
+  value(s, std::max(a.v_closed, a.v_diff));
+  s += ",\"v_limit\":";
+  value(s, a.v_limit);
+  s += ",\"a\":";
+  value(s, std::max(a.a_closed, a.a_diff));
+  s += ",\"a_limit\":";
+  value(s, a.a_limit);
+  s += ",\"j\":";
+  value(s, std::max(a.j_closed, a.j_diff));
+  s += ",\"j_limit\":";
+  value(s, a.j_limit);
+  s += ",\"jerk_cycles\":" + std::to_string(a.jerk_cycles);
+  if (joint) s += ",\"index\":" + std::to_string(*joint);
   s += '}';
 }
 
@@ -205,20 +226,19 @@ std::string json(const ReportData& d) {
   s += ",\"steps\":" + std::to_string(v.step_count) + ",\"cycles\":" + std::to_string(v.cycles) +
        ",\"violation_count\":" + std::to_string(v.violation_count) + ",\"axes\":[";
   for (std::size_t i = 0; i < v.axes.size(); ++i) {
-    const ipo::AxisAudit& a = v.axes[i];
-    s += i > 0 ? ",{\"v\":" : "{\"v\":";
-    value(s, std::max(a.v_closed, a.v_diff));
-    s += ",\"v_limit\":";
-    value(s, a.v_limit);
-    s += ",\"a\":";
-    value(s, std::max(a.a_closed, a.a_diff));
-    s += ",\"a_limit\":";
-    value(s, a.a_limit);
-    s += ",\"j\":";
-    value(s, std::max(a.j_closed, a.j_diff));
-    s += ",\"j_limit\":";
-    value(s, a.j_limit);
-    s += ",\"jerk_cycles\":" + std::to_string(a.jerk_cycles) + '}';
+    if (i > 0) s += ',';
+    axis_audit(s, v.axes[i], {});
+  }
+  // --- the joints under #TRAFO ON, checked apart (as the CLI's audit lists them): those that a
+  // transformed cycle moved, each with its axis index.
+  s += "],\"joints\":[";
+  bool first = true;
+  for (std::size_t i = 0; i < v.joints.size(); ++i) {
+    const ipo::AxisAudit& a = v.joints[i];
+    if (a.v_closed == 0.0 && a.v_diff == 0.0) continue;
+    if (!first) s += ',';
+    first = false;
+    axis_audit(s, a, i);
   }
   s += "],\"violations\":[";
   const std::size_t listed = std::min(v.violations.size(), kPageViolations);

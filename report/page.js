@@ -257,13 +257,17 @@
   el('span', verdict, ' \u2013 contour deviation ' + fmt(A.contour_mm) + ' mm (tolerance ' +
      fmt(A.contour_tolerance_mm) + ' mm), ' + A.steps + ' documented steps within their ' +
      'formulas, ' + A.cycles + ' cycles');
+  // No cycle on a jerk-limited slope: |j| is not limited (the CLI's audit says so too).
+  function auditRow(name, x) {
+    var jerk = x.jerk_cycles > 0;
+    return [name, fmt(x.v), fmt(x.v_limit), fmt(x.a), fmt(x.a_limit),
+            jerk ? fmt(x.j) : '\u2013', jerk ? fmt(x.j_limit) : 'not limited (STEP)'];
+  }
+  // Under #TRAFO ON the joints (the machine axes, deg or mm) are checked apart, as in the CLI.
   table(root, ['axis', 'max |v|', 'v limit', 'max |a|', 'a limit', 'max |j|', 'j limit'],
-        A.axes.map(function (x, i) {
-          // No cycle on a jerk-limited slope: |j| is not limited (the CLI's audit says so too).
-          var jerk = x.jerk_cycles > 0;
-          return [D.axes[i], fmt(x.v), fmt(x.v_limit), fmt(x.a), fmt(x.a_limit),
-                  jerk ? fmt(x.j) : '\u2013', jerk ? fmt(x.j_limit) : 'not limited (STEP)'];
-        }), [0]);
+        A.axes.map(function (x, i) { return auditRow(D.axes[i], x); }).concat(
+            A.joints.map(function (x) { return auditRow(D.axes[x.index] + ' under #TRAFO', x); })),
+        [0]);
   if (A.violations.length > 0) {
     el('h3', root, 'Violations' + (A.violation_count > A.violations.length ?
         ' (first ' + A.violations.length + ' of ' + A.violation_count + ')' : ''));

@@ -38,6 +38,8 @@ void Recorder::set_limits(const ipo::ChannelConfig& config) {
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
     soft_limits_[i] = {l.min_enabled ? l.min_position : nan, l.max_enabled ? l.max_position : nan};
   }
+  if (config.path.joints)  // the joints are the machine axes (as the CLI's audit)
+    audit_.set_joint_limits(config.path.joints->joints, config.path.start, true);
   workspace_.reset();
   if (config.conveyor) {
     const machines::ConveyorSyncChannel& c = *config.conveyor;

@@ -148,7 +148,8 @@ class Recorder final : public ipo::Sink {
   void set_conveyor(const ipo::ConveyorSync* sync);
   /// The soft position limits of the channel's axes (P-AXIS-00177 / 00178, where enabled),
   /// drawn on the position charts, `config.axes` in the recorder's axis order; and the
-  /// conveyor workspace and pos_limit of `config.conveyor` (drawn when set_conveyor() gave one).
+  /// conveyor workspace and pos_limit of `config.conveyor` (drawn when set_conveyor() gave one);
+  /// the joints' limits under a kinematic transform (`config.path.joints`, on_joints()).
   void set_limits(const ipo::ChannelConfig& config);
   /// The PCS1 tool point of the cycle on_cycle() sees next (mm; enables the PCS1 panels).
   void set_pcs1(std::span<const double> p);
@@ -157,6 +158,11 @@ class Recorder final : public ipo::Sink {
 
   void on_joint(const ipo::Joint& joint) override;
   void on_cycle(const ipo::Cycle& cycle) override;
+  /// The joints a cycle under #TRAFO ON gave the machine axes (ipo::Channel::joints(), after
+  /// the cycle's on_cycle()): the recorder's audit checks them apart, as the CLI's audit does.
+  void on_joints(const ipo::Cycle& cycle, const ipo::JointSetpoint& joints) {
+    audit_.on_joints(cycle, joints);
+  }
 
   /// The page's data; the recorder is spent afterwards.
   ReportData finish(const RunEnd& end);
