@@ -206,9 +206,11 @@ TEST_CASE("NC6210's check: the first joint beyond its V or max(A+, A-), none at 
 }
 
 TEST_CASE("the catch-up's TCP dynamics keep every joint inside its own at the points covered") {
-  // Seeded property: at random points of the delta's working volume and random Cartesian
-  // v, a (each axis within the derived V, A), the joints' q' = J v and q'' = J a + H(v, v)
-  // stay within their V and A.
+  // Seeded property: at random points of the delta's working volume, every Cartesian motion
+  // x(t) = p + v t + a t^2 / 2 + j t^3 / 6 with each axis at +-V, +-A, +-J of the derived
+  // dynamics (all 512 sign combinations: the worst case of the bound's sums is one of them)
+  // keeps the joints' q' = J v, q'' = J a + H(v, v) and q''' = J j + 3 H(v, a) + T(v, v, v)
+  // inside their V, A and J: the third-derivative term included.
   const machines::Machine m = picker();
   const ipo::ChannelConfig cfg = ipo::channel_config(m, kT);
   const auto trafo = ipo::machine_trafo(m, cfg.path);
@@ -219,8 +221,8 @@ TEST_CASE("the catch-up's TCP dynamics keep every joint inside its own at the po
   std::mt19937 rng(20261123);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   int checked = 0;
-  double worst = 0.0;
-  for (int trial = 0; trial < 200; ++trial) {
+  std::array<double, 3> worst{};  // v, a, j over the limit
+  for (int trial = 0; trial < 40; ++trial) {
     ipo::AxisVec p{};
     p[0] = 250.0 * u(rng);
     p[1] = 250.0 * u(rng);
@@ -228,31 +230,49 @@ TEST_CASE("the catch-up's TCP dynamics keep every joint inside its own at the po
     const auto d = ipo::tcp_dynamics(trafo->limits.inverse, trafo->xyz, std::span(joints.data(), 4),
                                      std::span(&p, 1));
     REQUIRE(d);
-    // Joint velocity and acceleration of x(t) = p + v t + a t^2 / 2 at t = 0 (central
-    // differences of the inverse over +-h).
-    ipo::AxisVec v{}, a{};
-    for (std::size_t k = 0; k < 3; ++k) {
-      v[k] = d->v_max * (u(rng) < 0 ? -1.0 : 1.0);
-      a[k] = d->a_max * u(rng);
-    }
-    constexpr double h = 1e-4;
-    std::array<ipo::AxisVec, 3> q{};
-    for (int s = -1; s <= 1; ++s) {
-      ipo::AxisVec x = p;
-      for (std::size_t k = 0; k < 3; ++k)
-        x[k] += v[k] * s * h + a[k] * h * h / 2.0;
-      REQUIRE(trafo->limits.inverse(x, q[static_cast<std::size_t>(s + 1)]));
-    }
-    for (std::size_t i = 0; i < 3; ++i) {
-      const double qv = std::fabs(q[2][i] - q[0][i]) / (2 * h);
-      const double qa = std::fabs(q[2][i] - 2 * q[1][i] + q[0][i]) / (h * h);
-      CHECK(qv <= joints[i].v_max * (1 + 1e-6));
-      CHECK(qa <= std::min(joints[i].a_max, joints[i].d_max) * (1 + 1e-3));
-      worst = std::max({worst, qv / joints[i].v_max, qa / joints[i].a_max});
+    for (unsigned signs = 0; signs < 512; ++signs) {
+      ipo::AxisVec v{}, a{}, j{};
+      for (std::size_t k = 0; k < 3; ++k) {
+        v[k] = d->v_max * ((signs >> k) & 1u ? -1.0 : 1.0);
+        a[k] = d->a_max * ((signs >> (k + 3)) & 1u ? -1.0 : 1.0);
+        j[k] = d->j_max * ((signs >> (k + 6)) & 1u ? -1.0 : 1.0);
+      }
+      // Central differences of the inverse: v and a over t = 0, +-h (short: the jerk's share
+      // in them stays below 1e-6 of the limits), j over t = +-H, +-2H.
+      auto joints_at = [&](double t) {
+        ipo::AxisVec x = p;
+        for (std::size_t k = 0; k < 3; ++k)
+          x[k] += t * (v[k] + t * (a[k] / 2.0 + t * j[k] / 6.0));
+        ipo::AxisVec q{};
+        REQUIRE(trafo->limits.inverse(x, q));
+        return q;
+      };
+      constexpr double h = 1e-4;
+      constexpr double hj = 2e-3;
+      const ipo::AxisVec q0 = joints_at(0.0);
+      const ipo::AxisVec q1 = joints_at(h);
+      const ipo::AxisVec qm1 = joints_at(-h);
+      const ipo::AxisVec j1 = joints_at(hj);
+      const ipo::AxisVec jm1 = joints_at(-hj);
+      const ipo::AxisVec j2 = joints_at(2 * hj);
+      const ipo::AxisVec jm2 = joints_at(-2 * hj);
+      for (std::size_t i = 0; i < 3; ++i) {
+        const double qv = std::fabs(q1[i] - qm1[i]) / (2 * h);
+        const double qa = std::fabs(q1[i] - 2 * q0[i] + qm1[i]) / (h * h);
+        const double qj = std::fabs(j2[i] - 2 * j1[i] + 2 * jm1[i] - jm2[i]) / (2 * hj * hj * hj);
+        worst[0] = std::max(worst[0], qv / joints[i].v_max);
+        worst[1] = std::max(worst[1], qa / std::min(joints[i].a_max, joints[i].d_max));
+        worst[2] = std::max(worst[2], qj / joints[i].j_max);
+      }
     }
     ++checked;
   }
-  CHECK(checked == 200);
-  CHECK(worst > 0.5);  // the bound is used, not wasted
-  MESSAGE("largest joint v or a over its limit: " << worst);
+  CHECK(checked == 40);
+  MESSAGE("largest joint v, a, j over its limit: " << worst[0] << ", " << worst[1] << ", "
+                                                   << worst[2]);
+  CHECK(worst[0] <= 1.0 + 1e-5);
+  CHECK(worst[1] <= 1.0 + 1e-3);
+  CHECK(worst[2] <= 1.0 + 1e-3);
+  for (const double w : worst)
+    CHECK(w > 0.5);  // the bound is used, not wasted
 }

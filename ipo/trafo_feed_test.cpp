@@ -42,6 +42,7 @@ struct Run {
   std::vector<ipo::SyncPhase> phase;
   std::vector<std::array<double, 3>> tcp;  // FK of the joint commands (MCS)
   std::vector<double> v_relative;          // ConveyorSync::v_relative()
+  std::vector<double> t;                   // the cycle's time [s]
   std::optional<ipo::RunTimeError> error;
   std::optional<ipo::RunTimeError> warning;  // NC6210
   ipo::Verdict verdict;
@@ -74,6 +75,7 @@ Run run(const std::string& program, const machines::Machine& m = picker()) {
         REQUIRE(p.ok());
         r.tcp.push_back({p.value[0], p.value[1], p.value[2]});
         r.v_relative.push_back(s.v_relative());
+        r.t.push_back(ch.cycle().t);
       },
       100'000);
   r.error = ch.run_time_error();
@@ -150,7 +152,8 @@ TEST_CASE("#TRAFO ON, FEED_CONT=6000 into a 90 degree corner: the path's VELOJUM
   REQUIRE(r.handover > 2);
   CHECK(r.v_relative[r.handover] == doctest::Approx(v_jump));
   const auto before = relative(r, r.handover - 1);
-  CHECK(before[0] == doctest::Approx(v_jump).epsilon(0.02));
+  // The cycle before still ends the catch-up's jerk phase towards the meeting velocity.
+  CHECK(before[0] == doctest::Approx(v_jump).epsilon(0.05));
   // After it the TCP leaves along +Y from v_jump, accelerating towards F within Y's A.
   const auto after = relative(r, r.handover + 1);
   CHECK(std::fabs(after[0]) < 1e-3);
@@ -192,7 +195,9 @@ TEST_CASE("#TRAFO ON, FEED_CONT_AUTO: the first block's feed, and at rest before
     REQUIRE_FALSE(r.error);
     REQUIRE(r.handover > 2);
     CHECK(r.v_relative[r.handover] == doctest::Approx(50.0));
-    for (std::size_t k = r.handover; k < r.handover + 20; ++k)
+    // The hand-over cycle itself still holds the catch-up's last, slightly faster, part.
+    CHECK(relative(r, r.handover)[0] == doctest::Approx(50.0).epsilon(5e-3));
+    for (std::size_t k = r.handover + 1; k < r.handover + 20; ++k)
       CHECK(relative(r, k)[0] == doctest::Approx(50.0).epsilon(1e-3));
     CHECK(r.verdict.violation_count == 0);
   }
@@ -252,15 +257,42 @@ TEST_CASE(
     CHECK(v >= 0.0);
     CHECK(v <= (automatic ? feed / 60.0 : std::min(f, feed) / 60.0) * (1 + 1e-9));
     CHECK_FALSE(r.warning);
-    // The joints keep their v and a; their jerk within 5 %: the TCP's jerk bound leaves out
-    // the transform's third-derivative term (ipo/trafo_sync.hpp, docs/conveyor.md), and the
-    // catch-up at rest overruns the delta's 500000 deg/s^3 by up to 0.1 % on these targets
-    // too; meeting at up to 177 mm/s relative, by up to 1.8 % (measured).
+    // The catch-up keeps every joint's v, a and j (the audit's own checks and tolerance): the
+    // TCP's jerk bound covers the transform's third-derivative term (ipo/trafo_sync.hpp).
+    // After the hand-over the PCS1 block runs with the belt on top: its joints' jerk share is
+    // not reserved (docs/conveyor.md "Machining in PCS1"), up to 1.8 % over J there (measured).
+    const double t_handover = r.t[r.handover];
     for (const ipo::Violation& x : r.verdict.violations) {
       CAPTURE(x.t);
+      CHECK(x.t >= t_handover);  // the hand-over cycle's setpoint is the path's
       CHECK(x.joint);
       CHECK(x.quantity == ipo::Quantity::jerk);
-      CHECK(x.value <= 1.05 * x.limit);
+      CHECK(x.value <= 1.02 * x.limit);
     }
+  }
+}
+
+TEST_CASE("#TRAFO ON, seeded: catch-ups met at rest keep every joint's v, a and j") {
+  std::uint64_t state = 0x7AF0AE57u;
+  auto uniform = [&](double lo, double hi) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return lo + (hi - lo) * static_cast<double>(state >> 11) * 0x1.0p-53;
+  };
+  for (int n = 0; n < 6; ++n) {
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "%%t\nN10 #KIN ID[37]\nN20 #TRAFO ON\nN30 G01 X%.4f Y%.4f Z%.4f F60000\n"
+                  "N40 #SYNC IN [CONV_VEL=6000]\nN50 G01 X%.4f Y%.4f Z%.4f F60000\n"
+                  "N60 G04 0.05\nN70 #SYNC OUT\nN80 M30\n",
+                  uniform(-250.0, -100.0), uniform(-150.0, 150.0), uniform(-850.0, -650.0),
+                  uniform(-120.0, 60.0), uniform(-150.0, 150.0), uniform(-850.0, -650.0));
+    CAPTURE(text);
+    const Run r = run(text);
+    REQUIRE(r.status == ipo::Status::finished);
+    REQUIRE_FALSE(r.error);
+    REQUIRE(r.handover > 2);
+    CHECK(r.v_relative[r.handover] == 0.0);
+    CHECK_FALSE(r.warning);
+    CHECK(r.verdict.violation_count == 0);
   }
 }

@@ -13,14 +13,18 @@
 // axes' P-AXIS-00212 V, A+, A-, J), the TCP points to cover [mm].
 // Outputs: one Dynamics for the Cartesian X, Y, Z of the TCP (the same V, A, J on each);
 // the first joint overrun of a cycle.
-// Method (docs/conveyor.md): at each point the Jacobian J (dq_i/dx_k) and the second
-// derivatives H (d2q_i/dx_k dx_l) by central differences (step kTcpDynamicsStep). With each
-// Cartesian axis inside |x'| <= V, |x''| <= A, |x'''| <= Jx:
-//   |q_i'|   <= r_i V,                     r_i = sum_k |J_ik|,
-//   |q_i''|  <= r_i A + c_i V^2,           c_i = sum_kl |H_ikl|,
-//   |q_i'''| <= r_i Jx + 3 c_i V A (+ the third-derivative term, not bounded: see docs).
-// V = min_i min(vq_i / r_i, sqrt(aq_i / (2 c_i))), A = min_i min((aq_i - c_i V^2) / r_i,
-// jq_i / (6 c_i V)), Jx = min_i (jq_i - 3 c_i V A) / r_i, the minimum over the points.
+// Method (docs/conveyor.md): at each point the Jacobian J (dq_i/dx_k), the second
+// derivatives H (d2q_i/dx_k dx_l) and the third derivatives T (d3q_i/dx_k dx_l dx_m) by
+// nested central differences (step kTcpDynamicsStep). For a TCP motion x(t) the chain rule
+// gives q' = J x', q'' = J x'' + H(x', x'), q''' = J x''' + 3 H(x', x'') + T(x', x', x'), so
+// with each Cartesian axis inside |x'| <= V, |x''| <= A, |x'''| <= Jx:
+//   |q_i'|   <= r_i V,                               r_i = sum_k |J_ik|,
+//   |q_i''|  <= r_i A + c_i V^2,                     c_i = sum_kl |H_ikl|,
+//   |q_i'''| <= r_i Jx + 3 c_i V A + d_i V^3,        d_i = sum_klm |T_iklm|.
+// V = min_i min(vq_i / r_i, sqrt(aq_i / (2 c_i)), cbrt(jq_i / (kTcpJerkCubeShare d_i))),
+// A = min_i min((aq_i - c_i V^2) / r_i, (jq_i - d_i V^3) / (6 c_i V)),
+// Jx = min_i (jq_i - 3 c_i V A - d_i V^3) / r_i, each the minimum over the points (every bound
+// grows with V, A, Jx, so the minima keep it at every point).
 // Invariants: never throws; nullopt when the transform fails at a point or a limit is not
 // positive. Between the points the bounds are not guaranteed (the per-cycle check reports).
 
@@ -41,6 +45,10 @@ inline constexpr const char* kTrafoSyncOverrunId = "NC6210";
 
 /// Finite-difference step of the Jacobian and its derivatives [mm].
 inline constexpr double kTcpDynamicsStep = 0.05;
+
+/// The TCP's V leaves the velocity-cube term d_i V^3 at most 1 / kTcpJerkCubeShare of a
+/// joint's jerk (the rest is shared by the 3 c_i V A and r_i Jx terms) [1].
+inline constexpr double kTcpJerkCubeShare = 4.0;
 
 /// The TCP dynamics (V [mm/s], A+ = A- [mm/s^2], J [mm/s^3]) under which every joint keeps its
 /// `joints` dynamics at each of `points` (method in the header). Never throws.
