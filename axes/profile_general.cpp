@@ -135,9 +135,8 @@ Result plan_position(const MotionState& start, const PositionTarget& target, con
   if (rule == ProfileRule::time_optimal) {
     // --- ptp-limits: a start outside the limits is first brought back inside
     // (axes/profile_outside.hpp, docs/axes-profile-outside.md).
-    if (detail::outside_limits(start, dyn) && detail::plan_from_outside(start, target, dyn, out)) {
-      return Result::ok;
-    }
+    const bool outside = detail::outside_limits(start, dyn);
+    if (outside && detail::plan_from_outside(start, target, dyn, out)) return Result::ok;
     // A direct move (toward the target, not moving away) is the single-peak family's best,
     // which contains the manual's. To a target at rest from a start within the limits the
     // candidates contain "stop, then the fastest rest-to-rest move", never slower than the
@@ -148,10 +147,20 @@ Result plan_position(const MotionState& start, const PositionTarget& target, con
     if (found && (direct || (target.v == 0.0 && inside_limits(start, dyn)))) return Result::ok;
     // --- ptp-speed: the manual's stop-and-return skipped where its lower bound shows it cannot
     // be faster (axes/profile_classify.hpp).
-    if (found && detail::manual_bound(start, target, dyn) >= out.duration()) return Result::ok;
+    // --- ptp-outside: the bound describes the manual plan from inside the limits only (from
+    // outside, the manual first recovers: manual_recover).
+    if (found && !outside && detail::manual_bound(start, target, dyn) >= out.duration()) {
+      return Result::ok;
+    }
     Profile manual;
     plan_position(start, target, dyn, manual, ProfileRule::manual);
     if (!found || manual.duration() < out.duration()) out = manual;
+    return Result::ok;
+  }
+  // --- ptp-outside: a start whose forced release reverses the motion beyond V or A+ is first
+  // brought inside by the manual's own rules (axes/profile_outside.hpp, manual_recover).
+  if (detail::outside_limits(start, dyn) &&
+      detail::plan_manual_from_outside(start, target, dyn, out)) {
     return Result::ok;
   }
   ProfileBuilder b(out, start);

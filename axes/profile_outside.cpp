@@ -16,6 +16,10 @@
 //     reaches V with |a| <= a_b).
 // Each rule ends on an event (a limit, v = 0, v = V, a = 0) whose value is set exactly, then
 // the state is tested again; a start inside gets no phase.
+//
+// The manual rule's recovery (manual_recover) treats only the starts whose forced part reverses
+// the motion: C (then the manual's velocity change to V with A-, a = 0 on arrival, 002_* 2.2,
+// as one velocity_ramp in the frame of the release) and A up to v = 0; the manual plan follows.
 
 #include "axes/profile_outside.hpp"
 
@@ -180,14 +184,12 @@ bool recover(const MotionState& start, const Dynamics& dyn, Recovery& out) noexc
   return true;
 }
 
-bool plan_from_outside(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
-                       Profile& out) noexcept {
-  Recovery r;
-  if (!recover(start, dyn, r)) return false;
-  Profile cont;
-  if (plan_position(r.end, target, dyn, cont, ProfileRule::time_optimal) != Result::ok) {
-    return false;
-  }
+namespace {
+
+// `recovery` followed by `cont` (planned from the recovery's end) into `out`, ending exactly on
+// the target. False (out untouched) when the phases do not fit into one Profile.
+bool concatenate(const MotionState& start, const Recovery& r, const Profile& cont,
+                 const PositionTarget& target, Profile& out) noexcept {
   const auto phases = cont.phases();
   if (r.count + phases.size() > Profile::kMaxPhases) return false;
   ProfileBuilder b(out, start);
@@ -207,6 +209,73 @@ bool plan_from_outside(const MotionState& start, const PositionTarget& target, c
   const MotionState end{target.p, target.v, 0.0};
   b.finish(&end);
   return true;
+}
+
+}  // namespace
+
+bool plan_from_outside(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
+                       Profile& out) noexcept {
+  Recovery r;
+  if (!recover(start, dyn, r)) return false;
+  Profile cont;
+  if (plan_position(r.end, target, dyn, cont, ProfileRule::time_optimal) != Result::ok) {
+    return false;
+  }
+  return concatenate(start, r, cont, target, out);
+}
+
+bool manual_recover(const MotionState& start, const Dynamics& dyn, Recovery& out) noexcept {
+  out = Recovery{};
+  MotionState st = start;
+  const double j_max = dyn.j_max;
+  const auto push = [&](double jerk, double t, double a_end) {
+    if (!(t > 0.0)) return;
+    out.jerk[out.count] = jerk;
+    out.duration[out.count] = t;
+    out.a_end[out.count] = a_end;
+    ++out.count;
+    st = jerk::advance(st, jerk, t);
+    st.a = a_end;
+  };
+  if (!outside_limits(st, dyn)) return true;
+  const double m = motion_sign(st, 1.0);
+  const double v = m * st.v;
+  const double a = m * st.a;
+  if (a < 0.0 && release_velocity(v, a, j_max) < -dyn.v_max * (1.0 + kTol)) {
+    // The release reverses the motion beyond -V (forced); in the frame of the release the
+    // velocity change to the level V is a reduction, limited by A- (002_* 2.2: the override's
+    // ramp to the new level, a = 0 on arrival). velocity_ramp's first phase is the release
+    // itself, continued to the braking peak.
+    const double n = -m;
+    const jerk::Ramp r =
+        jerk::velocity_ramp(n * st.v, n * st.a, dyn.v_max, dyn.a_max, dyn.d_max, j_max);
+    push(n * r.jerk[0], r.duration[0], n * r.a_peak);
+    push(n * r.jerk[1], r.duration[1], n * r.a_peak);
+    push(n * r.jerk[2], r.duration[2], 0.0);
+    st.v = n * dyn.v_max;
+    st.a = 0.0;
+  } else if (v > 0.0 && a < -dyn.d_max * (1.0 + kTol)) {
+    // Braking beyond A- that reaches v = 0 before the acceleration is back at -A-: the clamp's
+    // jerk (+J) until v = 0 only. Beyond v = 0 the acceleration speeds the motion up (A+), and
+    // a clamp to -A- in the old frame would brake the reversed motion with A+ (seen: 367 A-).
+    const double disc = a * a - 2.0 * j_max * v;
+    const double t_zero = disc >= 0.0 ? (-a - std::sqrt(disc)) / j_max : -1.0;
+    if (t_zero > 0.0 && t_zero < (-dyn.d_max - a) / j_max) {
+      push(m * j_max, t_zero, -m * std::sqrt(disc));
+      st.v = 0.0;
+    }
+  }
+  out.end = st;
+  return true;
+}
+
+bool plan_manual_from_outside(const MotionState& start, const PositionTarget& target,
+                              const Dynamics& dyn, Profile& out) noexcept {
+  Recovery r;
+  if (!manual_recover(start, dyn, r) || r.count == 0) return false;
+  Profile cont;
+  if (plan_position(r.end, target, dyn, cont, ProfileRule::manual) != Result::ok) return false;
+  return concatenate(start, r, cont, target, out);
 }
 
 }  // namespace ncsim::axes::detail

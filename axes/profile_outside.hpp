@@ -5,7 +5,9 @@
 // Purpose: a start with |v| > V, an acceleration beyond A+ (speeding up) or A- (slowing down),
 // or an acceleration whose release at full jerk forces |v| beyond V, is first brought inside
 // by the recovery (the excess removed at full jerk, docs/axes-profile-outside.md), and
-// the time-optimal profile follows from the first state inside.
+// the time-optimal profile follows from the first state inside. The manual (default) rule has
+// its own, smaller recovery for the starts whose forced part reverses the motion
+// (manual_recover), then the manual plan.
 // Inputs: a MotionState, Dynamics (V, A+, A-, J), a PositionTarget.
 // Outputs: the Recovery (its constant-jerk phases and the first state inside); the whole
 // profile (recovery, then the time-optimal continuation), ending exactly on the target.
@@ -46,5 +48,19 @@ bool recover(const MotionState& start, const Dynamics& dyn, Recovery& out) noexc
 /// recovery fails or both together need more than Profile::kMaxPhases phases.
 bool plan_from_outside(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
                        Profile& out) noexcept;
+
+/// The manual rule's recovery (docs/axes-profile-outside.md, "The manual rule"): only the
+/// excesses whose forced part reverses the motion, which the manual chain (planned in the frame
+/// of the target) would otherwise ride or brake with A+ instead of A-: a release ending beyond
+/// -V (the release, then the manual's velocity change to the level V with A-, a = 0 on arrival,
+/// 002_* 2.2), and a braking beyond A- that reaches v = 0 before -A- (the clamp's jerk up to
+/// v = 0). Empty for any other start (the manual plan's "limits first" handles those itself).
+bool manual_recover(const MotionState& start, const Dynamics& dyn, Recovery& out) noexcept;
+
+/// ProfileRule::manual from a start that manual_recover brings inside: the recovery, then
+/// plan_position(..., manual) from its end state. False (out untouched) when the recovery is
+/// empty or both together need more than Profile::kMaxPhases phases.
+bool plan_manual_from_outside(const MotionState& start, const PositionTarget& target,
+                              const Dynamics& dyn, Profile& out) noexcept;
 
 }  // namespace ncsim::axes::detail
