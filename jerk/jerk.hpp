@@ -7,6 +7,7 @@
 // piecewise constant jerk, bounded acceleration and velocity:
 //  - velocity_ramp / velocity_change: the time-optimal change from (v0, a0) to (v1, a = 0)
 //    (jerk build-up, [constant acceleration], jerk reduction; 002_* 2.1 phases 1-3 / 5-7);
+//    velocity_ramp_to: the same to (v1, a1) with an end acceleration (planner C2 joints);
 //  - stopping_distance: the same change to v = 0;
 //  - reachable_velocity / entry_velocity_for_exit: the inverse problems a planner's forward and
 //    backward passes need (highest velocity reachable within a distance);
@@ -224,6 +225,33 @@ Status reversal_move(const State& start, double p1, double v1, const Limits& lim
 /// way (no slower turn exists).
 Status reversal_of_duration(const State& start, double p1, double v1, double duration,
                             const Limits& limits, Reversal& out) noexcept;
+
+// --- planner-c2 additions (issue 12): velocity changes that end with an acceleration.
+
+/// Up to three constant-jerk phases from (v0, a0) to (v1, a1): jerk towards the extreme
+/// acceleration a_peak, [hold there], jerk to a1. The intended boundary values travel with it.
+struct StateRamp {
+  std::array<double, 3> jerk{};      ///< jerk of each phase [mm/s^3]
+  std::array<double, 3> duration{};  ///< duration of each phase [s], >= 0
+  double a_peak = 0.0;               ///< acceleration after phase 1 and in phase 2 [mm/s^2]
+  double v_end = 0.0;                ///< velocity after phase 3 [mm/s]
+  double a_end = 0.0;                ///< acceleration after phase 3 [mm/s^2]
+  /// Total duration [s].
+  double time() const noexcept { return duration[0] + duration[1] + duration[2]; }
+};
+
+/// Time-optimal change from (v0, a0) to (v1, a1) with |jerk| = j, acceleration within
+/// [-a_down, a_up] (the caller's frame; no velocity limit: the velocity may pass v1 on the way
+/// when a0 or a1 forces it). a0 and a1 are expected within the limits and are clamped to them.
+/// The velocity change dv = v1 - v0 beyond that of the direct jerk from a0 to a1
+/// (dv_direct = (a0 + a1) |a1 - a0| / (2j)) sets the direction of the pulse: above it a peak
+/// a_p = min(a_up, sqrt(j dv + (a0^2 + a1^2) / 2)) >= max(a0, a1), below it the mirrored
+/// trough. With a1 = 0 it is velocity_ramp (same phases to rounding).
+StateRamp velocity_ramp_to(double v0, double a0, double v1, double a1, double a_up, double a_down,
+                           double j) noexcept;
+
+/// Distance [mm] travelled by `ramp` from (v0, a0) (closed-form chain).
+double distance(double v0, double a0, const StateRamp& ramp) noexcept;
 
 }  // namespace ncsim::jerk
 
