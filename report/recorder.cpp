@@ -153,18 +153,30 @@ void Recorder::on_cycle(const ipo::Cycle& c) {
   // conveyor channel the setpoints are joints: the MCS toolpath is then the TCP (set_tcp()).
   if (conveyor_ != nullptr && set_ != nullptr) {
     const auto& mcs = transformed_ && tcp_ != nullptr ? *tcp_ : *set_;
-    mcs_point_.resize(mcs_.dims());
-    for (std::size_t i = 0; i < mcs_point_.size(); ++i)
-      mcs_point_[i] = mcs[i].p;
-    mcs_.add(mcs_point_);
+    std::array<double, planner::kMaxAxes> p{};
+    for (std::size_t i = 0; i < p.size(); ++i)
+      p[i] = mcs[i].p;
+    add_mcs(p);
     if (conveyor_->driving() || conveyor_->moving_frame()) {
       if (!pcs1_) pcs1_ = std::make_unique<PathThinner>(mcs_.dims(), kPathPoints);
       pcs1_->add(std::span<const double>(c.x.data(), mcs_.dims()));
     }
   } else {
-    mcs_.add(std::span<const double>(c.x.data(), mcs_.dims()));
+    add_mcs(c.x);
     if (pcs1_ && !pcs1_point_.empty()) pcs1_->add(pcs1_point_);
   }
+}
+
+void Recorder::add_mcs(std::span<const double> axes) {
+  mcs_point_.resize(mcs_.dims());
+  // --- trafo-jerk: untransformed, a kinematic machine's axes are joints: their TCP.
+  if (!transformed_ && forward_) {
+    if (!forward_(axes, mcs_point_)) return;
+  } else {
+    for (std::size_t i = 0; i < mcs_point_.size(); ++i)
+      mcs_point_[i] = axes[i];
+  }
+  mcs_.add(mcs_point_);
 }
 
 void Recorder::block_done(const ipo::BlockTime& b) {

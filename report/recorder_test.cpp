@@ -263,6 +263,63 @@ TEST_CASE("a conveyor channel under #TRAFO ON: the MCS toolpath is the TCP, not 
   CHECK(d.path_mcs[d.path_mcs.size() - 3] == 77.0);
 }
 
+TEST_CASE("a kinematic machine before #TRAFO ON: the MCS toolpath is the joints' TCP") {
+  // Before #TRAFO ON the axes of a delta are its joints [deg]: the MCS toolpath is where they
+  // put the TCP (the forward transform), not their angles drawn as millimetres; with and
+  // without conveyor tracking. The forward map here: TCP = -10 q - 600 on each axis.
+  const axes::Dynamics dyn{1000.0, 5000.0, 5000.0, 50000.0};
+  const std::vector<SyncAxis> sync_axes{SyncAxis{"X", 0, dyn}, SyncAxis{"Y", 1, dyn},
+                                        SyncAxis{"Z", 2, dyn}};
+  for (const bool tracking : {false, true}) {
+    CAPTURE(tracking);
+    ChannelConfig cc;
+    cc.path.axes.assign(3, axis(1000, 5000, 50000));
+    cc.axes.resize(3);
+    machines::ConveyorSyncChannel conv;
+    cc.conveyor = conv;
+    ConveyorSync sync(conv, sync_axes, 0.001);
+    Recorder rec({"X", "Y", "Z"}, cc.path.axes, 0.001, cc.path.start);
+    std::array<axes::Setpoint, planner::kMaxAxes> joints{}, tcp{};
+    rec.set_setpoints(&joints);
+    rec.set_tcp(&tcp);
+    rec.set_conveyor(tracking ? &sync : nullptr);
+    rec.set_forward([](std::span<const double> q, std::span<double> x) {
+      if (q[0] > 90.0) return false;  // outside the transform: no point
+      for (std::size_t k = 0; k < x.size(); ++k)
+        x[k] = -10.0 * q[k] - 600.0;
+      return true;
+    });
+    planner::Move move;
+    move.transformed = false;
+    Cycle c{};
+    c.activity = Activity::motion;
+    c.programmed = &move;
+    for (int k = 0; k <= 3; ++k) {
+      c.t = 0.001 * (k + 1);
+      for (std::size_t i = 0; i < 3; ++i) {
+        joints[i].p = k == 3 ? 100.0 : 1.0 * k + static_cast<double>(i);  // joint angles [deg]
+        c.x[i] = joints[i].p;  // untransformed: the path point is the axes
+      }
+      rec.on_cycle(c);
+    }
+    move.transformed = true;  // under #TRAFO ON: the TCP (set_tcp) or the path point
+    c.t = 0.005;
+    for (std::size_t i = 0; i < 3; ++i)
+      c.x[i] = tcp[i].p = -650.0 - static_cast<double>(i);
+    rec.on_cycle(c);
+    const ReportData d = rec.finish({"p.nc", "m", "", ""});
+    REQUIRE(d.path_dims == 3);
+    REQUIRE(d.path_mcs.size() >= 9);
+    // The first point: the TCP of the joints at 0, 1, 2 deg, not (0, 1, 2) mm.
+    CHECK(d.path_mcs[0] == -600.0);
+    CHECK(d.path_mcs[1] == -610.0);
+    CHECK(d.path_mcs[2] == -620.0);
+    for (const double x : d.path_mcs)
+      CHECK(x <= -600.0);  // no joint angle, and nothing of the unmapped cycle
+    CHECK(d.path_mcs[d.path_mcs.size() - 3] == -650.0);
+  }
+}
+
 TEST_CASE("no conveyor tracking: no conveyor series, no workspace") {
   ChannelConfig cc;
   cc.path.axes.assign(3, axis(1000, 5000, 50000));
