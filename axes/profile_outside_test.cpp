@@ -366,3 +366,63 @@ TEST_CASE("both rules: never beyond V or A longer or further than the start forc
   MESSAGE("outside starts ", outside, ", profiles longer than 1e6 s ", coarse);
   CHECK(outside > 2500);
 }
+
+TEST_CASE("manual rule: a forced release beyond -V is braked with A- back to V, not ridden") {
+  // docs/axes-profile-outside.md "The manual rule": v0 = 2.11, a0 = -12324, J = 143894,
+  // V = 2.8, A+ = 30, A- = 20000, target 5492 mm back. The release reaches
+  // v_r = 2.11 - 12324^2 / (2 J) = -525.647 mm/s (forced). By hand, in the release's frame:
+  // a_peak = sqrt(a0^2 / 2 - J (V + v0)) = 8673.7 (the pulse down to V, below A-),
+  // +J for (12324 + a_peak) / J = 0.14593 s, -J for a_peak / J = 0.060278 s: at (-2.8, 0)
+  // after 0.20621 s. The previous plan braked -525.6 mm/s with A+ = 30 and used the speed:
+  // 323.7 s, above V for ~17 s.
+  const Dynamics d{2.8, 30.0, 20000.0, 143894.0};
+  const MotionState start{0.0, 2.11, -12324.0};
+  const PositionTarget target{-5492.0, 0.0};
+  Profile manual;
+  Profile fast;
+  REQUIRE(ncsim::axes::plan_position(start, target, d, manual, ProfileRule::manual) == Result::ok);
+  REQUIRE(ncsim::axes::plan_position(start, target, d, fast, ProfileRule::time_optimal) ==
+          Result::ok);
+  const double a_peak = std::sqrt(0.5 * 12324.0 * 12324.0 - 143894.0 * (2.8 + 2.11));
+  CHECK(a_peak == doctest::Approx(8673.7).epsilon(1e-4));
+  const double t_in = (12324.0 + a_peak) / 143894.0 + a_peak / 143894.0;
+  CHECK(t_in == doctest::Approx(0.20621).epsilon(1e-4));
+  const auto in = manual.at(t_in);
+  CHECK(in.v == doctest::Approx(-2.8).epsilon(1e-9));
+  CHECK(std::abs(in.a) <= 1e-6 * 20000.0);
+  const double v_r = 2.11 - 12324.0 * 12324.0 / (2.0 * 143894.0);
+  for (int k = 0; k <= 4000; ++k) {
+    const double t = manual.duration() * k / 4000.0;
+    const auto sp = manual.at(t);
+    CHECK(sp.v >= v_r * (1.0 + 1e-9));
+    if (t >= t_in * (1.0 + 1e-9)) CHECK(std::abs(sp.v) <= 2.8 * (1.0 + 1e-9));
+  }
+  CHECK(manual.end_state().p == -5492.0);
+  CHECK(manual.duration() == doctest::Approx(1939.57).epsilon(1e-5));
+  CHECK(fast.duration() == doctest::Approx(1939.64).epsilon(1e-5));
+}
+
+TEST_CASE("manual rule: a braking beyond A- that turns the motion never brakes it with A+") {
+  // v0 = -601.739, a0 = 23495.2 (braking beyond A- = 25.58), J = 320959: v = 0 after
+  // (a0 - sqrt(a0^2 - 2 J |v0|)) / J = 0.033090 s, with a = 12875 (< A+ = 33957), before the
+  // clamp could reach A-. From there the motion is reversed; the previous plan clamped to -A-
+  // in the target's frame and braked the reversed 258 mm/s with up to 9381 mm/s^2 = 367 A-.
+  const Dynamics d{1333.98, 33957.3, 25.5826, 320959.0};
+  const MotionState start{0.0, -601.739, 23495.2};
+  Profile manual;
+  REQUIRE(ncsim::axes::plan_position(start, PositionTarget{-0.00221665, 0.0}, d, manual,
+                                     ProfileRule::manual) == Result::ok);
+  const double root = std::sqrt(23495.2 * 23495.2 - 2.0 * 320959.0 * 601.739);
+  const double t_zero = (23495.2 - root) / 320959.0;
+  CHECK(t_zero == doctest::Approx(0.033090).epsilon(1e-4));
+  CHECK(manual.at(t_zero).v == doctest::Approx(0.0).epsilon(1e-9).scale(601.739));
+  for (int k = 0; k <= 4000; ++k) {
+    const double t = t_zero + (manual.duration() - t_zero) * k / 4000.0;
+    const auto sp = manual.at(t);
+    if (sp.v * sp.a < 0.0 && std::abs(sp.v) > 1e-9 * 601.739) {  // braking (off v = 0): A-
+      CHECK(std::abs(sp.a) <= 25.5826 * (1.0 + 1e-9));
+    }
+    CHECK(std::abs(sp.a) <= 33957.3);
+  }
+  CHECK(manual.end_state().p == -0.00221665);
+}
