@@ -218,6 +218,13 @@ struct Reversal {
 Status reversal_move(const State& start, double p1, double v1, const Limits& limits,
                      Reversal& out) noexcept;
 
+namespace detail {
+/// fastest_move with Newton steps only in its level search (no curvature step): the oracle of
+/// the curvature step (level_curve_test.cpp); the same result to the search's tolerance.
+Status fastest_move_newton(const State& start, double p1, double v1, const Limits& limits,
+                           Move& out) noexcept;
+}  // namespace detail
+
 /// A Reversal from `start` to (p1, v1 != 0, a = 0) taking exactly `duration` [s] (>= the
 /// fastest Reversal's time): the turning level lowered below the fastest one, the rest of the
 /// way cruised at it (time synchronisation of a move that must turn). Status::too_short below

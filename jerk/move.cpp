@@ -66,6 +66,7 @@ struct Level {
   double path = 0.0;    // sum of the ramps' |distances| [mm]: the scale of dist's rounding
   double t_ramp = 0.0;  // time of all ramps [s]
   double slope = std::numeric_limits<double>::quiet_NaN();  // d dist / d vm [s], level_slope
+  double curve = std::numeric_limits<double>::quiet_NaN();  // d2 dist / d vm2 [s^2/mm]
 };
 
 // d dist / d vm of a level [s]. A ramp from a fixed start ending at vm with signed peak a_p
@@ -74,13 +75,30 @@ struct Level {
 // time (the same distance), is a ramp ending at vm with peak -a_p. A crossing through v = 0 is
 // fixed unless its a_zero is sqrt(2 J vm) (then the first ramp only releases it and both move
 // with vm). NaN there and where a ramp vanishes (the distance has a kink with an infinite slope).
-double level_slope(const Level& lv, double vm, double j) noexcept {
+//
+// Its curvature (the level classifier: which ramps hold at their limit): a ramp's term is
+// T(p) = vm / p + |p| / (2J) with p = p1, or p = -p2 for the second ramp; a ramp holding at its
+// limit keeps p (dT/dvm = 1 / p), one without a hold has 2 p^2 = 2J |vm - v_other| + const, so
+// dp/dvm = J / (2 |p|) and dT/dvm = 1/p + p' (sgn(p) / (2J) - vm / p^2). Where both ramps hold,
+// dist is a quadratic in vm and the solver's quadratic step lands on the root at once.
+void level_slope(Level& lv, double vm, double j) noexcept {
   const double p1 = lv.first.a_peak;
-  const double p2 = lv.second.a_peak;
+  const double q = -lv.second.a_peak;
   const bool cross_fixed =
       !(lv.cross.time() > 0.0) || lv.cross.a_zero < (1.0 - 1e-9) * std::sqrt(2.0 * j * vm);
-  if (!cross_fixed || p1 == 0.0 || p2 == 0.0) return std::numeric_limits<double>::quiet_NaN();
-  return vm / p1 - vm / p2 + (std::abs(p1) + std::abs(p2)) / (2.0 * j);
+  if (!cross_fixed || p1 == 0.0 || q == 0.0) {
+    lv.slope = lv.curve = std::numeric_limits<double>::quiet_NaN();
+    return;
+  }
+  const double a1 = std::abs(p1);
+  const double aq = std::abs(q);
+  lv.slope = vm / p1 + vm / q + (a1 + aq) / (2.0 * j);
+  const auto curve_of = [&](double p, double ap, bool hold) {
+    const double dp = hold ? 0.0 : j / (2.0 * ap);
+    return 1.0 / p + dp * ((p > 0.0 ? 0.5 : -0.5) / j - vm / (p * p));
+  };
+  lv.curve =
+      curve_of(p1, a1, lv.first.duration[1] > 0.0) + curve_of(q, aq, lv.second.duration[1] > 0.0);
 }
 
 // Evaluates the level vm into `out` (every member written: the root searches evaluate many
@@ -102,7 +120,7 @@ void level_into(const Frame& f, double vm, const Limits& lim, Level& out) noexce
     out.dist += d_cross + d_first;
     out.path += std::abs(d_cross) + std::abs(d_first);
     out.t_ramp = out.cross.time() + out.first.time() + out.second.time();
-    out.slope = level_slope(out, vm, lim.j_max);
+    level_slope(out, vm, lim.j_max);
     return;
   }
   // (A stop from v0 < 0 only slows down: A-.)
@@ -113,7 +131,7 @@ void level_into(const Frame& f, double vm, const Limits& lim, Level& out) noexce
   out.dist += d_first;
   out.path += std::abs(d_first);
   out.t_ramp = out.first.time() + out.second.time();
-  out.slope = level_slope(out, vm, lim.j_max);
+  level_slope(out, vm, lim.j_max);
 }
 
 Level level(const Frame& f, double vm, const Limits& lim) noexcept {
@@ -155,7 +173,9 @@ double solve_bracket(double x_neg, double x_pos, double g_neg, double g_pos, dou
 // are tried from the top; between the first feasible one and the next higher one both ramps grow
 // with vm, and the root of dist(vm) = D there is the highest feasible level.
 // `out` receives the Level of the answer (evaluated once: the caller needs its ramps).
-double top_level(const Frame& f, const Limits& lim, Level& out) noexcept {
+// `curved`: the solver's steps use the level's curvature (false: Newton steps only, the oracle
+// of level_curve_test.cpp).
+double top_level(const Frame& f, const Limits& lim, Level& out, bool curved = true) noexcept {
   // The last level evaluated is kept: the root solver usually returns it.
   double last_vm = -1.0;
   const auto g = [&](double vm) {
@@ -167,14 +187,17 @@ double top_level(const Frame& f, const Limits& lim, Level& out) noexcept {
     if (vm != last_vm) level_into(f, vm, lim, out);
     return vm;
   };
-  const auto gs = [&](double vm, double& slope) {
+  const auto gsc = [&](double vm, double& slope, double& curve) {
     const double gv = g(vm);
     slope = out.slope;
+    curve = curved ? out.curve : std::numeric_limits<double>::quiet_NaN();
     return gv;
   };
   const double g_top = g(lim.v_max);
   if (g_top <= 0.0) return lim.v_max;
   double s_hi = out.slope;
+  const double no_curve = std::numeric_limits<double>::quiet_NaN();
+  double c_hi = curved ? out.curve : no_curve;
   // Rounding of dist grows with the way the ramps travel (a detour much longer than D).
   const double tol = kResidue * std::max(std::abs(f.d), out.path);  // out: the level at V
   const auto clamp = [&](double v) { return std::clamp(v, 0.0, lim.v_max); };
@@ -187,11 +210,13 @@ double top_level(const Frame& f, const Limits& lim, Level& out) noexcept {
     if (!(c < hi)) continue;
     const double g_c = g(c);
     if (g_c <= 0.0) {
-      return answer(detail::solve_with_slope(c, hi, g_c, g_hi, out.slope, s_hi, tol, gs));
+      return answer(detail::solve_with_curve(c, hi, g_c, g_hi, out.slope, s_hi,
+                                             curved ? out.curve : no_curve, c_hi, tol, gsc));
     }
     hi = c;
     g_hi = g_c;
     s_hi = out.slope;
+    c_hi = curved ? out.curve : no_curve;
   }
   return -1.0;
 }
@@ -445,8 +470,10 @@ Status move_of_duration(const State& start, double p1, double v1, double duratio
   return stretch_in_frame(frame_of(start, p1, v1, -sign, lim), duration, lim, out);
 }
 
-Status fastest_move(const State& start, double p1, double v1, const Limits& lim,
-                    Move& out) noexcept {
+namespace {
+
+Status fastest_move_in(const State& start, double p1, double v1, const Limits& lim, Move& out,
+                       bool curved) noexcept {
   if (!valid(lim) || !finite(start) || !std::isfinite(p1) || !std::isfinite(v1) ||
       std::abs(v1) > lim.v_max) {
     return Status::invalid_input;
@@ -468,7 +495,7 @@ Status fastest_move(const State& start, double p1, double v1, const Limits& lim,
       continue;
     }
     Level lv;
-    const double vm = top_level(f, lim, lv);
+    const double vm = top_level(f, lim, lv, curved);
     if (vm < 0.0) continue;
     const double t_cruise = cruise_time(f, vm, lv);
     if (lv.t_ramp + t_cruise < best) {
@@ -478,6 +505,18 @@ Status fastest_move(const State& start, double p1, double v1, const Limits& lim,
     if (f.v0 >= 0.0) break;  // not moving away: no overshoot can be faster than this move
   }
   return best < std::numeric_limits<double>::infinity() ? Status::ok : Status::not_supported;
+}
+
+}  // namespace
+
+Status fastest_move(const State& start, double p1, double v1, const Limits& lim,
+                    Move& out) noexcept {
+  return fastest_move_in(start, p1, v1, lim, out, true);
+}
+
+Status detail::fastest_move_newton(const State& start, double p1, double v1, const Limits& lim,
+                                   Move& out) noexcept {
+  return fastest_move_in(start, p1, v1, lim, out, false);
 }
 
 State end_state(const State& start, const Move& move) noexcept {

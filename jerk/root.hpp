@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "jerk/jerk.hpp"
 
@@ -22,9 +23,14 @@ namespace ncsim::jerk::detail {
 // root (where regula falsi would crawl from the far end) steps by the secant of the bracket. After
 // three Newton steps in a row that shrank the bracket by less than 10 % a regula falsi step
 // follows, so a poor slope costs steps, never convergence.
+//
+// With curvatures (solve_with_curve: c_neg, c_pos and gsc(x, slope, curve), NaN where unknown)
+// the Newton step is the root of the local quadratic model g + s dx + c dx^2 / 2 (exact where g
+// is a quadratic: the level search where both ramps hold at their limits), a Newton step where
+// the model has no root or no curvature is known.
 template <class G>
-double solve_with_slope(double x_neg, double x_pos, double g_neg, double g_pos, double s_neg,
-                        double s_pos, double tol, G gs) noexcept {
+double solve_with_curve(double x_neg, double x_pos, double g_neg, double g_pos, double s_neg,
+                        double s_pos, double c_neg, double c_pos, double tol, G gsc) noexcept {
   double w_neg = g_neg;  // the regula falsi's (weighted) end values
   double w_pos = g_pos;
   int side = 0;
@@ -38,42 +44,61 @@ double solve_with_slope(double x_neg, double x_pos, double g_neg, double g_pos, 
     // taken), aimed at g = -tol / 2.
     double x = hi;
     bool newton = false;
-    const auto try_newton = [&](double x0, double g0, double s0) {
+    const auto try_newton = [&](double x0, double g0, double s0, double c0) {
       if (!(s0 > 0.0)) return;
-      const double xn = x0 - (g0 + 0.5 * tol) / s0;
+      const double r = g0 + 0.5 * tol;
+      const double disc = s0 * s0 - 2.0 * c0 * r;
+      // (NaN c0: disc is NaN, the plain Newton step.)
+      const double xn = disc >= 0.0 ? x0 - 2.0 * r / (s0 + std::sqrt(disc)) : x0 - r / s0;
       if (xn > lo && xn < hi && (!newton || std::abs(xn - x_neg) < std::abs(x - x_neg))) {
         x = xn;
         newton = true;
       }
     };
     if (slow < 3) {
-      try_newton(x_neg, g_neg, s_neg);
-      try_newton(x_pos, g_pos,
-                 std::isnan(s_pos) && g_pos <= tol ? (g_pos - g_neg) / (x_pos - x_neg) : s_pos);
+      try_newton(x_neg, g_neg, s_neg, c_neg);
+      const bool secant = std::isnan(s_pos) && g_pos <= tol;
+      try_newton(x_pos, g_pos, secant ? (g_pos - g_neg) / (x_pos - x_neg) : s_pos,
+                 secant ? std::numeric_limits<double>::quiet_NaN() : c_pos);
     }
     if (!newton) {
       x = (x_neg * w_pos - x_pos * w_neg) / (w_pos - w_neg);
       if (!(x > lo && x < hi)) x = 0.5 * (x_neg + x_pos);
     }
     double slope = 0.0;
-    const double gx = gs(x, slope);
+    double curve = 0.0;
+    const double gx = gsc(x, slope, curve);
     if (gx <= 0.0) {
       if (gx >= -tol) return x;
       if (!newton && side == -1) w_pos *= anderson_bjorck(gx, w_neg);
       x_neg = x;
       g_neg = w_neg = gx;
       s_neg = slope;
+      c_neg = curve;
       side = newton ? 0 : -1;
     } else {
       if (!newton && side == 1) w_neg *= anderson_bjorck(gx, w_pos);
       x_pos = x;
       g_pos = w_pos = gx;
       s_pos = slope;
+      c_pos = curve;
       side = newton ? 0 : 1;
     }
     slow = newton && std::abs(x_pos - x_neg) > 0.9 * width ? slow + 1 : 0;
   }
   return x_neg;
+}
+
+// The same without curvatures: gs(x, slope) (the steps are Newton steps).
+template <class G>
+double solve_with_slope(double x_neg, double x_pos, double g_neg, double g_pos, double s_neg,
+                        double s_pos, double tol, G gs) noexcept {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  return solve_with_curve(x_neg, x_pos, g_neg, g_pos, s_neg, s_pos, nan, nan, tol,
+                          [&](double x, double& slope, double& curve) {
+                            curve = nan;
+                            return gs(x, slope);
+                          });
 }
 
 }  // namespace ncsim::jerk::detail

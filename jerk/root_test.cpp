@@ -69,3 +69,35 @@ TEST_CASE("the root solver crosses a kink (a ramp reaching its limit) without lo
   CHECK(3.0 * (x - 1.0) - 0.5 <= 0.0);
   CHECK(calls <= 8);
 }
+
+TEST_CASE("with the curvature, a quadratic's root is found by one step, on the feasible side") {
+  // g = x^2 - 2 with slope and curvature: the quadratic model is g itself.
+  using ncsim::jerk::detail::solve_with_curve;
+  const double tol = 1e-14;
+  int calls = 0;
+  const auto g = [&](double x, double& slope, double& curve) {
+    ++calls;
+    slope = 2.0 * x;
+    curve = 2.0;
+    return x * x - 2.0;
+  };
+  const double x = solve_with_curve(0.0, 2.0, -2.0, 2.0, 0.0, 4.0, 2.0, 2.0, tol, g);
+  CHECK(x * x - 2.0 <= 0.0);
+  CHECK(x * x - 2.0 >= -tol);
+  CHECK(calls == 1);
+  // A wrong curvature only costs steps (the step stays in the bracket, Newton takes over).
+  for (const double c : {-50.0, 0.0, 0.1, 40.0}) {
+    CAPTURE(c);
+    calls = 0;
+    const auto g_wrong = [&](double x_, double& slope, double& curve) {
+      ++calls;
+      slope = 2.0 * x_;
+      curve = c;
+      return x_ * x_ - 2.0;
+    };
+    const double y = solve_with_curve(0.0, 2.0, -2.0, 2.0, 0.0, 4.0, c, c, tol, g_wrong);
+    CHECK(y * y - 2.0 <= 0.0);
+    CHECK(y == doctest::Approx(std::sqrt(2.0)).epsilon(1e-14));
+    CHECK(calls < 200);
+  }
+}
