@@ -57,10 +57,15 @@ struct ArcGeom {
 };
 /// A quintic Bezier curve with its arc-length table.
 struct BezierGeom {
-  static constexpr int kTable = 32;  ///< arc-length table intervals
+  static constexpr int kTable = 32;  ///< arc-length table intervals of a spline piece (most)
+  /// Intervals of a tolerance ball's table (docs/planner.md "Blend curve": 16 keep s(t) within
+  /// 1e-13 of the length on every blend shape; spline pieces, whose speed can nearly vanish,
+  /// keep 32).
+  static constexpr int kBlendTable = 16;
   std::array<AxisVec, 6> p{};
-  std::array<double, kTable + 1> s_at{};  ///< arc length at t = k / kTable
+  std::array<double, kTable + 1> s_at{};  ///< arc length at t = k / intervals, k <= intervals
   AxisMask moving = 0;  ///< axes whose control points are not all equal (the rest are constant)
+  std::uint8_t intervals = kTable;  ///< table intervals used: kBlendTable or kTable
 };
 
 }  // namespace geom
@@ -122,6 +127,9 @@ class Segment {
   double bezier_t(const BezierGeom& g, double s) const noexcept;        // s -> t
   PathPoint bezier_at_t(const BezierGeom& g, double t) const noexcept;  // at curve parameter t
   DerivativeBounds bezier_bounds() const noexcept;                      // path_bezier.cpp
+  /// A Bezier segment whose arc-length table has `intervals` intervals (kBlendTable, kTable).
+  static Segment bezier_with(std::uint8_t axis_count, AxisMask metric,
+                             const std::array<AxisVec, 6>& p, int intervals);
 
   std::variant<LineGeom, ArcGeom, BezierGeom> geom_;
   std::uint8_t n_ = 0;

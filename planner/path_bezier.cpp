@@ -1,7 +1,8 @@
 // planner/path: quintic Bezier blends with a numerical arc-length parametrisation.
 // B(t) = sum_k C(5,k) (1-t)^(5-k) t^k P_k, t in [0, 1]. Arc length s(t) = int_0^t |B'|_metric;
-// a table holds s at t = k/32 (5-point Gauss-Legendre per interval), s -> t inverts it by
-// Newton steps inside the table interval. Derivatives with respect to s (sigma = |B'|):
+// a table holds s at t = k/K (5-point Gauss-Legendre per interval; K = 16 for a blend, 32 for a
+// spline piece), s -> t inverts it by Newton steps inside the table interval. Derivatives with
+// respect to s (sigma = |B'|):
 //   x'   = B1 / sigma
 //   x''  = B2 / sigma^2 - B1 sigma' / sigma^3,            sigma'  = (B1.B2) / sigma
 //   x''' = B3 / sigma^3 - 3 B2 sigma' / sigma^4 - B1 sigma'' / sigma^4 + 3 B1 sigma'^2 / sigma^5,
@@ -109,14 +110,30 @@ Derivs eval(const std::array<AxisVec, 6>& p, std::size_t n, double t) {
   return eval_with(hodographs(p, n), n, basis<5>(t), basis<4>(t), basis<3>(t), basis<2>(t));
 }
 
-/// Bernstein values at fixed parameters, computed once: the arc-length table's Gauss nodes and
+/// Degree-8 Bernstein values at the 5 K Gauss nodes of a K-interval arc-length table (|B'|^2
+/// is a degree-8 polynomial), by degree index first (b8[j][node]): the table's loop runs over
+/// the nodes innermost.
+template <int K>
+struct GaussNodes {
+  static constexpr std::size_t kNodes = static_cast<std::size_t>(K) * 5;
+  std::array<std::array<double, kNodes>, 9> b8{};
+  GaussNodes() {
+    constexpr double dt = 1.0 / K;
+    for (int k = 0; k < K; ++k)
+      for (std::size_t g = 0; g < 5; ++g) {
+        const auto b = basis<8>((k + 0.5) * dt + 0.5 * dt * kGlX[g]);
+        for (std::size_t j = 0; j < 9; ++j)
+          b8[j][static_cast<std::size_t>(k) * 5 + g] = b[j];
+      }
+  }
+};
+
+/// Bernstein values at fixed parameters, computed once: the arc-length tables' Gauss nodes and
 /// the bound samples (the same t for every curve, so no basis is recomputed per curve).
 struct Tables {
   static constexpr int kSamples = 64;  ///< bound samples: t = k / 64, k = 0..64
-  static constexpr std::size_t kNodes = geom::BezierGeom::kTable * 5;  ///< Gauss nodes
-  /// Degree-8 Bernstein values at the Gauss nodes (|B'|^2 is a degree-8 polynomial), by degree
-  /// index first (gauss8[j][node]): Segment::bezier runs over the nodes innermost.
-  std::array<std::array<double, kNodes>, 9> gauss8{};
+  GaussNodes<geom::BezierGeom::kTable> gauss_spline;
+  GaussNodes<geom::BezierGeom::kBlendTable> gauss_blend;
   std::array<std::array<double, 6>, kSamples + 1> s5{};
   std::array<std::array<double, 5>, kSamples + 1> s4{};
   std::array<std::array<double, 4>, kSamples + 1> s3{};
@@ -132,13 +149,6 @@ struct Tables {
   std::array<std::array<double, 4>, kSplineBoundSamples + 1> f3{};
   std::array<std::array<double, 3>, kSplineBoundSamples + 1> f2{};
   Tables() {
-    constexpr double dt = 1.0 / geom::BezierGeom::kTable;
-    for (int k = 0; k < geom::BezierGeom::kTable; ++k)
-      for (std::size_t g = 0; g < 5; ++g) {
-        const auto b8 = basis<8>((k + 0.5) * dt + 0.5 * dt * kGlX[g]);
-        for (std::size_t j = 0; j < 9; ++j)
-          gauss8[j][static_cast<std::size_t>(k) * 5 + g] = b8[j];
-      }
     for (int k = 0; k <= kSamples; ++k) {
       const double t = static_cast<double>(k) / kSamples;
       const auto u = static_cast<std::size_t>(k);
@@ -320,9 +330,39 @@ PathPoint arc_length_derivatives(const Derivs& d, std::size_t n, AxisMask metric
   return p;
 }
 
+/// The arc-length table of a K-interval curve from |B'|^2 in Bernstein form: 9 products and a
+/// root per Gauss node, whatever the axes. Each node's sum runs over j in order (the same value
+/// as node by node); the nodes are innermost so the compiler can vectorise.
+template <int K>
+void arc_length_table(const std::array<double, 9>& beta, const GaussNodes<K>& nodes,
+                      std::array<double, geom::BezierGeom::kTable + 1>& s_at) {
+  constexpr double dt = 1.0 / K;
+  constexpr std::size_t kNodes = GaussNodes<K>::kNodes;
+  std::array<double, kNodes> node_speed{};
+  for (std::size_t j = 0; j < 9; ++j) {
+    const double c = beta[j];
+    const std::array<double, kNodes>& b8 = nodes.b8[j];
+    for (std::size_t q = 0; q < kNodes; ++q)
+      node_speed[q] += c * b8[q];
+  }
+  for (double& v : node_speed)
+    v = std::sqrt(std::max(v, 0.0));
+  for (std::size_t k = 0; k < static_cast<std::size_t>(K); ++k) {
+    double sum = 0.0;
+    for (std::size_t q = 0; q < 5; ++q)
+      sum += kGlW[q] * node_speed[k * 5 + q];
+    s_at[k + 1] = s_at[k] + 0.5 * dt * sum;
+  }
+}
+
 }  // namespace
 
 Segment Segment::bezier(std::uint8_t axis_count, AxisMask metric, const std::array<AxisVec, 6>& p) {
+  return bezier_with(axis_count, metric, p, BezierGeom::kBlendTable);
+}
+
+Segment Segment::bezier_with(std::uint8_t axis_count, AxisMask metric,
+                             const std::array<AxisVec, 6>& p, int intervals) {
   Segment seg;
   seg.n_ = axis_count;
   AxisMask all = 0;
@@ -334,28 +374,16 @@ Segment Segment::bezier(std::uint8_t axis_count, AxisMask metric, const std::arr
   for (std::size_t i = 0; i < axis_count; ++i)
     for (std::size_t k = 1; k < 6; ++k)
       if (p[k][i] != p[0][i]) g.moving |= AxisMask{1} << i;
-  constexpr double dt = 1.0 / BezierGeom::kTable;
   const Tables& tab = tables();
-  // 160 speeds from |B'|^2 in Bernstein form: 9 products and a root each, whatever the axes.
-  // Each node's sum runs over j in order (the same value as node by node); the nodes are
-  // innermost so the compiler can vectorise.
   const std::array<double, 9> beta = squared_speed(p, axis_count, seg.metric_);
-  std::array<double, Tables::kNodes> node_speed{};
-  for (std::size_t j = 0; j < 9; ++j) {
-    const double c = beta[j];
-    const std::array<double, Tables::kNodes>& b8 = tab.gauss8[j];
-    for (std::size_t q = 0; q < Tables::kNodes; ++q)
-      node_speed[q] += c * b8[q];
+  if (intervals == BezierGeom::kBlendTable) {
+    g.intervals = BezierGeom::kBlendTable;
+    arc_length_table(beta, tab.gauss_blend, g.s_at);
+  } else {
+    g.intervals = BezierGeom::kTable;
+    arc_length_table(beta, tab.gauss_spline, g.s_at);
   }
-  for (double& v : node_speed)
-    v = std::sqrt(std::max(v, 0.0));
-  for (std::size_t k = 0; k < BezierGeom::kTable; ++k) {
-    double sum = 0.0;
-    for (std::size_t q = 0; q < 5; ++q)
-      sum += kGlW[q] * node_speed[k * 5 + q];
-    g.s_at[k + 1] = g.s_at[k] + 0.5 * dt * sum;
-  }
-  seg.s_hi_ = g.s_at[BezierGeom::kTable];
+  seg.s_hi_ = g.s_at[g.intervals];
   seg.geom_ = g;
   return seg;
 }
@@ -374,17 +402,19 @@ Segment Segment::cubic(std::uint8_t axis_count, AxisMask metric, const std::arra
       p[k][i] = (k / 5.0) * q[k - 1][i] + (1.0 - k / 5.0) * q[k][i];
     p[5][i] = q[4][i];
   }
-  Segment seg = bezier(axis_count, metric, p);
+  Segment seg = bezier_with(axis_count, metric, p, BezierGeom::kTable);
   seg.spline_ = true;
   return seg;
 }
 
 double Segment::bezier_t(const BezierGeom& g, double s) const noexcept {
-  constexpr double dt = 1.0 / BezierGeom::kTable;
+  const int intervals = g.intervals;
+  const double dt = 1.0 / intervals;
   if (s <= 0.0) return 0.0;
-  if (s >= g.s_at[BezierGeom::kTable]) return 1.0;
-  const auto it = std::upper_bound(g.s_at.begin(), g.s_at.end(), s);
-  const int k = std::clamp(static_cast<int>(it - g.s_at.begin()) - 1, 0, BezierGeom::kTable - 1);
+  if (s >= g.s_at[g.intervals]) return 1.0;
+  const auto end = g.s_at.begin() + intervals + 1;
+  const auto it = std::upper_bound(g.s_at.begin(), end, s);
+  const int k = std::clamp(static_cast<int>(it - g.s_at.begin()) - 1, 0, intervals - 1);
   const double t_k = k * dt;
   const double s_k = g.s_at[k];
   const double span = g.s_at[k + 1] - s_k;
@@ -418,7 +448,7 @@ DerivativeBounds Segment::bezier_bounds() const noexcept {
   const std::size_t samples = spline_ ? kSplineBoundSamples : Tables::kSamples;
   constexpr double kMargin = 1.01;
   const BezierGeom& g = std::get<BezierGeom>(geom_);
-  const bool whole = s_lo_ <= 0.0 && s_hi_ >= g.s_at[BezierGeom::kTable];
+  const bool whole = s_lo_ <= 0.0 && s_hi_ >= g.s_at[g.intervals];
   const bool table = whole;
   const double t0 = whole ? 0.0 : bezier_t(g, s_lo_);
   const double t1 = whole ? 1.0 : bezier_t(g, s_hi_);
