@@ -260,6 +260,17 @@ StateRamp velocity_ramp_to(double v0, double a0, double v1, double a1, double a_
 /// Distance [mm] travelled by `ramp` from (v0, a0) (closed-form chain).
 double distance(double v0, double a0, const StateRamp& ramp) noexcept;
 
+/// State (p from 0, v, a) of `ramp` begun at (v0, a0) at time t [s], t clamped to
+/// [0, ramp.time()] (closed form per phase, boundary accelerations snapped to the intended).
+State state_at(double v0, double a0, const StateRamp& ramp, double t) noexcept;
+
+/// First time [s] at which `ramp` begun at (v0, a0) has covered the distance s [mm]: 0 for
+/// s <= 0, ramp.time() when the ramp's distance is below s. Meant for ramps that do not move
+/// backward (v >= 0 throughout; then p is monotone and the answer unique): a forward pass
+/// follows a change until a joint cuts it and carries (v, a) there (state_at of this time).
+/// Bisection on the phase that contains s, to the resolution of double.
+double time_at_distance(double v0, double a0, const StateRamp& ramp, double s) noexcept;
+
 }  // namespace ncsim::jerk
 
 #include "jerk/ramp_inline.hpp"  // IWYU pragma: export

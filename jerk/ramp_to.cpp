@@ -1,5 +1,5 @@
-// jerk/ramp_to.cpp: the time-optimal velocity change from (v0, a0) to (v1, a1) (see jerk.hpp,
-// "planner-c2 additions").
+// jerk/ramp_to.cpp: the time-optimal velocity change from (v0, a0) to (v1, a1), its state at a
+// time and its cut at a distance (see jerk.hpp, "planner-c2 additions").
 //
 // Method. For a duration T the accelerations a(t) with |a'| <= j, a(0) = a0, a(T) = a1 and a
 // within [-a_down, a_up] form a convex set; its pointwise largest member is the upper envelope
@@ -67,6 +67,44 @@ double distance(double v0, double a0, const StateRamp& ramp) noexcept {
   for (std::size_t i = 0; i < 3; ++i)
     st = advance(st, ramp.jerk[i], ramp.duration[i]);
   return st.p;
+}
+
+State state_at(double v0, double a0, const StateRamp& ramp, double t) noexcept {
+  t = std::clamp(t, 0.0, ramp.time());
+  State st{0.0, v0, a0};
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (t <= ramp.duration[i]) return advance(st, ramp.jerk[i], t);
+    st = advance(st, ramp.jerk[i], ramp.duration[i]);
+    st.a = i < 2 ? ramp.a_peak : ramp.a_end;
+    t -= ramp.duration[i];
+  }
+  st.v = ramp.v_end;
+  return st;
+}
+
+double time_at_distance(double v0, double a0, const StateRamp& ramp, double s) noexcept {
+  if (!(s > 0.0)) return 0.0;
+  State st{0.0, v0, a0};
+  double t0 = 0.0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double dur = ramp.duration[i];
+    const State end = advance(st, ramp.jerk[i], dur);
+    if (end.p >= s) {
+      // p is continuous and (v >= 0) nondecreasing on the phase: the first t with p(t) >= s.
+      double lo = 0.0;
+      double hi = dur;
+      for (int k = 0; k < 200 && hi - lo > 0.0; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        if (!(mid > lo && mid < hi)) break;
+        (advance(st, ramp.jerk[i], mid).p >= s ? hi : lo) = mid;
+      }
+      return t0 + hi;
+    }
+    st = end;
+    st.a = i < 2 ? ramp.a_peak : ramp.a_end;
+    t0 += dur;
+  }
+  return ramp.time();
 }
 
 }  // namespace ncsim::jerk

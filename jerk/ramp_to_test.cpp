@@ -278,3 +278,42 @@ TEST_CASE(
   CHECK(pulses > 100);
   CHECK(holds > 50);
 }
+
+TEST_CASE("time_at_distance and state_at cut a ramp at a distance (seeded, forward ramps)") {
+  // Ramps between positive velocities from accelerations within the limits; each is cut at the
+  // position of a random instant, and the cut must return that instant's state.
+  std::mt19937_64 rng(2211);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int cuts = 0;
+  for (int n = 0; n < 2000; ++n) {
+    const double v_max = log_uniform(rng, 1.0, 1e4);
+    const double a_up = log_uniform(rng, 10.0, 1e5);
+    const double a_down = log_uniform(rng, 10.0, 1e5);
+    const double j = log_uniform(rng, 1e2, 1e7);
+    const double v0 = v_max * (0.5 + 0.5 * unit(rng));
+    const double v1 = v_max * (0.5 + 0.5 * unit(rng));
+    // Small accelerations relative to the velocity: the velocity stays positive.
+    const double a_small = std::min(std::sqrt(0.5 * v_max * j), std::min(a_up, a_down));
+    const double a0 = a_small * (2.0 * unit(rng) - 1.0) * 0.9;
+    const double a1 = a_small * (2.0 * unit(rng) - 1.0) * 0.9;
+    const StateRamp r = ncsim::jerk::velocity_ramp_to(v0, a0, v1, a1, a_up, a_down, j);
+    const double t = r.time() * unit(rng);
+    const ncsim::jerk::State at = ncsim::jerk::state_at(v0, a0, r, t);
+    if (!(at.v > 0.0)) continue;
+    ++cuts;
+    CAPTURE(n);
+    const double t_cut = ncsim::jerk::time_at_distance(v0, a0, r, at.p);
+    CHECK(t_cut == doctest::Approx(t).epsilon(1e-9).scale(r.time() + 1e-12));
+    const ncsim::jerk::State cut = ncsim::jerk::state_at(v0, a0, r, t_cut);
+    CHECK(cut.v == doctest::Approx(at.v).epsilon(1e-9).scale(v_max));
+    CHECK(cut.a == doctest::Approx(at.a).epsilon(1e-9).scale(a_up + a_down));
+  }
+  CHECK(cuts > 1500);
+  // The ends: 0 before the start, the whole ramp beyond its distance.
+  const StateRamp r = ncsim::jerk::velocity_ramp_to(10.0, 0.0, 20.0, 500.0, 1e3, 1e3, 1e5);
+  CHECK(ncsim::jerk::time_at_distance(10.0, 0.0, r, -1.0) == 0.0);
+  CHECK(ncsim::jerk::time_at_distance(10.0, 0.0, r, 1e9) == r.time());
+  const ncsim::jerk::State end = ncsim::jerk::state_at(10.0, 0.0, r, r.time());
+  CHECK(end.v == 20.0);
+  CHECK(end.a == 500.0);
+}
