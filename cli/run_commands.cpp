@@ -622,23 +622,8 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   if (recorder) recorder->set_limits(cfg);
   // --- trafo-jerk: on a kinematic machine the MCS toolpath before #TRAFO ON is the joints' TCP.
   if (recorder && cfg.path.joints) {
-    if (auto trafo = ipo::machine_trafo(in.machine, cfg.path)) {
-      recorder->set_forward(
-          [t = std::move(*trafo)](std::span<const double> q, std::span<double> x) {
-            for (const int k : t.xyz)
-              if (k < 0 || static_cast<std::size_t>(k) >= q.size()) return false;
-            const auto p = t.kinematics->forward(Eigen::Vector3d(
-                q[static_cast<std::size_t>(t.xyz[0])], q[static_cast<std::size_t>(t.xyz[1])],
-                q[static_cast<std::size_t>(t.xyz[2])]));
-            if (!p.ok()) return false;
-            for (std::size_t i = 0; i < x.size(); ++i)
-              x[i] = i < q.size() ? q[i] : 0.0;
-            for (std::size_t k = 0; k < 3; ++k)
-              if (static_cast<std::size_t>(t.xyz[k]) < x.size())
-                x[static_cast<std::size_t>(t.xyz[k])] = p.value[static_cast<int>(k)];
-            return true;
-          });
-    }
+    if (const auto trafo = ipo::machine_trafo(in.machine, cfg.path))
+      recorder->set_forward(ipo::forward_map(trafo->kinematics, trafo->xyz));
   }
   Tee with_report(&tee, recorder.get());
 

@@ -9,15 +9,19 @@
 
 namespace ncsim::ipo {
 
-planner::JointMap joint_map(std::shared_ptr<const machines::Kinematics> kinematics,
-                            std::array<int, 3> xyz) {
-  return [kin = std::move(kinematics), xyz](const AxisVec& x, AxisVec& q) noexcept {
+namespace {
+
+// Maps X, Y, Z (at `xyz`) of an axis vector through `inverse` ? the kinematic's inverse : its
+// forward transform; every other axis passes unchanged.
+planner::JointMap xyz_map(std::shared_ptr<const machines::Kinematics> kinematics,
+                          std::array<int, 3> xyz, bool inverse) {
+  return [kin = std::move(kinematics), xyz, inverse](const AxisVec& x, AxisVec& q) noexcept {
     Eigen::Vector3d p = Eigen::Vector3d::Zero();
     for (std::size_t k = 0; k < 3; ++k)
       if (xyz[k] >= 0) p[static_cast<Eigen::Index>(k)] = x[static_cast<std::size_t>(xyz[k])];
     machines::KinResult r;
     try {
-      r = kin->inverse(p);
+      r = inverse ? kin->inverse(p) : kin->forward(p);
     } catch (...) {
       return false;
     }
@@ -27,6 +31,18 @@ planner::JointMap joint_map(std::shared_ptr<const machines::Kinematics> kinemati
       if (xyz[k] >= 0) q[static_cast<std::size_t>(xyz[k])] = r.value[static_cast<Eigen::Index>(k)];
     return true;
   };
+}
+
+}  // namespace
+
+planner::JointMap joint_map(std::shared_ptr<const machines::Kinematics> kinematics,
+                            std::array<int, 3> xyz) {
+  return xyz_map(std::move(kinematics), xyz, true);
+}
+
+planner::JointMap forward_map(std::shared_ptr<const machines::Kinematics> kinematics,
+                              std::array<int, 3> xyz) {
+  return xyz_map(std::move(kinematics), xyz, false);
 }
 
 std::optional<MachineTrafo> machine_trafo(const machines::Machine& machine, const Config& config) {

@@ -48,4 +48,10 @@ std::optional<MachineTrafo> machine_trafo(const machines::Machine& machine, cons
 planner::JointMap joint_map(std::shared_ptr<const machines::Kinematics> kinematics,
                             std::array<int, 3> xyz);
 
+/// The forward map of `kinematics`, the mirror of joint_map(): the drives' values at `xyz`
+/// become the TCP's X, Y, Z, every other axis passes unchanged; false where the transform does
+/// not map. Never throws.
+planner::JointMap forward_map(std::shared_ptr<const machines::Kinematics> kinematics,
+                              std::array<int, 3> xyz);
+
 }  // namespace ncsim::ipo

@@ -153,7 +153,7 @@ void Recorder::on_cycle(const ipo::Cycle& c) {
   // conveyor channel the setpoints are joints: the MCS toolpath is then the TCP (set_tcp()).
   if (conveyor_ != nullptr && set_ != nullptr) {
     const auto& mcs = transformed_ && tcp_ != nullptr ? *tcp_ : *set_;
-    std::array<double, planner::kMaxAxes> p{};
+    ipo::AxisVec p{};
     for (std::size_t i = 0; i < p.size(); ++i)
       p[i] = mcs[i].p;
     add_mcs(p);
@@ -167,15 +167,15 @@ void Recorder::on_cycle(const ipo::Cycle& c) {
   }
 }
 
-void Recorder::add_mcs(std::span<const double> axes) {
+void Recorder::add_mcs(const ipo::AxisVec& axes) {
   mcs_point_.resize(mcs_.dims());
   // --- trafo-jerk: untransformed, a kinematic machine's axes are joints: their TCP.
-  if (!transformed_ && forward_) {
-    if (!forward_(axes, mcs_point_)) return;
-  } else {
-    for (std::size_t i = 0; i < mcs_point_.size(); ++i)
-      mcs_point_[i] = axes[i];
-  }
+  ipo::AxisVec tcp{};
+  const bool joints = !transformed_ && forward_;
+  if (joints && !forward_(axes, tcp)) return;
+  const ipo::AxisVec& p = joints ? tcp : axes;
+  for (std::size_t i = 0; i < mcs_point_.size(); ++i)
+    mcs_point_[i] = p[i];
   mcs_.add(mcs_point_);
 }
 

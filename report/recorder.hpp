@@ -24,7 +24,6 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -37,6 +36,7 @@
 #include "ipo/interpolator.hpp"
 #include "ipo/time.hpp"
 #include "ipo/workpiece_cycles.hpp"
+#include "planner/joint_limits.hpp"
 #include "report/decimate.hpp"
 
 namespace ncsim::report {
@@ -143,12 +143,11 @@ class Recorder final : public ipo::Sink {
   /// conveyor channel the MCS toolpath of a transformed cycle (the setpoints are joints there).
   void set_tcp(const std::array<axes::Setpoint, planner::kMaxAxes>* tcp) noexcept { tcp_ = tcp; }
   // --- trafo-jerk: the MCS toolpath of a kinematic machine before #TRAFO ON.
-  /// The machine's forward transform, axis positions -> the TCP's MCS point (path_dims values
-  /// [mm]; false where it does not map): on a machine whose axes are joints, an untransformed
-  /// cycle's MCS toolpath point is the joints' TCP, not their angles (empty: the axes as they
-  /// are). An unmapped point is left out.
-  using Forward = std::function<bool(std::span<const double> axes, std::span<double> mcs)>;
-  void set_forward(Forward forward) { forward_ = std::move(forward); }
+  /// The machine's forward transform, axis positions -> the same vector with the TCP's X, Y, Z
+  /// [mm] (ipo::forward_map; false where it does not map): on a machine whose axes are joints,
+  /// an untransformed cycle's MCS toolpath point is the joints' TCP, not their angles (empty:
+  /// the axes as they are). An unmapped point is left out.
+  void set_forward(planner::JointMap forward) { forward_ = std::move(forward); }
   /// The channel's conveyor tracking (null: none): the setpoints are then the MCS toolpath, and
   /// while it moves PCS1 or drives a catch-up the cycle's path point is the PCS1 toolpath. With
   /// a conveyor world attached (sync->port()) the conveyor series kConveyorSeries are appended
@@ -179,7 +178,7 @@ class Recorder final : public ipo::Sink {
   void block_done(const ipo::BlockTime& b);
   void conveyor_values();
   /// Adds the cycle's MCS toolpath point from the axis positions `axes` (set_forward()).
-  void add_mcs(std::span<const double> axes);
+  void add_mcs(const ipo::AxisVec& axes);
 
   std::vector<std::string> names_;
   std::vector<NamedSeries> named_;
@@ -194,7 +193,7 @@ class Recorder final : public ipo::Sink {
   const ipo::ConveyorSync* conveyor_ = nullptr;                         ///< set_conveyor()
   const std::array<axes::Setpoint, planner::kMaxAxes>* tcp_ = nullptr;  ///< set_tcp()
   std::vector<double> mcs_point_;  ///< scratch: the MCS tool point of the cycle
-  Forward forward_;                ///< set_forward()
+  planner::JointMap forward_;      ///< set_forward()
   std::vector<double> values_;     ///< one row of series_
   const ipo::AxesState* axes_state_ = nullptr;
   bool transformed_ = false;  ///< the last cycle ran under #TRAFO ON (ipo::transformed)

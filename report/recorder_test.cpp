@@ -283,7 +283,7 @@ TEST_CASE("a kinematic machine before #TRAFO ON: the MCS toolpath is the joints'
     rec.set_setpoints(&joints);
     rec.set_tcp(&tcp);
     rec.set_conveyor(tracking ? &sync : nullptr);
-    rec.set_forward([](std::span<const double> q, std::span<double> x) {
+    rec.set_forward([](const ipo::AxisVec& q, ipo::AxisVec& x) {
       if (q[0] > 90.0) return false;  // outside the transform: no point
       for (std::size_t k = 0; k < x.size(); ++k)
         x[k] = -10.0 * q[k] - 600.0;
