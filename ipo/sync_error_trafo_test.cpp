@@ -24,6 +24,7 @@
 #include "ipo/program_source.hpp"
 #include "ipo/test_port.hpp"
 #include "ipo/trafo.hpp"
+#include "ipo/trafo_test_support.hpp"
 
 namespace {
 
@@ -31,12 +32,7 @@ using namespace ncsim;
 
 constexpr double kT = 0.001;
 
-machines::Machine picker() {
-  machines::Machine m = interp::test::machine("delta_picker");
-  m.channel.conveyor->workspace.lower = Eigen::Vector3d(-600, -600, -900);
-  m.channel.conveyor->workspace.upper = Eigen::Vector3d(600, 600, 0);
-  return m;
-}
+using ipo::test::picker;
 
 const char* const kGrip =
     "%t\n"                              // 1

@@ -23,6 +23,7 @@
 #include "ipo/test_port.hpp"
 #include "ipo/trafo.hpp"
 #include "ipo/trafo_sync.hpp"
+#include "ipo/trafo_test_support.hpp"
 
 namespace {
 
@@ -30,14 +31,7 @@ using namespace ncsim;
 
 constexpr double kT = 0.001;
 
-/// The delta picker with a workspace that holds its working height (the bundled list's
-/// +-500 mm does not: programs/pick_and_place).
-machines::Machine picker() {
-  machines::Machine m = interp::test::machine("delta_picker");
-  m.channel.conveyor->workspace.lower = Eigen::Vector3d(-600, -600, -900);
-  m.channel.conveyor->workspace.upper = Eigen::Vector3d(600, 600, 0);
-  return m;
-}
+using ipo::test::picker;
 
 struct Tracked {
   ipo::Status status = ipo::Status::finished;

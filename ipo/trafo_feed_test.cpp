@@ -21,6 +21,7 @@
 #include "ipo/channel_test_support.hpp"
 #include "ipo/test_port.hpp"
 #include "ipo/trafo.hpp"
+#include "ipo/trafo_test_support.hpp"
 
 namespace {
 
@@ -29,13 +30,7 @@ using namespace ncsim;
 constexpr double kT = 0.001;
 constexpr double kBelt = 100.0;  // [mm/s] along +X (CONV_VEL 6000 mm/min)
 
-// The delta picker with a workspace that holds its working height.
-machines::Machine picker() {
-  machines::Machine m = interp::test::machine("delta_picker");
-  m.channel.conveyor->workspace.lower = Eigen::Vector3d(-600, -600, -900);
-  m.channel.conveyor->workspace.upper = Eigen::Vector3d(600, 600, 0);
-  return m;
-}
+using ipo::test::picker;
 
 struct Run {
   ipo::Status status = ipo::Status::finished;
