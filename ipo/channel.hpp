@@ -99,6 +99,10 @@ inline constexpr const char* kMeasuredValueWaitId = "NC9054";
 /// --- sync-trafo: #SYNC IN FEED_CONT > 0 / FEED_CONT_AUTO on a static processing unit
 /// (x_virtual): its feed follows the belt (004 l.438); docs/conveyor.md S-1.
 inline constexpr const char* kStaticFeedContId = "NC9060";
+/// NC9061: #MACHINE DATA of the conveyor's filters or delay time while the channel tracks the
+/// belt (catch-up or PCS1): the filters' restart would step the frame under the tool
+/// (docs/conveyor.md F-7).
+inline constexpr const char* kFilterWhileTrackingId = "NC9061";
 // --- indp:
 /// NC6103: the path programs an axis while its INDP motion runs or away from where it left it.
 inline constexpr const char* kIndpPathId = "NC6103";
@@ -134,6 +138,9 @@ struct ChannelConfig {
   // --- conveyor-sync: conveyor tracking (docs/conveyor.md "Synchronisation")
   std::optional<machines::ConveyorSyncChannel> conveyor;  ///< FCT_DLM channels only
   std::vector<SyncAxis> sync_axes;  ///< one per entry of path.axes (with `conveyor`)
+  /// The conveyor axis's conv_sync.* as loaded: what `#MACHINE DATA` changes at run time
+  /// (ipo/machine_data.hpp); set with `conveyor` when the machine has a conveyor axis.
+  std::optional<machines::ConveyorAxisParams> conveyor_axis;
 };
 
 /// The channel configuration of `machine` (docs/ipo.md "The channel loop"): the interpolator
@@ -287,6 +294,10 @@ class Channel {
   EventOutcome on_probe_arm(const interp::ProbeArm& command, const ChannelEvent& e) noexcept;
   EventOutcome on_move_velocity(const interp::MoveVelocity& command,
                                 const ChannelEvent& e) noexcept;
+  /// `#MACHINE DATA` on the conveyor axis's filters and delay time (ipo/machine_data.hpp):
+  /// passed to the Port with the path standing (isg-language.md §5.10).
+  EventOutcome on_machine_data(const interp::MachineData& command, const ChannelEvent& e) noexcept;
+  std::optional<machines::ConveyorAxisParams> conveyor_axis_;  ///< as changed so far
   /// Passes the interpolator's joints on at once; cycles are passed on by step().
   class JointRelay final : public Sink {
    public:

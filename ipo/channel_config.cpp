@@ -30,6 +30,8 @@ ChannelConfig channel_config(const machines::Machine& machine, double t_cycle) {
   // --- conveyor-sync: conveyor tracking (docs/conveyor.md "Synchronisation")
   if (machine.channel.conveyor) {
     c.conveyor = machine.channel.conveyor;
+    if (const machines::AxisParams* belt = machine.conveyor_axis())
+      c.conveyor_axis = belt->conveyor;
     const std::array<const char*, 3> xyz{"X", "Y", "Z"};
     for (const std::uint8_t i : interpolated_axes(machine)) {
       const machines::AxisParams& axis = machine.axes[i];

@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "ipo/channel.hpp"
+#include "ipo/machine_data.hpp"
 #include "ipo/program_source.hpp"
 
 namespace ncsim::ipo {
@@ -199,6 +200,33 @@ Channel::EventOutcome Channel::on_move_velocity(const interp::MoveVelocity& comm
   // In encoder mode the scenario moves the belt and the Port ignores the command (its contract).
   sync_->port()->command_velocity(command);
   return EventOutcome::done;
+}
+
+Channel::EventOutcome Channel::on_machine_data(const interp::MachineData& command,
+                                               const ChannelEvent& e) noexcept {
+  try {
+    // ProgramSource let only the conveyor axis's filter parameters through (machine_data.hpp).
+    if (!sync_ || sync_->port() == nullptr || !conveyor_axis_)
+      return event_error(
+          kNotSupportedId,
+          std::string("not supported: #MACHINE DATA of the conveyor filters") + kNeedsWorld, e);
+    if (sync_tracking())
+      return event_error(kFilterWhileTrackingId,
+                         "#MACHINE DATA of the conveyor's filters or delay time while "
+                         "synchronised: the filters would restart under the tool and step PCS1 "
+                         "(change them before #SYNC IN or after #SYNC OUT)",
+                         e);
+    const machines::ConveyorAxisParams changed = apply_machine_data(*conveyor_axis_, command);
+    if (!sync_->port()->set_axis_params(changed))
+      return event_error(kNotSupportedId,
+                         "not supported: #MACHINE DATA of the conveyor filters on this conveyor "
+                         "world",
+                         e);
+    conveyor_axis_ = changed;
+    return EventOutcome::done;
+  } catch (...) {
+    std::abort();  // out of memory building a message: nothing sane is left
+  }
 }
 
 }  // namespace ncsim::ipo

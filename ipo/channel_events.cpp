@@ -46,6 +46,8 @@ Channel::EventOutcome Channel::dispatch(const ChannelEvent& e) noexcept {
           return on_sync_out(body, e);
         } else if constexpr (std::is_same_v<T, interp::Homing>) {  // --- static-saw: G74
           return on_homing(body, e);
+        } else if constexpr (std::is_same_v<T, interp::MachineData>) {
+          return on_machine_data(body, e);
         } else {
           return event_error(kNotSupportedId, "not supported: this command in the channel", e);
         }

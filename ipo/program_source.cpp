@@ -5,6 +5,8 @@
 #include <type_traits>
 #include <variant>
 
+#include "ipo/machine_data.hpp"
+
 namespace ncsim::ipo {
 namespace {
 
@@ -284,6 +286,9 @@ bool ProgramSource::pull(Item& out) {
     if (const auto* in = std::get_if<interp::SyncIn>(&cmd->body))
       belt_conv_vel_ = in->conv_vel;  // --- trafo: the belt's share under #TRAFO ON
     if (is_channel_event(cmd->body)) {
+      if (const auto* md = std::get_if<interp::MachineData>(&cmd->body))
+        if (std::optional<std::string> why = machine_data_unsupported(*md, machine_))
+          fail(line, *why);
       note_indp(cmd->body);    // --- planner
       note_homing(cmd->body);  // --- static-saw: homed axes are answered at run time
       const bool stops = stops_path(cmd->body);
@@ -368,10 +373,9 @@ bool ProgramSource::pull(Item& out) {
                                std::is_same_v<T, interp::ProbeArm> ||
                                std::is_same_v<T, interp::SyncIn> ||
                                std::is_same_v<T, interp::SyncOut> ||
-                               std::is_same_v<T, interp::Homing>) {  // --- static-saw
+                               std::is_same_v<T, interp::Homing> ||
+                               std::is_same_v<T, interp::MachineData>) {  // --- static-saw
             // channel events: queued above (is_channel_event), never here
-          } else if constexpr (std::is_same_v<T, interp::MachineData>) {
-            fail(line, "#MACHINE DATA (parameters are fixed for a run for now)");
           } else if constexpr (std::is_same_v<T, interp::SetPosition>) {
             fail(line, "G92 set position");
           } else {
@@ -399,7 +403,8 @@ bool is_channel_event(const interp::CommandBody& body) noexcept {
          std::holds_alternative<interp::ProbeArm>(body) ||
          std::holds_alternative<interp::SyncIn>(body) ||
          std::holds_alternative<interp::SyncOut>(body) ||
-         std::holds_alternative<interp::Homing>(body);  // --- static-saw: G74
+         std::holds_alternative<interp::Homing>(body) ||  // --- static-saw: G74
+         std::holds_alternative<interp::MachineData>(body);
 }
 
 bool stops_path(const interp::CommandBody& body) noexcept {
@@ -408,7 +413,8 @@ bool stops_path(const interp::CommandBody& body) noexcept {
   return std::holds_alternative<interp::WaitIndp>(body) ||
          std::holds_alternative<interp::SyncIn>(body) ||
          std::holds_alternative<interp::SyncOut>(body) ||
-         std::holds_alternative<interp::Homing>(body);  // --- static-saw: G74
+         std::holds_alternative<interp::Homing>(body) ||     // --- static-saw: G74
+         std::holds_alternative<interp::MachineData>(body);  // the path stops (§5.10)
 }
 
 }  // namespace ncsim::ipo

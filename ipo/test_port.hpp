@@ -36,6 +36,11 @@ class FakePort final : public ncsim::conveyor::Port {
     return l;
   }
   void set_reduced_filter(bool) noexcept override {}
+  bool set_axis_params(const ncsim::machines::ConveyorAxisParams& params) noexcept override {
+    params_ = params;
+    params_at_ = steps_;
+    return true;
+  }
   const std::optional<ncsim::conveyor::PortError>& error() const noexcept override {
     return error_;
   }
@@ -52,6 +57,8 @@ class FakePort final : public ncsim::conveyor::Port {
   std::optional<long> v_change2_at_;  ///< from this step on the belt moves at v_new2_
   double v_new2_ = 0.0;               ///< [mm/s]
   ncsim::conveyor::BeltState state_;
+  std::optional<ncsim::machines::ConveyorAxisParams> params_;  ///< the last set_axis_params()
+  long params_at_ = -1;                                        ///< steps_ when it came
 };
 
 }  // namespace ncsim::ipo::test
