@@ -21,28 +21,12 @@ namespace {
 
 using namespace ncsim;
 
-struct Ran {
-  ipo::Status status = ipo::Status::finished;
-  std::vector<ipo::AxesState> axes;
-  std::optional<ipo::RunTimeError> error;
-  std::string source_error;
-  std::string source_message;
-};
+using Ran = ipo::test::ConveyorRun;
 
 // Runs `program` on `machine_name` (1 ms) with `port` attached (null: none).
 Ran run(const std::string& program, conveyor::Port* port,
         const std::string& machine_name = "laser_portal") {
-  const machines::Machine& m = interp::test::machine(machine_name);
-  ipo::test::ConveyorRig rig(program, m, ipo::channel_config(m, 0.001), port);
-  Ran r;
-  r.status = ipo::test::run_to_end(
-      rig.ch, [&] { r.axes.push_back(rig.ch.axes()); }, 200'000);
-  r.error = rig.ch.run_time_error();
-  if (const core::Diagnostic* d = rig.src.error()) {
-    r.source_error = d->id;
-    r.source_message = d->message;
-  }
-  return r;
+  return ipo::test::run_conveyor(program, interp::test::machine(machine_name), port);
 }
 
 }  // namespace

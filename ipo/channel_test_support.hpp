@@ -4,6 +4,7 @@
 // only ncsim_ipo).
 
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
@@ -87,5 +88,33 @@ struct ConveyorRig {
     ch.attach_conveyor(port);
   }
 };
+
+/// What a program run on a conveyor channel gave: the axes after every cycle that left the
+/// channel running, how it ended, and the adapter's (ProgramSource's) error if it had one.
+struct ConveyorRun {
+  Status status = Status::finished;
+  std::vector<AxesState> axes;
+  std::optional<RunTimeError> error;
+  std::string source_error;  ///< the adapter's error id ("" none)
+  std::string source_message;
+  std::uint32_t source_line = 0;
+};
+
+/// Runs `program` on machine `m` (1 ms cycles) with `port` attached (null: none), at most
+/// `guard` cycles.
+inline ConveyorRun run_conveyor(const std::string& program, const machines::Machine& m,
+                                conveyor::Port* port, int guard = 200'000) {
+  ConveyorRig rig(program, m, channel_config(m, 0.001), port);
+  ConveyorRun r;
+  r.status = run_to_end(
+      rig.ch, [&] { r.axes.push_back(rig.ch.axes()); }, guard);
+  r.error = rig.ch.run_time_error();
+  if (const core::Diagnostic* d = rig.src.error()) {
+    r.source_error = d->id;
+    r.source_message = d->message;
+    r.source_line = d->loc.line;
+  }
+  return r;
+}
 
 }  // namespace ncsim::ipo::test

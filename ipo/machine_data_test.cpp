@@ -21,29 +21,11 @@ namespace {
 
 using namespace ncsim;
 
-struct Ran {
-  ipo::Status status = ipo::Status::finished;
-  std::vector<ipo::AxesState> axes;
-  std::optional<ipo::RunTimeError> error;
-  std::string source_error;
-  std::string source_message;
-  std::uint32_t source_line = 0;
-};
+using Ran = ipo::test::ConveyorRun;
 
 // `program` on laser_portal (1 ms; S is its conveyor axis) with `port` attached (null: none).
 Ran run(const std::string& program, conveyor::Port* port) {
-  const machines::Machine& m = interp::test::machine("laser_portal");
-  ipo::test::ConveyorRig rig(program, m, ipo::channel_config(m, 0.001), port);
-  Ran r;
-  r.status = ipo::test::run_to_end(
-      rig.ch, [&] { r.axes.push_back(rig.ch.axes()); }, 100'000);
-  r.error = rig.ch.run_time_error();
-  if (const core::Diagnostic* d = rig.src.error()) {
-    r.source_error = d->id;
-    r.source_message = d->message;
-    r.source_line = d->loc.line;
-  }
-  return r;
+  return ipo::test::run_conveyor(program, interp::test::machine("laser_portal"), port, 100'000);
 }
 
 interp::MachineData setting(std::uint8_t axis, std::string_view id, std::string_view key,
