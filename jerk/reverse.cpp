@@ -15,9 +15,11 @@
 // into the kink (L / |p_out| -> infinity as the out part vanishes): one hump (seen on a
 // 4000-level grid in every one of 10,864 seeded draws with u_zero > 0). So the kink splits
 // (0, V] into two pieces with one root each: [u_zero, V] when the kink is feasible, else
-// (0, u_zero). The root is found by Newton steps with the closed-form slope of s(L) where it
-// exists, else regula falsi (jerk/root.hpp). Session 22's search bracketed (0, V] whole and
-// could land on the lower interval of feasible levels (up to 39 % slower; jerk/reverse_test.cpp).
+// (0, u_zero). The root is found by steps to the root of the local quadratic model with the
+// closed-form slope and curvature of s(L) where they exist (Newton where only the slope does),
+// else regula falsi (jerk/root.hpp, solve_with_curve). Session 22's search bracketed (0, V] whole
+// and could land on the lower interval of feasible levels (up to 40 % slower;
+// jerk/reverse_test.cpp).
 
 #include <algorithm>
 #include <cmath>
@@ -73,25 +75,36 @@ double reach(const State& start, const Reversal& r, double g) noexcept {
   return g * (end_state(mid, r.back).p - start.p);
 }
 
-// d s / d L [mm per mm/s] (NaN where unknown). A piece from a fixed start ending at velocity
-// vm with signed peak a_p covers a distance whose derivative in vm is vm / a_p + |a_p| / (2J)
-// (jerk/move.cpp, level_slope): the out part ends at L; the back part read backward in time
-// ends at -L with the peak of its piece from -L (its crossing, else its one ramp). Crossings
-// are fixed unless their a_zero is sqrt(2 J L) (then they move with L: NaN).
-double reach_slope(const Reversal& r, double level, double j) noexcept {
+// The slope and curvature of h(L) = D - s(L) [s] and [s^2/mm] (NaN where unknown). A
+// piece from a fixed start ending at velocity vm with signed peak a_p covers a distance whose
+// derivative in vm is T(a_p) = vm / a_p + |a_p| / (2J) (jerk/move.cpp, level_slope): the out
+// part ends at L; the back part read backward in time ends at -L with the peak of its piece
+// from -L (its crossing, else its one ramp). So h' = T(p_out) + T(p_back). Crossings are fixed
+// unless their a_zero is sqrt(2 J L) (then they move with L: NaN). The curvature by the same
+// rule as level_slope: a peak holding at its limit stays, one without a hold has
+// p^2 = J |L - v_other| + const (dp/dL = J / (2|p|)), so dT/dL = 1/p + p' (sgn(p)/(2J) - L/p^2).
+void reach_slope(const Reversal& r, double level, double j, double& slope, double& curve) noexcept {
   const double nan = std::numeric_limits<double>::quiet_NaN();
+  slope = curve = nan;
   const double a_level = (1.0 - 1e-9) * std::sqrt(2.0 * j * level);
   const double p_out = r.out.first.a_peak;
-  if (p_out == 0.0 || (r.out.cross.time() > 0.0 && !(r.out.cross.a_zero < a_level))) return nan;
+  if (p_out == 0.0 || (r.out.cross.time() > 0.0 && !(r.out.cross.a_zero < a_level))) return;
   double p_back = std::abs(r.back.first.a_peak);
+  bool hold_back = r.back.first.duration[1] > 0.0;
   if (r.back.cross.time() > 0.0) {
-    if (!(r.back.cross.a_zero < a_level)) return nan;
+    if (!(r.back.cross.a_zero < a_level)) return;
     p_back = r.back.cross.a_peak;
+    hold_back = r.back.cross.duration[1] > 0.0;
   }
-  if (!(p_back > 0.0)) return nan;
-  const double d_out = level / p_out + std::abs(p_out) / (2.0 * j);
-  const double d_back = -(level / p_back + p_back / (2.0 * j));
-  return -d_out + d_back;
+  if (!(p_back > 0.0)) return;
+  const double a_out = std::abs(p_out);
+  slope = level / p_out + a_out / (2.0 * j) + level / p_back + p_back / (2.0 * j);
+  const auto curve_of = [&](double p, double ap, bool hold) {
+    const double dp = hold ? 0.0 : j / (2.0 * ap);
+    return 1.0 / p + dp * ((p > 0.0 ? 0.5 : -0.5) / j - level / (p * p));
+  };
+  curve =
+      curve_of(p_out, a_out, r.out.first.duration[1] > 0.0) + curve_of(p_back, p_back, hold_back);
 }
 
 }  // namespace
@@ -113,15 +126,16 @@ Status reversal_move(const State& start, double p1, double v1, const Limits& lim
   double h_last = 0.0;
   const detail::CrossingStart cs_out =
       detail::crossing_start(-g * start.v, -g * start.a, lim, true);
-  const auto h = [&](double level, double& slope) {
+  const auto h = [&](double level, double& slope, double& curve) {
     r = make(start, g, level, v1, lim, &cs_out);
     last = level;
-    slope = -reach_slope(r, level, lim.j_max);
+    reach_slope(r, level, lim.j_max, slope, curve);
     h_last = d - reach(start, r, g);
     return h_last;
   };
   double slope = 0.0;
-  const double h_top = h(lim.v_max, slope);
+  double curve = 0.0;
+  const double h_top = h(lim.v_max, slope, curve);
   double level = lim.v_max;
   if (h_top > 0.0) {
     // The bracket of the highest feasible level: h rises on [max(u_zero, 0), V] and has one
@@ -130,35 +144,40 @@ Status reversal_move(const State& start, double p1, double v1, const Limits& lim
     double hi = lim.v_max;
     double h_hi = h_top;
     double s_hi = slope;
+    double c_hi = curve;
     double lo = 0.0;
     double h_lo = 0.0;
     double s_lo = 0.0;
+    double c_lo = 0.0;
     bool lo_known = false;
     const double u0 = -g * start.v;
     const double b0 = -g * start.a;
     const double u_zero = u0 + b0 * std::abs(b0) / (2.0 * lim.j_max);
     if (u_zero > 0.0 && u_zero < lim.v_max) {
-      const double h_kink = h(u_zero, slope);
+      const double h_kink = h(u_zero, slope, curve);
       if (h_kink <= 0.0) {
         lo = u_zero;
         h_lo = h_kink;
         s_lo = slope;
+        c_lo = curve;
         lo_known = true;
       } else {
         hi = u_zero;
         h_hi = h_kink;
         s_hi = slope;
+        c_hi = curve;
       }
     }
     if (!lo_known) {
-      h_lo = h(0.0, slope);
+      h_lo = h(0.0, slope, curve);
       s_lo = slope;
+      c_lo = curve;
       if (!(h_lo < 0.0)) return Status::not_supported;  // no detour needed (or none helps)
     }
     const double tol = 8.0 * kEps * std::abs(d);
-    level = detail::solve_with_slope(lo, hi, h_lo, h_hi, s_lo, s_hi, tol, h);
+    level = detail::solve_with_curve(lo, hi, h_lo, h_hi, s_lo, s_hi, c_lo, c_hi, tol, h);
     if (!(level > 0.0)) return Status::not_supported;
-    if (last != level) h(level, slope);
+    if (last != level) h(level, slope, curve);
   }
   out = r;
   const double h_level = h_last;
