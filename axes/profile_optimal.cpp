@@ -281,9 +281,37 @@ double next_feasible_duration(const MotionState& start, const PositionTarget& ta
   if (t_single > duration) next = t_single;
   jerk::Reversal rev;
   if (target.v != 0.0 &&
-      jerk::reversal_move(start, target.p, target.v, dyn, rev) == jerk::Status::ok &&
-      rev.time() > duration) {
-    next = std::min(next, rev.time());
+      jerk::reversal_move(start, target.p, target.v, dyn, rev) == jerk::Status::ok) {
+    if (rev.time() > duration) {
+      next = std::min(next, rev.time());
+    } else if (jerk::reversal_of_duration(start, target.p, target.v, duration, dyn, rev) !=
+               jerk::Status::ok) {
+      // A gap inside the turns: the levels below the hump of the turn's displacement
+      // (jerk/reverse.cpp) start at a slower time, and every longer duration has a turn. Found
+      // by doubling a step from the duration until a turn of that duration exists, then
+      // bisection of that one boundary.
+      const auto turns = [&](double t) {
+        return jerk::reversal_of_duration(start, target.p, target.v, t, dyn, rev) ==
+               jerk::Status::ok;
+      };
+      double t_no = duration;
+      double step = duration * 0x1p-20;
+      double t_yes = -1.0;
+      for (int k = 0; k < 80; ++k, step *= 2.0) {
+        if (turns(duration + step)) {
+          t_yes = duration + step;
+          break;
+        }
+        t_no = duration + step;
+      }
+      for (int i = 0; t_yes > 0.0 && i < 200 &&
+                      t_yes - t_no > 4.0 * std::numeric_limits<double>::epsilon() * t_yes;
+           ++i) {
+        const double mid = 0.5 * (t_no + t_yes);
+        (turns(mid) ? t_yes : t_no) = mid;
+      }
+      if (t_yes > 0.0) next = std::min(next, t_yes);
+    }
   }
   return std::isfinite(next) ? next : -1.0;
 }

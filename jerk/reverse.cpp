@@ -4,11 +4,22 @@
 // With g = sign(v1): the first part (frame -g) changes the start to the level L > 0 in the
 // direction -g (through v = 0 with the path limits where the start moves the other way),
 // cruises there, and the second part (frame g) takes (-L, 0) through v = 0 to (v1, 0). The
-// displacement toward g without cruise, s(L), falls as L grows (the detour grows); the
-// fastest turn is at the highest level whose displacement still reaches the target,
-// s(L) = g (p1 - p0), found on (0, V] by Newton steps with the closed-form slope of s(L) where
-// it exists, else regula falsi (jerk/root.hpp); a cruise at V when s(V) is still beyond the
-// target.
+// displacement toward g without cruise is s(L); the fastest turn is at the highest level whose
+// displacement still reaches the target, s(L) >= g (p1 - p0), the rest cruised at L (a cruise
+// at V when s(V) is still beyond the target).
+// s(L) is not monotone: where the out frame's start already moves away faster than L (L below
+// u_zero = u0 + b0 |b0| / (2J), the out start's velocity once its acceleration is released), the
+// out part brakes to L and the back part brakes from L, and the two nearly cancel. Above u_zero
+// s falls with L (both parts speed up into the detour: every term of its slope has one sign);
+// on (0, u_zero) h(L) = D - s(L) rises from L = 0 (slope (|p_out| + p_back) / (2J)) and falls
+// into the kink (L / |p_out| -> infinity as the out part vanishes): one hump (seen on a
+// 4000-level grid in every one of 10,864 seeded draws with u_zero > 0). So the kink splits
+// (0, V] into two pieces with one root each: [u_zero, V] when the kink is feasible, else
+// (0, u_zero). The root is found by steps to the root of the local quadratic model with the
+// closed-form slope and curvature of s(L) where they exist (Newton where only the slope does),
+// else regula falsi (jerk/root.hpp, solve_with_curve). Session 22's search bracketed (0, V] whole
+// and could land on the lower interval of feasible levels (up to 40 % slower;
+// jerk/reverse_test.cpp).
 
 #include <algorithm>
 #include <cmath>
@@ -64,25 +75,36 @@ double reach(const State& start, const Reversal& r, double g) noexcept {
   return g * (end_state(mid, r.back).p - start.p);
 }
 
-// d s / d L [mm per mm/s] (NaN where unknown). A piece from a fixed start ending at velocity
-// vm with signed peak a_p covers a distance whose derivative in vm is vm / a_p + |a_p| / (2J)
-// (jerk/move.cpp, level_slope): the out part ends at L; the back part read backward in time
-// ends at -L with the peak of its piece from -L (its crossing, else its one ramp). Crossings
-// are fixed unless their a_zero is sqrt(2 J L) (then they move with L: NaN).
-double reach_slope(const Reversal& r, double level, double j) noexcept {
+// The slope and curvature of h(L) = D - s(L) [s] and [s^2/mm] (NaN where unknown). A
+// piece from a fixed start ending at velocity vm with signed peak a_p covers a distance whose
+// derivative in vm is T(a_p) = vm / a_p + |a_p| / (2J) (jerk/move.cpp, level_slope): the out
+// part ends at L; the back part read backward in time ends at -L with the peak of its piece
+// from -L (its crossing, else its one ramp). So h' = T(p_out) + T(p_back). Crossings are fixed
+// unless their a_zero is sqrt(2 J L) (then they move with L: NaN). The curvature by the same
+// rule as level_slope: a peak holding at its limit stays, one without a hold has
+// p^2 = J |L - v_other| + const (dp/dL = J / (2|p|)), so dT/dL = 1/p + p' (sgn(p)/(2J) - L/p^2).
+void reach_slope(const Reversal& r, double level, double j, double& slope, double& curve) noexcept {
   const double nan = std::numeric_limits<double>::quiet_NaN();
+  slope = curve = nan;
   const double a_level = (1.0 - 1e-9) * std::sqrt(2.0 * j * level);
   const double p_out = r.out.first.a_peak;
-  if (p_out == 0.0 || (r.out.cross.time() > 0.0 && !(r.out.cross.a_zero < a_level))) return nan;
+  if (p_out == 0.0 || (r.out.cross.time() > 0.0 && !(r.out.cross.a_zero < a_level))) return;
   double p_back = std::abs(r.back.first.a_peak);
+  bool hold_back = r.back.first.duration[1] > 0.0;
   if (r.back.cross.time() > 0.0) {
-    if (!(r.back.cross.a_zero < a_level)) return nan;
+    if (!(r.back.cross.a_zero < a_level)) return;
     p_back = r.back.cross.a_peak;
+    hold_back = r.back.cross.duration[1] > 0.0;
   }
-  if (!(p_back > 0.0)) return nan;
-  const double d_out = level / p_out + std::abs(p_out) / (2.0 * j);
-  const double d_back = -(level / p_back + p_back / (2.0 * j));
-  return -d_out + d_back;
+  if (!(p_back > 0.0)) return;
+  const double a_out = std::abs(p_out);
+  slope = level / p_out + a_out / (2.0 * j) + level / p_back + p_back / (2.0 * j);
+  const auto curve_of = [&](double p, double ap, bool hold) {
+    const double dp = hold ? 0.0 : j / (2.0 * ap);
+    return 1.0 / p + dp * ((p > 0.0 ? 0.5 : -0.5) / j - level / (p * p));
+  };
+  curve =
+      curve_of(p_out, a_out, r.out.first.duration[1] > 0.0) + curve_of(p_back, p_back, hold_back);
 }
 
 }  // namespace
@@ -97,31 +119,65 @@ Status reversal_move(const State& start, double p1, double v1, const Limits& lim
   if (v1 == 0.0) return Status::not_supported;
   const double g = v1 > 0.0 ? 1.0 : -1.0;
   const double d = g * (p1 - start.p);
-  // h(L) = d - s(L) rises with L; feasible (the turn still reaches the target) is h <= 0.
+  // h(L) = d - s(L); feasible (the turn still reaches the target) is h <= 0.
   // The turn and h of the last level evaluated are kept: the solver usually returns it.
   Reversal r;
   double last = -1.0;
   double h_last = 0.0;
   const detail::CrossingStart cs_out =
       detail::crossing_start(-g * start.v, -g * start.a, lim, true);
-  const auto h = [&](double level, double& slope) {
+  const auto h = [&](double level, double& slope, double& curve) {
     r = make(start, g, level, v1, lim, &cs_out);
     last = level;
-    slope = -reach_slope(r, level, lim.j_max);
+    reach_slope(r, level, lim.j_max, slope, curve);
     h_last = d - reach(start, r, g);
     return h_last;
   };
   double slope = 0.0;
-  const double h_top = h(lim.v_max, slope);
+  double curve = 0.0;
+  const double h_top = h(lim.v_max, slope, curve);
   double level = lim.v_max;
   if (h_top > 0.0) {
-    const double s_top = slope;
-    const double h_zero = h(0.0, slope);
-    if (!(h_zero < 0.0)) return Status::not_supported;  // no detour needed (or none helps)
+    // The bracket of the highest feasible level: h rises on [max(u_zero, 0), V] and has one
+    // hump on (0, u_zero) (the file's note), so the piece above a feasible kink, else the
+    // piece below it.
+    double hi = lim.v_max;
+    double h_hi = h_top;
+    double s_hi = slope;
+    double c_hi = curve;
+    double lo = 0.0;
+    double h_lo = 0.0;
+    double s_lo = 0.0;
+    double c_lo = 0.0;
+    bool lo_known = false;
+    const double u0 = -g * start.v;
+    const double b0 = -g * start.a;
+    const double u_zero = u0 + b0 * std::abs(b0) / (2.0 * lim.j_max);
+    if (u_zero > 0.0 && u_zero < lim.v_max) {
+      const double h_kink = h(u_zero, slope, curve);
+      if (h_kink <= 0.0) {
+        lo = u_zero;
+        h_lo = h_kink;
+        s_lo = slope;
+        c_lo = curve;
+        lo_known = true;
+      } else {
+        hi = u_zero;
+        h_hi = h_kink;
+        s_hi = slope;
+        c_hi = curve;
+      }
+    }
+    if (!lo_known) {
+      h_lo = h(0.0, slope, curve);
+      s_lo = slope;
+      c_lo = curve;
+      if (!(h_lo < 0.0)) return Status::not_supported;  // no detour needed (or none helps)
+    }
     const double tol = 8.0 * kEps * std::abs(d);
-    level = detail::solve_with_slope(0.0, lim.v_max, h_zero, h_top, slope, s_top, tol, h);
+    level = detail::solve_with_curve(lo, hi, h_lo, h_hi, s_lo, s_hi, c_lo, c_hi, tol, h);
     if (!(level > 0.0)) return Status::not_supported;
-    if (last != level) h(level, slope);
+    if (last != level) h(level, slope, curve);
   }
   out = r;
   const double h_level = h_last;
@@ -146,40 +202,107 @@ Status reversal_of_duration(const State& start, double p1, double v1, double dur
     out = fastest;
     return Status::ok;
   }
-  // Below the fastest turning level L_top every level still reaches the target (the detour
-  // shrinks as L falls); the rest of the way is cruised backward at L, so
-  // T(L) = ramps(L) + rest(L) / L, continuous, T(L_top) = t_min, unbounded as L -> 0 where the
-  // stop-and-go alone overshoots the target (rest(0) > 0). A root of T(L) = duration lies
-  // between L_top and the first halving of L that is too slow.
+  // The rest of the way is cruised backward at L, so T(L) = ramps(L) + rest(L) / L on the
+  // feasible levels (rest >= 0), T(L_top) = t_min, unbounded as L -> 0 where the stop-and-go
+  // alone overshoots the target (rest(0) > 0). The feasible levels below L_top are one interval
+  // [L_b, L_top] down to the hump of h below the kink (reversal_move), and (0, L_a] below the
+  // hump when the hump rises above 0 (a hole (L_a, L_b)); T is continuous on each. The level
+  // is halved from L_top until it is too slow (a root of T(L) = duration lies between) or falls
+  // into the hole; a root that lands in the hole shows one as well. With a hole: within
+  // [L_b, L_top] when T(L_b) >= duration, else within (0, L_a] when T(L_a) <= duration, else
+  // a gap (not_supported).
   const double g = v1 > 0.0 ? 1.0 : -1.0;
   const double d = g * (p1 - start.p);
   const double tol_rest = 8.0 * kEps * std::abs(d);
   Reversal r;
-  double last = -1.0;
+  bool feasible = false;  // of the last level evaluated
   const auto timed = [&](double level, double& slope) {
     r = make(start, g, level, v1, lim);
-    last = level;
     slope = std::numeric_limits<double>::quiet_NaN();
     const double rest = reach(start, r, g) - d;
-    if (rest < -tol_rest) return -duration;  // beyond the fastest level: infeasible (fast side)
+    feasible = !(rest < -tol_rest);
+    if (!feasible) return -duration;  // infeasible: counted on the fast side
     r.out.t_cruise = rest > tol_rest ? rest / level : 0.0;
     return r.time() - duration;
   };
-  const double l_top = fastest.out.v_level;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
   double slope = 0.0;
+  // The feasible end of the boundary between a feasible level `ok` and an infeasible `bad`.
+  const auto boundary = [&](double ok, double bad) {
+    for (int i = 0; i < 200 && std::abs(ok - bad) > kEps * std::max(ok, bad); ++i) {
+      const double mid = 0.5 * (ok + bad);
+      timed(mid, slope);
+      (feasible ? ok : bad) = mid;
+    }
+    return ok;
+  };
+  // A root of T(L) = duration between a feasible level `fast` (T <= duration) and a feasible
+  // `slow` (T > duration), checked: false when it lands in a hole (`hole` receives it).
+  const auto solve = [&](double fast, double t_fast, double slow, double t_slow, double& hole) {
+    // solve_with_slope wants g rising from x_neg to x_pos in value only (either order).
+    const double level = detail::solve_with_slope(fast, slow, t_fast, t_slow, nan, nan,
+                                                  8.0 * kEps * duration, timed);
+    const double t = timed(level, slope);
+    hole = level;
+    return feasible && std::abs(t) <= 1e-12 * duration;
+  };
+  const double l_top = fastest.out.v_level;
+  double l_hi = l_top;  // the lowest feasible level seen that is fast enough
+  double t_hi = t_min - duration;
   double l_low = l_top;
   double t_low = 0.0;
+  double hole = -1.0;
+  bool low_known = false;  // l_low: a feasible level below the hole, too slow
   for (int i = 0; i < 200; ++i) {
     l_low *= 0.5;
     t_low = timed(l_low, slope);
+    if (!feasible) {
+      hole = l_low;
+      break;
+    }
     if (t_low > 0.0 || !(l_low > 0.0)) break;
+    l_hi = l_low;
+    t_hi = t_low;
   }
-  if (!(t_low > 0.0)) return Status::not_supported;  // stop-and-go fills the way: no slower turn
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  // solve_with_slope wants g rising from x_neg to x_pos in value only (either order).
-  const double level = detail::solve_with_slope(l_top, l_low, t_min - duration, t_low, nan, nan,
-                                                8.0 * kEps * duration, timed);
-  if (last != level) timed(level, slope);
+  if (hole < 0.0) {
+    if (!(t_low > 0.0)) return Status::not_supported;  // stop-and-go fills the way: no slower
+    if (solve(l_hi, t_hi, l_low, t_low, hole)) {
+      out = r;
+      return Status::ok;
+    }
+    low_known = true;
+  }
+  // A hole (l_a, l_b) between l_hi and l_low.
+  const double l_b = boundary(l_hi, hole);
+  const double t_b = timed(l_b, slope);
+  if (t_b > 0.0) {
+    double miss = 0.0;
+    if (!solve(l_hi, t_hi, l_b, t_b, miss)) return Status::not_supported;
+    out = r;
+    return Status::ok;
+  }
+  if (!low_known) {  // the lower interval (0, l_a]: from a feasible 0, halved until too slow
+    timed(0.0, slope);
+    if (!feasible) return Status::not_supported;
+    const double l_a = boundary(0.0, hole);
+    l_hi = l_a;
+    t_hi = timed(l_a, slope);
+    if (t_hi > 0.0) return Status::not_supported;  // the duration lies in the gap
+    l_low = l_a;
+    for (int i = 0; i < 200; ++i) {
+      l_low *= 0.5;
+      t_low = timed(l_low, slope);
+      if (t_low > 0.0 || !(l_low > 0.0)) break;
+    }
+    if (!(t_low > 0.0)) return Status::not_supported;
+  } else {
+    const double l_a = boundary(l_low, hole);
+    l_hi = l_a;
+    t_hi = timed(l_a, slope);
+    if (t_hi > 0.0) return Status::not_supported;  // the duration lies in the gap
+  }
+  double miss = 0.0;
+  if (!solve(l_hi, t_hi, l_low, t_low, miss)) return Status::not_supported;
   out = r;
   return Status::ok;
 }

@@ -110,6 +110,37 @@ Derivs eval(const std::array<AxisVec, 6>& p, std::size_t n, double t) {
   return eval_with(hodographs(p, n), n, basis<5>(t), basis<4>(t), basis<3>(t), basis<2>(t));
 }
 
+/// eval() at an end of the curve (t = 0 or t = 1), where every Bernstein value is 0 but one,
+/// which is exactly 1: B and its derivatives are the first (last) control point of each
+/// hodograph. The same differences as hodographs() and the same sums as eval_with() (from 0.0,
+/// every other term +-0), so the same values to the bit; the joints of every blend ask here.
+Derivs eval_end(const std::array<AxisVec, 6>& p, std::size_t n, bool at_end) {
+  Derivs d;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double e0 = p[1][i] - p[0][i];
+    const double e1 = p[2][i] - p[1][i];
+    const double e2 = p[3][i] - p[2][i];
+    const double e3 = p[4][i] - p[3][i];
+    const double e4 = p[5][i] - p[4][i];
+    const double f0 = e1 - e0;
+    const double f1 = e2 - e1;
+    const double f2 = e3 - e2;
+    const double f3 = e4 - e3;
+    if (!at_end) {
+      d.b0[i] = 0.0 + p[0][i];
+      d.b1[i] = 0.0 + e0 * 5.0;
+      d.b2[i] = 0.0 + f0 * 20.0;
+      d.b3[i] = 0.0 + (f1 - f0) * 60.0;
+    } else {
+      d.b0[i] = 0.0 + p[5][i];
+      d.b1[i] = 0.0 + e4 * 5.0;
+      d.b2[i] = 0.0 + f3 * 20.0;
+      d.b3[i] = 0.0 + (f3 - f2) * 60.0;
+    }
+  }
+  return d;
+}
+
 /// Degree-8 Bernstein values at the 5 K Gauss nodes of a K-interval arc-length table (|B'|^2
 /// is a degree-8 polynomial), by degree index first (b8[j][node]): the table's loop runs over
 /// the nodes innermost.
@@ -219,39 +250,58 @@ DerivativeBounds blend_bounds(const Hodographs& h, std::size_t n, AxisMask metri
     }
   }
   // Per sample: 1 / sg and the factors of the second and third derivatives (the general loop's
-  // i2, i3, c1, c2, c3); a sample with sg = 0 contributes nothing (all its factors 0).
-  std::array<double, kN> inv{}, i2{}, i3{}, c1{}, c2{}, c3{};
+  // i2, i3, c1, c2, c3); a sample with sg = 0 contributes nothing (all its factors 0). Without
+  // a branch, so that the loops vectorise (sqrt without errno: CMakeLists.txt): a dead sample
+  // is computed with sg = 1 (b12 = b22 = b13 = 0 there: finite) and its factors multiplied by
+  // 0; a live one by 1, exactly its values. Three loops: one with the selects alone keeps the
+  // compiler from turning them back into branches.
+  std::array<double, kN> sg, live;  // every entry written below (no zeroing)
+  for (std::size_t k = 0; k < kN; ++k)
+    sg[k] = std::sqrt(b11[k]);
   for (std::size_t k = 0; k < kN; ++k) {
-    const double sg = std::sqrt(b11[k]);
-    if (sg <= 0.0) continue;
-    const double iv = 1.0 / sg;
+    live[k] = sg[k] > 0.0 ? 1.0 : 0.0;
+    sg[k] = sg[k] > 0.0 ? sg[k] : 1.0;
+  }
+  std::array<double, kN> inv, i2, i3, c1, c2, c3;
+  for (std::size_t k = 0; k < kN; ++k) {
+    const double iv = 1.0 / sg[k];
     const double sg1 = b12[k] * iv;
     const double sg2 = (b22[k] + b13[k] - sg1 * sg1) * iv;
     const double q2 = iv * iv;
     const double q3 = q2 * iv;
     const double q4 = q3 * iv;
-    inv[k] = iv;
-    i2[k] = q2;
-    i3[k] = q3;
-    c1[k] = sg1 * q3;
-    c2[k] = 3.0 * sg1 * q4;
-    c3[k] = 3.0 * sg1 * sg1 * q4 * iv - sg2 * q4;
+    const double m = live[k];
+    inv[k] = iv * m;
+    i2[k] = q2 * m;
+    i3[k] = q3 * m;
+    c1[k] = sg1 * q3 * m;
+    c2[k] = 3.0 * sg1 * q4 * m;
+    c3[k] = (3.0 * sg1 * sg1 * q4 * iv - sg2 * q4) * m;
   }
+  // The maxima over the samples in kLanes interleaved running maxima, then over the lanes: the
+  // largest of the same |values| (the maximum of a set of numbers >= 0 does not depend on the
+  // order), with the lanes independent so that the loop vectorises.
+  constexpr std::size_t kLanes = 2;
+  static_assert(kN % kLanes == 0);
   DerivativeBounds b;  // zero: the bounds of the constant axes
   for (std::size_t i = 0; i < n; ++i) {
     if (!has(moving, i)) continue;
     const std::array<double, kN>& a1 = v1[i];
     const std::array<double, kN>& a2 = v2[i];
     const std::array<double, kN>& a3 = v3[i];
-    double d1 = 0.0, d2 = 0.0, d3 = 0.0;
-    for (std::size_t k = 0; k < kN; ++k) {
-      d1 = std::max(d1, std::abs(a1[k] * inv[k]));
-      d2 = std::max(d2, std::abs(a2[k] * i2[k] - a1[k] * c1[k]));
-      d3 = std::max(d3, std::abs(a3[k] * i3[k] - a2[k] * c2[k] + a1[k] * c3[k]));
+    std::array<double, kLanes> m1{}, m2{}, m3{};
+    for (std::size_t k = 0; k < kN; k += kLanes)
+      for (std::size_t l = 0; l < kLanes; ++l) {
+        const std::size_t q = k + l;
+        m1[l] = std::max(m1[l], std::abs(a1[q] * inv[q]));
+        m2[l] = std::max(m2[l], std::abs(a2[q] * i2[q] - a1[q] * c1[q]));
+        m3[l] = std::max(m3[l], std::abs(a3[q] * i3[q] - a2[q] * c2[q] + a1[q] * c3[q]));
+      }
+    for (std::size_t l = 0; l < kLanes; ++l) {
+      b.d1[i] = std::max(b.d1[i], m1[l]);
+      b.d2[i] = std::max(b.d2[i], m2[l]);
+      b.d3[i] = std::max(b.d3[i], m3[l]);
     }
-    b.d1[i] = d1;
-    b.d2[i] = d2;
-    b.d3[i] = d3;
   }
   return b;
 }
@@ -433,6 +483,7 @@ double Segment::bezier_t(const BezierGeom& g, double s) const noexcept {
 }
 
 PathPoint Segment::bezier_at_t(const BezierGeom& g, double t) const noexcept {
+  if (t == 0.0 || t == 1.0) return arc_length_derivatives(eval_end(g.p, n_, t == 1.0), n_, metric_);
   return arc_length_derivatives(eval(g.p, n_, t), n_, metric_);
 }
 

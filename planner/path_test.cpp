@@ -195,3 +195,36 @@ TEST_CASE("derivatives agree with finite differences on random arcs, helices and
     CHECK(norm3(bez.at(bez.length() * 0.21).d1) == doctest::Approx(1.0));
   }
 }
+
+TEST_CASE("a Bezier's end points and derivatives are the limits of its inner points") {
+  // The ends take a shortcut (the hodographs' first and last control points, path_bezier.cpp
+  // eval_end); it must be the same curve: x(0) = P0, x'(0) along P1 - P0, and the point and
+  // derivatives continuous into the curve at both ends.
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(-10.0, 10.0);
+  for (int n = 0; n < 40; ++n) {
+    std::array<AxisVec, 6> p{};
+    for (auto& q : p)
+      q = vec(u(rng), u(rng), u(rng));
+    const Segment bez = Segment::bezier(3, 0b111, p);
+    const double len = bez.length();
+    const PathPoint a = bez.at(0.0);
+    const PathPoint b = bez.at(len);
+    const double l01 = norm3(vec(p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]));
+    const double l45 = norm3(vec(p[5][0] - p[4][0], p[5][1] - p[4][1], p[5][2] - p[4][2]));
+    const PathPoint a_in = bez.at(1e-7 * len);
+    const PathPoint b_in = bez.at(len * (1 - 1e-7));
+    for (std::size_t i = 0; i < 3; ++i) {
+      CHECK(a.x[i] == p[0][i]);
+      CHECK(b.x[i] == p[5][i]);
+      CHECK(a.d1[i] == doctest::Approx((p[1][i] - p[0][i]) / l01).epsilon(1e-12));
+      CHECK(b.d1[i] == doctest::Approx((p[5][i] - p[4][i]) / l45).epsilon(1e-12));
+      CHECK(a_in.d1[i] == doctest::Approx(a.d1[i]).epsilon(1e-4).scale(1.0));
+      CHECK(b_in.d1[i] == doctest::Approx(b.d1[i]).epsilon(1e-4).scale(1.0));
+      CHECK(a_in.d2[i] == doctest::Approx(a.d2[i]).epsilon(1e-3).scale(1.0));
+      CHECK(b_in.d2[i] == doctest::Approx(b.d2[i]).epsilon(1e-3).scale(1.0));
+      CHECK(a_in.d3[i] == doctest::Approx(a.d3[i]).epsilon(1e-2).scale(1.0));
+      CHECK(b_in.d3[i] == doctest::Approx(b.d3[i]).epsilon(1e-2).scale(1.0));
+    }
+  }
+}
