@@ -22,6 +22,8 @@ using test::axis;
 using test::vec;
 namespace jerk = ncsim::jerk;
 
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
 Move line(AxisVec a, AxisVec b, double feed) {
   Move m;
   m.start = a;
@@ -120,12 +122,18 @@ TEST_CASE("the plan passes a 90 degree corner at the VELOJUMP velocity") {
 }
 
 TEST_CASE("the window end is a stop: a short window slows a long chain of short blocks") {
-  const std::array<AxisLimits, 3> ax = {axis(500, 1000, 1e5), axis(500, 1000, 1e5),
-                                        axis(500, 1000, 1e5)};
+  std::array<AxisLimits, 3> ax = {axis(500, 1000, 1e5), axis(500, 1000, 1e5), axis(500, 1000, 1e5)};
+  // A zig-zag of 0.5 mm blocks with 10 degree knees keeps the blocks apart (no chains): such a
+  // knee does not carry the acceleration (corner.hpp), so every joint has a = 0; C0 = 100 lets
+  // VELOJUMP pass it at F. (Feeds 1 % apart no longer keep collinear blocks apart: they chain
+  // at the smaller cap, docs/planner.md "Chains".)
+  const double dx = 0.5 * std::cos(5.0 * kDeg);
+  const double dy = 0.5 * std::sin(5.0 * kDeg);
+  for (auto& a : ax)
+    a.c0 = 100.0;
   std::vector<Move> moves;
-  // Alternating feeds keep the blocks apart (no chains): every joint has a = 0.
   for (int k = 0; k < 400; ++k)
-    moves.push_back(line(vec(0.5 * k, 0), vec(0.5 * (k + 1), 0), k % 2 == 0 ? 200.0 : 199.0));
+    moves.push_back(line(vec(dx * k, dy * (k % 2)), vec(dx * (k + 1), dy * ((k + 1) % 2)), 200.0));
   const auto wide = plan(moves, ax, 190);
   const auto narrow = plan(moves, ax, 10);
   REQUIRE(narrow.size() == 400);
@@ -155,6 +163,41 @@ TEST_CASE("collinear blocks at one feed are chained: the acceleration carries th
     v = std::max(v, peak_velocity(p));
   CHECK(v == doctest::Approx(200.0));
   CHECK(planned.back().v_exit == 0.0);
+}
+
+TEST_CASE("two caps joined: short blocks with caps 0.02 % apart chain at the smaller cap") {
+  // 40 blocks of 0.5 mm at F 1000, in turn along X and 1 degree off it (hand-checked case,
+  // issue 12): the X axis caps them at 100 and 100 / cos(1 deg) = 100.015 mm/s, and the 1 degree
+  // knees carry the acceleration (C0 = 10). Before: 40 entries with a = 0 at every joint (each
+  // 0.5 mm block gains only a few mm/s of the ramps; 0.43248 s). Now one chain at 100 mm/s, planned
+  // as one piece: the closed form of a ramp-cruise-ramp with A reached, T = L / v + v / A + A / J.
+  std::array<AxisLimits, 3> ax = {axis(100, 1000, 1e5), axis(100, 1000, 1e5), axis(100, 1000, 1e5)};
+  for (auto& a : ax)
+    a.c0 = 10.0;
+  std::vector<Move> moves;
+  AxisVec p = vec(0, 0);
+  for (int k = 0; k < 40; ++k) {
+    const double dir = k % 2 == 0 ? 0.0 : kDeg;
+    const AxisVec q = vec(p[0] + 0.5 * std::cos(dir), p[1] + 0.5 * std::sin(dir));
+    moves.push_back(line(p, q, 1000.0));
+    p = q;
+  }
+  const auto planned = plan(moves, ax, 120);
+  REQUIRE(planned.size() == 1);
+  const PlannedSegment& ps = planned[0];
+  CHECK(ps.segment.path.parts() == 40);
+  CHECK(ps.segment.limits.v_max == doctest::Approx(100.0).epsilon(1e-12));
+  const jerk::Move m = profile(ps);
+  const double closed = 20.0 / 100.0 + 100.0 / 1000.0 + 1000.0 / 1e5;
+  CHECK(m.time() == doctest::Approx(closed).epsilon(1e-9));
+  // The velocity no longer dips to a = 0 at the joints inside the ramps: at 1 mm (the joint
+  // of blocks 2 and 3, inside the speed-up) the acceleration is positive.
+  double t_joint = 0.0;
+  for (int i = 0; i <= 4000; ++i) {
+    const double t = m.time() * i / 4000.0;
+    if (profile_at(m, 0.0, t).s <= 1.0) t_joint = t;
+  }
+  CHECK(profile_at(m, 0.0, t_joint).a > 100.0);
 }
 
 TEST_CASE("property: random lines and arcs with random limits never exceed an axis limit") {

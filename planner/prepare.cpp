@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "jerk/jerk.hpp"
 #include "planner/blend.hpp"
 
 namespace ncsim::planner {
@@ -15,6 +16,33 @@ namespace ncsim::planner {
 namespace {
 
 constexpr double kMinLength = 1e-9;  // [mm] shorter moves carry no path
+
+/// How far above a chain's cap a part joined across different caps could have gone on its
+/// own (docs/planner.md "Chains": chains across caps).
+constexpr double kChainCapSlack = 0.01;
+
+/// Path jerk the kernel plans with (the look-ahead's: STEP slopes spread the acceleration step
+/// over one cycle).
+double planning_jerk(const PathLimits& lim, double t_cycle) {
+  return std::isfinite(lim.j_max) ? lim.j_max : std::max(lim.a_max, lim.d_max) / t_cycle;
+}
+
+/// A side whose cap is its programmed feed is not lowered below it: the feed may be a
+/// requirement (the static processing unit's belt feed, ipo/x_virtual.cpp, where the X share of
+/// the path velocity must equal the belt's).
+bool feed_must_hold(const PathLimits& lim, double cap) {
+  return lim.limit == VelocityLimit::programmed && lim.v_max > cap;
+}
+
+/// A run of parts (highest own cap v_hi [mm/s], `length` [mm], path limits `lim`) loses at most
+/// kChainCapSlack of its velocity when planned under the lower cap `cap`: its own caps are within
+/// that of `cap`, or it is too short to rise more than that above `cap` even when it is entered
+/// at `cap` with a = 0 and may leave at any velocity (jerk::reachable_velocity).
+bool fits_under(double cap, double v_hi, double length, const PathLimits& lim, double t_cycle) {
+  const double top = (1.0 + kChainCapSlack) * cap;
+  if (v_hi <= top) return true;
+  return jerk::reachable_velocity(cap, 0.0, length, lim.a_max, planning_jerk(lim, t_cycle)) <= top;
+}
 
 StopReason requested_stop(const Move& move) {
   if (move.transition == Transition::stop_at_end) return StopReason::stop_at_end;
@@ -154,16 +182,40 @@ void Preparer::output(PreparedSegment ps, std::vector<PreparedSegment>& out) {
     PreparedSegment& h = *held_;
     const double cap = h.limits.v_max;
     const bool same_cap = std::abs(ps.limits.v_max - cap) <= 1e-9 * std::max(cap, 1.0);
-    // C2 joints and knees that carry the acceleration (corner.hpp) chain alike.
-    const bool free_joint =
-        h.stop == StopReason::none && !h.a_zero_at_end && h.v_end >= cap * (1.0 - 1e-12);
-    if (same_cap && free_joint && h.path.parts() + ps.path.parts() <= Chain::kMaxParts) {
+    // C2 joints and knees that carry the acceleration (corner.hpp) chain alike, when the joint
+    // limits nothing below the chain's cap.
+    const bool open_joint = h.stop == StopReason::none && !h.a_zero_at_end;
+    bool join = false;
+    if (same_cap) {
+      join = open_joint && h.v_end >= cap * (1.0 - 1e-12);
+    } else {
+      // Across different caps: one piece at the smaller cap, when neither side loses more
+      // than kChainCapSlack by it (docs/planner.md "Chains").
+      // Both sides jerk-limited or both STEP (a STEP part would be planned with the other's
+      // jerk, and the audit's finite differences treat the two slopes apart).
+      const double low = std::min(cap, ps.limits.v_max);
+      join = open_joint && h.v_end >= low * (1.0 - 1e-12) &&
+             std::isfinite(h.limits.j_max) == std::isfinite(ps.limits.j_max) &&
+             !feed_must_hold(h.limits, low) && !feed_must_hold(ps.limits, low) &&
+             fits_under(low, held_v_hi_, h.path.length(), h.limits, channel_.t_cycle) &&
+             fits_under(low, ps.limits.v_max, ps.path.length(), ps.limits, channel_.t_cycle);
+    }
+    if (join && h.path.parts() + ps.path.parts() <= Chain::kMaxParts) {
+      held_v_hi_ = std::max(held_v_hi_, ps.limits.v_max);
+      if (!same_cap) {
+        h.limits.v_max = std::min(cap, ps.limits.v_max);
+        h.limits.v_programmed = std::min(h.limits.v_programmed, ps.limits.v_programmed);
+      }
       h.path.append(ps.path);
       h.limits.a_max = std::min(h.limits.a_max, ps.limits.a_max);
       h.limits.d_max = std::min(h.limits.d_max, ps.limits.d_max);
       h.limits.j_max = std::min(h.limits.j_max, ps.limits.j_max);
       h.limits.v_end = ps.limits.v_end;
       h.v_end = ps.v_end;
+      if (!same_cap) {  // the chain's end joint is passed at most at the chain's cap
+        h.limits.v_end = std::min(h.limits.v_end, h.limits.v_max);
+        h.v_end = std::min(h.v_end, h.limits.v_max);
+      }
       h.a_zero_at_end = ps.a_zero_at_end;
       h.stop = ps.stop;
       h.joint = ps.joint;
@@ -174,14 +226,20 @@ void Preparer::output(PreparedSegment ps, std::vector<PreparedSegment>& out) {
     out.push_back(std::move(h));
     held_.reset();
   }
-  // Hold only what a next segment could join; everything else leaves at once.
-  const bool open = ps.stop == StopReason::none && !ps.a_zero_at_end &&
-                    ps.v_end >= ps.limits.v_max * (1.0 - 1e-12) &&
-                    ps.path.parts() < Chain::kMaxParts;
-  if (open)
+  // Hold only what a next segment could join; everything else leaves at once. A joint below
+  // the segment's cap can still be joined across caps when the segment would lose little at
+  // the joint's cap (a later join's cap is at most that, and fits_under only gets harder).
+  const bool open =
+      ps.stop == StopReason::none && !ps.a_zero_at_end && ps.path.parts() < Chain::kMaxParts &&
+      (ps.v_end >= ps.limits.v_max * (1.0 - 1e-12) ||
+       (ps.v_end > 0.0 &&
+        fits_under(ps.v_end, ps.limits.v_max, ps.path.length(), ps.limits, channel_.t_cycle)));
+  if (open) {
+    held_v_hi_ = ps.limits.v_max;
     held_ = std::move(ps);
-  else
+  } else {
     out.push_back(std::move(ps));
+  }
 }
 
 void Preparer::push(const Move& move, std::vector<PreparedSegment>& out) {

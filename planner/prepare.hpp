@@ -11,7 +11,9 @@
 // Chains: consecutive segments joined C2 (or at a knee that carries the acceleration,
 // corner.hpp) whose joint limits nothing and whose velocity caps are equal are emitted as one
 // Chain (at most Chain::kMaxParts), with the smallest a, d, j of its
-// parts, so the look-ahead carries the acceleration through those joints.
+// parts, so the look-ahead carries the acceleration through those joints. Segments of
+// different caps are chained at the smaller cap when neither side loses more than 1 % by it
+// (its own caps within 1 %, or too short to rise 1 % above it; docs/planner.md "Chains").
 // Invariants: consecutive emitted segments join (end of one == start of the next); v_end of a
 // segment is its joint velocity cap (0 at a stop); memory is one pending Move and one held
 // chain, whatever the length of the stream. Zero-length moves (below 1e-9 mm) are dropped; their
@@ -134,7 +136,8 @@ class Preparer {
   ChannelLimits channel_;
   std::optional<Pending> pending_;
   std::optional<PreparedSegment> held_;  ///< chaining stage
-  std::optional<JointLimits> joints_;    ///< set_joints()
+  double held_v_hi_ = 0.0;  ///< highest own velocity cap among the held chain's parts [mm/s]
+  std::optional<JointLimits> joints_;  ///< set_joints()
   /// --- sync-feed: axes_for()'s limits of a Move on a conveyor (Move::belt), rewritten per call.
   mutable std::array<AxisLimits, kMaxAxes> belt_axes_{};
 };
