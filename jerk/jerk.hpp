@@ -213,8 +213,10 @@ struct Reversal {
 };
 
 /// The fastest Reversal from `start` to (p1, v1 != 0, a = 0): the highest turning level in
-/// (0, V] for which the turn still reaches p1 (root of the displacement, Illinois), with a
-/// cruise at V when V itself falls short. Status::not_supported when v1 == 0 or no level fits.
+/// (0, V] for which the turn still reaches p1, with a cruise at V when V itself falls short.
+/// The displacement is not monotone in the level: the kink where the out part vanishes splits
+/// (0, V] into two pieces with one root each, and the piece holding the highest feasible level
+/// is searched (jerk/reverse.cpp). Status::not_supported when v1 == 0 or no level fits.
 Status reversal_move(const State& start, double p1, double v1, const Limits& limits,
                      Reversal& out) noexcept;
 
@@ -228,8 +230,9 @@ Status fastest_move_newton(const State& start, double p1, double v1, const Limit
 /// A Reversal from `start` to (p1, v1 != 0, a = 0) taking exactly `duration` [s] (>= the
 /// fastest Reversal's time): the turning level lowered below the fastest one, the rest of the
 /// way cruised at it (time synchronisation of a move that must turn). Status::too_short below
-/// the fastest time, not_supported where no Reversal applies or stop-and-go already fills the
-/// way (no slower turn exists).
+/// the fastest time, not_supported where no Reversal applies, where stop-and-go already fills
+/// the way (no slower turn exists), or where the duration falls into the gap between the two
+/// stretches of feasible levels (jerk/reverse.cpp).
 Status reversal_of_duration(const State& start, double p1, double v1, double duration,
                             const Limits& limits, Reversal& out) noexcept;
 
