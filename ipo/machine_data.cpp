@@ -2,38 +2,20 @@
 
 #include "ipo/machine_data.hpp"
 
-namespace ncsim::ipo {
+#include <algorithm>
 
-bool set_conveyor_filter_param(machines::ConveyorAxisParams& params, std::string_view key,
-                               double value) {
-  const int order = static_cast<int>(value);  // uns32 0..1000, checked at decode (param_table)
-  if (key == "conv_sync.enable_filter") {
-    params.enable_filter = value != 0.0;
-  } else if (key == "conv_sync.type_pos_filter") {
-    params.type_pos_filter = order;
-  } else if (key == "conv_sync.order_pos_filter") {
-    params.order_pos_filter = order;
-  } else if (key == "conv_sync.order_v_filter") {
-    params.order_v_filter = order;
-  } else if (key == "conv_sync.order_post_v_filter") {
-    params.order_post_v_filter = order;
-  } else if (key == "conv_sync.order_v_filter_dyn") {
-    params.order_v_filter_dyn = order;
-  } else if (key == "conv_sync.delay_time") {
-    params.delay_time = value;
-  } else {
-    return false;
-  }
-  return true;
-}
+#include "machines/conveyor_params.hpp"
+
+namespace ncsim::ipo {
 
 std::optional<std::string> machine_data_unsupported(const interp::MachineData& command,
                                                     const machines::Machine& machine) {
   const machines::AxisParams* axis =
       command.axis && *command.axis < machine.axes.size() ? &machine.axes[*command.axis] : nullptr;
-  machines::ConveyorAxisParams scratch;
+  const auto& keys = machines::kConveyorFilterKeys;
   for (const interp::MachineSetting& s : command.settings) {
-    if (axis != nullptr && axis->conveyor && set_conveyor_filter_param(scratch, s.key, s.value))
+    if (axis != nullptr && axis->conveyor &&
+        std::find(keys.begin(), keys.end(), s.key) != keys.end())
       continue;
     return "#MACHINE DATA of " + std::string(s.id) + " (" + std::string(s.key) + ")" +
            (axis != nullptr ? " on axis " + axis->name : std::string()) +
@@ -48,7 +30,7 @@ std::optional<std::string> machine_data_unsupported(const interp::MachineData& c
 machines::ConveyorAxisParams apply_machine_data(machines::ConveyorAxisParams current,
                                                 const interp::MachineData& command) {
   for (const interp::MachineSetting& s : command.settings)
-    set_conveyor_filter_param(current, s.key, s.value);
+    machines::set_conveyor_filter_param(current, s.key, s.value);
   return current;
 }
 

@@ -14,19 +14,11 @@
 
 #include <optional>
 #include <string>
-#include <string_view>
 
 #include "interp/command.hpp"
 #include "machines/machine.hpp"
 
 namespace ncsim::ipo {
-
-/// Sets the filter or delay-time parameter with list key `key` (conv_sync.enable_filter,
-/// type_pos_filter, order_pos_filter, order_v_filter, order_post_v_filter, order_v_filter_dyn,
-/// delay_time) to `value` in internal units (the delay time in s). False, nothing changed, for
-/// any other key.
-bool set_conveyor_filter_param(machines::ConveyorAxisParams& params, std::string_view key,
-                               double value);
 
 /// Why `command` cannot run on `machine` (the text after "not supported: "), or nullopt when
 /// every setting is a filter or delay-time parameter of the conveyor axis.

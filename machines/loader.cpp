@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "machines/conveyor_params.hpp"
 #include "machines/list_file.hpp"
 #include "machines/loader_detail.hpp"
 
@@ -447,13 +448,8 @@ AxisParams build_axis(const ListValues& v, core::DiagnosticList& diagnostics) {
   a.conv_sync_optim = v.number("kenngr.conv_sync_optim") != 0.0;  // --- workspace
   if (v.number("conv_sync.is_master") != 0.0) {
     ConveyorAxisParams c;
-    c.enable_filter = v.number("conv_sync.enable_filter") != 0.0;
-    c.type_pos_filter = static_cast<int>(v.number("conv_sync.type_pos_filter"));
-    c.order_pos_filter = static_cast<int>(v.number("conv_sync.order_pos_filter"));
-    c.order_v_filter = static_cast<int>(v.number("conv_sync.order_v_filter"));
-    c.order_post_v_filter = static_cast<int>(v.number("conv_sync.order_post_v_filter"));
-    c.order_v_filter_dyn = static_cast<int>(v.number("conv_sync.order_v_filter_dyn"));
-    c.delay_time = v.internal("conv_sync.delay_time");
+    for (const std::string_view key : kConveyorFilterKeys)
+      set_conveyor_filter_param(c, key, v.internal(key));
     c.optimised_monitoring = v.number("kenngr.conv_sync_optim") != 0.0;
     a.conveyor = c;
   }
