@@ -15,38 +15,17 @@
 
 namespace {
 
-using ncsim::jerk::Limits;
 using ncsim::jerk::Move;
 using ncsim::jerk::State;
 using ncsim::jerk::Status;
-using ncsim::test::log_uniform;
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-struct Draw {
-  State start;
-  double p1 = 0.0;
-  double v1 = 0.0;
-  Limits lim;
-};
+using Draw = ncsim::test::MoveDraw;
 
-// Issue 11's ranges: distances 1e-4..1e4 mm, V 1..1e4 mm/s, A+ and A- 10..1e5 mm/s^2, J
-// 1e2..1e7 mm/s^3, starts inside the limits, an arrival velocity in half of the draws.
+// Issue 11's ranges, an arrival velocity in half of the draws (jerk/test_random.hpp).
 Draw draw(std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Draw d;
-  d.lim = Limits{log_uniform(rng, 1.0, 1e4), log_uniform(rng, 10.0, 1e5),
-                 log_uniform(rng, 10.0, 1e5), log_uniform(rng, 1e2, 1e7)};
-  const double dist = log_uniform(rng, 1e-4, 1e4);
-  d.start.p = 100.0 * u(rng);
-  d.p1 = d.start.p + (u(rng) < 0.0 ? -dist : dist);
-  d.start.v = u(rng) * d.lim.v_max;
-  // |a| within the limit of its direction (A- where it slows the motion, A+ where it speeds up).
-  const double a = u(rng);
-  const bool slows = a * d.start.v < 0.0;
-  d.start.a = a * (slows ? d.lim.d_max : std::min(d.lim.a_max, d.lim.d_max));
-  if (u(rng) < 0.0) d.v1 = u(rng) * d.lim.v_max;
-  return d;
+  return ncsim::test::draw_move(rng, ncsim::test::Arrival::half);
 }
 
 // The same case: the same frame, crossing or not, and the same limits held.

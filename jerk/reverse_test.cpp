@@ -24,7 +24,6 @@ using ncsim::jerk::Move;
 using ncsim::jerk::Reversal;
 using ncsim::jerk::State;
 using ncsim::jerk::Status;
-using ncsim::test::log_uniform;
 
 // One part of a turn in its frame: from (v0, a0) to (v1 >= 0, 0), through v = 0 with the path
 // limits (A- before, A+ after) where the frame start moves backward, else one ramp (A- while
@@ -126,31 +125,10 @@ double reference_time(const State& start, double p1, double v1, const Limits& li
   return best;
 }
 
-// Issue 11's ranges (distances 1e-4..1e4 mm, V 1..1e4 mm/s, A+ and A- 10..1e5 mm/s^2,
-// J 1e2..1e7 mm/s^3), starts inside the limits, always an arrival velocity.
-struct Draw {
-  State start;
-  double p1 = 0.0;
-  double v1 = 0.0;
-  Limits lim;
-};
+using Draw = ncsim::test::MoveDraw;
 
 Draw draw(std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Draw d;
-  d.lim = Limits{log_uniform(rng, 1.0, 1e4), log_uniform(rng, 10.0, 1e5),
-                 log_uniform(rng, 10.0, 1e5), log_uniform(rng, 1e2, 1e7)};
-  const double dist = log_uniform(rng, 1e-4, 1e4);
-  d.start.p = 100.0 * u(rng);
-  d.p1 = d.start.p + (u(rng) < 0.0 ? -dist : dist);
-  d.start.v = u(rng) * d.lim.v_max;
-  const double a = u(rng);
-  const bool slows = a * d.start.v < 0.0;
-  d.start.a = a * (slows ? d.lim.d_max : std::min(d.lim.a_max, d.lim.d_max));
-  do {
-    d.v1 = u(rng) * d.lim.v_max;
-  } while (d.v1 == 0.0);
-  return d;
+  return ncsim::test::draw_move(rng, ncsim::test::Arrival::always);
 }
 
 }  // namespace
