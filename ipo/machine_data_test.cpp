@@ -115,6 +115,22 @@ TEST_CASE("#MACHINE DATA of the filters without a conveyor world is NC6001 namin
   CHECK(r.error->message.find("[conveyor]") != std::string::npos);
 }
 
+TEST_CASE("#MACHINE DATA of the filters on a world that cannot change them is NC6001 at its line") {
+  ipo::test::FakePort port(0.0);
+  port.takes_params_ = false;
+  const Ran r =
+      run("%t\nN10 G01 X10 F6000\nN20 #MACHINE DATA [AX=S P-AXIS-00626=20000]\nN30 G01 X20\n"
+          "N40 M30\n",
+          &port);
+  REQUIRE(r.error);
+  CHECK(r.error->id == "NC6001");
+  CHECK(r.error->line == 3);
+  CHECK(r.error->message.find("on this conveyor world") != std::string::npos);
+  CHECK_FALSE(port.params_);
+  REQUIRE_FALSE(r.axes.empty());
+  CHECK(r.axes.back().command[0] == 10.0);  // N10 ran to its end, N30 never started
+}
+
 TEST_CASE("NC9061: #MACHINE DATA of the filters while synchronised, at its line") {
   ipo::test::FakePort port(300.0);
   port.latch_at_ = 1;

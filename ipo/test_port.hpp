@@ -37,6 +37,7 @@ class FakePort final : public ncsim::conveyor::Port {
   }
   void set_reduced_filter(bool) noexcept override {}
   bool set_axis_params(const ncsim::machines::ConveyorAxisParams& params) noexcept override {
+    if (!takes_params_) return false;
     params_ = params;
     params_at_ = steps_;
     return true;
@@ -59,6 +60,7 @@ class FakePort final : public ncsim::conveyor::Port {
   ncsim::conveyor::BeltState state_;
   std::optional<ncsim::machines::ConveyorAxisParams> params_;  ///< the last set_axis_params()
   long params_at_ = -1;                                        ///< steps_ when it came
+  bool takes_params_ = true;  ///< false: a world without #MACHINE DATA (Port's default)
 };
 
 }  // namespace ncsim::ipo::test
