@@ -144,3 +144,38 @@ TEST_CASE(
   CHECK(x_stop < 4000.0 - 100.0);
   CHECK(r.t.back() <= static_cast<double>(stop_at) * kT + 0.002);
 }
+
+TEST_CASE(
+    "an error while synchronised on a static unit (x_virtual) ends the run at once, without "
+    "the following of 004 §2.3") {
+  // docs/conveyor.md "On a static unit (x_virtual): decision, the run ends at once": no real
+  // X could follow the belt. The belt steps from 100 to 400 mm/s (above 1.1 x CONV_VEL 300)
+  // while the saw runs its line with the belt feed: 50653, and the run ends in that cycle.
+  const machines::Machine m = interp::test::machine("static_saw");
+  ipo::test::FakePort port(100.0);
+  port.latch_at_ = 1;
+  port.v_change_at_ = 3000;
+  port.v_new_ = 400.0;
+  ipo::test::ConveyorRig rig(
+      "%t\nN10 G0 X0 Y0 C0\nN20 #SYNC IN [CONV_VEL=18000]\nN30 G0 X0 Y0\nN40 G1 X-2000 Y0 F100\n"
+      "N50 #SYNC OUT\nN60 M30\n",
+      m, ipo::channel_config(m, kT), &port);
+  std::vector<double> t;
+  bool tracking_before = false;
+  const ipo::Status status = ipo::test::run_to_end(
+      rig.ch,
+      [&] {
+        t.push_back(rig.ch.cycle().t);
+        if (rig.ch.cycle().t < 2.9) tracking_before = rig.ch.conveyor_sync()->synchronised();
+      },
+      100'000);
+  CHECK(tracking_before);  // the error comes while synchronised, on N40
+  REQUIRE(status == ipo::Status::error);
+  const std::optional<ipo::RunTimeError> error = rig.ch.run_time_error();
+  REQUIRE(error);
+  CHECK(error->id == "50653");
+  CHECK(error->line == 5);
+  CHECK(rig.ch.after_error_note().empty());
+  REQUIRE_FALSE(t.empty());
+  CHECK(t.back() <= error->t + 1e-9);  // no cycle after the error's
+}
