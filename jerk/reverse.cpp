@@ -133,51 +133,44 @@ Status reversal_move(const State& start, double p1, double v1, const Limits& lim
     h_last = d - reach(start, r, g);
     return h_last;
   };
-  double slope = 0.0;
-  double curve = 0.0;
-  const double h_top = h(lim.v_max, slope, curve);
+  // One sample of h: the level, h there and its slope and curvature (NaN where unknown).
+  struct Sample {
+    double level = 0.0;  // [mm/s]
+    double h = 0.0;      // [mm]
+    double slope = 0.0;  // [s]
+    double curve = 0.0;  // [s^2/mm]
+  };
+  const auto sample = [&](double level) {
+    Sample s{level, 0.0, 0.0, 0.0};
+    s.h = h(level, s.slope, s.curve);
+    return s;
+  };
+  const Sample top = sample(lim.v_max);
   double level = lim.v_max;
-  if (h_top > 0.0) {
+  if (top.h > 0.0) {
     // The bracket of the highest feasible level: h rises on [max(u_zero, 0), V] and has one
     // hump on (0, u_zero) (the file's note), so the piece above a feasible kink, else the
-    // piece below it.
-    double hi = lim.v_max;
-    double h_hi = h_top;
-    double s_hi = slope;
-    double c_hi = curve;
-    double lo = 0.0;
-    double h_lo = 0.0;
-    double s_lo = 0.0;
-    double c_lo = 0.0;
+    // piece below it. `hi` is infeasible (h > 0); `lo`, once known, feasible (h <= 0).
+    Sample hi = top;
+    Sample lo;
     bool lo_known = false;
     const double u0 = -g * start.v;
     const double b0 = -g * start.a;
     const double u_zero = u0 + b0 * std::abs(b0) / (2.0 * lim.j_max);
     if (u_zero > 0.0 && u_zero < lim.v_max) {
-      const double h_kink = h(u_zero, slope, curve);
-      if (h_kink <= 0.0) {
-        lo = u_zero;
-        h_lo = h_kink;
-        s_lo = slope;
-        c_lo = curve;
-        lo_known = true;
-      } else {
-        hi = u_zero;
-        h_hi = h_kink;
-        s_hi = slope;
-        c_hi = curve;
-      }
+      const Sample kink = sample(u_zero);
+      lo_known = kink.h <= 0.0;
+      (lo_known ? lo : hi) = kink;
     }
     if (!lo_known) {
-      h_lo = h(0.0, slope, curve);
-      s_lo = slope;
-      c_lo = curve;
-      if (!(h_lo < 0.0)) return Status::not_supported;  // no detour needed (or none helps)
+      lo = sample(0.0);
+      if (!(lo.h < 0.0)) return Status::not_supported;  // no detour needed (or none helps)
     }
     const double tol = 8.0 * kEps * std::abs(d);
-    level = detail::solve_with_curve(lo, hi, h_lo, h_hi, s_lo, s_hi, c_lo, c_hi, tol, h);
+    level = detail::solve_with_curve(lo.level, hi.level, lo.h, hi.h, lo.slope, hi.slope, lo.curve,
+                                     hi.curve, tol, h);
     if (!(level > 0.0)) return Status::not_supported;
-    if (last != level) h(level, slope, curve);
+    if (last != level) sample(level);
   }
   out = r;
   const double h_level = h_last;
