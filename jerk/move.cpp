@@ -131,10 +131,12 @@ double first_part(const Frame& f, double vm, const Limits& lim, Crossing& cross,
 // levels into one Level without constructing and copying a new one each time).
 void level_into(const Frame& f, double vm, const Limits& lim, Level& out) noexcept {
   out.second = velocity_ramp(vm, 0.0, f.v1, lim.a_max, lim.d_max, lim.j_max);
-  out.dist = distance(vm, 0.0, out.second);
+  // (vm, 0) -> (v1, 0) from a = 0 is symmetric in time: the mean velocity is (vm + v1) / 2.
+  const double t_second = out.second.time();
+  out.dist = 0.5 * (vm + f.v1) * t_second;
   out.path = std::abs(out.dist);
   out.dist += first_part(f, vm, lim, out.cross, out.first, out.path);
-  out.t_ramp = out.cross.time() + out.first.time() + out.second.time();
+  out.t_ramp = out.cross.time() + out.first.time() + t_second;
   level_slope(out, vm, lim.j_max);
 }
 
@@ -237,7 +239,7 @@ double top_level(const Frame& f, const Limits& lim, Level& out, bool curved = tr
   for (const double c : below) {
     if (!(c < hi)) continue;
     // A kink candidate's distance without a level evaluation (no slope there: NaN).
-    const bool kink = c > 0.0 && (c == v_zero || c == f.v1);
+    const bool kink = c == v_zero || c == f.v1;
     const double g_c = kink ? kink_gap(f, c, v_zero, lim) : g(c);
     const double s_c = kink ? no_curve : out.slope;
     const double c_c = kink || !curved ? no_curve : out.curve;
