@@ -127,8 +127,9 @@ double first_part(const Frame& f, double vm, const Limits& lim, Crossing& cross,
   return d_first;
 }
 
-// Evaluates the level vm into `out` (every member written: the root searches evaluate many
-// levels into one Level without constructing and copying a new one each time).
+// Evaluates the level vm into `out` (every member but slope and curve written: the root
+// searches evaluate many levels into one Level without constructing and copying a new one each
+// time, and take level_slope only where their solver steps from the level).
 void level_into(const Frame& f, double vm, const Limits& lim, Level& out) noexcept {
   out.second = velocity_ramp(vm, 0.0, f.v1, lim.a_max, lim.d_max, lim.j_max);
   // (vm, 0) -> (v1, 0) from a = 0 is symmetric in time: the mean velocity is (vm + v1) / 2.
@@ -137,7 +138,6 @@ void level_into(const Frame& f, double vm, const Limits& lim, Level& out) noexce
   out.path = std::abs(out.dist);
   out.dist += first_part(f, vm, lim, out.cross, out.first, out.path);
   out.t_ramp = out.cross.time() + out.first.time() + t_second;
-  level_slope(out, vm, lim.j_max);
 }
 
 // dist(vm) - D at a candidate of top_level that is a kink (vm = v_zero or vm = v1: one of the
@@ -217,19 +217,24 @@ double top_level(const Frame& f, const Limits& lim, Level& out, bool curved = tr
     if (vm != last_vm) level_into(f, vm, lim, out);
     return vm;
   };
-  const auto gsc = [&](double vm, double& slope, double& curve) {
-    const double gv = g(vm);
-    slope = out.slope;
-    curve = curved ? out.curve : std::numeric_limits<double>::quiet_NaN();
-    return gv;
-  };
+  const double no_curve = std::numeric_limits<double>::quiet_NaN();
   const double g_top = g(lim.v_max);
   if (g_top <= 0.0) return lim.v_max;
+  level_slope(out, lim.v_max, lim.j_max);
   double s_hi = out.slope;
-  const double no_curve = std::numeric_limits<double>::quiet_NaN();
   double c_hi = curved ? out.curve : no_curve;
   // Rounding of dist grows with the way the ramps travel (a detour much longer than D).
   const double tol = kResidue * std::max(std::abs(f.d), out.path);  // out: the level at V
+  // (The slope only where the solver goes on from the level: not at the root it returns.)
+  const auto gsc = [&](double vm, double& slope, double& curve) {
+    const double gv = g(vm);
+    slope = curve = no_curve;
+    if (gv <= 0.0 && gv >= -tol) return gv;
+    level_slope(out, vm, lim.j_max);
+    slope = out.slope;
+    curve = curved ? out.curve : no_curve;
+    return gv;
+  };
   const auto clamp = [&](double v) { return std::clamp(v, 0.0, lim.v_max); };
   const double v_zero = f.v0 + f.a0 * std::abs(f.a0) / (2.0 * lim.j_max);  // ramp 1 vanishes
   const std::array<double, 3> below{clamp(std::max(v_zero, f.v1)), clamp(std::min(v_zero, f.v1)),
@@ -241,6 +246,7 @@ double top_level(const Frame& f, const Limits& lim, Level& out, bool curved = tr
     // A kink candidate's distance without a level evaluation (no slope there: NaN).
     const bool kink = c == v_zero || c == f.v1;
     const double g_c = kink ? kink_gap(f, c, v_zero, lim) : g(c);
+    if (!kink) level_slope(out, c, lim.j_max);
     const double s_c = kink ? no_curve : out.slope;
     const double c_c = kink || !curved ? no_curve : out.curve;
     if (g_c <= 0.0) {
