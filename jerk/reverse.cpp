@@ -57,14 +57,18 @@ double ramp_to(double v0, double a0, double level, const Limits& lim, Crossing& 
   return distance(v0, a0, ramp);
 }
 
-// The turn at `level` without cruise; `reach` receives its displacement toward g [mm]: the
-// back part's distance in its frame (g) less the out part's in its frame (-g), each the sum of
-// its pieces' closed-form or per-phase distances (not the end state integrated through both).
+// The turn at `level` without cruise, into `r` (every member written: the searches evaluate
+// many levels into one Reversal, not a new one built and copied each time); `reach` receives
+// its displacement toward g [mm]: the back part's distance in its frame (g) less the out
+// part's in its frame (-g), each the sum of its pieces' closed-form or per-phase distances
+// (not the end state integrated through both).
 // `cs_out`: crossing_start of the out part's start (-g v0, -g a0), prepared once per search.
-Reversal make(const State& start, double g, double level, double v1, const Limits& lim,
-              double& reach, const detail::CrossingStart* cs_out = nullptr) noexcept {
-  Reversal r;
+void make_into(Reversal& r, const State& start, double g, double level, double v1,
+               const Limits& lim, double& reach,
+               const detail::CrossingStart* cs_out = nullptr) noexcept {
   r.out.sign = -g;
+  r.out.t_cruise = 0.0;
+  r.back.t_cruise = 0.0;
   const double d_out =
       ramp_to(-g * start.v, -g * start.a, level, lim, r.out.cross, r.out.first, cs_out);
   r.out.v_level = level;
@@ -76,7 +80,6 @@ Reversal make(const State& start, double g, double level, double v1, const Limit
   r.back.second = Ramp{};
   r.back.second.v_end = g * v1;
   reach = d_back - d_out;
-  return r;
 }
 
 // The slope and curvature of h(L) = D - s(L) [s] and [s^2/mm] (NaN where unknown). A
@@ -132,7 +135,7 @@ Status reversal_move(const State& start, double p1, double v1, const Limits& lim
       detail::crossing_start(-g * start.v, -g * start.a, lim, true);
   const auto h = [&](double level, double& slope, double& curve) {
     double reach = 0.0;
-    r = make(start, g, level, v1, lim, reach, &cs_out);
+    make_into(r, start, g, level, v1, lim, reach, &cs_out);
     last = level;
     reach_slope(r, level, lim.j_max, slope, curve);
     h_last = d - reach;
@@ -216,7 +219,7 @@ Status reversal_of_duration(const State& start, double p1, double v1, double dur
   bool feasible = false;  // of the last level evaluated
   const auto timed = [&](double level, double& slope) {
     double reach = 0.0;
-    r = make(start, g, level, v1, lim, reach);
+    make_into(r, start, g, level, v1, lim, reach);
     slope = std::numeric_limits<double>::quiet_NaN();
     const double rest = reach - d;
     feasible = !(rest < -tol_rest);
