@@ -10,11 +10,16 @@
 //  - the manual's stop-and-return (frame of the arrival velocity, start moving against it):
 //    t_stop + T_r2r(|q - p_stop|) + the ramp 0 -> |v1|, q = p1 - sign(v1) ramp_distance(|v1|):
 //    its return uses the symmetric min(A+, A-), never faster than T_r2r (the optimum).
+//  - the two-peak change (jerk/two_peak.cpp): it has no cruise and its velocity is monotone
+//    between v0 and v1 (its dip does not cross a = 0), so it covers D in a time T with
+//    D <= max(|v0|, |v1|) T, and T is at least the time-optimal velocity change v0 -> v1
+//    (velocity_ramp) under the larger of A+, A- (larger limits are never slower).
 
 #include "axes/profile_classify.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "axes/profile_builder.hpp"
 
@@ -86,6 +91,19 @@ double manual_bound(const MotionState& start, const PositionTarget& target,
   const double dist = shortened(std::abs(q - stop.p), scale);
   const double t_ramp = velocity_ramp(0.0, 0.0, speed, dyn.a_max, dyn.d_max, dyn.j_max).time();
   return (stop.t + rest_to_rest_fastest_time(dist, dyn) + t_ramp) * (1.0 - kMargin);
+}
+
+double two_peak_bound(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
+                      double enough) noexcept {
+  const double dist = std::abs(target.p - start.p);
+  const double a_big = std::max(dyn.a_max, dyn.d_max);
+  if (!(dist > 0.0) || !(std::abs(start.a) <= a_big)) return 0.0;
+  const double v_high = std::max(std::abs(start.v), std::abs(target.v));
+  const double t_way =
+      (v_high > 0.0 ? dist / v_high : std::numeric_limits<double>::infinity()) * (1.0 - kMargin);
+  if (t_way >= enough) return t_way;
+  const double t_change = velocity_ramp(start.v, start.a, target.v, a_big, a_big, dyn.j_max).time();
+  return std::max(t_way, t_change * (1.0 - kMargin));
 }
 
 }  // namespace ncsim::axes::detail

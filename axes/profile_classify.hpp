@@ -10,6 +10,8 @@
 // (plan_fastest keeps a candidate only when it is strictly faster); checked against the full
 // search by profile_classify_test.cpp. Nothing allocates, nothing throws.
 
+#include <limits>
+
 #include "axes/profile.hpp"
 
 namespace ncsim::axes::detail {
@@ -37,5 +39,12 @@ double stop_then_go_bound(const MotionState& start, const PositionTarget& target
 /// (a start moving away from the arrival direction); 0 otherwise.
 double manual_bound(const MotionState& start, const PositionTarget& target,
                     const Dynamics& dyn) noexcept;
+
+/// Lower bound [s] of the two-peak change (plan_fastest's candidate 2, jerk::two_peak_move):
+/// max(D / max(|v0|, |v1|), the time-optimal velocity change v0 -> v1 under max(A+, A-));
+/// 0 where it has no bound (no distance, a start acceleration beyond both limits). The
+/// velocity change is left out where the first term alone is already >= `enough` [s].
+double two_peak_bound(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
+                      double enough = std::numeric_limits<double>::infinity()) noexcept;
 
 }  // namespace ncsim::axes::detail

@@ -110,6 +110,30 @@ TEST_CASE("the manual bound is below the manual plan's duration (100000 seeded c
   CHECK(bounded > 5000);  // starts moving against an arrival velocity: ~1/8 of the cases
 }
 
+TEST_CASE("the two-peak bound is below the two-peak change's duration (1000000 seeded cases)") {
+  // Issue 11, session 24: plan_fastest skips jerk::two_peak_move where this bound is >= the
+  // best candidate found. Arrival velocities in half of the cases (the two-peak change needs
+  // v1 beyond the start's release velocity). 3,000,000 draws (5334 changes) checked by hand.
+  std::mt19937_64 rng(2026112401);
+  int changes = 0;
+  for (int i = 0; i < 1000000; ++i) {
+    const Case c = draw(rng, 0.5);
+    ncsim::jerk::TwoPeak tp;
+    if (ncsim::jerk::two_peak_move(c.start, c.target.p, c.target.v, c.dyn, tp) !=
+        ncsim::jerk::Status::ok) {
+      continue;
+    }
+    ++changes;
+    INFO("case " << i << " v0 " << c.start.v << " a0 " << c.start.a << " p1 " << c.target.p
+                 << " v1 " << c.target.v);
+    REQUIRE(detail::two_peak_bound(c.start, c.target, c.dyn) <= tp.time());
+    // With `enough` the bound stops early, never above the full one.
+    const double full = detail::two_peak_bound(c.start, c.target, c.dyn);
+    REQUIRE(detail::two_peak_bound(c.start, c.target, c.dyn, 0.5 * full) <= full);
+  }
+  CHECK(changes > 1000);  // ~1800: the change applies only in a narrow window of distances
+}
+
 TEST_CASE("the stop point is append_stop's end (position to 1e-12 relative, duration to 1e-15)") {
   std::mt19937_64 rng(7);
   for (int i = 0; i < 20000; ++i) {

@@ -143,8 +143,10 @@ bool plan_fastest(const MotionState& start, const PositionTarget& target, const 
   }
   // Candidate 2: the two-peak change (the acceleration dips toward 0 without reaching it),
   // for targets between the direct ramp and releasing the start acceleration first.
+  // (Skipped where its lower bound shows it cannot be faster: profile_classify.)
   jerk::TwoPeak tp;
-  if (jerk::two_peak_move(start, target.p, target.v, dyn, tp) == jerk::Status::ok &&
+  if (two_peak_bound(start, target, dyn, t_best) < t_best &&
+      jerk::two_peak_move(start, target.p, target.v, dyn, tp) == jerk::Status::ok &&
       tp.time() < t_best) {
     pick = Pick::two_peak;
     t_best = tp.time();

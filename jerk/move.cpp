@@ -101,13 +101,11 @@ void level_slope(Level& lv, double vm, double j) noexcept {
       curve_of(p1, a1, lv.first.duration[1] > 0.0) + curve_of(q, aq, lv.second.duration[1] > 0.0);
 }
 
-// Evaluates the level vm into `out` (every member written: the root searches evaluate many
-// levels into one Level without constructing and copying a new one each time).
-void level_into(const Frame& f, double vm, const Limits& lim, Level& out) noexcept {
-  out.cross = Crossing{};
-  out.second = velocity_ramp(vm, 0.0, f.v1, lim.a_max, lim.d_max, lim.j_max);
-  out.dist = distance(vm, 0.0, out.second);
-  out.path = std::abs(out.dist);
+// The first part of a level, (v0, a0) -> (vm, 0), into `cross` and `first`; returns its
+// distance [mm] and adds its way (the pieces' |distances|) to `path`.
+double first_part(const Frame& f, double vm, const Limits& lim, Crossing& cross, Ramp& first,
+                  double& path) noexcept {
+  cross = Crossing{};
   // A first ramp from a frame velocity below 0 slows down (A-) until v = 0 and speeds up (A+)
   // after it: the crossing ramp switches the limit at v = 0. Where it does not apply (a start
   // acceleration beyond A- or one forcing more than min(A+, A-) at v = 0), one ramp under the
@@ -115,23 +113,55 @@ void level_into(const Frame& f, double vm, const Limits& lim, Level& out) noexce
   // (The start's part of the crossing is prepared once per frame: frame_of.)
   double d_cross = 0.0;
   if ((f.v0 < 0.0 || f.a0 < 0.0) && vm > 0.0 &&
-      detail::crossing_from(f.cs, vm, lim, out.cross, out.first, &d_cross)) {
-    const double d_first = distance(0.0, out.cross.a_zero, out.first);
-    out.dist += d_cross + d_first;
-    out.path += std::abs(d_cross) + std::abs(d_first);
-    out.t_ramp = out.cross.time() + out.first.time() + out.second.time();
-    level_slope(out, vm, lim.j_max);
-    return;
+      detail::crossing_from(f.cs, vm, lim, cross, first, &d_cross)) {
+    const double d_first = distance(0.0, cross.a_zero, first);
+    path += std::abs(d_cross) + std::abs(d_first);
+    return d_cross + d_first;
   }
   // (A stop from v0 < 0 only slows down: A-.)
   const double a_up =
       f.v0 < 0.0 ? (vm > 0.0 ? std::min(lim.a_max, lim.d_max) : lim.d_max) : lim.a_max;
-  out.first = velocity_ramp(f.v0, f.a0, vm, a_up, lim.d_max, lim.j_max);
-  const double d_first = distance(f.v0, f.a0, out.first);
-  out.dist += d_first;
-  out.path += std::abs(d_first);
-  out.t_ramp = out.first.time() + out.second.time();
-  level_slope(out, vm, lim.j_max);
+  first = velocity_ramp(f.v0, f.a0, vm, a_up, lim.d_max, lim.j_max);
+  const double d_first = distance(f.v0, f.a0, first);
+  path += std::abs(d_first);
+  return d_first;
+}
+
+// Evaluates the level vm into `out` (every member but slope and curve written: the root
+// searches evaluate many levels into one Level without constructing and copying a new one each
+// time, and take level_slope only where their solver steps from the level).
+void level_into(const Frame& f, double vm, const Limits& lim, Level& out) noexcept {
+  out.second = velocity_ramp(vm, 0.0, f.v1, lim.a_max, lim.d_max, lim.j_max);
+  // (vm, 0) -> (v1, 0) from a = 0 is symmetric in time: the mean velocity is (vm + v1) / 2.
+  const double t_second = out.second.time();
+  out.dist = 0.5 * (vm + f.v1) * t_second;
+  out.path = std::abs(out.dist);
+  out.dist += first_part(f, vm, lim, out.cross, out.first, out.path);
+  out.t_ramp = out.cross.time() + out.first.time() + t_second;
+}
+
+// dist(vm) - D at a candidate of top_level that is a kink (vm = v_zero or vm = v1: one of the
+// two ramps vanishes there), without the Level: the vanishing ramp is not built, the release
+// of a0 (vm = v_zero in a frame without a crossing: one phase of jerk -sgn(a0) J for |a0|/J,
+// v0 t + a0 t^2/2 - |a0| J t^3/6 sgn(a0) = v0 t + a0 t^2/3) in closed form, and neither the
+// ramps' times nor the slope are needed (the slope does not exist at a kink). The same
+// distance as level_into's to rounding (issue 11, eighth round: the candidates are 0.75 of the
+// 3.1 level evaluations per plan).
+double kink_gap(const Frame& f, double vm, double v_zero, const Limits& lim) noexcept {
+  const double j = lim.j_max;
+  double dist = 0.0;
+  if (vm != f.v1) {
+    // (vm, 0) -> (v1, 0) from a = 0 is symmetric in time: the mean velocity is (vm + v1) / 2.
+    dist = 0.5 * (vm + f.v1) * velocity_ramp(vm, 0.0, f.v1, lim.a_max, lim.d_max, j).time();
+  }
+  if (vm == v_zero && !f.cs.possible) {
+    const double t = std::abs(f.a0) / j;
+    return dist + t * (f.v0 + f.a0 * t * (1.0 / 3.0)) - f.d;
+  }
+  Crossing cross;
+  Ramp first;
+  double path = 0.0;
+  return dist + first_part(f, vm, lim, cross, first, path) - f.d;
 }
 
 Level level(const Frame& f, double vm, const Limits& lim) noexcept {
@@ -187,19 +217,24 @@ double top_level(const Frame& f, const Limits& lim, Level& out, bool curved = tr
     if (vm != last_vm) level_into(f, vm, lim, out);
     return vm;
   };
-  const auto gsc = [&](double vm, double& slope, double& curve) {
-    const double gv = g(vm);
-    slope = out.slope;
-    curve = curved ? out.curve : std::numeric_limits<double>::quiet_NaN();
-    return gv;
-  };
+  const double no_curve = std::numeric_limits<double>::quiet_NaN();
   const double g_top = g(lim.v_max);
   if (g_top <= 0.0) return lim.v_max;
+  level_slope(out, lim.v_max, lim.j_max);
   double s_hi = out.slope;
-  const double no_curve = std::numeric_limits<double>::quiet_NaN();
   double c_hi = curved ? out.curve : no_curve;
   // Rounding of dist grows with the way the ramps travel (a detour much longer than D).
   const double tol = kResidue * std::max(std::abs(f.d), out.path);  // out: the level at V
+  // (The slope only where the solver goes on from the level: not at the root it returns.)
+  const auto gsc = [&](double vm, double& slope, double& curve) {
+    const double gv = g(vm);
+    slope = curve = no_curve;
+    if (gv <= 0.0 && gv >= -tol) return gv;
+    level_slope(out, vm, lim.j_max);
+    slope = out.slope;
+    curve = curved ? out.curve : no_curve;
+    return gv;
+  };
   const auto clamp = [&](double v) { return std::clamp(v, 0.0, lim.v_max); };
   const double v_zero = f.v0 + f.a0 * std::abs(f.a0) / (2.0 * lim.j_max);  // ramp 1 vanishes
   const std::array<double, 3> below{clamp(std::max(v_zero, f.v1)), clamp(std::min(v_zero, f.v1)),
@@ -208,15 +243,19 @@ double top_level(const Frame& f, const Limits& lim, Level& out, bool curved = tr
   double g_hi = g_top;
   for (const double c : below) {
     if (!(c < hi)) continue;
-    const double g_c = g(c);
+    // A kink candidate's distance without a level evaluation (no slope there: NaN).
+    const bool kink = c == v_zero || c == f.v1;
+    const double g_c = kink ? kink_gap(f, c, v_zero, lim) : g(c);
+    if (!kink) level_slope(out, c, lim.j_max);
+    const double s_c = kink ? no_curve : out.slope;
+    const double c_c = kink || !curved ? no_curve : out.curve;
     if (g_c <= 0.0) {
-      return answer(detail::solve_with_curve(c, hi, g_c, g_hi, out.slope, s_hi,
-                                             curved ? out.curve : no_curve, c_hi, tol, gsc));
+      return answer(detail::solve_with_curve(c, hi, g_c, g_hi, s_c, s_hi, c_c, c_hi, tol, gsc));
     }
     hi = c;
     g_hi = g_c;
-    s_hi = out.slope;
-    c_hi = curved ? out.curve : no_curve;
+    s_hi = s_c;
+    c_hi = c_c;
   }
   return -1.0;
 }

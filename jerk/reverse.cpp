@@ -38,41 +38,48 @@ constexpr double kEps = std::numeric_limits<double>::epsilon();
 // Frame change (v0, a0) -> (level > = 0, 0): through v = 0 with the path limits where the
 // frame start moves backward, else one ramp (under min(A+, A-) when it crosses v = 0).
 // `cs`: the start's part of the crossing prepared once (jerk/crossing.hpp), else nullptr.
-void ramp_to(double v0, double a0, double level, const Limits& lim, Crossing& cross, Ramp& ramp,
-             const detail::CrossingStart* cs = nullptr) noexcept {
+// Returns the distance the change covers in its frame [mm].
+double ramp_to(double v0, double a0, double level, const Limits& lim, Crossing& cross, Ramp& ramp,
+               const detail::CrossingStart* cs = nullptr) noexcept {
   cross = Crossing{};
-  if ((v0 < 0.0 || a0 < 0.0) && level > 0.0 &&
-      (cs != nullptr ? detail::crossing_from(*cs, level, lim, cross, ramp, nullptr)
-                     : crossing_ramp(v0, a0, level, lim, cross, ramp))) {
-    return;
+  if ((v0 < 0.0 || a0 < 0.0) && level > 0.0) {
+    double d_cross = 0.0;
+    const bool crossed = cs != nullptr
+                             ? detail::crossing_from(*cs, level, lim, cross, ramp, &d_cross)
+                             : detail::crossing_from(detail::crossing_start(v0, a0, lim, false),
+                                                     level, lim, cross, ramp, &d_cross);
+    if (crossed) return d_cross + distance(0.0, cross.a_zero, ramp);
   }
   cross = Crossing{};
   const double a_up =
       v0 < 0.0 ? (level > 0.0 ? std::min(lim.a_max, lim.d_max) : lim.d_max) : lim.a_max;
   ramp = velocity_ramp(v0, a0, level, a_up, lim.d_max, lim.j_max);
+  return distance(v0, a0, ramp);
 }
 
+// The turn at `level` without cruise, into `r` (every member written: the searches evaluate
+// many levels into one Reversal, not a new one built and copied each time); `reach` receives
+// its displacement toward g [mm]: the back part's distance in its frame (g) less the out
+// part's in its frame (-g), each the sum of its pieces' closed-form or per-phase distances
+// (not the end state integrated through both).
 // `cs_out`: crossing_start of the out part's start (-g v0, -g a0), prepared once per search.
-Reversal make(const State& start, double g, double level, double v1, const Limits& lim,
-              const detail::CrossingStart* cs_out = nullptr) noexcept {
-  Reversal r;
+void make_into(Reversal& r, const State& start, double g, double level, double v1,
+               const Limits& lim, double& reach,
+               const detail::CrossingStart* cs_out = nullptr) noexcept {
   r.out.sign = -g;
-  ramp_to(-g * start.v, -g * start.a, level, lim, r.out.cross, r.out.first, cs_out);
+  r.out.t_cruise = 0.0;
+  r.back.t_cruise = 0.0;
+  const double d_out =
+      ramp_to(-g * start.v, -g * start.a, level, lim, r.out.cross, r.out.first, cs_out);
   r.out.v_level = level;
   r.out.second = Ramp{};
   r.out.second.v_end = level;
   r.back.sign = g;
-  ramp_to(-level, 0.0, g * v1, lim, r.back.cross, r.back.first);
+  const double d_back = ramp_to(-level, 0.0, g * v1, lim, r.back.cross, r.back.first);
   r.back.v_level = g * v1;
   r.back.second = Ramp{};
   r.back.second.v_end = g * v1;
-  return r;
-}
-
-// Displacement toward g of the turn at `level` without cruise.
-double reach(const State& start, const Reversal& r, double g) noexcept {
-  const State mid = end_state(start, r.out);
-  return g * (end_state(mid, r.back).p - start.p);
+  reach = d_back - d_out;
 }
 
 // The slope and curvature of h(L) = D - s(L) [s] and [s^2/mm] (NaN where unknown). A
@@ -127,57 +134,51 @@ Status reversal_move(const State& start, double p1, double v1, const Limits& lim
   const detail::CrossingStart cs_out =
       detail::crossing_start(-g * start.v, -g * start.a, lim, true);
   const auto h = [&](double level, double& slope, double& curve) {
-    r = make(start, g, level, v1, lim, &cs_out);
+    double reach = 0.0;
+    make_into(r, start, g, level, v1, lim, reach, &cs_out);
     last = level;
     reach_slope(r, level, lim.j_max, slope, curve);
-    h_last = d - reach(start, r, g);
+    h_last = d - reach;
     return h_last;
   };
-  double slope = 0.0;
-  double curve = 0.0;
-  const double h_top = h(lim.v_max, slope, curve);
+  // One sample of h: the level, h there and its slope and curvature (NaN where unknown).
+  struct Sample {
+    double level = 0.0;  // [mm/s]
+    double h = 0.0;      // [mm]
+    double slope = 0.0;  // [s]
+    double curve = 0.0;  // [s^2/mm]
+  };
+  const auto sample = [&](double level) {
+    Sample s{level, 0.0, 0.0, 0.0};
+    s.h = h(level, s.slope, s.curve);
+    return s;
+  };
+  const Sample top = sample(lim.v_max);
   double level = lim.v_max;
-  if (h_top > 0.0) {
+  if (top.h > 0.0) {
     // The bracket of the highest feasible level: h rises on [max(u_zero, 0), V] and has one
     // hump on (0, u_zero) (the file's note), so the piece above a feasible kink, else the
-    // piece below it.
-    double hi = lim.v_max;
-    double h_hi = h_top;
-    double s_hi = slope;
-    double c_hi = curve;
-    double lo = 0.0;
-    double h_lo = 0.0;
-    double s_lo = 0.0;
-    double c_lo = 0.0;
+    // piece below it. `hi` is infeasible (h > 0); `lo`, once known, feasible (h <= 0).
+    Sample hi = top;
+    Sample lo;
     bool lo_known = false;
     const double u0 = -g * start.v;
     const double b0 = -g * start.a;
     const double u_zero = u0 + b0 * std::abs(b0) / (2.0 * lim.j_max);
     if (u_zero > 0.0 && u_zero < lim.v_max) {
-      const double h_kink = h(u_zero, slope, curve);
-      if (h_kink <= 0.0) {
-        lo = u_zero;
-        h_lo = h_kink;
-        s_lo = slope;
-        c_lo = curve;
-        lo_known = true;
-      } else {
-        hi = u_zero;
-        h_hi = h_kink;
-        s_hi = slope;
-        c_hi = curve;
-      }
+      const Sample kink = sample(u_zero);
+      lo_known = kink.h <= 0.0;
+      (lo_known ? lo : hi) = kink;
     }
     if (!lo_known) {
-      h_lo = h(0.0, slope, curve);
-      s_lo = slope;
-      c_lo = curve;
-      if (!(h_lo < 0.0)) return Status::not_supported;  // no detour needed (or none helps)
+      lo = sample(0.0);
+      if (!(lo.h < 0.0)) return Status::not_supported;  // no detour needed (or none helps)
     }
     const double tol = 8.0 * kEps * std::abs(d);
-    level = detail::solve_with_curve(lo, hi, h_lo, h_hi, s_lo, s_hi, c_lo, c_hi, tol, h);
+    level = detail::solve_with_curve(lo.level, hi.level, lo.h, hi.h, lo.slope, hi.slope, lo.curve,
+                                     hi.curve, tol, h);
     if (!(level > 0.0)) return Status::not_supported;
-    if (last != level) h(level, slope, curve);
+    if (last != level) sample(level);
   }
   out = r;
   const double h_level = h_last;
@@ -217,9 +218,10 @@ Status reversal_of_duration(const State& start, double p1, double v1, double dur
   Reversal r;
   bool feasible = false;  // of the last level evaluated
   const auto timed = [&](double level, double& slope) {
-    r = make(start, g, level, v1, lim);
+    double reach = 0.0;
+    make_into(r, start, g, level, v1, lim, reach);
     slope = std::numeric_limits<double>::quiet_NaN();
-    const double rest = reach(start, r, g) - d;
+    const double rest = reach - d;
     feasible = !(rest < -tol_rest);
     if (!feasible) return -duration;  // infeasible: counted on the fast side
     r.out.t_cruise = rest > tol_rest ? rest / level : 0.0;
