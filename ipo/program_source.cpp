@@ -242,6 +242,14 @@ bool ProgramSource::pull(Item& out) {
     if (store_ != nullptr)
       for (const auto& [name, value] : interp_.take_ve_writes())
         store_->write(name, value);
+    // --- static-blend: a part held for its tolerance ball goes out before anything that is not
+    // the next path block (program_static.cpp); that command is taken again at the next pull.
+    if (xv_held_ && (!cmd || !std::holds_alternative<interp::Motion>(cmd->body))) {
+      if (cmd) held_ = std::move(cmd);
+      out = std::move(*xv_held_);
+      xv_held_.reset();
+      return true;
+    }
     if (!cmd) {
       if (const core::Diagnostic* e = interp_.error()) error_ = *e;
       return false;
