@@ -69,10 +69,12 @@ StaticRun run(const std::string& program, double belt) {
 
 // Two lines against the belt (+X) joined by a ball of radius `dev` at their corner (line 5):
 // `first` from X0 Y0, then to X-200 Y0 (the corner at Y-100).
-std::string program(const char* conv_vel, const char* dev, const char* word, const char* first) {
+// `between`: blocks between the two lines ("" none).
+std::string program(const char* conv_vel, const char* dev, const char* word, const char* first,
+                    const std::string& between = "") {
   return std::string("%t\nN10 #SYNC IN [CONV_VEL=") + conv_vel +
          "]\nN20 G01 X0 Y0 F100\nN30 #CONTOUR MODE [DEV PATH_DEV=" + dev + "]\nN40 " + word +
-         " G01 " + first + "\nN50 G01 X-200 Y0\nN60 #SYNC OUT\nN70 M30\n";
+         " G01 " + first + "\n" + between + "N50 G01 X-200 Y0\nN60 #SYNC OUT\nN70 M30\n";
 }
 
 // Largest MCS excursion of the virtual X while the path is past Y = -20 on the contour (both
@@ -100,11 +102,20 @@ TEST_CASE("x_virtual: the virtual X stands still in MCS through a tolerance ball
   // jerk-limited replan with the entry's planned deceleration and jerk, so the path slows down
   // into the ball a little late (measured 0.023 mm on the steep joint); before, the virtual X
   // moved by 4 to 14 mm over such balls (docs/conveyor.md "Blends on a static unit").
+  // An M function between the two blocks rides on the second one: the ball is the same.
+  struct Contour {
+    const char* first;
+    const char* between;
+  };
   for (const std::string word : {"G261", "G61"}) {
-    for (const std::string first : {"X-100 Y-100", "X-50 Y-100"}) {
+    for (const Contour& k : {Contour{"X-100 Y-100", ""}, Contour{"X-50 Y-100", ""},
+                             Contour{"X-50 Y-100", "N45 M08\n"}}) {
       CAPTURE(word);
+      const std::string first = k.first;
+      const std::string between = k.between;
       CAPTURE(first);
-      const StaticRun r = run(program("3600", "20", word.c_str(), first.c_str()), 50.0);
+      CAPTURE(between);
+      const StaticRun r = run(program("3600", "20", word.c_str(), k.first, k.between), 50.0);
       REQUIRE(r.status == ipo::Status::finished);
       CHECK(r.source_error.empty());
       CHECK_FALSE(r.error);
