@@ -9,6 +9,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/expect.sh"
 squares=$root/programs/conveyor_squares/conveyor_squares.nc
 comoving=$root/programs/synchro_lag_comoving/synchro_lag_comoving.nc
 static=$root/programs/synchro_lag_static/synchro_lag_static.nc
+static_repaired=$root/programs/synchro_lag_static_repaired/synchro_lag_static_repaired.nc
 
 # conveyor_squares: three sheets 600 mm apart at 100 mm/s: 6 s per sheet once the loop runs.
 expect "time: one row per workpiece, waiting / catch-up / machining / desync / off belt" 0 \
@@ -73,6 +74,13 @@ expect "tune-delay: the static part is near zero with the proposal" 0 \
 expect "tune-delay: the static unit's synchro_lag listing is measured up to its NC9100" 0 \
   '^tune-delay: with the machine.s P-AXIS-00626 = 17455 us: .* over 166 synchronised cycles' '' \
   -- tune-delay "$static"
+# Its repair (a 30 mm ball, the approach three times as long) runs through with the virtual X
+# still. Along the contour synchro_lag is -0.300 mm = 200 mm/s x 1.5 ms, i.e. dead time + filter
+# delay (18955 us) exactly; the path's start from rest after the catch-up (+0.41 mm at first)
+# lifts the mean to -0.288 mm, so the proposal lands up to ~100 us below 18955 (18896 us).
+expect "tune-delay: the static unit's repaired synchro_lag listing gets dead time + filter delay" 0 \
+  '^tune-delay: proposed P-AXIS-00626 conv_sync\.delay_time = 18(8[5-9]|9[0-5])[0-9] us' '' -- \
+  tune-delay "$static_repaired"
 expect "tune-delay: a machine without conveyor tracking: NC9126, exit 2" 2 '' '\[NC9126\]' -- \
   tune-delay --machine "$root/machines/portal_3x" "$squares"
 # --- hold: the ids without a test (issue 14)
