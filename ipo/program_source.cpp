@@ -242,6 +242,24 @@ bool ProgramSource::pull(Item& out) {
     if (store_ != nullptr)
       for (const auto& [name, value] : interp_.take_ve_writes())
         store_->write(name, value);
+    // --- static-blend: a part held for its tolerance ball goes out before anything that is not
+    // the next path block (program_static.cpp); that command is taken again at the next pull.
+    // Commands that emit nothing and do not stop the path keep it held: an event riding on the
+    // next block (an M function) that will not fill the event queue, a message, M00 / M01,
+    // #CAXTRACK (the held part is tracked already).
+    if (xv_held_) {
+      const bool passes = cmd && ((is_channel_event(cmd->body) && !stops_path(cmd->body) &&
+                                   !syn_wait_ && tag_ + 1 - given_ < kMaxPendingEvents) ||
+                                  std::holds_alternative<interp::Message>(cmd->body) ||
+                                  std::holds_alternative<interp::ProgramStop>(cmd->body) ||
+                                  std::holds_alternative<interp::CaxTrack>(cmd->body));
+      if (!passes && (!cmd || !std::holds_alternative<interp::Motion>(cmd->body))) {
+        if (cmd) held_ = std::move(cmd);
+        out = std::move(*xv_held_);
+        xv_held_.reset();
+        return true;
+      }
+    }
     if (!cmd) {
       if (const core::Diagnostic* e = interp_.error()) error_ = *e;
       return false;

@@ -216,6 +216,12 @@ class ProgramSource final : public Source {
   std::vector<planner::AxisLimits> xv_limits_;  ///< the planner's limits (NC9100)
   std::vector<std::string> xv_names_;           ///< interpolated axis names
   std::optional<double> xv_tangent_;            ///< XY tangent at the last block's end [deg]
+  /// --- static-blend: the last part of a block that ends in a tolerance ball (G61 / G261),
+  /// held until the next path part is known (blend_belt_feed raises both feeds), then queued;
+  /// queued as it is before any other command's items (xv_release()).
+  std::optional<planner::Move> xv_held_;
+  /// Queues xv_held_ (if any) as it is.
+  void xv_release();
   // --- end static-saw
 };
 

@@ -6,7 +6,8 @@
 // a 0 s Dwell that stops the path, before it; while a static unit (P-CHAN-00364 = 1) is
 // synchronised, every block gets the belt feed (ipo/x_virtual.hpp) and the static unit's
 // errors NC9100..NC9102 are raised at the block's line. The results are queued and handed out
-// before the next command (pull()).
+// before the next command (pull()); --- static-blend: a part that ends in a tolerance ball waits
+// for the next path part (xv_held_), so that both feeds can be raised for the ball.
 
 #include <cmath>
 #include <cstdio>
@@ -97,6 +98,12 @@ void ProgramSource::static_sync(const interp::CommandBody& body) {
   xv_tangent_.reset();
 }
 
+void ProgramSource::xv_release() {
+  if (!xv_held_) return;
+  queue_.push_back(std::move(*xv_held_));
+  xv_held_.reset();
+}
+
 void ProgramSource::static_dwell(std::uint32_t line) {
   if (xv_)
     fail_with(line, kXvStopId,
@@ -163,8 +170,19 @@ void ProgramSource::emit_path(planner::Move mv) {
     }
     XvOutcome o = belt_feed(m, *xv_, xv_limits_, xv_names_);
     if (o.error) fail_with(m.line, o.error->id, o.error->message);
-    for (planner::Move& part : o.moves)
-      queue_.push_back(std::move(part));
+    for (std::size_t k = 0; k < o.moves.size(); ++k) {
+      planner::Move& part = o.moves[k];
+      if (xv_held_) {  // --- static-blend: the ball after the held part, raised feeds
+        if (auto e = blend_belt_feed(*xv_held_, part, *xv_, xv_limits_, xv_names_))
+          fail_with(xv_held_->line, e->id, e->message);
+        xv_release();
+      }
+      // Inner joints of a split block are tangent (no ball); its last part waits for the next.
+      if (k + 1 == o.moves.size() && part.contour != planner::Contour::none)
+        xv_held_ = std::move(part);
+      else
+        queue_.push_back(std::move(part));
+    }
     // A block blended into the next (G61 / G261) leaves a smooth joint: no corner check there.
     xv_tangent_.reset();
     if (t && m.contour == planner::Contour::none) xv_tangent_ = t->second;

@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "ipo/caxtrack.hpp"
+#include "planner/blend.hpp"
 #include "planner/limits.hpp"
 #include "planner/path.hpp"
 
@@ -143,11 +144,11 @@ std::optional<XvError> finish(planner::Move& mv, double length, const XVirtualPa
   mv.rapid = false;
   mv.block_time.reset();
   mv.end_feed.reset();
-  mv.feed = p.v_belt * length / std::fabs(dx);
-
-  // An arc part: the path velocity the belt needs where its X share is smallest (the tangent
-  // turning towards perpendicular to the belt) must be allowed too.
-  const double need = std::max(mv.feed, peak_feed);
+  // --- static-blend: a curved part is planned at the velocity its steepest point needs (its
+  // smallest X share), so the plan is nowhere slower than the belt asks; where it is faster the
+  // channel's velocity cap brings the X component down to the belt's (ipo/channel_static.cpp).
+  mv.feed = std::max(p.v_belt * length / std::fabs(dx), peak_feed);
+  const double need = mv.feed;
   planner::Move probe = mv;  // the planner caps at the programmed feed: ask for `need`
   probe.feed = need;
   const planner::Segment seg = planner::Segment::from_move(probe);
@@ -244,13 +245,60 @@ XvOutcome belt_feed(const planner::Move& mv, const XVirtualParams& p,
       continue;
     }
     const double length = arc ? arc_length(part, p) : spline_length(part, p);
-    if (auto e = finish(part, length, p, limits, names, arc ? p.v_belt / lo : 0.0)) {
+    if (auto e = finish(part, length, p, limits, names, p.v_belt / lo)) {
       out.error = std::move(e);
       return out;
     }
     out.moves.push_back(std::move(part));
   }
   return out;
+}
+
+std::optional<XvError> blend_belt_feed(planner::Move& in, planner::Move& out,
+                                       const XVirtualParams& p,
+                                       std::span<const planner::AxisLimits> limits,
+                                       std::span<const std::string> names) {
+  constexpr int kBallSamples = 64;  // X-share samples over the ball
+  const planner::Segment a = planner::Segment::from_move(in);
+  const planner::Segment b = planner::Segment::from_move(out);
+  // As planner::Preparer::push_path: each side gives at most half of its part.
+  const std::optional<planner::Blend> ball =
+      planner::make_blend(a, b, in.path_dev, a.length() / 2, b.length() / 2);
+  if (!ball) return std::nullopt;
+  const auto x = static_cast<std::size_t>(p.x);
+  double lo = 1e300;  // smallest X share over the ball
+  for (int k = 0; k <= kBallSamples; ++k) {
+    const planner::PathPoint q =
+        ball->curve.at(ball->curve.length() * static_cast<double>(k) / kBallSamples);
+    double sum = 0.0;
+    for (std::size_t i = 0; i < in.axis_count; ++i)
+      if (metric(p, i)) sum += q.d1[i] * q.d1[i];
+    if (q.d1[x] * p.sign >= 0.0 || sum <= 0.0)
+      return XvError{kXvDirectionId,
+                     format("x_virtual: the tolerance ball (G61/G261, radius %.6g mm) turns the "
+                            "path along the conveying direction near X = %.6g mm (004 l.439)",
+                            ball->radius, q.x[x])};
+    lo = std::min(lo, std::fabs(q.d1[x]) / std::sqrt(sum));
+  }
+  const double need = p.v_belt / lo;  // path velocity where the ball runs steepest [mm/s]
+  in.feed = std::max(in.feed, need);
+  out.feed = std::max(out.feed, need);
+  planner::Move probe = in;  // the ball as the planner plans it, asked for `need`
+  probe.feed = need;
+  const planner::PathLimits pl = planner::path_limits(ball->curve, probe, limits);
+  if (pl.v_max >= need * (1.0 - 1e-9)) return std::nullopt;
+  const char* what = pl.limit == planner::VelocityLimit::axis_velocity ? "velocity"
+                     : pl.limit == planner::VelocityLimit::centripetal ? "acceleration"
+                                                                       : "jerk";
+  const std::size_t axis = std::min<std::size_t>(pl.limiting_axis, names.size() - 1);
+  char buf[480];
+  std::snprintf(buf, sizeof buf,
+                "x_virtual: a belt at %.6g mm/s (1.1 x CONV_VEL, the fastest before 50653) needs a "
+                "path velocity of %.6g mm/s in the tolerance ball (G61/G261, radius %.6g mm) "
+                "here; axis %s's %s allows only %.6g mm/s there: a dynamic error, the belt cannot "
+                "be slowed (004 l.440, l.621)",
+                p.v_belt, need, ball->radius, names[axis].c_str(), what, pl.v_max);
+  return XvError{kXvTooFastId, buf};
 }
 
 }  // namespace ncsim::ipo

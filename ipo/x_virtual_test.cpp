@@ -118,3 +118,56 @@ TEST_CASE("NC9100: a belt too fast for Y's acceleration on the curve is a dynami
   const auto ok = belt_feed(m, fast, big, kNames);
   CHECK_MESSAGE(!ok.error, (ok.error ? ok.error->message : std::string()));
 }
+
+TEST_CASE("a tolerance ball raises both neighbours' feeds to the belt feed of its steepest point") {
+  using ncsim::ipo::blend_belt_feed;
+  using ncsim::ipo::line_belt_feed;
+  const XVirtualParams p{0, 1.0, 66.0, 0b111};
+  SUBCASE("+-45 deg: the ball's X share is 0.707 at its ends, its lines' own; feeds kept") {
+    Move in = line(0, 0, -100, -100);
+    in.contour = ncsim::planner::Contour::tolerance;
+    in.path_dev = 20.0;
+    Move out = line(-100, -100, -200, 0);
+    in.feed = line_belt_feed(in, p);
+    out.feed = line_belt_feed(out, p);
+    const auto e = blend_belt_feed(in, out, p, limits(), kNames);
+    CHECK_FALSE(e);
+    CHECK(in.feed == doctest::Approx(66.0 * std::sqrt(2.0)).epsilon(1e-6));
+    CHECK(out.feed == doctest::Approx(66.0 * std::sqrt(2.0)).epsilon(1e-6));
+  }
+  SUBCASE("steep (X share 0.447) into flat (0.832): the flat line is raised to the steep one's") {
+    Move in = line(0, 0, -50, -100);
+    in.contour = ncsim::planner::Contour::tolerance;
+    in.path_dev = 20.0;
+    Move out = line(-50, -100, -200, 0);
+    in.feed = line_belt_feed(in, p);
+    out.feed = line_belt_feed(out, p);
+    const double steep = in.feed;
+    CHECK(out.feed < 0.6 * steep);
+    const auto e = blend_belt_feed(in, out, p, limits(), kNames);
+    CHECK_FALSE(e);
+    CHECK(in.feed == doctest::Approx(steep).epsilon(1e-3));  // the ball's steepest: its start
+    CHECK(out.feed == doctest::Approx(in.feed));
+  }
+  SUBCASE("a 2 mm ball for a belt at 330 mm/s: Y cannot turn the path that fast, NC9100") {
+    const XVirtualParams fast{0, 1.0, 330.0, 0b111};
+    Move in = line(0, 0, -100, -100);
+    in.contour = ncsim::planner::Contour::tolerance;
+    in.path_dev = 2.0;
+    Move out = line(-100, -100, -200, 0);
+    const auto e = blend_belt_feed(in, out, fast, limits(), kNames);
+    REQUIRE(e);
+    CHECK(std::string(e->id) == "NC9100");
+    CHECK(e->message.find("tolerance ball") != std::string::npos);
+    CHECK(e->message.find("axis Y") != std::string::npos);
+  }
+  SUBCASE("collinear blocks get no ball: nothing changes") {
+    Move in = line(0, 0, -100, -100);
+    in.contour = ncsim::planner::Contour::tolerance;
+    Move out = line(-100, -100, -200, -200);
+    in.feed = out.feed = 5.0;
+    CHECK_FALSE(blend_belt_feed(in, out, p, limits(), kNames));
+    CHECK(in.feed == 5.0);
+    CHECK(out.feed == 5.0);
+  }
+}
