@@ -18,10 +18,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "ipo/program_source.hpp"
+#include "ipo/trafo_sync.hpp"
 #include "planner/joint_limits.hpp"
 #include "planner/path.hpp"
 
@@ -81,10 +84,7 @@ void ProgramSource::check_workspace(const planner::Move& move, std::uint32_t lin
 
 namespace {
 
-constexpr double kBeltMargin = 1.1;      // 50653 lets the belt run 10 % above CONV_VEL
-constexpr int kBeltShareSamples = 32;    // samples along the block, at most
-constexpr int kBeltShareShifts = 9;      // belt positions across the workspace
-constexpr double kBeltShareStep = 0.05;  // finite-difference step [mm]
+constexpr double kBeltMargin = 1.1;  // 50653 lets the belt run 10 % above CONV_VEL
 
 }  // namespace
 
@@ -93,73 +93,41 @@ void ProgramSource::reserve_belt_share(planner::Move& move, std::uint32_t line) 
       !(belt_conv_vel_ > 0.0))
     return;  // G00 keeps the joints' rapid rule, G93 its time (docs/conveyor.md)
   const machines::ConveyorSyncChannel& conv = *machine_.channel.conveyor;
+  BeltCarry carry;
   const Eigen::Vector3d dir = conv.t0().rotation.col(0);  // PCS0 +X in MCS
-  const planner::Segment seg = planner::Segment::from_move(move);
-  const double length = seg.length();
-  if (!(length > 0.0)) return;
-  const std::array<int, 3>& xyz = trafo_->xyz;
-  const planner::JointMap& ik = trafo_->limits.inverse;
-  const std::vector<planner::AxisLimits>& joints = trafo_->limits.joints;
-  const double share_v = kBeltMargin * belt_conv_vel_;
-  const int n = std::clamp(static_cast<int>(std::ceil(length / 5.0)), 4, kBeltShareSamples);
-  double cap = move.feed;
-  for (int k = 0; k <= n; ++k) {
-    const double s = length * static_cast<double>(k) / n;
-    const planner::AxisVec p = seg.point(s);
-    const planner::AxisVec pa = seg.point(std::max(0.0, s - kBeltShareStep));
-    const planner::AxisVec pb = seg.point(std::min(length, s + kBeltShareStep));
-    const double ds = std::min(length, s + kBeltShareStep) - std::max(0.0, s - kBeltShareStep);
-    // Where the belt may carry this point while synchronised: along the conveying direction
-    // across the configured workspace (004 l.687: it must be configured under kinematics).
-    Eigen::Vector3d at = Eigen::Vector3d::Zero();
-    for (std::size_t a = 0; a < 3; ++a)
-      if (xyz[a] >= 0) at[static_cast<Eigen::Index>(a)] = p[static_cast<std::size_t>(xyz[a])];
-    double t_lo = 0.0, t_hi = 0.0;
-    if (conv.workspace_configured) {
-      t_lo = t_hi = 0.0;
-      bool first = true;
-      for (int c = 0; c < 8; ++c) {
-        const Eigen::Vector3d corner((c & 1) ? conv.workspace.upper[0] : conv.workspace.lower[0],
-                                     (c & 2) ? conv.workspace.upper[1] : conv.workspace.lower[1],
-                                     (c & 4) ? conv.workspace.upper[2] : conv.workspace.lower[2]);
-        const double t = (corner - at).dot(dir);
-        t_lo = first ? t : std::min(t_lo, t);
-        t_hi = first ? t : std::max(t_hi, t);
-        first = false;
-      }
-    }
-    for (int m = 0; m < kBeltShareShifts; ++m) {
-      const double t =
-          kBeltShareShifts == 1 ? 0.0 : t_lo + (t_hi - t_lo) * m / (kBeltShareShifts - 1);
-      auto shifted = [&](planner::AxisVec x, double extra) {
-        for (std::size_t a = 0; a < 3; ++a)
-          if (xyz[a] >= 0)
-            x[static_cast<std::size_t>(xyz[a])] += (t + extra) * dir[static_cast<Eigen::Index>(a)];
-        return x;
-      };
-      planner::AxisVec qa{}, qb{}, qm{}, qp{};
-      if (!ik(shifted(pa, 0.0), qa) || !ik(shifted(pb, 0.0), qb) ||
-          !ik(shifted(p, -kBeltShareStep), qm) || !ik(shifted(p, kBeltShareStep), qp))
-        continue;  // the belt cannot carry the block there (the run stops it: NC3201)
-      for (std::size_t i = 0; i < joints.size(); ++i) {
-        const double dq_ds = std::fabs(qb[i] - qa[i]) / ds;
-        const double dq_belt = std::fabs(qp[i] - qm[i]) / (2.0 * kBeltShareStep);
-        const double left = joints[i].v_max - share_v * dq_belt;
-        if (!(left > 0.0)) {
-          char what[260];
-          std::snprintf(what, sizeof what,
-                        "the belt at 1.1 x CONV_VEL (%.6g mm/s) alone needs %.6g of joint %s's "
-                        "V %.6g (P-AXIS-00212) at TCP X%.6g Y%.6g Z%.6g (PCS1 moved %.6g mm "
-                        "along the belt) under #TRAFO ON",
-                        share_v, share_v * dq_belt, machine_.axes[axes_[i]].name.c_str(),
-                        joints[i].v_max, at[0], at[1], at[2], t);
-          fail_with(line, "NC6211", what);
-        }
-        if (dq_ds > 1e-12) cap = std::min(cap, left / dq_ds);
-      }
-    }
+  carry.e = {dir[0], dir[1], dir[2]};
+  carry.v_belt = kBeltMargin * belt_conv_vel_;
+  // Where the belt may carry the block while synchronised: forward from the latch to the
+  // configured workspace's face (004 l.687: it must be configured under kinematics; belt_share).
+  if (conv.workspace_configured)
+    carry.workspace = {
+        {{conv.workspace.lower[0], conv.workspace.lower[1], conv.workspace.lower[2]},
+         {conv.workspace.upper[0], conv.workspace.upper[1], conv.workspace.upper[2]}}};
+  const std::variant<BeltShare, BeltOverload> share =
+      belt_share(planner::Segment::from_move(move), move.feed, trafo_->limits.inverse, trafo_->xyz,
+                 trafo_->limits.joints, carry);
+  if (const auto* over = std::get_if<BeltOverload>(&share)) {
+    const char* what = over->quantity == 'v'   ? "V %.6g (P-AXIS-00212)"
+                       : over->quantity == 'a' ? "A %.6g (the smaller of P-AXIS-00001 / 00002)"
+                                               : "J %.6g (P-AXIS-00001 / 00002 over their ramps)";
+    char limit[80];
+    std::snprintf(limit, sizeof limit, what, over->limit);
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "the belt at 1.1 x CONV_VEL (%.6g mm/s) %s %.6g of joint %s's %s at TCP X%.6g "
+                  "Y%.6g Z%.6g (PCS1 moved %.6g mm along the belt) under #TRAFO ON",
+                  carry.v_belt, over->quantity == 'v' ? "alone needs" : "takes", over->needed,
+                  machine_.axes[axes_[over->joint]].name.c_str(), limit, over->tcp[0], over->tcp[1],
+                  over->tcp[2], over->shift);
+    fail_with(line, "NC6211", text);
   }
-  move.feed = cap;
+  const BeltShare& s = std::get<BeltShare>(share);
+  move.feed = s.feed;
+  const auto taken = [](const planner::AxisVec& x) {
+    return std::any_of(x.begin(), x.end(), [](double y) { return y > 0.0; });
+  };
+  if (taken(s.joints.a) || taken(s.joints.j))
+    move.belt_joints = std::make_shared<const planner::JointShare>(s.joints);
 }
 
 }  // namespace ncsim::ipo

@@ -171,10 +171,12 @@ class ProgramSource final : public Source {
   /// (NC3201 / NC3202) at its line.
   void check_workspace(const planner::Move& move, std::uint32_t line);
   [[noreturn]] void fail_with(std::uint32_t line, const std::string& id, const std::string& what);
-  /// A transformed G01 / G02 / G03 Move in PCS1: its F is capped so that every joint keeps
-  /// the belt's share (1.1 x CONV_VEL, the 50653 margin) of its V wherever the belt carries the
-  /// block inside the conveyor workspace (docs/conveyor.md "Conveyor tracking under #TRAFO
-  /// ON"); NC6211 when the belt alone needs more than a joint's V.
+  /// A transformed G01 / G02 / G03 Move in PCS1: the belt's share (1.1 x CONV_VEL, the 50653
+  /// margin) of the joints wherever the belt can carry the block (forward from the latch, inside
+  /// the conveyor workspace): its F capped for the joints' V (and by the acceleration and jerk
+  /// shares' bisection), the a and j shares in Move::belt_joints (ipo::belt_share,
+  /// docs/conveyor.md "Machining in PCS1"); NC6211 when the belt alone needs a joint's V or its
+  /// share with the path at rest leaves a joint less than 1 % of its A or J.
   void reserve_belt_share(planner::Move& move, std::uint32_t line);
   std::optional<MachineTrafo> trafo_;  ///< the machine's kinematic, built at the first #TRAFO
   bool trafo_on_ = false;              ///< #TRAFO ON as handed out

@@ -2,16 +2,20 @@
 // #TRAFO ON"): the delta picker (#KIN ID[37]) catches a workpiece up as a TCP motion whose
 // dynamics come from the joints, follows it with the PCS1 offset applied to the TCP before the
 // kinematic, and leaves it again; G00 in PCS1 on slow drives; the per-cycle joint check of the
-// warning NC6210.
+// warning NC6210; the belt's share of the joints' acceleration and jerk on a PCS1 block
+// (ipo::belt_share: the travel it covers, the overload behind NC6211).
 
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <random>
+#include <span>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "core/source_file.hpp"
@@ -269,4 +273,142 @@ TEST_CASE("the catch-up's TCP dynamics keep every joint inside its own at the po
   CHECK(worst[2] <= 1.0 + 1e-3);
   for (const double w : worst)
     CHECK(w > 0.5);  // the bound is used, not wasted
+}
+
+TEST_CASE("a PCS1 block the belt carries towards the far side keeps the joints' a and j") {
+  // docs/conveyor.md "Machining in PCS1": the belt carries the block while it runs; the joints
+  // see q(s, b) = IK(x(s) + b e), whose belt terms (2 q_sb v w + q_bb w^2 in the acceleration,
+  // 3 q_ssb v^2 w + 3 q_sbb v w^2 + q_bbb w^3 + 3 q_sb a w in the jerk) and whose growth of the
+  // path's own terms the planner does not see at belt travel 0. The block runs after a dwell of
+  // 0.5 s in PCS1 (the belt carries it 150 / 250 mm further) from X-450 down to Z-880, where
+  // the inverse is most curved. Without the acceleration and jerk shares (the velocity cap
+  // alone) the joints' jerk reached 135.4 % (300 mm/s) and 152.6 % (500 mm/s) of J here, 69 /
+  // 122 audit violations (measured); with them 70.4 % and 79.8 %, none.
+  const double belts[] = {300.0, 500.0};  // [mm/s]
+  for (const double belt : belts) {
+    const std::string program =
+        "%t\nN10 #KIN ID[37]\nN20 #TRAFO ON\nN30 G01 X-400 Y0 Z-700 F60000\n"
+        "N40 #SYNC IN [CONV_VEL=" +
+        std::to_string(static_cast<int>(belt * 60.0)) +
+        "]\nN50 G01 X-450 Y0 Z-700 F60000\nN55 G04 0.5\nN60 G01 X-200 Y-200 Z-880 F60000\n"
+        "N70 G04 0.05\nN80 #SYNC OUT\nN90 M30\n";
+    CAPTURE(program);
+    ipo::test::FakePort port(belt);
+    port.latch_at_ = 100;
+    const Tracked r = track(program, &port);
+    if (!r.source_error.empty()) MESSAGE(r.source_error);
+    REQUIRE(r.status == ipo::Status::finished);
+    REQUIRE_FALSE(r.error);
+    double a = 0.0, j = 0.0;  // the block's largest joint |a| / A and |j| / J
+    std::size_t cycles = 0;
+    for (std::size_t k = 0; k < r.joints.size(); ++k) {
+      if (r.phase[k] != ipo::SyncPhase::tracking || r.line[k] != 8) continue;
+      ++cycles;
+      for (std::size_t i = 0; i < 3; ++i) {
+        a = std::max(a, std::fabs(r.joints[k].a[i]) / 20000.0);
+        j = std::max(j, std::fabs(r.joints[k].j[i]) / 500000.0);
+      }
+    }
+    MESSAGE("belt " << belt << " mm/s: joint |a| / A " << a << ", |j| / J " << j);
+    for (const auto& v : r.verdict.violations)
+      MESSAGE("violation: axis " << int(v.axis) << " joint " << v.joint << " value " << v.value
+                                 << " limit " << v.limit << " t " << v.t);
+    CHECK(cycles > 100);
+    CHECK(j > 0.5);  // the block uses the joints' jerk
+    CHECK(j <= 1.0 + 1e-3);
+    CHECK_FALSE(r.warning);
+    CHECK(r.verdict.violation_count == 0);
+  }
+}
+
+namespace {
+
+// The block of the test above at belt travel 0 (MCS), on the picker's transform.
+struct ShareRig {
+  machines::Machine m = picker();
+  ipo::ChannelConfig cfg = ipo::channel_config(m, kT);
+  std::optional<ipo::MachineTrafo> trafo = ipo::machine_trafo(m, cfg.path);
+  planner::Move move;
+  ShareRig() {
+    move.axis_count = static_cast<std::uint8_t>(cfg.path.axes.size());
+    move.start[0] = -450.0;
+    move.start[1] = 0.0;
+    move.start[2] = -700.0;
+    move.end = move.start;
+    move.end[0] = -200.0;
+    move.end[1] = -200.0;
+    move.end[2] = -880.0;
+    move.feed = 1000.0;
+    move.transformed = true;
+  }
+  std::variant<ipo::BeltShare, ipo::BeltOverload> share(
+      const ipo::BeltCarry& carry, std::span<const planner::AxisLimits> joints) const {
+    return ipo::belt_share(planner::Segment::from_move(move), move.feed, trafo->limits.inverse,
+                           trafo->xyz, joints, carry);
+  }
+  std::variant<ipo::BeltShare, ipo::BeltOverload> share(const ipo::BeltCarry& carry) const {
+    return share(carry, trafo->limits.joints);
+  }
+};
+
+ipo::BeltCarry carry_in(double x_lo, double x_hi) {
+  ipo::BeltCarry c;
+  c.v_belt = 550.0;  // 1.1 x CONV_VEL 30000 mm/min
+  c.workspace = {{{x_lo, -600.0, -900.0}, {x_hi, 600.0, 0.0}}};
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("the belt's share covers the travel from the latch forward to the workspace's face") {
+  // docs/conveyor.md "Machining in PCS1": the belt only moves forward (travel b >= 0 since the
+  // latch) and carries a point no further than the face in the conveying direction (NC9052
+  // beyond): the shares are taken over that travel alone.
+  const ShareRig rig;
+  REQUIRE(rig.trafo);
+  const auto full = rig.share(carry_in(-600.0, 600.0));
+  const auto behind = rig.share(carry_in(-2000.0, 600.0));  // the box reaches far behind
+  const auto near = rig.share(carry_in(-600.0, -199.0));    // the face just past the block
+  REQUIRE(std::holds_alternative<ipo::BeltShare>(full));
+  REQUIRE(std::holds_alternative<ipo::BeltShare>(behind));
+  REQUIRE(std::holds_alternative<ipo::BeltShare>(near));
+  const ipo::BeltShare& f = std::get<ipo::BeltShare>(full);
+  const ipo::BeltShare& b = std::get<ipo::BeltShare>(behind);
+  const ipo::BeltShare& n = std::get<ipo::BeltShare>(near);
+  double grows = 0.0;  // the largest ratio of a joint's jerk share, full travel over near
+  for (std::size_t i = 0; i < 3; ++i) {
+    CAPTURE(i);
+    MESSAGE("joint " << i << ": j share to the face at X-199 " << n.joints.j[i] << ", to X600 "
+                     << f.joints.j[i]);
+    CHECK(b.joints.a[i] == f.joints.a[i]);  // nothing behind the latch counts
+    CHECK(b.joints.j[i] == f.joints.j[i]);
+    CHECK(n.joints.j[i] <= f.joints.j[i]);
+    grows = std::max(grows, f.joints.j[i] / n.joints.j[i]);
+  }
+  CHECK(b.feed == f.feed);
+  CHECK(grows > 1.5);  // further travel, more curvature: the range matters
+}
+
+TEST_CASE("NC6211's overload: the belt's own jerk beyond a joint's J at a travel it reaches") {
+  // A share that leaves a joint less than 1 % of its J with the path at rest (the belt's own
+  // q_bbb w^3 and its cross term with the path's acceleration) cannot be met by any feed: the
+  // adapter refuses the block (NC6211, ipo/program_kinematics.cpp). With the joints' own J the
+  // same block has a share and a feed.
+  const ShareRig rig;
+  REQUIRE(rig.trafo);
+  std::vector<planner::AxisLimits> joints = rig.trafo->limits.joints;
+  const auto ok = rig.share(carry_in(-600.0, 600.0), joints);
+  REQUIRE(std::holds_alternative<ipo::BeltShare>(ok));
+  CHECK(std::get<ipo::BeltShare>(ok).feed > 0.0);
+  for (planner::AxisLimits& l : joints)
+    l.j_max = 2000.0;  // [deg/s^3]
+  const auto over = rig.share(carry_in(-600.0, 600.0), joints);
+  REQUIRE(std::holds_alternative<ipo::BeltOverload>(over));
+  const ipo::BeltOverload& o = std::get<ipo::BeltOverload>(over);
+  MESSAGE("joint " << o.joint << " " << std::string(1, o.quantity) << " " << o.needed << " of "
+                   << o.limit << " at X" << o.tcp[0] << " moved " << o.shift);
+  CHECK(o.quantity == 'j');
+  CHECK(o.needed >= 0.99 * o.limit);
+  CHECK(o.shift >= 0.0);
+  CHECK(o.tcp[0] + o.shift <= 600.0 + 1e-6);  // inside the workspace: a travel the run reaches
 }

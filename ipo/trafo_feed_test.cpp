@@ -228,6 +228,7 @@ TEST_CASE(
     state = state * 6364136223846793005ULL + 1442695040888963407ULL;
     return lo + (hi - lo) * static_cast<double>(state >> 11) * 0x1.0p-53;
   };
+  double jerk = 0.0;  // the largest joint |j| over its J
   for (int n = 0; n < 6; ++n) {
     const double f = uniform(0.0, 12000.0);  // [mm/min]
     const bool automatic = uniform(0.0, 1.0) < 0.25;
@@ -252,19 +253,15 @@ TEST_CASE(
     CHECK(v >= 0.0);
     CHECK(v <= (automatic ? feed / 60.0 : std::min(f, feed) / 60.0) * (1 + 1e-9));
     CHECK_FALSE(r.warning);
-    // The catch-up keeps every joint's v, a and j (the audit's own checks and tolerance): the
-    // TCP's jerk bound covers the transform's third-derivative term (ipo/trafo_sync.hpp).
-    // After the hand-over the PCS1 block runs with the belt on top: its joints' jerk share is
-    // not reserved (docs/conveyor.md "Machining in PCS1"), up to 1.8 % over J there (measured).
-    const double t_handover = r.t[r.handover];
-    for (const ipo::Violation& x : r.verdict.violations) {
-      CAPTURE(x.t);
-      CHECK(x.t >= t_handover);  // the hand-over cycle's setpoint is the path's
-      CHECK(x.joint);
-      CHECK(x.quantity == ipo::Quantity::jerk);
-      CHECK(x.value <= 1.02 * x.limit);
-    }
+    // Every joint keeps its v, a and j throughout (the audit's own checks and tolerance): the
+    // catch-up by its TCP dynamics (tcp_dynamics covers the third-derivative term), the PCS1
+    // block after the hand-over by the belt's share of the joints' velocity, acceleration and
+    // jerk reserved for it (belt-jerk: ipo::belt_share, docs/conveyor.md "Machining in PCS1").
+    CHECK(r.verdict.violation_count == 0);
+    for (const ipo::AxisAudit& j : r.verdict.joints)
+      if (j.j_limit > 0.0) jerk = std::max(jerk, std::max(j.j_closed, j.j_diff) / j.j_limit);
   }
+  MESSAGE("largest joint |j| / J over the runs: " << jerk);
 }
 
 TEST_CASE("#TRAFO ON, seeded: catch-ups met at rest keep every joint's v, a and j") {

@@ -68,6 +68,16 @@ void validate(const Move& move) {
       finite(move.spline->c2[i], [&] { return at() + "spline c2[" + std::to_string(i) + "]"; });
     }
   }
+  if (move.belt_joints) {  // --- belt-jerk
+    for (std::size_t i = 0; i < kMaxAxes; ++i) {
+      finite(move.belt_joints->a[i],
+             [&] { return at() + "belt_joints a[" + std::to_string(i) + "]"; });
+      finite(move.belt_joints->j[i],
+             [&] { return at() + "belt_joints j[" + std::to_string(i) + "]"; });
+      if (move.belt_joints->a[i] < 0.0 || move.belt_joints->j[i] < 0.0)
+        fail(at() + "belt_joints < 0 at joint " + std::to_string(i));
+    }
+  }
   if (move.arc && move.arc_plane) {
     const ArcPlane& g = *move.arc_plane;
     double uu = 0.0, vv = 0.0, uv = 0.0;
@@ -138,6 +148,18 @@ AxisLimits belt_limits(const AxisLimits& axis, double taken) noexcept {
   out.v_max = left(axis.v_max);
   out.v_reference = left(axis.v_reference);
   out.v_rapid = left(axis.v_rapid);
+  return out;
+}
+
+// --- belt-jerk
+AxisLimits belt_joint_limits(const AxisLimits& joint, double a, double j) noexcept {
+  const auto left = [](double limit, double taken) {
+    return taken > 0.0 ? std::max(limit - taken, 0.01 * limit) : limit;
+  };
+  AxisLimits out = joint;
+  out.a_max = left(joint.a_max, a);
+  out.d_max = left(joint.d_max, a);
+  out.j_max = left(joint.j_max, j);
   return out;
 }
 

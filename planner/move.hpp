@@ -71,6 +71,13 @@ struct SplineControl {
   AxisVec c2{};  ///< third control point [mm | deg]
 };
 
+/// --- belt-jerk: what a conveyor takes of each joint's acceleration and jerk on a PCS1 block
+/// under #TRAFO ON (docs/conveyor.md "Machining in PCS1"; ipo::belt_share).
+struct JointShare {
+  AxisVec a{};  ///< acceleration taken of joint i, >= 0 [deg/s^2 | mm/s^2]
+  AxisVec j{};  ///< jerk taken of joint i, >= 0 [deg/s^3 | mm/s^3]
+};
+
 /// One path block (a line, or an arc / helix when `arc` is set).
 struct Move {
   std::uint8_t axis_count = 3;        ///< machine axes in use, 1..kMaxAxes
@@ -106,6 +113,10 @@ struct Move {
   /// [mm/s]: the block is planned with v_max, v_reference and v_rapid lowered by it
   /// (belt_limits; 004 l.311-319, docs/conveyor.md "velocity split"); all 0 off the conveyor.
   AxisVec belt{};
+  /// --- belt-jerk: under #TRAFO ON while synchronised, the acceleration and jerk the conveyor
+  /// takes of each joint: the block is planned with the joints' limits lowered by them
+  /// (belt_joint_limits). Shared and immutable, as `spline`; null off the conveyor.
+  std::shared_ptr<const JointShare> belt_joints;
 };
 
 /// One machine axis's dynamics as the planner uses them (000 l.75, l.105-108, l.360).
@@ -130,6 +141,11 @@ AxisLimits rapid_limits(const AxisLimits& axis) noexcept;
 /// l.311-319): v_max, v_reference and v_rapid lowered by it, each kept at >= 1 % of itself;
 /// accelerations and jerk unchanged. taken 0: the axis as it is.
 AxisLimits belt_limits(const AxisLimits& axis, double taken) noexcept;
+
+/// --- belt-jerk: the limits of a joint of which a conveyor takes `a` >= 0 of the acceleration
+/// and `j` >= 0 of the jerk: a_max, d_max and j_max lowered by them, each kept at >= 1 % of
+/// itself (the adapter refuses a share that leaves less: NC6211); velocities unchanged.
+AxisLimits belt_joint_limits(const AxisLimits& joint, double a, double j) noexcept;
 
 /// Channel-wide planner settings.
 struct ChannelLimits {

@@ -109,8 +109,16 @@ const JointLimits* Preparer::joints_for(const Move& move) const {
 PathLimits Preparer::limits(const Segment& path, const Move& move) const {
   const JointLimits* joints = joints_for(move);
   if (joints == nullptr) return path_limits(path, move, axes_for(move));  // --- sync-feed
+  std::span<const AxisLimits> joint_limits = joints->joints;
+  if (move.belt_joints && joints->joints.size() <= belt_joints_.size()) {
+    // --- belt-jerk: a PCS1 block under #TRAFO ON: the belt's share taken off the joints.
+    for (std::size_t i = 0; i < joints->joints.size(); ++i)
+      belt_joints_[i] =
+          belt_joint_limits(joints->joints[i], move.belt_joints->a[i], move.belt_joints->j[i]);
+    joint_limits = std::span<const AxisLimits>(belt_joints_.data(), joints->joints.size());
+  }
   const std::optional<PathLimits> l =
-      path_limits(path, move, axes_for(move), joints->inverse, joints->joints);
+      path_limits(path, move, axes_for(move), joints->inverse, joint_limits);
   if (!l)
     throw KinematicError(move.line,
                          "the path leaves the workspace of the kinematic transform [NC3201]");

@@ -140,6 +140,8 @@ class Preparer {
   std::optional<JointLimits> joints_;  ///< set_joints()
   /// --- sync-feed: axes_for()'s limits of a Move on a conveyor (Move::belt), rewritten per call.
   mutable std::array<AxisLimits, kMaxAxes> belt_axes_{};
+  /// --- belt-jerk: limits()'s joint limits of a Move on a conveyor (Move::belt_joints).
+  mutable std::array<AxisLimits, kMaxAxes> belt_joints_{};
 };
 
 }  // namespace ncsim::planner
