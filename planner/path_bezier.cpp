@@ -210,7 +210,11 @@ const Tables& tables() {
 /// values), with the samples innermost so that the compiler can vectorise; the padding sample
 /// repeats the last one (maxima unchanged). An axis outside `moving` (constant on the curve:
 /// every hodograph value 0) is skipped: its terms would add +0 to the sums and its bounds are
-/// 0, the values the loops would compute.
+/// 0, the values the loops would compute. The sums start at their first term instead of at 0.0
+/// (0.0 + x is x, except that it turns -0 into +0): a sum differs from the general loop's at
+/// most in the sign of a zero, and no sign of a zero reaches a bound (every bound is the
+/// maximum of |values|, the zeros meet no division, and x + (+-0) is x for x != 0), so the
+/// bounds are the same to the bit.
 DerivativeBounds blend_bounds(const Hodographs& h, std::size_t n, AxisMask metric,
                               AxisMask moving) {
   constexpr std::size_t kN = Tables::kPadded;
@@ -218,30 +222,47 @@ DerivativeBounds blend_bounds(const Hodographs& h, std::size_t n, AxisMask metri
   std::array<std::array<double, kN>, kMaxAxes> v1;  // first n rows set
   std::array<std::array<double, kN>, kMaxAxes> v2;
   std::array<std::array<double, kN>, kMaxAxes> v3;
-  std::array<double, kN> b11{}, b12{}, b22{}, b13{};
+  std::array<double, kN> b11, b12, b22, b13;  // set by the first metric axis (or zeroed below)
+  bool sums_set = false;
   for (std::size_t i = 0; i < n; ++i) {
     if (!has(moving, i)) continue;
     std::array<double, kN>& a1 = v1[i];
     std::array<double, kN>& a2 = v2[i];
     std::array<double, kN>& a3 = v3[i];
-    // Each value summed over m in order from 0.0 (as the general loop does), in registers.
+    // Each value summed over m in order (the general loop's order), in registers.
     const std::array<double, 5> e1 = {h.c1[0][i], h.c1[1][i], h.c1[2][i], h.c1[3][i], h.c1[4][i]};
     const std::array<double, 4> e2 = {h.c2[0][i], h.c2[1][i], h.c2[2][i], h.c2[3][i]};
     const std::array<double, 3> e3 = {h.c3[0][i], h.c3[1][i], h.c3[2][i]};
     for (std::size_t k = 0; k < kN; ++k) {
-      a1[k] = 0.0 + tab.u4[0][k] * e1[0] + tab.u4[1][k] * e1[1] + tab.u4[2][k] * e1[2] +
+      a1[k] = tab.u4[0][k] * e1[0] + tab.u4[1][k] * e1[1] + tab.u4[2][k] * e1[2] +
               tab.u4[3][k] * e1[3] + tab.u4[4][k] * e1[4];
-      a2[k] = 0.0 + tab.u3[0][k] * e2[0] + tab.u3[1][k] * e2[1] + tab.u3[2][k] * e2[2] +
-              tab.u3[3][k] * e2[3];
-      a3[k] = 0.0 + tab.u2[0][k] * e3[0] + tab.u2[1][k] * e3[1] + tab.u2[2][k] * e3[2];
+      a2[k] =
+          tab.u3[0][k] * e2[0] + tab.u3[1][k] * e2[1] + tab.u3[2][k] * e2[2] + tab.u3[3][k] * e2[3];
+      a3[k] = tab.u2[0][k] * e3[0] + tab.u2[1][k] * e3[1] + tab.u2[2][k] * e3[2];
     }
     if (!has(metric, i)) continue;
+    if (!sums_set) {
+      for (std::size_t k = 0; k < kN; ++k) {
+        b11[k] = a1[k] * a1[k];
+        b12[k] = a1[k] * a2[k];
+        b22[k] = a2[k] * a2[k];
+        b13[k] = a1[k] * a3[k];
+      }
+      sums_set = true;
+      continue;
+    }
     for (std::size_t k = 0; k < kN; ++k) {
       b11[k] += a1[k] * a1[k];
       b12[k] += a1[k] * a2[k];
       b22[k] += a2[k] * a2[k];
       b13[k] += a1[k] * a3[k];
     }
+  }
+  if (!sums_set) {  // no metric axis moves: every sample has |B'| = 0
+    b11.fill(0.0);
+    b12.fill(0.0);
+    b22.fill(0.0);
+    b13.fill(0.0);
   }
   // Per sample: 1 / sg and the factors of the second and third derivatives (the general loop's
   // i2, i3, c1, c2, c3); a sample with sg = 0 contributes nothing (all its factors 0). Without
