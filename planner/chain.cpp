@@ -8,14 +8,14 @@
 namespace ncsim::planner {
 
 Chain::Chain(const Segment& first, std::uint32_t line) {
-  parts_.push_back(Part{first, first.length(), line});
+  parts_.emplace_back(first, first.length(), line);  // built in place: one copy of the segment
 }
 
 void Chain::append(const Chain& next) {
   if (parts_.size() + next.parts_.size() > kMaxParts) std::abort();  // broken invariant
   const double base = length();
   for (const Part& p : next.parts_)
-    parts_.push_back(Part{p.segment, base + p.end, p.line});
+    parts_.emplace_back(p.segment, base + p.end, p.line);
 }
 
 std::uint8_t Chain::axis_count() const noexcept {
