@@ -27,18 +27,18 @@ class Chain {
   /// An empty chain (length 0).
   Chain() = default;
   /// A chain of one segment from source line `line`.
-  explicit Chain(Segment first, std::uint32_t line = 0);
+  explicit Chain(const Segment& first, std::uint32_t line = 0);
 
   /// Appends the parts of `next` (which starts where this ends). Aborts past kMaxParts.
   void append(const Chain& next);
 
   std::size_t parts() const noexcept { return parts_.size(); }
-  const Segment& part(std::size_t i) const noexcept { return parts_[i]; }
-  double length() const noexcept { return ends_.empty() ? 0.0 : ends_.back(); }  ///< [mm]
+  const Segment& part(std::size_t i) const noexcept { return parts_[i].segment; }
+  double length() const noexcept { return parts_.empty() ? 0.0 : parts_.back().end; }  ///< [mm]
   /// Arc length at the end of part i, from the chain start [mm].
-  double part_end(std::size_t i) const noexcept { return ends_[i]; }
+  double part_end(std::size_t i) const noexcept { return parts_[i].end; }
   /// Source line of part i.
-  std::uint32_t part_line(std::size_t i) const noexcept { return lines_[i]; }
+  std::uint32_t part_line(std::size_t i) const noexcept { return parts_[i].line; }
   std::uint8_t axis_count() const noexcept;
   AxisMask metric() const noexcept;
 
@@ -54,9 +54,14 @@ class Chain {
   /// Index of the part containing s and s relative to that part's start.
   std::size_t locate(double& s) const noexcept;
 
-  std::vector<Segment> parts_;
-  std::vector<double> ends_;  ///< cumulative length at the end of each part [mm]
-  std::vector<std::uint32_t> lines_;
+  /// One part with what locate() and line_at() ask of it, in one vector: one allocation a
+  /// chain (three vectors cost three, docs/benchmarks.md issue 12 session 24).
+  struct Part {
+    Segment segment;
+    double end = 0.0;        ///< cumulative length at the end of the part [mm]
+    std::uint32_t line = 0;  ///< source line
+  };
+  std::vector<Part> parts_;
 };
 
 }  // namespace ncsim::planner

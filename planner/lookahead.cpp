@@ -19,6 +19,22 @@ double ramps_distance(double v_entry, double level, double v_exit, double a, dou
   return jerk::distance(v_entry, 0.0, up) + jerk::distance(level, 0.0, down);
 }
 
+/// Duration of a ramp between two velocities dv >= 0 apart with a = 0 at both ends (the
+/// kernel's velocity_ramp from a0 = 0): jerk phases alone up to dv = a^2 / j (peak acceleration
+/// sqrt(dv j)), else with a hold at a.
+double ramp_time(double dv, double a, double j) {
+  return dv * j <= a * a ? 2.0 * std::sqrt(dv / j) : dv / a + a / j;
+}
+
+/// ramps_distance() in closed form: a ramp with a = 0 at both ends is symmetric, so it covers
+/// its mean velocity times its duration. Equal to ramps_distance() up to rounding (and the
+/// kernel's snapping of rounding residues); used only to guess where the level lies.
+double ramps_distance_model(double v_entry, double level, double v_exit, double a, double d,
+                            double j) {
+  return 0.5 * (v_entry + level) * ramp_time(level - v_entry, a, j) +
+         0.5 * (level + v_exit) * ramp_time(level - v_exit, d, j);
+}
+
 /// Weight of the stale end of the bracket when the same end moved twice in a row
 /// (Anderson-Bjorck: 1 - g_new / g_replaced; Illinois' 1/2 where that is not in (0, 1)).
 double stale_weight(double g_new, double g_replaced) noexcept {
@@ -26,54 +42,93 @@ double stale_weight(double g_new, double g_replaced) noexcept {
   return m > 0.0 ? m : 0.5;
 }
 
-/// The level the bisection "keep lo while distance(mid) <= length" on [lo, hi] would return,
-/// to the last bit, with about a quarter of its distance evaluations (docs/planner.md
-/// "Profile level"). distance(hi) > length on entry; distance() rises with the level.
-/// First a bracketed secant (Anderson-Bjorck, which keeps a sign-changing bracket) narrows
-/// [fit, miss] around the root: distance(fit) <= length < distance(miss), both evaluated.
-/// Then the bisection is replayed on its own midpoints: a midpoint at or below `fit` fits and
-/// one at or above `miss` does not (monotonicity), so only midpoints inside the narrow bracket
-/// are evaluated.
-/// `g_hi` = distance(hi) - length > 0.
-template <class Distance>
-double level_search(double lo, double hi, double g_hi, const Distance& distance, double length) {
-  // g < 0 exactly when distance < length: a difference of doubles has the exact sign.
-  const auto g = [&](double x) { return distance(x) - length; };
-  double fit = lo;
-  double miss = hi;
-  double g_fit = g(lo);
-  if (g_fit > 0.0) {
-    miss = lo;  // nothing fits: every midpoint misses, the bisection ends at lo
-  } else {
-    double g_miss = g_hi;
-    int side = 0;  // which end moved last: -1 fit, +1 miss
-    const double width = 0.25e-12 * std::max(1.0, hi);
-    for (int iter = 0; iter < 40 && miss - fit > width; ++iter) {
-      double x = (fit * g_miss - miss * g_fit) / (g_miss - g_fit);
-      if (!(x > fit && x < miss)) x = 0.5 * (fit + miss);
-      const double gx = g(x);
-      if (gx <= 0.0) {
-        if (side == -1) g_miss *= stale_weight(gx, g_fit);
-        fit = x;
-        g_fit = gx;
-        side = -1;
-      } else {
-        if (side == 1) g_fit *= stale_weight(gx, g_miss);
-        miss = x;
-        g_miss = gx;
-        side = 1;
-      }
+/// A sign-changing bracket of a rising g: g(fit) <= 0 < g(miss), both evaluated.
+struct Bracket {
+  double fit, miss;
+  double g_fit, g_miss;
+};
+
+/// Narrows `b` by a bracketed secant (Anderson-Bjorck) until miss - fit <= width (at most 40
+/// evaluations of g).
+template <class G>
+void narrow(Bracket& b, const G& g, double width) {
+  int side = 0;  // which end moved last: -1 fit, +1 miss
+  for (int iter = 0; iter < 40 && b.miss - b.fit > width; ++iter) {
+    double x = (b.fit * b.g_miss - b.miss * b.g_fit) / (b.g_miss - b.g_fit);
+    if (!(x > b.fit && x < b.miss)) x = 0.5 * (b.fit + b.miss);
+    const double gx = g(x);
+    if (gx <= 0.0) {
+      if (side == -1) b.g_miss *= stale_weight(gx, b.g_fit);
+      b.fit = x;
+      b.g_fit = gx;
+      side = -1;
+    } else {
+      if (side == 1) b.g_fit *= stale_weight(gx, b.g_miss);
+      b.miss = x;
+      b.g_miss = gx;
+      side = 1;
     }
   }
+}
+
+/// The level the bisection "keep lo while distance(mid) <= length" on [lo, hi] would return,
+/// to the last bit, with a handful of distance evaluations (docs/planner.md "Profile level").
+/// distance(hi) > length on entry; distance() rises with the level; `model` is a cheap
+/// closed form of distance() (equal up to rounding).
+/// First the model's root, found by a bracketed secant on the model alone, is bracketed by two
+/// evaluations of distance() a fifth of the bisection's final width apart; where that fails
+/// (the model does not bracket, or its root is off) a bracketed secant on distance() narrows
+/// [fit, miss] to a quarter of that width. Then the bisection is replayed on its own midpoints:
+/// a midpoint at or below `fit` fits and one at or above `miss` does not (monotonicity), so
+/// only midpoints inside the narrow bracket are evaluated.
+/// `g_hi` = distance(hi) - length > 0.
+template <class Distance, class Model>
+double level_search(double lo, double hi, double g_hi, const Distance& distance, const Model& model,
+                    double length) {
+  // g < 0 exactly when distance < length: a difference of doubles has the exact sign.
+  const auto g = [&](double x) { return distance(x) - length; };
+  const double width = 0.25e-12 * std::max(1.0, hi);
+  Bracket b{lo, hi, 0.0, g_hi};
+  bool fit_known = false;  // b.fit evaluated (else it is lo, not evaluated yet)
+  const auto gm = [&](double x) { return model(x) - length; };
+  Bracket m{lo, hi, gm(lo), gm(hi)};
+  if (m.g_fit <= 0.0 && m.g_miss > 0.0) {
+    narrow(m, gm, 0.01 * width);
+    const double x = 0.5 * (m.fit + m.miss);
+    const double x1 = std::max(lo, x - 0.4 * width);
+    const double x2 = x + 0.4 * width;
+    const double g1 = g(x1);
+    if (g1 <= 0.0) {
+      b.fit = x1;
+      b.g_fit = g1;
+      fit_known = true;
+      if (x2 < hi) {
+        const double g2 = g(x2);
+        (g2 <= 0.0 ? b.fit : b.miss) = x2;
+        (g2 <= 0.0 ? b.g_fit : b.g_miss) = g2;
+      }
+    } else if (x1 == lo) {
+      return lo;  // nothing fits (below)
+    } else {
+      b.miss = x1;
+      b.g_miss = g1;
+    }
+  }
+  if (!fit_known) {
+    b.g_fit = g(lo);
+    // Nothing fits: every midpoint of the bisection misses, so it ends at lo.
+    if (b.g_fit > 0.0) return lo;
+  }
+  narrow(b, g, width);
   // The bisection of the reference (profile() before the secant, same loop bounds).
   for (int iter = 0; iter < 100 && hi - lo > 1e-12 * std::max(1.0, hi); ++iter) {
     const double mid = 0.5 * (lo + hi);
     bool fits = false;
-    if (mid <= fit) {
+    if (mid <= b.fit) {
       fits = true;
-    } else if (mid < miss) {
+    } else if (mid < b.miss) {
       fits = g(mid) <= 0.0;
-      (fits ? fit : miss) = mid;
+      (fits ? b.fit : b.miss) = mid;
     }
     if (fits)
       lo = mid;
@@ -119,7 +174,8 @@ jerk::Move profile(const PlannedSegment& planned) noexcept {
   const double g_hi = ramps_distance(v0, hi, v1, a, d, j) - length;
   if (g_hi > 0.0)
     level = level_search(
-        lo, hi, g_hi, [&](double x) { return ramps_distance(v0, x, v1, a, d, j); }, length);
+        lo, hi, g_hi, [&](double x) { return ramps_distance(v0, x, v1, a, d, j); },
+        [&](double x) { return ramps_distance_model(v0, x, v1, a, d, j); }, length);
   jerk::Move move;
   move.sign = 1.0;
   move.v_level = level;

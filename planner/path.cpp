@@ -33,6 +33,52 @@ double max_abs_sin(double a, double b) {
   return max_abs_cos(a - h, b - h);
 }
 
+// Point evaluation of lines and arcs, one function per kind with a single named result, so that
+// the 512-byte PathPoint is built in the caller's storage (a function that returns different
+// objects on different paths copies it: docs/benchmarks.md, issue 12 session 24).
+
+AxisVec line_point(const geom::LineGeom& l, std::size_t n, double s) {
+  AxisVec x = l.p0;
+  for (std::size_t i = 0; i < n; ++i)
+    x[i] += l.dir[i] * s;
+  return x;
+}
+
+AxisVec arc_point(const geom::ArcGeom& a, std::size_t n, double s) {
+  AxisVec x = a.o;
+  const double th = a.theta0 + a.omega * s;
+  const double rc = a.radius * std::cos(th);
+  const double rs = a.radius * std::sin(th);
+  for (std::size_t i = 0; i < n; ++i)
+    x[i] += a.lin[i] * s + rc * a.u[i] + rs * a.v[i];
+  return x;
+}
+
+PathPoint line_at(const geom::LineGeom& l, std::size_t n, double s) {
+  PathPoint p{l.p0, l.dir, {}, {}};
+  for (std::size_t i = 0; i < n; ++i)
+    p.x[i] += l.dir[i] * s;
+  return p;
+}
+
+PathPoint arc_at(const geom::ArcGeom& a, std::size_t n, double s) {
+  PathPoint p{a.o, {}, {}, {}};
+  const double th = a.theta0 + a.omega * s;
+  const double c = std::cos(th);
+  const double sn = std::sin(th);
+  const double r = a.radius;
+  const double w = a.omega;
+  const double rc = r * c;
+  const double rs = r * sn;
+  for (std::size_t i = 0; i < n; ++i) {
+    p.x[i] += a.lin[i] * s + rc * a.u[i] + rs * a.v[i];
+    p.d1[i] = a.lin[i] + r * w * (-sn * a.u[i] + c * a.v[i]);
+    p.d2[i] = -r * w * w * (c * a.u[i] + sn * a.v[i]);
+    p.d3[i] = r * w * w * w * (sn * a.u[i] - c * a.v[i]);
+  }
+  return p;
+}
+
 }  // namespace
 
 AxisMask effective_metric(std::uint8_t axis_count, AxisMask path_axes, const AxisVec& delta) {
@@ -70,12 +116,11 @@ Segment Segment::line(std::uint8_t axis_count, AxisMask metric, const AxisVec& a
     delta[i] = b[i] - a[i];
   seg.metric_ = effective_metric(axis_count, metric, delta);
   const double length = seg.metric_norm(delta);
-  LineGeom g;
+  LineGeom& g = std::get<LineGeom>(seg.geom_);  // a default Segment holds a zero line
   g.p0 = a;
   if (length > 0.0)
     for (std::size_t i = 0; i < axis_count; ++i)
       g.dir[i] = delta[i] / length;
-  seg.geom_ = g;
   seg.s_hi_ = length;
   return seg;
 }
@@ -187,21 +232,8 @@ PathPoint Segment::at(double s) const noexcept {
 }
 
 AxisVec Segment::point_raw(double s) const noexcept {
-  if (const auto* l = std::get_if<LineGeom>(&geom_)) {
-    AxisVec x = l->p0;
-    for (std::size_t i = 0; i < n_; ++i)
-      x[i] += l->dir[i] * s;
-    return x;
-  }
-  if (const auto* a = std::get_if<ArcGeom>(&geom_)) {
-    AxisVec x = a->o;
-    const double th = a->theta0 + a->omega * s;
-    const double rc = a->radius * std::cos(th);
-    const double rs = a->radius * std::sin(th);
-    for (std::size_t i = 0; i < n_; ++i)
-      x[i] += a->lin[i] * s + rc * a->u[i] + rs * a->v[i];
-    return x;
-  }
+  if (const auto* l = std::get_if<LineGeom>(&geom_)) return line_point(*l, n_, s);
+  if (const auto* a = std::get_if<ArcGeom>(&geom_)) return arc_point(*a, n_, s);
   return at_raw(s).x;
 }
 
@@ -247,26 +279,8 @@ DerivativeBounds Segment::bounds() const noexcept {
 }
 
 PathPoint Segment::at_raw(double s) const noexcept {
-  PathPoint p;
-  if (const auto* l = std::get_if<LineGeom>(&geom_)) {
-    p.x = point_raw(s);
-    p.d1 = l->dir;
-    return p;
-  }
-  if (const auto* a = std::get_if<ArcGeom>(&geom_)) {
-    p.x = point_raw(s);
-    const double th = a->theta0 + a->omega * s;
-    const double c = std::cos(th);
-    const double sn = std::sin(th);
-    const double r = a->radius;
-    const double w = a->omega;
-    for (std::size_t i = 0; i < n_; ++i) {
-      p.d1[i] = a->lin[i] + r * w * (-sn * a->u[i] + c * a->v[i]);
-      p.d2[i] = -r * w * w * (c * a->u[i] + sn * a->v[i]);
-      p.d3[i] = r * w * w * w * (sn * a->u[i] - c * a->v[i]);
-    }
-    return p;
-  }
+  if (const auto* l = std::get_if<LineGeom>(&geom_)) return line_at(*l, n_, s);
+  if (const auto* a = std::get_if<ArcGeom>(&geom_)) return arc_at(*a, n_, s);
   return bezier_at(std::get<BezierGeom>(geom_), s);
 }
 

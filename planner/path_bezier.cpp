@@ -47,10 +47,6 @@ std::array<double, M + 1> basis(double t) {
   return b;
 }
 
-struct Derivs {
-  AxisVec b0{}, b1{}, b2{}, b3{};
-};
-
 /// Control points of B and of its first three t-derivatives (hodographs), per axis:
 /// dB = 5 sum b4_k D1_k, d2B = 20 sum b3_k D2_k, d3B = 60 sum b2_k D3_k (forward differences,
 /// scaled here once). Only the first n axes are set (and read): zeroing all kMaxAxes cost
@@ -83,11 +79,12 @@ Hodographs hodographs(const std::array<AxisVec, 6>& p, std::size_t n) {
   return h;
 }
 
-/// B and its first three t-derivatives from the hodographs and the Bernstein values at t.
-Derivs eval_with(const Hodographs& h, std::size_t n, const std::array<double, 6>& b5,
-                 const std::array<double, 5>& b4, const std::array<double, 4>& b3,
-                 const std::array<double, 3>& b2) {
-  Derivs d;
+/// B and its first three t-derivatives from the hodographs and the Bernstein values at t,
+/// written to the first n axes of d (x: B, d1..d3: dB/dt, d2B/dt2, d3B/dt3; the caller's
+/// PathPoint, turned into arc-length derivatives in place by to_arc_length()).
+void eval_with(const Hodographs& h, std::size_t n, const std::array<double, 6>& b5,
+               const std::array<double, 5>& b4, const std::array<double, 4>& b3,
+               const std::array<double, 3>& b2, PathPoint& d) {
   for (std::size_t i = 0; i < n; ++i) {
     double v0 = 0.0, v1 = 0.0, v2 = 0.0, v3 = 0.0;
     for (std::size_t k = 0; k < 6; ++k)
@@ -98,24 +95,22 @@ Derivs eval_with(const Hodographs& h, std::size_t n, const std::array<double, 6>
       v2 += b3[k] * h.c2[k][i];
     for (std::size_t k = 0; k < 3; ++k)
       v3 += b2[k] * h.c3[k][i];
-    d.b0[i] = v0;
-    d.b1[i] = v1;
-    d.b2[i] = v2;
-    d.b3[i] = v3;
+    d.x[i] = v0;
+    d.d1[i] = v1;
+    d.d2[i] = v2;
+    d.d3[i] = v3;
   }
-  return d;
 }
 
-Derivs eval(const std::array<AxisVec, 6>& p, std::size_t n, double t) {
-  return eval_with(hodographs(p, n), n, basis<5>(t), basis<4>(t), basis<3>(t), basis<2>(t));
+void eval(const std::array<AxisVec, 6>& p, std::size_t n, double t, PathPoint& d) {
+  eval_with(hodographs(p, n), n, basis<5>(t), basis<4>(t), basis<3>(t), basis<2>(t), d);
 }
 
 /// eval() at an end of the curve (t = 0 or t = 1), where every Bernstein value is 0 but one,
 /// which is exactly 1: B and its derivatives are the first (last) control point of each
 /// hodograph. The same differences as hodographs() and the same sums as eval_with() (from 0.0,
 /// every other term +-0), so the same values to the bit; the joints of every blend ask here.
-Derivs eval_end(const std::array<AxisVec, 6>& p, std::size_t n, bool at_end) {
-  Derivs d;
+void eval_end(const std::array<AxisVec, 6>& p, std::size_t n, bool at_end, PathPoint& d) {
   for (std::size_t i = 0; i < n; ++i) {
     const double e0 = p[1][i] - p[0][i];
     const double e1 = p[2][i] - p[1][i];
@@ -127,18 +122,17 @@ Derivs eval_end(const std::array<AxisVec, 6>& p, std::size_t n, bool at_end) {
     const double f2 = e3 - e2;
     const double f3 = e4 - e3;
     if (!at_end) {
-      d.b0[i] = 0.0 + p[0][i];
-      d.b1[i] = 0.0 + e0 * 5.0;
-      d.b2[i] = 0.0 + f0 * 20.0;
-      d.b3[i] = 0.0 + (f1 - f0) * 60.0;
+      d.x[i] = 0.0 + p[0][i];
+      d.d1[i] = 0.0 + e0 * 5.0;
+      d.d2[i] = 0.0 + f0 * 20.0;
+      d.d3[i] = 0.0 + (f1 - f0) * 60.0;
     } else {
-      d.b0[i] = 0.0 + p[5][i];
-      d.b1[i] = 0.0 + e4 * 5.0;
-      d.b2[i] = 0.0 + f3 * 20.0;
-      d.b3[i] = 0.0 + (f3 - f2) * 60.0;
+      d.x[i] = 0.0 + p[5][i];
+      d.d1[i] = 0.0 + e4 * 5.0;
+      d.d2[i] = 0.0 + f3 * 20.0;
+      d.d3[i] = 0.0 + (f3 - f2) * 60.0;
     }
   }
-  return d;
 }
 
 /// Degree-8 Bernstein values at the 5 K Gauss nodes of a K-interval arc-length table (|B'|^2
@@ -216,7 +210,11 @@ const Tables& tables() {
 /// values), with the samples innermost so that the compiler can vectorise; the padding sample
 /// repeats the last one (maxima unchanged). An axis outside `moving` (constant on the curve:
 /// every hodograph value 0) is skipped: its terms would add +0 to the sums and its bounds are
-/// 0, the values the loops would compute.
+/// 0, the values the loops would compute. The sums start at their first term instead of at 0.0
+/// (0.0 + x is x, except that it turns -0 into +0): a sum differs from the general loop's at
+/// most in the sign of a zero, and no sign of a zero reaches a bound (every bound is the
+/// maximum of |values|, the zeros meet no division, and x + (+-0) is x for x != 0), so the
+/// bounds are the same to the bit.
 DerivativeBounds blend_bounds(const Hodographs& h, std::size_t n, AxisMask metric,
                               AxisMask moving) {
   constexpr std::size_t kN = Tables::kPadded;
@@ -224,30 +222,47 @@ DerivativeBounds blend_bounds(const Hodographs& h, std::size_t n, AxisMask metri
   std::array<std::array<double, kN>, kMaxAxes> v1;  // first n rows set
   std::array<std::array<double, kN>, kMaxAxes> v2;
   std::array<std::array<double, kN>, kMaxAxes> v3;
-  std::array<double, kN> b11{}, b12{}, b22{}, b13{};
+  std::array<double, kN> b11, b12, b22, b13;  // set by the first metric axis (or zeroed below)
+  bool sums_set = false;
   for (std::size_t i = 0; i < n; ++i) {
     if (!has(moving, i)) continue;
     std::array<double, kN>& a1 = v1[i];
     std::array<double, kN>& a2 = v2[i];
     std::array<double, kN>& a3 = v3[i];
-    // Each value summed over m in order from 0.0 (as the general loop does), in registers.
+    // Each value summed over m in order (the general loop's order), in registers.
     const std::array<double, 5> e1 = {h.c1[0][i], h.c1[1][i], h.c1[2][i], h.c1[3][i], h.c1[4][i]};
     const std::array<double, 4> e2 = {h.c2[0][i], h.c2[1][i], h.c2[2][i], h.c2[3][i]};
     const std::array<double, 3> e3 = {h.c3[0][i], h.c3[1][i], h.c3[2][i]};
     for (std::size_t k = 0; k < kN; ++k) {
-      a1[k] = 0.0 + tab.u4[0][k] * e1[0] + tab.u4[1][k] * e1[1] + tab.u4[2][k] * e1[2] +
+      a1[k] = tab.u4[0][k] * e1[0] + tab.u4[1][k] * e1[1] + tab.u4[2][k] * e1[2] +
               tab.u4[3][k] * e1[3] + tab.u4[4][k] * e1[4];
-      a2[k] = 0.0 + tab.u3[0][k] * e2[0] + tab.u3[1][k] * e2[1] + tab.u3[2][k] * e2[2] +
-              tab.u3[3][k] * e2[3];
-      a3[k] = 0.0 + tab.u2[0][k] * e3[0] + tab.u2[1][k] * e3[1] + tab.u2[2][k] * e3[2];
+      a2[k] =
+          tab.u3[0][k] * e2[0] + tab.u3[1][k] * e2[1] + tab.u3[2][k] * e2[2] + tab.u3[3][k] * e2[3];
+      a3[k] = tab.u2[0][k] * e3[0] + tab.u2[1][k] * e3[1] + tab.u2[2][k] * e3[2];
     }
     if (!has(metric, i)) continue;
+    if (!sums_set) {
+      for (std::size_t k = 0; k < kN; ++k) {
+        b11[k] = a1[k] * a1[k];
+        b12[k] = a1[k] * a2[k];
+        b22[k] = a2[k] * a2[k];
+        b13[k] = a1[k] * a3[k];
+      }
+      sums_set = true;
+      continue;
+    }
     for (std::size_t k = 0; k < kN; ++k) {
       b11[k] += a1[k] * a1[k];
       b12[k] += a1[k] * a2[k];
       b22[k] += a2[k] * a2[k];
       b13[k] += a1[k] * a3[k];
     }
+  }
+  if (!sums_set) {  // no metric axis moves: every sample has |B'| = 0
+    b11.fill(0.0);
+    b12.fill(0.0);
+    b22.fill(0.0);
+    b13.fill(0.0);
   }
   // Per sample: 1 / sg and the factors of the second and third derivatives (the general loop's
   // i2, i3, c1, c2, c3); a sample with sg = 0 contributes nothing (all its factors 0). Without
@@ -351,20 +366,23 @@ double integrate_speed(const std::array<AxisVec, 6>& p, std::size_t n, AxisMask 
   return h * sum;
 }
 
-/// x', x'', x''' with respect to arc length from the t-derivatives (formulas at the top).
-PathPoint arc_length_derivatives(const Derivs& d, std::size_t n, AxisMask metric) {
+/// x', x'', x''' with respect to arc length from the t-derivatives (formulas at the top), in
+/// place: p holds B and its t-derivatives on the first n axes (eval, eval_end) and 0 beyond.
+void to_arc_length(PathPoint& p, std::size_t n, AxisMask metric) {
   double b11 = 0.0, b12 = 0.0, b22 = 0.0, b13 = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     if (!has(metric, i)) continue;
-    b11 += d.b1[i] * d.b1[i];
-    b12 += d.b1[i] * d.b2[i];
-    b22 += d.b2[i] * d.b2[i];
-    b13 += d.b1[i] * d.b3[i];
+    b11 += p.d1[i] * p.d1[i];
+    b12 += p.d1[i] * p.d2[i];
+    b22 += p.d2[i] * p.d2[i];
+    b13 += p.d1[i] * p.d3[i];
   }
-  PathPoint p;
-  p.x = d.b0;
   const double sg = std::sqrt(b11);
-  if (sg <= 0.0) return p;
+  if (sg <= 0.0) {  // no tangent: the position alone
+    for (std::size_t i = 0; i < n; ++i)
+      p.d1[i] = p.d2[i] = p.d3[i] = 0.0;
+    return;
+  }
   const double sg1 = b12 / sg;
   const double sg2 = (b22 + b13 - sg1 * sg1) / sg;
   const double s2 = sg * sg;
@@ -372,12 +390,13 @@ PathPoint arc_length_derivatives(const Derivs& d, std::size_t n, AxisMask metric
   const double s4 = s3 * sg;
   const double s5 = s4 * sg;
   for (std::size_t i = 0; i < n; ++i) {
-    p.d1[i] = d.b1[i] / sg;
-    p.d2[i] = d.b2[i] / s2 - d.b1[i] * sg1 / s3;
-    p.d3[i] = d.b3[i] / s3 - 3.0 * d.b2[i] * sg1 / s4 - d.b1[i] * sg2 / s4 +
-              3.0 * d.b1[i] * sg1 * sg1 / s5;
+    const double b1 = p.d1[i];
+    const double b2 = p.d2[i];
+    const double b3 = p.d3[i];
+    p.d1[i] = b1 / sg;
+    p.d2[i] = b2 / s2 - b1 * sg1 / s3;
+    p.d3[i] = b3 / s3 - 3.0 * b2 * sg1 / s4 - b1 * sg2 / s4 + 3.0 * b1 * sg1 * sg1 / s5;
   }
-  return p;
 }
 
 /// The arc-length table of a K-interval curve from |B'|^2 in Bernstein form: 9 products and a
@@ -483,8 +502,13 @@ double Segment::bezier_t(const BezierGeom& g, double s) const noexcept {
 }
 
 PathPoint Segment::bezier_at_t(const BezierGeom& g, double t) const noexcept {
-  if (t == 0.0 || t == 1.0) return arc_length_derivatives(eval_end(g.p, n_, t == 1.0), n_, metric_);
-  return arc_length_derivatives(eval(g.p, n_, t), n_, metric_);
+  PathPoint p;  // one result built in place (the axes from n_ on stay 0)
+  if (t == 0.0 || t == 1.0)
+    eval_end(g.p, n_, t == 1.0, p);
+  else
+    eval(g.p, n_, t, p);
+  to_arc_length(p, n_, metric_);
+  return p;
 }
 
 PathPoint Segment::bezier_at(const BezierGeom& g, double s) const noexcept {
@@ -509,7 +533,7 @@ DerivativeBounds Segment::bezier_bounds() const noexcept {
   if (table && !spline_) {
     b = blend_bounds(h, n_, metric_, g.moving);
   } else {
-    // The formulas of arc_length_derivatives(), inlined without the position and without
+    // The formulas of to_arc_length(), inlined without the position and without
     // building PathPoints (this loop is most of the cost of a tolerance ball).
     std::array<double, kMaxAxes> v1;  // first n_ entries set per sample
     std::array<double, kMaxAxes> v2;
