@@ -145,6 +145,8 @@ class ProgramSource final : public Source {
   // #SPLINE (program_spline.cpp): the builder of the open section and its modal Move.
   std::optional<planner::SplineBuilder> spline_;
   planner::Move spline_modal_;
+  /// --- belt-jerk: the open section is programmed in PCS1 (its pieces get the belt's share).
+  bool spline_pcs1_ = false;
   /// Items of the last command not yet handed out (spline pieces, #CAXTRACK turn blocks, the
   /// static unit's parts: emit_path()); empty before each command is pulled.
   std::deque<Item> queue_;
@@ -171,10 +173,10 @@ class ProgramSource final : public Source {
   /// (NC3201 / NC3202) at its line.
   void check_workspace(const planner::Move& move, std::uint32_t line);
   [[noreturn]] void fail_with(std::uint32_t line, const std::string& id, const std::string& what);
-  /// A transformed G01 / G02 / G03 Move in PCS1: the belt's share (1.1 x CONV_VEL, the 50653
-  /// margin) of the joints wherever the belt can carry the block (forward from the latch, inside
-  /// the conveyor workspace): its F capped for the joints' V (and by the acceleration and jerk
-  /// shares' bisection), the a and j shares in Move::belt_joints (ipo::belt_share,
+  /// A transformed G01 / G02 / G03 Move or spline piece in PCS1: the belt's share (1.1 x CONV_VEL,
+  /// the 50653 margin) of the joints wherever the belt can carry the block (forward from the latch,
+  /// inside the conveyor workspace): its F capped for the joints' V (and by the acceleration and
+  /// jerk shares' bisection), the a and j shares in Move::belt_joints (ipo::belt_share,
   /// docs/conveyor.md "Machining in PCS1"); NC6211 when the belt alone needs a joint's V or its
   /// share with the path at rest leaves a joint less than 1 % of its A or J.
   void reserve_belt_share(planner::Move& move, std::uint32_t line);

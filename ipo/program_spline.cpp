@@ -7,11 +7,13 @@
 // its own line and feed; SplineEnd finishes the section. Every completed piece becomes one
 // spline Move (planner::spline_move: cubic Bezier, planned with arc-length parametrisation,
 // never chopped) carrying the modal state of the #SPLINE ON block; it leaves through
-// emit_path() (program_static.cpp: #CAXTRACK, the static unit's belt feed may halve it). The
+// emit_path() (program_static.cpp: #CAXTRACK, the static unit's belt feed may halve it); in
+// PCS1 under #TRAFO ON it first gets the belt's share of the joints (reserve_belt_share). The
 // builder holds a window of 8 points and the queue the parts of at most 4 pieces: memory does
 // not grow with the section.
 
 #include <string>
+#include <utility>
 
 #include "ipo/program_source.hpp"
 
@@ -23,6 +25,7 @@ void ProgramSource::spline_begin(const interp::SplineBegin& b, std::uint32_t lin
   spline_modal_.axis_count = static_cast<std::uint8_t>(axes_.size());
   spline_modal_.path_axes = path_axes_;
   set_modal(b.modal, spline_modal_, line);
+  spline_pcs1_ = b.frame.space == interp::Space::pcs1;
   const planner::SplineType type = b.type == interp::SplineType::bspline
                                        ? planner::SplineType::bspline
                                        : planner::SplineType::akima;
@@ -51,8 +54,13 @@ void ProgramSource::spline_end(std::uint32_t line) {
 void ProgramSource::queue_pieces(std::span<const planner::SplinePiece> pieces) {
   // The queue is empty before each command (pull() hands it out first); one command completes
   // at most 4 pieces (SplineBuilder::finish()), each of which emit_path() may split.
-  for (const planner::SplinePiece& piece : pieces)
-    emit_path(planner::spline_move(piece, spline_modal_));
+  for (const planner::SplinePiece& piece : pieces) {
+    planner::Move mv = planner::spline_move(piece, spline_modal_);
+    // --- belt-jerk: a piece in PCS1 under #TRAFO ON runs with the belt on top as a line does;
+    // belt_share samples the piece's curve (docs/conveyor.md "Machining in PCS1").
+    if (spline_pcs1_ && mv.transformed) reserve_belt_share(mv, mv.line);
+    emit_path(std::move(mv));
+  }
 }
 
 }  // namespace ncsim::ipo
