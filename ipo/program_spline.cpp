@@ -8,9 +8,9 @@
 // spline Move (planner::spline_move: cubic Bezier, planned with arc-length parametrisation,
 // never chopped) carrying the modal state of the #SPLINE ON block; it leaves through
 // emit_path() (program_static.cpp: #CAXTRACK, the static unit's belt feed may halve it); in
-// PCS1 under #TRAFO ON it first gets the belt's share of the joints (reserve_belt_share). The
-// builder holds a window of 8 points and the queue the parts of at most 4 pieces: memory does
-// not grow with the section.
+// PCS1 it first gets the belt's share: of the joints under #TRAFO ON (reserve_belt_share), else
+// the PCS1 velocity split on the axes (Move::belt). The builder holds a window of 8 points and
+// the queue the parts of at most 4 pieces: memory does not grow with the section.
 
 #include <string>
 #include <utility>
@@ -56,9 +56,15 @@ void ProgramSource::queue_pieces(std::span<const planner::SplinePiece> pieces) {
   // at most 4 pieces (SplineBuilder::finish()), each of which emit_path() may split.
   for (const planner::SplinePiece& piece : pieces) {
     planner::Move mv = planner::spline_move(piece, spline_modal_);
-    // --- belt-jerk: a piece in PCS1 under #TRAFO ON runs with the belt on top as a line does;
-    // belt_share samples the piece's curve (docs/conveyor.md "Machining in PCS1").
-    if (spline_pcs1_ && mv.transformed) reserve_belt_share(mv, mv.line);
+    // A piece in PCS1 runs with the belt on top as a line does (ProgramSource::to_move): under
+    // #TRAFO ON belt_share samples the piece's curve (docs/conveyor.md "Machining in PCS1"),
+    // else the axes get the PCS1 velocity split (S-5).
+    if (spline_pcs1_) {
+      if (mv.transformed)
+        reserve_belt_share(mv, mv.line);
+      else
+        mv.belt = belt_;
+    }
     emit_path(std::move(mv));
   }
 }
