@@ -102,6 +102,15 @@ double arc_length(const planner::Move& mv, const XVirtualParams& p) {
   return arc_speeds(mv, p, 0.0).first;
 }
 
+/// The axis and the kind of limit that bind the planner's path velocity, as NC9100 names them.
+std::pair<std::size_t, const char*> binding(const planner::PathLimits& pl,
+                                            std::span<const std::string> names) {
+  const char* what = pl.limit == planner::VelocityLimit::axis_velocity ? "velocity"
+                     : pl.limit == planner::VelocityLimit::centripetal ? "acceleration"
+                                                                       : "jerk";
+  return {std::min<std::size_t>(pl.limiting_axis, names.size() - 1), what};
+}
+
 }  // namespace
 
 std::pair<planner::Move, planner::Move> split_arc(const planner::Move& mv) {
@@ -154,10 +163,7 @@ std::optional<XvError> finish(planner::Move& mv, double length, const XVirtualPa
   const planner::Segment seg = planner::Segment::from_move(probe);
   const planner::PathLimits pl = planner::path_limits(seg, probe, limits);
   if (pl.v_max >= need * (1.0 - 1e-9)) return std::nullopt;
-  const char* what = pl.limit == planner::VelocityLimit::axis_velocity ? "velocity"
-                     : pl.limit == planner::VelocityLimit::centripetal ? "acceleration"
-                                                                       : "jerk";
-  const std::size_t axis = std::min<std::size_t>(pl.limiting_axis, names.size() - 1);
+  const auto [axis, what] = binding(pl, names);
   char buf[400];
   std::snprintf(buf, sizeof buf,
                 "x_virtual: a belt at %.6g mm/s (1.1 x CONV_VEL, the fastest before 50653) needs a "
@@ -287,10 +293,7 @@ std::optional<XvError> blend_belt_feed(planner::Move& in, planner::Move& out,
   probe.feed = need;
   const planner::PathLimits pl = planner::path_limits(ball->curve, probe, limits);
   if (pl.v_max >= need * (1.0 - 1e-9)) return std::nullopt;
-  const char* what = pl.limit == planner::VelocityLimit::axis_velocity ? "velocity"
-                     : pl.limit == planner::VelocityLimit::centripetal ? "acceleration"
-                                                                       : "jerk";
-  const std::size_t axis = std::min<std::size_t>(pl.limiting_axis, names.size() - 1);
+  const auto [axis, what] = binding(pl, names);
   char buf[480];
   std::snprintf(buf, sizeof buf,
                 "x_virtual: a belt at %.6g mm/s (1.1 x CONV_VEL, the fastest before 50653) needs a "
