@@ -275,6 +275,35 @@ TEST_CASE("the catch-up's TCP dynamics keep every joint inside its own at the po
     CHECK(w > 0.5);  // the bound is used, not wasted
 }
 
+namespace {
+
+// Lines first..last, tracked with the belt on top, use the joints' jerk and keep every joint's
+// a and j (the delta's A 20000 deg/s^2, J 500000 deg/s^3): no audit violation, no warning.
+void check_far_side(const Tracked& r, std::uint32_t first, std::uint32_t last, double belt) {
+  double a = 0.0, j = 0.0;  // the lines' largest joint |a| / A and |j| / J
+  std::size_t cycles = 0;
+  for (std::size_t k = 0; k < r.joints.size(); ++k) {
+    if (r.phase[k] != ipo::SyncPhase::tracking || r.line[k] < first || r.line[k] > last) continue;
+    ++cycles;
+    for (std::size_t i = 0; i < 3; ++i) {
+      a = std::max(a, std::fabs(r.joints[k].a[i]) / 20000.0);
+      j = std::max(j, std::fabs(r.joints[k].j[i]) / 500000.0);
+    }
+  }
+  MESSAGE("belt " << belt << " mm/s: joint |a| / A " << a << ", |j| / J " << j << ", "
+                  << r.verdict.violation_count << " audit violations");
+  for (const auto& v : r.verdict.violations)
+    MESSAGE("violation: axis " << int(v.axis) << " joint " << v.joint << " value " << v.value
+                               << " limit " << v.limit << " t " << v.t);
+  CHECK(cycles > 100);
+  CHECK(j > 0.5);  // the lines use the joints' jerk
+  CHECK(j <= 1.0 + 1e-3);
+  CHECK_FALSE(r.warning);
+  CHECK(r.verdict.violation_count == 0);
+}
+
+}  // namespace
+
 TEST_CASE("a PCS1 block the belt carries towards the far side keeps the joints' a and j") {
   // docs/conveyor.md "Machining in PCS1": the belt carries the block while it runs; the joints
   // see q(s, b) = IK(x(s) + b e), whose belt terms (2 q_sb v w + q_bb w^2 in the acceleration,
@@ -299,25 +328,7 @@ TEST_CASE("a PCS1 block the belt carries towards the far side keeps the joints' 
     if (!r.source_error.empty()) MESSAGE(r.source_error);
     REQUIRE(r.status == ipo::Status::finished);
     REQUIRE_FALSE(r.error);
-    double a = 0.0, j = 0.0;  // the block's largest joint |a| / A and |j| / J
-    std::size_t cycles = 0;
-    for (std::size_t k = 0; k < r.joints.size(); ++k) {
-      if (r.phase[k] != ipo::SyncPhase::tracking || r.line[k] != 8) continue;
-      ++cycles;
-      for (std::size_t i = 0; i < 3; ++i) {
-        a = std::max(a, std::fabs(r.joints[k].a[i]) / 20000.0);
-        j = std::max(j, std::fabs(r.joints[k].j[i]) / 500000.0);
-      }
-    }
-    MESSAGE("belt " << belt << " mm/s: joint |a| / A " << a << ", |j| / J " << j);
-    for (const auto& v : r.verdict.violations)
-      MESSAGE("violation: axis " << int(v.axis) << " joint " << v.joint << " value " << v.value
-                                 << " limit " << v.limit << " t " << v.t);
-    CHECK(cycles > 100);
-    CHECK(j > 0.5);  // the block uses the joints' jerk
-    CHECK(j <= 1.0 + 1e-3);
-    CHECK_FALSE(r.warning);
-    CHECK(r.verdict.violation_count == 0);
+    check_far_side(r, 8, 8, belt);
   }
 }
 
@@ -347,23 +358,7 @@ TEST_CASE(
     if (r.error) MESSAGE(r.error->id << ": " << r.error->message);
     REQUIRE(r.status == ipo::Status::finished);
     REQUIRE_FALSE(r.error);
-    double a = 0.0, j = 0.0;  // the pieces' largest joint |a| / A and |j| / J
-    std::size_t cycles = 0;
-    for (std::size_t k = 0; k < r.joints.size(); ++k) {
-      if (r.phase[k] != ipo::SyncPhase::tracking || r.line[k] < 10 || r.line[k] > 13) continue;
-      ++cycles;
-      for (std::size_t i = 0; i < 3; ++i) {
-        a = std::max(a, std::fabs(r.joints[k].a[i]) / 20000.0);
-        j = std::max(j, std::fabs(r.joints[k].j[i]) / 500000.0);
-      }
-    }
-    MESSAGE("belt " << belt << " mm/s: joint |a| / A " << a << ", |j| / J " << j << ", "
-                    << r.verdict.violation_count << " audit violations");
-    CHECK(cycles > 100);
-    CHECK(j > 0.5);  // the pieces use the joints' jerk
-    CHECK(j <= 1.0 + 1e-3);
-    CHECK_FALSE(r.warning);
-    CHECK(r.verdict.violation_count == 0);
+    check_far_side(r, 10, 13, belt);
   }
 }
 
