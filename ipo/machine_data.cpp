@@ -2,8 +2,6 @@
 
 #include "ipo/machine_data.hpp"
 
-#include <algorithm>
-
 #include "machines/conveyor_params.hpp"
 
 namespace ncsim::ipo {
@@ -12,10 +10,8 @@ std::optional<std::string> machine_data_unsupported(const interp::MachineData& c
                                                     const machines::Machine& machine) {
   const machines::AxisParams* axis =
       command.axis && *command.axis < machine.axes.size() ? &machine.axes[*command.axis] : nullptr;
-  const auto& keys = machines::kConveyorFilterKeys;
   for (const interp::MachineSetting& s : command.settings) {
-    if (axis != nullptr && axis->conveyor &&
-        std::find(keys.begin(), keys.end(), s.key) != keys.end())
+    if (axis != nullptr && axis->conveyor && machines::find_conveyor_filter_param(s.key) != nullptr)
       continue;
     return "#MACHINE DATA of " + std::string(s.id) + " (" + std::string(s.key) + ")" +
            (axis != nullptr ? " on axis " + axis->name : std::string()) +
@@ -30,7 +26,8 @@ std::optional<std::string> machine_data_unsupported(const interp::MachineData& c
 machines::ConveyorAxisParams apply_machine_data(machines::ConveyorAxisParams current,
                                                 const interp::MachineData& command) {
   for (const interp::MachineSetting& s : command.settings)
-    machines::set_conveyor_filter_param(current, s.key, s.value);
+    if (const machines::ConveyorFilterParam* f = machines::find_conveyor_filter_param(s.key))
+      f->set(current, s.value);
   return current;
 }
 

@@ -2,28 +2,14 @@
 
 #include "machines/conveyor_params.hpp"
 
+#include <algorithm>
+
 namespace ncsim::machines {
 
-bool set_conveyor_filter_param(ConveyorAxisParams& params, std::string_view key, double value) {
-  const int order = static_cast<int>(value);  // uns32 0..1000 (param_table.cpp)
-  if (key == "conv_sync.enable_filter") {
-    params.enable_filter = value != 0.0;
-  } else if (key == "conv_sync.type_pos_filter") {
-    params.type_pos_filter = order;
-  } else if (key == "conv_sync.order_pos_filter") {
-    params.order_pos_filter = order;
-  } else if (key == "conv_sync.order_v_filter") {
-    params.order_v_filter = order;
-  } else if (key == "conv_sync.order_post_v_filter") {
-    params.order_post_v_filter = order;
-  } else if (key == "conv_sync.order_v_filter_dyn") {
-    params.order_v_filter_dyn = order;
-  } else if (key == "conv_sync.delay_time") {
-    params.delay_time = value;
-  } else {
-    return false;
-  }
-  return true;
+const ConveyorFilterParam* find_conveyor_filter_param(std::string_view key) noexcept {
+  const auto* it = std::find_if(kConveyorFilterParams.begin(), kConveyorFilterParams.end(),
+                                [&](const ConveyorFilterParam& f) { return f.key == key; });
+  return it != kConveyorFilterParams.end() ? it : nullptr;
 }
 
 }  // namespace ncsim::machines

@@ -448,8 +448,8 @@ AxisParams build_axis(const ListValues& v, core::DiagnosticList& diagnostics) {
   a.conv_sync_optim = v.number("kenngr.conv_sync_optim") != 0.0;  // --- workspace
   if (v.number("conv_sync.is_master") != 0.0) {
     ConveyorAxisParams c;
-    for (const std::string_view key : kConveyorFilterKeys)
-      set_conveyor_filter_param(c, key, v.internal(key));
+    for (const ConveyorFilterParam& f : kConveyorFilterParams)
+      f.set(c, v.internal(f.key));
     c.optimised_monitoring = v.number("kenngr.conv_sync_optim") != 0.0;
     a.conveyor = c;
   }
