@@ -102,13 +102,28 @@ double arc_length(const planner::Move& mv, const XVirtualParams& p) {
   return arc_speeds(mv, p, 0.0).first;
 }
 
-/// The axis and the kind of limit that bind the planner's path velocity, as NC9100 names them.
-std::pair<std::size_t, const char*> binding(const planner::PathLimits& pl,
-                                            std::span<const std::string> names) {
+/// NC9100 unless the planner's own limits of `curve`, planned as `probe` asked for `need`
+/// [mm/s], allow `need`; `where` names the place (after "mm/s"), `there` echoes it (after the
+/// limit).
+std::optional<XvError> belt_too_fast(const planner::Segment& curve, planner::Move probe,
+                                     double need, const XVirtualParams& p,
+                                     std::span<const planner::AxisLimits> limits,
+                                     std::span<const std::string> names, const std::string& where,
+                                     const char* there) {
+  probe.feed = need;  // the planner caps at the programmed feed: ask for `need`
+  const planner::PathLimits pl = planner::path_limits(curve, probe, limits);
+  if (pl.v_max >= need * (1.0 - 1e-9)) return std::nullopt;
   const char* what = pl.limit == planner::VelocityLimit::axis_velocity ? "velocity"
                      : pl.limit == planner::VelocityLimit::centripetal ? "acceleration"
                                                                        : "jerk";
-  return {std::min<std::size_t>(pl.limiting_axis, names.size() - 1), what};
+  const std::size_t axis = std::min<std::size_t>(pl.limiting_axis, names.size() - 1);
+  char buf[480];
+  std::snprintf(buf, sizeof buf,
+                "x_virtual: a belt at %.6g mm/s (1.1 x CONV_VEL, the fastest before 50653) needs a "
+                "path velocity of %.6g mm/s%s here; axis %s's %s allows only %.6g mm/s%s: a "
+                "dynamic error, the belt cannot be slowed (004 l.440, l.621)",
+                p.v_belt, need, where.c_str(), names[axis].c_str(), what, pl.v_max, there);
+  return XvError{kXvTooFastId, buf};
 }
 
 }  // namespace
@@ -157,20 +172,7 @@ std::optional<XvError> finish(planner::Move& mv, double length, const XVirtualPa
   // smallest X share), so the plan is nowhere slower than the belt asks; where it is faster the
   // channel's velocity cap brings the X component down to the belt's (ipo/channel_static.cpp).
   mv.feed = std::max(p.v_belt * length / std::fabs(dx), peak_feed);
-  const double need = mv.feed;
-  planner::Move probe = mv;  // the planner caps at the programmed feed: ask for `need`
-  probe.feed = need;
-  const planner::Segment seg = planner::Segment::from_move(probe);
-  const planner::PathLimits pl = planner::path_limits(seg, probe, limits);
-  if (pl.v_max >= need * (1.0 - 1e-9)) return std::nullopt;
-  const auto [axis, what] = binding(pl, names);
-  char buf[400];
-  std::snprintf(buf, sizeof buf,
-                "x_virtual: a belt at %.6g mm/s (1.1 x CONV_VEL, the fastest before 50653) needs a "
-                "path velocity of %.6g mm/s here; axis %s's %s allows only %.6g mm/s: a dynamic "
-                "error, the belt cannot be slowed (004 l.440, l.621)",
-                p.v_belt, need, names[axis].c_str(), what, pl.v_max);
-  return XvError{kXvTooFastId, buf};
+  return belt_too_fast(planner::Segment::from_move(mv), mv, mv.feed, p, limits, names, "", "");
 }
 
 }  // namespace
@@ -289,19 +291,10 @@ std::optional<XvError> blend_belt_feed(planner::Move& in, planner::Move& out,
   const double need = p.v_belt / lo;  // path velocity where the ball runs steepest [mm/s]
   in.feed = std::max(in.feed, need);
   out.feed = std::max(out.feed, need);
-  planner::Move probe = in;  // the ball as the planner plans it, asked for `need`
-  probe.feed = need;
-  const planner::PathLimits pl = planner::path_limits(ball->curve, probe, limits);
-  if (pl.v_max >= need * (1.0 - 1e-9)) return std::nullopt;
-  const auto [axis, what] = binding(pl, names);
-  char buf[480];
-  std::snprintf(buf, sizeof buf,
-                "x_virtual: a belt at %.6g mm/s (1.1 x CONV_VEL, the fastest before 50653) needs a "
-                "path velocity of %.6g mm/s in the tolerance ball (G61/G261, radius %.6g mm) "
-                "here; axis %s's %s allows only %.6g mm/s there: a dynamic error, the belt cannot "
-                "be slowed (004 l.440, l.621)",
-                p.v_belt, need, ball->radius, names[axis].c_str(), what, pl.v_max);
-  return XvError{kXvTooFastId, buf};
+  char where[96];
+  std::snprintf(where, sizeof where, " in the tolerance ball (G61/G261, radius %.6g mm)",
+                ball->radius);
+  return belt_too_fast(ball->curve, in, need, p, limits, names, where, " there");
 }
 
 }  // namespace ncsim::ipo
