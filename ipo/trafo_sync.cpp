@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace ncsim::ipo {
@@ -266,17 +267,21 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
   const int n = std::clamp(static_cast<int>(std::ceil(length / 5.0)), 4, kBeltShareSamples);
   const auto s_at = [&](int k) { return length * static_cast<double>(k) / n; };
 
-  // Belt travel 0: the largest path derivatives, at most what the planner plans with.
+  // Belt travel 0: the largest path derivatives, at most what the planner plans with. The
+  // samples' points and their derivatives at travel 0 are kept for the travels below.
   AxisVec m1{}, m2{}, m3{};
-  PathBeltDerivatives d{};
-  for (int k = 0; k <= n; ++k) {
-    if (!path_belt_derivatives(inverse, xyz, segment.at(s_at(k)), na, carry.e, 0.0, nj, d))
-      continue;
+  std::vector<planner::PathPoint> points(static_cast<std::size_t>(n + 1));
+  std::vector<std::optional<PathBeltDerivatives>> at0(points.size());
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    points[k] = segment.at(s_at(static_cast<int>(k)));
+    PathBeltDerivatives d{};
+    if (!path_belt_derivatives(inverse, xyz, points[k], na, carry.e, 0.0, nj, d)) continue;
     for (std::size_t i = 0; i < nj; ++i) {
       m1[i] = std::max(m1[i], std::fabs(d.s[i]));
       m2[i] = std::max(m2[i], std::fabs(d.ss[i]));
       m3[i] = std::max(m3[i], std::fabs(d.sss[i]));
     }
+    at0[k] = d;
   }
 
   // Every sample carried over the travel it can run at: the velocity cap, the terms of a and j.
@@ -284,16 +289,21 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
   std::vector<SampleAt> where;
   terms.reserve(static_cast<std::size_t>(n + 1) * kBeltShareShifts * nj);
   where.reserve(static_cast<std::size_t>(n + 1) * kBeltShareShifts);
-  for (int k = 0; k <= n; ++k) {
-    const planner::PathPoint p = segment.at(s_at(k));
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const planner::PathPoint& p = points[k];
     const std::array<double, 3> tcp = tcp_of(p.x, xyz);
     const auto [t_lo, t_hi] = shift_range(tcp, carry);
     if (t_lo > t_hi) continue;  // the belt never carries this point into the workspace
     const int shifts = carry.workspace && t_hi > t_lo ? kBeltShareShifts : 1;
     for (int m = 0; m < shifts; ++m) {
       const double t = shifts == 1 ? t_lo : t_lo + (t_hi - t_lo) * m / (shifts - 1);
-      if (!path_belt_derivatives(inverse, xyz, p, na, carry.e, t, nj, d))
+      PathBeltDerivatives d{};
+      if (t == 0.0) {
+        if (!at0[k]) continue;  // the transform failed there (the run stops it: NC3201)
+        d = *at0[k];
+      } else if (!path_belt_derivatives(inverse, xyz, p, na, carry.e, t, nj, d)) {
         continue;  // the belt cannot carry the block there (the run stops it: NC3201)
+      }
       for (std::size_t i = 0; i < nj; ++i) {
         const double left = joints[i].v_max - w * std::fabs(d.b[i]);
         if (!(left > 0.0))
