@@ -39,15 +39,11 @@ StaticRun run(const std::string& program, double belt) {
   const machines::Machine& m = interp::test::machine("static_saw");
   ipo::test::FakePort port(belt);
   port.latch_at_ = 1;
-  ipo::ChannelConfig cfg = ipo::channel_config(m, kT);
-  ipo::Audit audit(cfg.path.axes, kT, cfg.path.start);
-  ipo::test::Recorder rec;
-  ipo::test::AuditedRecorder tee(&audit, &rec);
-  ipo::test::ConveyorRig rig(program, m, std::move(cfg), &port, &tee);
-  audit.set_setpoints(&rig.ch.setpoints());
+  ipo::test::AuditedConveyorRig audited(program, m, ipo::channel_config(m, kT), &port);
+  const ipo::test::ConveyorRig& rig = audited.rig;
   StaticRun r;
   r.status = ipo::test::run_to_end(
-      rig.ch,
+      audited.rig.ch,
       [&] {
         r.x.push_back(rig.ch.axes().command[0]);
         r.y.push_back(rig.ch.axes().command[1]);
@@ -59,11 +55,9 @@ StaticRun run(const std::string& program, double belt) {
     r.source_error = d->id;
     r.source_line = d->loc.line;
   }
-  r.verdict = audit.verdict();
+  r.verdict = audited.audit.verdict();
   if (r.error) MESSAGE(r.error->id << " line " << r.error->line << ": " << r.error->message);
-  for (const ipo::Violation& v : r.verdict.violations)
-    MESSAGE("audit: axis " << int(v.axis) << " t " << v.t << " value " << v.value << " limit "
-                           << v.limit);
+  ipo::test::message_violations(r.verdict);
   return r;
 }
 

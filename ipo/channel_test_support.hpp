@@ -3,6 +3,8 @@
 // ipo/test_support.hpp, which stays free of the channel so that the interpolator's tests need
 // only ncsim_ipo).
 
+#include <doctest/doctest.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -88,6 +90,29 @@ struct ConveyorRig {
     ch.attach_conveyor(port);
   }
 };
+
+/// A ConveyorRig audited on its setpoints as `ncsim time --audit` does (the audit and a
+/// recorder behind one sink). After run_to_end(rig.ch), `audit.verdict()` judges the run.
+struct AuditedConveyorRig {
+  Audit audit;
+  Recorder rec;
+  AuditedRecorder tee;
+  ConveyorRig rig;
+  AuditedConveyorRig(const std::string& text, const machines::Machine& m, ChannelConfig config,
+                     conveyor::Port* port)
+      : audit(config.path.axes, config.path.channel.t_cycle, config.path.start),
+        tee(&audit, &rec),
+        rig(text, m, std::move(config), port, &tee) {
+    audit.set_setpoints(&rig.ch.setpoints());
+  }
+};
+
+/// Prints `verdict`'s violations as test messages (they say where a failing check went wrong).
+inline void message_violations(const Verdict& verdict) {
+  for (const Violation& v : verdict.violations)
+    MESSAGE("audit: axis " << int(v.axis) << " t " << v.t << " value " << v.value << " limit "
+                           << v.limit);
+}
 
 /// What a program run on a conveyor channel gave: the axes after every cycle that left the
 /// channel running, how it ended, and the adapter's (ProgramSource's) error if it had one.

@@ -43,16 +43,11 @@ Run run(const std::string& program,
         const machines::Machine& m = interp::test::machine("laser_portal"), double belt = kBelt) {
   ipo::test::FakePort port(belt);
   port.latch_at_ = 1;
-  ipo::ChannelConfig cfg = ipo::channel_config(m, kT);
-  ipo::Audit audit(cfg.path.axes, kT, cfg.path.start);
-  ipo::test::Recorder rec;
-  ipo::test::AuditedRecorder tee(&audit, &rec);
-  ipo::test::ConveyorRig rig(program, m, std::move(cfg), &port, &tee);
-  audit.set_setpoints(&rig.ch.setpoints());
-  const ipo::Channel& ch = rig.ch;
+  ipo::test::AuditedConveyorRig audited(program, m, ipo::channel_config(m, kT), &port);
+  const ipo::Channel& ch = audited.rig.ch;
   Run r;
   r.status = ipo::test::run_to_end(
-      rig.ch,
+      audited.rig.ch,
       [&] {
         const ipo::ConveyorSync& s = *ch.conveyor_sync();
         if (r.handover == 0 && !r.phase.empty() && r.phase.back() == ipo::SyncPhase::catching_up &&
@@ -64,13 +59,11 @@ Run run(const std::string& program,
       },
       100'000);
   r.error = ch.run_time_error();
-  r.verdict = audit.verdict();
+  r.verdict = audited.audit.verdict();
   if (r.error)
     MESSAGE(r.error->id << " line " << r.error->line << " t " << r.error->t << ": "
                         << r.error->message);
-  for (const ipo::Violation& v : r.verdict.violations)
-    MESSAGE("audit: axis " << int(v.axis) << " t " << v.t << " value " << v.value << " limit "
-                           << v.limit);
+  ipo::test::message_violations(r.verdict);
   return r;
 }
 
