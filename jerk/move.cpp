@@ -101,6 +101,32 @@ void level_slope(Level& lv, double vm, double j) noexcept {
       curve_of(p1, a1, lv.first.duration[1] > 0.0) + curve_of(q, aq, lv.second.duration[1] > 0.0);
 }
 
+// velocity_ramp(vm, 0, v1, a_up, a_down, j) for a ramp that starts at a = 0 (a level's second
+// ramp): the same expressions with a0 = 0 written out, so the same phases bit for bit
+// (v_zero = vm, no start acceleration beyond a limit, radicand J dv), without the terms the
+// compiler cannot drop for a literal 0 (a0 |a0| / (2J) is a division; IEEE signed zeros keep
+// the products): issue 11, session 25.
+Ramp ramp_from_coast(double vm, double v1, double a_up, double a_down, double j) noexcept {
+  Ramp out;
+  out.v_end = v1;
+  const double s = v1 >= vm ? 1.0 : -1.0;
+  const double a_lim = s > 0.0 ? a_up : a_down;
+  const double dv = s * (v1 - vm);
+  const double radicand = j * dv;
+  double a_peak = radicand > detail::kResidue * std::abs(radicand) ? std::sqrt(radicand) : 0.0;
+  double t_hold = 0.0;
+  if (a_peak > a_lim) {
+    a_peak = a_lim;
+    const double dv_ramps = (2.0 * a_peak * a_peak) / (2.0 * j);  // [mm/s]
+    const double dv_hold = dv - dv_ramps;
+    if (dv_hold > detail::kResidue * (std::abs(dv) + std::abs(dv_ramps))) t_hold = dv_hold / a_peak;
+  }
+  out.jerk = {s * j, 0.0, -s * j};
+  out.duration = {a_peak > detail::kResidue * a_peak ? a_peak / j : 0.0, t_hold, a_peak / j};
+  out.a_peak = s * a_peak;
+  return out;
+}
+
 // The first part of a level, (v0, a0) -> (vm, 0), into `cross` and `first`; returns its
 // distance [mm] and adds its way (the pieces' |distances|) to `path`.
 double first_part(const Frame& f, double vm, const Limits& lim, Crossing& cross, Ramp& first,
@@ -131,7 +157,7 @@ double first_part(const Frame& f, double vm, const Limits& lim, Crossing& cross,
 // searches evaluate many levels into one Level without constructing and copying a new one each
 // time, and take level_slope only where their solver steps from the level).
 void level_into(const Frame& f, double vm, const Limits& lim, Level& out) noexcept {
-  out.second = velocity_ramp(vm, 0.0, f.v1, lim.a_max, lim.d_max, lim.j_max);
+  out.second = ramp_from_coast(vm, f.v1, lim.a_max, lim.d_max, lim.j_max);
   // (vm, 0) -> (v1, 0) from a = 0 is symmetric in time: the mean velocity is (vm + v1) / 2.
   const double t_second = out.second.time();
   out.dist = 0.5 * (vm + f.v1) * t_second;
@@ -152,7 +178,7 @@ double kink_gap(const Frame& f, double vm, double v_zero, const Limits& lim) noe
   double dist = 0.0;
   if (vm != f.v1) {
     // (vm, 0) -> (v1, 0) from a = 0 is symmetric in time: the mean velocity is (vm + v1) / 2.
-    dist = 0.5 * (vm + f.v1) * velocity_ramp(vm, 0.0, f.v1, lim.a_max, lim.d_max, j).time();
+    dist = 0.5 * (vm + f.v1) * ramp_from_coast(vm, f.v1, lim.a_max, lim.d_max, j).time();
   }
   if (vm == v_zero && !f.cs.possible) {
     const double t = std::abs(f.a0) / j;
