@@ -50,7 +50,7 @@ double natural_sign(const State& start, double p1, double v1) noexcept {
 // that overshoots and comes back at a level vm >= 0 in this frame).
 Frame frame_of(const State& start, double p1, double v1, double sign, const Limits& lim) noexcept {
   Frame f{sign, sign * start.v, sign * start.a, sign * v1, sign * (p1 - start.p), {}};
-  if (f.v0 < 0.0 || f.a0 < 0.0) f.cs = detail::crossing_start(f.v0, f.a0, lim, true);
+  if (f.v0 < 0.0 || f.a0 < 0.0) detail::crossing_start_into(f.cs, f.v0, f.a0, lim, true);
   return f;
 }
 
