@@ -15,6 +15,7 @@
 #include "axes/profile.hpp"
 #include "axes/profile_builder.hpp"
 #include "axes/profile_classify.hpp"
+#include "jerk/trusted.hpp"
 
 namespace ncsim::axes {
 
@@ -116,7 +117,7 @@ double rest_to_rest_fastest_time(double dist, const Dynamics& dyn) noexcept {
   const double t_cruise = d_cruise > 0.0 ? d_cruise / vm : 0.0;
   // A ramp between rest and vm under the limit a (both ramps start at a = 0): 2 sqrt(vm / J)
   // without a hold, vm / a + a / J with one; the ramps' phase sums to rounding (1e-15), without
-  // building them (issue 11, session 25: the stop-then-go bound, 0.19 per plan).
+  // building them (issue 11, session 25: the stop-then-go bound, half the plans).
   const auto ramp_time = [&](double a) {
     return vm * j <= a * a ? 2.0 * std::sqrt(vm / j) : vm / a + a / j;
   };
@@ -134,6 +135,8 @@ bool plan_fastest(const MotionState& start, const PositionTarget& target, const 
     direct = true;
     return true;
   }
+  // (The inputs are plan_position's, checked there: the kernel's searches without their own
+  // check, jerk/trusted.hpp.)
   // The candidates are compared by their phase times; a candidate is built when it is the
   // fastest so far (the two-peak change and the turn are rarely both faster than the single
   // peak), and each candidate's object is made only where it is evaluated: a Reversal is zeroed
@@ -143,7 +146,7 @@ bool plan_fastest(const MotionState& start, const PositionTarget& target, const 
   bool found = false;
   {
     jerk::Move m;
-    if (jerk::fastest_move(start, target.p, target.v, dyn, m) == jerk::Status::ok) {
+    if (jerk::detail::fastest_move_trusted(start, target.p, target.v, dyn, m) == jerk::Status::ok) {
       found = true;
       t_best = m.time();
       ProfileBuilder b(out, start);
@@ -158,7 +161,8 @@ bool plan_fastest(const MotionState& start, const PositionTarget& target, const 
   // (Skipped where its lower bound shows it cannot be faster: profile_classify.)
   if (two_peak_bound(start, target, dyn, t_best) < t_best) {
     jerk::TwoPeak tp;
-    if (jerk::two_peak_move(start, target.p, target.v, dyn, tp) == jerk::Status::ok &&
+    if (jerk::detail::two_peak_move_trusted(start, target.p, target.v, dyn, tp) ==
+            jerk::Status::ok &&
         tp.time() < t_best) {
       found = true;
       t_best = tp.time();
@@ -171,7 +175,8 @@ bool plan_fastest(const MotionState& start, const PositionTarget& target, const 
   // arrive at v1 without a detour, or v1 against the direction of travel).
   if (!direct && target.v != 0.0) {
     jerk::Reversal rev;
-    if (jerk::reversal_move(start, target.p, target.v, dyn, rev) == jerk::Status::ok &&
+    if (jerk::detail::reversal_move_trusted(start, target.p, target.v, dyn, rev) ==
+            jerk::Status::ok &&
         rev.time() < t_best) {
       found = true;
       t_best = rev.time();
@@ -195,7 +200,8 @@ bool plan_fastest(const MotionState& start, const PositionTarget& target, const 
   } else {
     const MotionState rest{b.state().p, 0.0, 0.0};
     jerk::Move m;
-    if (jerk::fastest_move(rest, target.p, target.v, dyn, m) != jerk::Status::ok) return found;
+    if (jerk::detail::fastest_move_trusted(rest, target.p, target.v, dyn, m) != jerk::Status::ok)
+      return found;
     append_move(b, m);
   }
   b.finish(&end);

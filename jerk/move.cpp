@@ -20,6 +20,7 @@
 #include "jerk/crossing.hpp"
 #include "jerk/jerk.hpp"
 #include "jerk/root.hpp"
+#include "jerk/trusted.hpp"
 
 namespace ncsim::jerk {
 
@@ -537,12 +538,14 @@ Status move_of_duration(const State& start, double p1, double v1, double duratio
 
 namespace {
 
+bool valid_request(const State& start, double p1, double v1, const Limits& lim) noexcept {
+  return valid(lim) && finite(start) && std::isfinite(p1) && std::isfinite(v1) &&
+         std::abs(v1) <= lim.v_max;
+}
+
+// The search of fastest_move for inputs already checked (valid_request).
 Status fastest_move_in(const State& start, double p1, double v1, const Limits& lim, Move& out,
                        bool curved) noexcept {
-  if (!valid(lim) || !finite(start) || !std::isfinite(p1) || !std::isfinite(v1) ||
-      std::abs(v1) > lim.v_max) {
-    return Status::invalid_input;
-  }
   // The natural frame, and for targets approached from the wrong side the reversed one (overshoot
   // and return without a stop in between: to a target at rest, or one to be met moving back);
   // the faster of the two.
@@ -576,11 +579,18 @@ Status fastest_move_in(const State& start, double p1, double v1, const Limits& l
 
 Status fastest_move(const State& start, double p1, double v1, const Limits& lim,
                     Move& out) noexcept {
+  if (!valid_request(start, p1, v1, lim)) return Status::invalid_input;
+  return fastest_move_in(start, p1, v1, lim, out, true);
+}
+
+Status detail::fastest_move_trusted(const State& start, double p1, double v1, const Limits& lim,
+                                    Move& out) noexcept {
   return fastest_move_in(start, p1, v1, lim, out, true);
 }
 
 Status detail::fastest_move_newton(const State& start, double p1, double v1, const Limits& lim,
                                    Move& out) noexcept {
+  if (!valid_request(start, p1, v1, lim)) return Status::invalid_input;
   return fastest_move_in(start, p1, v1, lim, out, false);
 }
 

@@ -20,6 +20,7 @@
 #include <limits>
 
 #include "jerk/jerk.hpp"
+#include "jerk/trusted.hpp"
 
 namespace ncsim::jerk {
 
@@ -78,6 +79,11 @@ Status two_peak_move(const State& start, double p1, double v1, const Limits& lim
       std::abs(v1) > lim.v_max) {
     return Status::invalid_input;
   }
+  return detail::two_peak_move_trusted(start, p1, v1, lim, out);
+}
+
+Status detail::two_peak_move_trusted(const State& start, double p1, double v1, const Limits& lim,
+                                     TwoPeak& out) noexcept {
   const double dp = p1 - start.p;
   if (!(dp != 0.0)) return Status::not_supported;
   const double f = dp > 0.0 ? 1.0 : -1.0;
