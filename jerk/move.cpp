@@ -311,15 +311,14 @@ bool finite(const State& s) noexcept {
   return std::isfinite(s.p) && std::isfinite(s.v) && std::isfinite(s.a);
 }
 
-Move make_move(const Frame& f, double vm, const Level& lv, double t_cruise) noexcept {
-  Move m;
+// Writes every member of `m` (in place: no Move zero-filled and copied per answer).
+void set_move(Move& m, const Frame& f, double vm, const Level& lv, double t_cruise) noexcept {
   m.sign = f.sign;
   m.cross = lv.cross;
   m.first = lv.first;
   m.second = lv.second;
   m.v_level = vm;
   m.t_cruise = t_cruise;
-  return m;
 }
 
 }  // namespace
@@ -362,7 +361,7 @@ Status stretch_from(const Frame& f, double vm_top, double duration, const Limits
   const double t_min = top.t_ramp + cruise_time(f, vm_top, top);
   if (duration <= t_min) {
     if (duration < t_min * (1.0 - 1e-12)) return Status::too_short;
-    out = make_move(f, vm_top, top, cruise_time(f, vm_top, top));
+    set_move(out, f, vm_top, top, cruise_time(f, vm_top, top));
     return Status::ok;
   }
   // Lowest level of the feasible range below vm_top: 0 when the move can stop and go within
@@ -375,7 +374,7 @@ Status stretch_from(const Frame& f, double vm_top, double duration, const Limits
     vm_low = solve_bracket(vm_top, 0.0, g_dist(vm_top), rest.dist - f.d, kResidue * d_abs, g_dist);
   }
   if (vm_low == 0.0 && dwell && duration >= rest.t_ramp) {
-    out = make_move(f, 0.0, rest, duration - rest.t_ramp);  // dwell at rest in between
+    set_move(out, f, 0.0, rest, duration - rest.t_ramp);  // dwell at rest in between
     return Status::ok;
   }
   // g(vm) = T(vm) - duration: <= 0 at vm_top, > 0 at the slow end of the range.
@@ -397,7 +396,7 @@ Status stretch_from(const Frame& f, double vm_top, double duration, const Limits
   const double vm = solve_bracket(vm_top, lo, g(vm_top), g_lo, kResidue * duration, g);
   const Level lv = level(f, vm, lim);
   if (lv.dist > f.d + 1e-9 * d_abs) return Status::not_supported;  // range not connected
-  out = make_move(f, vm, lv, cruise_time(f, vm, lv));
+  set_move(out, f, vm, lv, cruise_time(f, vm, lv));
   return Status::ok;
 }
 
@@ -467,7 +466,7 @@ Status stretch_scan(const Frame& f, double vm_top, double duration, const Limits
       }
       double g_lo = g(lo);
       if (lo == 0.0 && dwell && duration >= rest.t_ramp && g_hi <= 0.0) {
-        out = make_move(f, 0.0, rest, duration - rest.t_ramp);  // dwell at rest in between
+        set_move(out, f, 0.0, rest, duration - rest.t_ramp);  // dwell at rest in between
         return Status::ok;
       }
       if (lo == 0.0 && !dwell) {  // T grows without bound as vm -> 0: halve until too slow
@@ -481,7 +480,7 @@ Status stretch_scan(const Frame& f, double vm_top, double duration, const Limits
         const double vm = solve_bracket(hi, lo, g_hi, g_lo, kResidue * duration, g);
         level_into(f, vm, lim, lv);
         if (lv.dist <= f.d + kResidue * std::max(d_abs, lv.path)) {
-          out = make_move(f, vm, lv, cruise_time(f, vm, lv));
+          set_move(out, f, vm, lv, cruise_time(f, vm, lv));
           return Status::ok;
         }
         if (n < kCap && vm < at(i) && vm > at(j)) hole = vm;  // split the run there
@@ -554,21 +553,26 @@ Status fastest_move_in(const State& start, double p1, double v1, const Limits& l
   for (const double sign : {sign0, -sign0}) {
     // (The reversed frame with v1 != 0: an arrival velocity pointing back from beyond the
     // target; the natural frame then has f.v1 < 0 and is skipped.)
-    const Frame f = frame_of(start, p1, v1, sign, lim);
-    if (f.v1 < 0.0) continue;
+    // (Both skips decided from the frame's values before the frame and its crossing start are
+    // built: the reversed frame is mostly skipped.)
+    if (sign * v1 < 0.0) continue;
     // A target behind (d < 0) cannot be reached by a frame start that never moves backward
     // (v0 >= 0 and the release velocity v_zero >= 0: every ramp of the family then keeps
     // v >= 0, so every level covers a distance >= 0). Decided before any level is evaluated.
-    if (f.d < 0.0 && f.v0 >= 0.0 && f.v0 + f.a0 * std::abs(f.a0) / (2.0 * lim.j_max) >= 0.0) {
+    const double v0 = sign * start.v;
+    const double a0 = sign * start.a;
+    if (sign * (p1 - start.p) < 0.0 && v0 >= 0.0 &&
+        v0 + a0 * std::abs(a0) / (2.0 * lim.j_max) >= 0.0) {
       continue;
     }
+    const Frame f = frame_of(start, p1, v1, sign, lim);
     Level lv;
     const double vm = top_level(f, lim, lv, curved);
     if (vm < 0.0) continue;
     const double t_cruise = cruise_time(f, vm, lv);
     if (lv.t_ramp + t_cruise < best) {
       best = lv.t_ramp + t_cruise;
-      out = make_move(f, vm, lv, t_cruise);
+      set_move(out, f, vm, lv, t_cruise);
     }
     if (f.v0 >= 0.0) break;  // not moving away: no overshoot can be faster than this move
   }
