@@ -158,8 +158,10 @@ bool plan_fastest(const MotionState& start, const PositionTarget& target, const 
   }
   // Candidate 2: the two-peak change (the acceleration dips toward 0 without reaching it),
   // for targets between the direct ramp and releasing the start acceleration first.
-  // (Skipped where its lower bound shows it cannot be faster: profile_classify.)
-  if (two_peak_bound(start, target, dyn, t_best) < t_best) {
+  // (Skipped where its shape does not apply, then where its lower bound shows it cannot be
+  // faster: profile_classify.)
+  if (jerk::detail::two_peak_applies(start, target.p, target.v, dyn) &&
+      two_peak_bound(start, target, dyn, t_best) < t_best) {
     jerk::TwoPeak tp;
     if (jerk::detail::two_peak_move_trusted(start, target.p, target.v, dyn, tp) ==
             jerk::Status::ok &&

@@ -1,6 +1,7 @@
 // Tests of jerk/trusted.hpp: for valid inputs the unchecked entry points answer exactly what the
-// checked ones do (the same status and the same phases, bit for bit), and the checked ones still
-// reject what the trusted ones leave to their caller.
+// checked ones do (the same status and the same phases, bit for bit), two_peak_applies holds
+// wherever a two-peak change is found, and the checked ones still reject what the trusted ones
+// leave to their caller.
 
 #include "jerk/trusted.hpp"
 
@@ -34,6 +35,7 @@ TEST_CASE("the trusted searches answer what the checked ones answer for valid in
   int moves = 0;
   int two_peaks = 0;
   int turns = 0;
+  int applying = 0;
   for (int i = 0; i < 4000; ++i) {
     const auto d = ncsim::test::draw_move(rng, ncsim::test::Arrival::half);
     Move m1;
@@ -48,7 +50,10 @@ TEST_CASE("the trusted searches answer what the checked ones answer for valid in
     TwoPeak t2;
     const Status s2 = ncsim::jerk::two_peak_move(d.start, d.p1, d.v1, d.lim, t1);
     REQUIRE(ncsim::jerk::detail::two_peak_move_trusted(d.start, d.p1, d.v1, d.lim, t2) == s2);
+    const bool applies = ncsim::jerk::detail::two_peak_applies(d.start, d.p1, d.v1, d.lim);
+    applying += applies ? 1 : 0;
     if (s2 == Status::ok) {
+      CHECK(applies);  // a change found where the shape applies only
       ++two_peaks;
       CHECK(t1.duration == t2.duration);
       CHECK(t1.jerk == t2.jerk);
@@ -67,6 +72,7 @@ TEST_CASE("the trusted searches answer what the checked ones answer for valid in
   // 2832 moves, 10 two-peak changes, 1194 turns).
   CHECK(moves > 2000);
   CHECK(two_peaks >= 5);
+  CHECK(applying > two_peaks);  // the test is a filter, not the search
   CHECK(turns > 500);
 }
 
