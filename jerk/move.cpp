@@ -268,6 +268,33 @@ double top_level(const Frame& f, const Limits& lim, Level& out, bool curved = tr
                                     0.0};
   double hi = lim.v_max;
   double g_hi = g_top;
+  // The root step from V before the candidates (issue 11, session 25). The first candidate
+  // below V, c, bounds the piece where both ramps grow with vm (g rises on (c, V]); where c is a
+  // kink (no slope there) the solver's first step in [c, V] is this step from V alone, so where
+  // it lands in (c, V) it is taken before c is evaluated: a level in tolerance there is the
+  // root of that piece, the highest feasible level, and c is not needed (in 55 % of the
+  // searches: the step is exact where both ramps hold at their limits). Otherwise the step
+  // narrows the bracket: feasible, the root lies in [x, V]; infeasible, x is the new top.
+  const auto top_c = std::find_if(below.begin(), below.end(), [&](double c) { return c < hi; });
+  if (top_c != below.end() && (*top_c == v_zero || *top_c == f.v1) && s_hi > 0.0) {
+    const double r = g_top + 0.5 * tol;
+    const double disc = s_hi * s_hi - 2.0 * c_hi * r;
+    const double x =
+        disc >= 0.0 ? hi - 2.0 * r / (s_hi + std::sqrt(disc)) : hi - r / s_hi;  // root.hpp's step
+    if (x > *top_c && x < hi) {
+      double s_x = no_curve;
+      double c_x = no_curve;
+      const double g_x = gsc(x, s_x, c_x);
+      if (g_x <= 0.0) {
+        if (g_x >= -tol) return x;  // `out` holds the level at x
+        return answer(detail::solve_with_curve(x, hi, g_x, g_hi, s_x, s_hi, c_x, c_hi, tol, gsc));
+      }
+      hi = x;
+      g_hi = g_x;
+      s_hi = s_x;
+      c_hi = c_x;
+    }
+  }
   for (const double c : below) {
     if (!(c < hi)) continue;
     // A kink candidate's distance without a level evaluation (no slope there: NaN).
