@@ -72,6 +72,7 @@ void append_move(ProfileBuilder& builder, const jerk::Move& move) noexcept;
 /// ProfileRule::time_optimal: plans jerk::fastest_move (or stop, then the fastest move) into
 /// `out` (exact end); false when neither reaches the target. `direct`: the move goes toward
 /// the target from a start not moving away, so the manual plan need not be compared.
+/// Inputs as checked by plan_position (valid limits, finite values, |target.v| <= V).
 bool plan_fastest(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
                   Profile& out, bool& direct) noexcept;
 

@@ -15,6 +15,7 @@
 #include "axes/profile.hpp"
 #include "axes/profile_builder.hpp"
 #include "axes/profile_classify.hpp"
+#include "jerk/trusted.hpp"
 
 namespace ncsim::axes {
 
@@ -114,8 +115,13 @@ double rest_to_rest_fastest_time(double dist, const Dynamics& dyn) noexcept {
   const double j = dyn.j_max;
   const double d_cruise = dist - ramp_distance(vm, dyn.a_max, j) - ramp_distance(vm, dyn.d_max, j);
   const double t_cruise = d_cruise > 0.0 ? d_cruise / vm : 0.0;
-  return velocity_ramp(0.0, 0.0, vm, dyn.a_max, dyn.d_max, j).time() + t_cruise +
-         velocity_ramp(vm, 0.0, 0.0, dyn.a_max, dyn.d_max, j).time();
+  // A ramp between rest and vm under the limit a (both ramps start at a = 0): 2 sqrt(vm / J)
+  // without a hold, vm / a + a / J with one; the ramps' phase sums to rounding (1e-15), without
+  // building them (issue 11, session 25: the stop-then-go bound, half the plans).
+  const auto ramp_time = [&](double a) {
+    return vm * j <= a * a ? 2.0 * std::sqrt(vm / j) : vm / a + a / j;
+  };
+  return ramp_time(dyn.a_max) + t_cruise + ramp_time(dyn.d_max);
 }
 
 bool plan_fastest(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
@@ -129,49 +135,58 @@ bool plan_fastest(const MotionState& start, const PositionTarget& target, const 
     direct = true;
     return true;
   }
-  // The candidates are compared by their phase times; only the fastest is built.
+  // (The inputs are plan_position's, checked there: the kernel's searches without their own
+  // check, jerk/trusted.hpp.)
+  // The candidates are compared by their phase times; a candidate is built when it is the
+  // fastest so far (the two-peak change and the turn are rarely both faster than the single
+  // peak), and each candidate's object is made only where it is evaluated: a Reversal is zeroed
+  // in 60 instructions, more than its test costs in most plans (issue 11, session 25).
   // Candidate 1: one single-peak move (reversing without a stop where the target lies behind).
-  enum class Pick : std::uint8_t { none, single, two_peak, reversal };
-  Pick pick = Pick::none;
   double t_best = std::numeric_limits<double>::infinity();
-  jerk::Move m;
-  if (jerk::fastest_move(start, target.p, target.v, dyn, m) == jerk::Status::ok) {
-    pick = Pick::single;
-    t_best = m.time();
-    // Toward the target without moving away: a stop first cannot be faster.
-    direct = m.sign * start.v >= 0.0 && m.sign * (target.p - start.p) >= 0.0;
+  bool found = false;
+  {
+    jerk::Move m;
+    if (jerk::detail::fastest_move_trusted(start, target.p, target.v, dyn, m) == jerk::Status::ok) {
+      found = true;
+      t_best = m.time();
+      ProfileBuilder b(out, start);
+      append_move(b, m);
+      b.finish(&end);
+      // Toward the target without moving away: a stop first cannot be faster.
+      direct = m.sign * start.v >= 0.0 && m.sign * (target.p - start.p) >= 0.0;
+    }
   }
   // Candidate 2: the two-peak change (the acceleration dips toward 0 without reaching it),
   // for targets between the direct ramp and releasing the start acceleration first.
-  // (Skipped where its lower bound shows it cannot be faster: profile_classify.)
-  jerk::TwoPeak tp;
-  if (two_peak_bound(start, target, dyn, t_best) < t_best &&
-      jerk::two_peak_move(start, target.p, target.v, dyn, tp) == jerk::Status::ok &&
-      tp.time() < t_best) {
-    pick = Pick::two_peak;
-    t_best = tp.time();
+  // (Skipped where its shape does not apply, then where its lower bound shows it cannot be
+  // faster: profile_classify.)
+  if (jerk::detail::two_peak_applies(start, target.p, target.v, dyn) &&
+      two_peak_bound(start, target, dyn, t_best) < t_best) {
+    jerk::TwoPeak tp;
+    if (jerk::detail::two_peak_move_trusted(start, target.p, target.v, dyn, tp) ==
+            jerk::Status::ok &&
+        tp.time() < t_best) {
+      found = true;
+      t_best = tp.time();
+      ProfileBuilder b(out, start);
+      append_two_peak(b, tp);
+      b.finish(&end);
+    }
   }
   // Candidate 3: turn round once on the way to an arrival velocity (the target too close to
   // arrive at v1 without a detour, or v1 against the direction of travel).
-  jerk::Reversal rev;
-  if (!direct && target.v != 0.0 &&
-      jerk::reversal_move(start, target.p, target.v, dyn, rev) == jerk::Status::ok &&
-      rev.time() < t_best) {
-    pick = Pick::reversal;
-    t_best = rev.time();
-  }
-  const bool found = pick != Pick::none;
-  if (found) {
-    ProfileBuilder b(out, start);
-    if (pick == Pick::single) {
-      append_move(b, m);
-    } else if (pick == Pick::two_peak) {
-      append_two_peak(b, tp);
-    } else {
+  if (!direct && target.v != 0.0) {
+    jerk::Reversal rev;
+    if (jerk::detail::reversal_move_trusted(start, target.p, target.v, dyn, rev) ==
+            jerk::Status::ok &&
+        rev.time() < t_best) {
+      found = true;
+      t_best = rev.time();
+      ProfileBuilder b(out, start);
       append_move(b, rev.out);
       append_move(b, rev.back);
+      b.finish(&end);
     }
-    b.finish(&end);
   }
   // Candidate 4 (starts moving away): stop with A-, then the fastest move from rest; a
   // reversing ramp can only use min(A+, A-) across v = 0, so the stop can be faster.
@@ -186,7 +201,9 @@ bool plan_fastest(const MotionState& start, const PositionTarget& target, const 
     append_rest_to_rest_fastest(b, target.p, dyn);
   } else {
     const MotionState rest{b.state().p, 0.0, 0.0};
-    if (jerk::fastest_move(rest, target.p, target.v, dyn, m) != jerk::Status::ok) return found;
+    jerk::Move m;
+    if (jerk::detail::fastest_move_trusted(rest, target.p, target.v, dyn, m) != jerk::Status::ok)
+      return found;
     append_move(b, m);
   }
   b.finish(&end);

@@ -65,11 +65,12 @@ inline double crossing_distance(double v0, double a0, const Crossing& cross) noe
   return st.p;
 }
 
-/// The start's part of crossing_ramp(v0, a0, ., lim); `prepare_fixed`: also the crossing for
-/// a_z = a_fix (worth it where several end velocities follow).
-inline CrossingStart crossing_start(double v0, double a0, const Limits& lim,
-                                    bool prepare_fixed) noexcept {
-  CrossingStart cs;
+/// The start's part of crossing_ramp(v0, a0, ., lim) written into `cs` (default-constructed or
+/// from an earlier call: every member the answer depends on is set); `prepare_fixed`: also the
+/// crossing for a_z = a_fix (worth it where several end velocities follow). In place, so a
+/// frame holding it is not zero-filled and copied a second time (issue 11, session 25).
+inline void crossing_start_into(CrossingStart& cs, double v0, double a0, const Limits& lim,
+                                bool prepare_fixed) noexcept {
   const double j = lim.j_max;
   cs.v0 = v0;
   cs.a0 = a0;
@@ -78,7 +79,8 @@ inline CrossingStart crossing_start(double v0, double a0, const Limits& lim,
   // A start that neither moves backward nor reverses, or one beyond A- while slowing (it
   // forces its own ramp), has no crossing.
   cs.possible = (v0 < 0.0 || v0 + a0 * std::abs(a0) / (2.0 * j) < 0.0) && !(a0 > c);
-  if (!cs.possible) return cs;
+  cs.fixed_ok = false;
+  if (!cs.possible) return;
   cs.a_z_min = a0 > 0.0 ? std::sqrt(std::max(0.0, a0 * a0 - 2.0 * j * gain)) : 0.0;
   cs.a_fix = std::min({c, lim.a_max, std::sqrt(a0 * a0 + 2.0 * j * gain)});
   cs.fixed_ok = prepare_fixed && !(cs.a_z_min > cs.a_fix);
@@ -86,6 +88,13 @@ inline CrossingStart crossing_start(double v0, double a0, const Limits& lim,
     cs.fixed = crossing_phases(v0, a0, cs.a_fix, lim);
     cs.fixed_dist = crossing_distance(v0, a0, cs.fixed);
   }
+}
+
+/// The same as a value.
+inline CrossingStart crossing_start(double v0, double a0, const Limits& lim,
+                                    bool prepare_fixed) noexcept {
+  CrossingStart cs;
+  crossing_start_into(cs, v0, a0, lim, prepare_fixed);
   return cs;
 }
 

@@ -20,6 +20,7 @@
 #include "jerk/crossing.hpp"
 #include "jerk/jerk.hpp"
 #include "jerk/root.hpp"
+#include "jerk/trusted.hpp"
 
 namespace ncsim::jerk {
 
@@ -50,7 +51,7 @@ double natural_sign(const State& start, double p1, double v1) noexcept {
 // that overshoots and comes back at a level vm >= 0 in this frame).
 Frame frame_of(const State& start, double p1, double v1, double sign, const Limits& lim) noexcept {
   Frame f{sign, sign * start.v, sign * start.a, sign * v1, sign * (p1 - start.p), {}};
-  if (f.v0 < 0.0 || f.a0 < 0.0) f.cs = detail::crossing_start(f.v0, f.a0, lim, true);
+  if (f.v0 < 0.0 || f.a0 < 0.0) detail::crossing_start_into(f.cs, f.v0, f.a0, lim, true);
   return f;
 }
 
@@ -101,6 +102,32 @@ void level_slope(Level& lv, double vm, double j) noexcept {
       curve_of(p1, a1, lv.first.duration[1] > 0.0) + curve_of(q, aq, lv.second.duration[1] > 0.0);
 }
 
+// velocity_ramp(vm, 0, v1, a_up, a_down, j) for a ramp that starts at a = 0 (a level's second
+// ramp): the same expressions with a0 = 0 written out, so the same phases bit for bit
+// (v_zero = vm, no start acceleration beyond a limit, radicand J dv), without the terms the
+// compiler cannot drop for a literal 0 (a0 |a0| / (2J) is a division; IEEE signed zeros keep
+// the products): issue 11, session 25.
+Ramp ramp_from_coast(double vm, double v1, double a_up, double a_down, double j) noexcept {
+  Ramp out;
+  out.v_end = v1;
+  const double s = v1 >= vm ? 1.0 : -1.0;
+  const double a_lim = s > 0.0 ? a_up : a_down;
+  const double dv = s * (v1 - vm);
+  const double radicand = j * dv;
+  double a_peak = radicand > detail::kResidue * std::abs(radicand) ? std::sqrt(radicand) : 0.0;
+  double t_hold = 0.0;
+  if (a_peak > a_lim) {
+    a_peak = a_lim;
+    const double dv_ramps = (2.0 * a_peak * a_peak) / (2.0 * j);  // [mm/s]
+    const double dv_hold = dv - dv_ramps;
+    if (dv_hold > detail::kResidue * (std::abs(dv) + std::abs(dv_ramps))) t_hold = dv_hold / a_peak;
+  }
+  out.jerk = {s * j, 0.0, -s * j};
+  out.duration = {a_peak > detail::kResidue * a_peak ? a_peak / j : 0.0, t_hold, a_peak / j};
+  out.a_peak = s * a_peak;
+  return out;
+}
+
 // The first part of a level, (v0, a0) -> (vm, 0), into `cross` and `first`; returns its
 // distance [mm] and adds its way (the pieces' |distances|) to `path`.
 double first_part(const Frame& f, double vm, const Limits& lim, Crossing& cross, Ramp& first,
@@ -131,7 +158,7 @@ double first_part(const Frame& f, double vm, const Limits& lim, Crossing& cross,
 // searches evaluate many levels into one Level without constructing and copying a new one each
 // time, and take level_slope only where their solver steps from the level).
 void level_into(const Frame& f, double vm, const Limits& lim, Level& out) noexcept {
-  out.second = velocity_ramp(vm, 0.0, f.v1, lim.a_max, lim.d_max, lim.j_max);
+  out.second = ramp_from_coast(vm, f.v1, lim.a_max, lim.d_max, lim.j_max);
   // (vm, 0) -> (v1, 0) from a = 0 is symmetric in time: the mean velocity is (vm + v1) / 2.
   const double t_second = out.second.time();
   out.dist = 0.5 * (vm + f.v1) * t_second;
@@ -152,7 +179,7 @@ double kink_gap(const Frame& f, double vm, double v_zero, const Limits& lim) noe
   double dist = 0.0;
   if (vm != f.v1) {
     // (vm, 0) -> (v1, 0) from a = 0 is symmetric in time: the mean velocity is (vm + v1) / 2.
-    dist = 0.5 * (vm + f.v1) * velocity_ramp(vm, 0.0, f.v1, lim.a_max, lim.d_max, j).time();
+    dist = 0.5 * (vm + f.v1) * ramp_from_coast(vm, f.v1, lim.a_max, lim.d_max, j).time();
   }
   if (vm == v_zero && !f.cs.possible) {
     const double t = std::abs(f.a0) / j;
@@ -241,6 +268,33 @@ double top_level(const Frame& f, const Limits& lim, Level& out, bool curved = tr
                                     0.0};
   double hi = lim.v_max;
   double g_hi = g_top;
+  // The root step from V before the candidates (issue 11, session 25). The first candidate
+  // below V, c, bounds the piece where both ramps grow with vm (g rises on (c, V]); where c is a
+  // kink (no slope there) the solver's first step in [c, V] is this step from V alone, so where
+  // it lands in (c, V) it is taken before c is evaluated: a level in tolerance there is the
+  // root of that piece, the highest feasible level, and c is not needed (in 55 % of the
+  // searches: the step is exact where both ramps hold at their limits). Otherwise the step
+  // narrows the bracket: feasible, the root lies in [x, V]; infeasible, x is the new top.
+  const auto top_c = std::find_if(below.begin(), below.end(), [&](double c) { return c < hi; });
+  if (top_c != below.end() && (*top_c == v_zero || *top_c == f.v1) && s_hi > 0.0) {
+    const double r = g_top + 0.5 * tol;
+    const double disc = s_hi * s_hi - 2.0 * c_hi * r;
+    const double x =
+        disc >= 0.0 ? hi - 2.0 * r / (s_hi + std::sqrt(disc)) : hi - r / s_hi;  // root.hpp's step
+    if (x > *top_c && x < hi) {
+      double s_x = no_curve;
+      double c_x = no_curve;
+      const double g_x = gsc(x, s_x, c_x);
+      if (g_x <= 0.0) {
+        if (g_x >= -tol) return x;  // `out` holds the level at x
+        return answer(detail::solve_with_curve(x, hi, g_x, g_hi, s_x, s_hi, c_x, c_hi, tol, gsc));
+      }
+      hi = x;
+      g_hi = g_x;
+      s_hi = s_x;
+      c_hi = c_x;
+    }
+  }
   for (const double c : below) {
     if (!(c < hi)) continue;
     // A kink candidate's distance without a level evaluation (no slope there: NaN).
@@ -284,15 +338,14 @@ bool finite(const State& s) noexcept {
   return std::isfinite(s.p) && std::isfinite(s.v) && std::isfinite(s.a);
 }
 
-Move make_move(const Frame& f, double vm, const Level& lv, double t_cruise) noexcept {
-  Move m;
+// Writes every member of `m` (in place: no Move zero-filled and copied per answer).
+void set_move(Move& m, const Frame& f, double vm, const Level& lv, double t_cruise) noexcept {
   m.sign = f.sign;
   m.cross = lv.cross;
   m.first = lv.first;
   m.second = lv.second;
   m.v_level = vm;
   m.t_cruise = t_cruise;
-  return m;
 }
 
 }  // namespace
@@ -335,7 +388,7 @@ Status stretch_from(const Frame& f, double vm_top, double duration, const Limits
   const double t_min = top.t_ramp + cruise_time(f, vm_top, top);
   if (duration <= t_min) {
     if (duration < t_min * (1.0 - 1e-12)) return Status::too_short;
-    out = make_move(f, vm_top, top, cruise_time(f, vm_top, top));
+    set_move(out, f, vm_top, top, cruise_time(f, vm_top, top));
     return Status::ok;
   }
   // Lowest level of the feasible range below vm_top: 0 when the move can stop and go within
@@ -348,7 +401,7 @@ Status stretch_from(const Frame& f, double vm_top, double duration, const Limits
     vm_low = solve_bracket(vm_top, 0.0, g_dist(vm_top), rest.dist - f.d, kResidue * d_abs, g_dist);
   }
   if (vm_low == 0.0 && dwell && duration >= rest.t_ramp) {
-    out = make_move(f, 0.0, rest, duration - rest.t_ramp);  // dwell at rest in between
+    set_move(out, f, 0.0, rest, duration - rest.t_ramp);  // dwell at rest in between
     return Status::ok;
   }
   // g(vm) = T(vm) - duration: <= 0 at vm_top, > 0 at the slow end of the range.
@@ -370,7 +423,7 @@ Status stretch_from(const Frame& f, double vm_top, double duration, const Limits
   const double vm = solve_bracket(vm_top, lo, g(vm_top), g_lo, kResidue * duration, g);
   const Level lv = level(f, vm, lim);
   if (lv.dist > f.d + 1e-9 * d_abs) return Status::not_supported;  // range not connected
-  out = make_move(f, vm, lv, cruise_time(f, vm, lv));
+  set_move(out, f, vm, lv, cruise_time(f, vm, lv));
   return Status::ok;
 }
 
@@ -440,7 +493,7 @@ Status stretch_scan(const Frame& f, double vm_top, double duration, const Limits
       }
       double g_lo = g(lo);
       if (lo == 0.0 && dwell && duration >= rest.t_ramp && g_hi <= 0.0) {
-        out = make_move(f, 0.0, rest, duration - rest.t_ramp);  // dwell at rest in between
+        set_move(out, f, 0.0, rest, duration - rest.t_ramp);  // dwell at rest in between
         return Status::ok;
       }
       if (lo == 0.0 && !dwell) {  // T grows without bound as vm -> 0: halve until too slow
@@ -454,7 +507,7 @@ Status stretch_scan(const Frame& f, double vm_top, double duration, const Limits
         const double vm = solve_bracket(hi, lo, g_hi, g_lo, kResidue * duration, g);
         level_into(f, vm, lim, lv);
         if (lv.dist <= f.d + kResidue * std::max(d_abs, lv.path)) {
-          out = make_move(f, vm, lv, cruise_time(f, vm, lv));
+          set_move(out, f, vm, lv, cruise_time(f, vm, lv));
           return Status::ok;
         }
         if (n < kCap && vm < at(i) && vm > at(j)) hole = vm;  // split the run there
@@ -511,12 +564,14 @@ Status move_of_duration(const State& start, double p1, double v1, double duratio
 
 namespace {
 
+bool valid_request(const State& start, double p1, double v1, const Limits& lim) noexcept {
+  return valid(lim) && finite(start) && std::isfinite(p1) && std::isfinite(v1) &&
+         std::abs(v1) <= lim.v_max;
+}
+
+// The search of fastest_move for inputs already checked (valid_request).
 Status fastest_move_in(const State& start, double p1, double v1, const Limits& lim, Move& out,
                        bool curved) noexcept {
-  if (!valid(lim) || !finite(start) || !std::isfinite(p1) || !std::isfinite(v1) ||
-      std::abs(v1) > lim.v_max) {
-    return Status::invalid_input;
-  }
   // The natural frame, and for targets approached from the wrong side the reversed one (overshoot
   // and return without a stop in between: to a target at rest, or one to be met moving back);
   // the faster of the two.
@@ -525,21 +580,26 @@ Status fastest_move_in(const State& start, double p1, double v1, const Limits& l
   for (const double sign : {sign0, -sign0}) {
     // (The reversed frame with v1 != 0: an arrival velocity pointing back from beyond the
     // target; the natural frame then has f.v1 < 0 and is skipped.)
-    const Frame f = frame_of(start, p1, v1, sign, lim);
-    if (f.v1 < 0.0) continue;
+    // (Both skips decided from the frame's values before the frame and its crossing start are
+    // built: the reversed frame is mostly skipped.)
+    if (sign * v1 < 0.0) continue;
     // A target behind (d < 0) cannot be reached by a frame start that never moves backward
     // (v0 >= 0 and the release velocity v_zero >= 0: every ramp of the family then keeps
     // v >= 0, so every level covers a distance >= 0). Decided before any level is evaluated.
-    if (f.d < 0.0 && f.v0 >= 0.0 && f.v0 + f.a0 * std::abs(f.a0) / (2.0 * lim.j_max) >= 0.0) {
+    const double v0 = sign * start.v;
+    const double a0 = sign * start.a;
+    if (sign * (p1 - start.p) < 0.0 && v0 >= 0.0 &&
+        v0 + a0 * std::abs(a0) / (2.0 * lim.j_max) >= 0.0) {
       continue;
     }
+    const Frame f = frame_of(start, p1, v1, sign, lim);
     Level lv;
     const double vm = top_level(f, lim, lv, curved);
     if (vm < 0.0) continue;
     const double t_cruise = cruise_time(f, vm, lv);
     if (lv.t_ramp + t_cruise < best) {
       best = lv.t_ramp + t_cruise;
-      out = make_move(f, vm, lv, t_cruise);
+      set_move(out, f, vm, lv, t_cruise);
     }
     if (f.v0 >= 0.0) break;  // not moving away: no overshoot can be faster than this move
   }
@@ -550,11 +610,18 @@ Status fastest_move_in(const State& start, double p1, double v1, const Limits& l
 
 Status fastest_move(const State& start, double p1, double v1, const Limits& lim,
                     Move& out) noexcept {
+  if (!valid_request(start, p1, v1, lim)) return Status::invalid_input;
+  return fastest_move_in(start, p1, v1, lim, out, true);
+}
+
+Status detail::fastest_move_trusted(const State& start, double p1, double v1, const Limits& lim,
+                                    Move& out) noexcept {
   return fastest_move_in(start, p1, v1, lim, out, true);
 }
 
 Status detail::fastest_move_newton(const State& start, double p1, double v1, const Limits& lim,
                                    Move& out) noexcept {
+  if (!valid_request(start, p1, v1, lim)) return Status::invalid_input;
   return fastest_move_in(start, p1, v1, lim, out, false);
 }
 

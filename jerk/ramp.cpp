@@ -2,13 +2,16 @@
 // distance of a change, stopping distance (see jerk.hpp; the ramp itself: ramp_inline.hpp).
 
 #include <cmath>
+#include <limits>
 
 #include "jerk/jerk.hpp"
 
 namespace ncsim::jerk {
 
 bool valid(const Limits& limits) noexcept {
-  const auto positive = [](double x) { return std::isfinite(x) && x > 0.0; };
+  // Finite and > 0 as two comparisons (NaN fails both).
+  constexpr double kBig = std::numeric_limits<double>::max();
+  const auto positive = [](double x) { return x > 0.0 && x <= kBig; };
   return positive(limits.v_max) && positive(limits.a_max) && positive(limits.d_max) &&
          positive(limits.j_max);
 }

@@ -28,6 +28,7 @@
 #include "jerk/crossing.hpp"
 #include "jerk/jerk.hpp"
 #include "jerk/root.hpp"
+#include "jerk/trusted.hpp"
 
 namespace ncsim::jerk {
 
@@ -123,6 +124,11 @@ Status reversal_move(const State& start, double p1, double v1, const Limits& lim
       std::abs(v1) > lim.v_max) {
     return Status::invalid_input;
   }
+  return detail::reversal_move_trusted(start, p1, v1, lim, out);
+}
+
+Status detail::reversal_move_trusted(const State& start, double p1, double v1, const Limits& lim,
+                                     Reversal& out) noexcept {
   if (v1 == 0.0) return Status::not_supported;
   const double g = v1 > 0.0 ? 1.0 : -1.0;
   const double d = g * (p1 - start.p);

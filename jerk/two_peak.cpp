@@ -20,6 +20,7 @@
 #include <limits>
 
 #include "jerk/jerk.hpp"
+#include "jerk/trusted.hpp"
 
 namespace ncsim::jerk {
 
@@ -78,28 +79,55 @@ Status two_peak_move(const State& start, double p1, double v1, const Limits& lim
       std::abs(v1) > lim.v_max) {
     return Status::invalid_input;
   }
+  return detail::two_peak_move_trusted(start, p1, v1, lim, out);
+}
+
+namespace {
+
+// The change's frame toward the target (sign f, distance d) and its Shape but for w; false where
+// no two-peak change applies (no distance, a target behind the arrival, no dip: a single ramp).
+bool shape_of(const State& start, double p1, double v1, const Limits& lim, Shape& s, double& f,
+              double& d) noexcept {
   const double dp = p1 - start.p;
-  if (!(dp != 0.0)) return Status::not_supported;
-  const double f = dp > 0.0 ? 1.0 : -1.0;
-  Shape s;
+  if (!(dp != 0.0)) return false;
+  f = dp > 0.0 ? 1.0 : -1.0;
   s.v0 = f * start.v;
   s.a0 = f * start.a;
   s.v1 = f * v1;
   s.j = lim.j_max;
-  const double d = f * dp;
-  if (s.v1 < 0.0 || std::abs(s.v0) > lim.v_max) return Status::not_supported;
+  d = f * dp;
+  if (s.v1 < 0.0 || std::abs(s.v0) > lim.v_max) return false;
   const double v_zero = s.v0 + s.a0 * std::abs(s.a0) / (2.0 * s.j);
-  if (s.v1 == v_zero) return Status::not_supported;
+  if (s.v1 == v_zero) return false;
   s.sigma = s.v1 > v_zero ? 1.0 : -1.0;
   s.alpha0 = s.sigma * s.a0;
-  if (!(s.alpha0 > 0.0)) return Status::not_supported;  // no dip: a single ramp
+  if (!(s.alpha0 > 0.0)) return false;  // no dip: a single ramp
   s.lim = s.sigma > 0.0 ? lim.a_max : lim.d_max;
   if (s.v0 < 0.0) {
     // Speeding up from a start moving backward: the acceleration slows the motion until v = 0
     // (A-) and speeds it up after (A+); the peaks stay within both, and so must the start.
     s.lim = std::min(lim.a_max, lim.d_max);
-    if (s.sigma < 0.0 || s.alpha0 > s.lim) return Status::not_supported;
+    if (s.sigma < 0.0 || s.alpha0 > s.lim) return false;
   }
+  return true;
+}
+
+}  // namespace
+
+bool detail::two_peak_applies(const State& start, double p1, double v1,
+                              const Limits& lim) noexcept {
+  Shape s;
+  double f = 0.0;
+  double d = 0.0;
+  return shape_of(start, p1, v1, lim, s, f, d);
+}
+
+Status detail::two_peak_move_trusted(const State& start, double p1, double v1, const Limits& lim,
+                                     TwoPeak& out) noexcept {
+  Shape s;
+  double f = 1.0;
+  double d = 0.0;
+  if (!shape_of(start, p1, v1, lim, s, f, d)) return Status::not_supported;
   s.w = s.j * s.sigma * (s.v1 - s.v0);
   const double x_hi = std::min(s.alpha0, s.lim);
   const auto g = [&](double x) { return chain_distance(s, make(s, x)) - d; };
