@@ -92,8 +92,20 @@ double blend_shape(double angle) noexcept {
   return kShape.back();
 }
 
+JointEnds joint_ends(const Segment& in, const Segment& out) {
+  const std::uint8_t n = std::max(in.axis_count(), out.axis_count());
+  JointEnds ends{in.at(in.length()), out.at(0.0), 0.0};
+  ends.angle = tangent_angle(ends.in_end.d1, ends.out_start.d1, n, in.metric() | out.metric());
+  return ends;
+}
+
 std::optional<Blend> make_blend(const Segment& in, const Segment& out, double radius,
                                 double max_cut_in, double max_cut_out) {
+  return make_blend(in, out, joint_ends(in, out), radius, max_cut_in, max_cut_out);
+}
+
+std::optional<Blend> make_blend(const Segment& in, const Segment& out, const JointEnds& ends,
+                                double radius, double max_cut_in, double max_cut_out) {
   const std::uint8_t n = std::max(in.axis_count(), out.axis_count());
   const AxisMask metric = in.metric() | out.metric();
   const Metric distance{n, metric};
@@ -103,12 +115,10 @@ std::optional<Blend> make_blend(const Segment& in, const Segment& out, double ra
   max_cut_out = std::clamp(max_cut_out, 0.0, len_out);
   if (!(radius > 0.0) || max_cut_in <= 0.0 || max_cut_out <= 0.0) return std::nullopt;
 
-  const PathPoint in_end = in.at(len_in);
-  const PathPoint out_start = out.at(0.0);
-  const double angle = tangent_angle(in_end.d1, out_start.d1, n, metric);
+  const double angle = ends.angle;
   if (angle <= kTangentTolerance || angle > kMaxBlendAngle) return std::nullopt;
 
-  const AxisVec corner = in_end.x;
+  const AxisVec corner = ends.in_end.x;
   double r = std::min({radius, distance(in.point(len_in - max_cut_in), corner),
                        distance(out.point(max_cut_out), corner)});
   const double k = blend_shape(angle);
