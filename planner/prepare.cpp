@@ -283,14 +283,14 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
     return;
   }
   if (!pending_) {
-    pending_ = Pending{move, seg, seg.length(), StopReason::none, std::nullopt};
+    pending_.emplace(move, seg, seg.length(), StopReason::none, std::nullopt);  // in place
     return;
   }
   if (pending_->move.transformed != move.transformed)
     throw std::invalid_argument("planner: line " + std::to_string(move.line) +
                                 " switches #TRAFO without a stop before it (finish())");
   Pending p = std::move(*pending_);
-  pending_ = Pending{move, seg, seg.length(), StopReason::none, std::nullopt};
+  pending_.emplace(move, seg, seg.length(), StopReason::none, std::nullopt);  // in place
 
   StopReason stop = p.stop != StopReason::none ? p.stop : requested_stop(p.move);
   if (stop == StopReason::none && p.move.rapid && !move.rapid) stop = StopReason::rapid_to_feed;
