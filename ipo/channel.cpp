@@ -40,7 +40,8 @@ std::string text(const char* format, double a, double b) {
 
 Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
     : relay_(sink),
-      ipo_(prepared(config.path), source, &relay_),
+      // Without a sink nobody reads the joints: the interpolator then does not compute them.
+      ipo_(prepared(config.path), source, sink != nullptr ? &relay_ : nullptr),
       source_(source),
       sink_(sink),
       exact_stop_wait_max_(config.exact_stop_wait_max),

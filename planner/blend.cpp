@@ -35,12 +35,12 @@ struct Metric {
 
 /// Arc length s in [lo, hi] where the distance from `corner` equals r; the distance falls
 /// monotonically from lo (where it is >= r) to the corner end (at hi when `toward_hi`).
+/// `tangent` is the segment's tangent at the corner (a line's direction everywhere).
 double cut_point(const Segment& seg, const Metric& distance, const AxisVec& corner, double r,
-                 double lo, double hi, bool toward_hi) {
+                 double lo, double hi, bool toward_hi, const AxisVec& tangent) {
   if (seg.kind() == SegmentKind::line) {
     // Closed form: the distance grows linearly with the arc length from the corner end.
-    const AxisVec dir = seg.at(0.0).d1;
-    const double rate = distance(dir, AxisVec{});
+    const double rate = distance(tangent, AxisVec{});
     if (rate > 0.0) {
       const double s_corner = toward_hi ? hi : lo;  // the corner is at the end of the search
       const double s = toward_hi == (hi > lo) ? s_corner - r / rate : s_corner + r / rate;
@@ -92,8 +92,20 @@ double blend_shape(double angle) noexcept {
   return kShape.back();
 }
 
+JointEnds joint_ends(const Segment& in, const Segment& out) {
+  const std::uint8_t n = std::max(in.axis_count(), out.axis_count());
+  JointEnds ends{in.at(in.length()), out.at(0.0), 0.0};
+  ends.angle = tangent_angle(ends.in_end.d1, ends.out_start.d1, n, in.metric() | out.metric());
+  return ends;
+}
+
 std::optional<Blend> make_blend(const Segment& in, const Segment& out, double radius,
                                 double max_cut_in, double max_cut_out) {
+  return make_blend(in, out, joint_ends(in, out), radius, max_cut_in, max_cut_out);
+}
+
+std::optional<Blend> make_blend(const Segment& in, const Segment& out, const JointEnds& ends,
+                                double radius, double max_cut_in, double max_cut_out) {
   const std::uint8_t n = std::max(in.axis_count(), out.axis_count());
   const AxisMask metric = in.metric() | out.metric();
   const Metric distance{n, metric};
@@ -103,19 +115,19 @@ std::optional<Blend> make_blend(const Segment& in, const Segment& out, double ra
   max_cut_out = std::clamp(max_cut_out, 0.0, len_out);
   if (!(radius > 0.0) || max_cut_in <= 0.0 || max_cut_out <= 0.0) return std::nullopt;
 
-  const PathPoint in_end = in.at(len_in);
-  const PathPoint out_start = out.at(0.0);
-  const double angle = tangent_angle(in_end.d1, out_start.d1, n, metric);
+  const double angle = ends.angle;
   if (angle <= kTangentTolerance || angle > kMaxBlendAngle) return std::nullopt;
 
-  const AxisVec corner = in_end.x;
+  const AxisVec corner = ends.in_end.x;
   double r = std::min({radius, distance(in.point(len_in - max_cut_in), corner),
                        distance(out.point(max_cut_out), corner)});
   const double k = blend_shape(angle);
 
   for (int halving = 0; halving <= kRadiusHalvings && r > 1e-9; ++halving, r *= 0.5) {
-    const double s_in = cut_point(in, distance, corner, r, len_in - max_cut_in, len_in, true);
-    const double s_out = cut_point(out, distance, corner, r, max_cut_out, 0.0, true);
+    const double s_in =
+        cut_point(in, distance, corner, r, len_in - max_cut_in, len_in, true, ends.in_end.d1);
+    const double s_out =
+        cut_point(out, distance, corner, r, max_cut_out, 0.0, true, ends.out_start.d1);
     const PathPoint a = in.at(s_in);
     const PathPoint b = out.at(s_out);
     double lambda = 2.5 * k * r;

@@ -38,10 +38,24 @@ struct Blend {
   double radius = 0.0;   ///< ball radius actually used, r_eff <= r [mm]
 };
 
+/// The two points of a joint and the angle of their tangents: what the blend and the knee rule
+/// (prepare.cpp) both start from, evaluated once.
+struct JointEnds {
+  PathPoint in_end;     ///< the incoming segment at its end
+  PathPoint out_start;  ///< the outgoing segment at its start
+  double angle = 0.0;   ///< tangent_angle of their tangents over the metric axes [rad]
+};
+
+/// The ends of the joint between `in` and `out` (axes and metric of both).
+JointEnds joint_ends(const Segment& in, const Segment& out);
+
 /// The blend of the corner between `in` and `out`, or nullopt when the corner is not blended
 /// (angle below the tangent tolerance or above kMaxBlendAngle, or no room).
 std::optional<Blend> make_blend(const Segment& in, const Segment& out, double radius,
                                 double max_cut_in, double max_cut_out);
+/// The same with the joint's ends known: `ends` must be joint_ends(in, out).
+std::optional<Blend> make_blend(const Segment& in, const Segment& out, const JointEnds& ends,
+                                double radius, double max_cut_in, double max_cut_out);
 
 /// Shape factor k(angle) of the blend's end tangents (lambda = 2.5 k r) for a corner angle
 /// in radians; 0.71 for a straight line down to 0.08 at 175 degrees.

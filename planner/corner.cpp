@@ -35,6 +35,12 @@ double tangent_angle(const AxisVec& t_in, const AxisVec& t_out, std::size_t axis
 
 TransitionClass classify(const PathPoint& in_end, const PathPoint& out_start,
                          std::size_t axis_count, AxisMask metric) noexcept {
+  return classify_at_angle(in_end, out_start, axis_count,
+                           tangent_angle(in_end.d1, out_start.d1, axis_count, metric));
+}
+
+TransitionClass classify_at_angle(const PathPoint& in_end, const PathPoint& out_start,
+                                  std::size_t axis_count, double angle) noexcept {
   // Every axis counts for the tangent: an auxiliary axis's direction jump is a C0 step too.
   double tangent_gap = 0.0;
   double curv_gap = 0.0;
@@ -44,7 +50,6 @@ TransitionClass classify(const PathPoint& in_end, const PathPoint& out_start,
     curv_gap = std::max(curv_gap, std::abs(out_start.d2[i] - in_end.d2[i]));
     curv_size = std::max({curv_size, std::abs(out_start.d2[i]), std::abs(in_end.d2[i])});
   }
-  const double angle = tangent_angle(in_end.d1, out_start.d1, axis_count, metric);
   if (angle > kTangentTolerance || tangent_gap > kTangentTolerance) return TransitionClass::c0;
   if (curv_gap > std::max(kCurvatureTolerance * curv_size, 1e-9)) return TransitionClass::c1;
   return TransitionClass::c2;
@@ -108,8 +113,8 @@ Link link_velocity(const PathPoint& in_end, const PathPoint& out_start, std::siz
                    bool jerk_limited_slope) noexcept {
   const std::span<const AxisLimits> used = axes.first(std::min(axes.size(), axis_count));
   Link link;
-  link.cls = classify(in_end, out_start, axis_count, metric);
   link.angle = tangent_angle(in_end.d1, out_start.d1, axis_count, metric);
+  link.cls = classify_at_angle(in_end, out_start, axis_count, link.angle);
   const double cap = std::max(0.0, std::min(v_in, v_out));
   link.v_link = cap;
   switch (link.cls) {

@@ -67,6 +67,10 @@ double tangent_angle(const AxisVec& t_in, const AxisVec& t_out, std::size_t axis
 /// Class of the joint of `in_end` (end of the incoming segment) and `out_start`.
 TransitionClass classify(const PathPoint& in_end, const PathPoint& out_start,
                          std::size_t axis_count, AxisMask metric) noexcept;
+/// classify() with the tangent angle of the two points known: `angle` must be
+/// tangent_angle(in_end.d1, out_start.d1, axis_count, metric) (for a caller that needs both).
+TransitionClass classify_at_angle(const PathPoint& in_end, const PathPoint& out_start,
+                                  std::size_t axis_count, double angle) noexcept;
 
 /// VELOJUMP bound alone: the largest v with v |dt_i| <= C0_i min(A+_i, A-_i) T for all i
 /// (+inf when no axis changes direction); `axis` receives the limiting axis.

@@ -56,18 +56,20 @@ PathLimits path_limits(const Segment& segment, const Move& move, std::span<const
   } else {
     v_programmed = move.feed;
   }
-  // G00 has its own slope (P-AXIS-00004 acceleration, P-AXIS-00200 ramp time; move.hpp).
-  std::array<AxisLimits, kMaxAxes> rapid{};
-  std::span<const AxisLimits> used = axes.first(n);
+  PathLimits out;
   if (move.rapid) {
+    // G00 has its own slope (P-AXIS-00004 acceleration, P-AXIS-00200 ramp time; move.hpp).
+    // (The 16 axes. G00 limits are built for a G00 block only: costly to fill for every block.)
+    std::array<AxisLimits, kMaxAxes> rapid{};
     for (std::size_t i = 0; i < n; ++i)
       rapid[i] = rapid_limits(axes[i]);
-    used = std::span<const AxisLimits>(rapid.data(), n);
+    out = limits_from_bounds(b, std::span<const AxisLimits>(rapid.data(), n), v_programmed,
+                             jerk_limited(move.slope));
+    // The rapid velocity already is the axes' own; it is never "capped".
+    if (out.limit == VelocityLimit::axis_velocity) out.limit = VelocityLimit::programmed;
+  } else {
+    out = limits_from_bounds(b, axes.first(n), v_programmed, jerk_limited(move.slope));
   }
-  PathLimits out = limits_from_bounds(b, used, v_programmed, jerk_limited(move.slope));
-  // The rapid velocity already is the axes' own; it is never "capped".
-  if (move.rapid && out.limit == VelocityLimit::axis_velocity)
-    out.limit = VelocityLimit::programmed;
   out.v_end = move.end_feed ? std::min(out.v_max, std::max(*move.end_feed, 0.0)) : out.v_max;
   return out;
 }

@@ -252,7 +252,12 @@ void LookAhead::backward_from_end() {
     const double exit = std::min(s->joint_cap, entry_next);
     if (exit <= s->exit_cap) break;  // caps only grow; an unchanged one ends the pass
     s->exit_cap = exit;
-    s->entry_cap = std::min(s->cap, jerk::entry_velocity_for_exit(exit, s->length, s->d, s->j));
+    // An exit at the cap leaves the entry at the cap: a speed-up from v never ends below v
+    // (jerk::reachable_velocity adds a term >= 0 to it), so the kernel is not asked.
+    s->entry_cap =
+        exit >= s->cap
+            ? s->cap
+            : std::min(s->cap, jerk::entry_velocity_for_exit(exit, s->length, s->d, s->j));
   }
 }
 

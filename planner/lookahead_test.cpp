@@ -336,3 +336,20 @@ TEST_CASE("property: the profile's level is the bisection's to the last bit (sec
   CHECK(searched > 1000);
   CHECK(none_fits > 20);
 }
+
+TEST_CASE("property: the kernel's entry velocity is never below the exit velocity (cap shortcut)") {
+  // The backward pass sets the entry cap of a segment left at its cap to the cap without asking
+  // jerk::entry_velocity_for_exit: that holds only if the entry is never below the exit.
+  std::mt19937 rng(2525);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  auto range = [&](double lo, double hi) { return lo * std::pow(hi / lo, u(rng)); };
+  std::size_t above = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const double v_exit = k % 10 == 0 ? 0.0 : range(1e-6, 1e4);
+    const double s = k % 7 == 0 ? 0.0 : range(1e-9, 1e3);
+    const double entry = jerk::entry_velocity_for_exit(v_exit, s, range(1.0, 1e5), range(10, 1e9));
+    CHECK(entry >= v_exit);
+    if (entry > v_exit) ++above;
+  }
+  CHECK(above > 15000);
+}

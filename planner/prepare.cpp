@@ -53,19 +53,19 @@ StopReason requested_stop(const Move& move) {
 /// A knee that VELOJUMP passes at both blocks' velocity caps and that carries the path
 /// acceleration (corner.hpp) is left unblended under G261: a blend could only be slower there
 /// (its change of curvature caps its velocity) and the programmed path is inside every ball
-/// (docs/planner.md "Tolerance balls").
-bool knee_needs_no_ball(const Segment& in, const Move& in_move, const Segment& out,
-                        const Move& out_move, std::span<const AxisLimits> axes,
-                        const ChannelLimits& channel) {
+/// (docs/planner.md "Tolerance balls"). `ends` is joint_ends(in, out); `cap()` is the smaller of
+/// the two blocks' velocity caps on `axes` (path_limits), asked only when it decides.
+template <class Cap>
+bool knee_needs_no_ball(const Segment& in, const Segment& out, const JointEnds& ends,
+                        std::span<const AxisLimits> axes, const ChannelLimits& channel,
+                        const Cap& cap) {
   const std::uint8_t n = std::max(in.axis_count(), out.axis_count());
-  const PathPoint a = in.at(in.length());
-  const PathPoint b = out.at(0.0);
-  if (classify(a, b, n, in.metric() | out.metric()) != TransitionClass::c0) return false;
+  const PathPoint& a = ends.in_end;
+  const PathPoint& b = ends.out_start;
+  if (classify_at_angle(a, b, n, ends.angle) != TransitionClass::c0) return false;
   const std::span<const AxisLimits> used = axes.first(std::min<std::size_t>(axes.size(), n));
   if (!knee_carries_acceleration(a.d1, b.d1, used, channel.t_cycle)) return false;
-  const double cap =
-      std::min(path_limits(in, in_move, axes).v_max, path_limits(out, out_move, axes).v_max);
-  return velojump_velocity(a.d1, b.d1, used, channel.t_cycle) >= cap;
+  return velojump_velocity(a.d1, b.d1, used, channel.t_cycle) >= cap();
 }
 
 }  // namespace
@@ -89,6 +89,7 @@ void Preparer::set_joints(JointLimits joints) {
     validate(joints.cartesian);
   }
   joints_ = std::move(joints);
+  if (pending_) pending_->limits.reset();  // computed with the joint limits before
 }
 
 std::span<const AxisLimits> Preparer::axes_for(const Move& move) const {
@@ -126,24 +127,38 @@ PathLimits Preparer::limits(const Segment& path, const Move& move) const {
 }
 
 PreparedSegment Preparer::make(const Segment& path, const Move& move, bool blend) const {
+  return make(path, move, blend, limits(path, move));
+}
+
+PreparedSegment Preparer::make(const Segment& path, const Move& move, bool blend,
+                               const PathLimits& limits) const {
   PreparedSegment ps;
   ps.path = Chain(path, move.line);
-  ps.limits = limits(path, move);
+  ps.limits = limits;
   ps.blend = blend;
   ps.line = move.line;
   return ps;
 }
 
+const PathLimits& Preparer::pending_limits(Pending& p) const {
+  if (!p.limits) p.limits = limits(p.path, p.move);
+  return *p.limits;
+}
+
 void Preparer::emit_joint(PreparedSegment in, const Move& in_move, const Segment& out_path,
-                          double v_out, std::vector<PreparedSegment>& out) {
+                          double v_out, std::vector<PreparedSegment>& out, const JointEnds* ends) {
   const std::uint8_t n = std::max(in.path.axis_count(), out_path.axis_count());
   const AxisMask metric = in.path.metric() | out_path.metric();
   // #TRANSVELMIN acts at discontinuous transitions, not with G261 (isg-language.md §5.6).
   const std::optional<double> v_min =
       in_move.contour == Contour::tolerance ? std::nullopt : in_move.transvelmin;
   const Link link =
-      link_velocity(in.path.at(in.path.length()), out_path.at(0.0), n, metric, axes_for(in_move),
-                    channel_, in.limits.v_end, v_out, v_min, jerk_limited(in_move.slope));
+      ends != nullptr
+          ? link_velocity(ends->in_end, ends->out_start, n, metric, axes_for(in_move), channel_,
+                          in.limits.v_end, v_out, v_min, jerk_limited(in_move.slope))
+          : link_velocity(in.path.at(in.path.length()), out_path.at(0.0), n, metric,
+                          axes_for(in_move), channel_, in.limits.v_end, v_out, v_min,
+                          jerk_limited(in_move.slope));
   in.v_end = link.v_link;
   if (joints_for(in_move) != nullptr && link.cls != TransitionClass::c2) {
     // Under a transform the joints take their own steps at a C0 / C1 joint: the VELOJUMP and
@@ -177,8 +192,8 @@ void Preparer::emit_joint(PreparedSegment in, const Move& in_move, const Segment
   output(std::move(in), out);
 }
 
-void Preparer::emit_stop(const Pending& p, StopReason why, std::vector<PreparedSegment>& out) {
-  PreparedSegment ps = make(p.path, p.move, false);
+void Preparer::emit_stop(Pending& p, StopReason why, std::vector<PreparedSegment>& out) {
+  PreparedSegment ps = make(p.path, p.move, false, pending_limits(p));
   ps.v_end = 0.0;
   ps.a_zero_at_end = true;
   ps.stop = why;
@@ -268,14 +283,14 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
     return;
   }
   if (!pending_) {
-    pending_ = Pending{move, seg, seg.length(), StopReason::none};
+    pending_.emplace(move, seg, seg.length(), StopReason::none, std::nullopt);  // in place
     return;
   }
   if (pending_->move.transformed != move.transformed)
     throw std::invalid_argument("planner: line " + std::to_string(move.line) +
                                 " switches #TRAFO without a stop before it (finish())");
   Pending p = std::move(*pending_);
-  pending_ = Pending{move, seg, seg.length(), StopReason::none};
+  pending_.emplace(move, seg, seg.length(), StopReason::none, std::nullopt);  // in place
 
   StopReason stop = p.stop != StopReason::none ? p.stop : requested_stop(p.move);
   if (stop == StopReason::none && p.move.rapid && !move.rapid) stop = StopReason::rapid_to_feed;
@@ -284,10 +299,28 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
     return;
   }
 
-  if (p.move.contour == Contour::tolerance &&
-      (joints_for(move) != nullptr ||  // under a transform every G261 corner gets its ball
-       !knee_needs_no_ball(p.path, p.move, seg, move, axes_, channel_))) {
-    const auto ball = make_blend(p.path, seg, p.move.path_dev,
+  // The limits of the new block, computed at most once (its pending limits from the next push on).
+  std::optional<PathLimits> seg_limits;
+  const auto seg_cap = [&] {
+    if (!seg_limits) seg_limits = limits(seg, move);
+    return seg_limits->v_max;
+  };
+  std::optional<JointEnds> ends;  // of the joint p -> seg, evaluated once for all its rules
+  if (p.move.contour == Contour::tolerance) ends = joint_ends(p.path, seg);
+  // The knee rule takes the Preparer's own axis limits; limits() has the same ones except under
+  // a transform or on a conveyor (axes_for), so elsewhere it is reused.
+  const auto on_own_axes = [&](const Move& m) {
+    return joints_for(m) == nullptr && axes_for(m).data() == axes_.data();
+  };
+  const auto knee_cap = [&] {
+    const double in_cap =
+        on_own_axes(p.move) ? pending_limits(p).v_max : path_limits(p.path, p.move, axes_).v_max;
+    const double out_cap = on_own_axes(move) ? seg_cap() : path_limits(seg, move, axes_).v_max;
+    return std::min(in_cap, out_cap);
+  };
+  if (ends && (joints_for(move) != nullptr ||  // under a transform every G261 corner gets its ball
+               !knee_needs_no_ball(p.path, seg, *ends, axes_, channel_, knee_cap))) {
+    const auto ball = make_blend(p.path, seg, *ends, p.move.path_dev,
                                  std::min(p.full_length / 2, p.path.length()), seg.length() / 2);
     if (ball) {
       const Segment in_path = p.path.trimmed(0.0, p.path.length() - ball->cut_in);
@@ -305,10 +338,14 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
         emit_joint(std::move(in_ps), p.move, ball->curve, blend_ps.limits.v_max, out);
       emit_joint(std::move(blend_ps), blend_move, out_path, out_limits.v_max, out);
       pending_->path = out_path;
+      pending_->limits = out_limits;
       return;
     }
   }
-  emit_joint(make(p.path, p.move, false), p.move, seg, limits(seg, move).v_max, out);
+  const double v_out = seg_cap();
+  pending_->limits = seg_limits;
+  emit_joint(make(p.path, p.move, false, pending_limits(p)), p.move, seg, v_out, out,
+             ends ? &*ends : nullptr);
 }
 
 void Preparer::finish(std::vector<PreparedSegment>& out) {

@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "planner/blend.hpp"
 #include "planner/chain.hpp"
 #include "planner/corner.hpp"
 #include "planner/joint_limits.hpp"
@@ -113,21 +114,28 @@ class Preparer {
     Segment path;            ///< possibly trimmed at its start by a blend
     double full_length = 0;  ///< length before any trimming [mm]
     StopReason stop = StopReason::none;
+    std::optional<PathLimits> limits;  ///< limits(path, move) once computed (pending_limits)
   };
+  /// limits(p.path, p.move), computed once per pending path.
+  const PathLimits& pending_limits(Pending& p) const;
   /// push() with the curve given (a Move's own curve or a spline piece).
   void push_path(const Move& move, const Segment& seg, std::vector<PreparedSegment>& out);
   PreparedSegment make(const Segment& path, const Move& move, bool blend) const;
+  /// The same with the path's limits known (limits(path, move)).
+  PreparedSegment make(const Segment& path, const Move& move, bool blend,
+                       const PathLimits& limits) const;
   /// Path limits of a segment: the axes', and the joints' under a transform.
   PathLimits limits(const Segment& path, const Move& move) const;
   /// The axis limits a Move is planned with (the Cartesian ones for a transformed Move).
   std::span<const AxisLimits> axes_for(const Move& move) const;
   /// The joint limits that apply to a Move (null: none).
   const JointLimits* joints_for(const Move& move) const;
-  /// Appends `in` with its end joint to `out_path` (velocity cap v_out) resolved.
+  /// Appends `in` with its end joint to `out_path` (velocity cap v_out) resolved; `ends`, when
+  /// given, is the joint's joint_ends (blend.hpp), else it is evaluated here.
   void emit_joint(PreparedSegment in, const Move& in_move, const Segment& out_path, double v_out,
-                  std::vector<PreparedSegment>& out);
+                  std::vector<PreparedSegment>& out, const JointEnds* ends = nullptr);
   /// Appends the pending segment ending in a stop.
-  void emit_stop(const Pending& p, StopReason why, std::vector<PreparedSegment>& out);
+  void emit_stop(Pending& p, StopReason why, std::vector<PreparedSegment>& out);
   /// Chaining stage: merges `ps` into the held segment across a C2 joint that limits nothing
   /// and at an equal velocity cap, else emits the held one and holds `ps`.
   void output(PreparedSegment ps, std::vector<PreparedSegment>& out);
