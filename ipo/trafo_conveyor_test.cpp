@@ -18,6 +18,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/diagnostic.hpp"
 #include "core/source_file.hpp"
 #include "interp/test_support.hpp"
 #include "ipo/audit.hpp"
@@ -28,6 +29,7 @@
 #include "ipo/trafo.hpp"
 #include "ipo/trafo_sync.hpp"
 #include "ipo/trafo_test_support.hpp"
+#include "planner/blend.hpp"
 
 namespace {
 
@@ -277,9 +279,11 @@ TEST_CASE("the catch-up's TCP dynamics keep every joint inside its own at the po
 
 namespace {
 
-// Lines first..last, tracked with the belt on top, use the joints' jerk and keep every joint's
-// a and j (the delta's A 20000 deg/s^2, J 500000 deg/s^3): no audit violation, no warning.
-void check_far_side(const Tracked& r, std::uint32_t first, std::uint32_t last, double belt) {
+// Lines first..last, tracked with the belt on top, use the joints' jerk (more than `used` of J)
+// and keep every joint's a and j (the delta's A 20000 deg/s^2, J 500000 deg/s^3): no audit
+// violation, no warning.
+void check_far_side(const Tracked& r, std::uint32_t first, std::uint32_t last, double belt,
+                    double used = 0.5) {
   double a = 0.0, j = 0.0;  // the lines' largest joint |a| / A and |j| / J
   std::size_t cycles = 0;
   for (std::size_t k = 0; k < r.joints.size(); ++k) {
@@ -296,7 +300,7 @@ void check_far_side(const Tracked& r, std::uint32_t first, std::uint32_t last, d
     MESSAGE("violation: axis " << int(v.axis) << " joint " << v.joint << " value " << v.value
                                << " limit " << v.limit << " t " << v.t);
   CHECK(cycles > 100);
-  CHECK(j > 0.5);  // the lines use the joints' jerk
+  CHECK(j > used);  // the lines use the joints' jerk
   CHECK(j <= 1.0 + 1e-3);
   CHECK_FALSE(r.warning);
   CHECK(r.verdict.violation_count == 0);
@@ -326,6 +330,7 @@ TEST_CASE("a PCS1 block the belt carries towards the far side keeps the joints' 
     port.latch_at_ = 100;
     const Tracked r = track(program, &port);
     if (!r.source_error.empty()) MESSAGE(r.source_error);
+    if (r.error) MESSAGE(r.error->id << ": " << r.error->message);
     REQUIRE(r.status == ipo::Status::finished);
     REQUIRE_FALSE(r.error);
     check_far_side(r, 8, 8, belt);
@@ -452,4 +457,102 @@ TEST_CASE("NC6211's overload: the belt's own jerk beyond a joint's J at a travel
   CHECK(o.needed >= 0.99 * o.limit);
   CHECK(o.shift >= 0.0);
   CHECK(o.tcp[0] + o.shift <= 600.0 + 1e-6);  // inside the workspace: a travel the run reaches
+}
+
+// --- trafo-pcs1: what was not reserved (docs/conveyor.md "Machining in PCS1").
+
+namespace {
+
+// The Moves the adapter hands out for `program` on the picker, by source line.
+std::vector<planner::Move> moves_of(const std::string& program) {
+  const machines::Machine m = picker();
+  const core::SourceFile file("t.nc", program);
+  interp::Interpreter in(file, m);
+  ipo::ProgramSource src(in, m);
+  std::vector<planner::Move> out;
+  ipo::Item item;
+  while (src.next(item))
+    if (const auto* mv = std::get_if<planner::Move>(&item)) out.push_back(*mv);
+  if (const core::Diagnostic* e = src.error()) MESSAGE(e->id << ": " << e->message);
+  REQUIRE_FALSE(src.error());
+  return out;
+}
+
+const planner::Move& line_of(const std::vector<planner::Move>& moves, std::uint32_t line) {
+  const auto it = std::find_if(moves.begin(), moves.end(),
+                               [line](const planner::Move& mv) { return mv.line == line; });
+  REQUIRE(it != moves.end());
+  return *it;
+}
+
+// A G261 corner between two PCS1 blocks after a dwell, on a `belt` [mm/s] belt, ball radius
+// `dev` [mm]: lines 10 (N60, the block before the ball) and 11 (N70).
+std::string ball_program(double belt, double dev) {
+  return "%t\nN10 #KIN ID[37]\nN20 #TRAFO ON\nN30 G01 X-400 Y0 Z-700 F60000\n"
+         "N40 #SYNC IN [CONV_VEL=" +
+         std::to_string(static_cast<int>(belt * 60.0)) +
+         "]\nN50 G01 X-450 Y0 Z-700 F60000\nN55 G04 0.3\n"
+         "N57 #CONTOUR MODE [DEV PATH_DEV=" +
+         std::to_string(dev) +
+         "]\nN58 G261\nN60 G01 X-300 Y-150 Z-880 F60000\nN70 G01 X-150 Y50 Z-850\n"
+         "N75 G260\nN80 G04 0.05\nN90 #SYNC OUT\nN100 M30\n";
+}
+
+}  // namespace
+
+TEST_CASE("a tolerance ball between two PCS1 blocks gets the belt's share on its own curve") {
+  // The planner builds the ball from both neighbours (planner::make_blend) and runs it with the
+  // limits of the block before it; the adapter holds that block back until the next motion and
+  // gives it the ball's share where larger (belt_share sampled on the ball's curve) and the
+  // ball's feed cap where lower. Before, the block kept the share of its own curve only: joint
+  // Z's a and j shares 3571 deg/s^2 and 93113 deg/s^3 against the ball's 10663 and 385677 (5 mm
+  // ball), its F 1000 mm/s against the ball's cap 110.6 mm/s (measured).
+  const double belt = 500.0;  // [mm/s]
+  const double devs[] = {5.0, 40.0};
+  const ShareRig rig;
+  REQUIRE(rig.trafo);
+  ipo::BeltCarry carry;
+  carry.v_belt = 1.1 * belt;
+  carry.workspace = {{{-600.0, -600.0, -900.0}, {600.0, 600.0, 0.0}}};  // picker()'s
+  for (const double dev : devs) {
+    CAPTURE(dev);
+    const std::vector<planner::Move> moves = moves_of(ball_program(belt, dev));
+    const planner::Move& in = line_of(moves, 10);
+    const planner::Move& out = line_of(moves, 11);
+    const planner::Segment in_path = planner::Segment::from_move(in);
+    const planner::Segment out_path = planner::Segment::from_move(out);
+    const auto ball =
+        planner::make_blend(in_path, out_path, dev, in_path.length() / 2, out_path.length() / 2);
+    REQUIRE(ball);
+    const auto ball_share =
+        ipo::belt_share(ball->curve, std::min(in.feed, out.feed), rig.trafo->limits.inverse,
+                        rig.trafo->xyz, rig.trafo->limits.joints, carry);
+    REQUIRE(std::holds_alternative<ipo::BeltShare>(ball_share));
+    const ipo::BeltShare& s = std::get<ipo::BeltShare>(ball_share);
+    REQUIRE(in.belt_joints);
+    for (std::size_t i = 0; i < 3; ++i) {
+      CAPTURE(i);
+      MESSAGE("joint " << i << ": a share " << in.belt_joints->a[i] << " (ball " << s.joints.a[i]
+                       << "), j share " << in.belt_joints->j[i] << " (ball " << s.joints.j[i]
+                       << ")");
+      CHECK(in.belt_joints->a[i] >= s.joints.a[i] * (1.0 - 1e-9));
+      CHECK(in.belt_joints->j[i] >= s.joints.j[i] * (1.0 - 1e-9));
+    }
+    MESSAGE("feed " << in.feed << " (ball's cap " << s.feed << ")");
+    CHECK(in.feed <= s.feed * (1.0 + 1e-9));
+  }
+}
+
+TEST_CASE("a tolerance ball between two PCS1 blocks near the far side keeps the joints' a and j") {
+  // A guard, not a failing-first test: no ball was found that the audit flags without its own
+  // share (docs/conveyor.md: 906 scratch runs); this one reached 68.8 % of J before, 69.3 % now.
+  const double belt = 300.0;  // [mm/s]
+  ipo::test::FakePort port(belt);
+  port.latch_at_ = 100;
+  const Tracked r = track(ball_program(belt, 40.0), &port);
+  if (!r.source_error.empty()) MESSAGE(r.source_error);
+  if (r.error) MESSAGE(r.error->id << ": " << r.error->message);
+  REQUIRE(r.status == ipo::Status::finished);
+  REQUIRE_FALSE(r.error);
+  check_far_side(r, 10, 11, belt);
 }
