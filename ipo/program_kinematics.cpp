@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <string>
 #include <variant>
@@ -140,12 +141,27 @@ bool any_taken(const planner::AxisVec& x) {
 
 void ProgramSource::reserve_belt_share(planner::Move& move, std::uint32_t line) {
   BeltCarry carry;
-  if (move.rapid || move.block_time || !belt_carry(carry))
-    return;  // G00 keeps the joints' rapid rule, G93 its time (docs/conveyor.md)
+  if (move.block_time || !belt_carry(carry)) return;  // G93 keeps its time (docs/conveyor.md)
+  // --- trafo-pcs1: G00 runs each joint at its rapid rule (000 l.360: MIN(rapid, reference,
+  // maximum), the G00 slope; planner::path_limits): its share is taken of those limits, with
+  // no programmed feed to cap (the cap goes into Move::feed, which the planner's joint limits
+  // apply to a G00 in PCS1: planner/joint_limits.cpp).
+  std::vector<planner::AxisLimits> rapid;
+  if (move.rapid) {
+    for (const planner::AxisLimits& j : trafo_->limits.joints) {
+      planner::AxisLimits r = planner::rapid_limits(j);
+      r.v_max = std::min({j.v_rapid, j.v_reference, j.v_max});
+      rapid.push_back(r);
+    }
+  }
+  const double feed = move.rapid ? std::numeric_limits<double>::infinity() : move.feed;
   const BeltShare s =
-      belt_share_at(planner::Segment::from_move(move), move.feed, line, trafo_->limits.joints);
-  move.feed = s.feed;
-  if (any_taken(s.joints.a) || any_taken(s.joints.j))
+      belt_share_at(planner::Segment::from_move(move), feed, line,
+                    move.rapid ? std::span<const planner::AxisLimits>(rapid)
+                               : std::span<const planner::AxisLimits>(trafo_->limits.joints));
+  if (std::isfinite(s.feed)) move.feed = s.feed;  // a G00 that moves no joint: no cap
+  // A G00 always carries its shares: they also mark its feed as the velocity share's cap.
+  if (move.rapid || any_taken(s.joints.a) || any_taken(s.joints.j))
     move.belt_joints = std::make_shared<const planner::JointShare>(s.joints);
 }
 

@@ -174,10 +174,11 @@ class ProgramSource final : public Source {
   /// (NC3201 / NC3202) at its line.
   void check_workspace(const planner::Move& move, std::uint32_t line);
   [[noreturn]] void fail_with(std::uint32_t line, const std::string& id, const std::string& what);
-  /// A transformed G01 / G02 / G03 Move or spline piece in PCS1: the belt's share (1.1 x
+  /// A transformed G00 / G01 / G02 / G03 Move or spline piece in PCS1: the belt's share (1.1 x
   /// CONV_VEL, the 50653 margin) of the joints wherever the belt can carry the block (forward from
   /// the latch, inside the conveyor workspace): its F capped for the joints' V (and by the
-  /// acceleration and jerk shares' bisection), the a and j shares in Move::belt_joints
+  /// acceleration and jerk shares' bisection; a G00's of its joints' rapid limits, the cap in
+  /// Move::feed for planner::path_limits), the a and j shares in Move::belt_joints
   /// (ipo::belt_share, docs/conveyor.md "Machining in PCS1"); NC6211 when the belt alone needs a
   /// joint's V or its share with the path at rest leaves a joint less than 1 % of its A or J.
   void reserve_belt_share(planner::Move& move, std::uint32_t line);
