@@ -141,7 +141,7 @@ bool any_taken(const planner::AxisVec& x) {
 
 void ProgramSource::reserve_belt_share(planner::Move& move, std::uint32_t line) {
   BeltCarry carry;
-  if (move.block_time || !belt_carry(carry)) return;  // G93 keeps its time (docs/conveyor.md)
+  if (!belt_carry(carry)) return;
   // --- trafo-pcs1: G00 runs each joint at its rapid rule (000 l.360: MIN(rapid, reference,
   // maximum), the G00 slope; planner::path_limits): its share is taken of those limits, with
   // no programmed feed to cap (the cap goes into Move::feed, which the planner's joint limits
@@ -154,12 +154,20 @@ void ProgramSource::reserve_belt_share(planner::Move& move, std::uint32_t line) 
       rapid.push_back(r);
     }
   }
-  const double feed = move.rapid ? std::numeric_limits<double>::infinity() : move.feed;
+  // --- trafo-pcs1: G93 sets the path velocity by the block time (length / time, the
+  // planner's programmed velocity, planner::path_limits): a lower cap makes the block longer.
+  const planner::Segment path = planner::Segment::from_move(move);
+  double feed = move.rapid ? std::numeric_limits<double>::infinity() : move.feed;
+  if (move.block_time && *move.block_time > 0.0) feed = path.length() / *move.block_time;
   const BeltShare s =
-      belt_share_at(planner::Segment::from_move(move), feed, line,
+      belt_share_at(path, feed, line,
                     move.rapid ? std::span<const planner::AxisLimits>(rapid)
                                : std::span<const planner::AxisLimits>(trafo_->limits.joints));
-  if (std::isfinite(s.feed)) move.feed = s.feed;  // a G00 that moves no joint: no cap
+  if (move.block_time) {
+    if (s.feed < feed) move.block_time = path.length() / s.feed;
+  } else if (std::isfinite(s.feed)) {  // a G00 that moves no joint: no cap
+    move.feed = s.feed;
+  }
   // A G00 always carries its shares: they also mark its feed as the velocity share's cap.
   if (move.rapid || any_taken(s.joints.a) || any_taken(s.joints.j))
     move.belt_joints = std::make_shared<const planner::JointShare>(s.joints);
