@@ -30,6 +30,8 @@
 #include "ipo/trafo_sync.hpp"
 #include "ipo/trafo_test_support.hpp"
 #include "planner/blend.hpp"
+#include "scenario/loader.hpp"
+#include "scenario/player.hpp"
 
 namespace {
 
@@ -52,15 +54,28 @@ struct Tracked {
   std::string source_error;
 };
 
+// `override_percent`: a path override from t = 0 on a REDUCED_ABOVE_100 channel (a scenario
+// event, docs/scenario.md); null: none, the machine's override type.
 Tracked track(const std::string& program, ipo::test::FakePort* port,
-              const machines::Machine& m = picker()) {
+              const machines::Machine& m = picker(), const char* override_percent = nullptr) {
   ipo::ChannelConfig cfg = ipo::channel_config(m, kT);
   REQUIRE(cfg.path.joints);
+  // The scenario outlives the player that plays it (scenario::Player keeps a reference).
+  const core::SourceFile toml("s.toml", std::string("[[event]]\nat = 0.0\noverride = ") +
+                                            (override_percent ? override_percent : "100") + "\n");
+  const scenario::LoadResult loaded = scenario::parse_scenario(toml);
+  REQUIRE(loaded.scenario);
+  std::optional<scenario::Player> player;
+  if (override_percent != nullptr) {
+    cfg.path.override_type = ipo::OverrideType::reduced_above_100;
+    player.emplace(*loaded.scenario);
+  }
   const auto trafo = ipo::machine_trafo(m, cfg.path);
   REQUIRE(trafo);
   ipo::Audit audit(cfg.path.axes, kT, cfg.path.start);
   audit.set_joint_limits(cfg.path.joints->joints, cfg.path.start, true);
   ipo::test::ConveyorRig rig(program, m, std::move(cfg), port, &audit);
+  if (player) rig.ch.play(&*player);
   const ipo::Channel& ch = rig.ch;
   Tracked r;
   r.status = ipo::test::run_to_end(
@@ -618,4 +633,40 @@ TEST_CASE("G93 in PCS1: the belt's shares cap the block's velocity, the block ta
   REQUIRE(r.status == ipo::Status::finished);
   REQUIRE_FALSE(r.error);
   check_far_side(r, 8, 8, belt);
+}
+
+TEST_CASE("an override above 100 % keeps a PCS1 block under #TRAFO ON at its 100 % plan") {
+  // REDUCED_ABOVE_100 raises the path above its F up to the joints' G00 rule
+  // (ipo/override_trafo.cpp); the belt's shares of a PCS1 block were taken at its capped F, so
+  // there the path keeps its 100 % plan (decision, docs/conveyor.md "Machining in PCS1"); off
+  // the belt the override still raises it. The far-side block on a 300 mm/s belt at 150 %:
+  // before, the block ran in 303 instead of 412 cycles, joint jerk 67.3 % of J and no audit
+  // violation (measured: the raised limits keep the planned a, d, j).
+  const double belt = 300.0;  // [mm/s]
+  const std::string program =
+      "%t\nN10 #KIN ID[37]\nN20 #TRAFO ON\nN30 G01 X-400 Y0 Z-700 F60000\n"
+      "N40 #SYNC IN [CONV_VEL=18000]\nN50 G01 X-450 Y0 Z-700 F60000\nN55 G04 0.5\n"
+      "N60 G01 X-200 Y-200 Z-880 F60000\nN70 G04 0.05\nN80 #SYNC OUT\n"
+      "N85 G01 X0 Y0 Z-700 F60000\nN86 G01 X100 Y0 Z-700 F6000\nN90 M30\n";
+  const auto cycles_of = [](const Tracked& r, std::uint32_t line) {
+    return std::count(r.line.begin(), r.line.end(), line);
+  };
+  ipo::test::FakePort port_100(belt);
+  port_100.latch_at_ = 100;
+  const Tracked base = track(program, &port_100, picker(), "100");
+  ipo::test::FakePort port_150(belt);
+  port_150.latch_at_ = 100;
+  const Tracked raised = track(program, &port_150, picker(), "150");
+  for (const Tracked* r : {&base, &raised}) {
+    if (!r->source_error.empty()) MESSAGE(r->source_error);
+    if (r->error) MESSAGE(r->error->id << ": " << r->error->message);
+    REQUIRE(r->status == ipo::Status::finished);
+    REQUIRE_FALSE(r->error);
+  }
+  MESSAGE("N86 (off the belt): " << cycles_of(base, 12) << " cycles at 100 %, "
+                                 << cycles_of(raised, 12) << " at 150 %; N60 (PCS1): "
+                                 << cycles_of(base, 8) << ", " << cycles_of(raised, 8));
+  CHECK(cycles_of(raised, 12) < cycles_of(base, 12));  // off the belt 150 % is faster
+  CHECK(cycles_of(raised, 8) == cycles_of(base, 8));   // in PCS1 the 100 % plan
+  check_far_side(raised, 8, 8, belt);
 }
