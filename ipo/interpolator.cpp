@@ -528,8 +528,13 @@ bool PathInterpolator::replan(double f, double s, double v, double a) noexcept {
     if (!raised_ready_) {
       // --- trafo-conveyor: under #TRAFO ON the joints' G00 rule (ipo/override_trafo.cpp)
       const planner::Move& prog = programmed(cur_.segment.path.line_at(0.0));
-      raised_ = joints_ && prog.transformed ? raised_limits_joints(cur_, *joints_)
-                                            : raised_limits(cur_, axes_);
+      // --- trafo-pcs1: a PCS1 block under #TRAFO ON keeps its 100 % plan: the belt's shares
+      // of its joints were taken at its capped F (docs/conveyor.md "Machining in PCS1").
+      if (prog.belt_joints)
+        raised_ = RaisedLimits{lim.v_max, cur_.a_max, cur_.d_max, cur_.j_max};
+      else
+        raised_ = joints_ && prog.transformed ? raised_limits_joints(cur_, *joints_)
+                                              : raised_limits(cur_, axes_);
       raised_ready_ = true;
     }
     cap = raised_.v_max;

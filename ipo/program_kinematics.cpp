@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <string>
 #include <variant>
@@ -25,6 +26,7 @@
 
 #include "ipo/program_source.hpp"
 #include "ipo/trafo_sync.hpp"
+#include "planner/blend.hpp"
 #include "planner/joint_limits.hpp"
 #include "planner/path.hpp"
 
@@ -88,24 +90,29 @@ constexpr double kBeltMargin = 1.1;  // 50653 lets the belt run 10 % above CONV_
 
 }  // namespace
 
-void ProgramSource::reserve_belt_share(planner::Move& move, std::uint32_t line) {
-  if (!trafo_ || !machine_.channel.conveyor || move.rapid || move.block_time ||
-      !(belt_conv_vel_ > 0.0))
-    return;  // G00 keeps the joints' rapid rule, G93 its time (docs/conveyor.md)
+bool ProgramSource::belt_carry(BeltCarry& carry) const {
+  if (!trafo_ || !machine_.channel.conveyor || !(belt_conv_vel_ > 0.0)) return false;
   const machines::ConveyorSyncChannel& conv = *machine_.channel.conveyor;
-  BeltCarry carry;
   const Eigen::Vector3d dir = conv.t0().rotation.col(0);  // PCS0 +X in MCS
   carry.e = {dir[0], dir[1], dir[2]};
   carry.v_belt = kBeltMargin * belt_conv_vel_;
   // Where the belt may carry the block while synchronised: forward from the latch to the
   // configured workspace's face (004 l.687: it must be configured under kinematics; belt_share).
+  carry.workspace.reset();
   if (conv.workspace_configured)
     carry.workspace = {
         {{conv.workspace.lower[0], conv.workspace.lower[1], conv.workspace.lower[2]},
          {conv.workspace.upper[0], conv.workspace.upper[1], conv.workspace.upper[2]}}};
+  return true;
+}
+
+BeltShare ProgramSource::belt_share_at(const planner::Segment& path, double feed,
+                                       std::uint32_t line,
+                                       std::span<const planner::AxisLimits> joints) {
+  BeltCarry carry;
+  belt_carry(carry);
   const std::variant<BeltShare, BeltOverload> share =
-      belt_share(planner::Segment::from_move(move), move.feed, trafo_->limits.inverse, trafo_->xyz,
-                 trafo_->limits.joints, carry);
+      belt_share(path, feed, trafo_->limits.inverse, trafo_->xyz, joints, carry);
   if (const auto* over = std::get_if<BeltOverload>(&share)) {
     const char* what = over->quantity == 'v'   ? "V %.6g (P-AXIS-00212)"
                        : over->quantity == 'a' ? "A %.6g (the smaller of P-AXIS-00001 / 00002)"
@@ -121,13 +128,83 @@ void ProgramSource::reserve_belt_share(planner::Move& move, std::uint32_t line) 
                   over->tcp[2], over->shift);
     fail_with(line, "NC6211", text);
   }
-  const BeltShare& s = std::get<BeltShare>(share);
-  move.feed = s.feed;
-  const auto taken = [](const planner::AxisVec& x) {
-    return std::any_of(x.begin(), x.end(), [](double y) { return y > 0.0; });
-  };
-  if (taken(s.joints.a) || taken(s.joints.j))
+  return std::get<BeltShare>(share);
+}
+
+namespace {
+
+bool any_taken(const planner::AxisVec& x) {
+  return std::any_of(x.begin(), x.end(), [](double y) { return y > 0.0; });
+}
+
+}  // namespace
+
+void ProgramSource::reserve_belt_share(planner::Move& move, std::uint32_t line) {
+  BeltCarry carry;
+  if (!belt_carry(carry)) return;
+  // --- trafo-pcs1: G00 runs each joint at its rapid rule (000 l.360: MIN(rapid, reference,
+  // maximum), the G00 slope; planner::path_limits): its share is taken of those limits, with
+  // no programmed feed to cap (the cap goes into Move::feed, which the planner's joint limits
+  // apply to a G00 in PCS1: planner/joint_limits.cpp).
+  std::vector<planner::AxisLimits> rapid;
+  if (move.rapid) {
+    for (const planner::AxisLimits& j : trafo_->limits.joints) {
+      planner::AxisLimits r = planner::rapid_limits(j);
+      r.v_max = std::min({j.v_rapid, j.v_reference, j.v_max});
+      rapid.push_back(r);
+    }
+  }
+  // --- trafo-pcs1: G93 sets the path velocity by the block time (length / time, the
+  // planner's programmed velocity, planner::path_limits): a lower cap makes the block longer.
+  const planner::Segment path = planner::Segment::from_move(move);
+  double feed = move.rapid ? std::numeric_limits<double>::infinity() : move.feed;
+  if (move.block_time && *move.block_time > 0.0) feed = path.length() / *move.block_time;
+  const BeltShare s =
+      belt_share_at(path, feed, line,
+                    move.rapid ? std::span<const planner::AxisLimits>(rapid)
+                               : std::span<const planner::AxisLimits>(trafo_->limits.joints));
+  if (move.block_time) {
+    if (s.feed < feed) move.block_time = path.length() / s.feed;
+  } else if (std::isfinite(s.feed)) {  // a G00 that moves no joint: no cap
+    move.feed = s.feed;
+  }
+  // A G00 always carries its shares: they also mark its feed as the velocity share's cap.
+  if (move.rapid || any_taken(s.joints.a) || any_taken(s.joints.j))
     move.belt_joints = std::make_shared<const planner::JointShare>(s.joints);
+}
+
+// --- trafo-pcs1: the tolerance ball between two PCS1 blocks (docs/conveyor.md "Machining in
+// PCS1", "The ball").
+bool ProgramSource::holds_for_ball(const planner::Move& move, bool pcs1) const {
+  BeltCarry carry;
+  return move.transformed && pcs1 && move.contour == planner::Contour::tolerance && !move.rapid &&
+         !move.block_time && !move.exact_stop &&
+         move.transition != planner::Transition::stop_at_end && belt_carry(carry);
+}
+
+void ProgramSource::reserve_ball_share(planner::Move& in, const planner::Move& out) {
+  if (!out.transformed || !trafo_) return;
+  const planner::Segment in_path = planner::Segment::from_move(in);
+  const planner::Segment out_path = planner::Segment::from_move(out);
+  // As the planner builds it (planner::Preparer::push_path): the ball of radius PATH_DEV, at
+  // most half of each block; a block's start trimmed by the ball before it does not change
+  // the last half of it, where this ball lies.
+  const auto ball = planner::make_blend(in_path, out_path, in.path_dev, in_path.length() / 2,
+                                        out_path.length() / 2);
+  if (!ball) return;
+  // The planner runs the ball at most at the slower of its neighbours' programmed feeds, with
+  // the limits of the block before it (in's Move): the ball's share goes into in's.
+  double feed = in.feed;
+  if (!out.rapid && !out.block_time) feed = std::min(feed, out.feed);
+  const BeltShare s = belt_share_at(ball->curve, feed, in.line, trafo_->limits.joints);
+  planner::JointShare joints = in.belt_joints ? *in.belt_joints : planner::JointShare{};
+  for (std::size_t i = 0; i < planner::kMaxAxes; ++i) {
+    joints.a[i] = std::max(joints.a[i], s.joints.a[i]);
+    joints.j[i] = std::max(joints.j[i], s.joints.j[i]);
+  }
+  in.feed = std::min(in.feed, s.feed);
+  if (any_taken(joints.a) || any_taken(joints.j))
+    in.belt_joints = std::make_shared<const planner::JointShare>(joints);
 }
 
 }  // namespace ncsim::ipo

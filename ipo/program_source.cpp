@@ -224,6 +224,11 @@ bool ProgramSource::pull(Item& out) {
       queue_.pop_front();
       return true;
     }
+    if (held_error_) {  // --- trafo-pcs1: the error after the held block (above)
+      error_ = std::move(held_error_);
+      held_error_.reset();
+      throw Stop{};
+    }
     // Barriers: the decode-only state (docs/ipo.md), or the scenario's V.E. store.
     if (open_) {  // the flush's Dwell has passed: every block before the barrier ran
       answer(*open_);
@@ -259,6 +264,15 @@ bool ProgramSource::pull(Item& out) {
         xv_held_.reset();
         return true;
       }
+    }
+    // --- trafo-pcs1: a block held for its ball's share goes out before any other command
+    // than the next Motion (that command is taken again at the next pull).
+    if (ball_held_ && !(cmd && std::holds_alternative<interp::Motion>(cmd->body))) {
+      if (cmd) held_ = std::move(cmd);
+      planner::Move in = std::move(*ball_held_);
+      ball_held_.reset();
+      emit_path(std::move(in));
+      continue;
     }
     if (!cmd) {
       if (const core::Diagnostic* e = interp_.error()) error_ = *e;
@@ -334,10 +348,32 @@ bool ProgramSource::pull(Item& out) {
         [&](const auto& body) {
           using T = std::decay_t<decltype(body)>;
           if constexpr (std::is_same_v<T, interp::Motion>) {
-            planner::Move mv = to_move(body, line);
+            planner::Move mv;
+            try {
+              mv = to_move(body, line);
+            } catch (const Stop&) {
+              if (!ball_held_) throw;
+              // --- trafo-pcs1: the held block runs to its end before the error stops the
+              // stream, as every block before a faulty one does.
+              held_error_ = std::move(error_);
+              error_.reset();
+              planner::Move in = std::move(*ball_held_);
+              ball_held_.reset();
+              emit_path(std::move(in));
+              return;
+            }
             mv.event_tag = tag_;
             given_ = tag_;
-            emit_path(std::move(mv));  // --- static-saw: queued, handed out at the loop's top
+            if (ball_held_) {  // --- trafo-pcs1: the ball's share, then the held block out
+              planner::Move in = std::move(*ball_held_);
+              ball_held_.reset();
+              reserve_ball_share(in, mv);
+              emit_path(std::move(in));
+            }
+            if (holds_for_ball(mv, body.frame.space == interp::Space::pcs1))
+              ball_held_ = std::move(mv);
+            else
+              emit_path(std::move(mv));  // --- static-saw: queued, handed out at the loop's top
           } else if constexpr (std::is_same_v<T, interp::Dwell>) {
             static_dwell(line);  // --- static-saw
             out = Dwell{body.seconds, line, tag_};

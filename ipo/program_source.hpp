@@ -37,6 +37,7 @@
 #include "ipo/channel_event.hpp"
 #include "ipo/interpolator.hpp"
 #include "ipo/trafo.hpp"
+#include "ipo/trafo_sync.hpp"
 #include "ipo/x_virtual.hpp"  // --- static-saw
 #include "machines/cs_stack.hpp"
 #include "machines/machine.hpp"
@@ -173,13 +174,35 @@ class ProgramSource final : public Source {
   /// (NC3201 / NC3202) at its line.
   void check_workspace(const planner::Move& move, std::uint32_t line);
   [[noreturn]] void fail_with(std::uint32_t line, const std::string& id, const std::string& what);
-  /// A transformed G01 / G02 / G03 Move or spline piece in PCS1: the belt's share (1.1 x CONV_VEL,
-  /// the 50653 margin) of the joints wherever the belt can carry the block (forward from the latch,
-  /// inside the conveyor workspace): its F capped for the joints' V (and by the acceleration and
-  /// jerk shares' bisection), the a and j shares in Move::belt_joints (ipo::belt_share,
-  /// docs/conveyor.md "Machining in PCS1"); NC6211 when the belt alone needs a joint's V or its
-  /// share with the path at rest leaves a joint less than 1 % of its A or J.
+  /// A transformed G00 / G01 / G02 / G03 Move or spline piece in PCS1: the belt's share (1.1 x
+  /// CONV_VEL, the 50653 margin) of the joints wherever the belt can carry the block (forward from
+  /// the latch, inside the conveyor workspace): its F capped for the joints' V (and by the
+  /// acceleration and jerk shares' bisection; a G00's of its joints' rapid limits, the cap in
+  /// Move::feed for planner::path_limits), the a and j shares in Move::belt_joints
+  /// (ipo::belt_share, docs/conveyor.md "Machining in PCS1"); NC6211 when the belt alone needs a
+  /// joint's V or its share with the path at rest leaves a joint less than 1 % of its A or J.
   void reserve_belt_share(planner::Move& move, std::uint32_t line);
+  /// The belt's carry for belt_share (1.1 x CONV_VEL, the conveying direction, the conveyor
+  /// workspace); false without a kinematic, a conveyor or a CONV_VEL.
+  bool belt_carry(BeltCarry& carry) const;
+  /// ipo::belt_share of `path` at `feed` under the carry with the joints' limits `joints`; an
+  /// overload is NC6211 at `line`.
+  BeltShare belt_share_at(const planner::Segment& path, double feed, std::uint32_t line,
+                          std::span<const planner::AxisLimits> joints);
+  // --- trafo-pcs1: the tolerance ball between two PCS1 blocks (docs/conveyor.md "Machining in
+  // PCS1"): a transformed PCS1 block that ends in a ball (G61 / G261) is held (ball_held_)
+  // until the next command; a next Motion gets the ball built as the planner builds it and
+  // the ball's share goes into the held block's (reserve_ball_share); anything else releases
+  // the held block as it is before that command's items (pull()).
+  /// A transformed G01 / G02 / G03 Move in PCS1 (`pcs1`) that ends in a tolerance ball.
+  bool holds_for_ball(const planner::Move& move, bool pcs1) const;
+  /// The ball between `in` and `out` (planner::make_blend): its belt share (ipo::belt_share at
+  /// the slower feed of the two) raises in's acceleration and jerk shares where larger and
+  /// caps in's feed where lower (the planner runs the ball with in's limits).
+  void reserve_ball_share(planner::Move& in, const planner::Move& out);
+  std::optional<planner::Move> ball_held_;  ///< the block whose ball waits for the next Motion
+  /// The next Motion's error while a block was held: raised after the held block went out.
+  std::optional<core::Diagnostic> held_error_;
   std::optional<MachineTrafo> trafo_;  ///< the machine's kinematic, built at the first #TRAFO
   bool trafo_on_ = false;              ///< #TRAFO ON as handed out
   double belt_conv_vel_ = 0.0;         ///< CONV_VEL of the last #SYNC IN [mm/s]

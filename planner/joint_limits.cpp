@@ -78,16 +78,28 @@ std::optional<PathLimits> path_limits(const Segment& segment, const Move& move,
   // MIN(rapid P-AXIS-00209, reference, maximum) (000 l.360), with its G00 slope (P-AXIS-00004
   // acceleration, P-AXIS-00200 ramp time; planner::rapid_limits); the slowest joint sets the
   // time. Feed blocks keep the joints' feed limits.
+  // --- trafo-pcs1: a G00 in PCS1 (Move::belt_joints set by the adapter, ipo::belt_share of
+  // these rapid limits): `joints` come lowered by the belt's acceleration and jerk shares
+  // (Preparer::limits); where the G00 slope replaces them (a_rapid, j_rapid) the shares are
+  // taken off the slope too, and the velocity share caps the path at Move::feed, the adapter's
+  // cap (docs/conveyor.md "Machining in PCS1").
+  const JointShare* share = move.rapid ? move.belt_joints.get() : nullptr;
   std::array<AxisLimits, kMaxAxes> rapid{};
   std::span<const AxisLimits> used = joints;
   if (move.rapid && joints.size() <= kMaxAxes) {
     for (std::size_t i = 0; i < joints.size(); ++i) {
       rapid[i] = rapid_limits(joints[i]);
       rapid[i].v_max = std::min({joints[i].v_rapid, joints[i].v_reference, joints[i].v_max});
+      if (share == nullptr) continue;
+      const AxisLimits lowered = belt_joint_limits(rapid[i], share->a[i], share->j[i]);
+      if (joints[i].a_rapid > 0.0) rapid[i].a_max = rapid[i].d_max = lowered.a_max;
+      if (joints[i].j_rapid > 0.0) rapid[i].j_max = lowered.j_max;
     }
     used = std::span<const AxisLimits>(rapid.data(), joints.size());
   }
-  const PathLimits jl = limits_from_bounds(*b, used, out.v_max, jerk_limited(move.slope));
+  double cap = out.v_max;
+  if (share != nullptr && move.feed > 0.0) cap = std::min(cap, move.feed);
+  const PathLimits jl = limits_from_bounds(*b, used, cap, jerk_limited(move.slope));
   // --- end trafo-conveyor
   if (jl.v_max < out.v_max) {
     out.v_max = jl.v_max;

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "machines/delta_kinematics.hpp"
@@ -204,4 +205,63 @@ TEST_CASE("G00 under a transform: each joint at MIN(rapid, reference, max) with 
   const auto feed = path_limits(seg, g1, axes, ik, joints);
   REQUIRE(feed.has_value());
   CHECK(feed->v_max == doctest::Approx(same->v_max).epsilon(1e-9));
+}
+
+TEST_CASE("G00 in PCS1: the belt's shares come off the G00 slope and its feed caps the rapid") {
+  // trafo-pcs1 (issue 14, docs/conveyor.md "Machining in PCS1"): the adapter reserves the belt's
+  // share of each joint on a G00 in PCS1 too (ipo::belt_share of the joints' rapid limits);
+  // the planner gets the joints lowered by it (Preparer::limits, belt_joint_limits), and where
+  // a G00 slope (a_rapid, j_rapid) replaces the feed values the share comes off it as well;
+  // Move::feed carries the velocity share's cap.
+  const DeltaKinematics kin = delta();
+  const auto home_r = kin.forward(Eigen::Vector3d(20, 20, 20));
+  REQUIRE(home_r.ok());
+  AxisVec home{};
+  for (std::size_t i = 0; i < 3; ++i)
+    home[i] = home_r.value[static_cast<Eigen::Index>(i)];
+  const std::array<AxisLimits, 3> axes = {limits(5000, 5e4, 5e6), limits(5000, 5e4, 5e6),
+                                          limits(5000, 5e4, 5e6)};
+  std::array<AxisLimits, 3> joints = {limits(40, 400, 8000), limits(40, 400, 8000),
+                                      limits(40, 400, 8000)};
+  for (AxisLimits& j : joints) {
+    j.a_rapid = 300.0;
+    j.j_rapid = 6000.0;
+  }
+  Move m = delta_moves(home)[0];
+  m.rapid = true;
+  m.slope = SlopeType::trapez;
+  const Segment seg = Segment::from_move(m);
+  const JointMap ik = joint_map(kin);
+  const auto own = path_limits(seg, m, axes, ik, joints);
+  REQUIRE(own.has_value());
+  // The belt takes 150 of each joint's acceleration and 3000 of its jerk; the Preparer hands
+  // the joints over lowered by it (the feed values), with the share on the Move.
+  auto share = std::make_shared<JointShare>();
+  for (std::size_t i = 0; i < 3; ++i) {
+    share->a[i] = 150.0;
+    share->j[i] = 3000.0;
+  }
+  m.belt_joints = share;
+  m.feed = 0.5 * own->v_max;  // the velocity share's cap
+  std::array<AxisLimits, 3> lowered{};
+  for (std::size_t i = 0; i < 3; ++i)
+    lowered[i] = belt_joint_limits(joints[i], share->a[i], share->j[i]);
+  const auto belt = path_limits(seg, m, axes, ik, lowered);
+  REQUIRE(belt.has_value());
+  // The G00 obeys what the shares leave of the G00 slope (300 - 150, 6000 - 3000) and the cap.
+  CHECK(belt->v_max <= m.feed * (1 + 1e-12));
+  const Peak p = joint_peaks(seg, *belt, kin);
+  for (std::size_t i = 0; i < 3; ++i) {
+    CAPTURE(i);
+    CHECK(p.a[i] <= 150.0 * (1 + 1e-3));
+    CHECK(p.j[i] <= 3000.0 * (1 + 1e-3));
+  }
+  const Peak q = joint_peaks(seg, *own, kin);  // without the belt the G00 slope is used
+  CHECK(std::max({q.a[0], q.a[1], q.a[2]}) > 200.0);
+  // Off the conveyor (no share) the feed does not cap a G00.
+  Move off = m;
+  off.belt_joints.reset();
+  const auto plain = path_limits(seg, off, axes, ik, joints);
+  REQUIRE(plain.has_value());
+  CHECK(plain->v_max == doctest::Approx(own->v_max).epsilon(1e-9));
 }
