@@ -29,6 +29,7 @@ struct StaticRun {
   std::vector<bool> tracking;
   std::optional<ipo::RunTimeError> error;
   std::string source_error;  // the adapter's error id ("" none)
+  std::string source_message;
   std::uint32_t source_line = 0;
   ipo::Verdict verdict;
 };
@@ -53,6 +54,7 @@ StaticRun run(const std::string& program, double belt) {
   r.error = rig.ch.run_time_error();
   if (const core::Diagnostic* d = rig.src.error()) {
     r.source_error = d->id;
+    r.source_message = d->message;
     r.source_line = d->loc.line;
   }
   r.verdict = audited.audit.verdict();
@@ -131,4 +133,52 @@ TEST_CASE("x_virtual: a ball the axes cannot run at the belt's X velocity is NC9
     CHECK(r.source_error == "NC9100");
     CHECK(r.source_line == 5);
   }
+}
+
+namespace {
+
+// --- static-c1: a line at -45 deg (X share 0.707) into a tangent G02 arc of R 300 that turns
+// the path to -X (share 1), then a line on along -X: two C1 joints (the curvature jumps by
+// 1/300 mm^-1, l.441 asks for C2). The planner's C1 rule (docs/planner.md "C1") allows
+// sqrt(j_Y T / |dx''_Y|) there: 291 mm/s at the first joint (Y's jerk 200000 mm/s^3, its
+// curvature step 0.00236 mm^-1), 245 mm/s at the second.
+std::string c1_program(const char* conv_vel) {
+  return std::string("%t\nN10 #SYNC IN [CONV_VEL=") + conv_vel +
+         "]\nN20 G01 X0 Y0 F100\nN30 G01 X-100 Y-100\n"
+         "N40 G02 X-312.132034 Y-187.867966 I-212.132034 J212.132034\n"
+         "N50 G01 X-500 Y-187.867966\nN60 #SYNC OUT\nN70 M30\n";
+}
+
+}  // namespace
+
+TEST_CASE("x_virtual: a C1 joint the planner passes below the belt's X velocity is NC9100") {
+  // CONV_VEL 300 mm/s: at the first joint the path must run at 1.1 x 300 / 0.707 = 466.7 mm/s to
+  // keep the virtual X still, the C1 rule allows 291 (Y's jerk): the planner would slow the path
+  // there and the belt would carry the workpiece on under the standing unit (before: no error,
+  // the virtual X moved by millimetres). 004 l.440: "it is not possible to reduce conveyor
+  // velocity", l.621: the dynamic error, at the joint's (incoming) block; the blocks before run.
+  const StaticRun r = run(c1_program("18000"), 100.0);
+  CHECK(r.source_error == "NC9100");
+  CHECK(r.source_line == 4);
+  CHECK(r.source_message.find("466.69") != std::string::npos);
+  CHECK(r.source_message.find("axis Y's jerk (the C1 rule") != std::string::npos);
+}
+
+TEST_CASE(
+    "x_virtual: an inflection with C tracking the tangent is NC9100 at its block (VELOJUMP)") {
+  // The S curve of programs/static_saw_arc as it was: G03 into G02, R 300, tangent at X-300
+  // with an X share of 0.866. The curvature changes sign there, so #CAXTRACK's C, which follows
+  // the tangent, reverses its velocity in one cycle: a knee of C (0.38 deg/mm), which the planner
+  // passes at VELOJUMP's 20 deg/s / 0.38 deg/mm = 52.4 mm/s, where the belt needs
+  // 1.1 x 300 / 0.866 = 381 mm/s. Before: no error, the virtual X moved by 25 mm at the joint.
+  const StaticRun r =
+      run("%t\nN10 #SYNC IN [CONV_VEL=18000]\nN20 G01 X0 Y0 C30 F100\n"
+          "N30 #CAXTRACK ON [AX=C, ANGLIMIT 3, OFFSET 180, ROTMODE=1]\n"
+          "N40 G03 X-300 Y0 I-150 J-259.807621\nN50 G02 X-600 Y0 I-150 J259.807621\n"
+          "N60 #SYNC OUT\nN70 #CAXTRACK OFF\nN80 M30\n",
+          100.0);
+  CHECK(r.source_error == "NC9100");
+  CHECK(r.source_line == 5);
+  CHECK(r.source_message.find("381.051 mm/s") != std::string::npos);
+  CHECK(r.source_message.find("axis C's acceleration (VELOJUMP") != std::string::npos);
 }
