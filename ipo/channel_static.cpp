@@ -28,10 +28,9 @@ constexpr double kOverrideStep = 2e-4;
 constexpr double kCapSlack = 1e-9;
 /// Longest look-ahead of the cap [s].
 constexpr double kLeadMax = 0.05;
-/// Share of the entry's d / j the cap looks ahead (decision, docs/conveyor.md "Blends on a
-/// static unit": measured on the test contours, 0 -> 0.064 mm of virtual X, 0.15 -> 0.023 mm,
-/// 0.25 -> 0.058 mm).
-constexpr double kLeadShare = 0.15;
+/// Share of the next cycle the cap looks ahead besides the replan's lag [1] (the cap acts on the
+/// whole next cycle: its middle).
+constexpr double kCycleShare = 0.5;
 
 }  // namespace
 
@@ -74,21 +73,40 @@ void Channel::static_override() noexcept {
   for (std::size_t i = 0; i < sync_->axis_count() && x < 0; ++i)
     if (sync_->xyz(i) == 0) x = static_cast<int>(i);
   if (x < 0) return;
-  // The X share a little ahead, so that the jerk-limited slow-down starts in time: at
-  // kLeadShare of the time the entry's jerk needs to build its deceleration (d / j), at least
-  // the next cycle's point.
+  // --- static-c1: the velocity the path must have is v_req(s) = belt / |dX/ds|. The cap is a
+  // jerk-limited replan towards its level; a level that moves at r = dv_req/dt is followed
+  // r^2 / (2 j) behind (the replan settles where the acceleration it has, r, takes r / j to
+  // bring to 0). So the cap is v_req where the path will be r / (2 j) later than the middle of
+  // the next cycle: the lag and the look-ahead cancel, whether v_req falls or rises (r from
+  // the X share's derivative, sign(x') x'', at the path and once more at that point ahead).
   const planner::Chain& path = e->segment.path;
   const planner::PreparedSegment* next = ipo_.queued_entry(0);
-  const double t = t_cycle();
-  const double lead = std::clamp(e->d_max / e->j_max, t, kLeadMax);  // [s]
-  double s1 = c.path.s + c.path.v * std::max(t, kLeadShare * lead);
-  const planner::Chain* on = &path;
-  if (s1 > path.length()) {
-    if (next == nullptr) return;
-    s1 -= path.length();
-    on = &next->path;
-  }
-  const double share = std::fabs(on->at(s1).d1[static_cast<std::size_t>(x)]);
+  const auto xi = static_cast<std::size_t>(x);
+  const double v = c.path.v;  // [mm/s]
+  planner::PathPoint q;
+  const auto point = [&](double s) {
+    if (s <= path.length()) {
+      q = path.at(s);
+      return true;
+    }
+    if (next == nullptr) return false;
+    q = next->path.at(s - path.length());
+    return true;
+  };
+  // |dv_req/dt| = belt |x''| v / x'^2 at q [mm/s^2]
+  const auto rate = [&] {
+    const double share = std::fabs(q.d1[xi]);
+    return share > 0.0 ? std::max(belt, 0.0) * std::fabs(q.d2[xi]) * v / (share * share) : 0.0;
+  };
+  const double s0 = c.path.s + v * kCycleShare * t_cycle();
+  double lag = 0.0;  // [s]
+  if (std::isfinite(e->j_max) && e->j_max > 0.0)
+    for (int k = 0; k < 2; ++k) {
+      if (!point(s0 + v * lag)) return;
+      lag = std::min(rate() / (2.0 * e->j_max), kLeadMax);
+    }
+  if (!point(s0 + v * lag)) return;
+  const double share = std::fabs(q.d1[xi]);
   const double feed = c.programmed->feed;  // [mm/s] the part's belt feed (raised at a ball)
   if (!(share > 0.0) || feed * share <= planned * (1.0 + kCapSlack)) return;
   ipo_.set_velocity_cap(std::min(ipo_.velocity_cap(), std::max(belt, 0.0) / share));

@@ -241,12 +241,16 @@ class ProgramSource final : public Source {
   int c_hold_slot_ = -1;
   std::optional<XVirtualParams> xv_;            ///< set while a static unit is synchronised
   std::vector<planner::AxisLimits> xv_limits_;  ///< the planner's limits (NC9100)
+  planner::ChannelLimits xv_channel_;           ///< --- static-c1: and its channel's (the joints)
   std::vector<std::string> xv_names_;           ///< interpolated axis names
   std::optional<double> xv_tangent_;            ///< XY tangent at the last block's end [deg]
   /// --- static-blend: the last part of a block that ends in a tolerance ball (G61 / G261),
   /// held until the next path part is known (blend_belt_feed raises both feeds), then queued;
   /// queued as it is before any other command's items (xv_release()).
   std::optional<planner::Move> xv_held_;
+  /// --- static-c1: the last part queued with no ball after it, whose joint with the next part
+  /// is checked (joint_belt_check).
+  std::optional<planner::Move> xv_last_;
   /// Queues xv_held_ (if any) as it is.
   void xv_release();
   // --- end static-saw

@@ -7,7 +7,8 @@
 // synchronised, every block gets the belt feed (ipo/x_virtual.hpp) and the static unit's
 // errors NC9100..NC9102 are raised at the block's line. The results are queued and handed out
 // before the next command (pull()); --- static-blend: a part that ends in a tolerance ball waits
-// for the next path part (xv_held_), so that both feeds can be raised for the ball.
+// for the next path part (xv_held_), so that both feeds can be raised for the ball; --- static-c1:
+// every joint of two parts without a ball is checked against the planner's link (xv_last_).
 
 #include <cmath>
 #include <cstdio>
@@ -83,12 +84,17 @@ void ProgramSource::static_sync(const interp::CommandBody& body) {
     return;
   if (std::holds_alternative<interp::SyncOut>(body)) {
     xv_.reset();
+    xv_last_.reset();
     return;
   }
   const auto* in = std::get_if<interp::SyncIn>(&body);
   if (in == nullptr) return;
   if (xv_limits_.empty()) {
-    xv_limits_ = machine_config(machine_, 0.001).axes;
+    // The planner's limits at the CLI's default cycle of 1 ms (the adapter does not know
+    // --cycle-us; the cycle enters only the joints' link velocity, joint_belt_check).
+    const Config config = machine_config(machine_, 0.001);
+    xv_limits_ = config.axes;
+    xv_channel_ = config.channel;
     for (const std::uint8_t a : axes_)
       xv_names_.push_back(machine_.axes[a].name);
   }
@@ -96,6 +102,7 @@ void ProgramSource::static_sync(const interp::CommandBody& body) {
                        conv->direction == machines::MoveDirection::positive_x ? 1.0 : -1.0,
                        kXvPlanFactor * in->conv_vel, path_axes_};
   xv_tangent_.reset();
+  xv_last_.reset();
 }
 
 void ProgramSource::xv_release() {
@@ -175,13 +182,22 @@ void ProgramSource::emit_path(planner::Move mv) {
       if (xv_held_) {  // --- static-blend: the ball after the held part, raised feeds
         if (auto e = blend_belt_feed(*xv_held_, part, *xv_, xv_limits_, xv_names_))
           fail_with(xv_held_->line, e->id, e->message);
+        xv_last_ = *xv_held_;  // where the planner puts no ball, its joint is checked below
         xv_release();
       }
+      // --- static-c1: a joint without a ball (C1, a knee below 1 deg, C's tangent jumping)
+      // must let the path pass at the belt's velocity (inner joints of a split block are C2).
+      if (xv_last_)
+        if (auto e = joint_belt_check(*xv_last_, part, *xv_, xv_limits_, xv_channel_, xv_names_))
+          fail_with(xv_last_->line, e->id, e->message);
+      xv_last_.reset();
       // Inner joints of a split block are tangent (no ball); its last part waits for the next.
-      if (k + 1 == o.moves.size() && part.contour != planner::Contour::none)
+      if (k + 1 == o.moves.size() && part.contour != planner::Contour::none) {
         xv_held_ = std::move(part);
-      else
+      } else {
+        xv_last_ = part;
         queue_.push_back(std::move(part));
+      }
     }
     // A block blended into the next (G61 / G261) leaves a smooth joint: no corner check there.
     xv_tangent_.reset();

@@ -9,6 +9,7 @@
 
 #include "ipo/caxtrack.hpp"
 #include "planner/blend.hpp"
+#include "planner/corner.hpp"
 #include "planner/limits.hpp"
 #include "planner/path.hpp"
 
@@ -295,6 +296,48 @@ std::optional<XvError> blend_belt_feed(planner::Move& in, planner::Move& out,
   std::snprintf(where, sizeof where, " in the tolerance ball (G61/G261, radius %.6g mm)",
                 ball->radius);
   return belt_too_fast(ball->curve, in, need, p, limits, names, where, " there");
+}
+
+std::optional<XvError> joint_belt_check(const planner::Move& in, const planner::Move& out,
+                                        const XVirtualParams& p,
+                                        std::span<const planner::AxisLimits> limits,
+                                        const planner::ChannelLimits& channel,
+                                        std::span<const std::string> names) {
+  const planner::Segment a = planner::Segment::from_move(in);
+  const planner::Segment b = planner::Segment::from_move(out);
+  // As planner::Preparer::push_path: a tolerance ball makes the joint C2 (blend_belt_feed).
+  if (in.contour == planner::Contour::tolerance &&
+      planner::make_blend(a, b, in.path_dev, a.length() / 2, b.length() / 2))
+    return std::nullopt;
+  const planner::PathPoint end = a.at(a.length());
+  const planner::PathPoint start = b.at(0.0);
+  const auto x = static_cast<std::size_t>(p.x);
+  const double share = std::min(std::fabs(end.d1[x]), std::fabs(start.d1[x]));
+  if (!(share > 0.0)) return std::nullopt;  // NC9102 is belt_feed's
+  const double need = p.v_belt / share;     // [mm/s] the path velocity at the joint
+  // As planner::Preparer::emit_joint: #TRANSVELMIN does not act at a contoured joint.
+  const std::optional<double> v_min =
+      in.contour == planner::Contour::tolerance ? std::nullopt : in.transvelmin;
+  const std::uint8_t n = std::max(a.axis_count(), b.axis_count());
+  const planner::Link link =
+      planner::link_velocity(end, start, n, a.metric() | b.metric(), limits, channel, need, need,
+                             v_min, planner::jerk_limited(in.slope));
+  if (link.v_link >= need * (1.0 - 1e-9)) return std::nullopt;
+  const std::size_t axis = std::min<std::size_t>(link.limiting_axis, names.size() - 1);
+  const bool knee = link.cls == planner::TransitionClass::c0;
+  char buf[560];
+  std::snprintf(buf, sizeof buf,
+                "x_virtual: a belt at %.6g mm/s (1.1 x CONV_VEL, the fastest before 50653) needs a "
+                "path velocity of %.6g mm/s at this block's end, %s; axis %s's %s allows only "
+                "%.6g mm/s there: a dynamic error, the belt cannot be slowed (004 l.440, l.441: "
+                "the contour must be C2, l.621)",
+                p.v_belt, need,
+                knee ? "a knee (an axis's tangent jumps)" : "a C1 joint (the curvature jumps)",
+                names[axis].c_str(),
+                knee ? "acceleration (VELOJUMP, one cycle's velocity step)"
+                     : "jerk (the C1 rule, one cycle's acceleration step)",
+                link.v_link);
+  return XvError{kXvTooFastId, buf};
 }
 
 }  // namespace ncsim::ipo

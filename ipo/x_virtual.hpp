@@ -18,8 +18,9 @@
 // Outputs: the Move(s) with their feed set (a spline piece or an arc halved until its X
 // component's feed varies by at most kXvFeedSpread), or a positioned program error: NC9100 the belt
 // is too fast for the contour (an axis's velocity, acceleration or jerk bound would make the
-// planner slow the path below the belt: "it is not possible to reduce conveyor velocity",
-// l.440, "the CNC will output a dynamic error", l.621), NC9101 a corner the path would stop
+// planner slow the path below the belt, in a block, a tolerance ball or at a joint without a
+// ball: "it is not possible to reduce conveyor velocity", l.440, "the CNC will output a dynamic
+// error", l.621), NC9101 a corner the path would stop
 // at, NC9102 a block that does not run against the conveying direction (l.439).
 // Invariants: pure functions; throw nothing but std::bad_alloc.
 
@@ -96,5 +97,19 @@ std::optional<XvError> blend_belt_feed(planner::Move& in, planner::Move& out,
                                        const XVirtualParams& p,
                                        std::span<const planner::AxisLimits> limits,
                                        std::span<const std::string> names);
+
+/// --- static-c1: the joint of two belt-fed parts `in` and `out` that meet without a tolerance
+/// ball (a line or an arc into an arc, spline pieces, a knee of less than 1 deg). The path must
+/// pass it at v_belt / |dX/ds| (the X share at the joint); the planner passes it at most at its
+/// own link velocity (planner::link_velocity with the limits `limits` and `channel` it plans
+/// with: the C1 rule v <= sqrt(j_i T / |dx''_i|) where the curvature jumps, VELOJUMP where an
+/// axis's tangent jumps, e.g. a tracking C at an inflection). NC9100 naming the axis and its
+/// rule when that link is below the belt's need (004 l.440, l.441: the contour must be C2,
+/// l.621); nothing when the joint is C2 or fast enough.
+std::optional<XvError> joint_belt_check(const planner::Move& in, const planner::Move& out,
+                                        const XVirtualParams& p,
+                                        std::span<const planner::AxisLimits> limits,
+                                        const planner::ChannelLimits& channel,
+                                        std::span<const std::string> names);
 
 }  // namespace ncsim::ipo

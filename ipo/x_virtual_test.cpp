@@ -171,3 +171,46 @@ TEST_CASE("a tolerance ball raises both neighbours' feeds to the belt feed of it
     CHECK(out.feed == 5.0);
   }
 }
+
+TEST_CASE("a joint without a ball that the planner passes below the belt's need is NC9100") {
+  // --- static-c1: a line along -X into a tangent G02 arc of R 300 turning towards +Y: the
+  // curvature jumps by 1/300 mm^-1, all of it in Y (a C1 joint). The planner's C1 rule allows
+  // sqrt(j_Y T / |dx''_Y|) = sqrt(200000 x 0.001 x 300) = 244.9 mm/s there (T = 1 ms); the X
+  // share at the joint is 1, so the path must pass it at the belt's velocity.
+  using ncsim::ipo::joint_belt_check;
+  using ncsim::planner::SlopeType;
+  Move in = line(0, 0, -100, 0);
+  Move out = line(-100, 0, -100 - 300 * std::sin(0.5), 300 - 300 * std::cos(0.5));
+  out.arc = ncsim::planner::Arc{0, 1, -100.0, 300.0, true, false};
+  in.slope = out.slope = SlopeType::trapez;
+  const ncsim::planner::ChannelLimits channel;  // T = 1 ms, the C1 rule on
+  SUBCASE("a belt at 300 mm/s: the C1 rule's 244.9 mm/s is too slow, NC9100 naming Y's jerk") {
+    const auto e =
+        joint_belt_check(in, out, XVirtualParams{0, 1.0, 300.0, 0b111}, limits(), channel, kNames);
+    REQUIRE(e);
+    CHECK(std::string(e->id) == "NC9100");
+    CHECK(e->message.find("a C1 joint") != std::string::npos);
+    CHECK(e->message.find("axis Y's jerk (the C1 rule") != std::string::npos);
+    CHECK(e->message.find("244.9") != std::string::npos);
+  }
+  SUBCASE("a G261 on a tangent joint gets no ball (nothing to blend): still NC9100") {
+    in.contour = ncsim::planner::Contour::tolerance;
+    in.path_dev = 5.0;
+    CHECK(
+        joint_belt_check(in, out, XVirtualParams{0, 1.0, 300.0, 0b111}, limits(), channel, kNames));
+  }
+  SUBCASE("a belt at 200 mm/s passes") {
+    CHECK_FALSE(
+        joint_belt_check(in, out, XVirtualParams{0, 1.0, 200.0, 0b111}, limits(), channel, kNames));
+  }
+  SUBCASE("STEP slopes allow acceleration steps (no C1 rule): passes") {
+    in.slope = out.slope = SlopeType::step;
+    CHECK_FALSE(
+        joint_belt_check(in, out, XVirtualParams{0, 1.0, 300.0, 0b111}, limits(), channel, kNames));
+  }
+  SUBCASE("two collinear lines (C2) pass at any belt") {
+    const Move on = line(-100, 0, -200, 0);
+    CHECK_FALSE(
+        joint_belt_check(in, on, XVirtualParams{0, 1.0, 1000.0, 0b111}, limits(), channel, kNames));
+  }
+}
