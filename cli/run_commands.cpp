@@ -280,7 +280,7 @@ std::string failure_text(const Loaded& in, const interp::Interpreter& interp,
                          const ipo::ProgramSource& src, const ipo::Channel& ch) {
   if (const auto& e = ch.run_time_error())
     return positioned(interp, *e, core::Severity::error,
-                      "run-time error at t=" + num(e->t) + " s: " + e->message);
+                      "run-time error at t=" + seconds(e->t) + " s: " + e->message);
   return diagnostic_text(in, interp, src, ch.message());
 }
 
@@ -289,7 +289,8 @@ std::string failure_text(const Loaded& in, const interp::Interpreter& interp,
 std::string warning_text(const interp::Interpreter& interp, const ipo::Channel& ch) {
   const auto& w = ch.trafo_warning();
   if (!w) return {};
-  return positioned(interp, *w, core::Severity::warning, "at t=" + num(w->t) + " s: " + w->message);
+  return positioned(interp, *w, core::Severity::warning,
+                    "at t=" + seconds(w->t) + " s: " + w->message);
 }
 
 void json_string(std::ostream& os, const std::string& s) {

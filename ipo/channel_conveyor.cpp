@@ -183,7 +183,17 @@ Channel::EventOutcome Channel::on_probe_arm(const interp::ProbeArm& command,
       std::abort();
     }
   }
-  sync_->port()->arm_probe(command);  // a retrigger is the Port's P-ERR-44009 (next step)
+  conveyor::Port& port = *sync_->port();
+  port.arm_probe(command);
+  // A refused arm (P-ERR-44009 retrigger, 44001, 44011, 44012, ...) is the error of this
+  // MC_TouchProbe, at its line and cycle (seed 004 §6.3.1), not of the block after it.
+  if (const auto& err = port.error()) {
+    try {
+      return event_error(err->id.c_str(), std::string(err->message), e);
+    } catch (...) {
+      std::abort();
+    }
+  }
   return EventOutcome::done;
 }
 

@@ -41,4 +41,11 @@ fi
 expect "time: the run stops after the motion that follows the error" 1 \
   'stopped after 14\.266 s' '\[NC9052\]' -- time "$prog"
 
+# P-ERR-44009 (seed 004 §6.3.1): the error is positioned at the MC_TouchProbe that retriggers
+# (line 9 of the second pass), not at the block after it, and its time is the cycle's, printed
+# to the microsecond.
+expect "time: P-ERR-44009 at the retriggering MC_TouchProbe, its time to the us" 1 '' \
+  'probe_retriggered\.nc:9:1: error: run-time error at t=10\.33[78] s: MC_TouchProbe retriggered .*\[P-ERR-44009\]' \
+  -- time "$root/programs/probe_retriggered/probe_retriggered.nc"
+
 summary sync_error
