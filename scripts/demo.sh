@@ -46,7 +46,7 @@ echo
 # build/release/reports (a run-time error would be on its page; each of these runs through).
 mkdir -p build/release/reports
 echo "reports of the other bundled examples (build/release/reports):"
-for name in laser_coil pick_and_place_50 static_saw_repaired override_above_100 dense_cam; do
+for name in laser_coil pick_and_place_50 static_saw override_above_100 dense_cam; do
   page=build/release/reports/$name.html
   build/release/cli/ncsim report -o "$page" "programs/$name/$name.nc" >/dev/null
   screenshot "$page" "build/release/reports/$name.png"

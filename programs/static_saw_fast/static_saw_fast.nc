@@ -1,4 +1,4 @@
-; static_saw_fast: programs/static_saw_repaired with a belt too fast for the contour: the belt
+; static_saw_fast: programs/static_saw (without its G74) with a belt too fast for the contour: the belt
 ;   at 750 mm/s (45 m/min) with CONV_VEL 45000 mm/min; the saw's C axis cannot turn fast
 ;   enough along the spline, so the static unit's "dynamic error" (seed 004 l.621) stops the
 ;   program before the contour starts: NC9100 at N160, where the spline section is complete
