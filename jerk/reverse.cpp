@@ -183,18 +183,40 @@ Status detail::reversal_move_trusted(const State& start, double p1, double v1, c
     Sample hi = top;
     Sample lo;
     bool lo_known = false;
+    bool step_in_tol = false;  // the step from V landed on the root (within tolerance)
+    const double tol = 8.0 * kEps * std::abs(d);
     if (u_zero > 0.0 && u_zero < lim.v_max) {
-      const Sample kink = sample(u_zero);
-      lo_known = kink.h <= 0.0;
-      (lo_known ? lo : hi) = kink;
+      // The root step from V before the kink (issue 11, session 26, as top_level's in
+      // jerk/move.cpp): the kink has no slope, so the solver's first step in [u_zero, V] is this
+      // step from V alone. Where it lands in (u_zero, V), on which h rises, a level in tolerance
+      // is that piece's root, the highest feasible level, and the kink is not evaluated; a
+      // feasible one bounds the root from below (and shows the kink feasible: h(u_zero) < h(x));
+      // an infeasible one becomes the top of the bracket.
+      if (top.slope > 0.0) {
+        const double r0 = top.h + 0.5 * tol;
+        const double disc = top.slope * top.slope - 2.0 * top.curve * r0;
+        const double x = disc >= 0.0 ? top.level - 2.0 * r0 / (top.slope + std::sqrt(disc))
+                                     : top.level - r0 / top.slope;  // root.hpp's step
+        if (x > u_zero && x < top.level) {
+          const Sample step = sample(x);
+          lo_known = step.h <= 0.0;
+          step_in_tol = lo_known && step.h >= -tol;
+          (lo_known ? lo : hi) = step;
+        }
+      }
+      if (!lo_known) {
+        const Sample kink = sample(u_zero);
+        lo_known = kink.h <= 0.0;
+        (lo_known ? lo : hi) = kink;
+      }
     }
     if (!lo_known) {
       lo = sample(0.0);
       if (!(lo.h < 0.0)) return Status::not_supported;  // no detour needed (or none helps)
     }
-    const double tol = 8.0 * kEps * std::abs(d);
-    level = detail::solve_with_curve(lo.level, hi.level, lo.h, hi.h, lo.slope, hi.slope, lo.curve,
-                                     hi.curve, tol, h);
+    level = step_in_tol ? lo.level
+                        : detail::solve_with_curve(lo.level, hi.level, lo.h, hi.h, lo.slope,
+                                                   hi.slope, lo.curve, hi.curve, tol, h);
     if (!(level > 0.0)) return Status::not_supported;
     if (last != level) sample(level);
   }
