@@ -6,7 +6,10 @@
 // rounding margin, times (1 - 1e-9): the candidates' durations are sums of the same phases
 // integrated by the profile builder, equal to these to ~1e-15 relative.
 //  - "stop, then go": t_stop + T_r2r(|p1 - p_stop|) for a target at rest (the fastest
-//    rest-to-rest move is the closed form); none for an arrival velocity (0).
+//    rest-to-rest move is the closed form); for an arrival velocity v1 infinite where the go
+//    part (the single peak from rest) cannot exist, the target closer than the ramp 0 -> |v1|
+//    or behind, else t_stop + T_r2r(|q - p_stop|) - the ramp |v1| -> 0 under A- (q: where that
+//    ramp appended to the go part ends).
 //  - the manual's stop-and-return (frame of the arrival velocity, start moving against it):
 //    t_stop + T_r2r(|q - p_stop|) + the ramp 0 -> |v1|, q = p1 - sign(v1) ramp_distance(|v1|):
 //    its return uses the symmetric min(A+, A-), never faster than T_r2r (the optimum).
@@ -66,13 +69,34 @@ StopPoint stop_point(const MotionState& start, const Dynamics& dyn) noexcept {
 
 double stop_then_go_bound(const MotionState& start, const PositionTarget& target,
                           const Dynamics& dyn) noexcept {
-  // With an arrival velocity the simple bound (|p1 - p_stop| / V, the change 0 -> |v1|) decided
-  // 59 of the bench's 1021 such inputs and cost more than it saved: not used.
-  if (target.v != 0.0) return 0.0;
   const StopPoint stop = stop_point(start, dyn);
-  const double scale = std::abs(stop.p - start.p) + std::abs(target.p - start.p);
-  const double dist = shortened(std::abs(target.p - stop.p), scale);
-  return (stop.t + rest_to_rest_fastest_time(dist, dyn)) * (1.0 - kMargin);
+  if (target.v == 0.0) {
+    const double scale = std::abs(stop.p - start.p) + std::abs(target.p - start.p);
+    const double dist = shortened(std::abs(target.p - stop.p), scale);
+    return (stop.t + rest_to_rest_fastest_time(dist, dyn)) * (1.0 - kMargin);
+  }
+  // An arrival velocity (issue 11, session 26): the go part is jerk::fastest_move from rest in
+  // the frame g of v1 (its reversed frame needs v1 against g: skipped). Every level's chain from
+  // rest covers at least the direct ramp 0 -> |v1| under A+ (the ramp's acceleration at each
+  // velocity, min(sqrt(2 J v), A+, sqrt(2 J (|v1| - v))), bounds every accelerating profile
+  // from rest, so it covers the least distance; a level above |v1| covers more already on its
+  // way up): a target closer than that, or behind, has no go part.
+  const double g = target.v > 0.0 ? 1.0 : -1.0;
+  const double speed = std::abs(target.v);
+  const double j = dyn.j_max;
+  const double up = ramp_distance(speed, dyn.a_max, j);
+  const double ahead = g * (target.p - stop.p);
+  const double scale = std::abs(stop.p - start.p) + std::abs(target.p - start.p) + up;
+  if (ahead < up - kMargin * scale) return std::numeric_limits<double>::infinity();
+  // Else: the go part followed by the stop ramp |v1| -> 0 under A- is a rest-to-rest move over
+  // |q - p_stop|, q = p1 + g ramp_distance(|v1|, A-), never faster than the fastest one, so
+  // the go part takes at least T_r2r(|q - p_stop|) less the stop ramp's time.
+  const double down = ramp_distance(speed, dyn.d_max, j);
+  const double dist = shortened(std::abs(ahead + down), scale + down);
+  const double t_down = speed * j <= dyn.d_max * dyn.d_max ? 2.0 * std::sqrt(speed / j)
+                                                           : speed / dyn.d_max + dyn.d_max / j;
+  const double t_r2r = rest_to_rest_fastest_time(dist, dyn);
+  return stop.t + t_r2r - t_down - kMargin * (stop.t + t_r2r + t_down);
 }
 
 double manual_bound(const MotionState& start, const PositionTarget& target,

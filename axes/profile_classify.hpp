@@ -31,7 +31,9 @@ StopPoint stop_point(const MotionState& start, const Dynamics& dyn) noexcept;
 double rest_to_rest_fastest_time(double dist, const Dynamics& dyn) noexcept;
 
 /// Lower bound [s] of "stop, then the fastest move from rest to the target" (plan_fastest's
-/// candidate 4) for a target at rest; 0 for an arrival velocity.
+/// candidate 4: for an arrival velocity the single-peak move from rest, jerk::fastest_move);
+/// infinite where that move cannot exist (the target behind or closer than the ramp to the
+/// arrival speed).
 double stop_then_go_bound(const MotionState& start, const PositionTarget& target,
                           const Dynamics& dyn) noexcept;
 

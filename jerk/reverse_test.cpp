@@ -182,3 +182,30 @@ TEST_CASE("reversal_move finds the fastest turn of every feasible level") {
   CHECK(missed == 0);
   CHECK(faster == 0);
 }
+
+// Issue 11, session 26: reversal_move answers "no turn" before evaluating a level where the out
+// frame's start neither moves backward nor reverses (u0 >= 0, u_zero >= 0) and the target lies
+// beyond the ramp 0 -> |v1| under A+ (d > ramp_distance(|v1|, A+)): every level's displacement
+// is then at most that ramp's distance. The claim against the reference's levels: no level of
+// its grid (with every change of feasibility bisected) reaches the target there.
+TEST_CASE("no turn reaches a target beyond the ramp to v1 from a start not moving back") {
+  std::mt19937_64 rng(2026112426);
+  int decided = 0;
+  for (int n = 0; n < 30000 && decided < 3000; ++n) {
+    const Draw d = draw(rng);
+    const double g = d.v1 > 0.0 ? 1.0 : -1.0;
+    const double u0 = -g * d.start.v;
+    const double b0 = -g * d.start.a;
+    const double u_zero = u0 + b0 * std::abs(b0) / (2.0 * d.lim.j_max);
+    const double dist = g * (d.p1 - d.start.p);
+    const double up = ncsim::jerk::ramp_distance(std::abs(d.v1), d.lim.a_max, d.lim.j_max);
+    if (!(u0 >= 0.0 && u_zero >= 0.0 && dist - up > 1e-9 * (std::abs(dist) + up))) continue;
+    ++decided;
+    CAPTURE(n);
+    Reversal r;
+    CHECK(ncsim::jerk::reversal_move(d.start, d.p1, d.v1, d.lim, r) == Status::not_supported);
+    CHECK(std::isinf(reference_time(d.start, d.p1, d.v1, d.lim, 256)));
+  }
+  MESSAGE("decided before any level ", decided);
+  CHECK(decided > 1000);
+}
