@@ -138,6 +138,37 @@ NCSIM_HOT_MATCH(number) {
   return true;
 }
 
+/// address_word on its common shape, a one-letter head followed at once by a number with or
+/// without a sign (`X-1.5`, `Y20`, `F.5`): the same characters read and the same actions done as
+/// address_word's (address_head; sign; number; address_value's and address_word's actions), but
+/// without stepping through its sequence of optional parts. False, with nothing read or done,
+/// on any other shape: address_word itself then decides.
+template <pegtl::apply_mode A, template <typename...> class Act, template <typename...> class Ctl,
+          typename Input, typename St>
+bool plain_address_word(Input& in, St& st) {
+  const char* const head = in.current();
+  const char* const e = in.end();
+  const char* const value = head + 1;  // the operand starts right after the one-letter head
+  if (value >= e) return false;
+  const char sign = *value == '-' || *value == '+' ? *value : '\0';
+  const char* const d = sign != '\0' ? value + 1 : value;
+  // number_spec matches here: digits first, or '.' and a digit
+  if (d >= e || !(lex::is_digit(*d) || (*d == '.' && d + 1 < e && lex::is_digit(d[1])))) {
+    return false;
+  }
+  if (!rules::address_head::match<A, pegtl::rewind_mode::dontcare, Act, Ctl>(in, st)) return false;
+  if (sign != '\0') {
+    if constexpr (A == pegtl::apply_mode::action) st.sign = sign;  // Action<rules::sign>
+    in.bump(1);
+  }
+  rules::number::match<A, pegtl::rewind_mode::dontcare, Act, Ctl>(in, st);  // matches (above)
+  if constexpr (A == pegtl::apply_mode::action) {
+    st.end_address_value(st.loc(value));  // Action<rules::address_value>
+    st.add_address_word();                // Action<rules::address_word>
+  }
+  return true;
+}
+
 // word_spec, dispatched on the first character. An alternative is skipped only where it
 // cannot match: its first character is wrong, or (axis_command, named_axis) the name is not
 // followed by '[' or '=' (bracket_axis and axis_name_eq read name, blanks, then need those).
@@ -178,6 +209,7 @@ NCSIM_HOT_MATCH(word) {
   if (after == '[' && try_alternative<axis_command, A, Act, Ctl>(in, st)) return true;
   if (u == 'G') return try_alternative<g_word, A, Act, Ctl>(in, st);
   if (after == '=' && try_alternative<named_axis, A, Act, Ctl>(in, st)) return true;
+  if (plain_address_word<A, Act, Ctl>(in, st)) return true;
   if (try_alternative<address_word, A, Act, Ctl>(in, st)) return true;
   return variable && try_alternative<bare_value, A, Act, Ctl>(in, st);
 }
