@@ -26,33 +26,27 @@ inline constexpr std::uint64_t kExactMantissa = std::uint64_t{1} << 53;
 /// At most this many digits are accumulated in a uint64 without overflow.
 inline constexpr int kMaxFastDigits = 19;
 
-/// Value of a decimal literal `[digits][.digits]` (the text rules::number matched). When the
-/// digits form an integer m <= 2^53 and there are k <= 22 decimals, m and 10^k are exact
-/// doubles and one IEEE division is correctly rounded, so m / 10^k is bit-identical to
-/// std::from_chars (Clinger's fast path); every other literal goes through from_chars.
-/// Nothing when the literal is beyond the range of a double; a literal below the smallest
-/// double rounds to 0, as from_chars would round it.
-inline std::optional<double> decimal_value(const char* begin, const char* end) {
-  std::uint64_t mantissa = 0;
-  int digits = 0;
-  int decimals = 0;
-  bool after_point = false;
-  for (const char* p = begin; p < end; ++p) {
-    if (*p == '.') {
-      after_point = true;
-      continue;
+/// Value of a decimal literal `[digits][.digits]` (the text rules::number matched; `point` is
+/// its '.', or `end` without one). When the digits form an integer m <= 2^53 and there are k <=
+/// 22 decimals, m and 10^k are exact doubles and one IEEE division is correctly rounded, so
+/// m / 10^k is bit-identical to std::from_chars (Clinger's fast path); every other literal goes
+/// through from_chars. Nothing when the literal is beyond the range of a double; a literal below
+/// the smallest double rounds to 0, as from_chars would round it.
+inline std::optional<double> decimal_value(const char* begin, const char* point, const char* end) {
+  const auto whole = static_cast<std::size_t>(point - begin);
+  const std::size_t decimals = point < end ? static_cast<std::size_t>(end - point) - 1 : 0;
+  if (whole + decimals <= static_cast<std::size_t>(kMaxFastDigits)) {
+    // The digits before and after the point, in order, as one integer (at most 19 digits).
+    std::uint64_t mantissa = 0;
+    for (const char* p = begin; p < point; ++p)
+      mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p - '0');
+    if (point < end) {
+      for (const char* p = point + 1; p < end; ++p)
+        mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p - '0');
     }
-    if (digits == kMaxFastDigits) {
-      ++digits;  // too long for the fast path
-      break;
+    if (mantissa <= kExactMantissa && decimals < kExactPow10.size()) {
+      return static_cast<double>(mantissa) / kExactPow10[decimals];
     }
-    mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p - '0');
-    ++digits;
-    if (after_point) ++decimals;
-  }
-  if (digits <= kMaxFastDigits && mantissa <= kExactMantissa &&
-      decimals < static_cast<int>(kExactPow10.size())) {
-    return static_cast<double>(mantissa) / kExactPow10[static_cast<std::size_t>(decimals)];
   }
   double value = 0.0;
   if (std::from_chars(begin, end, value).ec == std::errc::result_out_of_range) {
@@ -113,7 +107,9 @@ NCSIM_HOT_MATCH(number) {
   while (p < e && lex::is_digit(*p))
     ++p;
   const bool whole = p != b;
+  const char* point = nullptr;  // the '.', if any
   if (p < e && *p == '.') {
+    point = p;
     const char* q = p + 1;
     while (q < e && lex::is_digit(*q))
       ++q;
@@ -124,7 +120,7 @@ NCSIM_HOT_MATCH(number) {
   }
   const auto length = static_cast<std::size_t>(p - b);
   if constexpr (A == pegtl::apply_mode::action) {
-    const std::optional<double> value = detail::decimal_value(b, p);
+    const std::optional<double> value = detail::decimal_value(b, point != nullptr ? point : p, p);
     if (!value) {
       st.fail_message(b, "NC1005",
                       "number out of range: " + std::string(b, std::min<std::size_t>(length, 24)) +
