@@ -1,6 +1,7 @@
 #include "grammar/block_parser.hpp"
 
 #include <cstring>
+#include <type_traits>
 
 #include "grammar/custom_rules.hpp"
 
@@ -50,6 +51,66 @@ bool comment_only(std::string_view text) {
     if (k == text.size()) return false;  // unclosed: the parser reports it
     ++k;
   }
+}
+
+/// True when `text` is a block of plain address words only: blanks, then words `<letter><number>`
+/// or `<letter><sign><number>` (letter: an address head other than V, which word tries as a
+/// variable first), each followed by blanks or at once by the next word, to the end; no
+/// comment, `\`, '=', '[' or anything else. rules::block reads such a block through
+/// word_list and each word through plain_address_word, with no other rule matching anything or
+/// acting (no skip level, block number, label, header, statement, call or trailing $GOTO).
+bool plain_words(std::string_view text) {
+  const char* p = text.data();
+  const char* const e = p + text.size();
+  const auto skip_blanks = [&] {
+    while (p < e && blank(*p))
+      ++p;
+  };
+  skip_blanks();
+  if (p == e) return false;
+  while (p < e) {
+    switch (ascii_upper(*p)) {
+      case 'M':
+      case 'H':
+      case 'F':
+      case 'E':
+      case 'S':
+      case 'T':
+      case 'D':
+      case 'I':
+      case 'J':
+      case 'K':
+      case 'R':
+      case 'X':
+      case 'Y':
+      case 'Z':
+      case 'A':
+      case 'B':
+      case 'C':
+      case 'U':
+      case 'W':
+        break;
+      default:
+        return false;
+    }
+    ++p;
+    if (p < e && (*p == '-' || *p == '+')) ++p;
+    // number_spec: digits [ '.' digits* ] | '.' digits
+    const char* const digits = p;
+    while (p < e && lex::is_digit(*p))
+      ++p;
+    if (p < e && *p == '.') {
+      ++p;
+      const char* const decimals = p;
+      while (p < e && lex::is_digit(*p))
+        ++p;
+      if (p == decimals && decimals == digits + 1) return false;  // a lone '.'
+    } else if (p == digits) {
+      return false;
+    }
+    skip_blanks();
+  }
+  return true;
 }
 
 }  // namespace
@@ -146,6 +207,27 @@ struct BlockParser::Impl {
     state.reset(out, out.text.data(), out.text.data() + out.text.size(), out.loc, multiline);
     Input in(out.text.data(), out.text.data() + out.text.size(), "");
     try {
+      if constexpr (std::is_same_v<Rule, rules::block>) {
+        if (plain_words(out.text)) {
+          // What rules::block does on this shape, without its alternatives (see plain_words):
+          // each word as plain_address_word (Action<rules::word> has nothing to do without a
+          // call), blanks between, then Action<rules::word_list>.
+          const auto blanks = [&] {
+            (void)pegtl::match<rules::ws, pegtl::apply_mode::action, pegtl::rewind_mode::dontcare,
+                               Action, Control>(in, state);
+          };
+          blanks();
+          while (!in.empty()) {
+            // Each word matches (plain_words checked its shape); never loop without reading.
+            if (!plain_address_word<pegtl::apply_mode::action, Action, Control>(in, state)) {
+              throw ParseFailure{in.current(), "NC1001", "a block", {}};
+            }
+            blanks();
+          }
+          Action<rules::word_list>::apply(in, state);
+          return;
+        }
+      }
       if (!pegtl::parse<Rule, Action, Control>(in, state)) {
         throw ParseFailure{in.current(), "NC1001", "a block", {}};
       }

@@ -26,33 +26,27 @@ inline constexpr std::uint64_t kExactMantissa = std::uint64_t{1} << 53;
 /// At most this many digits are accumulated in a uint64 without overflow.
 inline constexpr int kMaxFastDigits = 19;
 
-/// Value of a decimal literal `[digits][.digits]` (the text rules::number matched). When the
-/// digits form an integer m <= 2^53 and there are k <= 22 decimals, m and 10^k are exact
-/// doubles and one IEEE division is correctly rounded, so m / 10^k is bit-identical to
-/// std::from_chars (Clinger's fast path); every other literal goes through from_chars.
-/// Nothing when the literal is beyond the range of a double; a literal below the smallest
-/// double rounds to 0, as from_chars would round it.
-inline std::optional<double> decimal_value(const char* begin, const char* end) {
-  std::uint64_t mantissa = 0;
-  int digits = 0;
-  int decimals = 0;
-  bool after_point = false;
-  for (const char* p = begin; p < end; ++p) {
-    if (*p == '.') {
-      after_point = true;
-      continue;
+/// Value of a decimal literal `[digits][.digits]` (the text rules::number matched; `point` is
+/// its '.', or `end` without one). When the digits form an integer m <= 2^53 and there are k <=
+/// 22 decimals, m and 10^k are exact doubles and one IEEE division is correctly rounded, so
+/// m / 10^k is bit-identical to std::from_chars (Clinger's fast path); every other literal goes
+/// through from_chars. Nothing when the literal is beyond the range of a double; a literal below
+/// the smallest double rounds to 0, as from_chars would round it.
+inline std::optional<double> decimal_value(const char* begin, const char* point, const char* end) {
+  const auto whole = static_cast<std::size_t>(point - begin);
+  const std::size_t decimals = point < end ? static_cast<std::size_t>(end - point) - 1 : 0;
+  if (whole + decimals <= static_cast<std::size_t>(kMaxFastDigits)) {
+    // The digits before and after the point, in order, as one integer (at most 19 digits).
+    std::uint64_t mantissa = 0;
+    for (const char* p = begin; p < point; ++p)
+      mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p - '0');
+    if (point < end) {
+      for (const char* p = point + 1; p < end; ++p)
+        mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p - '0');
     }
-    if (digits == kMaxFastDigits) {
-      ++digits;  // too long for the fast path
-      break;
+    if (mantissa <= kExactMantissa && decimals < kExactPow10.size()) {
+      return static_cast<double>(mantissa) / kExactPow10[decimals];
     }
-    mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p - '0');
-    ++digits;
-    if (after_point) ++decimals;
-  }
-  if (digits <= kMaxFastDigits && mantissa <= kExactMantissa &&
-      decimals < static_cast<int>(kExactPow10.size())) {
-    return static_cast<double>(mantissa) / kExactPow10[static_cast<std::size_t>(decimals)];
   }
   double value = 0.0;
   if (std::from_chars(begin, end, value).ec == std::errc::result_out_of_range) {
@@ -113,7 +107,9 @@ NCSIM_HOT_MATCH(number) {
   while (p < e && lex::is_digit(*p))
     ++p;
   const bool whole = p != b;
+  const char* point = nullptr;  // the '.', if any
   if (p < e && *p == '.') {
+    point = p;
     const char* q = p + 1;
     while (q < e && lex::is_digit(*q))
       ++q;
@@ -124,7 +120,7 @@ NCSIM_HOT_MATCH(number) {
   }
   const auto length = static_cast<std::size_t>(p - b);
   if constexpr (A == pegtl::apply_mode::action) {
-    const std::optional<double> value = detail::decimal_value(b, p);
+    const std::optional<double> value = detail::decimal_value(b, point != nullptr ? point : p, p);
     if (!value) {
       st.fail_message(b, "NC1005",
                       "number out of range: " + std::string(b, std::min<std::size_t>(length, 24)) +
@@ -135,6 +131,37 @@ NCSIM_HOT_MATCH(number) {
     st.push(n);
   }
   in.bump(length);
+  return true;
+}
+
+/// address_word on its common shape, a one-letter head followed at once by a number with or
+/// without a sign (`X-1.5`, `Y20`, `F.5`): the same characters read and the same actions done as
+/// address_word's (address_head; sign; number; address_value's and address_word's actions), but
+/// without stepping through its sequence of optional parts. False, with nothing read or done,
+/// on any other shape: address_word itself then decides.
+template <pegtl::apply_mode A, template <typename...> class Act, template <typename...> class Ctl,
+          typename Input, typename St>
+bool plain_address_word(Input& in, St& st) {
+  const char* const head = in.current();
+  const char* const e = in.end();
+  const char* const value = head + 1;  // the operand starts right after the one-letter head
+  if (value >= e) return false;
+  const char sign = *value == '-' || *value == '+' ? *value : '\0';
+  const char* const d = sign != '\0' ? value + 1 : value;
+  // number_spec matches here: digits first, or '.' and a digit
+  if (d >= e || !(lex::is_digit(*d) || (*d == '.' && d + 1 < e && lex::is_digit(d[1])))) {
+    return false;
+  }
+  if (!rules::address_head::match<A, pegtl::rewind_mode::dontcare, Act, Ctl>(in, st)) return false;
+  if (sign != '\0') {
+    if constexpr (A == pegtl::apply_mode::action) st.sign = sign;  // Action<rules::sign>
+    in.bump(1);
+  }
+  rules::number::match<A, pegtl::rewind_mode::dontcare, Act, Ctl>(in, st);  // matches (above)
+  if constexpr (A == pegtl::apply_mode::action) {
+    st.end_address_value(st.loc(value));  // Action<rules::address_value>
+    st.add_address_word();                // Action<rules::address_word>
+  }
   return true;
 }
 
@@ -178,6 +205,7 @@ NCSIM_HOT_MATCH(word) {
   if (after == '[' && try_alternative<axis_command, A, Act, Ctl>(in, st)) return true;
   if (u == 'G') return try_alternative<g_word, A, Act, Ctl>(in, st);
   if (after == '=' && try_alternative<named_axis, A, Act, Ctl>(in, st)) return true;
+  if (plain_address_word<A, Act, Ctl>(in, st)) return true;
   if (try_alternative<address_word, A, Act, Ctl>(in, st)) return true;
   return variable && try_alternative<bare_value, A, Act, Ctl>(in, st);
 }

@@ -4,6 +4,8 @@
 #include <charconv>
 #include <cstdint>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "grammar/test_support.hpp"
 
@@ -263,6 +265,61 @@ TEST_CASE("a backslash separates only when a line end follows it (blanks and CR 
 TEST_CASE("lines between #COMMENT BEGIN and END are not parsed") {
   CHECK(check("#COMMENT BEGIN\n$$$ not NC at all (\n#COMMENT END\nG01 X1\n").empty());
   CHECK(check("#COMMENT BEGIN\nX1\n") == std::vector<std::string>{"1:1 NC2016"});
+}
+
+// Blocks of plain address words (X-1.5 Y20) are read by a shortcut past rules::block
+// (block_parser.cpp, plain_words); a comment at the end sends the same words through the whole
+// grammar. Both must give the same block, to the bit, and the same diagnostics.
+TEST_CASE("plain address-word blocks parse as through the whole grammar") {
+  const std::string too_long = "X" + std::string(400, '9');  // beyond a double: NC1005
+  const std::vector<std::string> blocks = {"X20.1234 Y3.4567",
+                                           "  x-1.5\tY+.25 f6000 ",
+                                           "X1Y2Z3",
+                                           "M30",
+                                           "X5. Y-0 E3",
+                                           "A1 B2 C3 U4 W5",
+                                           "X0.000000000000000000001 Y12345678901234567890",
+                                           "X1.5.3",
+                                           "X. Y1",
+                                           "V5 X1",
+                                           "G01 X1",
+                                           "N10 X1",
+                                           too_long,
+                                           too_long + " Y1"};
+  for (const std::string& text : blocks) {
+    CAPTURE(text);
+    const Parsed fast(text);
+    const Parsed full(text + " (c)");
+    REQUIRE(fast.found == full.found);
+    CHECK(fast.block.has_error == full.block.has_error);
+    CHECK(fast.block.body.index() == full.block.body.index());
+    REQUIRE(fast.block.words.size() == full.block.words.size());
+    for (std::size_t w = 0; w < fast.block.words.size(); ++w) {
+      const ast::Word& a = fast.block.words[w];
+      const ast::Word& b = full.block.words[w];
+      CHECK(a.kind == b.kind);
+      CHECK(a.name == b.name);
+      CHECK(a.loc.line == b.loc.line);
+      CHECK(a.loc.column == b.loc.column);
+      CHECK(a.value == b.value);
+    }
+    REQUIRE(fast.block.exprs.size() == full.block.exprs.size());
+    for (std::size_t i = 0; i < fast.block.exprs.size(); ++i) {
+      const ast::ExprNode& a = fast.block.exprs[i];
+      const ast::ExprNode& b = full.block.exprs[i];
+      CHECK(a.op == b.op);
+      CHECK(a.loc.column == b.loc.column);
+      CHECK(std::bit_cast<std::uint64_t>(a.value) == std::bit_cast<std::uint64_t>(b.value));
+      CHECK(a.text == b.text);
+      CHECK(a.a == b.a);
+    }
+    REQUIRE(fast.diags.items().size() == full.diags.items().size());
+    for (std::size_t d = 0; d < fast.diags.items().size(); ++d) {
+      CHECK(fast.diags.items()[d].id == full.diags.items()[d].id);
+      CHECK(fast.diags.items()[d].loc.column == full.diags.items()[d].loc.column);
+      CHECK(fast.diags.items()[d].message == full.diags.items()[d].message);
+    }
+  }
 }
 
 }  // namespace ncsim::grammar::test

@@ -160,6 +160,22 @@ struct State {
     push(node);
   }
   void add_word(const ast::Word& word) { block->words.push_back(word); }
+  /// An address value is complete (its sign, read at `at`, is applied to the operand on top).
+  void end_address_value(core::SourceLoc at) {
+    if (sign == '-') negate_top(at);
+    sign = 0;
+    word_value = pop();
+  }
+  /// An address word (head and value read) is complete: it joins the block's words.
+  void add_address_word() {
+    ast::Word w;
+    w.kind = word_kind;
+    w.loc = word_loc;
+    w.name = word_name;
+    w.value = word_value;
+    word_value = ast::kNoNode;
+    add_word(w);
+  }
 
   [[noreturn]] void fail(const char* at, const char* expected) const {
     throw ParseFailure{at, "NC1001", expected, {}};

@@ -18,9 +18,7 @@ template <>
 struct Action<rules::address_value> {
   template <typename Input>
   static void apply(const Input& in, State& st) {
-    if (st.sign == '-') st.negate_top(st.loc(in.begin()));
-    st.sign = 0;
-    st.word_value = st.pop();
+    st.end_address_value(st.loc(in.begin()));
   }
 };
 
@@ -62,13 +60,7 @@ struct Action<rules::g_word> {
 struct AddAddressWord {
   template <typename Input>
   static void apply(const Input&, State& st) {
-    ast::Word w;
-    w.kind = st.word_kind;
-    w.loc = st.word_loc;
-    w.name = st.word_name;
-    w.value = st.word_value;
-    st.word_value = ast::kNoNode;
-    st.add_word(w);
+    st.add_address_word();
   }
 };
 template <>

@@ -28,6 +28,26 @@ std::size_t ring_size(std::size_t window) {
   return std::bit_ceil((window + 2) * planner::Chain::kMaxParts + 16);
 }
 
+/// The length planner::Segment::line gives a line Move (Segment::from_move), without building
+/// the Segment: the same effective metric and the same sum of squares in the same order
+/// (Segment::metric_norm), so the same bits.
+double line_length(const planner::Move& m) {
+  planner::AxisVec delta{};
+  for (std::size_t i = 0; i < m.axis_count; ++i)
+    delta[i] = m.end[i] - m.start[i];
+  const planner::AxisMask metric = planner::effective_metric(m.axis_count, m.path_axes, delta);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < m.axis_count; ++i)
+    if (((metric >> i) & 1U) != 0) sum += delta[i] * delta[i];
+  return std::sqrt(sum);
+}
+
+/// The length of a Move's path: lines without building their Segment.
+double move_length(const planner::Move& m) {
+  if (!m.arc && !m.spline) return line_length(m);
+  return planner::Segment::from_move(m).length();
+}
+
 }  // namespace
 
 PathInterpolator::PathInterpolator(Config config, Source& source, Sink* sink)
@@ -117,7 +137,7 @@ bool PathInterpolator::fill() noexcept {
       }
       planner::Move& m = std::get<planner::Move>(item_);
       // A zero-length line takes no ring slot: the planner drops it (passing on its stop).
-      if (!m.arc && planner::Segment::from_move(m).length() < kMinLength) {
+      if (!m.arc && move_length(m) < kMinLength) {
         m.line = static_cast<std::uint32_t>(next_token_);
         prep_.push(m, ready_);
         continue;

@@ -3,7 +3,9 @@
 #include "planner/prepare.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -96,8 +98,12 @@ std::span<const AxisLimits> Preparer::axes_for(const Move& move) const {
   std::span<const AxisLimits> axes = axes_;
   if (move.transformed && joints_ && !joints_->cartesian.empty()) axes = joints_->cartesian;
   // --- sync-feed: a PCS1 block on a conveyor: the belt's share taken off (belt_limits).
-  if (std::all_of(move.belt.begin(), move.belt.end(), [](double b) { return b == 0.0; }))
-    return axes;
+  // A share is 0 when its bits but the sign are all 0 (+0 and -0); the 16 shares' bits are
+  // or-ed without a branch each (most blocks are on no belt: every share is looked at).
+  std::uint64_t bits = 0;
+  for (const double b : move.belt)
+    bits |= std::bit_cast<std::uint64_t>(b) << 1;
+  if (bits == 0) return axes;
   for (std::size_t i = 0; i < axes.size() && i < belt_axes_.size(); ++i)
     belt_axes_[i] = belt_limits(axes[i], move.belt[i]);
   return std::span<const AxisLimits>(belt_axes_.data(), std::min(axes.size(), belt_axes_.size()));
