@@ -1,5 +1,6 @@
 #include <doctest/doctest.h>
 
+#include <array>
 #include <bit>
 #include <charconv>
 #include <cstdint>
@@ -270,6 +271,41 @@ TEST_CASE("lines between #COMMENT BEGIN and END are not parsed") {
 // Blocks of plain address words (X-1.5 Y20) are read by a shortcut past rules::block
 // (block_parser.cpp, plain_words); a comment at the end sends the same words through the whole
 // grammar. Both must give the same block, to the bit, and the same diagnostics.
+void same_as_whole_grammar(const std::string& text) {
+  CAPTURE(text);
+  const Parsed fast(text);
+  const Parsed full(text + " (c)");
+  REQUIRE(fast.found == full.found);
+  CHECK(fast.block.has_error == full.block.has_error);
+  CHECK(fast.block.body.index() == full.block.body.index());
+  REQUIRE(fast.block.words.size() == full.block.words.size());
+  for (std::size_t w = 0; w < fast.block.words.size(); ++w) {
+    const ast::Word& a = fast.block.words[w];
+    const ast::Word& b = full.block.words[w];
+    CHECK(a.kind == b.kind);
+    CHECK(a.name == b.name);
+    CHECK(a.loc.line == b.loc.line);
+    CHECK(a.loc.column == b.loc.column);
+    CHECK(a.value == b.value);
+  }
+  REQUIRE(fast.block.exprs.size() == full.block.exprs.size());
+  for (std::size_t i = 0; i < fast.block.exprs.size(); ++i) {
+    const ast::ExprNode& a = fast.block.exprs[i];
+    const ast::ExprNode& b = full.block.exprs[i];
+    CHECK(a.op == b.op);
+    CHECK(a.loc.column == b.loc.column);
+    CHECK(std::bit_cast<std::uint64_t>(a.value) == std::bit_cast<std::uint64_t>(b.value));
+    CHECK(a.text == b.text);
+    CHECK(a.a == b.a);
+  }
+  REQUIRE(fast.diags.items().size() == full.diags.items().size());
+  for (std::size_t d = 0; d < fast.diags.items().size(); ++d) {
+    CHECK(fast.diags.items()[d].id == full.diags.items()[d].id);
+    CHECK(fast.diags.items()[d].loc.column == full.diags.items()[d].loc.column);
+    CHECK(fast.diags.items()[d].message == full.diags.items()[d].message);
+  }
+}
+
 TEST_CASE("plain address-word blocks parse as through the whole grammar") {
   const std::string too_long = "X" + std::string(400, '9');  // beyond a double: NC1005
   const std::vector<std::string> blocks = {"X20.1234 Y3.4567",
@@ -286,39 +322,48 @@ TEST_CASE("plain address-word blocks parse as through the whole grammar") {
                                            "N10 X1",
                                            too_long,
                                            too_long + " Y1"};
-  for (const std::string& text : blocks) {
-    CAPTURE(text);
-    const Parsed fast(text);
-    const Parsed full(text + " (c)");
-    REQUIRE(fast.found == full.found);
-    CHECK(fast.block.has_error == full.block.has_error);
-    CHECK(fast.block.body.index() == full.block.body.index());
-    REQUIRE(fast.block.words.size() == full.block.words.size());
-    for (std::size_t w = 0; w < fast.block.words.size(); ++w) {
-      const ast::Word& a = fast.block.words[w];
-      const ast::Word& b = full.block.words[w];
-      CHECK(a.kind == b.kind);
-      CHECK(a.name == b.name);
-      CHECK(a.loc.line == b.loc.line);
-      CHECK(a.loc.column == b.loc.column);
-      CHECK(a.value == b.value);
+  for (const std::string& text : blocks)
+    same_as_whole_grammar(text);
+}
+
+// Seeded random blocks of the shortcut's shape (the letters it takes, either case, signs,
+// numbers of up to 25 digits with or without a point on either side, words with or without
+// blanks between): each parses to the same block and diagnostics as through the whole grammar.
+TEST_CASE("random plain address-word blocks parse as through the whole grammar") {
+  const std::string letters = "MHFESTDIJKRXYZABCUWmhfestdijkrxyzabcuw";
+  std::mt19937 rng(20261124);
+  const auto below = [&](std::size_t n) {
+    return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng);
+  };
+  const auto digits = [&](std::size_t n) {
+    std::string d;
+    for (std::size_t k = 0; k < n; ++k)
+      d += static_cast<char>('0' + below(10));
+    return d;
+  };
+  for (int n = 0; n < 5000; ++n) {
+    std::string text(below(3), ' ');
+    const std::size_t words = 1 + below(5);
+    for (std::size_t w = 0; w < words; ++w) {
+      text += letters[below(letters.size())];
+      if (const std::size_t sign = below(3); sign < 2) text += "+-"[sign];
+      switch (below(4)) {
+        case 0:
+          text += digits(1 + below(25));
+          break;
+        case 1:
+          text += digits(1 + below(6)) + ".";
+          break;
+        case 2:
+          text += "." + digits(1 + below(12));
+          break;
+        default:
+          text += digits(1 + below(6)) + "." + digits(1 + below(12));
+          break;
+      }
+      text += std::array<const char*, 3>{"", " ", "\t"}[below(3)];
     }
-    REQUIRE(fast.block.exprs.size() == full.block.exprs.size());
-    for (std::size_t i = 0; i < fast.block.exprs.size(); ++i) {
-      const ast::ExprNode& a = fast.block.exprs[i];
-      const ast::ExprNode& b = full.block.exprs[i];
-      CHECK(a.op == b.op);
-      CHECK(a.loc.column == b.loc.column);
-      CHECK(std::bit_cast<std::uint64_t>(a.value) == std::bit_cast<std::uint64_t>(b.value));
-      CHECK(a.text == b.text);
-      CHECK(a.a == b.a);
-    }
-    REQUIRE(fast.diags.items().size() == full.diags.items().size());
-    for (std::size_t d = 0; d < fast.diags.items().size(); ++d) {
-      CHECK(fast.diags.items()[d].id == full.diags.items()[d].id);
-      CHECK(fast.diags.items()[d].loc.column == full.diags.items()[d].loc.column);
-      CHECK(fast.diags.items()[d].message == full.diags.items()[d].message);
-    }
+    same_as_whole_grammar(text);
   }
 }
 
