@@ -58,4 +58,5 @@ for p in "${programs[@]}"; do
   run "$1" "$2" 1 4 10 "the manual's filters (laser listing 4.8.1)"
   run "$1" "$2" 1 8 20 "stronger filters"
   run "$1" "$2" 1 2 5 "light filters"
+  run "$1" "$2" 1 1 10 "the velocity filter alone (position filter order 1: off, delay time = dead time)"
 done
