@@ -689,7 +689,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
     }
   } else if (const auto& stop = channel.scenario_stop()) {
     err << "ncsim: run stopped by the scenario ('" << in.scenario->file
-        << "'): " << scenario::to_string(*stop) << " at t=" << num(channel.cycle().t) << " s\n";
+        << "'): " << scenario::to_string(*stop) << " at t=" << seconds(channel.cycle().t) << " s\n";
   }
   // The closing comment: why the run ended (program end, error, stop.time, ...), when it did
   // (not after a write error, which ends the loop early).

@@ -464,6 +464,11 @@ class Channel {
   /// The TCP setpoint of the last cycle under #TRAFO ON (PCS1 offset, catch-up included).
   std::array<axes::Setpoint, planner::kMaxAxes> tcp_{};
   std::optional<RunTimeError> trafo_warning_;  ///< the first NC6210 of the run
+  /// The joint positions of the two cycles before (q at index - 1, index - 2) and how many of
+  /// them are of consecutive transformed cycles: NC6210 checks the setpoints' differences.
+  AxisVec q_back1_{}, q_back2_{};
+  std::uint64_t q_index_ = 0;
+  int q_known_ = 0;
   /// The catch-up / departure under #TRAFO ON: the TCP's dynamics from the joints
   /// (ipo/trafo_sync); false: the plan failed (`r` holds why). channel_kinematics.cpp.
   /// --- trafo-feed: `feed_cont` [mm/s] the catch-up's relative velocity at the meeting (S-1).
@@ -472,6 +477,9 @@ class Channel {
                          axes::Result& r) noexcept;
   /// Checks the joints of a synchronised cycle under #TRAFO ON (NC6210 warning).
   void trafo_sync_check(const Cycle& c, const JointSetpoint& s) noexcept;
+  /// The joint setpoints' v and a by differences over this cycle and the two before (what the
+  /// drives get and the audit measures); false until two consecutive transformed cycles ran.
+  bool joint_differences(const Cycle& c, const JointSetpoint& s, JointSetpoint& out) const noexcept;
   std::optional<ConveyorSync> sync_;           ///< --- conveyor-sync: with FCT_DLM only
   conveyor::Port* port_ = nullptr;             ///< the attached conveyor world (reduced filter)
   double measured_value_wait_max_ = 600.0;     ///< ChannelConfig::measured_value_wait_max [s]

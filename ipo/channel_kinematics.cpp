@@ -64,6 +64,10 @@ bool Channel::map_joints(const Cycle& c) noexcept {
     return false;
   }
   if (sync_ && (sync_->driving() || sync_->moving_frame())) trafo_sync_check(c, s);
+  q_known_ = c.index == q_index_ + 1 ? std::min(q_known_ + 1, 2) : 1;
+  q_index_ = c.index;
+  q_back2_ = q_back1_;
+  q_back1_ = s.q;
   joints_ = s;
   for (std::size_t i = 0; i < axes_.size(); ++i)
     setpoint_[i] = axes::Setpoint{s.q[i], s.v[i], s.a[i], s.j[i]};
@@ -76,7 +80,12 @@ void Channel::trafo_sync_check(const Cycle& c, const JointSetpoint& s) noexcept 
   const std::size_t n = std::min(axes_.size(), sync_->axis_count());
   for (std::size_t i = 0; i < n; ++i)
     dyn[i] = sync_->dynamics(i);
-  const auto o = joint_overrun(s, std::span(dyn.data(), n));
+  // The closed-form v and a of the joints, then their setpoints' differences: a belt that
+  // changes faster than its measured acceleration tells (a step, noise without filters) moves
+  // the PCS1 offset and with it the joints between cycles beyond what the closed form shows.
+  auto o = joint_overrun(s, std::span(dyn.data(), n));
+  JointSetpoint diff;
+  if (!o && joint_differences(c, s, diff)) o = joint_overrun(diff, std::span(dyn.data(), n));
   if (!o) return;
   const char* phase = sync_->phase() == SyncPhase::catching_up ? "the catch-up"
                       : sync_->phase() == SyncPhase::departing ? "the departure"
@@ -100,6 +109,18 @@ void Channel::trafo_sync_check(const Cycle& c, const JointSetpoint& s) noexcept 
   } catch (...) {
     std::abort();  // out of memory while reporting a warning
   }
+}
+
+bool Channel::joint_differences(const Cycle& c, const JointSetpoint& s,
+                                JointSetpoint& out) const noexcept {
+  if (q_known_ < 2 || c.index != q_index_ + 1) return false;
+  const double t = ipo_.t_cycle();
+  for (std::size_t i = 0; i < axes_.size(); ++i) {
+    out.q[i] = s.q[i];
+    out.v[i] = (s.q[i] - q_back1_[i]) / t;
+    out.a[i] = (s.q[i] - 2.0 * q_back1_[i] + q_back2_[i]) / (t * t);
+  }
+  return true;
 }
 
 bool Channel::trafo_sync_motion(bool catch_up, std::span<const axes::MotionState> start,

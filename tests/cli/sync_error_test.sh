@@ -48,4 +48,29 @@ expect "time: P-ERR-44009 at the retriggering MC_TouchProbe, its time to the us"
   'probe_retriggered\.nc:9:1: error: run-time error at t=10\.33[78] s: MC_TouchProbe retriggered .*\[P-ERR-44009\]' \
   -- time "$root/programs/probe_retriggered/probe_retriggered.nc"
 
+# NC6210 (seed 004 l.454, l.609: the joint dynamics are not ensured under #TRAFO ON): a belt
+# the program cannot foresee, an encoder belt stepping 300 <-> 328 mm/s every 50 ms without
+# filters, under pick_and_place_50's picks. The drives get joint setpoints whose acceleration
+# (their finite differences, as the audit measures) is far above max(A+, A-): the channel warns
+# at the first such cycle, the run goes on, the audit lists every overrun and exits 3.
+mkdir -p "$work/delta_enc"
+cp "$root"/machines/delta_picker/*.lis "$work/delta_enc/"
+cp "$root/machines/delta_picker_belt/channel.lis" "$work/delta_enc/"
+sed -i -e 's/^kenngr.messachse .*/&\nkenngr.achs_mode 0x00100001/' \
+  -e 's/^conv_sync.enable_filter .*/conv_sync.enable_filter 0/' "$work/delta_enc/s1.lis"
+grep -v MC_MoveVelocity "$root/programs/pick_and_place_50/pick_and_place_50.nc" >"$work/steps.nc"
+{
+  printf 'description = "an encoder belt stepping 300 <-> 328 mm/s every 50 ms"\n'
+  printf '[conveyor]\nmode = "encoder"\nvelocity = 300\nprofile = [\n'
+  awk 'BEGIN { for (k = 0; k < 40; ++k) printf "  { at = %.2f, velocity = %d },\n", 0.3 + 0.05 * k, k % 2 ? 300 : 328 }'
+  printf ']\n[conveyor.sensor]\nkind = "light_barrier"\n'
+  printf '[conveyor.workpieces]\nfirst = 100\npitch = 400\ncount = 2\nlength = 200\n'
+  printf '[stop]\nline = 34\npasses = 1\n'
+} >"$work/steps.toml"
+expect "time: NC6210 when a belt step drives a joint's acceleration beyond max(A+, A-); the run goes on" 0 '' \
+  'steps\.nc:[0-9]+:1: warning: at t=[0-9.]+ s: joint [XYZ]: \|a\| [0-9.e+]+ above its 20000 \(P-AXIS-00008\) in (the catch-up|synchronised motion|the departure) under #TRAFO ON.*\[NC6210\]' \
+  -- time --machine "$work/delta_enc" --scenario "$work/steps.toml" "$work/steps.nc"
+expect "time --audit: the same run lists the overruns and exits 3" 3 'audit: [0-9]+ violations' '\[NC6210\]' \
+  -- time --audit --machine "$work/delta_enc" --scenario "$work/steps.toml" "$work/steps.nc"
+
 summary sync_error
