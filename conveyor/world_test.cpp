@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "conveyor/test_world.hpp"
@@ -209,6 +210,25 @@ TEST_CASE(
   const auto latch = w.take_latch();
   REQUIRE(latch);
   CHECK(*latch == doctest::Approx(75.0).epsilon(1e-12));
+}
+
+TEST_CASE(
+    "MC_TouchProbe without Mode takes the edge of P-AXIS-00518 kenngr.measure.edge: NEG "
+    "latches the rear edge, POS the front edge") {
+  auto m = test::machine(true);
+  auto s = test::belt(ConveyorMode::encoder, 300.0);
+  s.conveyor->workpieces = {at_travel(30.0, 45.0)};  // front edge at 30 mm, rear edge at 75 mm
+  for (const char* edge : {"NEG", "POS"}) {
+    CAPTURE(edge);
+    m.axes[1].measure_edge = edge;
+    World w(m, &s, kT);
+    w.arm_probe(arm(1));  // no Mode
+    int k = 0;
+    run(w, k, 0.5);
+    const auto latch = w.take_latch();
+    REQUIRE(latch);
+    CHECK(*latch == doctest::Approx(std::string(edge) == "NEG" ? 75.0 : 30.0).epsilon(1e-12));
+  }
 }
 
 TEST_CASE("a camera gives both edges at the front edge") {
