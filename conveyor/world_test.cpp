@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "conveyor/test_world.hpp"
@@ -79,6 +80,32 @@ TEST_CASE("encoder noise is seeded: the same seed repeats, another differs, sigm
   const double sd = std::sqrt(sq / static_cast<double>(a.size()) - mean * mean);
   CHECK(std::abs(mean) < 0.0005);  // 5 standard errors of 10 um / sqrt(20000)
   CHECK(sd == doctest::Approx(0.01).epsilon(0.03));
+}
+
+TEST_CASE(
+    "10 um encoder noise: the raw velocity passes 50653's 1.1 x CONV_VEL, the filtered master "
+    "velocity (P-AXIS-00620 on, FIR 20) does not") {
+  auto m = test::machine(true);
+  m.axes[1].conveyor->enable_filter = true;  // P-AXIS-00623 at its default 20
+  auto s = test::belt(ConveyorMode::encoder, 300.0);
+  s.conveyor->noise = scenario::BeltNoise{0.01, 7};
+  World w(m, &s, kT);
+  // CONV_VEL 290 mm/s: 50653's limit 1.1 x 290 = 319 mm/s lies 19 mm/s above the belt, 1.34
+  // standard deviations of the raw quotient (sqrt(2) x 10 um / 1 ms = 14.1 mm/s; about 9 % of
+  // the cycles above it) and 47 of the filtered velocity's 0.40 mm/s (filter_test).
+  const double limit = 1.1 * 290.0;
+  int k = 0;
+  run(w, k, 0.1);  // the filters' histories filled
+  constexpr int kCycles = 20000;
+  int raw_over = 0, master_over = 0;
+  for (int i = 0; i < kCycles; ++i) {
+    w.step(++k * kT);
+    if (std::fabs(w.measured().v) > limit) ++raw_over;
+    if (std::fabs(w.master().v) > limit) ++master_over;
+  }
+  CAPTURE(raw_over);
+  CHECK(raw_over > kCycles / 20);
+  CHECK(master_over == 0);
 }
 
 TEST_CASE(
@@ -209,6 +236,25 @@ TEST_CASE(
   const auto latch = w.take_latch();
   REQUIRE(latch);
   CHECK(*latch == doctest::Approx(75.0).epsilon(1e-12));
+}
+
+TEST_CASE(
+    "MC_TouchProbe without Mode takes the edge of P-AXIS-00518 kenngr.measure.edge: NEG "
+    "latches the rear edge, POS the front edge") {
+  auto m = test::machine(true);
+  auto s = test::belt(ConveyorMode::encoder, 300.0);
+  s.conveyor->workpieces = {at_travel(30.0, 45.0)};  // front edge at 30 mm, rear edge at 75 mm
+  for (const char* edge : {"NEG", "POS"}) {
+    CAPTURE(edge);
+    m.axes[1].measure_edge = edge;
+    World w(m, &s, kT);
+    w.arm_probe(arm(1));  // no Mode
+    int k = 0;
+    run(w, k, 0.5);
+    const auto latch = w.take_latch();
+    REQUIRE(latch);
+    CHECK(*latch == doctest::Approx(std::string(edge) == "NEG" ? 75.0 : 30.0).epsilon(1e-12));
+  }
 }
 
 TEST_CASE("a camera gives both edges at the front edge") {

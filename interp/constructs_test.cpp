@@ -404,6 +404,24 @@ TEST_CASE("MC_TouchProbe arms the latch on the conveyor axis") {
   CHECK(r.lines.at(0) == "2: PROBE_ARM S channel=1");
 }
 
+TEST_CASE(
+    "MC_TouchProbe Mode=1 arms the falling edge, Mode=2 the rising one, no Mode leaves it to "
+    "P-AXIS-00518") {
+  // PROG-306968203: Mode 1 falling edge, Mode 2 rising edge.
+  const auto edge_of = [](const std::string& item) -> std::optional<ProbeEdge> {
+    const Commands c =
+        commands("%t\nS1[MC_TouchProbe Channel=1" + item + "]\nM30\n", "laser_portal");
+    REQUIRE_FALSE(c.items.empty());
+    const auto* arm = std::get_if<ProbeArm>(&c.items.front().body);
+    REQUIRE(arm != nullptr);
+    return arm->edge;
+  };
+  CHECK(edge_of(" Mode=1") == ProbeEdge::falling);
+  CHECK(edge_of(" Mode=2") == ProbeEdge::rising);
+  CHECK(edge_of("") == std::nullopt);
+  CHECK(run("%t\nS1[MC_TouchProbe Channel=1 Mode=3]\nM30\n", "laser_portal").error_id == "NC4030");
+}
+
 TEST_CASE("INTERRUPTIBLE needs conveyor synchronisation [50603]; INDP without POS is NC4510") {
   CHECK(run("%t\nX[INDP_SYN G01 POS10 FEED600 INTERRUPTIBLE]\nM30\n").error_id == "50603");
   CHECK(run("%t\nX[INDP_SYN G01 FEED600]\nM30\n").error_id == "NC4510");

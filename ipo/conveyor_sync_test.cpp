@@ -6,6 +6,8 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -107,6 +109,56 @@ TEST_CASE("after the catch-up the tool stands still in PCS1: X follows the belt 
     CHECK(r.sync.offset(0) == doctest::Approx(r.port.master().p - 0.0));
     CHECK(r.sync.offset_v(0) == doctest::Approx(300.0));
   }
+}
+
+TEST_CASE(
+    "P-CHAN-00365 sync_in_tolerance 1 mm: synchronised is reported before the catch-up ends, "
+    "once every axis is within 1 mm of its moving target") {
+  // The first cycle reported synchronised for a tolerance [mm]; the catch-up's end as well.
+  struct First {
+    double t_sync = -1.0;
+    double t_meet = 0.0;
+  };
+  const auto first_synchronised = [](double tolerance) {
+    auto c = channel();
+    c.sync_in_tolerance = tolerance;
+    Run r(c);
+    REQUIRE_FALSE(r.sync.sync_in(sync_in(300.0)));
+    r.port.latches_.push_back(0.0);
+    REQUIRE_FALSE(r.cycle());
+    const std::array<axes::MotionState, 3> start{};
+    const std::array<double, 3> target{50.0, 40.0, -10.0};
+    REQUIRE(r.sync.start_catch_up(start, target, 0.0) == axes::Result::ok);
+    First f;
+    f.t_meet = r.sync.catch_up().duration();
+    double t = 0.0;
+    double worst_before = 0.0;  // largest distance to the target in the cycle before
+    while (r.sync.phase() == SyncPhase::catching_up && f.t_sync < 0.0) {
+      REQUIRE_FALSE(r.cycle());
+      if (r.sync.phase() != SyncPhase::catching_up) break;
+      t += kT;
+      double worst = 0.0;
+      for (std::size_t i = 0; i < 3; ++i)
+        worst = std::max(worst, std::fabs(r.sync.catch_up_setpoint(i).p -
+                                          r.sync.catch_up().target_at(i, r.sync.travel())));
+      if (r.sync.synchronised()) {
+        f.t_sync = t;
+        CHECK(worst <= tolerance + 1e-9);  // within the tolerance when reported ...
+        CHECK(worst_before > tolerance);   // ... and not a cycle earlier
+      }
+      worst_before = worst;
+      REQUIRE(t < f.t_meet + 1.0);
+    }
+    return f;
+  };
+  const First exact = first_synchronised(0.0);
+  const First tolerant = first_synchronised(1.0);
+  CAPTURE(exact.t_sync);
+  CAPTURE(tolerant.t_sync);
+  CHECK(exact.t_sync >= exact.t_meet - kT);  // 0: only at the meeting
+  CHECK(tolerant.t_meet == doctest::Approx(exact.t_meet));
+  CHECK(tolerant.t_sync > 0.0);
+  CHECK(tolerant.t_sync < tolerant.t_meet - 2.0 * kT);  // 1 mm: cycles before the meeting
 }
 
 TEST_CASE("50653 while synchronised: the belt more than 10 % above CONV_VEL") {

@@ -253,6 +253,7 @@ class FilterPort final : public conveyor::Port {
   void step(double t) noexcept override {
     belt.step(t);
     reduced_at_step.push_back(reduced);
+    t_at_step.push_back(t);
   }
   const conveyor::BeltState& actual() const noexcept override { return belt.actual(); }
   const conveyor::BeltState& measured() const noexcept override { return belt.measured(); }
@@ -267,6 +268,7 @@ class FilterPort final : public conveyor::Port {
   ipo::test::FakePort belt;
   bool reduced = false;
   std::vector<bool> reduced_at_step;
+  std::vector<double> t_at_step;  ///< [s]
 };
 
 }  // namespace
@@ -311,4 +313,50 @@ TEST_CASE("a feed hold while synchronised switches the conveyor's reduced filter
   }
   CHECK(on_tracking > 100);
   CHECK(held_off_sync > 100);
+}
+
+TEST_CASE(
+    "MCV_SetReducedFilter from the scenario reaches the Port's set_reduced_filter at the "
+    "event's time") {
+  const char* program =
+      "%t\nN10 G01 X0 Y0 Z0 F6000\nN20 #SYNC IN [CONV_VEL=18000]\nN30 G01 X100 Y50 F6000\n"
+      "N40 G01 X150 F600\nN50 #SYNC OUT\nN60 M30\n";
+  // The PLC switches the reduced filter on at 0.3 s and off at 0.6 s (docs/conveyor.md F-5).
+  const core::SourceFile toml("s.toml",
+                              "[[event]]\nat = 0.3\nreduced_filter = true\n"
+                              "[[event]]\nat = 0.6\nreduced_filter = false\n");
+  scenario::Context wired;
+  wired.conveyor_wired = true;
+  scenario::LoadResult loaded = scenario::parse_scenario(toml, wired);
+  REQUIRE(loaded.scenario);
+  const core::SourceFile file("t.nc", program);
+  const machines::Machine& m = interp::test::machine("laser_portal");
+  interp::Interpreter in(file, m);
+  ipo::ProgramSource src(in, m);
+  scenario::Player player(*loaded.scenario);
+  src.answer_barriers_from(&player.ve(), true);
+  ipo::Channel ch(ipo::channel_config(m, kT), src);
+  FilterPort port(300.0);
+  port.belt.latch_at_ = 1;
+  ch.attach_conveyor(&port);
+  ch.play(&player);
+  ipo::Status st = ipo::Status::running;
+  for (int guard = 0; guard < 100'000 && st == ipo::Status::running; ++guard)
+    st = ch.step();
+  REQUIRE(st == ipo::Status::finished);
+  REQUIRE(port.t_at_step.size() == port.reduced_at_step.size());
+  REQUIRE(port.t_at_step.back() > 1.0);
+  // The switch is handed over at the start of a cycle and the Port is stepped later in it: the
+  // Port sees it from the step after the event's time on (one cycle of slack each side).
+  std::size_t on = 0;
+  for (std::size_t i = 0; i < port.t_at_step.size(); ++i) {
+    const double t = port.t_at_step[i];
+    CAPTURE(t);
+    if (t < 0.3 - 1e-9 || t > 0.6 + 2.0 * kT + 1e-9) CHECK_FALSE(port.reduced_at_step[i]);
+    if (t > 0.3 + 2.0 * kT + 1e-9 && t < 0.6 - 1e-9) {
+      CHECK(port.reduced_at_step[i]);
+      ++on;
+    }
+  }
+  CHECK(on > 290);
 }

@@ -106,6 +106,26 @@ TEST_CASE("an axis list without dynamics gets the TF5200 defaults, converted") {
   CHECK(kDefaultKv == 10.0);
 }
 
+TEST_CASE(
+    "conveyor lists without filter keys or P-CHAN-00366 get the defaults 0 / 20 / 10 / 6 and "
+    "1000") {
+  // machines/testdata/base names none of P-AXIS-00620, 00623, 00625, 00624 (s.lis) nor
+  // P-CHAN-00366 (channel.lis): 004 section 5.2 gives their defaults.
+  const LoadResult r = load_machine(source_root() / "machines" / "testdata" / "base");
+  INFO(all_diagnostics(r));
+  REQUIRE(r.machine.has_value());
+  const AxisParams* s = r.machine->find_axis("S");
+  REQUIRE(s != nullptr);
+  REQUIRE(s->conveyor.has_value());
+  CHECK_FALSE(s->conveyor->enable_filter);       // P-AXIS-00620 = 0
+  CHECK(s->conveyor->order_v_filter == 20);      // P-AXIS-00623
+  CHECK(s->conveyor->order_v_filter_dyn == 10);  // P-AXIS-00625
+  CHECK(s->conveyor->order_post_v_filter == 6);  // P-AXIS-00624
+  REQUIRE(r.machine->channel.conveyor.has_value());
+  CHECK(r.machine->channel.conveyor->hold_limit_vel_factor ==
+        doctest::Approx(1.0));  // 1000 x 0.1 %
+}
+
 TEST_CASE("an unknown key close to a known one is answered with the known key and its id") {
   const auto dir = std::filesystem::temp_directory_path() / "ncsim_machines_did_you_mean";
   std::filesystem::create_directories(dir);
