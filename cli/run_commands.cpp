@@ -148,7 +148,7 @@ std::variant<Loaded, int> load(const ProgramOptions& options,
     err << core::format(d, file);
   if (syntax.error_count() > 0) return kExitProgramErrors;
   // The channel list has no cycle key in ncsim yet: 1 ms unless --cycle-us (docs/ipo.md).
-  const double t = cycle_us ? static_cast<double>(*cycle_us) * 1e-6 : 0.001;
+  const double t = cycle_us ? static_cast<double>(*cycle_us) * 1e-6 : ipo::kDefaultCycle;
   // The conveyor world (belt, encoder, probe, filters) of a machine with a conveyor axis.
   std::unique_ptr<conveyor::Port> port;
   if (loaded.machine->conveyor_axis() != nullptr) {
@@ -330,7 +330,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
   const Loaded& in = std::get<Loaded>(loaded);
 
   interp::Interpreter interp(in.file, in.machine, in.interp);
-  ipo::ProgramSource src(interp, in.machine);
+  ipo::ProgramSource src(interp, in.machine, in.t_cycle);
   bool first_block = true;
   if (options.json) {
     out << "{\"program\":";
@@ -604,7 +604,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   }
 
   interp::Interpreter interp(in.file, in.machine, in.interp);
-  ipo::ProgramSource src(interp, in.machine);
+  ipo::ProgramSource src(interp, in.machine, in.t_cycle);
   ipo::ChannelConfig cfg = ipo::channel_config(in.machine, in.t_cycle);
   const std::vector<std::string> names = axis_names(in.machine);
   CsvSink csv(f, names.size(), options.every, options.detail);
@@ -777,7 +777,7 @@ LineOutcome run_line(const ProgramOptions& program, std::optional<std::uint64_t>
   }
   if (run.wrap && in.port) in.port = run.wrap(std::move(in.port));
   interp::Interpreter interp(in.file, in.machine, in.interp);
-  ipo::ProgramSource src(interp, in.machine);
+  ipo::ProgramSource src(interp, in.machine, in.t_cycle);
   ipo::ChannelConfig cfg = ipo::channel_config(in.machine, in.t_cycle);
   std::unique_ptr<ipo::Audit> audit;
   if (run.audit) {

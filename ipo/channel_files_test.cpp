@@ -5,6 +5,9 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <iterator>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +18,7 @@
 #include "ipo/channel_test_support.hpp"
 #include "ipo/program_source.hpp"
 #include "ipo/time.hpp"
+#include "ipo/trafo_test_support.hpp"
 #include "scenario/loader.hpp"
 #include "scenario/player.hpp"
 
@@ -111,4 +115,79 @@ TEST_CASE(
   CHECK(player.passes(5) == 1);
   CHECK_FALSE(player.ve().read("HIT"));
   CHECK(player.ve().read("MAIN") == 1.0);
+}
+
+namespace {
+
+struct Adapted {
+  std::vector<planner::Move> moves;
+  std::optional<core::Diagnostic> error;
+  std::string main_file;  // in.file_name(0)
+  std::string error_file;
+};
+
+// The adapter's items of program `name` (ipo/testdata) on machine `m`, without a channel.
+Adapted adapt(const char* name, const machines::Machine& m) {
+  const core::SourceFile file =
+      core::SourceFile::load(interp::test::source_root() / "ipo/testdata" / name);
+  interp::Interpreter in(file, m);
+  ipo::ProgramSource src(in, m);
+  Adapted a;
+  ipo::Item item;
+  while (src.next(item))
+    if (const auto* mv = std::get_if<planner::Move>(&item)) a.moves.push_back(*mv);
+  if (const core::Diagnostic* e = src.error()) a.error = *e;
+  a.main_file = in.file_name(0);
+  return a;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "a PCS1 block held for its tolerance ball keeps its own file when the next block is in a "
+    "subroutine file") {
+  // --- conveyor-tail: under #TRAFO ON the adapter holds a PCS1 block that ends in a ball
+  // (ProgramSource::ball_held_) until the next Motion is read; here that Motion is line 2 of
+  // held_ball_trafo_sub.nc, called by `L` after main line 10 (N60 G261 G01). Before, the held
+  // block went out with the file of the command read last: N60 was named in the subroutine
+  // file (diagnostics, `run`'s CSV, `time --blocks`).
+  const Adapted a = adapt("held_ball_trafo.nc", ipo::test::picker());
+  REQUIRE_FALSE(a.error);
+  const auto n60 = std::find_if(a.moves.begin(), a.moves.end(),
+                                [](const planner::Move& mv) { return mv.line == 10; });
+  REQUIRE(n60 != a.moves.end());
+  CHECK(n60->belt_joints);  // held: it carries the ball's share (it is a transformed PCS1 block)
+  CHECK(n60->file == 0);
+  REQUIRE(std::next(n60) != a.moves.end());
+  CHECK(std::next(n60)->line == 2);
+  CHECK(std::next(n60)->file != 0);
+}
+
+TEST_CASE(
+    "a static unit's part held for its tolerance ball keeps its own file, in its items and "
+    "in NC9100") {
+  // --- conveyor-tail: on a static unit (x_virtual) the last part of a block that ends in a
+  // ball waits for the next path part (ProgramSource::xv_held_), here line 2 of
+  // held_ball_static_sub.nc after main line 5 (N40 G261 G01 X-100 Y-100).
+  const machines::Machine& m = interp::test::machine("static_saw");
+  SUBCASE("the held part's Move") {
+    const Adapted a = adapt("held_ball_static.nc", m);
+    REQUIRE_FALSE(a.error);
+    std::size_t n40 = 0;
+    for (const planner::Move& mv : a.moves) {
+      CAPTURE(mv.line);
+      if (mv.line == 5) ++n40;
+      CHECK(mv.file == (mv.line == 2 ? a.moves.back().file : 0));
+    }
+    CHECK(n40 > 0);
+    CHECK(a.moves.back().line == 2);
+    CHECK(a.moves.back().file != 0);
+  }
+  SUBCASE("NC9100 of its ball (CONV_VEL 300 mm/s, a 2 mm ball) names the main program") {
+    const Adapted a = adapt("held_ball_static_fast.nc", m);
+    REQUIRE(a.error);
+    CHECK(a.error->id == "NC9100");
+    CHECK(a.error->loc.line == 5);
+    CHECK(a.error->file == a.main_file);
+  }
 }

@@ -35,12 +35,13 @@ struct StaticRun {
 };
 
 // static_saw (the band saw of 004 §4.10), a belt at `belt` mm/s without noise or dead time,
-// audited on the setpoints as `ncsim time --audit` does.
-StaticRun run(const std::string& program, double belt) {
+// audited on the setpoints as `ncsim time --audit` does; the channel and the adapter at cycle
+// `t_cycle` [s].
+StaticRun run(const std::string& program, double belt, double t_cycle = kT) {
   const machines::Machine& m = interp::test::machine("static_saw");
   ipo::test::FakePort port(belt);
   port.latch_at_ = 1;
-  ipo::test::AuditedConveyorRig audited(program, m, ipo::channel_config(m, kT), &port);
+  ipo::test::AuditedConveyorRig audited(program, m, ipo::channel_config(m, t_cycle), &port);
   const ipo::test::ConveyorRig& rig = audited.rig;
   StaticRun r;
   r.status = ipo::test::run_to_end(
@@ -184,6 +185,37 @@ TEST_CASE("x_virtual: a C1 joint the planner passes below the belt's X velocity 
   CHECK(r.source_line == 4);
   CHECK(r.source_message.find("466.69") != std::string::npos);
   CHECK(r.source_message.find("axis Y's jerk (the C1 rule") != std::string::npos);
+}
+
+TEST_CASE("x_virtual: the C1 joint check uses the run's cycle (a shorter one lowers the link)") {
+  // The C1 rule's link sqrt(j_Y T / |dx''_Y|) falls with the cycle T: 291 mm/s at the first joint
+  // at 1 ms, 291 / sqrt(2) = 206 mm/s at 0.5 ms. CONV_VEL 150 mm/s needs 1.1 x 150 / 0.707 =
+  // 233.3 mm/s there: it passes at 1 ms (the test above) and is NC9100 at 0.5 ms. Before, the
+  // adapter checked at 1 ms whatever the channel's cycle (it did not know --cycle-us): at
+  // 0.5 ms the joint passed the check and the planner's link slowed the path below the belt.
+  const StaticRun at_1ms = run(c1_program("9000"), 150.0, 0.001);
+  CHECK(at_1ms.source_error.empty());
+  const StaticRun at_05ms = run(c1_program("9000"), 150.0, 0.0005);
+  CHECK(at_05ms.source_error == "NC9100");
+  CHECK(at_05ms.source_line == 4);
+  CHECK(at_05ms.source_message.find("233.345") != std::string::npos);
+  CHECK(at_05ms.source_message.find("axis Y's jerk (the C1 rule") != std::string::npos);
+}
+
+TEST_CASE("x_virtual: a part released early by a command that keeps the path running is joined") {
+  // --- conveyor-tail: N30 ends in a G261 ball that the tangent joint does not get (nothing to
+  // blend), so the part is held for it; #FLUSH, which does not stop the path, lets it out as it
+  // is. The joint N30 -> N40 is the C1 joint of the test above (466.69 mm/s needed, 291
+  // allowed). Before, the released part was not remembered for joint_belt_check: the joint
+  // went unchecked and the first error was the next joint's (N40 -> N50, at line 6).
+  const std::string program =
+      "%t\nN10 #SYNC IN [CONV_VEL=18000]\nN20 G01 X0 Y0 F100\nN30 G261 G01 X-100 Y-100\n"
+      "N35 #FLUSH\nN40 G02 X-312.132034 Y-187.867966 I-212.132034 J212.132034\n"
+      "N50 G01 X-500 Y-187.867966\nN60 #SYNC OUT\nN70 M30\n";
+  const StaticRun r = run(program, 100.0);
+  CHECK(r.source_error == "NC9100");
+  CHECK(r.source_line == 4);
+  CHECK(r.source_message.find("466.69") != std::string::npos);
 }
 
 TEST_CASE(

@@ -86,7 +86,10 @@ struct ConveyorRig {
   Channel ch;
   ConveyorRig(const std::string& text, const machines::Machine& m, ChannelConfig config,
               conveyor::Port* port, Sink* sink = nullptr)
-      : file("t.nc", text), in(file, m), src(in, m), ch(std::move(config), src, sink) {
+      : file("t.nc", text),
+        in(file, m),
+        src(in, m, config.path.channel.t_cycle),
+        ch(std::move(config), src, sink) {
     ch.attach_conveyor(port);
   }
 };

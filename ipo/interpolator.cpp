@@ -16,6 +16,15 @@ namespace {
 
 /// Moves shorter than this carry no path (planner/prepare.cpp drops them with the same rule).
 constexpr double kMinLength = 1e-9;  // [mm]
+
+/// --- conveyor-tail: a PCS1 block planned with the belt's share taken off its limits: the
+/// velocity split of the axes (Move::belt, S-5) or the joints' shares under #TRAFO ON
+/// (Move::belt_joints). Raised above 100 % with the axes' own limits, the belt would come on top
+/// (docs/conveyor.md "Machining in PCS1", "An override above 100 %").
+bool belt_capped(const planner::Move& m) noexcept {
+  return m.belt_joints != nullptr ||
+         std::any_of(m.belt.begin(), m.belt.end(), [](double v) { return v > 0.0; });
+}
 /// Items pulled in one fill() at most: a source of endless zero-length blocks cannot hang a
 /// cycle (the cycle is reported as Activity::starved).
 constexpr std::size_t kMaxPulls = 4096;
@@ -549,8 +558,9 @@ bool PathInterpolator::replan(double f, double s, double v, double a) noexcept {
       // --- trafo-conveyor: under #TRAFO ON the joints' G00 rule (ipo/override_trafo.cpp)
       const planner::Move& prog = programmed(cur_.segment.path.line_at(0.0));
       // --- trafo-pcs1: a PCS1 block under #TRAFO ON keeps its 100 % plan: the belt's shares
-      // of its joints were taken at its capped F (docs/conveyor.md "Machining in PCS1").
-      if (prog.belt_joints)
+      // of its joints were taken at its capped F (docs/conveyor.md "Machining in PCS1");
+      // --- conveyor-tail: so does one whose axes' velocity the belt shares (the split).
+      if (belt_capped(prog))
         raised_ = RaisedLimits{lim.v_max, cur_.a_max, cur_.d_max, cur_.j_max};
       else
         raised_ = joints_ && prog.transformed ? raised_limits_joints(cur_, *joints_)

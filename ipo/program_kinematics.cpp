@@ -33,19 +33,13 @@
 namespace ncsim::ipo {
 
 void ProgramSource::fail_with(std::uint32_t line, const std::string& id, const std::string& what) {
-  core::Diagnostic d;
-  d.file = interp_.file_name(file_);
-  d.loc = {line, 1};
-  d.id = id;
-  d.message = what;
-  error_ = d;
-  throw Stop{};
+  fail_in(file_, line, id, what);
 }
 
 bool ProgramSource::kinematics(const interp::Kinematics& k, std::uint32_t line, Item& out) {
   if (k.trafo_on == trafo_on_) return false;  // #KIN ID alone, or no change
   if (k.trafo_on) {
-    if (!trafo_) trafo_ = machine_trafo(machine_, machine_config(machine_, 0.001));
+    if (!trafo_) trafo_ = machine_trafo(machine_, machine_config(machine_, t_cycle_));
     if (!trafo_)
       fail(line, "#TRAFO ON: machine '" + machine_.name + "' has no kinematic ncsim can build");
     if (k.kin_id && *k.kin_id != trafo_->kin_id)
@@ -107,7 +101,7 @@ bool ProgramSource::belt_carry(BeltCarry& carry) const {
 }
 
 BeltShare ProgramSource::belt_share_at(const planner::Segment& path, double feed,
-                                       std::uint32_t line,
+                                       const planner::Move& at,
                                        std::span<const planner::AxisLimits> joints) {
   BeltCarry carry;
   belt_carry(carry);
@@ -126,7 +120,7 @@ BeltShare ProgramSource::belt_share_at(const planner::Segment& path, double feed
                   carry.v_belt, over->quantity == 'v' ? "alone needs" : "takes", over->needed,
                   machine_.axes[axes_[over->joint]].name.c_str(), limit, over->tcp[0], over->tcp[1],
                   over->tcp[2], over->shift);
-    fail_with(line, "NC6211", text);
+    fail_in(at.file, at.line, "NC6211", text);
   }
   return std::get<BeltShare>(share);
 }
@@ -139,7 +133,7 @@ bool any_taken(const planner::AxisVec& x) {
 
 }  // namespace
 
-void ProgramSource::reserve_belt_share(planner::Move& move, std::uint32_t line) {
+void ProgramSource::reserve_belt_share(planner::Move& move) {
   BeltCarry carry;
   if (!belt_carry(carry)) return;
   // --- trafo-pcs1: G00 runs each joint at its rapid rule (000 l.360: MIN(rapid, reference,
@@ -160,7 +154,7 @@ void ProgramSource::reserve_belt_share(planner::Move& move, std::uint32_t line) 
   double feed = move.rapid ? std::numeric_limits<double>::infinity() : move.feed;
   if (move.block_time && *move.block_time > 0.0) feed = path.length() / *move.block_time;
   const BeltShare s =
-      belt_share_at(path, feed, line,
+      belt_share_at(path, feed, move,
                     move.rapid ? std::span<const planner::AxisLimits>(rapid)
                                : std::span<const planner::AxisLimits>(trafo_->limits.joints));
   if (move.block_time) {
@@ -196,7 +190,7 @@ void ProgramSource::reserve_ball_share(planner::Move& in, const planner::Move& o
   // the limits of the block before it (in's Move): the ball's share goes into in's.
   double feed = in.feed;
   if (!out.rapid && !out.block_time) feed = std::min(feed, out.feed);
-  const BeltShare s = belt_share_at(ball->curve, feed, in.line, trafo_->limits.joints);
+  const BeltShare s = belt_share_at(ball->curve, feed, in, trafo_->limits.joints);
   planner::JointShare joints = in.belt_joints ? *in.belt_joints : planner::JointShare{};
   for (std::size_t i = 0; i < planner::kMaxAxes; ++i) {
     joints.a[i] = std::max(joints.a[i], s.joints.a[i]);

@@ -1,6 +1,7 @@
 #include "ipo/program_source.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <type_traits>
 #include <variant>
@@ -106,12 +107,17 @@ Config machine_config(const machines::Machine& machine, double t_cycle) {
   return c;
 }
 
-ProgramSource::ProgramSource(interp::Interpreter& interp, const machines::Machine& machine)
+ProgramSource::ProgramSource(interp::Interpreter& interp, const machines::Machine& machine,
+                             double t_cycle)
     : interp_(interp),
       machine_(machine),
+      t_cycle_(t_cycle),
       axes_(interpolated_axes(machine)),
       slot_(machine.axes.size(), -1),
       cs_(machine.channel.cs_rotation_sequence) {
+  if (!(t_cycle > 0.0) || !std::isfinite(t_cycle))
+    throw std::invalid_argument("ipo::ProgramSource: cycle must be > 0 s, got " +
+                                std::to_string(t_cycle));
   if (axes_.empty() || axes_.size() > planner::kMaxAxes) {
     throw std::invalid_argument(
         "machine '" + machine.name + "' has " + std::to_string(axes_.size()) +
@@ -130,11 +136,16 @@ ProgramSource::ProgramSource(interp::Interpreter& interp, const machines::Machin
 }
 
 void ProgramSource::fail(std::uint32_t line, const std::string& what) {
+  fail_in(file_, line, kNotSupportedId, "not supported: " + what);
+}
+
+void ProgramSource::fail_in(std::uint16_t file, std::uint32_t line, const std::string& id,
+                            const std::string& what) {
   core::Diagnostic d;
-  d.file = interp_.file_name(file_);
+  d.file = interp_.file_name(file);
   d.loc = {line, 1};
-  d.id = kNotSupportedId;
-  d.message = "not supported: " + what;
+  d.id = id;
+  d.message = what;
   error_ = d;
   throw Stop{};
 }
@@ -158,12 +169,13 @@ planner::Move ProgramSource::to_move(const interp::Motion& m, std::uint32_t line
   if (m.arc) arc_to_mcs(m, line, mv);
   set_modal(m.modal, mv, line);
   mv.line = line;
+  mv.file = file_;  // a block held for its ball goes out after later commands: it keeps its own
   if (mv.transformed) check_workspace(mv, line);  // --- trafo
   if (m.frame.space == interp::Space::pcs1) {
     // The belt's share: under #TRAFO ON reserved on the joints (trafo), else the PCS1
     // velocity split on the axes (sync-feed, docs/conveyor.md S-5).
     if (mv.transformed)
-      reserve_belt_share(mv, line);
+      reserve_belt_share(mv);
     else
       mv.belt = belt_;
   }
@@ -191,10 +203,21 @@ bool ProgramSource::next(Item& out) {
   if (error_) return false;
   try {
     if (!pull(out)) return false;
-    // --- planner: every item names the file of its line. Items go out before the next command
-    // is pulled (queued items are the last command's; the INDP_SYN wait leaves before the
-    // command after it is taken), so file_ is theirs.
-    std::visit([this](auto& item) { item.file = file_; }, out);
+    // --- planner: every item names the file of its line. Items other than queued ones and
+    // Moves go out before the next command is pulled (the INDP_SYN wait leaves before the
+    // command after it is taken), so file_ is theirs. --- conveyor-tail: Moves and queued items
+    // carry their own (to_move, queue_pieces, emit_path): a block held for its tolerance ball
+    // (ball_held_, xv_held_) goes out after the next command was read, maybe in another file.
+    // --- conveyor-tail: a Dwell or a ChannelWait stops the path: the static unit's last part
+    // meets no next part there (emit_path's joint check).
+    if (!std::holds_alternative<planner::Move>(out)) xv_last_.reset();
+    if (!out_queued_)
+      std::visit(
+          [this](auto& item) {
+            if constexpr (!std::is_same_v<std::decay_t<decltype(item)>, planner::Move>)
+              item.file = file_;
+          },
+          out);
     return true;
   } catch (const Stop&) {
     return false;  // error_ is set: the stream ends after the blocks before the faulty one
@@ -217,11 +240,13 @@ bool ProgramSource::take_event(std::uint32_t up_to, ChannelEvent& out) {
 }
 
 bool ProgramSource::pull(Item& out) {
+  out_queued_ = false;
   if (end_reached_) return false;
   for (;;) {
     if (!queue_.empty()) {  // queued items first: they come before the next command
       out = std::move(queue_.front());
       queue_.pop_front();
+      out_queued_ = true;
       return true;
     }
     if (held_error_) {  // --- trafo-pcs1: the error after the held block (above)
@@ -260,6 +285,9 @@ bool ProgramSource::pull(Item& out) {
                                   std::holds_alternative<interp::CaxTrack>(cmd->body));
       if (!passes && (!cmd || !std::holds_alternative<interp::Motion>(cmd->body))) {
         if (cmd) held_ = std::move(cmd);
+        // --- conveyor-tail: its joint with the next part is checked (joint_belt_check) unless
+        // the path stops between them (next() forgets it at a Dwell or a ChannelWait).
+        xv_last_ = *xv_held_;
         out = std::move(*xv_held_);
         xv_held_.reset();
         return true;

@@ -63,11 +63,17 @@ std::vector<std::uint8_t> interpolated_axes(const machines::Machine& machine);
 /// is 1 ms).
 Config machine_config(const machines::Machine& machine, double t_cycle);
 
+/// The CLI's interpolation cycle when `--cycle-us` is not given [s].
+inline constexpr double kDefaultCycle = 0.001;
+
 class ProgramSource final : public Source {
  public:
-  /// `interp` and `machine` must outlive the source. Throws std::invalid_argument when the
-  /// machine has no interpolated axis.
-  ProgramSource(interp::Interpreter& interp, const machines::Machine& machine);
+  /// `interp` and `machine` must outlive the source. `t_cycle` [s] is the interpolation cycle the
+  /// run's channel steps with: the static unit's joint check (joint_belt_check) asks the planner's
+  /// link rules at it. Throws std::invalid_argument when the machine has no interpolated axis or
+  /// `t_cycle` is not > 0.
+  ProgramSource(interp::Interpreter& interp, const machines::Machine& machine,
+                double t_cycle = kDefaultCycle);
 
   /// The next Move, Dwell or ChannelWait; false at End or at a program error (error() then
   /// holds it).
@@ -109,6 +115,10 @@ class ProgramSource final : public Source {
   /// --- planner: keeps indp_running_ current for an event queued.
   void note_indp(const interp::CommandBody& body) noexcept;
   [[noreturn]] void fail(std::uint32_t line, const std::string& what);
+  /// --- conveyor-tail: the program error `id` at `line` of source file `file` (a Move's own,
+  /// which may be older than file_: a block held for its tolerance ball).
+  [[noreturn]] void fail_in(std::uint16_t file, std::uint32_t line, const std::string& id,
+                            const std::string& what);
   planner::Move to_move(const interp::Motion& m, std::uint32_t line);
   /// The modal fields of a Move from the block's snapshot (transition, contour, slope, ...).
   void set_modal(const interp::ModalSnapshot& s, planner::Move& mv, std::uint32_t line);
@@ -133,6 +143,7 @@ class ProgramSource final : public Source {
 
   interp::Interpreter& interp_;
   const machines::Machine& machine_;
+  double t_cycle_;                  ///< the run's interpolation cycle [s]
   std::vector<std::uint8_t> axes_;  ///< interpolated machine indices
   std::vector<int> slot_;           ///< machine index -> interpolated index, -1: not interpolated
   planner::AxisMask path_axes_ = 0;
@@ -151,6 +162,8 @@ class ProgramSource final : public Source {
   /// Items of the last command not yet handed out (spline pieces, #CAXTRACK turn blocks, the
   /// static unit's parts: emit_path()); empty before each command is pulled.
   std::deque<Item> queue_;
+  /// --- conveyor-tail: pull() handed out a queued item (it carries its own file, next()).
+  bool out_queued_ = false;
   // Run-time barrier answers (answer_barriers_from).
   scenario::VeStore* store_ = nullptr;
   bool flush_ = false;
@@ -181,13 +194,13 @@ class ProgramSource final : public Source {
   /// Move::feed for planner::path_limits), the a and j shares in Move::belt_joints
   /// (ipo::belt_share, docs/conveyor.md "Machining in PCS1"); NC6211 when the belt alone needs a
   /// joint's V or its share with the path at rest leaves a joint less than 1 % of its A or J.
-  void reserve_belt_share(planner::Move& move, std::uint32_t line);
+  void reserve_belt_share(planner::Move& move);
   /// The belt's carry for belt_share (1.1 x CONV_VEL, the conveying direction, the conveyor
   /// workspace); false without a kinematic, a conveyor or a CONV_VEL.
   bool belt_carry(BeltCarry& carry) const;
   /// ipo::belt_share of `path` at `feed` under the carry with the joints' limits `joints`; an
-  /// overload is NC6211 at `line`.
-  BeltShare belt_share_at(const planner::Segment& path, double feed, std::uint32_t line,
+  /// overload is NC6211 at block `at` (its line and file).
+  BeltShare belt_share_at(const planner::Segment& path, double feed, const planner::Move& at,
                           std::span<const planner::AxisLimits> joints);
   // --- trafo-pcs1: the tolerance ball between two PCS1 blocks (docs/conveyor.md "Machining in
   // PCS1"): a transformed PCS1 block that ends in a ball (G61 / G261) is held (ball_held_)

@@ -56,12 +56,13 @@ void ProgramSource::queue_pieces(std::span<const planner::SplinePiece> pieces) {
   // at most 4 pieces (SplineBuilder::finish()), each of which emit_path() may split.
   for (const planner::SplinePiece& piece : pieces) {
     planner::Move mv = planner::spline_move(piece, spline_modal_);
+    mv.file = file_;  // --- conveyor-tail: Moves carry their file (next())
     // A piece in PCS1 runs with the belt on top as a line does (ProgramSource::to_move): under
     // #TRAFO ON belt_share samples the piece's curve (docs/conveyor.md "Machining in PCS1"),
     // else the axes get the PCS1 velocity split (S-5).
     if (spline_pcs1_) {
       if (mv.transformed)
-        reserve_belt_share(mv, mv.line);
+        reserve_belt_share(mv);
       else
         mv.belt = belt_;
     }

@@ -90,9 +90,9 @@ void ProgramSource::static_sync(const interp::CommandBody& body) {
   const auto* in = std::get_if<interp::SyncIn>(&body);
   if (in == nullptr) return;
   if (xv_limits_.empty()) {
-    // The planner's limits at the CLI's default cycle of 1 ms (the adapter does not know
-    // --cycle-us; the cycle enters only the joints' link velocity, joint_belt_check).
-    const Config config = machine_config(machine_, 0.001);
+    // The planner's limits at the run's cycle (it enters only the joints' link velocity,
+    // joint_belt_check: the C1 rule's sqrt(j T / |dx''|)).
+    const Config config = machine_config(machine_, t_cycle_);
     xv_limits_ = config.axes;
     xv_channel_ = config.channel;
     for (const std::uint8_t a : axes_)
@@ -130,14 +130,16 @@ void ProgramSource::emit_path(planner::Move mv) {
       c_hold_.reset();
     }
     CaxOutcome o = cax_->tracker->track(mv);
-    if (!o.error.empty()) fail(mv.line, o.error);
+    if (!o.error.empty()) fail_in(mv.file, mv.line, kNotSupportedId, "not supported: " + o.error);
     if (o.turned) {
       if (xv_)
-        fail_with(mv.line, kXvStopId,
-                  "x_virtual: the tangent turns by " + number(o.joint_turn) +
-                      " deg > ANGLIMIT here: #CAXTRACK would stop the path on the moving belt to "
-                      "turn the axis (004 l.441-443: the contour must be C2)");
-      queue_.push_back(Dwell{0.0, mv.line, 0});  // the path stops before the turn block
+        fail_in(mv.file, mv.line, kXvStopId,
+                "x_virtual: the tangent turns by " + number(o.joint_turn) +
+                    " deg > ANGLIMIT here: #CAXTRACK would stop the path on the moving belt to "
+                    "turn the axis (004 l.441-443: the contour must be C2)");
+      Dwell stop{0.0, mv.line, 0};  // the path stops before the turn block
+      stop.file = mv.file;
+      queue_.push_back(stop);
     }
     moves = std::move(o.moves);
   } else {
@@ -162,26 +164,27 @@ void ProgramSource::emit_path(planner::Move mv) {
     }
     if (m.arc && (m.arc_plane || m.arc->axis_1 != xv_->x ||
                   static_cast<int>(m.arc->axis_2) != slot_[static_cast<std::size_t>(xyz_[1])]))
-      fail(m.line, "G02/G03 outside the XY plane (G17) under x_virtual");
+      fail_in(m.file, m.line, kNotSupportedId,
+              "not supported: G02/G03 outside the XY plane (G17) under x_virtual");
     if (m.exact_stop || m.transition == planner::Transition::stop_at_end)
-      fail_with(m.line, kXvStopId,
-                "x_virtual: an exact stop would stop the path on the moving belt (004 l.438-440)");
+      fail_in(m.file, m.line, kXvStopId,
+              "x_virtual: an exact stop would stop the path on the moving belt (004 l.438-440)");
     const auto t = move_tangents(m, xv_->x, slot_[static_cast<std::size_t>(xyz_[1])]);
     if (t && xv_tangent_) {
       const double turn = std::fabs(unwrap_near(t->first, *xv_tangent_) - *xv_tangent_);
       if (turn > kXvCornerMax)
-        fail_with(m.line, kXvStopId,
-                  "x_virtual: the contour turns by " + number(turn) +
-                      " deg at this block's start; the path would slow down on the moving belt "
-                      "(004 l.441: the contour must be C2, e.g. a spline)");
+        fail_in(m.file, m.line, kXvStopId,
+                "x_virtual: the contour turns by " + number(turn) +
+                    " deg at this block's start; the path would slow down on the moving belt "
+                    "(004 l.441: the contour must be C2, e.g. a spline)");
     }
     XvOutcome o = belt_feed(m, *xv_, xv_limits_, xv_names_);
-    if (o.error) fail_with(m.line, o.error->id, o.error->message);
+    if (o.error) fail_in(m.file, m.line, o.error->id, o.error->message);
     for (std::size_t k = 0; k < o.moves.size(); ++k) {
       planner::Move& part = o.moves[k];
       if (xv_held_) {  // --- static-blend: the ball after the held part, raised feeds
         if (auto e = blend_belt_feed(*xv_held_, part, *xv_, xv_limits_, xv_names_))
-          fail_with(xv_held_->line, e->id, e->message);
+          fail_in(xv_held_->file, xv_held_->line, e->id, e->message);
         xv_last_ = *xv_held_;  // where the planner puts no ball, its joint is checked below
         xv_release();
       }
@@ -189,7 +192,7 @@ void ProgramSource::emit_path(planner::Move mv) {
       // must let the path pass at the belt's velocity (inner joints of a split block are C2).
       if (xv_last_)
         if (auto e = joint_belt_check(*xv_last_, part, *xv_, xv_limits_, xv_channel_, xv_names_))
-          fail_with(xv_last_->line, e->id, e->message);
+          fail_in(xv_last_->file, xv_last_->line, e->id, e->message);
       xv_last_.reset();
       // Inner joints of a split block are tangent (no ball); its last part waits for the next.
       if (k + 1 == o.moves.size() && part.contour != planner::Contour::none) {

@@ -38,10 +38,24 @@ struct Run {
   std::string source_error;
 };
 
-// laser_portal: X v_max 1000 mm/s, A 10000 mm/s^2; the belt at 300 mm/s.
-Run run(const std::string& program, ipo::test::FakePort& port) {
+// laser_portal: X v_max 1000 mm/s, A 10000 mm/s^2; the belt at 300 mm/s. `override_percent`:
+// a path override from t = 0 on a REDUCED_ABOVE_100 channel (a scenario event); null: none.
+Run run(const std::string& program, ipo::test::FakePort& port,
+        const char* override_percent = nullptr) {
   const machines::Machine& m = interp::test::machine("laser_portal");
-  ipo::test::ConveyorRig rig(program, m, ipo::channel_config(m, kT), &port);
+  ipo::ChannelConfig cfg = ipo::channel_config(m, kT);
+  // The scenario outlives the player that plays it (scenario::Player keeps a reference).
+  const core::SourceFile toml("s.toml", std::string("[[event]]\nat = 0.0\noverride = ") +
+                                            (override_percent ? override_percent : "100") + "\n");
+  const scenario::LoadResult loaded = scenario::parse_scenario(toml);
+  REQUIRE(loaded.scenario);
+  std::optional<scenario::Player> player;
+  if (override_percent != nullptr) {
+    cfg.path.override_type = ipo::OverrideType::reduced_above_100;
+    player.emplace(*loaded.scenario);
+  }
+  ipo::test::ConveyorRig rig(program, m, std::move(cfg), &port);
+  if (player) rig.ch.play(&*player);
   const ipo::Channel& ch = rig.ch;
   Run r;
   r.status = ipo::test::run_to_end(
@@ -199,6 +213,36 @@ TEST_CASE("PCS1 velocity split: full feed in +X and -X on a 300 mm/s belt keeps 
   }
   CHECK(v_plus == doctest::Approx(670.0).epsilon(1e-6));
   CHECK(v_minus == doctest::Approx(-670.0).epsilon(1e-6));
+}
+
+TEST_CASE(
+    "an override above 100 % keeps a PCS1 block at its split velocity: X stays within v_max") {
+  // --- conveyor-tail: REDUCED_ABOVE_100 raises the path above its F up to the G00 rule of the
+  // axes (000 l.357, l.360; ipo::raised_limits). The axes' full limits do not know the belt's
+  // share of X (the split lowered only the plan), so at 150 % the block of the test above was
+  // raised to X's 1000 mm/s in PCS1 and X commanded 1000 + 300 mm/s in MCS (measured before:
+  // 1300 mm/s). Now a PCS1 block keeps its 100 % plan above 100 %, as under #TRAFO ON
+  // (docs/conveyor.md "Machining in PCS1"); below 100 % the override acts as everywhere.
+  ipo::test::FakePort port(300.0);
+  port.latch_at_ = 1;
+  const Run r =
+      run("%t\nN10 G01 X0 Y0 Z0 F6000\nN20 #SYNC IN [CONV_VEL=18000]\nN30 G01 X100 Y50 F6000\n"
+          "N40 G01 X900 F60000\nN50 G01 X100 F60000\nN60 #SYNC OUT\nN70 G01 X200 Y0 F6000\n"
+          "N75 G01 X0 Y0 F6000\nN80 M30\n",
+          port, "150");
+  REQUIRE(r.status == ipo::Status::finished);
+  double v_max = 0.0, v_plus = 0.0, v_off = 0.0;
+  for (std::size_t k = 1; k < r.x.size(); ++k) {
+    v_max = std::max(v_max, std::fabs(velocity(r, k)));
+    if (r.phase[k] == ipo::SyncPhase::tracking && r.phase[k - 1] == ipo::SyncPhase::tracking)
+      v_plus = std::max(v_plus, velocity(r, k) - (r.offset_x[k] - r.offset_x[k - 1]) / kT);
+    if (r.line[k] == 9) v_off = std::max(v_off, std::hypot(velocity(r, k), velocity(r, k, 1)));
+  }
+  MESSAGE("X's largest |v| in MCS " << v_max << " mm/s, in PCS1 " << v_plus
+                                    << ", off the belt (N75, F 100 mm/s) " << v_off);
+  CHECK(v_max <= 1000.0 * (1 + 1e-9));
+  CHECK(v_plus == doctest::Approx(670.0).epsilon(1e-6));
+  CHECK(v_off == doctest::Approx(150.0).epsilon(1e-6));  // off the belt 150 % still raises
 }
 
 TEST_CASE("PCS1 velocity split on spline pieces: a B-spline at full feed keeps X within v_max") {

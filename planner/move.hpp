@@ -89,8 +89,10 @@ struct Move {
   /// A #SPLINE piece: cubic Bezier (not with `arc`). Shared and immutable, so that lines and
   /// arcs, the bulk of every program, do not carry 256 bytes of control points in each copy.
   std::shared_ptr<const SplineControl> spline;
-  bool rapid = false;                ///< G00: per-axis MIN(rapid, reference, max) (000 l.360)
-  double feed = 0.0;                 ///< programmed F [mm/s]; ignored for rapid
+  bool rapid = false;  ///< G00: per-axis MIN(rapid, reference, max) (000 l.360)
+  /// Programmed F [mm/s]. A rapid ignores it, except a transformed G00 in PCS1 (belt_joints
+  /// set): there it is the velocity cap the belt's share leaves (0: none; path_limits).
+  double feed = 0.0;
   std::optional<double> block_time;  ///< G93: machining time of the block [s]
   std::optional<double> end_feed;    ///< E: feed at the block end [mm/s]
   Transition transition = Transition::accelerate_at_start;

@@ -1,0 +1,8 @@
+%held_ball_static_fast
+N10 #SYNC IN [CONV_VEL=18000]
+N20 G01 X0 Y0 F100
+N30 #CONTOUR MODE [DEV PATH_DEV=2]
+N40 G261 G01 X-100 Y-100
+N45 L held_ball_static_sub.nc
+N60 #SYNC OUT
+N70 M30
