@@ -20,7 +20,7 @@ std::string mm_s(double v) {
 
 std::optional<SyncError> check_belt_velocity(double v_belt, double conv_vel) {
   const double limit = kBeltVelocityTolerance * conv_vel;
-  if (!(std::fabs(v_belt) > limit)) return std::nullopt;
+  if (!(std::fabs(v_belt) > limit * (1.0 + kBeltVelocityRounding))) return std::nullopt;
   return SyncError{kBeltTooFastId, "the conveyor moves at " + mm_s(std::fabs(v_belt)) +
                                        ", more than 10 % above CONV_VEL " + mm_s(conv_vel) +
                                        " (limit " + mm_s(limit) + ")"};

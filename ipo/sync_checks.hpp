@@ -20,13 +20,20 @@ inline constexpr const char* kBeltTooFastId = "50653";
 inline constexpr const char* kConvVelTooHighId = "50587";
 /// The factor of 004 l.514: "If the actual velocity is 10 % higher than specified".
 inline constexpr double kBeltVelocityTolerance = 1.10;
+/// --- belt-split: the relative rounding a belt velocity measured from position differences
+/// may carry above the limit and still pass [1]. (p_k - p_k-1) / T with |p| the belt travel
+/// rounds by up to 2.2e-16 |p| / T (an ulp of each position), the filter's weighted sum adds
+/// a few ulp of v: 1e-9 of 330 mm/s (0.33 um/s) covers a travel up to 1e-9 v T / 2.2e-16 =
+/// 1500 m at 1 ms (75 min of a 330 mm/s belt), far below the 1 mm/s between 330 and 331.
+inline constexpr double kBeltVelocityRounding = 1e-9;
 
 struct SyncError {
   std::string id;  ///< the manual's id (50653, 50587, P-ERR-44009 from the Port) or NC90xx
   std::string message;
 };
 
-/// 50653 when |v_belt| > 1.10 * conv_vel (strictly: CONV_VEL 300 mm/s allows 330 mm/s).
+/// 50653 when |v_belt| > 1.10 * conv_vel (strictly: CONV_VEL 300 mm/s allows 330 mm/s; a
+/// measured 330 rounding up to kBeltVelocityRounding above it passes, belt-split).
 /// ncsim decision: `v_belt` is the master velocity the PCS1 frame follows (Port::master(),
 /// filtered, as the NC sees it: the unfiltered value's noise would trip it), checked every
 /// cycle from #SYNC IN (its wait for the measured value included) to #SYNC OUT.

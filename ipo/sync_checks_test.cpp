@@ -34,6 +34,17 @@ TEST_CASE("50653: a belt more than 10 % above CONV_VEL (18000 mm/min: 331 errors
   CHECK(check_belt_velocity(300.0, 30.0 / 60.0));
 }
 
+TEST_CASE("50653 exactly at the limit: a velocity from position differences rounding over it") {
+  // belt-split (issue 14): a 330 mm/s belt measured as position differences over 1 ms reads
+  // above 330 (synchro_lag_comoving stopped at t 0.505 s; bound 4e-11 mm/s there); it is within
+  // the limit (kBeltVelocityRounding), 1e-6 above it is not.
+  const double conv_vel = 18000.0 / 60.0;
+  CHECK_FALSE(check_belt_velocity(330.0 + 4e-11, conv_vel));
+  CHECK_FALSE(check_belt_velocity(-330.0 * (1 + 1e-10), conv_vel));
+  CHECK(check_belt_velocity(330.0 * (1 + 1e-8), conv_vel));
+  CHECK(check_belt_velocity(330.000001, conv_vel));
+}
+
 TEST_CASE("50587: CONV_VEL above the maximum velocity of the conveying axis") {
   CHECK_FALSE(check_conv_vel(x_axis(), 1.0, 1000.0, "X"));
   const auto e = check_conv_vel(x_axis(), 1.0, 1000.5, "X");

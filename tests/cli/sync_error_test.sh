@@ -40,6 +40,11 @@ else
 fi
 expect "time: the run stops after the motion that follows the error" 1 \
   'stopped after 14\.266 s' '\[NC9052\]' -- time "$prog"
+# 50653 exactly at the limit (belt-split): a 330 mm/s belt under CONV_VEL 18000 mm/min runs
+# through (its velocity from position differences rounded over 330 and stopped it at t 0.505 s).
+expect "time: a belt at exactly 1.10 x CONV_VEL passes 50653 (004 l.514)" 0 \
+  '1 complete of 1' '' -- time "$root/programs/synchro_lag_comoving/synchro_lag_comoving.nc" \
+  --scenario "$root/tests/cli/scenario_belt_limit.toml"
 
 # P-ERR-44009 (seed 004 §6.3.1): the error is positioned at the MC_TouchProbe that retriggers
 # (line 9 of the second pass), not at the block after it, and its time is the cycle's, printed
