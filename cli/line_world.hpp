@@ -6,12 +6,14 @@
 // Inputs: the loaded machine and scenario (before the world is built), the channel after each
 // cycle. Outputs: the changed machine / scenario, a Port decorator, the margin.
 // Belt velocity (decision): a spindle belt (the program's S1[MC_MoveVelocity]) keeps the
-// program's commands but every Velocity > 0 becomes the candidate (direction, dynamics kept);
+// program's commands but every Velocity > 0 becomes the candidate (direction, dynamics kept;
+// CONV_VEL is the caller's: LineRun::conv_vel);
 // an encoder belt has its scenario velocity at t = 0 and every profile velocity scaled by
 // candidate / velocity at t = 0 (fluctuation, noise, dead time unchanged: relative).
 // Workspace margin: while synchronised, the distance of the commanded TCP (the setpoints of
-// X/Y/Z) to the conveyor workspace's faces in the conveying direction (the faces whose outward
-// normal is within 60 deg of it, as ipo/workspace classifies them); the smallest over the run.
+// X/Y/Z; under #TRAFO ON the channel's TCP, Channel::tcp()) to the conveyor workspace's faces in
+// the conveying direction (the faces whose outward normal is within 60 deg of it, as
+// ipo/workspace classifies them); the smallest over the run.
 // Invariants: pure functions and small value objects; never throw (except make_unique).
 
 #include <cstdint>

@@ -776,6 +776,7 @@ LineOutcome run_line(const ProgramOptions& program, std::optional<std::uint64_t>
     }
   }
   if (run.wrap && in.port) in.port = run.wrap(std::move(in.port));
+  if (run.conv_vel) in.interp.conv_vel = run.conv_vel;
   interp::Interpreter interp(in.file, in.machine, in.interp);
   ipo::ProgramSource src(interp, in.machine, in.t_cycle);
   ipo::ChannelConfig cfg = ipo::channel_config(in.machine, in.t_cycle);

@@ -81,6 +81,9 @@ struct LineRun {
   /// Sees the channel after every running cycle (may be empty).
   std::function<void(const ipo::Channel&)> on_cycle;
   bool audit = true;  ///< the audit on the axes' setpoints (as `time --audit`)
+  /// [mm/s] replaces every #SYNC IN's CONV_VEL (interp::Options::conv_vel); nullopt: the
+  /// program's (sweep --conv-vel follow / keep).
+  std::optional<double> conv_vel;
 };
 struct LineOutcome {
   int status = kExitOk;  ///< kExitOk, kExitProgramErrors (error), kExitUsage (load), kExitAudit

@@ -53,6 +53,7 @@ Candidate evaluate(const SweepOptions& o, double v) {
   run.wrap = [&](std::unique_ptr<conveyor::Port> port) {
     return override_belt(std::move(port), v);
   };
+  if (o.conv_vel == "follow") run.conv_vel = v;
   run.on_cycle = [&](const ipo::Channel& ch) { watch.on_cycle(ch); };
   c.outcome = run_line(o.program, o.cycle_us, run, err);
   c.load_errors = err.str();
@@ -136,6 +137,9 @@ int run_sweep(const SweepOptions& o, std::ostream& out, std::ostream& err) {
         << kSweepEncoderZeroId << "]\n";
     return kExitUsage;
   }
+  out << (o.conv_vel == "follow"
+              ? "sweep: every #SYNC IN's CONV_VEL is the candidate (--conv-vel follow)\n"
+              : "sweep: the program's CONV_VEL is kept (--conv-vel keep)\n");
   for (const Candidate& c : ends)
     print(c, 0, out);
   if (!ends[0].ok()) {
@@ -192,6 +196,10 @@ SweepCommand::SweepCommand(CLI::App& app) {
   add_run_program_options(*cmd_, options_.program);
   cmd_->add_option("--belt-velocity", options_.belt_velocity, "LO:HI belt velocities [mm/s]")
       ->required();
+  cmd_->add_option("--conv-vel", options_.conv_vel,
+                   "follow: every #SYNC IN's CONV_VEL is the candidate (default); keep: the "
+                   "program's")
+      ->check(CLI::IsMember({"follow", "keep"}));
   cmd_->add_option("--tolerance", options_.tolerance,
                    "Resolution of the result [mm/s] (default 1)");
   cmd_->add_option("--grid", options_.grid, "Candidates per round (default 3)")

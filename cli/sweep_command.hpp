@@ -11,9 +11,13 @@
 // --tolerance [mm/s] (default 1), --grid K candidates per round (default 3), --jobs N threads
 // (default: the cores, at most K), --cycle-us.
 // Belt velocity: a belt the program drives (spindle mode) gets every MC_MoveVelocity with a
-// Velocity > 0 replaced by the candidate (the program's CONV_VEL stays, so 50653 bites as the
-// manual wants); an encoder belt has the scenario's velocity and profile scaled so that its
-// velocity at t = 0 is the candidate (fluctuation and noise kept relative).
+// Velocity > 0 replaced by the candidate; an encoder belt has the scenario's velocity and
+// profile scaled so that its velocity at t = 0 is the candidate (fluctuation and noise kept
+// relative). --conv-vel follow (default): every #SYNC IN's CONV_VEL is the candidate too
+// (interp::Options::conv_vel), so the sweep finds how fast the line runs with the program set
+// for that belt; --conv-vel keep: the program's CONV_VEL stays, so 50653 bites at
+// 1.1 x CONV_VEL (seed 004 l.514) and the sweep finds how far the belt may run above the
+// program's declaration.
 // Method: round 0 runs LO and HI; then each round runs K candidates evenly inside the interval
 // [highest passing, lowest failing] at once (one thread each, at most --jobs at a time) and
 // keeps the highest pass below the lowest failure, until the interval is <= the tolerance. The
@@ -51,10 +55,11 @@ inline constexpr const char* kSweepEncoderZeroId = "NC9123";
 
 struct SweepOptions {
   ProgramOptions program;
-  std::string belt_velocity;  ///< "LO:HI" [mm/s]
-  double tolerance = 1.0;     ///< [mm/s] the result's resolution
-  unsigned grid = 3;          ///< candidates per round
-  unsigned jobs = 0;          ///< threads (0: the cores)
+  std::string belt_velocity;        ///< "LO:HI" [mm/s]
+  std::string conv_vel = "follow";  ///< "follow": CONV_VEL := the candidate; "keep": the program's
+  double tolerance = 1.0;           ///< [mm/s] the result's resolution
+  unsigned grid = 3;                ///< candidates per round
+  unsigned jobs = 0;                ///< threads (0: the cores)
   std::optional<std::uint64_t> cycle_us;
 };
 

@@ -12,7 +12,9 @@
 
 #include "cli/number_format.hpp"
 #include "cli/run_commands.hpp"
+#include "ipo/program_source.hpp"
 #include "ipo/synchro_lag.hpp"
+#include "ipo/trafo.hpp"
 
 namespace ncsim::cli {
 namespace {
@@ -71,6 +73,7 @@ struct Pass {
 Pass pass(const TuneDelayOptions& o, std::optional<double> delay, std::ostream& err) {
   Pass p;
   double sum = 0.0, sum2 = 0.0, v_sum = 0.0, c2 = 0.0, p2 = 0.0;
+  planner::JointMap forward;  // the machine's forward transform (none: no kinematics)
   LineRun run;
   run.audit = false;
   run.adjust = [&](machines::Machine& m, std::optional<scenario::Scenario>& s) {
@@ -80,6 +83,8 @@ Pass pass(const TuneDelayOptions& o, std::optional<double> delay, std::ostream& 
     if (delay) c->delay_time = *delay;
     p.delay = c->delay_time;
     const double t = o.cycle_us ? static_cast<double>(*o.cycle_us) * 1e-6 : 0.001;
+    if (const auto trafo = ipo::machine_trafo(m, ipo::machine_config(m, t)))
+      forward = ipo::forward_map(trafo->kinematics, trafo->xyz);
     if (c->enable_filter && c->order_pos_filter > 1)
       p.filter_delay = (c->order_pos_filter - 1) * t / 2.0;
     if (s && s->conveyor) p.dead_time = s->conveyor->dead_time;
@@ -91,12 +96,22 @@ Pass pass(const TuneDelayOptions& o, std::optional<double> delay, std::ostream& 
     contour_cycle(ch, *sync, p.contour, c2, p2);
     const ipo::MasterDisplay d = ch.master_display();
     if (d.v_master_comp == 0.0) return;  // a standing belt tells nothing about the delay
+    double lag = d.synchro_lag;
+    if (ch.transformed()) {  // the joints are no X/Y/Z: the TCP against the workpiece
+      planner::AxisVec tcp{};
+      for (std::size_t i = 0; i < ch.axis_count(); ++i)
+        tcp[i] = ch.tcp()[i].p;
+      const auto l = ipo::tcp_lag(*sync, std::span<const double>(tcp.data(), ch.axis_count()),
+                                  ch.axes().actual, forward);
+      if (!l) return;
+      lag = *l;
+    }
     LagStats& l = p.lag;
-    l.min = l.cycles == 0 ? d.synchro_lag : std::min(l.min, d.synchro_lag);
-    l.max = l.cycles == 0 ? d.synchro_lag : std::max(l.max, d.synchro_lag);
+    l.min = l.cycles == 0 ? lag : std::min(l.min, lag);
+    l.max = l.cycles == 0 ? lag : std::max(l.max, lag);
     ++l.cycles;
-    sum += d.synchro_lag;
-    sum2 += d.synchro_lag * d.synchro_lag;
+    sum += lag;
+    sum2 += lag * lag;
     v_sum += d.v_master_comp;
   };
   p.outcome = run_line(o.program, o.cycle_us, run, err);

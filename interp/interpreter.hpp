@@ -53,6 +53,11 @@ struct Options {
   /// the main program's folder; anything else is NC4301 (the fuzz target uses it so that fuzzed
   /// programs cannot reach files elsewhere). false (default): any path, as the manual allows.
   bool confine_subroutine_files = false;
+  /// [mm/s] when set, replaces the CONV_VEL of every `#SYNC IN` (after its unit, so a program in
+  /// VEL_RESOLUTION=mm/s and one in mm/min get the same velocity): `ncsim sweep --conv-vel
+  /// follow` (docs/conveyor.md "sweep"). The programmed word is still parsed and checked
+  /// (NC4507, NC4030 at its line); 50587 is checked on the value used.
+  std::optional<double> conv_vel;
 };
 
 /// The run time's answer to a Barrier. Only what the barrier asks for is read.

@@ -179,7 +179,7 @@ bool Interpreter::Impl::hash_sync_in(const ast::Block& b, const ast::HashCommand
   if (!factor) return fail(res->loc, "NC4507", "unknown VEL_RESOLUTION " + std::string(res->text));
   SyncIn s;
   s.conveyor = *conveyor;
-  s.conv_vel = *v * *factor;
+  s.conv_vel = options.conv_vel ? *options.conv_vel : *v * *factor;  // sweep --conv-vel follow
   if (xyz[0] && !machine.channel.conveyor->x_virtual) {
     const double v_max = machine.axes[*xyz[0]].dynamics.v_max;
     if (v_max > 0.0 && s.conv_vel > v_max) {

@@ -50,6 +50,30 @@ TEST_CASE("FEED_CONT is mm/min in the program and mm/s in the command") {
             .error_id == "NC4030");
 }
 
+TEST_CASE("Options::conv_vel replaces every #SYNC IN's CONV_VEL, whatever its unit (sweep)") {
+  Options o;
+  o.conv_vel = 250.0;  // [mm/s]
+  auto r = run(std::string(kProbe) +
+                   "#SYNC IN [CONV_VEL=6000]\nG01 X1 F600\n#SYNC OUT\n"
+                   "S1[MC_TouchProbe Channel=1]\n#SYNC IN [CONV_VEL=2 VEL_RESOLUTION=m/s]\nM30\n",
+               "laser_portal", o);
+  REQUIRE(r.error_id.empty());
+  CHECK(r.lines.at(2) == "3: SYNC_IN S conv_vel=250.0000 latch=0.0000");
+  bool second = false;
+  for (const std::string& l : r.lines)
+    second = second || l == "7: SYNC_IN S conv_vel=250.0000 latch=0.0000";
+  CHECK(second);
+  // The programmed word is still checked where it stands; 50587 takes the value used
+  // (laser_portal's X: 1000 mm/s).
+  auto zero = run(std::string(kProbe) + "#SYNC IN [CONV_VEL=0]\nM30\n", "laser_portal", o);
+  CHECK(zero.error_id == "NC4030");
+  CHECK(zero.error_line == 3);
+  o.conv_vel = 1200.0;
+  auto fast = run(std::string(kProbe) + "#SYNC IN [CONV_VEL=6000]\nM30\n", "laser_portal", o);
+  CHECK(fast.error_id == "50587");
+  CHECK(fast.error_line == 3);
+}
+
 TEST_CASE("M30 while synchronised is warning NC4516, not silence (seed 004 §2.1.1.2)") {
   core::SourceFile file("test.nc",
                         std::string(kProbe) + "#SYNC IN [CONV_VEL=6000]\nG01 X1 F600\nM30\n");

@@ -39,4 +39,12 @@ std::optional<double> axes_lag(const ConveyorSync& sync, std::span<const double>
   return tracking_lag(sync, c, a);
 }
 
+std::optional<double> tcp_lag(const ConveyorSync& sync, std::span<const double> tcp,
+                              const planner::AxisVec& joints,
+                              const planner::JointMap& forward) noexcept {
+  planner::AxisVec x{};
+  if (!forward || !forward(joints, x)) return std::nullopt;
+  return axes_lag(sync, tcp, std::span<const double>(x.data(), x.size()), false);
+}
+
 }  // namespace ncsim::ipo

@@ -21,6 +21,8 @@
 // T0 (LatchInfo::sensor_x - P-CHAN-00368) along the conveying direction; then
 // ipo::synchro_lag(frame, x_actual, p, s_real). A Port without workpieces (a test double,
 // LatchInfo::workpiece == 0) takes its latched value as the truth.
+// Under #TRAFO ON the axes are joints: tcp_lag() takes the commanded TCP and the forward
+// transform of the joints' actual positions instead (the caller holds the transform).
 // Invariants: pure; never throws.
 
 #include <Eigen/Core>
@@ -28,6 +30,7 @@
 #include <span>
 
 #include "ipo/conveyor_sync.hpp"
+#include "planner/joint_limits.hpp"
 
 namespace ncsim::ipo {
 
@@ -42,6 +45,14 @@ std::optional<double> tracking_lag(const ConveyorSync& sync, const Eigen::Vector
 /// (Channel::master_display) and the report take it from.
 std::optional<double> axes_lag(const ConveyorSync& sync, std::span<const double> command,
                                std::span<const double> actual, bool transformed) noexcept;
+
+/// synchro_lag under #TRAFO ON: the commanded TCP `tcp` (Channel::tcp()'s positions, the
+/// channel's interpolated order: PCS1 point plus the belt offset, MCS) against the actual TCP,
+/// the forward transform `forward` (ipo::forward_map) of the joints' actual positions `joints`
+/// (Channel::axes().actual). nullopt as tracking_lag() and where `forward` is empty or fails.
+std::optional<double> tcp_lag(const ConveyorSync& sync, std::span<const double> tcp,
+                              const planner::AxisVec& joints,
+                              const planner::JointMap& forward) noexcept;
 
 /// The real workpiece's travel [mm] equivalent to the frame's travel (the frame's s when the NC
 /// were exact): the real belt since the real front edge passed the sensor, plus the sensor's

@@ -156,3 +156,34 @@ TEST_CASE("synchro_lag from the axes: their X/Y/Z slots, and none under #TRAFO O
   // them for X/Y/Z before).
   CHECK_FALSE(axes_lag(r.sync, command, actual, true));
 }
+
+TEST_CASE(
+    "synchro_lag under #TRAFO ON: the commanded TCP against the forward transform of the "
+    "joints' actual positions") {
+  Tracking r(0.017455, -100.0);
+  r.catch_up();
+  r.cycle();
+  const Eigen::Vector3d c = r.command();
+  // A toy kinematics: joint 0 = X / 2, joint 1 = Y + 5, joint 2 = -Z; forward is its inverse.
+  const ncsim::planner::JointMap forward = [](const ncsim::planner::AxisVec& q,
+                                              ncsim::planner::AxisVec& x) {
+    x = q;
+    x[0] = 2.0 * q[0];
+    x[1] = q[1] - 5.0;
+    x[2] = -q[2];
+    return true;
+  };
+  const std::array<double, 3> tcp{c.x(), c.y(), c.z()};
+  ncsim::planner::AxisVec joints{};
+  joints[0] = (c.x() + 0.2) / 2.0;  // the actual TCP 0.2 mm ahead in the conveying direction
+  joints[1] = c.y() + 5.0 + 0.3;    // and 0.3 mm off in Y (not along it)
+  joints[2] = -c.z();
+  const auto lag = tcp_lag(r.sync, tcp, joints, forward);
+  REQUIRE(lag);
+  CHECK(*lag == doctest::Approx(-kV * 0.017455 + 0.2).epsilon(1e-9));
+  // Where the transform does not map, and without one, there is no value (never the joints).
+  const ncsim::planner::JointMap fails = [](const ncsim::planner::AxisVec&,
+                                            ncsim::planner::AxisVec&) { return false; };
+  CHECK_FALSE(tcp_lag(r.sync, tcp, joints, fails));
+  CHECK_FALSE(tcp_lag(r.sync, tcp, joints, ncsim::planner::JointMap{}));
+}

@@ -43,17 +43,52 @@ else
   failures=$((failures + 1)); echo "FAIL synchro_lag at t=4.285: $(grep '^4.285,' "$work/sq.csv")"
 fi
 
-# sweep: conveyor_squares' CONV_VEL 6000 mm/min: 50653 above 110 mm/s.
+# sweep --conv-vel keep: conveyor_squares' CONV_VEL 6000 mm/min stays: 50653 above 110 mm/s.
 expect "sweep: the highest belt velocity, each candidate's verdict, the workspace margin" 0 \
   '^sweep: highest belt velocity 109\.766 mm/s \(6\.58594 m/min\), 110\.352 mm/s fails' '' -- \
-  sweep "$squares" --belt-velocity 50:200 --tolerance 2
+  sweep "$squares" --belt-velocity 50:200 --tolerance 2 --conv-vel keep
 expect "sweep: a candidate fails with its id" 0 '^round 0: 200 mm/s \(12 m/min\): fails \[50653\]' '' -- \
-  sweep "$squares" --belt-velocity 50:200 --tolerance 2
+  sweep "$squares" --belt-velocity 50:200 --tolerance 2 --conv-vel keep
 expect "sweep: the same sequence on one thread (deterministic)" 0 \
   '^round 4: 109\.766 mm/s \(6\.58594 m/min\): ok, workspace margin 3587\.7 mm$' '' -- \
-  sweep "$squares" --belt-velocity 50:200 --tolerance 2 --jobs 1
+  sweep "$squares" --belt-velocity 50:200 --tolerance 2 --conv-vel keep --jobs 1
 expect "sweep: a range in which even LO fails: exit 1" 1 '^sweep: no belt velocity in 150 \.\. 200' '' -- \
-  sweep "$squares" --belt-velocity 150:200
+  sweep "$squares" --belt-velocity 150:200 --conv-vel keep
+# sweep --conv-vel follow (the default): every #SYNC IN's CONV_VEL is the candidate, so the
+# sweep finds the line's own limits above the program's declaration (issue 14 gap 1).
+# conveyor_squares (CONV_VEL 100 mm/s): above 1.1 x CONV_VEL; at 157.8 mm/s the loop no longer
+# keeps up with the sheets (one passes the sensor unmeasured: NC9003).
+expect "sweep --conv-vel follow: CONV_VEL follows the candidate, the limit lies above 1.1 x CONV_VEL" 0 \
+  '^sweep: highest belt velocity 139\.844 mm/s \(8\.39062 m/min\), 157\.812 mm/s fails' '' -- \
+  sweep "$squares" --belt-velocity 50:1200 --tolerance 20
+expect "sweep --conv-vel follow: 50587 once CONV_VEL exceeds X's maximum velocity" 0 \
+  '^round 0: 1200 mm/s \(72 m/min\): fails \[50587\]: .*conveyor_squares\.nc:9:5: ' '' -- \
+  sweep "$squares" --belt-velocity 50:1200 --tolerance 20
+# static_saw_fast (static unit, CONV_VEL 750 mm/s): NC9100 is checked at 1.1 x CONV_VEL, so
+# with CONV_VEL kept every candidate failed; following, the unit's own limits appear: the
+# virtual X's lag at 800 mm/s (a dynamic limit), NC9100 at 625 mm/s (C's jerk at line 41), and
+# at 614 mm/s a run without any error whose setpoints break the audit (the catch-up's jerk).
+saw_fast=$root/programs/static_saw_fast/static_saw_fast.nc
+expect "sweep --conv-vel follow on a static unit: a dynamic limit (the lag) at HI" 0 \
+  '^round 0: 800 mm/s \(48 m/min\): fails \[0x4550\]' '' -- \
+  sweep "$saw_fast" --belt-velocity 100:800 --tolerance 20
+expect "sweep --conv-vel follow on a static unit: its NC9100 limit at the program's line" 0 \
+  '^round 1: 625 mm/s \(37\.5 m/min\): fails \[NC9100\]: .*static_saw_fast\.nc:41:1: .*a belt at 687\.5 mm/s \(1\.1 x CONV_VEL' '' -- \
+  sweep "$saw_fast" --belt-velocity 100:800 --tolerance 20
+expect "sweep --conv-vel follow on a static unit: a candidate that fails only on the audit" 0 \
+  '^round 3: 614\.062 mm/s \(36\.8438 m/min\): fails: audit: .* line 27 jerk ' '' -- \
+  sweep "$saw_fast" --belt-velocity 100:800 --tolerance 20
+expect "sweep --conv-vel follow on a static unit: the highest velocity below its limits" 0 \
+  '^sweep: highest belt velocity 603\.125 mm/s \(36\.1875 m/min\), 614\.062 mm/s fails' '' -- \
+  sweep "$saw_fast" --belt-velocity 100:800 --tolerance 20
+expect "sweep --conv-vel keep on a static unit: NC9100 at 1.1 x the programmed CONV_VEL, nothing runs" 1 \
+  '^round 0: 100 mm/s \(6 m/min\): fails \[NC9100\]: .*a belt at 825 mm/s' '' -- \
+  sweep "$saw_fast" --belt-velocity 100:800 --tolerance 20 --conv-vel keep
+# Under #TRAFO ON (the delta picker) the margin is the commanded TCP's (issue 14 gap 2).
+pick50=$root/programs/pick_and_place_50/pick_and_place_50.nc
+expect "sweep under #TRAFO ON: the workspace margin of the TCP, not 'never synchronised'" 0 \
+  '^sweep: margin to the workspace.s conveying face at 300\.5 mm/s: 415\.097 mm \(t=44\.855 s, line 27\)$' '' -- \
+  sweep "$pick50" --belt-velocity 300:300.5
 expect "sweep: --belt-velocity not LO:HI: NC9120, exit 2" 2 '' '\[NC9120\]' -- \
   sweep "$squares" --belt-velocity 200:50
 expect "sweep: --tolerance 0: NC9121, exit 2" 2 '' '\[NC9121\]' -- \
@@ -81,6 +116,15 @@ expect "tune-delay: the static unit's synchro_lag listing is measured up to its 
 expect "tune-delay: the static unit's repaired synchro_lag listing gets dead time + filter delay" 0 \
   '^tune-delay: proposed P-AXIS-00626 conv_sync\.delay_time = 18(8[5-9]|9[0-5])[0-9] us' '' -- \
   tune-delay "$static_repaired"
+# Under #TRAFO ON synchro_lag is the TCP's (commanded TCP against the forward transform of the
+# joints' actual positions; issue 14 gap 3): pick_and_place_50 has no dead time, so the
+# listing's 17455 us puts the TCP ~5 mm ahead at 300 mm/s (> 0); the proposal zeroes it.
+expect "tune-delay under #TRAFO ON: synchro_lag of the TCP, ahead with the listing's delay time" 0 \
+  '^tune-delay: with the machine.s P-AXIS-00626 = 17455 us: synchro_lag mean 4\.97[0-9]* mm .* over 13000 synchronised cycles' '' \
+  -- tune-delay "$pick50"
+expect "tune-delay under #TRAFO ON: the proposal's static part is near zero" 0 \
+  '^tune-delay: check with P-AXIS-00626 = 876 us: synchro_lag mean -0\.00[0-9]+ mm' '' \
+  -- tune-delay "$pick50"
 expect "tune-delay: a machine without conveyor tracking: NC9126, exit 2" 2 '' '\[NC9126\]' -- \
   tune-delay --machine "$root/machines/portal_3x" "$squares"
 # --- hold: the ids without a test (issue 14)
