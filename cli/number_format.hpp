@@ -7,8 +7,8 @@
 
 #include <array>
 #include <charconv>
-#include <system_error>
 #include <string>
+#include <system_error>
 
 namespace ncsim::cli {
 

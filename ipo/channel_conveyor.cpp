@@ -208,7 +208,17 @@ Channel::EventOutcome Channel::on_move_velocity(const interp::MoveVelocity& comm
     }
   }
   // In encoder mode the scenario moves the belt and the Port ignores the command (its contract).
-  sync_->port()->command_velocity(command);
+  conveyor::Port& port = *sync_->port();
+  port.command_velocity(command);
+  // A refused command (NC9005: above the conveyor axis's P-AXIS-00212) is this block's error,
+  // at its line and cycle, as a refused MC_TouchProbe (on_probe_arm).
+  if (const auto& err = port.error()) {
+    try {
+      return event_error(err->id.c_str(), std::string(err->message), e);
+    } catch (...) {
+      std::abort();
+    }
+  }
   return EventOutcome::done;
 }
 

@@ -61,8 +61,10 @@ expect "sweep: a range in which even LO fails: exit 1" 1 '^sweep: no belt veloci
 expect "sweep --conv-vel follow: CONV_VEL follows the candidate, the limit lies above 1.1 x CONV_VEL" 0 \
   '^sweep: highest belt velocity 139\.844 mm/s \(8\.39062 m/min\), 157\.812 mm/s fails' '' -- \
   sweep "$squares" --belt-velocity 50:1200 --tolerance 20
-expect "sweep --conv-vel follow: 50587 once CONV_VEL exceeds X's maximum velocity" 0 \
-  '^round 0: 1200 mm/s \(72 m/min\): fails \[50587\]: .*conveyor_squares\.nc:9:5: ' '' -- \
+# 1200 mm/s is above both the belt axis S's and X's 1000 mm/s: the program's MC_MoveVelocity
+# (line 5) comes before its #SYNC IN (50587 at line 9), so the belt's own limit NC9005 ends it.
+expect "sweep --conv-vel follow: a candidate above the belt axis's maximum velocity fails at the MC_MoveVelocity" 0 \
+  '^round 0: 1200 mm/s \(72 m/min\): fails \[NC9005\]: .*conveyor_squares\.nc:5:1: ' '' -- \
   sweep "$squares" --belt-velocity 50:1200 --tolerance 20
 # static_saw_fast (static unit, CONV_VEL 750 mm/s): NC9100 is checked at 1.1 x CONV_VEL, so
 # with CONV_VEL kept every candidate failed; following, the unit's own limits appear: the
