@@ -292,6 +292,11 @@ class Channel {
   planner::AxisVec sync_u_{};  ///< the catch-up's direction (FEED_CONT's) [1]
   // --- sync-feed: end
   EventOutcome on_probe_arm(const interp::ProbeArm& command, const ChannelEvent& e) noexcept;
+  /// After a command the Port took (MC_TouchProbe, MC_MoveVelocity): a refusal it raised
+  /// (P-ERR-44009 retrigger, 44001, 44011, 44012 of seed 004 §6.3.1; NC9003; NC9005 above the
+  /// conveyor axis's P-AXIS-00212) is that block's error, at its line and cycle, not the next
+  /// cycle's step's at the block after it.
+  EventOutcome port_outcome(const ChannelEvent& e) noexcept;
   EventOutcome on_move_velocity(const interp::MoveVelocity& command,
                                 const ChannelEvent& e) noexcept;
   /// `#MACHINE DATA` on the conveyor axis's filters and delay time (ipo/machine_data.hpp):

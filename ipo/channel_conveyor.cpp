@@ -183,18 +183,8 @@ Channel::EventOutcome Channel::on_probe_arm(const interp::ProbeArm& command,
       std::abort();
     }
   }
-  conveyor::Port& port = *sync_->port();
-  port.arm_probe(command);
-  // A refused arm (P-ERR-44009 retrigger, 44001, 44011, 44012, ...) is the error of this
-  // MC_TouchProbe, at its line and cycle (seed 004 §6.3.1), not of the block after it.
-  if (const auto& err = port.error()) {
-    try {
-      return event_error(err->id.c_str(), std::string(err->message), e);
-    } catch (...) {
-      std::abort();
-    }
-  }
-  return EventOutcome::done;
+  sync_->port()->arm_probe(command);
+  return port_outcome(e);
 }
 
 Channel::EventOutcome Channel::on_move_velocity(const interp::MoveVelocity& command,
@@ -208,18 +198,18 @@ Channel::EventOutcome Channel::on_move_velocity(const interp::MoveVelocity& comm
     }
   }
   // In encoder mode the scenario moves the belt and the Port ignores the command (its contract).
-  conveyor::Port& port = *sync_->port();
-  port.command_velocity(command);
-  // A refused command (NC9005: above the conveyor axis's P-AXIS-00212) is this block's error,
-  // at its line and cycle, as a refused MC_TouchProbe (on_probe_arm).
-  if (const auto& err = port.error()) {
-    try {
-      return event_error(err->id.c_str(), std::string(err->message), e);
-    } catch (...) {
-      std::abort();
-    }
+  sync_->port()->command_velocity(command);
+  return port_outcome(e);
+}
+
+Channel::EventOutcome Channel::port_outcome(const ChannelEvent& e) noexcept {
+  const auto& err = sync_->port()->error();
+  if (!err) return EventOutcome::done;
+  try {
+    return event_error(err->id.c_str(), std::string(err->message), e);
+  } catch (...) {
+    std::abort();  // out of memory building a message
   }
-  return EventOutcome::done;
 }
 
 Channel::EventOutcome Channel::on_machine_data(const interp::MachineData& command,
