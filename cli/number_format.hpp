@@ -8,7 +8,8 @@
 #include <array>
 #include <charconv>
 #include <string>
-#include <system_error>
+
+#include "core/number_text.hpp"
 
 namespace ncsim::cli {
 
@@ -27,17 +28,10 @@ inline std::string human(double v) {
   return std::string(buf.data(), r.ptr);
 }
 
-/// Text of a run's time `t` [s] in a message: fixed to the microsecond (the cycle is a whole
-/// number of us, `--cycle-us`), trailing zeros dropped: 10.338000000000001 -> 10.338, 2 -> 2.
+/// Text of a run's time `t` [s] in a message: to the microsecond (the cycle is a whole number of
+/// us, `--cycle-us`): 10.338000000000001 -> 10.338 (core::micro_text).
 inline std::string seconds(double t) {
-  std::array<char, 48> buf{};
-  const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), t, std::chars_format::fixed, 6);
-  if (r.ec != std::errc{}) return num(t);  // beyond 1e40 s: no run gets there
-  std::string s(buf.data(), r.ptr);
-  while (s.back() == '0')
-    s.pop_back();
-  if (s.back() == '.') s.pop_back();
-  return s == "-0" ? "0" : s;
+  return core::micro_text(t);
 }
 
 }  // namespace ncsim::cli

@@ -14,4 +14,10 @@ namespace ncsim::core {
 /// values.
 std::string number_text(double value);
 
+/// `value` rounded to 1e-6 of its unit in fixed notation, trailing zeros and point dropped,
+/// never "-0" ("10.337" for 10.338000000000001 - 0.001, "2", "0.000001"): times of a run whose
+/// cycle is a whole number of microseconds, the golden files' values. number_text() where the
+/// fixed text would not fit (|value| beyond ~1e40) or the value is not finite.
+std::string micro_text(double value);
+
 }  // namespace ncsim::core

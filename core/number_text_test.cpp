@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+using ncsim::core::micro_text;
 using ncsim::core::number_text;
 
 TEST_CASE("numbers print as a user writes them, without trailing zeros") {
@@ -31,4 +32,13 @@ TEST_CASE("the text reads back to the same number") {
 TEST_CASE("non-finite values have names") {
   CHECK(number_text(std::numeric_limits<double>::quiet_NaN()) == "nan");
   CHECK(number_text(-std::numeric_limits<double>::infinity()) == "-inf");
+}
+
+TEST_CASE("micro_text: to the microsecond, no trailing zeros, never -0") {
+  CHECK(micro_text(10338 * 0.001) == "10.338");
+  CHECK(micro_text(2.0) == "2");
+  CHECK(micro_text(1e-6) == "0.000001");
+  CHECK(micro_text(-4e-7) == "0");
+  CHECK(micro_text(-1.25) == "-1.25");
+  CHECK(micro_text(1e300) == number_text(1e300));
 }

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "core/number_text.hpp"
 #include "golden/golden.hpp"
 #include "golden/text.hpp"
 
@@ -21,18 +22,6 @@ using text::parse_double;
 using text::parse_u64;
 using text::trim;
 using text::words;
-
-// A value rounded to 1e-6 of its unit, without trailing zeros; never "-0".
-std::string value_text(double v) {
-  std::array<char, 64> buf{};
-  const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v, std::chars_format::fixed, 6);
-  std::string s(buf.data(), r.ptr);
-  while (!s.empty() && s.back() == '0')
-    s.pop_back();
-  if (!s.empty() && s.back() == '.') s.pop_back();
-  if (s == "-0") s = "0";
-  return s;
-}
 
 // Shortest round-trip text in fixed notation ("0.0001", "2.5").
 std::string tolerance_text(double v) {
@@ -49,7 +38,7 @@ void write_row(std::ostream& out, const Row& row, bool block_end, std::uint64_t 
   s += std::to_string(row.line);
   for (const double v : row.values) {
     s += ' ';
-    s += value_text(v);
+    s += core::micro_text(v);  // rounded to 1e-6 of its unit
   }
   s += '\n';
   out << s;
