@@ -7,6 +7,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -74,12 +75,13 @@ std::string program(const char* conv_vel, const char* dev, const char* word, con
          " G01 " + first + "\n" + between + "N50 G01 X-200 Y0\nN60 #SYNC OUT\nN70 M30\n";
 }
 
-// Largest MCS excursion of the virtual X while the path is past Y = -20 on the contour (both
-// lines' middle parts and the ball; the path's own start and stop, where X moves with the belt
-// while the path accelerates, "pre-positioned tangentially", l.443, are outside).
-double excursion(const StaticRun& r) {
+// Largest MCS excursion of the virtual X while the path is past Y = -20 on the contour, in the
+// cycles before `end` (all of them: both lines' middle parts and the ball; the path's own start
+// and stop, where X moves with the belt while the path accelerates, "pre-positioned
+// tangentially", l.443, are outside).
+double excursion(const StaticRun& r, std::size_t end = SIZE_MAX) {
   double lo = 1e300, hi = -1e300;
-  for (std::size_t k = 0; k < r.x.size(); ++k) {
+  for (std::size_t k = 0; k < std::min(end, r.x.size()); ++k) {
     if (!r.tracking[k] || r.y[k] > -20.0) continue;
     lo = std::min(lo, r.x[k]);
     hi = std::max(hi, r.x[k]);
@@ -162,14 +164,7 @@ double c1_excursion(const StaticRun& r) {
       break;
     }
   REQUIRE(end < r.y.size());
-  double lo = 1e300, hi = -1e300;
-  for (std::size_t k = 0; k < end; ++k) {
-    if (!r.tracking[k] || r.y[k] > -20.0) continue;
-    lo = std::min(lo, r.x[k]);
-    hi = std::max(hi, r.x[k]);
-  }
-  REQUIRE(hi >= lo);
-  return hi - lo;
+  return excursion(r, end);
 }
 
 }  // namespace

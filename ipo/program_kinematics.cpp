@@ -176,6 +176,14 @@ bool ProgramSource::holds_for_ball(const planner::Move& move, bool pcs1) const {
          move.transition != planner::Transition::stop_at_end && belt_carry(carry);
 }
 
+void ProgramSource::ball_release(const planner::Move* next) {
+  if (!ball_held_) return;
+  planner::Move in = std::move(*ball_held_);
+  ball_held_.reset();
+  if (next != nullptr) reserve_ball_share(in, *next);
+  emit_path(std::move(in));
+}
+
 void ProgramSource::reserve_ball_share(planner::Move& in, const planner::Move& out) {
   if (!out.transformed || !trafo_) return;
   const planner::Segment in_path = planner::Segment::from_move(in);

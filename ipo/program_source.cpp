@@ -297,9 +297,7 @@ bool ProgramSource::pull(Item& out) {
     // than the next Motion (that command is taken again at the next pull).
     if (ball_held_ && !(cmd && std::holds_alternative<interp::Motion>(cmd->body))) {
       if (cmd) held_ = std::move(cmd);
-      planner::Move in = std::move(*ball_held_);
-      ball_held_.reset();
-      emit_path(std::move(in));
+      ball_release(nullptr);
       continue;
     }
     if (!cmd) {
@@ -385,19 +383,12 @@ bool ProgramSource::pull(Item& out) {
               // stream, as every block before a faulty one does.
               held_error_ = std::move(error_);
               error_.reset();
-              planner::Move in = std::move(*ball_held_);
-              ball_held_.reset();
-              emit_path(std::move(in));
+              ball_release(nullptr);
               return;
             }
             mv.event_tag = tag_;
             given_ = tag_;
-            if (ball_held_) {  // --- trafo-pcs1: the ball's share, then the held block out
-              planner::Move in = std::move(*ball_held_);
-              ball_held_.reset();
-              reserve_ball_share(in, mv);
-              emit_path(std::move(in));
-            }
+            ball_release(&mv);  // --- trafo-pcs1: the ball's share, then the held block out
             if (holds_for_ball(mv, body.frame.space == interp::Space::pcs1))
               ball_held_ = std::move(mv);
             else

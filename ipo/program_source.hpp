@@ -214,6 +214,10 @@ class ProgramSource final : public Source {
   /// caps in's feed where lower (the planner runs the ball with in's limits).
   void reserve_ball_share(planner::Move& in, const planner::Move& out);
   std::optional<planner::Move> ball_held_;  ///< the block whose ball waits for the next Motion
+  /// Emits ball_held_ (if any): with its ball's share into the next Motion `next`
+  /// (reserve_ball_share), or as it is when `next` is null (another command, or the next
+  /// Motion's error).
+  void ball_release(const planner::Move* next);
   /// The next Motion's error while a block was held: raised after the held block went out.
   std::optional<core::Diagnostic> held_error_;
   std::optional<MachineTrafo> trafo_;  ///< the machine's kinematic, built at the first #TRAFO

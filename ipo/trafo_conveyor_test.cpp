@@ -59,15 +59,7 @@ const char* const kPick =
 }  // namespace
 
 TEST_CASE("under #TRAFO ON the TCP catches the workpiece up, follows it in PCS1 and leaves it") {
-  ipo::test::FakePort port(100.0);
-  port.latch_at_ = 100;
-  const Tracked r = track(kPick, &port);
-  if (r.error)
-    MESSAGE(r.error->id << " line " << r.error->line << " t " << r.error->t << ": "
-                        << r.error->message);
-  if (!r.source_error.empty()) MESSAGE(r.source_error);
-  REQUIRE(r.status == ipo::Status::finished);
-  REQUIRE_FALSE(r.error);
+  const Tracked r = ipo::test::track_clean(kPick, 100.0);
   std::size_t catching = 0, gripping = 0, down = 0, departing = 0;
   for (std::size_t k = 1; k < r.tcp.size(); ++k) {
     CAPTURE(k);

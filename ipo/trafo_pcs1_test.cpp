@@ -37,7 +37,7 @@ constexpr double kT = 0.001;
 
 using ipo::test::check_far_side;
 using ipo::test::picker;
-using ipo::test::track;
+using ipo::test::track_clean;
 using ipo::test::Tracked;
 
 }  // namespace
@@ -60,13 +60,7 @@ TEST_CASE("a PCS1 block the belt carries towards the far side keeps the joints' 
         "]\nN50 G01 X-450 Y0 Z-700 F60000\nN55 G04 0.5\nN60 G01 X-200 Y-200 Z-880 F60000\n"
         "N70 G04 0.05\nN80 #SYNC OUT\nN90 M30\n";
     CAPTURE(program);
-    ipo::test::FakePort port(belt);
-    port.latch_at_ = 100;
-    const Tracked r = track(program, &port);
-    if (!r.source_error.empty()) MESSAGE(r.source_error);
-    if (r.error) MESSAGE(r.error->id << ": " << r.error->message);
-    REQUIRE(r.status == ipo::Status::finished);
-    REQUIRE_FALSE(r.error);
+    const Tracked r = track_clean(program, belt);
     check_far_side(r, 8, 8, belt);
   }
 }
@@ -90,13 +84,7 @@ TEST_CASE(
         "N62 X-260 Y-200 Z-880\nN63 X-200 Y-200 Z-880\nN64 #SPLINE OFF\n"
         "N70 G04 0.05\nN80 #SYNC OUT\nN90 M30\n";
     CAPTURE(program);
-    ipo::test::FakePort port(belt);
-    port.latch_at_ = 100;
-    const Tracked r = track(program, &port);
-    if (!r.source_error.empty()) MESSAGE(r.source_error);
-    if (r.error) MESSAGE(r.error->id << ": " << r.error->message);
-    REQUIRE(r.status == ipo::Status::finished);
-    REQUIRE_FALSE(r.error);
+    const Tracked r = track_clean(program, belt);
     check_far_side(r, 10, 13, belt);
   }
 }
@@ -281,13 +269,7 @@ TEST_CASE("a tolerance ball between two PCS1 blocks near the far side keeps the 
   // A guard, not a failing-first test: no ball was found that the audit flags without its own
   // share (docs/conveyor.md: 906 scratch runs); this one reached 68.8 % of J before, 69.3 % now.
   const double belt = 300.0;  // [mm/s]
-  ipo::test::FakePort port(belt);
-  port.latch_at_ = 100;
-  const Tracked r = track(ball_program(belt, 40.0), &port);
-  if (!r.source_error.empty()) MESSAGE(r.source_error);
-  if (r.error) MESSAGE(r.error->id << ": " << r.error->message);
-  REQUIRE(r.status == ipo::Status::finished);
-  REQUIRE_FALSE(r.error);
+  const Tracked r = track_clean(ball_program(belt, 40.0), belt);
   check_far_side(r, 10, 11, belt);
 }
 
@@ -316,13 +298,7 @@ TEST_CASE("G00 in PCS1 the belt carries towards the far side keeps the joints' a
         " F60000\nN55 G04 " + c.dwell + "\nN60 G00 " + c.target +
         "\nN70 G04 0.05\nN80 #SYNC OUT\nN90 M30\n";
     CAPTURE(program);
-    ipo::test::FakePort port(c.belt);
-    port.latch_at_ = 100;
-    const Tracked r = track(program, &port);
-    if (!r.source_error.empty()) MESSAGE(r.source_error);
-    if (r.error) MESSAGE(r.error->id << ": " << r.error->message);
-    REQUIRE(r.status == ipo::Status::finished);
-    REQUIRE_FALSE(r.error);
+    const Tracked r = track_clean(program, c.belt);
     check_far_side(r, 8, 8, c.belt, c.used);
   }
 }
@@ -344,13 +320,7 @@ TEST_CASE("G93 in PCS1: the belt's shares cap the block's velocity, the block ta
   MESSAGE("block time " << *g93.block_time << " s (programmed 0.3 s)");
   CHECK(*g93.block_time >= 0.3);  // here the joints' own limits slow it more than the cap
   CHECK(g93.belt_joints);
-  ipo::test::FakePort port(belt);
-  port.latch_at_ = 100;
-  const Tracked r = track(program, &port);
-  if (!r.source_error.empty()) MESSAGE(r.source_error);
-  if (r.error) MESSAGE(r.error->id << ": " << r.error->message);
-  REQUIRE(r.status == ipo::Status::finished);
-  REQUIRE_FALSE(r.error);
+  const Tracked r = track_clean(program, belt);
   check_far_side(r, 8, 8, belt);
 }
 
@@ -370,18 +340,8 @@ TEST_CASE("an override above 100 % keeps a PCS1 block under #TRAFO ON at its 100
   const auto cycles_of = [](const Tracked& r, std::uint32_t line) {
     return std::count(r.line.begin(), r.line.end(), line);
   };
-  ipo::test::FakePort port_100(belt);
-  port_100.latch_at_ = 100;
-  const Tracked base = track(program, &port_100, picker(), "100");
-  ipo::test::FakePort port_150(belt);
-  port_150.latch_at_ = 100;
-  const Tracked raised = track(program, &port_150, picker(), "150");
-  for (const Tracked* r : {&base, &raised}) {
-    if (!r->source_error.empty()) MESSAGE(r->source_error);
-    if (r->error) MESSAGE(r->error->id << ": " << r->error->message);
-    REQUIRE(r->status == ipo::Status::finished);
-    REQUIRE_FALSE(r->error);
-  }
+  const Tracked base = track_clean(program, belt, picker(), "100");
+  const Tracked raised = track_clean(program, belt, picker(), "150");
   MESSAGE("N86 (off the belt): " << cycles_of(base, 12) << " cycles at 100 %, "
                                  << cycles_of(raised, 12) << " at 150 %; N60 (PCS1): "
                                  << cycles_of(base, 8) << ", " << cycles_of(raised, 8));

@@ -101,6 +101,23 @@ inline Tracked track(const std::string& program, FakePort* port,
   return r;
 }
 
+// `program` tracked on a belt at `belt` [mm/s] that latches at cycle 100 (track()); it must run
+// to its end without a program or a run-time error.
+inline Tracked track_clean(const std::string& program, double belt,
+                           const machines::Machine& m = picker(),
+                           const char* override_percent = nullptr) {
+  FakePort port(belt);
+  port.latch_at_ = 100;
+  Tracked r = track(program, &port, m, override_percent);
+  if (!r.source_error.empty()) MESSAGE(r.source_error);
+  if (r.error)
+    MESSAGE(r.error->id << " line " << r.error->line << " t " << r.error->t << ": "
+                        << r.error->message);
+  REQUIRE(r.status == Status::finished);
+  REQUIRE_FALSE(r.error);
+  return r;
+}
+
 // Lines first..last, tracked with the belt on top, use the joints' jerk (more than `used` of J)
 // and keep every joint's a and j (the delta's A 20000 deg/s^2, J 500000 deg/s^3): no audit
 // violation, no warning.
