@@ -142,11 +142,8 @@ void ProgramSource::reserve_belt_share(planner::Move& move) {
   // apply to a G00 in PCS1: planner/joint_limits.cpp).
   std::vector<planner::AxisLimits> rapid;
   if (move.rapid) {
-    for (const planner::AxisLimits& j : trafo_->limits.joints) {
-      planner::AxisLimits r = planner::rapid_limits(j);
-      r.v_max = std::min({j.v_rapid, j.v_reference, j.v_max});
-      rapid.push_back(r);
-    }
+    for (const planner::AxisLimits& j : trafo_->limits.joints)
+      rapid.push_back(planner::joint_rapid_limits(j));
   }
   // --- trafo-pcs1: G93 sets the path velocity by the block time (length / time, the
   // planner's programmed velocity, planner::path_limits): a lower cap makes the block longer.

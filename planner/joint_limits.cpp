@@ -64,6 +64,12 @@ bool joint_derivatives(const PathPoint& p, std::size_t axis_count, const JointMa
   return true;
 }
 
+AxisLimits joint_rapid_limits(const AxisLimits& joint) noexcept {
+  AxisLimits r = rapid_limits(joint);
+  r.v_max = std::min({joint.v_rapid, joint.v_reference, joint.v_max});
+  return r;
+}
+
 std::optional<PathLimits> path_limits(const Segment& segment, const Move& move,
                                       std::span<const AxisLimits> axes, const JointMap& inverse,
                                       std::span<const AxisLimits> joints) {
@@ -88,8 +94,7 @@ std::optional<PathLimits> path_limits(const Segment& segment, const Move& move,
   std::span<const AxisLimits> used = joints;
   if (move.rapid && joints.size() <= kMaxAxes) {
     for (std::size_t i = 0; i < joints.size(); ++i) {
-      rapid[i] = rapid_limits(joints[i]);
-      rapid[i].v_max = std::min({joints[i].v_rapid, joints[i].v_reference, joints[i].v_max});
+      rapid[i] = joint_rapid_limits(joints[i]);
       if (share == nullptr) continue;
       const AxisLimits lowered = belt_joint_limits(rapid[i], share->a[i], share->j[i]);
       if (joints[i].a_rapid > 0.0) rapid[i].a_max = rapid[i].d_max = lowered.a_max;

@@ -53,6 +53,11 @@ std::optional<DerivativeBounds> joint_bounds(const Segment& segment, const Joint
 bool joint_derivatives(const PathPoint& point, std::size_t axis_count, const JointMap& inverse,
                        std::size_t joint_count, AxisVec& d1, AxisVec& d2);
 
+/// The limits a joint runs a G00 with under a transform: the G00 slope (rapid_limits) and the
+/// velocity MIN(rapid, reference, maximum) (000 l.360). Used by path_limits and by the adapter's
+/// belt share of a G00 in PCS1 (ipo/program_kinematics.cpp), which must see the same limits.
+AxisLimits joint_rapid_limits(const AxisLimits& joint) noexcept;
+
 /// Path limits of `segment` under the axis limits AND the joint limits (the smaller of each).
 /// nullopt when IK fails somewhere on the segment.
 std::optional<PathLimits> path_limits(const Segment& segment, const Move& move,

@@ -265,3 +265,22 @@ TEST_CASE("G00 in PCS1: the belt's shares come off the G00 slope and its feed ca
   REQUIRE(plain.has_value());
   CHECK(plain->v_max == doctest::Approx(own->v_max).epsilon(1e-9));
 }
+
+TEST_CASE(
+    "joint_rapid_limits: a joint's G00 runs at MIN(rapid, reference, maximum) on its G00 slope") {
+  AxisLimits j;
+  j.v_max = 720.0;
+  j.v_reference = 600.0;
+  j.v_rapid = 650.0;
+  j.a_max = j.d_max = 20000.0;
+  j.j_max = 500000.0;
+  j.a_rapid = 15000.0;
+  j.j_rapid = 300000.0;
+  const AxisLimits r = joint_rapid_limits(j);
+  CHECK(r.v_max == 600.0);  // the reference velocity is the least of the three (000 l.360)
+  CHECK(r.a_max == 15000.0);
+  CHECK(r.d_max == 15000.0);
+  CHECK(r.j_max == 300000.0);
+  j.v_rapid = 500.0;
+  CHECK(joint_rapid_limits(j).v_max == 500.0);
+}
