@@ -47,7 +47,7 @@ void append_num(std::string& s, double v) {
 struct Loaded {
   core::SourceFile file;
   machines::Machine machine;
-  double t_cycle = 0.001;
+  double t_cycle = ipo::kDefaultCycle;
   interp::Options interp;  ///< the scenario's V.E. initial values (barrier answers)
   std::optional<scenario::Scenario> scenario;  ///< played by the channel when it has events
   /// The conveyor world (docs/conveyor.md "The world") on a machine with a conveyor axis.
@@ -763,7 +763,7 @@ LineOutcome run_line(const ProgramOptions& program, std::optional<std::uint64_t>
   }
   Loaded& in = std::get<Loaded>(loaded);
   if (run.adjust) {
-    run.adjust(in.machine, in.scenario);
+    run.adjust(in.machine, in.scenario, in.t_cycle);
     if (in.machine.conveyor_axis() != nullptr) {
       try {
         in.port =

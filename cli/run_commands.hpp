@@ -74,8 +74,10 @@ int run_report(const ReportOptions& options, std::ostream& out, std::ostream& er
 // accuracy benchmark (cli/line_commands.hpp): the pass of `time --audit`, with the world
 // adjusted before it is built and the channel shown to the caller after every cycle.
 struct LineRun {
-  /// Changes the loaded machine and scenario before the conveyor world is built (may be empty).
-  std::function<void(machines::Machine&, std::optional<scenario::Scenario>&)> adjust;
+  /// Changes the loaded machine and scenario before the conveyor world is built (may be empty);
+  /// the third argument is the run's interpolation cycle [s] (--cycle-us or the default).
+  std::function<void(machines::Machine&, std::optional<scenario::Scenario>&, double t_cycle)>
+      adjust;
   /// Wraps the conveyor world (may be empty): e.g. a belt velocity override.
   std::function<std::unique_ptr<conveyor::Port>(std::unique_ptr<conveyor::Port>)> wrap;
   /// Sees the channel after every running cycle (may be empty).

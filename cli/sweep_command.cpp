@@ -46,7 +46,7 @@ Candidate evaluate(const SweepOptions& o, double v) {
   std::ostringstream err;
   WorkspaceWatch watch;
   LineRun run;
-  run.adjust = [&](machines::Machine& m, std::optional<scenario::Scenario>& s) {
+  run.adjust = [&](machines::Machine& m, std::optional<scenario::Scenario>& s, double) {
     c.belt = set_belt_velocity(m, s, v);
     watch.configure(m);
   };

@@ -76,13 +76,12 @@ Pass pass(const TuneDelayOptions& o, std::optional<double> delay, std::ostream& 
   planner::JointMap forward;  // the machine's forward transform (none: no kinematics)
   LineRun run;
   run.audit = false;
-  run.adjust = [&](machines::Machine& m, std::optional<scenario::Scenario>& s) {
+  run.adjust = [&](machines::Machine& m, std::optional<scenario::Scenario>& s, double t) {
     machines::ConveyorAxisParams* c = conveyor_params(m);
     p.conveyor = c != nullptr && m.channel.conveyor.has_value();
     if (c == nullptr) return;
     if (delay) c->delay_time = *delay;
     p.delay = c->delay_time;
-    const double t = o.cycle_us ? static_cast<double>(*o.cycle_us) * 1e-6 : 0.001;
     if (const auto trafo = ipo::machine_trafo(m, ipo::machine_config(m, t)))
       forward = ipo::forward_map(trafo->kinematics, trafo->xyz);
     if (c->enable_filter && c->order_pos_filter > 1)

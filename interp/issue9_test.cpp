@@ -68,6 +68,12 @@ TEST_CASE("Options::conv_vel replaces every #SYNC IN's CONV_VEL, whatever its un
   auto zero = run(std::string(kProbe) + "#SYNC IN [CONV_VEL=0]\nM30\n", "laser_portal", o);
   CHECK(zero.error_id == "NC4030");
   CHECK(zero.error_line == 3);
+  // A missing or doubled CONV_VEL stays NC4507: the option replaces a value, not the word.
+  CHECK(run(std::string(kProbe) + "#SYNC IN\nM30\n", "laser_portal", o).error_id == "NC4507");
+  auto dup =
+      run(std::string(kProbe) + "#SYNC IN [CONV_VEL=6000 CONV_VEL=3000]\nM30\n", "laser_portal", o);
+  CHECK(dup.error_id == "NC4507");
+  CHECK(dup.error_line == 3);
   o.conv_vel = 1200.0;
   auto fast = run(std::string(kProbe) + "#SYNC IN [CONV_VEL=6000]\nM30\n", "laser_portal", o);
   CHECK(fast.error_id == "50587");

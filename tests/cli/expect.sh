@@ -14,18 +14,25 @@ failures=${failures:-0}
 expect() {
   local name=$1 want=$2 out_re=$3 err_re=$4
   shift 5
-  checks=$((checks + 1))
   "$ncsim" "$@" >"$work/out" 2>"$work/err" </dev/null
-  local got=$?
+  expect_status=$?
+  again "$name" "$want" "$out_re" "$err_re"
+}
+
+# again NAME STATUS PATTERN_STDOUT PATTERN_STDERR: the checks of expect on the last expect's
+# run, without running ncsim again (several checks of one long run, e.g. a sweep).
+again() {
+  local name=$1 want=$2 out_re=$3 err_re=$4
+  checks=$((checks + 1))
   local ok=1
-  [[ $got -eq $want ]] || ok=0
+  [[ $expect_status -eq $want ]] || ok=0
   if [[ -n $out_re ]] && ! grep -Eq -- "$out_re" "$work/out"; then ok=0; fi
   if [[ -n $err_re ]] && ! grep -Eq -- "$err_re" "$work/err"; then ok=0; fi
   if ((ok)); then
     echo "ok   $name"
   else
     failures=$((failures + 1))
-    echo "FAIL $name: exit $got (want $want)"
+    echo "FAIL $name: exit $expect_status (want $want)"
     sed 's/^/  stdout: /' "$work/out"
     sed 's/^/  stderr: /' "$work/err"
   fi
