@@ -93,8 +93,7 @@ double stop_then_go_bound(const MotionState& start, const PositionTarget& target
   // the go part takes at least T_r2r(|q - p_stop|) less the stop ramp's time.
   const double down = ramp_distance(speed, dyn.d_max, j);
   const double dist = shortened(std::abs(ahead + down), scale + down);
-  const double t_down = speed * j <= dyn.d_max * dyn.d_max ? 2.0 * std::sqrt(speed / j)
-                                                           : speed / dyn.d_max + dyn.d_max / j;
+  const double t_down = rest_ramp_time(speed, dyn.d_max, j);
   const double t_r2r = rest_to_rest_fastest_time(dist, dyn);
   return stop.t + t_r2r - t_down - kMargin * (stop.t + t_r2r + t_down);
 }

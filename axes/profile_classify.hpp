@@ -10,6 +10,7 @@
 // (plan_fastest keeps a candidate only when it is strictly faster); checked against the full
 // search by profile_classify_test.cpp. Nothing allocates, nothing throws.
 
+#include <cmath>
 #include <limits>
 
 #include "axes/profile.hpp"
@@ -25,6 +26,13 @@ struct StopPoint {
 
 /// The stop append_stop plans from `start` (acceleration clamp, then the ramp to v = 0).
 StopPoint stop_point(const MotionState& start, const Dynamics& dyn) noexcept;
+
+/// Duration [s] of the S-ramp between rest and v >= 0 [mm/s] under a_lim, j (both ends at
+/// a = 0; jerk::ramp_distance's ramp): 2 sqrt(v / j) without a hold, v / a_lim + a_lim / j with
+/// one; its phases' sum to rounding (1e-15), without building them.
+inline double rest_ramp_time(double v, double a_lim, double j) noexcept {
+  return v * j <= a_lim * a_lim ? 2.0 * std::sqrt(v / j) : v / a_lim + a_lim / j;
+}
 
 /// Duration [s] of the fastest rest-to-rest move over `dist` >= 0 [mm] under the real A+, A-
 /// (the closed form of profile_optimal.cpp).

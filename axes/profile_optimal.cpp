@@ -115,13 +115,9 @@ double rest_to_rest_fastest_time(double dist, const Dynamics& dyn) noexcept {
   const double j = dyn.j_max;
   const double d_cruise = dist - ramp_distance(vm, dyn.a_max, j) - ramp_distance(vm, dyn.d_max, j);
   const double t_cruise = d_cruise > 0.0 ? d_cruise / vm : 0.0;
-  // A ramp between rest and vm under the limit a (both ramps start at a = 0): 2 sqrt(vm / J)
-  // without a hold, vm / a + a / J with one; the ramps' phase sums to rounding (1e-15), without
-  // building them (issue 11, session 25: the stop-then-go bound, half the plans).
-  const auto ramp_time = [&](double a) {
-    return vm * j <= a * a ? 2.0 * std::sqrt(vm / j) : vm / a + a / j;
-  };
-  return ramp_time(dyn.a_max) + t_cruise + ramp_time(dyn.d_max);
+  // The ramps' times in closed form, without building them (issue 11, session 25: the
+  // stop-then-go bound, half the plans).
+  return rest_ramp_time(vm, dyn.a_max, j) + t_cruise + rest_ramp_time(vm, dyn.d_max, j);
 }
 
 bool plan_fastest(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,

@@ -277,10 +277,7 @@ double top_level(const Frame& f, const Limits& lim, Level& out, bool curved = tr
   // narrows the bracket: feasible, the root lies in [x, V]; infeasible, x is the new top.
   const auto top_c = std::find_if(below.begin(), below.end(), [&](double c) { return c < hi; });
   if (top_c != below.end() && (*top_c == v_zero || *top_c == f.v1) && s_hi > 0.0) {
-    const double r = g_top + 0.5 * tol;
-    const double disc = s_hi * s_hi - 2.0 * c_hi * r;
-    const double x =
-        disc >= 0.0 ? hi - 2.0 * r / (s_hi + std::sqrt(disc)) : hi - r / s_hi;  // root.hpp's step
+    const double x = detail::curve_step(hi, g_top, s_hi, c_hi, tol);
     if (x > *top_c && x < hi) {
       double s_x = no_curve;
       double c_x = no_curve;

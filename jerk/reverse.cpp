@@ -193,10 +193,7 @@ Status detail::reversal_move_trusted(const State& start, double p1, double v1, c
       // feasible one bounds the root from below (and shows the kink feasible: h(u_zero) < h(x));
       // an infeasible one becomes the top of the bracket.
       if (top.slope > 0.0) {
-        const double r0 = top.h + 0.5 * tol;
-        const double disc = top.slope * top.slope - 2.0 * top.curve * r0;
-        const double x = disc >= 0.0 ? top.level - 2.0 * r0 / (top.slope + std::sqrt(disc))
-                                     : top.level - r0 / top.slope;  // root.hpp's step
+        const double x = detail::curve_step(top.level, top.h, top.slope, top.curve, tol);
         if (x > u_zero && x < top.level) {
           const Sample step = sample(x);
           lo_known = step.h <= 0.0;

@@ -51,6 +51,22 @@ AxisLimits limits(double v, double a, double j) {
   return ax;
 }
 
+/// The same limits for each of the three axes (or joints).
+std::array<AxisLimits, 3> each_axis(double v, double a, double j) {
+  const AxisLimits ax = limits(v, a, j);
+  return {ax, ax, ax};
+}
+
+/// The effector's position with the joints at (20, 20, 20): the delta's home of these tests.
+AxisVec delta_home(const DeltaKinematics& kin) {
+  const auto r = kin.forward(Eigen::Vector3d(20, 20, 20));
+  REQUIRE(r.ok());
+  AxisVec home{};
+  for (std::size_t i = 0; i < 3; ++i)
+    home[i] = r.value[static_cast<Eigen::Index>(i)];
+  return home;
+}
+
 struct Peak {
   std::array<double, 3> v{}, a{}, j{};  // largest |joint v, a, j| over the move [deg/s^k]
 };
@@ -116,16 +132,10 @@ std::vector<Move> delta_moves(const AxisVec& home) {
 
 TEST_CASE("a delta-robot move planned in Cartesian space keeps every joint inside its limits") {
   const DeltaKinematics kin = delta();
-  const auto home_r = kin.forward(Eigen::Vector3d(20, 20, 20));
-  REQUIRE(home_r.ok());
-  AxisVec home{};
-  for (std::size_t i = 0; i < 3; ++i)
-    home[i] = home_r.value[static_cast<Eigen::Index>(i)];
+  const AxisVec home = delta_home(kin);
   // Cartesian axes fast, joints slow: the joints must be what limits the path.
-  const std::array<AxisLimits, 3> axes = {limits(5000, 5e4, 5e6), limits(5000, 5e4, 5e6),
-                                          limits(5000, 5e4, 5e6)};
-  const std::array<AxisLimits, 3> joints = {limits(40, 400, 8000), limits(40, 400, 8000),
-                                            limits(40, 400, 8000)};
+  const std::array<AxisLimits, 3> axes = each_axis(5000, 5e4, 5e6);
+  const std::array<AxisLimits, 3> joints = each_axis(40, 400, 8000);
   const JointMap ik = joint_map(kin);
   double worst = 0.0;
   for (const Move& m : delta_moves(home)) {
@@ -153,8 +163,7 @@ TEST_CASE("a delta-robot move planned in Cartesian space keeps every joint insid
 
 TEST_CASE("a segment that leaves the delta's workspace cannot be planned") {
   const DeltaKinematics kin = delta();
-  const std::array<AxisLimits, 3> lim = {limits(500, 5e3, 5e5), limits(500, 5e3, 5e5),
-                                         limits(500, 5e3, 5e5)};
+  const std::array<AxisLimits, 3> lim = each_axis(500, 5e3, 5e5);
   Move m;
   m.feed = 100.0;
   m.start[2] = -900.0;
@@ -166,15 +175,9 @@ TEST_CASE("a segment that leaves the delta's workspace cannot be planned") {
 TEST_CASE("G00 under a transform: each joint at MIN(rapid, reference, max) with its G00 slope") {
   // issue 12 (trafo-conveyor): 000 l.360 per joint; P-AXIS-00004 / 00200 as a_rapid / j_rapid.
   const DeltaKinematics kin = delta();
-  const auto home_r = kin.forward(Eigen::Vector3d(20, 20, 20));
-  REQUIRE(home_r.ok());
-  AxisVec home{};
-  for (std::size_t i = 0; i < 3; ++i)
-    home[i] = home_r.value[static_cast<Eigen::Index>(i)];
-  const std::array<AxisLimits, 3> axes = {limits(5000, 5e4, 5e6), limits(5000, 5e4, 5e6),
-                                          limits(5000, 5e4, 5e6)};
-  std::array<AxisLimits, 3> joints = {limits(40, 400, 8000), limits(40, 400, 8000),
-                                      limits(40, 400, 8000)};
+  const AxisVec home = delta_home(kin);
+  const std::array<AxisLimits, 3> axes = each_axis(5000, 5e4, 5e6);
+  std::array<AxisLimits, 3> joints = each_axis(40, 400, 8000);
   Move m = delta_moves(home)[0];  // the long diagonal stroke
   m.rapid = true;
   const Segment seg = Segment::from_move(m);
@@ -214,15 +217,9 @@ TEST_CASE("G00 in PCS1: the belt's shares come off the G00 slope and its feed ca
   // a G00 slope (a_rapid, j_rapid) replaces the feed values the share comes off it as well;
   // Move::feed carries the velocity share's cap.
   const DeltaKinematics kin = delta();
-  const auto home_r = kin.forward(Eigen::Vector3d(20, 20, 20));
-  REQUIRE(home_r.ok());
-  AxisVec home{};
-  for (std::size_t i = 0; i < 3; ++i)
-    home[i] = home_r.value[static_cast<Eigen::Index>(i)];
-  const std::array<AxisLimits, 3> axes = {limits(5000, 5e4, 5e6), limits(5000, 5e4, 5e6),
-                                          limits(5000, 5e4, 5e6)};
-  std::array<AxisLimits, 3> joints = {limits(40, 400, 8000), limits(40, 400, 8000),
-                                      limits(40, 400, 8000)};
+  const AxisVec home = delta_home(kin);
+  const std::array<AxisLimits, 3> axes = each_axis(5000, 5e4, 5e6);
+  std::array<AxisLimits, 3> joints = each_axis(40, 400, 8000);
   for (AxisLimits& j : joints) {
     j.a_rapid = 300.0;
     j.j_rapid = 6000.0;
