@@ -813,9 +813,10 @@ LineOutcome run_line(const ProgramOptions& program, std::optional<std::uint64_t>
     o.audit_violations = v.violation_count;
     if (!v.violations.empty()) {
       const ipo::Violation& x = v.violations.front();
-      o.error = "audit: t=" + num(x.t) + " s line " + block_where(interp, x.file, x.line) + " " +
-                std::string(ipo::quantity_name(x.quantity)) + " " + num(x.value) + " > " +
-                num(x.limit);
+      const std::vector<std::string> names = axis_names(in.machine);
+      o.error = "audit: t=" + num(x.t) + " s line " + block_where(interp, x.file, x.line) +
+                " axis " + (x.axis < names.size() ? names[x.axis] : std::to_string(x.axis)) + " " +
+                ipo::quantity_name(x.quantity) + " " + num(x.value) + " > " + num(x.limit);
     }
   }
   return o;

@@ -67,6 +67,7 @@ void ConveyorSync::sync_out(const interp::SyncOut&) noexcept {
 std::optional<SyncError> ConveyorSync::step(double t) noexcept {
   if (port_ == nullptr) return std::nullopt;
   if (t <= stepped_t_) return std::nullopt;  // --- workspace: once per cycle (channel_sync_error)
+  const double dt = t - stepped_t_;
   stepped_t_ = t;
   // A profile that ended in the previous cycle hands over now (its last setpoint was exact).
   // --- sync-feed: one meeting the target moving hands over in the cycle it meets it: the
@@ -96,7 +97,10 @@ std::optional<SyncError> ConveyorSync::step(double t) noexcept {
     s_ = frame_.travel(m.p);
     v_ = frame_.along_x(m.v);
     a_ = frame_.along_x(m.a);
+    v_slope_ = p_last_known_ ? frame_.along_x((m.p - p_last_) / dt) : v_;
   }
+  p_last_ = m.p;
+  p_last_known_ = true;
   const bool checked = phase_ == SyncPhase::waiting || phase_ == SyncPhase::latched ||
                        phase_ == SyncPhase::catching_up || phase_ == SyncPhase::tracking;
   if (checked) {
@@ -140,7 +144,9 @@ axes::Result ConveyorSync::start_catch_up(std::span<const axes::MotionState> sta
   auto plan = [&](double f) {
     for (std::size_t i = 0; i < n_; ++i)
       in[i].v_relative = f * u[i];
-    return catch_up_.plan(std::span(in.data(), n_), s_, v_);
+    // The forecast belt moves at the master position's slope: the deviation from it then
+    // starts without a velocity step (the reported v_ lags it while a compensated belt ramps).
+    return catch_up_.plan(std::span(in.data(), n_), s_, v_slope_);
   };
   if (!(feed_cont > 0.0) || u == planner::AxisVec{}) feed_cont = 0.0;
   axes::Result r = plan(feed_cont);

@@ -171,6 +171,12 @@ class ConveyorSync {
   bool synchronised_ = false;
   double conv_vel_ = 0.0;               ///< CONV_VEL [mm/s]
   double s_ = 0.0, v_ = 0.0, a_ = 0.0;  ///< master travel, velocity, acceleration along PCS0 X
+  /// The master position's slope over the last cycle along PCS0 X [mm/s]: the catch-up's
+  /// forecast. It differs from v_ (the filtered velocity) while a delay-compensated belt
+  /// accelerates (F-5: p = filtered p + filtered v x delay time).
+  double v_slope_ = 0.0;
+  double p_last_ = 0.0;  ///< the master position of the last step() [mm]
+  bool p_last_known_ = false;
   double waited_ = 0.0;
   CatchUp catch_up_;
   double t_catch_ = 0.0;  ///< time since the catch-up started [s] (the prepared cycle's end)

@@ -161,6 +161,28 @@ TEST_CASE(
   CHECK(tolerant.t_sync < tolerant.t_meet - 2.0 * kT);  // 1 mm: cycles before the meeting
 }
 
+TEST_CASE("the catch-up forecasts the belt at its position's slope, not its reported velocity") {
+  // Delay-time compensation during a belt ramp: the master position (filtered p + filtered v x
+  // delay time) moves faster than the filtered velocity it reports. Planned at the reported
+  // velocity, the deviation from that forecast stepped X's velocity by the difference in the
+  // catch-up's first cycle (workspace_optimised on a 620 mm/s belt: 7 mm/s, jerk 6.7e6 mm/s^3).
+  Run r;
+  r.port.v_lag_ = 10.0;
+  REQUIRE_FALSE(r.sync.sync_in(sync_in(300.0)));
+  for (int i = 0; i < 5; ++i)
+    REQUIRE_FALSE(r.cycle());
+  r.port.latches_.push_back(r.port.p_);
+  REQUIRE_FALSE(r.cycle());
+  REQUIRE(r.sync.phase() == SyncPhase::latched);
+  const std::array<axes::MotionState, 3> start{};  // at rest at MCS 0
+  const std::array<double, 3> target{50.0, 40.0, -10.0};
+  REQUIRE(r.sync.start_catch_up(start, target, 0.0) == axes::Result::ok);
+  REQUIRE_FALSE(r.cycle());
+  const double x1 = r.sync.catch_up_setpoint(0).p;
+  // From rest: the first cycle's finite-difference acceleration stays within A+ (5000).
+  CHECK(std::fabs(x1) / (kT * kT) <= 5000.0 + 1e-6);
+}
+
 TEST_CASE("50653 while synchronised: the belt more than 10 % above CONV_VEL") {
   Run r;
   r.port.v_ = 331.0;

@@ -74,7 +74,7 @@ expect "sweep --conv-vel follow on a static unit: a dynamic limit (the lag) at H
 again "sweep --conv-vel follow on a static unit: its NC9100 limit at the program's line" 0 \
   '^round 1: 625 mm/s \(37\.5 m/min\): fails \[NC9100\]: .*static_saw_fast\.nc:41:1: .*a belt at 687\.5 mm/s \(1\.1 x CONV_VEL' ''
 again "sweep --conv-vel follow on a static unit: a candidate that fails only on the audit" 0 \
-  '^round 3: 614\.062 mm/s \(36\.8438 m/min\): fails: audit: .* line 27 jerk ' ''
+  '^round 3: 614\.062 mm/s \(36\.8438 m/min\): fails: audit: .* line 27 axis X jerk ' ''
 again "sweep --conv-vel follow on a static unit: the highest velocity below its limits" 0 \
   '^sweep: highest belt velocity 603\.125 mm/s \(36\.1875 m/min\), 614\.062 mm/s fails' ''
 expect "sweep --conv-vel keep on a static unit: NC9100 at 1.1 x the programmed CONV_VEL, nothing runs" 1 \
