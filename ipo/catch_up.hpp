@@ -65,6 +65,8 @@ class CatchUp {
   double target_at(std::size_t i, double s) const noexcept;
 
   double duration() const noexcept { return duration_; }  ///< common meeting time T [s]
+  /// The forecast belt velocity along PCS0 X the plan assumed [mm/s].
+  double belt_velocity() const noexcept { return v_belt_; }
   /// The meeting time of axis i [s]: duration(), or earlier where the axis could not be
   /// stretched (then it moves with the target from there).
   double meeting(std::size_t i) const noexcept { return meet_[i]; }

@@ -160,7 +160,7 @@ bool Channel::trafo_sync_motion(bool catch_up, std::span<const axes::MotionState
     if (r != axes::Result::ok || !catch_up) return r == axes::Result::ok;
     // The meeting point is known now: cover it and the way there, then plan again.
     const CatchUp& cu = sync_->catch_up();
-    const double vb = sync_->belt_velocity();
+    const double vb = cu.belt_velocity();
     const double s_meet = sync_->travel() + vb * cu.duration();  // the forecast belt
     for (std::size_t i = 0; i < n; ++i) {
       const axes::Setpoint end = cu.setpoint(i, cu.duration(), s_meet, vb, 0.0);
