@@ -164,8 +164,10 @@ planner::Move ProgramSource::to_move(const interp::Motion& m, std::uint32_t line
     // velocity split on the axes (sync-feed, docs/conveyor.md S-5).
     if (mv.transformed)
       reserve_belt_share(mv, line);
+    else if (mv.arc)
+      mv.belt = belt_;  // its tangent turns: the symmetric limit both ways
     else
-      mv.belt = belt_;
+      split_belt(mv);  // --- belt-split
   }
   return mv;
 }
