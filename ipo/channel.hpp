@@ -350,6 +350,9 @@ class Channel {
   /// --- workspace: gives the interpolator the hold's path velocity cap (channel_workspace.cpp);
   /// false: NC9081 (the belt stood under the hold longer than ncsim's wait limit).
   bool sync_workspace_cap(const Cycle& c) noexcept;
+  /// --- belt-split: lowers that cap where a belt slower than CONV_VEL would take an axis of a
+  /// block planned against the belt (v_max + CONV_VEL) above its v_max (channel_workspace.cpp).
+  void sync_belt_cap(const Cycle& c) noexcept;
   /// --- workspace: the hold caps the path at 0 (the belt stands): the tool waits for the belt,
   /// not for the operator (no NC6301).
   bool workspace_hold_waits() const noexcept;

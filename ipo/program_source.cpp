@@ -176,8 +176,10 @@ planner::Move ProgramSource::to_move(const interp::Motion& m, std::uint32_t line
     // velocity split on the axes (sync-feed, docs/conveyor.md S-5).
     if (mv.transformed)
       reserve_belt_share(mv);
+    else if (mv.arc || mv.spline)
+      mv.belt = belt_;  // --- belt-split: their tangent turns: the symmetric limit both ways
     else
-      mv.belt = belt_;
+      split_belt(mv);  // --- belt-split
   }
   return mv;
 }

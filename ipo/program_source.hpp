@@ -228,8 +228,14 @@ class ProgramSource final : public Source {
   /// --- sync-feed: the velocity the belt takes of each interpolated axis while synchronised
   /// (ipo::pcs1_belt of the last #SYNC IN's CONV_VEL; planner::Move::belt of PCS1 blocks).
   planner::AxisVec belt_{};
+  /// --- belt-split: per interpolated axis, the belt's velocity on it at CONV_VEL, signed
+  /// (conveying component x CONV_VEL [mm/s]); 0 off the conveyor.
+  planner::AxisVec belt_dir_{};
   /// --- sync-feed: sets belt_ at #SYNC IN, clears it at #SYNC OUT (program_sync.cpp).
   void sync_belt(const interp::CommandBody& body);
+  /// --- belt-split: a PCS1 line's Move::belt: belt_ on axes it moves along the conveying
+  /// direction, -|belt_dir_| (v_max + CONV_VEL) on axes it moves against it (program_sync.cpp).
+  void split_belt(planner::Move& move) const noexcept;
   // --- indp: a block's INDP_SYN commands share one ChannelWait (program_source.cpp).
   std::optional<ChannelWait> syn_wait_;  ///< the wait after the block's INDP_SYN commands
   bool syn_interruptible_ = false;       ///< --- sync-feed: all of them INTERRUPTIBLE so far

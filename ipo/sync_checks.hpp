@@ -49,8 +49,10 @@ std::optional<SyncError> check_conv_vel(const planner::AxisLimits& axis, double 
 /// `conveying` (004 l.311-319): the belt takes |conveying| * v_conv of the axis's velocity,
 /// v_max - v_conv is left in the conveying direction and v_max + v_conv against it; the
 /// planner has one symmetric limit, so the smaller one, v_max - v_conv, applies both ways
-/// (v_reference and v_rapid alike). v_conv = 1.10 * CONV_VEL: the fastest belt 50653 lets
-/// through, so X never exceeds v_max without an error first. Accelerations and jerk are left
+/// (v_reference and v_rapid alike); --- belt-split: a line against the belt gets v_max +
+/// CONV_VEL instead (ProgramSource::split_belt, guarded by Channel::sync_belt_cap).
+/// v_conv = 1.10 * CONV_VEL: the fastest belt 50653 lets through, so X never exceeds v_max
+/// without an error first. Accelerations and jerk are left
 /// unchanged: the belt's own acceleration adds to them (docs/conveyor.md). Requires
 /// check_conv_vel() passed; a v_max that would drop to 0 or less is kept at 1 % of itself.
 planner::AxisLimits pcs1_limits(const planner::AxisLimits& axis, double conveying, double conv_vel);

@@ -192,13 +192,15 @@ TEST_CASE("INTERRUPTIBLE with INDP_ASYN is ignored: the catch-up waits for the m
 
 TEST_CASE("PCS1 velocity split: full feed in +X and -X on a 300 mm/s belt keeps X within v_max") {
   // F 60000 mm/min = 1000 mm/s = X's v_max: without the split X would command 1300 mm/s in the
-  // conveying direction. With it the block runs at 1000 - 1.1 x 300 = 670 mm/s both ways
-  // (docs/conveyor.md "velocity split").
+  // conveying direction. N50 asks for F 90000 (1500 mm/s) against it. With it the block along the
+  // belt runs at 1000 - 1.1 x 300 = 670 mm/s (S-5), the one against it (belt-split, 004 l.319) at
+  // v_max + CONV_VEL = 1300 mm/s relative, X at exactly its v_max in MCS (docs/conveyor.md
+  // "velocity split").
   ipo::test::FakePort port(300.0);
   port.latch_at_ = 1;
   const Run r =
       run("%t\nN10 G01 X0 Y0 Z0 F6000\nN20 #SYNC IN [CONV_VEL=18000]\nN30 G01 X100 Y50 F6000\n"
-          "N40 G01 X900 F60000\nN50 G01 X100 F60000\nN60 #SYNC OUT\nN70 M30\n",
+          "N40 G01 X900 F60000\nN50 G01 X100 F90000\nN60 #SYNC OUT\nN70 M30\n",
           port);
   REQUIRE(r.status == ipo::Status::finished);
   double v_plus = 0.0, v_minus = 0.0;
@@ -212,7 +214,121 @@ TEST_CASE("PCS1 velocity split: full feed in +X and -X on a 300 mm/s belt keeps 
     }
   }
   CHECK(v_plus == doctest::Approx(670.0).epsilon(1e-6));
-  CHECK(v_minus == doctest::Approx(-670.0).epsilon(1e-6));
+  CHECK(v_minus == doctest::Approx(-1300.0).epsilon(1e-6));
+}
+
+namespace {
+
+// A belt at 300 mm/s that slows to `v_end` [mm/s] at `dec` [mm/s^2] from step `from` on (dec
+// 0: a step), master = actual, no noise; latched at step 1.
+class RampPort final : public conveyor::Port {
+ public:
+  RampPort(long from, double dec, double v_end) : from_(from), dec_(dec), v_end_(v_end) {}
+  void step(double t) noexcept override {
+    ++steps_;
+    double v = 300.0, a = 0.0;
+    if (steps_ >= from_) {
+      const double dt = static_cast<double>(steps_ - from_) * kT;
+      v = dec_ > 0.0 ? std::max(v_end_, 300.0 - dec_ * dt) : v_end_;
+      a = dec_ > 0.0 && v > v_end_ ? -dec_ : 0.0;
+    }
+    p_ += v * (t - t_);
+    t_ = t;
+    state_ = conveyor::BeltState{p_, v, a};
+    if (steps_ == 1) latch_ = p_;
+  }
+  const conveyor::BeltState& actual() const noexcept override { return state_; }
+  const conveyor::BeltState& measured() const noexcept override { return state_; }
+  const conveyor::BeltState& master() const noexcept override { return state_; }
+  bool command_velocity(const interp::MoveVelocity&) noexcept override { return false; }
+  void arm_probe(const interp::ProbeArm&) noexcept override {}
+  std::optional<double> take_latch() noexcept override {
+    const std::optional<double> l = latch_;
+    latch_.reset();
+    return l;
+  }
+  void set_reduced_filter(bool) noexcept override {}
+  const std::optional<conveyor::PortError>& error() const noexcept override { return error_; }
+
+ private:
+  long from_;
+  double dec_, v_end_;
+  long steps_ = 0;
+  double p_ = 0.0, t_ = 0.0;
+  std::optional<double> latch_;
+  std::optional<conveyor::PortError> error_;
+  conveyor::BeltState state_;
+};
+
+// The split program: N50 runs 800 mm against the belt at 1300 mm/s relative (F 1500 mm/s).
+constexpr const char* kAgainst =
+    "%t\nN10 G01 X0 Y0 Z0 F6000\nN20 #SYNC IN [CONV_VEL=18000]\nN30 G01 X100 Y50 F6000\n"
+    "N40 G01 X900 F60000\nN50 G01 X100 F90000\nN60 #SYNC OUT\nN70 M30\n";
+
+Run run_port(const std::string& program, conveyor::Port& port) {
+  const machines::Machine& m = interp::test::machine("laser_portal");
+  ipo::test::ConveyorRig rig(program, m, ipo::channel_config(m, kT), &port);
+  const ipo::Channel& ch = rig.ch;
+  Run r;
+  r.status = ipo::test::run_to_end(
+      rig.ch,
+      [&] {
+        const ipo::ConveyorSync& s = *ch.conveyor_sync();
+        r.line.push_back(ch.cycle().line);
+        r.phase.push_back(s.phase());
+        r.x.push_back({ch.axes().command[0], ch.axes().command[1], ch.axes().command[2]});
+        r.offset_x.push_back(s.offset(0));
+        r.x_indp.push_back(false);
+      },
+      100'000);
+  r.error = ch.run_time_error();
+  return r;
+}
+
+// Highest |X velocity| in MCS over the run [mm/s].
+double x_peak(const Run& r) {
+  double peak = 0.0;
+  for (std::size_t k = 1; k < r.x.size(); ++k)
+    peak = std::max(peak, std::fabs(velocity(r, k)));
+  return peak;
+}
+
+}  // namespace
+
+TEST_CASE(
+    "velocity split against the belt: a belt that slows caps the path, X over v_max only by the "
+    "cap's lag (a ramp) or until braked (a step)") {
+  // belt-split (004 l.319, docs/conveyor.md "velocity split"): N50 is planned at v_max +
+  // CONV_VEL relative; the channel caps the path when the belt runs slower than CONV_VEL
+  // (Channel::sync_belt_cap). The belt slows in the middle of N50's cruise.
+  RampPort steady(1'000'000, 0.0, 300.0);
+  const Run base = run_port(kAgainst, steady);
+  REQUIRE(base.status == ipo::Status::finished);
+  long mid = 0;  // a cycle in N50's cruise
+  for (std::size_t k = 1; k < base.x.size() && mid == 0; ++k)
+    if (base.line[k] == 6 && velocity(base, k) == doctest::Approx(-1000.0).epsilon(1e-9))
+      mid = static_cast<long>(k) + 20;
+  REQUIRE(mid > 0);
+  CHECK(x_peak(base) <= 1000.0 * (1 + 1e-9));
+  struct Case {
+    double dec, v_end, bound;  // belt [mm/s^2], [mm/s]; allowed X peak [mm/s]
+  };
+  // A ramp at r: the jerk-limited replan follows the falling cap r^2 / (2 j) behind (laser
+  // portal's path jerk 200000 mm/s^3) plus one cycle's fall r T: measured 1002.97 and 1023.97
+  // mm/s. A step the path cannot follow at all: X reads v_max + CONV_VEL until it has braked.
+  const auto residual = [](double r) { return 1000.0 + r * r / (2 * 200000.0) + r * kT; };
+  for (const Case c : {Case{1000.0, 0.0, residual(1000.0)}, Case{3000.0, 150.0, residual(3000.0)},
+                       Case{0.0, 0.0, 1300.0}}) {
+    CAPTURE(c.dec);
+    CAPTURE(c.v_end);
+    RampPort port(mid, c.dec, c.v_end);
+    const Run r = run_port(kAgainst, port);
+    REQUIRE(r.status == ipo::Status::finished);
+    CHECK_FALSE(r.error);
+    MESSAGE("belt " << c.dec << " mm/s^2 to " << c.v_end << " mm/s: X peak " << x_peak(r));
+    CHECK(x_peak(r) <= c.bound * (1 + 1e-9));
+    CHECK(r.x.back()[0] - r.offset_x.back() == doctest::Approx(100.0));
+  }
 }
 
 TEST_CASE(

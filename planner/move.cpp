@@ -142,7 +142,8 @@ void validate(std::span<const AxisLimits> limits) {
 
 // --- sync-feed
 AxisLimits belt_limits(const AxisLimits& axis, double taken) noexcept {
-  if (!(taken > 0.0)) return axis;
+  if (taken == 0.0 || !std::isfinite(taken)) return axis;
+  // --- belt-split: taken < 0 (against the belt) raises the velocities by |taken|.
   const auto left = [taken](double v) { return std::max(v - taken, 0.01 * v); };
   AxisLimits out = axis;
   out.v_max = left(axis.v_max);

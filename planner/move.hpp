@@ -114,6 +114,7 @@ struct Move {
   /// --- sync-feed: while synchronised (PCS1), the velocity the conveyor takes of each axis
   /// [mm/s]: the block is planned with v_max, v_reference and v_rapid lowered by it
   /// (belt_limits; 004 l.311-319, docs/conveyor.md "velocity split"); all 0 off the conveyor.
+  /// --- belt-split: negative on an axis the block moves against the belt (raised by it).
   AxisVec belt{};
   /// --- belt-jerk: under #TRAFO ON while synchronised, the acceleration and jerk the conveyor
   /// takes of each joint: the block is planned with the joints' limits lowered by them
@@ -139,9 +140,10 @@ struct AxisLimits {
 /// The limits a G00 block is planned with: a_rapid / j_rapid where set, else the feed values.
 AxisLimits rapid_limits(const AxisLimits& axis) noexcept;
 
-/// --- sync-feed: the limits of an axis of which a conveyor takes `taken` >= 0 [mm/s] (004
+/// --- sync-feed: the limits of an axis of which a conveyor takes `taken` [mm/s] (004
 /// l.311-319): v_max, v_reference and v_rapid lowered by it, each kept at >= 1 % of itself;
-/// accelerations and jerk unchanged. taken 0: the axis as it is.
+/// accelerations and jerk unchanged. taken 0: the axis as it is. --- belt-split: taken < 0, a
+/// block against the conveying direction, raises them by |taken| (v_max + v_conv).
 AxisLimits belt_limits(const AxisLimits& axis, double taken) noexcept;
 
 /// --- belt-jerk: the limits of a joint of which a conveyor takes `a` >= 0 of the acceleration

@@ -339,6 +339,12 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
       blend_move.block_time.reset();
       blend_move.end_feed.reset();
       blend_move.feed = std::min(in_ps.limits.v_programmed, out_limits.v_programmed);
+      // --- belt-split: the ball gets the lower of its neighbours' belt limits per axis. Two
+      // lines against the belt keep the raised one: the line-line ball's hodograph is a
+      // non-negative combination of the two tangents (blend.hpp, k <= 0.71), so its axis
+      // velocity keeps their sign (docs/conveyor.md "velocity split").
+      for (std::size_t i = 0; i < blend_move.belt.size(); ++i)
+        blend_move.belt[i] = std::max(p.move.belt[i], move.belt[i]);
       PreparedSegment blend_ps = make(ball->curve, blend_move, true);
       if (in_path.length() >= kMinLength)
         emit_joint(std::move(in_ps), p.move, ball->curve, blend_ps.limits.v_max, out);
