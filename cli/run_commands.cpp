@@ -429,7 +429,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
     json_string(out, stop_reason(failed, channel));
     out << "}\n";
   } else {
-    out << in.file.name() << ": " << (failed ? "stopped after " : "") << num(r.total) << " s ("
+    out << in.file.name() << ": " << (failed ? "stopped after " : "") << seconds(r.total) << " s ("
         << r.cycles << " cycles of " << num(in.t_cycle * 1e3) << " ms), path " << human(r.distance)
         << " mm; rapid " << human(r.split.rapid) << " s, feed " << human(r.split.feed)
         << " s, dwell " << human(r.split.dwell) << " s, exact stop " << human(r.split.exact_stop)
@@ -440,7 +440,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
     spooled = !cycles || rows->finish(cycles->finish(), out);  // --- line
     if (const auto& stop = channel.scenario_stop())
       out << "stop: " << scenario::to_string(*stop) << " (scenario '" << in.scenario->file
-          << "') at " << num(r.total) << " s\n";
+          << "') at " << seconds(r.total) << " s\n";
   }
   if (!spooled) {  // --- line
     err << "ncsim: error: cannot read back the workpiece rows' temporary file\n";
