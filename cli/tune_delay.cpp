@@ -14,7 +14,6 @@
 #include "cli/run_commands.hpp"
 #include "ipo/program_source.hpp"
 #include "ipo/synchro_lag.hpp"
-#include "ipo/trafo.hpp"
 
 namespace ncsim::cli {
 namespace {
@@ -73,7 +72,6 @@ struct Pass {
 Pass pass(const TuneDelayOptions& o, std::optional<double> delay, std::ostream& err) {
   Pass p;
   double sum = 0.0, sum2 = 0.0, v_sum = 0.0, c2 = 0.0, p2 = 0.0;
-  planner::JointMap forward;  // the machine's forward transform (none: no kinematics)
   LineRun run;
   run.audit = false;
   run.adjust = [&](machines::Machine& m, std::optional<scenario::Scenario>& s, double t) {
@@ -82,8 +80,6 @@ Pass pass(const TuneDelayOptions& o, std::optional<double> delay, std::ostream& 
     if (c == nullptr) return;
     if (delay) c->delay_time = *delay;
     p.delay = c->delay_time;
-    if (const auto trafo = ipo::machine_trafo(m, ipo::machine_config(m, t)))
-      forward = ipo::forward_map(trafo->kinematics, trafo->xyz);
     if (c->enable_filter && c->order_pos_filter > 1)
       p.filter_delay = (c->order_pos_filter - 1) * t / 2.0;
     if (s && s->conveyor) p.dead_time = s->conveyor->dead_time;
@@ -95,16 +91,7 @@ Pass pass(const TuneDelayOptions& o, std::optional<double> delay, std::ostream& 
     contour_cycle(ch, *sync, p.contour, c2, p2);
     const ipo::MasterDisplay d = ch.master_display();
     if (d.v_master_comp == 0.0) return;  // a standing belt tells nothing about the delay
-    double lag = d.synchro_lag;
-    if (ch.transformed()) {  // the joints are no X/Y/Z: the TCP against the workpiece
-      planner::AxisVec tcp{};
-      for (std::size_t i = 0; i < ch.axis_count(); ++i)
-        tcp[i] = ch.tcp()[i].p;
-      const auto l = ipo::tcp_lag(*sync, std::span<const double>(tcp.data(), ch.axis_count()),
-                                  ch.axes().actual, forward);
-      if (!l) return;
-      lag = *l;
-    }
+    const double lag = d.synchro_lag;    // under #TRAFO ON the TCP's (ipo::cycle_lag)
     LagStats& l = p.lag;
     l.min = l.cycles == 0 ? lag : std::min(l.min, lag);
     l.max = l.cycles == 0 ? lag : std::max(l.max, lag);

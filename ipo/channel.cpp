@@ -50,6 +50,7 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
   // --- trafo: the joint stage maps the TCP to the machine axes under #TRAFO ON.
   if (config.path.joints) stage_.emplace(config.path.joints->inverse, config.axes.size());
   conveyor_axis_ = config.conveyor_axis;  // what #MACHINE DATA changes (ipo/machine_data.hpp)
+  forward_ = std::move(config.forward);   // --- trafo: synchro_lag under #TRAFO ON
   if (config.axes.size() != ipo_.axis_count())
     throw std::invalid_argument("ipo::Channel: " + std::to_string(config.axes.size()) +
                                 " channel axes for " + std::to_string(ipo_.axis_count()) +

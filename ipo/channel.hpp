@@ -141,6 +141,9 @@ struct ChannelConfig {
   /// The conveyor axis's conv_sync.* as loaded: what `#MACHINE DATA` changes at run time
   /// (ipo/machine_data.hpp); set with `conveyor` when the machine has a conveyor axis.
   std::optional<machines::ConveyorAxisParams> conveyor_axis;
+  /// --- trafo: the forward transform of the machine's kinematic (ipo::forward_map; empty
+  /// without one): synchro_lag under #TRAFO ON (Channel::master_display, ipo::cycle_lag).
+  planner::JointMap forward;
 };
 
 /// The channel configuration of `machine` (docs/ipo.md "The channel loop"): the interpolator
@@ -471,6 +474,7 @@ class Channel {
   JointSetpoint joints_{};
   /// The TCP setpoint of the last cycle under #TRAFO ON (PCS1 offset, catch-up included).
   std::array<axes::Setpoint, planner::kMaxAxes> tcp_{};
+  planner::JointMap forward_;                  ///< ChannelConfig::forward
   std::optional<RunTimeError> trafo_warning_;  ///< the first NC6210 of the run
   /// The joint positions of the two cycles before (q at index - 1, index - 2) and how many of
   /// them are of consecutive transformed cycles: NC6210 checks the setpoints' differences.

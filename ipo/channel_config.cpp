@@ -14,7 +14,10 @@ ChannelConfig channel_config(const machines::Machine& machine, double t_cycle) {
   ChannelConfig c;
   c.path = machine_config(machine, t_cycle);
   // --- trafo: with a kinematic, transformed Moves are limited by the joints (ipo/trafo.hpp).
-  if (auto trafo = machine_trafo(machine, c.path)) c.path.joints = std::move(trafo->limits);
+  if (auto trafo = machine_trafo(machine, c.path)) {
+    c.forward = forward_map(trafo->kinematics, trafo->xyz);
+    c.path.joints = std::move(trafo->limits);
+  }
   for (const std::uint8_t i : interpolated_axes(machine)) {
     const machines::AxisParams& axis = machine.axes[i];
     ChannelAxis a;

@@ -26,6 +26,7 @@
 // Invariants: pure; never throws.
 
 #include <Eigen/Core>
+#include <array>
 #include <optional>
 #include <span>
 
@@ -53,6 +54,16 @@ std::optional<double> axes_lag(const ConveyorSync& sync, std::span<const double>
 std::optional<double> tcp_lag(const ConveyorSync& sync, std::span<const double> tcp,
                               const planner::AxisVec& joints,
                               const planner::JointMap& forward) noexcept;
+
+/// synchro_lag of a channel cycle, the one choice the channel's display (Channel::master_display),
+/// the report and tune-delay take it from: axes_lag() of the axes' `command` and `actual`
+/// positions; under #TRAFO ON (`transformed`) tcp_lag() of the commanded TCP `tcp`
+/// (Channel::tcp()) and the joints' actual positions `actual` with `forward` (nullopt where it
+/// is empty: a caller without the machine's transform).
+std::optional<double> cycle_lag(const ConveyorSync& sync, std::span<const double> command,
+                                std::span<const double> actual, bool transformed,
+                                const std::array<axes::Setpoint, planner::kMaxAxes>& tcp,
+                                const planner::JointMap& forward) noexcept;
 
 /// The real workpiece's travel [mm] equivalent to the frame's travel (the frame's s when the NC
 /// were exact): the real belt since the real front edge passed the sensor, plus the sensor's

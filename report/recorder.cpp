@@ -82,12 +82,15 @@ void Recorder::conveyor_values() {
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   v[3] = d.valid ? d.current_pos_master : nan;
   v[4] = d.valid ? d.pos_master_comp : nan;
-  // synchro_lag against the real workpiece (ipo/synchro_lag.hpp), none under #TRAFO ON.
+  // synchro_lag against the real workpiece (ipo/synchro_lag.hpp); under #TRAFO ON the TCP's
+  // (set_tcp(), set_forward()).
   v[5] = nan;
   if (axes_state_ != nullptr) {
     const std::size_t n = names_.size();
-    if (const auto lag = ipo::axes_lag(*conveyor_, {axes_state_->command.data(), n},
-                                       {axes_state_->actual.data(), n}, transformed_))
+    static const std::array<axes::Setpoint, planner::kMaxAxes> kNoTcp{};
+    if (const auto lag = ipo::cycle_lag(*conveyor_, {axes_state_->command.data(), n},
+                                        {axes_state_->actual.data(), n}, transformed_,
+                                        tcp_ != nullptr ? *tcp_ : kNoTcp, forward_))
       v[5] = *lag;
   }
   // The phases of docs/report.md "Conveyor": synchronised from the catch-up's P-CHAN-00365
