@@ -40,8 +40,7 @@ struct Run {
 
 // laser_portal: X v_max 1000 mm/s, A 10000 mm/s^2; the belt at 300 mm/s. `override_percent`:
 // a path override from t = 0 on a REDUCED_ABOVE_100 channel (a scenario event); null: none.
-Run run(const std::string& program, ipo::test::FakePort& port,
-        const char* override_percent = nullptr) {
+Run run(const std::string& program, conveyor::Port& port, const char* override_percent = nullptr) {
   const machines::Machine& m = interp::test::machine("laser_portal");
   ipo::ChannelConfig cfg = ipo::channel_config(m, kT);
   // The scenario outlives the player that plays it (scenario::Player keeps a reference).
@@ -265,26 +264,6 @@ constexpr const char* kAgainst =
     "%t\nN10 G01 X0 Y0 Z0 F6000\nN20 #SYNC IN [CONV_VEL=18000]\nN30 G01 X100 Y50 F6000\n"
     "N40 G01 X900 F60000\nN50 G01 X100 F90000\nN60 #SYNC OUT\nN70 M30\n";
 
-Run run_port(const std::string& program, conveyor::Port& port) {
-  const machines::Machine& m = interp::test::machine("laser_portal");
-  ipo::test::ConveyorRig rig(program, m, ipo::channel_config(m, kT), &port);
-  const ipo::Channel& ch = rig.ch;
-  Run r;
-  r.status = ipo::test::run_to_end(
-      rig.ch,
-      [&] {
-        const ipo::ConveyorSync& s = *ch.conveyor_sync();
-        r.line.push_back(ch.cycle().line);
-        r.phase.push_back(s.phase());
-        r.x.push_back({ch.axes().command[0], ch.axes().command[1], ch.axes().command[2]});
-        r.offset_x.push_back(s.offset(0));
-        r.x_indp.push_back(false);
-      },
-      100'000);
-  r.error = ch.run_time_error();
-  return r;
-}
-
 // Highest |X velocity| in MCS over the run [mm/s].
 double x_peak(const Run& r) {
   double peak = 0.0;
@@ -302,7 +281,7 @@ TEST_CASE(
   // CONV_VEL relative; the channel caps the path when the belt runs slower than CONV_VEL
   // (Channel::sync_belt_cap). The belt slows in the middle of N50's cruise.
   RampPort steady(1'000'000, 0.0, 300.0);
-  const Run base = run_port(kAgainst, steady);
+  const Run base = run(kAgainst, steady);
   REQUIRE(base.status == ipo::Status::finished);
   long mid = 0;  // a cycle in N50's cruise
   for (std::size_t k = 1; k < base.x.size() && mid == 0; ++k)
@@ -322,7 +301,7 @@ TEST_CASE(
     CAPTURE(c.dec);
     CAPTURE(c.v_end);
     RampPort port(mid, c.dec, c.v_end);
-    const Run r = run_port(kAgainst, port);
+    const Run r = run(kAgainst, port);
     REQUIRE(r.status == ipo::Status::finished);
     CHECK_FALSE(r.error);
     MESSAGE("belt " << c.dec << " mm/s^2 to " << c.v_end << " mm/s: X peak " << x_peak(r));
