@@ -49,14 +49,15 @@ std::optional<double> tcp_lag(const ConveyorSync& sync, std::span<const double> 
 
 std::optional<double> cycle_lag(const ConveyorSync& sync, std::span<const double> command,
                                 std::span<const double> actual, bool transformed,
-                                const std::array<axes::Setpoint, planner::kMaxAxes>& tcp,
+                                const std::array<axes::Setpoint, planner::kMaxAxes>* tcp,
                                 const planner::JointMap& forward) noexcept {
   if (!transformed) return axes_lag(sync, command, actual, false);
-  const std::size_t n = std::min({command.size(), actual.size(), tcp.size()});
+  if (tcp == nullptr) return std::nullopt;
+  const std::size_t n = std::min({command.size(), actual.size(), tcp->size()});
   planner::AxisVec x{};
   planner::AxisVec q{};
   for (std::size_t i = 0; i < n; ++i) {
-    x[i] = tcp[i].p;
+    x[i] = (*tcp)[i].p;
     q[i] = actual[i];
   }
   return tcp_lag(sync, std::span<const double>(x.data(), n), q, forward);

@@ -58,11 +58,11 @@ std::optional<double> tcp_lag(const ConveyorSync& sync, std::span<const double> 
 /// synchro_lag of a channel cycle, the one choice the channel's display (Channel::master_display),
 /// the report and tune-delay take it from: axes_lag() of the axes' `command` and `actual`
 /// positions; under #TRAFO ON (`transformed`) tcp_lag() of the commanded TCP `tcp`
-/// (Channel::tcp()) and the joints' actual positions `actual` with `forward` (nullopt where it
-/// is empty: a caller without the machine's transform).
+/// (Channel::tcp()) and the joints' actual positions `actual` with `forward` (nullopt where
+/// `tcp` is null or `forward` empty: a caller without the TCP or the machine's transform).
 std::optional<double> cycle_lag(const ConveyorSync& sync, std::span<const double> command,
                                 std::span<const double> actual, bool transformed,
-                                const std::array<axes::Setpoint, planner::kMaxAxes>& tcp,
+                                const std::array<axes::Setpoint, planner::kMaxAxes>* tcp,
                                 const planner::JointMap& forward) noexcept;
 
 /// The real workpiece's travel [mm] equivalent to the frame's travel (the frame's s when the NC

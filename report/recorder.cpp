@@ -85,12 +85,11 @@ void Recorder::conveyor_values() {
   // synchro_lag against the real workpiece (ipo/synchro_lag.hpp); under #TRAFO ON the TCP's
   // (set_tcp(), set_forward()).
   v[5] = nan;
-  if (axes_state_ != nullptr && (!transformed_ || tcp_ != nullptr)) {
+  if (axes_state_ != nullptr) {
     const std::size_t n = names_.size();
-    static const std::array<axes::Setpoint, planner::kMaxAxes> kNoTcp{};  // untransformed
-    if (const auto lag = ipo::cycle_lag(*conveyor_, {axes_state_->command.data(), n},
-                                        {axes_state_->actual.data(), n}, transformed_,
-                                        tcp_ != nullptr ? *tcp_ : kNoTcp, forward_))
+    if (const auto lag =
+            ipo::cycle_lag(*conveyor_, {axes_state_->command.data(), n},
+                           {axes_state_->actual.data(), n}, transformed_, tcp_, forward_))
       v[5] = *lag;
   }
   // The phases of docs/report.md "Conveyor": synchronised from the catch-up's P-CHAN-00365
