@@ -67,6 +67,7 @@ void ConveyorSync::sync_out(const interp::SyncOut&) noexcept {
 std::optional<SyncError> ConveyorSync::step(double t) noexcept {
   if (port_ == nullptr) return std::nullopt;
   if (t <= stepped_t_) return std::nullopt;  // --- workspace: once per cycle (channel_sync_error)
+  const bool first = stepped_t_ < 0.0;       // no master position of a step before
   const double dt = t - stepped_t_;
   stepped_t_ = t;
   // A profile that ended in the previous cycle hands over now (its last setpoint was exact).
@@ -97,10 +98,9 @@ std::optional<SyncError> ConveyorSync::step(double t) noexcept {
     s_ = frame_.travel(m.p);
     v_ = frame_.along_x(m.v);
     a_ = frame_.along_x(m.a);
-    v_slope_ = p_last_known_ ? frame_.along_x((m.p - p_last_) / dt) : v_;
+    v_slope_ = first ? v_ : frame_.along_x((m.p - p_last_) / dt);
   }
   p_last_ = m.p;
-  p_last_known_ = true;
   const bool checked = phase_ == SyncPhase::waiting || phase_ == SyncPhase::latched ||
                        phase_ == SyncPhase::catching_up || phase_ == SyncPhase::tracking;
   if (checked) {

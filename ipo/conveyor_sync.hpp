@@ -175,8 +175,7 @@ class ConveyorSync {
   /// forecast. It differs from v_ (the filtered velocity) while a delay-compensated belt
   /// accelerates (F-5: p = filtered p + filtered v x delay time).
   double v_slope_ = 0.0;
-  double p_last_ = 0.0;  ///< the master position of the last step() [mm]
-  bool p_last_known_ = false;
+  double p_last_ = 0.0;  ///< the master position of the last step() [mm] (stepped_t_ >= 0)
   double waited_ = 0.0;
   CatchUp catch_up_;
   double t_catch_ = 0.0;  ///< time since the catch-up started [s] (the prepared cycle's end)
