@@ -13,6 +13,7 @@
 #include <limits>
 
 #include "ipo/channel.hpp"
+#include "ipo/sync_checks.hpp"
 
 namespace ncsim::ipo {
 
@@ -83,6 +84,16 @@ void Channel::sync_belt_cap(const Cycle& c) noexcept {
   constexpr double kLeadMax = 0.05;    // [s] longest forecast
   constexpr double kCycleShare = 0.5;  // [1] the cap acts on the whole next cycle: its middle
   if (static_unit_ || sync_->phase() != SyncPhase::tracking) return;
+  // Every block fits a belt between CONV_VEL (a line against it was planned for that) and
+  // 1.10 CONV_VEL (the symmetric split's, 50653's bound): with the belt there over the longest
+  // forecast, no cap can bind and the path is not evaluated (the per-cycle common case).
+  const double u = sync_->belt_velocity();
+  const double du = std::fabs(sync_->belt_acceleration()) * kLeadMax;
+  const double conv_vel = sync_->conv_vel();
+  // (A belt at CONV_VEL measured a rounding below it caps nothing either: kSlack below.)
+  if (u - du >= conv_vel * (1.0 - kBeltVelocityRounding) &&
+      u + du <= kBeltVelocityTolerance * conv_vel)
+    return;
   const planner::PlannedSegment* e = ipo_.active_entry();
   if (c.activity != Activity::motion || e == nullptr || c.programmed == nullptr ||
       c.programmed->transformed)

@@ -134,8 +134,9 @@ class ConveyorSync {
   /// Within P-CHAN-00365 of the target since the catch-up (docs/conveyor.md).
   bool synchronised() const noexcept { return synchronised_; }
   const SyncFrame& frame() const noexcept { return frame_; }
-  double travel() const noexcept { return s_; }         ///< master travel since the latch [mm]
-  double belt_velocity() const noexcept { return v_; }  ///< along PCS0 X [mm/s] (--- trafo)
+  double travel() const noexcept { return s_; }             ///< master travel since the latch [mm]
+  double belt_velocity() const noexcept { return v_; }      ///< along PCS0 X [mm/s] (--- trafo)
+  double belt_acceleration() const noexcept { return a_; }  ///< along PCS0 X [mm/s^2]
   /// Time spent waiting for the measured value so far [s].
   double waited() const noexcept { return waited_; }
   /// The workspace (004 §2.1.3, §4.4) for the commanded TCP `p_mcs` [mm], only while
