@@ -248,11 +248,19 @@ void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names,
     os << "audit: violation t=" << num(x.t) << " s line " << block_where(interp, x.file, x.line)
        << " axis " << (x.axis < names.size() ? names[x.axis] : std::to_string(x.axis)) << ' '
        << ipo::quantity_name(x.quantity) << " (" << ipo::method_name(x.method) << ") "
-       << num(x.value) << " > " << num(x.limit) << '\n';
+       << num(x.value) << " > " << num(x.limit);
+    if (x.path >= 0.0)  // --- conveyor: the axis moved with the belt (ipo/audit.hpp)
+      os << " (" << num(x.path) << " without the belt's share)";
+    os << '\n';
   }
   if (v.violation_count > v.violations.size()) {
     os << "audit: ... " << (v.violation_count - v.violations.size()) << " more violations\n";
   }
+  if (v.belt_count > 0)  // --- conveyor: 004 l.454
+    os << "audit: " << v.belt_count
+       << " of the violations are the belt's own acceleration or jerk on top of a path within "
+          "the axis's limits (004 l.454: \"dynamic overshoots ... caused by fluctuations in "
+          "conveyor belt velocity\"; docs/conveyor.md \"The belt's own dynamics\")\n";
   os << "audit: " << (v.ok() ? "ok" : std::to_string(v.violation_count) + " violations") << '\n';
 }
 
@@ -379,6 +387,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
   src.answer_positions_from(&channel.axes().command);  // --- planner: position barriers
   playing.attach(channel, in.port.get());
   if (audit) audit->set_setpoints(&channel.setpoints());  // axis limits on the setpoints
+  if (audit) audit->set_belt(&channel.belt_share());      // --- conveyor: the belt's share
   const bool channel_plays = playing.player != nullptr;
   ipo::TimeCounter counter(channel.t_cycle(), on_block);
   // --- line: the time per workpiece on a channel that tracks a conveyor (cli/workpiece_report)
@@ -646,7 +655,9 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   src.answer_positions_from(&channel.axes().command);  // --- planner: position barriers
   playing.attach(channel, in.port.get());
   if (audit) audit->set_setpoints(&channel.setpoints());  // axis limits on the setpoints
+  if (audit) audit->set_belt(&channel.belt_share());      // --- conveyor: the belt's share
   if (recorder) recorder->set_setpoints(&channel.setpoints());
+  if (recorder) recorder->set_belt(&channel.belt_share());
   if (recorder) recorder->set_tcp(&channel.tcp());
   if (recorder) recorder->set_conveyor(channel.conveyor_sync());
   // The conveyor display variables (seed 004 §6; docs/conveyor.md) with --detail on a channel
@@ -789,6 +800,7 @@ LineOutcome run_line(const ProgramOptions& program, std::optional<std::uint64_t>
   ipo::Channel channel(std::move(cfg), src, audit.get());
   playing.attach(channel, in.port.get());
   if (audit) audit->set_setpoints(&channel.setpoints());
+  if (audit) audit->set_belt(&channel.belt_share());  // --- conveyor: the belt's share
   ipo::Status status;
   while ((status = channel.step()) == ipo::Status::running) {
     if (audit && channel.transformed()) audit->on_joints(channel.cycle(), channel.joints());

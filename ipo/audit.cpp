@@ -40,6 +40,8 @@ Audit::Audit(std::span<const planner::AxisLimits> axes, double t_cycle, const Ax
     x_[i].fill(start[i]);
   dv_.assign(limits_.size(), {0.0, 0.0, 0.0});
   da_.assign(limits_.size(), {0.0, 0.0, 0.0});
+  constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
+  b_.assign(limits_.size(), {kNone, kNone, kNone, kNone});
 }
 
 void Audit::violate(Quantity q, Method m, std::size_t axis, double t, std::uint32_t line,
@@ -51,9 +53,13 @@ void Audit::violate(Quantity q, Method m, std::size_t axis, double t, std::uint3
 }
 
 void Audit::check(Quantity q, Method m, std::size_t axis, const Cycle& c, double value,
-                  double limit, bool joint) {
-  if (!(value <= limit * (1.0 + kRelative)))
-    violate(q, m, axis, c.t, c.line, c.file, value, limit, joint);
+                  double limit, bool joint, double path) {
+  if (value <= limit * (1.0 + kRelative)) return;
+  violate(q, m, axis, c.t, c.line, c.file, value, limit, joint);
+  if (path < 0.0) return;
+  if (verdict_.violations.size() == verdict_.violation_count)  // listed: the path share with it
+    verdict_.violations.back().path = path;
+  if (path <= limit * (1.0 + kRelative)) ++verdict_.belt_count;  // the belt's own (004 l.454)
 }
 
 void Audit::on_joint(const Joint& jt) {
@@ -121,8 +127,10 @@ void Audit::check_motion(std::size_t i, bool joint, const Stencil& st, AxisAudit
   aa.a_closed = std::max(aa.a_closed, a);
   check(Quantity::velocity, Method::closed_form, i, c, v, aa.v_limit, joint);
   const bool speeding_up = a_signed * v_signed >= 0.0;
+  // --- conveyor: the path's share of the acceleration (the setpoint's less the belt's).
+  const bool belt_now = st.belt != nullptr && std::isfinite((*st.belt)[0]);
   check(Quantity::acceleration, Method::closed_form, i, c, a, speeding_up ? l.a_max : l.d_max,
-        joint);
+        joint, belt_now ? std::abs(a_signed - st.a_belt) : -1.0);
   if (st.jerk_closed) {
     ++aa.jerk_cycles;
     aa.j_closed = std::max(aa.j_closed, j);
@@ -139,13 +147,24 @@ void Audit::check_motion(std::size_t i, bool joint, const Stencil& st, AxisAudit
   check(Quantity::velocity, Method::finite_difference, i, c, vd, aa.v_limit + 2.0 * noise / t_,
         joint);
   if (st.velocity_only) return;
+  // --- conveyor: the same differences of the positions less the belt's share, where the axis
+  // moved with the belt at every position of the stencil (else -1: not split).
+  std::array<double, 4> p{-1.0, -1.0, -1.0, -1.0};
+  if (st.belt != nullptr) {
+    const std::array<double, 4>& b = *st.belt;
+    for (std::size_t k = 0; k < 4; ++k)
+      p[k] = x[k] - b[k];  // NaN where the axis did not move with the belt
+  }
+  const auto split = [](double d) { return std::isfinite(d) ? std::abs(d) : -1.0; };
+  const double ap = st.belt ? split((p[0] - 2.0 * p[1] + p[2]) / t2) : -1.0;
+  const double jp = st.belt ? split((p[0] - 3.0 * p[1] + 3.0 * p[2] - p[3]) / t3) : -1.0;
   if (st.dv2 == 0.0) aa.a_diff = std::max(aa.a_diff, ad);
   check(Quantity::acceleration, Method::finite_difference, i, c, ad,
-        a_fd + st.dv2 / t_ + 4.0 * noise / t2, joint);
+        a_fd + st.dv2 / t_ + 4.0 * noise / t2, joint, ap);
   if (st.jerk_fd) {
     if (st.dv3 == 0.0 && st.da3 == 0.0) aa.j_diff = std::max(aa.j_diff, jd);
     check(Quantity::jerk, Method::finite_difference, i, c, jd,
-          j_fd + st.da3 / t_ + st.dv3 / t2 + 8.0 * noise / t3, joint);
+          j_fd + st.da3 / t_ + st.dv3 / t2 + 8.0 * noise / t3, joint, jp);
   }
 }
 
@@ -168,6 +187,10 @@ void Audit::on_cycle(const Cycle& c) {
   for (std::size_t i = 0; i < limits_.size() && !trafo; ++i) {
     // --- indp: an INDP motion (Cycle::independent) keeps the axis's G01 limits, jerk-limited.
     const bool indp = ((c.independent >> i) & 1u) != 0;
+    // --- conveyor: the belt's share of this axis (NaN when it does not move with the belt).
+    const bool belt = belt_ != nullptr && belt_->following && !indp;
+    b_[i] = {belt ? belt_->share[i] * belt_->travel : std::numeric_limits<double>::quiet_NaN(),
+             b_[i][0], b_[i][1], b_[i][2]};
     Stencil st;
     st.feed = limits_[i];
     st.rapid = c.rapid && !indp;
@@ -177,6 +200,10 @@ void Audit::on_cycle(const Cycle& c) {
     st.dv2 = dv_[i][0] + dv_[i][1];
     st.dv3 = st.dv2 + dv_[i][2];
     st.da3 = da_[i][0] + da_[i][1] + da_[i][2];
+    if (belt_ != nullptr) {
+      st.belt = &b_[i];
+      st.a_belt = belt ? belt_->share[i] * belt_->acceleration : 0.0;
+    }
     if (set_ != nullptr) {
       const axes::Setpoint& sp = (*set_)[i];
       check_motion(i, false, st, verdict_.axes[i], x_[i], c, sp.p, sp.v, sp.a, sp.j);
@@ -184,6 +211,9 @@ void Audit::on_cycle(const Cycle& c) {
       check_motion(i, false, st, verdict_.axes[i], x_[i], c, c.x[i], c.v[i], c.a[i], c.j[i]);
     }
   }
+  if (trafo)  // --- conveyor: the belt's share of the axes starts afresh after #TRAFO OFF
+    for (auto& b : b_)
+      b.fill(std::numeric_limits<double>::quiet_NaN());
   for (std::size_t i = 0; i < limits_.size(); ++i) {
     dv_[i] = {0.0, dv_[i][0], dv_[i][1]};
     da_[i] = {0.0, da_[i][0], da_[i][1]};

@@ -37,6 +37,14 @@
 //    are left to the joints (on_joints()), the contour is checked on the TCP. When the joints
 //    are the machine axes (set_joint_limits(..., true): the channel), the two share one position
 //    history at a switch, so the finite differences run on across #TRAFO ON / OFF.
+//  - conveyor (set_belt()): while an axis moves with the belt (catch-up, PCS1, after #SYNC OUT)
+//    its setpoint is the path's share plus the belt's (share x master travel). Neither the
+//    manual nor ncsim reserves acceleration or jerk for the belt's own changes (004 l.454:
+//    "dynamic overshoots ... caused by fluctuations in conveyor belt velocity"); an axis's
+//    acceleration or jerk beyond its limit stays a violation, and where the axis followed the
+//    belt over the whole stencil the violation also carries the value less the belt's share
+//    (Violation::path): within the limit, the excess is the belt's own (Verdict::belt_count).
+//    Velocity is not split: the planner reserves the belt's velocity (1.10 CONV_VEL, 50653).
 // Memory: the lists keep the first kMaxListed entries; counts and maxima cover everything.
 
 #include <cstddef>
@@ -86,6 +94,17 @@ struct Violation {
   double limit = 0.0;      ///< what was allowed
   bool joint = false;      ///< `axis` is a joint of the kinematic transform (on_joints())
   std::uint16_t file = 0;  ///< source file of `line` (interp::Command::file, 0: main program)
+  /// --- conveyor: the same quantity less the belt's share (set_belt()), where the axis moved
+  /// with the belt over the whole stencil; -1: not split.
+  double path = -1.0;
+};
+
+/// --- conveyor: the belt's share of the axes in the cycle just played (Channel::belt_share()).
+struct BeltOffset {
+  bool following = false;     ///< the axes move with the belt (catch-up, PCS1, leaving)
+  double travel = 0.0;        ///< the master's travel since the latch [mm]
+  double acceleration = 0.0;  ///< the master's acceleration in the setpoints [mm/s^2]
+  AxisVec share{};            ///< each axis's share of one mm of travel
 };
 
 /// A documented step at a joint (the largest over the axes relative to its bound).
@@ -109,6 +128,9 @@ struct Verdict {
   std::vector<Step> steps;         ///< the first kMaxListed
   std::uint64_t violation_count = 0;
   std::vector<Violation> violations;  ///< the first kMaxListed
+  /// --- conveyor: violations whose path share (Violation::path) was within the limit: the
+  /// belt's own acceleration or jerk on top (004 l.454)
+  std::uint64_t belt_count = 0;
   bool ok() const noexcept { return violation_count == 0; }
 };
 
@@ -128,6 +150,9 @@ class Audit final : public Sink {
   void set_setpoints(const std::array<axes::Setpoint, planner::kMaxAxes>* set) noexcept {
     set_ = set;
   }
+  /// --- conveyor: the belt's share of the setpoints (read at each on_cycle with them); the
+  /// violations of an axis that moved with the belt then carry their path share. Null: none.
+  void set_belt(const BeltOffset* belt) noexcept { belt_ = belt; }
   /// Under a kinematic transform: the joints' limits (one per joint, 1..kMaxAxes; throws
   /// std::invalid_argument otherwise) and their positions before the first cycle.
   /// `joints_are_axes`: the joints are the machine axes the cycles hold outside #TRAFO (the
@@ -151,11 +176,15 @@ class Audit final : public Sink {
     double dv2 = 0.0, dv3 = 0.0;  ///< velocity steps in the a / j stencils [mm/s]
     double da3 = 0.0;             ///< acceleration steps in the j stencil [mm/s^2]
     bool velocity_only = false;   ///< a step without a formula is inside: v only
+    /// --- conveyor: the belt's share of the last four positions (NaN: not moving with it)
+    /// and its acceleration in the closed form; null: no belt
+    const std::array<double, 4>* belt = nullptr;
+    double a_belt = 0.0;
   };
   void violate(Quantity q, Method m, std::size_t axis, double t, std::uint32_t line,
                std::uint16_t file, double value, double limit, bool joint = false);
   void check(Quantity q, Method m, std::size_t axis, const Cycle& c, double value, double limit,
-             bool joint = false);
+             bool joint = false, double path = -1.0);
   /// The closed-form and finite-difference checks of one axis or joint (one helper for both).
   void check_motion(std::size_t i, bool joint, const Stencil& st, AxisAudit& aa,
                     std::array<double, 4>& history, const Cycle& c, double x, double v, double a,
@@ -186,6 +215,8 @@ class Audit final : public Sink {
   bool transformed_ = false;      ///< the last cycle ran under #TRAFO ON
   bool joints_are_axes_ = false;  ///< set_joint_limits(..., true)
   const std::array<axes::Setpoint, planner::kMaxAxes>* set_ = nullptr;  ///< set_setpoints()
+  const BeltOffset* belt_ = nullptr;                                    ///< set_belt()
+  std::vector<std::array<double, 4>> b_;  ///< the belt's share per axis, b_[i][0] newest
 };
 
 /// The name of a quantity in reports ("velocity", "c1-step", ...).

@@ -276,3 +276,54 @@ TEST_CASE("G00 runs and is audited with its own slope P-AXIS-00004 / 00200, G01 
   }
   CHECK_FALSE(strict.verdict().ok());
 }
+
+// --- conveyor: an axis moving with a belt that accelerates by itself (004 l.454).
+TEST_CASE("an axis carried by an accelerating belt: the violation names its path share") {
+  const std::vector<planner::AxisLimits> axes = {axis(100.0, 100.0, 1e6)};
+  for (const double own : {0.0, 200.0}) {  // the path's own acceleration on top of the belt's
+    CAPTURE(own);
+    Audit audit(axes, 0.001, AxisVec{});
+    std::array<ncsim::axes::Setpoint, planner::kMaxAxes> set{};
+    BeltOffset belt;
+    belt.following = true;
+    belt.share[0] = 1.0;
+    belt.acceleration = 300.0;  // the belt alone takes the axis beyond A = 100 mm/s^2
+    audit.set_setpoints(&set);
+    audit.set_belt(&belt);
+    for (int k = 1; k <= 20; ++k) {
+      const double t = 0.001 * k;
+      belt.travel = 0.5 * 300.0 * t * t;
+      set[0] = {belt.travel + 0.5 * own * t * t, (300.0 + own) * t, 300.0 + own, 0.0};
+      audit.on_cycle(motion(static_cast<std::uint64_t>(k), 0.001, nullptr));
+    }
+    const Verdict& v = audit.verdict();
+    REQUIRE_FALSE(v.ok());  // the axis did exceed its acceleration: a violation either way
+    std::uint64_t split = 0;
+    for (const Violation& x : v.violations) {
+      CHECK(x.quantity == Quantity::acceleration);
+      if (x.path < 0.0) continue;  // a stencil holding the start position (not with the belt)
+      ++split;
+      CHECK(x.value == doctest::Approx(300.0 + own).epsilon(1e-6));
+      CHECK(x.path == doctest::Approx(own).epsilon(1e-6).scale(1.0));
+    }
+    CHECK(split >= 20 - 2);  // every cycle's closed form, the differences after the start
+    CHECK(v.belt_count == (own == 0.0 ? split : 0));  // the belt's own only where the path kept A
+  }
+}
+
+TEST_CASE("an axis not moving with the belt is not split") {
+  const std::vector<planner::AxisLimits> axes = {axis(100.0, 100.0, 1e6)};
+  Audit audit(axes, 0.001, AxisVec{});
+  BeltOffset belt;  // following false: before #SYNC IN's catch-up, after the departure
+  belt.share[0] = 1.0;
+  audit.set_belt(&belt);
+  for (int k = 1; k <= 5; ++k) {
+    Cycle c = motion(static_cast<std::uint64_t>(k), 0.001, nullptr);
+    c.x[0] = 0.5 * 300.0 * 1e-6 * k * k;
+    audit.on_cycle(c);
+  }
+  REQUIRE_FALSE(audit.verdict().ok());
+  for (const Violation& x : audit.verdict().violations)
+    CHECK(x.path == -1.0);
+  CHECK(audit.verdict().belt_count == 0);
+}

@@ -116,6 +116,7 @@ bool Channel::map_to_axes(const Cycle& c) noexcept {
   // into the setpoints of the machine axes, which everything below drives and monitors.
   // --- trafo: under #TRAFO ON the joint stage gives the joints (channel_kinematics.cpp).
   // The PCS1 frame and the catch-up act on the TCP there, before the kinematic.
+  belt_.following = false;  // --- conveyor: the audit's belt share (set below)
   if (stage_ && ipo::transformed(c, transformed_)) return map_joints(c);
   transformed_ = false;
   for (std::size_t i = 0; i < axes_.size(); ++i)
@@ -135,6 +136,13 @@ bool Channel::map_to_axes(const Cycle& c) noexcept {
       setpoint_[i].v += sync_->offset_v(i);
       setpoint_[i].a += sync_->offset_a(i);
     }
+  }
+  if (sync_ && sync_->following()) {
+    belt_.following = true;
+    belt_.travel = sync_->travel();
+    belt_.acceleration = sync_->belt_acceleration();
+    for (std::size_t i = 0; i < axes_.size(); ++i)
+      belt_.share[i] = sync_->share(i);
   }
   return true;
   // ---- end of the mapping -----------------------------------------------------------------

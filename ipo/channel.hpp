@@ -65,6 +65,7 @@
 
 #include "axes/control.hpp"
 #include "axes/monitor.hpp"
+#include "ipo/audit.hpp"  // --- conveyor: BeltOffset
 #include "ipo/channel_event.hpp"
 #include "ipo/conveyor_sync.hpp"  // --- conveyor-sync
 #include "ipo/indp_axes.hpp"
@@ -218,6 +219,8 @@ class Channel {
   const std::array<axes::Setpoint, planner::kMaxAxes>& setpoints() const noexcept {
     return setpoint_;
   }
+  /// --- conveyor: the belt's share of setpoints() in the last cycle (Audit::set_belt()).
+  const BeltOffset& belt_share() const noexcept { return belt_; }
   // --- conveyor-sync: conveyor tracking (docs/conveyor.md "Synchronisation")
   /// The conveyor world the channel steps every cycle and tracks between #SYNC IN and
   /// #SYNC OUT (null: none; #SYNC IN is then NC6001 `not supported`). Must outlive the channel.
@@ -450,6 +453,7 @@ class Channel {
   std::uint64_t wait_cycles_max_ = 0;  ///< exact_stop_wait_max_ in cycles
   AxesState state_;
   std::array<axes::Setpoint, planner::kMaxAxes> setpoint_{};
+  BeltOffset belt_;  ///< --- conveyor: the belt's share of setpoint_ (map_to_axes)
   AxisVec lag_max_{};
   // Exact stop in progress: the block's moved axes and their targets.
   bool in_exact_stop_ = false;

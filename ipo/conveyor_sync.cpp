@@ -16,6 +16,7 @@ ConveyorSync::ConveyorSync(const machines::ConveyorSyncChannel& channel,
     : frame_(channel),
       box_(channel.workspace),
       tolerance_(channel.sync_in_tolerance),
+      reserve_(channel.dynamics_reserve),
       t_cycle_(t_cycle) {
   if (axes.size() > planner::kMaxAxes)
     throw std::invalid_argument("ipo::ConveyorSync: " + std::to_string(axes.size()) + " axes");
@@ -140,6 +141,13 @@ axes::Result ConveyorSync::start_catch_up(std::span<const axes::MotionState> sta
     in[i].target = target[i] + share_[i] * s_;
     in[i].conveying = share_[i];
     in[i].dynamics = dynamics.empty() ? axes_[i].dynamics : dynamics[i];  // --- trafo
+    // --- conveyor: an axis the belt moves keeps NCSIM-CHAN-640 of A and J for the belt's own
+    // changes, which ride on the catch-up as its deviation from the forecast (004 l.454).
+    if (dynamics.empty() && share_[i] != 0.0 && reserve_ > 0.0) {
+      in[i].dynamics.a_max *= 1.0 - reserve_;
+      in[i].dynamics.d_max *= 1.0 - reserve_;
+      in[i].dynamics.j_max *= 1.0 - reserve_;
+    }
   }
   auto plan = [&](double f) {
     for (std::size_t i = 0; i < n_; ++i)

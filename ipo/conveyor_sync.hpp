@@ -126,6 +126,11 @@ class ConveyorSync {
   }
   /// The PCS1 offset of axis i in MCS in the current cycle (0 off the conveyor's X/Y/Z share).
   double offset(std::size_t i) const noexcept { return share_[i] * s_; }
+  /// Axis i's share of one mm of travel along the conveying direction (MCS).
+  double share(std::size_t i) const noexcept { return share_[i]; }
+  /// True while the axes move with the belt: the catch-up, PCS1 and after #SYNC OUT until the
+  /// departure starts (the audit's belt share, ipo/audit.hpp).
+  bool following() const noexcept { return phase_ == SyncPhase::catching_up || moving_frame(); }
   double offset_v(std::size_t i) const noexcept { return share_[i] * v_; }  ///< [mm/s]
   double offset_a(std::size_t i) const noexcept { return share_[i] * a_; }  ///< [mm/s^2]
 
@@ -163,6 +168,7 @@ class ConveyorSync {
   SyncFrame frame_;
   machines::Workspace box_;
   double tolerance_ = 0.0;  ///< P-CHAN-00365 [mm]
+  double reserve_ = 0.0;    ///< NCSIM-CHAN-640 [fraction] (--- conveyor)
   double t_cycle_ = 0.0;
   std::array<SyncAxis, planner::kMaxAxes> axes_{};
   std::array<double, planner::kMaxAxes> share_{};  ///< conveying component per axis

@@ -92,6 +92,8 @@ Config machine_config(const machines::Machine& machine, double t_cycle) {
     c.exact_stop.push_back({m.exact_stop_window, m.settling_time.value_or(0.0)});
   }
   c.channel.t_cycle = t_cycle;
+  if (machine.channel.conveyor)  // --- conveyor: NCSIM-CHAN-640
+    c.channel.belt_reserve = machine.channel.conveyor->dynamics_reserve;
   c.window = static_cast<std::size_t>(machine.channel.interpolator.look_ahead_blocks);
   switch (machine.channel.path_override_type) {  // NCSIM-CHAN-630 (000 §7.5.6)
     case machines::PathOverrideType::reduced:

@@ -490,6 +490,7 @@ ChannelParams build_channel(const ListValues& v) {
                                  v.internal("conveyor_sync.cart_t0_rot_b"),
                                  v.internal("conveyor_sync.cart_t0_rot_c"));
   c.pos_limit = v.internal("conveyor_sync.pos_limit");
+  c.dynamics_reserve = v.internal("conveyor_sync.ncsim_dynamics_reserve");
   c.workspace.upper = Eigen::Vector3d(v.internal("conveyor_sync.cart_swe_pos_x"),
                                       v.internal("conveyor_sync.cart_swe_pos_y"),
                                       v.internal("conveyor_sync.cart_swe_pos_z"));

@@ -245,7 +245,9 @@ TEST_CASE("the parameter table has unique keys, sane ranges and docs for every k
   }
 }
 
-TEST_CASE("NCSIM-CHAN-630 path override type: REDUCED by default, ORIGINAL read, a typo refused") {
+TEST_CASE(
+    "NCSIM-CHAN-630 path override type: REDUCED by default, ORIGINAL read, a typo refused; "
+    "NCSIM-CHAN-640 read in 0.1 %") {
   const auto base = source_root() / "machines" / "testdata" / "base";
   auto load_with = [&](const std::string& line) {
     const auto dir = std::filesystem::temp_directory_path() / "ncsim_machines_override_type";
@@ -281,6 +283,16 @@ TEST_CASE("NCSIM-CHAN-630 path override type: REDUCED by default, ORIGINAL read,
   CHECK(typo.diagnostics.items()[0].id == "NC3004");
   CHECK(typo.diagnostics.items()[0].loc.line == 3);
   CHECK(typo.diagnostics.items()[0].message.find("NCSIM-CHAN-630") != std::string::npos);
+  // --- conveyor: NCSIM-CHAN-640, the belt's dynamics reserve in 0.1 % (004 l.454)
+  REQUIRE(plain.machine->channel.conveyor.has_value());
+  CHECK(plain.machine->channel.conveyor->dynamics_reserve == 0.0);
+  const LoadResult reserve = load_with("conveyor_sync.ncsim_dynamics_reserve 15");
+  REQUIRE(reserve.machine.has_value());
+  CHECK(reserve.machine->channel.conveyor->dynamics_reserve == doctest::Approx(0.015));
+  const LoadResult too_much = load_with("conveyor_sync.ncsim_dynamics_reserve 501");
+  CHECK_FALSE(too_much.machine.has_value());
+  REQUIRE_FALSE(too_much.diagnostics.items().empty());
+  CHECK(too_much.diagnostics.items()[0].message.find("NCSIM-CHAN-640") != std::string::npos);
 }
 
 TEST_CASE("a channel with more axes than ncsim supports is refused at the index line") {

@@ -155,6 +155,9 @@ struct ConveyorSyncChannel {
   Eigen::Vector3d t0_shift = Eigen::Vector3d::Zero();    ///< P-CHAN-00368..00370 [mm]
   Eigen::Vector3d t0_rot_abc = Eigen::Vector3d::Zero();  ///< P-CHAN-00371..00373 [deg]
   double pos_limit = 0.0;                                ///< P-CHAN-00374 [mm]
+  /// NCSIM-CHAN-640: the share of A and J the conveying axes keep for the belt's own changes
+  /// while synchronised (catch-up, PCS1 blocks; 004 l.454) [fraction], 0..0.5
+  double dynamics_reserve = 0.0;
   /// P-CHAN-00859..00864; when not configured: soft limits of the first three axes (§4.4.1).
   Workspace workspace;
   bool workspace_configured = false;  ///< true when any of 00859..00864 was given

@@ -164,6 +164,19 @@ AxisLimits belt_joint_limits(const AxisLimits& joint, double a, double j) noexce
   return out;
 }
 
+// --- conveyor
+AxisLimits reserved_limits(const AxisLimits& axis, double reserve) noexcept {
+  if (!(reserve > 0.0)) return axis;
+  AxisLimits out = axis;
+  const double keep = 1.0 - reserve;
+  out.a_max *= keep;
+  out.d_max *= keep;
+  out.j_max *= keep;
+  out.a_rapid *= keep;
+  out.j_rapid *= keep;
+  return out;
+}
+
 AxisLimits rapid_limits(const AxisLimits& axis) noexcept {
   AxisLimits r = axis;
   if (axis.a_rapid > 0.0) r.a_max = r.d_max = axis.a_rapid;

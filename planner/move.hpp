@@ -157,7 +157,14 @@ struct ChannelLimits {
   /// P-CHAN-00009 semantics: limit the velocity at C1 transitions so that each axis's
   /// acceleration step fits its jerk budget j_max * T (docs/planner.md "C1").
   bool limit_c1_by_jerk = true;
+  /// --- conveyor: the share of A+, A- and J a PCS1 block leaves unused on the axes the belt
+  /// moves (Move::belt != 0) and on the joints of a block with belt shares (NCSIM-CHAN-640,
+  /// 004 l.454) [fraction]; 0: none.
+  double belt_reserve = 0.0;
 };
+
+/// --- conveyor: `axis` with A+, A- and J lowered by the fraction `reserve` (NCSIM-CHAN-640).
+AxisLimits reserved_limits(const AxisLimits& axis, double reserve) noexcept;
 
 /// Throws std::invalid_argument naming the field and value when a Move breaks its invariants.
 void validate(const Move& move);

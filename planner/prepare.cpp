@@ -104,8 +104,11 @@ std::span<const AxisLimits> Preparer::axes_for(const Move& move) const {
   for (const double b : move.belt)
     bits |= std::bit_cast<std::uint64_t>(b) << 1;
   if (bits == 0) return axes;
-  for (std::size_t i = 0; i < axes.size() && i < belt_axes_.size(); ++i)
+  for (std::size_t i = 0; i < axes.size() && i < belt_axes_.size(); ++i) {
     belt_axes_[i] = belt_limits(axes[i], move.belt[i]);
+    // --- conveyor: the belt's own acceleration and jerk get the reserve (NCSIM-CHAN-640)
+    if (move.belt[i] != 0.0) belt_axes_[i] = reserved_limits(belt_axes_[i], channel_.belt_reserve);
+  }
   return std::span<const AxisLimits>(belt_axes_.data(), std::min(axes.size(), belt_axes_.size()));
 }
 
@@ -120,8 +123,9 @@ PathLimits Preparer::limits(const Segment& path, const Move& move) const {
   if (move.belt_joints && joints->joints.size() <= belt_joints_.size()) {
     // --- belt-jerk: a PCS1 block under #TRAFO ON: the belt's share taken off the joints.
     for (std::size_t i = 0; i < joints->joints.size(); ++i)
-      belt_joints_[i] =
-          belt_joint_limits(joints->joints[i], move.belt_joints->a[i], move.belt_joints->j[i]);
+      belt_joints_[i] = reserved_limits(
+          belt_joint_limits(joints->joints[i], move.belt_joints->a[i], move.belt_joints->j[i]),
+          channel_.belt_reserve);  // --- conveyor: NCSIM-CHAN-640
     joint_limits = std::span<const AxisLimits>(belt_joints_.data(), joints->joints.size());
   }
   const std::optional<PathLimits> l =

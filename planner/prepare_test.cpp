@@ -243,3 +243,38 @@ TEST_CASE("G261 leaves the small knees of dense chords unblended: they chain as 
   CHECK(parts == 102);  // 101 blocks and the one blend
   CHECK(out[0].path.parts() == Chain::kMaxParts);
 }
+
+// --- conveyor: NCSIM-CHAN-640 (docs/conveyor.md "The belt's own dynamics", 004 l.454)
+TEST_CASE("a PCS1 block keeps the belt's dynamics reserve on the axes the belt moves, only there") {
+  auto ax = limits();
+  ax[0].j_max = 2e5;  // X the belt moves; Y the stiffer axis
+  ChannelLimits channel;
+  channel.belt_reserve = 0.01;
+  // The path limits one block is prepared with.
+  const auto prepared = [&ax](const ChannelLimits& ch, const Move& m) {
+    Preparer prep(ax, ch);
+    std::vector<PreparedSegment> out;
+    prep.push(m, out);
+    prep.finish(out);
+    REQUIRE(out.size() == 1);
+    return out[0].limits;
+  };
+  Move along_x = line(vec(0, 0), vec(100, 0), 500.0);
+  along_x.slope = SlopeType::trapez;  // jerk-limited, as #SYNC IN forces (004 l.280)
+  // Off the conveyor (Move::belt all 0) the reserve changes nothing.
+  CHECK(prepared(channel, along_x).a_max == prepared(ChannelLimits{}, along_x).a_max);
+  CHECK(prepared(channel, along_x).j_max == prepared(ChannelLimits{}, along_x).j_max);
+  along_x.belt[0] = 110.0;  // in PCS1: the belt takes 110 mm/s of X
+  const PathLimits p = prepared(ChannelLimits{}, along_x);
+  const PathLimits r = prepared(channel, along_x);
+  CHECK(r.v_max == p.v_max);  // the velocity split is the belt's velocity, not the reserve
+  CHECK(r.a_max == doctest::Approx(0.99 * p.a_max));
+  CHECK(r.d_max == doctest::Approx(0.99 * p.d_max));
+  CHECK(r.j_max == doctest::Approx(0.99 * p.j_max));
+  // A block along Y in PCS1: Y keeps its full dynamics (X does not move).
+  Move along_y = line(vec(0, 0), vec(0, 100), 500.0);
+  along_y.slope = SlopeType::trapez;
+  along_y.belt[0] = 110.0;
+  CHECK(prepared(channel, along_y).a_max == prepared(ChannelLimits{}, along_y).a_max);
+  CHECK(prepared(channel, along_y).j_max == prepared(ChannelLimits{}, along_y).j_max);
+}

@@ -139,6 +139,8 @@ class Recorder final : public ipo::Sink {
     audit_.set_setpoints(set);
     set_ = set;
   }
+  /// --- conveyor: the belt's share of those setpoints (ipo::Audit::set_belt).
+  void set_belt(const ipo::BeltOffset* belt) noexcept { audit_.set_belt(belt); }
   /// The TCP in MCS of a cycle under #TRAFO ON (ipo::Channel::tcp(); null: none): on a
   /// conveyor channel the MCS toolpath of a transformed cycle (the setpoints are joints there).
   void set_tcp(const std::array<axes::Setpoint, planner::kMaxAxes>* tcp) noexcept { tcp_ = tcp; }
