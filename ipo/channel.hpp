@@ -214,6 +214,8 @@ class Channel {
   /// The TCP setpoint of the last transformed cycle, in MCS (X, Y, Z first; the PCS1 offset
   /// and the catch-up included): what the joints() were computed from [mm, mm/s, ...].
   const std::array<axes::Setpoint, planner::kMaxAxes>& tcp() const noexcept { return tcp_; }
+  /// --- trafo-checks: ChannelConfig::forward (joints -> TCP; empty without a kinematic).
+  const planner::JointMap& forward() const noexcept { return forward_; }
   /// The setpoint (p, v, a, j) every axis received in the last cycle [mm | deg, /s ...].
   const std::array<axes::Setpoint, planner::kMaxAxes>& setpoints() const noexcept {
     return setpoint_;
