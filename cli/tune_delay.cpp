@@ -25,19 +25,31 @@ machines::ConveyorAxisParams* conveyor_params(machines::Machine& m) {
 }
 
 // One synchronised cycle's contour error on the real workpiece (ContourStats); c2, p2 the sums
-// of squares.
+// of squares. Under #TRAFO ON the axes are joints: the commanded TCP (Channel::tcp(), the PCS1
+// offset included) against the forward transform of the joints' actual positions, as
+// synchro_lag there (ipo::cycle_lag); a cycle whose actual joints do not map is left out.
 void contour_cycle(const ipo::Channel& ch, const ipo::ConveyorSync& sync, ContourStats& out,
                    double& c2, double& p2) {
   const ipo::Cycle& c = ch.cycle();
-  if (ch.transformed() || c.activity != ipo::Activity::motion || c.rapid || !(c.path.v > 0.0))
-    return;
+  if (c.activity != ipo::Activity::motion || c.rapid || !(c.path.v > 0.0)) return;
+  planner::AxisVec x_actual{};   // [mm] the axes' actual positions, or the actual TCP
+  planner::AxisVec x_command{};  // [mm] the axes' setpoints, or the commanded TCP
+  const std::size_t axis_count = ch.axis_count();
+  for (std::size_t i = 0; i < axis_count; ++i) {
+    x_actual[i] = ch.axes().actual[i];
+    x_command[i] = ch.transformed() ? ch.tcp()[i].p : ch.setpoints()[i].p;
+  }
+  if (ch.transformed()) {
+    const planner::AxisVec q = x_actual;
+    if (!ch.forward() || !ch.forward()(q, x_actual)) return;
+  }
   Eigen::Vector3d actual = Eigen::Vector3d::Zero();
   Eigen::Vector3d command = Eigen::Vector3d::Zero();
   Eigen::Vector3d tangent = Eigen::Vector3d::Zero();  // the path's direction (T0 applied)
-  for (std::size_t i = 0; i < ch.axis_count(); ++i) {
+  for (std::size_t i = 0; i < axis_count; ++i) {
     if (const int k = sync.xyz(i); k >= 0) {
-      actual[k] = ch.axes().actual[i];
-      command[k] = ch.setpoints()[i].p;
+      actual[k] = x_actual[i];
+      command[k] = x_command[i];
       tangent[k] = c.v[i];
     }
   }

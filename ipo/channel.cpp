@@ -40,8 +40,10 @@ std::string text(const char* format, double a, double b) {
 
 Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
     : relay_(sink),
-      // Without a sink nobody reads the joints: the interpolator then does not compute them.
-      ipo_(prepared(config.path), source, sink != nullptr ? &relay_ : nullptr),
+      // Without a sink nobody reads the joints: the interpolator then does not compute them;
+      // --- trafo-checks: under a kinematic the channel reads them (NC6210's jerk stencil).
+      ipo_(prepared(config.path), source,
+           sink != nullptr || config.path.joints ? &relay_ : nullptr),
       source_(source),
       sink_(sink),
       exact_stop_wait_max_(config.exact_stop_wait_max),

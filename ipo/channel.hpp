@@ -215,6 +215,8 @@ class Channel {
   /// The TCP setpoint of the last transformed cycle, in MCS (X, Y, Z first; the PCS1 offset
   /// and the catch-up included): what the joints() were computed from [mm, mm/s, ...].
   const std::array<axes::Setpoint, planner::kMaxAxes>& tcp() const noexcept { return tcp_; }
+  /// --- trafo-checks: ChannelConfig::forward (joints -> TCP; empty without a kinematic).
+  const planner::JointMap& forward() const noexcept { return forward_; }
   /// The setpoint (p, v, a, j) every axis received in the last cycle [mm | deg, /s ...].
   const std::array<axes::Setpoint, planner::kMaxAxes>& setpoints() const noexcept {
     return setpoint_;
@@ -310,16 +312,22 @@ class Channel {
   EventOutcome on_machine_data(const interp::MachineData& command, const ChannelEvent& e) noexcept;
   std::optional<machines::ConveyorAxisParams> conveyor_axis_;  ///< as changed so far
   /// Passes the interpolator's joints on at once; cycles are passed on by step().
+  /// --- trafo-checks: notes that a joint passed (a documented path step: NC6210's jerk
+  /// stencil leaves it out, as the audit's does).
   class JointRelay final : public Sink {
    public:
     explicit JointRelay(Sink* sink) : sink_(sink) {}
     void on_joint(const Joint& joint) override {
+      seen_ = true;
       if (sink_) sink_->on_joint(joint);
     }
     void on_cycle(const Cycle&) override {}
+    /// A joint passed since the last call.
+    bool take_seen() noexcept { return std::exchange(seen_, false); }
 
    private:
     Sink* sink_;
+    bool seen_ = false;
   };
 
   struct Axis {
@@ -480,11 +488,14 @@ class Channel {
   std::array<axes::Setpoint, planner::kMaxAxes> tcp_{};
   planner::JointMap forward_;                  ///< ChannelConfig::forward
   std::optional<RunTimeError> trafo_warning_;  ///< the first NC6210 of the run
-  /// The joint positions of the two cycles before (q at index - 1, index - 2) and how many of
+  /// The joint positions of the three cycles before (q at index - 1, - 2, - 3) and how many of
   /// them are of consecutive transformed cycles: NC6210 checks the setpoints' differences.
-  AxisVec q_back1_{}, q_back2_{};
+  AxisVec q_back1_{}, q_back2_{}, q_back3_{};
   std::uint64_t q_index_ = 0;
   int q_known_ = 0;
+  /// --- trafo-checks: this cycle and the two before were jerk-limited (Cycle::
+  /// interval_jerk_limited) and passed no path joint: the third difference is checked.
+  std::array<bool, 3> q_plain_{false, false, false};
   /// The catch-up / departure under #TRAFO ON: the TCP's dynamics from the joints
   /// (ipo/trafo_sync); false: the plan failed (`r` holds why). channel_kinematics.cpp.
   /// --- trafo-feed: `feed_cont` [mm/s] the catch-up's relative velocity at the meeting (S-1).
@@ -495,7 +506,10 @@ class Channel {
   void trafo_sync_check(const Cycle& c, const JointSetpoint& s) noexcept;
   /// The joint setpoints' v and a by differences over this cycle and the two before (what the
   /// drives get and the audit measures); false until two consecutive transformed cycles ran.
-  bool joint_differences(const Cycle& c, const JointSetpoint& s, JointSetpoint& out) const noexcept;
+  /// --- trafo-checks: `jerk` true: out.j holds the third difference (three consecutive
+  /// transformed cycles before, the stencil plain: q_plain_).
+  bool joint_differences(const Cycle& c, const JointSetpoint& s, JointSetpoint& out,
+                         bool& jerk) const noexcept;
   std::optional<ConveyorSync> sync_;           ///< --- conveyor-sync: with FCT_DLM only
   conveyor::Port* port_ = nullptr;             ///< the attached conveyor world (reduced filter)
   double measured_value_wait_max_ = 600.0;     ///< ChannelConfig::measured_value_wait_max [s]

@@ -63,9 +63,14 @@ bool Channel::map_joints(const Cycle& c) noexcept {
     stop("NC3201", text, c, -1);
     return false;
   }
+  // --- trafo-checks: the jerk stencil holds this cycle and the two before.
+  const bool consecutive = c.index == q_index_ + 1;
+  q_plain_ = {c.interval_jerk_limited && !relay_.take_seen(), consecutive && q_plain_[0],
+              consecutive && q_plain_[1]};
   if (sync_ && (sync_->driving() || sync_->moving_frame())) trafo_sync_check(c, s);
-  q_known_ = c.index == q_index_ + 1 ? std::min(q_known_ + 1, 2) : 1;
+  q_known_ = consecutive ? std::min(q_known_ + 1, 3) : 1;
   q_index_ = c.index;
+  q_back3_ = q_back2_;
   q_back2_ = q_back1_;
   q_back1_ = s.q;
   joints_ = s;
@@ -80,23 +85,29 @@ void Channel::trafo_sync_check(const Cycle& c, const JointSetpoint& s) noexcept 
   const std::size_t n = std::min(axes_.size(), sync_->axis_count());
   for (std::size_t i = 0; i < n; ++i)
     dyn[i] = sync_->dynamics(i);
-  // The closed-form v and a of the joints, then their setpoints' differences: a belt that
+  // The closed-form v, a and j of the joints, then their setpoints' differences: a belt that
   // changes faster than its measured acceleration tells (a step, noise without filters) moves
   // the PCS1 offset and with it the joints between cycles beyond what the closed form shows.
-  auto o = joint_overrun(s, std::span(dyn.data(), n));
+  // --- trafo-checks: the jerk as the audit checks it: the closed form on a jerk-limited slope,
+  // the third difference where its stencil is jerk-limited and holds no documented path step.
+  auto o = joint_overrun(s, std::span(dyn.data(), n), c.jerk_limited);
   JointSetpoint diff;
-  if (!o && joint_differences(c, s, diff)) o = joint_overrun(diff, std::span(dyn.data(), n));
+  bool jerk = false;
+  if (!o && joint_differences(c, s, diff, jerk))
+    o = joint_overrun(diff, std::span(dyn.data(), n), jerk);
   if (!o) return;
   const char* phase = sync_->phase() == SyncPhase::catching_up ? "the catch-up"
                       : sync_->phase() == SyncPhase::departing ? "the departure"
                                                                : "synchronised motion";
-  char text[300];
+  const char* quantity = o->quantity == 'v' ? "v" : o->quantity == 'a' ? "a" : "j";
+  const char* limit = o->quantity == 'v'   ? "P-AXIS-00212"
+                      : o->quantity == 'a' ? "P-AXIS-00008"
+                                           : "the jerk of P-AXIS-00195..00198";
+  char text[320];
   std::snprintf(text, sizeof text,
-                "joint %s: |%s| %.6g above its %.6g (P-AXIS-%s) in %s under #TRAFO ON (004 "
-                "l.609: the joint dynamics are not ensured there; reduce the belt velocity or "
-                "the feed)",
-                axes_[o->joint].config.name.c_str(), o->quantity == 'v' ? "v" : "a", o->value,
-                o->limit, o->quantity == 'v' ? "00212" : "00008", phase);
+                "joint %s: |%s| %.6g above its %.6g (%s) in %s under #TRAFO ON (004 l.609: the "
+                "joint dynamics are not ensured there; reduce the belt velocity or the feed)",
+                axes_[o->joint].config.name.c_str(), quantity, o->value, o->limit, limit, phase);
   try {
     RunTimeError w;
     w.id = kTrafoSyncOverrunId;
@@ -111,14 +122,17 @@ void Channel::trafo_sync_check(const Cycle& c, const JointSetpoint& s) noexcept 
   }
 }
 
-bool Channel::joint_differences(const Cycle& c, const JointSetpoint& s,
-                                JointSetpoint& out) const noexcept {
+bool Channel::joint_differences(const Cycle& c, const JointSetpoint& s, JointSetpoint& out,
+                                bool& jerk) const noexcept {
   if (q_known_ < 2 || c.index != q_index_ + 1) return false;
   const double t = ipo_.t_cycle();
+  jerk = q_known_ >= 3 && q_plain_[0] && q_plain_[1] && q_plain_[2];
   for (std::size_t i = 0; i < axes_.size(); ++i) {
     out.q[i] = s.q[i];
     out.v[i] = (s.q[i] - q_back1_[i]) / t;
     out.a[i] = (s.q[i] - 2.0 * q_back1_[i] + q_back2_[i]) / (t * t);
+    out.j[i] =
+        jerk ? (s.q[i] - 3.0 * q_back1_[i] + 3.0 * q_back2_[i] - q_back3_[i]) / (t * t * t) : 0.0;
   }
   return true;
 }

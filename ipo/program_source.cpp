@@ -298,11 +298,23 @@ bool ProgramSource::pull(Item& out) {
       }
     }
     // --- trafo-pcs1: a block held for its ball's share goes out before any other command
-    // than the next Motion (that command is taken again at the next pull).
-    if (ball_held_ && !(cmd && std::holds_alternative<interp::Motion>(cmd->body))) {
-      if (cmd) held_ = std::move(cmd);
-      ball_release(nullptr);
-      continue;
+    // than the next Motion (that command is taken again at the next pull). --- trafo-checks:
+    // commands that emit nothing and do not stop the path keep it held, as the static unit's
+    // part above: the planner blends across them, so the ball still needs its share (an event
+    // riding on the next block that will not fill the event queue, a message, M00 / M01,
+    // #FLUSH: no effect on the path, docs/ipo.md).
+    if (ball_held_) {
+      const bool passes = cmd && (std::holds_alternative<interp::Motion>(cmd->body) ||
+                                  (is_channel_event(cmd->body) && !stops_path(cmd->body) &&
+                                   !syn_wait_ && tag_ + 1 - given_ < kMaxPendingEvents) ||
+                                  std::holds_alternative<interp::Message>(cmd->body) ||
+                                  std::holds_alternative<interp::ProgramStop>(cmd->body) ||
+                                  std::holds_alternative<interp::Flush>(cmd->body));
+      if (!passes) {
+        if (cmd) held_ = std::move(cmd);
+        ball_release(nullptr);
+        continue;
+      }
     }
     if (!cmd) {
       if (const core::Diagnostic* e = interp_.error()) error_ = *e;

@@ -129,14 +129,15 @@ TEST_CASE("G00 in PCS1 on slow drives: the joints stay inside V, checked every c
   CHECK(r.verdict.ok());
 }
 
-TEST_CASE("NC6210's check: the first joint beyond its V or max(A+, A-), none at the limits") {
+TEST_CASE("NC6210's check: the first joint beyond its V, max(A+, A-) or J, none at the limits") {
   std::array<axes::Dynamics, 3> d{};
   for (axes::Dynamics& x : d)
     x = axes::Dynamics{120.0, 2000.0, 1500.0, 5e5};
   ipo::JointSetpoint s;
   s.v = {120.0, -120.0, 0.0};
   s.a = {2000.0, -2000.0, 0.0};
-  CHECK_FALSE(ipo::joint_overrun(s, d));  // exactly at V and at max(A+, A-): no overrun
+  s.j = {5e5, -5e5, 0.0};
+  CHECK_FALSE(ipo::joint_overrun(s, d));  // exactly at V, max(A+, A-) and J: no overrun
   s.v[1] = -120.01;
   auto o = ipo::joint_overrun(s, d);
   REQUIRE(o);
@@ -151,6 +152,63 @@ TEST_CASE("NC6210's check: the first joint beyond its V or max(A+, A-), none at 
   CHECK(o->joint == 2);
   CHECK(o->quantity == 'a');
   CHECK(o->limit == doctest::Approx(2000.0));
+  // The jerk (the audit checks it too): joint 0 beyond J; not checked where the slope or the
+  // stencil is not jerk-limited or holds a documented path step (jerk = false).
+  s.a[2] = 0.0;
+  s.j[0] = 5.001e5;
+  o = ipo::joint_overrun(s, d);
+  REQUIRE(o);
+  CHECK(o->joint == 0);
+  CHECK(o->quantity == 'j');
+  CHECK(o->value == doctest::Approx(5.001e5));
+  CHECK(o->limit == doctest::Approx(5e5));
+  CHECK_FALSE(ipo::joint_overrun(s, d, false));
+}
+
+TEST_CASE("NC6210 names a joint's jerk: a belt velocity step under the grip, v and a inside") {
+  // The pick of kPick; during the grip (line 8) the belt steps from 100 to 108 mm/s in one
+  // cycle (the test's world: no filter, no ramp; within CONV_VEL + 10 %, so no 50653). The
+  // step moves the joints' setpoints by a second difference far inside their A but a third
+  // difference beyond their J: the first overrun is the jerk of a joint, as the audit
+  // measures it.
+  const ipo::test::Tracked clean = ipo::test::track_clean(kPick, 100.0);
+  long grip = -1;
+  for (std::size_t k = 0; k < clean.line.size(); ++k)
+    if (clean.line[k] == 8 && clean.phase[k] == ipo::SyncPhase::tracking) {
+      grip = static_cast<long>(k);
+      break;
+    }
+  REQUIRE(grip > 0);
+  ipo::test::FakePort port(100.0);
+  port.latch_at_ = 100;
+  port.v_change_at_ = grip + 100;
+  port.v_new_ = 108.0;
+  const Tracked r = track(kPick, &port);
+  REQUIRE(r.status == ipo::Status::finished);
+  REQUIRE_FALSE(r.error);
+  double a_diff = 0.0;  // the joints' largest |a| by differences around the step / A
+  for (std::size_t k = static_cast<std::size_t>(grip) + 90;
+       k < static_cast<std::size_t>(grip) + 110; ++k)
+    for (std::size_t i = 0; i < 3; ++i)
+      a_diff = std::max(
+          a_diff, std::fabs(r.joints[k].q[i] - 2.0 * r.joints[k - 1].q[i] + r.joints[k - 2].q[i]) /
+                      (kT * kT) / 20000.0);
+  MESSAGE("joint |a| by differences around the step / A: " << a_diff);
+  CHECK(a_diff < 0.5);
+  MESSAGE(r.verdict.violation_count << " audit violations");
+  REQUIRE(r.warning);
+  MESSAGE(r.warning->message);
+  CHECK(r.warning->id == ipo::kTrafoSyncOverrunId);
+  CHECK(r.warning->line == 8);
+  CHECK(r.warning->message.find("|j|") != std::string::npos);
+  CHECK(r.warning->message.find("500000") != std::string::npos);
+  CHECK(r.warning->message.find("synchronised motion") != std::string::npos);
+  // The audit measures the same: jerk violations of the joints, none of v or a.
+  CHECK(r.verdict.violation_count > 0);
+  for (const auto& v : r.verdict.violations) {
+    CHECK(v.joint);
+    CHECK(v.quantity == ipo::Quantity::jerk);
+  }
 }
 
 TEST_CASE("the catch-up's TCP dynamics keep every joint inside its own at the points covered") {

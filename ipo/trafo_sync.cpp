@@ -440,7 +440,8 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
 }
 
 std::optional<JointOverrun> joint_overrun(const JointSetpoint& s,
-                                          std::span<const axes::Dynamics> joints) noexcept {
+                                          std::span<const axes::Dynamics> joints,
+                                          bool jerk) noexcept {
   constexpr double tol = 1.0 + 1e-6;
   const std::size_t n = std::min(joints.size(), planner::kMaxAxes);
   for (std::size_t i = 0; i < n; ++i) {
@@ -448,6 +449,8 @@ std::optional<JointOverrun> joint_overrun(const JointSetpoint& s,
     if (std::fabs(s.v[i]) > d.v_max * tol) return JointOverrun{i, 'v', std::fabs(s.v[i]), d.v_max};
     const double a = std::max(d.a_max, d.d_max);
     if (std::fabs(s.a[i]) > a * tol) return JointOverrun{i, 'a', std::fabs(s.a[i]), a};
+    if (jerk && std::fabs(s.j[i]) > d.j_max * tol)
+      return JointOverrun{i, 'j', std::fabs(s.j[i]), d.j_max};
   }
   return std::nullopt;
 }

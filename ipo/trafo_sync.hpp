@@ -155,14 +155,18 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
 /// One joint beyond its dynamics in a cycle.
 struct JointOverrun {
   std::size_t joint = 0;
-  char quantity = 'v';  ///< 'v' velocity, 'a' acceleration
-  double value = 0.0;   ///< |q'| [deg/s | mm/s] or |q''| [deg/s^2 | mm/s^2]
-  double limit = 0.0;   ///< the joint's V or max(A+, A-)
+  char quantity = 'v';  ///< 'v' velocity, 'a' acceleration, 'j' jerk
+  double value = 0.0;   ///< |v| [deg/s | mm/s], |a| [deg/s^2 | mm/s^2] or |j| [deg/s^3 | mm/s^3]
+  double limit = 0.0;   ///< the joint's V, max(A+, A-) or J
 };
 
-/// The first joint of `s` whose |v| exceeds V or |a| exceeds max(A+, A-) of `joints` (a
-/// relative tolerance of 1e-6 absorbs the joint stage's rounding). Never throws.
+/// The first joint of `s` whose |v| exceeds V, |a| exceeds max(A+, A-) or, with `jerk`, |j|
+/// exceeds J of `joints` (a relative tolerance of 1e-6 absorbs the joint stage's rounding).
+/// `jerk` false: s.j is not checked (a slope or a difference stencil that is not
+/// jerk-limited, or a stencil that holds a documented path step: the audit's exemptions).
+/// Never throws.
 std::optional<JointOverrun> joint_overrun(const JointSetpoint& s,
-                                          std::span<const axes::Dynamics> joints) noexcept;
+                                          std::span<const axes::Dynamics> joints,
+                                          bool jerk = true) noexcept;
 
 }  // namespace ncsim::ipo

@@ -119,6 +119,16 @@ expect "tune-delay under #TRAFO ON: synchro_lag of the TCP, ahead with the listi
   -- tune-delay "$pick50"
 again "tune-delay under #TRAFO ON: the proposal's static part is near zero" 0 \
   '^tune-delay: check with P-AXIS-00626 = 876 us: synchro_lag mean -0\.00[0-9]+ mm' ''
+# --contour under #TRAFO ON (trafo-checks): the commanded TCP against the forward transform of
+# the joints' actual positions, on the real workpiece (before, every transformed cycle was
+# skipped: "over 0 synchronised feed cycles"). pick_and_place_50's PCS1 blocks go down and up
+# in Z while the TCP is ahead along the belt, so nearly all of the ~5 mm lag is contour error;
+# the proposal takes it down to ~0.17 mm rms.
+expect "tune-delay --contour under #TRAFO ON: the TCP's contour error on the real workpiece" 0 \
+  '^tune-delay: with the machine.s P-AXIS-00626 = 17455 us: contour error on the real workpiece rms 4\.97[0-9]* mm, max 5\.5[0-9]* mm; position error rms 5\.1[0-9]* mm, max [0-9.]+ mm over 12900 synchronised feed cycles$' '' \
+  -- tune-delay --contour "$pick50"
+again "tune-delay --contour under #TRAFO ON: the proposal's contour error" 0 \
+  '^tune-delay: check with P-AXIS-00626 = 876 us: contour error on the real workpiece rms 0\.1[0-9]* mm, max 0\.5[0-9]* mm; .* over 12900 synchronised feed cycles$' ''
 expect "tune-delay: a machine without conveyor tracking: NC9126, exit 2" 2 '' '\[NC9126\]' -- \
   tune-delay --machine "$root/machines/portal_3x" "$squares"
 # The belt's own dynamics (docs/conveyor.md, 004 l.454): laser_repaired on its belt fluctuating
