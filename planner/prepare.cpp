@@ -91,7 +91,7 @@ void Preparer::set_joints(JointLimits joints) {
     validate(joints.cartesian);
   }
   joints_ = std::move(joints);
-  if (pending_) pending_->limits.reset();  // computed with the joint limits before
+  if (pending()) pending()->limits.reset();  // computed with the joint limits before
 }
 
 std::span<const AxisLimits> Preparer::axes_for(const Move& move) const {
@@ -289,18 +289,19 @@ void Preparer::push(const SplinePiece& piece, const Move& modal,
 
 void Preparer::push_path(const Move& move, const Segment& seg, std::vector<PreparedSegment>& out) {
   if (seg.length() < kMinLength) {
-    if (pending_ && pending_->stop == StopReason::none) pending_->stop = requested_stop(move);
+    if (pending() && pending()->stop == StopReason::none) pending()->stop = requested_stop(move);
     return;
   }
-  if (!pending_) {
-    pending_.emplace(move, seg, seg.length(), StopReason::none, std::nullopt);  // in place
+  if (!pending()) {
+    pending().emplace(move, seg, seg.length(), StopReason::none, std::nullopt);  // in place
     return;
   }
-  if (pending_->move.transformed != move.transformed)
+  if (pending()->move.transformed != move.transformed)
     throw std::invalid_argument("planner: line " + std::to_string(move.line) +
                                 " switches #TRAFO without a stop before it (finish())");
-  Pending p = std::move(*pending_);
-  pending_.emplace(move, seg, seg.length(), StopReason::none, std::nullopt);  // in place
+  Pending& p = *pending();  // stays in its slot until the push after this one
+  pending_slot_ ^= 1;
+  pending().emplace(move, seg, seg.length(), StopReason::none, std::nullopt);  // in place
 
   StopReason stop = p.stop != StopReason::none ? p.stop : requested_stop(p.move);
   if (stop == StopReason::none && p.move.rapid && !move.rapid) stop = StopReason::rapid_to_feed;
@@ -353,24 +354,24 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
       if (in_path.length() >= kMinLength)
         emit_joint(std::move(in_ps), p.move, ball->curve, blend_ps.limits.v_max, out);
       emit_joint(std::move(blend_ps), blend_move, out_path, out_limits.v_max, out);
-      pending_->path = out_path;
-      pending_->limits = out_limits;
+      pending()->path = out_path;
+      pending()->limits = out_limits;
       return;
     }
   }
   const double v_out = seg_cap();
-  pending_->limits = seg_limits;
+  pending()->limits = seg_limits;
   emit_joint(make(p.path, p.move, false, pending_limits(p)), p.move, seg, v_out, out,
              ends ? &*ends : nullptr);
 }
 
 void Preparer::finish(std::vector<PreparedSegment>& out) {
-  if (pending_) {
+  if (pending()) {
     const StopReason requested =
-        pending_->stop != StopReason::none ? pending_->stop : requested_stop(pending_->move);
-    emit_stop(*pending_, requested != StopReason::none ? requested : StopReason::end_of_stream,
+        pending()->stop != StopReason::none ? pending()->stop : requested_stop(pending()->move);
+    emit_stop(*pending(), requested != StopReason::none ? requested : StopReason::end_of_stream,
               out);
-    pending_.reset();
+    pending().reset();
   }
   if (held_) out.push_back(std::move(*held_));
   held_.reset();

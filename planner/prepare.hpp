@@ -142,7 +142,11 @@ class Preparer {
 
   std::span<const AxisLimits> axes_;
   ChannelLimits channel_;
-  std::optional<Pending> pending_;
+  /// The pending segment and, in the other slot, the one before it: push_path() hands the
+  /// previous one on by reference instead of moving it out (a Move and a Segment copied).
+  std::array<std::optional<Pending>, 2> pending_slots_;
+  std::size_t pending_slot_ = 0;  ///< the slot of the pending segment
+  std::optional<Pending>& pending() noexcept { return pending_slots_[pending_slot_]; }
   std::optional<PreparedSegment> held_;  ///< chaining stage
   double held_v_hi_ = 0.0;  ///< highest own velocity cap among the held chain's parts [mm/s]
   std::optional<JointLimits> joints_;  ///< set_joints()
