@@ -91,8 +91,9 @@ StopPoint stop_point(const MotionState& start, const Dynamics& dyn) noexcept {
 }
 
 double stop_then_go_bound(const MotionState& start, const PositionTarget& target,
-                          const Dynamics& dyn) noexcept {
+                          const Dynamics& dyn, StopPoint* stop_out) noexcept {
   const StopPoint stop = stop_point(start, dyn);
+  if (stop_out != nullptr) *stop_out = stop;
   if (target.v == 0.0) {
     const double scale = std::abs(stop.p - start.p) + std::abs(target.p - start.p);
     const double dist = shortened(std::abs(target.p - stop.p), scale);
@@ -121,8 +122,8 @@ double stop_then_go_bound(const MotionState& start, const PositionTarget& target
   return stop.t + t_r2r - t_down - kMargin * (stop.t + t_r2r + t_down);
 }
 
-double manual_bound(const MotionState& start, const PositionTarget& target,
-                    const Dynamics& dyn) noexcept {
+double manual_bound(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
+                    const StopPoint* known) noexcept {
   // plan_position's manual rule for an arrival velocity: frame of the arrival; a start moving
   // against it (or at rest accelerating against it) stops and returns (its case 3). So does a
   // start that never moves backward in that frame with the target behind it (its v_zero test;
@@ -137,7 +138,8 @@ double manual_bound(const MotionState& start, const PositionTarget& target,
   const bool behind = a0 <= dyn.a_max && a0 >= -dyn.d_max && s * (target.p - start.p) < 0.0 &&
                       v0 >= 0.0 && v0 + a0 * std::abs(a0) / (2.0 * dyn.j_max) >= 0.0;
   if (!away && !behind) return 0.0;
-  const StopPoint stop = stop_point(start, dyn);
+  // (The stop point of stop_then_go_bound where plan_fastest computed it: issue 11, session 28.)
+  const StopPoint stop = known != nullptr ? *known : stop_point(start, dyn);
   const double speed = std::abs(target.v);
   const double q = target.p - s * ramp_distance(speed, dyn.a_max, dyn.j_max);
   const double scale = std::abs(stop.p - start.p) + std::abs(q - start.p);
