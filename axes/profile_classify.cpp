@@ -10,7 +10,8 @@
 //    part (the single peak from rest) cannot exist, the target closer than the ramp 0 -> |v1|
 //    or behind, else t_stop + T_r2r(|q - p_stop|) - the ramp |v1| -> 0 under A- (q: where that
 //    ramp appended to the go part ends).
-//  - the manual's stop-and-return (frame of the arrival velocity, start moving against it):
+//  - the manual's stop-and-return (frame of the arrival velocity, start moving against it, or
+//    never moving backward with the target behind and no acceleration clamp):
 //    t_stop + T_man(|q - p_stop|) + the ramp 0 -> |v1|, q = p1 - sign(v1) ramp_distance(|v1|),
 //    T_man the manual's rest-to-rest time (its level from the symmetric min(A+, A-)) in closed
 //    form: the plan's own parts, so the bound is the plan's duration less the margins.
