@@ -11,6 +11,7 @@
 #include <array>
 
 #include "axes/profile.hpp"
+#include "axes/profile_classify.hpp"
 #include "jerk/jerk.hpp"
 
 namespace ncsim::axes::detail {
@@ -73,8 +74,10 @@ void append_move(ProfileBuilder& builder, const jerk::Move& move) noexcept;
 /// `out` (exact end); false when neither reaches the target. `direct`: the move goes toward
 /// the target from a start not moving away, so the manual plan need not be compared.
 /// Inputs as checked by plan_position (valid limits, finite values, |target.v| <= V).
+/// `stop`: the start's stop point where plan_fastest computed it (its candidate 4's bound),
+/// else left as it was (t < 0 marks it unknown).
 bool plan_fastest(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
-                  Profile& out, bool& direct) noexcept;
+                  Profile& out, bool& direct, StopPoint& stop) noexcept;
 
 /// Sign of the direction of motion of `state`: of v, else of a, else `fallback`.
 double motion_sign(const MotionState& state, double fallback) noexcept;

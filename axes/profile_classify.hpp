@@ -42,13 +42,15 @@ double rest_to_rest_fastest_time(double dist, const Dynamics& dyn) noexcept;
 /// candidate 4: for an arrival velocity the single-peak move from rest, jerk::fastest_move);
 /// infinite where that move cannot exist (the target behind or closer than the ramp to the
 /// arrival speed).
+/// `stop_out` (when given) receives the stop point (for manual_bound).
 double stop_then_go_bound(const MotionState& start, const PositionTarget& target,
-                          const Dynamics& dyn) noexcept;
+                          const Dynamics& dyn, StopPoint* stop_out = nullptr) noexcept;
 
 /// Lower bound [s] of the manual plan (ProfileRule::manual) where it stops and returns
-/// (a start moving away from the arrival direction); 0 otherwise.
-double manual_bound(const MotionState& start, const PositionTarget& target,
-                    const Dynamics& dyn) noexcept;
+/// (a start moving away from the arrival direction, or one that never moves backward with the
+/// target behind it); 0 otherwise. `known`: the start's stop point where already computed.
+double manual_bound(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
+                    const StopPoint* known = nullptr) noexcept;
 
 /// Lower bound [s] of the two-peak change (plan_fastest's candidate 2, jerk::two_peak_move):
 /// max(D / max(|v0|, |v1|), the time-optimal velocity change v0 -> v1 under max(A+, A-));

@@ -143,13 +143,16 @@ Result plan_position(const MotionState& start, const PositionTarget& target, con
     // manual's stop-and-return (its return uses the symmetric rule). Otherwise the manual planner
     // covers reversals the family cannot, so the faster of both is taken.
     bool direct = false;
-    const bool found = detail::plan_fastest(start, target, dyn, out, direct);
+    detail::StopPoint stop{-1.0, 0.0};  // t < 0: not computed by plan_fastest
+    const bool found = detail::plan_fastest(start, target, dyn, out, direct, stop);
     if (found && (direct || (target.v == 0.0 && inside_limits(start, dyn)))) return Result::ok;
     // --- ptp-speed: the manual's stop-and-return skipped where its lower bound shows it cannot
     // be faster (axes/profile_classify.hpp).
     // --- ptp-outside: the bound describes the manual plan from inside the limits only (from
     // outside, the manual first recovers: manual_recover).
-    if (found && !outside && detail::manual_bound(start, target, dyn) >= out.duration()) {
+    if (found && !outside &&
+        detail::manual_bound(start, target, dyn, stop.t >= 0.0 ? &stop : nullptr) >=
+            out.duration()) {
       return Result::ok;
     }
     Profile manual;

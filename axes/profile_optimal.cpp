@@ -121,7 +121,7 @@ double rest_to_rest_fastest_time(double dist, const Dynamics& dyn) noexcept {
 }
 
 bool plan_fastest(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
-                  Profile& out, bool& direct) noexcept {
+                  Profile& out, bool& direct, StopPoint& stop) noexcept {
   direct = false;
   const MotionState end{target.p, target.v, 0.0};
   if (start.v == 0.0 && start.a == 0.0 && target.v == 0.0) {
@@ -190,7 +190,7 @@ bool plan_fastest(const MotionState& start, const PositionTarget& target, const 
   // --- ptp-speed: skipped where its lower bound shows it cannot be faster (profile_classify);
   // infinite where its go part cannot reach an arrival velocity (issue 11, session 26).
   const double t_found = found ? out.duration() : std::numeric_limits<double>::infinity();
-  if (stop_then_go_bound(start, target, dyn) >= t_found) return found;
+  if (stop_then_go_bound(start, target, dyn, &stop) >= t_found) return found;
   Profile alt;
   ProfileBuilder b(alt, start);
   append_stop(b, dyn);

@@ -216,7 +216,8 @@ struct Reversal {
 /// (0, V] for which the turn still reaches p1, with a cruise at V when V itself falls short.
 /// The displacement is not monotone in the level: the kink where the out part vanishes splits
 /// (0, V] into two pieces with one root each, and the piece holding the highest feasible level
-/// is searched (jerk/reverse.cpp). Status::not_supported when v1 == 0 or no level fits.
+/// is searched (jerk/reverse.cpp). Status::not_supported when v1 == 0 or no level fits (`out` then
+/// unspecified).
 Status reversal_move(const State& start, double p1, double v1, const Limits& limits,
                      Reversal& out) noexcept;
 

@@ -148,8 +148,11 @@ Status detail::reversal_move_trusted(const State& start, double p1, double v1, c
     if (d - up > 1e-9 * (std::abs(d) + up)) return Status::not_supported;
   }
   // h(L) = d - s(L); feasible (the turn still reaches the target) is h <= 0.
-  // The turn and h of the last level evaluated are kept: the solver usually returns it.
-  Reversal r;
+  // The turn and h of the last level evaluated are kept: the solver usually returns it. The
+  // levels are evaluated into `out` itself (make_into writes every member), not into a local
+  // Reversal zeroed and copied at the end (issue 11, session 28: 16 instructions per plan); where
+  // no turn is found `out` holds the last level evaluated.
+  Reversal& r = out;
   double last = -1.0;
   double h_last = 0.0;
   const detail::CrossingStart cs_out =
@@ -217,7 +220,6 @@ Status detail::reversal_move_trusted(const State& start, double p1, double v1, c
     if (!(level > 0.0)) return Status::not_supported;
     if (last != level) sample(level);
   }
-  out = r;
   const double h_level = h_last;
   const double rest = -h_level;  // >= 0: covered by cruising backward at the level
   out.out.t_cruise = rest > 8.0 * kEps * std::abs(d) ? rest / level : 0.0;
