@@ -85,6 +85,8 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
   // --- conveyor-sync: conveyor tracking on FCT_DLM channels
   if (config.conveyor) {
     sync_.emplace(*config.conveyor, config.sync_axes, t);
+    for (std::size_t i = 0; i < sync_->axis_count(); ++i)  // fixed by T0: set once
+      belt_.share[i] = sync_->share(i);
     static_unit_ = config.conveyor->x_virtual;  // --- static-saw
     // --- workspace: the stop after an error while synchronised (ipo/sync_error.hpp)
     std::vector<AfterErrorAxis> after;
@@ -143,8 +145,6 @@ bool Channel::map_to_axes(const Cycle& c) noexcept {
     belt_.following = true;
     belt_.travel = sync_->travel();
     belt_.acceleration = sync_->belt_acceleration();
-    for (std::size_t i = 0; i < axes_.size(); ++i)
-      belt_.share[i] = sync_->share(i);
   }
   return true;
   // ---- end of the mapping -----------------------------------------------------------------
