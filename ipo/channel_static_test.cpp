@@ -199,13 +199,13 @@ TEST_CASE("x_virtual: the C1 joint check uses the run's cycle (a shorter one low
 
 TEST_CASE("x_virtual: a part released early by a command that keeps the path running is joined") {
   // --- conveyor-tail: N30 ends in a G261 ball that the tangent joint does not get (nothing to
-  // blend), so the part is held for it; #FLUSH, which does not stop the path, lets it out as it
-  // is. The joint N30 -> N40 is the C1 joint of the test above (466.69 mm/s needed, 291
+  // blend), so the part is held for it; #FLUSH CONTINUE, which does not stop the path, lets it
+  // out as it is. The joint N30 -> N40 is the C1 joint of the test above (466.69 mm/s needed, 291
   // allowed). Before, the released part was not remembered for joint_belt_check: the joint
   // went unchecked and the first error was the next joint's (N40 -> N50, at line 6).
   const std::string program =
       "%t\nN10 #SYNC IN [CONV_VEL=18000]\nN20 G01 X0 Y0 F100\nN30 G261 G01 X-100 Y-100\n"
-      "N35 #FLUSH\nN40 G02 X-312.132034 Y-187.867966 I-212.132034 J212.132034\n"
+      "N35 #FLUSH CONTINUE\nN40 G02 X-312.132034 Y-187.867966 I-212.132034 J212.132034\n"
       "N50 G01 X-500 Y-187.867966\nN60 #SYNC OUT\nN70 M30\n";
   const StaticRun r = run(program, 100.0);
   CHECK(r.source_error == "NC9100");

@@ -302,14 +302,15 @@ bool ProgramSource::pull(Item& out) {
     // commands that emit nothing and do not stop the path keep it held, as the static unit's
     // part above: the planner blends across them, so the ball still needs its share (an event
     // riding on the next block that will not fill the event queue, a message, M00 / M01,
-    // #FLUSH: no effect on the path, docs/ipo.md).
+    // #FLUSH CONTINUE; a plain #FLUSH stops the path, docs/ipo.md).
     if (ball_held_) {
+      const auto* flush = std::get_if<interp::Flush>(cmd ? &cmd->body : nullptr);
       const bool passes = cmd && (std::holds_alternative<interp::Motion>(cmd->body) ||
                                   (is_channel_event(cmd->body) && !stops_path(cmd->body) &&
                                    !syn_wait_ && tag_ + 1 - given_ < kMaxPendingEvents) ||
                                   std::holds_alternative<interp::Message>(cmd->body) ||
                                   std::holds_alternative<interp::ProgramStop>(cmd->body) ||
-                                  std::holds_alternative<interp::Flush>(cmd->body));
+                                  (flush && flush->kind == interp::FlushKind::continue_));
       if (!passes) {
         if (cmd) held_ = std::move(cmd);
         ball_release(nullptr);
@@ -410,16 +411,26 @@ bool ProgramSource::pull(Item& out) {
             else
               emit_path(std::move(mv));  // --- static-saw: queued, handed out at the loop's top
           } else if constexpr (std::is_same_v<T, interp::Dwell>) {
-            static_dwell(line);  // --- static-saw
+            static_stop(line, "a dwell");  // --- static-saw
             out = Dwell{body.seconds, line, tag_};
             given_ = tag_;
             produced = true;
           } else if constexpr (std::is_same_v<T, interp::End>) {
             ended = true;
           } else if constexpr (std::is_same_v<T, interp::Message> ||
-                               std::is_same_v<T, interp::ProgramStop> ||
-                               std::is_same_v<T, interp::Flush>) {
+                               std::is_same_v<T, interp::ProgramStop>) {
             // pass: no motion (M00/M01 do not stop: there is no operator to press start)
+          } else if constexpr (std::is_same_v<T, interp::Flush>) {
+            // isg-language.md 5.1 [C]: #FLUSH empties the channel buffer, the path stops at the
+            // end of the last motion block (the events before it done); #FLUSH WAIT lets the
+            // decoder wait until the buffer ran empty: a stop too. #FLUSH CONTINUE does not stop
+            // when the next motion block is already there, as it always is here.
+            if (body.kind != interp::FlushKind::continue_) {
+              static_stop(line, "#FLUSH");  // --- static-saw
+              out = ChannelWait{line, tag_};
+              given_ = tag_;
+              produced = true;
+            }
           } else if constexpr (std::is_same_v<T, interp::Barrier>) {
             // --- planner: P-CHAN-00451 implicit synchronisation (docs/ipo.md "Position
             // barriers"): the block programs again an axis whose INDP motion may still run.

@@ -11,8 +11,10 @@
 // under a rotation becomes an arc in the rotated plane, planner::ArcPlane); a #SPLINE section
 // (SplineBegin / SplinePoint / SplineEnd) goes through planner::SplineBuilder and becomes one
 // spline Move per curve piece (program_spline.cpp; never chopped into lines); G04 a Dwell;
-// Tech, Message, ProgramStop (M00/M01 do not stop in time/run: no operator), Flush, WaitIndp
-// and the switching-off forms of #TRAFO / #CAXTRACK pass; #CS selections update the adapter's
+// #FLUSH / #FLUSH WAIT a ChannelWait (the path stops at the end of the block before it, the
+// events before it done; #FLUSH CONTINUE passes: the next block is always there); Tech,
+// Message, ProgramStop (M00/M01 do not stop in time/run: no operator), WaitIndp and the
+// switching-off forms of #TRAFO / #CAXTRACK pass; #CS selections update the adapter's
 // own #CS stack (the interpreter's rules, machines::CsStack); End ends the stream. Barriers are
 // answered from the decode-only state (next_decode_only), or, under a scenario
 // (answer_barriers_from), their V.E. names from the scenario's VeStore; with `flush` the source
@@ -249,8 +251,8 @@ class ProgramSource final : public Source {
   void caxtrack(const interp::CaxTrack& c, std::uint32_t line);
   /// #SYNC IN / #SYNC OUT as the adapter sees them: the static unit's belt feed on / off.
   void static_sync(const interp::CommandBody& body);
-  /// G04 while the static unit is synchronised: NC9101.
-  void static_dwell(std::uint32_t line);
+  /// A path stop (`what`: G04, #FLUSH) while the static unit is synchronised: NC9101.
+  void static_stop(std::uint32_t line, const char* what);
   /// G74: the homed axes stand at P-AXIS-00152 when the channel is done; the next position
   /// barrier takes them from the channel's set positions (docs/homing.md).
   void note_homing(const interp::CommandBody& body) noexcept;

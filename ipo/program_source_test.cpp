@@ -102,6 +102,46 @@ TEST_CASE("M00 / M01, M functions and messages pass without a stop") {
   CHECK(p.items.size() == 2);
 }
 
+TEST_CASE("#FLUSH and #FLUSH WAIT stop the path at their line; #FLUSH CONTINUE passes") {
+  // isg-language.md 5.1 [C] (PROG-207042443): #FLUSH empties the channel buffer, the path stops
+  // at the end of the last motion block; #FLUSH WAIT lets decoding wait until interpolation has
+  // caught up (the buffer runs empty: a stop too); #FLUSH CONTINUE does not stop when the next
+  // motion block is already there, which it always is here (the decoder runs ahead of time).
+  for (const char* kind : {"", " WAIT"}) {
+    CAPTURE(kind);
+    const Pulled p =
+        pull(std::string("N10 G01 X10 F600\nN20 #FLUSH") + kind + "\nN30 X20\nN40 M30\n");
+    REQUIRE(p.error_id.empty());
+    REQUIRE(p.items.size() == 3);
+    const auto* stop = std::get_if<ipo::ChannelWait>(&p.items[1]);
+    REQUIRE(stop != nullptr);
+    CHECK(stop->line == 2);
+  }
+  const Pulled cont = pull("N10 G01 X10 F600\nN20 #FLUSH CONTINUE\nN30 X20\nN40 M30\n");
+  REQUIRE(cont.error_id.empty());
+  CHECK(cont.items.size() == 2);
+}
+
+TEST_CASE("a plain #FLUSH between two collinear lines stops the path: twice the single time") {
+  // portal_3x, STEP slope: 100 mm at 100 mm/s is 1 + 1/30 + 0.001 s -> 1035 cycles (the test
+  // above). Through #FLUSH the path stops at X100 and starts again; without it, or with
+  // #FLUSH CONTINUE, the two lines are one 200 mm run (2035 cycles).
+  const auto cycles = [](const std::string& text) {
+    const core::SourceFile file("t.nc", text);
+    const machines::Machine& m = interp::test::machine("portal_3x");
+    interp::Interpreter in(file, m);
+    ipo::ProgramSource src(in, m);
+    const ipo::TimeResult r = ipo::machining_time(ipo::machine_config(m, 0.001), src);
+    REQUIRE(r.status == ipo::Status::finished);
+    REQUIRE(src.error() == nullptr);
+    return r.cycles;
+  };
+  CHECK(cycles("N10 G01 X100 F6000\nN20 X200\nN30 M30\n") == 2035);
+  CHECK(cycles("N10 G01 X100 F6000\nN15 #FLUSH CONTINUE\nN20 X200\nN30 M30\n") == 2035);
+  CHECK(cycles("N10 G01 X100 F6000\nN15 #FLUSH\nN20 X200\nN30 M30\n") == 2 * 1035);
+  CHECK(cycles("N10 G01 X100 F6000\nN15 #FLUSH WAIT\nN20 X200\nN30 M30\n") == 2 * 1035);
+}
+
 TEST_CASE("an unsupported command is NC6001 at its line, never skipped") {
   const Pulled set = pull("N10 G01 X10 F600\nN20 G92 X0\nN30 X5\nN40 M30\n");
   CHECK(set.items.size() == 1);
@@ -231,7 +271,7 @@ TEST_CASE("#CAXTRACK without AX= on a machine without P-CHAN-00095 has no tracki
   CHECK(p.error_line == 1);
 }
 
-TEST_CASE("x_virtual: a dwell or a corner while synchronised would stop the path: NC9101") {
+TEST_CASE("x_virtual: a dwell, #FLUSH or a corner while synchronised would stop the path: NC9101") {
   // static_saw: P-CHAN-00364 x_virtual = 1; the contour runs against the conveying direction.
   const Pulled dwell = pull(
       "N10 #SYNC IN [CONVEYOR=S1, CONV_VEL=6000]\n"
@@ -241,6 +281,17 @@ TEST_CASE("x_virtual: a dwell or a corner while synchronised would stop the path
       "static_saw");
   CHECK(dwell.error_id == "NC9101");
   CHECK(dwell.error_line == 3);
+  const Pulled flush = pull(
+      "N10 #SYNC IN [CONVEYOR=S1, CONV_VEL=6000]\n"
+      "N20 G01 X0 Y0 F100\n"  // the catch-up
+      "N30 G01 X-10 Y0\n"
+      "N40 #FLUSH\n"  // stops the path (isg-language.md 5.1)
+      "N50 G01 X-20 Y0\n"
+      "M30\n",
+      "static_saw");
+  CHECK(flush.error_id == "NC9101");
+  CHECK(flush.error_line == 4);
+  CHECK(flush.error_message.find("#FLUSH") != std::string::npos);
   const Pulled corner = pull(
       "N10 #SYNC IN [CONVEYOR=S1, CONV_VEL=6000]\n"
       "N20 G01 X0 Y0 F100\n"  // the catch-up

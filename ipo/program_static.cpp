@@ -111,11 +111,12 @@ void ProgramSource::xv_release() {
   xv_held_.reset();
 }
 
-void ProgramSource::static_dwell(std::uint32_t line) {
+void ProgramSource::static_stop(std::uint32_t line, const char* what) {
   if (xv_)
     fail_with(line, kXvStopId,
-              "x_virtual: a dwell would stop the path on the moving belt; a static unit cannot "
-              "stop while synchronised (004 l.438-440)");
+              std::string("x_virtual: ") + what +
+                  " would stop the path on the moving belt; a static unit cannot stop while "
+                  "synchronised (004 l.438-440)");
 }
 
 void ProgramSource::emit_path(planner::Move mv) {

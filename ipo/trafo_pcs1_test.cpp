@@ -266,10 +266,11 @@ TEST_CASE("a tolerance ball between two PCS1 blocks gets the belt's share on its
 }
 
 TEST_CASE("a ball across a command that emits nothing and does not stop the path keeps its share") {
-  // An M function riding on the next block, a message and #FLUSH between the two PCS1 blocks
-  // emit no item and do not stop the path: the planner blends the two blocks as without them
-  // (the contour cuts the corner by up to PATH_DEV), so the block before the ball must carry
-  // the ball's share as without them. Before, any command released the held block as it was
+  // An M function riding on the next block, a message and #FLUSH CONTINUE between the two PCS1
+  // blocks emit no item and do not stop the path: the planner blends the two blocks as without
+  // them (the contour cuts the corner by up to PATH_DEV), so the block before the ball must carry
+  // the ball's share as without them (a plain #FLUSH stops the path: no ball). Before, any command
+  // released the held block as it was
   // (`ProgramSource::ball_release(nullptr)`): its own curve's shares only (measured: joint Z's
   // j share 93113 deg/s^3 against the ball's 385677, F 1000 mm/s against the ball's 110.6).
   const double belt = 500.0;  // [mm/s]
@@ -279,8 +280,8 @@ TEST_CASE("a ball across a command that emits nothing and does not stop the path
   REQUIRE(want.belt_joints);
   const std::string mark = "N70 G01";
   REQUIRE(plain.find(mark) != std::string::npos);
-  for (const char* between :
-       {"N65 M08\n", "N65 #MSG [\"over the ball\"]\n", "N65 #FLUSH\n", "N65 M08\nN66 #FLUSH\n"}) {
+  for (const char* between : {"N65 M08\n", "N65 #MSG [\"over the ball\"]\n",
+                              "N65 #FLUSH CONTINUE\n", "N65 M08\nN66 #FLUSH CONTINUE\n"}) {
     CAPTURE(between);
     std::string program = plain;
     program.insert(program.find(mark), between);
@@ -299,7 +300,7 @@ TEST_CASE("a ball across a command that emits nothing and does not stop the path
   // corner as without the commands, the joints' audit clean.
   const Tracked r_plain = track_clean(ball_program(300.0, 40.0), 300.0);
   std::string program = ball_program(300.0, 40.0);
-  program.insert(program.find(mark), "N65 M08\nN66 #FLUSH\n");
+  program.insert(program.find(mark), "N65 M08\nN66 #FLUSH CONTINUE\n");
   const Tracked r = track_clean(program, 300.0);
   MESSAGE("contour deviation " << r.verdict.contour_max << " mm (without the commands "
                                << r_plain.verdict.contour_max << " mm)");
