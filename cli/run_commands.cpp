@@ -244,6 +244,23 @@ void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names,
      << human(v.contour_tolerance) << " mm), " << v.step_count
      << " documented VELOJUMP / TRANSVELMIN / C1 steps within their formulas, " << v.cycles
      << " cycles\n";
+  // The documented steps listed apart (issue 12): per kind, how many and the closest to its
+  // formula's bound (the axis that came closest at that joint).
+  static constexpr std::array<const char*, 3> kKind = {"VELOJUMP", "#TRANSVELMIN", "C1"};
+  static constexpr std::array<const char*, 3> kFormula = {"C0 min(A+, |A-|) T", "v_min |dx'|",
+                                                          "j T"};
+  for (std::size_t k = 0; k < kKind.size(); ++k) {
+    const ipo::StepKind& sk = v.step_kinds[k];
+    if (sk.count == 0) continue;
+    const ipo::Step& s = sk.closest;
+    const char* unit = k == 2 ? "/s^2" : "/s";
+    const std::string& u = s.axis < units.size() ? units[s.axis] : std::string("mm");
+    os << "audit: " << kKind[k] << " steps " << sk.count << ", closest to " << kFormula[k]
+       << ": t=" << num(s.t) << " s line " << block_where(interp, s.file, s.line) << " axis "
+       << (s.axis < names.size() ? names[s.axis] : std::to_string(s.axis)) << ' '
+       << (k == 2 ? "|da| " : "|dv| ") << human(s.value) << " of " << human(s.bound) << ' ' << u
+       << unit << " at the link velocity " << human(s.v_link) << " mm/s\n";
+  }
   for (const ipo::Violation& x : v.violations) {
     os << "audit: violation t=" << num(x.t) << " s line " << block_where(interp, x.file, x.line)
        << " axis " << (x.axis < names.size() ? names[x.axis] : std::to_string(x.axis)) << ' '
@@ -349,7 +366,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
     if (options.blocks) out << ",\"blocks\":[";
   } else if (options.blocks) {
     out << "# line time_s distance_mm feed_programmed_mm_min feed_reached_mm_min rapid_s feed_s "
-           "dwell_s exact_stop_s waiting_s held_s lost_s\n";
+           "dwell_s exact_stop_s waiting_s held_s lost_s feed_cap_mm_min\n";
   }
   const auto on_block = [&](const ipo::BlockTime& b) {
     if (!options.blocks) return;
@@ -361,8 +378,9 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
       }
       out << ",\"time_s\":" << num(b.time) << ",\"distance_mm\":" << num(b.distance)
           << ",\"feed_programmed_mm_min\":" << num(b.feed_programmed * 60.0)
-          << ",\"feed_reached_mm_min\":" << num(b.feed_reached * 60.0)
-          << ",\"lost_s\":" << num(b.lost) << ",\"split_s\":";
+          << ",\"feed_reached_mm_min\":" << num(b.feed_reached * 60.0);
+      if (b.feed_cap > 0.0) out << ",\"feed_cap_mm_min\":" << num(b.feed_cap * 60.0);
+      out << ",\"lost_s\":" << num(b.lost) << ",\"split_s\":";
       json_split(out, b.split);
       out << '}';
     } else {
@@ -370,7 +388,11 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
           << ' ' << num(b.feed_programmed * 60.0) << ' ' << num(b.feed_reached * 60.0) << ' '
           << num(b.split.rapid) << ' ' << num(b.split.feed) << ' ' << num(b.split.dwell) << ' '
           << num(b.split.exact_stop) << ' ' << num(b.split.starved) << ' ' << num(b.split.held)
-          << ' ' << num(b.lost) << '\n';
+          << ' ' << num(b.lost) << ' ';
+      if (b.feed_cap > 0.0)
+        out << num(b.feed_cap * 60.0) << '\n';
+      else
+        out << "-\n";
     }
     first_block = false;
   };

@@ -70,6 +70,15 @@ void Audit::on_joint(const Joint& jt) {
   if (!transformed_) step_formulas(jt);
 }
 
+void Audit::note_step(const Step& s) {
+  ++verdict_.step_count;
+  if (verdict_.steps.size() < kMaxListed) verdict_.steps.push_back(s);
+  StepKind& k = verdict_.step_kinds[step_kind(s.quantity)];
+  // value / bound > closest's, without dividing (bounds are > 0 where steps are documented)
+  if (k.count == 0 || s.value * k.closest.bound > k.closest.value * s.bound) k.closest = s;
+  ++k.count;
+}
+
 void Audit::step_formulas(const Joint& jt) {
   for (std::size_t i = 0; i < limits_.size(); ++i) {
     const planner::AxisLimits& l = limits_[i];
@@ -85,10 +94,7 @@ void Audit::step_formulas(const Joint& jt) {
       const Quantity q = raised ? Quantity::transvelmin : Quantity::velojump;
       const double bound =
           raised ? jt.transvelmin * (dv / jt.v) : l.c0 * std::min(l.a_max, l.d_max) * t_;
-      ++verdict_.step_count;
-      if (verdict_.steps.size() < kMaxListed)
-        verdict_.steps.push_back(
-            Step{q, static_cast<std::uint8_t>(i), jt.t, jt.line, jt.v, dv, bound});
+      note_step(Step{q, static_cast<std::uint8_t>(i), jt.t, jt.line, jt.v, dv, bound, jt.file});
       if (!(dv <= bound * (1.0 + kRelative)))
         violate(q, Method::formula, i, jt.t, jt.line, jt.file, dv, bound);
     }
@@ -97,10 +103,8 @@ void Audit::step_formulas(const Joint& jt) {
     if (jt.cls == planner::TransitionClass::c1 && jt.jerk_limited &&
         da > 1e-12 * std::max(1.0, jt.v * jt.v)) {
       const double bound = l.j_max * t_;
-      ++verdict_.step_count;
-      if (verdict_.steps.size() < kMaxListed)
-        verdict_.steps.push_back(
-            Step{Quantity::c1_step, static_cast<std::uint8_t>(i), jt.t, jt.line, jt.v, da, bound});
+      note_step(Step{Quantity::c1_step, static_cast<std::uint8_t>(i), jt.t, jt.line, jt.v, da,
+                     bound, jt.file});
       if (!(da <= bound * (1.0 + kRelative)))
         violate(Quantity::c1_step, Method::formula, i, jt.t, jt.line, jt.file, da, bound);
     }

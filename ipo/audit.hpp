@@ -47,6 +47,7 @@
 //    Velocity is not split: the planner reserves the belt's velocity (1.10 CONV_VEL, 50653).
 // Memory: the lists keep the first kMaxListed entries; counts and maxima cover everything.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -113,9 +114,16 @@ struct Step {
   std::uint8_t axis = 0;
   double t = 0.0;  ///< [s]
   std::uint32_t line = 0;
-  double v_link = 0.0;  ///< path velocity at the joint [mm/s]
-  double value = 0.0;   ///< |dv_i| [mm/s] or |da_i| [mm/s^2]
-  double bound = 0.0;   ///< C0_i min(A+_i, |A-_i|) T, v_min |dx'_i| (#TRANSVELMIN), or j_i T
+  double v_link = 0.0;     ///< path velocity at the joint [mm/s]
+  double value = 0.0;      ///< |dv_i| [mm/s] or |da_i| [mm/s^2]
+  double bound = 0.0;      ///< C0_i min(A+_i, |A-_i|) T, v_min |dx'_i| (#TRANSVELMIN), or j_i T
+  std::uint16_t file = 0;  ///< source file of `line` (interp::Command::file, 0: main)
+};
+
+/// The documented steps of one kind: how many, and the one closest to its formula's bound.
+struct StepKind {
+  std::uint64_t count = 0;
+  Step closest;  ///< largest value / bound (valid when count > 0)
 };
 
 struct Verdict {
@@ -126,6 +134,8 @@ struct Verdict {
   std::uint64_t cycles = 0;        ///< cycles audited
   std::uint64_t step_count = 0;    ///< documented steps seen
   std::vector<Step> steps;         ///< the first kMaxListed
+  /// Per kind (velojump, transvelmin, c1_step; step_kind()): count and closest to its bound.
+  std::array<StepKind, 3> step_kinds{};
   std::uint64_t violation_count = 0;
   std::vector<Violation> violations;  ///< the first kMaxListed
   /// --- conveyor: violations whose path share (Violation::path) was within the limit: the
@@ -189,6 +199,8 @@ class Audit final : public Sink {
   void check_motion(std::size_t i, bool joint, const Stencil& st, AxisAudit& aa,
                     std::array<double, 4>& history, const Cycle& c, double x, double v, double a,
                     double j);
+  /// Counts and lists a documented step (Verdict::steps, step_kinds).
+  void note_step(const Step& s);
   /// A path joint's documented steps against their formulas (axis cycles only).
   void step_formulas(const Joint& joint);
   /// A switch of #TRAFO: the history of the side taken over continues the other's.
@@ -218,6 +230,12 @@ class Audit final : public Sink {
   const BeltOffset* belt_ = nullptr;                                    ///< set_belt()
   std::vector<std::array<double, 4>> b_;  ///< the belt's share per axis, b_[i][0] newest
 };
+
+/// Index of a documented step's quantity in Verdict::step_kinds (velojump 0, transvelmin 1,
+/// c1_step 2).
+inline std::size_t step_kind(Quantity q) noexcept {
+  return q == Quantity::velojump ? 0 : q == Quantity::transvelmin ? 1 : 2;
+}
 
 /// The name of a quantity in reports ("velocity", "c1-step", ...).
 const char* quantity_name(Quantity q) noexcept;

@@ -90,6 +90,11 @@ TEST_CASE("a VELOJUMP step above C0 min(A+, A-) T is a violation; one within is 
   j.dv[1] = 10.5;
   audit.on_joint(j);
   CHECK(has(audit.verdict(), Quantity::velojump, Method::formula));
+  // Per kind: four VELOJUMP steps (two joints, two axes), the closest to its bound the 10.5.
+  const StepKind& k = audit.verdict().step_kinds[step_kind(Quantity::velojump)];
+  CHECK(k.count == 4);
+  CHECK(k.closest.axis == 1);
+  CHECK(k.closest.value == 10.5);
 }
 
 TEST_CASE("a #TRANSVELMIN link is checked against v_min |dx'_i|, not VELOJUMP; beyond it fails") {
@@ -172,6 +177,42 @@ TEST_CASE("a reversal at C0 = 1, A = 10000, T = 1 ms: link 5 mm/s, step 10 mm/s 
   CHECK(v.steps[0].value == doctest::Approx(10.0).epsilon(1e-12));
   CHECK(v.steps[0].bound == doctest::Approx(10.0).epsilon(1e-12));
   CHECK(v.steps[0].line == 1);
+}
+
+TEST_CASE("a line into a tangent arc R = 10 links at sqrt(J T R): its C1 step is j T, listed") {
+  // docs/planner.md "C1" (P-CHAN-00009): the acceleration step v^2 |dx''_i| of each axis at
+  // most j_i T. J = 1e5 mm/s^3, T = 1 ms, R = 10 mm: v_link = sqrt(1e5 * 1e-3 * 10) = 31.62
+  // mm/s, Y's step v^2 / R = 100 mm/s^2 = j T. Audited against half the jerk it fails there.
+  const std::vector<planner::AxisLimits> axes(3, axis(200.0, 10000.0, 1e5, 1.0));
+  planner::Move in = line(vec(0, 0), vec(50, 0), 100.0, 1);
+  planner::Move arc = line(vec(50, 0), vec(60, 10), 100.0, 2);
+  arc.arc = planner::Arc{0, 1, 50.0, 10.0, false, false};  // G03, centre (50, 10)
+  Audit audit(axes, 0.001, AxisVec{});
+  run_into(audit, axes, {in, arc});
+  const Verdict& v = audit.verdict();
+  CHECK(v.ok());
+  REQUIRE(v.step_count == 1);
+  const Step& s = v.steps[0];
+  CHECK(s.quantity == Quantity::c1_step);
+  CHECK(s.axis == 1);
+  CHECK(s.line == 1);
+  CHECK(s.v_link == doctest::Approx(std::sqrt(1e5 * 1e-3 * 10.0)).epsilon(1e-9));
+  CHECK(s.value == doctest::Approx(100.0).epsilon(1e-9));
+  CHECK(s.bound == doctest::Approx(100.0).epsilon(1e-12));
+  CHECK(v.step_kinds[step_kind(Quantity::c1_step)].count == 1);
+  CHECK(v.step_kinds[step_kind(Quantity::c1_step)].closest.value == s.value);
+  CHECK(v.step_kinds[step_kind(Quantity::velojump)].count == 0);
+  std::vector<planner::AxisLimits> half = axes;
+  for (planner::AxisLimits& a : half)
+    a.j_max = 5e4;
+  Audit strict(half, 0.001, AxisVec{});
+  ListSource src({in, arc});
+  Config cfg;
+  cfg.axes = axes;  // planned with J = 1e5
+  PathInterpolator ipo(cfg, src, &strict);
+  while (ipo.step() == Status::running) {
+  }
+  CHECK(has(strict.verdict(), Quantity::c1_step, Method::formula));
 }
 
 TEST_CASE("a #TRANSVELMIN corner above VELOJUMP passes the audit, its steps listed apart") {

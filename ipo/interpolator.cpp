@@ -216,6 +216,7 @@ void PathInterpolator::sample(double distance) noexcept {
   c.rapid = prog.rapid;
   c.jerk_limited = planner::jerk_limited(prog.slope);
   c.feed = cur_.segment.limits.v_programmed;
+  c.feed_cap = cur_.segment.limits.feed_capped() ? cur_.segment.limits.v_max : 0.0;
   c.path = ps;
   c.distance = distance;
   c.interval_jerk_limited = interval_jerk_limited_;

@@ -153,12 +153,15 @@ struct Cycle {
   bool jerk_limited = true;           ///< the active block's slope is TRAPEZ / SIN2 / HSC
   bool interval_jerk_limited = true;  ///< every segment traversed in this cycle is jerk-limited
   double feed = 0.0;                  ///< programmed path velocity of the active segment [mm/s]
-  planner::PathState path;            ///< s (from the segment start), v, a, j of the path
-  double distance = 0.0;              ///< path length covered in this cycle [mm]
-  AxisVec x{};                        ///< axis positions [mm | deg] (Detail::axes)
-  AxisVec v{};                        ///< axis velocities, closed form [mm/s]
-  AxisVec a{};                        ///< axis accelerations, closed form [mm/s^2]
-  AxisVec j{};                        ///< axis jerks, closed form [mm/s^3]
+  /// The axes' velocity cap of the active segment when it is below `feed` (F capped:
+  /// planner::PathLimits::feed_capped) [mm/s]; 0 when the axes allow F.
+  double feed_cap = 0.0;
+  planner::PathState path;                    ///< s (from the segment start), v, a, j of the path
+  double distance = 0.0;                      ///< path length covered in this cycle [mm]
+  AxisVec x{};                                ///< axis positions [mm | deg] (Detail::axes)
+  AxisVec v{};                                ///< axis velocities, closed form [mm/s]
+  AxisVec a{};                                ///< axis accelerations, closed form [mm/s^2]
+  AxisVec j{};                                ///< axis jerks, closed form [mm/s^3]
   const planner::Move* programmed = nullptr;  ///< the block x belongs to (motion cycles)
   // --- override additions (issue 13, docs/ipo.md "Override and feed hold")
   bool held = false;    ///< motion cycle in which the path stands by feed hold / override 0

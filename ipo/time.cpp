@@ -68,6 +68,8 @@ void TimeCounter::add(const Cycle& c) {
   if (c.activity == Activity::motion) {
     block_.feed_programmed = std::max(block_.feed_programmed, c.feed);
     block_.feed_reached = std::max(block_.feed_reached, c.path.v);
+    if (c.feed_cap > 0.0)
+      block_.feed_cap = block_.feed_cap > 0.0 ? std::min(block_.feed_cap, c.feed_cap) : c.feed_cap;
   }
   count(block_counts_, c);
 }

@@ -44,7 +44,10 @@ struct BlockTime {
   double distance = 0.0;         ///< path length covered [mm]
   double feed_programmed = 0.0;  ///< programmed path velocity (largest seen) [mm/s]
   double feed_reached = 0.0;     ///< largest path velocity reached [mm/s]
-  double lost = 0.0;             ///< time lost to override and holds [s] (< 0: gained above 100 %)
+  /// F above what the axes allow (issue 12, isg-language.md 7.1): the lowest of the axes'
+  /// velocity caps of the block's capped segments [mm/s]; 0 when F was never capped.
+  double feed_cap = 0.0;
+  double lost = 0.0;  ///< time lost to override and holds [s] (< 0: gained above 100 %)
   TimeSplit split;
 };
 

@@ -5,6 +5,7 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -74,6 +75,25 @@ TEST_CASE("a G60 block shows its settling time; a dwell its time; distances are 
   CHECK(blocks[2].distance == doctest::Approx(40.0).epsilon(1e-12));
   CHECK(r.distance == doctest::Approx(70.0).epsilon(1e-12));
   CHECK(r.split.rapid == 0.0);
+}
+
+TEST_CASE("an F above the axes' velocity is capped and the block names the cap") {
+  // isg-language.md 7.1: F above what the axes allow is capped, with a note in time --blocks.
+  // X and Y at 100 mm/s each: a diagonal may run at 100 sqrt(2) mm/s, a line along X at 100.
+  const auto ax = axis(100.0, 1000.0, 1e5);
+  Config cfg;
+  cfg.axes = {ax, ax, ax};
+  ListSource src({line(vec(0, 0), vec(100, 0), 250.0, 1),
+                  line(vec(100, 0), vec(200, 100), 250.0, 2),
+                  line(vec(200, 100), vec(250, 100), 50.0, 3)});
+  std::vector<BlockTime> blocks;
+  machining_time(cfg, src, [&](const BlockTime& b) { blocks.push_back(b); });
+  REQUIRE(blocks.size() == 3);
+  CHECK(blocks[0].feed_programmed == 250.0);
+  CHECK(blocks[0].feed_cap == doctest::Approx(100.0).epsilon(1e-12));
+  CHECK(blocks[0].feed_reached <= blocks[0].feed_cap * (1.0 + 1e-12));
+  CHECK(blocks[1].feed_cap == doctest::Approx(100.0 * std::sqrt(2.0)).epsilon(1e-12));
+  CHECK(blocks[2].feed_cap == 0.0);  // 50 mm/s is reachable
 }
 
 TEST_CASE("G00 runs at the axes' rapid velocity and its time counts as rapid") {

@@ -212,6 +212,10 @@ std::string json(const ReportData& d) {
     exact(s, b.feed_programmed * 60.0);
     s += ",\"feed_reached_mm_min\":";
     exact(s, b.feed_reached * 60.0);
+    if (b.feed_cap > 0.0) {  // F above the axes' velocity (docs/planner.md "F capped")
+      s += ",\"feed_cap_mm_min\":";
+      exact(s, b.feed_cap * 60.0);
+    }
     s += ",\"split\":";
     split(s, b.split);
     s += '}';

@@ -400,11 +400,13 @@
   el('p', root, 'the ' + D.slowest.length + ' longest of ' + D.blocks +
      ' block records (ncsim time --blocks), longest first', 'note');
   table(root, ['line', 'time [s]', 'distance [mm]', 'feed programmed [mm/min]',
-               'feed reached [mm/min]', 'rapid [s]', 'feed [s]', 'dwell [s]', 'exact stop [s]',
-               'waiting [s]'],
+               'feed reached [mm/min]', 'F capped by the axes to [mm/min]', 'rapid [s]',
+               'feed [s]', 'dwell [s]', 'exact stop [s]', 'waiting [s]'],
         D.slowest.map(function (b) {
           return [b.line, fmt(b.time_s), fmt(b.distance_mm), fmt(b.feed_programmed_mm_min),
-                  fmt(b.feed_reached_mm_min), fmt(b.split.rapid), fmt(b.split.feed),
+                  fmt(b.feed_reached_mm_min),
+                  b.feed_cap_mm_min === undefined ? '' : fmt(b.feed_cap_mm_min),
+                  fmt(b.split.rapid), fmt(b.split.feed),
                   fmt(b.split.dwell), fmt(b.split.exact_stop), fmt(b.split.waiting)];
         }));
   building = false;
