@@ -13,3 +13,7 @@ add_test(NAME cli_line_test
 # --- workspace: an error while synchronised keeps the synchronisation (docs/conveyor.md)
 add_test(NAME cli_sync_error_test
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/sync_error_test.sh $<TARGET_FILE:ncsim>)
+# Issue 12's 200-move program in six variants: audit clean, within [TOPP bound, the table]
+# (docs/benchmarks.md "The 200-move table").
+add_test(NAME cli_move200_test
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/move200_test.sh $<TARGET_FILE:ncsim>)
