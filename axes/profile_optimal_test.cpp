@@ -487,3 +487,29 @@ TEST_CASE("time-optimal from moving starts with a != 0 toward the target matches
   }
   CHECK(checked > 300);
 }
+
+TEST_CASE("the shared limit check flags every limit a profile exceeds, and only the start's part") {
+  // axes/profile_limits_check.hpp must be able to fail: Dynamik 1.1 (V = 2000, A+ = A- = 5000,
+  // J = 50000, 1000 mm) checked against limits just below its own.
+  const Dynamics d{2000.0, 5000.0, 5000.0, 50000.0};
+  Profile p;
+  REQUIRE(ncsim::axes::plan_position(MotionState{}, PositionTarget{1000.0, 0.0}, d, p) ==
+          Result::ok);
+  CHECK(ncsim::test::profile_limit_violation(p, d, MotionState{}).empty());
+  const auto flags = [&](Dynamics tighter, const char* what) {
+    const std::string bad = ncsim::test::profile_limit_violation(p, tighter, MotionState{});
+    INFO(what, ": ", bad);
+    CHECK(bad.find(what) != std::string::npos);
+  };
+  flags(Dynamics{1999.0, 5000.0, 5000.0, 50000.0}, "|v|");
+  flags(Dynamics{2000.0, 4999.0, 5000.0, 50000.0}, "|a|");  // speeding up: A+
+  flags(Dynamics{2000.0, 5000.0, 4999.0, 50000.0}, "|a|");  // slowing down: A-
+  flags(Dynamics{2000.0, 5000.0, 5000.0, 49999.0}, "J");
+  // A start above V may exceed V only by what it forces: the same profile is fine from its
+  // start at 2500 mm/s and flagged when the start is taken to be inside (1999 mm/s).
+  const MotionState fast{0.0, 2500.0, 0.0};
+  Profile q;
+  REQUIRE(ncsim::axes::plan_position(fast, PositionTarget{3000.0, 0.0}, d, q) == Result::ok);
+  CHECK(ncsim::test::profile_limit_violation(q, d, fast).empty());
+  CHECK_FALSE(ncsim::test::profile_limit_violation(q, d, MotionState{0.0, 1999.0, 0.0}).empty());
+}
