@@ -24,5 +24,7 @@ ncsim_add_test(NAME axes_profile_tests
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_duration_test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_classify_test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_outside_test.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/profile_synchronized_test.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/profile_moving_target_test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/phase_sync_test.cpp
   LIBS ncsim_axes)

@@ -13,9 +13,11 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <string>
 
 #include "axes/profile.hpp"
 #include "axes/profile_builder.hpp"
+#include "axes/profile_limits_check.hpp"
 #include "axes/profile_outside.hpp"
 #include "jerk/jerk.hpp"
 #include "jerk/test_random.hpp"
@@ -261,7 +263,17 @@ TEST_CASE("from every start inside the limits time-optimal is never slower than 
       INFO("case " << i << " v0 " << c.start.v << " a0 " << c.start.a << " p1 " << c.target.p
                    << " v1 " << c.target.v);
       REQUIRE(best.end_state().p == c.target.p);
+      REQUIRE(best.at(best.duration()).p == c.target.p);
+      REQUIRE(best.at(best.duration()).v == c.target.v);
+      REQUIRE(best.at(best.duration()).a == 0.0);
       REQUIRE(best.duration() <= manual.duration() * (1.0 + 1e-9));
+      // Both plans within V, A+/A-, J (axes/profile_limits_check.hpp; starts inside here).
+      for (const Profile* p : {&best, &manual}) {
+        const std::string bad = ncsim::test::profile_limit_violation(*p, c.dyn, c.start);
+        const char* rule = p == &best ? "time-optimal" : "manual";
+        INFO(rule);
+        REQUIRE_MESSAGE(bad.empty(), bad);
+      }
       ++compared;
     }
   }

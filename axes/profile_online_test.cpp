@@ -2,6 +2,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -73,13 +74,23 @@ TEST_CASE("a move shorter than one encoder increment does not start") {
 }
 
 TEST_CASE("override 75 % lowers the cruise velocity with the same ramps, 100 % restores it") {
+  // 002_* 2.2, figure "Overrideänderungen: Startoverride 100% -> 75% -> 100% (V = 2000.0 mm/s,
+  // von 0.0 mm auf 5000.0 mm)" (seed text l.383): 2000 -> 1500 -> 2000 mm/s. The new level is
+  // reached from above without undershoot and with a = 0 on arrival ("instantaner Override",
+  // l.346: the new level as fast as the limits allow).
   SetpointGenerator g(config());
   REQUIRE(g.start_position(5000.0) == Result::ok);
   steps(g, 1000);
   CHECK(g.setpoint().v == doctest::Approx(2000.0));
   REQUIRE(g.set_override(0.75) == Result::ok);
-  steps(g, 400);
+  double v_low = 2000.0;
+  for (int i = 0; i < 400; ++i) {
+    g.step(kCycle);
+    v_low = std::min(v_low, g.setpoint().v);
+  }
+  CHECK(v_low >= 1500.0 * (1.0 - 1e-12));
   CHECK(g.setpoint().v == doctest::Approx(1500.0));
+  CHECK(std::abs(g.setpoint().a) <= 1e-9 * 5000.0);
   REQUIRE(g.set_override(1.0) == Result::ok);
   double v_peak = 0.0;
   CHECK(run(g, 10000, &v_peak) > 0);

@@ -17,9 +17,11 @@
 #include <array>
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "axes/profile.hpp"
+#include "axes/profile_limits_check.hpp"
 #include "jerk/test_random.hpp"
 
 namespace {
@@ -34,6 +36,12 @@ using ncsim::test::reference::Real;
 using ncsim::test::reference::Ref;
 
 using ncsim::test::log_uniform;
+
+// V, A+/A-, J along the profile beyond what the start forces (axes/profile_limits_check.hpp).
+void check_limits(const Profile& p, const Dynamics& d, const MotionState& start) {
+  const std::string bad = ncsim::test::profile_limit_violation(p, d, start);
+  REQUIRE_MESSAGE(bad.empty(), bad);
+}
 
 }  // namespace
 
@@ -98,6 +106,7 @@ TEST_CASE("time-optimal from moving starts is never slower than the independent 
     REQUIRE(end.p == dist);
     REQUIRE(end.v == v1);
     REQUIRE(end.a == 0.0);
+    check_limits(p, d, MotionState{0.0, v0, a0});
     ++checked;
   }
   // Starts that must reverse (v < 0) to reach a close target have no reference profile.
@@ -146,13 +155,8 @@ TEST_CASE("time-optimal starts that overshoot or move away are never slower than
     REQUIRE(end.p == dist);
     REQUIRE(end.v == v1);
     REQUIRE(end.a == 0.0);
-    // Path limits on a grid (A+ speeding up, A- slowing down, |v| <= V).
-    for (int k = 0; k <= 200; ++k) {
-      const auto sp = p.at(p.duration() * k / 200.0);
-      REQUIRE(std::abs(sp.v) <= d.v_max * (1.0 + 1e-9));
-      const double cap = (sp.v * sp.a > 0.0 ? d.a_max : d.d_max) * (1.0 + 1e-9) + 1e-9;
-      REQUIRE(std::abs(sp.a) <= std::max(cap, std::abs(a0) * (1.0 + 1e-9)));
-    }
+    // Path limits (A+ speeding up, A- slowing down, |v| <= V, J).
+    check_limits(p, d, MotionState{0.0, v0, a0});
     ++checked;
   }
   MESSAGE("checked ", checked);
@@ -228,6 +232,7 @@ TEST_CASE("a moving target is met at the reference's earliest meeting or past a 
     CHECK(end.p == doctest::Approx(p1 + v1 * t_meet).epsilon(1e-12));
     CHECK(end.v == v1);
     CHECK(end.a == 0.0);
+    check_limits(p, d, MotionState{0.0, v0, 0.0});
     ++checked;
   }
   MESSAGE("checked ", checked, ", met past a gap ", past_gap);

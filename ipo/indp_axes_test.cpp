@@ -8,6 +8,9 @@
 #include <cmath>
 #include <random>
 
+#include "axes/profile.hpp"
+#include "machines/machine.hpp"
+
 namespace {
 
 using ncsim::axes::Result;
@@ -296,4 +299,73 @@ TEST_CASE("NC6104: an INDP motion the PTP core cannot plan names the axis and th
   CHECK(e->message.find("axis C") != std::string::npos);
   CHECK(e->message.find("NC5001") != std::string::npos);
   CHECK(ax.in_position(0));  // nothing started
+}
+
+TEST_CASE("NCSIM-AXIS-030: time-optimal INDP moves reverse without stopping; off, the manual's") {
+  // The axis parameter ncsim.profile_rule (machines::Dynamics::time_optimal_profiles) selects
+  // the rule INDP moves are planned with (indp_axis_config -> IndpAxisConfig::rule). A command
+  // behind an axis moving at 400 mm/s: the manual stops and returns (002_* 2.3), the
+  // time-optimal rule turns without a stop (A- before v = 0, A+ after it) and arrives sooner.
+  // Each cycle's setpoint is the profile of its rule, planned from the moving state.
+  ncsim::machines::AxisParams axis;
+  axis.name = "C";
+  auto& dyn = axis.dynamics;
+  dyn.v_max = dyn.v_rapid = 500.0;
+  dyn.acc_max = 5000.0;
+  dyn.acc_feed = 2000.0;  // A+
+  dyn.dec_feed = 1500.0;  // A-
+  dyn.acc_rapid = 1000.0;
+  dyn.ramp_acc_up = dyn.ramp_acc_down = 0.05;  // J = 2000 / 0.05 = 40000
+  dyn.ramp_dec_up = dyn.ramp_dec_down = 0.0375;
+  dyn.ramp_rapid = 0.05;
+  int cycles[2] = {0, 0};
+  for (const bool optimal : {false, true}) {
+    CAPTURE(optimal);
+    dyn.time_optimal_profiles = optimal;
+    const IndpAxisConfig c = ncsim::ipo::indp_axis_config(axis);
+    REQUIRE(c.rule ==
+            (optimal ? ncsim::axes::ProfileRule::time_optimal : ncsim::axes::ProfileRule::manual));
+    REQUIRE(c.feed.a_max == 2000.0);
+    REQUIRE(c.feed.d_max == 1500.0);
+    IndpAxes ax({c}, kT, ncsim::planner::AxisVec{});
+    REQUIRE_FALSE(ax.command(0, feed_move(300.0, 400.0)));
+    for (int k = 0; k < 600; ++k)
+      ax.step();
+    const ncsim::axes::Setpoint s0 = ax.setpoint(0);
+    REQUIRE(s0.v > 300.0);
+    REQUIRE_FALSE(ax.command(0, feed_move(50.0, 400.0)));
+    // The profile of the rule from the moving state, sampled as the INDP layer samples it.
+    ncsim::axes::Dynamics d = c.feed;
+    d.v_max = 400.0;
+    ncsim::axes::Profile expected;
+    REQUIRE(ncsim::axes::plan_position(ncsim::axes::MotionState{s0.p, s0.v, s0.a},
+                                       ncsim::axes::PositionTarget{50.0, 0.0}, d, expected,
+                                       c.rule) == Result::ok);
+    int n = 0;
+    while (!ax.in_position(0) && n < 100000) {
+      ax.step();
+      ++n;
+      const double t = n * kT;
+      if (t < expected.duration() * (1.0 - 1e-12)) {
+        const ncsim::axes::Setpoint e = expected.at(t);
+        REQUIRE(ax.setpoint(0).p == e.p);
+        REQUIRE(ax.setpoint(0).v == e.v);
+        REQUIRE(ax.setpoint(0).a == e.a);
+      }
+    }
+    CHECK(ax.setpoint(0).p == 50.0);  // on the target bit for bit
+    CHECK(ax.setpoint(0).v == 0.0);
+    CHECK(n == static_cast<int>(std::ceil(expected.duration() / kT * (1.0 - 1e-12))));
+    cycles[optimal ? 1 : 0] = n;
+    // The manual stands still on the way (stop, then return: a phase starting at v = 0 with
+    // a = 0 before the end); the time-optimal profile passes v = 0 accelerating.
+    int stands = 0;
+    const auto phases = expected.phases();
+    for (std::size_t k = 1; k < phases.size(); ++k) {
+      if (std::abs(phases[k].v) <= 1e-9 * 400.0 && std::abs(phases[k].a) <= 1e-9 * 2000.0) ++stands;
+    }
+    CHECK(stands == (optimal ? 0 : 1));
+  }
+  MESSAGE("manual ", cycles[0], " cycles, time-optimal ", cycles[1], " cycles");
+  CHECK(cycles[1] < cycles[0]);
 }

@@ -149,7 +149,8 @@ enum class Status : std::uint8_t {
 /// (the reversed frame). Limits hold (V, A+, A-, J) from starts inside them. Not supported
 /// (Status::not_supported): an arrival velocity that needs a turn (the frame of travel from
 /// p0 to p1 disagrees with v1, or the start cannot stop within the distance: see
-/// reversal_of_duration). The end state is met exactly by the chain to rounding.
+/// reversal_of_duration). The end state is met exactly by the chain to rounding. A move whose
+/// time is not `duration` to 1e-9 relative is never answered (not_supported instead).
 Status move_of_duration(const State& start, double p1, double v1, double duration,
                         const Limits& limits, Move& out) noexcept;
 

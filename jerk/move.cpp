@@ -550,13 +550,23 @@ Status move_of_duration(const State& start, double p1, double v1, double duratio
       !std::isfinite(duration) || duration < 0.0 || std::abs(v1) > lim.v_max) {
     return Status::invalid_input;
   }
+  // A level search can meet T(vm) = duration at a jump of T(vm) (seen from a start whose
+  // release ends beyond V: a 0.178 s move answered for 599 s, jerk/move_test.cpp): such a move
+  // is no move of that duration and is refused (not_supported), so that callers try the turn.
+  const auto checked = [&](Status st) {
+    if (st == Status::ok && !(std::abs(out.time() - duration) <= 1e-9 * duration)) {
+      return Status::not_supported;
+    }
+    return st;
+  };
   const double sign = natural_sign(start, p1, v1);
-  const Status st = stretch_in_frame(frame_of(start, p1, v1, sign, lim), duration, lim, out);
+  const Status st =
+      checked(stretch_in_frame(frame_of(start, p1, v1, sign, lim), duration, lim, out));
   if (st != Status::not_supported) return st;
   // A target the start cannot stop before, at rest or to be met moving back (v1 against the
   // way to it): overshoot and return, the reversed frame (its level is the return velocity;
   // lowering it toward 0 stretches the move without bound).
-  return stretch_in_frame(frame_of(start, p1, v1, -sign, lim), duration, lim, out);
+  return checked(stretch_in_frame(frame_of(start, p1, v1, -sign, lim), duration, lim, out));
 }
 
 namespace {

@@ -152,6 +152,27 @@ TEST_CASE("move_of_duration over seeded random cases: exact end, exact time, lim
   CHECK(unsupported < 2000);
 }
 
+TEST_CASE("move_of_duration never answers ok with a move of another duration") {
+  // Found by the seeded plan_synchronized test (axes/profile_synchronized_test.cpp, case 388):
+  // a start braking so hard that its release ends at -744.7 mm/s, beyond V = 276.1 (outside
+  // the limits), to a target 41.8 mm behind met at +265.2 mm/s, asked for 599.198 s. The level
+  // search met T(vm) = T at a jump of T(vm) and answered ok with a 0.178 s move, which
+  // plan_position_of_duration then returned as a profile "of 599.198 s". Now refused, so the
+  // caller takes the turn (reversal_of_duration: exactly 599.198 s here).
+  const Limits d{0x1.142096cb3afc7p+8, 0x1.319f3e226a50cp+13, 0x1.5a250b287ffb4p+16,
+                 0x1.666e040cc9504p+19};
+  const State start{-0x1.3749b8aaf1c5ap+6, 0x1.a352d098852a1p+6, -0x1.13e7db1e75f2fp+15};
+  const double p1 = -0x1.de39a262fc5b4p+6;
+  const double v1 = 0x1.092e7dd64221ep+8;
+  const double duration = 0x1.2b995c8630c8cp+9;
+  Move m;
+  const Status st = ncsim::jerk::move_of_duration(start, p1, v1, duration, d, m);
+  CHECK((st != Status::ok || std::abs(m.time() - duration) <= 1e-9 * duration));
+  ncsim::jerk::Reversal r;
+  REQUIRE(ncsim::jerk::reversal_of_duration(start, p1, v1, duration, d, r) == Status::ok);
+  CHECK(r.time() == doctest::Approx(duration).epsilon(1e-12));
+}
+
 TEST_CASE("crossing_ramp slows with A- before v = 0 and speeds up with A+ after it") {
   // Hand-computed: v0 = -1000, a0 = 0 -> v1 = 2000, A- = 1000, A+ = 4000, J = 1e4.
   // Before v = 0: up to A- in 0.1 s, hold 0.95 s (gain 50 + 950 mm/s), a_zero = A- = 1000.
