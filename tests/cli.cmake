@@ -13,3 +13,7 @@ add_test(NAME cli_line_test
 # --- workspace: an error while synchronised keeps the synchronisation (docs/conveyor.md)
 add_test(NAME cli_sync_error_test
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/sync_error_test.sh $<TARGET_FILE:ncsim>)
+# --- planner (issue 12): --cycle-us, `run -o` written whole or not at all, the CSV's numbers
+add_test(NAME cli_run_output_test
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/run_output_test.sh $<TARGET_FILE:ncsim>
+                 ${CMAKE_CURRENT_SOURCE_DIR}/cli)
