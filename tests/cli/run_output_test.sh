@@ -132,6 +132,16 @@ cruise() {
   } END { exit !(found && ok) }' "$work/detail.csv"
 }
 holds "t=3 s: X is the closed-form cruise position to 1e-9 mm, X.v 100, X.a 0, Y and Z exactly 0" cruise
+# The first cycle is the jerk phase of STEP's j = A / T = 3e6 mm/s^3: at t = T, x = j T^3 / 6 =
+# 0.0005 mm, v = j T^2 / 2 = 1.5 mm/s, a = j T = 3000 mm/s^2, each the same double as the closed
+# form (the CSV prints 5e-04; awk reads both texts to doubles and compares them with ==).
+first_cycle() {
+  grep -v '^#' "$work/detail.csv" | sed -n 2p | awk -F, '{
+    ok = $1 == 0.001 && $2 == 4 && $3 == 0.0005 && $6 == 1.5 && $7 == 3000 && $12 == 1.5 && $13 == 100
+    if (!ok) print "first row: " $0
+  } END { exit !ok }'
+}
+holds "t=T: X, X.v, X.a and v_path are the closed-form jerk-phase values, exactly" first_cycle
 holds "the last row holds X at the programmed end, 700, to the last digit" \
   test "$(grep -v '^#' "$work/detail.csv" | tail -1 | cut -d, -f3)" = 700
 # Every number in the CSV is the shortest text of its double: printing the value read back with
