@@ -15,6 +15,7 @@
 #include <variant>
 
 #include "cli/commands.hpp"
+#include "cli/cycle_option.hpp"
 #include "cli/number_format.hpp"
 #include "cli/run_progress.hpp"
 #include "cli/workpiece_report.hpp"  // --- line
@@ -147,7 +148,8 @@ std::variant<Loaded, int> load(const ProgramOptions& options,
   for (const core::Diagnostic& d : syntax.items())
     err << core::format(d, file);
   if (syntax.error_count() > 0) return kExitProgramErrors;
-  // The channel list has no cycle key in ncsim yet: 1 ms unless --cycle-us (docs/ipo.md).
+  // No list key for the cycle (the manuals at hand name none): 1 ms unless --cycle-us
+  // (docs/ipo.md "The cycle time").
   const double t = cycle_us ? static_cast<double>(*cycle_us) * 1e-6 : ipo::kDefaultCycle;
   // The conveyor world (belt, encoder, probe, filters) of a machine with a conveyor axis.
   std::unique_ptr<conveyor::Port> port;
@@ -866,22 +868,26 @@ void add_run_program_options(CLI::App& cmd, ProgramOptions& program) {
                  "scenario.toml");
 }
 
+void add_cycle_us_option(CLI::App& cmd, std::optional<std::uint64_t>& cycle_us) {
+  cmd.add_option("--cycle-us", cycle_us, "Interpolation cycle [us], 1 .. 1000000 (default 1000)")
+      ->check(CLI::Validator([](const std::string& text) { return cycle_us_error(text); }, "US",
+                             "cycle"));
+}
+
 RunCommands::RunCommands(CLI::App& app) {
   time_cmd_ = app.add_subcommand("time", "Machining time, total and per block");
   add_run_program_options(*time_cmd_, time_.program);
   time_cmd_->add_flag("--blocks", time_.blocks, "Per executed block: time, distance, feeds, split");
   time_cmd_->add_flag("--json", time_.json, "JSON instead of text");
   time_cmd_->add_flag("--audit", time_.audit, "Check every limit; exit 3 on a violation");
-  time_cmd_->add_option("--cycle-us", time_.cycle_us, "Interpolation cycle [us] (default 1000)")
-      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
+  add_cycle_us_option(*time_cmd_, time_.cycle_us);
 
   run_cmd_ = app.add_subcommand("run", "Run on the path interpolator and write the CSV trajectory");
   add_run_program_options(*run_cmd_, run_.program);
   run_cmd_->add_option("-o,--output", run_.output, "CSV file, '-' for stdout (default)");
   run_cmd_->add_option("--every", run_.every, "One row every N cycles (default 1)")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
-  run_cmd_->add_option("--cycle-us", run_.cycle_us, "Interpolation cycle [us] (default 1000)")
-      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
+  add_cycle_us_option(*run_cmd_, run_.cycle_us);
   run_cmd_->add_flag("--audit", run_.audit, "Check every limit (verdict on stderr); exit 3");
   run_cmd_->add_flag(
       "--detail", run_.detail,
@@ -896,8 +902,7 @@ RunCommands::RunCommands(CLI::App& app) {
       "report", "Run on the path interpolator and write the HTML run report (docs/report.md)");
   add_run_program_options(*report_cmd_, report_.program);
   report_cmd_->add_option("-o,--output", report_.output, "HTML file (default report.html)");
-  report_cmd_->add_option("--cycle-us", report_.cycle_us, "Interpolation cycle [us] (default 1000)")
-      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
+  add_cycle_us_option(*report_cmd_, report_.cycle_us);
 }
 
 std::optional<int> RunCommands::dispatch(std::ostream& out, std::ostream& err) const {

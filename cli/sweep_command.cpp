@@ -206,8 +206,7 @@ SweepCommand::SweepCommand(CLI::App& app) {
       ->check(CLI::Range(1u, 64u));
   cmd_->add_option("--jobs", options_.jobs, "Threads (default: the cores)")
       ->check(CLI::Range(1u, 256u));
-  cmd_->add_option("--cycle-us", options_.cycle_us, "Interpolation cycle [us] (default 1000)")
-      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
+  add_cycle_us_option(*cmd_, options_.cycle_us);
 }
 
 std::optional<int> SweepCommand::dispatch(std::ostream& out, std::ostream& err) const {

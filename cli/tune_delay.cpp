@@ -189,8 +189,7 @@ TuneDelayCommand::TuneDelayCommand(CLI::App& app) {
                             "Propose the delay time P-AXIS-00626 that zeroes the mean synchro_lag "
                             "(docs/conveyor.md \"Tuning the delay time offline\")");
   add_run_program_options(*cmd_, options_.program);
-  cmd_->add_option("--cycle-us", options_.cycle_us, "Interpolation cycle [us] (default 1000)")
-      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
+  add_cycle_us_option(*cmd_, options_.cycle_us);
   cmd_->add_flag("--contour", options_.contour,
                  "Also the contour error on the real workpiece (rms, max) of each run");
 }

@@ -88,6 +88,7 @@ Interpreter::Impl::Impl(const core::SourceFile& file, const machines::Machine& m
     if (machine.axes[i].kind != machines::AxisKind::spindle) path_axes |= AxisMask{1} << i;
   }
   xyz = {axis_index("X"), axis_index("Y"), axis_index("Z")};
+  modal.slope = channel_slope();  // P-CHAN-00071 prog_start.slope.profile
 }
 
 bool Interpreter::Impl::fail(core::SourceLoc loc, std::string id, std::string message) {

@@ -422,11 +422,29 @@ bool Interpreter::Impl::hash_contour_mode(const ast::Block& b, const ast::HashCo
   return true;
 }
 
+SlopeType Interpreter::Impl::channel_slope() const {
+  switch (machine.channel.start_slope) {
+    case machines::SlopeProfile::step:
+      return SlopeType::step;
+    case machines::SlopeProfile::trapez:
+      return SlopeType::trapez;
+    case machines::SlopeProfile::sin2:
+      return SlopeType::sin2;
+  }
+  return SlopeType::step;
+}
+
 bool Interpreter::Impl::hash_slope(const ast::Block& b, const ast::HashCommand& h) {
   const Items items{b, 0, h.item_count};
   const core::SourceLoc at = h.loc;
   if (modal.synchronised) {
     return fail(at, "NC4506", "#SLOPE is not allowed while synchronised (seed 004 §2.1.7)");
+  }
+  // `#SLOPE DEFAULT` restores P-CHAN-00071 prog_start.slope.profile (isg-language.md §5.5,
+  // PROG-207190411).
+  if (h.kind == HashKind::slope_default) {
+    modal.slope = channel_slope();
+    return true;
   }
   modal.slope = SlopeType::step;
   if (const ast::Item* t = items.find("TYPE")) {

@@ -160,6 +160,8 @@ struct Interpreter::Impl {
   bool hash_caxtrack(const ast::Block& b, const ast::HashCommand& h);
   bool hash_contour_mode(const ast::Block& b, const ast::HashCommand& h);
   bool hash_slope(const ast::Block& b, const ast::HashCommand& h);
+  /// The channel's slope, P-CHAN-00071: the program's start slope and `#SLOPE DEFAULT`'s.
+  SlopeType channel_slope() const;
   bool hash_machine_data(const ast::Block& b, const ast::HashCommand& h);  // own file
   bool machine_setting(core::SourceLoc at, const machines::ParamSpec& spec,
                        std::optional<std::uint16_t> index, double value, MachineData& md);
@@ -261,8 +263,9 @@ struct Interpreter::Impl {
   AxisValues position{};
   AxisMask path_axes = 0;  // axes that take part in path motion (not spindles)
   MotionKind motion = MotionKind::rapid;
-  // The programmed modal G state (G360 -> exact_stop, G261 -> contouring, #SLOPE -> slope);
-  // snapshot() adds what a motion derives from elsewhere (cs_active, the forced slope).
+  // The programmed modal G state (G360 -> exact_stop, G261 -> contouring, #SLOPE -> slope;
+  // the slope starts as P-CHAN-00071, set in the constructor); snapshot() adds what a motion
+  // derives from elsewhere (cs_active, the forced slope).
   ModalSnapshot modal;
   bool centre_absolute = false;   // G161
   std::optional<double> feed;     // [mm/s]

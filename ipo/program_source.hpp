@@ -61,8 +61,8 @@ std::vector<std::uint8_t> interpolated_axes(const machines::Machine& machine);
 /// J = Dynamics::jerk_feed(), C0 NCSIM-AXIS-020, G00 slope a_rapid = min(P-AXIS-00004,
 /// P-AXIS-00008) and j_rapid = a_rapid / P-AXIS-00200 (Dynamics::jerk_rapid); ExactStop window
 /// P-AXIS-00236, settling P-AXIS-00532 (0 when not monitored); window P-CHAN-00650 look-ahead
-/// blocks; cycle `t_cycle` [s] (the channel list has no cycle key in ncsim yet: the CLI's default
-/// is 1 ms).
+/// blocks; cycle `t_cycle` [s] (no list key: the manuals at hand name none, the cycle is the NC
+/// SAF task's; the CLI's default is the seeds' 1 ms, docs/ipo.md "The cycle time").
 Config machine_config(const machines::Machine& machine, double t_cycle);
 
 /// The CLI's interpolation cycle when `--cycle-us` is not given [s].

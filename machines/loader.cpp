@@ -462,6 +462,10 @@ ChannelParams build_channel(const ListValues& v) {
   if (const auto seq = parse_rotation_sequence(v.text("coordinate_system.rotation_sequence"))) {
     ch.cs_rotation_sequence = *seq;
   }
+  // P-CHAN-00071 (isg-language.md §5.5); 3 (HSC) is refused in check_channel_refs.
+  const double slope = v.number("prog_start.slope.profile");
+  if (slope == 1.0) ch.start_slope = SlopeProfile::trapez;
+  if (slope == 2.0) ch.start_slope = SlopeProfile::sin2;
   const std::string override_type = v.text("ncsim.path_override_type");
   if (override_type == "ORIGINAL") ch.path_override_type = PathOverrideType::original;
   if (override_type == "REDUCED_ABOVE_100")

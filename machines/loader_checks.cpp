@@ -312,6 +312,15 @@ void check_channel_refs(Machine& m, const ListValues& ch, Reporter& r) {
             param_ref("coordinate_system.rotation_sequence", ListKind::channel) + " = " + seq +
                 " must be one of XYZ XZY YXZ YZX ZXY ZYX XYX XZX YXY YZY ZXZ ZYZ");
   }
+  // P-CHAN-00071: "0 step, 1 trapez, 2 sin2, 3 HSC" (isg-language.md §5.5, PROG-207190411).
+  // ncsim does not model the HSC profile; a channel whose every program would start on it is
+  // refused rather than planned with another profile (docs/machines.md).
+  if (ch.number("prog_start.slope.profile") == 3.0) {
+    r.error(file, ch.loc("prog_start.slope.profile"), "NC3013",
+            param_ref("prog_start.slope.profile", ListKind::channel) +
+                " = 3 (HSC; \"0 step, 1 trapez, 2 sin2, 3 HSC\", PROG-207190411): ncsim does "
+                "not model the HSC slope profile; write 0 (STEP), 1 (TRAPEZ) or 2 (SIN2)");
+  }
   const std::string override_type = ch.text("ncsim.path_override_type");
   if (override_type != "REDUCED" && override_type != "ORIGINAL" &&
       override_type != "REDUCED_ABOVE_100") {

@@ -4,6 +4,9 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "machines/param_table.hpp"
 
@@ -29,6 +32,41 @@ Machine load_bundled(std::string_view name) {
   CHECK(r.diagnostics.items().empty());
   REQUIRE(r.machine.has_value());
   return *r.machine;
+}
+
+// A machine of the bad-list corpus's base axis lists (machines/testdata/base) whose channel list
+// is `channel` (written to a scratch folder named after `name`), and the channel list's path.
+struct ChannelLoad {
+  LoadResult result;
+  std::string channel_file;
+};
+ChannelLoad load_base_with_channel(const std::string& name, const std::string& channel) {
+  const auto base = source_root() / "machines" / "testdata" / "base";
+  const auto dir = std::filesystem::temp_directory_path() / ("ncsim_machines_" + name);
+  std::filesystem::create_directories(dir);
+  {
+    std::ofstream list(dir / "channel.lis");
+    list << channel;
+    std::ofstream index(dir / kMachineIndexFile);
+    index << "channel channel.lis\n";
+    for (const char* ax : {"X", "Y", "Z", "S"}) {
+      std::string file(ax);
+      file[0] = static_cast<char>(file[0] - 'A' + 'a');
+      index << "axis " << ax << ' ' << (base / (file + ".lis")).string() << "\n";
+    }
+  }
+  return {load_machine(dir), (dir / "channel.lis").string()};
+}
+
+// The only error of `r`; fails the test when there is not exactly one.
+core::Diagnostic only_error(const LoadResult& r) {
+  INFO(all_diagnostics(r));
+  CHECK_FALSE(r.machine.has_value());
+  std::vector<core::Diagnostic> errors;
+  for (const core::Diagnostic& d : r.diagnostics.items())
+    if (d.severity == core::Severity::error) errors.push_back(d);
+  REQUIRE(errors.size() == 1);
+  return errors[0];
 }
 
 TEST_CASE("every bundled machine loads without any diagnostic") {
@@ -314,6 +352,114 @@ TEST_CASE("a channel with more axes than ncsim supports is refused at the index 
     found = found || (d.id == "NC3014" && d.loc.line == kMaxChannelAxes + 2);
   }
   CHECK(found);
+}
+
+TEST_CASE(
+    "P-CHAN-00071 prog_start.slope.profile: STEP when absent, 0 / 1 / 2 read as STEP / TRAPEZ / "
+    "SIN2") {
+  const std::string head =
+      "configuration.interpolator.function FCT_DLM\n"
+      "conveyor_sync.log_number_master 4\n";
+  const ChannelLoad absent = load_base_with_channel("slope_absent", head);
+  INFO(all_diagnostics(absent.result));
+  REQUIRE(absent.result.machine.has_value());
+  CHECK(absent.result.machine->channel.start_slope == SlopeProfile::step);
+  const std::pair<const char*, SlopeProfile> cases[] = {
+      {"0", SlopeProfile::step}, {"1", SlopeProfile::trapez}, {"2", SlopeProfile::sin2}};
+  for (const auto& [text, want] : cases) {
+    CAPTURE(text);
+    const ChannelLoad r =
+        load_base_with_channel("slope_read", head + "prog_start.slope.profile " + text + "\n");
+    INFO(all_diagnostics(r.result));
+    CHECK(r.result.diagnostics.items().empty());
+    REQUIRE(r.result.machine.has_value());
+    CHECK(r.result.machine->channel.start_slope == want);
+  }
+  // Every bundled machine starts on STEP, today's behaviour (the goldens depend on it).
+  for (const char* name : {"laser_portal", "delta_picker", "static_saw", "portal_3x"}) {
+    CAPTURE(name);
+    CHECK(load_bundled(name).channel.start_slope == SlopeProfile::step);
+  }
+}
+
+TEST_CASE(
+    "P-CHAN-00071: 3 (HSC) is NC3013 and a value outside 0..3 or not an integer is refused, each "
+    "at its file:line with the id") {
+  const std::string head =
+      "configuration.interpolator.function FCT_DLM\n"
+      "conveyor_sync.log_number_master 4\n";
+  {
+    const ChannelLoad r =
+        load_base_with_channel("slope_hsc", head + "prog_start.slope.profile 3\n");
+    const core::Diagnostic e = only_error(r.result);
+    CHECK(e.id == "NC3013");
+    CHECK(e.file == r.channel_file);
+    CHECK(e.loc.line == 3);
+    CHECK(e.message.find("prog_start.slope.profile (P-CHAN-00071)") != std::string::npos);
+    CHECK(e.message.find("HSC") != std::string::npos);
+    CHECK(e.message.find("write 0 (STEP), 1 (TRAPEZ) or 2 (SIN2)") != std::string::npos);
+  }
+  const std::pair<const char*, const char*> bad[] = {{"4", "NC3004"},
+                                                     {"-1", "NC3004"},
+                                                     {"65536", "NC3004"},
+                                                     {"1.5", "NC3003"},
+                                                     {"TRAPEZ", "NC3003"}};
+  for (const auto& [text, id] : bad) {
+    CAPTURE(text);
+    const ChannelLoad r = load_base_with_channel(
+        "slope_bad", "# a comment line\n" + head + "prog_start.slope.profile " + text + "\n");
+    const core::Diagnostic e = only_error(r.result);
+    CHECK(e.id == id);
+    CHECK(e.file == r.channel_file);
+    CHECK(e.loc.line == 4);
+    CHECK(e.message.find("prog_start.slope.profile (P-CHAN-00071)") != std::string::npos);
+    if (std::string(id) == "NC3004")
+      CHECK(e.message.find("outside its range 0..3") != std::string::npos);
+  }
+}
+
+TEST_CASE(
+    "P-CHAN-00650 look-ahead window: FCT_DLM alone is STANDARD (120), LOW 30, HIGH 190, the same "
+    "size twice is no conflict, CUSTOM is NC3013 at its line") {
+  const std::string master = "conveyor_sync.log_number_master 4\n";
+  const std::pair<const char*, int> sizes[] = {
+      {"FCT_DLM", 120},
+      {"FCT_IPO_DEFAULT|FCT_DLM", 120},
+      {"FCT_LOOK_AHEAD_STANDARD|FCT_DLM", 120},
+      {"FCT_IPO_DEFAULT|FCT_LOOK_AHEAD_STANDARD|FCT_DLM", 120},
+      {"FCT_LOOK_AHEAD_LOW|FCT_DLM", 30},
+      {"FCT_DLM|FCT_LOOK_AHEAD_HIGH", 190}};
+  for (const auto& [flags, blocks] : sizes) {
+    CAPTURE(flags);
+    const ChannelLoad r = load_base_with_channel(
+        "look_ahead", std::string("configuration.interpolator.function ") + flags + "\n" + master);
+    INFO(all_diagnostics(r.result));
+    CHECK(r.result.diagnostics.items().empty());
+    REQUIRE(r.result.machine.has_value());
+    CHECK(r.result.machine->channel.interpolator.look_ahead_blocks == blocks);
+  }
+  {
+    const ChannelLoad r = load_base_with_channel(
+        "look_ahead_custom",
+        master + "configuration.interpolator.function FCT_DLM|FCT_LOOK_AHEAD_CUSTOM\n");
+    const core::Diagnostic e = only_error(r.result);
+    CHECK(e.id == "NC3013");
+    CHECK(e.file == r.channel_file);
+    CHECK(e.loc.line == 2);
+    CHECK(e.message.find("configuration.interpolator.function (P-CHAN-00650)") !=
+          std::string::npos);
+    CHECK(e.message.find("FCT_LOOK_AHEAD_CUSTOM needs P-CHAN-00653") != std::string::npos);
+  }
+  {
+    const ChannelLoad r = load_base_with_channel(
+        "look_ahead_two",
+        "configuration.interpolator.function FCT_LOOK_AHEAD_LOW|FCT_LOOK_AHEAD_HIGH|FCT_DLM\n" +
+            master);
+    const core::Diagnostic e = only_error(r.result);
+    CHECK(e.id == "NC3007");
+    CHECK(e.loc.line == 1);
+    CHECK(e.message.find("FCT_LOOK_AHEAD_LOW and FCT_LOOK_AHEAD_HIGH") != std::string::npos);
+  }
 }
 
 }  // namespace

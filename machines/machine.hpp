@@ -182,10 +182,16 @@ enum class PathOverrideType {
   reduced_above_100,  ///< REDUCED_ABOVE_100: "Reduced [0 .. >100 %]"
 };
 
+/// P-CHAN-00071 `prog_start.slope.profile`: the slope a program starts with and `#SLOPE DEFAULT`
+/// restores (isg-language.md §5.5, PROG-207190411: 0 step, 1 trapez, 2 sin2, 3 HSC). 3 (HSC) is
+/// NC3013 at load: ncsim does not model the HSC profile (docs/machines.md).
+enum class SlopeProfile { step, trapez, sin2 };
+
 struct ChannelParams {
   InterpolatorFunction interpolator;
-  std::optional<ConveyorSyncChannel> conveyor;  ///< set when FCT_DLM is given
-  std::vector<TrafoParams> trafos;              ///< trafo[0..]; empty: no kinematic
+  SlopeProfile start_slope = SlopeProfile::step;  ///< P-CHAN-00071 prog_start.slope.profile
+  std::optional<ConveyorSyncChannel> conveyor;    ///< set when FCT_DLM is given
+  std::vector<TrafoParams> trafos;                ///< trafo[0..]; empty: no kinematic
   RotationSequence cs_rotation_sequence = RotationSequence::ZYX;    ///< P-CHAN-00394
   int spindle_count = 0;                                            ///< spdl_anzahl
   std::optional<int> main_spindle_number;                           ///< main_spindle_ax_nr

@@ -17,3 +17,11 @@ add_test(NAME cli_sync_error_test
 # (docs/benchmarks.md "The 200-move table").
 add_test(NAME cli_move200_test
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/move200_test.sh $<TARGET_FILE:ncsim>)
+# --- planner (issue 12): --cycle-us, `run -o` written whole or not at all, the CSV's numbers
+add_test(NAME cli_run_output_test
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/run_output_test.sh $<TARGET_FILE:ncsim>
+                 ${CMAKE_CURRENT_SOURCE_DIR}/cli)
+# --- planner (issue 12): P-CHAN-00071, the channel's start slope, end to end
+add_test(NAME cli_start_slope_test
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/start_slope_test.sh $<TARGET_FILE:ncsim>
+                 ${CMAKE_CURRENT_SOURCE_DIR}/cli)
