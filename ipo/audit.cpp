@@ -230,7 +230,9 @@ void Audit::on_cycle(const Cycle& c) {
     double mag = 1.0;
     for (std::size_t i = 0; i < limits_.size(); ++i)
       mag = std::max(mag, std::abs(c.x[i]));
-    const double tol = m.contour == planner::Contour::tolerance ? m.path_dev : 0.0;
+    // DEV: PATH_DEV; DIST: max(PRE_DIST, POST_DIST), the ball its curve provably stays in
+    // (planner::contour_bound, docs/planner.md "DIST").
+    const double tol = planner::contour_bound(m);
     const double allowed = tol + 1e-9 * mag;
     AxisVec x = c.x;  // --- indp: INDP axes are not part of the block's contour
     for (std::size_t i = 0; i < limits_.size(); ++i)

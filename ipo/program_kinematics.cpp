@@ -168,9 +168,9 @@ void ProgramSource::reserve_belt_share(planner::Move& move) {
 // PCS1", "The ball").
 bool ProgramSource::holds_for_ball(const planner::Move& move, bool pcs1) const {
   BeltCarry carry;
-  return move.transformed && pcs1 && move.contour == planner::Contour::tolerance && !move.rapid &&
-         !move.block_time && !move.exact_stop &&
-         move.transition != planner::Transition::stop_at_end && belt_carry(carry);
+  return move.transformed && pcs1 && planner::contoured(move) && !move.rapid && !move.block_time &&
+         !move.exact_stop && move.transition != planner::Transition::stop_at_end &&
+         belt_carry(carry);
 }
 
 void ProgramSource::ball_release(const planner::Move* next) {
@@ -185,11 +185,12 @@ void ProgramSource::reserve_ball_share(planner::Move& in, const planner::Move& o
   if (!out.transformed || !trafo_) return;
   const planner::Segment in_path = planner::Segment::from_move(in);
   const planner::Segment out_path = planner::Segment::from_move(out);
-  // As the planner builds it (planner::Preparer::push_path): the ball of radius PATH_DEV, at
-  // most half of each block; a block's start trimmed by the ball before it does not change
-  // the last half of it, where this ball lies.
-  const auto ball = planner::make_blend(in_path, out_path, in.path_dev, in_path.length() / 2,
-                                        out_path.length() / 2);
+  // As the planner builds it (planner::Preparer::push_path, planner::corner_blend): the ball of
+  // radius PATH_DEV (DEV) or the PRE_DIST / POST_DIST curve (DIST), at most half of each block;
+  // a block's start trimmed by the ball before it does not change the last half of it, where
+  // this ball lies.
+  const auto ball =
+      planner::corner_blend(in, in_path, out_path, in_path.length() / 2, out_path.length() / 2);
   if (!ball) return;
   // The planner runs the ball at most at the slower of its neighbours' programmed feeds, with
   // the limits of the block before it (in's Move): the ball's share goes into in's.

@@ -191,12 +191,20 @@ void ProgramSource::set_modal(const interp::ModalSnapshot& s, planner::Move& mv,
   mv.transition = to_planner(s.transition);
   mv.exact_stop = s.exact_stop;
   if (s.contouring) {
-    if (s.contour.kind != interp::ContourKind::dev) {
-      fail(line, std::string("#CONTOUR MODE ") + contour_name(s.contour.kind) +
-                     " (only DEV is interpolated)");
+    switch (s.contour.kind) {
+      case interp::ContourKind::dev:
+        mv.contour = planner::Contour::tolerance;
+        mv.path_dev = s.contour.path_dev;
+        break;
+      case interp::ContourKind::dist:  // isg-language.md §5.3 (PROG-475180811)
+        mv.contour = planner::Contour::distance;
+        mv.pre_dist = s.contour.pre_dist;
+        mv.post_dist = s.contour.post_dist;
+        break;
+      default:
+        fail(line, std::string("#CONTOUR MODE ") + contour_name(s.contour.kind) +
+                       " (only DEV and DIST are interpolated)");
     }
-    mv.contour = planner::Contour::tolerance;
-    mv.path_dev = s.contour.path_dev;
   }
   mv.transvelmin = s.transvelmin;
   mv.slope = to_planner(s.slope);

@@ -209,11 +209,11 @@ class ProgramSource final : public Source {
   // until the next command; a next Motion gets the ball built as the planner builds it and
   // the ball's share goes into the held block's (reserve_ball_share); anything else releases
   // the held block as it is before that command's items (pull()).
-  /// A transformed G01 / G02 / G03 Move in PCS1 (`pcs1`) that ends in a tolerance ball.
+  /// A transformed G01 / G02 / G03 Move in PCS1 (`pcs1`) that ends in a contoured corner.
   bool holds_for_ball(const planner::Move& move, bool pcs1) const;
-  /// The ball between `in` and `out` (planner::make_blend): its belt share (ipo::belt_share at
-  /// the slower feed of the two) raises in's acceleration and jerk shares where larger and
-  /// caps in's feed where lower (the planner runs the ball with in's limits).
+  /// The ball between `in` and `out` (planner::corner_blend, DEV or DIST): its belt share
+  /// (ipo::belt_share at the slower feed of the two) raises in's acceleration and jerk shares where
+  /// larger and caps in's feed where lower (the planner runs the ball with in's limits).
   void reserve_ball_share(planner::Move& in, const planner::Move& out);
   std::optional<planner::Move> ball_held_;  ///< the block whose ball waits for the next Motion
   /// Emits ball_held_ (if any): with its ball's share into the next Motion `next`

@@ -150,6 +150,40 @@ TEST_CASE("an unsupported command is NC6001 at its line, never skipped") {
   CHECK(set.error_message.find("not supported: G92") == 0);
 }
 
+TEST_CASE("#CONTOUR MODE DIST reaches the Move with PRE_DIST and POST_DIST; DEV is unchanged") {
+  // isg-language.md §5.3 (PROG-475180811): DIST with PRE_DIST, POST_DIST (1 mm each by default).
+  const Pulled p = pull(
+      "N10 G01 X10 F600\n"
+      "N20 #CONTOUR MODE [DIST PRE_DIST=2 POST_DIST=0.5]\n"
+      "N30 G261 X20\n"
+      "N40 #CONTOUR MODE [DEV PATH_DEV=0.25]\n"
+      "N50 Y10\n"
+      "N60 M30\n");
+  REQUIRE(p.error_id.empty());
+  REQUIRE(p.items.size() == 3);
+  CHECK(std::get<planner::Move>(p.items[0]).contour == planner::Contour::none);
+  const auto& dist = std::get<planner::Move>(p.items[1]);
+  CHECK(dist.contour == planner::Contour::distance);
+  CHECK(dist.pre_dist == 2.0);
+  CHECK(dist.post_dist == 0.5);
+  const auto& dev = std::get<planner::Move>(p.items[2]);
+  CHECK(dev.contour == planner::Contour::tolerance);
+  CHECK(dev.path_dev == 0.25);
+}
+
+TEST_CASE("#CONTOUR MODE DIST_SOFT, DIST_MASTER, POS and PTP stay NC6001 with their names") {
+  for (const char* mode : {"DIST_SOFT", "DIST_MASTER", "POS", "PTP"}) {
+    CAPTURE(mode);
+    const Pulled p = pull(std::string("N10 G01 X10 F600\nN20 #CONTOUR MODE [") + mode +
+                          "]\nN30 G261 X20\nN40 M30\n");
+    CHECK(p.items.size() == 1);
+    CHECK(p.error_id == ipo::kNotSupportedId);
+    CHECK(p.error_line == 3);
+    CHECK(p.error_message.find(std::string("#CONTOUR MODE ") + mode + " (only DEV and DIST") !=
+          std::string::npos);
+  }
+}
+
 TEST_CASE("#TRAFO ON / OFF: a 0 s dwell at each switch, the moves between are transformed") {
   const Pulled p = pull(
       "N10 #KIN ID[37]\nN20 #TRAFO ON\nN30 G01 X10 Y0 Z-750 F600\nN40 #TRAFO OFF\n"

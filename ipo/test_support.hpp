@@ -44,6 +44,7 @@ inline planner::Move line(const AxisVec& a, const AxisVec& b, double feed, std::
 struct RandomProgram {
   int moves = 60;
   bool blends = true;   ///< some blocks end with G261 PATH_DEV
+  bool dist = false;    ///< with `blends`: G261 #CONTOUR MODE DIST PRE_DIST / POST_DIST instead
   bool stops = true;    ///< some G09 / G60 / G04 / G00
   bool helices = true;  ///< arcs move Z too
 };
@@ -79,8 +80,14 @@ inline std::vector<Item> random_program(std::mt19937_64& rng, const RandomProgra
       if (u(rng) < 0.2) m.end[2] += len * (u(rng) - 0.5);
     }
     if (p.blends && u(rng) < 0.5) {
-      m.contour = planner::Contour::tolerance;
-      m.path_dev = 0.005 + 0.5 * u(rng);
+      if (p.dist) {
+        m.contour = planner::Contour::distance;
+        m.pre_dist = 0.005 + 0.5 * u(rng);  // the range of PATH_DEV below
+        m.post_dist = 0.005 + 0.5 * u(rng);
+      } else {
+        m.contour = planner::Contour::tolerance;
+        m.path_dev = 0.005 + 0.5 * u(rng);
+      }
     }
     if (p.stops) {
       const double e = u(rng);

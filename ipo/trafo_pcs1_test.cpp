@@ -209,15 +209,20 @@ const planner::Move& line_of(const std::vector<planner::Move>& moves, std::uint3
 
 // A G261 corner between two PCS1 blocks after a dwell, on a `belt` [mm/s] belt, ball radius
 // `dev` [mm]: lines 10 (N60, the block before the ball) and 11 (N70).
-std::string ball_program(double belt, double dev) {
+// `mode`: the #CONTOUR MODE parameters.
+std::string ball_program_mode(double belt, const std::string& mode) {
   return "%t\nN10 #KIN ID[37]\nN20 #TRAFO ON\nN30 G01 X-400 Y0 Z-700 F60000\n"
          "N40 #SYNC IN [CONV_VEL=" +
          std::to_string(static_cast<int>(belt * 60.0)) +
          "]\nN50 G01 X-450 Y0 Z-700 F60000\nN55 G04 0.3\n"
-         "N57 #CONTOUR MODE [DEV PATH_DEV=" +
-         std::to_string(dev) +
+         "N57 #CONTOUR MODE [" +
+         mode +
          "]\nN58 G261\nN60 G01 X-300 Y-150 Z-880 F60000\nN70 G01 X-150 Y50 Z-850\n"
          "N75 G260\nN80 G04 0.05\nN90 #SYNC OUT\nN100 M30\n";
+}
+
+std::string ball_program(double belt, double dev) {
+  return ball_program_mode(belt, "DEV PATH_DEV=" + std::to_string(dev));
 }
 
 }  // namespace
@@ -263,6 +268,44 @@ TEST_CASE("a tolerance ball between two PCS1 blocks gets the belt's share on its
     MESSAGE("feed " << in.feed << " (ball's cap " << s.feed << ")");
     CHECK(in.feed <= s.feed * (1.0 + 1e-9));
   }
+}
+
+TEST_CASE(
+    "under DIST the PCS1 block carries the share of the planner's PRE_DIST / POST_DIST curve") {
+  // planner::corner_blend builds the same curve for the planner and for the adapter's share:
+  // PRE_DIST 40 mm before the corner, POST_DIST 5 mm after it (isg-language.md §5.3).
+  const double belt = 500.0;  // [mm/s]
+  const ShareRig rig;
+  REQUIRE(rig.trafo);
+  ipo::BeltCarry carry;
+  carry.v_belt = 1.1 * belt;
+  carry.workspace = {{{-600.0, -600.0, -900.0}, {600.0, 600.0, 0.0}}};  // picker()'s
+  const std::vector<planner::Move> moves =
+      moves_of(ball_program_mode(belt, "DIST PRE_DIST=40 POST_DIST=5"));
+  const planner::Move& in = line_of(moves, 10);
+  const planner::Move& out = line_of(moves, 11);
+  REQUIRE(in.contour == planner::Contour::distance);
+  const planner::Segment in_path = planner::Segment::from_move(in);
+  const planner::Segment out_path = planner::Segment::from_move(out);
+  const planner::JointEnds ends = planner::joint_ends(in_path, out_path);
+  const auto ball =
+      planner::make_blend(in_path, out_path, ends, planner::CornerDistances{40.0, 5.0, false},
+                          in_path.length() / 2, out_path.length() / 2);
+  REQUIRE(ball);
+  CHECK(ball->cut_in == doctest::Approx(40.0));
+  const auto ball_share =
+      ipo::belt_share(ball->curve, std::min(in.feed, out.feed), rig.trafo->limits.inverse,
+                      rig.trafo->xyz, rig.trafo->limits.joints, carry);
+  REQUIRE(std::holds_alternative<ipo::BeltShare>(ball_share));
+  const ipo::BeltShare& s = std::get<ipo::BeltShare>(ball_share);
+  REQUIRE(in.belt_joints);
+  for (std::size_t i = 0; i < 3; ++i) {
+    CAPTURE(i);
+    CHECK(in.belt_joints->a[i] >= s.joints.a[i] * (1.0 - 1e-9));
+    CHECK(in.belt_joints->j[i] >= s.joints.j[i] * (1.0 - 1e-9));
+  }
+  MESSAGE("feed " << in.feed << " (the DIST curve's cap " << s.feed << ")");
+  CHECK(in.feed <= s.feed * (1.0 + 1e-9));
 }
 
 TEST_CASE("a ball across a command that emits nothing and does not stop the path keeps its share") {

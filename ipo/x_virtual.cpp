@@ -270,9 +270,10 @@ std::optional<XvError> blend_belt_feed(planner::Move& in, planner::Move& out,
   constexpr int kBallSamples = 64;  // X-share samples over the ball
   const planner::Segment a = planner::Segment::from_move(in);
   const planner::Segment b = planner::Segment::from_move(out);
-  // As planner::Preparer::push_path: each side gives at most half of its part.
+  // As planner::Preparer::push_path (planner::corner_blend, DEV or DIST): each side gives at
+  // most half of its part.
   const std::optional<planner::Blend> ball =
-      planner::make_blend(a, b, in.path_dev, a.length() / 2, b.length() / 2);
+      planner::corner_blend(in, a, b, a.length() / 2, b.length() / 2);
   if (!ball) return std::nullopt;
   const auto x = static_cast<std::size_t>(p.x);
   double lo = 1e300;  // smallest X share over the ball
@@ -306,9 +307,7 @@ std::optional<XvError> joint_belt_check(const planner::Move& in, const planner::
   const planner::Segment a = planner::Segment::from_move(in);
   const planner::Segment b = planner::Segment::from_move(out);
   // As planner::Preparer::push_path: a tolerance ball makes the joint C2 (blend_belt_feed).
-  if (in.contour == planner::Contour::tolerance &&
-      planner::make_blend(a, b, in.path_dev, a.length() / 2, b.length() / 2))
-    return std::nullopt;
+  if (planner::corner_blend(in, a, b, a.length() / 2, b.length() / 2)) return std::nullopt;
   const planner::PathPoint end = a.at(a.length());
   const planner::PathPoint start = b.at(0.0);
   const auto x = static_cast<std::size_t>(p.x);
@@ -316,8 +315,7 @@ std::optional<XvError> joint_belt_check(const planner::Move& in, const planner::
   if (!(share > 0.0)) return std::nullopt;  // NC9102 is belt_feed's
   const double need = p.v_belt / share;     // [mm/s] the path velocity at the joint
   // As planner::Preparer::emit_joint: #TRANSVELMIN does not act at a contoured joint.
-  const std::optional<double> v_min =
-      in.contour == planner::Contour::tolerance ? std::nullopt : in.transvelmin;
+  const std::optional<double> v_min = planner::contoured(in) ? std::nullopt : in.transvelmin;
   const std::uint8_t n = std::max(a.axis_count(), b.axis_count());
   const planner::Link link =
       planner::link_velocity(end, start, n, a.metric() | b.metric(), limits, channel, need, need,

@@ -86,9 +86,9 @@ XvOutcome belt_feed(const planner::Move& mv, const XVirtualParams& p,
 
 /// --- static-blend: the tolerance ball (G61 / G261) the planner puts between belt-fed parts `in`
 /// (ending with the ball) and `out` (the next part), as planner::Preparer builds it
-/// (planner::make_blend, each side at most half of its part). Its X share |dX/ds| varies; the
-/// path must be able to run at v_belt / |dX/ds| everywhere in it, so both parts' feeds are raised
-/// to v_belt / min |dX/ds| over the ball (the planner's ball moves at most at the slower
+/// (planner::corner_blend, DEV or DIST, each side at most half of its part). Its X share |dX/ds|
+/// varies; the path must be able to run at v_belt / |dX/ds| everywhere in it, so both parts' feeds
+/// are raised to v_belt / min |dX/ds| over the ball (the planner's ball moves at most at the slower
 /// neighbour's feed; the channel's velocity cap keeps the X component at the belt's where the
 /// plan is faster, ipo/channel_static.cpp). NC9100 when the planner's own limits of the ball
 /// (its curvature and jerk) do not allow that velocity, NC9102 when the ball turns along the

@@ -161,6 +161,19 @@ TEST_CASE("a tolerance ball raises both neighbours' feeds to the belt feed of it
     CHECK(e->message.find("tolerance ball") != std::string::npos);
     CHECK(e->message.find("axis Y") != std::string::npos);
   }
+  SUBCASE("DIST: the curve is the planner's, from PRE_DIST to POST_DIST (not PATH_DEV's ball)") {
+    const XVirtualParams fast{0, 1.0, 330.0, 0b111};
+    Move in = line(0, 0, -100, -100);
+    in.contour = ncsim::planner::Contour::distance;
+    in.path_dev = 20.0;  // DEV's, not read under DIST
+    in.pre_dist = 2.0;
+    in.post_dist = 0.5;
+    Move out = line(-100, -100, -200, 0);
+    const auto e = blend_belt_feed(in, out, fast, limits(), kNames);
+    REQUIRE(e);
+    CHECK(std::string(e->id) == "NC9100");
+    CHECK(e->message.find("radius 2 mm") != std::string::npos);  // max(PRE_DIST, POST_DIST)
+  }
   SUBCASE("collinear blocks get no ball: nothing changes") {
     Move in = line(0, 0, -100, -100);
     in.contour = ncsim::planner::Contour::tolerance;

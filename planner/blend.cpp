@@ -106,6 +106,11 @@ std::optional<Blend> make_blend(const Segment& in, const Segment& out, double ra
 
 std::optional<Blend> make_blend(const Segment& in, const Segment& out, const JointEnds& ends,
                                 double radius, double max_cut_in, double max_cut_out) {
+  return make_blend(in, out, ends, CornerDistances{radius, radius, true}, max_cut_in, max_cut_out);
+}
+
+std::optional<Blend> make_blend(const Segment& in, const Segment& out, const JointEnds& ends,
+                                const CornerDistances& d, double max_cut_in, double max_cut_out) {
   const std::uint8_t n = std::max(in.axis_count(), out.axis_count());
   const AxisMask metric = in.metric() | out.metric();
   const Metric distance{n, metric};
@@ -113,43 +118,79 @@ std::optional<Blend> make_blend(const Segment& in, const Segment& out, const Joi
   const double len_out = out.length();
   max_cut_in = std::clamp(max_cut_in, 0.0, len_in);
   max_cut_out = std::clamp(max_cut_out, 0.0, len_out);
-  if (!(radius > 0.0) || max_cut_in <= 0.0 || max_cut_out <= 0.0) return std::nullopt;
+  if (!(d.in > 0.0) || !(d.out > 0.0) || max_cut_in <= 0.0 || max_cut_out <= 0.0)
+    return std::nullopt;
 
   const double angle = ends.angle;
   if (angle <= kTangentTolerance || angle > kMaxBlendAngle) return std::nullopt;
 
   const AxisVec corner = ends.in_end.x;
-  double r = std::min({radius, distance(in.point(len_in - max_cut_in), corner),
-                       distance(out.point(max_cut_out), corner)});
+  const double reach_in = distance(in.point(len_in - max_cut_in), corner);
+  const double reach_out = distance(out.point(max_cut_out), corner);
+  // DEV: one ball, the nearer half-block point caps both ends; DIST: each end its own.
+  double d_in = d.symmetric ? std::min({d.in, reach_in, reach_out}) : std::min(d.in, reach_in);
+  double d_out = d.symmetric ? d_in : std::min(d.out, reach_out);
   const double k = blend_shape(angle);
 
-  for (int halving = 0; halving <= kRadiusHalvings && r > 1e-9; ++halving, r *= 0.5) {
+  for (int halving = 0; halving <= kRadiusHalvings && std::max(d_in, d_out) > 1e-9;
+       ++halving, d_in *= 0.5, d_out *= 0.5) {
+    const double r = std::max(d_in, d_out);
     const double s_in =
-        cut_point(in, distance, corner, r, len_in - max_cut_in, len_in, true, ends.in_end.d1);
+        cut_point(in, distance, corner, d_in, len_in - max_cut_in, len_in, true, ends.in_end.d1);
     const double s_out =
-        cut_point(out, distance, corner, r, max_cut_out, 0.0, true, ends.out_start.d1);
+        cut_point(out, distance, corner, d_out, max_cut_out, 0.0, true, ends.out_start.d1);
     const PathPoint a = in.at(s_in);
     const PathPoint b = out.at(s_out);
-    double lambda = 2.5 * k * r;
-    for (int step = 0; step < kLambdaSteps; ++step, lambda *= kLambdaShrink) {
+    double lambda_in = 2.5 * k * d_in;
+    double lambda_out = 2.5 * k * d_out;
+    for (int step = 0; step < kLambdaSteps;
+         ++step, lambda_in *= kLambdaShrink, lambda_out *= kLambdaShrink) {
       std::array<AxisVec, 6> p{};
       for (std::size_t i = 0; i < n; ++i) {
         p[0][i] = a.x[i];
-        p[1][i] = a.x[i] + lambda * a.d1[i] / 5.0;
-        p[2][i] = 2.0 * p[1][i] - p[0][i] + lambda * lambda * a.d2[i] / 20.0;
+        p[1][i] = a.x[i] + lambda_in * a.d1[i] / 5.0;
+        p[2][i] = 2.0 * p[1][i] - p[0][i] + lambda_in * lambda_in * a.d2[i] / 20.0;
         p[5][i] = b.x[i];
-        p[4][i] = b.x[i] - lambda * b.d1[i] / 5.0;
-        p[3][i] = 2.0 * p[4][i] - p[5][i] + lambda * lambda * b.d2[i] / 20.0;
+        p[4][i] = b.x[i] - lambda_out * b.d1[i] / 5.0;
+        p[3][i] = 2.0 * p[4][i] - p[5][i] + lambda_out * lambda_out * b.d2[i] / 20.0;
       }
       const double tolerance = r * (1.0 + 1e-9) + 1e-12;
       const bool inside = std::all_of(
           p.begin(), p.end(), [&](const AxisVec& q) { return distance(q, corner) <= tolerance; });
       if (!inside) continue;
-      Blend blend{Segment::bezier(n, metric, p), len_in - s_in, s_out, r};
+      // Ends at different distances: the speed along the curve varies more (bezier_uneven).
+      Blend blend{
+          d_in == d_out ? Segment::bezier(n, metric, p) : Segment::bezier_uneven(n, metric, p),
+          len_in - s_in, s_out, r};
       return blend;
     }
   }
   return std::nullopt;
+}
+
+std::optional<CornerDistances> corner_distances(const Move& move) noexcept {
+  switch (move.contour) {
+    case Contour::none:
+      return std::nullopt;
+    case Contour::tolerance:
+      return CornerDistances{move.path_dev, move.path_dev, true};
+    case Contour::distance:
+      return CornerDistances{move.pre_dist, move.post_dist, false};
+  }
+  return std::nullopt;
+}
+
+std::optional<Blend> corner_blend(const Move& in_move, const Segment& in, const Segment& out,
+                                  const JointEnds& ends, double max_cut_in, double max_cut_out) {
+  const std::optional<CornerDistances> d = corner_distances(in_move);
+  if (!d) return std::nullopt;
+  return make_blend(in, out, ends, *d, max_cut_in, max_cut_out);
+}
+
+std::optional<Blend> corner_blend(const Move& in_move, const Segment& in, const Segment& out,
+                                  double max_cut_in, double max_cut_out) {
+  if (!contoured(in_move)) return std::nullopt;
+  return corner_blend(in_move, in, out, joint_ends(in, out), max_cut_in, max_cut_out);
 }
 
 }  // namespace ncsim::planner

@@ -90,6 +90,112 @@ TEST_CASE("the ball shrinks so that it takes at most half of a neighbouring bloc
   CHECK(blend->cut_in == doctest::Approx(0.5));
 }
 
+TEST_CASE(
+    "DIST: a 90 degree corner blend starts PRE_DIST before the corner, ends POST_DIST "
+    "after it") {
+  // isg-language.md §5.3 (PROG-475180811): PRE_DIST on the incoming block, POST_DIST on the
+  // outgoing one.
+  const Segment in = Segment::line(3, 0b111, vec(0, 0), vec(10, 0));
+  const Segment out = Segment::line(3, 0b111, vec(10, 0), vec(10, 10));
+  const auto blend = make_blend(in, out, joint_ends(in, out), CornerDistances{2.0, 0.5, false},
+                                in.length() / 2, out.length() / 2);
+  REQUIRE(blend);
+  CHECK(blend->cut_in == doctest::Approx(2.0));
+  CHECK(blend->cut_out == doctest::Approx(0.5));
+  const AxisVec start = blend->curve.point(0.0);
+  const AxisVec end = blend->curve.point(blend->curve.length());
+  CHECK(start[0] == doctest::Approx(8.0));
+  CHECK(start[1] == doctest::Approx(0.0).epsilon(1e-12));
+  CHECK(end[0] == doctest::Approx(10.0));
+  CHECK(end[1] == doctest::Approx(0.5));
+  // Inside the ball of radius max(PRE_DIST, POST_DIST), its farthest point the start.
+  CHECK(blend->radius == doctest::Approx(2.0));
+  const auto [hi, lo] = distance_range(blend->curve, vec(10, 0));
+  CHECK(hi == doctest::Approx(2.0));
+  CHECK(lo > 0.0);
+  // G2 contact with both trimmed neighbours.
+  const Segment in_t = in.trimmed(0, in.length() - blend->cut_in);
+  const Segment out_t = out.trimmed(blend->cut_out, out.length());
+  check_joint(in_t.at(in_t.length()), blend->curve.at(0), 1e-6);
+  check_joint(blend->curve.at(blend->curve.length()), out_t.at(0), 1e-6);
+  CHECK(classify(in_t.at(in_t.length()), blend->curve.at(0), 3, 0b111) == TransitionClass::c2);
+  CHECK(classify(blend->curve.at(blend->curve.length()), out_t.at(0), 3, 0b111) ==
+        TransitionClass::c2);
+}
+
+TEST_CASE("DIST: each corner distance is capped at half of its own block, DEV's ball at both") {
+  const Segment in = Segment::line(3, 0b111, vec(0, 0), vec(10, 0));
+  const Segment out = Segment::line(3, 0b111, vec(10, 0), vec(10, 1));
+  const JointEnds ends = joint_ends(in, out);
+  const auto dist = make_blend(in, out, ends, CornerDistances{2.0, 2.0, false}, in.length() / 2,
+                               out.length() / 2);
+  REQUIRE(dist);
+  CHECK(dist->cut_in == doctest::Approx(2.0));   // the 10 mm block gives its 2 mm
+  CHECK(dist->cut_out == doctest::Approx(0.5));  // the 1 mm block half of itself
+  CHECK(dist->radius == doctest::Approx(2.0));
+  const auto dev =
+      make_blend(in, out, ends, CornerDistances{2.0, 2.0, true}, in.length() / 2, out.length() / 2);
+  REQUIRE(dev);
+  CHECK(dev->cut_in == doctest::Approx(0.5));
+  CHECK(dev->cut_out == doctest::Approx(0.5));
+}
+
+TEST_CASE("DIST: the derivative bounds of a blend with uneven ends cover the curve") {
+  // With the 65 samples of a symmetric blend, the 170 degree corner at POST_DIST = PRE_DIST / 4
+  // under-estimated |x'''| by 54 % and random DIST programs exceeded the jerk limit
+  // (docs/planner.md "Geometry"): uneven blends are sampled as spline pieces.
+  for (const double turn_deg : {90.0, 135.0, 170.0}) {
+    const double turn = turn_deg * std::numbers::pi / 180.0;
+    const Segment in = Segment::line(3, 0b111, vec(0, 0), vec(10, 0));
+    const Segment out =
+        Segment::line(3, 0b111, vec(10, 0), vec(10 + 10 * std::cos(turn), 10 * std::sin(turn)));
+    const auto blend =
+        make_blend(in, out, joint_ends(in, out), CornerDistances{2.0, 0.5, false}, 5.0, 5.0);
+    REQUIRE(blend);
+    const DerivativeBounds b = blend->curve.bounds();
+    double d2 = 0.0;  // largest sampled |x''_i| / bound
+    double d3 = 0.0;  // largest sampled |x'''_i| / bound
+    const double len = blend->curve.length();
+    for (int k = 0; k <= 20000; ++k) {
+      const PathPoint p = blend->curve.at(len * k / 20000.0);
+      for (std::size_t i = 0; i < 2; ++i) {
+        d2 = std::max(d2, std::abs(p.d2[i]) / std::max(b.d2[i], 1e-300));
+        d3 = std::max(d3, std::abs(p.d3[i]) / std::max(b.d3[i], 1e-300));
+      }
+    }
+    CAPTURE(turn_deg);
+    CHECK(d2 <= 1.0);
+    CHECK(d3 <= 1.0);
+  }
+}
+
+TEST_CASE("a DEV ball is the symmetric corner distance: the same curve bit for bit") {
+  const Segment in = Segment::line(3, 0b111, vec(0, 0), vec(10, 0));
+  const Segment out = Segment::line(3, 0b111, vec(10, 0), vec(13, 4));
+  Move m;
+  m.contour = Contour::tolerance;
+  m.path_dev = 0.7;
+  const auto ball = make_blend(in, out, 0.7, 5.0, 2.5);
+  const auto via_move = corner_blend(m, in, out, 5.0, 2.5);
+  REQUIRE(ball);
+  REQUIRE(via_move);
+  CHECK(via_move->cut_in == ball->cut_in);
+  CHECK(via_move->cut_out == ball->cut_out);
+  CHECK(via_move->radius == ball->radius);
+  for (const double f : {0.0, 0.3, 1.0})
+    CHECK(via_move->curve.point(f * ball->curve.length()) ==
+          ball->curve.point(f * ball->curve.length()));
+  m.contour = Contour::distance;  // DIST reads PRE_DIST / POST_DIST, not PATH_DEV
+  m.pre_dist = 1.5;
+  m.post_dist = 0.25;
+  const auto dist = corner_blend(m, in, out, 5.0, 2.5);
+  REQUIRE(dist);
+  CHECK(dist->cut_in == doctest::Approx(1.5));
+  CHECK(dist->cut_out == doctest::Approx(0.25));
+  m.contour = Contour::none;
+  CHECK_FALSE(corner_blend(m, in, out, 5.0, 2.5));
+}
+
 TEST_CASE("collinear joints and reversals are not blended") {
   const Segment in = Segment::line(3, 0b111, vec(0, 0), vec(10, 0));
   CHECK_FALSE(make_blend(in, Segment::line(3, 0b111, vec(10, 0), vec(20, 0)), 1, 5, 5));
@@ -180,4 +286,65 @@ TEST_CASE("property: random corners keep the blend inside its ball and join with
     }
   }
   CHECK(blended > 350);
+}
+
+TEST_CASE("property: DIST blends of random corners stay within max(PRE_DIST, POST_DIST)") {
+  std::mt19937 rng(261);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int blended = 0;
+  int at_distances = 0;
+  for (int n = 0; n < 400; ++n) {
+    const AxisVec corner = vec(5 * u(rng), 5 * u(rng), 5 * u(rng));
+    auto point = [&](double l) {
+      AxisVec d = vec(u(rng), u(rng), u(rng));
+      const double norm = dist(d, AxisVec{});
+      for (std::size_t i = 0; i < 3; ++i)
+        d[i] = corner[i] + l * d[i] / norm;
+      return d;
+    };
+    const Segment in = Segment::line(3, 0b111, point(0.1 + 20 * std::abs(u(rng))), corner);
+    Segment out = Segment::line(3, 0b111, corner, point(0.1 + 20 * std::abs(u(rng))));
+    if (n % 2 == 1) {  // an arc in XY out of the corner
+      Move m;
+      m.start = corner;
+      const double r = 0.5 + 10 * std::abs(u(rng));
+      const double phi = 3.2 * u(rng);
+      m.arc = Arc{0,          1,    corner[0] - r * std::cos(phi), corner[1] - r * std::sin(phi),
+                  n % 4 == 1, false};
+      m.end = vec(m.arc->centre_1 + r * std::cos(phi + 2 * u(rng)),
+                  m.arc->centre_2 + r * std::sin(phi + 2 * u(rng)), corner[2] + u(rng));
+      m.feed = 1;
+      out = Segment::arc(m);
+    }
+    const CornerDistances d{0.001 + 3 * std::abs(u(rng)), 0.001 + 3 * std::abs(u(rng)), false};
+    const auto blend =
+        make_blend(in, out, joint_ends(in, out), d, in.length() / 2, out.length() / 2);
+    const double angle = tangent_angle(in.at(in.length()).d1, out.at(0).d1, 3, 0b111);
+    if (angle > kMaxBlendAngle) {
+      CHECK_FALSE(blend);
+      continue;
+    }
+    REQUIRE(blend);
+    ++blended;
+    CHECK(blend->radius <= std::max(d.in, d.out));
+    CHECK(blend->cut_in <= in.length() / 2 * (1 + 1e-12));
+    CHECK(blend->cut_out <= out.length() / 2 * (1 + 1e-12));
+    const double e_in = dist(blend->curve.point(0.0), corner);
+    const double e_out = dist(blend->curve.point(blend->curve.length()), corner);
+    CHECK(e_in <= d.in * (1 + 1e-9));
+    CHECK(e_out <= d.out * (1 + 1e-9));
+    CHECK(std::max(e_in, e_out) == doctest::Approx(blend->radius).epsilon(1e-9));
+    // Neither end capped nor shrunk: the ends are exactly at PRE_DIST and POST_DIST.
+    if (std::abs(e_in - d.in) <= 1e-9 * d.in && std::abs(e_out - d.out) <= 1e-9 * d.out)
+      ++at_distances;
+    const auto [hi, lo] = distance_range(blend->curve, corner);
+    CHECK(hi <= blend->radius * (1 + 1e-9));
+    (void)lo;
+    const Segment in_t = in.trimmed(0, in.length() - blend->cut_in);
+    const Segment out_t = out.trimmed(blend->cut_out, out.length());
+    check_joint(in_t.at(in_t.length()), blend->curve.at(0), 1e-5);
+    check_joint(blend->curve.at(blend->curve.length()), out_t.at(0), 1e-5);
+  }
+  CHECK(blended > 350);
+  CHECK(at_distances > 200);
 }

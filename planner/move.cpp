@@ -40,6 +40,18 @@ void positive(double value, const Name& field) {
 
 }  // namespace
 
+double contour_bound(const Move& move) noexcept {
+  switch (move.contour) {
+    case Contour::none:
+      return 0.0;
+    case Contour::tolerance:
+      return move.path_dev;
+    case Contour::distance:
+      return std::max(move.pre_dist, move.post_dist);
+  }
+  return 0.0;
+}
+
 void validate(const Move& move) {
   const auto at = [&move] { return "line " + std::to_string(move.line) + ": "; };
   if (move.axis_count == 0 || move.axis_count > kMaxAxes)
@@ -57,6 +69,10 @@ void validate(const Move& move) {
   }
   if (move.contour == Contour::tolerance)
     positive(move.path_dev, [&] { return at() + "path_dev (PATH_DEV)"; });
+  if (move.contour == Contour::distance) {
+    positive(move.pre_dist, [&] { return at() + "pre_dist (PRE_DIST)"; });
+    positive(move.post_dist, [&] { return at() + "post_dist (POST_DIST)"; });
+  }
   if (move.transvelmin) {
     finite(*move.transvelmin, [&] { return at() + "transvelmin"; });
     if (*move.transvelmin < 0.0) fail(at() + "transvelmin < 0");

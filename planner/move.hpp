@@ -40,6 +40,9 @@ enum class SlopeType : std::uint8_t { step, trapez, sin2, hsc };
 enum class Contour : std::uint8_t {
   none,       ///< G260: corners are C0 transitions (VELOJUMP)
   tolerance,  ///< G61 / G261 with #CONTOUR MODE DEV: a blend inside a ball of radius path_dev
+  /// G61 / G261 with #CONTOUR MODE DIST: a blend from pre_dist before the corner to post_dist
+  /// after it (isg-language.md §5.3, PROG-475180811)
+  distance,
 };
 
 /// A circle plane that is not spanned by two machine axes: an arc programmed under a rotated
@@ -96,9 +99,11 @@ struct Move {
   std::optional<double> block_time;  ///< G93: machining time of the block [s]
   std::optional<double> end_feed;    ///< E: feed at the block end [mm/s]
   Transition transition = Transition::accelerate_at_start;
-  bool exact_stop = false;            ///< G60 / G360: velocity 0 and the window at the end
-  Contour contour = Contour::none;    ///< G61 / G261 at the end of this block
-  double path_dev = 1.0;              ///< #CONTOUR MODE DEV PATH_DEV: ball radius [mm]
+  bool exact_stop = false;          ///< G60 / G360: velocity 0 and the window at the end
+  Contour contour = Contour::none;  ///< G61 / G261 at the end of this block
+  double path_dev = 1.0;            ///< #CONTOUR MODE DEV PATH_DEV: ball radius [mm]
+  double pre_dist = 1.0;   ///< #CONTOUR MODE DIST PRE_DIST: blend start before the corner [mm]
+  double post_dist = 1.0;  ///< #CONTOUR MODE DIST POST_DIST: blend end after the corner [mm]
   std::optional<double> transvelmin;  ///< #TRANSVELMIN [mm/s]
   SlopeType slope = SlopeType::step;  ///< #SLOPE TYPE
   std::uint32_t line = 0;             ///< source line, for notes and reports
@@ -121,6 +126,17 @@ struct Move {
   /// (belt_joint_limits). Shared and immutable, as `spline`; null off the conveyor.
   std::shared_ptr<const JointShare> belt_joints;
 };
+
+/// Whether the corner at the end of `move` is contoured (G61 / G261, DEV or DIST).
+constexpr bool contoured(const Move& move) noexcept {
+  return move.contour != Contour::none;
+}
+
+/// The distance from the programmed corner that the contour at the end of `move` may reach,
+/// the bound its blend provably stays within (blend.hpp): PATH_DEV under DEV,
+/// max(PRE_DIST, POST_DIST) under DIST (decision, docs/planner.md "DIST"), 0 without
+/// contouring [mm].
+double contour_bound(const Move& move) noexcept;
 
 /// One machine axis's dynamics as the planner uses them (000 l.75, l.105-108, l.360).
 struct AxisLimits {

@@ -69,6 +69,27 @@ TEST_CASE("non-finite positions, negative E and PATH_DEV <= 0 are rejected") {
   CHECK(message_of(m).find("PATH_DEV") != std::string::npos);
 }
 
+TEST_CASE("DIST distances must be positive; the contour bound is the larger of them") {
+  Move m = good_move();
+  m.contour = Contour::distance;
+  m.pre_dist = 2.0;
+  m.post_dist = 0.5;
+  CHECK_NOTHROW(validate(m));
+  CHECK(contoured(m));
+  CHECK(contour_bound(m) == 2.0);
+  m.post_dist = 0.0;
+  CHECK(message_of(m).find("POST_DIST") != std::string::npos);
+  m.post_dist = 0.5;
+  m.pre_dist = -1.0;
+  CHECK(message_of(m).find("PRE_DIST") != std::string::npos);
+  m.contour = Contour::tolerance;  // DEV reads only PATH_DEV
+  CHECK_NOTHROW(validate(m));
+  CHECK(contour_bound(m) == m.path_dev);
+  m.contour = Contour::none;
+  CHECK_FALSE(contoured(m));
+  CHECK(contour_bound(m) == 0.0);
+}
+
 TEST_CASE("axis limits must be positive; the VELOJUMP factor may be 0") {
   AxisLimits ax;
   ax.v_max = ax.v_reference = ax.v_rapid = 100.0;

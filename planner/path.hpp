@@ -96,6 +96,11 @@ class Segment {
   static Segment from_move(const Move& move);
   /// A quintic Bezier curve through control points p[0..5] (used by tolerance balls).
   static Segment bezier(std::uint8_t axis_count, AxisMask metric, const std::array<AxisVec, 6>& p);
+  /// The same for a blend whose ends lie at different distances from the corner (DIST with
+  /// PRE_DIST != POST_DIST): its speed varies like a spline piece's, so it gets their
+  /// 32-interval arc-length table and 1024 bound samples (docs/planner.md "DIST").
+  static Segment bezier_uneven(std::uint8_t axis_count, AxisMask metric,
+                               const std::array<AxisVec, 6>& p);
   /// A cubic Bezier piece of a spline through control points c[0..3], held exactly as its
   /// degree-elevated quintic (same arc-length machinery as blends); kind() == spline.
   static Segment cubic(std::uint8_t axis_count, AxisMask metric, const std::array<AxisVec, 4>& c);
@@ -112,7 +117,8 @@ class Segment {
   AxisVec start() const noexcept { return point(0.0); }
   AxisVec end() const noexcept { return point(length()); }
   /// Bounds of |x'_i|, |x''_i|, |x'''_i| over the segment (exact for lines and arcs,
-  /// 65 samples plus 1 % margin for blends, 1024 for spline pieces: docs/planner.md "Geometry").
+  /// 65 samples plus 1 % margin for blends, 1024 for spline pieces and uneven blends:
+  /// docs/planner.md "Geometry").
   DerivativeBounds bounds() const noexcept;
   /// The same curve restricted to [s0, s1] (0 <= s0 < s1 <= length()).
   Segment trimmed(double s0, double s1) const noexcept;
@@ -137,6 +143,7 @@ class Segment {
   double s_lo_ = 0.0;    ///< window start in the underlying geometry [mm]
   double s_hi_ = 0.0;    ///< window end [mm]
   bool spline_ = false;  ///< a Bezier that is a spline piece, not a blend
+  bool fine_ = false;    ///< a blend sampled as finely as a spline piece (bezier_uneven)
 };
 
 /// The metric of a cubic spline piece with control points c: the path axes if its control

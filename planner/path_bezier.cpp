@@ -489,6 +489,13 @@ Segment Segment::bezier(std::uint8_t axis_count, AxisMask metric, const std::arr
   return bezier_with(axis_count, metric, p, BezierGeom::kBlendTable);
 }
 
+Segment Segment::bezier_uneven(std::uint8_t axis_count, AxisMask metric,
+                               const std::array<AxisVec, 6>& p) {
+  Segment seg = bezier_with(axis_count, metric, p, BezierGeom::kTable);
+  seg.fine_ = true;
+  return seg;
+}
+
 Segment Segment::bezier_with(std::uint8_t axis_count, AxisMask metric,
                              const std::array<AxisVec, 6>& p, int intervals) {
   Segment seg;
@@ -578,7 +585,8 @@ DerivativeBounds Segment::bezier_bounds() const noexcept {
   // whole curve (every blend and spline piece) uses the precomputed Bernstein tables.
   // Spline pieces: the speed of a cubic between uneven points varies much more than a blend's,
   // and 65 samples missed curvature peaks by up to 16 % (docs/planner.md "Geometry").
-  const std::size_t samples = spline_ ? kSplineBoundSamples : Tables::kSamples;
+  const bool fine = spline_ || fine_;
+  const std::size_t samples = fine ? kSplineBoundSamples : Tables::kSamples;
   constexpr double kMargin = 1.01;
   const BezierGeom& g = std::get<BezierGeom>(geom_);
   const bool whole = s_lo_ <= 0.0 && s_hi_ >= g.s_at[g.intervals];
@@ -588,7 +596,7 @@ DerivativeBounds Segment::bezier_bounds() const noexcept {
   const Hodographs h = hodographs(g.p, n_);
   const Tables& tab = tables();
   DerivativeBounds b;
-  if (table && !spline_) {
+  if (table && !fine) {
     b = blend_bounds(h, n_, metric_, g.moving);
   } else {
     // The formulas of to_arc_length(), inlined without the position and without
@@ -598,9 +606,9 @@ DerivativeBounds Segment::bezier_bounds() const noexcept {
     std::array<double, kMaxAxes> v3;
     for (std::size_t k = 0; k <= samples; ++k) {
       const double t = t0 + (t1 - t0) * static_cast<double>(k) / static_cast<double>(samples);
-      const std::array<double, 5> b4 = !table ? basis<4>(t) : spline_ ? tab.f4[k] : tab.s4[k];
-      const std::array<double, 4> b3 = !table ? basis<3>(t) : spline_ ? tab.f3[k] : tab.s3[k];
-      const std::array<double, 3> b2 = !table ? basis<2>(t) : spline_ ? tab.f2[k] : tab.s2[k];
+      const std::array<double, 5> b4 = !table ? basis<4>(t) : fine ? tab.f4[k] : tab.s4[k];
+      const std::array<double, 4> b3 = !table ? basis<3>(t) : fine ? tab.f3[k] : tab.s3[k];
+      const std::array<double, 3> b2 = !table ? basis<2>(t) : fine ? tab.f2[k] : tab.s2[k];
       double b11 = 0.0, b12 = 0.0, b22 = 0.0, b13 = 0.0;
       for (std::size_t i = 0; i < n_; ++i) {
         double a1 = 0.0, a2 = 0.0, a3 = 0.0;

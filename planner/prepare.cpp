@@ -160,8 +160,7 @@ void Preparer::emit_joint(PreparedSegment in, const Move& in_move, const Segment
   const std::uint8_t n = std::max(in.path.axis_count(), out_path.axis_count());
   const AxisMask metric = in.path.metric() | out_path.metric();
   // #TRANSVELMIN acts at discontinuous transitions, not with G261 (isg-language.md §5.6).
-  const std::optional<double> v_min =
-      in_move.contour == Contour::tolerance ? std::nullopt : in_move.transvelmin;
+  const std::optional<double> v_min = contoured(in_move) ? std::nullopt : in_move.transvelmin;
   const Link link =
       ends != nullptr
           ? link_velocity(ends->in_end, ends->out_start, n, metric, axes_for(in_move), channel_,
@@ -317,7 +316,7 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
     return seg_limits->v_max;
   };
   std::optional<JointEnds> ends;  // of the joint p -> seg, evaluated once for all its rules
-  if (p.move.contour == Contour::tolerance) ends = joint_ends(p.path, seg);
+  if (contoured(p.move)) ends = joint_ends(p.path, seg);
   // The knee rule takes the Preparer's own axis limits; limits() has the same ones except under
   // a transform or on a conveyor (axes_for), so elsewhere it is reused.
   const auto on_own_axes = [&](const Move& m) {
@@ -331,8 +330,8 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
   };
   if (ends && (joints_for(move) != nullptr ||  // under a transform every G261 corner gets its ball
                !knee_needs_no_ball(p.path, seg, *ends, axes_, channel_, knee_cap))) {
-    const auto ball = make_blend(p.path, seg, *ends, p.move.path_dev,
-                                 std::min(p.full_length / 2, p.path.length()), seg.length() / 2);
+    const auto ball = corner_blend(p.move, p.path, seg, *ends,
+                                   std::min(p.full_length / 2, p.path.length()), seg.length() / 2);
     if (ball) {
       const Segment in_path = p.path.trimmed(0.0, p.path.length() - ball->cut_in);
       const Segment out_path = seg.trimmed(ball->cut_out, seg.length());

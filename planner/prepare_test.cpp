@@ -151,6 +151,34 @@ TEST_CASE("G261 inserts a blend between the trimmed blocks; every joint is C2") 
   CHECK(out.back().stop == StopReason::end_of_stream);
 }
 
+TEST_CASE("G261 with DIST trims PRE_DIST off the incoming block and POST_DIST off the next") {
+  const auto ax = limits();
+  Preparer prep(ax, ChannelLimits{});
+  std::vector<PreparedSegment> out;
+  const AxisVec square[] = {vec(0, 0), vec(20, 0), vec(20, 20), vec(0, 20)};
+  for (int k = 0; k < 3; ++k) {
+    Move m = line(square[k], square[k + 1], 100.0, static_cast<std::uint32_t>(k + 1));
+    m.contour = Contour::distance;
+    m.pre_dist = 2.0;
+    m.post_dist = 0.5;
+    prep.push(m, out);
+  }
+  prep.finish(out);
+  // line, blend, line, blend, line
+  REQUIRE(out.size() == 5);
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    CHECK(out[k].blend == (k % 2 == 1));
+    if (k + 1 < out.size()) {
+      CHECK(gap(out[k].path.end(), out[k + 1].path.start()) < 1e-9);
+      CHECK(out[k].joint == TransitionClass::c2);
+    }
+  }
+  CHECK(gap(out[1].path.start(), vec(18, 0)) < 1e-9);    // PRE_DIST before (20, 0)
+  CHECK(gap(out[1].path.end(), vec(20, 0.5)) < 1e-9);    // POST_DIST after it
+  CHECK(out[2].path.length() == doctest::Approx(17.5));  // 20 - 0.5 - 2
+  CHECK(out[4].path.length() == doctest::Approx(19.5));
+}
+
 TEST_CASE("property: random polylines give joined segments with bounded joint velocities") {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
