@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <random>
 #include <vector>
 
@@ -51,16 +52,12 @@ struct Probe final : Sink {
   }
 };
 
-/// What run_random requires of the audit's verdict.
-enum class Checked : std::uint8_t {
-  all,      ///< no violation at all
-  contour,  ///< no contour violation (the limits: see the DIST test)
-};
-
-/// Runs `trials` seeded random programs (RandomProgram `shape`) through the interpolator with
-/// the audit; returns the largest contour deviation and adds the steps it saw to `steps`.
+/// Runs `trials` seeded random programs (RandomProgram `shape`, then `edit`) through the
+/// interpolator with the audit; returns the largest contour deviation and adds the steps it saw
+/// to `steps`.
 double run_random(std::mt19937_64& rng, int trials, const RandomProgram& shape,
-                  std::uint64_t& steps, Checked checked = Checked::all) {
+                  std::uint64_t& steps,
+                  const std::function<void(std::vector<Item>&)>& edit = nullptr) {
   double contour = 0.0;
   for (int trial = 0; trial < trials; ++trial) {
     Config cfg;
@@ -68,7 +65,8 @@ double run_random(std::mt19937_64& rng, int trials, const RandomProgram& shape,
     cfg.channel.t_cycle = 0.00025 * static_cast<double>(1 + rng() % 16);
     cfg.exact_stop = {ExactStop{0.01, 0.002}, ExactStop{0.01, 0.002}, ExactStop{0.01, 0.002}};
     cfg.window = 10 + rng() % 120;
-    const auto items = random_program(rng, shape);
+    auto items = random_program(rng, shape);
+    if (edit) edit(items);
     // Where the path must stand: G60 ends, block ends before a dwell, the program end.
     std::vector<AxisVec> expected;
     for (std::size_t k = 0; k < items.size(); ++k) {
@@ -90,14 +88,7 @@ double run_random(std::mt19937_64& rng, int trials, const RandomProgram& shape,
       CAPTURE(cfg.channel.t_cycle);
       CHECK(st == Status::finished);
       const Verdict& v = probe.audit.verdict();
-      if (checked == Checked::contour) {
-        for (const Violation& x : v.violations) {
-          CAPTURE(x.line);
-          CAPTURE(x.value);
-          CAPTURE(x.limit);
-          CHECK(x.quantity != Quantity::contour);
-        }
-      } else if (!v.ok()) {
+      if (!v.ok()) {
         const Violation& x = v.violations.front();
         CAPTURE(static_cast<int>(x.quantity));
         CAPTURE(static_cast<int>(x.method));
@@ -139,18 +130,38 @@ TEST_CASE("property: random programs keep every limit and the contour, reach the
   CHECK(contour > 0.01);
 }
 
-TEST_CASE("property: random DIST programs stay within max(PRE_DIST, POST_DIST), reach their ends") {
+TEST_CASE("property: random DIST programs keep every limit, stay within max(PRE_DIST, POST_DIST)") {
   // #CONTOUR MODE DIST (isg-language.md §5.3): the audit's contour bound for such a block is
-  // max(PRE_DIST, POST_DIST) (planner::contour_bound, docs/planner.md "DIST"). The contour only:
-  // these programs, run with DEV (PATH_DEV = PRE_DIST) instead, show finite-difference jerk
-  // above the limit in trials 2, 4 and 9 (DIST: 2 and 9), a DEV issue at short blocks that
-  // the DEV test's programs above do not meet (docs/planner.md "DIST", open).
+  // max(PRE_DIST, POST_DIST) (planner::contour_bound, docs/planner.md "DIST").
   std::mt19937_64 rng(2026);
   std::uint64_t steps = 0;
   RandomProgram p;
   p.moves = 40;
   p.dist = true;
-  const double contour = run_random(rng, 40, p, steps, Checked::contour);
+  const double contour = run_random(rng, 40, p, steps);
+  CHECK(steps > 50);
+  CHECK(contour > 0.01);
+}
+
+TEST_CASE("property: the DIST programs run with DEV (PATH_DEV = PRE_DIST) keep every limit") {
+  // These programs found a bug (session 29): a STEP block's ball (the ball takes the incoming
+  // block's slope, without the curvature-jerk cap) was chained at the same cap with the TRAPEZ
+  // block after it, so the chain's finite path jerk made the interpolator and the audit's
+  // finite differences treat the STEP ball as jerk-limited: trial 2 (T = 0.25 ms) reached
+  // 173609 against 65936 mm/s^3 on X. Chains now join only parts of one slope class.
+  std::mt19937_64 rng(2026);
+  std::uint64_t steps = 0;
+  RandomProgram p;
+  p.moves = 40;
+  p.dist = true;
+  const double contour = run_random(rng, 40, p, steps, [](std::vector<Item>& items) {
+    for (Item& it : items) {
+      auto* m = std::get_if<planner::Move>(&it);
+      if (m == nullptr || m->contour != planner::Contour::distance) continue;
+      m->contour = planner::Contour::tolerance;
+      m->path_dev = m->pre_dist;
+    }
+  });
   CHECK(steps > 50);
   CHECK(contour > 0.01);
 }

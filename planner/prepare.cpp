@@ -216,19 +216,21 @@ void Preparer::output(PreparedSegment ps, std::vector<PreparedSegment>& out) {
     const bool same_cap = std::abs(ps.limits.v_max - cap) <= 1e-9 * std::max(cap, 1.0);
     // C2 joints and knees that carry the acceleration (corner.hpp) chain alike, when the joint
     // limits nothing below the chain's cap.
-    const bool open_joint = h.stop == StopReason::none && !h.a_zero_at_end;
+    // Both sides jerk-limited or both STEP: a STEP part (no curvature-jerk cap, limits.hpp)
+    // would be planned with the other's jerk and treated as jerk-limited by the interpolator and
+    // the audit's finite differences (found on a STEP block's ball before a TRAPEZ block at the
+    // same cap: 2.8x the axes' J; ipo/program_test.cpp).
+    const bool open_joint = h.stop == StopReason::none && !h.a_zero_at_end &&
+                            std::isfinite(h.limits.j_max) == std::isfinite(ps.limits.j_max);
     bool join = false;
     if (same_cap) {
       join = open_joint && h.v_end >= cap * (1.0 - 1e-12);
     } else {
       // Across different caps: one piece at the smaller cap, when neither side loses more
       // than kChainCapSlack by it (docs/planner.md "Chains").
-      // Both sides jerk-limited or both STEP (a STEP part would be planned with the other's
-      // jerk, and the audit's finite differences treat the two slopes apart).
       const double low = std::min(cap, ps.limits.v_max);
-      join = open_joint && h.v_end >= low * (1.0 - 1e-12) &&
-             std::isfinite(h.limits.j_max) == std::isfinite(ps.limits.j_max) &&
-             !feed_must_hold(h.limits, low) && !feed_must_hold(ps.limits, low) &&
+      join = open_joint && h.v_end >= low * (1.0 - 1e-12) && !feed_must_hold(h.limits, low) &&
+             !feed_must_hold(ps.limits, low) &&
              fits_under(low, held_v_hi_, h.path.length(), h.limits, channel_.t_cycle) &&
              fits_under(low, ps.limits.v_max, ps.path.length(), ps.limits, channel_.t_cycle);
     }
