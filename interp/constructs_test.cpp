@@ -295,6 +295,20 @@ TEST_CASE("G61 contours its block only; G261 until G260; #CONTOUR MODE sets the 
   CHECK(motion(c, 0).modal.contour.path_dev == doctest::Approx(0.5));
 }
 
+TEST_CASE("#CONTOUR MODE: PATH_DEV, PRE_DIST or POST_DIST <= 0 is NC4031 at its block") {
+  // A ball of radius 0 or a blend from 0 mm before the corner cannot be: before, such a value
+  // reached the planner and ended the run with an unpositioned exception (session 29).
+  for (const char* item : {"DEV, PATH_DEV=0", "DEV, PATH_DEV=-0.5", "DIST, PRE_DIST=0",
+                           "DIST, POST_DIST=-1", "DIST, PRE_DIST=1, POST_DIST=0"}) {
+    CAPTURE(item);
+    const auto r =
+        run(std::string("%t\nG01 X1 F100\n#CONTOUR MODE [") + item + "]\nG261 X2\nM30\n");
+    CHECK(r.error_id == "NC4031");
+    CHECK(r.error_line == 3);
+  }
+  CHECK(run("%t\n#CONTOUR MODE [DIST, PRE_DIST=0.2, POST_DIST=3]\nM30\n").error_id.empty());
+}
+
 TEST_CASE("#SLOPE sets the slope type; an unknown type is NC4509") {
   auto c = commands("%t\n#SLOPE [TYPE=TRAPEZ]\nG00 X1\n#SLOPE [TYPE=SIN2]\nG00 X2\nM30\n");
   REQUIRE(c.error_id.empty());

@@ -415,6 +415,13 @@ bool Interpreter::Impl::hash_contour_mode(const ast::Block& b, const ast::HashCo
     if (const ast::Item* it = items.find(key)) {
       auto v = item_value(b, it);
       if (!v) return false;
+      // A ball of radius 0 or a blend from 0 mm before the corner cannot be (§5.3's values are
+      // lengths; the planner's blend needs them > 0).
+      if (!(*v > 0.0) || !std::isfinite(*v)) {
+        return fail(it->loc, "NC4031",
+                    std::string("#CONTOUR MODE ") + key + " must be a length > 0 mm, got " +
+                        core::number_text(*v));
+      }
       *slot = *v;
     }
   }
