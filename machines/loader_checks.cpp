@@ -163,6 +163,21 @@ constexpr std::array<std::string_view, 16> kKnown = {
     "FCT_DYN_POS_LIMIT",       "FCT_EXTENSION_EQUIDIST",
     "FCT_CALC_POS_V_0",        "FCT_DLM"};
 
+// P-CHAN-00653 `configuration.interpolator.number_blocks_lah`, the look-ahead size of
+// FCT_LOOK_AHEAD_CUSTOM (isg-language.md §7.1 "CUSTOM [10 .. P-CHAN-00653]"; TF5200's channel
+// parameters: data range 10..10000, default 120). A value below 10 is the kernel's error 50611
+// "number of look-ahead blocks too small", class 3, "controller corrects the value": a
+// warning, and the window is 10.
+int custom_look_ahead(const ListValues& v, Reporter& r) {
+  const char* key = "configuration.interpolator.number_blocks_lah";
+  const int blocks = static_cast<int>(v.number(key));
+  if (blocks >= 10) return blocks;
+  r.warning(v.file(), v.loc(key), "50611",
+            param_ref(key, ListKind::channel) + " = " + std::to_string(blocks) +
+                ": the number of look-ahead blocks is too small (at least 10); corrected to 10");
+  return 10;
+}
+
 // P-CHAN-00650 flags (seed 004 §5.2.2, interpolation function table). False when a flag is
 // unknown (reported here), so that checks depending on the flags stay silent.
 bool interpret_functions(ChannelParams& ch, const ListValues& v, Reporter& r) {
@@ -188,12 +203,7 @@ bool interpret_functions(ChannelParams& ch, const ListValues& v, Reporter& r) {
     if (flag == "FCT_IPO_DEFAULT" || flag == "FCT_LOOK_AHEAD_STANDARD") blocks = 120;
     if (flag == "FCT_LOOK_AHEAD_LOW") blocks = 30;
     if (flag == "FCT_LOOK_AHEAD_HIGH") blocks = 190;
-    if (flag == "FCT_LOOK_AHEAD_CUSTOM") {
-      r.error(v.file(), v.loc(key), "NC3013",
-              ref +
-                  ": FCT_LOOK_AHEAD_CUSTOM needs P-CHAN-00653, whose key the manuals at hand "
-                  "do not give; ncsim does not support it");
-    }
+    if (flag == "FCT_LOOK_AHEAD_CUSTOM") blocks = custom_look_ahead(v, r);
     if (blocks > 0) {
       if (!size_flag.empty() && blocks != f.look_ahead_blocks) {
         r.error(v.file(), v.loc(key), "NC3007",

@@ -420,7 +420,7 @@ TEST_CASE(
 
 TEST_CASE(
     "P-CHAN-00650 look-ahead window: FCT_DLM alone is STANDARD (120), LOW 30, HIGH 190, the same "
-    "size twice is no conflict, CUSTOM is NC3013 at its line") {
+    "size twice is no conflict, CUSTOM takes P-CHAN-00653 (below 10: 50611, corrected)") {
   const std::string master = "conveyor_sync.log_number_master 4\n";
   const std::pair<const char*, int> sizes[] = {
       {"FCT_DLM", 120},
@@ -438,17 +438,37 @@ TEST_CASE(
     REQUIRE(r.result.machine.has_value());
     CHECK(r.result.machine->channel.interpolator.look_ahead_blocks == blocks);
   }
+  // FCT_LOOK_AHEAD_CUSTOM takes P-CHAN-00653 configuration.interpolator.number_blocks_lah
+  // (TF5200: 10..10000, default 120; below 10 the kernel's 50611, corrected to 10); without
+  // CUSTOM the key is not evaluated.
+  const std::string custom = "configuration.interpolator.function FCT_DLM|FCT_LOOK_AHEAD_CUSTOM\n";
+  const std::pair<std::string, int> custom_sizes[] = {
+      {custom, 120},
+      {custom + "configuration.interpolator.number_blocks_lah 250\n", 250},
+      {custom + "configuration.interpolator.number_blocks_lah 10\n", 10},
+      {"configuration.interpolator.function FCT_DLM\n"
+       "configuration.interpolator.number_blocks_lah 250\n",
+       120}};
+  for (const auto& [lines, blocks] : custom_sizes) {
+    CAPTURE(lines);
+    const ChannelLoad r = load_base_with_channel("look_ahead_custom", master + lines);
+    INFO(all_diagnostics(r.result));
+    CHECK(r.result.diagnostics.items().empty());
+    REQUIRE(r.result.machine.has_value());
+    CHECK(r.result.machine->channel.interpolator.look_ahead_blocks == blocks);
+  }
   {
     const ChannelLoad r = load_base_with_channel(
-        "look_ahead_custom",
-        master + "configuration.interpolator.function FCT_DLM|FCT_LOOK_AHEAD_CUSTOM\n");
-    const core::Diagnostic e = only_error(r.result);
-    CHECK(e.id == "NC3013");
-    CHECK(e.file == r.channel_file);
-    CHECK(e.loc.line == 2);
-    CHECK(e.message.find("configuration.interpolator.function (P-CHAN-00650)") !=
-          std::string::npos);
-    CHECK(e.message.find("FCT_LOOK_AHEAD_CUSTOM needs P-CHAN-00653") != std::string::npos);
+        "look_ahead_small", master + custom + "configuration.interpolator.number_blocks_lah 5\n");
+    REQUIRE(r.result.machine.has_value());
+    CHECK(r.result.machine->channel.interpolator.look_ahead_blocks == 10);
+    REQUIRE(r.result.diagnostics.items().size() == 1);
+    const core::Diagnostic& w = r.result.diagnostics.items().front();
+    CHECK(w.id == "50611");
+    CHECK(w.severity == core::Severity::warning);
+    CHECK(w.file == r.channel_file);
+    CHECK(w.loc.line == 3);
+    CHECK(w.message.find("corrected to 10") != std::string::npos);
   }
   {
     const ChannelLoad r = load_base_with_channel(
