@@ -124,72 +124,113 @@ void append_stop_and_return(ProfileBuilder& b, const PositionTarget& target,
   b.add(velocity_ramp(0.0, 0.0, speed, dyn.a_max, dyn.d_max, dyn.j_max), s);
 }
 
-}  // namespace
+// ProfileRule::time_optimal: the fastest of the single-peak family, stop-then-go and the manual
+// plan (docs/axes-profile.md); a start outside the limits is first brought back inside.
+void plan_time_optimal(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
+                       Profile& out) noexcept {
+  // --- ptp-limits: a start outside the limits is first brought back inside
+  // (axes/profile_outside.hpp, docs/axes-profile-outside.md).
+  const bool outside = detail::outside_limits(start, dyn);
+  if (outside && detail::plan_from_outside(start, target, dyn, out)) return;
+  // A direct move (toward the target, not moving away) is the single-peak family's best,
+  // which contains the manual's. To a target at rest from a start within the limits the
+  // candidates contain "stop, then the fastest rest-to-rest move", never slower than the
+  // manual's stop-and-return (its return uses the symmetric rule). Otherwise the manual planner
+  // covers reversals the family cannot, so the faster of both is taken.
+  bool direct = false;
+  detail::StopPoint stop{-1.0, 0.0};  // t < 0: not computed by plan_fastest
+  const bool found = detail::plan_fastest(start, target, dyn, out, direct, stop);
+  if (found && (direct || (target.v == 0.0 && inside_limits(start, dyn)))) return;
+  // --- ptp-speed: the manual's stop-and-return skipped where its lower bound shows it cannot
+  // be faster (axes/profile_classify.hpp).
+  // --- ptp-outside: the bound describes the manual plan from inside the limits only (from
+  // outside, the manual first recovers: manual_recover).
+  if (found && !outside &&
+      detail::manual_bound(start, target, dyn, stop.t >= 0.0 ? &stop : nullptr) >= out.duration()) {
+    return;
+  }
+  Profile manual;
+  plan_position(start, target, dyn, manual, ProfileRule::manual);
+  if (!found || manual.duration() < out.duration()) out = manual;
+}
 
-Result plan_position(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
-                     Profile& out, ProfileRule rule) noexcept {
-  if (!valid(dyn) || !finite(start) || !std::isfinite(target.p) || !std::isfinite(target.v) ||
-      std::abs(target.v) > dyn.v_max) {
-    return Result::error_invalid_input;
+// The manual rule's frame: the direction of arrival (target velocity), else the side of the
+// stop point on which the target lies.
+double arrival_sign(const MotionState& start, const PositionTarget& target,
+                    const Dynamics& dyn) noexcept {
+  if (target.v != 0.0) return target.v > 0.0 ? 1.0 : -1.0;
+  const double m = detail::motion_sign(start, 1.0);
+  const double p_stop = start.p + m * stop_distance(m * start.v, m * start.a, dyn);
+  const double d = target.p - p_stop;
+  return d > 0.0 ? 1.0 : (d < 0.0 ? -1.0 : m);
+}
+
+// Case 2 (V reached, cruise) or the highest level below V whose chain from (v1, a1) to vf fits
+// `dist` (docs/axes-profile.md, "Numerics" 4): the level vm and the cruise time. False when no
+// level fits (case 3: the axis cannot arrive without overshooting).
+bool manual_level(double v1, double a1, double vf, double dist, const Dynamics& dyn, double& vm,
+                  double& t_cruise) noexcept {
+  const double f_hi = level_distance(v1, a1, dyn.v_max, vf, dyn);
+  vm = dyn.v_max;
+  t_cruise = 0.0;
+  if (f_hi <= dist) {  // case 2, V reached; a cruise of rounding residue length is dropped
+    if (dist - f_hi > kResidue * dist) t_cruise = (dist - f_hi) / dyn.v_max;
+    return true;
   }
-  if (rule == ProfileRule::time_optimal) {
-    // --- ptp-limits: a start outside the limits is first brought back inside
-    // (axes/profile_outside.hpp, docs/axes-profile-outside.md).
-    const bool outside = detail::outside_limits(start, dyn);
-    if (outside && detail::plan_from_outside(start, target, dyn, out)) return Result::ok;
-    // A direct move (toward the target, not moving away) is the single-peak family's best,
-    // which contains the manual's. To a target at rest from a start within the limits the
-    // candidates contain "stop, then the fastest rest-to-rest move", never slower than the
-    // manual's stop-and-return (its return uses the symmetric rule). Otherwise the manual planner
-    // covers reversals the family cannot, so the faster of both is taken.
-    bool direct = false;
-    detail::StopPoint stop{-1.0, 0.0};  // t < 0: not computed by plan_fastest
-    const bool found = detail::plan_fastest(start, target, dyn, out, direct, stop);
-    if (found && (direct || (target.v == 0.0 && inside_limits(start, dyn)))) return Result::ok;
-    // --- ptp-speed: the manual's stop-and-return skipped where its lower bound shows it cannot
-    // be faster (axes/profile_classify.hpp).
-    // --- ptp-outside: the bound describes the manual plan from inside the limits only (from
-    // outside, the manual first recovers: manual_recover).
-    if (found && !outside &&
-        detail::manual_bound(start, target, dyn, stop.t >= 0.0 ? &stop : nullptr) >=
-            out.duration()) {
-      return Result::ok;
+  // The highest level whose chain fits: level_distance dips where a ramp vanishes (at the
+  // start's v_zero and at vf), so the feasible levels need not be one interval; candidates
+  // are tried from the top and the root is taken between the first that fits and the next
+  // higher one.
+  const double v_zero = v1 + a1 * std::abs(a1) / (2.0 * dyn.j_max);
+  const auto clamp = [&](double v) { return std::clamp(v, 0.0, dyn.v_max); };
+  const std::array<double, 3> candidates{clamp(std::max(v_zero, vf)), clamp(std::min(v_zero, vf)),
+                                         0.0};
+  double v_hi = dyn.v_max;
+  double f_top = f_hi;
+  double v_lo = -1.0;
+  double f_lo = 0.0;
+  for (const double c : candidates) {
+    if (!(c < v_hi)) continue;
+    const double f_c = level_distance(v1, a1, c, vf, dyn);
+    if (f_c <= dist) {
+      v_lo = c;
+      f_lo = f_c;
+      break;
     }
-    Profile manual;
-    plan_position(start, target, dyn, manual, ProfileRule::manual);
-    if (!found || manual.duration() < out.duration()) out = manual;
-    return Result::ok;
+    v_hi = c;
+    f_top = f_c;
   }
+  if (v_lo < 0.0) return false;
+  vm = solve_level(v1, a1, vf, dist, v_lo, v_hi, f_lo, f_top, dyn);
+  const double rest = dist - level_distance(v1, a1, vm, vf, dyn);
+  if (rest > kResidue * dist && vm > 0.0) t_cruise = rest / vm;
+  return true;
+}
+
+// ProfileRule::manual (002 2.1-2.3): rest to rest (case 1), a single peak at V or below it
+// (case 2), or stop and return (case 3).
+void plan_manual(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
+                 Profile& out) noexcept {
   // --- ptp-outside: a start whose forced release reverses the motion beyond V or A+ is first
   // brought inside by the manual's own rules (axes/profile_outside.hpp, manual_recover).
   if (detail::outside_limits(start, dyn) &&
       detail::plan_manual_from_outside(start, target, dyn, out)) {
-    return Result::ok;
+    return;
   }
   ProfileBuilder b(out, start);
   const MotionState end{target.p, target.v, 0.0};
   if (start.v == 0.0 && start.a == 0.0 && target.v == 0.0) {  // case 1
     append_rest_to_rest(b, target.p, dyn);
     b.finish(&end);
-    return Result::ok;
+    return;
   }
-  // Frame: the direction of arrival (target velocity), else the side of the stop point on
-  // which the target lies.
-  double s = 1.0;
-  if (target.v != 0.0) {
-    s = target.v > 0.0 ? 1.0 : -1.0;
-  } else {
-    const double m = detail::motion_sign(start, 1.0);
-    const double p_stop = start.p + m * stop_distance(m * start.v, m * start.a, dyn);
-    const double d = target.p - p_stop;
-    s = d > 0.0 ? 1.0 : (d < 0.0 ? -1.0 : m);
-  }
+  const double s = arrival_sign(start, target, dyn);
   const double v0 = s * start.v;
   const double a0 = s * start.a;
   if (v0 < 0.0 || (v0 == 0.0 && a0 < 0.0)) {  // case 3, moving away
     append_stop_and_return(b, target, dyn);
     b.finish(&end);
-    return Result::ok;
+    return;
   }
   detail::clamp_acceleration(b, s, dyn);
   const double v1 = s * b.state().v;
@@ -200,48 +241,13 @@ Result plan_position(const MotionState& start, const PositionTarget& target, con
   // A target behind (an arrival velocity pointing away from it) with a start that never moves
   // backward in this frame (v1 >= 0, release velocity v_zero >= 0): every level's chain keeps
   // v >= 0 and covers a distance >= 0 > dist, so no level fits. Case 3 without evaluating one.
-  if (dist < 0.0 && v1 >= 0.0 && v1 + a1 * std::abs(a1) / (2.0 * j) >= 0.0) {
-    append_stop_and_return(b, target, dyn);
-    b.finish(&end);
-    return Result::ok;
-  }
-  const double f_hi = level_distance(v1, a1, dyn.v_max, vf, dyn);
-  double vm = dyn.v_max;
+  double vm = 0.0;
   double t_cruise = 0.0;
-  if (f_hi <= dist) {  // case 2, V reached; a cruise of rounding residue length is dropped
-    if (dist - f_hi > kResidue * dist) t_cruise = (dist - f_hi) / dyn.v_max;
-  } else {
-    // The highest level whose chain fits: level_distance dips where a ramp vanishes (at the
-    // start's v_zero and at vf), so the feasible levels need not be one interval; candidates
-    // are tried from the top and the root is taken between the first that fits and the next
-    // higher one (docs/axes-profile.md, "Numerics" 4).
-    const double v_zero = v1 + a1 * std::abs(a1) / (2.0 * j);
-    const auto clamp = [&](double v) { return std::clamp(v, 0.0, dyn.v_max); };
-    const std::array<double, 3> candidates{clamp(std::max(v_zero, vf)), clamp(std::min(v_zero, vf)),
-                                           0.0};
-    double v_hi = dyn.v_max;
-    double f_top = f_hi;
-    double v_lo = -1.0;
-    double f_lo = 0.0;
-    for (const double c : candidates) {
-      if (!(c < v_hi)) continue;
-      const double f_c = level_distance(v1, a1, c, vf, dyn);
-      if (f_c <= dist) {
-        v_lo = c;
-        f_lo = f_c;
-        break;
-      }
-      v_hi = c;
-      f_top = f_c;
-    }
-    if (v_lo < 0.0) {  // case 3, cannot arrive without overshooting
-      append_stop_and_return(b, target, dyn);
-      b.finish(&end);
-      return Result::ok;
-    }
-    vm = solve_level(v1, a1, vf, dist, v_lo, v_hi, f_lo, f_top, dyn);
-    const double rest = dist - level_distance(v1, a1, vm, vf, dyn);
-    if (rest > kResidue * dist && vm > 0.0) t_cruise = rest / vm;
+  if ((dist < 0.0 && v1 >= 0.0 && v1 + a1 * std::abs(a1) / (2.0 * j) >= 0.0) ||
+      !manual_level(v1, a1, vf, dist, dyn, vm, t_cruise)) {
+    append_stop_and_return(b, target, dyn);  // case 3, cannot arrive without overshooting
+    b.finish(&end);
+    return;
   }
   b.set_level(vm);
   b.add(velocity_ramp(v1, a1, vm, dyn.a_max, dyn.d_max, j), s);
@@ -249,6 +255,20 @@ Result plan_position(const MotionState& start, const PositionTarget& target, con
   b.mark_brake();
   b.add(velocity_ramp(vm, 0.0, vf, dyn.a_max, dyn.d_max, j), s);
   b.finish(&end);
+}
+
+}  // namespace
+
+Result plan_position(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
+                     Profile& out, ProfileRule rule) noexcept {
+  if (!valid(dyn) || !finite(start) || !std::isfinite(target.p) || !std::isfinite(target.v) ||
+      std::abs(target.v) > dyn.v_max) {
+    return Result::error_invalid_input;
+  }
+  if (rule == ProfileRule::time_optimal)
+    plan_time_optimal(start, target, dyn, out);
+  else
+    plan_manual(start, target, dyn, out);
   return Result::ok;
 }
 

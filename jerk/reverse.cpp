@@ -230,6 +230,125 @@ Status detail::reversal_move_trusted(const State& start, double p1, double v1, c
 
 namespace ncsim::jerk {
 
+namespace {
+
+// The level search of reversal_of_duration: T(L) - duration of the reversal cruising back at
+// level L, whether L is feasible (the ramps do not overshoot the way), and the reversal built
+// at the last level evaluated.
+class DurationSearch {
+ public:
+  DurationSearch(const State& start, double p1, double v1, double duration, const Limits& lim)
+      : start_(start),
+        v1_(v1),
+        duration_(duration),
+        lim_(lim),
+        g_(v1 > 0.0 ? 1.0 : -1.0),
+        d_(g_ * (p1 - start.p)),
+        tol_rest_(8.0 * kEps * std::abs(d_)) {}
+
+  /// T(level) - duration; infeasible levels count on the fast side (-duration).
+  double operator()(double level, double& slope) noexcept {
+    double reach = 0.0;
+    make_into(r_, start_, g_, level, v1_, lim_, reach);
+    slope = std::numeric_limits<double>::quiet_NaN();
+    const double rest = reach - d_;
+    feasible_ = !(rest < -tol_rest_);
+    if (!feasible_) return -duration_;
+    r_.out.t_cruise = rest > tol_rest_ ? rest / level : 0.0;
+    return r_.time() - duration_;
+  }
+  double at(double level) noexcept {
+    double slope = 0.0;
+    return (*this)(level, slope);
+  }
+  bool feasible() const noexcept { return feasible_; }
+  const Reversal& reversal() const noexcept { return r_; }
+
+  /// The feasible end of the boundary between a feasible level `ok` and an infeasible `bad`.
+  double boundary(double ok, double bad) noexcept {
+    for (int i = 0; i < 200 && std::abs(ok - bad) > kEps * std::max(ok, bad); ++i) {
+      const double mid = 0.5 * (ok + bad);
+      at(mid);
+      (feasible_ ? ok : bad) = mid;
+    }
+    return ok;
+  }
+
+  /// A root of T(L) = duration between a feasible level `fast` (T <= duration) and a feasible
+  /// `slow` (T > duration), checked: false when it lands in a hole (`hole` receives it).
+  bool solve(double fast, double t_fast, double slow, double t_slow, double& hole) noexcept {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    // solve_with_slope wants g rising from x_neg to x_pos in value only (either order).
+    const double level =
+        detail::solve_with_slope(fast, slow, t_fast, t_slow, nan, nan, 8.0 * kEps * duration_,
+                                 [this](double x, double& slope) { return (*this)(x, slope); });
+    const double t = at(level);
+    hole = level;
+    return feasible_ && std::abs(t) <= 1e-12 * duration_;
+  }
+
+  /// Halves `l_low` (a level, T at it in t_low) until T(l_low) > duration or the level reaches
+  /// 0; with `fast` the last level still fast enough goes to l_hi / t_hi. Stops early at an
+  /// infeasible level (a hole) when `stop_at_hole`: returns it, else -1.
+  double halve(double& l_hi, double& t_hi, double& l_low, double& t_low,
+               bool stop_at_hole) noexcept {
+    for (int i = 0; i < 200; ++i) {
+      l_low *= 0.5;
+      t_low = at(l_low);
+      if (stop_at_hole && !feasible_) return l_low;
+      if (t_low > 0.0 || !(l_low > 0.0)) break;
+      if (stop_at_hole) {
+        l_hi = l_low;
+        t_hi = t_low;
+      }
+    }
+    return -1.0;
+  }
+
+ private:
+  State start_;
+  double v1_;
+  double duration_;
+  Limits lim_;
+  double g_;         ///< the frame: the sign of the arrival velocity
+  double d_;         ///< the way to the target in that frame [mm]
+  double tol_rest_;  ///< a cruise shorter than this is rounding [mm]
+  Reversal r_;
+  bool feasible_ = false;  ///< of the last level evaluated
+};
+
+// The root within the lower interval (0, l_a] below a hole at `hole`, from a feasible 0
+// (`low_known` false: not seen yet) or from a known too slow level l_low (true).
+Status solve_below_hole(DurationSearch& search, double hole, bool low_known, double l_low,
+                        double t_low, Reversal& out) noexcept {
+  double l_hi = 0.0;
+  double t_hi = 0.0;
+  if (!low_known) {  // from a feasible 0, halved until too slow
+    search.at(0.0);
+    if (!search.feasible()) return Status::not_supported;
+    const double l_a = search.boundary(0.0, hole);
+    l_hi = l_a;
+    t_hi = search.at(l_a);
+    if (t_hi > 0.0) return Status::not_supported;  // the duration lies in the gap
+    l_low = l_a;
+    double unused_l = 0.0;
+    double unused_t = 0.0;
+    search.halve(unused_l, unused_t, l_low, t_low, false);
+    if (!(t_low > 0.0)) return Status::not_supported;
+  } else {
+    const double l_a = search.boundary(l_low, hole);
+    l_hi = l_a;
+    t_hi = search.at(l_a);
+    if (t_hi > 0.0) return Status::not_supported;  // the duration lies in the gap
+  }
+  double miss = 0.0;
+  if (!search.solve(l_hi, t_hi, l_low, t_low, miss)) return Status::not_supported;
+  out = search.reversal();
+  return Status::ok;
+}
+
+}  // namespace
+
 Status reversal_of_duration(const State& start, double p1, double v1, double duration,
                             const Limits& lim, Reversal& out) noexcept {
   if (!std::isfinite(duration) || duration < 0.0) return Status::invalid_input;
@@ -251,101 +370,31 @@ Status reversal_of_duration(const State& start, double p1, double v1, double dur
   // into the hole; a root that lands in the hole shows one as well. With a hole: within
   // [L_b, L_top] when T(L_b) >= duration, else within (0, L_a] when T(L_a) <= duration, else
   // a gap (not_supported).
-  const double g = v1 > 0.0 ? 1.0 : -1.0;
-  const double d = g * (p1 - start.p);
-  const double tol_rest = 8.0 * kEps * std::abs(d);
-  Reversal r;
-  bool feasible = false;  // of the last level evaluated
-  const auto timed = [&](double level, double& slope) {
-    double reach = 0.0;
-    make_into(r, start, g, level, v1, lim, reach);
-    slope = std::numeric_limits<double>::quiet_NaN();
-    const double rest = reach - d;
-    feasible = !(rest < -tol_rest);
-    if (!feasible) return -duration;  // infeasible: counted on the fast side
-    r.out.t_cruise = rest > tol_rest ? rest / level : 0.0;
-    return r.time() - duration;
-  };
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  double slope = 0.0;
-  // The feasible end of the boundary between a feasible level `ok` and an infeasible `bad`.
-  const auto boundary = [&](double ok, double bad) {
-    for (int i = 0; i < 200 && std::abs(ok - bad) > kEps * std::max(ok, bad); ++i) {
-      const double mid = 0.5 * (ok + bad);
-      timed(mid, slope);
-      (feasible ? ok : bad) = mid;
-    }
-    return ok;
-  };
-  // A root of T(L) = duration between a feasible level `fast` (T <= duration) and a feasible
-  // `slow` (T > duration), checked: false when it lands in a hole (`hole` receives it).
-  const auto solve = [&](double fast, double t_fast, double slow, double t_slow, double& hole) {
-    // solve_with_slope wants g rising from x_neg to x_pos in value only (either order).
-    const double level = detail::solve_with_slope(fast, slow, t_fast, t_slow, nan, nan,
-                                                  8.0 * kEps * duration, timed);
-    const double t = timed(level, slope);
-    hole = level;
-    return feasible && std::abs(t) <= 1e-12 * duration;
-  };
-  const double l_top = fastest.out.v_level;
-  double l_hi = l_top;  // the lowest feasible level seen that is fast enough
+  DurationSearch search(start, p1, v1, duration, lim);
+  double l_hi = fastest.out.v_level;  // the lowest feasible level seen that is fast enough
   double t_hi = t_min - duration;
-  double l_low = l_top;
+  double l_low = l_hi;
   double t_low = 0.0;
-  double hole = -1.0;
+  double hole = search.halve(l_hi, t_hi, l_low, t_low, true);
   bool low_known = false;  // l_low: a feasible level below the hole, too slow
-  for (int i = 0; i < 200; ++i) {
-    l_low *= 0.5;
-    t_low = timed(l_low, slope);
-    if (!feasible) {
-      hole = l_low;
-      break;
-    }
-    if (t_low > 0.0 || !(l_low > 0.0)) break;
-    l_hi = l_low;
-    t_hi = t_low;
-  }
   if (hole < 0.0) {
     if (!(t_low > 0.0)) return Status::not_supported;  // stop-and-go fills the way: no slower
-    if (solve(l_hi, t_hi, l_low, t_low, hole)) {
-      out = r;
+    if (search.solve(l_hi, t_hi, l_low, t_low, hole)) {
+      out = search.reversal();
       return Status::ok;
     }
     low_known = true;
   }
   // A hole (l_a, l_b) between l_hi and l_low.
-  const double l_b = boundary(l_hi, hole);
-  const double t_b = timed(l_b, slope);
+  const double l_b = search.boundary(l_hi, hole);
+  const double t_b = search.at(l_b);
   if (t_b > 0.0) {
     double miss = 0.0;
-    if (!solve(l_hi, t_hi, l_b, t_b, miss)) return Status::not_supported;
-    out = r;
+    if (!search.solve(l_hi, t_hi, l_b, t_b, miss)) return Status::not_supported;
+    out = search.reversal();
     return Status::ok;
   }
-  if (!low_known) {  // the lower interval (0, l_a]: from a feasible 0, halved until too slow
-    timed(0.0, slope);
-    if (!feasible) return Status::not_supported;
-    const double l_a = boundary(0.0, hole);
-    l_hi = l_a;
-    t_hi = timed(l_a, slope);
-    if (t_hi > 0.0) return Status::not_supported;  // the duration lies in the gap
-    l_low = l_a;
-    for (int i = 0; i < 200; ++i) {
-      l_low *= 0.5;
-      t_low = timed(l_low, slope);
-      if (t_low > 0.0 || !(l_low > 0.0)) break;
-    }
-    if (!(t_low > 0.0)) return Status::not_supported;
-  } else {
-    const double l_a = boundary(l_low, hole);
-    l_hi = l_a;
-    t_hi = timed(l_a, slope);
-    if (t_hi > 0.0) return Status::not_supported;  // the duration lies in the gap
-  }
-  double miss = 0.0;
-  if (!solve(l_hi, t_hi, l_low, t_low, miss)) return Status::not_supported;
-  out = r;
-  return Status::ok;
+  return solve_below_hole(search, hole, low_known, l_low, t_low, out);
 }
 
 }  // namespace ncsim::jerk
