@@ -130,6 +130,27 @@ TEST_CASE("property: random programs keep every limit and the contour, reach the
   CHECK(contour > 0.01);
 }
 
+TEST_CASE("property: random programs with #SPLINE sections keep every limit, reach their ends") {
+  // Issue 12's seeded random programs include splines: Akima and B-spline sections of 4-8
+  // points among the lines, arcs, helices, balls, stops and dwells (test_support.hpp
+  // random_spline), through the interpolator with the audit, as above.
+  std::mt19937_64 rng(2029);
+  std::uint64_t steps = 0;
+  RandomProgram p;
+  p.moves = 40;
+  p.splines = true;
+  std::size_t pieces = 0;
+  const double contour = run_random(rng, 40, p, steps, [&](std::vector<Item>& items) {
+    for (const Item& it : items) {
+      const auto* m = std::get_if<planner::Move>(&it);
+      if (m != nullptr && m->spline) ++pieces;
+    }
+  });
+  CHECK(pieces > 200);
+  CHECK(steps > 100);
+  CHECK(contour > 0.01);
+}
+
 /// The DIST property programs (seed 2026, 40 programs of 40 blocks), after `edit`; checks that
 /// they exercise steps and blends.
 void run_dist_programs(const std::function<void(std::vector<Item>&)>& edit = nullptr) {

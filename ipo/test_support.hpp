@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ipo/interpolator.hpp"
+#include "planner/spline.hpp"
 #include "planner/test_support.hpp"
 
 namespace ncsim::ipo::test {
@@ -43,11 +44,42 @@ inline planner::Move line(const AxisVec& a, const AxisVec& b, double feed, std::
 /// Parameters of a seeded random program.
 struct RandomProgram {
   int moves = 60;
-  bool blends = true;   ///< some blocks end with G261 PATH_DEV
-  bool dist = false;    ///< with `blends`: G261 #CONTOUR MODE DIST PRE_DIST / POST_DIST instead
-  bool stops = true;    ///< some G09 / G60 / G04 / G00
-  bool helices = true;  ///< arcs move Z too
+  bool blends = true;    ///< some blocks end with G261 PATH_DEV
+  bool dist = false;     ///< with `blends`: G261 #CONTOUR MODE DIST PRE_DIST / POST_DIST instead
+  bool stops = true;     ///< some G09 / G60 / G04 / G00
+  bool helices = true;   ///< arcs move Z too
+  bool splines = false;  ///< some #SPLINE sections (Akima or B-spline, 4-8 points) between moves
 };
+
+/// A #SPLINE section of 4-8 points from `pos` (a random walk of 0.5-10 mm steps in XY, some
+/// in Z), Akima or B-spline, one source line per point from `ln`: its pieces as Moves.
+inline void random_spline(std::mt19937_64& rng, AxisVec& pos, std::uint32_t& ln,
+                          std::vector<Item>& items) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const planner::SplineType type =
+      u(rng) < 0.5 ? planner::SplineType::akima : planner::SplineType::bspline;
+  planner::Move modal;
+  modal.slope = u(rng) < 0.9 ? planner::SlopeType::trapez : planner::SlopeType::step;
+  planner::SplineBuilder builder(type, modal.axis_count, modal.path_axes);
+  const double feed = 5.0 + 95.0 * u(rng);
+  const auto emit = [&](std::span<const planner::SplinePiece> pieces) {
+    for (const planner::SplinePiece& piece : pieces)
+      items.emplace_back(planner::spline_move(piece, modal));
+  };
+  emit(builder.push(planner::SplineVertex{pos, ln, feed}));
+  const int points = 4 + static_cast<int>(rng() % 5);
+  double heading = 2.0 * std::numbers::pi * u(rng);
+  for (int k = 1; k < points; ++k) {
+    heading += (u(rng) - 0.5) * 2.0;
+    const double step = 0.5 + 9.5 * u(rng);
+    pos[0] += step * std::cos(heading);
+    pos[1] += step * std::sin(heading);
+    if (u(rng) < 0.2) pos[2] += step * (u(rng) - 0.5);
+    emit(builder.push(planner::SplineVertex{pos, ++ln, feed}));
+  }
+  emit(builder.finish());
+  ++ln;
+}
 
 /// Seeded random lines, arcs and helices (and events), one source line per item from 1.
 inline std::vector<Item> random_program(std::mt19937_64& rng, const RandomProgram& p) {
@@ -79,7 +111,9 @@ inline std::vector<Item> random_program(std::mt19937_64& rng, const RandomProgra
       m.end[1] += len * std::sin(dir);
       if (u(rng) < 0.2) m.end[2] += len * (u(rng) - 0.5);
     }
-    if (p.blends && u(rng) < 0.5) {
+    // A spline section follows some blocks; contouring never meets a spline (120255).
+    const bool spline_next = p.splines && u(rng) < 0.1;
+    if (p.blends && !spline_next && u(rng) < 0.5) {
       if (p.dist) {
         m.contour = planner::Contour::distance;
         m.pre_dist = 0.005 + 0.5 * u(rng);  // the range of PATH_DEV below
@@ -101,6 +135,7 @@ inline std::vector<Item> random_program(std::mt19937_64& rng, const RandomProgra
     items.emplace_back(m);
     pos = m.end;
     if (p.stops && u(rng) < 0.04) items.emplace_back(Dwell{0.0005 + 0.02 * u(rng), ln++});
+    if (spline_next) random_spline(rng, pos, ln, items);
   }
   return items;
 }
