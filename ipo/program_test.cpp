@@ -1,7 +1,7 @@
-// Seeded random programs of lines, arcs, helices, tolerance-ball blends, stops and dwells with
-// random limits and cycles of 0.25-4 ms: the audit finds no limit exceeded beyond the
-// documented steps and no contour deviation beyond tolerance; every G60 / dwell / final end
-// point is reached bit for bit; reruns are byte-identical.
+// Seeded random programs of lines, arcs, helices, #SPLINE sections, tolerance-ball and DIST
+// blends, stops and dwells with random limits and cycles of 0.25-4 ms: the audit finds no limit
+// exceeded beyond the documented steps and no contour deviation beyond tolerance; every G60 /
+// dwell / final end point is reached bit for bit; reruns are byte-identical.
 
 #include <doctest/doctest.h>
 
