@@ -268,6 +268,20 @@
         A.axes.map(function (x, i) { return auditRow(D.axes[i], x); }).concat(
             A.joints.map(function (x) { return auditRow(D.axes[x.index] + ' under #TRAFO', x); })),
         [0]);
+  // The documented steps apart, per kind, with the one closest to its formula (issue 12).
+  if (A.step_kinds.length > 0) {
+    var formula = {'VELOJUMP': 'C0 min(A+, |A-|) T', '#TRANSVELMIN': 'v_min |dx\u2032|',
+                   'C1': 'j T'};
+    table(root, ['documented step', 'count', 'formula', 'closest: t [s]', 'line', 'axis',
+                 'step', 'bound', 'link velocity [mm/s]'],
+          A.step_kinds.map(function (k) {
+            return [k.kind, k.count, formula[k.kind], fmt(k.t, 9), k.line, k.axis, fmt(k.value),
+                    fmt(k.bound), fmt(k.v_link)];
+          }), [0, 2, 5]);
+  }
+  if (A.belt_count > 0)
+    el('p', root, A.belt_count + ' of the violations are the belt\u2019s own acceleration or ' +
+       'jerk on top of a path within the axis\u2019s limits (004 l.454; docs/conveyor.md)', 'note');
   if (A.violations.length > 0) {
     el('h3', root, 'Violations' + (A.violation_count > A.violations.length ?
         ' (first ' + A.violations.length + ' of ' + A.violation_count + ')' : ''));

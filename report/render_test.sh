@@ -70,6 +70,11 @@ for program in programs/isg_reference_example/isg_reference_example.nc tests/cli
       echo "render_test: $example: conveyor charts '$conv' (>= 2), phase bands '$bands' (>= 3)," \
         "workspace drawn: no" >&2
       exit 1
+    fi    # The audit's documented steps apart: its 18 VELOJUMP corners, the closest to its formula.
+    if ! grep -q '<td class="l">VELOJUMP</td><td>18</td><td class="l">C0 min(A+, |A-|) T</td>' \
+      "$dom"; then
+      echo "render_test: $example: the audit's table of documented steps is missing" >&2
+      exit 1
     fi
   fi
   # The page logs nothing: any console line Chromium reports is an error.
