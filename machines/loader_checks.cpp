@@ -167,10 +167,20 @@ constexpr std::array<std::string_view, 16> kKnown = {
 // FCT_LOOK_AHEAD_CUSTOM (isg-language.md §7.1 "CUSTOM [10 .. P-CHAN-00653]"; TF5200's channel
 // parameters: data range 10..10000, default 120). A value below 10 is the kernel's error 50611
 // "number of look-ahead blocks too small", class 3, "controller corrects the value": a
-// warning, and the window is 10.
+// warning, and the window is 10. Above 500 (the upper limit from build V3.1.3067.07; 10000 only
+// with #SLOPE[TYPE=STEP], which a channel list cannot know) NC3020, limited to 500: a window
+// entry may hold a chain of 64 blocks (~70 KB), so 10000 entries would take ~0.7 GB.
 int custom_look_ahead(const ListValues& v, Reporter& r) {
   const char* key = "configuration.interpolator.number_blocks_lah";
   const int blocks = static_cast<int>(v.number(key));
+  constexpr int kMaxBlocks = 500;
+  if (blocks > kMaxBlocks) {
+    r.warning(v.file(), v.loc(key), "NC3020",
+              param_ref(key, ListKind::channel) + " = " + std::to_string(blocks) +
+                  " is above 500 blocks, the limit of TF5200 builds from V3.1.3067.07 (10000 only "
+                  "with #SLOPE[TYPE=STEP]); limited to 500");
+    return kMaxBlocks;
+  }
   if (blocks >= 10) return blocks;
   r.warning(v.file(), v.loc(key), "50611",
             param_ref(key, ListKind::channel) + " = " + std::to_string(blocks) +

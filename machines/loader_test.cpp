@@ -459,6 +459,18 @@ TEST_CASE(
   }
   {
     const ChannelLoad r = load_base_with_channel(
+        "look_ahead_large", master + custom + "configuration.interpolator.number_blocks_lah 600\n");
+    REQUIRE(r.result.machine.has_value());
+    CHECK(r.result.machine->channel.interpolator.look_ahead_blocks == 500);
+    REQUIRE(r.result.diagnostics.items().size() == 1);
+    const core::Diagnostic& w = r.result.diagnostics.items().front();
+    CHECK(w.id == "NC3020");
+    CHECK(w.severity == core::Severity::warning);
+    CHECK(w.loc.line == 3);
+    CHECK(w.message.find("limited to 500") != std::string::npos);
+  }
+  {
+    const ChannelLoad r = load_base_with_channel(
         "look_ahead_small", master + custom + "configuration.interpolator.number_blocks_lah 5\n");
     REQUIRE(r.result.machine.has_value());
     CHECK(r.result.machine->channel.interpolator.look_ahead_blocks == 10);
