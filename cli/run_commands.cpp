@@ -248,20 +248,19 @@ void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names,
      << " cycles\n";
   // The documented steps listed apart (issue 12): per kind, how many and the closest to its
   // formula's bound (the axis that came closest at that joint).
-  static constexpr std::array<const char*, 3> kKind = {"VELOJUMP", "#TRANSVELMIN", "C1"};
-  static constexpr std::array<const char*, 3> kFormula = {"C0 min(A+, |A-|) T", "v_min |dx'|",
-                                                          "j T"};
-  for (std::size_t k = 0; k < kKind.size(); ++k) {
+  for (std::size_t k = 0; k < ipo::kStepKindNames.size(); ++k) {
     const ipo::StepKind& sk = v.step_kinds[k];
     if (sk.count == 0) continue;
     const ipo::Step& s = sk.closest;
-    const char* unit = k == 2 ? "/s^2" : "/s";
+    const bool c1 = k == ipo::step_kind(ipo::Quantity::c1_step);  // an acceleration step
+    const char* unit = c1 ? "/s^2" : "/s";
     const std::string& u = s.axis < units.size() ? units[s.axis] : std::string("mm");
-    os << "audit: " << kKind[k] << " steps " << sk.count << ", closest to " << kFormula[k]
-       << ": t=" << num(s.t) << " s line " << block_where(interp, s.file, s.line) << " axis "
+    os << "audit: " << ipo::kStepKindNames[k] << " steps " << sk.count << ", closest to "
+       << ipo::kStepKindFormulas[k] << ": t=" << num(s.t) << " s line "
+       << block_where(interp, s.file, s.line) << " axis "
        << (s.axis < names.size() ? names[s.axis] : std::to_string(s.axis)) << ' '
-       << (k == 2 ? "|da| " : "|dv| ") << human(s.value) << " of " << human(s.bound) << ' ' << u
-       << unit << " at the link velocity " << human(s.v_link) << " mm/s\n";
+       << (c1 ? "|da| " : "|dv| ") << human(s.value) << " of " << human(s.bound) << ' ' << u << unit
+       << " at the link velocity " << human(s.v_link) << " mm/s\n";
   }
   for (const ipo::Violation& x : v.violations) {
     os << "audit: violation t=" << num(x.t) << " s line " << block_where(interp, x.file, x.line)

@@ -236,6 +236,10 @@ class Audit final : public Sink {
 inline std::size_t step_kind(Quantity q) noexcept {
   return q == Quantity::velojump ? 0 : q == Quantity::transvelmin ? 1 : 2;
 }
+/// Names and formulas of the documented step kinds, in Verdict::step_kinds order (reports).
+inline constexpr std::array<const char*, 3> kStepKindNames = {"VELOJUMP", "#TRANSVELMIN", "C1"};
+inline constexpr std::array<const char*, 3> kStepKindFormulas = {"C0 min(A+, |A-|) T",
+                                                                 "v_min |dx'|", "j T"};
 
 /// The name of a quantity in reports ("velocity", "c1-step", ...).
 const char* quantity_name(Quantity q) noexcept;

@@ -246,15 +246,16 @@ std::string json(const ReportData& d) {
   }
   // The documented steps per kind with the one closest to its formula (as the CLI prints them).
   s += "],\"step_kinds\":[";
-  static constexpr std::array<const char*, 3> kKinds = {"VELOJUMP", "#TRANSVELMIN", "C1"};
   bool first_kind = true;
-  for (std::size_t k = 0; k < kKinds.size(); ++k) {
+  for (std::size_t k = 0; k < ipo::kStepKindNames.size(); ++k) {
     const ipo::StepKind& sk = v.step_kinds[k];
     if (sk.count == 0) continue;
     const ipo::Step& c = sk.closest;
     s += first_kind ? "{\"kind\":" : ",{\"kind\":";
     first_kind = false;
-    s += json_quote(kKinds[k]) + ",\"count\":" + std::to_string(sk.count) + ",\"t\":";
+    s += json_quote(ipo::kStepKindNames[k]) +
+         ",\"formula\":" + json_quote(ipo::kStepKindFormulas[k]) +
+         ",\"count\":" + std::to_string(sk.count) + ",\"t\":";
     exact(s, c.t);
     s += ",\"line\":" + std::to_string(c.line) + ",\"axis\":" +
          json_quote(c.axis < d.axes.size() ? d.axes[c.axis] : std::to_string(c.axis)) +

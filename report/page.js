@@ -270,12 +270,10 @@
         [0]);
   // The documented steps apart, per kind, with the one closest to its formula (issue 12).
   if (A.step_kinds.length > 0) {
-    var formula = {'VELOJUMP': 'C0 min(A+, |A-|) T', '#TRANSVELMIN': 'v_min |dx\u2032|',
-                   'C1': 'j T'};
     table(root, ['documented step', 'count', 'formula', 'closest: t [s]', 'line', 'axis',
                  'step', 'bound', 'link velocity [mm/s]'],
           A.step_kinds.map(function (k) {
-            return [k.kind, k.count, formula[k.kind], fmt(k.t, 9), k.line, k.axis, fmt(k.value),
+            return [k.kind, k.count, k.formula, fmt(k.t, 9), k.line, k.axis, fmt(k.value),
                     fmt(k.bound), fmt(k.v_link)];
           }), [0, 2, 5]);
   }
