@@ -203,8 +203,7 @@ void PathInterpolator::sample(double distance) noexcept {
   Cycle& c = cycle_;
   const planner::Chain& path = cur_.segment.path;
   const double length = path.length();
-  planner::PathState ps =
-      on_plan_ ? planner::profile_at(prof_, cur_.v_entry, t_in_) : plan_at(plan_, t_in_);
+  planner::PathState ps = on_plan_ ? planner::profile_at(prof_, t_in_) : plan_at(plan_, t_in_);
   ps.s = t_in_ >= dur_ && !plan_.hold ? length : std::clamp(ps.s, 0.0, length);
   distance += ps.s - s_prev_;
   const double s_from = s_prev_;
@@ -267,15 +266,17 @@ void PathInterpolator::report_joint(const planner::PlannedSegment& next, double 
   jt.cls = cur_.segment.joint;
   jt.stop = cur_.segment.stop;
   jt.jerk_limited = planner::jerk_limited(prog_in.slope) && planner::jerk_limited(prog_out.slope);
-  // Both sides are planned with a = 0 at a window-entry joint: only the geometry steps.
-  // The velocity is the one the path arrives with (below the plan's under an override).
+  // The velocity and acceleration are the ones the path arrives with (below the plan's under
+  // an override); a != 0 only where a speed-up is carried through a soft joint (a knee steps
+  // the axis acceleration by a dx' too).
   const double v = v_arrive_;
+  const double a = a_arrive_;
   jt.v = v;
   jt.rule = cur_.segment.rule;
   jt.transvelmin = prog_in.transvelmin.value_or(0.0);
   for (std::size_t i = 0; i < axes_.size(); ++i) {
     jt.dv[i] = v * (p_out.d1[i] - p_in.d1[i]);
-    jt.da[i] = v * v * (p_out.d2[i] - p_in.d2[i]);
+    jt.da[i] = v * v * (p_out.d2[i] - p_in.d2[i]) + a * (p_out.d1[i] - p_in.d1[i]);
   }
   sink_->on_joint(jt);
 }
@@ -419,10 +420,12 @@ Status PathInterpolator::step() noexcept {
       report_part_starts(s_prev_, length);
     s_prev_ = length;
     v_arrive_ = on_plan_ ? cur_.v_exit : plan_.v_exit();
+    a_arrive_ = on_plan_ ? cur_.a_exit : 0.0;
     if (cur_.segment.stop == planner::StopReason::exact_stop) {
       // G60 / G360: the rest of the cycle is not carried; window and settling time follow.
       stop_at_end(distance);
       v_arrive_ = 0.0;
+      a_arrive_ = 0.0;
       c.held = false;
       c.factor = plan_factor_;
       c.lost = lost_;
@@ -453,6 +456,7 @@ Status PathInterpolator::step() noexcept {
       // Program end, a dwell, or nothing known beyond: the path stands; the cycle is whole.
       stop_at_end(distance);
       v_arrive_ = 0.0;
+      a_arrive_ = 0.0;
       c.held = false;
       c.factor = plan_factor_;
       c.lost = lost_;
@@ -490,6 +494,7 @@ bool PathInterpolator::prefill() noexcept {
 
 double PathInterpolator::start_moving(double v, double lag) noexcept {
   v_arrive_ = window_.start_at(v);
+  a_arrive_ = 0.0;
   start_lag_ = std::clamp(lag, 0.0, t_);
   return v_arrive_;
 }
@@ -529,19 +534,25 @@ void PathInterpolator::set_override(double factor) {
 
 bool PathInterpolator::plan_entry() noexcept {
   const double f = effective_factor();
-  if (f == 1.0 && v_arrive_ == cur_.v_entry && !(cap_ < prof_.v_level)) {  // --- workspace
-    // At 100 % every type asks for the look-ahead's own profile: follow it unchanged.
-    plan_ = PathPlan{prof_, 0.0, cur_.v_entry, 0.0, false, cur_.segment.path.length()};
+  const bool as_planned = v_arrive_ == cur_.v_entry && a_arrive_ == cur_.a_entry;
+  // At 100 % every type asks for the look-ahead's own profile: follow it unchanged.
+  const auto follow = [&] {
+    plan_ = PathPlan{prof_, 0.0, false, cur_.segment.path.length()};
     on_plan_ = true;
     plan_factor_ = 1.0;
     plan_cap_ = cap_;  // --- workspace
     dur_ = prof_.time();
     return true;
-  }
-  if (replan(f, 0.0, v_arrive_, 0.0)) return true;
+  };
+  if (f == 1.0 && as_planned && !(cap_ < prof_.v_level)) return follow();  // --- workspace
+  if (replan(f, 0.0, v_arrive_, a_arrive_)) return true;
   // Above 100 % the raised limits can be tighter than the planned ones: fall back to 100 %
   // (the change is retried every cycle).
-  return f > 1.0 && replan(1.0, 0.0, v_arrive_, 0.0);
+  if (f > 1.0 && replan(1.0, 0.0, v_arrive_, a_arrive_)) return true;
+  // A speed-up carried through the joint whose acceleration no plan ending at a = 0 can
+  // release within this entry goes on as planned; the change is retried every cycle
+  // (docs/ipo.md "Override and feed hold").
+  return a_arrive_ > 0.0 && as_planned && follow();
 }
 
 bool PathInterpolator::replan(double f, double s, double v, double a) noexcept {
@@ -605,7 +616,7 @@ bool PathInterpolator::in_ball(double s) const noexcept {
 }
 
 double PathInterpolator::t100(double s) const noexcept {
-  return profile_time_at(prof_, cur_.v_entry, s);
+  return profile_time_at(prof_, s);
 }
 
 void PathInterpolator::advance_to(double t_new) noexcept {

@@ -357,7 +357,7 @@ class PathInterpolator {
 
   bool active_ = false;  ///< cur_ is being traversed
   planner::PlannedSegment cur_;
-  jerk::Move prof_;
+  planner::SegmentProfile prof_;
   double dur_ = 0.0;   ///< duration of cur_'s profile [s]
   double t_in_ = 0.0;  ///< time into cur_ [s]
   double s_prev_ = 0.0;
@@ -376,6 +376,7 @@ class PathInterpolator {
   bool on_plan_ = true;        ///< plan_ is the look-ahead's 100 % profile itself
   double plan_factor_ = 1.0;   ///< factor plan_ was made for
   double v_arrive_ = 0.0;      ///< path velocity at the end of the previous entry [mm/s]
+  double a_arrive_ = 0.0;      ///< path acceleration there [mm/s^2] (a carried speed-up)
   bool has_ball_ = false;      ///< cur_ holds a tolerance-ball blend
   bool raised_ready_ = false;  ///< raised_ computed for cur_
   RaisedLimits raised_;        ///< cur_'s limits above 100 %

@@ -152,40 +152,21 @@ RaisedLimits raised_limits(const planner::PlannedSegment& entry,
   return out;
 }
 
+double PathPlan::v_exit() const noexcept {
+  if (hold) return 0.0;
+  if (profile.t_first < profile.first.time())  // a cut speed-up (the 100 % profile)
+    return planner::profile_at(profile, profile.time()).v;
+  return profile.second.v_end;
+}
+
 planner::PathState plan_at(const PathPlan& plan, double t) noexcept {
-  const jerk::Move& move = plan.move;
   if (plan.hold && t >= plan.time())  // standing: exactly v = 0 where the ramp ends
     return planner::PathState{plan.s0 + plan.length, 0.0, 0.0, 0.0};
   t = std::clamp(t, 0.0, plan.time());
-  jerk::State st{0.0, plan.v0, plan.a0};
-  planner::PathState out;
-  // One ramp: phases with their jerk; boundary values snapped to the ramp's exact ones.
-  auto ramp = [&](const jerk::Ramp& r) {
-    for (std::size_t i = 0; i < 3; ++i) {
-      if (t <= r.duration[i]) {
-        const jerk::State at = jerk::advance(st, r.jerk[i], t);
-        out = planner::PathState{at.p, at.v, at.a, r.jerk[i]};
-        return true;
-      }
-      st = jerk::advance(st, r.jerk[i], r.duration[i]);
-      st.a = i < 2 ? r.a_peak : 0.0;
-      t -= r.duration[i];
-    }
-    st.v = r.v_end;
-    st.a = 0.0;
-    return false;
-  };
-  auto shifted = [&](planner::PathState ps) {
-    ps.s = plan.s0 + std::clamp(ps.s, 0.0, plan.length);
-    return ps;
-  };
-  if (ramp(move.first)) return shifted(out);
-  if (plan.hold) return shifted(planner::PathState{st.p, 0.0, 0.0, 0.0});
-  if (t <= move.t_cruise) return shifted(planner::PathState{st.p + st.v * t, st.v, 0.0, 0.0});
-  st.p += st.v * move.t_cruise;
-  t -= move.t_cruise;
-  if (ramp(move.second)) return shifted(out);
-  return shifted(planner::PathState{plan.length, st.v, 0.0, 0.0});
+  planner::PathState ps = planner::profile_at(plan.profile, t);
+  if (t >= plan.time()) ps.s = plan.length;  // the end of the entry, not its rounding
+  ps.s = plan.s0 + std::clamp(ps.s, 0.0, plan.length);
+  return ps;
 }
 
 bool make_plan(const PlanRequest& r, PathPlan& out) noexcept {
@@ -211,13 +192,13 @@ bool make_plan(const PlanRequest& r, PathPlan& out) noexcept {
     level = highest_fitting(exit, target, level_fits);
   }
   out = PathPlan{};
-  out.v0 = v0;
-  out.a0 = a0;
   out.hold = target == 0.0 && exit == 0.0;
-  jerk::Move& m = out.move;
-  m.sign = 1.0;
+  planner::SegmentProfile& m = out.profile;
+  m.v0 = v0;
+  m.a0 = a0;
   m.v_level = level;
   m.first = jerk::velocity_ramp(v0, a0, level, r.a, r.d, r.j);
+  m.t_first = m.first.time();
   const double d1 = jerk::distance(v0, a0, m.first);
   if (out.hold) {
     out.length = std::clamp(d1, 0.0, length);
@@ -230,15 +211,15 @@ bool make_plan(const PlanRequest& r, PathPlan& out) noexcept {
   return true;
 }
 
-double profile_time_at(const jerk::Move& move, double v_entry, double s) noexcept {
-  const double total = move.time();
+double profile_time_at(const planner::SegmentProfile& profile, double s) noexcept {
+  const double total = profile.time();
   if (s <= 0.0) return 0.0;
   double lo = 0.0;
   double hi = total;
-  if (planner::profile_at(move, v_entry, hi).s <= s) return total;
+  if (planner::profile_at(profile, hi).s <= s) return total;
   for (int i = 0; i < 100 && hi - lo > 1e-12 * std::max(1e-3, hi); ++i) {
     const double mid = 0.5 * (lo + hi);
-    (planner::profile_at(move, v_entry, mid).s < s ? lo : hi) = mid;
+    (planner::profile_at(profile, mid).s < s ? lo : hi) = mid;
   }
   return 0.5 * (lo + hi);
 }

@@ -79,16 +79,14 @@ RaisedLimits raised_limits_joints(const planner::PlannedSegment& entry,
 
 /// A velocity plan on the active entry from the state at s0 to the entry's end (or to a hold).
 struct PathPlan {
-  jerk::Move move;      ///< first ramp from (v0, a0), cruise, second ramp to the exit
-  double s0 = 0.0;      ///< arc length of the start on the entry [mm]
-  double v0 = 0.0;      ///< path velocity at the start [mm/s]
-  double a0 = 0.0;      ///< path acceleration at the start [mm/s^2]
-  bool hold = false;    ///< ends at v = 0 after the first ramp and holds there
+  planner::SegmentProfile profile;  ///< first ramp from (v0, a0), cruise, second ramp to the exit
+  double s0 = 0.0;                  ///< arc length of the start on the entry [mm]
+  bool hold = false;                ///< ends at v = 0 after the first ramp and holds there
   double length = 0.0;  ///< arc length the plan covers [mm] (the rest of the entry unless hold)
   /// Duration until the entry end or the hold [s].
-  double time() const noexcept { return hold ? move.first.time() : move.time(); }
+  double time() const noexcept { return hold ? profile.t_first : profile.time(); }
   /// Velocity at the end of the plan [mm/s].
-  double v_exit() const noexcept { return hold ? 0.0 : move.second.v_end; }
+  double v_exit() const noexcept;
 };
 
 /// Path state at time t [s] after the plan's start (t clamped to [0, time()]); s is the arc
@@ -112,8 +110,8 @@ struct PlanRequest {
 /// reached within the length from the state.
 bool make_plan(const PlanRequest& request, PathPlan& out) noexcept;
 
-/// Time [s] at which the 100 % profile `move` (begun at v_entry) reaches arc length s
-/// (bisection on the monotone s(t); s beyond the profile's length gives its duration).
-double profile_time_at(const jerk::Move& move, double v_entry, double s) noexcept;
+/// Time [s] at which the 100 % profile reaches arc length s (bisection on the monotone s(t);
+/// s beyond the profile's length gives its duration).
+double profile_time_at(const planner::SegmentProfile& profile, double s) noexcept;
 
 }  // namespace ncsim::ipo

@@ -470,6 +470,58 @@ TEST_CASE("property: random override and hold sequences keep limits and contour,
   CHECK(held_runs > 5);
 }
 
+TEST_CASE("carried speed-ups under random override and hold changes keep limits and complete") {
+  // Straight runs of short collinear lines at random feeds: soft joints between different
+  // caps, where the 100 % plan carries a speed-up (planner/lookahead.hpp). An override plan
+  // ends at a = 0 below the 100 % exit, from which the next entry is planned again
+  // (docs/ipo.md "Override and feed hold").
+  std::mt19937_64 rng(1414);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int carried_runs = 0;
+  for (int trial = 0; trial < 80; ++trial) {
+    Config cfg;
+    cfg.axes = random_limits(rng);
+    cfg.channel.t_cycle = 0.00025 * static_cast<double>(1 + rng() % 16);
+    cfg.window = 10 + rng() % 60;
+    cfg.override_type = static_cast<OverrideType>(rng() % 3);
+    std::vector<Item> items;
+    AxisVec p = vec(0, 0);
+    double heading = 6.28 * u(rng);
+    for (std::uint32_t k = 0; k < 40; ++k) {
+      if (u(rng) < 0.1) heading += u(rng) - 0.5;  // now and then a bend (C0)
+      const double len = 0.2 + 5.0 * u(rng) * u(rng);
+      const AxisVec q = vec(p[0] + len * std::cos(heading), p[1] + len * std::sin(heading));
+      items.emplace_back(line(p, q, 20.0 + 300.0 * u(rng), k + 1));
+      p = q;
+    }
+    const std::uint64_t seed = rng();
+    for (int pass = 0; pass < 2; ++pass) {  // 100 %, then with the operator
+      Recorder rec(cfg);
+      double a_at_joint = 0.0;  // largest path acceleration in a cycle that changed the line
+      std::uint32_t line_before = 0;
+      RandomOperator op{std::mt19937_64(seed), cfg.override_type};
+      const Status st = run(cfg, items, rec, [&](PathInterpolator& ipo, std::size_t k) {
+        if (pass == 1) op(ipo, k);
+        if (k % 20000 == 19999) {
+          ipo.set_feed_hold(false);
+          ipo.set_override(1.0);
+        }
+        const Cycle& c = ipo.cycle();
+        if (c.line != line_before && line_before != 0) a_at_joint = std::max(a_at_joint, c.path.a);
+        line_before = c.line;
+      });
+      CAPTURE(trial);
+      CAPTURE(pass);
+      REQUIRE(st == Status::finished);
+      check_audit(rec);
+      for (std::size_t i = 0; i < 2; ++i)
+        CHECK(rec.last.x[i] == p[i]);
+      if (pass == 0 && a_at_joint > 0.3 * cfg.axes[0].a_max) ++carried_runs;
+    }
+  }
+  CHECK(carried_runs > 20);
+}
+
 }  // namespace
 
 TEST_CASE("above 100 % under #TRAFO ON the raised cap is the joints' G00 rule, not the TCP's") {

@@ -79,12 +79,12 @@ Peak joint_peaks(const Segment& seg, const PathLimits& pl, const DeltaKinematics
   planned.a_max = pl.a_max;
   planned.d_max = pl.d_max;
   planned.j_max = pl.j_max;
-  const ncsim::jerk::Move profile_move = profile(planned);
+  const SegmentProfile profile_move = profile(planned);
   constexpr double dt = 2e-4;
   const auto steps = static_cast<int>(std::ceil(profile_move.time() / dt)) + 8;
   std::vector<Eigen::Vector3d> q;
   for (int k = -4; k <= steps; ++k) {
-    const PathState st = profile_at(profile_move, 0.0, k * dt);
+    const PathState st = profile_at(profile_move, k * dt);
     const AxisVec x = seg.point(st.s);
     const auto r = kin.inverse(Eigen::Vector3d(x[0], x[1], x[2]));
     REQUIRE(r.ok());

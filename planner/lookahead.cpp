@@ -12,11 +12,23 @@ namespace ncsim::planner {
 
 namespace {
 
-/// Distance of the two ramps v_entry -> level -> v_exit.
-double ramps_distance(double v_entry, double level, double v_exit, double a, double d, double j) {
-  const jerk::Ramp up = jerk::velocity_ramp(v_entry, 0.0, level, a, d, j);
+/// Distance of the two ramps (v_entry, a_entry) -> level -> v_exit.
+double ramps_distance(double v_entry, double a_entry, double level, double v_exit, double a,
+                      double d, double j) {
+  const jerk::Ramp up = jerk::velocity_ramp(v_entry, a_entry, level, a, d, j);
   const jerk::Ramp down = jerk::velocity_ramp(level, 0.0, v_exit, a, d, j);
-  return jerk::distance(v_entry, 0.0, up) + jerk::distance(level, 0.0, down);
+  return jerk::distance(v_entry, a_entry, up) + jerk::distance(level, 0.0, down);
+}
+
+/// Velocity at which the acceleration a0 >= 0 is released with j (no lower level is reached
+/// from (v0, a0) without the velocity passing it first).
+double released_velocity(double v0, double a0, double j) noexcept {
+  return a0 > 0.0 ? v0 + 0.5 * a0 * a0 / j : v0;
+}
+
+/// The same phases as a StateRamp (a_end = 0), for the kernel's cut functions.
+jerk::StateRamp as_state_ramp(const jerk::Ramp& r) noexcept {
+  return jerk::StateRamp{r.jerk, r.duration, r.a_peak, r.v_end, 0.0};
 }
 
 /// Duration of a ramp between two velocities dv >= 0 apart with a = 0 at both ends (the
@@ -159,37 +171,52 @@ std::size_t window_size(LookAheadKind kind, std::optional<std::size_t> custom,
   return *custom;
 }
 
-jerk::Move profile(const PlannedSegment& planned) noexcept {
+SegmentProfile profile(const PlannedSegment& planned) noexcept {
   const double length = planned.segment.path.length();
   const double cap = planned.segment.limits.v_max;
   const double a = planned.a_max;
   const double d = planned.d_max;
   const double j = planned.j_max;
   const double v0 = planned.v_entry;
+  const double a0 = planned.a_entry;
   const double v1 = planned.v_exit;
-  // Highest level in [max(v0, v1), cap] whose two ramps fit the length (monotone in level).
-  const double lo = std::max(v0, v1);
+  SegmentProfile out;
+  out.v0 = v0;
+  out.a0 = a0;
+  if (planned.v_toward > 0.0) {  // a carried speed-up, cut by the segment end
+    out.first = jerk::velocity_ramp(v0, a0, planned.v_toward, a, a, j);  // as LookAhead::pop
+    out.t_first = std::clamp(planned.t_cut, 0.0, out.first.time());
+    out.v_level = v1;
+    return out;
+  }
+  // Highest level in [max(v0, v1), cap] whose two ramps fit the length (monotone in level);
+  // from a0 > 0 no level below the release's velocity is reached.
+  const double lo = std::max(released_velocity(v0, a0, j), v1);
   const double hi = std::max(cap, lo);
   double level = hi;
-  const double g_hi = ramps_distance(v0, hi, v1, a, d, j) - length;
-  if (g_hi > 0.0)
-    level = level_search(
-        lo, hi, g_hi, [&](double x) { return ramps_distance(v0, x, v1, a, d, j); },
-        [&](double x) { return ramps_distance_model(v0, x, v1, a, d, j); }, length);
-  jerk::Move move;
-  move.sign = 1.0;
-  move.v_level = level;
-  move.first = jerk::velocity_ramp(v0, 0.0, level, a, d, j);
-  move.second = jerk::velocity_ramp(level, 0.0, v1, a, d, j);
+  const double g_hi = ramps_distance(v0, a0, hi, v1, a, d, j) - length;
+  const auto dist = [&](double x) { return ramps_distance(v0, a0, x, v1, a, d, j); };
+  if (g_hi > 0.0) {
+    if (a0 == 0.0)
+      level = level_search(
+          lo, hi, g_hi, dist, [&](double x) { return ramps_distance_model(v0, x, v1, a, d, j); },
+          length);
+    else  // the closed form is for a = 0 at both ends: the ramps themselves are the model
+      level = level_search(lo, hi, g_hi, dist, dist, length);
+  }
+  out.v_level = level;
+  out.first = jerk::velocity_ramp(v0, a0, level, a, d, j);
+  out.t_first = out.first.time();
+  out.second = jerk::velocity_ramp(level, 0.0, v1, a, d, j);
   const double rest =
-      length - jerk::distance(v0, 0.0, move.first) - jerk::distance(level, 0.0, move.second);
-  move.t_cruise = level > 0.0 ? std::max(0.0, rest) / level : 0.0;
-  return move;
+      length - jerk::distance(v0, a0, out.first) - jerk::distance(level, 0.0, out.second);
+  out.t_cruise = level > 0.0 ? std::max(0.0, rest) / level : 0.0;
+  return out;
 }
 
-PathState profile_at(const jerk::Move& move, double v_entry, double t) noexcept {
-  t = std::clamp(t, 0.0, move.time());
-  jerk::State st{0.0, v_entry, 0.0};
+PathState profile_at(const SegmentProfile& profile, double t) noexcept {
+  t = std::clamp(t, 0.0, profile.time());
+  jerk::State st{0.0, profile.v0, profile.a0};
   // One ramp: phases with their jerk; boundary values snapped to the ramp's exact ones.
   auto ramp = [&](const jerk::Ramp& r, PathState& out) {
     for (std::size_t i = 0; i < 3; ++i) {
@@ -206,15 +233,16 @@ PathState profile_at(const jerk::Move& move, double v_entry, double t) noexcept 
     return false;
   };
   PathState out;
-  if (ramp(move.first, out)) return out;
-  if (t <= move.t_cruise) return PathState{st.p + st.v * t, st.v, 0.0, 0.0};
-  st.p += st.v * move.t_cruise;
-  t -= move.t_cruise;
-  if (ramp(move.second, out)) return out;
+  if (ramp(profile.first, out)) return out;
+  if (t <= profile.t_cruise) return PathState{st.p + st.v * t, st.v, 0.0, 0.0};
+  st.p += st.v * profile.t_cruise;
+  t -= profile.t_cruise;
+  if (ramp(profile.second, out)) return out;
   return PathState{st.p, st.v, 0.0, 0.0};
 }
 
-LookAhead::LookAhead(std::size_t capacity, double t_cycle) : t_cycle_(t_cycle) {
+LookAhead::LookAhead(std::size_t capacity, double t_cycle, SoftJoints soft)
+    : t_cycle_(t_cycle), soft_(soft) {
   if (capacity < 1)
     throw std::invalid_argument("planner: look-ahead window of " + std::to_string(capacity) +
                                 " segments (P-CHAN-00650)");
@@ -261,15 +289,22 @@ void LookAhead::backward_from_end() {
   }
 }
 
-double LookAhead::feasible_exit(double v_entry, double v_upper, const Slot& s) const noexcept {
-  // Speeding up (or cruising) to v_upper <= reach always fits.
-  if (v_upper >= v_entry) return v_upper;
+bool LookAhead::feasible_exit(double v_entry, double a_entry, double v_upper, const Slot& s,
+                              double& out) const noexcept {
   auto fits = [&](double v_exit) {
-    const jerk::Ramp down = jerk::velocity_ramp(v_entry, 0.0, v_exit, s.a, s.d, s.j);
+    const jerk::Ramp down = jerk::velocity_ramp(v_entry, a_entry, v_exit, s.a, s.d, s.j);
     // The kernel's inverse functions agree with its ramps to rounding, not exactly.
-    return jerk::distance(v_entry, 0.0, down) <= s.length * (1.0 + 1e-12) + 1e-15;
+    return jerk::distance(v_entry, a_entry, down) <= s.length * (1.0 + 1e-12) + 1e-15;
   };
-  if (fits(v_upper)) return v_upper;
+  // Speeding up (or cruising) to v_upper <= reach always fits (from a = 0).
+  if (a_entry == 0.0 && v_upper >= v_entry) {
+    out = v_upper;
+    return true;
+  }
+  if (fits(v_upper)) {
+    out = v_upper;
+    return true;
+  }
   // The entry cap of this segment shrank after its entry was committed (the distance of a
   // jerk-limited slow-down with a = 0 at both ends is not monotone in the exit velocity:
   // docs/planner.md "Look-ahead"). Slowing further fits: the slow-downs that fit are [0, v_lo].
@@ -282,11 +317,79 @@ double LookAhead::feasible_exit(double v_entry, double v_upper, const Slot& s) c
     else
       hi = mid;
   }
-  return lo;
+  out = lo;
+  // From a = 0 the stop fits by the backward pass; a carried acceleration may not be released
+  // within the length at all (then the carry itself goes on: pop()).
+  return a_entry == 0.0 || fits(lo);
+}
+
+bool LookAhead::carry_fits(double v0, double a0, double v_toward, double a, double j,
+                           Carry& out) const noexcept {
+  const Slot& front = slots_[head_];
+  const jerk::Ramp ramp = jerk::velocity_ramp(v0, a0, v_toward, a, a, j);
+  const double total = jerk::distance(v0, a0, ramp);
+  if (!(total > front.length)) return false;  // ends inside the slot: no cut
+  const jerk::StateRamp sr = as_state_ramp(ramp);
+  out.v_toward = v_toward;
+  out.a = a;
+  out.j = j;
+  out.t_cut = jerk::time_at_distance(v0, a0, sr, front.length);
+  const jerk::State at = jerk::state_at(v0, a0, sr, out.t_cut);
+  out.v1 = at.v;
+  out.a1 = at.a;
+  if (!(out.a1 > 0.0) || out.v1 > std::min(front.cap, front.joint_cap)) return false;
+  // The rest of the ramp, on the next slots: velocities below v_toward, accelerations within
+  // a and jerks within j (the caller's limits are the smallest of the slots it spans).
+  double rest = total - front.length;
+  for (std::size_t k = 1; k < count_; ++k) {
+    const Slot& m = slots_[(head_ + k) % slots_.size()];
+    if (v_toward > m.cap || a > m.a || j > m.j) return false;
+    if (rest <= m.length)  // ends here at (v_toward, 0): the window's braking must still fit
+      return v_toward <= jerk::entry_velocity_for_exit(m.exit_cap, m.length - rest, m.d, m.j);
+    if (m.segment.stop != StopReason::none || m.segment.a_zero_at_end || v_toward > m.joint_cap)
+      return false;
+    rest -= m.length;
+  }
+  return false;  // runs beyond what the window knows
+}
+
+bool LookAhead::best_carry(double v0, double a0, Carry& out) const noexcept {
+  // The ramp's limits: the smallest of the slots joined softly to the front one.
+  const Slot& front = slots_[head_];
+  double a = front.a;
+  double j = front.j;
+  for (std::size_t k = 1; k < count_; ++k) {
+    const Slot& m = slots_[(head_ + k) % slots_.size()];
+    a = std::min(a, m.a);
+    j = std::min(j, m.j);
+    if (m.segment.stop != StopReason::none || m.segment.a_zero_at_end) break;
+  }
+  if (a0 > a) return false;  // the carried acceleration is beyond these limits
+  // v_toward above the velocity the slot can reach (else the ramp ends inside it), at most
+  // the next slot's cap (the velocity after the joint rises to it).
+  const double lo =
+      std::max(released_velocity(v0, a0, j), jerk::reachable_velocity(v0, a0, front.length, a, j));
+  double hi = slots_[(head_ + 1) % slots_.size()].cap;
+  if (!(hi > lo)) return false;
+  Carry c;
+  if (carry_fits(v0, a0, hi, a, j, out)) return true;
+  // Highest fitting v_toward (the checks tighten as it rises).
+  double good = lo;
+  for (int iter = 0; iter < 48 && hi - good > 1e-9 * hi; ++iter) {
+    const double mid = 0.5 * (good + hi);
+    if (carry_fits(v0, a0, mid, a, j, c)) {
+      good = mid;
+      out = c;
+    } else {
+      hi = mid;
+    }
+  }
+  return good > lo;
 }
 
 double LookAhead::start_at(double v) noexcept {  // --- sync-feed
   v_committed_ = std::clamp(v, 0.0, front_entry_cap());
+  a_committed_ = 0.0;
   return v_committed_;
 }
 
@@ -294,14 +397,52 @@ PlannedSegment LookAhead::pop() {
   if (empty()) throw std::logic_error("planner: pop from an empty look-ahead window");
   Slot& s = at(0);
   PlannedSegment out;
-  out.v_entry = v_committed_;
-  const double reach = jerk::reachable_velocity(v_committed_, 0.0, s.length, s.a, s.j);
-  out.v_exit = feasible_exit(v_committed_, std::min({s.exit_cap, reach, s.cap}), s);
+  const double v0 = v_committed_;
+  const double a0 = a_committed_;
+  out.v_entry = v0;
+  out.a_entry = a0;
   out.a_max = s.a;
   out.d_max = s.d;
   out.j_max = s.j;
+  const double reach = jerk::reachable_velocity(v0, a0, s.length, s.a, s.j);
+  const double upper = std::min({s.exit_cap, reach, s.cap});
+  double exit = 0.0;
+  const bool plain = feasible_exit(v0, a0, upper, s, exit);
+  // A speed-up the length cuts at a soft joint goes on through it (docs/planner.md
+  // "Acceleration at joints"); a carried one that cannot be released here goes on too.
+  const bool soft = soft_ == SoftJoints::carry && s.segment.stop == StopReason::none &&
+                    !s.segment.a_zero_at_end && count_ > 1;
+  const bool cut = !plain || (upper == reach && reach < std::min(s.exit_cap, s.cap));
+  Carry c;
+  bool carried = soft && cut && best_carry(v0, a0, c) && (!plain || c.v1 > exit);
+  if (!plain && !carried) {
+    // The committed carry's own ramp: it was checked to fit when it was committed.
+    const jerk::Ramp ramp =
+        jerk::velocity_ramp(v0, a0, carry_.v_toward, carry_.a, carry_.a, carry_.j);
+    if (a0 > 0.0 && jerk::distance(v0, a0, ramp) > s.length) {
+      c = carry_;
+      const jerk::StateRamp sr = as_state_ramp(ramp);
+      c.t_cut = jerk::time_at_distance(v0, a0, sr, s.length);
+      const jerk::State at = jerk::state_at(v0, a0, sr, c.t_cut);
+      c.v1 = at.v;
+      c.a1 = std::max(at.a, 0.0);
+      carried = true;
+    }
+  }
+  if (carried) {
+    out.v_exit = c.v1;
+    out.a_exit = c.a1;
+    out.v_toward = c.v_toward;
+    out.t_cut = c.t_cut;
+    out.a_max = c.a;
+    out.j_max = c.j;
+    carry_ = c;
+  } else {
+    out.v_exit = exit;
+  }
   out.segment = std::move(s.segment);
   v_committed_ = out.v_exit;
+  a_committed_ = out.a_exit;
   head_ = (head_ + 1) % slots_.size();
   --count_;
   return out;

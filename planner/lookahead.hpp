@@ -50,14 +50,36 @@ struct PlannedSegment {
   PreparedSegment segment;
   double v_entry = 0.0;  ///< path velocity at s = 0 [mm/s]
   double v_exit = 0.0;   ///< path velocity at s = L [mm/s]
-  double a_max = 0.0;    ///< path acceleration used [mm/s^2]
-  double d_max = 0.0;    ///< path deceleration used [mm/s^2]
-  double j_max = 0.0;    ///< path jerk used (finite; STEP: max(a, d) / T) [mm/s^3]
+  double a_entry = 0.0;  ///< path acceleration at s = 0 [mm/s^2] (> 0 only after a carry)
+  double a_exit = 0.0;   ///< path acceleration at s = L [mm/s^2] (> 0 only: a carried speed-up)
+  /// Carried speed-up (docs/planner.md "Acceleration at joints"): the velocity the speed-up
+  /// heads for; its ramp from (v_entry, a_entry) is cut by the segment end at t_cut. 0: none.
+  double v_toward = 0.0;
+  double t_cut = 0.0;  ///< time of the cut [s] (v_toward > 0)
+  double a_max = 0.0;  ///< path acceleration used [mm/s^2]
+  double d_max = 0.0;  ///< path deceleration used [mm/s^2]
+  double j_max = 0.0;  ///< path jerk used (finite; STEP: max(a, d) / T) [mm/s^3]
 };
 
-/// The jerk-limited velocity profile of a planned segment: ramp from v_entry to the highest
-/// level the length allows (at most the cap), cruise, ramp to v_exit; a = 0 at both ends.
-jerk::Move profile(const PlannedSegment& planned) noexcept;
+/// The velocity profile of a segment over time: the first ramp from (v0, a0) to v_level,
+/// followed for t_first (its whole time, or less where the segment end cuts a carried
+/// speed-up), a cruise at v_level, the second ramp to the exit (a = 0).
+struct SegmentProfile {
+  double v0 = 0.0;        ///< velocity at the start [mm/s]
+  double a0 = 0.0;        ///< acceleration at the start [mm/s^2]
+  jerk::Ramp first;       ///< (v0, a0) -> (v_level, 0); cut: towards v_toward
+  double t_first = 0.0;   ///< time on `first` [s]
+  double t_cruise = 0.0;  ///< cruise at v_level [s]
+  jerk::Ramp second;      ///< (v_level, 0) -> (v_exit, 0)
+  double v_level = 0.0;   ///< cruise level [mm/s]; cut: the exit velocity (the highest)
+  /// Total duration [s].
+  double time() const noexcept { return t_first + t_cruise + second.time(); }
+};
+
+/// The jerk-limited velocity profile of a planned segment: ramp from (v_entry, a_entry) to the
+/// highest level the length allows (at most the cap), cruise, ramp to v_exit (a = 0); or, for
+/// a carried speed-up, its ramp towards v_toward cut at t_cut.
+SegmentProfile profile(const PlannedSegment& planned) noexcept;
 
 /// Path state on a profile.
 struct PathState {
@@ -67,14 +89,20 @@ struct PathState {
   double j = 0.0;  ///< path jerk of the phase containing t [mm/s^3]
 };
 
-/// State at time t [s] after the start of `move` begun at v_entry (closed form per phase;
-/// t is clamped to [0, move.time()]). Pure evaluation.
-PathState profile_at(const jerk::Move& move, double v_entry, double t) noexcept;
+/// State at time t [s] after the start of `profile` (closed form per phase; t is clamped to
+/// [0, profile.time()]). Pure evaluation.
+PathState profile_at(const SegmentProfile& profile, double t) noexcept;
+
+/// What the forward pass does at soft joints (C2, or knees that carry the acceleration).
+enum class SoftJoints : std::uint8_t {
+  carry,  ///< a speed-up the length cuts goes on through the joint (default)
+  zero,   ///< a = 0 at every joint, as at C0/C1 (the NC I rule; for comparisons)
+};
 
 class LookAhead {
  public:
   /// `capacity` segments (window_size()); `t_cycle` [s] for the STEP jerk.
-  LookAhead(std::size_t capacity, double t_cycle);
+  LookAhead(std::size_t capacity, double t_cycle, SoftJoints soft = SoftJoints::carry);
 
   bool empty() const noexcept { return count_ == 0; }
   bool full() const noexcept { return count_ == slots_.size(); }
@@ -87,6 +115,8 @@ class LookAhead {
   PlannedSegment pop();
   /// Velocity at the end of the last popped segment [mm/s] (entry of the next).
   double v_committed() const noexcept { return v_committed_; }
+  /// Acceleration there [mm/s^2] (> 0 only where a speed-up is carried across a soft joint).
+  double a_committed() const noexcept { return a_committed_; }
   // --- sync-feed: a path that starts moving (the hand-over from the catch-up, issue 14)
   /// The oldest segment not popped yet (null: the window is empty).
   const PreparedSegment* front() const noexcept {
@@ -117,14 +147,36 @@ class LookAhead {
   };
   Slot& at(std::size_t k) noexcept { return slots_[(head_ + k) % slots_.size()]; }
   void backward_from_end();
-  /// Largest exit velocity <= v_upper reachable from v_entry within the slot's length.
-  double feasible_exit(double v_entry, double v_upper, const Slot& s) const noexcept;
+  /// Largest exit velocity <= v_upper reachable from (v_entry, a_entry) within the slot's
+  /// length (a = 0 at the exit); false when none is (a carried speed-up whose release alone
+  /// is longer than the slot).
+  bool feasible_exit(double v_entry, double a_entry, double v_upper, const Slot& s,
+                     double& out) const noexcept;
+  /// A speed-up carried across the slot's end joint (docs/planner.md "Acceleration at joints").
+  struct Carry {
+    double v_toward = 0.0;      ///< level the ramp heads for [mm/s]
+    double a = 0.0, j = 0.0;    ///< the ramp's limits (the smallest over the slots it spans)
+    double t_cut = 0.0;         ///< time of the cut at the slot end [s]
+    double v1 = 0.0, a1 = 0.0;  ///< state at the cut
+  };
+  /// The ramp from (v0, a0) towards v_toward under a, j, cut at the end of the front slot:
+  /// true when it is cut there (does not end inside the slot) and every slot it runs on can
+  /// take it: caps, joint caps and soft joints up to where it ends, and from there the window's
+  /// braking (the backward pass's caps), so the rest of the window stays feasible.
+  bool carry_fits(double v0, double a0, double v_toward, double a, double j,
+                  Carry& out) const noexcept;
+  /// The best carry from (v0, a0): the highest v_toward that fits (bisection), with the
+  /// limits of the slots it spans. False when none fits.
+  bool best_carry(double v0, double a0, Carry& out) const noexcept;
 
   std::vector<Slot> slots_;
   std::size_t head_ = 0;
   std::size_t count_ = 0;
   double t_cycle_ = 0.001;
+  SoftJoints soft_ = SoftJoints::carry;
   double v_committed_ = 0.0;
+  double a_committed_ = 0.0;  ///< > 0: a carried speed-up is under way (carry_ below)
+  Carry carry_;               ///< the committed carry (its ramp is the next slot's fallback)
 };
 
 }  // namespace ncsim::planner

@@ -35,9 +35,10 @@ Move line(AxisVec a, AxisVec b, double feed) {
 
 /// Plans `moves` through a Preparer and a window of `n`; returns every planned segment.
 std::vector<PlannedSegment> plan(const std::vector<Move>& moves, std::span<const AxisLimits> ax,
-                                 std::size_t n, ChannelLimits ch = {}) {
+                                 std::size_t n, ChannelLimits ch = {},
+                                 SoftJoints soft = SoftJoints::carry) {
   Preparer prep(ax, ch);
-  LookAhead window(n, ch.t_cycle);
+  LookAhead window(n, ch.t_cycle, soft);
   std::vector<PreparedSegment> ready;
   std::vector<PlannedSegment> out;
   auto feed = [&] {
@@ -56,6 +57,51 @@ std::vector<PlannedSegment> plan(const std::vector<Move>& moves, std::span<const
   while (!window.empty())
     out.push_back(window.pop());
   return out;
+}
+
+/// The profile of a planned segment: ends in its planned state (a carried speed-up only at a
+/// soft joint), covers its length, and keeps the cap and every axis's v, a, j (41 samples).
+void check_profile(const PlannedSegment& ps, std::span<const AxisLimits> ax) {
+  const SegmentProfile m = profile(ps);
+  const double length = ps.segment.path.length();
+  const PathState end = profile_at(m, m.time());
+  CHECK(end.s == doctest::Approx(length).epsilon(1e-7));
+  // The profile ends in the planned state: a carried speed-up only at a soft joint.
+  CHECK(end.v == doctest::Approx(ps.v_exit).epsilon(1e-9).scale(1.0));
+  CHECK(end.a == doctest::Approx(ps.a_exit).epsilon(1e-9).scale(1.0));
+  if (ps.a_exit != 0.0) {
+    CHECK(ps.a_exit > 0.0);
+    CHECK(ps.segment.stop == StopReason::none);
+    CHECK_FALSE(ps.segment.a_zero_at_end);
+  }
+  CHECK(m.v_level <= ps.segment.limits.v_max * (1 + 1e-9));
+  for (int i = 0; i <= 40; ++i) {
+    const PathState st = profile_at(m, m.time() * i / 40.0);
+    CHECK(st.v >= -1e-9);
+    CHECK(st.v <= ps.segment.limits.v_max * (1 + 1e-9));
+    CHECK(st.a <= ps.a_max * (1 + 1e-9) + 1e-9);
+    CHECK(-st.a <= ps.d_max * (1 + 1e-9) + 1e-9);
+    const PathPoint pt = ps.segment.path.at(std::clamp(st.s, 0.0, length));
+    CHECK(std::abs(st.j) <= ps.j_max * (1 + 1e-9));
+    for (std::size_t ai = 0; ai < ax.size(); ++ai) {
+      const double vi = pt.d1[ai] * st.v;
+      const double aci = pt.d2[ai] * st.v * st.v + pt.d1[ai] * st.a;
+      const double ji =
+          pt.d3[ai] * st.v * st.v * st.v + 3 * pt.d2[ai] * st.v * st.a + pt.d1[ai] * st.j;
+      CHECK(std::abs(vi) <= ax[ai].v_max * (1 + 1e-6) + 1e-9);
+      const double lim = aci * vi >= 0.0 ? ax[ai].a_max : ax[ai].d_max;
+      CHECK(std::abs(aci) <= lim * (1 + 1e-6) + 1e-6);
+      CHECK(std::abs(ji) <= ax[ai].j_max * (1 + 1e-6) + 1e-6);
+    }
+  }
+}
+
+/// Sum of the planned profiles' durations [s].
+double total_time(const std::vector<PlannedSegment>& planned) {
+  double t = 0.0;
+  for (const PlannedSegment& ps : planned)
+    t += profile(ps).time();
+  return t;
 }
 
 double peak_velocity(const PlannedSegment& p) {
@@ -80,11 +126,11 @@ TEST_CASE("a long line reaches F; the profile covers exactly its length") {
                                         axis(500, 1000, 1e5)};
   const auto planned = plan({line(vec(0, 0), vec(100, 0), 50.0)}, ax, 120);
   REQUIRE(planned.size() == 1);
-  const jerk::Move m = profile(planned[0]);
+  const SegmentProfile m = profile(planned[0]);
   CHECK(m.v_level == doctest::Approx(50.0));
   CHECK(m.t_cruise > 0.0);
-  CHECK(profile_at(m, 0.0, m.time()).s == doctest::Approx(100.0));
-  CHECK(profile_at(m, 0.0, m.time()).v == doctest::Approx(0.0).scale(1.0));
+  CHECK(profile_at(m, m.time()).s == doctest::Approx(100.0));
+  CHECK(profile_at(m, m.time()).v == doctest::Approx(0.0).scale(1.0));
   // Rest to rest: time = L / F + the time one ramp loses, 2 (t_ramp - s_ramp / F).
   const jerk::TimeDistance ramp = jerk::velocity_change(0.0, 0.0, 50.0, 1000.0, 1e5);
   CHECK(m.time() == doctest::Approx(100.0 / 50.0 + 2 * (ramp.t - ramp.s / 50.0)));
@@ -104,7 +150,7 @@ TEST_CASE("a short line with A reached: d = V^2/A + V A/J (seed A1: 168 mm -> 70
                                         axis(2000, 5000, 50000)};
   const auto planned = plan({line(vec(0, 0), vec(168, 0), 1000.0)}, ax, 120);
   REQUIRE(planned.size() == 1);
-  const jerk::Move m = profile(planned[0]);
+  const SegmentProfile m = profile(planned[0]);
   CHECK(m.v_level == doctest::Approx(700.0).epsilon(1e-9));
   CHECK(m.time() == doctest::Approx(0.480).epsilon(1e-9));
 }
@@ -187,7 +233,7 @@ TEST_CASE("two caps joined: short blocks with caps 0.02 % apart chain at the sma
   const PlannedSegment& ps = planned[0];
   CHECK(ps.segment.path.parts() == 40);
   CHECK(ps.segment.limits.v_max == doctest::Approx(100.0).epsilon(1e-12));
-  const jerk::Move m = profile(ps);
+  const SegmentProfile m = profile(ps);
   const double closed = 20.0 / 100.0 + 100.0 / 1000.0 + 1000.0 / 1e5;
   CHECK(m.time() == doctest::Approx(closed).epsilon(1e-9));
   // The velocity no longer dips to a = 0 at the joints inside the ramps: at 1 mm (the joint
@@ -195,9 +241,87 @@ TEST_CASE("two caps joined: short blocks with caps 0.02 % apart chain at the sma
   double t_joint = 0.0;
   for (int i = 0; i <= 4000; ++i) {
     const double t = m.time() * i / 4000.0;
-    if (profile_at(m, 0.0, t).s <= 1.0) t_joint = t;
+    if (profile_at(m, t).s <= 1.0) t_joint = t;
   }
-  CHECK(profile_at(m, 0.0, t_joint).a > 100.0);
+  CHECK(profile_at(m, t_joint).a > 100.0);
+}
+
+TEST_CASE("a speed-up through soft joints of different caps carries its acceleration") {
+  // Eight collinear 1 mm lines with feeds 10 % apart (C2 joints between different caps: not
+  // chained), then a long line, from rest. With a = 0 at every joint each line ramps on its
+  // own; carried, the speed-up runs through the joints (docs/planner.md "Acceleration at
+  // joints").
+  const std::array<AxisLimits, 3> ax = {axis(500, 1000, 1e5), axis(500, 1000, 1e5),
+                                        axis(500, 1000, 1e5)};
+  std::vector<Move> moves;
+  double feed = 50.0;
+  for (int k = 0; k < 8; ++k, feed *= 1.1)
+    moves.push_back(line(vec(k, 0, 0), vec(k + 1, 0, 0), feed));
+  moves.push_back(line(vec(8, 0, 0), vec(60, 0, 0), 200.0));
+  const auto carried = plan(moves, ax, 30);
+  const auto zero = plan(moves, ax, 30, {}, SoftJoints::zero);
+  REQUIRE(carried.size() == zero.size());
+  for (const PlannedSegment& ps : carried)
+    check_profile(ps, ax);
+  for (const PlannedSegment& ps : zero) {
+    check_profile(ps, ax);
+    CHECK(ps.a_exit == 0.0);
+  }
+  CHECK(carried[0].a_exit > 100.0);  // the first joint is passed accelerating
+  CHECK(carried[0].v_exit > zero[0].v_exit);
+  const double t_carried = total_time(carried);
+  const double t_zero = total_time(zero);
+  MESSAGE("carried ", t_carried, " s, a = 0 at the joints ", t_zero, " s");
+  CHECK(t_carried < t_zero - 0.01);
+}
+
+TEST_CASE("property: carried speed-ups keep every limit and are never slower than a = 0") {
+  // Straight runs of collinear pieces at random feeds (soft joints between different caps),
+  // bent now and then (C0), random limits, windows and cycles.
+  std::mt19937 rng(3030);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  auto range = [&](double lo, double hi) { return lo * std::pow(hi / lo, u(rng)); };
+  std::size_t joints_carried = 0;
+  std::size_t faster = 0;
+  for (int run = 0; run < 60; ++run) {
+    std::array<AxisLimits, 3> ax{};
+    for (auto& a : ax) {
+      a = axis(range(20, 500), range(200, 1e4), range(1e4, 1e6));
+      a.d_max = range(200, 1e4);
+    }
+    ChannelLimits ch;
+    ch.t_cycle = range(0.00025, 0.004);
+    std::vector<Move> moves;
+    AxisVec p = vec(0, 0, 0);
+    double heading = 6.28 * u(rng);
+    for (int k = 0; k < 50; ++k) {
+      if (u(rng) < 0.15) heading += (u(rng) - 0.5) * 2.0;  // a bend: C0
+      const double len = range(0.05, 20);
+      Move m = line(p, vec(p[0] + len * std::cos(heading), p[1] + len * std::sin(heading), p[2]),
+                    range(5, 400));
+      moves.push_back(m);
+      p = m.end;
+    }
+    const std::size_t n = 10 + run % 7 * 8;
+    const auto carried = plan(moves, ax, n, ch);
+    const auto zero = plan(moves, ax, n, ch, SoftJoints::zero);
+    for (std::size_t k = 0; k < carried.size(); ++k) {
+      const PlannedSegment& ps = carried[k];
+      check_profile(ps, ax);
+      if (k + 1 < carried.size()) {
+        CHECK(ps.v_exit == carried[k + 1].v_entry);
+        CHECK(ps.a_exit == carried[k + 1].a_entry);
+      }
+      if (ps.a_exit != 0.0) ++joints_carried;
+    }
+    const double t_carried = total_time(carried);
+    const double t_zero = total_time(zero);
+    CHECK(t_carried <= t_zero * (1.0 + 1e-9));
+    if (t_carried < t_zero * (1.0 - 1e-6)) ++faster;
+  }
+  MESSAGE(joints_carried, " joints carried, ", faster, " of 60 programs faster");
+  CHECK(joints_carried > 100);
+  CHECK(faster > 20);
 }
 
 TEST_CASE("property: random lines and arcs with random limits never exceed an axis limit") {
@@ -206,6 +330,7 @@ TEST_CASE("property: random lines and arcs with random limits never exceed an ax
   auto range = [&](double lo, double hi) { return lo * std::pow(hi / lo, u(rng)); };
   std::size_t segments = 0;
   std::size_t chained = 0;
+  std::size_t carried = 0;  // joints passed with a carried speed-up
   for (int run = 0; run < 30; ++run) {
     std::array<AxisLimits, 3> ax{};
     for (auto& a : ax) {
@@ -221,8 +346,9 @@ TEST_CASE("property: random lines and arcs with random limits never exceed an ax
                     vec(p[0] + range(0.05, 30) * (u(rng) - 0.5),
                         p[1] + range(0.05, 30) * (u(rng) - 0.5), p[2] + u(rng) - 0.5),
                     run % 3 == 0 ? 40.0 : range(5, 400));  // one feed: chains form
-      if (run % 3 == 0 && k % 3 == 0 && k > 0 && !moves.back().arc) {
-        // Continue the previous line: a collinear (C2) joint at one feed, chained.
+      if (run % 3 != 1 && k % 3 == 0 && k > 0 && !moves.back().arc) {
+        // Continue the previous line: a collinear (C2) joint, chained at one feed; at random
+        // feeds a soft joint between different caps, where a speed-up is carried.
         for (std::size_t i = 0; i < 3; ++i)
           m.end[i] = p[i] + 0.7 * (p[i] - moves.back().start[i]);
       }
@@ -242,48 +368,35 @@ TEST_CASE("property: random lines and arcs with random limits never exceed an ax
     const auto planned = plan(moves, ax, 10 + run * 6, ch);
     for (std::size_t k = 0; k < planned.size(); ++k) {
       const PlannedSegment& ps = planned[k];
-      if (k + 1 < planned.size()) CHECK(ps.v_exit == planned[k + 1].v_entry);
-      const jerk::Move m = profile(ps);
-      const double length = ps.segment.path.length();
-      CHECK(profile_at(m, ps.v_entry, m.time()).s == doctest::Approx(length).epsilon(1e-7));
-      CHECK(m.v_level <= ps.segment.limits.v_max * (1 + 1e-9));
-      for (int i = 0; i <= 40; ++i) {
-        const PathState st = profile_at(m, ps.v_entry, m.time() * i / 40.0);
-        CHECK(st.v >= -1e-9);
-        CHECK(st.a <= ps.a_max * (1 + 1e-9) + 1e-9);
-        CHECK(-st.a <= ps.d_max * (1 + 1e-9) + 1e-9);
-        const PathPoint pt = ps.segment.path.at(std::clamp(st.s, 0.0, length));
-        for (std::size_t ai = 0; ai < 3; ++ai) {
-          const double vi = pt.d1[ai] * st.v;
-          const double aci = pt.d2[ai] * st.v * st.v + pt.d1[ai] * st.a;
-          const double ji =
-              pt.d3[ai] * st.v * st.v * st.v + 3 * pt.d2[ai] * st.v * st.a + pt.d1[ai] * st.j;
-          CHECK(std::abs(vi) <= ax[ai].v_max * (1 + 1e-6) + 1e-9);
-          const double lim = aci * vi >= 0.0 ? ax[ai].a_max : ax[ai].d_max;
-          CHECK(std::abs(aci) <= lim * (1 + 1e-6) + 1e-6);
-          CHECK(std::abs(ji) <= ax[ai].j_max * (1 + 1e-6) + 1e-6);
-        }
+      if (k + 1 < planned.size()) {
+        CHECK(ps.v_exit == planned[k + 1].v_entry);
+        CHECK(ps.a_exit == planned[k + 1].a_entry);
       }
+      check_profile(ps, ax);
+      if (ps.a_exit != 0.0) ++carried;
       ++segments;
       if (ps.segment.path.parts() > 1) ++chained;
     }
   }
   CHECK(segments > 1000);
   CHECK(chained > 20);
+  CHECK(carried > 0);  // more in the soft-joint property below
 }
 
 namespace {
 
 /// The level search of profile() before the secant (a plain bisection to 1e-12 relative):
-/// the oracle the faster search must match to the last bit.
+/// the oracle the faster search must match to the last bit. From a carried a_entry > 0 no
+/// level below the release's velocity is reached.
 double bisection_level(const PlannedSegment& p) {
   const double length = p.segment.path.length();
+  const double a0 = p.a_entry;
   auto ramps = [&](double level) {
-    const jerk::Ramp up = jerk::velocity_ramp(p.v_entry, 0.0, level, p.a_max, p.d_max, p.j_max);
+    const jerk::Ramp up = jerk::velocity_ramp(p.v_entry, a0, level, p.a_max, p.d_max, p.j_max);
     const jerk::Ramp down = jerk::velocity_ramp(level, 0.0, p.v_exit, p.a_max, p.d_max, p.j_max);
-    return jerk::distance(p.v_entry, 0.0, up) + jerk::distance(level, 0.0, down);
+    return jerk::distance(p.v_entry, a0, up) + jerk::distance(level, 0.0, down);
   };
-  double lo = std::max(p.v_entry, p.v_exit);
+  double lo = std::max(p.v_entry + 0.5 * a0 * a0 / p.j_max, p.v_exit);
   double hi = std::max(p.segment.limits.v_max, lo);
   if (ramps(hi) <= length) return hi;
   for (int iter = 0; iter < 100 && hi - lo > 1e-12 * std::max(1.0, hi); ++iter) {
@@ -304,6 +417,7 @@ TEST_CASE("property: the profile's level is the bisection's to the last bit (sec
   auto range = [&](double lo, double hi) { return lo * std::pow(hi / lo, u(rng)); };
   std::size_t searched = 0;
   std::size_t none_fits = 0;
+  std::size_t carried_in = 0;  // planned entries that start with a carried acceleration
   for (int run = 0; run < 20; ++run) {
     std::array<AxisLimits, 3> ax{};
     for (auto& a : ax)
@@ -325,7 +439,12 @@ TEST_CASE("property: the profile's level is the bisection's to the last bit (sec
         if (variant > 0) {
           ps.v_entry = ps.segment.limits.v_max * u(rng);
           ps.v_exit = ps.segment.limits.v_max * u(rng) * u(rng);
+          ps.a_entry = 0.0;
+          ps.a_exit = 0.0;
+          ps.v_toward = 0.0;
         }
+        if (ps.v_toward > 0.0) continue;  // a cut speed-up has no level to search
+        if (ps.a_entry > 0.0) ++carried_in;
         const double expected = bisection_level(ps);
         CHECK(profile(ps).v_level == expected);
         if (expected < ps.segment.limits.v_max) ++searched;
@@ -335,6 +454,7 @@ TEST_CASE("property: the profile's level is the bisection's to the last bit (sec
   }
   CHECK(searched > 1000);
   CHECK(none_fits > 20);
+  CHECK(carried_in > 0);
 }
 
 TEST_CASE("property: the kernel's entry velocity is never below the exit velocity (cap shortcut)") {
