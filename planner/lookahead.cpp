@@ -47,6 +47,16 @@ double ramps_distance_model(double v_entry, double level, double v_exit, double 
          0.5 * (level + v_exit) * ramp_time(level - v_exit, d, j);
 }
 
+/// ramps_distance() from a carried (v0, a0 > 0), as a guess: the first ramp is the rest of a
+/// ramp begun at a = 0 at v0 - a0^2 / 2j a0 / j earlier (exact when its peak is at least a0).
+double carried_ramps_distance_model(double v0, double a0, double level, double v_exit, double a,
+                                    double d, double j) {
+  const double t = a0 / j;
+  const double v_start = v0 - 0.5 * a0 * t;
+  const double before = v_start * t + j * t * t * t / 6.0;
+  return ramps_distance_model(v_start, level, v_exit, a, d, j) - before;
+}
+
 /// Weight of the stale end of the bracket when the same end moved twice in a row
 /// (Anderson-Bjorck: 1 - g_new / g_replaced; Illinois' 1/2 where that is not in (0, 1)).
 double stale_weight(double g_new, double g_replaced) noexcept {
@@ -201,8 +211,10 @@ SegmentProfile profile(const PlannedSegment& planned) noexcept {
       level = level_search(
           lo, hi, g_hi, dist, [&](double x) { return ramps_distance_model(v0, x, v1, a, d, j); },
           length);
-    else  // the closed form is for a = 0 at both ends: the ramps themselves are the model
-      level = level_search(lo, hi, g_hi, dist, dist, length);
+    else  // the closed form from the virtual start at a = 0 the first ramp passes through
+      level = level_search(
+          lo, hi, g_hi, dist,
+          [&](double x) { return carried_ramps_distance_model(v0, a0, x, v1, a, d, j); }, length);
   }
   out.v_level = level;
   out.first = jerk::velocity_ramp(v0, a0, level, a, d, j);
@@ -301,6 +313,13 @@ bool LookAhead::feasible_exit(double v_entry, double a_entry, double v_upper, co
     out = v_upper;
     return true;
   }
+  if (a_entry > 0.0) {
+    // A carried speed-up: no plan ends at a = 0 in less than the release a0 / j, during
+    // which v >= v0; above the release's velocity the change's distance grows with v_exit.
+    out = v_upper;
+    if (v_entry * a_entry / s.j > s.length * (1.0 + 1e-12)) return false;
+    if (v_upper >= released_velocity(v_entry, a_entry, s.j)) return fits(v_upper);
+  }
   if (fits(v_upper)) {
     out = v_upper;
     return true;
@@ -323,12 +342,34 @@ bool LookAhead::feasible_exit(double v_entry, double a_entry, double v_upper, co
   return a_entry == 0.0 || fits(lo);
 }
 
-bool LookAhead::carry_fits(double v0, double a0, double v_toward, double a, double j,
-                           Carry& out) const noexcept {
+bool LookAhead::carry_fits(double v0, double a0, double v_toward, double a, double j, Carry& out,
+                           bool with_cut) const noexcept {
   const Slot& front = slots_[head_];
   const jerk::Ramp ramp = jerk::velocity_ramp(v0, a0, v_toward, a, a, j);
   const double total = jerk::distance(v0, a0, ramp);
   if (!(total > front.length)) return false;  // ends inside the slot: no cut
+  // The rest of the ramp, on the next slots: velocities below v_toward, accelerations within
+  // a and jerks within j (the caller's limits are the smallest of the slots it spans).
+  double rest = total - front.length;
+  bool ends = false;
+  for (std::size_t k = 1; k < count_ && !ends; ++k) {
+    const Slot& m = slots_[(head_ + k) % slots_.size()];
+    if (v_toward > m.cap || a > m.a || j > m.j) return false;
+    if (rest <= m.length) {  // ends here at (v_toward, 0): the window's braking must still fit
+      if (v_toward > m.exit_cap &&
+          v_toward > jerk::entry_velocity_for_exit(m.exit_cap, m.length - rest, m.d, m.j))
+        return false;
+      ends = true;
+    } else if (m.segment.stop != StopReason::none || m.segment.a_zero_at_end ||
+               v_toward > m.joint_cap) {
+      return false;
+    } else {
+      rest -= m.length;
+    }
+  }
+  if (!ends) return false;  // runs beyond what the window knows
+  if (!with_cut) return true;
+  // The cut at the slot end: the state carried into the next slot.
   const jerk::StateRamp sr = as_state_ramp(ramp);
   out.v_toward = v_toward;
   out.a = a;
@@ -337,54 +378,56 @@ bool LookAhead::carry_fits(double v0, double a0, double v_toward, double a, doub
   const jerk::State at = jerk::state_at(v0, a0, sr, out.t_cut);
   out.v1 = at.v;
   out.a1 = at.a;
-  if (!(out.a1 > 0.0) || out.v1 > std::min(front.cap, front.joint_cap)) return false;
-  // The rest of the ramp, on the next slots: velocities below v_toward, accelerations within
-  // a and jerks within j (the caller's limits are the smallest of the slots it spans).
-  double rest = total - front.length;
-  for (std::size_t k = 1; k < count_; ++k) {
-    const Slot& m = slots_[(head_ + k) % slots_.size()];
-    if (v_toward > m.cap || a > m.a || j > m.j) return false;
-    if (rest <= m.length)  // ends here at (v_toward, 0): the window's braking must still fit
-      return v_toward <= jerk::entry_velocity_for_exit(m.exit_cap, m.length - rest, m.d, m.j);
-    if (m.segment.stop != StopReason::none || m.segment.a_zero_at_end || v_toward > m.joint_cap)
-      return false;
-    rest -= m.length;
-  }
-  return false;  // runs beyond what the window knows
+  return out.a1 > 0.0 && out.v1 <= std::min(front.cap, front.joint_cap);
 }
 
 bool LookAhead::best_carry(double v0, double a0, Carry& out) const noexcept {
-  // The ramp's limits: the smallest of the slots joined softly to the front one.
   const Slot& front = slots_[head_];
-  double a = front.a;
-  double j = front.j;
-  for (std::size_t k = 1; k < count_; ++k) {
+  const Slot& next = slots_[(head_ + 1) % slots_.size()];
+  // v_toward above the velocity the slot can reach (else the ramp ends inside it), at most
+  // the next slot's cap (the velocity after the joint rises to it).
+  double a = std::min(front.a, next.a);
+  double j = std::min(front.j, next.j);
+  const auto lowest_target = [&] {
+    return std::max(released_velocity(v0, a0, j),
+                    jerk::reachable_velocity(v0, a0, front.length, a, j));
+  };
+  double hi = next.cap;
+  if (a0 > a || !(hi > lowest_target())) return false;
+  // The ramp's limits: the smallest of the slots the longest ramp (towards hi) can span.
+  const double span = jerk::distance(v0, a0, jerk::velocity_ramp(v0, a0, hi, a, a, j));
+  double covered = front.length + next.length;
+  for (std::size_t k = 2; k < count_ && covered < span; ++k) {
+    const Slot& prev = slots_[(head_ + k - 1) % slots_.size()];
+    if (prev.segment.stop != StopReason::none || prev.segment.a_zero_at_end) break;
     const Slot& m = slots_[(head_ + k) % slots_.size()];
     a = std::min(a, m.a);
     j = std::min(j, m.j);
-    if (m.segment.stop != StopReason::none || m.segment.a_zero_at_end) break;
+    covered += m.length;
   }
-  if (a0 > a) return false;  // the carried acceleration is beyond these limits
-  // v_toward above the velocity the slot can reach (else the ramp ends inside it), at most
-  // the next slot's cap (the velocity after the joint rises to it).
-  const double lo =
-      std::max(released_velocity(v0, a0, j), jerk::reachable_velocity(v0, a0, front.length, a, j));
-  double hi = slots_[(head_ + 1) % slots_.size()].cap;
-  if (!(hi > lo)) return false;
+  const double lo = lowest_target();
+  if (a0 > a || !(hi > lo)) return false;
+  // The checks tighten as v_toward rises: none fits when the lowest does not; else the
+  // highest that fits, by bisection to 1e-3 relative (a target, not a limit: the cut state
+  // is exact for whichever is taken). The walk over the next slots first, without the cut
+  // (its time_at_distance is the costly part); the cut's own check (the velocity at the slot
+  // end) then only where it binds.
   Carry c;
-  if (carry_fits(v0, a0, hi, a, j, out)) return true;
-  // Highest fitting v_toward (the checks tighten as it rises).
-  double good = lo;
-  for (int iter = 0; iter < 48 && hi - good > 1e-9 * hi; ++iter) {
-    const double mid = 0.5 * (good + hi);
-    if (carry_fits(v0, a0, mid, a, j, c)) {
-      good = mid;
-      out = c;
-    } else {
-      hi = mid;
+  const double lowest = lo + 1e-3 * (hi - lo);
+  if (!carry_fits(v0, a0, lowest, a, j, c, false)) return false;
+  const auto highest = [&](bool with_cut, double good, double bad) {
+    if (carry_fits(v0, a0, bad, a, j, c, with_cut)) return bad;
+    for (int iter = 0; iter < 12 && bad - good > 1e-3 * bad; ++iter) {
+      const double mid = 0.5 * (good + bad);
+      (carry_fits(v0, a0, mid, a, j, c, with_cut) ? good : bad) = mid;
     }
-  }
-  return good > lo;
+    return good;
+  };
+  const double walk = highest(false, lowest, hi);
+  if (carry_fits(v0, a0, walk, a, j, out, true)) return true;
+  if (!carry_fits(v0, a0, lowest, a, j, out, true)) return false;
+  return carry_fits(v0, a0, highest(true, lowest, walk), a, j, out, true) ||
+         carry_fits(v0, a0, lowest, a, j, out, true);
 }
 
 double LookAhead::start_at(double v) noexcept {  // --- sync-feed

@@ -163,8 +163,9 @@ class LookAhead {
   /// true when it is cut there (does not end inside the slot) and every slot it runs on can
   /// take it: caps, joint caps and soft joints up to where it ends, and from there the window's
   /// braking (the backward pass's caps), so the rest of the window stays feasible.
-  bool carry_fits(double v0, double a0, double v_toward, double a, double j,
-                  Carry& out) const noexcept;
+  /// `with_cut` false: the next slots only (no cut state computed, `out` untouched).
+  bool carry_fits(double v0, double a0, double v_toward, double a, double j, Carry& out,
+                  bool with_cut) const noexcept;
   /// The best carry from (v0, a0): the highest v_toward that fits (bisection), with the
   /// limits of the slots it spans. False when none fits.
   bool best_carry(double v0, double a0, Carry& out) const noexcept;
