@@ -13,10 +13,13 @@
 //     entry_cap[k] = min(cap_k, entry_velocity_for_exit(exit_cap[k], L_k, d_k, j_k)) and
 //     exit_cap[k-1] = min(joint cap, entry_cap[k]); a push re-runs it from the new end back
 //     until a value no longer changes (the rest of the window cannot change either).
-//   forward pass, at pop(): v_exit = min(exit_cap, reachable_velocity(v_entry, 0, L, a, j)),
-//     v_entry = the previous segment's v_exit (0 at the start of the path).
-// Path acceleration is 0 at every joint in this version (the kernel's functions start and end
-// at a = 0): the NC I rule (000 l.108) at C0 and C1 joints, and, for now, at C2 joints too.
+//   forward pass, at pop(): v_exit = min(exit_cap, reachable_velocity(v_entry, a_entry, L, a,
+//     j)), v_entry = the previous segment's v_exit (0 at the start of the path), or a carried
+//     speed-up cut at the segment end (best_carry).
+// Path acceleration is 0 at C0 and C1 joints and at stops (the NC I rule, 000 l.108). At a soft
+// joint (C2, or a knee that carries the acceleration) a speed-up the length cuts goes on
+// through it (a > 0) when the rest of its ramp fits the next entries and the window's braking
+// (docs/planner.md "Acceleration at joints"); a brake still ends at a = 0 there.
 // STEP slopes (no jerk limit) are planned with j = max(a, d) / T: the acceleration step
 // takes one interpolation cycle.
 // Invariants: 0 <= v_entry <= entry cap, v_exit <= exit cap; the profile of every popped
