@@ -552,7 +552,7 @@ bool PathInterpolator::plan_entry() noexcept {
   // A speed-up carried through the joint whose acceleration no plan ending at a = 0 can
   // release within this entry goes on as planned; the change is retried every cycle
   // (docs/ipo.md "Override and feed hold").
-  return a_arrive_ > 0.0 && as_planned && follow();
+  return a_arrive_ != 0.0 && as_planned && follow();
 }
 
 bool PathInterpolator::replan(double f, double s, double v, double a) noexcept {
@@ -585,8 +585,11 @@ bool PathInterpolator::replan(double f, double s, double v, double a) noexcept {
     r.j = raised_.j;
   }
   r.level = override_level(override_type_, f, prof_.v_level, lim.v_programmed, cap);
-  r.exit_wanted = override_exit(override_type_, f, cur_.v_exit, lim.v_programmed);
-  r.exit_cap = cur_.v_exit;
+  // Below a carried brake a plan ending at a = 0 takes at most the exit the plan with a = 0
+  // at the joint had (the next entry brakes on from there: docs/ipo.md).
+  const double exit_100 = std::min(cur_.v_exit, cur_.v_exit_zero);
+  r.exit_wanted = override_exit(override_type_, f, exit_100, lim.v_programmed);
+  r.exit_cap = exit_100;
   // --- workspace: the cap lowers the level and the exit (never below 0)
   r.level = std::min(r.level, cap_);
   r.exit_wanted = std::min(r.exit_wanted, cap_);

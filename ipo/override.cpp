@@ -205,6 +205,7 @@ bool make_plan(const PlanRequest& r, PathPlan& out) noexcept {
     return true;
   }
   m.second = jerk::velocity_ramp(level, 0.0, exit, r.a, r.d, r.j);
+  m.t_second = m.second.time();
   const double rest = length - d1 - jerk::distance(level, 0.0, m.second);
   m.t_cruise = level > 0.0 ? std::max(0.0, rest) / level : 0.0;
   out.length = length;

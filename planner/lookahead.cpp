@@ -26,6 +26,20 @@ double released_velocity(double v0, double a0, double j) noexcept {
   return a0 > 0.0 ? v0 + 0.5 * a0 * a0 / j : v0;
 }
 
+/// The phases of `r` after the time t (the acceleration there is a_at): a carried brake's
+/// rest, followed exactly as it was planned (solving the change again from the cut state can
+/// differ: the pulse's peak is a square root of the velocity change, so a rounding residue of
+/// it becomes a pulse of its own).
+jerk::Ramp ramp_after(jerk::Ramp r, double t, double a_at) noexcept {
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double cut = std::min(t, r.duration[i]);
+    r.duration[i] -= cut;
+    t -= cut;
+    if (i == 2 && cut > 0.0) r.a_peak = a_at;  // phases 0, 1 emptied: they end at a_at
+  }
+  return r;
+}
+
 /// The same phases as a StateRamp (a_end = 0), for the kernel's cut functions.
 jerk::StateRamp as_state_ramp(const jerk::Ramp& r) noexcept {
   return jerk::StateRamp{r.jerk, r.duration, r.a_peak, r.v_end, 0.0};
@@ -184,19 +198,41 @@ std::size_t window_size(LookAheadKind kind, std::optional<std::size_t> custom,
 SegmentProfile profile(const PlannedSegment& planned) noexcept {
   const double length = planned.segment.path.length();
   const double cap = planned.segment.limits.v_max;
-  const double a = planned.a_max;
-  const double d = planned.d_max;
-  const double j = planned.j_max;
+  const bool carried = planned.shape != ProfileShape::plain;
+  const double a = carried ? planned.ramp_a : planned.a_max;
+  const double d = carried ? planned.ramp_d : planned.d_max;
+  const double j = carried ? planned.ramp_j : planned.j_max;
   const double v0 = planned.v_entry;
   const double a0 = planned.a_entry;
   const double v1 = planned.v_exit;
   SegmentProfile out;
   out.v0 = v0;
   out.a0 = a0;
-  if (planned.v_toward > 0.0) {  // a carried speed-up, cut by the segment end
+  if (planned.shape == ProfileShape::brake_end) {  // the rest of a carried brake, then cruise
+    const jerk::Ramp brake = jerk::velocity_ramp(planned.level, 0.0, planned.v_toward, a, d, j);
+    out.first = ramp_after(brake, planned.t_cut, a0);
+    out.t_first = out.first.time();
+    if (planned.v_toward > 0.0)
+      out.t_cruise = std::max(0.0, length - jerk::distance(v0, a0, out.first)) / planned.v_toward;
+    out.second.v_end = planned.v_toward;  // no second ramp: the velocity stays
+    out.v_level = v0;
+    return out;
+  }
+  if (planned.shape == ProfileShape::carry_up) {
     out.first = jerk::velocity_ramp(v0, a0, planned.v_toward, a, a, j);  // as LookAhead::pop
     out.t_first = std::clamp(planned.t_cut, 0.0, out.first.time());
     out.v_level = v1;
+    return out;
+  }
+  if (planned.shape == ProfileShape::carry_down) {  // level, cruise, a brake cut at the end
+    out.v_level = planned.level;
+    out.first = jerk::velocity_ramp(v0, a0, planned.level, a, d, j);
+    out.t_first = out.first.time();
+    out.second = jerk::velocity_ramp(planned.level, 0.0, planned.v_brake, a, d, j);
+    out.t_second = std::clamp(planned.t_brake, 0.0, out.second.time());
+    const double e = jerk::state_at(planned.level, 0.0, as_state_ramp(out.second), out.t_second).p;
+    const double rest = length - jerk::distance(v0, a0, out.first) - e;
+    out.t_cruise = planned.level > 0.0 ? std::max(0.0, rest) / planned.level : 0.0;
     return out;
   }
   // Highest level in [max(v0, v1), cap] whose two ramps fit the length (monotone in level);
@@ -220,6 +256,7 @@ SegmentProfile profile(const PlannedSegment& planned) noexcept {
   out.first = jerk::velocity_ramp(v0, a0, level, a, d, j);
   out.t_first = out.first.time();
   out.second = jerk::velocity_ramp(level, 0.0, v1, a, d, j);
+  out.t_second = out.second.time();
   const double rest =
       length - jerk::distance(v0, a0, out.first) - jerk::distance(level, 0.0, out.second);
   out.t_cruise = level > 0.0 ? std::max(0.0, rest) / level : 0.0;
@@ -373,6 +410,7 @@ bool LookAhead::carry_fits(double v0, double a0, double v_toward, double a, doub
   const jerk::StateRamp sr = as_state_ramp(ramp);
   out.v_toward = v_toward;
   out.a = a;
+  out.d = a;  // a speed-up: its ramp's a_down plays no part
   out.j = j;
   out.t_cut = jerk::time_at_distance(v0, a0, sr, front.length);
   const jerk::State at = jerk::state_at(v0, a0, sr, out.t_cut);
@@ -430,6 +468,104 @@ bool LookAhead::best_carry(double v0, double a0, Carry& out) const noexcept {
          carry_fits(v0, a0, lowest, a, j, out, true);
 }
 
+bool LookAhead::brake_carry(double v0, PlannedSegment& out, Carry& carry) const noexcept {
+  const double exit_zero = out.v_exit;
+  const Slot& front = slots_[head_];
+  const Slot& next = slots_[(head_ + 1) % slots_.size()];
+  // The next slot brakes on to its exit cap (with a = 0 at its end, where the backward pass's
+  // caps hold); the joint between them takes at most its cap and the next slot's.
+  const double w = std::min(next.exit_cap, next.cap);
+  const double bound = std::min(front.joint_cap, next.cap);
+  if (!(w < exit_zero) || !(exit_zero < bound)) return false;
+  // A plan ending at a = 0 at the joint (the override's, up to exit_zero) must leave the next
+  // slot its brake to w. The backward pass's exit cap can be above the next slot's entry
+  // velocity for w (that velocity of a short jerk-limited brake is not monotone in the exit:
+  // "Look-ahead"; the next pop then brakes to a lower exit): no carry there.
+  if (exit_zero > jerk::entry_velocity_for_exit(w, next.length, next.d, next.j)) return false;
+  const double a = std::min(front.a, next.a);
+  const double d = std::min(front.d, next.d);
+  const double j = std::min(front.j, next.j);
+  // For a level: the brake towards w ending at the next slot's end, cut at this one's. Its
+  // part here and its velocity at the joint grow with the level: the fitting levels are
+  // [lo, highest]. The highest by the distance alone first (cheap), to 1e-3 relative (a
+  // target: the cut state is exact for whichever level is taken), then the cut's checks.
+  struct Try {
+    double t_cut = 0.0, v1 = 0.0, a1 = 0.0;
+  };
+  const auto fits_here = [&](double level) {
+    const jerk::Ramp up = jerk::velocity_ramp(v0, 0.0, level, a, d, j);
+    const jerk::Ramp brake = jerk::velocity_ramp(level, 0.0, w, a, d, j);
+    const double e = jerk::distance(level, 0.0, brake) - next.length;  // its part here
+    return e > 0.0 && jerk::distance(v0, 0.0, up) + e <= front.length * (1.0 + 1e-12);
+  };
+  const auto cut_fits = [&](double level, Try& t) {
+    if (!fits_here(level)) return false;
+    const jerk::Ramp brake = jerk::velocity_ramp(level, 0.0, w, a, d, j);
+    const double e = jerk::distance(level, 0.0, brake) - next.length;
+    const jerk::StateRamp sr = as_state_ramp(brake);
+    t.t_cut = jerk::time_at_distance(level, 0.0, sr, e);
+    const jerk::State at = jerk::state_at(level, 0.0, sr, t.t_cut);
+    t.v1 = at.v;
+    t.a1 = at.a;
+    return t.a1 < 0.0 && t.v1 <= bound && t.v1 - 0.5 * t.a1 * t.a1 / j >= w;
+  };
+  const auto highest = [&](double good, double bad, const auto& ok) {
+    if (ok(bad)) return bad;
+    for (int iter = 0; iter < 12 && bad - good > 1e-3 * bad; ++iter) {
+      const double mid = 0.5 * (good + bad);
+      (ok(mid) ? good : bad) = mid;
+    }
+    return good;
+  };
+  const double lo = std::max(v0, w);
+  const double hi = std::max(front.cap, lo);
+  Try best;
+  if (!fits_here(lo)) return false;
+  double level = highest(lo, hi, fits_here);
+  if (!cut_fits(level, best)) {
+    if (!cut_fits(lo, best)) return false;
+    Try t;
+    level = highest(lo, level, [&](double x) { return cut_fits(x, t); });
+    if (!cut_fits(level, best)) return false;
+  }
+  if (!(best.v1 > exit_zero)) return false;  // no faster than a = 0 at the joint
+  // Faster over both slots than a = 0 at the joint? (The next slot brakes from exit_zero over
+  // its whole length there: exit_zero is its entry cap.)
+  const jerk::Ramp brake = jerk::velocity_ramp(level, 0.0, w, a, d, j);
+  const jerk::Ramp next_zero = jerk::velocity_ramp(exit_zero, 0.0, w, next.a, next.d, next.j);
+  const double t_zero =
+      profile(out).time() + next_zero.time() +
+      (w > 0.0 ? std::max(0.0, next.length - jerk::distance(exit_zero, 0.0, next_zero)) / w : 0.0);
+  PlannedSegment tried = out;
+  tried.shape = ProfileShape::carry_down;
+  tried.v_exit = best.v1;
+  tried.a_exit = best.a1;
+  tried.v_brake = w;
+  tried.t_brake = best.t_cut;
+  tried.level = level;
+  tried.ramp_a = a;
+  tried.ramp_d = d;
+  tried.ramp_j = j;
+  if (!(profile(tried).time() + (brake.time() - best.t_cut) < t_zero)) return false;
+  out.shape = ProfileShape::carry_down;
+  out.v_exit_zero = exit_zero;
+  out.v_exit = best.v1;
+  out.a_exit = best.a1;
+  out.v_brake = w;
+  out.t_brake = best.t_cut;
+  out.level = level;
+  out.ramp_a = a;
+  out.ramp_d = d;
+  out.ramp_j = j;
+  carry.v_toward = w;
+  carry.level = level;
+  carry.t_cut = best.t_cut;
+  carry.a = a;
+  carry.d = d;
+  carry.j = j;
+  return true;
+}
+
 double LookAhead::start_at(double v) noexcept {  // --- sync-feed
   v_committed_ = std::clamp(v, 0.0, front_entry_cap());
   a_committed_ = 0.0;
@@ -447,6 +583,25 @@ PlannedSegment LookAhead::pop() {
   out.a_max = s.a;
   out.d_max = s.d;
   out.j_max = s.j;
+  if (a0 < 0.0) {
+    // The rest of a carried brake: it ends at (v_toward, 0) at this slot's end (its check
+    // when it was committed), a cruise takes up what rounding leaves.
+    out.shape = ProfileShape::brake_end;
+    out.v_toward = carry_.v_toward;
+    out.level = carry_.level;
+    out.t_cut = carry_.t_cut;
+    out.v_exit = carry_.v_toward;
+    out.v_exit_zero = out.v_exit;
+    out.ramp_a = carry_.a;
+    out.ramp_d = carry_.d;
+    out.ramp_j = carry_.j;
+    out.segment = std::move(s.segment);
+    v_committed_ = out.v_exit;
+    a_committed_ = 0.0;
+    head_ = (head_ + 1) % slots_.size();
+    --count_;
+    return out;
+  }
   const double reach = jerk::reachable_velocity(v0, a0, s.length, s.a, s.j);
   const double upper = std::min({s.exit_cap, reach, s.cap});
   double exit = 0.0;
@@ -473,17 +628,25 @@ PlannedSegment LookAhead::pop() {
     }
   }
   if (carried) {
+    out.shape = ProfileShape::carry_up;
     out.v_exit = c.v1;
     out.a_exit = c.a1;
     out.v_toward = c.v_toward;
     out.t_cut = c.t_cut;
-    out.a_max = c.a;
-    out.j_max = c.j;
+    out.ramp_a = c.a;
+    out.ramp_d = c.d;
+    out.ramp_j = c.j;
     carry_ = c;
+    out.v_exit_zero = out.v_exit;
   } else {
     out.v_exit = exit;
+    out.v_exit_zero = exit;
   }
   out.segment = std::move(s.segment);
+  // A brake the next slot goes on with is carried through a soft joint too, where that is
+  // faster over both than the plan with a = 0 at the joint.
+  if (!carried && soft && plain && a0 == 0.0 && exit == s.exit_cap && brake_carry(v0, out, c))
+    carry_ = c;
   v_committed_ = out.v_exit;
   a_committed_ = out.a_exit;
   head_ = (head_ + 1) % slots_.size();

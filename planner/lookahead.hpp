@@ -48,6 +48,14 @@ enum class LookAheadKind : std::uint8_t {
 std::size_t window_size(LookAheadKind kind, std::optional<std::size_t> custom = std::nullopt,
                         std::size_t custom_max = 1000);
 
+/// Which profile a planned segment has (docs/planner.md "Acceleration at joints").
+enum class ProfileShape : std::uint8_t {
+  plain,       ///< ramp to a level, cruise, ramp to the exit (a = 0 at the exit)
+  carry_up,    ///< the first ramp towards v_toward, cut at t_cut (a speed-up carried)
+  brake_end,   ///< the rest of a carried brake towards v_toward, then a cruise at it
+  carry_down,  ///< ramp to `level`, cruise, brake towards v_brake cut at t_brake
+};
+
 /// A segment with its planned joint velocities.
 struct PlannedSegment {
   PreparedSegment segment;
@@ -55,13 +63,26 @@ struct PlannedSegment {
   double v_exit = 0.0;   ///< path velocity at s = L [mm/s]
   double a_entry = 0.0;  ///< path acceleration at s = 0 [mm/s^2] (> 0 only after a carry)
   double a_exit = 0.0;   ///< path acceleration at s = L [mm/s^2] (> 0 only: a carried speed-up)
-  /// Carried speed-up (docs/planner.md "Acceleration at joints"): the velocity the speed-up
-  /// heads for; its ramp from (v_entry, a_entry) is cut by the segment end at t_cut. 0: none.
+  ProfileShape shape = ProfileShape::plain;
+  /// carry_up: the velocity the speed-up heads for; its ramp from (v_entry, a_entry) is cut by
+  /// the segment end at t_cut. brake_end: the velocity the carried brake ends at; its ramp
+  /// from `level` (a = 0) was cut at t_cut by the previous segment's end.
   double v_toward = 0.0;
-  double t_cut = 0.0;  ///< time of the cut [s] (v_toward > 0)
+  double t_cut = 0.0;  ///< time of the cut [s] (carry_up, brake_end)
+  /// carry_down: the velocity the brake from `level` heads for in the next segment; its ramp
+  /// is cut by the segment end at t_brake.
+  double v_brake = 0.0;
+  double t_brake = 0.0;  ///< [s] (carry_down)
+  double level = 0.0;    ///< the brake's start velocity [mm/s] (carry_down, brake_end)
+  /// Highest exit a plan ending at a = 0 may take [mm/s] (the override's plans): v_exit, but
+  /// below a carried brake the exit the plan with a = 0 at the joint had.
+  double v_exit_zero = 0.0;
   double a_max = 0.0;  ///< path acceleration used [mm/s^2]
   double d_max = 0.0;  ///< path deceleration used [mm/s^2]
   double j_max = 0.0;  ///< path jerk used (finite; STEP: max(a, d) / T) [mm/s^3]
+  /// The limits of a carried ramp (shapes other than plain: the smallest of the segments it
+  /// runs on); a_max, d_max, j_max stay the segment's own, for the plans made at run time.
+  double ramp_a = 0.0, ramp_d = 0.0, ramp_j = 0.0;
 };
 
 /// The velocity profile of a segment over time: the first ramp from (v0, a0) to v_level,
@@ -73,10 +94,11 @@ struct SegmentProfile {
   jerk::Ramp first;       ///< (v0, a0) -> (v_level, 0); cut: towards v_toward
   double t_first = 0.0;   ///< time on `first` [s]
   double t_cruise = 0.0;  ///< cruise at v_level [s]
-  jerk::Ramp second;      ///< (v_level, 0) -> (v_exit, 0)
-  double v_level = 0.0;   ///< cruise level [mm/s]; cut: the exit velocity (the highest)
+  jerk::Ramp second;      ///< (v_level, 0) -> (v_exit, 0); a carried brake: towards v_brake
+  double t_second = 0.0;  ///< time on `second` [s]: its time(), or less (a carried brake)
+  double v_level = 0.0;   ///< cruise level [mm/s]; without one the highest velocity
   /// Total duration [s].
-  double time() const noexcept { return t_first + t_cruise + second.time(); }
+  double time() const noexcept { return t_first + t_cruise + t_second; }
 };
 
 /// The jerk-limited velocity profile of a planned segment: ramp from (v_entry, a_entry) to the
@@ -157,10 +179,11 @@ class LookAhead {
                      double& out) const noexcept;
   /// A speed-up carried across the slot's end joint (docs/planner.md "Acceleration at joints").
   struct Carry {
-    double v_toward = 0.0;      ///< level the ramp heads for [mm/s]
-    double a = 0.0, j = 0.0;    ///< the ramp's limits (the smallest over the slots it spans)
-    double t_cut = 0.0;         ///< time of the cut at the slot end [s]
-    double v1 = 0.0, a1 = 0.0;  ///< state at the cut
+    double v_toward = 0.0;             ///< level the ramp heads for [mm/s]
+    double level = 0.0;                ///< a brake: the velocity its ramp starts from [mm/s]
+    double a = 0.0, d = 0.0, j = 0.0;  ///< the ramp's limits (the smallest of the slots it spans)
+    double t_cut = 0.0;                ///< time of the cut at the slot end [s]
+    double v1 = 0.0, a1 = 0.0;         ///< state at the cut
   };
   /// The ramp from (v0, a0) towards v_toward under a, j, cut at the end of the front slot:
   /// true when it is cut there (does not end inside the slot) and every slot it runs on can
@@ -172,6 +195,13 @@ class LookAhead {
   /// The best carry from (v0, a0): the highest v_toward that fits (bisection), with the
   /// limits of the slots it spans. False when none fits.
   bool best_carry(double v0, double a0, Carry& out) const noexcept;
+  /// A brake carried through the front slot's end joint from (v0, 0): ramp to a level, cruise,
+  /// and the brake towards the next slot's exit cap that ends exactly at the next slot's end,
+  /// cut at this one's; the highest level whose brake passes the joint within its caps.
+  /// `out` is the front slot's plan with a = 0 at the joint (its segment moved in); where the
+  /// carried brake is faster over both slots, fills it (v_exit, a_exit < 0, v_brake, t_brake,
+  /// level, limits) and `carry`; false otherwise.
+  bool brake_carry(double v0, PlannedSegment& out, Carry& carry) const noexcept;
 
   std::vector<Slot> slots_;
   std::size_t head_ = 0;
