@@ -202,6 +202,10 @@ class LpOracle {
     parm.meth = GLP_DUALP;
     parm.tol_bnd = 1e-10;
     parm.tol_dj = 1e-10;
+    // An iteration limit, not a time limit (deterministic): a solve that stalls (seen once in
+    // 1000 cases, the extraction's objective cycling) counts as infeasible, which only makes
+    // T_lp larger (still a valid motion's time) or keeps the feasibility solution.
+    parm.it_lim = 40 * n_;
     int rc = glp_simplex(lp_, &parm);
     if (rc != 0) {  // a basis the changed bounds made unusable: start again
       glp_std_basis(lp_);

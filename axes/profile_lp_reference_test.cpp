@@ -212,7 +212,8 @@ std::string describe_case(const Case& c, const Outcome& o) {
   return buf;
 }
 
-constexpr int kSteps = 64;  // LP steps (docs/axes-profile.md: the gap this leaves)
+// LP steps (docs/axes-profile.md: the gap this leaves); NCSIM_LP_STEPS for measurements.
+const int kSteps = env_int("NCSIM_LP_STEPS", 64);
 
 }  // namespace
 
