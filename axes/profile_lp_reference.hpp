@@ -625,14 +625,13 @@ inline bool solve_ls(const std::vector<Real>& A, const std::vector<Real>& b, int
 
 }  // namespace detail
 
-/// Tier 2: the LP solution `u` of duration `t_lp` refined to exact arc durations.
-inline Exact refine(const Problem& q, const std::vector<double>& u, Real t_lp) {
+namespace detail {
+
+// The arcs' durations solved from their junction and end conditions (Newton, long double),
+// then checked against the limits. a_n, v_n: the LP's node states (junction evidence).
+inline Exact solve_arcs(const Problem& q, std::vector<Arc> arcs, const std::vector<Real>& a_n,
+                        const std::vector<Real>& v_n, Real h, Real t_lp, bool halve) {
   Exact ex;
-  const int n_steps = static_cast<int>(u.size());
-  const Real h = t_lp / n_steps;
-  std::vector<Real> a_n, v_n;
-  node_states(q, u, t_lp, a_n, v_n);
-  std::vector<Arc> arcs = detail::arcs_from_lp(q, u, t_lp, a_n, v_n);
   for (const Arc& g : arcs)
     if (g.kind == 4) {
       ex.why = "a coast neither on an acceleration bound nor at V";
@@ -660,7 +659,12 @@ inline Exact refine(const Problem& q, const std::vector<double>& u, Real t_lp) {
       const int k = arcs[static_cast<std::size_t>(i)].node;
       const Real vk = std::fabs(v_n[static_cast<std::size_t>(k)]);
       const Real ak = std::fabs(a_n[static_cast<std::size_t>(k)]);
-      if (vk <= 4 * (ak * h + q.j * h * h)) cand.push_back({vk / (ak * h + q.j * h * h), i});
+      // a crossing: v changes its sign within three steps either side
+      const int last = static_cast<int>(v_n.size()) - 1;
+      const Real vb = v_n[static_cast<std::size_t>(std::max(0, k - 3))];
+      const Real va = v_n[static_cast<std::size_t>(std::min(last, k + 3))];
+      if (vb * va < 0 && vk <= 4 * (ak * h + q.j * h * h))
+        cand.push_back({vk / (ak * h + q.j * h * h), i});
     }
     std::sort(cand.begin(), cand.end());
     for (const auto& c : cand) {
@@ -678,9 +682,12 @@ inline Exact refine(const Problem& q, const std::vector<double>& u, Real t_lp) {
   }
   const Real sc_a = std::max(q.ap, q.am), sc_v = q.vmax;
   const Real sc_p = std::max(std::fabs(q.d), q.vmax * t_lp);
+  // The step is accepted where the 2-norm falls (Newton's descent direction); converged by
+  // the largest residual.
+  bool l2 = true;
   const auto residual = [&](const std::vector<detail::Node>& nd, std::vector<Real>& f) {
     f.resize(static_cast<std::size_t>(m));
-    Real norm = 0;
+    Real norm = 0, sum2 = 0;
     for (int e = 0; e < m; ++e) {
       const auto& eq = eqs[static_cast<std::size_t>(e)];
       const auto& s = nd[static_cast<std::size_t>(eq.at)];
@@ -689,12 +696,13 @@ inline Exact refine(const Problem& q, const std::vector<double>& u, Real t_lp) {
                          : (eq.what == 1 ? (s.v - eq.value) / sc_v : (s.p - eq.value) / sc_p);
       f[static_cast<std::size_t>(e)] = x;
       norm = std::max(norm, std::fabs(x));
+      sum2 += x * x;
     }
-    return norm;
+    return l2 ? std::sqrt(sum2) : norm;
   };
   std::vector<Real> f, jac(static_cast<std::size_t>(m * na)), step;
   Real norm = residual(detail::integrate(q, arcs), f);
-  for (int it = 0; it < 80 && norm > 1e-17L; ++it) {
+  for (int it = 0; it < 200 && norm > 1e-17L; ++it) {
     const auto nd = detail::integrate(q, arcs);
     // d(state at node at) / d t_i for arcs i < at: the state's time derivative at the end of
     // arc i carried to the node (linear in the remaining time tau).
@@ -721,9 +729,16 @@ inline Exact refine(const Problem& q, const std::vector<double>& u, Real t_lp) {
       ex.arcs = arcs;
       return ex;
     }
+    // `halve`: at most half of a duration is taken in one step, so a duration stays positive
+    // (a zero one leaves its column of the Jacobian zero); else a negative one is cut to 0.
     Real alpha = 1;
+    for (int i = 0; i < na; ++i) {
+      const Real d_i = step[static_cast<std::size_t>(i)] * t_lp;
+      const Real t_i = arcs[static_cast<std::size_t>(i)].t;
+      if (halve && d_i < 0 && t_i > 0) alpha = std::min(alpha, t_i / 2 / -d_i);
+    }
     bool moved = false;
-    for (int back = 0; back < 30; ++back, alpha /= 2) {
+    for (int back = 0; back < 60; ++back, alpha /= 2) {
       std::vector<Arc> trial = arcs;
       for (int i = 0; i < na; ++i)
         trial[static_cast<std::size_t>(i)].t =
@@ -742,6 +757,8 @@ inline Exact refine(const Problem& q, const std::vector<double>& u, Real t_lp) {
     if (!moved) break;
   }
   ex.arcs = arcs;
+  l2 = false;
+  norm = residual(detail::integrate(q, arcs), f);
   if (!(norm <= 1e-13L)) {
     ex.why = "no convergence, residual " + std::to_string(static_cast<double>(norm));
     return ex;
@@ -756,6 +773,53 @@ inline Exact refine(const Problem& q, const std::vector<double>& u, Real t_lp) {
     t += g.t;
   ex.t = t;
   ex.ok = true;
+  return ex;
+}
+
+// Arc i removed (its neighbours joined where they are of one kind).
+inline std::vector<Arc> without(const std::vector<Arc>& arcs, std::size_t i) {
+  std::vector<Arc> out;
+  for (std::size_t k = 0; k < arcs.size(); ++k) {
+    if (k == i) continue;
+    const Arc& g = arcs[k];
+    if (!out.empty() && out.back().kind == g.kind && (g.kind < 2 || out.back().bound == g.bound))
+      out.back().t += g.t;
+    else
+      out.push_back(g);
+  }
+  return out;
+}
+
+}  // namespace detail
+
+/// Tier 2: the LP solution `u` of duration `t_lp` refined to exact arc durations. Where the
+/// arcs as read do not converge to a valid profile, the variants without one of their arcs
+/// shorter than a step (a switch the grid blurred into a spurious short arc) are tried; each
+/// with two Newton safeguards; the fastest valid result is kept.
+inline Exact refine(const Problem& q, const std::vector<double>& u, Real t_lp) {
+  const int n_steps = static_cast<int>(u.size());
+  const Real h = t_lp / n_steps;
+  std::vector<Real> a_n, v_n;
+  node_states(q, u, t_lp, a_n, v_n);
+  std::vector<Arc> arcs = detail::arcs_from_lp(q, u, t_lp, a_n, v_n);
+  // A jerk arc read as (nearly) empty - a ramp inside one step, blurred into partial jerks -
+  // starts Newton from a quarter step, where its column of the Jacobian is not zero.
+  for (Arc& g : arcs)
+    if ((g.kind == 1 || g.kind == -1) && g.t < h / 4) g.t = h / 4;
+  Exact ex;
+  for (const bool halve : {false, true}) {
+    const Exact e = detail::solve_arcs(q, arcs, a_n, v_n, h, t_lp, halve);
+    if (e.ok && (!ex.ok || e.t < ex.t)) ex = e;
+    if (!ex.ok && ex.why.empty()) ex = e;
+  }
+  if (ex.ok) return ex;
+  for (std::size_t i = 0; i < arcs.size(); ++i) {
+    if (!(arcs[i].t < h) || arcs[i].kind == 4) continue;
+    for (const bool halve : {false, true}) {
+      const Exact alt = detail::solve_arcs(q, detail::without(arcs, i), a_n, v_n, h, t_lp, halve);
+      if (alt.ok && (!ex.ok || alt.t < ex.t)) ex = alt;
+    }
+  }
   return ex;
 }
 
