@@ -233,7 +233,7 @@ TEST_CASE("the LP reference is a restriction: never below the proven rest-to-res
     INFO(describe_case(c, o));
     REQUIRE(std::isfinite(o.t_lp));
     const double gap = o.t_lp / o.t_kernel - 1.0;
-    CHECK(gap >= -1e-6);
+    CHECK(gap >= -1e-5);
     gap_max = std::max(gap_max, gap);
     gap_min = std::min(gap_min, gap);
     gap_sum += gap;
@@ -266,8 +266,9 @@ TEST_CASE(
         std::printf("g%d #%d %s %s\n", group, i, describe_case(c, o).c_str(), o.why.c_str());
       if (!std::isfinite(o.t_lp)) continue;  // the grid cannot resolve the move
       ++with_lp;
-      // Tier 1: the LP's motion is valid; 1e-6 covers GLPK's feasibility tolerance.
-      if (o.t_kernel > o.t_lp * (1.0 + 1e-6)) {
+      // Tier 1: the LP's motion is valid; 1e-5 covers GLPK's feasibility tolerance (seen: the
+      // LP 1.8e-6 below a proven rest-to-rest optimum).
+      if (o.t_kernel > o.t_lp * (1.0 + 1e-5)) {
         ++slower_lp;
         MESSAGE("kernel slower than the LP reference (group ", group, "): ", describe_case(c, o));
       }
@@ -294,4 +295,35 @@ TEST_CASE(
   // count may fall, never grow.
   CHECK(slower_lp <= 2);
   CHECK(slower_exact <= 2);
+}
+
+TEST_CASE(
+    "the LP reference's exact profile for a braking start that turns is valid and faster "
+    "than the kernel (known, docs/axes-profile.md)") {
+  // The example of the open class: ease the braking, brake harder, cross v = 0 on the
+  // envelope (-A+ = -1501.19 after it), arrive moving back at v1. The reference alone (no
+  // seed from the kernel's profile) finds a valid motion 3.7 % faster than the kernel on the
+  // grid and 5.0 % faster exactly.
+  const lp::Problem q{607.11562738920634L,  -3244.5028669987282L, 0.062772232656176208L,
+                      -415.35355842183287L, 1178.4256171221843L,  1501.190383994202L,
+                      9003.8746960466251L,  82283.864753735179L};
+  Profile p;
+  REQUIRE(ncsim::axes::plan_position(
+              MotionState{0.0, static_cast<double>(q.v0), static_cast<double>(q.a0)},
+              PositionTarget{static_cast<double>(q.d), static_cast<double>(q.v1)},
+              Dynamics{static_cast<double>(q.vmax), static_cast<double>(q.ap),
+                       static_cast<double>(q.am), static_cast<double>(q.j)},
+              p, ProfileRule::time_optimal) == Result::ok);
+  lp::LpOracle oracle(q, 64);
+  const long double t_lp = oracle.min_time(p.duration());
+  const lp::Exact ex = lp::refine(q, oracle.u(), t_lp);
+  INFO("kernel ", p.duration(), " T_lp ", static_cast<double>(t_lp), " T_exact ",
+       static_cast<double>(ex.t), " ", ex.why, " ", lp::describe(ex.arcs));
+  REQUIRE(ex.ok);
+  CHECK(static_cast<double>(ex.t) == doctest::Approx(0.462775).epsilon(1e-5));
+  CHECK(ex.t <= t_lp);
+  CHECK(count_turns(q, ex.arcs) == 1);
+  // The kernel's time, pinned so that a change shows: a fix makes it <= T_exact (1 + 1e-9).
+  CHECK(p.duration() == doctest::Approx(0.485882).epsilon(1e-5));
+  CHECK(static_cast<double>(t_lp) < p.duration());
 }
