@@ -169,7 +169,10 @@ Outcome run_case(const Case& c, int n_steps) {
 // group 0: forward starts toward the target (v0, v1 >= 0, a0 inside), the proven region;
 // 1: arrival velocity against the way to the target (far or close): one or two turns;
 // 2: starts on the limit moving away ((-V, +A-) or near it) that must turn round;
-// 3: starts moving away from a far target: the turn, then a cruise at V.
+// 3: starts moving away from a far target: the turn, then a cruise at V;
+// 4: braking starts (v0 > 0, a0 < 0) with a close target (1e-5..0.1 of the braking scale)
+//    either side, arriving at rest or moving back: they must turn round (the kernel's slow
+//    class, docs/axes-profile.md).
 Case draw_case(std::mt19937_64& rng, int group) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   Case c;
@@ -193,6 +196,11 @@ Case draw_case(std::mt19937_64& rng, int group) {
     c.d = far ? log_uniform(rng, 1e-4, 1e4) : scale * log_uniform(rng, 1e-4, 1.0);
     const double r = unit(rng);
     c.v1 = r < 0.4 ? 0.0 : (r < 0.7 ? d.v_max * unit(rng) : -d.v_max * unit(rng));
+  } else if (group == 4) {
+    c.v0 = d.v_max * unit(rng);
+    c.a0 = -std::min(d.d_max, std::sqrt(2.0 * d.j_max * c.v0)) * unit(rng);
+    c.d = (unit(rng) < 0.5 ? -1.0 : 1.0) * scale * log_uniform(rng, 1e-5, 1e-1);
+    c.v1 = unit(rng) < 0.3 ? 0.0 : -d.v_max * unit(rng);
   } else {
     c.v0 = -d.v_max * unit(rng);
     c.a0 = draw_acc(rng, c.v0, d);
@@ -256,7 +264,7 @@ TEST_CASE(
   const bool verbose = env_int("NCSIM_LP_VERBOSE", 0) != 0;
   int total = 0, with_lp = 0, with_exact = 0, two_turns = 0, three_ext = 0;
   int slower_lp = 0, slower_exact = 0;
-  for (int group = 0; group < 4; ++group) {
+  for (int group = 0; group < 5; ++group) {
     for (int i = 0; i < per_group; ++i) {
       const Case c = draw_case(rng, group);
       if (!inside(c)) continue;  // starts beyond the limits: docs/axes-profile-outside.md
@@ -289,12 +297,12 @@ TEST_CASE(
           "); kernel slower: than T_lp ", slower_lp, ", than T_exact ", slower_exact);
   CHECK(with_lp >= total * 8 / 10);
   CHECK(with_exact >= total / 4);
-  // Known (docs/axes-profile.md, "Shape-free reference (LP)"): two-peak braking through v = 0
-  // into a turn to an arrival velocity against the way (ease the braking, brake harder, cross
-  // v = 0, speed up backward): the kernel is 2.3 % and 3.5 % slower in 2 of these cases. The
-  // count may fall, never grow.
-  CHECK(slower_lp <= 2);
-  CHECK(slower_exact <= 2);
+  // Known (docs/axes-profile.md, "Shape-free reference (LP)"): braking starts that must turn
+  // round, whose fastest profile keeps braking (or eases, then brakes harder) through v = 0:
+  // the kernel is 2.3 %, 3.5 % and 50 % slower in 3 of these cases. The count may fall,
+  // never grow.
+  CHECK(slower_lp <= 3);
+  CHECK(slower_exact <= 3);
 }
 
 TEST_CASE(
