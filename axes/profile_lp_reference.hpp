@@ -10,11 +10,13 @@
 // the acceleration at the nodes" is a linear program in the N jerks (the states are linear in
 // them). The path limits (002_* 2.1, as axes/profile_limits_check.hpp reads them): where v > 0
 // a lies in [-A-, A+], where v < 0 in [-A+, A-] (A+ speeds the motion up, A- slows it down).
-// That set is not convex, so each node gets a sign pattern: + or - (the box of that sign and
-// v of that sign) or free (v either sign, a within +-min(A+, A-), valid for both). The first
-// pass is all free; each later pass takes the signs of the previous solution's velocities,
-// free within two nodes of a sign change. Every pass restricts the true problem, so its least
-// T (bisection) is a valid time up to the discretisation; T_lp is the least over the passes.
+// That set is not convex, so each step gets a sign: + or - (the box of that sign, v of that
+// sign inside the whole step) or free (v either sign, a within +-min(A+, A-), valid for both);
+// |v| <= V is held inside every step (a margin |j| h^2 / 8 at the nodes). Patterns: a few
+// seeds (all free, the start's sign, the target's side, caller's seeds), then the signs of
+// the best solution, free within two steps of a change, until T stops falling. Every pattern
+// restricts the true problem, so its least T (bisection) is the time of a valid motion (up to
+// GLPK's tolerance and the first and last step, see LpOracle); T_lp is the least found.
 // Tier 2 (`refine`): the LP solution's arcs (runs of jerk +J, -J, 0 with a on a bound, 0 with
 // v on +-V) become unknown durations; their junction conditions (a on the bound where a hold
 // starts, a = 0 and v = +-V where a cruise starts, v = 0 where an arc ends on a crossing the
@@ -344,7 +346,7 @@ class LpOracle {
   long solves_ = 0;
 };
 
-/// Tier 2 ---------------------------------------------------------------------------------
+// Tier 2 -----------------------------------------------------------------------------------
 
 struct Arc {
   int kind = 0;    // +1: jerk +J, -1: jerk -J, 2: hold at a = bound, 3: cruise at v = bound
