@@ -28,3 +28,16 @@ ncsim_add_test(NAME axes_profile_tests
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_moving_target_test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/phase_sync_test.cpp
   LIBS ncsim_axes)
+
+# The shape-free LP reference (profile_lp_reference.hpp) needs GLPK (Debian libglpk-dev,
+# installed by scripts/deps.sh); linked into this test only.
+find_path(GLPK_INCLUDE_DIR glpk.h)
+find_library(GLPK_LIBRARY glpk)
+if(GLPK_INCLUDE_DIR AND GLPK_LIBRARY)
+  ncsim_add_test(NAME axes_profile_lp_tests
+    SOURCES ${CMAKE_CURRENT_SOURCE_DIR}/profile_lp_reference_test.cpp
+    LIBS ncsim_axes ${GLPK_LIBRARY})
+  target_include_directories(axes_profile_lp_tests SYSTEM PRIVATE ${GLPK_INCLUDE_DIR})
+else()
+  message(FATAL_ERROR "GLPK not found (glpk.h, libglpk): run scripts/deps.sh (libglpk-dev)")
+endif()

@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
   cmake ninja-build g++ clang libclang-rt-14-dev clang-format
   tao-pegtl-dev libcli11-dev doctest-dev libeigen3-dev libbenchmark-dev
-  libtomlplusplus-dev chromium
+  libtomlplusplus-dev libglpk-dev chromium
 )
 missing=()
 for p in "${packages[@]}"; do
