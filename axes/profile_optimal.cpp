@@ -217,10 +217,65 @@ bool finite(const MotionState& s) noexcept {
   return std::isfinite(s.p) && std::isfinite(s.v) && std::isfinite(s.a);
 }
 
-}  // namespace
+// The rest families (docs/axes-profile.md, "Prescribed durations", item 5): a profile that
+// rests on the way, for durations no stretched family takes. A target at rest: the fastest
+// profile, then a rest at the target (every duration from the fastest on). An arrival velocity:
+// the fastest stop (none from a start at rest), a rest, then the fastest profile from there
+// (every duration from stop + go on). False where the duration is shorter, or the phases would
+// not fit into one Profile.
+bool plan_with_rest(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
+                    double duration, Profile& out) noexcept {
+  const MotionState end{target.p, target.v, 0.0};
+  Profile go;
+  if (target.v == 0.0) {
+    if (plan_position(start, target, dyn, go, ProfileRule::time_optimal) != Result::ok ||
+        !(go.duration() <= duration) || go.phases().size() >= Profile::kMaxPhases) {
+      return false;
+    }
+    detail::ProfileBuilder b(out, start);
+    b.add(go);
+    b.add(0.0, duration - go.duration());
+    b.finish(&end);
+    return true;
+  }
+  Profile stop = Profile::at_rest(start.p);
+  if (start.v != 0.0 || start.a != 0.0) {
+    if (plan_stop(start, dyn, stop) != Result::ok) return false;
+  }
+  const MotionState rest{stop.end_state().p, 0.0, 0.0};
+  if (plan_position(rest, target, dyn, go, ProfileRule::time_optimal) != Result::ok) return false;
+  const double t_rest = duration - stop.duration() - go.duration();
+  if (!(t_rest >= 0.0) || stop.phases().size() + 1 + go.phases().size() > Profile::kMaxPhases) {
+    return false;
+  }
+  detail::ProfileBuilder b(out, start);
+  b.add(stop);
+  b.add(0.0, t_rest);
+  b.add(go);
+  b.finish(&end);
+  return true;
+}
 
-Result plan_position_of_duration(const MotionState& start, const PositionTarget& target,
-                                 const Dynamics& dyn, double duration, Profile& out) noexcept {
+// Where the rest families' durations begin (infinite where they do not apply).
+double rest_family_start(const MotionState& start, const PositionTarget& target,
+                         const Dynamics& dyn) noexcept {
+  Profile stop = Profile::at_rest(start.p);
+  if (target.v != 0.0 && (start.v != 0.0 || start.a != 0.0) &&
+      plan_stop(start, dyn, stop) != Result::ok) {
+    return std::numeric_limits<double>::infinity();
+  }
+  const MotionState from = target.v == 0.0 ? start : MotionState{stop.end_state().p, 0.0, 0.0};
+  Profile go;
+  if (plan_position(from, target, dyn, go, ProfileRule::time_optimal) != Result::ok)
+    return std::numeric_limits<double>::infinity();
+  return (target.v == 0.0 ? 0.0 : stop.duration()) + go.duration();
+}
+
+// plan_position_of_duration; `rest`: the rest families too (not for moving targets, whose
+// earliest meeting search keeps the stretched families: docs/axes-profile.md).
+Result position_of_duration(const MotionState& start, const PositionTarget& target,
+                            const Dynamics& dyn, double duration, Profile& out,
+                            bool rest) noexcept {
   // The single-peak family (in the reversed frame for an overshoot to a target at rest), else a
   // turn on the way to an arrival velocity, each with its level lowered to the duration.
   const MotionState end{target.p, target.v, 0.0};
@@ -248,7 +303,15 @@ Result plan_position_of_duration(const MotionState& start, const PositionTarget&
       std::abs(out.duration() - duration) <= 1e-12 * duration) {
     return Result::ok;
   }
+  if (rest && plan_with_rest(start, target, dyn, duration, out)) return Result::ok;
   return Result::error_not_synchronizable;
+}
+
+}  // namespace
+
+Result plan_position_of_duration(const MotionState& start, const PositionTarget& target,
+                                 const Dynamics& dyn, double duration, Profile& out) noexcept {
+  return position_of_duration(start, target, dyn, duration, out, true);
 }
 
 Result plan_synchronized(std::span<const MotionState> starts,
@@ -294,8 +357,10 @@ double next_feasible_duration(const MotionState& start, const PositionTarget& ta
   // The ranges of the families plan_position_of_duration stretches start at the single-peak
   // family's root bracketed from 0 and at the fastest turn.
   double next = std::numeric_limits<double>::infinity();
+  const double t_rest = rest_family_start(start, target, dyn);
+  if (t_rest > duration) next = t_rest;
   const double t_single = jerk::min_single_peak_time(start, target.p, target.v, dyn);
-  if (t_single > duration) next = t_single;
+  if (t_single > duration) next = std::min(next, t_single);
   jerk::Reversal rev;
   if (target.v != 0.0 &&
       jerk::reversal_move(start, target.p, target.v, dyn, rev) == jerk::Status::ok) {
@@ -359,7 +424,7 @@ Result plan_moving_target(const MotionState& start, double p1, double v1, double
   // reach(T) does not imply meet(T).
   const auto meet = [&](double t) {
     if (!reach(t)) return false;
-    if (plan_position_of_duration(start, target_at(t), dyn, t, out) == Result::ok) return true;
+    if (position_of_duration(start, target_at(t), dyn, t, out, false) == Result::ok) return true;
     if (std::abs(probe.duration() - t) <= 1e-9 * std::max(t, 1e-9)) {
       out = probe;  // at the boundary of reach: the fastest profile takes T
       return true;
