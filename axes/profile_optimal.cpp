@@ -217,6 +217,135 @@ bool finite(const MotionState& s) noexcept {
   return std::isfinite(s.p) && std::isfinite(s.v) && std::isfinite(s.a);
 }
 
+// The stretched two-peak change (docs/axes-profile.md, "Prescribed durations", item 5; session
+// 30): in the frame toward the target (v0 >= 0, v1 >= 0), with sigma the sign of v1 - v0 and
+// alpha the acceleration times sigma, jerk +J from alpha0 to a first peak x1, -J down to a dip
+// z >= 0, +J to a second peak x2, -J to 0. The velocity change fixes
+//   x2^2 = J |v1 - v0| + alpha0^2 / 2 + z^2 - x1^2,   T = (2 x1 + 2 x2 - alpha0 - 2 z) / J.
+// z = x1 or x2 = z is the single triangle (the fastest); on the branch x1 >= x2 (the first peak
+// the higher: more distance) T falls from the symmetric x1 = x2 to the triangle's, so x1 is
+// the root of T for a dip z, and z the root of the distance D (both by bisection; no holds:
+// peaks within the limit). Used where no other family takes the duration.
+bool plan_two_peak_of_duration(const MotionState& start, const PositionTarget& target,
+                               const Dynamics& dyn, double duration, Profile& out) noexcept {
+  const double dp = target.p - start.p;
+  if (!(dp != 0.0)) return false;
+  const double f = dp > 0.0 ? 1.0 : -1.0;
+  const double v0 = f * start.v;
+  const double a0 = f * start.a;
+  const double v1 = f * target.v;
+  const double d = f * dp;
+  const double j = dyn.j_max;
+  if (v0 < 0.0 || v1 < 0.0 || v1 == v0) return false;
+  const double sigma = v1 > v0 ? 1.0 : -1.0;
+  const double lim = sigma > 0.0 ? dyn.a_max : dyn.d_max;
+  const double alpha0 = sigma * a0;
+  if (alpha0 > lim) return false;
+  // A start pushing against the change (alpha0 < 0) moves v away from v1 first: keep v in
+  // [0, V] and the acceleration within the other limit.
+  if (alpha0 < 0.0) {
+    const double v_turn = v0 - sigma * alpha0 * alpha0 / (2.0 * j);
+    const double other = sigma > 0.0 ? dyn.d_max : dyn.a_max;
+    if (v_turn < 0.0 || v_turn > dyn.v_max || -alpha0 > other) return false;
+  }
+  const double w = j * std::abs(v1 - v0) + 0.5 * alpha0 * alpha0;
+  const double x_tri = std::sqrt(w);
+  if (!(x_tri > std::max(alpha0, 0.0)) || x_tri > lim) return false;
+  const auto x2_of = [&](double x1, double z) {
+    return std::sqrt(std::max(0.0, w + z * z - x1 * x1));
+  };
+  const auto time_of = [&](double x1, double z) {
+    return (2.0 * x1 + 2.0 * x2_of(x1, z) - alpha0 - 2.0 * z) / j;
+  };
+  const auto shape = [&](double x1, double z) {
+    const double x2 = x2_of(x1, z);
+    jerk::TwoPeak tp;
+    tp.jerk = {sigma * j, -sigma * j, sigma * j, -sigma * j};
+    tp.duration = {(x1 - alpha0) / j, (x1 - z) / j, (x2 - z) / j, x2 / j};
+    tp.a_end = {sigma * x1, sigma * z, sigma * x2, 0.0};
+    tp.v_end = v1;
+    tp.sign = f;
+    return tp;
+  };
+  const auto dist_of = [&](const jerk::TwoPeak& tp) {
+    jerk::State st{0.0, v0, a0};
+    for (std::size_t i = 0; i < 4; ++i) {
+      st = jerk::advance(st, tp.jerk[i], tp.duration[i]);
+      st.a = tp.a_end[i];
+    }
+    return st.p;
+  };
+  // x1 on the branch [max(x_eq, alpha0), x_tri] with T(x1) = duration for the dip z; < 0: none.
+  const auto x1_for = [&](double z) {
+    const double x_eq = std::sqrt(0.5 * (w + z * z));
+    double hi = x_tri;
+    double lo = std::max({x_eq, alpha0, z});
+    if (lo > lim || !(time_of(lo, z) >= duration) || time_of(hi, z) > duration) return -1.0;
+    for (int i = 0; i < 200 && hi - lo > 4.0 * std::numeric_limits<double>::epsilon() * hi; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (time_of(mid, z) >= duration ? lo : hi) = mid;
+    }
+    return lo;
+  };
+  // The dip z from 0 (deepest) up to where T(x_eq) = duration (shallowest): the distance
+  // changes monotonically along that curve (assumed; checked by the bracket).
+  const auto g = [&](double z, jerk::TwoPeak& tp) {
+    const double x1 = x1_for(z);
+    if (x1 < 0.0) return std::numeric_limits<double>::quiet_NaN();
+    tp = shape(x1, z);
+    return dist_of(tp) - d;
+  };
+  // The shallowest dip still slow enough: T at x1 = x_eq falls as z grows (bisection on
+  // [0, x_tri]); none when even z = 0 is too fast.
+  const auto t_eq = [&](double z) {
+    return time_of(std::max({std::sqrt(0.5 * (w + z * z)), alpha0, z}), z);
+  };
+  if (!(t_eq(0.0) >= duration)) return false;
+  double z_lo = 0.0;
+  double z_hi = 0.0;
+  {
+    double z_ok = 0.0;
+    double z_no = x_tri;
+    for (int i = 0; i < 200 && z_no - z_ok > 4.0 * std::numeric_limits<double>::epsilon() * x_tri;
+         ++i) {
+      const double mid = 0.5 * (z_ok + z_no);
+      (t_eq(mid) >= duration ? z_ok : z_no) = mid;
+    }
+    z_hi = z_ok;
+  }
+  jerk::TwoPeak tp_lo;
+  jerk::TwoPeak tp_hi;
+  double g_lo = g(z_lo, tp_lo);
+  double g_hi = g(z_hi, tp_hi);
+  if (!std::isfinite(g_lo) || !std::isfinite(g_hi) || (g_lo > 0.0) == (g_hi > 0.0)) return false;
+  jerk::TwoPeak tp = tp_lo;
+  for (int i = 0; i < 200 && z_hi - z_lo > 4.0 * std::numeric_limits<double>::epsilon() * z_hi;
+       ++i) {
+    const double mid = 0.5 * (z_lo + z_hi);
+    jerk::TwoPeak t_mid;
+    const double g_mid = g(mid, t_mid);
+    if (!std::isfinite(g_mid)) return false;
+    if ((g_mid > 0.0) == (g_lo > 0.0)) {
+      z_lo = mid;
+      g_lo = g_mid;
+      tp = t_mid;
+    } else {
+      z_hi = mid;
+      g_hi = g_mid;
+      tp = t_mid;
+    }
+  }
+  if (!(std::abs(tp.time() - duration) <= 1e-9 * duration) ||
+      !(std::abs(dist_of(tp) - d) <= 1e-9 * std::max(d, 1e-9))) {
+    return false;
+  }
+  const MotionState end{target.p, target.v, 0.0};
+  detail::ProfileBuilder b(out, start);
+  detail::append_two_peak(b, tp);
+  b.finish(&end);
+  return true;
+}
+
 // The rest families (docs/axes-profile.md, "Prescribed durations", item 5): a profile that
 // rests on the way, for durations no stretched family takes. A target at rest: the fastest
 // profile, then a rest at the target (every duration from the fastest on). An arrival velocity:
@@ -303,6 +432,7 @@ Result position_of_duration(const MotionState& start, const PositionTarget& targ
       std::abs(out.duration() - duration) <= 1e-12 * duration) {
     return Result::ok;
   }
+  if (plan_two_peak_of_duration(start, target, dyn, duration, out)) return Result::ok;
   if (rest && plan_with_rest(start, target, dyn, duration, out)) return Result::ok;
   return Result::error_not_synchronizable;
 }
