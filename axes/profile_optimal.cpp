@@ -226,8 +226,8 @@ bool finite(const MotionState& s) noexcept {
 // the higher: more distance) T falls from the symmetric x1 = x2 to the triangle's, so x1 is
 // the root of T for a dip z, and z the root of the distance D (both by bisection; no holds:
 // peaks within the limit). Used where no other family takes the duration.
-bool plan_two_peak_of_duration(const MotionState& start, const PositionTarget& target,
-                               const Dynamics& dyn, double duration, Profile& out) noexcept {
+bool two_peak_from(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
+                   double duration, Profile& out) noexcept {
   const double dp = target.p - start.p;
   if (!(dp != 0.0)) return false;
   const double f = dp > 0.0 ? 1.0 : -1.0;
@@ -344,6 +344,45 @@ bool plan_two_peak_of_duration(const MotionState& start, const PositionTarget& t
   detail::append_two_peak(b, tp);
   b.finish(&end);
   return true;
+}
+
+// The stretched two-peak change, first as it is, then after a first dip of the start's
+// acceleration (jerk -sigma J from alpha0 down to u, a third parameter; u on kDips steps down
+// to the other limit, the first that lets the change take the rest of the duration): the
+// shape linear programs find between the level family's runs (docs/axes-profile.md (c)).
+bool plan_two_peak_of_duration(const MotionState& start, const PositionTarget& target,
+                               const Dynamics& dyn, double duration, Profile& out) noexcept {
+  if (two_peak_from(start, target, dyn, duration, out)) return true;
+  const double dp = target.p - start.p;
+  if (!(dp != 0.0)) return false;
+  const double f = dp > 0.0 ? 1.0 : -1.0;
+  const double v0 = f * start.v;
+  const double v1 = f * target.v;
+  if (v0 < 0.0 || v1 < 0.0 || v1 == v0) return false;
+  const double sigma = v1 > v0 ? 1.0 : -1.0;
+  const double alpha0 = sigma * f * start.a;
+  const double other = sigma > 0.0 ? dyn.d_max : dyn.a_max;
+  const double j = dyn.j_max;
+  // The velocity's extremum where the dip passes a = 0 stays in [0, V].
+  const double v_ext = v0 + sigma * std::max(alpha0, 0.0) * alpha0 / (2.0 * j);
+  if (v_ext < 0.0 || v_ext > dyn.v_max || !(alpha0 > -other)) return false;
+  constexpr int kDips = 32;
+  for (int k = 1; k <= kDips; ++k) {
+    const double u = alpha0 - (alpha0 + other) * k / kDips;
+    const double t0 = (alpha0 - u) / j;
+    if (!(t0 < duration)) break;
+    MotionState s1 = jerk::advance(start, -f * sigma * j, t0);
+    s1.a = f * sigma * u;
+    Profile tail;
+    if (!two_peak_from(s1, target, dyn, duration - t0, tail)) continue;
+    const MotionState end{target.p, target.v, 0.0};
+    detail::ProfileBuilder b(out, start);
+    b.add(-f * sigma * j, t0, f * sigma * u);
+    b.add(tail);
+    b.finish(&end);
+    return true;
+  }
+  return false;
 }
 
 // The rest families (docs/axes-profile.md, "Prescribed durations", item 5): a profile that
