@@ -251,6 +251,7 @@ bool two_peak_from(const MotionState& start, const PositionTarget& target, const
   const double w = j * std::abs(v1 - v0) + 0.5 * alpha0 * alpha0;
   const double x_tri = std::sqrt(w);
   if (!(x_tri > std::max(alpha0, 0.0)) || x_tri > lim) return false;
+  if (duration < (2.0 * x_tri - alpha0) / j * (1.0 - 1e-9)) return false;  // below the triangle
   const auto x2_of = [&](double x1, double z) {
     return std::sqrt(std::max(0.0, w + z * z - x1 * x1));
   };
@@ -366,11 +367,18 @@ bool plan_two_peak_of_duration(const MotionState& start, const PositionTarget& t
   // The velocity's extremum where the dip passes a = 0 stays in [0, V].
   const double v_ext = v0 + sigma * std::max(alpha0, 0.0) * alpha0 / (2.0 * j);
   if (v_ext < 0.0 || v_ext > dyn.v_max || !(alpha0 > -other)) return false;
-  constexpr int kDips = 32;
+  constexpr int kDips = 16;
   for (int k = 1; k <= kDips; ++k) {
     const double u = alpha0 - (alpha0 + other) * k / kDips;
     const double t0 = (alpha0 - u) / j;
     if (!(t0 < duration)) break;
+    // The change after the dip takes durations between its triangle's and its symmetric
+    // peaks' with the dip at 0 (closed form): skip a u whose range misses the duration.
+    const double w_u = j * std::abs(v1 - v0) - 0.5 * alpha0 * alpha0 + u * u;
+    if (!(w_u > 0.0)) continue;
+    const double t_tri = (alpha0 - 2.0 * u + 2.0 * std::sqrt(w_u)) / j;
+    const double t_sym = (alpha0 - 2.0 * u + 4.0 * std::sqrt(0.5 * w_u)) / j;
+    if (duration < t_tri * (1.0 - 1e-9) || duration > t_sym * (1.0 + 1e-9)) continue;
     MotionState s1 = jerk::advance(start, -f * sigma * j, t0);
     s1.a = f * sigma * u;
     Profile tail;
@@ -439,11 +447,11 @@ double rest_family_start(const MotionState& start, const PositionTarget& target,
   return (target.v == 0.0 ? 0.0 : stop.duration()) + go.duration();
 }
 
-// plan_position_of_duration; `rest`: the rest families too (not for moving targets, whose
-// earliest meeting search keeps the stretched families: docs/axes-profile.md).
+// plan_position_of_duration; `late`: the rest families too (not for moving targets: a meeting
+// that rests first is not built, docs/axes-profile.md).
 Result position_of_duration(const MotionState& start, const PositionTarget& target,
                             const Dynamics& dyn, double duration, Profile& out,
-                            bool rest) noexcept {
+                            bool late) noexcept {
   // The single-peak family (in the reversed frame for an overshoot to a target at rest), else a
   // turn on the way to an arrival velocity, each with its level lowered to the duration.
   const MotionState end{target.p, target.v, 0.0};
@@ -472,7 +480,7 @@ Result position_of_duration(const MotionState& start, const PositionTarget& targ
     return Result::ok;
   }
   if (plan_two_peak_of_duration(start, target, dyn, duration, out)) return Result::ok;
-  if (rest && plan_with_rest(start, target, dyn, duration, out)) return Result::ok;
+  if (late && plan_with_rest(start, target, dyn, duration, out)) return Result::ok;
   return Result::error_not_synchronizable;
 }
 
