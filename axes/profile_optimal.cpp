@@ -1,7 +1,8 @@
 // axes/profile_optimal.cpp: profiles where the manual prescribes nothing (docs/axes-profile.md,
 // "Profile rule", "Synchronised and moving targets"):
 //  - ProfileRule::time_optimal: the fastest single-peak profile (jerk::fastest_move);
-//  - a prescribed duration: the single-peak profile with a lowered level (jerk::move_of_duration);
+//  - a prescribed duration: the single-peak profile with a lowered level (jerk::move_of_duration),
+//    a turn with a lowered level, the stretched two-peak change, else a rest on the way;
 //  - time-synchronised axes: every axis gets the longest single-axis duration;
 //  - a target moving with constant velocity: the earliest meeting time, found by growing the
 //    time geometrically until the single-peak family can meet p1 + v1 T in time, then
