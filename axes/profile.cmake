@@ -22,6 +22,7 @@ ncsim_add_test(NAME axes_profile_tests
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_optimal_test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_reference_test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_duration_test.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/profile_duration_gap_test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_classify_test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_outside_test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_synchronized_test.cpp

@@ -145,8 +145,9 @@ Result plan_position(const MotionState& start, const PositionTarget& target,
 /// Plans a profile from `start` to `target` taking exactly `duration` [s] (>= the motion's
 /// own minimum): the cruise level is lowered (jerk::move_of_duration, in the reversed frame for
 /// an overshoot), else the turning level of a turn to the arrival velocity
-/// (jerk::reversal_of_duration). Returns error_not_synchronizable [NC5015] when neither family
-/// has a profile of that duration (a gap: see next_feasible_duration).
+/// (jerk::reversal_of_duration), else the dip of a two-peak change, else the axis rests on the
+/// way (at the target, or after a stop: docs/axes-profile.md). Returns error_not_synchronizable
+/// [NC5015] when no family has a profile of that duration (a gap: see next_feasible_duration).
 Result plan_position_of_duration(const MotionState& start, const PositionTarget& target,
                                  const Dynamics& dynamics, double duration, Profile& out) noexcept;
 

@@ -43,6 +43,19 @@ void ProfileBuilder::add(double jerk, double duration, double a_end) noexcept {
   state_.a = a_end;
 }
 
+void ProfileBuilder::add(const Profile& tail) noexcept {
+  for (const Phase& ph : tail.phases()) {
+    if (out_.count_ >= Profile::kMaxPhases) std::abort();  // callers count the phases first
+    Phase q = ph;
+    q.t_start = t_ + ph.t_start;
+    out_.phases_[out_.count_++] = q;
+  }
+  out_.t_brake_ = t_ + tail.t_brake();
+  out_.v_level_ = tail.v_level();
+  t_ += tail.duration();
+  state_ = tail.end_state();
+}
+
 void ProfileBuilder::add(const Ramp& change, double sign) noexcept {
   // Each phase starts from the boundary value it is meant to start from, not from the rounded
   // integration of the one before: a residual acceleration of ~1e-16 A would otherwise grow

@@ -38,6 +38,9 @@ class ProfileBuilder {
   /// Appends the phases of `cross` in the frame with sign `sign`; the state after each phase is
   /// set to its intended value (acceleration +-a_peak, then v = 0 with +-a_zero).
   void add(const jerk::Crossing& cross, double sign) noexcept;
+  /// Appends the phases of `tail`, a profile planned from the builder's current state (same
+  /// values), unchanged but for their start times; the state becomes tail's end state.
+  void add(const Profile& tail) noexcept;
   /// Marks the current time as the start of the braking phase.
   void mark_brake() noexcept { out_.t_brake_ = t_; }
   void set_level(double v_level) noexcept { out_.v_level_ = v_level; }

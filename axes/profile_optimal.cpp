@@ -1,7 +1,8 @@
 // axes/profile_optimal.cpp: profiles where the manual prescribes nothing (docs/axes-profile.md,
 // "Profile rule", "Synchronised and moving targets"):
 //  - ProfileRule::time_optimal: the fastest single-peak profile (jerk::fastest_move);
-//  - a prescribed duration: the single-peak profile with a lowered level (jerk::move_of_duration);
+//  - a prescribed duration: the single-peak profile with a lowered level (jerk::move_of_duration),
+//    a turn with a lowered level, the stretched two-peak change, else a rest on the way;
 //  - time-synchronised axes: every axis gets the longest single-axis duration;
 //  - a target moving with constant velocity: the earliest meeting time, found by growing the
 //    time geometrically until the single-peak family can meet p1 + v1 T in time, then
@@ -217,10 +218,241 @@ bool finite(const MotionState& s) noexcept {
   return std::isfinite(s.p) && std::isfinite(s.v) && std::isfinite(s.a);
 }
 
-}  // namespace
+// The stretched two-peak change (docs/axes-profile.md, "Prescribed durations", item 5; session
+// 30): in the frame toward the target (v0 >= 0, v1 >= 0), with sigma the sign of v1 - v0 and
+// alpha the acceleration times sigma, jerk +J from alpha0 to a first peak x1, -J down to a dip
+// z >= 0, +J to a second peak x2, -J to 0. The velocity change fixes
+//   x2^2 = J |v1 - v0| + alpha0^2 / 2 + z^2 - x1^2,   T = (2 x1 + 2 x2 - alpha0 - 2 z) / J.
+// z = x1 or x2 = z is the single triangle (the fastest); on the branch x1 >= x2 (the first peak
+// the higher: more distance) T falls from the symmetric x1 = x2 to the triangle's, so x1 is
+// the root of T for a dip z, and z the root of the distance D (both by bisection; no holds:
+// peaks within the limit). Used where no other family takes the duration.
+bool two_peak_from(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
+                   double duration, Profile& out) noexcept {
+  const double dp = target.p - start.p;
+  if (!(dp != 0.0)) return false;
+  const double f = dp > 0.0 ? 1.0 : -1.0;
+  const double v0 = f * start.v;
+  const double a0 = f * start.a;
+  const double v1 = f * target.v;
+  const double d = f * dp;
+  const double j = dyn.j_max;
+  if (v0 < 0.0 || v1 < 0.0 || v1 == v0) return false;
+  const double sigma = v1 > v0 ? 1.0 : -1.0;
+  const double lim = sigma > 0.0 ? dyn.a_max : dyn.d_max;
+  const double alpha0 = sigma * a0;
+  if (alpha0 > lim) return false;
+  // A start pushing against the change (alpha0 < 0) moves v away from v1 first: keep v in
+  // [0, V] and the acceleration within the other limit.
+  if (alpha0 < 0.0) {
+    const double v_turn = v0 - sigma * alpha0 * alpha0 / (2.0 * j);
+    const double other = sigma > 0.0 ? dyn.d_max : dyn.a_max;
+    if (v_turn < 0.0 || v_turn > dyn.v_max || -alpha0 > other) return false;
+  }
+  const double w = j * std::abs(v1 - v0) + 0.5 * alpha0 * alpha0;
+  const double x_tri = std::sqrt(w);
+  if (!(x_tri > std::max(alpha0, 0.0)) || x_tri > lim) return false;
+  if (duration < (2.0 * x_tri - alpha0) / j * (1.0 - 1e-9)) return false;  // below the triangle
+  const auto x2_of = [&](double x1, double z) {
+    return std::sqrt(std::max(0.0, w + z * z - x1 * x1));
+  };
+  const auto time_of = [&](double x1, double z) {
+    return (2.0 * x1 + 2.0 * x2_of(x1, z) - alpha0 - 2.0 * z) / j;
+  };
+  const auto shape = [&](double x1, double z) {
+    const double x2 = x2_of(x1, z);
+    jerk::TwoPeak tp;
+    tp.jerk = {sigma * j, -sigma * j, sigma * j, -sigma * j};
+    tp.duration = {(x1 - alpha0) / j, (x1 - z) / j, (x2 - z) / j, x2 / j};
+    tp.a_end = {sigma * x1, sigma * z, sigma * x2, 0.0};
+    tp.v_end = v1;
+    tp.sign = f;
+    return tp;
+  };
+  const auto dist_of = [&](const jerk::TwoPeak& tp) {
+    jerk::State st{0.0, v0, a0};
+    for (std::size_t i = 0; i < 4; ++i) {
+      st = jerk::advance(st, tp.jerk[i], tp.duration[i]);
+      st.a = tp.a_end[i];
+    }
+    return st.p;
+  };
+  // x1 on the branch [max(x_eq, alpha0), x_tri] with T(x1) = duration for the dip z; < 0: none.
+  const auto x1_for = [&](double z) {
+    const double x_eq = std::sqrt(0.5 * (w + z * z));
+    double hi = x_tri;
+    double lo = std::max({x_eq, alpha0, z});
+    if (lo > lim || !(time_of(lo, z) >= duration) || time_of(hi, z) > duration) return -1.0;
+    for (int i = 0; i < 200 && hi - lo > 4.0 * std::numeric_limits<double>::epsilon() * hi; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (time_of(mid, z) >= duration ? lo : hi) = mid;
+    }
+    return lo;
+  };
+  // The dip z from 0 (deepest) up to where T(x_eq) = duration (shallowest): the distance
+  // changes monotonically along that curve (assumed; checked by the bracket).
+  const auto g = [&](double z, jerk::TwoPeak& tp) {
+    const double x1 = x1_for(z);
+    if (x1 < 0.0) return std::numeric_limits<double>::quiet_NaN();
+    tp = shape(x1, z);
+    return dist_of(tp) - d;
+  };
+  // The shallowest dip still slow enough: T at x1 = x_eq falls as z grows (bisection on
+  // [0, x_tri]); none when even z = 0 is too fast.
+  const auto t_eq = [&](double z) {
+    return time_of(std::max({std::sqrt(0.5 * (w + z * z)), alpha0, z}), z);
+  };
+  if (!(t_eq(0.0) >= duration)) return false;
+  double z_lo = 0.0;
+  double z_hi = 0.0;
+  {
+    double z_ok = 0.0;
+    double z_no = x_tri;
+    for (int i = 0; i < 200 && z_no - z_ok > 4.0 * std::numeric_limits<double>::epsilon() * x_tri;
+         ++i) {
+      const double mid = 0.5 * (z_ok + z_no);
+      (t_eq(mid) >= duration ? z_ok : z_no) = mid;
+    }
+    z_hi = z_ok;
+  }
+  jerk::TwoPeak tp_lo;
+  jerk::TwoPeak tp_hi;
+  double g_lo = g(z_lo, tp_lo);
+  double g_hi = g(z_hi, tp_hi);
+  if (!std::isfinite(g_lo) || !std::isfinite(g_hi) || (g_lo > 0.0) == (g_hi > 0.0)) return false;
+  jerk::TwoPeak tp = tp_lo;
+  for (int i = 0; i < 200 && z_hi - z_lo > 4.0 * std::numeric_limits<double>::epsilon() * z_hi;
+       ++i) {
+    const double mid = 0.5 * (z_lo + z_hi);
+    jerk::TwoPeak t_mid;
+    const double g_mid = g(mid, t_mid);
+    if (!std::isfinite(g_mid)) return false;
+    if ((g_mid > 0.0) == (g_lo > 0.0)) {
+      z_lo = mid;
+      g_lo = g_mid;
+      tp = t_mid;
+    } else {
+      z_hi = mid;
+      g_hi = g_mid;
+      tp = t_mid;
+    }
+  }
+  if (!(std::abs(tp.time() - duration) <= 1e-9 * duration) ||
+      !(std::abs(dist_of(tp) - d) <= 1e-9 * std::max(d, 1e-9))) {
+    return false;
+  }
+  const MotionState end{target.p, target.v, 0.0};
+  detail::ProfileBuilder b(out, start);
+  detail::append_two_peak(b, tp);
+  b.finish(&end);
+  return true;
+}
 
-Result plan_position_of_duration(const MotionState& start, const PositionTarget& target,
-                                 const Dynamics& dyn, double duration, Profile& out) noexcept {
+// The stretched two-peak change, first as it is, then after a first dip of the start's
+// acceleration (jerk -sigma J from alpha0 down to u, a third parameter; u on kDips steps down
+// to the other limit, the first that lets the change take the rest of the duration): the
+// shape linear programs find between the level family's runs (docs/axes-profile.md (c)).
+bool plan_two_peak_of_duration(const MotionState& start, const PositionTarget& target,
+                               const Dynamics& dyn, double duration, Profile& out) noexcept {
+  if (two_peak_from(start, target, dyn, duration, out)) return true;
+  const double dp = target.p - start.p;
+  if (!(dp != 0.0)) return false;
+  const double f = dp > 0.0 ? 1.0 : -1.0;
+  const double v0 = f * start.v;
+  const double v1 = f * target.v;
+  if (v0 < 0.0 || v1 < 0.0 || v1 == v0) return false;
+  const double sigma = v1 > v0 ? 1.0 : -1.0;
+  const double alpha0 = sigma * f * start.a;
+  const double other = sigma > 0.0 ? dyn.d_max : dyn.a_max;
+  const double j = dyn.j_max;
+  // The velocity's extremum where the dip passes a = 0 stays in [0, V].
+  const double v_ext = v0 + sigma * std::max(alpha0, 0.0) * alpha0 / (2.0 * j);
+  if (v_ext < 0.0 || v_ext > dyn.v_max || !(alpha0 > -other)) return false;
+  constexpr int kDips = 16;
+  for (int k = 1; k <= kDips; ++k) {
+    const double u = alpha0 - (alpha0 + other) * k / kDips;
+    const double t0 = (alpha0 - u) / j;
+    if (!(t0 < duration)) break;
+    // The change after the dip takes durations between its triangle's and its symmetric
+    // peaks' with the dip at 0 (closed form): skip a u whose range misses the duration.
+    const double w_u = j * std::abs(v1 - v0) - 0.5 * alpha0 * alpha0 + u * u;
+    if (!(w_u > 0.0)) continue;
+    const double t_tri = (alpha0 - 2.0 * u + 2.0 * std::sqrt(w_u)) / j;
+    const double t_sym = (alpha0 - 2.0 * u + 4.0 * std::sqrt(0.5 * w_u)) / j;
+    if (duration < t_tri * (1.0 - 1e-9) || duration > t_sym * (1.0 + 1e-9)) continue;
+    MotionState s1 = jerk::advance(start, -f * sigma * j, t0);
+    s1.a = f * sigma * u;
+    Profile tail;
+    if (!two_peak_from(s1, target, dyn, duration - t0, tail)) continue;
+    const MotionState end{target.p, target.v, 0.0};
+    detail::ProfileBuilder b(out, start);
+    b.add(-f * sigma * j, t0, f * sigma * u);
+    b.add(tail);
+    b.finish(&end);
+    return true;
+  }
+  return false;
+}
+
+// The rest families (docs/axes-profile.md, "Prescribed durations", item 5): a profile that
+// rests on the way, for durations no stretched family takes. A target at rest: the fastest
+// profile, then a rest at the target (every duration from the fastest on). An arrival velocity:
+// the fastest stop (none from a start at rest), a rest, then the fastest profile from there
+// (every duration from stop + go on). False where the duration is shorter, or the phases would
+// not fit into one Profile.
+bool plan_with_rest(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
+                    double duration, Profile& out) noexcept {
+  const MotionState end{target.p, target.v, 0.0};
+  Profile go;
+  if (target.v == 0.0) {
+    if (plan_position(start, target, dyn, go, ProfileRule::time_optimal) != Result::ok ||
+        !(go.duration() <= duration) || go.phases().size() >= Profile::kMaxPhases) {
+      return false;
+    }
+    detail::ProfileBuilder b(out, start);
+    b.add(go);
+    b.add(0.0, duration - go.duration());
+    b.finish(&end);
+    return true;
+  }
+  Profile stop = Profile::at_rest(start.p);
+  if (start.v != 0.0 || start.a != 0.0) {
+    if (plan_stop(start, dyn, stop) != Result::ok) return false;
+  }
+  const MotionState rest{stop.end_state().p, 0.0, 0.0};
+  if (plan_position(rest, target, dyn, go, ProfileRule::time_optimal) != Result::ok) return false;
+  const double t_rest = duration - stop.duration() - go.duration();
+  if (!(t_rest >= 0.0) || stop.phases().size() + 1 + go.phases().size() > Profile::kMaxPhases) {
+    return false;
+  }
+  detail::ProfileBuilder b(out, start);
+  b.add(stop);
+  b.add(0.0, t_rest);
+  b.add(go);
+  b.finish(&end);
+  return true;
+}
+
+// Where the rest families' durations begin (infinite where they do not apply).
+double rest_family_start(const MotionState& start, const PositionTarget& target,
+                         const Dynamics& dyn) noexcept {
+  Profile stop = Profile::at_rest(start.p);
+  if (target.v != 0.0 && (start.v != 0.0 || start.a != 0.0) &&
+      plan_stop(start, dyn, stop) != Result::ok) {
+    return std::numeric_limits<double>::infinity();
+  }
+  const MotionState from = target.v == 0.0 ? start : MotionState{stop.end_state().p, 0.0, 0.0};
+  Profile go;
+  if (plan_position(from, target, dyn, go, ProfileRule::time_optimal) != Result::ok)
+    return std::numeric_limits<double>::infinity();
+  return (target.v == 0.0 ? 0.0 : stop.duration()) + go.duration();
+}
+
+// plan_position_of_duration; `late`: the rest families too (not for moving targets: a meeting
+// that rests first is not built, docs/axes-profile.md).
+Result position_of_duration(const MotionState& start, const PositionTarget& target,
+                            const Dynamics& dyn, double duration, Profile& out,
+                            bool late) noexcept {
   // The single-peak family (in the reversed frame for an overshoot to a target at rest), else a
   // turn on the way to an arrival velocity, each with its level lowered to the duration.
   const MotionState end{target.p, target.v, 0.0};
@@ -248,7 +480,16 @@ Result plan_position_of_duration(const MotionState& start, const PositionTarget&
       std::abs(out.duration() - duration) <= 1e-12 * duration) {
     return Result::ok;
   }
+  if (plan_two_peak_of_duration(start, target, dyn, duration, out)) return Result::ok;
+  if (late && plan_with_rest(start, target, dyn, duration, out)) return Result::ok;
   return Result::error_not_synchronizable;
+}
+
+}  // namespace
+
+Result plan_position_of_duration(const MotionState& start, const PositionTarget& target,
+                                 const Dynamics& dyn, double duration, Profile& out) noexcept {
+  return position_of_duration(start, target, dyn, duration, out, true);
 }
 
 Result plan_synchronized(std::span<const MotionState> starts,
@@ -294,8 +535,10 @@ double next_feasible_duration(const MotionState& start, const PositionTarget& ta
   // The ranges of the families plan_position_of_duration stretches start at the single-peak
   // family's root bracketed from 0 and at the fastest turn.
   double next = std::numeric_limits<double>::infinity();
+  const double t_rest = rest_family_start(start, target, dyn);
+  if (t_rest > duration) next = t_rest;
   const double t_single = jerk::min_single_peak_time(start, target.p, target.v, dyn);
-  if (t_single > duration) next = t_single;
+  if (t_single > duration) next = std::min(next, t_single);
   jerk::Reversal rev;
   if (target.v != 0.0 &&
       jerk::reversal_move(start, target.p, target.v, dyn, rev) == jerk::Status::ok) {
@@ -359,7 +602,7 @@ Result plan_moving_target(const MotionState& start, double p1, double v1, double
   // reach(T) does not imply meet(T).
   const auto meet = [&](double t) {
     if (!reach(t)) return false;
-    if (plan_position_of_duration(start, target_at(t), dyn, t, out) == Result::ok) return true;
+    if (position_of_duration(start, target_at(t), dyn, t, out, false) == Result::ok) return true;
     if (std::abs(probe.duration() - t) <= 1e-9 * std::max(t, 1e-9)) {
       out = probe;  // at the boundary of reach: the fastest profile takes T
       return true;

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "axes/profile.hpp"
+#include "axes/profile_duration_bound.hpp"
 #include "axes/profile_limits_check.hpp"
 #include "jerk/test_random.hpp"
 
@@ -35,6 +36,7 @@ TEST_CASE("synchronised random axes end bitwise on their targets at the slowest 
   int cases = 0;
   int stretched = 0;  // TIME= longer than every axis's own duration
   int gaps = 0;       // the common duration moved past an axis's gap
+  int undecided = 0;  // ... not proven physical by the relaxed bounds
   int inexact = 0;    // axes whose duration is not t_common to the bit
   double worst = 0.0;
   for (int n = 0; n < 3000; ++n) {
@@ -74,15 +76,23 @@ TEST_CASE("synchronised random axes end bitwise on their targets at the slowest 
     const double t_common = out[0].duration();
     INFO("t_common=", t_common);
     if (t_common > t_want * (1.0 + 1e-9)) {
-      // Later only past a gap: some axis has no profile of the wanted duration.
+      // Later only past a gap: some axis has no profile of the wanted duration, proven a
+      // physical gap by the relaxed bounds (profile_duration_bound.hpp) or counted undecided.
       bool gap = false;
-      for (std::size_t i = 0; i < axes && !gap; ++i) {
+      bool proven = false;
+      for (std::size_t i = 0; i < axes; ++i) {
         Profile q;
-        gap = ncsim::axes::plan_position_of_duration(starts[i], targets[i], dyn[i], t_want, q) ==
-              Result::error_not_synchronizable;
+        if (ncsim::axes::plan_position_of_duration(starts[i], targets[i], dyn[i], t_want, q) ==
+            Result::error_not_synchronizable) {
+          gap = true;
+          proven =
+              proven || ncsim::test::proven_gap(
+                            ncsim::test::duration_bounds(starts[i], targets[i], dyn[i]), t_want);
+        }
       }
       REQUIRE(gap);
       ++gaps;
+      if (!proven) ++undecided;
     } else {
       REQUIRE(t_common >= t_want * (1.0 - 1e-9));
     }
@@ -102,9 +112,11 @@ TEST_CASE("synchronised random axes end bitwise on their targets at the slowest 
       REQUIRE_MESSAGE(bad.empty(), bad);
     }
   }
-  MESSAGE("cases ", cases, ", TIME= ", stretched, ", past a gap ", gaps, ", durations off the bit ",
-          inexact, " (worst ", worst, ")");
+  MESSAGE("cases ", cases, ", TIME= ", stretched, ", past a gap ", gaps, " (undecided ", undecided,
+          "), durations off the bit ", inexact, " (worst ", worst, ")");
   CHECK(cases == 3000);
+  CHECK(gaps == 5);
+  CHECK(undecided == 1);
 }
 
 TEST_CASE("a prescribed duration from a start released beyond V is met by the turn, not 0.18 s") {

@@ -127,8 +127,9 @@ std::optional<IndpError> IndpAxes::command(std::size_t i, const IndpMove& move) 
     if (r == axes::Result::ok && move.time) {
       if (*move.time > full.duration()) {
         axes::Profile timed;
-        // From a moving state no single-peak profile may take exactly TIME (NC5015): the
-        // fastest profile runs instead, counted like a cap.
+        // A target at rest takes every TIME from the fastest profile on (at the latest by the
+        // rest family: docs/axes-profile.md, "Prescribed durations"); should none take it
+        // (NC5015), the fastest profile runs instead, counted like a cap.
         if (axes::plan_position_of_duration(s, target, d, *move.time, timed) == axes::Result::ok)
           full = timed;
         else
