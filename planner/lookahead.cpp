@@ -45,6 +45,19 @@ jerk::StateRamp as_state_ramp(const jerk::Ramp& r) noexcept {
   return jerk::StateRamp{r.jerk, r.duration, r.a_peak, r.v_end, 0.0};
 }
 
+/// Where `ramp` begun at (v0, a0) has covered `length`: its time and state there.
+struct Cut {
+  double t = 0.0;  ///< [s]
+  double v = 0.0;  ///< [mm/s]
+  double a = 0.0;  ///< [mm/s^2]
+};
+Cut cut_at(double v0, double a0, const jerk::Ramp& ramp, double length) noexcept {
+  const jerk::StateRamp sr = as_state_ramp(ramp);
+  const double t = jerk::time_at_distance(v0, a0, sr, length);
+  const jerk::State at = jerk::state_at(v0, a0, sr, t);
+  return Cut{t, at.v, at.a};
+}
+
 /// Duration of a ramp between two velocities dv >= 0 apart with a = 0 at both ends (the
 /// kernel's velocity_ramp from a0 = 0): jerk phases alone up to dv = a^2 / j (peak acceleration
 /// sqrt(dv j)), else with a hold at a.
@@ -407,15 +420,14 @@ bool LookAhead::carry_fits(double v0, double a0, double v_toward, double a, doub
   if (!ends) return false;  // runs beyond what the window knows
   if (!with_cut) return true;
   // The cut at the slot end: the state carried into the next slot.
-  const jerk::StateRamp sr = as_state_ramp(ramp);
+  const Cut cut = cut_at(v0, a0, ramp, front.length);
   out.v_toward = v_toward;
   out.a = a;
   out.d = a;  // a speed-up: its ramp's a_down plays no part
   out.j = j;
-  out.t_cut = jerk::time_at_distance(v0, a0, sr, front.length);
-  const jerk::State at = jerk::state_at(v0, a0, sr, out.t_cut);
-  out.v1 = at.v;
-  out.a1 = at.a;
+  out.t_cut = cut.t;
+  out.v1 = cut.v;
+  out.a1 = cut.a;
   return out.a1 > 0.0 && out.v1 <= std::min(front.cap, front.joint_cap);
 }
 
@@ -501,12 +513,10 @@ bool LookAhead::brake_carry(double v0, PlannedSegment& out, Carry& carry) const 
   const auto cut_fits = [&](double level, Try& t) {
     if (!fits_here(level)) return false;
     const jerk::Ramp brake = jerk::velocity_ramp(level, 0.0, w, a, d, j);
-    const double e = jerk::distance(level, 0.0, brake) - next.length;
-    const jerk::StateRamp sr = as_state_ramp(brake);
-    t.t_cut = jerk::time_at_distance(level, 0.0, sr, e);
-    const jerk::State at = jerk::state_at(level, 0.0, sr, t.t_cut);
-    t.v1 = at.v;
-    t.a1 = at.a;
+    const Cut cut = cut_at(level, 0.0, brake, jerk::distance(level, 0.0, brake) - next.length);
+    t.t_cut = cut.t;
+    t.v1 = cut.v;
+    t.a1 = cut.a;
     return t.a1 < 0.0 && t.v1 <= bound && t.v1 - 0.5 * t.a1 * t.a1 / j >= w;
   };
   const auto highest = [&](double good, double bad, const auto& ok) {
@@ -554,15 +564,13 @@ bool LookAhead::brake_carry(double v0, PlannedSegment& out, Carry& carry) const 
   out.v_brake = w;
   out.t_brake = best.t_cut;
   out.level = level;
-  out.ramp_a = a;
-  out.ramp_d = d;
-  out.ramp_j = j;
   carry.v_toward = w;
   carry.level = level;
   carry.t_cut = best.t_cut;
   carry.a = a;
   carry.d = d;
   carry.j = j;
+  set_ramp_limits(out, carry);
   return true;
 }
 
@@ -576,32 +584,45 @@ PlannedSegment LookAhead::pop() {
   if (empty()) throw std::logic_error("planner: pop from an empty look-ahead window");
   Slot& s = at(0);
   PlannedSegment out;
-  const double v0 = v_committed_;
-  const double a0 = a_committed_;
-  out.v_entry = v0;
-  out.a_entry = a0;
+  out.v_entry = v_committed_;
+  out.a_entry = a_committed_;
   out.a_max = s.a;
   out.d_max = s.d;
   out.j_max = s.j;
-  if (a0 < 0.0) {
-    // The rest of a carried brake: it ends at (v_toward, 0) at this slot's end (its check
-    // when it was committed), a cruise takes up what rounding leaves.
-    out.shape = ProfileShape::brake_end;
-    out.v_toward = carry_.v_toward;
-    out.level = carry_.level;
-    out.t_cut = carry_.t_cut;
-    out.v_exit = carry_.v_toward;
-    out.v_exit_zero = out.v_exit;
-    out.ramp_a = carry_.a;
-    out.ramp_d = carry_.d;
-    out.ramp_j = carry_.j;
-    out.segment = std::move(s.segment);
-    v_committed_ = out.v_exit;
-    a_committed_ = 0.0;
-    head_ = (head_ + 1) % slots_.size();
-    --count_;
-    return out;
-  }
+  if (a_committed_ < 0.0)
+    end_brake(out);
+  else
+    plan_front(out);
+  v_committed_ = out.v_exit;
+  a_committed_ = out.a_exit;
+  head_ = (head_ + 1) % slots_.size();
+  --count_;
+  return out;
+}
+
+void LookAhead::end_brake(PlannedSegment& out) noexcept {
+  // The rest of a carried brake: it ends at (v_toward, 0) at this slot's end (its check
+  // when it was committed), a cruise takes up what rounding leaves.
+  out.shape = ProfileShape::brake_end;
+  out.v_toward = carry_.v_toward;
+  out.level = carry_.level;
+  out.t_cut = carry_.t_cut;
+  out.v_exit = carry_.v_toward;
+  out.v_exit_zero = out.v_exit;
+  set_ramp_limits(out, carry_);
+  out.segment = std::move(at(0).segment);
+}
+
+void LookAhead::set_ramp_limits(PlannedSegment& out, const Carry& c) noexcept {
+  out.ramp_a = c.a;
+  out.ramp_d = c.d;
+  out.ramp_j = c.j;
+}
+
+void LookAhead::plan_front(PlannedSegment& out) noexcept {
+  Slot& s = at(0);
+  const double v0 = out.v_entry;
+  const double a0 = out.a_entry;
   const double reach = jerk::reachable_velocity(v0, a0, s.length, s.a, s.j);
   const double upper = std::min({s.exit_cap, reach, s.cap});
   double exit = 0.0;
@@ -613,17 +634,16 @@ PlannedSegment LookAhead::pop() {
   const bool cut = !plain || (upper == reach && reach < std::min(s.exit_cap, s.cap));
   Carry c;
   bool carried = soft && cut && best_carry(v0, a0, c) && (!plain || c.v1 > exit);
-  if (!plain && !carried) {
+  if (!plain && !carried && a0 > 0.0) {
     // The committed carry's own ramp: it was checked to fit when it was committed.
     const jerk::Ramp ramp =
         jerk::velocity_ramp(v0, a0, carry_.v_toward, carry_.a, carry_.a, carry_.j);
-    if (a0 > 0.0 && jerk::distance(v0, a0, ramp) > s.length) {
+    if (jerk::distance(v0, a0, ramp) > s.length) {
+      const Cut k = cut_at(v0, a0, ramp, s.length);
       c = carry_;
-      const jerk::StateRamp sr = as_state_ramp(ramp);
-      c.t_cut = jerk::time_at_distance(v0, a0, sr, s.length);
-      const jerk::State at = jerk::state_at(v0, a0, sr, c.t_cut);
-      c.v1 = at.v;
-      c.a1 = std::max(at.a, 0.0);
+      c.t_cut = k.t;
+      c.v1 = k.v;
+      c.a1 = std::max(k.a, 0.0);
       carried = true;
     }
   }
@@ -633,25 +653,17 @@ PlannedSegment LookAhead::pop() {
     out.a_exit = c.a1;
     out.v_toward = c.v_toward;
     out.t_cut = c.t_cut;
-    out.ramp_a = c.a;
-    out.ramp_d = c.d;
-    out.ramp_j = c.j;
+    set_ramp_limits(out, c);
     carry_ = c;
-    out.v_exit_zero = out.v_exit;
   } else {
     out.v_exit = exit;
-    out.v_exit_zero = exit;
   }
+  out.v_exit_zero = out.v_exit;
   out.segment = std::move(s.segment);
   // A brake the next slot goes on with is carried through a soft joint too, where that is
   // faster over both than the plan with a = 0 at the joint.
   if (!carried && soft && plain && a0 == 0.0 && exit == s.exit_cap && brake_carry(v0, out, c))
     carry_ = c;
-  v_committed_ = out.v_exit;
-  a_committed_ = out.a_exit;
-  head_ = (head_ + 1) % slots_.size();
-  --count_;
-  return out;
 }
 
 }  // namespace ncsim::planner

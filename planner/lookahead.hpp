@@ -203,6 +203,11 @@ class LookAhead {
   /// carried brake is faster over both slots, fills it (v_exit, a_exit < 0, v_brake, t_brake,
   /// level, limits) and `carry`; false otherwise.
   bool brake_carry(double v0, PlannedSegment& out, Carry& carry) const noexcept;
+  /// pop() for the front slot: after a carried brake, its rest; else the plan with a = 0 at
+  /// the exit, a carried speed-up or a carried brake.
+  void end_brake(PlannedSegment& out) noexcept;
+  void plan_front(PlannedSegment& out) noexcept;
+  static void set_ramp_limits(PlannedSegment& out, const Carry& c) noexcept;
 
   std::vector<Slot> slots_;
   std::size_t head_ = 0;
