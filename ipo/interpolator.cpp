@@ -267,8 +267,8 @@ void PathInterpolator::report_joint(const planner::PlannedSegment& next, double 
   jt.stop = cur_.segment.stop;
   jt.jerk_limited = planner::jerk_limited(prog_in.slope) && planner::jerk_limited(prog_out.slope);
   // The velocity and acceleration are the ones the path arrives with (below the plan's under
-  // an override); a != 0 only where a speed-up is carried through a soft joint (a knee steps
-  // the axis acceleration by a dx' too).
+  // an override); a != 0 only where a ramp is carried through a soft joint (a knee steps the
+  // axis acceleration by a dx' too).
   const double v = v_arrive_;
   const double a = a_arrive_;
   jt.v = v;
@@ -549,9 +549,9 @@ bool PathInterpolator::plan_entry() noexcept {
   // Above 100 % the raised limits can be tighter than the planned ones: fall back to 100 %
   // (the change is retried every cycle).
   if (f > 1.0 && replan(1.0, 0.0, v_arrive_, a_arrive_)) return true;
-  // A speed-up carried through the joint whose acceleration no plan ending at a = 0 can
-  // release within this entry goes on as planned; the change is retried every cycle
-  // (docs/ipo.md "Override and feed hold").
+  // A ramp carried through the joint that no plan ending at a = 0 can take over within this
+  // entry goes on as planned; the change is retried every cycle (docs/ipo.md "Override and
+  // feed hold").
   return a_arrive_ != 0.0 && as_planned && follow();
 }
 
@@ -587,7 +587,9 @@ bool PathInterpolator::replan(double f, double s, double v, double a) noexcept {
   r.level = override_level(override_type_, f, prof_.v_level, lim.v_programmed, cap);
   // Below a carried brake a plan ending at a = 0 takes at most the exit the plan with a = 0
   // at the joint had (the next entry brakes on from there: docs/ipo.md).
-  const double exit_100 = std::min(cur_.v_exit, cur_.v_exit_zero);
+  const double exit_100 = cur_.shape == planner::ProfileShape::carry_down
+                              ? std::min(cur_.v_exit, cur_.v_exit_zero)
+                              : cur_.v_exit;
   r.exit_wanted = override_exit(override_type_, f, exit_100, lim.v_programmed);
   r.exit_cap = exit_100;
   // --- workspace: the cap lowers the level and the exit (never below 0)

@@ -376,7 +376,7 @@ class PathInterpolator {
   bool on_plan_ = true;        ///< plan_ is the look-ahead's 100 % profile itself
   double plan_factor_ = 1.0;   ///< factor plan_ was made for
   double v_arrive_ = 0.0;      ///< path velocity at the end of the previous entry [mm/s]
-  double a_arrive_ = 0.0;      ///< path acceleration there [mm/s^2] (a carried speed-up)
+  double a_arrive_ = 0.0;      ///< path acceleration there [mm/s^2] (a carried ramp)
   bool has_ball_ = false;      ///< cur_ holds a tolerance-ball blend
   bool raised_ready_ = false;  ///< raised_ computed for cur_
   RaisedLimits raised_;        ///< cur_'s limits above 100 %

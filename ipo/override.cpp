@@ -154,8 +154,8 @@ RaisedLimits raised_limits(const planner::PlannedSegment& entry,
 
 double PathPlan::v_exit() const noexcept {
   if (hold) return 0.0;
-  if (profile.t_first < profile.first.time())  // a cut speed-up (the 100 % profile)
-    return planner::profile_at(profile, profile.time()).v;
+  if (profile.t_first < profile.first.time() || profile.t_second < profile.second.time())
+    return planner::profile_at(profile, profile.time()).v;  // a carried ramp, cut at the end
   return profile.second.v_end;
 }
 

@@ -23,8 +23,10 @@
 // where its ramp ends exactly at that entry's end (a = 0 there) and that is faster.
 // STEP slopes (no jerk limit) are planned with j = max(a, d) / T: the acceleration step
 // takes one interpolation cycle.
-// Invariants: 0 <= v_entry <= entry cap, v_exit <= exit cap; the profile of every popped
-// segment fits its length, its cap and its path a, d, j; memory is N segments, allocated once.
+// Invariants: 0 <= v_entry, v_exit <= exit cap with a = 0 there, and a carried state only
+// where the rest of its ramp fits the window (so the window end can always be a stop); the
+// profile of every popped segment fits its length, its cap and its path a, d, j; memory is N
+// segments, allocated once.
 
 #include <cstddef>
 #include <cstdint>
@@ -62,8 +64,8 @@ struct PlannedSegment {
   PreparedSegment segment;
   double v_entry = 0.0;  ///< path velocity at s = 0 [mm/s]
   double v_exit = 0.0;   ///< path velocity at s = L [mm/s]
-  double a_entry = 0.0;  ///< path acceleration at s = 0 [mm/s^2] (> 0 only after a carry)
-  double a_exit = 0.0;   ///< path acceleration at s = L [mm/s^2] (> 0 only: a carried speed-up)
+  double a_entry = 0.0;  ///< path acceleration at s = 0 [mm/s^2] (!= 0 only after a carry)
+  double a_exit = 0.0;   ///< path acceleration at s = L [mm/s^2] (!= 0 only: a carry)
   ProfileShape shape = ProfileShape::plain;
   /// carry_up: the velocity the speed-up heads for; its ramp from (v_entry, a_entry) is cut by
   /// the segment end at t_cut. brake_end: the velocity the carried brake ends at; its ramp
@@ -75,8 +77,8 @@ struct PlannedSegment {
   double v_brake = 0.0;
   double t_brake = 0.0;  ///< [s] (carry_down)
   double level = 0.0;    ///< the brake's start velocity [mm/s] (carry_down, brake_end)
-  /// Highest exit a plan ending at a = 0 may take [mm/s] (the override's plans): v_exit, but
-  /// below a carried brake the exit the plan with a = 0 at the joint had.
+  /// carry_down: the highest exit a plan ending at a = 0 may take [mm/s] (the override's
+  /// plans): the exit the plan with a = 0 at the joint had. Else v_exit.
   double v_exit_zero = 0.0;
   double a_max = 0.0;  ///< path acceleration used [mm/s^2]
   double d_max = 0.0;  ///< path deceleration used [mm/s^2]
@@ -88,7 +90,8 @@ struct PlannedSegment {
 
 /// The velocity profile of a segment over time: the first ramp from (v0, a0) to v_level,
 /// followed for t_first (its whole time, or less where the segment end cuts a carried
-/// speed-up), a cruise at v_level, the second ramp to the exit (a = 0).
+/// speed-up), a cruise at v_level, the second ramp to the exit, followed for t_second (its
+/// whole time, or less where the segment end cuts a carried brake).
 struct SegmentProfile {
   double v0 = 0.0;        ///< velocity at the start [mm/s]
   double a0 = 0.0;        ///< acceleration at the start [mm/s^2]
@@ -103,8 +106,8 @@ struct SegmentProfile {
 };
 
 /// The jerk-limited velocity profile of a planned segment: ramp from (v_entry, a_entry) to the
-/// highest level the length allows (at most the cap), cruise, ramp to v_exit (a = 0); or, for
-/// a carried speed-up, its ramp towards v_toward cut at t_cut.
+/// highest level the length allows (at most the cap), cruise, ramp to v_exit (a = 0); or the
+/// carried ramp its shape names (ProfileShape).
 SegmentProfile profile(const PlannedSegment& planned) noexcept;
 
 /// Path state on a profile.
@@ -121,7 +124,7 @@ PathState profile_at(const SegmentProfile& profile, double t) noexcept;
 
 /// What the forward pass does at soft joints (C2, or knees that carry the acceleration).
 enum class SoftJoints : std::uint8_t {
-  carry,  ///< a speed-up the length cuts goes on through the joint (default)
+  carry,  ///< a speed-up or a brake goes on through the joint where it fits (default)
   zero,   ///< a = 0 at every joint, as at C0/C1 (the NC I rule; for comparisons)
 };
 
@@ -141,7 +144,7 @@ class LookAhead {
   PlannedSegment pop();
   /// Velocity at the end of the last popped segment [mm/s] (entry of the next).
   double v_committed() const noexcept { return v_committed_; }
-  /// Acceleration there [mm/s^2] (> 0 only where a speed-up is carried across a soft joint).
+  /// Acceleration there [mm/s^2] (!= 0 only where a ramp is carried across a soft joint).
   double a_committed() const noexcept { return a_committed_; }
   // --- sync-feed: a path that starts moving (the hand-over from the catch-up, issue 14)
   /// The oldest segment not popped yet (null: the window is empty).
@@ -178,7 +181,7 @@ class LookAhead {
   /// is longer than the slot).
   bool feasible_exit(double v_entry, double a_entry, double v_upper, const Slot& s,
                      double& out) const noexcept;
-  /// A speed-up carried across the slot's end joint (docs/planner.md "Acceleration at joints").
+  /// A ramp carried across the slot's end joint (docs/planner.md "Acceleration at joints").
   struct Carry {
     double v_toward = 0.0;             ///< level the ramp heads for [mm/s]
     double level = 0.0;                ///< a brake: the velocity its ramp starts from [mm/s]
@@ -215,7 +218,7 @@ class LookAhead {
   double t_cycle_ = 0.001;
   SoftJoints soft_ = SoftJoints::carry;
   double v_committed_ = 0.0;
-  double a_committed_ = 0.0;  ///< > 0: a carried speed-up is under way (carry_ below)
+  double a_committed_ = 0.0;  ///< != 0: a carried ramp is under way (carry_ below)
   Carry carry_;               ///< the committed carry (its ramp is the next slot's fallback)
 };
 
