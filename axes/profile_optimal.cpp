@@ -227,120 +227,136 @@ bool finite(const MotionState& s) noexcept {
 // the higher: more distance) T falls from the symmetric x1 = x2 to the triangle's, so x1 is
 // the root of T for a dip z, and z the root of the distance D (both by bisection; no holds:
 // peaks within the limit). Used where no other family takes the duration.
-bool two_peak_from(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
-                   double duration, Profile& out) noexcept {
-  const double dp = target.p - start.p;
-  if (!(dp != 0.0)) return false;
-  const double f = dp > 0.0 ? 1.0 : -1.0;
-  const double v0 = f * start.v;
-  const double a0 = f * start.a;
-  const double v1 = f * target.v;
-  const double d = f * dp;
-  const double j = dyn.j_max;
-  if (v0 < 0.0 || v1 < 0.0 || v1 == v0) return false;
-  const double sigma = v1 > v0 ? 1.0 : -1.0;
-  const double lim = sigma > 0.0 ? dyn.a_max : dyn.d_max;
-  const double alpha0 = sigma * a0;
-  if (alpha0 > lim) return false;
-  // A start pushing against the change (alpha0 < 0) moves v away from v1 first: keep v in
-  // [0, V] and the acceleration within the other limit.
-  if (alpha0 < 0.0) {
-    const double v_turn = v0 - sigma * alpha0 * alpha0 / (2.0 * j);
-    const double other = sigma > 0.0 ? dyn.d_max : dyn.a_max;
-    if (v_turn < 0.0 || v_turn > dyn.v_max || -alpha0 > other) return false;
+class StretchedTwoPeak {
+ public:
+  /// The frame values of the change; false where the shape does not apply.
+  bool set_up(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
+              double duration) noexcept {
+    const double dp = target.p - start.p;
+    if (!(dp != 0.0)) return false;
+    f_ = dp > 0.0 ? 1.0 : -1.0;
+    v0_ = f_ * start.v;
+    a0_ = f_ * start.a;
+    v1_ = f_ * target.v;
+    d_ = f_ * dp;
+    j_ = dyn.j_max;
+    duration_ = duration;
+    if (v0_ < 0.0 || v1_ < 0.0 || v1_ == v0_) return false;
+    sigma_ = v1_ > v0_ ? 1.0 : -1.0;
+    const double lim = sigma_ > 0.0 ? dyn.a_max : dyn.d_max;
+    alpha0_ = sigma_ * a0_;
+    if (alpha0_ > lim) return false;
+    // A start pushing against the change (alpha0 < 0) moves v away from v1 first: keep v in
+    // [0, V] and the acceleration within the other limit.
+    if (alpha0_ < 0.0) {
+      const double v_turn = v0_ - sigma_ * alpha0_ * alpha0_ / (2.0 * j_);
+      const double other = sigma_ > 0.0 ? dyn.d_max : dyn.a_max;
+      if (v_turn < 0.0 || v_turn > dyn.v_max || -alpha0_ > other) return false;
+    }
+    w_ = j_ * std::abs(v1_ - v0_) + 0.5 * alpha0_ * alpha0_;
+    x_tri_ = std::sqrt(w_);
+    lim_ = lim;
+    if (!(x_tri_ > std::max(alpha0_, 0.0)) || x_tri_ > lim) return false;
+    return duration >= (2.0 * x_tri_ - alpha0_) / j_ * (1.0 - 1e-9);  // not below the triangle
   }
-  const double w = j * std::abs(v1 - v0) + 0.5 * alpha0 * alpha0;
-  const double x_tri = std::sqrt(w);
-  if (!(x_tri > std::max(alpha0, 0.0)) || x_tri > lim) return false;
-  if (duration < (2.0 * x_tri - alpha0) / j * (1.0 - 1e-9)) return false;  // below the triangle
-  const auto x2_of = [&](double x1, double z) {
-    return std::sqrt(std::max(0.0, w + z * z - x1 * x1));
-  };
-  const auto time_of = [&](double x1, double z) {
-    return (2.0 * x1 + 2.0 * x2_of(x1, z) - alpha0 - 2.0 * z) / j;
-  };
-  const auto shape = [&](double x1, double z) {
+
+  /// The dip z from 0 (deepest) up to the shallowest still slow enough, by bisection on the
+  /// distance (monotone along that curve: assumed, checked by the bracket); false where the
+  /// time and the distance do not both meet to 1e-9.
+  bool solve(jerk::TwoPeak& tp) const noexcept {
+    if (!(t_eq(0.0) >= duration_)) return false;  // even the deepest dip is too fast
+    double z_lo = 0.0;
+    double z_hi = shallowest_dip();
+    jerk::TwoPeak tp_lo;
+    jerk::TwoPeak tp_hi;
+    double g_lo = gap(z_lo, tp_lo);
+    const double g_hi = gap(z_hi, tp_hi);
+    if (!std::isfinite(g_lo) || !std::isfinite(g_hi) || (g_lo > 0.0) == (g_hi > 0.0)) return false;
+    tp = tp_lo;
+    for (int i = 0; i < 200 && z_hi - z_lo > kEps * z_hi; ++i) {
+      const double mid = 0.5 * (z_lo + z_hi);
+      jerk::TwoPeak t_mid;
+      const double g_mid = gap(mid, t_mid);
+      if (!std::isfinite(g_mid)) return false;
+      ((g_mid > 0.0) == (g_lo > 0.0) ? z_lo : z_hi) = mid;
+      if ((g_mid > 0.0) == (g_lo > 0.0)) g_lo = g_mid;
+      tp = t_mid;
+    }
+    return std::abs(tp.time() - duration_) <= 1e-9 * duration_ &&
+           std::abs(distance(tp) - d_) <= 1e-9 * std::max(d_, 1e-9);
+  }
+
+ private:
+  static constexpr double kEps = 4.0 * std::numeric_limits<double>::epsilon();
+
+  double x2_of(double x1, double z) const noexcept {
+    return std::sqrt(std::max(0.0, w_ + z * z - x1 * x1));
+  }
+  double time_of(double x1, double z) const noexcept {
+    return (2.0 * x1 + 2.0 * x2_of(x1, z) - alpha0_ - 2.0 * z) / j_;
+  }
+  jerk::TwoPeak shape(double x1, double z) const noexcept {
     const double x2 = x2_of(x1, z);
     jerk::TwoPeak tp;
-    tp.jerk = {sigma * j, -sigma * j, sigma * j, -sigma * j};
-    tp.duration = {(x1 - alpha0) / j, (x1 - z) / j, (x2 - z) / j, x2 / j};
-    tp.a_end = {sigma * x1, sigma * z, sigma * x2, 0.0};
-    tp.v_end = v1;
-    tp.sign = f;
+    tp.jerk = {sigma_ * j_, -sigma_ * j_, sigma_ * j_, -sigma_ * j_};
+    tp.duration = {(x1 - alpha0_) / j_, (x1 - z) / j_, (x2 - z) / j_, x2 / j_};
+    tp.a_end = {sigma_ * x1, sigma_ * z, sigma_ * x2, 0.0};
+    tp.v_end = v1_;
+    tp.sign = f_;
     return tp;
-  };
-  const auto dist_of = [&](const jerk::TwoPeak& tp) {
-    jerk::State st{0.0, v0, a0};
+  }
+  double distance(const jerk::TwoPeak& tp) const noexcept {
+    jerk::State st{0.0, v0_, a0_};
     for (std::size_t i = 0; i < 4; ++i) {
       st = jerk::advance(st, tp.jerk[i], tp.duration[i]);
       st.a = tp.a_end[i];
     }
     return st.p;
-  };
-  // x1 on the branch [max(x_eq, alpha0), x_tri] with T(x1) = duration for the dip z; < 0: none.
-  const auto x1_for = [&](double z) {
-    const double x_eq = std::sqrt(0.5 * (w + z * z));
-    double hi = x_tri;
-    double lo = std::max({x_eq, alpha0, z});
-    if (lo > lim || !(time_of(lo, z) >= duration) || time_of(hi, z) > duration) return -1.0;
-    for (int i = 0; i < 200 && hi - lo > 4.0 * std::numeric_limits<double>::epsilon() * hi; ++i) {
+  }
+  /// x1 on the branch [max(x_eq, alpha0), x_tri] with T(x1) = duration for the dip z; < 0:
+  /// none.
+  double x1_for(double z) const noexcept {
+    const double x_eq = std::sqrt(0.5 * (w_ + z * z));
+    double hi = x_tri_;
+    double lo = std::max({x_eq, alpha0_, z});
+    if (lo > lim_ || !(time_of(lo, z) >= duration_) || time_of(hi, z) > duration_) return -1.0;
+    for (int i = 0; i < 200 && hi - lo > kEps * hi; ++i) {
       const double mid = 0.5 * (lo + hi);
-      (time_of(mid, z) >= duration ? lo : hi) = mid;
+      (time_of(mid, z) >= duration_ ? lo : hi) = mid;
     }
     return lo;
-  };
-  // The dip z from 0 (deepest) up to where T(x_eq) = duration (shallowest): the distance
-  // changes monotonically along that curve (assumed; checked by the bracket).
-  const auto g = [&](double z, jerk::TwoPeak& tp) {
+  }
+  /// The distance left over by the shape of dip z (NaN: no x1 takes the duration).
+  double gap(double z, jerk::TwoPeak& tp) const noexcept {
     const double x1 = x1_for(z);
     if (x1 < 0.0) return std::numeric_limits<double>::quiet_NaN();
     tp = shape(x1, z);
-    return dist_of(tp) - d;
-  };
-  // The shallowest dip still slow enough: T at x1 = x_eq falls as z grows (bisection on
-  // [0, x_tri]); none when even z = 0 is too fast.
-  const auto t_eq = [&](double z) {
-    return time_of(std::max({std::sqrt(0.5 * (w + z * z)), alpha0, z}), z);
-  };
-  if (!(t_eq(0.0) >= duration)) return false;
-  double z_lo = 0.0;
-  double z_hi = 0.0;
-  {
+    return distance(tp) - d_;
+  }
+  /// T at x1 = x_eq: it falls as the dip z grows.
+  double t_eq(double z) const noexcept {
+    return time_of(std::max({std::sqrt(0.5 * (w_ + z * z)), alpha0_, z}), z);
+  }
+  /// The shallowest dip still slow enough (bisection on [0, x_tri]).
+  double shallowest_dip() const noexcept {
     double z_ok = 0.0;
-    double z_no = x_tri;
-    for (int i = 0; i < 200 && z_no - z_ok > 4.0 * std::numeric_limits<double>::epsilon() * x_tri;
-         ++i) {
+    double z_no = x_tri_;
+    for (int i = 0; i < 200 && z_no - z_ok > kEps * x_tri_; ++i) {
       const double mid = 0.5 * (z_ok + z_no);
-      (t_eq(mid) >= duration ? z_ok : z_no) = mid;
+      (t_eq(mid) >= duration_ ? z_ok : z_no) = mid;
     }
-    z_hi = z_ok;
+    return z_ok;
   }
-  jerk::TwoPeak tp_lo;
-  jerk::TwoPeak tp_hi;
-  double g_lo = g(z_lo, tp_lo);
-  double g_hi = g(z_hi, tp_hi);
-  if (!std::isfinite(g_lo) || !std::isfinite(g_hi) || (g_lo > 0.0) == (g_hi > 0.0)) return false;
-  jerk::TwoPeak tp = tp_lo;
-  for (int i = 0; i < 200 && z_hi - z_lo > 4.0 * std::numeric_limits<double>::epsilon() * z_hi;
-       ++i) {
-    const double mid = 0.5 * (z_lo + z_hi);
-    jerk::TwoPeak t_mid;
-    const double g_mid = g(mid, t_mid);
-    if (!std::isfinite(g_mid)) return false;
-    if ((g_mid > 0.0) == (g_lo > 0.0)) {
-      z_lo = mid;
-      g_lo = g_mid;
-      tp = t_mid;
-    } else {
-      z_hi = mid;
-      g_hi = g_mid;
-      tp = t_mid;
-    }
-  }
-  if (!(std::abs(tp.time() - duration) <= 1e-9 * duration) ||
-      !(std::abs(dist_of(tp) - d) <= 1e-9 * std::max(d, 1e-9))) {
-    return false;
-  }
+
+  double f_ = 1.0, v0_ = 0.0, a0_ = 0.0, v1_ = 0.0, d_ = 0.0, j_ = 0.0, duration_ = 0.0;
+  double sigma_ = 1.0, alpha0_ = 0.0, lim_ = 0.0, w_ = 0.0, x_tri_ = 0.0;
+};
+
+bool two_peak_from(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
+                   double duration, Profile& out) noexcept {
+  StretchedTwoPeak change;
+  jerk::TwoPeak tp;
+  if (!change.set_up(start, target, dyn, duration) || !change.solve(tp)) return false;
   const MotionState end{target.p, target.v, 0.0};
   detail::ProfileBuilder b(out, start);
   detail::append_two_peak(b, tp);
