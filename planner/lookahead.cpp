@@ -58,6 +58,19 @@ Cut cut_at(double v0, double a0, const jerk::Ramp& ramp, double length) noexcept
   return Cut{t, at.v, at.a};
 }
 
+/// The highest x in [good, bad] with ok(x), ok(good) known true and ok monotone (true below,
+/// false above): `bad` itself when it fits, else bisection to 1e-3 relative (the carries'
+/// targets and levels: not limits, the cut state is exact for whichever is taken).
+template <class Ok>
+double highest_fitting(double good, double bad, const Ok& ok) {
+  if (ok(bad)) return bad;
+  for (int iter = 0; iter < 12 && bad - good > 1e-3 * bad; ++iter) {
+    const double mid = 0.5 * (good + bad);
+    (ok(mid) ? good : bad) = mid;
+  }
+  return good;
+}
+
 /// Duration of a ramp between two velocities dv >= 0 apart with a = 0 at both ends (the
 /// kernel's velocity_ramp from a0 = 0): jerk phases alone up to dv = a^2 / j (peak acceleration
 /// sqrt(dv j)), else with a hold at a.
@@ -465,18 +478,13 @@ bool LookAhead::best_carry(double v0, double a0, Carry& out) const noexcept {
   Carry c;
   const double lowest = lo + 1e-3 * (hi - lo);
   if (!carry_fits(v0, a0, lowest, a, j, c, false)) return false;
-  const auto highest = [&](bool with_cut, double good, double bad) {
-    if (carry_fits(v0, a0, bad, a, j, c, with_cut)) return bad;
-    for (int iter = 0; iter < 12 && bad - good > 1e-3 * bad; ++iter) {
-      const double mid = 0.5 * (good + bad);
-      (carry_fits(v0, a0, mid, a, j, c, with_cut) ? good : bad) = mid;
-    }
-    return good;
+  const auto fits = [&](bool with_cut) {
+    return [&, with_cut](double x) { return carry_fits(v0, a0, x, a, j, c, with_cut); };
   };
-  const double walk = highest(false, lowest, hi);
+  const double walk = highest_fitting(lowest, hi, fits(false));
   if (carry_fits(v0, a0, walk, a, j, out, true)) return true;
   if (!carry_fits(v0, a0, lowest, a, j, out, true)) return false;
-  return carry_fits(v0, a0, highest(true, lowest, walk), a, j, out, true) ||
+  return carry_fits(v0, a0, highest_fitting(lowest, walk, fits(true)), a, j, out, true) ||
          carry_fits(v0, a0, lowest, a, j, out, true);
 }
 
@@ -504,38 +512,34 @@ bool LookAhead::brake_carry(double v0, PlannedSegment& out, Carry& carry) const 
   struct Try {
     double t_cut = 0.0, v1 = 0.0, a1 = 0.0;
   };
-  const auto fits_here = [&](double level) {
+  // The brake's part in this slot, or <= 0 where the level does not fit here.
+  const auto part_here = [&](double level, const jerk::Ramp& brake) {
     const jerk::Ramp up = jerk::velocity_ramp(v0, 0.0, level, a, d, j);
-    const jerk::Ramp brake = jerk::velocity_ramp(level, 0.0, w, a, d, j);
-    const double e = jerk::distance(level, 0.0, brake) - next.length;  // its part here
-    return e > 0.0 && jerk::distance(v0, 0.0, up) + e <= front.length * (1.0 + 1e-12);
+    const double e = jerk::distance(level, 0.0, brake) - next.length;
+    return e > 0.0 && jerk::distance(v0, 0.0, up) + e <= front.length * (1.0 + 1e-12) ? e : 0.0;
+  };
+  const auto fits_here = [&](double level) {
+    return part_here(level, jerk::velocity_ramp(level, 0.0, w, a, d, j)) > 0.0;
   };
   const auto cut_fits = [&](double level, Try& t) {
-    if (!fits_here(level)) return false;
     const jerk::Ramp brake = jerk::velocity_ramp(level, 0.0, w, a, d, j);
-    const Cut cut = cut_at(level, 0.0, brake, jerk::distance(level, 0.0, brake) - next.length);
+    const double e = part_here(level, brake);
+    if (!(e > 0.0)) return false;
+    const Cut cut = cut_at(level, 0.0, brake, e);
     t.t_cut = cut.t;
     t.v1 = cut.v;
     t.a1 = cut.a;
     return t.a1 < 0.0 && t.v1 <= bound && t.v1 - 0.5 * t.a1 * t.a1 / j >= w;
   };
-  const auto highest = [&](double good, double bad, const auto& ok) {
-    if (ok(bad)) return bad;
-    for (int iter = 0; iter < 12 && bad - good > 1e-3 * bad; ++iter) {
-      const double mid = 0.5 * (good + bad);
-      (ok(mid) ? good : bad) = mid;
-    }
-    return good;
-  };
   const double lo = std::max(v0, w);
   const double hi = std::max(front.cap, lo);
   Try best;
   if (!fits_here(lo)) return false;
-  double level = highest(lo, hi, fits_here);
+  double level = highest_fitting(lo, hi, fits_here);
   if (!cut_fits(level, best)) {
     if (!cut_fits(lo, best)) return false;
     Try t;
-    level = highest(lo, level, [&](double x) { return cut_fits(x, t); });
+    level = highest_fitting(lo, level, [&](double x) { return cut_fits(x, t); });
     if (!cut_fits(level, best)) return false;
   }
   if (!(best.v1 > exit_zero)) return false;  // no faster than a = 0 at the joint

@@ -105,6 +105,17 @@ void check_profile(const PlannedSegment& ps, std::span<const AxisLimits> ax) {
   }
 }
 
+/// Three axes with random v, a, d, j (log-uniform over the property tests' ranges).
+template <class Range>
+std::array<AxisLimits, 3> random_axes(Range& range) {
+  std::array<AxisLimits, 3> ax{};
+  for (auto& a : ax) {
+    a = axis(range(20, 500), range(200, 1e4), range(1e4, 1e6));
+    a.d_max = range(200, 1e4);
+  }
+  return ax;
+}
+
 /// Sum of the planned profiles' durations [s].
 double total_time(const std::vector<PlannedSegment>& planned) {
   double t = 0.0;
@@ -320,11 +331,7 @@ TEST_CASE("property: carried speed-ups and brakes keep every limit, never slower
   std::size_t brakes_carried = 0;
   std::size_t faster = 0;
   for (int run = 0; run < 60; ++run) {
-    std::array<AxisLimits, 3> ax{};
-    for (auto& a : ax) {
-      a = axis(range(20, 500), range(200, 1e4), range(1e4, 1e6));
-      a.d_max = range(200, 1e4);
-    }
+    const std::array<AxisLimits, 3> ax = random_axes(range);
     ChannelLimits ch;
     ch.t_cycle = range(0.00025, 0.004);
     std::vector<Move> moves;
@@ -371,11 +378,7 @@ TEST_CASE("property: random lines and arcs with random limits never exceed an ax
   std::size_t chained = 0;
   std::size_t carried = 0;  // joints passed with a carried speed-up
   for (int run = 0; run < 30; ++run) {
-    std::array<AxisLimits, 3> ax{};
-    for (auto& a : ax) {
-      a = axis(range(20, 500), range(200, 1e4), range(1e4, 1e6));
-      a.d_max = range(200, 1e4);
-    }
+    const std::array<AxisLimits, 3> ax = random_axes(range);
     ChannelLimits ch;
     ch.t_cycle = range(0.00025, 0.004);
     std::vector<Move> moves;
