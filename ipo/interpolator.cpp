@@ -585,11 +585,11 @@ bool PathInterpolator::replan(double f, double s, double v, double a) noexcept {
     r.j = raised_.j;
   }
   r.level = override_level(override_type_, f, prof_.v_level, lim.v_programmed, cap);
-  // Below a carried brake a plan ending at a = 0 takes at most the exit the plan with a = 0
-  // at the joint had (the next entry brakes on from there: docs/ipo.md).
-  const double exit_100 = cur_.shape == planner::ProfileShape::carry_down
-                              ? std::min(cur_.v_exit, cur_.v_exit_zero)
-                              : cur_.v_exit;
+  // Below a carried brake a plan ending at a = 0 takes the exit the plan with a = 0 at the
+  // joint had (the next entry brakes on from there: docs/ipo.md).
+  const bool brake_on = cur_.shape == planner::ProfileShape::carry_down ||
+                        cur_.shape == planner::ProfileShape::brake_through;
+  const double exit_100 = brake_on ? cur_.v_exit_zero : cur_.v_exit;
   r.exit_wanted = override_exit(override_type_, f, exit_100, lim.v_programmed);
   r.exit_cap = exit_100;
   // --- workspace: the cap lowers the level and the exit (never below 0)

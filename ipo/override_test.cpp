@@ -470,14 +470,16 @@ TEST_CASE("property: random override and hold sequences keep limits and contour,
   CHECK(held_runs > 5);
 }
 
-TEST_CASE("carried speed-ups under random override and hold changes keep limits and complete") {
+TEST_CASE("carried speed-ups and brakes under random override and hold changes keep limits") {
   // Straight runs of short collinear lines at random feeds: soft joints between different
-  // caps, where the 100 % plan carries a speed-up (planner/lookahead.hpp). An override plan
-  // ends at a = 0 below the 100 % exit, from which the next entry is planned again
-  // (docs/ipo.md "Override and feed hold").
+  // caps, where the 100 % plan carries a speed-up or a brake, through one joint or several
+  // (planner/lookahead.hpp). An override plan ends at a = 0 below the 100 % exit (below a
+  // carried brake: the exit with a = 0 at the joint), from which the next entry is planned
+  // again (docs/ipo.md "Override and feed hold"); every run completes.
   std::mt19937_64 rng(1414);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   int carried_runs = 0;
+  int brake_on_runs = 0;  // runs where a brake crosses two joints in a row (brake_through)
   for (int trial = 0; trial < 80; ++trial) {
     Config cfg;
     cfg.axes = random_limits(rng);
@@ -499,6 +501,7 @@ TEST_CASE("carried speed-ups under random override and hold changes keep limits 
       Recorder rec(cfg);
       double a_at_joint = 0.0;  // largest path acceleration in a cycle that changed the line
       std::uint32_t line_before = 0;
+      bool brake_on = false;
       RandomOperator op{std::mt19937_64(seed), cfg.override_type};
       const Status st = run(cfg, items, rec, [&](PathInterpolator& ipo, std::size_t k) {
         if (pass == 1) op(ipo, k);
@@ -509,6 +512,8 @@ TEST_CASE("carried speed-ups under random override and hold changes keep limits 
         const Cycle& c = ipo.cycle();
         if (c.line != line_before && line_before != 0) a_at_joint = std::max(a_at_joint, c.path.a);
         line_before = c.line;
+        const planner::PlannedSegment* e = ipo.active_entry();
+        brake_on = brake_on || (e && e->shape == planner::ProfileShape::brake_through);
       });
       CAPTURE(trial);
       CAPTURE(pass);
@@ -517,9 +522,12 @@ TEST_CASE("carried speed-ups under random override and hold changes keep limits 
       for (std::size_t i = 0; i < 2; ++i)
         CHECK(rec.last.x[i] == p[i]);
       if (pass == 0 && a_at_joint > 0.3 * cfg.axes[0].a_max) ++carried_runs;
+      if (pass == 0 && brake_on) ++brake_on_runs;
     }
   }
+  MESSAGE(carried_runs, " runs carry a speed-up, ", brake_on_runs, " a brake across two joints");
   CHECK(carried_runs > 20);
+  CHECK(brake_on_runs > 10);
 }
 
 }  // namespace

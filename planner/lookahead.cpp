@@ -3,6 +3,7 @@
 #include "planner/lookahead.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -56,6 +57,30 @@ Cut cut_at(double v0, double a0, const jerk::Ramp& ramp, double length) noexcept
   const double t = jerk::time_at_distance(v0, a0, sr, length);
   const jerk::State at = jerk::state_at(v0, a0, sr, t);
   return Cut{t, at.v, at.a};
+}
+
+/// Distance a brake `ramp` begun at (level, 0) covers until its velocity has fallen to v, for
+/// v in (ramp.v_end, level) (0 above level, the whole ramp below v_end): the phase that passes
+/// v solved in closed form (the cut checks at the joints a brake crosses, without inverting
+/// the distance).
+double distance_to_velocity(double level, const jerk::Ramp& ramp, double v) noexcept {
+  jerk::State st{0.0, level, 0.0};
+  if (!(v < level)) return 0.0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double jk = ramp.jerk[i];
+    const jerk::State end = jerk::advance(st, jk, ramp.duration[i]);
+    if (end.v <= v) {
+      // v(t) = st.v + st.a t + jk t^2 / 2 falls through v: the first root, in the form that
+      // does not cancel (dv = st.v - v > 0, st.a <= 0).
+      const double dv = st.v - v;
+      const double disc = std::max(0.0, st.a * st.a - 2.0 * jk * dv);
+      const double t = 2.0 * dv / (-st.a + std::sqrt(disc));
+      return jerk::advance(st, jk, std::min(t, ramp.duration[i])).p;
+    }
+    st = end;
+    st.a = i < 2 ? ramp.a_peak : 0.0;
+  }
+  return st.p;
 }
 
 /// The highest x in [good, bad] with ok(x), ok(good) known true and ok monotone (true below,
@@ -241,6 +266,13 @@ SegmentProfile profile(const PlannedSegment& planned) noexcept {
     if (planned.v_toward > 0.0)
       out.t_cruise = std::max(0.0, length - jerk::distance(v0, a0, out.first)) / planned.v_toward;
     out.second.v_end = planned.v_toward;  // no second ramp: the velocity stays
+    out.v_level = v0;
+    return out;
+  }
+  if (planned.shape == ProfileShape::brake_through) {  // a carried brake between two cuts
+    const jerk::Ramp brake = jerk::velocity_ramp(planned.level, 0.0, planned.v_toward, a, d, j);
+    out.first = ramp_after(brake, planned.t_cut, a0);
+    out.t_first = std::clamp(planned.t_brake - planned.t_cut, 0.0, out.first.time());
     out.v_level = v0;
     return out;
   }
@@ -491,89 +523,140 @@ bool LookAhead::best_carry(double v0, double a0, Carry& out) const noexcept {
 bool LookAhead::brake_carry(double v0, PlannedSegment& out, Carry& carry) const noexcept {
   const double exit_zero = out.v_exit;
   const Slot& front = slots_[head_];
-  const Slot& next = slots_[(head_ + 1) % slots_.size()];
-  // The next slot brakes on to its exit cap (with a = 0 at its end, where the backward pass's
-  // caps hold); the joint between them takes at most its cap and the next slot's.
-  const double w = std::min(next.exit_cap, next.cap);
-  const double bound = std::min(front.joint_cap, next.cap);
-  if (!(w < exit_zero) || !(exit_zero < bound)) return false;
-  // A plan ending at a = 0 at the joint (the override's, up to exit_zero) must leave the next
-  // slot its brake to w. The backward pass's exit cap can be above the next slot's entry
-  // velocity for w (that velocity of a short jerk-limited brake is not monotone in the exit:
-  // "Look-ahead"; the next pop then brakes to a lower exit): no carry there.
-  if (exit_zero > jerk::entry_velocity_for_exit(w, next.length, next.d, next.j)) return false;
-  const double a = std::min(front.a, next.a);
-  const double d = std::min(front.d, next.d);
-  const double j = std::min(front.j, next.j);
-  // For a level: the brake towards w ending at the next slot's end, cut at this one's. Its
-  // part here and its velocity at the joint grow with the level: the fitting levels are
-  // [lo, highest]. The highest by the distance alone first (cheap), to 1e-3 relative (a
-  // target: the cut state is exact for whichever level is taken), then the cut's checks.
+  const auto slot = [&](std::size_t k) -> const Slot& {
+    return slots_[(head_ + k) % slots_.size()];
+  };
+  // Nothing to gain where the joint's caps bind the plan with a = 0 there.
+  if (!(exit_zero < std::min(front.joint_cap, slot(1).cap))) return false;
+  // For m = 1, 2, ...: the brake ends at the end of slot m, at its exit cap w (with a = 0,
+  // where the backward pass's caps hold), crossing joints 0 .. m-1 (joint k ends slot k)
+  // below bounds[k], each within that joint's cap and the next slot's. The plan with a = 0 at
+  // every joint brakes from exit cap to exit cap over each of these slots; after slot m both
+  // go on from (w, 0), so their times over slots 0 .. m compare the two.
   struct Try {
     double t_cut = 0.0, v1 = 0.0, a1 = 0.0;
   };
-  // The brake's part in this slot, or <= 0 where the level does not fit here.
-  const auto part_here = [&](double level, const jerk::Ramp& brake) {
-    const jerk::Ramp up = jerk::velocity_ramp(v0, 0.0, level, a, d, j);
-    const double e = jerk::distance(level, 0.0, brake) - next.length;
-    return e > 0.0 && jerk::distance(v0, 0.0, up) + e <= front.length * (1.0 + 1e-12) ? e : 0.0;
-  };
-  const auto fits_here = [&](double level) {
-    return part_here(level, jerk::velocity_ramp(level, 0.0, w, a, d, j)) > 0.0;
-  };
-  const auto cut_fits = [&](double level, Try& t) {
+  struct Best {
+    Try cut;
+    double level = 0.0, w = 0.0, e = 0.0, a = 0.0, d = 0.0, j = 0.0, gain = 0.0;
+    std::size_t m = 0;
+  } best;
+  std::array<double, kMaxBrakeJoints> bounds{};
+  double a = front.a, d = front.d, j = front.j;
+  double z = exit_zero;   // the plan with a = 0 at the joints: velocity at the last one
+  double t_zero = 0.0;    // the same, over slots 1 .. m
+  double t_front = -1.0;  // the front slot's time with a = 0 at joint 0 (when first needed)
+  double covered = 0.0;   // the brake's distance after joint 0
+  for (std::size_t m = 1; m <= kMaxBrakeJoints && m < count_; ++m) {
+    const Slot& prev = slot(m - 1);
+    const Slot& sm = slot(m);
+    if (m > 1 && (prev.segment.stop != StopReason::none || prev.segment.a_zero_at_end)) break;
+    bounds[m - 1] = std::min(prev.joint_cap, sm.cap);
+    // A joint whose caps bind the plan with a = 0 there is not passed faster braking: the
+    // brake ends at it (as at joint 0 above).
+    if (m > 1 && !(z < bounds[m - 1])) break;
+    const double w = std::min(sm.exit_cap, sm.cap);
+    // Only where the plan with a = 0 at the joints brakes over each slot crossed, and a plan
+    // ending at a = 0 at a joint (the override's, up to z: PlannedSegment::v_exit_zero)
+    // leaves slot m its brake to w. The backward pass's exit cap can lie above the entry
+    // velocity for w (that velocity of a short jerk-limited brake is not monotone in the
+    // exit: "Look-ahead"; the slot's pop then brakes to a lower exit): no carry there.
+    if (!(w < z) || z > jerk::entry_velocity_for_exit(w, sm.length, sm.d, sm.j)) break;
+    const jerk::Ramp zero = jerk::velocity_ramp(z, 0.0, w, sm.a, sm.d, sm.j);
+    t_zero +=
+        zero.time() + (w > 0.0 ? std::max(0.0, sm.length - jerk::distance(z, 0.0, zero)) / w : 0.0);
+    z = w;
+    a = std::min(a, sm.a);
+    d = std::min(d, sm.d);
+    j = std::min(j, sm.j);
+    covered += sm.length;
+    // For a level: the brake towards w ending at slot m's end; its part in the front slot
+    // (e > 0), or 0 where the level does not fit there. Its part here and its velocity at
+    // every joint grow with the level: the fitting levels are [lo, highest]. The highest by
+    // the distance alone first (cheap), to 1e-3 relative (a target: the cut state is exact
+    // for whichever level is taken), then the cuts' checks.
+    const auto part_here = [&](double level, const jerk::Ramp& brake) {
+      const jerk::Ramp up = jerk::velocity_ramp(v0, 0.0, level, a, d, j);
+      const double e = jerk::distance(level, 0.0, brake) - covered;
+      return e > 0.0 && jerk::distance(v0, 0.0, up) + e <= front.length * (1.0 + 1e-12) ? e : 0.0;
+    };
+    const auto fits_here = [&](double level) {
+      return part_here(level, jerk::velocity_ramp(level, 0.0, w, a, d, j)) > 0.0;
+    };
+    // The same in closed form (ramps_distance_model: equal to the kernel's distances up to
+    // rounding): the highest level by bisection on it (1e-3 relative), then the kernel's check.
+    const auto model_fits = [&](double level) {
+      return ramps_distance_model(v0, level, w, a, d, j) - covered <= front.length;
+    };
+    // Every joint the brake crosses lies inside its ramp (a < 0 there, and a release from the
+    // state there ends at or above w); its velocity there is within the joint's bound where
+    // the ramp passes the bound before it (distance_to_velocity: no inversion of the
+    // distance). The distances are summed in the order through_brake() sums them.
+    const auto cuts_fit = [&](double level) {
+      const jerk::Ramp brake = jerk::velocity_ramp(level, 0.0, w, a, d, j);
+      double s = part_here(level, brake);
+      if (!(s > 0.0)) return false;
+      for (std::size_t k = 0; k < m; ++k) {
+        if (k > 0) s += slot(k).length;
+        if (bounds[k] < level && s < distance_to_velocity(level, brake, bounds[k]) * (1.0 + 1e-12))
+          return false;
+      }
+      return true;
+    };
+    // The brake must begin before the joint (e > 0): from just above the level whose brake
+    // to w is as long as the slots after joint 0 (the kernel's inverse; its distance grows
+    // with the level).
+    const double hi = std::max(front.cap, std::max(v0, w));
+    double lo = std::max(v0, w);
+    if (!fits_here(lo)) {
+      const double exact = jerk::entry_velocity_for_exit(w, covered, d, j);
+      lo = std::max(lo, exact + 1e-9 * exact);
+      if (!(lo < hi) || !fits_here(lo)) continue;
+    }
+    double level = highest_fitting(lo, hi, model_fits);
+    if (!fits_here(level)) level = highest_fitting(lo, level, fits_here);
+    if (!cuts_fit(level)) {
+      if (!cuts_fit(lo)) continue;
+      level = highest_fitting(lo, level, cuts_fit);
+    }
+    // The state committed at joint 0, checked on the cut itself.
     const jerk::Ramp brake = jerk::velocity_ramp(level, 0.0, w, a, d, j);
     const double e = part_here(level, brake);
-    if (!(e > 0.0)) return false;
     const Cut cut = cut_at(level, 0.0, brake, e);
-    t.t_cut = cut.t;
-    t.v1 = cut.v;
-    t.a1 = cut.a;
-    return t.a1 < 0.0 && t.v1 <= bound && t.v1 - 0.5 * t.a1 * t.a1 / j >= w;
-  };
-  const double lo = std::max(v0, w);
-  const double hi = std::max(front.cap, lo);
-  Try best;
-  if (!fits_here(lo)) return false;
-  double level = highest_fitting(lo, hi, fits_here);
-  if (!cut_fits(level, best)) {
-    if (!cut_fits(lo, best)) return false;
-    Try t;
-    level = highest_fitting(lo, level, [&](double x) { return cut_fits(x, t); });
-    if (!cut_fits(level, best)) return false;
+    const Try t{cut.t, cut.v, cut.a};
+    if (!(e > 0.0 && t.a1 < 0.0 && t.v1 <= bounds[0] && t.v1 - 0.5 * t.a1 * t.a1 / j >= w))
+      continue;
+    if (!(t.v1 > exit_zero)) continue;  // joint 0 no faster than with a = 0 there
+    PlannedSegment tried = out;
+    tried.shape = ProfileShape::carry_down;
+    tried.v_exit = t.v1;
+    tried.a_exit = t.a1;
+    tried.v_brake = w;
+    tried.t_brake = t.t_cut;
+    tried.level = level;
+    tried.ramp_a = a;
+    tried.ramp_d = d;
+    tried.ramp_j = j;
+    if (t_front < 0.0) t_front = profile(out).time();
+    const double gain = t_front + t_zero - (profile(tried).time() + (brake.time() - t.t_cut));
+    if (gain > best.gain) best = Best{t, level, w, e, a, d, j, gain, m};
   }
-  if (!(best.v1 > exit_zero)) return false;  // no faster than a = 0 at the joint
-  // Faster over both slots than a = 0 at the joint? (The next slot brakes from exit_zero over
-  // its whole length there: exit_zero is its entry cap.)
-  const jerk::Ramp brake = jerk::velocity_ramp(level, 0.0, w, a, d, j);
-  const jerk::Ramp next_zero = jerk::velocity_ramp(exit_zero, 0.0, w, next.a, next.d, next.j);
-  const double t_zero =
-      profile(out).time() + next_zero.time() +
-      (w > 0.0 ? std::max(0.0, next.length - jerk::distance(exit_zero, 0.0, next_zero)) / w : 0.0);
-  PlannedSegment tried = out;
-  tried.shape = ProfileShape::carry_down;
-  tried.v_exit = best.v1;
-  tried.a_exit = best.a1;
-  tried.v_brake = w;
-  tried.t_brake = best.t_cut;
-  tried.level = level;
-  tried.ramp_a = a;
-  tried.ramp_d = d;
-  tried.ramp_j = j;
-  if (!(profile(tried).time() + (brake.time() - best.t_cut) < t_zero)) return false;
+  if (best.m == 0) return false;
   out.shape = ProfileShape::carry_down;
   out.v_exit_zero = exit_zero;
-  out.v_exit = best.v1;
-  out.a_exit = best.a1;
-  out.v_brake = w;
-  out.t_brake = best.t_cut;
-  out.level = level;
-  carry.v_toward = w;
-  carry.level = level;
-  carry.t_cut = best.t_cut;
-  carry.a = a;
-  carry.d = d;
-  carry.j = j;
+  out.v_exit = best.cut.v1;
+  out.a_exit = best.cut.a1;
+  out.v_brake = best.w;
+  out.t_brake = best.cut.t_cut;
+  out.level = best.level;
+  carry.v_toward = best.w;
+  carry.level = best.level;
+  carry.t_cut = best.cut.t_cut;
+  carry.s_cut = best.e;
+  carry.joints = best.m - 1;
+  carry.a = best.a;
+  carry.d = best.d;
+  carry.j = best.j;
   set_ramp_limits(out, carry);
   return true;
 }
@@ -593,7 +676,9 @@ PlannedSegment LookAhead::pop() {
   out.a_max = s.a;
   out.d_max = s.d;
   out.j_max = s.j;
-  if (a_committed_ < 0.0)
+  if (a_committed_ < 0.0 && carry_.joints > 0)
+    through_brake(out);
+  else if (a_committed_ < 0.0)
     end_brake(out);
   else
     plan_front(out);
@@ -614,6 +699,28 @@ void LookAhead::end_brake(PlannedSegment& out) noexcept {
   out.v_exit = carry_.v_toward;
   out.v_exit_zero = out.v_exit;
   set_ramp_limits(out, carry_);
+  out.segment = std::move(at(0).segment);
+}
+
+void LookAhead::through_brake(PlannedSegment& out) noexcept {
+  // A carried brake that crosses this slot's end joint too: its part up to the next cut (the
+  // distances summed as brake_carry() checked them, so the cut is the one checked).
+  const Slot& s = at(0);
+  const jerk::Ramp brake =
+      jerk::velocity_ramp(carry_.level, 0.0, carry_.v_toward, carry_.a, carry_.d, carry_.j);
+  carry_.s_cut += s.length;
+  const Cut cut = cut_at(carry_.level, 0.0, brake, carry_.s_cut);
+  out.shape = ProfileShape::brake_through;
+  out.v_toward = carry_.v_toward;
+  out.level = carry_.level;
+  out.t_cut = carry_.t_cut;
+  out.t_brake = cut.t;
+  out.v_exit = cut.v;
+  out.a_exit = cut.a;
+  out.v_exit_zero = s.exit_cap;
+  set_ramp_limits(out, carry_);
+  carry_.t_cut = cut.t;
+  --carry_.joints;
   out.segment = std::move(at(0).segment);
 }
 

@@ -57,6 +57,9 @@ enum class ProfileShape : std::uint8_t {
   carry_up,    ///< the first ramp towards v_toward, cut at t_cut (a speed-up carried)
   brake_end,   ///< the rest of a carried brake towards v_toward, then a cruise at it
   carry_down,  ///< ramp to `level`, cruise, brake towards v_brake cut at t_brake
+  /// a carried brake towards v_toward that runs on: its ramp from `level` between the cuts
+  /// at t_cut (entry) and t_brake (exit), a < 0 at both ends
+  brake_through,
 };
 
 /// A segment with its planned joint velocities.
@@ -68,17 +71,17 @@ struct PlannedSegment {
   double a_exit = 0.0;   ///< path acceleration at s = L [mm/s^2] (!= 0 only: a carry)
   ProfileShape shape = ProfileShape::plain;
   /// carry_up: the velocity the speed-up heads for; its ramp from (v_entry, a_entry) is cut by
-  /// the segment end at t_cut. brake_end: the velocity the carried brake ends at; its ramp
-  /// from `level` (a = 0) was cut at t_cut by the previous segment's end.
+  /// the segment end at t_cut. brake_end, brake_through: the velocity the carried brake ends
+  /// at; its ramp from `level` (a = 0) was cut at t_cut by the previous segment's end.
   double v_toward = 0.0;
-  double t_cut = 0.0;  ///< time of the cut [s] (carry_up, brake_end)
-  /// carry_down: the velocity the brake from `level` heads for in the next segment; its ramp
+  double t_cut = 0.0;  ///< time of the cut [s] (carry_up, brake_end, brake_through)
+  /// carry_down: the velocity the brake from `level` heads for in a later segment; its ramp
   /// is cut by the segment end at t_brake.
   double v_brake = 0.0;
-  double t_brake = 0.0;  ///< [s] (carry_down)
-  double level = 0.0;    ///< the brake's start velocity [mm/s] (carry_down, brake_end)
-  /// carry_down: the highest exit a plan ending at a = 0 may take [mm/s] (the override's
-  /// plans): the exit the plan with a = 0 at the joint had. Else v_exit.
+  double t_brake = 0.0;  ///< [s] (carry_down; brake_through: the cut at this segment's end)
+  double level = 0.0;    ///< the brake's start velocity [mm/s] (carry_down, brake_*)
+  /// carry_down, brake_through: the highest exit a plan ending at a = 0 may take [mm/s] (the
+  /// override's plans): the exit the plan with a = 0 at the joint had. Else v_exit.
   double v_exit_zero = 0.0;
   double a_max = 0.0;  ///< path acceleration used [mm/s^2]
   double d_max = 0.0;  ///< path deceleration used [mm/s^2]
@@ -188,7 +191,13 @@ class LookAhead {
     double a = 0.0, d = 0.0, j = 0.0;  ///< the ramp's limits (the smallest of the slots it spans)
     double t_cut = 0.0;                ///< time of the cut at the slot end [s]
     double v1 = 0.0, a1 = 0.0;         ///< state at the cut
+    /// A brake: its distance from `level` to the cut [mm], and the joints it still crosses
+    /// after the next slot's end (0: it ends there).
+    double s_cut = 0.0;
+    std::size_t joints = 0;
   };
+  /// At most this many joints one carried brake crosses (its checks cost one cut per joint).
+  static constexpr std::size_t kMaxBrakeJoints = 8;
   /// The ramp from (v0, a0) towards v_toward under a, j, cut at the end of the front slot:
   /// true when it is cut there (does not end inside the slot) and every slot it runs on can
   /// take it: caps, joint caps and soft joints up to where it ends, and from there the window's
@@ -200,15 +209,17 @@ class LookAhead {
   /// limits of the slots it spans. False when none fits.
   bool best_carry(double v0, double a0, Carry& out) const noexcept;
   /// A brake carried through the front slot's end joint from (v0, 0): ramp to a level, cruise,
-  /// and the brake towards the next slot's exit cap that ends exactly at the next slot's end,
-  /// cut at this one's; the highest level whose brake passes the joint within its caps.
-  /// `out` is the front slot's plan with a = 0 at the joint (its segment moved in); where the
-  /// carried brake is faster over both slots, fills it (v_exit, a_exit < 0, v_brake, t_brake,
-  /// level, limits) and `carry`; false otherwise.
+  /// and the brake towards the exit cap of a later slot m (1 <= m <= kMaxBrakeJoints) that
+  /// ends exactly at that slot's end, cut at this one's; per m the highest level whose brake
+  /// passes every joint it crosses within its caps. `out` is the front slot's plan with a = 0
+  /// at the joint (its segment moved in); where a carried brake is faster over the slots it
+  /// spans, the fastest m fills it (v_exit, a_exit < 0, v_brake, t_brake, level, limits) and
+  /// `carry`; false otherwise.
   bool brake_carry(double v0, PlannedSegment& out, Carry& carry) const noexcept;
-  /// pop() for the front slot: after a carried brake, its rest; else the plan with a = 0 at
-  /// the exit, a carried speed-up or a carried brake.
+  /// pop() for the front slot: after a carried brake, its rest or its part up to the next
+  /// cut; else the plan with a = 0 at the exit, a carried speed-up or a carried brake.
   void end_brake(PlannedSegment& out) noexcept;
+  void through_brake(PlannedSegment& out) noexcept;
   void plan_front(PlannedSegment& out) noexcept;
   static void set_ramp_limits(PlannedSegment& out, const Carry& c) noexcept;
 
