@@ -494,7 +494,10 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
 
 namespace {
 
-/// Writes the CSV rows: buffered, numbers by std::to_chars.
+/// Writes the CSV rows: buffered, numbers by std::to_chars. With --every N the rows of every Nth
+/// cycle, and the last cycle of the run whatever its index (`write_last()`): the program end, the
+/// last good cycle before a run-time error or the scenario's stop, so the CSV ends where the run
+/// did (issue 12: "up to the stop ... never silently cut").
 class CsvSink final : public ipo::Sink {
  public:
   CsvSink(std::FILE* f, std::size_t axes, std::uint64_t every, bool detail)
@@ -503,44 +506,16 @@ class CsvSink final : public ipo::Sink {
   }
   void on_joint(const ipo::Joint&) override {}
   void on_cycle(const ipo::Cycle& c) override {
-    if (c.index % every_ != 0) return;
-    append_num(buf_, c.t);
-    buf_ += ',';
-    buf_ += std::to_string(c.line);
-    // The machine axes' setpoints (the channel's; under #TRAFO the joints, not the TCP).
-    for (std::size_t i = 0; i < axes_; ++i) {
-      buf_ += ',';
-      append_num(buf_, set_ != nullptr ? (*set_)[i].p : c.x[i]);
+    capture(c);
+    if (c.index % every_ != 0) {
+      pending_ = true;
+      return;
     }
-    if (detail_) {
-      for (std::size_t i = 0; i < axes_; ++i) {
-        buf_ += ',';
-        append_num(buf_, set_ != nullptr ? (*set_)[i].v : c.v[i]);
-        buf_ += ',';
-        append_num(buf_, set_ != nullptr ? (*set_)[i].a : c.a[i]);
-      }
-      buf_ += ',';
-      append_num(buf_, c.path.v);
-      buf_ += ',';
-      append_num(buf_, c.feed);
-      for (std::size_t i = 0; i < axes_; ++i) {
-        buf_ += ',';
-        append_num(buf_, axes_state_ != nullptr ? axes_state_->following_error[i] : 0.0);
-      }
-      if (conveyor_ != nullptr) {  // the conveyor display variables (seed 004 §6)
-        // --- line: with synchro_lag (Channel::master_display, ipo/synchro_lag.hpp)
-        const ipo::MasterDisplay d = conveyor_->master_display();
-        for (const double v :
-             {d.current_pos_master, d.current_v_master, d.current_a_master, d.pos_master_comp,
-              d.v_master_comp, d.a_master_comp, d.synchro_lag}) {
-          buf_ += ',';
-          append_num(buf_, v);
-        }
-      }
-    }
-    buf_ += '\n';
-    ++rows_;
-    if (buf_.size() >= kFlushAt) flush();
+    write_row();
+  }
+  /// The last cycle seen, when --every skipped it (call once, after the run's last cycle).
+  void write_last() {
+    if (pending_) write_row();
   }
   void text(const std::string& s) {
     buf_ += s;
@@ -571,6 +546,77 @@ class CsvSink final : public ipo::Sink {
   void set_setpoints(const std::array<axes::Setpoint, planner::kMaxAxes>* set) { set_ = set; }
 
  private:
+  /// The values of cycle `c`'s row, read from the channel's state while it is that cycle's.
+  void capture(const ipo::Cycle& c) {
+    row_.t = c.t;
+    row_.line = c.line;
+    for (std::size_t i = 0; i < axes_; ++i) {
+      // The machine axes' setpoints (the channel's; under #TRAFO the joints, not the TCP).
+      row_.p[i] = set_ != nullptr ? (*set_)[i].p : c.x[i];
+      if (!detail_) continue;
+      row_.v[i] = set_ != nullptr ? (*set_)[i].v : c.v[i];
+      row_.a[i] = set_ != nullptr ? (*set_)[i].a : c.a[i];
+      row_.ferr[i] = axes_state_ != nullptr ? axes_state_->following_error[i] : 0.0;
+    }
+    if (!detail_) return;
+    row_.v_path = c.path.v;
+    row_.feed = c.feed;
+    // --- line: the conveyor display variables with synchro_lag (seed 004 §6,
+    // Channel::master_display, ipo/synchro_lag.hpp)
+    if (conveyor_ != nullptr) row_.master = conveyor_->master_display();
+  }
+  void write_row() {
+    pending_ = false;
+    append_num(buf_, row_.t);
+    buf_ += ',';
+    buf_ += std::to_string(row_.line);
+    for (std::size_t i = 0; i < axes_; ++i) {
+      buf_ += ',';
+      append_num(buf_, row_.p[i]);
+    }
+    if (detail_) {
+      for (std::size_t i = 0; i < axes_; ++i) {
+        buf_ += ',';
+        append_num(buf_, row_.v[i]);
+        buf_ += ',';
+        append_num(buf_, row_.a[i]);
+      }
+      buf_ += ',';
+      append_num(buf_, row_.v_path);
+      buf_ += ',';
+      append_num(buf_, row_.feed);
+      for (std::size_t i = 0; i < axes_; ++i) {
+        buf_ += ',';
+        append_num(buf_, row_.ferr[i]);
+      }
+      if (conveyor_ != nullptr) {
+        const ipo::MasterDisplay& d = row_.master;
+        for (const double v :
+             {d.current_pos_master, d.current_v_master, d.current_a_master, d.pos_master_comp,
+              d.v_master_comp, d.a_master_comp, d.synchro_lag}) {
+          buf_ += ',';
+          append_num(buf_, v);
+        }
+      }
+    }
+    buf_ += '\n';
+    ++rows_;
+    if (buf_.size() >= kFlushAt) flush();
+  }
+
+  /// One row's values (the columns of the head).
+  struct Row {
+    double t = 0.0;                                ///< end of the cycle [s]
+    std::uint32_t line = 0;                        ///< source line of the active block
+    std::array<double, planner::kMaxAxes> p{};     ///< command positions [mm | deg]
+    std::array<double, planner::kMaxAxes> v{};     ///< --detail: velocities [mm/s | deg/s]
+    std::array<double, planner::kMaxAxes> a{};     ///< --detail: accelerations
+    std::array<double, planner::kMaxAxes> ferr{};  ///< --detail: following errors [mm | deg]
+    double v_path = 0.0;                           ///< --detail: path velocity [mm/s]
+    double feed = 0.0;                             ///< --detail: programmed feed [mm/s]
+    ipo::MasterDisplay master{};                   ///< --detail on a conveyor machine
+  };
+
   static constexpr std::size_t kFlushAt = 1 << 20;
   std::FILE* f_;
   std::size_t axes_;
@@ -580,6 +626,8 @@ class CsvSink final : public ipo::Sink {
   const ipo::Channel* conveyor_ = nullptr;  // --- line: the channel's master_display()
   const std::array<axes::Setpoint, planner::kMaxAxes>* set_ = nullptr;
   std::string buf_;
+  Row row_;               // the last cycle's values
+  bool pending_ = false;  // row_ not written yet (--every skipped it)
   bool failed_ = false;
   int errno_ = 0;
   std::uint64_t rows_ = 0;
@@ -707,6 +755,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
     progress.update(channel.cycle().t, channel.cycle().line);
     write_tech(channel, csv);  // --- indp
   }
+  csv.write_last();          // --every N: the run's last cycle, whatever its index
   write_tech(channel, csv);  // --- indp: those of the program's final wait
   progress.finish();
   std::string error_text;
@@ -884,7 +933,8 @@ RunCommands::RunCommands(CLI::App& app) {
   run_cmd_ = app.add_subcommand("run", "Run on the path interpolator and write the CSV trajectory");
   add_run_program_options(*run_cmd_, run_.program);
   run_cmd_->add_option("-o,--output", run_.output, "CSV file, '-' for stdout (default)");
-  run_cmd_->add_option("--every", run_.every, "One row every N cycles (default 1)")
+  run_cmd_
+      ->add_option("--every", run_.every, "One row every N cycles, and the last cycle (default 1)")
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
   add_cycle_us_option(*run_cmd_, run_.cycle_us);
   run_cmd_->add_flag("--audit", run_.audit, "Check every limit (verdict on stderr); exit 3");

@@ -243,9 +243,9 @@ printf '%%e\nP1 = 0\n$WHILE 1\nP1 = 1 - P1\n$ENDWHILE\nM30\n' >"$work/stuck.nc"
 expect "an endless loop without motion is an error" 1 '' 'stuck\.nc:3:1: error: .*cannot end.*\[NC4901\]' \
   -- check "$work/stuck.nc"
 
-# time / run on the path interpolator (issue 12). long_line.nc: 1000 mm at 100 mm/s with
-# A = 3000 mm/s^2 (STEP, jerk A / T): 10 + 1/30 + 0.001 s, rounded up to the 1 ms cycle:
-# 10035 cycles.
+# time / run on the path interpolator (issue 12). long_line.nc: 700 mm at 100 mm/s with
+# A = 3000 mm/s^2 (STEP, jerk A / T): 7 + 1/30 + 0.001 s, rounded up to the 1 ms cycle:
+# 7035 cycles.
 expect "time of a long line at F is length / F + F / A + T, to the cycle" 0 \
   'long_line\.nc: 7\.035 s \(7035 cycles of 1 ms\)' '' -- time "$fixtures/long_line.nc"
 # The total for people to the microsecond: 56306 cycles of 1 ms summed read 56.306000000000004.
@@ -333,9 +333,9 @@ else
 fi
 "$ncsim" run --every 10 --detail -o "$work/d.csv" "$fixtures/long_line.nc" 2>/dev/null
 checks=$((checks + 1))
-if [[ $(grep -cv '^#' "$work/d.csv") -eq 704 ]] &&
+if [[ $(grep -cv '^#' "$work/d.csv") -eq 705 ]] &&
   [[ $(sed -n 6p "$work/d.csv") == "t,line,X,Y,Z,X.v,X.a,Y.v,Y.a,Z.v,Z.a,v_path,feed,X.ferr,Y.ferr,Z.ferr" ]]; then
-  echo "ok   run --every 10 --detail: every 10th cycle, detail columns"
+  echo "ok   run --every 10 --detail: every 10th cycle and the last one, detail columns"
 else
   failures=$((failures + 1)); echo "FAIL run --every 10 --detail"
   head -8 "$work/d.csv"

@@ -157,4 +157,25 @@ shortest() {
 }
 holds "every CSV field is a shortest round-trip number" shortest "$work/detail.csv"
 
+# ---- --every N: rows of every Nth cycle, and always the last cycle ------------------------
+# 7035 cycles at --every 10: the rows of cycles 10, 20, ..., 7030, then the last one (t 7.035,
+# X on the programmed end 700), so the last t is time's total also at --every N; after a
+# run-time error the last row is the last good cycle (t 8.017), not the last multiple of N.
+last_row() { grep -v '^#' "$1" | tail -1; }
+"$ncsim" run --every 10 -o "$work/every.csv" "$fixtures/long_line.nc" 2>/dev/null
+holds "--every 10: a row every 10 cycles, then the last cycle (704 rows)" \
+  test "$(grep -v '^#' "$work/every.csv" | tail -n +2 | wc -l)" -eq 704
+holds "--every 10: the last row is the program end (t 7.035, X 700)" \
+  test "$(last_row "$work/every.csv")" = "7.035,4,700,0,0"
+holds "--every 10: the row before it is cycle 7030" \
+  test "$(grep -v '^#' "$work/every.csv" | tail -2 | head -1 | cut -d, -f1)" = 7.03
+"$ncsim" run --every 1000 -o "$work/every_err.csv" "$fixtures/soft_limit.nc" 2>/dev/null
+holds "--every 1000 and a run-time error: the last row is the last good cycle (t 8.017)" \
+  test "$(last_row "$work/every_err.csv" | cut -d, -f1)" = 8.017
+holds "--every 1000 and a run-time error: the closing comments follow it" \
+  test "$(tail -1 "$work/every_err.csv")" = "# stop: error"
+"$ncsim" run --every 7035 -o "$work/every_one.csv" "$fixtures/long_line.nc" 2>/dev/null
+holds "--every 7035: the last cycle is written once" \
+  test "$(grep -v '^#' "$work/every_one.csv" | tail -n +2 | wc -l)" -eq 1
+
 summary run_output_test
