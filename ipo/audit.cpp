@@ -98,9 +98,13 @@ void Audit::step_formulas(const Joint& jt) {
       if (!(dv <= bound * (1.0 + kRelative)))
         violate(q, Method::formula, i, jt.t, jt.line, jt.file, dv, bound);
     }
-    // C1 (P-CHAN-00009 semantics, docs/planner.md): |da_i| <= j_i T. At C0 the acceleration
-    // step of a curved neighbour comes with the velocity step and has no rule of its own.
-    if (jt.cls == planner::TransitionClass::c1 && jt.jerk_limited &&
+    // C1 (P-CHAN-00009 semantics, docs/planner.md "Corners"): |da_i| <= j_i T, at C1 joints
+    // and, since session 31, at C0 joints too (a knee into a curve: the curvature jump; a knee
+    // that carries the acceleration: its own step and the curvature's). A link #TRANSVELMIN
+    // raised (it has priority, isg-language.md 5.6) is the programmer's: not bounded here.
+    const bool c0_raised = jt.cls == planner::TransitionClass::c0 &&
+                           jt.rule == planner::LinkRule::transvelmin && jt.v > 0.0;
+    if (jt.cls != planner::TransitionClass::c2 && !c0_raised && jt.jerk_limited &&
         da > 1e-12 * std::max(1.0, jt.v * jt.v)) {
       const double bound = l.j_max * t_;
       note_step(Step{Quantity::c1_step, static_cast<std::uint8_t>(i), jt.t, jt.line, jt.v, da,

@@ -215,6 +215,39 @@ TEST_CASE("a line into a tangent arc R = 10 links at sqrt(J T R): its C1 step is
   CHECK(has(strict.verdict(), Quantity::c1_step, Method::formula));
 }
 
+TEST_CASE("a knee into an arc: its acceleration step is held to j T like a C1 step, and audited") {
+  // docs/planner.md "Corners" (session 31): the arc's centre 0.001 mm off the tangent, a knee
+  // of 1e-4 rad. VELOJUMP alone would link at 100 mm/s (a Y acceleration step of v^2 / R =
+  // 1000 mm/s^2 in one cycle: 10 x j T); the C1 rule at C0 joints links at sqrt(J T R).
+  const std::vector<planner::AxisLimits> axes(3, axis(200.0, 10000.0, 1e5, 1.0));
+  planner::Move in = line(vec(0, 0), vec(50, 0), 100.0, 1);
+  planner::Move arc = line(vec(50, 0), vec(60.001, 10), 100.0, 2);
+  arc.arc = planner::Arc{0, 1, 50.001, 10.0, false, false};  // G03, centre (50.001, 10)
+  Audit audit(axes, 0.001, AxisVec{});
+  run_into(audit, axes, {in, arc});
+  const Verdict& v = audit.verdict();
+  CHECK(v.ok());
+  const StepKind& c1 = v.step_kinds[step_kind(Quantity::c1_step)];
+  REQUIRE(c1.count >= 1);
+  CHECK(c1.closest.axis == 1);
+  CHECK(c1.closest.v_link == doctest::Approx(std::sqrt(1e5 * 1e-3 * 10.0)).epsilon(1e-3));
+  CHECK(c1.closest.value <= 100.0 * (1.0 + 1e-9));
+  CHECK(c1.closest.value == doctest::Approx(100.0).epsilon(1e-3));
+  // Audited against half the jerk, the same run's step is a violation (the audit bounds the
+  // acceleration step at C0 joints too; before session 31 it passed unbounded).
+  std::vector<planner::AxisLimits> half = axes;
+  for (planner::AxisLimits& a : half)
+    a.j_max = 5e4;
+  Audit strict(half, 0.001, AxisVec{});
+  ListSource src({in, arc});
+  Config cfg;
+  cfg.axes = axes;  // planned with J = 1e5
+  PathInterpolator ipo(cfg, src, &strict);
+  while (ipo.step() == Status::running) {
+  }
+  CHECK(has(strict.verdict(), Quantity::c1_step, Method::formula));
+}
+
 TEST_CASE("a #TRANSVELMIN corner above VELOJUMP passes the audit, its steps listed apart") {
   // 90 degree corner: VELOJUMP gives 10 mm/s; #TRANSVELMIN 30 mm/s has priority (issue 12).
   const std::vector<planner::AxisLimits> axes(3, axis(200.0, 10000.0, 1e5, 1.0));

@@ -31,6 +31,11 @@ double bezier_d1(const std::array<double, 4>& p, double u) {
   return 3.0 * (w * w * (p[1] - p[0]) + 2.0 * w * u * (p[2] - p[1]) + u * u * (p[3] - p[2]));
 }
 
+/// Second derivative of a cubic Bezier with control values `p` at `u`.
+double bezier_d2(const std::array<double, 4>& p, double u) {
+  return 6.0 * ((1.0 - u) * (p[2] - 2.0 * p[1] + p[0]) + u * (p[3] - 2.0 * p[2] + p[1]));
+}
+
 double bezier(const std::array<double, 4>& p, double u) {
   const double w = 1.0 - u;
   return w * w * w * p[0] + 3.0 * w * w * u * p[1] + 3.0 * w * u * u * p[2] + u * u * u * p[3];
@@ -43,6 +48,18 @@ std::optional<double> spline_tangent(const planner::Move& mv, int x, int y, doub
     return t;
   const double uc = std::clamp(u, 1e-4, 1.0 - 1e-4);
   return tangent_angle(bezier_d1(controls(mv, x), uc), bezier_d1(controls(mv, y), uc));
+}
+
+/// d theta / du of a spline Move at u [deg per unit u] (the XY curvature times |P'(u)|);
+/// nullopt where the derivative vanishes.
+std::optional<double> spline_turn_rate(const planner::Move& mv, int x, int y, double u) {
+  const double dx = bezier_d1(controls(mv, x), u);
+  const double dy = bezier_d1(controls(mv, y), u);
+  const double q = dx * dx + dy * dy;
+  if (!(q > kTiny * kTiny)) return std::nullopt;
+  const double ddx = bezier_d2(controls(mv, x), u);
+  const double ddy = bezier_d2(controls(mv, y), u);
+  return (dx * ddy - dy * ddx) / q * kRadToDeg;
 }
 
 }  // namespace
@@ -178,9 +195,22 @@ void CaxTracker::fit_spline(const planner::Move& mv, double c_start, double shif
     g[static_cast<std::size_t>(k)] = prev + shift0 + (shift1 - shift0) * u;
   }
   const double c0 = g[0], c3 = g[kSamples];
-  const double a = 27.0 * g[kSamples / 3] - 8.0 * c0 - c3;
-  const double b = 27.0 * g[2 * kSamples / 3] - c0 - 8.0 * c3;
-  const std::array<double, 4> p{c0, (2.0 * a - b) / 18.0, (2.0 * b - a) / 18.0, c3};
+  // Hermite ends: C's derivative at both ends is the tangent's turn rate (plus the shared-out
+  // turn's), so C is C1 where the path is (a knee of C at every piece joint made the joints
+  // C0 and let C's acceleration step pass unbounded: docs/caxtrack.md); where the rate is
+  // not defined (a doubled control point) the values at u = 1/3 and 2/3 are met instead.
+  const auto r0 = spline_turn_rate(mv, x_, y_, 0.0);
+  const auto r1 = spline_turn_rate(mv, x_, y_, 1.0);
+  std::array<double, 4> p{};
+  if (r0 && r1) {
+    const double sign = p_.rotmode == 1 ? -1.0 : 1.0;
+    const double turn = shift1 - shift0;
+    p = {c0, c0 + (sign * *r0 + turn) / 3.0, c3 - (sign * *r1 + turn) / 3.0, c3};
+  } else {
+    const double a = 27.0 * g[kSamples / 3] - 8.0 * c0 - c3;
+    const double b = 27.0 * g[2 * kSamples / 3] - c0 - 8.0 * c3;
+    p = {c0, (2.0 * a - b) / 18.0, (2.0 * b - a) / 18.0, c3};
+  }
   double err = 0.0;
   for (int k = 0; k <= kSamples; ++k) {
     const double u = static_cast<double>(k) / kSamples;

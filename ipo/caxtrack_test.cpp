@@ -194,3 +194,41 @@ TEST_CASE("seeded: on random spline pieces C stays within the fit tolerance of t
     }
   }
 }
+
+TEST_CASE(
+    "seeded: C is C1 along a spline: its slope at every piece end is the tangent's turn rate") {
+  // dC/du = d theta / du = (x' y'' - y' x'') / (x'^2 + y'^2) at both ends of every fitted
+  // piece (Hermite ends), so the halves of a split piece join without a knee of C: before
+  // session 31 a fit through four angles left knees whose curvature steps the C0 rule let
+  // pass unbounded (docs/caxtrack.md, docs/planner.md "Corners").
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<double> d(-60.0, 60.0);
+  const auto d2 = [](const Move& m, std::size_t i, double u) {
+    return 6 * ((1 - u) * (m.spline->c2[i] - 2 * m.spline->c1[i] + m.start[i]) +
+                u * (m.end[i] - 2 * m.spline->c2[i] + m.spline->c1[i]));
+  };
+  int joints = 0;
+  for (int n = 0; n < 50; ++n) {
+    const Move m =
+        spline({0, -33 + d(rng) / 4, -66 + d(rng) / 4, -100}, {0, d(rng), d(rng), d(rng)});
+    // Started on the tangent: no joint turn shared out over the block (its slope would add).
+    const double theta0 = std::atan2(d1(m, 1, 0.0), d1(m, 0, 0.0)) * 180.0 / std::numbers::pi;
+    for (const int rotmode : {0, 1}) {
+      CaxTracker t({1.0, 0.0, rotmode}, kX, kY, kC, rotmode == 1 ? -theta0 : theta0);
+      const auto o = t.track(m);
+      REQUIRE(o.error.empty());
+      for (const Move& part : o.moves) {
+        for (const double u : {0.0, 1.0}) {
+          const double dx = d1(part, kX, u), dy = d1(part, kY, u);
+          const double rate = (dx * d2(part, kY, u) - dy * d2(part, kX, u)) / (dx * dx + dy * dy) *
+                              180.0 / std::numbers::pi;
+          const double slope = u == 0.0 ? 3 * (part.spline->c1[kC] - part.start[kC])
+                                        : 3 * (part.end[kC] - part.spline->c2[kC]);
+          CHECK(slope == doctest::Approx(rotmode == 1 ? -rate : rate).epsilon(1e-9).scale(1.0));
+        }
+      }
+      joints += static_cast<int>(o.moves.size()) - 1;
+    }
+  }
+  CHECK(joints > 20);  // pieces were split: the joints between halves were checked
+}

@@ -323,6 +323,9 @@ std::optional<XvError> joint_belt_check(const planner::Move& in, const planner::
   if (link.v_link >= need * (1.0 - 1e-9)) return std::nullopt;
   const std::size_t axis = std::min<std::size_t>(link.limiting_axis, names.size() - 1);
   const bool knee = link.cls == planner::TransitionClass::c0;
+  // A knee's link is VELOJUMP's, or the C1 rule's where the curvature jump binds first
+  // (planner::link_velocity; docs/planner.md "Corners").
+  const bool velojump = link.rule == planner::LinkRule::velojump;
   char buf[560];
   std::snprintf(buf, sizeof buf,
                 "x_virtual: a belt at %.6g mm/s (1.1 x CONV_VEL, the fastest before 50653) needs a "
@@ -332,8 +335,8 @@ std::optional<XvError> joint_belt_check(const planner::Move& in, const planner::
                 p.v_belt, need,
                 knee ? "a knee (an axis's tangent jumps)" : "a C1 joint (the curvature jumps)",
                 names[axis].c_str(),
-                knee ? "acceleration (VELOJUMP, one cycle's velocity step)"
-                     : "jerk (the C1 rule, one cycle's acceleration step)",
+                velojump ? "acceleration (VELOJUMP, one cycle's velocity step)"
+                         : "jerk (the C1 rule, one cycle's acceleration step)",
                 link.v_link);
   return XvError{kXvTooFastId, buf};
 }

@@ -127,6 +127,18 @@ Link link_velocity(const PathPoint& in_end, const PathPoint& out_start, std::siz
         link.rule = LinkRule::velojump;
         link.limiting_axis = ax;
       }
+      // The curvature jump of a knee into a curve too: the acceleration step v^2 |dk_i| within
+      // j_i T, as at a tangent joint (P-CHAN-00009 semantics; docs/planner.md "Corners"):
+      // without it a knee of 1e-4 rad let the arc's own cap through, and a jerk of 12x J.
+      double v_curvature = kInf;
+      if (channel.limit_c1_by_jerk && jerk_limited_slope) {
+        v_curvature = c1_velocity(in_end.d2, out_start.d2, used, channel.t_cycle, &ax);
+        if (v_curvature < link.v_link) {
+          link.v_link = v_curvature;
+          link.rule = LinkRule::c1_jerk;
+          link.limiting_axis = ax;
+        }
+      }
       if (transvelmin) {
         const double v_min = std::min(std::max(*transvelmin, 0.0), cap);
         if (link.v_link < v_min) {
@@ -135,10 +147,12 @@ Link link_velocity(const PathPoint& in_end, const PathPoint& out_start, std::siz
         }
       }
       // A knee that limits nothing and whose acceleration step fits the C1 budget carries the
-      // path acceleration (docs/planner.md "Corners", dense CAM chords).
+      // path acceleration (docs/planner.md "Corners", dense CAM chords), where the curvature
+      // step fits the rest of the budget (v^2 scales with it).
       if (link.rule == LinkRule::segment_caps)
         link.zero_acceleration =
-            !knee_carries_acceleration(in_end.d1, out_start.d1, used, channel.t_cycle);
+            !knee_carries_acceleration(in_end.d1, out_start.d1, used, channel.t_cycle) ||
+            link.v_link > v_curvature * std::sqrt(1.0 - kKneeBudget);
       break;
     }
     case TransitionClass::c1: {

@@ -173,3 +173,50 @@ TEST_CASE("a knee that limits nothing and fits the acceleration budget carries t
   CHECK(knee_carries_acceleration(tangent(0).d1, tangent(2.0).d1, ax, 0.001));
   CHECK_FALSE(knee_carries_acceleration(tangent(0).d1, tangent(2.0).d1, ax, 0.0001));
 }
+
+TEST_CASE("a knee into a curve: the curvature jump keeps the C1 budget as at a tangent joint") {
+  // A line into an arc of radius 10 with a knee of 0.006 degrees (a CAM end point rounded):
+  // VELOJUMP alone allows 100 mm/s (|dy'| = 1e-4: v <= 10 / 1e-4), but the Y acceleration
+  // would jump by v^2 / 10 = 1000 mm/s^2 in one cycle, 10x the jerk budget j T = 100 mm/s^2.
+  // The C1 rule (P-CHAN-00009 semantics) holds at C0 joints too: 31.62 mm/s, as tangent.
+  const auto ax = limits(10000.0, 1.0, 1e5);
+  PathPoint arc_start = tangent(1e-4 / kDeg);
+  arc_start.d2[1] = 0.1;
+  const Link knee = link_velocity(tangent(0), arc_start, 3, 0b111, ax, ChannelLimits{}, 100, 100,
+                                  std::nullopt, true);
+  CHECK(knee.cls == TransitionClass::c0);
+  CHECK(knee.rule == LinkRule::c1_jerk);
+  CHECK(knee.v_link == doctest::Approx(std::sqrt(1e5 * 1e-3 / 0.1)));
+  CHECK(knee.zero_acceleration);
+  // STEP slopes have no jerk budget: VELOJUMP alone (capped by the segments).
+  CHECK(link_velocity(tangent(0), arc_start, 3, 0b111, ax, ChannelLimits{}, 100, 100, std::nullopt,
+                      false)
+            .v_link == doctest::Approx(100.0));
+  // #TRANSVELMIN has priority at C0 (isg-language.md 5.6), also over this rule.
+  CHECK(link_velocity(tangent(0), arc_start, 3, 0b111, ax, ChannelLimits{}, 100, 100, 90.0, true)
+            .v_link == doctest::Approx(90.0));
+  // A knee between two lines has no curvature jump: unchanged (it carries, as above).
+  const Link lines = link_velocity(tangent(0), tangent(2.0), 3, 0b111, limits(10000.0),
+                                   ChannelLimits{}, 100, 100, std::nullopt, true);
+  CHECK(lines.rule == LinkRule::segment_caps);
+  CHECK_FALSE(lines.zero_acceleration);
+}
+
+TEST_CASE("a knee that carries the acceleration leaves half the budget to the curvature jump") {
+  // A 2 degree knee into an arc: the knee's own step takes up to kKneeBudget j T, so the
+  // curvature step v^2 |dk_i| must fit the other half for a != 0 at the joint.
+  const auto ax = limits(10000.0);  // J = 1e6, T = 1 ms: budget 1000 mm/s^2
+  PathPoint arc_start = tangent(2.0);
+  arc_start.d2[0] = -std::sin(2.0 * kDeg) * 0.01;
+  arc_start.d2[1] = std::cos(2.0 * kDeg) * 0.01;  // radius 100: the curvature step v^2 / 100
+  // 100 mm/s: a step of 100 mm/s^2, within half the budget: carries.
+  const Link slow = link_velocity(tangent(0), arc_start, 3, 0b111, ax, ChannelLimits{}, 100, 100,
+                                  std::nullopt, true);
+  CHECK(slow.rule == LinkRule::segment_caps);
+  CHECK_FALSE(slow.zero_acceleration);
+  // 250 mm/s: 625 mm/s^2, within the budget but not half of it: a = 0 at the joint.
+  const Link fast = link_velocity(tangent(0), arc_start, 3, 0b111, limits(10000.0, 100.0),
+                                  ChannelLimits{}, 250, 250, std::nullopt, true);
+  CHECK(fast.rule == LinkRule::segment_caps);
+  CHECK(fast.zero_acceleration);
+}

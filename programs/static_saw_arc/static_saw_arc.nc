@@ -12,13 +12,19 @@
 ;   with the curvature |(P1 - P0) x (P2 - P1)| / (3 |P1 - P0|^3): P1 17 mm along the tangent,
 ;   P2 a further 17 mm along it and 2.89 mm = 3 x 17^2 / 300 towards the centre; point
 ;   symmetric about the inflection X-300 Y0, so it meets the G02 arc the same way).
+; The belt runs at 85 mm/s (CONV_VEL 5100 mm/min): C follows the tangent, so its acceleration
+;   is C'' v^2 with C'' the change of curvature, which jumps at the B-spline's inner knots by
+;   0.042 deg/mm^2; within C's jerk budget j T (500 deg/s^2, the C1 rule, docs/planner.md
+;   "Corners") that allows a path velocity of 108 mm/s there, and the belt must be handled up
+;   to 1.1 x CONV_VEL (NC9100's check). Until session 31 the belt ran at 100 mm/s with
+;   CONV_VEL 18000: the step at those knots passed the audit unbounded, at up to 12 x C's jerk.
 ; source: ncsim library (issue 14, static-saw), after the listing of TF5264 4.10.2.
 %
 N010 G74 Y1 C1
-N020 S1[MC_MoveVelocity Velocity=100000 Acceleration=2000 Deceleration=2000 Jerk=750000 Direction=1]
+N020 S1[MC_MoveVelocity Velocity=85000 Acceleration=2000 Deceleration=2000 Jerk=750000 Direction=1]
 N030 G0 G90 Y0 C0
 N040 S1 [MC_TouchProbe Channel=1]
-N050 #SYNC IN [CONVEYOR=S1, CONV_VEL=18000 FEED_CONT=0]
+N050 #SYNC IN [CONVEYOR=S1, CONV_VEL=5100 FEED_CONT=0]
 N060 G0 G90 X0 Y0 C30
 N070 #CAXTRACK ON [AX=C, ANGLIMIT 3, OFFSET 180, ROTMODE=1]
 N080 F100
