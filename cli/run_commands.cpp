@@ -258,9 +258,10 @@ void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names,
     os << "audit: " << ipo::kStepKindNames[k] << " steps " << sk.count << ", closest to "
        << ipo::kStepKindFormulas[k] << ": t=" << num(s.t) << " s line "
        << block_where(interp, s.file, s.line) << " axis "
-       << (s.axis < names.size() ? names[s.axis] : std::to_string(s.axis)) << ' '
-       << (c1 ? "|da| " : "|dv| ") << human(s.value) << " of " << human(s.bound) << ' ' << u << unit
-       << " at the link velocity " << human(s.v_link) << " mm/s\n";
+       << (s.axis < names.size() ? names[s.axis] : std::to_string(s.axis))
+       << (s.joint ? " under #TRAFO " : " ") << (c1 ? "|da| " : "|dv| ") << human(s.value) << " of "
+       << human(s.bound) << ' ' << u << unit << " at the link velocity " << human(s.v_link)
+       << " mm/s\n";
   }
   for (const ipo::Violation& x : v.violations) {
     os << "audit: violation t=" << num(x.t) << " s line " << block_where(interp, x.file, x.line)

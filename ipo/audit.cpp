@@ -63,11 +63,43 @@ void Audit::check(Quantity q, Method m, std::size_t axis, const Cycle& c, double
 }
 
 void Audit::on_joint(const Joint& jt) {
-  joint_seen_ = true;
-  // Under #TRAFO the steps are Cartesian: the joints' checks take over (on_joints()). The state
-  // is the last cycle's: a switch happens with the path standing, and the first cycle after it
-  // starts from rest, so it passes no joint unless its segment is shorter than J T^3 / 6.
-  if (!transformed_) step_formulas(jt);
+  // Under #TRAFO the steps are Cartesian: the joints' checks take over (on_joints()), with the
+  // joints' own steps where the interpolator gave them. The state is the last cycle's: a switch
+  // happens with the path standing, and the first cycle after it starts from rest, so it
+  // passes no joint unless its segment is shorter than J T^3 / 6.
+  if (!transformed_)
+    step_formulas(jt);
+  else if (jt.joint_steps && !joint_limits_.empty())
+    joint_step_formulas(jt);
+  else
+    joint_seen_ = true;
+}
+
+void Audit::joint_step_formulas(const Joint& jt) {
+  // The axes' formulas on the joints (docs/planner.md "Corners under a transform", where the
+  // planner applies them): |dq_i| <= C0_i min(A+_i, |A-_i|) T at C0, |dw_i| <= j_i T at C0
+  // and C1 on jerk-limited slopes; the planner's joint caps hold under #TRANSVELMIN too.
+  for (std::size_t i = 0; i < joint_limits_.size(); ++i) {
+    const planner::AxisLimits& l = joint_limits_[i];
+    const double dq = std::abs(jt.dq[i]);
+    const double dw = std::abs(jt.dw[i]);
+    qdv_[i][0] += dq;
+    qda_[i][0] += dw;
+    const auto index = static_cast<std::uint8_t>(i);
+    if (dq > 1e-12 * std::max(1.0, jt.v)) {
+      const double bound = l.c0 * std::min(l.a_max, l.d_max) * t_;
+      note_step(Step{Quantity::velojump, index, jt.t, jt.line, jt.v, dq, bound, jt.file, true});
+      if (!(dq <= bound * (1.0 + kRelative)))
+        violate(Quantity::velojump, Method::formula, i, jt.t, jt.line, jt.file, dq, bound, true);
+    }
+    if (jt.cls != planner::TransitionClass::c2 && jt.jerk_limited &&
+        dw > 1e-12 * std::max(1.0, jt.v * jt.v)) {
+      const double bound = l.j_max * t_;
+      note_step(Step{Quantity::c1_step, index, jt.t, jt.line, jt.v, dw, bound, jt.file, true});
+      if (!(dw <= bound * (1.0 + kRelative)))
+        violate(Quantity::c1_step, Method::formula, i, jt.t, jt.line, jt.file, dw, bound, true);
+    }
+  }
 }
 
 void Audit::note_step(const Step& s) {
@@ -264,6 +296,8 @@ void Audit::set_joint_limits(std::span<const planner::AxisLimits> joints, const 
   joint_limits_.assign(joints.begin(), joints.end());
   verdict_.joints.assign(joints.size(), AxisAudit{});
   q_.resize(joints.size());
+  qdv_.assign(joints.size(), {0.0, 0.0, 0.0});
+  qda_.assign(joints.size(), {0.0, 0.0, 0.0});
   for (std::size_t i = 0; i < joints.size(); ++i) {
     const planner::AxisLimits& l = joints[i];
     verdict_.joints[i].v_limit = std::min(l.v_max, l.v_reference);
@@ -287,7 +321,12 @@ void Audit::on_joints(const Cycle& c, const JointSetpoint& s) {
     st.jerk_closed = c.jerk_limited;
     st.jerk_fd = joint_jerk_limited_[0] && joint_jerk_limited_[1] && joint_jerk_limited_[2];
     st.velocity_only = !clean;
+    st.dv2 = qdv_[i][0] + qdv_[i][1];
+    st.dv3 = st.dv2 + qdv_[i][2];
+    st.da3 = qda_[i][0] + qda_[i][1] + qda_[i][2];
     check_motion(i, true, st, verdict_.joints[i], q_[i], c, s.q[i], s.v[i], s.a[i], s.j[i]);
+    qdv_[i] = {0.0, qdv_[i][0], qdv_[i][1]};
+    qda_[i] = {0.0, qda_[i][0], qda_[i][1]};
   }
   stepped_ = {false, stepped_[0], stepped_[1]};
   joint_jerk_limited_ = {true, joint_jerk_limited_[0], joint_jerk_limited_[1]};

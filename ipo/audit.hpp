@@ -118,6 +118,7 @@ struct Step {
   double value = 0.0;      ///< |dv_i| [mm/s] or |da_i| [mm/s^2]
   double bound = 0.0;      ///< C0_i min(A+_i, |A-_i|) T, v_min |dx'_i| (#TRANSVELMIN), or j_i T
   std::uint16_t file = 0;  ///< source file of `line` (interp::Command::file, 0: main)
+  bool joint = false;      ///< `axis` is a joint of the kinematic transform (--- trafo)
 };
 
 /// The documented steps of one kind: how many, and the one closest to its formula's bound.
@@ -203,6 +204,8 @@ class Audit final : public Sink {
   void note_step(const Step& s);
   /// A path joint's documented steps against their formulas (axis cycles only).
   void step_formulas(const Joint& joint);
+  /// --- trafo: the same formulas on the joints' own steps (Joint::dq, dw).
+  void joint_step_formulas(const Joint& joint);
   /// A switch of #TRAFO: the history of the side taken over continues the other's.
   void switch_transform(bool on);
 
@@ -216,14 +219,17 @@ class Audit final : public Sink {
   std::array<bool, 3> jerk_limited_{true, true, true};
   std::array<bool, 3> rapid_{false, false, false};  ///< G00 in the last three cycles
   double contour_ratio_ = 0.0;
-  // Joints (set_joint_limits()): limits, last positions, and whether the last three cycles
-  // held a documented path step (a joint has no step formula of its own: those stencils are
+  // Joints (set_joint_limits()): limits, last positions, the joints' step allowances of the
+  // last three cycles (Joint::dq, dw; as dv_, da_), and whether they held a path step whose
+  // joint steps are not known (a sync entry, or the inverse failed there: those stencils are
   // checked for velocity only).
   std::vector<planner::AxisLimits> joint_limits_;
   std::vector<std::array<double, 4>> q_;
+  std::vector<std::array<double, 3>> qdv_;
+  std::vector<std::array<double, 3>> qda_;
   std::array<bool, 3> stepped_{false, false, false};
   std::array<bool, 3> joint_jerk_limited_{true, true, true};
-  bool joint_seen_ = false;       ///< on_joint() since the last on_joints()
+  bool joint_seen_ = false;       ///< an on_joint() without joint steps since on_joints()
   bool transformed_ = false;      ///< the last cycle ran under #TRAFO ON
   bool joints_are_axes_ = false;  ///< set_joint_limits(..., true)
   const std::array<axes::Setpoint, planner::kMaxAxes>* set_ = nullptr;  ///< set_setpoints()

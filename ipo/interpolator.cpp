@@ -10,6 +10,8 @@
 #include <string>
 #include <utility>
 
+#include "planner/joint_limits.hpp"
+
 namespace ncsim::ipo {
 
 namespace {
@@ -277,6 +279,25 @@ void PathInterpolator::report_joint(const planner::PlannedSegment& next, double 
   for (std::size_t i = 0; i < axes_.size(); ++i) {
     jt.dv[i] = v * (p_out.d1[i] - p_in.d1[i]);
     jt.da[i] = v * v * (p_out.d2[i] - p_in.d2[i]) + a * (p_out.d1[i] - p_in.d1[i]);
+  }
+  // --- trafo: the joints' own steps, for the audit's formulas on the joints. Not in PCS1
+  // (belt_joints set): the path point is the programmed one, the joints follow it where the
+  // belt has carried it (ipo/channel_kinematics.cpp), a few per cent apart on the delta
+  // picker; those joints stay unlisted and their stencils velocity-only.
+  if (joints_ && prog_in.transformed && prog_out.transformed && !prog_in.belt_joints &&
+      !prog_out.belt_joints && jt.stop == planner::StopReason::none) {
+    const std::size_t nj = joints_->joints.size();
+    const auto n =
+        static_cast<std::size_t>(std::max(in.axis_count(), next.segment.path.axis_count()));
+    AxisVec q1_in{}, q2_in{}, q1_out{}, q2_out{};
+    if (planner::joint_derivatives(p_in, n, joints_->inverse, nj, q1_in, q2_in) &&
+        planner::joint_derivatives(p_out, n, joints_->inverse, nj, q1_out, q2_out)) {
+      jt.joint_steps = true;
+      for (std::size_t i = 0; i < nj; ++i) {
+        jt.dq[i] = v * (q1_out[i] - q1_in[i]);
+        jt.dw[i] = v * v * (q2_out[i] - q2_in[i]) + a * (q1_out[i] - q1_in[i]);
+      }
+    }
   }
   sink_->on_joint(jt);
 }

@@ -189,6 +189,12 @@ struct Joint {
   double transvelmin = 0.0;  ///< #TRANSVELMIN of the incoming block [mm/s] (0: not programmed)
   AxisVec dv{};              ///< axis velocity step out - in [mm/s] (VELOJUMP)
   AxisVec da{};              ///< axis acceleration step out - in [mm/s^2] (C1, and C0 on curves)
+  /// --- trafo: under a kinematic transform (Config::joints, both blocks transformed) the
+  /// joints' steps: velocity v (q'_out - q'_in), acceleration v^2 (q''_out - q''_in) +
+  /// a (q'_out - q'_in), q' = dq/ds from the inverse (planner::joint_derivatives).
+  bool joint_steps = false;
+  AxisVec dq{};  ///< joint velocity step [mm/s | deg/s]
+  AxisVec dw{};  ///< joint acceleration step [mm/s^2 | deg/s^2]
 };
 
 /// Receives the cycle stream (audit, CSV writer).

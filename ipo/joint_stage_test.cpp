@@ -209,9 +209,18 @@ TEST_CASE("a delta corner passed without a stop: each joint's velocity step keep
   const Result r = run(moves, home, true, joints, kin);
   CHECK(r.status == ipo::Status::finished);
   CHECK(r.verdict.ok());
-  // Under #TRAFO the path's Cartesian steps are not checked by formula (the joints' checks
-  // take over, docs/ipo.md "Kinematics in run and time"): none is listed.
-  CHECK(r.verdict.step_count == 0);
+  // Under #TRAFO the joints' own steps are checked by formula instead of the path's Cartesian
+  // ones (docs/ipo.md "Kinematics in run and time"): every listed step is a joint's, within
+  // its bound, and the corner's VELOJUMP step of the joints is among them.
+  REQUIRE(r.verdict.step_count > 0);
+  for (const ipo::Step& s : r.verdict.steps) {
+    CHECK(s.joint);
+    CHECK(s.value <= s.bound * (1 + 1e-9));
+  }
+  const ipo::StepKind& jump = r.verdict.step_kinds[ipo::step_kind(ipo::Quantity::velojump)];
+  REQUIRE(jump.count > 0);
+  CHECK(jump.closest.bound == doctest::Approx(400.0 * 0.001));
+  CHECK(jump.closest.value > 0.5 * jump.closest.bound);  // the step is used
   // Between two cycles a joint's velocity changes by at most A T (its acceleration) plus the
   // VELOJUMP step C0 A T (C0 = 1): 0.8 deg/s.
   CHECK(r.dv_max <= 2.0 * 400.0 * 0.001 * (1 + 1e-3));

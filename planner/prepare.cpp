@@ -180,15 +180,21 @@ void Preparer::emit_joint(PreparedSegment in, const Move& in_move, const Segment
         !joint_derivatives(b, n, joints_->inverse, nj, q1_out, q2_out))
       throw KinematicError(in_move.line,
                            "a corner outside the workspace of the kinematic transform [NC3201]");
-    // As on the axes: VELOJUMP at C0; the C1 budget on jerk-limited slopes (P-CHAN-00009).
-    double cap = in.v_end;
-    if (link.cls == TransitionClass::c0)
-      cap = velojump_velocity(q1_in, q1_out, joints_->joints, channel_.t_cycle);
-    else if (channel_.limit_c1_by_jerk && jerk_limited(in_move.slope))
-      cap = c1_velocity(q2_in, q2_out, joints_->joints, channel_.t_cycle);
-    if (cap < in.v_end) {
-      in.v_end = cap;
-      in.rule = link.cls == TransitionClass::c0 ? LinkRule::velojump : LinkRule::c1_jerk;
+    // As on the axes: VELOJUMP at C0; the C1 budget on jerk-limited slopes (P-CHAN-00009),
+    // at C1 and at C0 too (a knee into a curve: docs/planner.md "The C1 rule at C0 joints").
+    if (link.cls == TransitionClass::c0) {
+      const double cap = velojump_velocity(q1_in, q1_out, joints_->joints, channel_.t_cycle);
+      if (cap < in.v_end) {
+        in.v_end = cap;
+        in.rule = LinkRule::velojump;
+      }
+    }
+    if (channel_.limit_c1_by_jerk && jerk_limited(in_move.slope)) {
+      const double cap = c1_velocity(q2_in, q2_out, joints_->joints, channel_.t_cycle);
+      if (cap < in.v_end) {
+        in.v_end = cap;
+        in.rule = LinkRule::c1_jerk;
+      }
     }
   }
   // Under a transform a knee does not carry the acceleration (decision, docs/planner.md
