@@ -19,8 +19,9 @@
 // Path acceleration is 0 at C0 and C1 joints and at stops (the NC I rule, 000 l.108). At a soft
 // joint (C2, or a knee that carries the acceleration) a speed-up the length cuts goes on
 // through it (a > 0) when the rest of its ramp fits the next entries and the window's braking
-// (docs/planner.md "Acceleration at joints"); a brake into a slower entry runs on through it
-// where its ramp ends exactly at that entry's end (a = 0 there) and that is faster.
+// (docs/planner.md "Acceleration at joints"); a brake into slower entries runs on through up
+// to kMaxBrakeJoints joints where its ramp ends exactly at a later entry's end (a = 0 there)
+// and that is faster.
 // STEP slopes (no jerk limit) are planned with j = max(a, d) / T: the acceleration step
 // takes one interpolation cycle.
 // Invariants: 0 <= v_entry, v_exit <= exit cap with a = 0 there, and a carried state only
