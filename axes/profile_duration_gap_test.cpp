@@ -116,10 +116,13 @@ TEST_CASE("every duration with a known profile is met exactly; every NC5015 is a
   // Measured (session 30): before the rest families 221 durations answered NC5015, 12 of them
   // (2 draws) although a profile was known; the undecided ones are 3 starts moving away (v0 < 0 in
   // the frame toward the target), 2 arrivals against it (v1 < 0) and 2 within the bounds' jerk
-  // slack (docs/axes-profile.md, "Prescribed durations", gaps).
-  CHECK(met == 89791);
+  // slack (docs/axes-profile.md, "Prescribed durations", gaps). Session 31: draw 313's fastest
+  // profile is now a braking turn through v = 0 (jerk/dip_cross.cpp), which has no stretched
+  // variant; its duration just above the new fastest is one more undecided (89791 met, 61
+  // undecided before).
+  CHECK(met == 89790);
   CHECK(proven_gaps == 148);
-  CHECK(undecided == 61);
+  CHECK(undecided == 62);
 }
 
 TEST_CASE("durations just above the fastest: the stretched two-peak change takes more of them") {
@@ -130,10 +133,12 @@ TEST_CASE("durations just above the fastest: the stretched two-peak change takes
           ", undecided ", c.undecided);
   CHECK(c.durations == 45000);
   // Measured (session 30): without the stretched two-peak change 44941 met, 59 undecided;
-  // without its first dip of the start's acceleration 44952, 48.
-  CHECK(c.met == 44957);
+  // without its first dip of the start's acceleration 44952, 48. Session 31: draw 313's fastest
+  // is now a braking turn through v = 0 (jerk/dip_cross.cpp) without a stretched variant: its
+  // 30 durations up to 1 % above it are undecided (44957 met, 43 undecided before).
+  CHECK(c.met == 44927);
   CHECK(c.proven_gaps == 0);
-  CHECK(c.undecided == 43);
+  CHECK(c.undecided == 73);
 }
 
 TEST_CASE("a duration between the level family's runs is met by a stretched two-peak change") {
