@@ -106,6 +106,18 @@ double member(const Frame& f, double x, const Limits& lim, DipCrossing& out) noe
   return s.p + distance(0.0, x, out.rest);
 }
 
+// Whether a member taking at most t_lo [s] can cover the distance d [mm]: the velocity rises
+// monotonically from u0 < 0 to w1 > 0 with an acceleration of at most max(A+, A-), so it
+// spends at least (w1 - u0) / a_hi of its time t on the change and covers
+//     u0 t + c <= d(x) <= w1 t - c,  c = (w1 - u0)^2 / (2 a_hi),
+// and t <= t_lo widens both sides. A margin of 1e-9 keeps rounding on the safe side.
+bool within_reach(const Frame& f, const Limits& lim, double d, double t_lo) noexcept {
+  const double dv = f.w1 - f.u0;
+  const double c = dv * dv / (2.0 * std::max(lim.a_max, lim.d_max));
+  const double margin = 1e-9 * (f.w1 - f.u0) * t_lo;
+  return d <= f.w1 * t_lo - c + margin && d >= f.u0 * t_lo + c - margin;
+}
+
 // The member in the cell [x_a, x_b] (g = d(x) - D changes its sign between them) where
 // d(x) = D, into `out`: the bracketed solver of the level searches (jerk/root.hpp; without
 // slopes: regula falsi with the Anderson-Bjorck weight) on the cell.
@@ -149,7 +161,11 @@ Status detail::dip_crossing_move_trusted(const State& start, double p1, double v
   if (!frame_of(start, v1, lim, f)) return Status::not_supported;
   const double d = f.g * (p1 - start.p);
   out.sign = f.g;
-  // The fastest member first (no dip): where it is not faster than t_max no member is.
+  // The slowest member (the lowest dip) first: its time bounds every member's, and so the
+  // distances the family can cover (most targets of a braking start lie far outside them).
+  const double g_lo = member(f, f.x_lo, lim, out) - d;
+  if (!std::isnan(g_lo) && !within_reach(f, lim, d, out.time())) return Status::not_supported;
+  // The fastest member (no dip): where it is not faster than t_max no member is.
   const double d_hi = member(f, f.b0, lim, out);
   if (!(out.time() < t_max) || std::isnan(d_hi)) return Status::not_supported;
   // The fastest member meeting the target is the root of d(x) = D with the largest dip
@@ -163,9 +179,12 @@ Status detail::dip_crossing_move_trusted(const State& start, double p1, double v
   if (g_top == 0.0) return Status::ok;
   for (int k = kCells - 1; k >= 0; --k) {
     const double x = f.x_lo + (f.b0 - f.x_lo) * k / kCells;
-    const double gx = member(f, x, lim, out) - d;
+    const double gx = k == 0 ? g_lo : member(f, x, lim, out) - d;
     if (std::isnan(gx)) break;
-    if (gx == 0.0) return Status::ok;
+    if (gx == 0.0) {
+      if (k == 0) member(f, x, lim, out);
+      return Status::ok;
+    }
     if ((gx < 0.0) != (g_top < 0.0)) {
       solve_cell(f, lim, d, tol, x, gx, x_top, g_top, out);
       return Status::ok;
