@@ -22,8 +22,12 @@
 // target is the root of d(x) = D with the largest x. The distance d(x) is not monotone (it
 // rises, falls and, where the crossing's case changes, rises again), so that root is looked for
 // from the top down over the cells of a grid and solved in the first cell whose ends differ in
-// sign, by the bracketed solver of the level searches (jerk/root.hpp). The member at x = b0,
-// the family's fastest, decides first whether it can beat a time found elsewhere.
+// sign, by the bracketed solver of the level searches (jerk/root.hpp). Before the scan, three
+// decisions from the two ends: the slowest member (x_lo) bounds every member's time and so,
+// by the limits alone, the distances the family covers (within_reach); the fastest (x = b0)
+// must beat the time found elsewhere; and the two ends bound every member's velocity (the
+// fastest from above, crossing_ramp's upper envelope; the slowest from below; both checked in
+// dip_cross_test.cpp), so d_lo - w1 dt <= d(x) <= d_hi + w1 dt, dt = t_lo - t_hi.
 
 #include <algorithm>
 #include <cmath>
@@ -163,11 +167,18 @@ Status detail::dip_crossing_move_trusted(const State& start, double p1, double v
   out.sign = f.g;
   // The slowest member (the lowest dip) first: its time bounds every member's, and so the
   // distances the family can cover (most targets of a braking start lie far outside them).
-  const double g_lo = member(f, f.x_lo, lim, out) - d;
-  if (!std::isnan(g_lo) && !within_reach(f, lim, d, out.time())) return Status::not_supported;
+  const double d_lo = member(f, f.x_lo, lim, out);
+  const double t_lo = out.time();
+  if (!std::isnan(d_lo) && !within_reach(f, lim, d, t_lo)) return Status::not_supported;
   // The fastest member (no dip): where it is not faster than t_max no member is.
   const double d_hi = member(f, f.b0, lim, out);
   if (!(out.time() < t_max) || std::isnan(d_hi)) return Status::not_supported;
+  // The two ends bound every member's velocity (the fastest from above, the slowest from below:
+  // dip_cross_test.cpp), so d_lo - w1 dt <= d(x) <= d_hi + w1 dt, dt = t_lo - t_hi.
+  if (!std::isnan(d_lo)) {
+    const double slack = f.w1 * (t_lo - out.time()) + 1e-9 * (f.w1 - f.u0) * t_lo;
+    if (d > d_hi + slack || d < d_lo - slack) return Status::not_supported;
+  }
   // The fastest member meeting the target is the root of d(x) = D with the largest dip
   // acceleration x. d is not monotone (it rises, falls and, past a change of the crossing's
   // case, rises again: dip_cross_test.cpp), so the cells of a grid over [x_lo, b0] are
@@ -179,7 +190,7 @@ Status detail::dip_crossing_move_trusted(const State& start, double p1, double v
   if (g_top == 0.0) return Status::ok;
   for (int k = kCells - 1; k >= 0; --k) {
     const double x = f.x_lo + (f.b0 - f.x_lo) * k / kCells;
-    const double gx = k == 0 ? g_lo : member(f, x, lim, out) - d;
+    const double gx = (k == 0 ? d_lo : member(f, x, lim, out)) - d;
     if (std::isnan(gx)) break;
     if (gx == 0.0) {
       if (k == 0) member(f, x, lim, out);

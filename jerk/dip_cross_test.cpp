@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <random>
 
 #include "jerk/jerk.hpp"
@@ -71,6 +72,38 @@ bool draw(std::mt19937_64& rng, Draw& d) {
   if (!reference_member(d.start, d.v1, d.lim, d.x, m)) return false;
   d.p1 = m.end.p;
   return true;
+}
+
+// The frame velocity of the member with dip x at time t (clamped to its end), chained from
+// the public pieces as reference_member.
+double velocity_at(const Draw& d, double x, double t) {
+  const double g = d.v1 > 0.0 ? 1.0 : -1.0;
+  const double j = d.lim.j_max;
+  const double b0 = g * d.start.a;
+  const double t_dip = (b0 - x) / j;
+  State s{0.0, g * d.start.v, b0};
+  if (t <= t_dip) return ncsim::jerk::advance(s, -j, t).v;
+  s = ncsim::jerk::advance(s, -j, t_dip);
+  s.a = x;
+  t -= t_dip;
+  ncsim::jerk::Crossing cross;
+  ncsim::jerk::Ramp rest;
+  if (!(s.v < 0.0) || !ncsim::jerk::crossing_ramp(s.v, x, std::abs(d.v1), d.lim, cross, rest))
+    return NAN;
+  const auto run = [&](const auto& jerks, const auto& durations) {
+    for (std::size_t i = 0; i < 3; ++i) {
+      const double dt = std::min(t, durations[i]);
+      s = ncsim::jerk::advance(s, jerks[i], dt);
+      t -= dt;
+      if (t <= 0.0) return true;
+    }
+    return false;
+  };
+  if (run(cross.jerk, cross.duration)) return s.v;
+  s.v = 0.0;
+  s.a = cross.a_zero;
+  if (run(rest.jerk, rest.duration)) return s.v;
+  return std::abs(d.v1);
 }
 
 // The reference: the fastest member with end position p1 (its time), found on 2000 cells from
@@ -157,6 +190,39 @@ TEST_CASE("the family's time falls with the dip (the search's premise)") {
     checked += any ? 1 : 0;
   }
   CHECK(checked > 250);
+}
+
+TEST_CASE("the family's ends bound every member's velocity (the search's distance bound)") {
+  // dip_crossing_move rejects a target outside [d_lo - w1 dt, d_hi + w1 dt] before its scan:
+  // that needs v_lo(t) <= v_x(t) <= v_hi(t) for every member x while it lasts (x_lo the
+  // slowest member, b0 the fastest, crossing_ramp's upper envelope).
+  std::mt19937_64 rng(20261128);
+  int checked = 0;
+  for (int n = 0; n < 200; ++n) {
+    Draw d;
+    if (!draw(rng, d)) continue;
+    const double g = d.v1 > 0.0 ? 1.0 : -1.0;
+    const double b0 = g * d.start.a;
+    const double x_lo = std::sqrt(std::max(0.0, b0 * b0 + 2.0 * d.lim.j_max * g * d.start.v));
+    const double x_low = x_lo * (1.0 + 1e-12) + 1e-300;  // the dip's end still below v = 0
+    Member slowest;
+    if (!reference_member(d.start, d.v1, d.lim, x_low, slowest)) continue;
+    const double scale = std::abs(d.v1) + std::abs(d.start.v);
+    for (int k = 1; k < 20; ++k) {
+      const double x = x_lo + (b0 - x_lo) * k / 20.0;
+      Member m;
+      if (!reference_member(d.start, d.v1, d.lim, x, m)) continue;
+      for (int q = 0; q <= 40; ++q) {
+        const double t = m.t * q / 40.0;
+        const double v = velocity_at(d, x, t);
+        INFO("n=", n, " k=", k, " q=", q);
+        CHECK(v <= velocity_at(d, b0, t) + 1e-9 * scale);
+        CHECK(v >= velocity_at(d, x_low, t) - 1e-9 * scale);
+      }
+    }
+    ++checked;
+  }
+  CHECK(checked > 100);
 }
 
 TEST_CASE("dip_crossing_move: no dip is crossing_ramp; outside the family it is not supported") {
