@@ -1,8 +1,8 @@
 // ProfileRule::time_optimal for braking starts that must turn round (issue 11;
-// docs/axes-profile.md, "Braking through v = 0 with a free peak"): the start moves against the
-// arrival velocity and brakes, the target is close. The six cases the shape-free LP reference found
-// (five from its runs, one found while building it), each with the reference's time: T_exact of its
-// exact refinement (tier 2, a valid profile: the kernel may not be slower by more than 1e-9
+// docs/axes-profile.md, "Shape-free reference (LP)", "Found, then built"): the start moves against
+// the arrival velocity and brakes, the target is close. The six cases the shape-free LP reference
+// found (five from its runs, one found while building it), each with the reference's time: T_exact
+// of its exact refinement (tier 2, a valid profile: the kernel may not be slower by more than 1e-9
 // relative), or for case 5, where tier 2 did not converge, the LP's own valid motion T_lp.
 // Before the family "dip, then cross v = 0" the kernel was 1.3 %..50 % slower in these.
 

@@ -1,5 +1,5 @@
 // jerk/dip_cross.cpp: braking through v = 0 with a free peak (see jerk.hpp, DipCrossing;
-// docs/axes-profile.md, "Braking through v = 0 with a free peak").
+// docs/axes-profile.md, "Shape-free reference (LP)", "Found, then built").
 //
 // In the frame of the arrival velocity (g = sign(v1), start u0 = g v0 < 0 moving against it,
 // braking with b0 = g a0 in (0, A-], end w1 = |v1| > 0, distance D = g (p1 - p0)), the
@@ -44,7 +44,9 @@ namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 // Cells of the grid over the dip on which the largest root is looked for (its cost: a member
-// evaluation each, only where the family's fastest member beats the best time found).
+// evaluation each, only where the bounds before it leave the target within reach and the
+// fastest member beats the best time found). 8 and 16 cells missed the fastest root in some of
+// dip_cross_test.cpp's 2000 draws, 32 in none.
 constexpr int kCells = 32;
 
 // The family's frame (sign of v1) and its constants.
