@@ -47,6 +47,7 @@ void append_dip_crossing(ProfileBuilder& b, const jerk::DipCrossing& dc) noexcep
   b.mark_brake();  // as the two-peak change: the change after the dip
   b.add(dc.cross, dc.sign);
   b.add(dc.rest, dc.sign);
+  b.add(0.0, dc.t_cruise);
 }
 
 // Level of the fastest rest-to-rest move under the real A+ and A-: the highest vm <= V with
@@ -511,6 +512,16 @@ Result position_of_duration(const MotionState& start, const PositionTarget& targ
     detail::ProfileBuilder b(out, start);
     detail::append_move(b, rev.out);
     detail::append_move(b, rev.back);
+    b.finish(&end);
+    return Result::ok;
+  }
+  // A braking turn through v = 0 (jerk/dip_cross.cpp) with a cruise at the arrival velocity at
+  // its end (issue 11, session 31).
+  jerk::DipCrossing dc;
+  if (target.v != 0.0 && jerk::dip_crossing_of_duration(start, target.p, target.v, duration, dyn,
+                                                        dc) == jerk::Status::ok) {
+    detail::ProfileBuilder b(out, start);
+    detail::append_dip_crossing(b, dc);
     b.finish(&end);
     return Result::ok;
   }

@@ -93,6 +93,7 @@ double member(const Frame& f, double x, const Limits& lim, DipCrossing& out) noe
   const double j = lim.j_max;
   const double ease = f.b0 - x;
   out.jerk = -j;
+  out.t_cruise = 0.0;
   out.dip = ease > detail::kResidue * f.b0 ? ease / j : 0.0;
   out.a_dip = x;
   State s = advance(State{0.0, f.u0, f.b0}, -j, out.dip);
@@ -231,7 +232,45 @@ State end_state(const State& start, const DipCrossing& dc) noexcept {
   st = advance(st, r.jerk[2], r.duration[2]);
   st.a = 0.0;
   st.v = r.v_end;
+  st = advance(st, 0.0, dc.t_cruise);
   return State{s * st.p, s * st.v, s * st.a};
+}
+
+Status dip_crossing_of_duration(const State& start, double p1, double v1, double duration,
+                                const Limits& lim, DipCrossing& out) noexcept {
+  if (!std::isfinite(duration) || duration < 0.0) return Status::invalid_input;
+  DipCrossing fastest;
+  const Status st = dip_crossing_move(start, p1, v1, lim, fastest);
+  if (st != Status::ok) return st;
+  const double t_min = fastest.time();
+  if (duration <= t_min) {
+    if (duration < t_min * (1.0 - 1e-12)) return Status::too_short;
+    out = fastest;
+    return Status::ok;
+  }
+  // T(tau) = time of the fastest member meeting p1 - v1 tau, plus tau; T(0) = t_min < duration,
+  // T(tau) >= tau. Where no member meets the moved target (it leaves the family's reach) the
+  // cruise counts as too long. Bisection between the last tau found short and the first long.
+  DipCrossing dc;
+  const auto too_long = [&](double tau) {
+    if (dip_crossing_move(start, p1 - v1 * tau, v1, lim, dc) != Status::ok) return true;
+    return dc.time() + tau >= duration;
+  };
+  double lo = 0.0;
+  double hi = duration;  // T(duration) >= duration (or no member)
+  for (int i = 0; i < 200 && hi - lo > kEps * hi; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (too_long(mid) ? hi : lo) = mid;
+  }
+  for (const double tau : {lo, hi}) {
+    if (dip_crossing_move(start, p1 - v1 * tau, v1, lim, dc) != Status::ok) continue;
+    if (std::abs(dc.time() + tau - duration) <= 1e-12 * duration) {
+      out = dc;
+      out.t_cruise = tau;
+      return Status::ok;
+    }
+  }
+  return Status::not_supported;  // T jumps over the duration (the fastest root changed branch)
 }
 
 }  // namespace ncsim::jerk

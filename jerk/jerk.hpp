@@ -233,14 +233,15 @@ Status reversal_move(const State& start, double p1, double v1, const Limits& lim
 /// braking first (the turn's level at the release velocity, reversal_move). All values but
 /// `sign` in the frame.
 struct DipCrossing {
-  double sign = 1.0;   ///< world direction of the frame (sign of v1)
-  double jerk = 0.0;   ///< jerk of the easing phase, -J [mm/s^3]
-  double dip = 0.0;    ///< duration of the easing phase [s], >= 0
-  double a_dip = 0.0;  ///< acceleration after it [mm/s^2], in [0, b0]
-  Crossing cross;      ///< from the dip's end through v = 0 (all 0 where the dip ends at v = 0)
-  Ramp rest;           ///< from (0, cross.a_zero) to (|v1|, 0)
+  double sign = 1.0;      ///< world direction of the frame (sign of v1)
+  double jerk = 0.0;      ///< jerk of the easing phase, -J [mm/s^3]
+  double dip = 0.0;       ///< duration of the easing phase [s], >= 0
+  double a_dip = 0.0;     ///< acceleration after it [mm/s^2], in [0, b0]
+  Crossing cross;         ///< from the dip's end through v = 0 (all 0 where the dip ends at v = 0)
+  Ramp rest;              ///< from (0, cross.a_zero) to (|v1|, 0)
+  double t_cruise = 0.0;  ///< cruise at |v1| after `rest` (prescribed durations only) [s]
   /// Total duration [s].
-  double time() const noexcept { return dip + cross.time() + rest.time(); }
+  double time() const noexcept { return dip + cross.time() + rest.time() + t_cruise; }
 };
 
 /// The DipCrossing from `start` to (p1, v1, a = 0) where its distance reaches the target
@@ -250,6 +251,14 @@ struct DipCrossing {
 /// more acceleration than v1 allows) or the target lies outside the family's distances.
 Status dip_crossing_move(const State& start, double p1, double v1, const Limits& limits,
                          DipCrossing& out) noexcept;
+
+/// A DipCrossing from `start` to (p1, v1, a = 0) taking exactly `duration` [s] (>= the fastest
+/// one's time): the change meets p1 - v1 t_cruise and the rest is cruised at v1, t_cruise found
+/// by bisection (each step the fastest member for its target). Status::too_short below the
+/// fastest time; not_supported where the family does not apply or no cruise gives the duration
+/// to 1e-12 (the members end before the target moves out of their reach).
+Status dip_crossing_of_duration(const State& start, double p1, double v1, double duration,
+                                const Limits& limits, DipCrossing& out) noexcept;
 
 /// World state at the end of `dc` started from `start` (closed-form chain).
 State end_state(const State& start, const DipCrossing& dc) noexcept;
