@@ -20,6 +20,7 @@ ncsim_add_test(NAME axes_profile_tests
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_online_test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_start_state_test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_optimal_test.cpp
+    ${CMAKE_CURRENT_SOURCE_DIR}/profile_turn_test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_reference_test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_duration_test.cpp
     ${CMAKE_CURRENT_SOURCE_DIR}/profile_duration_gap_test.cpp

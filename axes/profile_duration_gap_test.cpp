@@ -116,7 +116,9 @@ TEST_CASE("every duration with a known profile is met exactly; every NC5015 is a
   // Measured (session 30): before the rest families 221 durations answered NC5015, 12 of them
   // (2 draws) although a profile was known; the undecided ones are 3 starts moving away (v0 < 0 in
   // the frame toward the target), 2 arrivals against it (v1 < 0) and 2 within the bounds' jerk
-  // slack (docs/axes-profile.md, "Prescribed durations", gaps).
+  // slack (docs/axes-profile.md, "Prescribed durations", gaps). Session 31: draw 313's fastest
+  // profile is now a braking turn through v = 0 (jerk/dip_cross.cpp); without its stretch (a
+  // cruise at v1 after it) 89790 met, 62 undecided.
   CHECK(met == 89791);
   CHECK(proven_gaps == 148);
   CHECK(undecided == 61);
@@ -130,7 +132,9 @@ TEST_CASE("durations just above the fastest: the stretched two-peak change takes
           ", undecided ", c.undecided);
   CHECK(c.durations == 45000);
   // Measured (session 30): without the stretched two-peak change 44941 met, 59 undecided;
-  // without its first dip of the start's acceleration 44952, 48.
+  // without its first dip of the start's acceleration 44952, 48. Session 31: draw 313's fastest
+  // is now a braking turn through v = 0 (jerk/dip_cross.cpp); without its stretch (a cruise at
+  // v1 after it) its 30 durations up to 1 % above it were undecided (44927 met, 73 undecided).
   CHECK(c.met == 44957);
   CHECK(c.proven_gaps == 0);
   CHECK(c.undecided == 43);

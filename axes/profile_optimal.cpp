@@ -41,6 +41,15 @@ void append_two_peak(ProfileBuilder& b, const jerk::TwoPeak& tp) noexcept {
   }
 }
 
+void append_dip_crossing(ProfileBuilder& b, const jerk::DipCrossing& dc) noexcept {
+  b.set_level(std::abs(dc.rest.v_end));
+  b.add(dc.sign * dc.jerk, dc.dip, dc.sign * dc.a_dip);
+  b.mark_brake();  // as the two-peak change: the change after the dip
+  b.add(dc.cross, dc.sign);
+  b.add(dc.rest, dc.sign);
+  b.add(0.0, dc.t_cruise);
+}
+
 // Level of the fastest rest-to-rest move under the real A+ and A-: the highest vm <= V with
 // d(vm) = ramp(vm, A+) + ramp(vm, A-) <= D, split by which limits the ramps reach:
 //  - neither (vm J <= min(A)^2):   D = 2 vm^1.5 / sqrt(J)          -> vm = cbrt(D^2 J / 4);
@@ -182,6 +191,22 @@ bool plan_fastest(const MotionState& start, const PositionTarget& target, const 
       ProfileBuilder b(out, start);
       append_move(b, rev.out);
       append_move(b, rev.back);
+      b.finish(&end);
+    }
+  }
+  // Candidate 3b: brake through v = 0 with a free peak (ease the braking to a dip, then the
+  // crossing): a braking start moving against the arrival velocity, straight to it (issue 11,
+  // session 31; jerk/dip_cross.cpp). Skipped where its shape does not apply (no member
+  // evaluated) and where its fastest member is not faster than the best found.
+  if (target.v != 0.0 && jerk::detail::dip_crossing_applies(start, target.v, dyn)) {
+    jerk::DipCrossing dc;
+    if (jerk::detail::dip_crossing_move_trusted(start, target.p, target.v, dyn, t_best, dc) ==
+            jerk::Status::ok &&
+        dc.time() < t_best) {
+      found = true;
+      t_best = dc.time();
+      ProfileBuilder b(out, start);
+      append_dip_crossing(b, dc);
       b.finish(&end);
     }
   }
@@ -487,6 +512,16 @@ Result position_of_duration(const MotionState& start, const PositionTarget& targ
     detail::ProfileBuilder b(out, start);
     detail::append_move(b, rev.out);
     detail::append_move(b, rev.back);
+    b.finish(&end);
+    return Result::ok;
+  }
+  // A braking turn through v = 0 (jerk/dip_cross.cpp) with a cruise at the arrival velocity at
+  // its end (issue 11, session 31).
+  jerk::DipCrossing dc;
+  if (target.v != 0.0 && jerk::dip_crossing_of_duration(start, target.p, target.v, duration, dyn,
+                                                        dc) == jerk::Status::ok) {
+    detail::ProfileBuilder b(out, start);
+    detail::append_dip_crossing(b, dc);
     b.finish(&end);
     return Result::ok;
   }

@@ -222,6 +222,47 @@ struct Reversal {
 Status reversal_move(const State& start, double p1, double v1, const Limits& limits,
                      Reversal& out) noexcept;
 
+/// A change that brakes through v = 0 with a free peak (issue 11, session 31): from a start
+/// moving against the arrival velocity v1 != 0 while braking (in the frame of v1, sign g =
+/// sign(v1): u0 = g v0 < 0, b0 = g a0 in (0, A-]) straight to (p1, v1, 0), the velocity
+/// monotone from u0 to g v1: the braking first eases to a_dip in [0, b0] (jerk -J in the
+/// frame), then the crossing of crossing_ramp from there (A- before v = 0, A+ after: a peak up
+/// to A-, at v = 0 the acceleration min(A-, A+, sqrt(2 J |v1|), the start's own), the rest
+/// under A+). a_dip = b0 is crossing_ramp itself; smaller dips keep the motion longer against
+/// v1, so they cover a distance between the direct crossing's and that of releasing the
+/// braking first (the turn's level at the release velocity, reversal_move). All values but
+/// `sign` in the frame.
+struct DipCrossing {
+  double sign = 1.0;      ///< world direction of the frame (sign of v1)
+  double jerk = 0.0;      ///< jerk of the easing phase, -J [mm/s^3]
+  double dip = 0.0;       ///< duration of the easing phase [s], >= 0
+  double a_dip = 0.0;     ///< acceleration after it [mm/s^2], in [0, b0]
+  Crossing cross;         ///< from the dip's end through v = 0 (all 0 where the dip ends at v = 0)
+  Ramp rest;              ///< from (0, cross.a_zero) to (|v1|, 0)
+  double t_cruise = 0.0;  ///< cruise at |v1| after `rest` (prescribed durations only) [s]
+  /// Total duration [s].
+  double time() const noexcept { return dip + cross.time() + rest.time() + t_cruise; }
+};
+
+/// The DipCrossing from `start` to (p1, v1, a = 0) where its distance reaches the target
+/// (between the direct crossing's and the released one's; the dip found by a bracketed root
+/// search, jerk/dip_cross.cpp). Status::not_supported where the shape does not apply (v1 == 0,
+/// a start not moving against v1, not braking, beyond A- or V, or one that reaches v = 0 with
+/// more acceleration than v1 allows) or the target lies outside the family's distances.
+Status dip_crossing_move(const State& start, double p1, double v1, const Limits& limits,
+                         DipCrossing& out) noexcept;
+
+/// A DipCrossing from `start` to (p1, v1, a = 0) taking exactly `duration` [s] (>= the fastest
+/// one's time): the change meets p1 - v1 t_cruise and the rest is cruised at v1, t_cruise found
+/// by bisection (each step the fastest member for its target). Status::too_short below the
+/// fastest time; not_supported where the family does not apply or no cruise gives the duration
+/// to 1e-12 (the members end before the target moves out of their reach).
+Status dip_crossing_of_duration(const State& start, double p1, double v1, double duration,
+                                const Limits& limits, DipCrossing& out) noexcept;
+
+/// World state at the end of `dc` started from `start` (closed-form chain).
+State end_state(const State& start, const DipCrossing& dc) noexcept;
+
 namespace detail {
 /// fastest_move with Newton steps only in its level search (no curvature step): the oracle of
 /// the curvature step (level_curve_test.cpp); the same result to the search's tolerance.

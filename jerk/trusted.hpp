@@ -30,4 +30,15 @@ bool two_peak_applies(const State& start, double p1, double v1, const Limits& li
 Status reversal_move_trusted(const State& start, double p1, double v1, const Limits& limits,
                              Reversal& out) noexcept;
 
+/// Whether dip_crossing_move's shape applies at all (its early exits: v1 != 0, a start moving
+/// against v1 and braking within A- and V, one that can still reach v = 0 within what v1 and the
+/// limits allow): no level or root evaluated. Without input check.
+bool dip_crossing_applies(const State& start, double v1, const Limits& limits) noexcept;
+
+/// dip_crossing_move without its input check; also not_supported where the family's fastest
+/// member (no dip: its time falls with the dip's acceleration) is not faster than `t_max` [s],
+/// decided from that member alone.
+Status dip_crossing_move_trusted(const State& start, double p1, double v1, const Limits& limits,
+                                 double t_max, DipCrossing& out) noexcept;
+
 }  // namespace ncsim::jerk::detail
