@@ -219,7 +219,7 @@ std::string positioned(const interp::Interpreter& interp, const ipo::RunTimeErro
 // The audit verdict, one line per axis, then the documented steps and every violation listed.
 void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names,
                  const std::vector<std::string>& units, const interp::Interpreter& interp,
-                 std::ostream& os) {
+                 std::ostream& os, bool each_step) {
   for (std::size_t i = 0; i < v.axes.size(); ++i) {
     const ipo::AxisAudit& a = v.axes[i];
     const std::string& u = i < units.size() ? units[i] : std::string("mm");
@@ -246,22 +246,33 @@ void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names,
      << human(v.contour_tolerance) << " mm), " << v.step_count
      << " documented VELOJUMP / TRANSVELMIN / C1 steps within their formulas, " << v.cycles
      << " cycles\n";
+  // One documented step: where, which axis, its value against its formula's bound.
+  const auto step_text = [&](const ipo::Step& s) {
+    const bool c1 = s.quantity == ipo::Quantity::c1_step;  // an acceleration step
+    const char* unit = c1 ? "/s^2" : "/s";
+    const std::string& u = s.axis < units.size() ? units[s.axis] : std::string("mm");
+    std::ostringstream t;
+    t << "t=" << num(s.t) << " s line " << block_where(interp, s.file, s.line) << " axis "
+      << (s.axis < names.size() ? names[s.axis] : std::to_string(s.axis))
+      << (s.joint ? " under #TRAFO " : " ") << (c1 ? "|da| " : "|dv| ") << human(s.value) << " of "
+      << human(s.bound) << ' ' << u << unit << " at the link velocity " << human(s.v_link)
+      << " mm/s";
+    return t.str();
+  };
   // The documented steps listed apart (issue 12): per kind, how many and the closest to its
-  // formula's bound (the axis that came closest at that joint).
+  // formula's bound (the axis that came closest at that joint); with --audit-steps each one.
   for (std::size_t k = 0; k < ipo::kStepKindNames.size(); ++k) {
     const ipo::StepKind& sk = v.step_kinds[k];
     if (sk.count == 0) continue;
-    const ipo::Step& s = sk.closest;
-    const bool c1 = k == ipo::step_kind(ipo::Quantity::c1_step);  // an acceleration step
-    const char* unit = c1 ? "/s^2" : "/s";
-    const std::string& u = s.axis < units.size() ? units[s.axis] : std::string("mm");
     os << "audit: " << ipo::kStepKindNames[k] << " steps " << sk.count << ", closest to "
-       << ipo::kStepKindFormulas[k] << ": t=" << num(s.t) << " s line "
-       << block_where(interp, s.file, s.line) << " axis "
-       << (s.axis < names.size() ? names[s.axis] : std::to_string(s.axis))
-       << (s.joint ? " under #TRAFO " : " ") << (c1 ? "|da| " : "|dv| ") << human(s.value) << " of "
-       << human(s.bound) << ' ' << u << unit << " at the link velocity " << human(s.v_link)
-       << " mm/s\n";
+       << ipo::kStepKindFormulas[k] << ": " << step_text(sk.closest) << '\n';
+  }
+  if (each_step) {
+    for (const ipo::Step& s : v.steps)
+      os << "audit: step " << ipo::kStepKindNames[ipo::step_kind(s.quantity)] << ' ' << step_text(s)
+         << '\n';
+    if (v.step_count > v.steps.size())
+      os << "audit: ... " << (v.step_count - v.steps.size()) << " more steps\n";
   }
   for (const ipo::Violation& x : v.violations) {
     os << "audit: violation t=" << num(x.t) << " s line " << block_where(interp, x.file, x.line)
@@ -402,7 +413,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
   // pass): the same cycles, so the total equals run's last t to the cycle.
   ipo::ChannelConfig cfg = ipo::channel_config(in.machine, in.t_cycle);
   std::unique_ptr<ipo::Audit> audit;
-  if (options.audit)
+  if (options.audit || options.audit_steps)
     audit = std::make_unique<ipo::Audit>(cfg.path.axes, cfg.path.channel.t_cycle, cfg.path.start);
   if (audit && cfg.path.joints)  // --- trafo: the joints are the machine axes
     audit->set_joint_limits(cfg.path.joints->joints, cfg.path.start, true);
@@ -486,8 +497,8 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
   }
   if (audit) {
     const ipo::Verdict& v = audit->verdict();
-    print_audit(v, axis_names(in.machine), axis_units(in.machine), interp,
-                options.json ? err : out);
+    print_audit(v, axis_names(in.machine), axis_units(in.machine), interp, options.json ? err : out,
+                options.audit_steps);
     if (!v.ok()) return kExitAudit;
   }
   return kExitOk;
@@ -690,7 +701,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   const std::vector<std::string> names = axis_names(in.machine);
   CsvSink csv(f, names.size(), options.every, options.detail);
   std::unique_ptr<ipo::Audit> audit;
-  if (options.audit) {
+  if (options.audit || options.audit_steps) {
     audit = std::make_unique<ipo::Audit>(cfg.path.axes, cfg.path.channel.t_cycle, cfg.path.start);
     if (cfg.path.joints)  // --- trafo: the joints are the machine axes
       audit->set_joint_limits(cfg.path.joints->joints, cfg.path.start, true);
@@ -815,7 +826,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
     return kExitProgramErrors;
   }
   if (audit) {
-    print_audit(audit->verdict(), names, axis_units(in.machine), interp, err);
+    print_audit(audit->verdict(), names, axis_units(in.machine), interp, err, options.audit_steps);
     if (!audit->verdict().ok()) return kExitAudit;
   }
   return kExitOk;
@@ -929,6 +940,8 @@ RunCommands::RunCommands(CLI::App& app) {
   time_cmd_->add_flag("--blocks", time_.blocks, "Per executed block: time, distance, feeds, split");
   time_cmd_->add_flag("--json", time_.json, "JSON instead of text");
   time_cmd_->add_flag("--audit", time_.audit, "Check every limit; exit 3 on a violation");
+  time_cmd_->add_flag("--audit-steps", time_.audit_steps,
+                      "As --audit, and list every documented step (the first 1000)");
   add_cycle_us_option(*time_cmd_, time_.cycle_us);
 
   run_cmd_ = app.add_subcommand("run", "Run on the path interpolator and write the CSV trajectory");
@@ -939,6 +952,8 @@ RunCommands::RunCommands(CLI::App& app) {
       ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
   add_cycle_us_option(*run_cmd_, run_.cycle_us);
   run_cmd_->add_flag("--audit", run_.audit, "Check every limit (verdict on stderr); exit 3");
+  run_cmd_->add_flag("--audit-steps", run_.audit_steps,
+                     "As --audit, and list every documented step (the first 1000)");
   run_cmd_->add_flag(
       "--detail", run_.detail,
       "Add each axis's v and a, the path velocity, the programmed feed and each axis's "

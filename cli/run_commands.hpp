@@ -39,6 +39,7 @@ struct TimeOptions {
   bool blocks = false;                    ///< --blocks: one record per executed block
   bool json = false;                      ///< --json
   bool audit = false;                     ///< --audit: the audit sink in the same pass
+  bool audit_steps = false;               ///< --audit-steps: --audit, every step listed
   std::optional<std::uint64_t> cycle_us;  ///< --cycle-us: interpolation cycle [us]
 };
 
@@ -47,7 +48,8 @@ struct RunOptions {
   std::string output = "-";  ///< -o: CSV file, "-" for stdout
   std::uint64_t every = 1;   ///< --every N: one row per N cycles
   std::optional<std::uint64_t> cycle_us;
-  bool audit = false;   ///< --audit: the verdict on stderr, exit 3 on a violation
+  bool audit = false;        ///< --audit: the verdict on stderr, exit 3 on a violation
+  bool audit_steps = false;  ///< --audit-steps: --audit, every documented step listed
   bool detail = false;  ///< --detail: per-axis v and a, path velocity, programmed feed, per-axis
                         ///< following error (`<axis>.ferr`, mm | deg)
   // --- report: the HTML run report of the same pass (docs/report.md)

@@ -270,6 +270,11 @@ expect "time --json" 0 '"total_s":7\.035' '' -- time --json --blocks "$fixtures/
 expect "time --audit lists the documented steps per kind" 0 \
   '^audit: VELOJUMP steps 14, closest to C0 min\(A\+, \|A-\|\) T: t=[0-9.]+ s line [0-9]+ axis [XY] \|dv\| 3 of 3 mm/s at the link velocity [0-9.]+ mm/s$' \
   '' -- time --audit "$root/programs/corner_angles/corner_angles.nc"
+expect "time --audit-steps lists every documented step, each against its formula" 0 \
+  '^audit: step VELOJUMP t=[0-9.]+ s line [0-9]+ axis [XY] \|dv\| [0-9.e-]+ of 3 mm/s at the link velocity [0-9.]+ mm/s$' \
+  '' -- time --audit-steps "$root/programs/corner_angles/corner_angles.nc"
+expect "run --audit-steps: the steps with the verdict on stderr" 0 '' \
+  '^audit: step VELOJUMP t=' -- run --audit-steps -o "$work/steps.csv" "$root/programs/corner_angles/corner_angles.nc"
 expect "time --audit passes on the long line" 0 '^audit: ok$' '' -- \
   time --audit "$fixtures/long_line.nc"
 expect "run --audit passes on the long line" 0 '' '^audit: ok$' -- \
