@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <vector>
 
 #include "ipo/test_support.hpp"
@@ -179,6 +180,22 @@ TEST_CASE("a reversal at C0 = 1, A = 10000, T = 1 ms: link 5 mm/s, step 10 mm/s 
   CHECK(v.steps[0].line == 1);
 }
 
+/// The verdict on `moves` planned under `axes` and audited against half their jerk.
+Verdict audited_with_half_jerk(const std::vector<planner::AxisLimits>& axes,
+                               std::initializer_list<planner::Move> moves) {
+  std::vector<planner::AxisLimits> half = axes;
+  for (planner::AxisLimits& a : half)
+    a.j_max *= 0.5;
+  Audit strict(half, 0.001, AxisVec{});
+  ListSource src(std::vector<Item>(moves.begin(), moves.end()));
+  Config cfg;
+  cfg.axes = axes;
+  PathInterpolator ipo(cfg, src, &strict);
+  while (ipo.step() == Status::running) {
+  }
+  return strict.verdict();
+}
+
 TEST_CASE("a line into a tangent arc R = 10 links at sqrt(J T R): its C1 step is j T, listed") {
   // docs/planner.md "C1" (P-CHAN-00009): the acceleration step v^2 |dx''_i| of each axis at
   // most j_i T. J = 1e5 mm/s^3, T = 1 ms, R = 10 mm: v_link = sqrt(1e5 * 1e-3 * 10) = 31.62
@@ -202,17 +219,7 @@ TEST_CASE("a line into a tangent arc R = 10 links at sqrt(J T R): its C1 step is
   CHECK(v.step_kinds[step_kind(Quantity::c1_step)].count == 1);
   CHECK(v.step_kinds[step_kind(Quantity::c1_step)].closest.value == s.value);
   CHECK(v.step_kinds[step_kind(Quantity::velojump)].count == 0);
-  std::vector<planner::AxisLimits> half = axes;
-  for (planner::AxisLimits& a : half)
-    a.j_max = 5e4;
-  Audit strict(half, 0.001, AxisVec{});
-  ListSource src({in, arc});
-  Config cfg;
-  cfg.axes = axes;  // planned with J = 1e5
-  PathInterpolator ipo(cfg, src, &strict);
-  while (ipo.step() == Status::running) {
-  }
-  CHECK(has(strict.verdict(), Quantity::c1_step, Method::formula));
+  CHECK(has(audited_with_half_jerk(axes, {in, arc}), Quantity::c1_step, Method::formula));
 }
 
 TEST_CASE("a knee into an arc: its acceleration step is held to j T like a C1 step, and audited") {
@@ -235,17 +242,7 @@ TEST_CASE("a knee into an arc: its acceleration step is held to j T like a C1 st
   CHECK(c1.closest.value == doctest::Approx(100.0).epsilon(1e-3));
   // Audited against half the jerk, the same run's step is a violation (the audit bounds the
   // acceleration step at C0 joints too; before session 31 it passed unbounded).
-  std::vector<planner::AxisLimits> half = axes;
-  for (planner::AxisLimits& a : half)
-    a.j_max = 5e4;
-  Audit strict(half, 0.001, AxisVec{});
-  ListSource src({in, arc});
-  Config cfg;
-  cfg.axes = axes;  // planned with J = 1e5
-  PathInterpolator ipo(cfg, src, &strict);
-  while (ipo.step() == Status::running) {
-  }
-  CHECK(has(strict.verdict(), Quantity::c1_step, Method::formula));
+  CHECK(has(audited_with_half_jerk(axes, {in, arc}), Quantity::c1_step, Method::formula));
 }
 
 TEST_CASE("a #TRANSVELMIN corner above VELOJUMP passes the audit, its steps listed apart") {
