@@ -383,6 +383,32 @@ TEST_CASE(
 }
 
 TEST_CASE(
+    "P-CHAN-00009 corr_v_trans_jerk: on when absent (ncsim's default), 0 and 1 read, 2 is "
+    "outside the BOOLEAN at its line") {
+  const std::string head =
+      "configuration.interpolator.function FCT_DLM\n"
+      "conveyor_sync.log_number_master 4\n";
+  const ChannelLoad absent = load_base_with_channel("c1_absent", head);
+  INFO(all_diagnostics(absent.result));
+  REQUIRE(absent.result.machine.has_value());
+  CHECK(absent.result.machine->channel.corr_v_trans_jerk);
+  for (const bool on : {false, true}) {
+    CAPTURE(on);
+    const ChannelLoad r =
+        load_base_with_channel("c1_read", head + "corr_v_trans_jerk " + (on ? "1" : "0") + "\n");
+    INFO(all_diagnostics(r.result));
+    CHECK(r.result.diagnostics.items().empty());
+    REQUIRE(r.result.machine.has_value());
+    CHECK(r.result.machine->channel.corr_v_trans_jerk == on);
+  }
+  const ChannelLoad two = load_base_with_channel("c1_two", head + "corr_v_trans_jerk 2\n");
+  const core::Diagnostic e = only_error(two.result);
+  CHECK(e.file == two.channel_file);
+  CHECK(e.loc.line == 3);
+  CHECK(e.message.find("corr_v_trans_jerk (P-CHAN-00009)") != std::string::npos);
+}
+
+TEST_CASE(
     "P-CHAN-00071: 3 (HSC) is NC3013 and a value outside 0..3 or not an integer is refused, each "
     "at its file:line with the id") {
   const std::string head =

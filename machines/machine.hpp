@@ -198,6 +198,10 @@ struct ChannelParams {
   std::string main_spindle_name;                                    ///< main_spindle_name
   std::optional<int> tracking_axis_number;                          ///< log_number_tracking_axis
   PathOverrideType path_override_type = PathOverrideType::reduced;  ///< NCSIM-CHAN-630
+  /// P-CHAN-00009 corr_v_trans_jerk: limit the velocity at tangent transitions with a curvature
+  /// jump so that the axes' jerk holds (planner::ChannelLimits::limit_c1_by_jerk); ncsim's
+  /// default on, the manual's off (docs/machines.md "Checks and decisions")
+  bool corr_v_trans_jerk = true;
 };
 
 struct Machine {

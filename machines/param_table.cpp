@@ -90,6 +90,7 @@ constexpr std::array kTable = {
   // ---- channel list ------------------------------------------------------------------------
   ParamSpec{"P-CHAN-00650", "configuration.interpolator.function", C, ValueType::flag_set, 0, 0, "", 1, "", "FCT_IPO_DEFAULT", kOpt, -1, -1, "004 §5.2.2"},
   ParamSpec{"P-CHAN-00653", "configuration.interpolator.number_blocks_lah", C, ValueType::uns32, 0, 10000, "blocks", 1, "", "120", kOpt, -1, -1, "TF5200 channel parameters: data range 10..10000, default 120, read only with FCT_LOOK_AHEAD_CUSTOM; below 10: 50611"},
+  ParamSpec{"P-CHAN-00009", "corr_v_trans_jerk", C, ValueType::boolean, 0, 1, "", 1, "", "1", kOpt, -1, -1, "isg-language §7.1; TF5200 channel parameters P-CHAN-00009 (BOOLEAN; the manual's default 0, ncsim's 1: docs/machines.md)"},
   ParamSpec{"P-CHAN-00071", "prog_start.slope.profile", C, ValueType::uns16, 0, 3, "0 STEP, 1 TRAPEZ, 2 SIN2, 3 HSC", 1, "", "0", kOpt, -1, -1, "isg-language §5.5 (PROG-207190411; 3 HSC: NC3013)"},
   ParamSpec{"P-CHAN-00362", "conveyor_sync.log_number_master", C, ValueType::uns16, 1, kUns16Max, "", 1, "", "", kOpt, -1, -1, "004 §5.2.2"},
   ParamSpec{"P-CHAN-00363", "conveyor_sync.move_direction", C, ValueType::uns16, 0, 1, "", 1, "", "0", kOpt, -1, -1, "004 §5.2.2"},
