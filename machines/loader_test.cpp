@@ -409,6 +409,32 @@ TEST_CASE(
 }
 
 TEST_CASE(
+    "NCSIM-CHAN-620 ncsim.default_path_dev: 1 mm when absent, read in mm, 0 refused; the axis "
+    "list's nci.tolerance_ball (NCSIM-AXIS-021) is retired and names it") {
+  const std::string head =
+      "configuration.interpolator.function FCT_DLM\n"
+      "conveyor_sync.log_number_master 4\n";
+  const ChannelLoad absent = load_base_with_channel("dev_absent", head);
+  REQUIRE(absent.result.machine.has_value());
+  CHECK(absent.result.machine->channel.default_path_dev == 1.0);
+  const ChannelLoad set = load_base_with_channel("dev_set", head + "ncsim.default_path_dev 0.05\n");
+  INFO(all_diagnostics(set.result));
+  CHECK(set.result.diagnostics.items().empty());
+  REQUIRE(set.result.machine.has_value());
+  CHECK(set.result.machine->channel.default_path_dev == 0.05);
+  const ChannelLoad zero = load_base_with_channel("dev_zero", head + "ncsim.default_path_dev 0\n");
+  const core::Diagnostic e = only_error(zero.result);
+  CHECK(e.id == "NC3004");
+  CHECK(e.loc.line == 3);
+  CHECK(e.message.find("ncsim.default_path_dev (NCSIM-CHAN-620)") != std::string::npos);
+  const RetiredKey* ball = find_retired(ListKind::axis, "nci.tolerance_ball");
+  REQUIRE(ball != nullptr);
+  CHECK(std::string(ball->use_instead).find("ncsim.default_path_dev (NCSIM-CHAN-620)") !=
+        std::string::npos);
+  CHECK(find_param(ListKind::axis, "nci.tolerance_ball") == nullptr);
+}
+
+TEST_CASE(
     "P-CHAN-00071: 3 (HSC) is NC3013 and a value outside 0..3 or not an integer is refused, each "
     "at its file:line with the id") {
   const std::string head =

@@ -50,4 +50,32 @@ expect "P-CHAN-00009 2 is not a BOOLEAN: NC3004 at its line, exit 2" 2 '' \
   'c1_2/channel\.lis:3:[0-9]+: error: corr_v_trans_jerk \(P-CHAN-00009\) = 2 is outside its range 0\.\.1 \[NC3004\]' -- \
   time --machine "$(machine_with c1_2 "corr_v_trans_jerk 2")" "$work/c1_tan.nc"
 
+# ---- NCSIM-CHAN-620 ncsim.default_path_dev: G261's radius without PATH_DEV -------------------
+# A 90 degree corner under G261 without #CONTOUR MODE: the blend's deviation from the corner is
+# its radius (docs/planner.md "Tolerance balls"), the audit's tolerance the radius.
+printf '%%ball\nN10 G01 X100 F6000\nN20 G261 Y100\nN30 X0\nN40 M30\n' >"$work/ball.nc"
+expect "NCSIM-CHAN-620 absent: the manual's PATH_DEV 1 mm" 0 \
+  'contour deviation 0\.9[0-9]* mm \(tolerance 1 mm\)' '' -- time --audit "$work/ball.nc"
+expect "NCSIM-CHAN-620 0.5: a ball of 0.5 mm" 0 \
+  'contour deviation 0\.4[0-9]* mm \(tolerance 0\.5 mm\)' '' -- \
+  time --audit --machine "$(machine_with dev_05 "ncsim.default_path_dev 0.5")" "$work/ball.nc"
+t05=$("$ncsim" time --machine "$work/dev_05" "$work/ball.nc" 2>/dev/null | cut -d' ' -f2)
+t10=$("$ncsim" time "$work/ball.nc" 2>/dev/null | cut -d' ' -f2)
+holds "NCSIM-CHAN-620: the radius changes the machining time ($t05 s with 0.5 mm, $t10 s with 1 mm)" \
+  test -n "$t05" -a -n "$t10" -a "$t05" != "$t10"
+printf '%%ball\nN5 #CONTOUR MODE [DEV, PATH_DEV=0.2]\nN10 G01 X100 F6000\nN20 G261 Y100\nN30 X0\nN40 M30\n' \
+  >"$work/ball_02.nc"
+expect "NCSIM-CHAN-620 0.5: #CONTOUR MODE PATH_DEV=0.2 replaces it" 0 \
+  'contour deviation 0\.1[0-9]* mm \(tolerance 0\.2 mm\)' '' -- \
+  time --audit --machine "$work/dev_05" "$work/ball_02.nc"
+expect "NCSIM-CHAN-620 0 is below its range: NC3004 at its line, exit 2" 2 '' \
+  'dev_0/channel\.lis:3:[0-9]+: error: ncsim\.default_path_dev \(NCSIM-CHAN-620\) = 0 is outside its range' -- \
+  time --machine "$(machine_with dev_0 "ncsim.default_path_dev 0")" "$work/ball.nc"
+# The axis list's nci.tolerance_ball (NCSIM-AXIS-021), never read, is retired and names the key.
+dir=$(machine_with ball_axis "")
+printf 'nci.tolerance_ball 0.5\n' >>"$dir/x.lis"
+expect "nci.tolerance_ball in an axis list: NC3015 naming ncsim.default_path_dev" 2 '' \
+  'x\.lis:[0-9]+:[0-9]+: error: nci\.tolerance_ball is no longer read .*ncsim\.default_path_dev \(NCSIM-CHAN-620\).* \[NC3015\]' -- \
+  time --machine "$dir" "$work/ball.nc"
+
 summary channel_keys_test
