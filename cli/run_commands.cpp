@@ -935,7 +935,8 @@ RunCommands::RunCommands(CLI::App& app) {
   run_cmd_->add_option("-o,--output", run_.output, "CSV file, '-' for stdout (default)");
   run_cmd_
       ->add_option("--every", run_.every, "One row every N cycles, and the last cycle (default 1)")
-      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
+      ->check(
+          CLI::Validator([](const std::string& text) { return every_error(text); }, "N", "every"));
   add_cycle_us_option(*run_cmd_, run_.cycle_us);
   run_cmd_->add_flag("--audit", run_.audit, "Check every limit (verdict on stderr); exit 3");
   run_cmd_->add_flag(

@@ -177,5 +177,18 @@ holds "--every 1000 and a run-time error: the closing comments follow it" \
 "$ncsim" run --every 7035 -o "$work/every_one.csv" "$fixtures/long_line.nc" 2>/dev/null
 holds "--every 7035: the last cycle is written once" \
   test "$(grep -v '^#' "$work/every_one.csv" | tail -n +2 | wc -l)" -eq 1
+# Bad values: the option, the value and why (cli/cycle_option.hpp every_error), status 2, no
+# file (before: CLI11's "Value abc not in range 1 to 1099511627776" for every kind of mistake).
+every_digits='is not a whole number of cycles in digits \(1 to 1099511627776 cycles; 1 writes every cycle\)$'
+while IFS='|' read -r bad why; do
+  expect "run --every '$bad': '$why', status 2" 2 '' "^--every: $why" -- \
+    run --every "$bad" -o "$work/never.csv" "$fixtures/long_line.nc"
+done <<LIST
+abc|'abc' $every_digits
+1.5|'1\.5' $every_digits
+0|0 is below the smallest, 1 \(a row every cycle\)$
+1099511627777|1099511627777 is above the largest, 1099511627776 \(2\^40\) cycles$
+LIST
+holds "no bad --every run wrote a file" test ! -e "$work/never.csv" -a ! -e "$work/never.csv.tmp"
 
 summary run_output_test
