@@ -1,8 +1,9 @@
 #pragma once
 // cli/cycle_option: the checks of `--cycle-us` (time, run, report, sweep, tune-delay) and of
-// `run --every N`. --cycle-us is the interpolation cycle in whole microseconds (docs/ipo.md
-// "The cycle time": no list key, 1 ms unless given). Whole microseconds keep every t of the CSV
-// and the golden files a whole number of us; 1 us .. 1 s bounds it.
+// `run --every N`. --cycle-us is the interpolation cycle in whole microseconds; it overrides the
+// channel list's NCSIM-CHAN-610 ncsim.cycle_time, whose bounds are the same (docs/ipo.md "The
+// cycle time"). Whole microseconds keep every t of the CSV and the golden files a whole number
+// of us; 1 us .. 1 s bounds it.
 
 #include <charconv>
 #include <cstdint>

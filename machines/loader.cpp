@@ -466,6 +466,7 @@ ChannelParams build_channel(const ListValues& v) {
   if (slope == 2.0) ch.start_slope = SlopeProfile::sin2;
   ch.corr_v_trans_jerk = v.number("corr_v_trans_jerk") != 0.0;  // P-CHAN-00009
   ch.default_path_dev = v.internal("ncsim.default_path_dev");   // NCSIM-CHAN-620
+  ch.cycle_time = v.internal("ncsim.cycle_time");               // NCSIM-CHAN-610
   const std::string override_type = v.text("ncsim.path_override_type");
   if (override_type == "ORIGINAL") ch.path_override_type = PathOverrideType::original;
   if (override_type == "REDUCED_ABOVE_100")

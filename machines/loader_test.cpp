@@ -435,6 +435,30 @@ TEST_CASE(
 }
 
 TEST_CASE(
+    "NCSIM-CHAN-610 ncsim.cycle_time: 1 ms when absent, whole us read into s, 0 and above 1 s "
+    "refused at their line") {
+  const std::string head =
+      "configuration.interpolator.function FCT_DLM\n"
+      "conveyor_sync.log_number_master 4\n";
+  const ChannelLoad absent = load_base_with_channel("cycle_absent", head);
+  REQUIRE(absent.result.machine.has_value());
+  CHECK(absent.result.machine->channel.cycle_time == 0.001);
+  const ChannelLoad set = load_base_with_channel("cycle_set", head + "ncsim.cycle_time 250\n");
+  INFO(all_diagnostics(set.result));
+  CHECK(set.result.diagnostics.items().empty());
+  REQUIRE(set.result.machine.has_value());
+  CHECK(set.result.machine->channel.cycle_time == 250 * 1e-6);  // as --cycle-us 250
+  for (const char* bad : {"0", "1000001", "2.5"}) {
+    CAPTURE(bad);
+    const ChannelLoad r =
+        load_base_with_channel("cycle_bad", head + "ncsim.cycle_time " + bad + "\n");
+    const core::Diagnostic e = only_error(r.result);
+    CHECK(e.loc.line == 3);
+    CHECK(e.message.find("ncsim.cycle_time (NCSIM-CHAN-610)") != std::string::npos);
+  }
+}
+
+TEST_CASE(
     "P-CHAN-00071: 3 (HSC) is NC3013 and a value outside 0..3 or not an integer is refused, each "
     "at its file:line with the id") {
   const std::string head =

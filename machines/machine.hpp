@@ -204,6 +204,9 @@ struct ChannelParams {
   /// NCSIM-CHAN-620 ncsim.default_path_dev: G261's tolerance-ball radius where `#CONTOUR MODE`
   /// gives no PATH_DEV [mm] (default the manual's PATH_DEV 1 mm, isg-language.md §5.3)
   double default_path_dev = 1.0;
+  /// NCSIM-CHAN-610 ncsim.cycle_time: the interpolation cycle T, whole us in the list, 1 us .. 1 s
+  /// (`--cycle-us` overrides it; docs/ipo.md "The cycle time") [s]
+  double cycle_time = 0.001;
 };
 
 struct Machine {

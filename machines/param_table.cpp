@@ -117,6 +117,7 @@ constexpr std::array kTable = {
   ParamSpec{"NCSIM-CHAN-001", "spdl_anzahl", C, ValueType::uns16, 0, kUns16Max, "", 1, "", "0", kOpt, -1, -1, "004 §4.9.1 (listing)"},
   ParamSpec{"NCSIM-CHAN-002", "main_spindle_ax_nr", C, ValueType::uns16, 1, kUns16Max, "", 1, "", "", kOpt, -1, -1, "004 §4.9.1 (listing)"},
   ParamSpec{"NCSIM-CHAN-003", "main_spindle_name", C, ValueType::word, 0, 0, "", 1, "", "", kOpt, -1, -1, "004 §4.9.1 (listing)"},
+  ParamSpec{"NCSIM-CHAN-610", "ncsim.cycle_time", C, ValueType::uns32, 1, 1000000, "us", kMicrosecond, "s", "1000", kOpt, -1, -1, "no key in the manuals at hand (docs/ipo.md \"The cycle time\"); the bounds of --cycle-us, which overrides it"},
   ParamSpec{"NCSIM-CHAN-620", "ncsim.default_path_dev", C, ValueType::real64, 1e-9, kRealMax, "mm", 1, "mm", "1.0", kOpt, -1, -1, "isg-language §5.3 (PROG-475164939: PATH_DEV 1 mm); no ISG key: G261's ball radius where #CONTOUR MODE gives no PATH_DEV"},
   ParamSpec{"NCSIM-CHAN-640", "conveyor_sync.ncsim_dynamics_reserve", C, ValueType::uns16, 0, 500, "0.1 %", kPerMille, "fraction", "0", kOpt, -1, -1, "004 l.454 (reduce the dynamic axis limits; no ISG key)"},
   ParamSpec{"NCSIM-CHAN-630", "ncsim.path_override_type", C, ValueType::word, 0, 0, "REDUCED | ORIGINAL | REDUCED_ABOVE_100", 1, "", "REDUCED", kOpt, -1, -1, "000 §7.5.6 (override types; no ISG key)"},
