@@ -7,6 +7,7 @@
 #include <string>
 
 using ncsim::cli::cycle_us_error;
+using ncsim::cli::every_error;
 
 TEST_CASE("--cycle-us: whole microseconds 1 .. 1000000 pass") {
   for (const char* ok : {"1", "250", "1000", "2000", "1000000", "0001"}) {
@@ -32,4 +33,27 @@ TEST_CASE("--cycle-us: anything but digits is not a whole number of microseconds
                                      "1000000 us; 1000 us = 1 ms)");
   }
   CHECK(cycle_us_error("").find("needs a value") == 0);
+}
+
+TEST_CASE("--every: whole numbers 1 .. 2^40 pass; 0, negatives and beyond are named") {
+  for (const char* ok : {"1", "10", "7035", "1099511627776", "01"}) {
+    CAPTURE(ok);
+    CHECK(every_error(ok).empty());
+  }
+  CHECK(every_error("0") == "0 is below the smallest, 1 (a row every cycle)");
+  CHECK(every_error("-3") == "-3 is below the smallest, 1 (a row every cycle)");
+  CHECK(every_error("1099511627777") ==
+        "1099511627777 is above the largest, 1099511627776 (2^40) cycles");
+  CHECK(every_error("99999999999999999999999") ==
+        "99999999999999999999999 is above the largest, 1099511627776 (2^40) cycles");
+}
+
+TEST_CASE("--every: anything but digits is not a whole number of cycles") {
+  for (const char* bad : {"abc", "1.5", "1e3", "+5", " 5", "10x", "-"}) {
+    CAPTURE(bad);
+    CHECK(every_error(bad) == "'" + std::string(bad) +
+                                  "' is not a whole number of cycles in digits (1 to "
+                                  "1099511627776 cycles; 1 writes every cycle)");
+  }
+  CHECK(every_error("").find("needs a value") == 0);
 }

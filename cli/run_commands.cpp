@@ -48,8 +48,8 @@ void append_num(std::string& s, double v) {
 struct Loaded {
   core::SourceFile file;
   machines::Machine machine;
-  double t_cycle = ipo::kDefaultCycle;
-  interp::Options interp;  ///< the scenario's V.E. initial values (barrier answers)
+  double t_cycle = ipo::kDefaultCycle;  ///< --cycle-us, else the channel's NCSIM-CHAN-610 [s]
+  interp::Options interp;               ///< the scenario's V.E. initial values (barrier answers)
   std::optional<scenario::Scenario> scenario;  ///< played by the channel when it has events
   /// The conveyor world (docs/conveyor.md "The world") on a machine with a conveyor axis.
   std::unique_ptr<conveyor::Port> port;
@@ -148,9 +148,10 @@ std::variant<Loaded, int> load(const ProgramOptions& options,
   for (const core::Diagnostic& d : syntax.items())
     err << core::format(d, file);
   if (syntax.error_count() > 0) return kExitProgramErrors;
-  // No list key for the cycle (the manuals at hand name none): 1 ms unless --cycle-us
-  // (docs/ipo.md "The cycle time").
-  const double t = cycle_us ? static_cast<double>(*cycle_us) * 1e-6 : ipo::kDefaultCycle;
+  // The channel list's NCSIM-CHAN-610 ncsim.cycle_time (default 1 ms), --cycle-us over it
+  // (docs/ipo.md "The cycle time"); both whole microseconds, converted the same way.
+  const double t =
+      cycle_us ? static_cast<double>(*cycle_us) * 1e-6 : loaded.machine->channel.cycle_time;
   // The conveyor world (belt, encoder, probe, filters) of a machine with a conveyor axis.
   std::unique_ptr<conveyor::Port> port;
   if (loaded.machine->conveyor_axis() != nullptr) {
@@ -929,7 +930,9 @@ void add_run_program_options(CLI::App& cmd, ProgramOptions& program) {
 }
 
 void add_cycle_us_option(CLI::App& cmd, std::optional<std::uint64_t>& cycle_us) {
-  cmd.add_option("--cycle-us", cycle_us, "Interpolation cycle [us], 1 .. 1000000 (default 1000)")
+  cmd.add_option("--cycle-us", cycle_us,
+                 "Interpolation cycle [us], 1 .. 1000000 (default: the channel list's "
+                 "ncsim.cycle_time, 1000 when it has none)")
       ->check(CLI::Validator([](const std::string& text) { return cycle_us_error(text); }, "US",
                              "cycle"));
 }
@@ -949,7 +952,8 @@ RunCommands::RunCommands(CLI::App& app) {
   run_cmd_->add_option("-o,--output", run_.output, "CSV file, '-' for stdout (default)");
   run_cmd_
       ->add_option("--every", run_.every, "One row every N cycles, and the last cycle (default 1)")
-      ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1} << 40));
+      ->check(
+          CLI::Validator([](const std::string& text) { return every_error(text); }, "N", "every"));
   add_cycle_us_option(*run_cmd_, run_.cycle_us);
   run_cmd_->add_flag("--audit", run_.audit, "Check every limit (verdict on stderr); exit 3");
   run_cmd_->add_flag("--audit-steps", run_.audit_steps,

@@ -69,7 +69,8 @@ enum class Transition : std::uint8_t {
 enum class SlopeType : std::uint8_t { step, trapez, sin2, hsc };  ///< #SLOPE TYPE
 enum class ContourKind : std::uint8_t { dev, dist, dist_soft, dist_master, pos, ptp };
 
-/// #CONTOUR MODE parameters (isg-language.md §5.3, PROG-475164939 defaults).
+/// #CONTOUR MODE parameters (isg-language.md §5.3, PROG-475164939 defaults; the interpreter
+/// starts PATH_DEV at the channel's NCSIM-CHAN-620 ncsim.default_path_dev).
 struct ContourParams {
   ContourKind kind = ContourKind::dev;
   double path_dev = 1.0;   ///< PATH_DEV [mm]

@@ -17,9 +17,9 @@ struct Commands {
   std::vector<std::string> warnings;
 };
 
-Commands commands(const std::string& text, const std::string& machine_name = "portal_3x") {
+Commands commands(const std::string& text, const machines::Machine& machine) {
   core::SourceFile file("test.nc", text);
-  Interpreter interp(file, test::machine(machine_name));
+  Interpreter interp(file, machine);
   Commands out;
   while (out.items.size() < 1000) {
     auto c = interp.next_decode_only();
@@ -34,6 +34,10 @@ Commands commands(const std::string& text, const std::string& machine_name = "po
     if (d.severity != core::Severity::error) out.warnings.push_back(d.id);
   }
   return out;
+}
+
+Commands commands(const std::string& text, const std::string& machine_name = "portal_3x") {
+  return commands(text, test::machine(machine_name));
 }
 
 const Motion& motion(const Commands& c, std::size_t k) {
@@ -293,6 +297,25 @@ TEST_CASE("G61 contours its block only; G261 until G260; #CONTOUR MODE sets the 
   REQUIRE(c.error_id.empty());
   CHECK(motion(c, 0).modal.contour.kind == ContourKind::dev);
   CHECK(motion(c, 0).modal.contour.path_dev == doctest::Approx(0.5));
+}
+
+TEST_CASE(
+    "G261 without PATH_DEV: the channel's NCSIM-CHAN-620 radius (the manual's 1 mm when the list "
+    "has none); #CONTOUR MODE PATH_DEV replaces it, DEV alone keeps it") {
+  const std::string program =
+      "%t\nG261 G01 X1 F100\n#CONTOUR MODE [DEV]\nX2\n#CONTOUR MODE [DEV, PATH_DEV=0.5]\nX3\nM30\n";
+  const Commands plain = commands(program);  // portal_3x: no ncsim.default_path_dev
+  REQUIRE(plain.error_id.empty());
+  CHECK(motion(plain, 0).modal.contour.path_dev == 1.0);  // isg-language.md §5.3 PROG-475164939
+  CHECK(motion(plain, 1).modal.contour.path_dev == 1.0);
+  CHECK(motion(plain, 2).modal.contour.path_dev == 0.5);
+  machines::Machine m = test::machine("portal_3x");
+  m.channel.default_path_dev = 0.25;
+  const Commands channel = commands(program, m);
+  REQUIRE(channel.error_id.empty());
+  CHECK(motion(channel, 0).modal.contour.path_dev == 0.25);
+  CHECK(motion(channel, 1).modal.contour.path_dev == 0.25);
+  CHECK(motion(channel, 2).modal.contour.path_dev == 0.5);
 }
 
 TEST_CASE("#CONTOUR MODE: PATH_DEV, PRE_DIST or POST_DIST <= 0 is NC4031 at its block") {

@@ -89,6 +89,9 @@ Interpreter::Impl::Impl(const core::SourceFile& file, const machines::Machine& m
   }
   xyz = {axis_index("X"), axis_index("Y"), axis_index("Z")};
   modal.slope = channel_slope();  // P-CHAN-00071 prog_start.slope.profile
+  // G261 without #CONTOUR MODE PATH_DEV: the channel's radius (NCSIM-CHAN-620, default the
+  // manual's 1 mm; docs/planner.md "Tolerance balls").
+  modal.contour.path_dev = machine.channel.default_path_dev;
 }
 
 bool Interpreter::Impl::fail(core::SourceLoc loc, std::string id, std::string message) {

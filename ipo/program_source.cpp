@@ -94,6 +94,8 @@ Config machine_config(const machines::Machine& machine, double t_cycle) {
   c.channel.t_cycle = t_cycle;
   if (machine.channel.conveyor)  // --- conveyor: NCSIM-CHAN-640
     c.channel.belt_reserve = machine.channel.conveyor->dynamics_reserve;
+  // P-CHAN-00009 corr_v_trans_jerk: the C1 rule on or off (docs/planner.md "Corners").
+  c.channel.limit_c1_by_jerk = machine.channel.corr_v_trans_jerk;
   c.window = static_cast<std::size_t>(machine.channel.interpolator.look_ahead_blocks);
   switch (machine.channel.path_override_type) {  // NCSIM-CHAN-630 (000 §7.5.6)
     case machines::PathOverrideType::reduced:

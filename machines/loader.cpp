@@ -137,8 +137,7 @@ void ListValues::read(const core::SourceFile& source, core::DiagnosticList& diag
       if (const RetiredKey* retired = find_retired(kind_, entry.pattern)) {
         const bool replaced = retired->diagnostic == "NC3015";
         error(entry.key_loc, std::string(retired->diagnostic).c_str(),
-              (replaced ? entry.key + " is no longer read (ncsim's own key before it read the "
-                                      "ISG axis list): "
+              (replaced ? entry.key + " is no longer read (a retired ncsim key): "
                         : "not supported: " + entry.key + "; ") +
                   std::string(retired->use_instead));
         continue;
@@ -423,7 +422,6 @@ AxisParams build_axis(const ListValues& v, core::DiagnosticList& diagnostics) {
   d.ramp_min = v.internal("getriebe[0].dynamik.tr_min");
   d.ramp_geom = v.internal("getriebe[0].dynamik.tr_geom");
   d.velo_jump_factor = v.internal("nci.velo_jump_factor");
-  d.tolerance_ball = v.internal("nci.tolerance_ball");
   d.time_optimal_profiles = v.text("ncsim.profile_rule") == "time_optimal";
 
   Monitoring& m = a.monitoring;
@@ -466,6 +464,9 @@ ChannelParams build_channel(const ListValues& v) {
   const double slope = v.number("prog_start.slope.profile");
   if (slope == 1.0) ch.start_slope = SlopeProfile::trapez;
   if (slope == 2.0) ch.start_slope = SlopeProfile::sin2;
+  ch.corr_v_trans_jerk = v.number("corr_v_trans_jerk") != 0.0;  // P-CHAN-00009
+  ch.default_path_dev = v.internal("ncsim.default_path_dev");   // NCSIM-CHAN-620
+  ch.cycle_time = v.internal("ncsim.cycle_time");               // NCSIM-CHAN-610
   const std::string override_type = v.text("ncsim.path_override_type");
   if (override_type == "ORIGINAL") ch.path_override_type = PathOverrideType::original;
   if (override_type == "REDUCED_ABOVE_100")

@@ -383,6 +383,82 @@ TEST_CASE(
 }
 
 TEST_CASE(
+    "P-CHAN-00009 corr_v_trans_jerk: on when absent (ncsim's default), 0 and 1 read, 2 is "
+    "outside the BOOLEAN at its line") {
+  const std::string head =
+      "configuration.interpolator.function FCT_DLM\n"
+      "conveyor_sync.log_number_master 4\n";
+  const ChannelLoad absent = load_base_with_channel("c1_absent", head);
+  INFO(all_diagnostics(absent.result));
+  REQUIRE(absent.result.machine.has_value());
+  CHECK(absent.result.machine->channel.corr_v_trans_jerk);
+  for (const bool on : {false, true}) {
+    CAPTURE(on);
+    const ChannelLoad r =
+        load_base_with_channel("c1_read", head + "corr_v_trans_jerk " + (on ? "1" : "0") + "\n");
+    INFO(all_diagnostics(r.result));
+    CHECK(r.result.diagnostics.items().empty());
+    REQUIRE(r.result.machine.has_value());
+    CHECK(r.result.machine->channel.corr_v_trans_jerk == on);
+  }
+  const ChannelLoad two = load_base_with_channel("c1_two", head + "corr_v_trans_jerk 2\n");
+  const core::Diagnostic e = only_error(two.result);
+  CHECK(e.file == two.channel_file);
+  CHECK(e.loc.line == 3);
+  CHECK(e.message.find("corr_v_trans_jerk (P-CHAN-00009)") != std::string::npos);
+}
+
+TEST_CASE(
+    "NCSIM-CHAN-620 ncsim.default_path_dev: 1 mm when absent, read in mm, 0 refused; the axis "
+    "list's nci.tolerance_ball (NCSIM-AXIS-021) is retired and names it") {
+  const std::string head =
+      "configuration.interpolator.function FCT_DLM\n"
+      "conveyor_sync.log_number_master 4\n";
+  const ChannelLoad absent = load_base_with_channel("dev_absent", head);
+  REQUIRE(absent.result.machine.has_value());
+  CHECK(absent.result.machine->channel.default_path_dev == 1.0);
+  const ChannelLoad set = load_base_with_channel("dev_set", head + "ncsim.default_path_dev 0.05\n");
+  INFO(all_diagnostics(set.result));
+  CHECK(set.result.diagnostics.items().empty());
+  REQUIRE(set.result.machine.has_value());
+  CHECK(set.result.machine->channel.default_path_dev == 0.05);
+  const ChannelLoad zero = load_base_with_channel("dev_zero", head + "ncsim.default_path_dev 0\n");
+  const core::Diagnostic e = only_error(zero.result);
+  CHECK(e.id == "NC3004");
+  CHECK(e.loc.line == 3);
+  CHECK(e.message.find("ncsim.default_path_dev (NCSIM-CHAN-620)") != std::string::npos);
+  const RetiredKey* ball = find_retired(ListKind::axis, "nci.tolerance_ball");
+  REQUIRE(ball != nullptr);
+  CHECK(std::string(ball->use_instead).find("ncsim.default_path_dev (NCSIM-CHAN-620)") !=
+        std::string::npos);
+  CHECK(find_param(ListKind::axis, "nci.tolerance_ball") == nullptr);
+}
+
+TEST_CASE(
+    "NCSIM-CHAN-610 ncsim.cycle_time: 1 ms when absent, whole us read into s, 0 and above 1 s "
+    "refused at their line") {
+  const std::string head =
+      "configuration.interpolator.function FCT_DLM\n"
+      "conveyor_sync.log_number_master 4\n";
+  const ChannelLoad absent = load_base_with_channel("cycle_absent", head);
+  REQUIRE(absent.result.machine.has_value());
+  CHECK(absent.result.machine->channel.cycle_time == 0.001);
+  const ChannelLoad set = load_base_with_channel("cycle_set", head + "ncsim.cycle_time 250\n");
+  INFO(all_diagnostics(set.result));
+  CHECK(set.result.diagnostics.items().empty());
+  REQUIRE(set.result.machine.has_value());
+  CHECK(set.result.machine->channel.cycle_time == 250 * 1e-6);  // as --cycle-us 250
+  for (const char* bad : {"0", "1000001", "2.5"}) {
+    CAPTURE(bad);
+    const ChannelLoad r =
+        load_base_with_channel("cycle_bad", head + "ncsim.cycle_time " + bad + "\n");
+    const core::Diagnostic e = only_error(r.result);
+    CHECK(e.loc.line == 3);
+    CHECK(e.message.find("ncsim.cycle_time (NCSIM-CHAN-610)") != std::string::npos);
+  }
+}
+
+TEST_CASE(
     "P-CHAN-00071: 3 (HSC) is NC3013 and a value outside 0..3 or not an integer is refused, each "
     "at its file:line with the id") {
   const std::string head =

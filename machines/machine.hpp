@@ -56,7 +56,6 @@ struct Dynamics {
   double ramp_min = 0.0;       ///< P-AXIS-00201 dynamik.tr_min, lower bound of every ramp [s]
   double ramp_geom = 0.0;      ///< P-AXIS-00199 dynamik.tr_geom, contour jerk (path) [s]; 0: none
   double velo_jump_factor = 1.0;  ///< NCSIM-AXIS-020 VELOJUMP C0 [-] (seed 000 §7.1.7)
-  double tolerance_ball = 0.0;    ///< NCSIM-AXIS-021 tolerance-ball radius [mm | deg]
   /// NCSIM-AXIS-030 ncsim.profile_rule: false = the manual's rules (002 2.1 symmetric
   /// min(A+, A-), 002 2.3 stop and return), true = time-optimal (docs/axes-profile.md).
   bool time_optimal_profiles = false;
@@ -198,6 +197,16 @@ struct ChannelParams {
   std::string main_spindle_name;                                    ///< main_spindle_name
   std::optional<int> tracking_axis_number;                          ///< log_number_tracking_axis
   PathOverrideType path_override_type = PathOverrideType::reduced;  ///< NCSIM-CHAN-630
+  /// P-CHAN-00009 corr_v_trans_jerk: limit the velocity at tangent transitions with a curvature
+  /// jump so that the axes' jerk holds (planner::ChannelLimits::limit_c1_by_jerk); ncsim's
+  /// default on, the manual's off (docs/machines.md "Checks and decisions")
+  bool corr_v_trans_jerk = true;
+  /// NCSIM-CHAN-620 ncsim.default_path_dev: G261's tolerance-ball radius where `#CONTOUR MODE`
+  /// gives no PATH_DEV [mm] (default the manual's PATH_DEV 1 mm, isg-language.md §5.3)
+  double default_path_dev = 1.0;
+  /// NCSIM-CHAN-610 ncsim.cycle_time: the interpolation cycle T, whole us in the list, 1 us .. 1 s
+  /// (`--cycle-us` overrides it; docs/ipo.md "The cycle time") [s]
+  double cycle_time = 0.001;
 };
 
 struct Machine {

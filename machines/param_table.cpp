@@ -75,7 +75,6 @@ constexpr std::array kTable = {
   // ---- axis list: the NC I path model (seed 000 §7.1.7); no ISG key, ncsim ids --------------
   ParamSpec{"NCSIM-AXIS-020", "nci.velo_jump_factor", A, ValueType::real64, 0, kRealMax, "", 1, "", "1.0", kOpt, -1, -1, "000 §7.1.7 (C0)"},
   ParamSpec{"NCSIM-AXIS-030", "ncsim.profile_rule", A, ValueType::word, 0, 0, "manual | time_optimal", 1, "", "manual", kOpt, -1, -1, "002 2.1, 2.3 (manual); docs/axes-profile.md"},
-  ParamSpec{"NCSIM-AXIS-021", "nci.tolerance_ball", A, ValueType::real64, 0, kRealMax, "mm | deg", 1, "mm | deg", "0.0", kOpt, -1, -1, "000 §7.1.7, §7.5.11"},
   // ---- axis list: position control -------------------------------------------------------
   ParamSpec{"P-AXIS-00099", "getriebe[].kv", A, ValueType::uns32, 1, kUns32Max, "0.01/s", kCenti, "1/s", "1000", kOpt, 7, -1, "TF5200 P-AXIS-00099"},
   ParamSpec{"NCSIM-AXIS-023", "drive.pt1_time", A, ValueType::real64, 0, kRealMax, "s", 1, "s", "0.0", kOpt, -1, -1, "000 §7.5.8"},
@@ -90,6 +89,7 @@ constexpr std::array kTable = {
   // ---- channel list ------------------------------------------------------------------------
   ParamSpec{"P-CHAN-00650", "configuration.interpolator.function", C, ValueType::flag_set, 0, 0, "", 1, "", "FCT_IPO_DEFAULT", kOpt, -1, -1, "004 §5.2.2"},
   ParamSpec{"P-CHAN-00653", "configuration.interpolator.number_blocks_lah", C, ValueType::uns32, 0, 10000, "blocks", 1, "", "120", kOpt, -1, -1, "TF5200 channel parameters: data range 10..10000, default 120, read only with FCT_LOOK_AHEAD_CUSTOM; below 10: 50611"},
+  ParamSpec{"P-CHAN-00009", "corr_v_trans_jerk", C, ValueType::boolean, 0, 1, "", 1, "", "1", kOpt, -1, -1, "isg-language §7.1; TF5200 channel parameters P-CHAN-00009 (BOOLEAN; the manual's default 0, ncsim's 1: docs/machines.md)"},
   ParamSpec{"P-CHAN-00071", "prog_start.slope.profile", C, ValueType::uns16, 0, 3, "0 STEP, 1 TRAPEZ, 2 SIN2, 3 HSC", 1, "", "0", kOpt, -1, -1, "isg-language §5.5 (PROG-207190411; 3 HSC: NC3013)"},
   ParamSpec{"P-CHAN-00362", "conveyor_sync.log_number_master", C, ValueType::uns16, 1, kUns16Max, "", 1, "", "", kOpt, -1, -1, "004 §5.2.2"},
   ParamSpec{"P-CHAN-00363", "conveyor_sync.move_direction", C, ValueType::uns16, 0, 1, "", 1, "", "0", kOpt, -1, -1, "004 §5.2.2"},
@@ -117,6 +117,8 @@ constexpr std::array kTable = {
   ParamSpec{"NCSIM-CHAN-001", "spdl_anzahl", C, ValueType::uns16, 0, kUns16Max, "", 1, "", "0", kOpt, -1, -1, "004 §4.9.1 (listing)"},
   ParamSpec{"NCSIM-CHAN-002", "main_spindle_ax_nr", C, ValueType::uns16, 1, kUns16Max, "", 1, "", "", kOpt, -1, -1, "004 §4.9.1 (listing)"},
   ParamSpec{"NCSIM-CHAN-003", "main_spindle_name", C, ValueType::word, 0, 0, "", 1, "", "", kOpt, -1, -1, "004 §4.9.1 (listing)"},
+  ParamSpec{"NCSIM-CHAN-610", "ncsim.cycle_time", C, ValueType::uns32, 1, 1000000, "us", kMicrosecond, "s", "1000", kOpt, -1, -1, "no key in the manuals at hand (docs/ipo.md \"The cycle time\"); the bounds of --cycle-us, which overrides it"},
+  ParamSpec{"NCSIM-CHAN-620", "ncsim.default_path_dev", C, ValueType::real64, 1e-9, kRealMax, "mm", 1, "mm", "1.0", kOpt, -1, -1, "isg-language §5.3 (PROG-475164939: PATH_DEV 1 mm); no ISG key: G261's ball radius where #CONTOUR MODE gives no PATH_DEV"},
   ParamSpec{"NCSIM-CHAN-640", "conveyor_sync.ncsim_dynamics_reserve", C, ValueType::uns16, 0, 500, "0.1 %", kPerMille, "fraction", "0", kOpt, -1, -1, "004 l.454 (reduce the dynamic axis limits; no ISG key)"},
   ParamSpec{"NCSIM-CHAN-630", "ncsim.path_override_type", C, ValueType::word, 0, 0, "REDUCED | ORIGINAL | REDUCED_ABOVE_100", 1, "", "REDUCED", kOpt, -1, -1, "000 §7.5.6 (override types; no ISG key)"},
   ParamSpec{"NCSIM-CHAN-004", "log_number_tracking_axis", C, ValueType::uns16, 1, kUns16Max, "", 1, "", "", kOpt, -1, -1, "004 §4.10.1 (listing, id cut off)"},
@@ -137,6 +139,7 @@ constexpr std::array kRetired = {
   RetiredKey{"nci.rapid_traverse_velocity", A, "NC3015", "write getriebe[0].vb_eilgang (P-AXIS-00209) in um/s (0.001 deg/s): the old value x 1000"},
   RetiredKey{"enc.modulo_factor", A, "NC3015", "write getriebe[0].moduloo / getriebe[0].modulou (P-AXIS-00126 / 00127) in 0.0001 deg (0.1 um): upper = lower + the old value x 10000"},
   RetiredKey{"ctrl.kv", A, "NC3015", "write getriebe[0].kv (P-AXIS-00099) in 0.01/s: the old value x 100"},
+  RetiredKey{"nci.tolerance_ball", A, "NC3015", "write ncsim.default_path_dev (NCSIM-CHAN-620) in the channel list, in mm: the radius G261 uses where #CONTOUR MODE gives no PATH_DEV (the per-axis NC I ball was never read)"},
   RetiredKey{"getriebe[].lslope_profil.a_feedh", A, "NC3013", "write getriebe[i].slope_profil.a_feedh (P-AXIS-00053): P-AXIS-00024 belongs to the step-shaped (linear) slope, which ncsim does not model"},
 };
 // clang-format on

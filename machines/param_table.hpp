@@ -54,8 +54,9 @@ struct ParamSpec {
   std::string_view source;         ///< where the manual describes it, or "ncsim"
 };
 
-/// A key ncsim no longer reads (its own invented keys before issue 10) or reads only to say it
-/// does not run its model; the loader answers it with `diagnostic` and `use_instead`.
+/// A key ncsim no longer reads (its own invented keys before issue 10, NCSIM-AXIS-021 since
+/// session 31) or reads only to say it does not run its model; the loader answers it with
+/// `diagnostic` and `use_instead`.
 struct RetiredKey {
   std::string_view key;          ///< list key, indices as "[]"
   ListKind list;                 ///< channel or axis list

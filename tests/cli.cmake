@@ -25,3 +25,7 @@ add_test(NAME cli_run_output_test
 add_test(NAME cli_start_slope_test
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/start_slope_test.sh $<TARGET_FILE:ncsim>
                  ${CMAKE_CURRENT_SOURCE_DIR}/cli)
+# --- planner (issue 12): the channel list's P-CHAN-00009 and ncsim's channel keys, end to end
+add_test(NAME cli_channel_keys_test
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/channel_keys_test.sh $<TARGET_FILE:ncsim>
+                 ${CMAKE_CURRENT_SOURCE_DIR}/cli)

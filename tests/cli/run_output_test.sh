@@ -67,6 +67,30 @@ expect "sweep --cycle-us 0 is refused the same way" 2 '' \
   '^--cycle-us: 0 us is below the smallest cycle, 1 us$' -- sweep --cycle-us 0 "$fixtures/long_line.nc"
 holds "no bad --cycle-us run wrote a file" test ! -e "$work/never.csv" -a ! -e "$work/never.csv.tmp"
 
+# ---- NCSIM-CHAN-610 ncsim.cycle_time: the channel list's cycle, --cycle-us over it ---------
+# cycle_machine NAME VALUE: portal_3x in $work/NAME with `ncsim.cycle_time VALUE`.
+cycle_machine() {
+  cp -r "$root/machines/portal_3x" "$work/$1"
+  printf 'ncsim.cycle_time %s\n' "$2" >>"$work/$1/channel.lis"
+  echo "$work/$1"
+}
+"$ncsim" run --machine "$(cycle_machine cy500 500)" -o "$work/cy500.csv" "$fixtures/long_line.nc" 2>/dev/null
+holds "ncsim.cycle_time 500: the CSV head names 5e-04 s" head_cycle "$work/cy500.csv" 0.0005
+holds "ncsim.cycle_time 500: rows 500 us apart" rows_apart "$work/cy500.csv" 0.0005
+same "ncsim.cycle_time 500: the CSV is --cycle-us 500's, byte for byte" "$work/c500.csv" "$work/cy500.csv"
+expect "ncsim.cycle_time 500: time counts cycles of 0.5 ms" 0 'cycles of 0\.5 ms\)' '' -- \
+  time --machine "$work/cy500" "$fixtures/long_line.nc"
+"$ncsim" run --machine "$work/cy500" --cycle-us 2000 -o "$work/cy500_2000.csv" "$fixtures/long_line.nc" 2>/dev/null
+same "--cycle-us 2000 overrides ncsim.cycle_time 500" "$work/c2000.csv" "$work/cy500_2000.csv"
+"$ncsim" run -o "$work/cy_none.csv" "$fixtures/long_line.nc" 2>/dev/null
+same "no ncsim.cycle_time, no --cycle-us: 1 ms, as --cycle-us 1000" "$work/c1000.csv" "$work/cy_none.csv"
+for bad in 0 1000001 1.5; do
+  expect "ncsim.cycle_time $bad is refused at its line (NC3004 / NC3003), status 2" 2 '' \
+    "cy_$bad/channel\.lis:3:[0-9]+: error: ncsim\.cycle_time \(NCSIM-CHAN-610\)" -- \
+    run -o "$work/never.csv" --machine "$(cycle_machine "cy_$bad" "$bad")" "$fixtures/long_line.nc"
+done
+holds "no refused ncsim.cycle_time run wrote a file" test ! -e "$work/never.csv" -a ! -e "$work/never.csv.tmp"
+
 # ---- run -o FILE: written whole or not at all ---------------------------------------------
 # no_output NAME FILE: neither FILE nor FILE.tmp exists.
 no_output() {
@@ -177,5 +201,18 @@ holds "--every 1000 and a run-time error: the closing comments follow it" \
 "$ncsim" run --every 7035 -o "$work/every_one.csv" "$fixtures/long_line.nc" 2>/dev/null
 holds "--every 7035: the last cycle is written once" \
   test "$(grep -v '^#' "$work/every_one.csv" | tail -n +2 | wc -l)" -eq 1
+# Bad values: the option, the value and why (cli/cycle_option.hpp every_error), status 2, no
+# file (before: CLI11's "Value abc not in range 1 to 1099511627776" for every kind of mistake).
+every_digits='is not a whole number of cycles in digits \(1 to 1099511627776 cycles; 1 writes every cycle\)$'
+while IFS='|' read -r bad why; do
+  expect "run --every '$bad': '$why', status 2" 2 '' "^--every: $why" -- \
+    run --every "$bad" -o "$work/never.csv" "$fixtures/long_line.nc"
+done <<LIST
+abc|'abc' $every_digits
+1.5|'1\.5' $every_digits
+0|0 is below the smallest, 1 \(a row every cycle\)$
+1099511627777|1099511627777 is above the largest, 1099511627776 \(2\^40\) cycles$
+LIST
+holds "no bad --every run wrote a file" test ! -e "$work/never.csv" -a ! -e "$work/never.csv.tmp"
 
 summary run_output_test
