@@ -92,7 +92,7 @@ void Audit::joint_step_formulas(const Joint& jt) {
       if (!(dq <= bound * (1.0 + kRelative)))
         violate(Quantity::velojump, Method::formula, i, jt.t, jt.line, jt.file, dq, bound, true);
     }
-    if (jt.cls != planner::TransitionClass::c2 && jt.jerk_limited &&
+    if (jt.cls != planner::TransitionClass::c2 && jt.jerk_limited && jt.c1_limited &&
         dw > 1e-12 * std::max(1.0, jt.v * jt.v)) {
       const double bound = l.j_max * t_;
       note_step(Step{Quantity::c1_step, index, jt.t, jt.line, jt.v, dw, bound, jt.file, true});
@@ -130,13 +130,14 @@ void Audit::step_formulas(const Joint& jt) {
       if (!(dv <= bound * (1.0 + kRelative)))
         violate(q, Method::formula, i, jt.t, jt.line, jt.file, dv, bound);
     }
-    // C1 (P-CHAN-00009 semantics, docs/planner.md "Corners"): |da_i| <= j_i T, at C1 joints
+    // C1 (P-CHAN-00009 semantics, docs/planner.md "Corners"; with P-CHAN-00009 = 0 the kernel
+    // does not reduce the velocity for it: not bounded): |da_i| <= j_i T, at C1 joints
     // and, since session 31, at C0 joints too (a knee into a curve: the curvature jump; a knee
     // that carries the acceleration: its own step and the curvature's). A link #TRANSVELMIN
     // raised (it has priority, isg-language.md 5.6) is the programmer's: not bounded here.
     const bool c0_raised = jt.cls == planner::TransitionClass::c0 &&
                            jt.rule == planner::LinkRule::transvelmin && jt.v > 0.0;
-    if (jt.cls != planner::TransitionClass::c2 && !c0_raised && jt.jerk_limited &&
+    if (jt.cls != planner::TransitionClass::c2 && !c0_raised && jt.jerk_limited && jt.c1_limited &&
         da > 1e-12 * std::max(1.0, jt.v * jt.v)) {
       const double bound = l.j_max * t_;
       note_step(Step{Quantity::c1_step, static_cast<std::uint8_t>(i), jt.t, jt.line, jt.v, da,

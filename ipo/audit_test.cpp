@@ -222,6 +222,29 @@ TEST_CASE("a line into a tangent arc R = 10 links at sqrt(J T R): its C1 step is
   CHECK(has(audited_with_half_jerk(axes, {in, arc}), Quantity::c1_step, Method::formula));
 }
 
+TEST_CASE("P-CHAN-00009 = 0: the C1 step is not reduced, and the audit does not bound it") {
+  // corr_v_trans_jerk 0 (the manual's default, isg-language.md 7.1): the kernel passes a line
+  // into a tangent arc at the segments' caps; the acceleration step is the channel's choice,
+  // neither listed against j T nor a violation (its jerk is allowed for in the differences).
+  const std::vector<planner::AxisLimits> axes(3, axis(200.0, 10000.0, 1e5, 1.0));
+  planner::Move in = line(vec(0, 0), vec(50, 0), 100.0, 1);
+  planner::Move arc = line(vec(50, 0), vec(60, 10), 100.0, 2);
+  arc.arc = planner::Arc{0, 1, 50.0, 10.0, false, false};  // G03, centre (50, 10)
+  Audit audit(axes, 0.001, AxisVec{});
+  ListSource src({in, arc});
+  Config cfg;
+  cfg.axes = axes;
+  cfg.channel.limit_c1_by_jerk = false;
+  PathInterpolator ipo(cfg, src, &audit);
+  double v_max_at_joint = 0.0;
+  while (ipo.step() == Status::running)
+    if (ipo.cycle().line == 2) v_max_at_joint = std::max(v_max_at_joint, ipo.cycle().path.v);
+  const Verdict& v = audit.verdict();
+  CHECK(v.ok());
+  CHECK(v.step_kinds[step_kind(Quantity::c1_step)].count == 0);
+  CHECK(v_max_at_joint > 2.0 * std::sqrt(1e5 * 1e-3 * 10.0));  // not reduced to 31.6 mm/s
+}
+
 TEST_CASE("a knee into an arc: its acceleration step is held to j T like a C1 step, and audited") {
   // docs/planner.md "Corners" (session 31): the arc's centre 0.001 mm off the tangent, a knee
   // of 1e-4 rad. VELOJUMP alone would link at 100 mm/s (a Y acceleration step of v^2 / R =

@@ -65,6 +65,7 @@ PathInterpolator::PathInterpolator(Config config, Source& source, Sink* sink)
     : axes_(std::move(config.axes)),
       exact_stop_(std::move(config.exact_stop)),
       t_(config.channel.t_cycle),
+      c1_limited_(config.channel.limit_c1_by_jerk),
       detail_(config.detail),
       source_(source),
       sink_(sink),
@@ -268,6 +269,7 @@ void PathInterpolator::report_joint(const planner::PlannedSegment& next, double 
   jt.cls = cur_.segment.joint;
   jt.stop = cur_.segment.stop;
   jt.jerk_limited = planner::jerk_limited(prog_in.slope) && planner::jerk_limited(prog_out.slope);
+  jt.c1_limited = c1_limited_;  // P-CHAN-00009
   // The velocity and acceleration are the ones the path arrives with (below the plan's under
   // an override); a != 0 only where a ramp is carried through a soft joint (a knee steps the
   // axis acceleration by a dx' too).
@@ -327,6 +329,7 @@ void PathInterpolator::report_inner_joints(double s_from, double s_to) noexcept 
     jt.cls = planner::TransitionClass::c2;
     jt.stop = planner::StopReason::none;
     jt.jerk_limited = planner::jerk_limited(prog_in.slope) && planner::jerk_limited(prog_out.slope);
+    jt.c1_limited = c1_limited_;  // P-CHAN-00009
     jt.v = v;
     for (std::size_t i = 0; i < axes_.size(); ++i) {
       const double dt = p_out.d1[i] - p_in.d1[i];

@@ -183,7 +183,10 @@ struct Joint {
   std::uint16_t file = 0;  ///< source file of `line` (interp::Command::file, 0: main program)
   planner::TransitionClass cls = planner::TransitionClass::c0;
   planner::StopReason stop = planner::StopReason::none;
-  bool jerk_limited = true;                                  ///< both sides jerk-limited slopes
+  bool jerk_limited = true;  ///< both sides jerk-limited slopes
+  /// P-CHAN-00009 on (ChannelLimits::limit_c1_by_jerk): the acceleration steps are bounded by
+  /// j T; off, the kernel does not reduce the velocity for them and they are not bounded.
+  bool c1_limited = true;
   double v = 0.0;                                            ///< path velocity at the joint [mm/s]
   planner::LinkRule rule = planner::LinkRule::segment_caps;  ///< what set the link velocity
   double transvelmin = 0.0;  ///< #TRANSVELMIN of the incoming block [mm/s] (0: not programmed)
@@ -340,6 +343,7 @@ class PathInterpolator {
   std::optional<planner::JointLimits> joints_;  ///< --- trafo-conveyor: Config::joints
   std::vector<ExactStop> exact_stop_;
   double t_ = 0.001;
+  bool c1_limited_ = true;  ///< P-CHAN-00009 (ChannelLimits::limit_c1_by_jerk), for Joint
   Detail detail_ = Detail::axes;
   Source& source_;
   Sink* sink_ = nullptr;

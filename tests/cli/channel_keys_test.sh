@@ -46,6 +46,8 @@ holds "P-CHAN-00009 absent: ncsim's default 1, the C1 link (got $vn)" near "$vn"
 expect "P-CHAN-00009 1: the audit passes the C1 step at j T" 0 \
   'C1 steps 2, closest to j T: .* \|da\| 50 of 50 mm/s\^2 at the link velocity 7\.07107 mm/s' '' -- \
   time --audit --machine "$work/c1_1" "$work/c1_tan.nc"
+expect "P-CHAN-00009 0: the audit does not bound the step the manual allows (exit 0)" 0 \
+  '^audit: ok$' '' -- time --audit --machine "$work/c1_0" "$work/c1_tan.nc"
 expect "P-CHAN-00009 2 is not a BOOLEAN: NC3004 at its line, exit 2" 2 '' \
   'c1_2/channel\.lis:3:[0-9]+: error: corr_v_trans_jerk \(P-CHAN-00009\) = 2 is outside its range 0\.\.1 \[NC3004\]' -- \
   time --machine "$(machine_with c1_2 "corr_v_trans_jerk 2")" "$work/c1_tan.nc"
