@@ -75,6 +75,14 @@ void Audit::on_joint(const Joint& jt) {
     joint_seen_ = true;
 }
 
+void Audit::formula_step(Quantity q, std::size_t i, const Joint& jt, double value, double bound,
+                         bool joint) {
+  note_step(
+      Step{q, static_cast<std::uint8_t>(i), jt.t, jt.line, jt.v, value, bound, jt.file, joint});
+  if (!(value <= bound * (1.0 + kRelative)))
+    violate(q, Method::formula, i, jt.t, jt.line, jt.file, value, bound, joint);
+}
+
 void Audit::joint_step_formulas(const Joint& jt) {
   // The axes' formulas on the joints (docs/planner.md "Corners under a transform", where the
   // planner applies them): |dq_i| <= C0_i min(A+_i, |A-_i|) T at C0, |dw_i| <= j_i T at C0
@@ -85,20 +93,11 @@ void Audit::joint_step_formulas(const Joint& jt) {
     const double dw = std::abs(jt.dw[i]);
     qdv_[i][0] += dq;
     qda_[i][0] += dw;
-    const auto index = static_cast<std::uint8_t>(i);
-    if (dq > 1e-12 * std::max(1.0, jt.v)) {
-      const double bound = l.c0 * std::min(l.a_max, l.d_max) * t_;
-      note_step(Step{Quantity::velojump, index, jt.t, jt.line, jt.v, dq, bound, jt.file, true});
-      if (!(dq <= bound * (1.0 + kRelative)))
-        violate(Quantity::velojump, Method::formula, i, jt.t, jt.line, jt.file, dq, bound, true);
-    }
+    if (dq > 1e-12 * std::max(1.0, jt.v))
+      formula_step(Quantity::velojump, i, jt, dq, l.c0 * std::min(l.a_max, l.d_max) * t_, true);
     if (jt.cls != planner::TransitionClass::c2 && jt.jerk_limited && jt.c1_limited &&
-        dw > 1e-12 * std::max(1.0, jt.v * jt.v)) {
-      const double bound = l.j_max * t_;
-      note_step(Step{Quantity::c1_step, index, jt.t, jt.line, jt.v, dw, bound, jt.file, true});
-      if (!(dw <= bound * (1.0 + kRelative)))
-        violate(Quantity::c1_step, Method::formula, i, jt.t, jt.line, jt.file, dw, bound, true);
-    }
+        dw > 1e-12 * std::max(1.0, jt.v * jt.v))
+      formula_step(Quantity::c1_step, i, jt, dw, l.j_max * t_, true);
   }
 }
 
@@ -121,30 +120,20 @@ void Audit::step_formulas(const Joint& jt) {
     // VELOJUMP (000 l.108): |dv_i| <= C0_i min(A+_i, |A-_i|) T. Where #TRANSVELMIN raised the
     // link (isg-language.md 5.6: it has priority), the step is v |dx'_i| with |dx'_i| =
     // |dv_i| / v, allowed up to the programmed v_min: |dv_i| <= v_min |dx'_i|.
-    if (dv > 1e-12 * std::max(1.0, jt.v)) {
-      const bool raised = jt.rule == planner::LinkRule::transvelmin && jt.v > 0.0;
-      const Quantity q = raised ? Quantity::transvelmin : Quantity::velojump;
-      const double bound =
-          raised ? jt.transvelmin * (dv / jt.v) : l.c0 * std::min(l.a_max, l.d_max) * t_;
-      note_step(Step{q, static_cast<std::uint8_t>(i), jt.t, jt.line, jt.v, dv, bound, jt.file});
-      if (!(dv <= bound * (1.0 + kRelative)))
-        violate(q, Method::formula, i, jt.t, jt.line, jt.file, dv, bound);
-    }
+    const bool raised = jt.rule == planner::LinkRule::transvelmin && jt.v > 0.0;
+    if (dv > 1e-12 * std::max(1.0, jt.v))
+      formula_step(raised ? Quantity::transvelmin : Quantity::velojump, i, jt, dv,
+                   raised ? jt.transvelmin * (dv / jt.v) : l.c0 * std::min(l.a_max, l.d_max) * t_,
+                   false);
     // C1 (P-CHAN-00009 semantics, docs/planner.md "Corners"; with P-CHAN-00009 = 0 the kernel
     // does not reduce the velocity for it: not bounded): |da_i| <= j_i T, at C1 joints
     // and, since session 31, at C0 joints too (a knee into a curve: the curvature jump; a knee
     // that carries the acceleration: its own step and the curvature's). A link #TRANSVELMIN
     // raised (it has priority, isg-language.md 5.6) is the programmer's: not bounded here.
-    const bool c0_raised = jt.cls == planner::TransitionClass::c0 &&
-                           jt.rule == planner::LinkRule::transvelmin && jt.v > 0.0;
+    const bool c0_raised = raised && jt.cls == planner::TransitionClass::c0;
     if (jt.cls != planner::TransitionClass::c2 && !c0_raised && jt.jerk_limited && jt.c1_limited &&
-        da > 1e-12 * std::max(1.0, jt.v * jt.v)) {
-      const double bound = l.j_max * t_;
-      note_step(Step{Quantity::c1_step, static_cast<std::uint8_t>(i), jt.t, jt.line, jt.v, da,
-                     bound, jt.file});
-      if (!(da <= bound * (1.0 + kRelative)))
-        violate(Quantity::c1_step, Method::formula, i, jt.t, jt.line, jt.file, da, bound);
-    }
+        da > 1e-12 * std::max(1.0, jt.v * jt.v))
+      formula_step(Quantity::c1_step, i, jt, da, l.j_max * t_, false);
   }
 }
 

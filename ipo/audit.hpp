@@ -204,6 +204,9 @@ class Audit final : public Sink {
   void note_step(const Step& s);
   /// A path joint's documented steps against their formulas (axis cycles only).
   void step_formulas(const Joint& joint);
+  /// One documented step of axis or joint i: listed, and a violation beyond `bound`.
+  void formula_step(Quantity q, std::size_t i, const Joint& joint, double value, double bound,
+                    bool is_joint);
   /// --- trafo: the same formulas on the joints' own steps (Joint::dq, dw).
   void joint_step_formulas(const Joint& joint);
   /// A switch of #TRAFO: the history of the side taken over continues the other's.
