@@ -92,6 +92,7 @@ std::variant<Loaded, int> load(const ProgramOptions& options, std::ostream& err)
     return kExitUsage;
   }
   interp::Options interp_options;
+  apply_cycle_options(options, interp_options);
   if (const auto problem = parse_external(options.external, interp_options)) {
     err << "ncsim: error: " << *problem << '\n';
     return kExitUsage;
@@ -177,6 +178,11 @@ class Report {
 };
 
 }  // namespace
+
+void apply_cycle_options(const ProgramOptions& options, interp::Options& interp) {
+  interp.cycle_dirs = options.cycle_dirs;
+  interp.skip_missing_cycles = options.missing_cycles == "skip";
+}
 
 int run_check(const CheckOptions& options, std::ostream& out, std::ostream& err) {
   if (options.syntax_only) {

@@ -14,6 +14,10 @@
 #include "machines/machine.hpp"
 #include "scenario/scenario.hpp"
 
+namespace ncsim::interp {
+struct Options;
+}
+
 namespace ncsim::cli {
 
 inline constexpr int kExitOk = 0;
@@ -26,7 +30,12 @@ struct ProgramOptions {
   std::optional<std::filesystem::path> machine_dir;  ///< --machine
   std::optional<std::filesystem::path> scenario;     ///< --scenario
   std::vector<std::string> external;                 ///< --ve NAME=value (V.E. variables)
+  std::vector<std::filesystem::path> cycle_dirs;     ///< --cycles DIR (cycle files, in order)
+  std::string missing_cycles = "error";              ///< --missing-cycles error|skip
 };
+
+/// The interpreter options `--cycles` and `--missing-cycles` give (interp::Options).
+void apply_cycle_options(const ProgramOptions& options, interp::Options& interp);
 
 struct TraceOptions {
   ProgramOptions program;

@@ -131,6 +131,7 @@ std::variant<Loaded, int> load(const ProgramOptions& options,
   auto scenario = load_scenario_for(options, file, *loaded.machine, err);
   if (const int* status = std::get_if<int>(&scenario)) return *status;
   interp::Options interp_options;
+  apply_cycle_options(options, interp_options);
   auto& s = std::get<std::optional<scenario::Scenario>>(scenario);
   if (s) {
     if (const std::string what = unplayable(*s); !what.empty()) {  // --- indp
@@ -332,6 +333,15 @@ std::string warning_text(const interp::Interpreter& interp, const ipo::Channel& 
                     "at t=" + seconds(w->t) + " s: " + w->message);
 }
 
+// The interpreter's warnings (a skipped cycle NC4307, a main program without M30 NC2019, ...),
+// each once as the decoder reported it.
+std::string interp_warnings(const interp::Interpreter& interp) {
+  std::string out;
+  for (const core::Diagnostic& d : interp.diagnostics().items())
+    if (d.severity == core::Severity::warning) out += core::format(d);
+  return out;
+}
+
 void json_string(std::ostream& os, const std::string& s) {
   os << '"';
   for (const char c : s) {
@@ -491,7 +501,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
     err << "ncsim: error: cannot read back the workpiece rows' temporary file\n";
     return kExitUsage;
   }
-  err << warning_text(interp, channel);  // --- trafo
+  err << interp_warnings(interp) << warning_text(interp, channel);  // --- trafo
   if (failed) {
     err << error_text;
     return kExitProgramErrors;
@@ -655,7 +665,9 @@ void write_tech(const ipo::Channel& channel, CsvSink& csv) {
     if (o.file != 0) s += " file=" + std::to_string(o.file);
     s += ' ';
     s += kLetter[static_cast<std::size_t>(o.kind)];
-    s += num(o.value) + '\n';
+    s += num(o.value);
+    if (o.extra) s += '=' + num(*o.extra);
+    s += '\n';
     csv.text(s);
   }
 }
@@ -821,7 +833,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
     }
     (options.csv ? err : out) << "report: " << options.report << '\n';
   }
-  err << warning_text(interp, channel);  // --- trafo
+  err << interp_warnings(interp) << warning_text(interp, channel);  // --- trafo
   if (!error_text.empty()) {
     err << error_text;
     return kExitProgramErrors;
@@ -927,6 +939,19 @@ void add_run_program_options(CLI::App& cmd, ProgramOptions& program) {
   cmd.add_option("--scenario", program.scenario,
                  "Scenario TOML file (docs/scenario.md); default: the program folder's "
                  "scenario.toml");
+  add_cycle_options(cmd, program);
+}
+
+void add_cycle_options(CLI::App& cmd, ProgramOptions& program) {
+  cmd.add_option("--cycles", program.cycle_dirs,
+                 "Folder of the machine builder's cycle files (G80-G89, G800-G839, L CYCLE), "
+                 "looked in before the machine folder's cycles/ and the program's folder "
+                 "(repeatable)")
+      ->check(CLI::ExistingDirectory);
+  cmd.add_option("--missing-cycles", program.missing_cycles,
+                 "A cycle whose file is not configured or not found: error (default) or skip "
+                 "(a zero-time step with warning NC4307 once per G code)")
+      ->check(CLI::IsMember({"error", "skip"}));
 }
 
 void add_cycle_us_option(CLI::App& cmd, std::optional<std::uint64_t>& cycle_us) {

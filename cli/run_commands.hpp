@@ -104,6 +104,8 @@ LineOutcome run_line(const ProgramOptions& program, std::optional<std::uint64_t>
 /// The program, --machine and --scenario options of the subcommands that run a program on the
 /// channel (time, run, report, sweep, tune-delay).
 void add_run_program_options(CLI::App& cmd, ProgramOptions& program);
+/// `--cycles DIR` (repeatable) and `--missing-cycles error|skip` (docs/interp.md "Cycles").
+void add_cycle_options(CLI::App& cmd, ProgramOptions& program);
 /// Adds `--cycle-us` to `cmd`: the interpolation cycle [us], a whole number 1 .. 1000000
 /// (cli/cycle_option.hpp); anything else is a usage error naming the option and why (exit 2).
 void add_cycle_us_option(CLI::App& cmd, std::optional<std::uint64_t>& cycle_us);

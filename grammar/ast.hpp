@@ -143,6 +143,10 @@ struct Word {
   std::uint32_t code = 0;           ///< G code number (G01 -> 1)
   std::string_view name;            ///< axis name; macro name; G spelling ("G01")
   NodeIndex value = kNoNode;        ///< value expression (G: argument after '=' if any)
+  NodeIndex extra = kNoNode;        ///< M/H additional value (`M200=1200`: 1200)
+  std::uint32_t first_item = 0;     ///< G80-G839 parameter list in Block::items
+  std::uint32_t item_count = 0;     ///< its components (ItemKind::positional / empty)
+  bool has_params = false;          ///< G80-G839 written with a `[...]` list
   NodeIndex target = kNoNode;       ///< assignment target (an Op::variable node)
   AssignOp assign = AssignOp::set;  ///< assignment operator
   std::string_view text;            ///< macro_def: replacement text (raw, escapes kept)
@@ -195,6 +199,11 @@ enum class TableId : std::uint8_t {
   mc_touch_probe,
   mc_other,
   cycle,
+  g_params,      ///< G80-G89 / G800-G839 [v1, v2,, v4] (implicit subroutine call)
+  file_name,     ///< #FILE NAME [G80="x.nc"]
+  hsc,           ///< #HSC ON [PATH_DEV=.. ...]
+  vector_limit,  ///< #VECTOR LIMIT ON [VEL=.. ACC=.. DEC=..]
+  scale,         ///< #SCALE [ON] X2 Y0.5
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -333,7 +342,18 @@ enum class HashKind : std::uint8_t {
   comment_end,
   pre_if,
   pre_else,
-  pre_endif,  ///< #IF / #ELSE / #ENDIF
+  pre_endif,         ///< #IF / #ELSE / #ENDIF
+  file_name,         ///< #FILE NAME / #FILENAME [G8x="..."]
+  hsc_on,            ///< #HSC ON [...] / #HSC [...]
+  hsc_off,           ///< #HSC OFF
+  vector_limit_on,   ///< #VECTOR LIMIT ON [...] / ON ALL
+  vector_limit_off,  ///< #VECTOR LIMIT OFF [...] / OFF ALL
+  scale_on,          ///< #SCALE [ON] X.. Y..
+  scale_off,         ///< #SCALE OFF
+  mcs_on,            ///< #MCS ON [EX TOOL]
+  mcs_off,           ///< #MCS OFF
+  pset,              ///< #PSET X.. Y.. (position preset)
+  accepted,          ///< read and shown in trace, no effect on motion or time (docs/language.md)
 };
 
 struct HashCommand {

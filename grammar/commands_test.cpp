@@ -126,10 +126,10 @@ TEST_CASE("an axis bracket with an expression is a value, not a command") {
 }
 
 TEST_CASE("unsupported commands are reported as such with their position") {
-  const Parsed h("N10 #HSC ON [BSPLINE]");
+  const Parsed h("N10 #PTP ON");
   REQUIRE(h.diags.items().size() == 1);
   CHECK(h.diags.items()[0].id == "NC1002");
-  CHECK(h.diags.items()[0].message == "not supported: #HSC");
+  CHECK(h.diags.items()[0].message == "not supported: #PTP");
   CHECK(h.diags.items()[0].loc.column == 5);
   const Parsed o("X[OSC ON]");
   REQUIRE(o.diags.items().size() == 1);

@@ -204,6 +204,11 @@ NCSIM_HOT_MATCH(word) {
   if (variable && try_alternative<assignment, A, Act, Ctl>(in, st)) return true;
   if (after == '[' && try_alternative<axis_command, A, Act, Ctl>(in, st)) return true;
   if (u == 'G') return try_alternative<g_word, A, Act, Ctl>(in, st);
+  // M200=1200: an M/H function with an additional value, not an axis named M200
+  if ((u == 'M' || u == 'H') && after == '=' && in.size() > 1 && lex::is_digit(in.peek_char(1)) &&
+      try_alternative<mh_word, A, Act, Ctl>(in, st)) {
+    return true;
+  }
   if (after == '=' && try_alternative<named_axis, A, Act, Ctl>(in, st)) return true;
   if (plain_address_word<A, Act, Ctl>(in, st)) return true;
   if (try_alternative<address_word, A, Act, Ctl>(in, st)) return true;

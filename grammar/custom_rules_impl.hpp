@@ -107,6 +107,59 @@ NCSIM_CUSTOM_MATCH(address_head) {
   return true;
 }
 
+// The parameter list of an implicit subroutine call, `G805 [-27.1, 28.9,, 2.8]`
+// (PROG-206278923): up to 50 expressions, gaps marked by consecutive commas, blanks anywhere.
+// It belongs to the G word only for G80-G89 / G800-G839 written without `=`; after any other
+// G code a `[` starts the next word (`G04 [2*P1]`), so the rule then matches empty. A bad
+// character inside the list is the manual's error 22151.
+NCSIM_CUSTOM_MATCH(g_params) {
+  const char* const code_end = in.current();
+  const char* code_begin = code_end;
+  while (code_begin > in.begin() && lex::is_digit(code_begin[-1]))
+    --code_begin;
+  if (code_begin == code_end || code_begin == in.begin() || ascii_upper(code_begin[-1]) != 'G' ||
+      code_end - code_begin > 4) {
+    return true;
+  }
+  std::uint32_t code = 0;
+  for (const char* p = code_begin; p < code_end; ++p)
+    code = code * 10 + static_cast<std::uint32_t>(*p - '0');
+  if (!is_implicit_call_g(code)) return true;
+  const std::string_view r = lex::rest(in);
+  const std::size_t k = lex::blanks(r);
+  if (k >= r.size() || r[k] != '[') return true;
+  in.bump(k);
+  const std::size_t first = st.block->items.size();
+  const ast::TableId outer = st.table;
+  st.table = ast::TableId::g_params;
+  try {
+    (void)parse_list(in, st, 0);
+  } catch (ParseFailure& f) {
+    if (std::string_view(f.id) == "NC1001") {
+      f.id = "22151";
+      if (f.message.empty() && f.expected != nullptr) {
+        f.message = std::string("invalid character in the parameter list of G") +
+                    std::to_string(code) + ": expected " + f.expected;
+      }
+    }
+    throw;
+  }
+  st.table = outer;
+  const std::size_t count = st.block->items.size() - first;
+  if (count > kMaxImplicitCallParams) {
+    st.fail_message(in.current() - 1, "22151",
+                    "G" + std::to_string(code) + " has " + std::to_string(count) +
+                        " parameters; at most " + std::to_string(kMaxImplicitCallParams) +
+                        " may be passed");
+  }
+  if constexpr (A == pegtl::apply_mode::action) {
+    st.g_has_params = true;
+    st.g_first_item = static_cast<std::uint32_t>(first);
+    st.g_item_count = static_cast<std::uint32_t>(count);
+  }
+  return true;
+}
+
 // Multi-letter axis names are written with '=' (§1.9): AB=90.
 NCSIM_CUSTOM_MATCH(axis_name_eq) {
   const std::string_view r = lex::rest(in);

@@ -56,6 +56,7 @@ NCSIM_EXPECT(close_quote1, "a closing '");
 NCSIM_EXPECT(close_quote2, "a closing '\"'");
 NCSIM_EXPECT(member_name, "a name after '.'");
 NCSIM_EXPECT(g_code, "a G code number");
+NCSIM_EXPECT(extra_value, "an additional value after '=' (M200=1200)");
 NCSIM_EXPECT(macro_equals, "'=' after the macro name");
 NCSIM_EXPECT(macro_text, "a quoted macro text");
 NCSIM_EXPECT(call_target, "a subroutine name, \"macro\", variable or CYCLE [...]");

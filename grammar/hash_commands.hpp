@@ -209,6 +209,82 @@ bool parse_hash_command(Input& in, State& st) {
   } else if (is("DELETE") || is("INIT")) {  // §3.6, §3.5
     set(is("DELETE") ? H::delete_ : H::init, is("DELETE") ? T::delete_ : T::init);
     parse_variable_list(in, st);
+  } else if (is("FILE") || is("FILENAME")) {  // P-CHAN-00160 remarks: #FILE NAME [G80="x"]
+    if (is("FILE")) {
+      skip_ws(in, st);
+      if (!accept(in, "NAME")) st.fail(in.current(), "NAME after #FILE");
+    }
+    set(H::file_name, T::file_name);
+    lists(1, true);
+  } else if (is("HSC")) {  // TF5200 "HSC": #HSC ON [...] / #HSC OFF / #HSC [...]
+    skip_ws(in, st);
+    if (accept(in, "OFF")) {
+      set(H::hsc_off);
+    } else {
+      (void)accept(in, "ON");
+      set(H::hsc_on, T::hsc);
+      lists(1, false);
+    }
+  } else if (is("VECTOR")) {  // PROG-207477899
+    skip_ws(in, st);
+    if (!accept(in, "LIMIT"))
+      st.not_supported(name_at - 1, "#VECTOR " + std::string(lex::ident(lex::rest(in))));
+    const H k = expect_mode(in, st, {"ON", "OFF"}, {H::vector_limit_on, H::vector_limit_off},
+                            "ON or OFF after #VECTOR LIMIT");
+    set(k, T::vector_limit);
+    skip_ws(in, st);
+    if (accept(in, "ALL")) {
+      ast::Item item;
+      item.loc = st.loc(in.current() - 3);
+      item.keyword = "ALL";
+      st.block->items.push_back(item);
+    } else {
+      lists(1, false);
+    }
+  } else if (is("SCALE") || is("PSET")) {  // PROG-207656459 #SCALE [ON] X2 Y2 / OFF;
+    skip_ws(in, st);                       // PROG-207101835 #PSET X200 Y0
+    if (is("SCALE") && accept(in, "OFF")) {
+      set(H::scale_off);
+    } else {
+      if (is("SCALE")) (void)accept(in, "ON");
+      set(is("SCALE") ? H::scale_on : H::pset, T::scale);
+      for (;;) {  // axis name (letters, then digits) and its factor
+        skip_ws(in, st);
+        const std::string_view r = lex::rest(in);
+        if (r.empty() || !lex::is_alpha(r[0])) break;
+        std::size_t n = 0;
+        while (n < r.size() && lex::is_alpha(r[n]))
+          ++n;
+        ast::Item item;
+        item.kind = ast::ItemKind::keyword;
+        item.loc = st.loc(in.current());
+        item.keyword = r.substr(0, n);
+        in.bump(n);
+        skip_ws(in, st);
+        if (!in.empty() && in.peek_char() == '=') in.bump(1);
+        skip_ws(in, st);
+        item.value = parse_expression(in, st, "a scaling factor after the axis name");
+        st.block->items.push_back(item);
+      }
+    }
+  } else if (is("MCS")) {  // PROG-208517515: #MCS ON [EX TOOL] / #MCS OFF
+    skip_ws(in, st);
+    if (accept(in, "OFF")) {
+      set(H::mcs_off);
+    } else {
+      if (!accept(in, "ON")) st.fail(in.current(), "ON or OFF after #MCS");
+      set(H::mcs_on);
+      skip_ws(in, st);
+      if (accept(in, "EX")) {
+        skip_ws(in, st);
+        if (!accept(in, "TOOL")) st.fail(in.current(), "TOOL after #MCS ON EX");
+      }
+    }
+  } else if (is("CHANNEL") || is("IDENT") || is("ORI") || is("TOOL")) {
+    // Commands that change neither motion nor time in ncsim's model (docs/language.md "#
+    // commands"): read to the block end and shown in trace as ACCEPTED.
+    set(H::accepted);
+    in.bump(in.size());
   } else if (is("VAR")) {
     set(H::var);
   } else if (is("ENDVAR")) {

@@ -113,6 +113,15 @@ constexpr KeywordSpec kMcOther[] = {{"MC_HOME", V::none},
                                     {"HOMINGMODE", V::expr}};
 // L CYCLE [NAME=file @P1=..]: isg-language.md §4.9 (parameter names are open).
 constexpr KeywordSpec kCycle[] = {{"NAME", V::word}};
+// #HSC [...]: TF5200 "HSC" (PATH_DEV / TRACK_DEV in mm; the mode words as flags).
+constexpr KeywordSpec kHsc[] = {
+    {"PATH_DEV", V::expr}, {"TRACK_DEV", V::expr}, {"BSPLINE", V::none},     {"SURFACE", V::none},
+    {"OPT", V::opt_expr},  {"MERGE", V::opt_expr}, {"CONTOUR_DEV", V::expr}, {"AX_DEV", V::expr}};
+// #VECTOR LIMIT ON [...] (PROG-207477899): values in mm/min, mm/min^2 (or the channel's unit).
+constexpr KeywordSpec kVectorLimit[] = {
+    {"ACC", V::opt_expr},         {"DEC", V::opt_expr},  {"RADIAL_ACC", V::opt_expr},
+    {"RADIAL_JERK", V::opt_expr}, {"JERK", V::opt_expr}, {"TRANS_ACC", V::opt_expr},
+    {"VEL", V::opt_expr},         {"FEED", V::none},     {"RAPID", V::none}};
 constexpr KeywordSpec kNone[] = {{"", V::none}};
 
 const KeywordTable kTables[] = {
@@ -138,6 +147,11 @@ const KeywordTable kTables[] = {
     /* mc_touch_probe */ {kMcTouchProbe},
     /* mc_other */ {kMcOther},
     /* cycle */ {kCycle, true},
+    /* g_params */ {std::span(kNone).first(0), false, true},
+    /* file_name */ {std::span(kNone).first(0), true, false, true},
+    /* hsc */ {kHsc},
+    /* vector_limit */ {kVectorLimit},
+    /* scale */ {std::span(kNone).first(0), true},
 };
 
 struct FunctionName {
@@ -209,11 +223,17 @@ std::string_view function_name(ast::Function f) {
   return {};
 }
 
+bool is_implicit_call_g(std::uint32_t code) {
+  // PROG-206278923: G80-G89 and G800-G819 (G800-G839 in the extended configuration,
+  // P-CHAN-00187 g800_prog_file[0..39]).
+  return (code >= 80 && code <= 89) || (code >= 800 && code <= 839);
+}
+
 GClass classify_g(std::uint32_t code) {
   if (std::find(std::begin(kSupportedG), std::end(kSupportedG), code) != std::end(kSupportedG)) {
     return GClass::supported;
   }
-  if ((code >= 80 && code <= 89) || (code >= 800 && code <= 819)) return GClass::implicit_call;
+  if (is_implicit_call_g(code)) return GClass::implicit_call;
   if (std::find(std::begin(kOtherG), std::end(kOtherG), code) != std::end(kOtherG)) {
     return GClass::not_supported;
   }

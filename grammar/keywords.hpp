@@ -56,10 +56,15 @@ std::string_view function_name(ast::Function f);
 enum class GClass : std::uint8_t {
   supported,      ///< in isg-language.md §2.2-2.4
   not_supported,  ///< a real ISG G code ncsim does not implement (§2.5: G41, ...)
-  implicit_call,  ///< G80-G89, G800-G819: needs a configured subroutine (20131)
+  implicit_call,  ///< G80-G89, G800-G839: calls a configured subroutine (else 20131)
   unknown,        ///< not an ISG G code (20131)
 };
 GClass classify_g(std::uint32_t code);
+/// G80-G89 and G800-G839: implicit subroutine calls (PROG-206278923, P-CHAN-00160..00169,
+/// P-CHAN-00187).
+bool is_implicit_call_g(std::uint32_t code);
+/// Most parameters of an implicit call's list (PROG-206278923: <Val1> .. <Val50>).
+inline constexpr std::uint32_t kMaxImplicitCallParams = 50;
 
 /// Highest M function number ncsim accepts (decision, docs/language.md "M codes").
 inline constexpr std::uint32_t kMaxMCode = 999;

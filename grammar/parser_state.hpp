@@ -58,6 +58,10 @@ struct State {
   std::string_view word_name;
   ast::NodeIndex word_value = ast::kNoNode;
   std::uint32_t g_code = 0;
+  ast::NodeIndex word_extra = ast::kNoNode;  // M/H additional value
+  bool g_has_params = false;                 // G80-G839 [..] read (g_params)
+  std::uint32_t g_first_item = 0;
+  std::uint32_t g_item_count = 0;
   ast::NodeIndex assign_target = ast::kNoNode;
   ast::AssignOp assign_op = ast::AssignOp::set;
   std::string_view last_string;
@@ -95,6 +99,8 @@ struct State {
     calls.clear();
     sign = 0;
     word_value = ast::kNoNode;
+    word_extra = ast::kNoNode;
+    g_has_params = false;
     call_pending = false;
     call_done = false;
     table = ast::TableId::none;
@@ -173,7 +179,9 @@ struct State {
     w.loc = word_loc;
     w.name = word_name;
     w.value = word_value;
+    w.extra = word_extra;
     word_value = ast::kNoNode;
+    word_extra = ast::kNoNode;
     add_word(w);
   }
 

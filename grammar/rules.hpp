@@ -142,12 +142,19 @@ struct equals : seq<one<'='>, not_at<one<'='>>> {};
 
 struct g_code : digits {};
 struct g_arg : expression {};
-struct g_word : seq<pegtl::istring<'G'>, must<g_code>, opt<ws, equals, ws, must<g_arg>>> {};
+NCSIM_CUSTOM_RULE(g_params);  // G80-G89 / G800-G839 [v1, v2,, v4]; matches empty otherwise
+struct g_word : seq<pegtl::istring<'G'>, must<g_code>, opt<ws, equals, ws, must<g_arg>>, g_params> {
+};
 
 template <char L>
 struct letter_head : seq<pegtl::istring<L>, not_at<ident_char>> {};
 NCSIM_CUSTOM_RULE(address_head);  // M H F E S T D I J K R X Y Z A B C U V W (one letter)
 struct address_word : seq<address_head, ws, opt<equals, ws>, must<address_value>> {};
+
+// M/H functions with an additional value (PROG "M/H functions with optional additional
+// information"): M200=1200, H5=-345, M52=-P2.
+struct extra_value : seq<opt<sign>, ws, must<address_operand>> {};
+struct mh_word : seq<address_head, ws, address_value, ws, equals, ws, must<extra_value>> {};
 
 NCSIM_CUSTOM_RULE(axis_name_eq);  // AB= (multi-letter axis name followed by '=')
 struct named_axis : seq<axis_name_eq, ws, equals, ws, must<address_value>> {};
@@ -188,7 +195,7 @@ NCSIM_CUSTOM_RULE(misplaced_statement);  // '#' or '$' (not $GOTO) among words: 
 // for the analysis test), but only those that can match the first character, and skips
 // axis_command / named_axis unless the name is followed by '[' / '=': most words are `X-1.5`.
 struct word_spec : sor<misplaced_statement, subroutine_call, macro_def, assignment, axis_command,
-                       g_word, named_axis, address_word, bare_value> {};
+                       g_word, mh_word, named_axis, address_word, bare_value> {};
 NCSIM_CUSTOM_RULE(word);
 
 // ---- $ control statements (isg-language.md §4) -----------------------------------------------
@@ -220,8 +227,11 @@ struct block_number
 struct label_name : name {};
 struct label : seq<one<'['>, must<label_name>, must<close_bracket>> {};
 struct program_name : plus<not_one<' ', '\t', '(', ';', '\r', '\n'>> {};
+// A main program's name may hold blanks (`% 1x10 dots right`, TF5200 "NC program
+// structure": the name is the rest of the line; docs/language.md).
+struct main_program_name : seq<program_name, star<star<blank>, program_name>> {};
 struct local_header : seq<pegtl::istring<'L'>, plus<blank>, must<program_name>> {};
-struct header : seq<one<'%'>, star<blank>, sor<local_header, opt<program_name>>> {};
+struct header : seq<one<'%'>, star<blank>, sor<local_header, opt<main_program_name>>> {};
 struct trailing_goto : goto_stmt {};
 struct words_end : seq<opt<trailing_goto>, block_end> {};
 struct word_list : seq<star<word, ws>, must<words_end>> {};
@@ -256,6 +266,8 @@ NCSIM_ANALYZE_CUSTOM(word);
 NCSIM_ANALYZE_CUSTOM(function_name);
 NCSIM_ANALYZE_CUSTOM(address_head);
 NCSIM_ANALYZE_CUSTOM(axis_name_eq);
+template <typename Name>
+struct analyze_traits<Name, ncsim::grammar::rules::g_params> : analyze_opt_traits<> {};
 NCSIM_ANALYZE_CUSTOM(call_head);
 NCSIM_ANALYZE_CUSTOM(file_name);
 NCSIM_ANALYZE_CUSTOM(bracket_axis);

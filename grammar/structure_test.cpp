@@ -56,7 +56,11 @@ TEST_CASE("#IF: a block number before it is 20593; the #ELSE branch is syntax-on
 
 TEST_CASE("unknown G and M codes, unknown bracket keywords") {
   CHECK(check("G123\n") == V{"1:1 20131"});
-  CHECK(check("G81\n") == V{"1:1 20131"});
+  CHECK(check("G81\n").empty());  // an implicit call: the interpreter knows its subroutine
+  CHECK(check("G805 [ -27.120, 28.955,, 2.870 ]\n").empty());
+  CHECK(check("G840\n") == V{"1:1 20131"});
+  CHECK(check("M200=1200 H5=-345\n").empty());  // M/H with an additional value
+  CHECK(check("% 1x10 dots right\nM30\n").empty());
   CHECK(check("M1000\n") == V{"1:1 NC2009"});
   CHECK(check("M2.5\n") == V{"1:1 NC2009"});
   CHECK(check("M10 M11 M50 M3 M999\n").empty());  // technology functions for the PLC

@@ -52,8 +52,22 @@ struct Action<rules::g_word> {
       ++n;
     w.name = t.substr(0, n);
     w.value = st.word_value;
+    w.has_params = st.g_has_params;
+    w.first_item = st.g_first_item;
+    w.item_count = st.g_item_count;
     st.word_value = ast::kNoNode;
+    st.g_has_params = false;
     st.add_word(w);
+  }
+};
+
+template <>
+struct Action<rules::extra_value> {
+  template <typename Input>
+  static void apply(const Input& in, State& st) {
+    if (st.sign == '-') st.negate_top(st.loc(in.begin()));
+    st.sign = 0;
+    st.word_extra = st.pop();
   }
 };
 
@@ -67,6 +81,8 @@ template <>
 struct Action<rules::address_word> : AddAddressWord {};
 template <>
 struct Action<rules::named_axis> : AddAddressWord {};
+template <>
+struct Action<rules::mh_word> : AddAddressWord {};
 
 template <>
 struct Action<rules::assign_target> {
@@ -290,6 +306,14 @@ struct Action<rules::program_name> {
   template <typename Input>
   static void apply(const Input& in, State& st) {
     st.word_name = in.string_view();
+  }
+};
+
+template <>
+struct Action<rules::main_program_name> {
+  template <typename Input>
+  static void apply(const Input& in, State& st) {
+    st.word_name = in.string_view();  // blanks inside the name kept
   }
 };
 

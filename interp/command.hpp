@@ -152,6 +152,9 @@ enum class TechKind : std::uint8_t { m, h, s, t, d };
 struct Tech {
   TechKind kind = TechKind::m;
   double value = 0.0;
+  /// M/H additional value for the PLC (`M200=1200`: 1200; TF5200 "M/H functions with optional
+  /// additional information"), a whole number
+  std::optional<double> extra;
 };
 
 /// M00 (optional = false) / M01 (optional = true).
@@ -252,7 +255,8 @@ struct MachineData {
 };
 
 /// #MSG mode (PROG-507845131).
-enum class MessageMode : std::uint8_t { immediate, syn, syn_ack, ack };
+/// accepted: a # command ncsim reads without an effect, shown in trace (docs/language.md).
+enum class MessageMode : std::uint8_t { immediate, syn, syn_ack, ack, accepted };
 
 struct Message {
   std::string text;

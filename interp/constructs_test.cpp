@@ -136,8 +136,12 @@ TEST_CASE("M30 inside a subroutine ends the program with warning NC4305") {
   CHECK(c.warnings == std::vector<std::string>{"NC4305"});
 }
 
-TEST_CASE("L CYCLE is NC4304; an indirect call needs a STRING variable [NC4303]") {
-  CHECK(run("%t\nL CYCLE [NAME=abc.ecy]\nM30\n").error_id == "NC4304");
+TEST_CASE(
+    "L CYCLE to a file nowhere is NC4301; MODAL_MOVE is NC4304; an indirect call needs a "
+    "STRING variable [NC4303]") {
+  CHECK(run("%t\nL CYCLE [NAME=abc.ecy]\nM30\n").error_id == "NC4301");
+  CHECK(run("%t\nL CYCLE [NAME=abc.ecy MODAL_MOVE]\nM30\n").error_id == "NC4304");
+  CHECK(run("%t\nL CYCLE [@P1=2]\nM30\n").error_id == "NC4304");
   CHECK(run("%t\nV.P.X = 1\nL V.P.X\nM30\n").error_id == "NC4303");
 }
 
@@ -494,9 +498,9 @@ TEST_CASE("#MACHINE DATA errors name the parameter id") {
   CHECK(bad_key.error_id == "NC4513");
 }
 
-TEST_CASE("PP and @P parameters are NC4004; an undefined macro is NC4005") {
+TEST_CASE("PP parameters are NC4004, @P outside a cycle 21382; an undefined macro is NC4005") {
   CHECK(run("%t\nPP1 = 2\nM30\n").error_id == "NC4004");
-  CHECK(run("%t\n@P1 = 2\nM30\n").error_id == "NC4004");
+  CHECK(run("%t\n@P1 = 2\nM30\n").error_id == "21382");
   CHECK(run("%t\nLL \"NOPE\"\nM30\n").error_id == "NC4005");
   CHECK(run("%t\nP1 = \"NOPE\" + 1\nM30\n").error_id == "NC4005");
 }

@@ -82,8 +82,11 @@ bool Evaluator::resolve(const ast::Block& block, ast::NodeIndex n, VarRef& out) 
   if (node.var_class == ast::VarClass::p) {
     out.number = static_cast<std::uint32_t>(node.value);
     if (node.value < 0.0 || node.value != std::trunc(node.value)) out.number = 0;
-  } else if (node.var_class == ast::VarClass::pp || node.var_class == ast::VarClass::at_p ||
-             node.var_class == ast::VarClass::v_other || node.var_class == ast::VarClass::none) {
+  } else if (node.var_class == ast::VarClass::at_p) {
+    out.number = static_cast<std::uint32_t>(std::min(node.value, 1e9));
+    if (node.value < 0.0 || node.value != std::trunc(node.value)) out.number = 0;
+  } else if (node.var_class == ast::VarClass::pp || node.var_class == ast::VarClass::v_other ||
+             node.var_class == ast::VarClass::none) {
     return fail(node.loc, "NC4004",
                 "variable " + std::string(node.text) + " is not supported by ncsim");
   } else {
@@ -129,6 +132,11 @@ std::optional<double> Evaluator::eval(const ast::Block& block, ast::NodeIndex n)
       }
       VarError err;
       auto v = vars_.read(scratch_, err);
+      if (!v && err.id == "NC4011" && !node.text.empty()) {
+        // The variable as the program wrote it (V.G.KIN[9].PROGRAMMING_MODE), not the store's
+        // name with its indices at the end.
+        err.message = "unknown variable " + std::string(node.text);
+      }
       if (!v) fail(node.loc, err.id, err.message);
       return v;
     }

@@ -92,6 +92,10 @@ Interpreter::Impl::Impl(const core::SourceFile& file, const machines::Machine& m
   // G261 without #CONTOUR MODE PATH_DEV: the channel's radius (NCSIM-CHAN-620, default the
   // manual's 1 mm; docs/planner.md "Tolerance balls").
   modal.contour.path_dev = machine.channel.default_path_dev;
+  scale_factors.fill(1.0);
+  init_zero_offsets();
+  vars.create_cycle_param_on_read(machine.channel.create_cycle_param_on_read);  // P-CHAN-00463
+  if (machine.channel.default_feed > 0.0) feed = machine.channel.default_feed;  // P-CHAN-00099
 }
 
 bool Interpreter::Impl::fail(core::SourceLoc loc, std::string id, std::string message) {
@@ -312,8 +316,7 @@ bool Interpreter::Impl::call(const ast::Block& b, const ast::Call& c) {
   } else {
     name = std::string(c.name);
   }
-  if (c.kind == ast::CallKind::cycle)
-    return fail(c.loc, "NC4304", "L CYCLE is not supported by ncsim");
+  if (c.kind == ast::CallKind::cycle) return read_cycle_call(b, c) && run_cycle_call();
   if (static_cast<int>(calls.size()) >= options.max_subroutine_depth) {
     return fail(c.loc, "NC4302",
                 "subroutine nesting deeper than " + std::to_string(options.max_subroutine_depth) +
@@ -344,40 +347,55 @@ bool Interpreter::Impl::call(const ast::Block& b, const ast::Call& c) {
       if (auto problem = subroutine_file_problem(path)) {
         return fail(c.loc, "NC4301", "global subroutine file " + path.string() + *problem);
       }
-      auto pf = std::make_unique<ProgramFile>();
-      try {
-        pf->own = std::make_unique<core::SourceFile>(core::SourceFile::load(path));
-      } catch (const std::exception& e) {
-        return fail(c.loc, "NC4301", e.what());
-      }
-      // A subroutine file is checked whole when it is first called, as the main program is
-      // before it runs: its syntax errors are reported even in blocks never reached.
-      const core::DiagnosticList syntax = grammar::check_program(*pf->own);
-      if (syntax.has_errors()) {
-        for (const core::Diagnostic& d : syntax.items())
-          diags.add(d);
-        return fail(c.loc, "NC4306",
-                    "global subroutine file " + path.string() + " has " +
-                        std::to_string(syntax.error_count()) + " syntax error" +
-                        (syntax.error_count() == 1 ? "" : "s"));
-      }
-      pf->file = pf->own.get();
-      pf->blocks = std::make_unique<BlockSource>(*pf->file);
-      index = static_cast<std::uint16_t>(files.size());
-      files.push_back(std::move(pf));
-      file_by_name[name] = index;
-      find_main_start(*files[index], index);
+      auto loaded = load_global_file(name, path, c.loc);
+      if (!loaded) return false;
+      index = *loaded;
     } else {
       index = it->second;
     }
     target = {index, files[index]->main_start};
     header = files[index]->main_start == 0 ? 0 : files[index]->main_start - 1;
   }
+  enter_level(target, header);
+  return true;
+}
+
+std::optional<std::uint16_t> Interpreter::Impl::load_global_file(const std::string& key,
+                                                                 const std::filesystem::path& path,
+                                                                 core::SourceLoc at) {
+  auto pf = std::make_unique<ProgramFile>();
+  try {
+    pf->own = std::make_unique<core::SourceFile>(core::SourceFile::load(path));
+  } catch (const std::exception& e) {
+    fail(at, "NC4301", e.what());
+    return std::nullopt;
+  }
+  // A subroutine file is checked whole when it is first called, as the main program is
+  // before it runs: its syntax errors are reported even in blocks never reached.
+  const core::DiagnosticList syntax = grammar::check_program(*pf->own);
+  if (syntax.has_errors()) {
+    for (const core::Diagnostic& d : syntax.items())
+      diags.add(d);
+    fail(at, "NC4306",
+         "global subroutine file " + path.string() + " has " +
+             std::to_string(syntax.error_count()) + " syntax error" +
+             (syntax.error_count() == 1 ? "" : "s"));
+    return std::nullopt;
+  }
+  pf->file = pf->own.get();
+  pf->blocks = std::make_unique<BlockSource>(*pf->file);
+  const auto index = static_cast<std::uint16_t>(files.size());
+  files.push_back(std::move(pf));
+  file_by_name[key] = index;
+  find_main_start(*files[index], index);
+  return index;
+}
+
+void Interpreter::Impl::enter_level(Pc target, std::uint32_t header) {
   calls.push_back({pc, control.size(), unit_start});
   vars.push_level();
   pc = target;
   unit_start = header;
-  return true;
 }
 
 bool Interpreter::Impl::subroutine_return() {
@@ -670,6 +688,14 @@ std::uint64_t Interpreter::Impl::state_fingerprint(std::size_t& cost) const {
                  std::uint64_t{m.caxtrack});
   h = mix(h, bits(m.transvelmin));
   h = mix(h, files.size());
+  // offsets, scaling and path limits (interpreter_offsets.cpp)
+  h = mix(h, (std::uint64_t{zero_group} << 8) | (std::uint64_t{mcs_on} << 2) |
+                 (std::uint64_t{scale_on} << 1) | std::uint64_t{hsc_saved.has_value()});
+  for (const double f : scale_factors)
+    h = mix(h, bits(f));
+  h = mix(h, bits(vector_vel));
+  for (const auto& [code, name] : file_names)
+    h = mix(h, code);
   cost += control.size() + calls.size() + kMaxAxes;
   return h;
 }
@@ -781,8 +807,17 @@ bool Interpreter::Impl::step() {
       break;
     }
   }
+  cycle_call.reset();
   if (!run_words(*run)) return false;
   if (run->trailing_goto) return jump_to_label(*run, run->trailing_goto->target);
+  if (cycle_call) {  // G80-G89 / G800-G839: the last action of the block (P-CHAN-00160)
+    if (run->call) {
+      return fail(run->call->loc, "21542",
+                  "a subroutine call in a block that already calls G" +
+                      std::to_string(cycle_call->g_code) + "'s subroutine");
+    }
+    return run_cycle_call();
+  }
   if (run->call) return call(*run, *run->call);
   return true;
 }

@@ -20,6 +20,7 @@
 // snapshot in force; per-command code never throws (program errors are diagnostics).
 
 #include <cstdint>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <optional>
@@ -58,6 +59,13 @@ struct Options {
   /// follow` (docs/conveyor.md "sweep"). The programmed word is still parsed and checked
   /// (NC4507, NC4030 at its line); 50587 is checked on the value used.
   std::optional<double> conv_vel;
+  /// Folders a cycle's file is looked up in, in this order, before the machine folder's
+  /// `cycles/` and the main program's folder (`--cycles DIR`; docs/interp.md "Cycles").
+  std::vector<std::filesystem::path> cycle_dirs;
+  /// `--missing-cycles skip`: a cycle call (G80-G89, G800-G839, L CYCLE) whose subroutine is
+  /// not configured or not found is skipped (no motion, no time) with warning NC4307, once per
+  /// G code or cycle name; false: error 20131 / NC4301.
+  bool skip_missing_cycles = false;
 };
 
 /// The run time's answer to a Barrier. Only what the barrier asks for is read.

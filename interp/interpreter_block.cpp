@@ -172,8 +172,8 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
   bw.clear();
   if (!read_g_codes(b, bw) || !read_addresses(b, bw)) return false;
   if (bw.g74 && !check_homing(b, bw)) return false;  // --- static-saw: before S is emitted
-  for (const auto& [kind, value] : bw.tech)
-    emit(line, Tech{kind, value});
+  for (const Tech& t : bw.tech)
+    emit(line, t);
   bool ok = true;
   if (bw.g04) {
     ok = run_dwell(b, bw);
@@ -323,6 +323,46 @@ bool Interpreter::Impl::read_g_codes(const ast::Block& b, BlockWords& bw) {
       case 151:  // = #SPLINE ON (PROG-207209611)
         if (!spline_on(w.loc)) return false;
         break;
+      case 53:
+      case 54:
+      case 55:
+      case 56:
+      case 57:
+      case 58:
+      case 59:
+      case 159:
+        if (!select_zero_offset(b, w)) return false;
+        break;
+      case 127:  // velocity weighting per axis / group / rapid (PROG-206578955 ...)
+      case 128:
+      case 129:
+      case 130:  // acceleration weighting (PROG-206590731)
+      case 131:
+      case 230:
+      case 231:
+      case 333:
+      case 334:
+      case 132:  // ramp-time weighting
+      case 133:
+      case 134:
+      case 233:
+      case 338:
+      case 339:
+        // Axis-specific forms (G130 X70) give weights, not positions; the group forms
+        // (G131=50) leave the block's axis words positions.
+        if (w.code == 127 || w.code == 130 || w.code == 132 || w.code == 230 || w.code == 333 ||
+            w.code == 338) {
+          bw.weights_axes = true;
+        } else if (w.value != ast::kNoNode && !eval(b, w.value)) {
+          return false;
+        }
+        if (unmodelled_g.insert(w.code).second) {
+          warn(w.loc, "NC4313",
+               "G" + std::to_string(w.code) +
+                   " (dynamics weighting) is not modelled by ncsim: the axes' listed velocity, "
+                   "acceleration and ramp times apply");
+        }
+        break;
       case 161:
         centre_absolute = true;
         break;
@@ -337,9 +377,42 @@ bool Interpreter::Impl::read_g_codes(const ast::Block& b, BlockWords& bw) {
       case 117:
         break;  // accepted, no effect
       default:
+        if (grammar::is_implicit_call_g(w.code)) {
+          if (!read_implicit_call(b, w)) return false;
+          break;
+        }
         return fail(w.loc, "NC4102", "G" + std::to_string(w.code) + " is not supported by ncsim");
     }
   }
+  return true;
+}
+
+bool Interpreter::Impl::additional_value(const ast::Block& b, const ast::Word& w,
+                                         std::optional<double>& out) {
+  out.reset();
+  if (w.extra == ast::kNoNode) return true;
+  // TF5200 "M/H functions with optional additional information": a negative or positive
+  // integer (ncsim: within SGN32), not for the spindle functions M03/M04/M05/M19 and the gear
+  // stages M40-M45.
+  const std::string name = (w.kind == ast::WordKind::h ? "H" : "M");
+  auto code = eval(b, w.value);
+  if (!code) return false;
+  const long m = std::lround(*code);
+  if (w.kind == ast::WordKind::m &&
+      (m == 3 || m == 4 || m == 5 || m == 19 || (m >= 40 && m <= 45))) {
+    return fail(
+        w.loc, "NC4032",
+        "M" + std::to_string(m) + " takes no additional value (spindle and gear functions)");
+  }
+  auto v = eval(b, w.extra);
+  if (!v) return false;
+  if (!(std::abs(*v) <= 2147483647.0) || *v != std::trunc(*v)) {
+    return fail(b.exprs[w.extra].loc, "NC4032",
+                "the additional value of " + name + core::number_text(*code) +
+                    " must be a whole number in -2147483648..2147483647, not " +
+                    core::number_text(*v));
+  }
+  out = *v;
   return true;
 }
 
@@ -369,7 +442,8 @@ bool Interpreter::Impl::read_addresses(const ast::Block& b, BlockWords& bw) {
         if (modal.feed_mode == FeedMode::inverse_time) {
           bw.block_time = *v;  // G93: seconds (PROG-206602507)
         } else {
-          feed = *v * unit / 60.0;  // mm/min -> mm/s (PROG-206811147)
+          // F in mm/min by default; P-CHAN-00108 sets another unit (F x 100 / factor mm/min)
+          feed = *v * unit * (100.0 / machine.channel.feedrate_factor) / 60.0;
         }
         break;
       case ast::WordKind::e:
@@ -382,23 +456,25 @@ bool Interpreter::Impl::read_addresses(const ast::Block& b, BlockWords& bw) {
         if (*v < 0.0) {  // the direction is M03/M04's, the speed a magnitude
           return fail(w.loc, "NC4030", "spindle speed S" + core::number_text(*v) + " is negative");
         }
-        bw.tech.emplace_back(TechKind::s, *v);
+        bw.tech.push_back(Tech{TechKind::s, *v, {}});
         break;
       case ast::WordKind::t:
-        bw.tech.emplace_back(TechKind::t, *v);
+        bw.tech.push_back(Tech{TechKind::t, *v, {}});
         break;
       case ast::WordKind::d:
-        bw.tech.emplace_back(TechKind::d, *v);
+        bw.tech.push_back(Tech{TechKind::d, *v, {}});
         break;
       case ast::WordKind::h:
-        bw.tech.emplace_back(TechKind::h, *v);
-        break;
       case ast::WordKind::m: {
+        std::optional<double> extra;
+        if (!additional_value(b, w, extra)) return false;
         const int code = static_cast<int>(std::lround(*v));
-        if (code == 0 || code == 1 || code == 2 || code == 30 || code == 17 || code == 29) {
-          bw.program_m = code;
+        if (w.kind == ast::WordKind::h) {
+          bw.tech.push_back(Tech{TechKind::h, *v, extra});
+        } else if (code == 0 || code == 1 || code == 2 || code == 30 || code == 17 || code == 29) {
+          bw.program_m = code;  // an additional value goes to the PLC with it (not modelled)
         } else {
-          bw.tech.emplace_back(TechKind::m, *v);
+          bw.tech.push_back(Tech{TechKind::m, *v, extra});
         }
         break;
       }
@@ -456,6 +532,7 @@ void Interpreter::Impl::run_homing(const BlockWords& bw) {
   Homing h;
   for (const auto& [axis, order] : bw.axis_words) {
     h.axes.emplace_back(axis, static_cast<int>(order));
+    pset_offsets[axis] = 0.0;             // G74 deselects the #PSET preset (PROG-207101835)
     unknown_axes |= AxisMask{1} << axis;  // the reference position: run-time state
     indp_unknown &= ~(AxisMask{1} << axis);
   }

@@ -126,6 +126,24 @@ bool Interpreter::Impl::run_hash(const ast::Block& b, const ast::HashCommand& h)
     case HashKind::pre_if:
     case HashKind::pre_else:
       return hash_pre_if(b, h);
+    case HashKind::file_name:
+      return hash_file_name(b, h);
+    case HashKind::hsc_on:
+    case HashKind::hsc_off:
+      return hash_hsc(b, h);
+    case HashKind::vector_limit_on:
+    case HashKind::vector_limit_off:
+      return hash_vector_limit(b, h);
+    case HashKind::scale_on:
+    case HashKind::scale_off:
+      return hash_scale(b, h);
+    case HashKind::mcs_on:
+    case HashKind::mcs_off:
+      return hash_mcs(b, h);
+    case HashKind::accepted:
+      return hash_accepted(b);
+    case HashKind::pset:
+      return hash_pset(b, h);
     case HashKind::bcs_def:
     case HashKind::bcs_on:
     case HashKind::bcs_off:

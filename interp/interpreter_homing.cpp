@@ -20,8 +20,8 @@
 namespace ncsim::interp {
 
 bool Interpreter::Impl::check_homing(const ast::Block& b, const BlockWords& bw) {
-  for (const auto& [kind, value] : bw.tech)
-    if (kind == TechKind::s)
+  for (const Tech& t : bw.tech)
+    if (t.kind == TechKind::s)
       return fail(b.loc, "NC9105",
                   "not supported: G74 S (homing a spindle); home the path axes only");
   const char* coupling = modal.synchronised    ? "#SYNC IN (the axes follow the conveyor)"

@@ -4,7 +4,10 @@
 // # commands). Not part of the public interface.
 
 #include <deque>
+#include <filesystem>
 #include <initializer_list>
+#include <map>
+#include <set>
 #include <string_view>
 
 #include "core/number_text.hpp"
@@ -105,6 +108,55 @@ struct Interpreter::Impl {
   std::optional<std::uint32_t> next_if_branch(std::uint16_t file, std::uint32_t from,
                                               bool endif_only, core::SourceLoc at);
   bool call(const ast::Block& b, const ast::Call& c);
+  /// Loads global subroutine file `path` (checked whole), remembered as `key`.
+  std::optional<std::uint16_t> load_global_file(const std::string& key,
+                                                const std::filesystem::path& path,
+                                                core::SourceLoc at);
+  void enter_level(Pc target, std::uint32_t header);  // a subroutine level starts at target
+
+  // --- cycles (interpreter_cycles.cpp) ---
+  /// A cycle call read from a block, run after the block's words: G80-G89 / G800-G839 with
+  /// their parameter list (PROG-206278923) or `L CYCLE [NAME=.. @P1=..]` (PROG-206859019).
+  struct CycleCall {
+    std::uint32_t g_code = 0;  ///< 0: L CYCLE
+    core::SourceLoc loc;
+    std::string name;                           ///< L CYCLE's NAME; G: found at run_cycle_call
+    std::vector<std::optional<double>> params;  ///< [k]: @P(k+1); nullopt: a gap
+  };
+  std::optional<CycleCall> cycle_call;
+  std::map<std::uint32_t, std::string> file_names;  // #FILE NAME [G80="x.nc"] until M30
+  std::set<std::string> skipped_cycles;             // G codes and cycle names warned about (NC4307)
+  std::set<std::uint32_t> unmodelled_g;             // dynamics weightings warned about (NC4313)
+  bool read_implicit_call(const ast::Block& b, const ast::Word& w);
+  bool read_cycle_call(const ast::Block& b, const ast::Call& c);
+  bool run_cycle_call();  // enters cycle_call's subroutine (or skips it) and clears it
+  bool hash_file_name(const ast::Block& b, const ast::HashCommand& h);
+
+  // --- offsets, scaling, path limits (interpreter_offsets.cpp) ---
+  /// Zero-offset groups np_grp[0..96] (P-ZERO-00002's range).
+  static constexpr std::size_t kZeroGroups = 97;
+  std::size_t zero_group = 0;                               // G53..G59 / G159=n: the active group
+  bool mcs_on = false;                                      // #MCS ON: the zero offsets are off
+  bool scale_on = false;                                    // #SCALE ON
+  std::array<double, kMaxAxes> scale_factors{};             // #SCALE factors by machine index
+  std::optional<std::pair<bool, ContourParams>> hsc_saved;  // #HSC ON: G26x state replaced
+  std::optional<double> vector_vel;  // #VECTOR LIMIT ON [VEL]: path velocity cap [mm/s]
+  void init_zero_offsets();
+  double zero_offset(std::uint8_t axis) const;  // the active offset of `axis` [mm | deg]
+  double scale_of(std::uint8_t axis) const;     // its #SCALE factor (1 when off)
+  bool select_zero_offset(const ast::Block& b, const ast::Word& w);  // G53..G59, G159=n
+  bool check_offsets_frame(const ast::Block& b, AxisMask programmed) const;
+  bool hash_scale(const ast::Block& b, const ast::HashCommand& h);
+  bool hash_mcs(const ast::Block& b, const ast::HashCommand& h);
+  bool hash_hsc(const ast::Block& b, const ast::HashCommand& h);
+  bool hash_vector_limit(const ast::Block& b, const ast::HashCommand& h);
+  bool hash_accepted(const ast::Block& b);
+  std::array<double, kMaxAxes> pset_offsets{};  // #PSET: program = machine - zero - this [mm]
+  bool hash_pset(const ast::Block& b, const ast::HashCommand& h);  // #PSET X200 (no motion)
+  /// #SCALE on an arc: I/J/K and R scaled by the plane's factor, which must be the same for
+  /// both plane axes (NC4312; an arc does not scale into an ellipse).
+  bool scale_arc(const ast::Block& b, std::array<std::optional<double>, 3>& ijk,
+                 std::optional<double>& radius) const;
   bool subroutine_return();
   bool find_main_start(ProgramFile& pf, std::uint16_t index);
   bool fail(core::SourceLoc loc, std::string id, std::string message);
@@ -117,15 +169,16 @@ struct Interpreter::Impl {
   struct BlockWords {
     std::optional<MotionKind> motion_word;  ///< G00..G03 in this block
     bool g04 = false, g74 = false, g92 = false, g60 = false, g61 = false, g09 = false;
-    double unit = 1.0;                         ///< [mm per program unit] (G70: 25.4)
+    bool weights_axes = false;  ///< G130/G132/G230/G333/G338: the axis words are weights
+    double unit = 1.0;          ///< [mm per program unit] (G70: 25.4)
     std::array<std::optional<double>, 3> ijk;  ///< [mm]
     std::optional<double> radius, bare, end_feed, block_time;
-    std::vector<std::pair<TechKind, double>> tech;
+    std::vector<Tech> tech;
     std::optional<int> program_m;                             ///< M00/M01/M02/M30/M17/M29
     std::vector<std::pair<std::uint8_t, double>> axis_words;  ///< machine index, value
     void clear() {
       motion_word.reset();
-      g04 = g74 = g92 = g60 = g61 = g09 = false;
+      g04 = g74 = g92 = g60 = g61 = g09 = weights_axes = false;
       unit = 1.0;
       ijk = {};
       radius.reset();
@@ -142,6 +195,9 @@ struct Interpreter::Impl {
   bool run_assignments(const ast::Block& b);
   bool read_g_codes(const ast::Block& b, BlockWords& bw);
   bool read_addresses(const ast::Block& b, BlockWords& bw);
+  /// The additional value of M/H word `w` (`M200=1200`), nullopt if none; NC4032 if it is not
+  /// a whole number or its function takes none.
+  bool additional_value(const ast::Block& b, const ast::Word& w, std::optional<double>& out);
   bool run_dwell(const ast::Block& b, const BlockWords& bw);     // G04
   void run_homing(const BlockWords& bw);                         // G74
   bool check_homing(const ast::Block& b, const BlockWords& bw);  // --- static-saw: own file

@@ -9,23 +9,30 @@ namespace ncsim::interp {
 
 bool Interpreter::Impl::run_block_motion(const ast::Block& b, const BlockWords& bw) {
   if (bw.axis_words.empty() && !bw.motion_word && !bw.g60) return true;  // no motion here
+  if (bw.weights_axes) return true;  // G130 X70: the axis words were weights
   AxisValues target = position;
   AxisMask programmed = 0;
   if (bw.motion_word) motion = *bw.motion_word;
   for (const auto& [axis, value] : bw.axis_words) {
     const bool rotary = machine.axes[axis].kind == machines::AxisKind::rotary;
-    const double v = value * (rotary ? 1.0 : bw.unit);
-    target[axis] = modal.incremental ? position[axis] + v : v;
+    // #SCALE scales the programmed value about the active zero point; the zero offset then
+    // takes effect at the next absolute value (PROG-206487307: G91 values do not move by it).
+    const double v = value * (rotary ? 1.0 : bw.unit) * scale_of(axis);
+    target[axis] = modal.incremental ? position[axis] + v : v + zero_offset(axis);
     if (!std::isfinite(target[axis])) {  // G91: the sum left the range of a double
       return fail(b.loc, "NC4101",
                   "target of axis " + machine.axes[axis].name + " is not a finite number");
     }
     programmed |= AxisMask{1} << axis;
   }
+  if (!check_offsets_frame(b, programmed)) return false;
   const bool arc = motion == MotionKind::arc_cw || motion == MotionKind::arc_ccw;
   if (programmed != 0 || (arc && bw.motion_word && (bw.ijk[0] || bw.ijk[1] || bw.ijk[2]))) {
     const BlockMotionWords words{bw.g09, bw.g60, bw.g61, bw.block_time, bw.end_feed};
-    if (!run_motion(b, motion, target, programmed, bw.ijk, bw.radius, words)) return false;
+    std::array<std::optional<double>, 3> ijk = bw.ijk;
+    std::optional<double> radius = bw.radius;
+    if (scale_on && arc && !scale_arc(b, ijk, radius)) return false;
+    if (!run_motion(b, motion, target, programmed, ijk, radius, words)) return false;
   } else if (bw.g60) {
     return fail(b.loc, "20003", "G60 without a motion in the block");
   }
@@ -61,6 +68,7 @@ bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const A
   m.end = target;
   m.programmed = programmed;
   m.feed = kind == MotionKind::rapid ? 0.0 : feed.value_or(0.0);
+  if (vector_vel && kind != MotionKind::rapid) m.feed = std::min(m.feed, *vector_vel);
   m.modal = snapshot();
   if (words.stop_at_end) m.modal.transition = Transition::stop_at_end;
   m.modal.exact_stop = m.modal.exact_stop || words.exact_stop;
@@ -101,8 +109,13 @@ bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const A
     } else {
       const auto& o1 = ijk[static_cast<std::size_t>(p1)];
       const auto& o2 = ijk[static_cast<std::size_t>(p2)];
-      c1 = centre_absolute ? o1.value_or(s1) : s1 + o1.value_or(0.0);
-      c2 = centre_absolute ? o2.value_or(s2) : s2 + o2.value_or(0.0);
+      // G161: absolute centre coordinates, shifted by the zero offset as axis values are.
+      const auto shift = [&](int p) {
+        const auto& a = xyz[static_cast<std::size_t>(p)];
+        return a ? zero_offset(*a) : 0.0;
+      };
+      c1 = centre_absolute ? (o1 ? *o1 + shift(p1) : s1) : s1 + o1.value_or(0.0);
+      c2 = centre_absolute ? (o2 ? *o2 + shift(p2) : s2) : s2 + o2.value_or(0.0);
       const double r_start = std::hypot(s1 - c1, s2 - c2);
       const double r_end = std::hypot(e1 - c1, e2 - c2);
       const double diff = std::fabs(r_end - r_start);

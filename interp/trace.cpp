@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 
 #include "core/number_text.hpp"
 
@@ -129,6 +130,7 @@ std::string to_trace_line(const Command& c, const machines::Machine& m) {
           out += kNames[static_cast<int>(b.kind)];
           out += '=';
           num(out, b.value);
+          if (b.extra) field(out, "value", *b.extra);
         } else if constexpr (std::is_same_v<T, ProgramStop>) {
           out += b.optional ? " STOP M01" : " STOP M00";
         } else if constexpr (std::is_same_v<T, AxisCommand>) {
@@ -211,10 +213,14 @@ std::string to_trace_line(const Command& c, const machines::Machine& m) {
           }
           if (b.wait) out += " WAIT";
         } else if constexpr (std::is_same_v<T, Message>) {
-          out += " MSG";
-          static constexpr const char* kModes[] = {"", " SYN", " SYN_ACK", " ACK"};
-          out += kModes[static_cast<int>(b.mode)];
-          out += " \"" + b.text + "\"";
+          if (b.mode == MessageMode::accepted) {
+            out += " ACCEPTED \"" + b.text + "\"";
+          } else {
+            out += " MSG";
+            static constexpr const char* kModes[] = {"", " SYN", " SYN_ACK", " ACK"};
+            out += kModes[static_cast<int>(b.mode)];
+            out += " \"" + b.text + "\"";
+          }
         } else if constexpr (std::is_same_v<T, Flush>) {
           static constexpr const char* kKinds[] = {" FLUSH", " FLUSH CONTINUE", " FLUSH WAIT"};
           out += kKinds[static_cast<int>(b.kind)];
@@ -317,6 +323,18 @@ core::DiagnosticList check_semantics(const core::SourceFile& file, const machine
       std::max<std::uint64_t>(kCheckMaxCommands, kCheckCommandsPerLine * file.line_count());
   std::uint64_t count = 0;
   bool ended = false;
+  // A soft-limit error of a block inside a loop is the same on every pass: reported once, with
+  // how often it repeated (note NC4602), not once per pass.
+  std::map<std::string, std::pair<core::Diagnostic, std::uint64_t>> repeats;
+  const auto add_once = [&](core::Diagnostic d) {
+    std::string key = d.file + ':' + std::to_string(d.loc.line) + ':' + d.id + ':' + d.message;
+    auto [it, fresh] = repeats.try_emplace(std::move(key), d, 0);
+    if (fresh) {
+      out.add(std::move(d));
+    } else {
+      ++it->second.second;
+    }
+  };
   while (count < max_commands && !interp.endless_from()) {
     auto c = interp.next_decode_only();
     if (!c) {
@@ -333,13 +351,13 @@ core::DiagnosticList check_semantics(const core::SourceFile& file, const machine
       };
       const auto report = [&](std::size_t i, const std::string& what, double v) {
         const auto& lim = machine.axes[i].soft_limits;
-        out.add({core::Severity::error,
-                 interp.file_name(c->file),
-                 {c->line, 1},
-                 "NC4601",
-                 what + " " + machine.axes[i].name + "=" + core::number_text(v) +
-                     " is outside the software limits [" + core::number_text(lim.neg) + ", " +
-                     core::number_text(lim.pos) + "] (P-AXIS-00177/00178)"});
+        add_once({core::Severity::error,
+                  interp.file_name(c->file),
+                  {c->line, 1},
+                  "NC4601",
+                  what + " " + machine.axes[i].name + "=" + core::number_text(v) +
+                      " is outside the software limits [" + core::number_text(lim.neg) + ", " +
+                      core::number_text(lim.pos) + "] (P-AXIS-00177/00178)"});
       };
       AxisMask reported = 0;
       for (std::size_t i = 0; i < machine.axes.size() && i < kMaxAxes; ++i) {
@@ -365,15 +383,23 @@ core::DiagnosticList check_semantics(const core::SourceFile& file, const machine
         const auto& lim = machine.axes[i].soft_limits;
         const double v = p->point[i];
         if (((p->programmed >> i) & 1u) == 0 || (v >= lim.neg && v <= lim.pos)) continue;
-        out.add({core::Severity::error,
-                 interp.file_name(c->file),
-                 {c->line, 1},
-                 "NC4601",
-                 "spline point " + machine.axes[i].name + "=" + core::number_text(v) +
-                     " is outside the software limits [" + core::number_text(lim.neg) + ", " +
-                     core::number_text(lim.pos) + "] (P-AXIS-00177/00178)"});
+        add_once({core::Severity::error,
+                  interp.file_name(c->file),
+                  {c->line, 1},
+                  "NC4601",
+                  "spline point " + machine.axes[i].name + "=" + core::number_text(v) +
+                      " is outside the software limits [" + core::number_text(lim.neg) + ", " +
+                      core::number_text(lim.pos) + "] (P-AXIS-00177/00178)"});
       }
     }
+  }
+  for (const auto& [key, repeat] : repeats) {
+    if (repeat.second == 0) continue;
+    const core::Diagnostic& d = repeat.first;
+    out.add({core::Severity::note, d.file, d.loc, "NC4602",
+             "the " + d.id + " above repeats " + std::to_string(repeat.second) + " more time" +
+                 (repeat.second == 1 ? "" : "s") +
+                 " (the block runs again in a loop); reported once"});
   }
   for (const auto& d : interp.diagnostics().items()) {
     const bool syntax = d.id.rfind("NC1", 0) == 0 || d.id.rfind("NC2", 0) == 0;

@@ -137,7 +137,47 @@ Variable* Variables::find(const VarRef& ref) {
   return found == map->end() ? nullptr : &found->second;
 }
 
+/// Most transfer parameters of one cycle call (PROG-206859019: @P1 .. @P200).
+constexpr std::uint32_t kMaxCycleParam = 200;
+
+std::optional<double>* Variables::cycle_param(const VarRef& ref, bool create, VarError& error) {
+  const std::string name = "@P" + std::to_string(ref.number);
+  if (cycle_params_.empty() || !cycle_params_.back()) {
+    error = {"21382", "cycle parameter " + name +
+                          " outside a cycle (only a cycle called by L CYCLE [...], G80-G89 or "
+                          "G800-G839 reads and writes its @P parameters)"};
+    return nullptr;
+  }
+  if (ref.number == 0 || ref.number > kMaxCycleParam || ref.index_count != 0) {
+    error = {"20394", "invalid cycle parameter " + name + " (@P1 .. @P" +
+                          std::to_string(kMaxCycleParam) + ")"};
+    return nullptr;
+  }
+  auto& values = cycle_params_.back()->values;
+  if (values.size() < ref.number) values.resize(ref.number);
+  std::optional<double>& slot = values[ref.number - 1];
+  if (!slot) {
+    if (!create) {
+      error = {
+          "20394",
+          "cycle parameter " + name +
+              " was not programmed in the cycle call (P-CHAN-00463 create_cycle_param_on_read 0)"};
+      return nullptr;
+    }
+    slot = 0.0;
+  }
+  return &slot;
+}
+
 std::optional<double> Variables::read(const VarRef& ref, VarError& error) const {
+  if (ref.cls == VarClass::at_p) {
+    // A read of a @P the call did not program creates it (P-CHAN-00463): the store changes,
+    // as the manual's kernel's does, so the const is only outward.
+    auto* self = const_cast<Variables*>(this);
+    std::optional<double>* slot = self->cycle_param(ref, create_cycle_param_on_read_, error);
+    if (slot == nullptr) return std::nullopt;
+    return **slot;
+  }
   if (ref.cls == VarClass::p) {
     if (ref.number == 0 || ref.number > kMaxPNumber) {
       error = {"20400", "invalid P parameter number " + describe(ref)};
@@ -182,6 +222,12 @@ const std::string* Variables::read_string(const VarRef& ref) const {
 }
 
 bool Variables::write(const VarRef& ref, double value, VarError& error) {
+  if (ref.cls == VarClass::at_p) {
+    std::optional<double>* slot = cycle_param(ref, true, error);
+    if (slot == nullptr) return false;
+    *slot = value;
+    return true;
+  }
   if (ref.cls == VarClass::p) {
     if (ref.number == 0 || ref.number > kMaxPNumber) {
       error = {"20400", "invalid P parameter number " + describe(ref)};
@@ -251,6 +297,16 @@ bool Variables::write(const VarRef& ref, double value, VarError& error) {
 
 bool Variables::write_string(const VarRef& ref, std::string value, VarError& error) {
   Variable* v = find(ref);
+  if (v == nullptr && ref.index_count == 0 &&
+      (ref.cls == VarClass::v_e || ref.cls == VarClass::v_p || ref.cls == VarClass::v_s)) {
+    // A text written to an undeclared V.E. (V.P., V.S.) variable creates a STRING of the
+    // longest length, as a number written creates a REAL (docs/interp.md "Strings"): the PLC's
+    // declaration of V.E. types is not part of ncsim's model.
+    Variable created;
+    created.type = grammar::ast::VarType::string;
+    Map* map = map_for(ref.cls);
+    v = &((*map)[ref.name] = std::move(created));
+  }
   if (v == nullptr || !v->is_string()) {
     error = {"NC4014", describe(ref) + " is not a STRING variable"};
     return false;
@@ -278,6 +334,11 @@ bool Variables::declare(const VarRef& ref, Variable variable, VarError& error) {
 }
 
 bool Variables::exists(const VarRef& ref) const {
+  if (ref.cls == VarClass::at_p) {  // EXIST[@P3]: whether the cycle call programmed it
+    if (cycle_params_.empty() || !cycle_params_.back()) return false;
+    const auto& values = cycle_params_.back()->values;
+    return ref.number >= 1 && ref.number <= values.size() && values[ref.number - 1].has_value();
+  }
   if (ref.cls == VarClass::p) {
     if (ref.index_count == 0) return ref.number < p_set_.size() && p_set_[ref.number] != 0;
     return p_arrays_.count(ref.number) != 0;
@@ -371,6 +432,15 @@ std::uint64_t Variables::fingerprint(std::size_t& visited) const {
   h = mix(h, map_hash(persistent_->values, 5, visited));
   for (const Map& level : locals_)
     h = mix(h, map_hash(level, 6, visited));
+  for (const auto& level : cycle_params_) {
+    std::uint64_t c = mix(level ? 7 : 8);
+    if (level) {
+      for (const auto& v : level->values)
+        c = mix(c, v ? bits(*v) : 9);
+      visited += level->values.size();
+    }
+    h = mix(h, c);
+  }
   for (const auto& [name, text] : macros_)
     h = mix(h, mix(text_hash(name), text_hash(text)));
   visited += macros_.size();

@@ -79,14 +79,37 @@ class Variables {
   /// #VAR declaration in the current level (V.L.) or globally (V.P., V.S., V.CYC.).
   bool declare(const VarRef& ref, Variable variable, VarError& error);
   bool exists(const VarRef& ref) const;
+  /// A V.G. variable the kernel provides (V.G.NP[i].V.X, the zero-offset table), created with
+  /// its values; upper-case `name` without the class prefix and indices ("NP.V.X").
+  void provide_global(const std::string& name, Variable variable) {
+    v_g_[name] = std::move(variable);
+  }
+  /// The value of element `index` of a provided V.G. array, 0 when absent.
+  double global_element(const std::string& name, std::size_t index) const {
+    auto it = v_g_.find(name);
+    if (it == v_g_.end() || index >= it->second.values.size()) return 0.0;
+    return it->second.values[index];
+  }
   /// Elements in the first dimension (1 for a scalar); nullopt if unknown.
   std::optional<std::uint32_t> size_of(const VarRef& ref) const;
   bool remove(const VarRef& ref);
 
-  void push_level() { locals_.emplace_back(); }
+  void push_level() {
+    locals_.emplace_back();
+    cycle_params_.emplace_back();
+  }
   void pop_level() {
     if (!locals_.empty()) locals_.pop_back();
+    if (!cycle_params_.empty()) cycle_params_.pop_back();
   }
+  /// The current level is a cycle (L CYCLE, G80-G89, G800-G839) with these transfer
+  /// parameters: [k] is @P(k+1), nullopt where the call left a gap (PROG-206859019).
+  void set_cycle_params(std::vector<std::optional<double>> params) {
+    if (!cycle_params_.empty()) cycle_params_.back() = CycleParams{std::move(params)};
+  }
+  /// P-CHAN-00463 create_cycle_param_on_read: reading a @P the call did not program creates it
+  /// with 0 (true, the manual's default) or is error 20394 (false).
+  void create_cycle_param_on_read(bool on) { create_cycle_param_on_read_ = on; }
   std::size_t level_count() const { return locals_.size(); }
 
   void define_macro(std::string name, std::string text) {
@@ -125,6 +148,13 @@ class Variables {
   PersistentVariables own_persistent_;
   PersistentVariables* persistent_;
   std::vector<Map> locals_;  // one per program level; back() is the current one
+  struct CycleParams {
+    std::vector<std::optional<double>> values;  // [k]: @P(k+1)
+  };
+  // One per program level, beside locals_: set for a cycle's level, empty elsewhere.
+  std::vector<std::optional<CycleParams>> cycle_params_;
+  bool create_cycle_param_on_read_ = true;
+  std::optional<double>* cycle_param(const VarRef& ref, bool create, VarError& error);
   std::map<std::string, std::string, std::less<>> macros_;
   bool record_ve_ = false;                    // --- operator
   std::map<std::string, double> ve_written_;  // --- operator

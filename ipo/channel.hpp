@@ -116,7 +116,8 @@ struct TechOutput {
   std::uint32_t line = 0;  ///< source line
   std::uint16_t file = 0;  ///< interp::Command::file (0: the main program)
   interp::TechKind kind = interp::TechKind::m;
-  double value = 0.0;  ///< the function's number (M3 -> 3)
+  double value = 0.0;           ///< the function's number (M3 -> 3)
+  std::optional<double> extra;  ///< M/H additional value (M200=1200 -> 1200)
 };
 
 /// One interpolated axis as the channel drives it.

@@ -150,7 +150,7 @@ Channel::EventOutcome Channel::indp_wait(const interp::WaitIndp& w, const Channe
 Channel::EventOutcome Channel::indp_tech(const interp::Tech& t, const ChannelEvent& e) noexcept {
   try {
     tech_.push_back(TechOutput{static_cast<double>(ipo_.cycle().index) * ipo_.t_cycle(), e.line,
-                               e.file, t.kind, t.value});
+                               e.file, t.kind, t.value, t.extra});
   } catch (...) {
     std::abort();  // out of memory: bounded by the events of one cycle (kMaxPendingEvents)
   }

@@ -112,7 +112,9 @@ void ListValues::read(const core::SourceFile& source, core::DiagnosticList& diag
   for (core::Diagnostic& d : parsed.diagnostics)
     diagnostics.add(std::move(d));
   const ListKind other = kind_ == ListKind::axis ? ListKind::channel : ListKind::axis;
-  const char* list_name = kind_ == ListKind::axis ? "axis" : "channel";
+  const char* list_name = kind_ == ListKind::axis      ? "axis"
+                          : kind_ == ListKind::channel ? "channel"
+                                                       : "zero-offset";
   auto error = [&](core::SourceLoc loc, const char* id, std::string message) {
     diagnostics.add(make_diag(core::Severity::error, file_, loc, id, std::move(message)));
   };
@@ -188,6 +190,14 @@ void ListValues::read(const core::SourceFile& source, core::DiagnosticList& diag
         break;
       case ValueType::flag_set:
         break;  // flag names are checked where they are interpreted
+      case ValueType::file_name:
+        // TF5200 P-CHAN-00160: STRING, at most 83 characters (the list's token has no blanks)
+        if (entry.value.empty() || entry.value.size() > 83) {
+          error(entry.value_loc, "NC3003",
+                ref + " expects a file name of 1 to 83 characters, found '" + entry.value + "'");
+          ok = false;
+        }
+        break;
       case ValueType::real64: {
         const auto v = parse_real(entry.value);
         if (!v) {
@@ -216,7 +226,8 @@ void ListValues::read(const core::SourceFile& source, core::DiagnosticList& diag
       rejected_.push_back(key);
       continue;
     }
-    const bool numeric = spec->type != ValueType::word && spec->type != ValueType::flag_set;
+    const bool numeric = spec->type != ValueType::word && spec->type != ValueType::flag_set &&
+                         spec->type != ValueType::file_name;
     if (numeric && (value.number < spec->min || value.number > spec->max)) {
       error(entry.value_loc, "NC3004",
             ref + " = " + entry.value + " is outside its range " + range_text(*spec));
@@ -306,6 +317,7 @@ struct MachineIndex {
   std::string name;
   std::optional<IndexEntry> channel;
   std::vector<IndexEntry> axes;
+  std::optional<IndexEntry> zero;  ///< `zero <file>`: the zero-offset list (P-ZERO)
 };
 
 std::vector<std::string> split_words(std::string_view line) {
@@ -343,6 +355,12 @@ MachineIndex read_index(const core::SourceFile& file, const std::filesystem::pat
       } else {
         index.channel = IndexEntry{"", dir / w[1], loc};
       }
+    } else if (w[0] == "zero" && w.size() == 2) {
+      if (index.zero) {
+        error(line, "second 'zero' line; first on line " + std::to_string(index.zero->loc.line));
+      } else {
+        index.zero = IndexEntry{"", dir / w[1], loc};
+      }
     } else if (w[0] == "axis" && w.size() == 3) {
       if (index.axes.size() == kMaxChannelAxes) {
         diagnostics.add(detail::make_diag(core::Severity::error, file.name(), loc, "NC3014",
@@ -353,8 +371,10 @@ MachineIndex read_index(const core::SourceFile& file, const std::filesystem::pat
       }
       index.axes.push_back(IndexEntry{w[1], dir / w[2], loc});
     } else {
-      error(line, "expected 'name <text>', 'channel <file>' or 'axis <name> <file>', found '" +
-                      std::string(file.line_text(line)) + "'");
+      error(line,
+            "expected 'name <text>', 'channel <file>', 'axis <name> <file>' or 'zero <file>', "
+            "found '" +
+                std::string(file.line_text(line)) + "'");
     }
   }
   if (!index.channel) error(0, "no 'channel <file>' line");
@@ -467,6 +487,18 @@ ChannelParams build_channel(const ListValues& v) {
   ch.corr_v_trans_jerk = v.number("corr_v_trans_jerk") != 0.0;  // P-CHAN-00009
   ch.default_path_dev = v.internal("ncsim.default_path_dev");   // NCSIM-CHAN-620
   ch.cycle_time = v.internal("ncsim.cycle_time");               // NCSIM-CHAN-610
+  for (std::uint32_t g = 80; g <= 89; ++g) {                    // P-CHAN-00160..00169
+    const std::string key = "g" + std::to_string(g) + "_prog_file";
+    if (v.given(key)) ch.implicit_call_files[g] = v.text(key);
+  }
+  for (std::uint32_t i = 0; i < 40; ++i) {  // P-CHAN-00187
+    const std::string key = "g800_prog_file[" + std::to_string(i) + "]";
+    if (v.given(key)) ch.implicit_call_files[800 + i] = v.text(key);
+  }
+  ch.create_cycle_param_on_read = v.number("create_cycle_param_on_read") != 0.0;  // P-CHAN-00463
+  ch.vector_velocity = v.internal("vector.velocity");                             // P-CHAN-00090
+  ch.feedrate_factor = v.number("prog_start.feedrate_factor");                    // P-CHAN-00108
+  ch.default_feed = v.internal("prog_start.feedrate");                            // P-CHAN-00099
   const std::string override_type = v.text("ncsim.path_override_type");
   if (override_type == "ORIGINAL") ch.path_override_type = PathOverrideType::original;
   if (override_type == "REDUCED_ABOVE_100")
@@ -529,6 +561,20 @@ ChannelParams build_channel(const ListValues& v) {
 
 }  // namespace
 
+/// The two indices of "np_grp[3].achse[1].versch": {3, 1}.
+std::pair<std::size_t, std::size_t> two_indices(const std::string& key) {
+  std::size_t out[2] = {0, 0};
+  std::size_t k = 0;
+  for (std::size_t n = 0; n < 2; ++n) {
+    k = key.find('[', k);
+    if (k == std::string::npos) break;
+    ++k;
+    while (k < key.size() && key[k] >= '0' && key[k] <= '9')
+      out[n] = out[n] * 10 + static_cast<std::size_t>(key[k++] - '0');
+  }
+  return {out[0], out[1]};
+}
+
 LoadResult load_machine(const std::filesystem::path& dir) {
   LoadResult result;
   const std::filesystem::path index_path = dir / kMachineIndexFile;
@@ -573,6 +619,32 @@ LoadResult load_machine(const std::filesystem::path& dir) {
     }
     machine.axes.push_back(std::move(axis));
     axis_values.push_back(std::move(values));
+  }
+
+  // The zero-offset list (P-ZERO), when the index names one: G53..G59 / G159=i select its
+  // groups; achse[j] is the channel's axis j in machine.lis order.
+  if (index.zero) {
+    if (auto src = load_source(index.zero->file, index_name, index.zero->loc, result.diagnostics)) {
+      ListValues zero_values(ListKind::zero, index.zero->file.string());
+      zero_values.read(*src, result.diagnostics);
+      ZeroOffsets& z = machine.zero_offsets;
+      z.g53_available = zero_values.number("g53_verfuegbar") != 0.0;
+      z.default_index = static_cast<int>(zero_values.number("default_index"));
+      for (const auto* e : zero_values.matching("np_grp[].achse[].versch")) {
+        const auto [group, axis] = two_indices(e->key);
+        if (axis >= machine.axes.size()) {
+          result.diagnostics.add(detail::make_diag(
+              core::Severity::error, index.zero->file.string(), e->loc, "NC3016",
+              e->key + ": the channel has " + std::to_string(machine.axes.size()) +
+                  " axes (achse[0.." + std::to_string(machine.axes.size() - 1) + "])"));
+          continue;
+        }
+        const std::string inactive =
+            "np_grp[" + std::to_string(group) + "].achse[" + std::to_string(axis) + "].inaktiv";
+        if (zero_values.number(inactive) != 0.0) continue;
+        z.offsets[group][axis] = zero_values.internal(e->key);
+      }
+    }
   }
 
   detail::check_machine(machine, channel_values, axis_values, result.diagnostics);

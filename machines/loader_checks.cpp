@@ -341,6 +341,17 @@ void check_channel_refs(Machine& m, const ListValues& ch, Reporter& r) {
                 " = 3 (HSC; \"0 step, 1 trapez, 2 sin2, 3 HSC\", PROG-207190411): ncsim does "
                 "not model the HSC slope profile; write 0 (STEP), 1 (TRAPEZ) or 2 (SIN2)");
   }
+  // P-CHAN-00108: "<= 0: warning output, internal default 100 (mm/min); -1 or absent: no
+  // warning, also 100".
+  const double factor = ch.number("prog_start.feedrate_factor");
+  if (factor <= 0.0) {
+    if (factor != -1.0) {
+      r.warning(file, ch.loc("prog_start.feedrate_factor"), "NC3022",
+                param_ref("prog_start.feedrate_factor", ListKind::channel) + " = " +
+                    number_text(factor) + " must be > 0 (100: F in mm/min, 0.1: m/min); 100 taken");
+    }
+    m.channel.feedrate_factor = 100.0;
+  }
   const std::string override_type = ch.text("ncsim.path_override_type");
   if (override_type != "REDUCED" && override_type != "ORIGINAL" &&
       override_type != "REDUCED_ABOVE_100") {

@@ -14,6 +14,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -207,6 +208,34 @@ struct ChannelParams {
   /// NCSIM-CHAN-610 ncsim.cycle_time: the interpolation cycle T, whole us in the list, 1 us .. 1 s
   /// (`--cycle-us` overrides it; docs/ipo.md "The cycle time") [s]
   double cycle_time = 0.001;
+  /// P-CHAN-00160..00169 g80_prog_file .. g89_prog_file and P-CHAN-00187 g800_prog_file[i]:
+  /// the global subroutine each implicit call G80-G89 / G800-G839 runs, by G code
+  std::map<std::uint32_t, std::string> implicit_call_files;
+  /// P-CHAN-00463 create_cycle_param_on_read (the manual's default 1)
+  bool create_cycle_param_on_read = true;
+  /// P-CHAN-00090 vector.velocity: the path velocity limit `#VECTOR LIMIT ON [VEL]` without a
+  /// value activates [mm/s]
+  double vector_velocity = 2e9 / 60.0;
+  /// P-CHAN-00108 prog_start.feedrate_factor: the F word's unit, F [mm/min] = F x 100 / factor
+  /// (100: mm/min, the default; 0.1: m/min); a value <= 0 stands for 100 (warning NC3022)
+  double feedrate_factor = 100.0;
+  /// P-CHAN-00099 prog_start.feedrate: the feed before the program's first F; 0: none [mm/s]
+  double default_feed = 0.0;
+};
+
+/// The zero-offset list (TF5200 "Zero offsets", P-ZERO-0000x), converted to mm / deg.
+struct ZeroOffsets {
+  bool g53_available = false;  ///< P-ZERO-00001 g53_verfuegbar
+  int default_index = 0;       ///< P-ZERO-00002: the group active at program start (0..96)
+  /// P-ZERO-00003 np_grp[i].achse[j].versch by group i, then channel axis j [mm | deg];
+  /// groups and axes not listed are 0
+  std::map<std::size_t, std::map<std::size_t, double>> offsets;
+  double offset(std::size_t group, std::size_t axis) const {
+    auto g = offsets.find(group);
+    if (g == offsets.end()) return 0.0;
+    auto a = g->second.find(axis);
+    return a == g->second.end() ? 0.0 : a->second;
+  }
 };
 
 struct Machine {
@@ -214,6 +243,7 @@ struct Machine {
   std::filesystem::path folder;  ///< where the lists are
   ChannelParams channel;
   std::vector<AxisParams> axes;  ///< machine order: as listed in machine.lis
+  ZeroOffsets zero_offsets;      ///< the `zero` list of machine.lis; empty when none
 
   /// The axis a program addresses by `program_name` (X, Y, Z, C, S1 ...). A spindle whose list
   /// name is "S" also answers to "S1" and vice versa (ncsim decision: the first spindle).

@@ -21,6 +21,7 @@ constexpr double kCenti = 1.0e-2;  // 0.01/s -> 1/s
 
 constexpr ListKind A = ListKind::axis;
 constexpr ListKind C = ListKind::channel;
+constexpr ListKind Z = ListKind::zero;
 constexpr Need kOpt = Need::optional;
 constexpr Need kMust = Need::mandatory;
 constexpr Need kDerived = Need::derived;
@@ -121,6 +122,26 @@ constexpr std::array kTable = {
   ParamSpec{"NCSIM-CHAN-620", "ncsim.default_path_dev", C, ValueType::real64, 1e-9, kRealMax, "mm", 1, "mm", "1.0", kOpt, -1, -1, "isg-language §5.3 (PROG-475164939: PATH_DEV 1 mm); no ISG key: G261's ball radius where #CONTOUR MODE gives no PATH_DEV"},
   ParamSpec{"NCSIM-CHAN-640", "conveyor_sync.ncsim_dynamics_reserve", C, ValueType::uns16, 0, 500, "0.1 %", kPerMille, "fraction", "0", kOpt, -1, -1, "004 l.454 (reduce the dynamic axis limits; no ISG key)"},
   ParamSpec{"NCSIM-CHAN-630", "ncsim.path_override_type", C, ValueType::word, 0, 0, "REDUCED | ORIGINAL | REDUCED_ABOVE_100", 1, "", "REDUCED", kOpt, -1, -1, "000 §7.5.6 (override types; no ISG key)"},
+  ParamSpec{"P-CHAN-00160", "g80_prog_file", C, ValueType::file_name, 0, 0, "", 1, "", "", kOpt, -1, -1, "TF5200 P-CHAN-00160 (G80's implicit subroutine, PROG-206278923)"},
+  ParamSpec{"P-CHAN-00161", "g81_prog_file", C, ValueType::file_name, 0, 0, "", 1, "", "", kOpt, -1, -1, "TF5200 P-CHAN-00161 (G81's implicit subroutine, PROG-206278923)"},
+  ParamSpec{"P-CHAN-00162", "g82_prog_file", C, ValueType::file_name, 0, 0, "", 1, "", "", kOpt, -1, -1, "TF5200 P-CHAN-00162 (G82's implicit subroutine, PROG-206278923)"},
+  ParamSpec{"P-CHAN-00163", "g83_prog_file", C, ValueType::file_name, 0, 0, "", 1, "", "", kOpt, -1, -1, "TF5200 P-CHAN-00163 (G83's implicit subroutine, PROG-206278923)"},
+  ParamSpec{"P-CHAN-00164", "g84_prog_file", C, ValueType::file_name, 0, 0, "", 1, "", "", kOpt, -1, -1, "TF5200 P-CHAN-00164 (G84's implicit subroutine, PROG-206278923)"},
+  ParamSpec{"P-CHAN-00165", "g85_prog_file", C, ValueType::file_name, 0, 0, "", 1, "", "", kOpt, -1, -1, "TF5200 P-CHAN-00165 (G85's implicit subroutine, PROG-206278923)"},
+  ParamSpec{"P-CHAN-00166", "g86_prog_file", C, ValueType::file_name, 0, 0, "", 1, "", "", kOpt, -1, -1, "TF5200 P-CHAN-00166 (G86's implicit subroutine, PROG-206278923)"},
+  ParamSpec{"P-CHAN-00167", "g87_prog_file", C, ValueType::file_name, 0, 0, "", 1, "", "", kOpt, -1, -1, "TF5200 P-CHAN-00167 (G87's implicit subroutine, PROG-206278923)"},
+  ParamSpec{"P-CHAN-00168", "g88_prog_file", C, ValueType::file_name, 0, 0, "", 1, "", "", kOpt, -1, -1, "TF5200 P-CHAN-00168 (G88's implicit subroutine, PROG-206278923)"},
+  ParamSpec{"P-CHAN-00169", "g89_prog_file", C, ValueType::file_name, 0, 0, "", 1, "", "", kOpt, -1, -1, "TF5200 P-CHAN-00169 (G89's implicit subroutine, PROG-206278923)"},
+  ParamSpec{"P-CHAN-00187", "g800_prog_file[]", C, ValueType::file_name, 0, 0, "", 1, "", "", kOpt, 39, -1, "TF5200 P-CHAN-00187 (G800-G839's implicit subroutines, [i] for G8(00+i))"},
+  ParamSpec{"P-CHAN-00108", "prog_start.feedrate_factor", C, ValueType::real64, -1, kRealMax, "", 1, "", "100", kOpt, -1, -1, "TF5200 P-CHAN-00108 (100: F in mm/min, 0.1: m/min; F [mm/min] = F x 100 / factor; <= 0: 100)"},
+  ParamSpec{"P-CHAN-00099", "prog_start.feedrate", C, ValueType::real64, 0, kRealMax, "mm/min", 1.0 / 60.0, "mm/s", "0", kOpt, -1, -1, "TF5200 P-CHAN-00099 (the feed of G01/G02/G03 before any F; 0: none)"},
+  ParamSpec{"P-CHAN-00090", "vector.velocity", C, ValueType::real64, 1e-9, kRealMax, "mm/min", 1.0 / 60.0, "mm/s", "2000000000", kOpt, -1, -1, "TF5200 P-CHAN-00090 (#VECTOR LIMIT ON [VEL] without a value)"},
+  ParamSpec{"P-CHAN-00463", "create_cycle_param_on_read", C, ValueType::boolean, 0, 1, "", 1, "", "1", kOpt, -1, -1, "TF5200 P-CHAN-00463 (1: a @P read that the call did not program creates it; 0: error 20394)"},
+  // ---- zero-offset list (TF5200 "Zero offsets", P-ZERO; np_grp[i] is G53..G59 / G159=i) ------
+  ParamSpec{"P-ZERO-00001", "g53_verfuegbar", Z, ValueType::boolean, 0, 1, "", 1, "", "0", kOpt, -1, -1, "TF5200 P-ZERO-00001 (0: G53 deselects every offset; 1: np_grp[0] is an offset too)"},
+  ParamSpec{"P-ZERO-00002", "default_index", Z, ValueType::uns16, 0, 96, "", 1, "", "0", kOpt, -1, -1, "TF5200 P-ZERO-00002 (the group active at program start)"},
+  ParamSpec{"P-ZERO-00003", "np_grp[].achse[].versch", Z, ValueType::sgn32, kSgn32Min, kSgn32Max, "0.1 um | 0.0001 deg", kTenthMicron, "mm | deg", "0", kOpt, 96, 31, "TF5200 P-ZERO-00003 (achse[j]: the channel axis j, machine.lis order)"},
+  ParamSpec{"P-ZERO-00004", "np_grp[].achse[].inaktiv", Z, ValueType::boolean, 0, 1, "", 1, "", "0", kOpt, 96, 31, "TF5200 zero-offset list example (1: the axis's offset of this group is not applied)"},
   ParamSpec{"NCSIM-CHAN-004", "log_number_tracking_axis", C, ValueType::uns16, 1, kUns16Max, "", 1, "", "", kOpt, -1, -1, "004 §4.10.1 (listing, id cut off)"},
 };
 
@@ -186,6 +207,8 @@ std::string_view type_name(ValueType type) {
       return "STRING (flags)";
     case ValueType::axis_mode:
       return "UNS32 (bits)";
+    case ValueType::file_name:
+      return "STRING (file name)";
   }
   return "?";
 }

@@ -16,7 +16,7 @@
 namespace ncsim::machines {
 
 /// Which list a parameter belongs to.
-enum class ListKind { channel, axis };
+enum class ListKind { channel, axis, zero };  ///< zero: the zero-offset list (P-ZERO)
 
 /// The data types of the ISG parameter manuals, plus the string forms ncsim needs.
 enum class ValueType {
@@ -25,9 +25,10 @@ enum class ValueType {
   uns32,
   sgn32,
   real64,
-  word,      ///< one identifier (`X`, `S1`, `PLC_FIRST_EVENT`, `ZYX`)
-  flag_set,  ///< identifiers joined by `|` (`FCT_IPO_DEFAULT | FCT_SYNC`)
-  axis_mode  ///< UNS32 bit set of P-AXIS-00015; unknown bits are errors
+  word,       ///< one identifier (`X`, `S1`, `PLC_FIRST_EVENT`, `ZYX`)
+  flag_set,   ///< identifiers joined by `|` (`FCT_IPO_DEFAULT | FCT_SYNC`)
+  axis_mode,  ///< UNS32 bit set of P-AXIS-00015; unknown bits are errors
+  file_name   ///< a program file name, at most 83 characters, no blanks (P-CHAN-00160)
 };
 
 /// Whether a key must be present.

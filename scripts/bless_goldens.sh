@@ -8,3 +8,7 @@ cd "$(dirname "$0")/.."
 ncsim=${1:-build/release/cli/ncsim}
 [[ -x $ncsim ]] || { echo "bless_goldens.sh: no ncsim at $ncsim (build it first)" >&2; exit 2; }
 "$ncsim" golden bless --all --programs programs
+# The real-program library (programs/real/<name>/, issue 33) when it has programs.
+if compgen -G "programs/real/*/*.nc" >/dev/null; then
+  "$ncsim" golden bless --all --programs programs/real
+fi

@@ -29,3 +29,6 @@ add_test(NAME cli_start_slope_test
 add_test(NAME cli_channel_keys_test
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/channel_keys_test.sh $<TARGET_FILE:ncsim>
                  ${CMAKE_CURRENT_SOURCE_DIR}/cli)
+# Issue 33: cycle calls, --cycles, --missing-cycles, M values and zero offsets end to end.
+add_test(NAME cli_cycles_test
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/cycles_test.sh $<TARGET_FILE:ncsim>)

@@ -16,6 +16,24 @@ foreach(nc IN LISTS ncsim_golden_programs)
   endif()
 endforeach()
 
+# programs/real/<name>/: programs written in the styles of shipped emitters (issue 33,
+# programs/README.md "Real programs"), one golden test each too.
+file(GLOB ncsim_real_programs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/programs/real/*/*.nc)
+foreach(nc IN LISTS ncsim_real_programs)
+  get_filename_component(folder ${nc} DIRECTORY)
+  get_filename_component(name ${folder} NAME)
+  get_filename_component(stem ${nc} NAME_WE)
+  if(name STREQUAL stem)
+    add_test(NAME golden.real.${name} COMMAND ncsim golden check ${folder})
+    set_tests_properties(golden.real.${name} PROPERTIES LABELS golden TIMEOUT 300)
+  endif()
+endforeach()
+if(ncsim_real_programs)
+  add_test(NAME programs_check_real
+           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/golden/check_programs.sh $<TARGET_FILE:ncsim>
+                   ${PROJECT_SOURCE_DIR}/programs/real)
+endif()
+
 add_test(NAME programs_check
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/golden/check_programs.sh $<TARGET_FILE:ncsim>
                  ${PROJECT_SOURCE_DIR}/programs)

@@ -26,11 +26,21 @@ namespace {
 // delta_picker_belt: trafo-conveyor, laser_portal_simple and laser_portal_workspace: workspace,
 // static_saw_encoder: the static synchro_lag listing, portal_3x_override: override above 100 %,
 // portal_3x_slow: issue 12's 200-move benchmark limits).
-constexpr std::array<std::string_view, 12> kMachines = {
-    "laser_portal",       "delta_picker",        "static_saw",
-    "portal_3x",          "laser_queue",         "laser_portal_encoder",
-    "delta_picker_belt",  "laser_portal_simple", "laser_portal_workspace",
-    "static_saw_encoder", "portal_3x_override",  "portal_3x_slow"};
+constexpr std::array<std::string_view, 15> kMachines = {"laser_portal",
+                                                        "delta_picker",
+                                                        "static_saw",
+                                                        "portal_3x",
+                                                        "laser_queue",
+                                                        "laser_portal_encoder",
+                                                        "delta_picker_belt",
+                                                        "laser_portal_simple",
+                                                        "laser_portal_workspace",
+                                                        "static_saw_encoder",
+                                                        "portal_3x_override",
+                                                        "portal_3x_slow",
+                                                        "dispenser_3x",
+                                                        "mill_3x",
+                                                        "laser_flatbed"};
 
 // The seed's listings (TF5264, seed 004) and the reference's section 10 example: these must
 // never silently disappear from programs/.
@@ -47,7 +57,13 @@ fs::path programs_dir() {
 std::vector<fs::path> program_folders() {
   std::vector<fs::path> folders;
   for (const auto& entry : fs::directory_iterator(programs_dir())) {
-    if (entry.is_directory()) folders.push_back(entry.path());
+    if (!entry.is_directory()) continue;
+    if (entry.path().filename() == "real") {  // programs/real/<name>/: the real-program library
+      for (const auto& sub : fs::directory_iterator(entry.path()))
+        if (sub.is_directory()) folders.push_back(sub.path());
+      continue;
+    }
+    folders.push_back(entry.path());
   }
   std::sort(folders.begin(), folders.end());
   return folders;

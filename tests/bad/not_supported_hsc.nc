@@ -1,3 +1,0 @@
-; expect: 2:1 NC1002 not supported: #HSC
-#HSC ON [BSPLINE]
-M30

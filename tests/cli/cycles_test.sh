@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# tests/cli/cycles_test.sh NCSIM: issue 33 end to end: implicit cycle calls with their files found
+# by --cycles / the machine's cycles/ / the program folder, --missing-cycles skip, M values with
+# an additional value in the run CSV, zero offsets from a machine's zero list.
+set -uo pipefail
+ncsim=$1
+source "$(dirname "$0")/expect.sh"
+root=$(cd "$(dirname "$0")/../.." && pwd)
+
+# A program with the dispenser's G800 and G805, and a G806 the machine does not configure.
+cat >"$work/job.nc" <<'NC'
+%job
+G54
+G00 X0 Y0 Z1
+M200=1200
+G800 [0.1, 1.0]
+G805 [1, 2,, 4]
+G00 X5
+M30
+NC
+sed 's/^G805 .*/G806 [1, 2,, 4]/' "$work/job.nc" >"$work/other.nc"
+expect "an unconfigured G806 is 20131 at its line, naming the parameter" 1 '' \
+  'other.nc:6:1: error: unknown G function G806.*g800_prog_file\[6\] \(P-CHAN-00187\).*\[20131\]' -- \
+  check --machine "$root/machines/dispenser_3x" "$work/other.nc"
+cat >"$work/purge.nc" <<'NC'
+%purge
+G01 Z[@P4] F300
+M17
+NC
+# a channel list that names purge.nc for G805 only in a copy of the machine
+cp -r "$root/machines/dispenser_3x" "$work/machine"
+sed -i 's/^g800_prog_file\[5\].*/g800_prog_file[5] purge_here.nc/' "$work/machine/channel.lis"
+expect "a configured cycle file that is nowhere is NC4301 naming where ncsim looked" 1 '' \
+  'purge_here.nc is not in .*cycles.*\[NC4301\]' -- check --machine "$work/machine" "$work/job.nc"
+mkdir -p "$work/builder"
+cp "$work/purge.nc" "$work/builder/purge_here.nc"
+expect "--cycles DIR finds it" 0 'job.nc: ok' '' -- \
+  check --machine "$work/machine" --cycles "$work/builder" "$work/job.nc"
+expect "--missing-cycles skip checks the rest with warning NC4307" 0 'other.nc: ok, 1 warning' \
+  'G806 skipped \(--missing-cycles skip\).*\[NC4307\]' -- \
+  check --machine "$root/machines/dispenser_3x" --missing-cycles skip "$work/other.nc"
+expect "time with --missing-cycles skip runs and names the skipped call" 0 'other.nc: [0-9.]+ s' \
+  'warning: G806 skipped.*\[NC4307\]' -- \
+  time --machine "$root/machines/dispenser_3x" --missing-cycles skip "$work/other.nc"
+expect "--missing-cycles takes error or skip only" 2 '' 'missing-cycles' -- \
+  check --missing-cycles maybe "$work/job.nc"
+expect "run with the copy and --cycles completes" 0 '' '' -- \
+  run --machine "$work/machine" --cycles "$work/builder" -o "$work/job.csv" "$work/job.nc"
+checks=$((checks + 1))
+last=$(grep -v '^#' "$work/job.csv" | tail -n 1)
+if grep -q '^# tech .* M200=1200$' "$work/job.csv" && [[ $(cut -d, -f3 <<<"$last") == 105 ]]; then
+  echo "ok   the CSV has '# tech ... M200=1200' and ends at G54's X 100 + 5"
+else
+  failures=$((failures + 1))
+  echo "FAIL the CSV's tech line or end position"
+  grep '^# tech' "$work/job.csv" | head -3
+  echo "$last"
+fi
+summary cycles_test
