@@ -1,0 +1,34 @@
+%O3003
+(Written in the style of a CAM post that writes a drilling pattern as plain moves: a bolt)
+(circle of 8 holes, R 30 mm, and 4 corner holes in vice 3 - G56 - spot drill then drill,)
+(tool changes with T/M06, spindle S/M03, coolant M08/M09, each hole G00 / G01 / G00)
+N10 G17 G90 G71 G94
+N20 G56
+N30 T11 M06
+N40 S3000 M03 M08
+N50 G00 X40 Y30 Z10
+N60 P5 = 0
+N70 $WHILE P5 < 8
+N80   G00 X[40 + 30 * COS[P5 * 45]] Y[30 + 30 * SIN[P5 * 45]] Z2
+N90   G01 Z-1.5 F120
+N100  G00 Z2
+N110  P5 = P5 + 1
+N120 $ENDWHILE
+N130 G00 Z25
+N140 T12 M06
+N150 S2200 M03
+N160 G00 X5 Y5 Z2
+N170 G01 Z-12 F90
+N180 G00 Z2
+N190 G00 X75
+N200 G01 Z-12 F90
+N210 G00 Z2
+N220 G00 Y55
+N230 G01 Z-12 F90
+N240 G00 Z2
+N250 G00 X5
+N260 G01 Z-12 F90
+N270 G00 Z25
+N280 M09 M05
+N290 G53 G00 Z180
+N300 M30

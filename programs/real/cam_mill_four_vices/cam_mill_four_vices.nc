@@ -1,0 +1,30 @@
+(Written in the style of a CAM post with one part program per fixture: the same slot and)
+(drilled holes in four vices, G54..G57 chosen through G159=n in a loop, the part a local)
+(subroutine)
+%L PART
+N1000 G00 X5 Y10 Z5
+N1010 G01 Z-3 F250
+N1020 G01 X45 F900
+N1030 G00 Z5
+N1040 G00 X15 Y25
+N1050 G01 Z-8 F150
+N1060 G00 Z5
+N1070 G00 X35
+N1080 G01 Z-8 F150
+N1090 G00 Z5
+N1100 M17
+%O2002
+N10 G17 G90 G71 G94
+N20 T3 M06
+N30 S6000 M03 M08
+N40 P10 = 1
+N50 $WHILE P10 <= 4
+N60   G159=P10
+N70   G00 Z30
+N80   LL PART
+N90   G00 Z30
+N100  P10 = P10 + 1
+N110 $ENDWHILE
+N120 M09 M05
+N130 G53 G00 Z180
+N140 M30
