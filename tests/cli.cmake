@@ -29,3 +29,9 @@ add_test(NAME cli_start_slope_test
 add_test(NAME cli_channel_keys_test
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/channel_keys_test.sh $<TARGET_FILE:ncsim>
                  ${CMAKE_CURRENT_SOURCE_DIR}/cli)
+# --- issue 34: inputs that are no regular files, outputs that are not replaced, signals and
+# closed pipes (tests/cli/robust_files_test.sh)
+add_test(NAME cli_robust_files_test
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/robust_files_test.sh $<TARGET_FILE:ncsim>
+                 ${CMAKE_CURRENT_SOURCE_DIR}/cli)
+set_tests_properties(cli_robust_files_test PROPERTIES TIMEOUT 600)
