@@ -2,9 +2,11 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <limits>
 #include <ostream>
 #include <stdexcept>
 #include <system_error>
@@ -230,6 +232,16 @@ int run_trace(const TraceOptions& options, std::ostream& out, std::ostream& err)
   return report.finish(out, status == 0 ? kExitOk : kExitProgramErrors);
 }
 
+int finish_stdout(int status, std::ostream& err) {
+  std::cout.flush();
+  const bool failed = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout) != 0;
+  if (!failed || status == kExitUsage) return failed ? kExitUsage : status;
+  err << "ncsim: error: cannot write to standard output (a closed pipe or a full disk) "
+         "[NC9151]\n";
+  err.flush();
+  return kExitUsage;
+}
+
 std::optional<std::filesystem::path> scenario_file(const ProgramOptions& options) {
   if (options.scenario) return *options.scenario;
   const fs::path named =
@@ -246,7 +258,7 @@ std::variant<std::optional<scenario::Scenario>, int> load_scenario_for(
   const std::optional<fs::path> path = scenario_file(options);
   if (!path) return std::optional<scenario::Scenario>{};
   std::error_code ec;
-  if (!fs::is_regular_file(*path, ec)) {
+  if (!fs::exists(*path, ec)) {
     err << "ncsim: error: no such scenario file: '" << path->string() << "'\n";
     return kExitUsage;
   }
@@ -258,7 +270,8 @@ std::variant<std::optional<scenario::Scenario>, int> load_scenario_for(
     context.axes->push_back(axis.name);
   std::optional<core::SourceFile> file;
   try {
-    file.emplace(core::SourceFile::load(*path));
+    // No pipe or device: refused before anything is read (docs/scenario.md).
+    file.emplace(core::SourceFile::load_regular(*path, std::numeric_limits<std::size_t>::max()));
   } catch (const std::exception& e) {
     err << "ncsim: error: cannot read the scenario '" << path->string() << "': " << e.what()
         << '\n';

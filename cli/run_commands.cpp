@@ -21,6 +21,7 @@
 #include "cli/workpiece_report.hpp"  // --- line
 #include "conveyor/world.hpp"
 #include "core/diagnostic.hpp"
+#include "core/output_file.hpp"
 #include "core/source_file.hpp"
 #include "grammar/check.hpp"
 #include "interp/interpreter.hpp"
@@ -672,28 +673,34 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   const Loaded& in = std::get<Loaded>(loaded);
 
   // Output: stdout through `out`'s buffer is avoided: the CSV goes through a FILE*. "-" writes
-  // to stdout; an existing non-regular target (a device, a pipe) is written directly; a file is
-  // written to `<file>.tmp` and renamed when complete.
+  // to stdout; a file goes through core::OutputFile (a unique temporary file renamed when
+  // complete; a pipe or device written in place; docs/design.md "Output files"). Every output
+  // is opened before the run: an unwritable one is reported at once.
   const bool to_stdout = options.output == "-";
-  const fs::path target = options.output;
-  std::error_code ec;
-  // --- report: `ncsim report` (csv false) opens no file
-  const bool direct =
-      !options.csv || to_stdout || (fs::exists(target, ec) && !fs::is_regular_file(target, ec));
-  const fs::path temp = direct ? target : fs::path(target.string() + ".tmp");
-  std::FILE* f = nullptr;
-  if (!options.csv) {
-    // --- report: no CSV
-  } else if (to_stdout) {
-    out.flush();
-    f = stdout;
-  } else {
-    f = std::fopen(temp.c_str(), "wb");
-    if (f == nullptr) {
-      err << "ncsim: error: cannot write '" << temp.string() << "': " << std::strerror(errno)
-          << '\n';
+  std::optional<core::OutputFile> csv_file;
+  std::optional<core::OutputFile> page_file;  // --- report:
+  if (options.csv && !to_stdout) {
+    auto opened = core::OutputFile::open(options.output);
+    if (const auto* why = std::get_if<std::string>(&opened)) {
+      err << "ncsim: error: " << *why << " [NC9150]\n";
       return kExitUsage;
     }
+    csv_file.emplace(std::move(std::get<core::OutputFile>(opened)));
+  }
+  if (!options.report.empty()) {
+    auto opened = core::OutputFile::open(options.report);
+    if (const auto* why = std::get_if<std::string>(&opened)) {
+      err << "ncsim: error: the report: " << *why << " [NC8100]\n";
+      return kExitUsage;
+    }
+    page_file.emplace(std::move(std::get<core::OutputFile>(opened)));
+  }
+  std::FILE* f = nullptr;
+  if (to_stdout && options.csv) {
+    out.flush();
+    f = stdout;
+  } else if (csv_file) {
+    f = csv_file->stream();
   }
 
   interp::Interpreter interp(in.file, in.machine, in.interp);
@@ -791,20 +798,17 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   // (not after a write error, which ends the loop early).
   if (s != ipo::Status::running) csv.text("# stop: " + stop_reason(failed, channel) + "\n");
   csv.flush();
-  if (f != nullptr && !csv.failed() && std::fflush(f) != 0) csv.set_failed(errno);
-  if (f != nullptr && !to_stdout && std::fclose(f) != 0 && !csv.failed()) csv.set_failed(errno);
+  if (to_stdout && !csv.failed() && std::fflush(f) != 0) csv.set_failed(errno);
   if (csv.failed()) {
-    err << "ncsim: error: cannot write '" << (to_stdout ? std::string("stdout") : temp.string())
-        << "': " << std::strerror(csv.error_number()) << '\n';
-    if (!direct) fs::remove(temp, ec);
-    return kExitUsage;
+    err << "ncsim: error: cannot write '"
+        << (to_stdout ? std::string("stdout") : csv_file->written().string())
+        << "': " << std::strerror(csv.error_number()) << " [NC9151]\n";
+    return kExitUsage;  // the temporary file goes with csv_file
   }
-  if (!direct) {
-    fs::rename(temp, target, ec);
-    if (ec) {
-      err << "ncsim: error: cannot rename '" << temp.string() << "' to '" << target.string()
-          << "': " << ec.message() << '\n';
-      fs::remove(temp, ec);
+  if (csv_file) {
+    std::string why;
+    if (!csv_file->commit(why)) {
+      err << "ncsim: error: " << why << " [NC9151]\n";
       return kExitUsage;
     }
   }
@@ -815,7 +819,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
         {in.file.name(), in.machine.name,
          stop ? std::string(scenario::to_string(*stop)) : std::string(), error_text});
     std::string why;
-    if (!report::write_html_file(data, options.report, why)) {
+    if (!report::write_html_file(data, *page_file, why)) {
       err << "ncsim: error: " << why << '\n';
       return kExitUsage;
     }

@@ -436,7 +436,9 @@ LoadResult parse_scenario(const core::SourceFile& file, const Context& context) 
 
 LoadResult load_scenario(const std::filesystem::path& path, const Context& context) {
   try {
-    const core::SourceFile file = core::SourceFile::load(path);
+    // No pipe or device (an open that waits, a read that never ends); the size is NC7010's.
+    const core::SourceFile file =
+        core::SourceFile::load_regular(path, std::numeric_limits<std::size_t>::max());
     return parse_scenario(file, context);
   } catch (const std::exception& e) {
     LoadResult result;

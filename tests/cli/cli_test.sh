@@ -285,7 +285,7 @@ expect "a run-time error at its line (FEED_CONT on a static unit), status 1" 1 '
 expect "run stops at a run-time error, status 1" 1 '' '#SYNC IN FEED_CONT.*\[NC9060\]' -- \
   run --machine "$root/machines/static_saw" -o "$work/sync.csv" "$fixtures/sync_in.nc"
 checks=$((checks + 1))
-if [[ -f $work/sync.csv && ! -e $work/sync.csv.tmp ]] &&
+if [[ -f $work/sync.csv ]] && no_temp "$work/sync.csv" &&
   [[ $(tail -2 "$work/sync.csv" | head -1) == "# error: "*"#SYNC IN FEED_CONT"*"NC9060"* ]] &&
   [[ $(tail -1 "$work/sync.csv") == "# stop: error" ]]; then
   echo "ok   run keeps the trajectory up to the error, with a closing comment"
@@ -359,7 +359,7 @@ if [[ $status -eq 1 && -f $work/soft.csv ]] &&
   [[ $(tail -2 "$work/soft.csv" | head -1) == "# error: "*"soft_limit.nc:4:1: error: run-time error at t=8.018 s"*"[NC5502]" ]] &&
   [[ $(tail -1 "$work/soft.csv") == "# stop: error" ]] &&
   [[ $(tail -3 "$work/soft.csv" | head -1 | cut -d, -f1) == "8.017" ]] &&
-  [[ ! -e $work/soft.csv.tmp ]]; then
+  no_temp "$work/soft.csv"; then
   echo "ok   run stopped by a run-time error: rows up to the stop, closing # error comment"
 else
   failures=$((failures + 1)); echo "FAIL run stopped by a run-time error"
