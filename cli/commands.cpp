@@ -265,6 +265,20 @@ std::variant<std::optional<scenario::Scenario>, int> load_scenario_for(
   scenario::Context context;
   context.program = &program;
   context.conveyor_wired = true;  // run / time play the conveyor world (docs/conveyor.md)
+  context.conveyor_axis = machine.conveyor_axis() != nullptr;  // NC7019
+  // NC6102, NC6105 at their values: check refuses the overrides time / run cannot play.
+  context.path_override_max =
+      machine.channel.path_override_type == machines::PathOverrideType::reduced_above_100
+          ? scenario::kOverrideMax
+          : 1.0;
+  context.axis_override_max = 1.0;  // 002 2.2: an INDP axis takes 0 .. 100 %
+  // NC7020: an axis override of a path axis. The path axes as ipo::interpolated_axes has them
+  // (check and trace do not link the interpolator): not a spindle, an encoder or the conveyor.
+  context.path_axes.emplace();
+  for (const machines::AxisParams& a : machine.axes) {
+    if (a.kind != machines::AxisKind::spindle && !a.encoder_only && &a != machine.conveyor_axis())
+      context.path_axes->push_back(a.name);
+  }
   context.axes.emplace();
   for (const machines::AxisParams& axis : machine.axes)
     context.axes->push_back(axis.name);

@@ -77,33 +77,6 @@ struct Playing {
   }
 };
 
-// --- indp: an INDP axis override above 100 % (002_* 2.2: 0 .. 100 %): the message, "" if none.
-std::string unplayable(const scenario::Scenario& s) {
-  for (const scenario::Event& e : s.events)
-    for (const scenario::Action& a : e.actions)
-      if (const auto* o = std::get_if<scenario::AxisOverride>(&a); o && o->fraction > 1.0)
-        return s.file + ":" + std::to_string(e.loc.line) + ":" + std::to_string(e.loc.column) +
-               ": error: axis_override " + o->axis + " = " + human(o->fraction * 100.0) +
-               " % is above 100 %, the largest an INDP axis accepts (002 2.2) [NC6105]\n";
-  return "";
-}
-
-// A path override above what the machine's override type accepts (NCSIM-CHAN-630): the
-// message for the first one, "" if none.
-std::string override_beyond_type(const scenario::Scenario& s, const machines::Machine& m) {
-  const bool above_100 =
-      m.channel.path_override_type == machines::PathOverrideType::reduced_above_100;
-  for (const scenario::Event& e : s.events)
-    for (const scenario::Action& a : e.actions)
-      if (const auto* o = std::get_if<scenario::PathOverride>(&a);
-          o && o->fraction > 1.0 && !above_100)
-        return s.file + ":" + std::to_string(e.loc.line) + ":" + std::to_string(e.loc.column) +
-               ": error: override = " + human(o->fraction * 100.0) +
-               " % is above 100 %, the largest of the machine's path override type (NCSIM-CHAN-630 "
-               "ncsim.path_override_type; only REDUCED_ABOVE_100 goes beyond) [NC6102]\n";
-  return "";
-}
-
 // Program and machine, syntax-checked; an exit status on failure (printed on `err`).
 std::variant<Loaded, int> load(const ProgramOptions& options,
                                const std::optional<std::uint64_t>& cycle_us, std::ostream& err) {
@@ -128,20 +101,13 @@ std::variant<Loaded, int> load(const ProgramOptions& options,
   }
   core::SourceFile file = core::SourceFile::load(options.program);
   // Scenario (docs/scenario.md): its V.E. initial values answer the barriers; the channel
-  // plays its V.E. writes, [stop], path override and feed hold; an axis override is refused.
+  // plays its V.E. writes, [stop], path and axis overrides and feed hold (overrides beyond the
+  // machine's are refused by the loader: NC6102, NC6105).
   auto scenario = load_scenario_for(options, file, *loaded.machine, err);
   if (const int* status = std::get_if<int>(&scenario)) return *status;
   interp::Options interp_options;
   auto& s = std::get<std::optional<scenario::Scenario>>(scenario);
   if (s) {
-    if (const std::string what = unplayable(*s); !what.empty()) {  // --- indp
-      err << what;
-      return kExitUsage;
-    }
-    if (const std::string beyond = override_beyond_type(*s, *loaded.machine); !beyond.empty()) {
-      err << beyond;
-      return kExitUsage;
-    }
     for (const scenario::VeInitial& v : s->ve)
       interp_options.external.emplace(v.name, v.value);
   }

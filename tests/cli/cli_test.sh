@@ -53,12 +53,16 @@ expect "time plays a scenario with an override event" 0 'external\.nc: [0-9.e-]+
   time "$fixtures/external.nc" --scenario "$fixtures/scenario_events.toml"
 printf '[[event]]\nat = 0.1\naxis_override = { X = 150 }\n' >"$work/axis_override.toml"
 expect "run refuses an INDP axis override above 100 % with its position, status 2" 2 '' \
-  'axis_override\.toml:1:[0-9]+: error: axis_override X = 150 % is above 100 %.*\[NC6105\]' -- \
+  'axis_override\.toml:3:19: error: event\[1\]\.axis_override\.X = 150 % is above 100 %.*\[NC6105\]' -- \
   run "$fixtures/external.nc" --scenario "$work/axis_override.toml"
 printf '[[event]]\nat = 0.1\noverride = 150\n' >"$work/override_150.toml"
-expect "an override above 100 % under type REDUCED is refused with its position, status 2" 2 '' \
-  'override_150\.toml:1:1: error: override = 150 % is above 100 %.*NCSIM-CHAN-630.*\[NC6102\]' -- \
+expect "an override above 100 % under type REDUCED is refused at its value, status 2" 2 '' \
+  'override_150\.toml:3:12: error: event\[1\]\.override = 150 % is above 100 %.*NCSIM-CHAN-630.*\[NC6102\]' -- \
   time "$fixtures/external.nc" --scenario "$work/override_150.toml"
+holds "NC6102 shows the scenario's line and a caret under the value (issue 34 item 24)" \
+  bash -c "grep -qx 'override = 150' '$work/err' && grep -qx '           ^' '$work/err'"
+expect "check refuses the override time would refuse (NC6102), status 2" 2 '' 'override_150\.toml:3:12: .*\[NC6102\]' -- \
+  check "$fixtures/external.nc" --scenario "$work/override_150.toml"
 printf '[ve]\nSEL = 0\n[[event]]\nat = 0.2\nfeed_hold = true\nduration = 0.5\n' >"$work/hold.toml"
 expect "a 0.5 s feed hold makes the run (1.507 s) 0.5 s longer" 0 've_branch\.nc: 2\.007 s' '' -- \
   time "$fixtures/ve_branch.nc" --scenario "$work/hold.toml"
