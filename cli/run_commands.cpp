@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 #include <variant>
 
@@ -119,6 +120,21 @@ std::variant<Loaded, int> load(const ProgramOptions& options,
   // (docs/ipo.md "The cycle time"); both whole microseconds, converted the same way.
   const double t =
       cycle_us ? static_cast<double>(*cycle_us) * 1e-6 : loaded.machine->channel.cycle_time;
+  // The position controller needs Kv x T <= 1 (axes/control): a cycle too long for an axis's
+  // Kv is a usage error naming where the cycle came from, the axis and the longest cycle it
+  // takes, before the channel is built (issue 34: it failed there with Kv's message alone).
+  for (const std::uint8_t i : ipo::interpolated_axes(*loaded.machine)) {
+    const machines::AxisParams& a = loaded.machine->axes[i];
+    if (a.control.kv * t <= 1.0) continue;
+    err << "ncsim: error: "
+        << (cycle_us ? "--cycle-us " + std::to_string(*cycle_us)
+                     : std::string("the channel list's ncsim.cycle_time (NCSIM-CHAN-610) ") +
+                           human(t * 1e6) + " us")
+        << ": axis " << a.name << "'s Kv P-AXIS-00099 getriebe[0].kv = " << human(a.control.kv)
+        << " 1/s takes a cycle of at most " << human(std::floor(1e6 / a.control.kv))
+        << " us (Kv x cycle <= 1: the position controller's stability)\n";
+    return kExitUsage;
+  }
   // The conveyor world (belt, encoder, probe, filters) of a machine with a conveyor axis.
   std::unique_ptr<conveyor::Port> port;
   if (loaded.machine->conveyor_axis() != nullptr) {
@@ -141,7 +157,15 @@ std::string diagnostic_text(const Loaded& in, const interp::Interpreter& interp,
   const core::Diagnostic* d = src.error();
   if (d == nullptr) d = interp.error();
   if (d == nullptr) return "ncsim: error: " + fallback + "\n";
-  return d->file == in.file.name() ? core::format(*d, in.file) : core::format(*d);
+  std::string text = d->file == in.file.name() ? core::format(*d, in.file) : core::format(*d);
+  // A subroutine file's syntax errors (NC4306 stands at the call): each with its own position,
+  // after the error that ended the run, as `check` lists them (issue 34).
+  for (const core::Diagnostic& e : interp.diagnostics().items()) {
+    const bool same = e.id == d->id && e.file == d->file && e.loc == d->loc;
+    if (e.severity == core::Severity::error && e.file != in.file.name() && !same)
+      text += core::format(e);
+  }
+  return text;
 }
 
 std::string first_line(const std::string& s) {
@@ -297,6 +321,26 @@ std::string warning_text(const interp::Interpreter& interp, const ipo::Channel& 
   if (!w) return {};
   return positioned(interp, *w, core::Severity::warning,
                     "at t=" + seconds(w->t) + " s: " + w->message);
+}
+
+// A run that ended at the program's end with axes still moving (the end does not wait for
+// the belt's share after #SYNC OUT, say): a warning naming them, "" when all stand (issue 34).
+// Not after an error or a scenario's [stop], which end a run wherever it is.
+std::string still_moving_text(const Loaded& in, const ipo::Channel& ch) {
+  constexpr double kStanding = 1e-6;  // [mm/s | deg/s] below this an axis stands
+  const std::vector<std::string> names = axis_names(in.machine);
+  const std::vector<std::string> units = axis_units(in.machine);
+  std::string moving;
+  for (std::size_t i = 0; i < ch.axis_count() && i < names.size(); ++i) {
+    const double v = ch.setpoints()[i].v;
+    if (std::abs(v) <= kStanding) continue;
+    moving += (moving.empty() ? "" : ", ") + names[i] + " at " + human(v) + ' ' + units[i] + "/s";
+  }
+  if (moving.empty()) return {};
+  return "ncsim: warning: the run ended at t=" + seconds(ch.cycle().t) +
+         " s with axes still moving: " + moving +
+         " (the program end did not wait for them to stand, e.g. M30 right after #SYNC OUT) "
+         "[NC6106]\n";
 }
 
 void json_string(std::ostream& os, const std::string& s) {
@@ -459,6 +503,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
     return kExitUsage;
   }
   err << warning_text(interp, channel);  // --- trafo
+  if (!failed && !channel.scenario_stop()) err << still_moving_text(in, channel);
   if (failed) {
     err << error_text;
     return kExitProgramErrors;
@@ -792,6 +837,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
     (options.csv ? err : out) << "report: " << options.report << '\n';
   }
   err << warning_text(interp, channel);  // --- trafo
+  if (!failed && !channel.scenario_stop()) err << still_moving_text(in, channel);
   if (!error_text.empty()) {
     err << error_text;
     return kExitProgramErrors;
@@ -815,6 +861,25 @@ int run_report(const ReportOptions& options, std::ostream& out, std::ostream& er
     return kExitUsage;
   }
   return run_run(run, out, err);
+}
+
+std::vector<std::uint32_t> machine_data_lines(const ProgramOptions& program, std::string_view id,
+                                              std::size_t max_commands) {
+  std::ostringstream quiet;  // the runs report the load's diagnostics
+  auto loaded = load(program, std::nullopt, quiet);
+  std::vector<std::uint32_t> lines;
+  if (std::holds_alternative<int>(loaded)) return lines;
+  const Loaded& in = std::get<Loaded>(loaded);
+  interp::Interpreter interp(in.file, in.machine, in.interp);
+  for (std::size_t n = 0; n < max_commands; ++n) {
+    const auto c = interp.next_decode_only();
+    if (!c) break;
+    const auto* md = std::get_if<interp::MachineData>(&c->body);
+    if (md == nullptr || c->file != 0) continue;
+    for (const interp::MachineSetting& setting : md->settings)
+      if (setting.id == id && (lines.empty() || lines.back() != c->line)) lines.push_back(c->line);
+  }
+  return lines;
 }
 
 // --- line: one headless run (cli/run_commands.hpp LineRun)

@@ -311,6 +311,19 @@ expect "time --audit says the jerk is not limited under an acceleration-limited 
   time --audit "$root/programs/rotary_table/rotary_table.nc"
 expect "time --audit of conveyor tracking checks the axes on their setpoints (belt offset, catch-up): ok" 0 \
   '^audit: ok$' '' -- time --audit "$root/programs/conveyor_squares/conveyor_squares.nc"
+# A program that ends right after #SYNC OUT (conveyor_squares' first sheet, then M30): X still
+# moves with the belt at the end; the run says so (NC6106; issue 34 item 18: it was silent).
+mkdir -p "$work/moving"
+cp "$root/programs/conveyor_squares/machine" "$root/programs/conveyor_squares/scenario.toml" "$work/moving/"
+sed -n '1,15p' "$root/programs/conveyor_squares/conveyor_squares.nc" | grep -v '^\$FOR' >"$work/moving/moving.nc"
+echo M30 >>"$work/moving/moving.nc"
+for cmd in time run; do
+  expect "$cmd: a run that ends with an axis still moving warns (NC6106), naming it" 0 '' \
+    '^ncsim: warning: the run ended at t=[0-9.]+ s with axes still moving: X at 100 mm/s .*\[NC6106\]$' -- \
+    $cmd "$work/moving/moving.nc"
+done
+expect "a run that ends with the axes standing does not warn" 0 '' '' -- time "$fixtures/long_line.nc"
+holds "no NC6106 for a run that ends standing" bash -c "! grep -q NC6106 '$work/err'"
 expect "time --audit: full feed in +X and -X on a fast belt keeps X within v_max (PCS1 velocity split)" 0 \
   '^audit: ok$' '' -- \
   time --audit --machine "$root/machines/laser_portal" "$fixtures/conveyor_split/conveyor_split.nc"

@@ -185,4 +185,17 @@ closed_pipe "trace into a closed pipe: exit 2, a message" trace "$long_line"
 closed_pipe "check into a closed pipe: exit 2, a message" check "$long_line"
 closed_pipe "golden check into a closed pipe: exit 2, a message" golden check "$root/programs/isg_reference_example"
 
+# ---- item 20: a syntax error in an L file is positioned by time and run as by check --------
+mkdir "$work/lsub"
+printf '%%lmain\nG01 X1 F600\nL sub_bad.nc\nM30\n' >"$work/lsub/lmain.nc"
+cp "$root/interp/testdata/sub_bad.nc" "$work/lsub/"
+"$ncsim" check "$work/lsub/lmain.nc" >/dev/null 2>"$work/check_err"
+syntax=$(grep -E 'sub_bad\.nc:[0-9]+:[0-9]+: error: .*\[NC[0-9]+\]$' "$work/check_err" | head -1)
+holds "check positions the L file's syntax error (file:line:col)" test -n "$syntax"
+for cmd in time run; do
+  expect "$cmd stops at the call of an L file with a syntax error (NC4306), status 1" 1 '' 'NC4306' -- \
+    $cmd "$work/lsub/lmain.nc"
+  holds "$cmd positions the L file's syntax error as check does" grep -qF -- "$syntax" "$work/err"
+done
+
 summary robust_files_test

@@ -63,9 +63,14 @@ abc|'abc' $not_digits
 1.5|'1\.5' $not_digits
 |needs a value
 LIST
+# The documented maximum is a cycle the program may not take: the position controller needs
+# Kv x cycle <= 1, so it is refused naming the option, the axis and its longest cycle (issue 34).
+expect "--cycle-us 1000000 on portal_3x: refused naming the option, the axis's Kv and its limit" 2 '' \
+  "^ncsim: error: --cycle-us 1000000: axis X's Kv P-AXIS-00099 getriebe\[0\]\.kv = [0-9.]+ 1/s takes a cycle of at most [0-9]+ us" -- \
+  time --cycle-us 1000000 "$fixtures/long_line.nc"
 expect "sweep --cycle-us 0 is refused the same way" 2 '' \
   '^--cycle-us: 0 us is below the smallest cycle, 1 us$' -- sweep --cycle-us 0 "$fixtures/long_line.nc"
-holds "no bad --cycle-us run wrote a file" test ! -e "$work/never.csv" -a ! -e "$work/never.csv.tmp"
+holds "no bad --cycle-us run wrote a file" no_file "$work/never.csv"
 
 # ---- NCSIM-CHAN-610 ncsim.cycle_time: the channel list's cycle, --cycle-us over it ---------
 # cycle_machine NAME VALUE: portal_3x in $work/NAME with `ncsim.cycle_time VALUE`.
