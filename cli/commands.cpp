@@ -2,9 +2,11 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <limits>
 #include <ostream>
 #include <stdexcept>
 #include <system_error>
@@ -236,6 +238,16 @@ int run_trace(const TraceOptions& options, std::ostream& out, std::ostream& err)
   return report.finish(out, status == 0 ? kExitOk : kExitProgramErrors);
 }
 
+int finish_stdout(int status, std::ostream& err) {
+  std::cout.flush();
+  const bool failed = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout) != 0;
+  if (!failed || status == kExitUsage) return failed ? kExitUsage : status;
+  err << "ncsim: error: cannot write to standard output (a closed pipe or a full disk) "
+         "[NC9151]\n";
+  err.flush();
+  return kExitUsage;
+}
+
 std::optional<std::filesystem::path> scenario_file(const ProgramOptions& options) {
   if (options.scenario) return *options.scenario;
   const fs::path named =
@@ -252,19 +264,34 @@ std::variant<std::optional<scenario::Scenario>, int> load_scenario_for(
   const std::optional<fs::path> path = scenario_file(options);
   if (!path) return std::optional<scenario::Scenario>{};
   std::error_code ec;
-  if (!fs::is_regular_file(*path, ec)) {
+  if (!fs::exists(*path, ec)) {
     err << "ncsim: error: no such scenario file: '" << path->string() << "'\n";
     return kExitUsage;
   }
   scenario::Context context;
   context.program = &program;
   context.conveyor_wired = true;  // run / time play the conveyor world (docs/conveyor.md)
+  context.conveyor_axis = machine.conveyor_axis() != nullptr;  // NC7019
+  // NC6102, NC6105 at their values: check refuses the overrides time / run cannot play.
+  context.path_override_max =
+      machine.channel.path_override_type == machines::PathOverrideType::reduced_above_100
+          ? scenario::kOverrideMax
+          : 1.0;
+  context.axis_override_max = 1.0;  // 002 2.2: an INDP axis takes 0 .. 100 %
+  // NC7020: an axis override of a path axis. The path axes as ipo::interpolated_axes has them
+  // (check and trace do not link the interpolator): not a spindle, an encoder or the conveyor.
+  context.path_axes.emplace();
+  for (const machines::AxisParams& a : machine.axes) {
+    if (a.kind != machines::AxisKind::spindle && !a.encoder_only && &a != machine.conveyor_axis())
+      context.path_axes->push_back(a.name);
+  }
   context.axes.emplace();
   for (const machines::AxisParams& axis : machine.axes)
     context.axes->push_back(axis.name);
   std::optional<core::SourceFile> file;
   try {
-    file.emplace(core::SourceFile::load(*path));
+    // No pipe or device: refused before anything is read (docs/scenario.md).
+    file.emplace(core::SourceFile::load_regular(*path, std::numeric_limits<std::size_t>::max()));
   } catch (const std::exception& e) {
     err << "ncsim: error: cannot read the scenario '" << path->string() << "': " << e.what()
         << '\n';

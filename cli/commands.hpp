@@ -66,6 +66,11 @@ std::variant<std::optional<scenario::Scenario>, int> load_scenario_for(
 
 /// `ncsim check`: syntax, structure and semantics; every diagnostic to `err`, a one-line
 /// verdict to `out`.
+/// The end of every command: standard output flushed; when it could not be written (a closed
+/// pipe, a full disk) and the command has not reported that itself, a message on `err` and
+/// kExitUsage instead of `status` (README: an output that cannot be written exits 2).
+int finish_stdout(int status, std::ostream& err);
+
 int run_check(const CheckOptions& options, std::ostream& out, std::ostream& err);
 
 /// `ncsim trace`: the interpreter's command stream to `out`, one command per line.

@@ -13,6 +13,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/run_commands.hpp"
+#include "core/output_file.hpp"
 #include "golden/golden.hpp"
 
 namespace ncsim::cli {
@@ -110,7 +111,7 @@ std::optional<std::vector<Target>> targets_of(const GoldenOptions& options, bool
   return out;
 }
 
-/// A temporary file removed when the guard goes.
+/// A temporary file removed when the guard goes, and on SIGINT / SIGTERM / SIGHUP.
 class TempFile {
  public:
   explicit TempFile(const std::string& tag) {
@@ -120,18 +121,19 @@ class TempFile {
     if (safe.size() > 60) safe = safe.substr(safe.size() - 60);
     path_ = fs::temp_directory_path() /
             ("ncsim-golden-" + std::to_string(::getpid()) + "-" + safe + ".csv");
+    cleanup_ = std::make_unique<core::SignalCleanup>(path_);
   }
   TempFile(const TempFile&) = delete;
   TempFile& operator=(const TempFile&) = delete;
   ~TempFile() {
     std::error_code ec;
     fs::remove(path_, ec);
-    fs::remove(fs::path(path_.string() + ".tmp"), ec);
   }
   const fs::path& path() const { return path_; }
 
  private:
   fs::path path_;
+  std::unique_ptr<core::SignalCleanup> cleanup_;
 };
 
 /// One run of a program, as `ncsim run --audit -o <temp>` makes it.
@@ -238,6 +240,13 @@ Verdict check_one(const Target& t, std::ostream& out, std::ostream& err) {
 }
 
 Verdict bless_one(const Target& t, std::ostream& out, std::ostream& err) {
+  // The golden is opened before the run: an unwritable folder is reported at once.
+  auto opened = core::OutputFile::open(t.golden);
+  if (const auto* why = std::get_if<std::string>(&opened)) {
+    err << t.label << ": error: " << *why << "; nothing blessed [NC8009]\n";
+    return Verdict::failed;
+  }
+  core::OutputFile golden_file = std::move(std::get<core::OutputFile>(opened));
   TempFile csv(t.label);
   const Run run = run_program(t, csv.path());
   if (run.outcome.status == kExitUsage) {
@@ -275,22 +284,10 @@ Verdict bless_one(const Target& t, std::ostream& out, std::ostream& err) {
     err << t.label << ": error: " << e.what() << "; nothing blessed [NC8007]\n";
     return Verdict::failed;
   }
-  const fs::path temp = t.golden.string() + ".tmp";
-  {
-    std::ofstream f(temp, std::ios::binary | std::ios::trunc);
-    f << text.str();
-    f.flush();
-    if (!f) {
-      err << "ncsim: error: cannot write '" << temp.string() << "' [NC8007]\n";
-      fs::remove(temp, ec);
-      return Verdict::failed;
-    }
-  }
-  fs::rename(temp, t.golden, ec);
-  if (ec) {
-    err << "ncsim: error: cannot rename '" << temp.string() << "': " << ec.message()
-        << " [NC8007]\n";
-    fs::remove(temp, ec);
+  golden_file.write(text.str());  // a write error is commit()'s reason
+  std::string why;
+  if (!golden_file.commit(why)) {
+    err << t.label << ": error: " << why << "; nothing blessed [NC8009]\n";
     return Verdict::failed;
   }
   const char* change = before.empty() ? "new" : (before == text.str() ? "unchanged" : "changed");

@@ -23,6 +23,7 @@
 #include "cli/run_commands.hpp"
 #include "cli/sweep_command.hpp"  // --- line
 #include "cli/tune_delay.hpp"     // --- line
+#include "core/output_file.hpp"
 
 namespace {
 
@@ -98,14 +99,18 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : kExitUsage;
   }
 
+  // A closed pipe is a write error (exit 2 with a message), not a silent death by SIGPIPE.
+  ncsim::core::ignore_sigpipe();
   try {
-    if (const auto status = run_commands.dispatch(std::cout, std::cerr)) return *status;
-    if (const auto status = golden_commands.dispatch(std::cout, std::cerr)) return *status;
-    if (const auto status = sweep_command.dispatch(std::cout, std::cerr)) return *status;  // line
-    if (const auto status = tune_delay_command.dispatch(std::cout, std::cerr))  // --- line
-      return *status;
-    if (trace_cmd->parsed()) return ncsim::cli::run_trace(trace, std::cout, std::cerr);
-    return ncsim::cli::run_check(check, std::cout, std::cerr);
+    const auto dispatch = [&]() -> int {
+      if (const auto status = run_commands.dispatch(std::cout, std::cerr)) return *status;
+      if (const auto status = golden_commands.dispatch(std::cout, std::cerr)) return *status;
+      if (const auto status = sweep_command.dispatch(std::cout, std::cerr)) return *status;
+      if (const auto status = tune_delay_command.dispatch(std::cout, std::cerr)) return *status;
+      if (trace_cmd->parsed()) return ncsim::cli::run_trace(trace, std::cout, std::cerr);
+      return ncsim::cli::run_check(check, std::cout, std::cerr);
+    };
+    return ncsim::cli::finish_stdout(dispatch(), std::cerr);
   } catch (const std::bad_alloc&) {
     std::cerr << "ncsim: error: out of memory (the program or its diagnostics need more memory "
                  "than is available)\n";

@@ -11,6 +11,7 @@
 #include <memory>
 #include <optional>
 #include <ostream>
+#include <sstream>
 #include <stdexcept>
 #include <variant>
 
@@ -21,6 +22,7 @@
 #include "cli/workpiece_report.hpp"  // --- line
 #include "conveyor/world.hpp"
 #include "core/diagnostic.hpp"
+#include "core/output_file.hpp"
 #include "core/source_file.hpp"
 #include "grammar/check.hpp"
 #include "interp/interpreter.hpp"
@@ -76,33 +78,6 @@ struct Playing {
   }
 };
 
-// --- indp: an INDP axis override above 100 % (002_* 2.2: 0 .. 100 %): the message, "" if none.
-std::string unplayable(const scenario::Scenario& s) {
-  for (const scenario::Event& e : s.events)
-    for (const scenario::Action& a : e.actions)
-      if (const auto* o = std::get_if<scenario::AxisOverride>(&a); o && o->fraction > 1.0)
-        return s.file + ":" + std::to_string(e.loc.line) + ":" + std::to_string(e.loc.column) +
-               ": error: axis_override " + o->axis + " = " + human(o->fraction * 100.0) +
-               " % is above 100 %, the largest an INDP axis accepts (002 2.2) [NC6105]\n";
-  return "";
-}
-
-// A path override above what the machine's override type accepts (NCSIM-CHAN-630): the
-// message for the first one, "" if none.
-std::string override_beyond_type(const scenario::Scenario& s, const machines::Machine& m) {
-  const bool above_100 =
-      m.channel.path_override_type == machines::PathOverrideType::reduced_above_100;
-  for (const scenario::Event& e : s.events)
-    for (const scenario::Action& a : e.actions)
-      if (const auto* o = std::get_if<scenario::PathOverride>(&a);
-          o && o->fraction > 1.0 && !above_100)
-        return s.file + ":" + std::to_string(e.loc.line) + ":" + std::to_string(e.loc.column) +
-               ": error: override = " + human(o->fraction * 100.0) +
-               " % is above 100 %, the largest of the machine's path override type (NCSIM-CHAN-630 "
-               "ncsim.path_override_type; only REDUCED_ABOVE_100 goes beyond) [NC6102]\n";
-  return "";
-}
-
 // Program and machine, syntax-checked; an exit status on failure (printed on `err`).
 std::variant<Loaded, int> load(const ProgramOptions& options,
                                const std::optional<std::uint64_t>& cycle_us, std::ostream& err) {
@@ -127,21 +102,14 @@ std::variant<Loaded, int> load(const ProgramOptions& options,
   }
   core::SourceFile file = core::SourceFile::load(options.program);
   // Scenario (docs/scenario.md): its V.E. initial values answer the barriers; the channel
-  // plays its V.E. writes, [stop], path override and feed hold; an axis override is refused.
+  // plays its V.E. writes, [stop], path and axis overrides and feed hold (overrides beyond the
+  // machine's are refused by the loader: NC6102, NC6105).
   auto scenario = load_scenario_for(options, file, *loaded.machine, err);
   if (const int* status = std::get_if<int>(&scenario)) return *status;
   interp::Options interp_options;
   apply_cycle_options(options, interp_options);
   auto& s = std::get<std::optional<scenario::Scenario>>(scenario);
   if (s) {
-    if (const std::string what = unplayable(*s); !what.empty()) {  // --- indp
-      err << what;
-      return kExitUsage;
-    }
-    if (const std::string beyond = override_beyond_type(*s, *loaded.machine); !beyond.empty()) {
-      err << beyond;
-      return kExitUsage;
-    }
     for (const scenario::VeInitial& v : s->ve)
       interp_options.external.emplace(v.name, v.value);
   }
@@ -153,6 +121,21 @@ std::variant<Loaded, int> load(const ProgramOptions& options,
   // (docs/ipo.md "The cycle time"); both whole microseconds, converted the same way.
   const double t =
       cycle_us ? static_cast<double>(*cycle_us) * 1e-6 : loaded.machine->channel.cycle_time;
+  // The position controller needs Kv x T <= 1 (axes/control): a cycle too long for an axis's
+  // Kv is a usage error naming where the cycle came from, the axis and the longest cycle it
+  // takes, before the channel is built (issue 34: it failed there with Kv's message alone).
+  for (const std::uint8_t i : ipo::interpolated_axes(*loaded.machine)) {
+    const machines::AxisParams& a = loaded.machine->axes[i];
+    if (a.control.kv * t <= 1.0) continue;
+    err << "ncsim: error: "
+        << (cycle_us ? "--cycle-us " + std::to_string(*cycle_us)
+                     : std::string("the channel list's ncsim.cycle_time (NCSIM-CHAN-610) ") +
+                           human(t * 1e6) + " us")
+        << ": axis " << a.name << "'s Kv P-AXIS-00099 getriebe[0].kv = " << human(a.control.kv)
+        << " 1/s takes a cycle of at most " << human(std::floor(1e6 / a.control.kv))
+        << " us (Kv x cycle <= 1: the position controller's stability)\n";
+    return kExitUsage;
+  }
   // The conveyor world (belt, encoder, probe, filters) of a machine with a conveyor axis.
   std::unique_ptr<conveyor::Port> port;
   if (loaded.machine->conveyor_axis() != nullptr) {
@@ -175,7 +158,15 @@ std::string diagnostic_text(const Loaded& in, const interp::Interpreter& interp,
   const core::Diagnostic* d = src.error();
   if (d == nullptr) d = interp.error();
   if (d == nullptr) return "ncsim: error: " + fallback + "\n";
-  return d->file == in.file.name() ? core::format(*d, in.file) : core::format(*d);
+  std::string text = d->file == in.file.name() ? core::format(*d, in.file) : core::format(*d);
+  // A subroutine file's syntax errors (NC4306 stands at the call): each with its own position,
+  // after the error that ended the run, as `check` lists them (issue 34).
+  for (const core::Diagnostic& e : interp.diagnostics().items()) {
+    const bool same = e.id == d->id && e.file == d->file && e.loc == d->loc;
+    if (e.severity == core::Severity::error && e.file != in.file.name() && !same)
+      text += core::format(e);
+  }
+  return text;
 }
 
 std::string first_line(const std::string& s) {
@@ -342,6 +333,26 @@ std::string interp_warnings(const interp::Interpreter& interp) {
   return out;
 }
 
+// A run that ended at the program's end with axes still moving (the end does not wait for
+// the belt's share after #SYNC OUT, say): a warning naming them, "" when all stand (issue 34).
+// Not after an error or a scenario's [stop], which end a run wherever it is.
+std::string still_moving_text(const Loaded& in, const ipo::Channel& ch) {
+  constexpr double kStanding = 1e-6;  // [mm/s | deg/s] below this an axis stands
+  const std::vector<std::string> names = axis_names(in.machine);
+  const std::vector<std::string> units = axis_units(in.machine);
+  std::string moving;
+  for (std::size_t i = 0; i < ch.axis_count() && i < names.size(); ++i) {
+    const double v = ch.setpoints()[i].v;
+    if (std::abs(v) <= kStanding) continue;
+    moving += (moving.empty() ? "" : ", ") + names[i] + " at " + human(v) + ' ' + units[i] + "/s";
+  }
+  if (moving.empty()) return {};
+  return "ncsim: warning: the run ended at t=" + seconds(ch.cycle().t) +
+         " s with axes still moving: " + moving +
+         " (the program end did not wait for them to stand, e.g. M30 right after #SYNC OUT) "
+         "[NC6106]\n";
+}
+
 void json_string(std::ostream& os, const std::string& s) {
   os << '"';
   for (const char c : s) {
@@ -502,6 +513,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
     return kExitUsage;
   }
   err << interp_warnings(interp) << warning_text(interp, channel);  // --- trafo
+  if (!failed && !channel.scenario_stop()) err << still_moving_text(in, channel);
   if (failed) {
     err << error_text;
     return kExitProgramErrors;
@@ -684,28 +696,34 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   const Loaded& in = std::get<Loaded>(loaded);
 
   // Output: stdout through `out`'s buffer is avoided: the CSV goes through a FILE*. "-" writes
-  // to stdout; an existing non-regular target (a device, a pipe) is written directly; a file is
-  // written to `<file>.tmp` and renamed when complete.
+  // to stdout; a file goes through core::OutputFile (a unique temporary file renamed when
+  // complete; a pipe or device written in place; docs/design.md "Output files"). Every output
+  // is opened before the run: an unwritable one is reported at once.
   const bool to_stdout = options.output == "-";
-  const fs::path target = options.output;
-  std::error_code ec;
-  // --- report: `ncsim report` (csv false) opens no file
-  const bool direct =
-      !options.csv || to_stdout || (fs::exists(target, ec) && !fs::is_regular_file(target, ec));
-  const fs::path temp = direct ? target : fs::path(target.string() + ".tmp");
-  std::FILE* f = nullptr;
-  if (!options.csv) {
-    // --- report: no CSV
-  } else if (to_stdout) {
-    out.flush();
-    f = stdout;
-  } else {
-    f = std::fopen(temp.c_str(), "wb");
-    if (f == nullptr) {
-      err << "ncsim: error: cannot write '" << temp.string() << "': " << std::strerror(errno)
-          << '\n';
+  std::optional<core::OutputFile> csv_file;
+  std::optional<core::OutputFile> page_file;  // --- report:
+  if (options.csv && !to_stdout) {
+    auto opened = core::OutputFile::open(options.output);
+    if (const auto* why = std::get_if<std::string>(&opened)) {
+      err << "ncsim: error: " << *why << " [NC9150]\n";
       return kExitUsage;
     }
+    csv_file.emplace(std::move(std::get<core::OutputFile>(opened)));
+  }
+  if (!options.report.empty()) {
+    auto opened = core::OutputFile::open(options.report);
+    if (const auto* why = std::get_if<std::string>(&opened)) {
+      err << "ncsim: error: the report: " << *why << " [NC8100]\n";
+      return kExitUsage;
+    }
+    page_file.emplace(std::move(std::get<core::OutputFile>(opened)));
+  }
+  std::FILE* f = nullptr;
+  if (to_stdout && options.csv) {
+    out.flush();
+    f = stdout;
+  } else if (csv_file) {
+    f = csv_file->stream();
   }
 
   interp::Interpreter interp(in.file, in.machine, in.interp);
@@ -803,20 +821,17 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   // (not after a write error, which ends the loop early).
   if (s != ipo::Status::running) csv.text("# stop: " + stop_reason(failed, channel) + "\n");
   csv.flush();
-  if (f != nullptr && !csv.failed() && std::fflush(f) != 0) csv.set_failed(errno);
-  if (f != nullptr && !to_stdout && std::fclose(f) != 0 && !csv.failed()) csv.set_failed(errno);
+  if (to_stdout && !csv.failed() && std::fflush(f) != 0) csv.set_failed(errno);
   if (csv.failed()) {
-    err << "ncsim: error: cannot write '" << (to_stdout ? std::string("stdout") : temp.string())
-        << "': " << std::strerror(csv.error_number()) << '\n';
-    if (!direct) fs::remove(temp, ec);
-    return kExitUsage;
+    err << "ncsim: error: cannot write '"
+        << (to_stdout ? std::string("stdout") : csv_file->written().string())
+        << "': " << std::strerror(csv.error_number()) << " [NC9151]\n";
+    return kExitUsage;  // the temporary file goes with csv_file
   }
-  if (!direct) {
-    fs::rename(temp, target, ec);
-    if (ec) {
-      err << "ncsim: error: cannot rename '" << temp.string() << "' to '" << target.string()
-          << "': " << ec.message() << '\n';
-      fs::remove(temp, ec);
+  if (csv_file) {
+    std::string why;
+    if (!csv_file->commit(why)) {
+      err << "ncsim: error: " << why << " [NC9151]\n";
       return kExitUsage;
     }
   }
@@ -827,13 +842,14 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
         {in.file.name(), in.machine.name,
          stop ? std::string(scenario::to_string(*stop)) : std::string(), error_text});
     std::string why;
-    if (!report::write_html_file(data, options.report, why)) {
+    if (!report::write_html_file(data, *page_file, why)) {
       err << "ncsim: error: " << why << '\n';
       return kExitUsage;
     }
     (options.csv ? err : out) << "report: " << options.report << '\n';
   }
   err << interp_warnings(interp) << warning_text(interp, channel);  // --- trafo
+  if (!failed && !channel.scenario_stop()) err << still_moving_text(in, channel);
   if (!error_text.empty()) {
     err << error_text;
     return kExitProgramErrors;
@@ -857,6 +873,25 @@ int run_report(const ReportOptions& options, std::ostream& out, std::ostream& er
     return kExitUsage;
   }
   return run_run(run, out, err);
+}
+
+std::vector<std::uint32_t> machine_data_lines(const ProgramOptions& program, std::string_view id,
+                                              std::size_t max_commands) {
+  std::ostringstream quiet;  // the runs report the load's diagnostics
+  auto loaded = load(program, std::nullopt, quiet);
+  std::vector<std::uint32_t> lines;
+  if (std::holds_alternative<int>(loaded)) return lines;
+  const Loaded& in = std::get<Loaded>(loaded);
+  interp::Interpreter interp(in.file, in.machine, in.interp);
+  for (std::size_t n = 0; n < max_commands; ++n) {
+    const auto c = interp.next_decode_only();
+    if (!c) break;
+    const auto* md = std::get_if<interp::MachineData>(&c->body);
+    if (md == nullptr || c->file != 0) continue;
+    for (const interp::MachineSetting& setting : md->settings)
+      if (setting.id == id && (lines.empty() || lines.back() != c->line)) lines.push_back(c->line);
+  }
+  return lines;
 }
 
 // --- line: one headless run (cli/run_commands.hpp LineRun)

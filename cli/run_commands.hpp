@@ -100,6 +100,11 @@ struct LineOutcome {
 LineOutcome run_line(const ProgramOptions& program, std::optional<std::uint64_t> cycle_us,
                      const LineRun& run, std::ostream& err);
 
+/// The lines (main program) whose `#MACHINE DATA` sets parameter `id` ("P-AXIS-00626"), from a
+/// decode-only pass of at most `max_commands` commands; empty when the program does not load.
+std::vector<std::uint32_t> machine_data_lines(const ProgramOptions& program, std::string_view id,
+                                              std::size_t max_commands = 100000);
+
 /// The `time` and `run` subcommands of `app`: the hook main.cpp calls.
 /// The program, --machine and --scenario options of the subcommands that run a program on the
 /// channel (time, run, report, sweep, tune-delay).

@@ -177,6 +177,17 @@ int run_tune_delay(const TuneDelayOptions& o, std::ostream& out, std::ostream& e
   }
   out << "tune-delay: proposed P-AXIS-00626 conv_sync.delay_time = " << human(proposed * 1e6)
       << " us (the mean synchro_lag / the mean belt velocity, rounded to 1 us)\n";
+  // A program that sets the delay time itself overrides the list's value from that line on:
+  // both runs then track with the program's value there, and the check cannot show the
+  // proposal's effect (issue 34 item 21).
+  if (const auto lines = machine_data_lines(o.program, "P-AXIS-00626"); !lines.empty()) {
+    out << "tune-delay: note: the program sets P-AXIS-00626 itself (#MACHINE DATA at line";
+    for (std::size_t i = 0; i < lines.size(); ++i)
+      out << (i == 0 ? " " : ", ") << lines[i];
+    out << "): from there on both runs use the program's value, so the statistics mix it with "
+           "the list's and the check shows the proposal only before that line; tune with a "
+           "program that leaves P-AXIS-00626 to the list\n";
+  }
   print(check, "check with", o.contour, out);
   out << "tune-delay: for reference: the scenario's dead time " << human(first.dead_time * 1e6)
       << " us + the position filter's delay " << human(first.filter_delay * 1e6)

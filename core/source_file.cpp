@@ -27,7 +27,23 @@ std::uint32_t saturate(std::size_t v) {
                                                        : static_cast<std::uint32_t>(v);
 }
 
+std::string size_text(std::size_t bytes) {
+  if (bytes % (std::size_t{1} << 20) == 0) return std::to_string(bytes >> 20) + " MiB";
+  return std::to_string(bytes) + " bytes";
+}
+
 }  // namespace
+
+std::string file_kind_text(unsigned st_mode) {
+  const auto mode = static_cast<mode_t>(st_mode);
+  if (S_ISREG(mode)) return "a regular file";
+  if (S_ISFIFO(mode)) return "a pipe";
+  if (S_ISCHR(mode) || S_ISBLK(mode)) return "a device";
+  if (S_ISSOCK(mode)) return "a socket";
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISLNK(mode)) return "a symbolic link";
+  return "not a file";
+}
 
 SourceFile::SourceFile(std::string name, std::string text)
     : name_(std::move(name)), owned_(std::move(text)), size_(owned_.size()) {
@@ -87,6 +103,39 @@ SourceFile SourceFile::load(const std::filesystem::path& path) {
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (in.bad()) throw std::runtime_error("cannot read '" + path.string() + "'");
   return SourceFile(path.string(), std::move(text));
+}
+
+SourceFile SourceFile::load_regular(const std::filesystem::path& path, std::size_t max_bytes) {
+  // O_NONBLOCK: opening a pipe does not wait for its writer; the type is then checked on the
+  // open descriptor (no window between a check and the open).
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+  if (fd < 0) throw std::runtime_error(std::strerror(errno));
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) {
+    const int e = errno;
+    ::close(fd);
+    throw std::runtime_error(std::strerror(e));
+  }
+  if (!S_ISREG(st.st_mode)) {
+    ::close(fd);
+    throw std::runtime_error("not a regular file (" + file_kind_text(st.st_mode) + ")");
+  }
+  const auto size = static_cast<std::size_t>(st.st_size);
+  if (size > max_bytes) {
+    ::close(fd);
+    throw std::runtime_error(std::to_string(size) + " bytes, above the limit of " +
+                             size_text(max_bytes));
+  }
+  if (size == 0) return SourceFile(path.string(), std::string());
+  void* p = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
+  const int e = errno;
+  ::close(fd);
+  if (p == MAP_FAILED) throw std::runtime_error(std::string("cannot map: ") + std::strerror(e));
+  ::madvise(p, size, MADV_SEQUENTIAL);
+  SourceFile f(path.string(), std::string());
+  f.map_ = static_cast<const char*>(p);
+  f.size_ = size;
+  return f;
 }
 
 void SourceFile::release_before(std::size_t offset) const {

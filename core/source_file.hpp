@@ -19,6 +19,10 @@
 
 namespace ncsim::core {
 
+/// What a file of mode `st_mode` is, for messages: "a pipe", "a device", "a socket",
+/// "a directory", "a symbolic link", "a regular file", or "not a file".
+std::string file_kind_text(unsigned st_mode);
+
 /// A 1-based position in a source file; line 0 means "no position" (whole file, command line).
 struct SourceLoc {
   std::uint32_t line = 0;    ///< 1-based line number
@@ -41,6 +45,12 @@ class SourceFile {
   /// Maps a file from disk (reads it when it cannot be mapped: pipes, devices); throws
   /// std::runtime_error naming the path when it cannot.
   static SourceFile load(const std::filesystem::path& path);
+  /// Like load(), for inputs that must be files (machine lists, scenarios): what is not a
+  /// regular file (a pipe, a device, a socket, a directory) is refused before anything is read
+  /// (the open does not wait for a pipe's writer), and so is a file over `max_bytes`. Throws
+  /// std::runtime_error with the reason ("not a regular file (a pipe)", "N bytes, more than
+  /// ..."); the caller names the path.
+  static SourceFile load_regular(const std::filesystem::path& path, std::size_t max_bytes);
 
   const std::string& name() const { return name_; }
   std::string_view text() const { return {data(), size_}; }

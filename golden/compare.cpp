@@ -9,6 +9,7 @@
 // - end: cycles run (within tolerance_cycles), exit status, error id and line.
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <istream>
 #include <sstream>
 
@@ -59,6 +60,10 @@ bool next_block(GoldenReader& g, GoldenRow& row) {
 std::uint64_t cycle_distance(std::uint64_t a, std::uint64_t b) {
   return a > b ? a - b : b - a;
 }
+
+// Most cycles a golden row's line may be from the run's block of that line (the window of
+// run rows kept: memory stays bounded whatever tolerance_cycles a golden states).
+constexpr std::uint64_t kLineWindowMax = 1000;
 
 }  // namespace
 
@@ -117,6 +122,40 @@ Comparison compare(RunCsv& csv, const Outcome& outcome, std::istream& positions,
   std::vector<double> tol;
   for (const std::string& c : h.columns)
     tol.push_back(h.settings.tolerance_for(c));
+
+  // The lines of golden rows: the golden's line at cycle k must be the run's line at a cycle
+  // within tolerance_cycles of k (a block end may move that far; bounded window).
+  const std::uint64_t window = std::min<std::uint64_t>(tol_cycles, kLineWindowMax);
+  std::deque<std::pair<std::uint64_t, std::uint64_t>> recent;  // the run's (cycle, line)
+  std::deque<GoldenRow> pending_lines;                         // golden rows to settle
+  const auto settle_lines = [&](bool all) {
+    while (!pending_lines.empty() &&
+           (all ||
+            (!recent.empty() && pending_lines.front().row.cycle + window <= recent.back().first))) {
+      const GoldenRow& g = pending_lines.front();
+      bool found = false;
+      std::uint64_t run_line = 0;
+      for (const auto& [cycle, line] : recent) {
+        if (cycle == g.row.cycle) run_line = line;
+        found = found || (cycle_distance(cycle, g.row.cycle) <= window && line == g.row.line);
+      }
+      if (!found) {
+        Deviation d;
+        d.kind = Deviation::Kind::block;
+        d.cycle = g.row.cycle;
+        d.line = g.row.line;
+        d.file_line = g.file_line;
+        d.tolerance = static_cast<double>(tol_cycles);
+        d.what = "at t=" + at(g.row.cycle) + " s the block is line " + std::to_string(g.row.line) +
+                 " in the golden, line " + std::to_string(run_line) +
+                 " in the run (no block end within " + std::to_string(tol_cycles) + " cycles)";
+        out.add(std::move(d));
+      }
+      pending_lines.pop_front();
+    }
+    while (recent.size() > 2 * window + 2)
+      recent.pop_front();
+  };
 
   GoldenRow gpos;
   bool gpos_ok = gp.next(gpos);
@@ -179,7 +218,21 @@ Comparison compare(RunCsv& csv, const Outcome& outcome, std::istream& positions,
         out.add(std::move(d));
         gpos_ok = gp.next(gpos);
       }
+      if (gpos_ok && gpos.row.cycle > row.cycle && row.cycle % h.settings.sample_cycles == 0) {
+        // bless writes a row at every sample cycle: a missing one was removed from the file.
+        Deviation d;
+        d.kind = Deviation::Kind::position;
+        d.cycle = row.cycle;
+        d.line = row.line;
+        d.file_line = gpos.file_line;
+        d.what = "the golden has no row at t=" + at(row.cycle) + " s, a sample cycle (every " +
+                 std::to_string(h.settings.sample_cycles) +
+                 " cycles): a row was removed from the golden";
+        out.add(std::move(d));
+      }
+      recent.emplace_back(row.cycle, row.line);
       if (gpos_ok && gpos.row.cycle == row.cycle) {
+        pending_lines.push_back(gpos);
         ++result.rows;
         std::size_t worst = h.columns.size();
         double worst_ratio = 1.0;
@@ -207,10 +260,12 @@ Comparison compare(RunCsv& csv, const Outcome& outcome, std::istream& positions,
         }
         gpos_ok = gp.next(gpos);
       }
+      settle_lines(false);
       if (have && row.line != prev.line) on_block_end(prev);
       std::swap(prev, row);
       have = true;
     }
+    settle_lines(true);
     if (have) on_block_end(prev);
   } else {
     while (csv.next(row)) {

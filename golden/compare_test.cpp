@@ -141,5 +141,42 @@ TEST_CASE("deviations are listed earliest first, at most kListed, all counted") 
     CHECK(c.deviations[i - 1].cycle < c.deviations[i].cycle);
 }
 
+TEST_CASE("a golden whose sample rows were deleted does not pass") {
+  const std::string csv = test::csv({{10, 70}, {20, 40}});
+  std::string golden = bless(csv);
+  // Delete every sample row (`s ...`), keep the block ends.
+  std::string only_blocks;
+  std::istringstream in(golden);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("s ", 0) != 0) only_blocks += line + '\n';
+  REQUIRE(only_blocks != golden);
+  const Comparison c = check(csv, only_blocks);
+  REQUIRE_FALSE(c.ok());
+  CHECK(c.deviations.front().kind == Deviation::Kind::position);
+  CHECK(c.deviations.front().cycle == 50);
+  CHECK(c.deviations.front().what.find("the golden has no row at t=0.05 s") != std::string::npos);
+}
+
+TEST_CASE("a sample row with a wrong line number does not pass") {
+  const std::string csv = test::csv({{10, 70}, {20, 40}});
+  std::string golden = bless(csv);
+  const std::size_t at = golden.find("\ns 0.05 10 ");
+  REQUIRE(at != std::string::npos);
+  golden.replace(at, 11, "\ns 0.05 30 ");
+  const Comparison c = check(csv, golden);
+  REQUIRE(c.count == 1);
+  CHECK(c.deviations.front().kind == Deviation::Kind::block);
+  CHECK(c.deviations.front().cycle == 50);
+  CHECK(c.deviations.front().line == 30);
+  CHECK(c.deviations.front().what.find("line 30 in the golden, line 10 in the run") !=
+        std::string::npos);
+}
+
+TEST_CASE("a sample row's line may be a neighbour block's when its end moved within tolerance") {
+  // Cycle 50 is the last of line 10 in the golden and the first of line 20 in the run.
+  const std::string golden = bless(test::csv({{10, 50}, {20, 60}}));
+  CHECK(check(test::csv({{10, 49}, {20, 61}}), golden).ok());
+}
+
 }  // namespace
 }  // namespace ncsim::golden

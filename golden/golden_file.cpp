@@ -1,5 +1,6 @@
 // golden/golden_file: the golden text format, written by bless and read by check
 // (golden.hpp; the format is specified in docs/golden.md).
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -112,56 +113,62 @@ Summary write_golden(RunCsv& csv, const Outcome& outcome, const Settings& settin
 
 GoldenReader::GoldenReader(std::istream& in) : in_(in) {
   std::string line;
-  bool version = false;
-  bool program = false;
-  bool machine = false;
-  bool cycle = false;
-  bool sample = false;
-  bool tol_cycles = false;
-  bool columns = false;
-  bool tolerance = false;
-  const auto need = [&](bool ok, const std::string& what) {
-    if (!ok) throw FormatError(file_line_, what);
+  // The file line of each head record (0: not given yet); every record once.
+  constexpr std::array<std::string_view, 8> kKeys = {
+      "golden",        "program",          "machine", "cycle_us",
+      "sample_cycles", "tolerance_cycles", "columns", "tolerance"};
+  std::array<std::size_t, kKeys.size()> given{};
+  const auto need_at = [](std::size_t file_line, bool ok, const std::string& what) {
+    if (!ok) throw FormatError(file_line, what);
   };
-  while (
-      !(version && program && machine && cycle && sample && tol_cycles && columns && tolerance)) {
-    need(read_record(line),
-         "the head ends before all of golden, program, machine, cycle_us, "
-         "sample_cycles, tolerance_cycles, columns, tolerance");
+  const auto need = [&](bool ok, const std::string& what) { need_at(file_line_, ok, what); };
+  const auto all_given = [&]() {
+    return std::all_of(given.begin(), given.end(), [](std::size_t l) { return l > 0; });
+  };
+  while (!all_given()) {
+    if (!read_record(line)) {
+      // A file without any record is named as such, at a line that exists (not 0).
+      const bool nothing =
+          std::none_of(given.begin(), given.end(), [](std::size_t l) { return l > 0; });
+      need_at(std::max<std::size_t>(file_line_, 1), false,
+              nothing ? "the file is empty (no records): a golden starts with 'golden 1' "
+                        "(docs/golden.md)"
+                      : "the head ends before all of golden, program, machine, cycle_us, "
+                        "sample_cycles, tolerance_cycles, columns, tolerance");
+    }
     const std::vector<std::string_view> w = words(line);
     const std::string_view key = w.front();
     const auto one = [&]() {
       need(w.size() == 2, "'" + std::string(key) + "' takes one value");
       return w[1];
     };
+    const auto k =
+        static_cast<std::size_t>(std::find(kKeys.begin(), kKeys.end(), key) - kKeys.begin());
+    need(k < kKeys.size(), "unknown head record '" + std::string(key) + "'");
+    need(given[k] == 0,
+         "'" + std::string(key) + "' given twice (first on line " + std::to_string(given[k]) + ")");
+    given[k] = file_line_;
     if (key == "golden") {
       std::uint64_t v = 0;
       need(
           parse_u64(one(), v) && v == kFormatVersion,
           "unknown golden format (this ncsim reads format " + std::to_string(kFormatVersion) + ")");
-      version = true;
     } else if (key == "program") {
       head_.program = std::string(one());
-      program = true;
     } else if (key == "machine") {
       head_.machine = std::string(one());
-      machine = true;
     } else if (key == "cycle_us") {
       need(parse_u64(one(), head_.cycle_us), "cycle_us: expected microseconds");
-      cycle = true;
     } else if (key == "sample_cycles") {
       need(parse_u64(one(), head_.settings.sample_cycles) && head_.settings.sample_cycles > 0,
            "sample_cycles: expected a whole number >= 1");
-      sample = true;
     } else if (key == "tolerance_cycles") {
       need(parse_u64(one(), head_.settings.tolerance_cycles),
            "tolerance_cycles: expected a whole number");
-      tol_cycles = true;
     } else if (key == "columns") {
       for (std::size_t i = 1; i < w.size(); ++i)
         head_.columns.emplace_back(w[i]);
-      columns = true;
-    } else if (key == "tolerance") {
+    } else {  // tolerance
       for (std::size_t i = 1; i < w.size(); ++i) {
         const std::size_t eq = w[i].find('=');
         double v = 0.0;
@@ -169,18 +176,16 @@ GoldenReader::GoldenReader(std::istream& in) : in_(in) {
              "tolerance: expected NAME=value (value >= 0)");
         head_.settings.axis_tolerance.emplace_back(std::string(w[i].substr(0, eq)), v);
       }
-      tolerance = true;
-    } else {
-      need(false, "unknown head record '" + std::string(key) + "'");
     }
   }
+  // Checks across records: at the line of the record that holds the value.
   for (const std::string& c : head_.columns) {
     bool found = false;
     for (const auto& [name, v] : head_.settings.axis_tolerance)
       found = found || name == c;
-    need(found, "tolerance: no value for column " + c);
+    need_at(given[7], found, "tolerance: no value for column " + c);
   }
-  need(head_.cycle_us > 0 || head_.columns.empty(), "cycle_us: must be > 0");
+  need_at(given[3], head_.cycle_us > 0 || head_.columns.empty(), "cycle_us: must be > 0");
 }
 
 bool GoldenReader::read_record(std::string& line) {

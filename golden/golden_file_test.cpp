@@ -141,5 +141,45 @@ TEST_CASE("a malformed golden is a FormatError naming its line") {
   CHECK(error_line(extra) > 0);
 }
 
+TEST_CASE("an empty golden, a repeated head record: FormatErrors at the right line") {
+  const auto error_of = [](const std::string& text) -> std::pair<std::size_t, std::string> {
+    try {
+      rows_of(text);
+    } catch (const FormatError& e) {
+      return {e.file_line(), e.what()};
+    }
+    return {0, ""};
+  };
+  const auto empty = error_of("");
+  CHECK(empty.first == 1);
+  CHECK(empty.second.find("the file is empty") != std::string::npos);
+  CHECK(error_of("# only a comment\n\n").second.find("the file is empty") != std::string::npos);
+  const std::string good = bless(test::csv({{10, 3}}));
+  std::string twice = good;
+  twice.insert(twice.find("program "), "golden 1\n");
+  const std::size_t second = static_cast<std::size_t>(
+      std::count(twice.begin(), twice.begin() + static_cast<long>(twice.find("program ")), '\n'));
+  const auto dup = error_of(twice);
+  CHECK(dup.first == second);
+  CHECK(dup.second.find("'golden' given twice (first on line ") != std::string::npos);
+  // A head value that is wrong only in view of the others: at the line that holds it.
+  std::string zero_cycle = good;
+  zero_cycle.replace(zero_cycle.find("cycle_us 1000"), 13, "cycle_us 0");
+  const std::size_t cycle_line =
+      static_cast<std::size_t>(
+          std::count(zero_cycle.begin(),
+                     zero_cycle.begin() + static_cast<long>(zero_cycle.find("cycle_us")), '\n')) +
+      1;
+  CHECK(error_of(zero_cycle).first == cycle_line);
+  std::string no_tol = good;
+  const std::size_t tol_at = no_tol.find("tolerance X=");
+  no_tol.replace(no_tol.find(" Y=", tol_at), std::string(" Y=0.0001").size(), "");
+  const std::size_t tol_line =
+      static_cast<std::size_t>(
+          std::count(no_tol.begin(), no_tol.begin() + static_cast<long>(tol_at), '\n')) +
+      1;
+  CHECK(error_of(no_tol).first == tol_line);
+}
+
 }  // namespace
 }  // namespace ncsim::golden

@@ -250,6 +250,18 @@ TEST_CASE("G93 takes F as the block time in seconds; G94 returns to mm/min") {
   CHECK(motion(c, 0).modal.feed_mode == FeedMode::inverse_time);
 }
 
+TEST_CASE("under G93 a G01/G02/G03 block without its block time F is 20008 at the block") {
+  // Not the earlier G94 feed read as mm/min (issue 34 item 29): the block time is per block.
+  auto r = run("%t\nG01 X5 F600\nG93 G01 X10\nM30\n");
+  CHECK(r.error_id == "20008");
+  CHECK(r.error_line == 3);
+  CHECK(r.error_message.find("G93") != std::string::npos);
+  auto second = run("%t\nG93 G01 X10 F2\nX20\nM30\n");
+  CHECK(second.error_id == "20008");
+  CHECK(second.error_line == 3);
+  CHECK(run("%t\nG01 X5 F600\nG93 G00 X10\nM30\n").error_id.empty());  // a rapid needs none
+}
+
 TEST_CASE("G18 and G19 select the arc plane") {
   auto r = run("%t\nG01 F600\nG18 G02 X10 Z0 I5 K0\nG19 G02 Y10 Z0 J5 K0\nM30\n");
   REQUIRE(r.error_id.empty());

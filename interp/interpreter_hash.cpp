@@ -39,12 +39,16 @@ bool Interpreter::Impl::spline_off(core::SourceLoc at) {
   // #SPLINE OFF or G150: Akima needs >= 3 vertices (PROG-207216267), B-spline >= 4 control
   // points (PROG-207263627).
   if (!spline) return fail(at, "NC4403", "#SPLINE OFF / G150 without #SPLINE ON / G151");
+  // Repeated vertices count once, as the planner counts them (issue 34: check refuses what
+  // time / run would).
   const std::size_t need = spline->type == SplineType::akima ? 3 : 4;
-  if (spline->points < need) {
+  if (spline->distinct < need) {
+    std::string has = std::to_string(spline->distinct);
+    if (spline->distinct != spline->points)
+      has += " distinct (" + std::to_string(spline->points) + " with repeated ones)";
     return fail(at, "NC4401",
                 std::string(spline->type == SplineType::akima ? "Akima" : "B-spline") +
-                    " #SPLINE OFF needs at least " + std::to_string(need) + " points, has " +
-                    std::to_string(spline->points));
+                    " #SPLINE OFF needs at least " + std::to_string(need) + " points, has " + has);
   }
   emit(line, SplineEnd{spline->type, spline->points});
   spline.reset();

@@ -332,7 +332,9 @@ struct Interpreter::Impl {
   SplineType spline_type = SplineType::akima;
   struct OpenSpline {
     SplineType type = SplineType::akima;
-    std::uint32_t points = 1;  // vertices so far, start included
+    std::uint32_t points = 1;    // vertices so far, start included
+    std::uint32_t distinct = 1;  // of them, those unlike the one before (the planner drops
+                                 // a repeated vertex: planner/spline.cpp kSamePoint)
   };
   std::optional<OpenSpline> spline;                  // between #SPLINE ON and OFF
   std::array<std::optional<std::uint8_t>, 3> xyz{};  // machine indices of X, Y, Z

@@ -6,6 +6,18 @@
 #include "interp/interpreter_impl.hpp"
 
 namespace ncsim::interp {
+namespace {
+
+// A spline vertex the planner drops as a repeat of the one before: every axis within 1e-9
+// (planner/spline.cpp kSamePoint).
+bool same_spline_point(const AxisValues& a, const AxisValues& b) {
+  constexpr double kSamePoint = 1e-9;  // [mm | deg]
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (std::abs(a[i] - b[i]) > kSamePoint) return false;
+  return true;
+}
+
+}  // namespace
 
 bool Interpreter::Impl::run_block_motion(const ast::Block& b, const BlockWords& bw) {
   if (bw.axis_words.empty() && !bw.motion_word && !bw.g60) return true;  // no motion here
@@ -53,6 +65,7 @@ bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const A
     if (!feed) return fail(b.loc, "20008", "the spline needs a feed F");
     emit(line, SplinePoint{spline->points, frame(), target, programmed, *feed});
     ++spline->points;
+    if (!same_spline_point(position, target)) ++spline->distinct;
     position = target;
     blocks_without_motion = 0;
     return true;
@@ -60,6 +73,12 @@ bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const A
   if (spline) return fail(b.loc, "NC4402", "G02/G03 inside #SPLINE ON ... OFF is not supported");
   if (kind != MotionKind::rapid && modal.feed_mode == FeedMode::per_minute && !feed) {
     return fail(b.loc, "20008", "the first G01/G02/G03 needs a feed F (DIAG-20008)");
+  }
+  // G93: F is this block's machining time; a block without one has none (an earlier feed is
+  // no time; decision, docs/interp.md).
+  if (kind != MotionKind::rapid && modal.feed_mode == FeedMode::inverse_time && !words.block_time) {
+    return fail(b.loc, "20008",
+                "under G93 every G01/G02/G03 block needs its machining time F [s] (DIAG-20008)");
   }
   Motion m;
   m.kind = kind;

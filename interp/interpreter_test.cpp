@@ -197,6 +197,17 @@ TEST_CASE("a B-spline needs at least 4 points [NC4401]") {
   CHECK(bad.error_id == "NC4401");
 }
 
+TEST_CASE("repeated spline points count once: the planner drops them, so NC4401 comes at check") {
+  // Start X0 and X1, X1, X2: four points, three distinct; the planner would refuse it at run
+  // time without a position (issue 34 item 15).
+  auto bad = run("%t\nG01 F600\n#SPLINE TYPE BSPLINE\n#SPLINE ON\nX1\nX1\nX2\n#SPLINE OFF\nM30\n");
+  CHECK(bad.error_id == "NC4401");
+  CHECK(bad.error_line == 8);
+  CHECK(bad.error_message.find("has 3 distinct (4 with repeated ones)") != std::string::npos);
+  auto akima = run("%t\nG01 F600\n#SPLINE TYPE AKIMA\n#SPLINE ON\nX0\nX1\n#SPLINE OFF\nM30\n");
+  CHECK(akima.error_id == "NC4401");
+}
+
 TEST_CASE("an Akima spline needs at least 3 points") {
   auto bad = run("%t\nG01 F600\n#SPLINE TYPE AKIMA\n#SPLINE ON\nX1\n#SPLINE OFF\nM30\n");
   CHECK(bad.error_id == "NC4401");

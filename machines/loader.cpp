@@ -77,11 +77,11 @@ std::string suggestion(ListKind kind, std::string_view pattern) {
   return "; did you mean " + std::string(best->key) + " (" + std::string(best->id) + ")?";
 }
 
+// A REAL64's range is the bound ncsim applies (1e300, param_table's kRealMax), not the
+// type's MAX(REAL64): "1e308 is outside its range 0..MAX(REAL64)" contradicted itself.
 std::string range_text(const ParamSpec& spec) {
   if (spec.type == ValueType::sgn32 && spec.min < -2.0e9) return "MIN(SGN32)..MAX(SGN32)";
-  std::string lo = spec.min < -1.0e299 ? "MIN(REAL64)" : number_text(spec.min);
-  std::string hi = spec.max > 1.0e299 ? "MAX(REAL64)" : number_text(spec.max);
-  return lo + ".." + hi;
+  return number_text(spec.min) + ".." + number_text(spec.max);
 }
 
 }  // namespace
@@ -386,7 +386,7 @@ std::optional<core::SourceFile> load_source(const std::filesystem::path& path,
                                             const std::string& index_file, core::SourceLoc loc,
                                             core::DiagnosticList& diagnostics) {
   try {
-    return core::SourceFile::load(path);
+    return core::SourceFile::load_regular(path, kMaxListBytes);
   } catch (const std::exception& e) {
     diagnostics.add(detail::make_diag(core::Severity::error, index_file, loc, "NC3010",
                                       "cannot read list '" + path.string() + "': " + e.what()));
@@ -581,7 +581,7 @@ LoadResult load_machine(const std::filesystem::path& dir) {
   const std::string index_name = index_path.string();
   std::optional<core::SourceFile> index_file;
   try {
-    index_file = core::SourceFile::load(index_path);
+    index_file = core::SourceFile::load_regular(index_path, kMaxListBytes);
   } catch (const std::exception& e) {
     result.diagnostics.add(
         detail::make_diag(core::Severity::error, index_name, core::SourceLoc{}, "NC3010",

@@ -26,6 +26,9 @@ namespace ncsim::machines {
 
 /// Most axes (path axes and spindles) one channel may have in ncsim (docs/machines.md).
 inline constexpr std::size_t kMaxChannelAxes = 16;
+/// Largest machine index or parameter list ncsim reads (16 MiB; a real list has a few kB):
+/// a larger file is refused with NC3010 before it is read (docs/machines.md).
+inline constexpr std::size_t kMaxListBytes = std::size_t{16} << 20;
 
 /// kenngr.achs_typ: 1 translatory, 2 rotary, 4 spindle.
 enum class AxisKind { linear, rotary, spindle };

@@ -51,7 +51,7 @@ constexpr std::array kTable = {
   ParamSpec{"P-AXIS-00626", "conv_sync.delay_time", A, ValueType::uns32, 0, kUns32Max, "us", kMicrosecond, "s", "0", kOpt, -1, -1, "004 §5.2.1"},
   ParamSpec{"P-AXIS-00708", "conv_sync.is_master", A, ValueType::boolean, 0, 1, "", 1, "", "0", kOpt, -1, -1, "004 §5.2.1"},
   // ---- axis list: exact stop (seed 001 §3.2) ----------------------------------------------
-  ParamSpec{"P-AXIS-00236", "getriebe[].window", A, ValueType::sgn32, 0, kSgn32Max, "0.1 um | 0.0001 deg", kTenthMicron, "mm | deg", "500", kOpt, 7, -1, "001 §3.2"},
+  ParamSpec{"P-AXIS-00236", "getriebe[].window", A, ValueType::sgn32, 1, kSgn32Max, "0.1 um | 0.0001 deg", kTenthMicron, "mm | deg", "500", kOpt, 7, -1, "001 §3.2"},
   ParamSpec{"P-AXIS-00532", "getriebe[].position_settling_time", A, ValueType::sgn32, kSgn32Min, kSgn32Max, "us", kMicrosecond, "s", "-1", kOpt, 7, -1, "001 §3.2"},
   // ---- axis list: dynamics of gear i, jerk-limited ("non-linear") slope (ISG axis parameter
   //      manual TF5200, docs/machines.md "Axis dynamics" names each page) ------------------------

@@ -16,7 +16,7 @@ expect "report exits 0 and prints where the page is" 0 "^report: $work/a.html\$"
 holds "the page is written" test -s "$work/a.html"
 holds "the audit table knows an acceleration-limited slope (no jerk checked), as the CLI" \
   grep -q '"j_limit":[0-9.e+]*,"jerk_cycles":0}' "$work/a.html"
-holds "no temporary file is left" test ! -e "$work/a.html.tmp"
+holds "no temporary file is left" no_temp "$work/a.html"
 holds "the page inlines uPlot" grep -q 'uPlot (v1\.6\.32)' "$work/a.html"
 holds "the page says the run was ok" grep -q '"outcome":"ok"' "$work/a.html"
 holds "no conveyor: no workspace, no named series" grep -q '"workspace":null' "$work/a.html"
@@ -66,8 +66,8 @@ holds "the delta page lists the three moved joints under #TRAFO, jerk-checked" \
   grep -qE '"joints":\[(\{[^}]*"jerk_cycles":[1-9][0-9]*,"index":[0-2]\},?){3}\]' "$work/delta.html"
 holds "a page without #TRAFO lists no joint" grep -q '"joints":\[\]' "$work/a.html"
 
-expect "an unwritable page exits 2 with NC8100 naming the file" 2 '' \
-  "cannot write the report '$work/no/such/dir/x\.html\.tmp' \[NC8100\]" -- \
+expect "an unwritable page exits 2 with NC8100 naming the file and why" 2 '' \
+  "the report: cannot write '$work/no/such/dir/x\.html': its folder '$work/no/such/dir' does not exist \[NC8100\]" -- \
   report "$fixtures/clean.nc" -o "$work/no/such/dir/x.html"
 expect "an empty -o exits 2 with NC8101" 2 '' 'NC8101' -- report "$fixtures/clean.nc" -o ""
 expect "a missing program exits 2" 2 '' '' -- report "$work/missing.nc" -o "$work/m.html"

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <optional>
 #include <ostream>
+#include <sstream>
 #include <string>
 
 #include "report/assets.hpp"
@@ -367,25 +368,12 @@ void write_html(const ReportData& data, std::ostream& os) {
      << page_js() << "</script>\n</body>\n</html>\n";
 }
 
-bool write_html_file(const ReportData& data, const std::filesystem::path& path, std::string& why) {
-  const std::filesystem::path temp = path.string() + ".tmp";
-  {
-    std::ofstream f(temp, std::ios::binary | std::ios::trunc);
-    if (f) write_html(data, f);
-    if (f) f.flush();
-    if (!f) {
-      why = "cannot write the report '" + temp.string() + "' [NC8100]";
-      std::error_code ec;
-      std::filesystem::remove(temp, ec);
-      return false;
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(temp, path, ec);
-  if (ec) {
-    why = "cannot rename '" + temp.string() + "' to '" + path.string() + "': " + ec.message() +
-          " [NC8100]";
-    std::filesystem::remove(temp, ec);
+bool write_html_file(const ReportData& data, core::OutputFile& out, std::string& why) {
+  std::ostringstream page;
+  write_html(data, page);
+  out.write(page.view());  // a write error is commit()'s reason
+  if (!out.commit(why)) {
+    why = "the report: " + why + " [NC8100]";
     return false;
   }
   return true;

@@ -14,6 +14,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/output_file.hpp"
 #include "report/recorder.hpp"
 
 namespace ncsim::report {
@@ -24,9 +25,10 @@ inline constexpr std::size_t kPageViolations = 200;
 /// Writes the page of `data` to `os`.
 void write_html(const ReportData& data, std::ostream& os);
 
-/// Writes the page to `<path>.tmp` and renames it to `path` when complete; false with the
-/// reason in `why` (the temporary file removed) on a write error.
-bool write_html_file(const ReportData& data, const std::filesystem::path& path, std::string& why);
+/// Writes the page to `out` (opened before the run, core/output_file) and commits it: renamed
+/// into place when complete; false with the reason in `why` (NC8100; the temporary file
+/// removed, the target untouched) on a write error.
+bool write_html_file(const ReportData& data, core::OutputFile& out, std::string& why);
 
 /// `s` as a JSON string literal, with '<', '>' and '&' escaped (safe inside <script>).
 std::string json_quote(std::string_view s);

@@ -7,6 +7,8 @@
 // key, NC7003 type, NC7004 range) as for the rest of the file.
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <string>
 
 #include "scenario/loader_detail.hpp"
@@ -26,9 +28,9 @@ constexpr double kDeadTimeMax = 10.0;    // [s]
 constexpr double kSigmaMax = 1000.0;     // [mm]
 constexpr double kFrequencyMax = 1.0e4;  // [Hz]
 constexpr double kLengthMax = 1.0e6;     // [mm]
-constexpr double kCountMax = 1.0e9;      // workpieces of a series
-constexpr double kQueueMax = 4096.0;     // PLC queue entries
-constexpr double kSeedMax = 9.2233720368547e18;
+constexpr std::int64_t kCountMax = 1000000000;  // workpieces of a series
+constexpr std::int64_t kQueueMax = 4096;        // PLC queue entries
+constexpr std::int64_t kSeedMax = std::numeric_limits<std::int64_t>::max();  // 2^63-1
 
 class ConveyorReader {
  public:
@@ -232,7 +234,7 @@ class ConveyorReader {
       if (name == "sigma") {
         if (const auto v = r_.number(value, path + ".sigma", 0.0, kSigmaMax, "mm")) n.sigma = *v;
       } else if (name == "seed") {
-        if (const auto v = r_.integer(value, path + ".seed", 0.0, kSeedMax)) n.seed = *v;
+        if (const auto v = r_.integer(value, path + ".seed", 0, kSeedMax)) n.seed = *v;
       } else {
         unknown(key, path + "." + name, {"sigma", "seed"});
       }
@@ -257,7 +259,7 @@ class ConveyorReader {
         if (const auto w = word(value, item, {"rising", "falling"}))
           s.front_edge_rising = *w == "rising";
       } else if (name == "queue") {
-        if (const auto v = r_.integer(value, item, 1.0, kQueueMax))
+        if (const auto v = r_.integer(value, item, 1, kQueueMax))
           s.queue = static_cast<std::uint32_t>(*v);
       } else {
         unknown(key, item, {"kind", "position", "front_edge", "queue"});
@@ -380,7 +382,7 @@ class ConveyorReader {
       } else if (name == "period") {
         if (const auto v = r_.number(value, item, 0.0, kTimeMax, "s")) s.pitch = *v;
       } else if (name == "count") {
-        if (const auto v = r_.integer(value, item, 1.0, kCountMax)) s.count = *v;
+        if (const auto v = r_.integer(value, item, 1, kCountMax)) s.count = *v;
       } else if (!common_key(name, value, item, s.first)) {
         unknown(key, item, {"first", "first_at", "pitch", "period", "count", "length", "ve"});
       }

@@ -88,4 +88,33 @@ TEST_CASE("[conveyor] errors name file, line and key: NC7014..NC7018") {
             .rfind("NC7014@3", 0) == 0);
 }
 
+TEST_CASE("[conveyor] for a machine without a conveyor axis is warning NC7019 at its header") {
+  const core::SourceFile file("c.toml", "description = \"x\"\n[conveyor]\nmode = \"spindle\"\n");
+  Context c;
+  c.conveyor_wired = true;
+  c.conveyor_axis = false;
+  const LoadResult r = parse_scenario(file, c);
+  REQUIRE(r.scenario);  // a warning: the scenario still loads
+  REQUIRE(r.diagnostics.items().size() == 1);
+  const core::Diagnostic& d = r.diagnostics.items().front();
+  CHECK(d.severity == core::Severity::warning);
+  CHECK(d.id == "NC7019");
+  CHECK(d.loc.line == 2);
+  CHECK(d.loc.column == 2);
+  CHECK(d.message.find("has no conveyor axis") != std::string::npos);
+  CHECK_FALSE(r.scenario->conveyor);  // not played
+  c.conveyor_axis = true;
+  CHECK(parse_scenario(file, c).diagnostics.items().empty());
+}
+
+TEST_CASE("conveyor.noise.seed takes its documented maximum 2^63-1") {
+  const LoadResult r = wired(
+      "[conveyor]\nmode = \"spindle\"\nnoise = { sigma = 0.01, seed = 9223372036854775807 }\n");
+  REQUIRE(r.scenario);
+  CHECK(r.scenario->conveyor->noise->seed == 9223372036854775807u);
+  CHECK(first(wired("[conveyor]\nmode = \"spindle\"\nnoise = { sigma = 0.01, seed = -1 }\n"))
+            .find("conveyor.noise.seed = -1 is out of range 0 .. 9223372036854775807") !=
+        std::string::npos);
+}
+
 }  // namespace ncsim::scenario

@@ -131,6 +131,20 @@ class Reader : public ReaderBase {
         read_stop(node, s);
       } else if (name == "conveyor") {
         read_conveyor(*this, node, s);
+        if (context_.conveyor_axis == false) {
+          // Not an error: one scenario may serve a program on several machines; but never
+          // silent (issue 34 item 14).
+          core::Diagnostic d;
+          d.severity = core::Severity::warning;
+          d.file = file_.name();
+          d.loc = loc(key.source());
+          d.id = kNoConveyorAxis;
+          d.message =
+              "[conveyor] is not played: the machine has no conveyor axis (FCT_DLM, "
+              "conv_sync.is_master; docs/conveyor.md)";
+          diags_.add(std::move(d));
+          s.conveyor.reset();
+        }
       } else if (std::find(std::begin(kOldConveyorTables), std::end(kOldConveyorTables), name) !=
                  std::end(kOldConveyorTables)) {
         error(kUnknownKey, key.source(),
@@ -148,7 +162,7 @@ class Reader : public ReaderBase {
 
  private:
   std::optional<std::uint32_t> line_number(const toml::node& node, const std::string& path) {
-    const auto v = integer(node, path, 1.0, kLineMax);
+    const auto v = integer(node, path, 1, kLineMax);
     if (!v) return std::nullopt;
     const auto line = static_cast<std::uint32_t>(*v);
     if (context_.program != nullptr && line > last_line(*context_.program)) {
@@ -238,11 +252,17 @@ class Reader : public ReaderBase {
         line = line_number(node, item);
       } else if (name == "pass") {
         pass_node = &node;
-        if (const auto v = integer(node, item, 1.0, kLineMax))
-          pass = static_cast<std::uint32_t>(*v);
+        if (const auto v = integer(node, item, 1, kLineMax)) pass = static_cast<std::uint32_t>(*v);
       } else if (name == "override") {
         if (const auto v = number(node, item, 0.0, kOverrideMaxPercent, "%")) {
           path_override = *v / 100.0;
+          if (context_.path_override_max && *path_override > *context_.path_override_max) {
+            error(kOverrideBeyondType, node.source(),
+                  item + " = " + value_text(*v) + " % is above " +
+                      value_text(*context_.path_override_max * 100.0) +
+                      " %, the largest of the machine's path override type (NCSIM-CHAN-630 "
+                      "ncsim.path_override_type; only REDUCED_ABOVE_100 goes beyond)");
+          }
         }
       } else if (name == "axis_override") {
         read_named(node, item, true, [&](const std::string& axis, double v, const auto& at_key) {
@@ -255,6 +275,26 @@ class Reader : public ReaderBase {
                 kUnknownAxis, at_key,
                 item + "." + axis + ": the machine has no axis " + axis + " (axes: " + names + ")");
             return;
+          }
+          if (context_.axis_override_max && v > *context_.axis_override_max) {
+            error(kIndpOverride, at_key,
+                  item + "." + axis + " = " + value_text(v * 100.0) + " % is above " +
+                      value_text(*context_.axis_override_max * 100.0) +
+                      " %, the largest an INDP axis accepts (002 2.2)");
+            return;
+          }
+          if (context_.path_axes &&
+              std::find(context_.path_axes->begin(), context_.path_axes->end(), axis) !=
+                  context_.path_axes->end()) {
+            core::Diagnostic d;
+            d.severity = core::Severity::warning;
+            d.file = file_.name();
+            d.loc = loc(at_key);
+            d.id = kPathAxisOverride;
+            d.message = item + "." + axis + ": " + axis +
+                        " is a path axis: an axis override acts on its INDP motions only (002 "
+                        "2.2), the path's blocks keep the path override (`override`)";
+            diags_.add(std::move(d));
           }
           axis_overrides.emplace_back(AxisOverride{axis, v});
         });
@@ -356,11 +396,11 @@ class Reader : public ReaderBase {
           c.time = v;
         }
       } else if (name == "cycles") {
-        c.cycles = integer(value, item, 1.0, kCyclesMax);
+        c.cycles = integer(value, item, 1, kCyclesMax);
       } else if (name == "line") {
         c.line = line_number(value, item);
       } else if (name == "passes") {
-        if (const auto v = integer(value, item, 1.0, kLineMax)) {
+        if (const auto v = integer(value, item, 1, kLineMax)) {
           c.passes = static_cast<std::uint32_t>(*v);
         }
       } else {
@@ -436,7 +476,9 @@ LoadResult parse_scenario(const core::SourceFile& file, const Context& context) 
 
 LoadResult load_scenario(const std::filesystem::path& path, const Context& context) {
   try {
-    const core::SourceFile file = core::SourceFile::load(path);
+    // No pipe or device (an open that waits, a read that never ends); the size is NC7010's.
+    const core::SourceFile file =
+        core::SourceFile::load_regular(path, std::numeric_limits<std::size_t>::max());
     return parse_scenario(file, context);
   } catch (const std::exception& e) {
     LoadResult result;

@@ -33,6 +33,17 @@ struct Context {
   /// True once the channel loop plays the conveyor world: until then `[conveyor]` and the
   /// event key `reduced_filter` are validated and then refused as not supported (NC7007).
   bool conveyor_wired = false;
+  /// Whether the machine has a conveyor axis (the CLI sets it): when false, a `[conveyor]`
+  /// table is warning NC7019 at its header and is not played; unset, not checked.
+  std::optional<bool> conveyor_axis;
+  /// Largest path override the machine's override type accepts (NCSIM-CHAN-630; fraction):
+  /// an `override` above it is NC6102 at its value, so `check` refuses what `time` would.
+  std::optional<double> path_override_max;
+  /// Largest axis override of an INDP axis (002 2.2: 1.0, 100 %): above it NC6105 at its value.
+  std::optional<double> axis_override_max;
+  /// The machine's path (interpolated) axes: an `axis_override` of one is warning NC7020 (it
+  /// acts on the axis's INDP motions only, never on the path's blocks).
+  std::optional<std::vector<std::string>> path_axes;
 };
 
 struct LoadResult {

@@ -35,11 +35,17 @@ constexpr const char* kUnreadable = "NC7010";
 constexpr const char* kUnknownAxis = "NC7011";
 constexpr const char* kLineBeyond = "NC7012";
 constexpr const char* kLineEmpty = "NC7013";
+constexpr const char* kNoConveyorAxis = "NC7019";
+constexpr const char* kPathAxisOverride = "NC7020";
+// The channel's run-time ids, raised at load when Context gives the machine's limits.
+constexpr const char* kOverrideBeyondType = "NC6102";
+constexpr const char* kIndpOverride = "NC6105";
 
 constexpr double kTimeMax = 1e9;  // [s] largest `at`, `duration`, stop.time
 constexpr double kOverrideMaxPercent = kOverrideMax * 100.0;
-constexpr double kLineMax = 4294967295.0;          // line and pass counts are 32-bit
-constexpr double kCyclesMax = 9.2233720368547e18;  // TOML integers are 64-bit signed
+constexpr std::int64_t kLineMax = 4294967295;  // line and pass counts are 32-bit
+// TOML integers are 64-bit signed: 2^63-1, compared and printed as the integer it is.
+constexpr std::int64_t kCyclesMax = std::numeric_limits<std::int64_t>::max();
 
 std::string upper(std::string_view s);
 // "; did you mean `x`?" for the closest candidate within two edits (case ignored); else "".
@@ -105,18 +111,19 @@ class ReaderBase {
   }
 
   // An integer in [lo, hi]; a float is a wrong type (a count is whole).
-  std::optional<std::uint64_t> integer(const toml::node& node, const std::string& path, double lo,
-                                       double hi) {
+  // Compared and printed as integers (a double cannot hold 2^63-1).
+  std::optional<std::uint64_t> integer(const toml::node& node, const std::string& path,
+                                       std::int64_t lo, std::int64_t hi) {
     const auto* i = node.as_integer();
     if (i == nullptr) {
       wrong_type(node, path, "an integer");
       return std::nullopt;
     }
-    const double v = static_cast<double>(i->get());
+    const std::int64_t v = i->get();
     if (v < lo || v > hi) {
       error(kRange, node.source(),
-            path + " = " + std::to_string(i->get()) + " is out of range " + value_text(lo) +
-                " .. " + value_text(hi));
+            path + " = " + std::to_string(v) + " is out of range " + std::to_string(lo) + " .. " +
+                std::to_string(hi));
       return std::nullopt;
     }
     return static_cast<std::uint64_t>(i->get());

@@ -361,5 +361,40 @@ TEST_CASE("a file that cannot be read is NC7010") {
   CHECK(r.diagnostics.items()[0].file == "/nonexistent/scenario.toml");
 }
 
+TEST_CASE("overrides beyond the machine's are NC6102 / NC6105 at their values, given the limits") {
+  Context limits;
+  limits.path_override_max = 1.0;
+  limits.axis_override_max = 1.0;
+  const LoadResult path = parse("[[event]]\nat = 0.1\noverride = 150\n", limits);
+  CHECK(has(only_error(path), "NC6102", 3, "event[1].override = 150 % is above 100 %"));
+  CHECK(only_error(path).loc.column == 12);
+  const LoadResult axis = parse("[[event]]\nat = 0.1\naxis_override = { C = 120 }\n", limits);
+  CHECK(has(only_error(axis), "NC6105", 3, "event[1].axis_override.C = 120 % is above 100 %"));
+  CHECK(only_error(axis).loc.column == 19);
+  CHECK(parse("[[event]]\nat = 0.1\noverride = 150\n").scenario);  // no limits given
+}
+
+TEST_CASE("stop.cycles takes its documented maximum 2^63-1; a range error prints integers") {
+  const LoadResult r = parse("[stop]\ncycles = 9223372036854775807\n");
+  REQUIRE(r.scenario);
+  CHECK(*r.scenario->stop.cycles == 9223372036854775807u);
+  const LoadResult zero = parse("[stop]\ncycles = 0\n");
+  CHECK(has(only_error(zero), "NC7004", 2,
+            "stop.cycles = 0 is out of range 1 .. 9223372036854775807"));
+}
+
+TEST_CASE("an axis_override of a path axis is warning NC7020 at its key; an INDP axis's is not") {
+  Context c;
+  c.axes = std::vector<std::string>{"X", "Y", "C"};
+  c.path_axes = std::vector<std::string>{"X", "Y"};
+  const LoadResult r = parse("[[event]]\nat = 0.1\naxis_override = { X = 50, C = 50 }\n", c);
+  REQUIRE(r.scenario);
+  REQUIRE(r.diagnostics.items().size() == 1);
+  const core::Diagnostic& d = r.diagnostics.items().front();
+  CHECK(d.severity == core::Severity::warning);
+  CHECK(has(d, "NC7020", 3, "event[1].axis_override.X: X is a path axis"));
+  CHECK(d.loc.column == 19);
+}
+
 }  // namespace
 }  // namespace ncsim::scenario

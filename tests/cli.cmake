@@ -32,3 +32,9 @@ add_test(NAME cli_channel_keys_test
 # Issue 33: cycle calls, --cycles, --missing-cycles, M values and zero offsets end to end.
 add_test(NAME cli_cycles_test
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/cycles_test.sh $<TARGET_FILE:ncsim>)
+# --- issue 34: inputs that are no regular files, outputs that are not replaced, signals and
+# closed pipes (tests/cli/robust_files_test.sh)
+add_test(NAME cli_robust_files_test
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/robust_files_test.sh $<TARGET_FILE:ncsim>
+                 ${CMAKE_CURRENT_SOURCE_DIR}/cli)
+set_tests_properties(cli_robust_files_test PROPERTIES TIMEOUT 600)

@@ -53,12 +53,16 @@ expect "time plays a scenario with an override event" 0 'external\.nc: [0-9.e-]+
   time "$fixtures/external.nc" --scenario "$fixtures/scenario_events.toml"
 printf '[[event]]\nat = 0.1\naxis_override = { X = 150 }\n' >"$work/axis_override.toml"
 expect "run refuses an INDP axis override above 100 % with its position, status 2" 2 '' \
-  'axis_override\.toml:1:[0-9]+: error: axis_override X = 150 % is above 100 %.*\[NC6105\]' -- \
+  'axis_override\.toml:3:19: error: event\[1\]\.axis_override\.X = 150 % is above 100 %.*\[NC6105\]' -- \
   run "$fixtures/external.nc" --scenario "$work/axis_override.toml"
 printf '[[event]]\nat = 0.1\noverride = 150\n' >"$work/override_150.toml"
-expect "an override above 100 % under type REDUCED is refused with its position, status 2" 2 '' \
-  'override_150\.toml:1:1: error: override = 150 % is above 100 %.*NCSIM-CHAN-630.*\[NC6102\]' -- \
+expect "an override above 100 % under type REDUCED is refused at its value, status 2" 2 '' \
+  'override_150\.toml:3:12: error: event\[1\]\.override = 150 % is above 100 %.*NCSIM-CHAN-630.*\[NC6102\]' -- \
   time "$fixtures/external.nc" --scenario "$work/override_150.toml"
+holds "NC6102 shows the scenario's line and a caret under the value (issue 34 item 24)" \
+  bash -c "grep -qx 'override = 150' '$work/err' && grep -qx '           ^' '$work/err'"
+expect "check refuses the override time would refuse (NC6102), status 2" 2 '' 'override_150\.toml:3:12: .*\[NC6102\]' -- \
+  check "$fixtures/external.nc" --scenario "$work/override_150.toml"
 printf '[ve]\nSEL = 0\n[[event]]\nat = 0.2\nfeed_hold = true\nduration = 0.5\n' >"$work/hold.toml"
 expect "a 0.5 s feed hold makes the run (1.507 s) 0.5 s longer" 0 've_branch\.nc: 2\.007 s' '' -- \
   time "$fixtures/ve_branch.nc" --scenario "$work/hold.toml"
@@ -285,7 +289,7 @@ expect "a run-time error at its line (FEED_CONT on a static unit), status 1" 1 '
 expect "run stops at a run-time error, status 1" 1 '' '#SYNC IN FEED_CONT.*\[NC9060\]' -- \
   run --machine "$root/machines/static_saw" -o "$work/sync.csv" "$fixtures/sync_in.nc"
 checks=$((checks + 1))
-if [[ -f $work/sync.csv && ! -e $work/sync.csv.tmp ]] &&
+if [[ -f $work/sync.csv ]] && no_temp "$work/sync.csv" &&
   [[ $(tail -2 "$work/sync.csv" | head -1) == "# error: "*"#SYNC IN FEED_CONT"*"NC9060"* ]] &&
   [[ $(tail -1 "$work/sync.csv") == "# stop: error" ]]; then
   echo "ok   run keeps the trajectory up to the error, with a closing comment"
@@ -307,6 +311,19 @@ expect "time --audit says the jerk is not limited under an acceleration-limited 
   time --audit "$root/programs/rotary_table/rotary_table.nc"
 expect "time --audit of conveyor tracking checks the axes on their setpoints (belt offset, catch-up): ok" 0 \
   '^audit: ok$' '' -- time --audit "$root/programs/conveyor_squares/conveyor_squares.nc"
+# A program that ends right after #SYNC OUT (conveyor_squares' first sheet, then M30): X still
+# moves with the belt at the end; the run says so (NC6106; issue 34 item 18: it was silent).
+mkdir -p "$work/moving"
+cp "$root/programs/conveyor_squares/machine" "$root/programs/conveyor_squares/scenario.toml" "$work/moving/"
+sed -n '1,15p' "$root/programs/conveyor_squares/conveyor_squares.nc" | grep -v '^\$FOR' >"$work/moving/moving.nc"
+echo M30 >>"$work/moving/moving.nc"
+for cmd in time run; do
+  expect "$cmd: a run that ends with an axis still moving warns (NC6106), naming it" 0 '' \
+    '^ncsim: warning: the run ended at t=[0-9.]+ s with axes still moving: X at 100 mm/s .*\[NC6106\]$' -- \
+    $cmd "$work/moving/moving.nc"
+done
+expect "a run that ends with the axes standing does not warn" 0 '' '' -- time "$fixtures/long_line.nc"
+holds "no NC6106 for a run that ends standing" bash -c "! grep -q NC6106 '$work/err'"
 expect "time --audit: full feed in +X and -X on a fast belt keeps X within v_max (PCS1 velocity split)" 0 \
   '^audit: ok$' '' -- \
   time --audit --machine "$root/machines/laser_portal" "$fixtures/conveyor_split/conveyor_split.nc"
@@ -359,7 +376,7 @@ if [[ $status -eq 1 && -f $work/soft.csv ]] &&
   [[ $(tail -2 "$work/soft.csv" | head -1) == "# error: "*"soft_limit.nc:4:1: error: run-time error at t=8.018 s"*"[NC5502]" ]] &&
   [[ $(tail -1 "$work/soft.csv") == "# stop: error" ]] &&
   [[ $(tail -3 "$work/soft.csv" | head -1 | cut -d, -f1) == "8.017" ]] &&
-  [[ ! -e $work/soft.csv.tmp ]]; then
+  no_temp "$work/soft.csv"; then
   echo "ok   run stopped by a run-time error: rows up to the stop, closing # error comment"
 else
   failures=$((failures + 1)); echo "FAIL run stopped by a run-time error"

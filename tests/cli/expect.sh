@@ -63,6 +63,17 @@ holds() {
   fi
 }
 
+# no_temp FILE: no temporary file of FILE is left (core::OutputFile writes FILE.XXXXXX.tmp;
+# the pattern also finds the FILE.tmp of old).
+no_temp() {
+  ! compgen -G "$1.*tmp" >/dev/null
+}
+
+# no_file FILE: neither FILE nor a temporary file of it exists.
+no_file() {
+  [[ ! -e $1 ]] && no_temp "$1"
+}
+
 # summary NAME: the last line of a test: the counts, and the status (0 when nothing failed).
 summary() {
   echo "$1: $((checks - failures)) passed, $failures failed"

@@ -97,6 +97,14 @@ expect "tune-delay: proposes the delay time that zeroes the mean synchro_lag (de
   '^tune-delay: proposed P-AXIS-00626 conv_sync\.delay_time = 18950 us' '' -- tune-delay "$comoving"
 again "tune-delay: the static part is near zero with the proposal" 0 \
   '^tune-delay: check with P-AXIS-00626 = 18950 us: synchro_lag mean -?[0-9.]+e-0[6-9] mm' ''
+# filter_tuning sets P-AXIS-00626 itself at N100 (file line 23): the note says so, and the
+# proposal is not presented as checked alone (issue 34 item 21).
+expect "tune-delay: a program that sets P-AXIS-00626 itself is named, with its line" 0 \
+  '^tune-delay: note: the program sets P-AXIS-00626 itself \(#MACHINE DATA at line 23\)' '' -- \
+  tune-delay "$root/programs/filter_tuning/filter_tuning.nc"
+expect "tune-delay: a program that leaves P-AXIS-00626 to the list gets no such note" 0 '' '' -- \
+  tune-delay "$comoving"
+holds "tune-delay: no note for comoving" bash -c "! grep -q 'sets P-AXIS-00626 itself' '$work/out'"
 # The static unit's listing (x_virtual: Y's targets equal the virtual X's) at 200 mm/s: its 45 deg
 # G61 ball at N070 (1 mm) would need Y far beyond its jerk to keep the virtual X still, so the
 # run ends there with NC9100 (static-blend, docs/conveyor.md "Blends on a static unit"): only

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # run_output_test.sh NCSIM FIXTURES: `ncsim run` / `time` output contracts (issue 12):
 # --cycle-us sets the cycle (named in the CSV head, rows N us apart, bad values exit 2 with the
-# option named); `run -o FILE` writes FILE.tmp and renames it when complete (a failing start
-# leaves no FILE and no FILE.tmp and does not touch an existing FILE; a run-time error leaves a
+# option named); `run -o FILE` writes a temporary FILE.XXXXXX.tmp and renames it when complete
+# (a failing start leaves no FILE and no temporary file and does not touch an existing FILE; a run-time error leaves a
 # complete FILE with a closing comment); the CSV's numbers are the setpoints' doubles (a cruise
 # row against the closed form of a STEP line, the end point to the last digit).
 set -uo pipefail
@@ -63,9 +63,14 @@ abc|'abc' $not_digits
 1.5|'1\.5' $not_digits
 |needs a value
 LIST
+# The documented maximum is a cycle the program may not take: the position controller needs
+# Kv x cycle <= 1, so it is refused naming the option, the axis and its longest cycle (issue 34).
+expect "--cycle-us 1000000 on portal_3x: refused naming the option, the axis's Kv and its limit" 2 '' \
+  "^ncsim: error: --cycle-us 1000000: axis X's Kv P-AXIS-00099 getriebe\[0\]\.kv = [0-9.]+ 1/s takes a cycle of at most [0-9]+ us" -- \
+  time --cycle-us 1000000 "$fixtures/long_line.nc"
 expect "sweep --cycle-us 0 is refused the same way" 2 '' \
   '^--cycle-us: 0 us is below the smallest cycle, 1 us$' -- sweep --cycle-us 0 "$fixtures/long_line.nc"
-holds "no bad --cycle-us run wrote a file" test ! -e "$work/never.csv" -a ! -e "$work/never.csv.tmp"
+holds "no bad --cycle-us run wrote a file" no_file "$work/never.csv"
 
 # ---- NCSIM-CHAN-610 ncsim.cycle_time: the channel list's cycle, --cycle-us over it ---------
 # cycle_machine NAME VALUE: portal_3x in $work/NAME with `ncsim.cycle_time VALUE`.
@@ -89,12 +94,12 @@ for bad in 0 1000001 1.5; do
     "cy_$bad/channel\.lis:3:[0-9]+: error: ncsim\.cycle_time \(NCSIM-CHAN-610\)" -- \
     run -o "$work/never.csv" --machine "$(cycle_machine "cy_$bad" "$bad")" "$fixtures/long_line.nc"
 done
-holds "no refused ncsim.cycle_time run wrote a file" test ! -e "$work/never.csv" -a ! -e "$work/never.csv.tmp"
+holds "no refused ncsim.cycle_time run wrote a file" no_file "$work/never.csv"
 
 # ---- run -o FILE: written whole or not at all ---------------------------------------------
 # no_output NAME FILE: neither FILE nor FILE.tmp exists.
 no_output() {
-  holds "$1: no file and no temporary file" test ! -e "$2" -a ! -e "$2.tmp"
+  holds "$1: no file and no temporary file" no_file "$2"
 }
 out=$work/new.csv
 expect "a missing program is a usage error, status 2" 2 '' 'no such file' -- \
@@ -121,7 +126,7 @@ cp "$work/keep.csv" "$work/keep.orig"
 "$ncsim" run -o "$work/keep.csv" --cycle-us 0 "$fixtures/long_line.nc" >/dev/null 2>&1
 "$ncsim" run -o "$work/keep.csv" --machine "$work/no_machine" "$fixtures/long_line.nc" >/dev/null 2>&1
 same "an existing FILE is not clobbered by a failing start" "$work/keep.orig" "$work/keep.csv"
-holds "a failing start leaves no FILE.tmp beside an existing FILE" test ! -e "$work/keep.csv.tmp"
+holds "a failing start leaves no FILE.tmp beside an existing FILE" no_temp "$work/keep.csv"
 
 # A run-time error (X beyond its soft limit 800 mm at t=8.018 s, NC5502) ends the run: FILE is
 # complete, replaces the old one, every row has the head's fields, and two closing comments name
@@ -129,7 +134,7 @@ holds "a failing start leaves no FILE.tmp beside an existing FILE" test ! -e "$w
 expect "a run-time error ends the run with status 1" 1 '' 'soft_limit\.nc:4:1: error: .*\[NC5502\]' -- \
   run -o "$work/keep.csv" "$fixtures/soft_limit.nc"
 holds "run-time error: FILE replaced, no FILE.tmp left" \
-  test -s "$work/keep.csv" -a ! -e "$work/keep.csv.tmp"
+  bash -c "test -s '$work/keep.csv' && ! compgen -G '$work/keep.csv.*tmp' >/dev/null"
 complete_csv() {
   local f=$1
   [[ $(head -1 "$f") == "# ncsim run" ]] || return 1
@@ -213,6 +218,6 @@ abc|'abc' $every_digits
 0|0 is below the smallest, 1 \(a row every cycle\)$
 1099511627777|1099511627777 is above the largest, 1099511627776 \(2\^40\) cycles$
 LIST
-holds "no bad --every run wrote a file" test ! -e "$work/never.csv" -a ! -e "$work/never.csv.tmp"
+holds "no bad --every run wrote a file" no_file "$work/never.csv"
 
 summary run_output_test

@@ -83,6 +83,21 @@ printf 'golden 1\nprogram square.nc\nbogus 1\n' >"$g"
 expect "a malformed golden names its line" 2 'FAILED' 'square\.golden:3: error: malformed golden: .*\[NC8006\]' \
   -- golden check "$lib/square"
 cp "$work/first.golden" "$g"
+# Issue 34 items 17 and 27: edits of a golden that used to pass or be placed wrongly.
+grep -v '^s ' "$work/first.golden" >"$g"
+expect "a golden with its sample rows deleted fails (NC8001)" 1 '' \
+  'square\.golden:[0-9]+: error: .*the golden has no row at t=0\.05 s, a sample cycle .*\[NC8001\]' \
+  -- golden check "$lib/square"
+awk '/^s / && !done {$3 = $3 + 1000; done = 1} {print}' "$work/first.golden" >"$g"
+expect "a sample row with a wrong line number fails (NC8002)" 1 '' \
+  'in the golden, line [0-9]+ in the run .*\[NC8002\]' -- golden check "$lib/square"
+: >"$g"
+expect "an empty golden is named as such at line 1, not :0:" 2 'FAILED' \
+  'square\.golden:1: error: malformed golden: the file is empty .*\[NC8006\]' -- golden check "$lib/square"
+{ echo 'golden 1'; cat "$work/first.golden"; } >"$g"
+expect "a repeated 'golden 1' record is refused at its line" 2 'FAILED' \
+  "error: malformed golden: 'golden' given twice \\(first on line 1\\) \\[NC8006\\]" -- golden check "$lib/square"
+cp "$work/first.golden" "$g"
 
 # A program that stops with an error keeps the error as its golden.
 expect "bless records a program's error" 0 'stops: blessed, new \(.*status 1, error NC6001 at line 3\)' '' \
