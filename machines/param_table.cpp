@@ -141,7 +141,7 @@ constexpr std::array kTable = {
   ParamSpec{"P-ZERO-00001", "g53_verfuegbar", Z, ValueType::boolean, 0, 1, "", 1, "", "0", kOpt, -1, -1, "TF5200 P-ZERO-00001 (0: G53 deselects every offset; 1: np_grp[0] is an offset too)"},
   ParamSpec{"P-ZERO-00002", "default_index", Z, ValueType::uns16, 0, 96, "", 1, "", "0", kOpt, -1, -1, "TF5200 P-ZERO-00002 (the group active at program start)"},
   ParamSpec{"P-ZERO-00003", "np_grp[].achse[].versch", Z, ValueType::sgn32, kSgn32Min, kSgn32Max, "0.1 um | 0.0001 deg", kTenthMicron, "mm | deg", "0", kOpt, 96, 31, "TF5200 P-ZERO-00003 (achse[j]: the channel axis j, machine.lis order)"},
-  ParamSpec{"P-ZERO-00004", "np_grp[].achse[].inaktiv", Z, ValueType::boolean, 0, 1, "", 1, "", "0", kOpt, 96, 31, "TF5200 zero-offset list example (1: the axis's offset of this group is not applied)"},
+  ParamSpec{"NCSIM-ZERO-001", "np_grp[].achse[].inaktiv", Z, ValueType::boolean, 0, 1, "", 1, "", "0", kOpt, 96, 31, "TF5200 zero-offset list example (1: the axis's offset of this group is not applied)"},
   ParamSpec{"NCSIM-CHAN-004", "log_number_tracking_axis", C, ValueType::uns16, 1, kUns16Max, "", 1, "", "", kOpt, -1, -1, "004 §4.10.1 (listing, id cut off)"},
 };
 
