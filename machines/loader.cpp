@@ -306,6 +306,7 @@ struct MachineIndex {
   std::string name;
   std::optional<IndexEntry> channel;
   std::vector<IndexEntry> axes;
+  std::optional<IndexEntry> tools;  // `tools <file>`: the tool list (docs/trc.md)
 };
 
 std::vector<std::string> split_words(std::string_view line) {
@@ -352,9 +353,17 @@ MachineIndex read_index(const core::SourceFile& file, const std::filesystem::pat
         continue;
       }
       index.axes.push_back(IndexEntry{w[1], dir / w[2], loc});
+    } else if (w[0] == "tools" && w.size() == 2) {
+      if (index.tools) {
+        error(line, "second 'tools' line; first on line " + std::to_string(index.tools->loc.line));
+      } else {
+        index.tools = IndexEntry{"", dir / w[1], loc};
+      }
     } else {
-      error(line, "expected 'name <text>', 'channel <file>' or 'axis <name> <file>', found '" +
-                      std::string(file.line_text(line)) + "'");
+      error(line,
+            "expected 'name <text>', 'channel <file>', 'axis <name> <file>' or 'tools <file>', "
+            "found '" +
+                std::string(file.line_text(line)) + "'");
     }
   }
   if (!index.channel) error(0, "no 'channel <file>' line");
@@ -573,6 +582,13 @@ LoadResult load_machine(const std::filesystem::path& dir) {
     }
     machine.axes.push_back(std::move(axis));
     axis_values.push_back(std::move(values));
+  }
+
+  if (index.tools) {
+    if (auto src =
+            load_source(index.tools->file, index_name, index.tools->loc, result.diagnostics)) {
+      machine.tools = read_tool_list(*src, result.diagnostics);
+    }
   }
 
   detail::check_machine(machine, channel_values, axis_values, result.diagnostics);

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "machines/frame.hpp"
+#include "machines/tool_table.hpp"
 
 namespace ncsim::machines {
 
@@ -214,6 +215,7 @@ struct Machine {
   std::filesystem::path folder;  ///< where the lists are
   ChannelParams channel;
   std::vector<AxisParams> axes;  ///< machine order: as listed in machine.lis
+  ToolTable tools;  ///< the `tools <file>` list of machine.lis; empty without one (docs/trc.md)
 
   /// The axis a program addresses by `program_name` (X, Y, Z, C, S1 ...). A spindle whose list
   /// name is "S" also answers to "S1" and vice versa (ncsim decision: the first spindle).
