@@ -29,3 +29,7 @@ add_test(NAME cli_start_slope_test
 add_test(NAME cli_channel_keys_test
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/channel_keys_test.sh $<TARGET_FILE:ncsim>
                  ${CMAKE_CURRENT_SOURCE_DIR}/cli)
+# --- tool radius compensation (issue 33 item 6): check's positioned errors, trace (docs/trc.md)
+add_test(NAME cli_trc_test
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/trc_test.sh $<TARGET_FILE:ncsim>
+                 ${CMAKE_CURRENT_SOURCE_DIR}/cli)
