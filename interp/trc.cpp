@@ -434,6 +434,14 @@ std::optional<Error> Compensator::plane_motion(Command c, const Motion& m,
                           core::number_text(std::fabs(h.d)) + " too large for the inner corner");
     }
   }
+  bool finite = std::isfinite(j.a_end.x + j.a_end.y + j.b_start.x + j.b_start.y);
+  for (const Element& e : j.inserted)
+    finite = finite && std::isfinite(e.start.x + e.start.y + e.end.x + e.end.y);
+  if (!finite) {  // e.g. two lines meeting at an extremely small angle
+    return error_at(c, "90134",
+                    "the compensated end point is outside the permissible range (the offset "
+                    "elements of this block and the one before meet too far away)");
+  }
   if (!h.selection && !keeps_direction(h.offset, h.start, j.a_end)) {
     return error_at(h.command, "NC4701",
                     "contour violation: the compensated path of this block runs against its "
