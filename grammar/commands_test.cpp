@@ -134,7 +134,7 @@ TEST_CASE("unsupported commands are reported as such with their position") {
   const Parsed o("X[OSC ON]");
   REQUIRE(o.diags.items().size() == 1);
   CHECK(o.diags.items()[0].loc.column == 3);
-  CHECK(check("G41 X1") == std::vector<std::string>{"1:1 NC1002"});
+  CHECK(check("G237 X1") == std::vector<std::string>{"1:1 NC1002"});
 }
 
 TEST_CASE("control statements: $IF one-line goto, $FOR header, $GOTO targets") {

@@ -182,11 +182,13 @@ constexpr std::uint32_t kSupportedG[] = {
     96,  97,  98,  99,  115, 116, 117, 127, 128, 129, 130, 131, 132, 133, 134, 150,
     151, 159, 160, 161, 162, 163, 164, 165, 166, 193, 194, 196, 230, 231, 233, 260,
     261, 293, 301, 302, 303, 331, 332, 333, 334, 338, 339, 359, 360, 900, 901};
+// Tool radius compensation (isg-language.md §2.5; built, docs/trc.md): G25/G26 transitions,
+// G40/G41/G42, G138/G139 selection. Its other codes (G05, G10/G11, G236..G239) stay in kOtherG.
+constexpr std::uint32_t kTrcG[] = {25, 26, 40, 41, 42, 138, 139};
 // isg-language.md §2.5: real ISG G codes that ncsim does not simulate ("not supported").
-constexpr std::uint32_t kOtherG[] = {5,   10,  11,  20,  21,  22,  23,  25,  26,  40,
-                                     41,  42,  51,  52,  66,  68,  69,  100, 101, 102,
-                                     106, 107, 108, 112, 135, 136, 137, 138, 139, 140,
-                                     141, 200, 201, 202, 236, 237, 238, 239, 310, 351};
+constexpr std::uint32_t kOtherG[] = {5,   10,  11,  20,  21,  22,  23,  51,  52,  66,  68,
+                                     69,  100, 101, 102, 106, 107, 108, 112, 135, 136, 137,
+                                     140, 141, 200, 201, 202, 236, 237, 238, 239, 310, 351};
 
 }  // namespace
 
@@ -230,7 +232,8 @@ bool is_implicit_call_g(std::uint32_t code) {
 }
 
 GClass classify_g(std::uint32_t code) {
-  if (std::find(std::begin(kSupportedG), std::end(kSupportedG), code) != std::end(kSupportedG)) {
+  if (std::find(std::begin(kSupportedG), std::end(kSupportedG), code) != std::end(kSupportedG) ||
+      std::find(std::begin(kTrcG), std::end(kTrcG), code) != std::end(kTrcG)) {
     return GClass::supported;
   }
   if (is_implicit_call_g(code)) return GClass::implicit_call;

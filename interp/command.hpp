@@ -78,6 +78,22 @@ struct ContourParams {
   double post_dist = 1.0;  ///< POST_DIST [mm]
 };
 
+/// Tool radius compensation (TRC, docs/trc.md): G40 off / G41 left / G42 right of the contour.
+enum class TrcSide : std::uint8_t { off, left, right };
+/// Outer-corner transition: G25 linear blocks (default) / G26 a circle (TF5200 "G25/G26").
+enum class TrcCorner : std::uint8_t { linear, circle };
+/// Selection and deselection: G139 indirect (default) / G138 direct (TF5200 "G138/G139").
+enum class TrcApproach : std::uint8_t { indirect, direct };
+
+/// The TRC state a motion was decoded under; the interpreter's TRC filter (interp/trc.hpp)
+/// turns the programmed contour into the compensated path from it.
+struct ToolRadiusComp {
+  TrcSide side = TrcSide::off;
+  double radius = 0.0;  ///< [mm] of the D tool (P-TOOL-00004); negative swaps the side
+  TrcCorner corner = TrcCorner::linear;
+  TrcApproach approach = TrcApproach::indirect;
+};
+
 /// The modal state a motion needs, as it was when the block was decoded.
 struct ModalSnapshot {
   Plane plane = Plane::xy;
@@ -94,6 +110,7 @@ struct ModalSnapshot {
   bool cs_active = false;             ///< a #CS system is active (also in Motion::frame)
   bool kinematics_on = false;         ///< #TRAFO ON (also in Motion::frame)
   bool caxtrack = false;              ///< #CAXTRACK ON
+  ToolRadiusComp trc;                 ///< G40/G41/G42, D, G25/G26, G138/G139
 };
 
 struct Arc {

@@ -88,6 +88,7 @@ Interpreter::Impl::Impl(const core::SourceFile& file, const machines::Machine& m
     if (machine.axes[i].kind != machines::AxisKind::spindle) path_axes |= AxisMask{1} << i;
   }
   xyz = {axis_index("X"), axis_index("Y"), axis_index("Z")};
+  trc_filter = trc::Compensator(xyz);
   modal.slope = channel_slope();  // P-CHAN-00071 prog_start.slope.profile
   // G261 without #CONTOUR MODE PATH_DEV: the channel's radius (NCSIM-CHAN-620, default the
   // manual's 1 mm; docs/planner.md "Tolerance balls").
@@ -687,6 +688,11 @@ std::uint64_t Interpreter::Impl::state_fingerprint(std::size_t& cost) const {
                  (std::uint64_t{m.cs_active} << 2) | (std::uint64_t{m.kinematics_on} << 1) |
                  std::uint64_t{m.caxtrack});
   h = mix(h, bits(m.transvelmin));
+  h = mix(h, (static_cast<std::uint64_t>(m.trc.side) << 16) |
+                 (static_cast<std::uint64_t>(m.trc.corner) << 8) |
+                 static_cast<std::uint64_t>(m.trc.approach));
+  h = mix(h, bits(m.trc.radius));
+  h = mix(h, bits(d_number));
   h = mix(h, files.size());
   // offsets, scaling and path limits (interpreter_offsets.cpp)
   h = mix(h, (std::uint64_t{zero_group} << 8) | (std::uint64_t{mcs_on} << 2) |
@@ -841,12 +847,30 @@ std::optional<Command> Interpreter::next() {
                            std::to_string(open_barrier_->line) +
                            " is not answered; call resume() first");
   }
-  while (s.pending.empty()) {
-    if (s.finished || !s.step()) break;
-  }
-  if (!s.pending.empty()) {
-    Command c = std::move(s.pending.front());
+  // The decoded commands pass through the tool radius compensation (interp/trc.hpp), which
+  // holds a plane motion until the next one closes its corner.
+  while (s.trc_out.empty()) {
+    while (s.pending.empty()) {
+      if (s.finished || !s.step()) break;
+    }
+    if (s.pending.empty()) {
+      if (!s.error) s.trc_filter.finish(s.trc_out);
+      break;
+    }
+    Command raw = std::move(s.pending.front());
     s.pending.pop_front();
+    if (auto e = s.trc_filter.push(std::move(raw), s.trc_out)) {
+      s.error = core::Diagnostic{core::Severity::error, file_name(e->file),
+                                 core::SourceLoc{e->line, 1}, e->id, e->message};
+      s.error_reported = false;
+      s.finished = true;
+      s.pending.clear();
+      break;
+    }
+  }
+  if (!s.trc_out.empty()) {
+    Command c = std::move(s.trc_out.front());
+    s.trc_out.pop_front();
     if (std::holds_alternative<Barrier>(c.body)) open_barrier_ = c;
     return c;
   }

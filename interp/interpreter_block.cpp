@@ -170,7 +170,7 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
   if (!run_assignments(b)) return false;
   BlockWords& bw = block_words;  // reused: its vectors keep their capacity across blocks
   bw.clear();
-  if (!read_g_codes(b, bw) || !read_addresses(b, bw)) return false;
+  if (!read_g_codes(b, bw) || !read_addresses(b, bw) || !update_trc(bw)) return false;
   if (bw.g74 && !check_homing(b, bw)) return false;  // --- static-saw: before S is emitted
   for (const Tech& t : bw.tech)
     emit(line, t);
@@ -267,12 +267,15 @@ bool Interpreter::Impl::read_g_codes(const ast::Block& b, BlockWords& bw) {
         modal.transition = Transition::decel_after_end;
         break;
       case 17:
+        if (!plane_change_allowed(w.loc, Plane::xy)) return false;
         modal.plane = Plane::xy;
         break;
       case 18:
+        if (!plane_change_allowed(w.loc, Plane::zx)) return false;
         modal.plane = Plane::zx;
         break;
       case 19:
+        if (!plane_change_allowed(w.loc, Plane::yz)) return false;
         modal.plane = Plane::yz;
         break;
       case 60:
@@ -369,6 +372,15 @@ bool Interpreter::Impl::read_g_codes(const ast::Block& b, BlockWords& bw) {
       case 162:
         centre_absolute = false;
         break;
+      case 25:
+      case 26:
+      case 40:
+      case 41:
+      case 42:
+      case 138:
+      case 139:
+        if (!trc_g_code(w, bw)) return false;  // interpreter_trc.cpp
+        break;
       case 163:
       case 164:
       case 165:
@@ -463,6 +475,8 @@ bool Interpreter::Impl::read_addresses(const ast::Block& b, BlockWords& bw) {
         break;
       case ast::WordKind::d:
         bw.tech.push_back(Tech{TechKind::d, *v, {}});
+        bw.d_word = *v;  // the tool for TRC (interpreter_trc.cpp)
+        bw.d_loc = w.loc;
         break;
       case ast::WordKind::h:
       case ast::WordKind::m: {

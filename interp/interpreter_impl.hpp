@@ -13,6 +13,7 @@
 #include "core/number_text.hpp"
 #include "grammar/keywords.hpp"
 #include "interp/interpreter.hpp"
+#include "interp/trc.hpp"
 #include "machines/kinematics.hpp"
 #include "machines/param_table.hpp"
 
@@ -176,6 +177,10 @@ struct Interpreter::Impl {
     std::vector<Tech> tech;
     std::optional<int> program_m;                             ///< M00/M01/M02/M30/M17/M29
     std::vector<std::pair<std::uint8_t, double>> axis_words;  ///< machine index, value
+    std::optional<TrcSide> trc_side;                          ///< G40/G41/G42 in this block
+    core::SourceLoc trc_loc;                                  ///< where that G code stands
+    std::optional<double> d_word;                             ///< D in this block
+    core::SourceLoc d_loc;
     void clear() {
       motion_word.reset();
       g04 = g74 = g92 = g60 = g61 = g09 = weights_axes = false;
@@ -188,6 +193,8 @@ struct Interpreter::Impl {
       tech.clear();
       program_m.reset();
       axis_words.clear();
+      trc_side.reset();
+      d_word.reset();
     }
   };
   BlockWords block_words;               // run_words' scratch (one block at a time)
@@ -198,6 +205,15 @@ struct Interpreter::Impl {
   /// The additional value of M/H word `w` (`M200=1200`), nullopt if none; NC4032 if it is not
   /// a whole number or its function takes none.
   bool additional_value(const ast::Block& b, const ast::Word& w, std::optional<double>& out);
+  // --- tool radius compensation (interpreter_trc.cpp, docs/trc.md)
+  bool trc_g_code(const ast::Word& w, BlockWords& bw);      // G25/G26/G40/G41/G42/G138/G139
+  bool plane_change_allowed(core::SourceLoc at, Plane to);  // 20133 while TRC is active
+  bool update_trc(const BlockWords& bw);                    // D and G40/G41/G42 of the block
+  std::optional<double> tool_radius(core::SourceLoc at);    // of the D in force
+  std::optional<double> d_number;                           // the D in force (none: D0)
+  core::SourceLoc d_loc;                                    // where it was programmed
+  trc::Compensator trc_filter;  // between pending and the consumer (Interpreter::next)
+  std::deque<Command> trc_out;  // commands the filter released
   bool run_dwell(const ast::Block& b, const BlockWords& bw);     // G04
   void run_homing(const BlockWords& bw);                         // G74
   bool check_homing(const ast::Block& b, const BlockWords& bw);  // --- static-saw: own file

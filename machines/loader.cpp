@@ -318,6 +318,7 @@ struct MachineIndex {
   std::optional<IndexEntry> channel;
   std::vector<IndexEntry> axes;
   std::optional<IndexEntry> zero;  ///< `zero <file>`: the zero-offset list (P-ZERO)
+  std::optional<IndexEntry> tools;  // `tools <file>`: the tool list (docs/trc.md)
 };
 
 std::vector<std::string> split_words(std::string_view line) {
@@ -370,9 +371,16 @@ MachineIndex read_index(const core::SourceFile& file, const std::filesystem::pat
         continue;
       }
       index.axes.push_back(IndexEntry{w[1], dir / w[2], loc});
+    } else if (w[0] == "tools" && w.size() == 2) {
+      if (index.tools) {
+        error(line, "second 'tools' line; first on line " + std::to_string(index.tools->loc.line));
+      } else {
+        index.tools = IndexEntry{"", dir / w[1], loc};
+      }
     } else {
       error(line,
-            "expected 'name <text>', 'channel <file>', 'axis <name> <file>' or 'zero <file>', "
+            "expected 'name <text>', 'channel <file>', 'axis <name> <file>', 'zero <file>' or "
+            "'tools <file>', "
             "found '" +
                 std::string(file.line_text(line)) + "'");
     }
@@ -644,6 +652,13 @@ LoadResult load_machine(const std::filesystem::path& dir) {
         if (zero_values.number(inactive) != 0.0) continue;
         z.offsets[group][axis] = zero_values.internal(e->key);
       }
+    }
+  }
+
+  if (index.tools) {
+    if (auto src =
+            load_source(index.tools->file, index_name, index.tools->loc, result.diagnostics)) {
+      machine.tools = read_tool_list(*src, result.diagnostics);
     }
   }
 

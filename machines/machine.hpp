@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "machines/frame.hpp"
+#include "machines/tool_table.hpp"
 
 namespace ncsim::machines {
 
@@ -247,6 +248,7 @@ struct Machine {
   ChannelParams channel;
   std::vector<AxisParams> axes;  ///< machine order: as listed in machine.lis
   ZeroOffsets zero_offsets;      ///< the `zero` list of machine.lis; empty when none
+  ToolTable tools;  ///< the `tools <file>` list of machine.lis; empty without one (docs/trc.md)
 
   /// The axis a program addresses by `program_name` (X, Y, Z, C, S1 ...). A spindle whose list
   /// name is "S" also answers to "S1" and vice versa (ncsim decision: the first spindle).

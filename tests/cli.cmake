@@ -38,3 +38,7 @@ add_test(NAME cli_robust_files_test
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/robust_files_test.sh $<TARGET_FILE:ncsim>
                  ${CMAKE_CURRENT_SOURCE_DIR}/cli)
 set_tests_properties(cli_robust_files_test PROPERTIES TIMEOUT 600)
+# --- tool radius compensation (issue 33 item 6): check's positioned errors, trace (docs/trc.md)
+add_test(NAME cli_trc_test
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/trc_test.sh $<TARGET_FILE:ncsim>
+                 ${CMAKE_CURRENT_SOURCE_DIR}/cli)
