@@ -32,6 +32,9 @@ struct ProgramOptions {
   std::vector<std::string> external;                 ///< --ve NAME=value (V.E. variables)
   std::vector<std::filesystem::path> cycle_dirs;     ///< --cycles DIR (cycle files, in order)
   std::string missing_cycles = "error";              ///< --missing-cycles error|skip
+  /// --max-time S (time, run, report): the run stops at S seconds of machine time like a
+  /// scenario's `[stop] time` (the earlier of both); for programs that run endlessly
+  std::optional<double> max_time;
 };
 
 /// The interpreter options `--cycles` and `--missing-cycles` give (interp::Options).

@@ -109,6 +109,12 @@ std::variant<Loaded, int> load(const ProgramOptions& options,
   interp::Options interp_options;
   apply_cycle_options(options, interp_options);
   auto& s = std::get<std::optional<scenario::Scenario>>(scenario);
+  // --max-time: the scenario's [stop] time, the earlier of both; without a scenario one that
+  // holds only this condition (its file name empty: printed as --max-time).
+  if (options.max_time) {
+    if (!s) s.emplace();
+    if (!s->stop.time || *s->stop.time > *options.max_time) s->stop.time = *options.max_time;
+  }
   if (s) {
     for (const scenario::VeInitial& v : s->ve)
       interp_options.external.emplace(v.name, v.value);
@@ -370,6 +376,11 @@ void json_string(std::ostream& os, const std::string& s) {
 }
 
 // Why a run ended (docs/scenario.md "[stop]"): an error, the scenario's [stop], or the end.
+// What set the stop condition: "scenario 'f.toml'", or "--max-time" for the one the option made.
+std::string stop_source(const scenario::Scenario& s) {
+  return s.file.empty() ? std::string("--max-time") : "scenario '" + s.file + "'";
+}
+
 std::string stop_reason(bool failed, const ipo::Channel& ch) {
   if (failed) return std::string(scenario::to_string(scenario::StopReason::error));
   if (const auto& s = ch.scenario_stop()) return std::string(scenario::to_string(*s));
@@ -505,8 +516,8 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
     out << '\n';
     spooled = !cycles || rows->finish(cycles->finish(), out);  // --- line
     if (const auto& stop = channel.scenario_stop())
-      out << "stop: " << scenario::to_string(*stop) << " (scenario '" << in.scenario->file
-          << "') at " << seconds(r.total) << " s\n";
+      out << "stop: " << scenario::to_string(*stop) << " (" << stop_source(*in.scenario) << ") at "
+          << seconds(r.total) << " s\n";
   }
   if (!spooled) {  // --- line
     err << "ncsim: error: cannot read back the workpiece rows' temporary file\n";
@@ -814,8 +825,8 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
       error_text += "ncsim: note: " + note + "\n";
     }
   } else if (const auto& stop = channel.scenario_stop()) {
-    err << "ncsim: run stopped by the scenario ('" << in.scenario->file
-        << "'): " << scenario::to_string(*stop) << " at t=" << seconds(channel.cycle().t) << " s\n";
+    err << "ncsim: run stopped (" << stop_source(*in.scenario)
+        << "): " << scenario::to_string(*stop) << " at t=" << seconds(channel.cycle().t) << " s\n";
   }
   // The closing comment: why the run ended (program end, error, stop.time, ...), when it did
   // (not after a write error, which ends the loop early).
@@ -975,6 +986,10 @@ void add_run_program_options(CLI::App& cmd, ProgramOptions& program) {
                  "Scenario TOML file (docs/scenario.md); default: the program folder's "
                  "scenario.toml");
   add_cycle_options(cmd, program);
+  cmd.add_option("--max-time", program.max_time,
+                 "Stop the run after S seconds of machine time (an endless production loop), "
+                 "like a scenario's [stop] time; the reason is printed")
+      ->check(CLI::Range(1e-6, 1e9));
 }
 
 void add_cycle_options(CLI::App& cmd, ProgramOptions& program) {

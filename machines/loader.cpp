@@ -317,7 +317,7 @@ struct MachineIndex {
   std::string name;
   std::optional<IndexEntry> channel;
   std::vector<IndexEntry> axes;
-  std::optional<IndexEntry> zero;  ///< `zero <file>`: the zero-offset list (P-ZERO)
+  std::optional<IndexEntry> zero;   ///< `zero <file>`: the zero-offset list (P-ZERO)
   std::optional<IndexEntry> tools;  // `tools <file>`: the tool list (docs/trc.md)
 };
 

@@ -110,7 +110,7 @@ expect "time reports a [stop] time with its reason, status 0" 0 \
 expect "time --json names the stop" 0 '"stop":"stop\.time"' '' -- \
   time "$fixtures/ve_branch.nc" --scenario "$fixtures/scenario_stop.toml" --json
 expect "run closes the CSV with the stop reason" 0 '^# stop: stop\.time$' \
-  'stopped by the scenario.*stop\.time at t=0\.25 s' -- \
+  'run stopped \(scenario .*stop\.time at t=0\.25 s' -- \
   run "$fixtures/ve_branch.nc" --scenario "$fixtures/scenario_stop.toml" -o -
 printf '[ve]\nSEL = 0\n[[event]]\nat = 0.2\nfeed_hold = true\n' >"$work/hold_forever.toml"
 expect "a hold nothing releases ends the run with NC6301 instead of hanging, status 1" 1 \

@@ -56,4 +56,20 @@ else
   grep '^# tech' "$work/job.csv" | head -3
   echo "$last"
 fi
+# --max-time ends a program that runs endlessly, with the reason (issue 33 item 9).
+cat >"$work/endless.nc" <<'NC'
+%endless
+$WHILE 1
+  G01 X10 F6000
+  G01 X0
+$ENDWHILE
+M30
+NC
+expect "check calls it endless" 0 'runs endlessly' '' -- check "$work/endless.nc"
+expect "time --max-time 2 stops at 2 s and says why" 0 'stop: stop\.time \(--max-time\) at 2 s' '' -- \
+  time --max-time 2 "$work/endless.nc"
+expect "run --max-time 1 closes its CSV with the reason" 0 '' 'run stopped \(--max-time\)' -- \
+  run --max-time 1 -o "$work/endless.csv" "$work/endless.nc"
+expect "--max-time takes a positive number of seconds" 2 '' 'max-time' -- \
+  time --max-time 0 "$work/endless.nc"
 summary cycles_test
