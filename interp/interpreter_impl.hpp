@@ -146,7 +146,7 @@ struct Interpreter::Impl {
   double zero_offset(std::uint8_t axis) const;  // the active offset of `axis` [mm | deg]
   double scale_of(std::uint8_t axis) const;     // its #SCALE factor (1 when off)
   bool select_zero_offset(const ast::Block& b, const ast::Word& w);  // G53..G59, G159=n
-  bool check_offsets_frame(const ast::Block& b, AxisMask programmed) const;
+  bool check_offsets_frame(const ast::Block& b, AxisMask programmed);
   bool hash_scale(const ast::Block& b, const ast::HashCommand& h);
   bool hash_mcs(const ast::Block& b, const ast::HashCommand& h);
   bool hash_hsc(const ast::Block& b, const ast::HashCommand& h);
@@ -157,7 +157,7 @@ struct Interpreter::Impl {
   /// #SCALE on an arc: I/J/K and R scaled by the plane's factor, which must be the same for
   /// both plane axes (NC4312; an arc does not scale into an ellipse).
   bool scale_arc(const ast::Block& b, std::array<std::optional<double>, 3>& ijk,
-                 std::optional<double>& radius) const;
+                 std::optional<double>& radius);
   bool subroutine_return();
   bool find_main_start(ProgramFile& pf, std::uint16_t index);
   bool fail(core::SourceLoc loc, std::string id, std::string message);

@@ -87,7 +87,7 @@ bool Interpreter::Impl::select_zero_offset(const ast::Block& b, const ast::Word&
   return true;
 }
 
-bool Interpreter::Impl::check_offsets_frame(const ast::Block& b, AxisMask programmed) const {
+bool Interpreter::Impl::check_offsets_frame(const ast::Block& b, AxisMask programmed) {
   // The zero offset shifts the axes; under a #CS frame or #TRAFO the programmed coordinates are
   // not axis values, so the shift would need the chain below them, which ncsim does not model.
   if (mcs_on || (cs.active_count() == 0 && !modal.kinematics_on && !modal.synchronised))
@@ -95,11 +95,10 @@ bool Interpreter::Impl::check_offsets_frame(const ast::Block& b, AxisMask progra
   for (std::size_t i = 0; i < machine.axes.size() && i < kMaxAxes; ++i) {
     if (((programmed >> i) & 1u) == 0) continue;
     if (zero_offset(static_cast<std::uint8_t>(i)) != 0.0) {
-      const_cast<Impl*>(this)->fail(b.loc, "NC4102",
-                                    "not supported: a zero offset (G" +
-                                        std::to_string(53 + std::min<std::size_t>(zero_group, 6)) +
-                                        ") of axis " + machine.axes[i].name +
-                                        " together with #CS, #TRAFO or #SYNC IN; select G53 first");
+      fail(b.loc, "NC4102",
+           "not supported: a zero offset (G" +
+               std::to_string(53 + std::min<std::size_t>(zero_group, 6)) + ") of axis " +
+               machine.axes[i].name + " together with #CS, #TRAFO or #SYNC IN; select G53 first");
       return false;
     }
   }
@@ -111,16 +110,15 @@ double Interpreter::Impl::scale_of(std::uint8_t axis) const {
 }
 
 bool Interpreter::Impl::scale_arc(const ast::Block& b, std::array<std::optional<double>, 3>& ijk,
-                                  std::optional<double>& radius) const {
+                                  std::optional<double>& radius) {
   const std::size_t p1 = modal.plane == Plane::yz ? 1 : modal.plane == Plane::zx ? 2 : 0;
   const std::size_t p2 = modal.plane == Plane::yz ? 2 : modal.plane == Plane::zx ? 0 : 1;
   const double f1 = xyz[p1] ? scale_of(*xyz[p1]) : 1.0;
   const double f2 = xyz[p2] ? scale_of(*xyz[p2]) : 1.0;
   if (f1 != f2) {
-    const_cast<Impl*>(this)->fail(b.loc, "NC4312",
-                                  "#SCALE: an arc needs the same factor on both plane axes (" +
-                                      core::number_text(f1) + " and " + core::number_text(f2) +
-                                      ")");
+    fail(b.loc, "NC4312",
+         "#SCALE: an arc needs the same factor on both plane axes (" + core::number_text(f1) +
+             " and " + core::number_text(f2) + ")");
     return false;
   }
   for (std::size_t k = 0; k < 3; ++k)
