@@ -153,7 +153,11 @@ struct Interpreter::Impl {
   bool hash_vector_limit(const ast::Block& b, const ast::HashCommand& h);
   bool hash_accepted(const ast::Block& b);
   std::array<double, kMaxAxes> pset_offsets{};  // #PSET: program = machine - zero - this [mm]
-  bool hash_pset(const ast::Block& b, const ast::HashCommand& h);  // #PSET X200 (no motion)
+  bool hash_pset(const ast::Block& b, const ast::HashCommand& h);
+  /// An `X<value>` item of #SCALE / #PSET: its machine axis and value (NC4103 for an axis the
+  /// machine does not have).
+  std::optional<double> axis_item(const ast::Block& b, const ast::Item& it, const char* command,
+                                  std::uint8_t& axis);  // #PSET X200 (no motion)
   /// #SCALE on an arc: I/J/K and R scaled by the plane's factor, which must be the same for
   /// both plane axes (NC4312; an arc does not scale into an ellipse).
   bool scale_arc(const ast::Block& b, std::array<std::optional<double>, 3>& ijk,

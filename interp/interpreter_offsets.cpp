@@ -36,6 +36,19 @@ double Interpreter::Impl::zero_offset(std::uint8_t axis) const {
          vars.global_element("NP.V." + grammar::to_upper(machine.axes[axis].name), zero_group);
 }
 
+std::optional<double> Interpreter::Impl::axis_item(const ast::Block& b, const ast::Item& it,
+                                                   const char* command, std::uint8_t& axis) {
+  const auto index = axis_index(it.keyword);
+  if (!index) {
+    fail(it.loc, "NC4103",
+         std::string(command) + ": axis " + std::string(it.keyword) +
+             " does not exist on machine " + machine.name);
+    return std::nullopt;
+  }
+  axis = *index;
+  return eval(b, it.value);
+}
+
 bool Interpreter::Impl::hash_pset(const ast::Block& b, const ast::HashCommand& h) {
   // PROG-207101835: the axis's actual position becomes the programmed value (absolute, in the
   // program's unit); no motion; other axes keep their preset; G74 homing deselects it.
@@ -46,24 +59,19 @@ bool Interpreter::Impl::hash_pset(const ast::Block& b, const ast::HashCommand& h
   }
   for (std::uint32_t k = 0; k < h.item_count; ++k) {
     const ast::Item& it = b.items[k];
-    const auto axis = axis_index(it.keyword);
-    if (!axis) {
-      return fail(
-          it.loc, "NC4103",
-          "#PSET: axis " + std::string(it.keyword) + " does not exist on machine " + machine.name);
-    }
-    auto v = eval(b, it.value);
+    std::uint8_t axis = 0;
+    auto v = axis_item(b, it, "#PSET", axis);
     if (!v) return false;
-    if ((unknown_axes >> *axis) & 1u) {
+    if ((unknown_axes >> axis) & 1u) {
       return fail(it.loc, "NC4102",
                   "not supported: #PSET of axis " + std::string(it.keyword) +
                       " while its position is known only at run time");
     }
-    const bool rotary = machine.axes[*axis].kind == machines::AxisKind::rotary;
+    const bool rotary = machine.axes[axis].kind == machines::AxisKind::rotary;
     const double value = *v * (rotary || !modal.inch ? 1.0 : 25.4);
     // Keep the machine position: position = value + zero offset (with the new preset).
-    pset_offsets[*axis] = 0.0;
-    pset_offsets[*axis] = position[*axis] - value - zero_offset(*axis);
+    pset_offsets[axis] = 0.0;
+    pset_offsets[axis] = position[axis] - value - zero_offset(axis);
   }
   return true;
 }
@@ -134,25 +142,20 @@ bool Interpreter::Impl::hash_scale(const ast::Block& b, const ast::HashCommand& 
   }
   for (std::uint32_t k = 0; k < h.item_count; ++k) {
     const ast::Item& it = b.items[k];
-    const auto axis = axis_index(it.keyword);
-    if (!axis) {
-      return fail(
-          it.loc, "NC4103",
-          "#SCALE: axis " + std::string(it.keyword) + " does not exist on machine " + machine.name);
-    }
-    auto v = eval(b, it.value);
+    std::uint8_t axis = 0;
+    auto v = axis_item(b, it, "#SCALE", axis);
     if (!v) return false;
     if (!(*v > 0.0) || !std::isfinite(*v)) {  // PROG-207656459: "The factor must be > 0"
       return fail(it.loc, "NC4312",
                   "#SCALE factor of " + std::string(it.keyword) + " must be > 0, got " +
                       core::number_text(*v));
     }
-    if (scale_on && scale_factors[*axis] != *v) {  // "Modifying ... while active: an error"
+    if (scale_on && scale_factors[axis] != *v) {  // "Modifying ... while active: an error"
       return fail(it.loc, "NC4312",
                   "#SCALE: the factor of " + std::string(it.keyword) +
                       " cannot change while scaling is active (#SCALE OFF first)");
     }
-    scale_factors[*axis] = *v;
+    scale_factors[axis] = *v;
   }
   scale_on = true;
   return true;

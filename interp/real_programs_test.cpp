@@ -40,27 +40,10 @@ machines::Machine cycle_machine() {
   return m;
 }
 
-/// Interprets `file` on `m`: trace lines, the error, and each warning as a line "warning <id>".
+/// Interprets `file` on `m`, each warning as a line "warning <id>" after the commands.
 test::Run run_source(const machines::Machine& m, const core::SourceFile& file,
                      Options options = {}) {
-  Interpreter interp(file, m, std::move(options));
-  test::Run r;
-  while (r.lines.size() < 1000) {
-    auto c = interp.next_decode_only();
-    if (!c) break;
-    r.full.push_back(to_trace_line(*c, m));
-    const std::size_t suffix =
-        std::holds_alternative<Motion>(c->body) ? r.full.back().find(" frame=") : std::string::npos;
-    r.lines.push_back(r.full.back().substr(0, suffix));
-  }
-  if (const auto* e = interp.error()) {
-    r.error_id = e->id;
-    r.error_line = e->loc.line;
-    r.error_message = e->message;
-  }
-  for (const auto& d : interp.diagnostics().items())
-    if (d.severity == core::Severity::warning) r.lines.push_back("warning " + d.id);
-  return r;
+  return test::run_on_machine(file, m, std::move(options), 1000, true);
 }
 
 test::Run run_on(const machines::Machine& m, const fs::path& program, Options options = {}) {

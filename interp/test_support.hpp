@@ -38,12 +38,13 @@ struct Run {
   std::string error_message;
 };
 
-/// Interprets `file` on a bundled machine: trace lines of up to `max_commands` commands, and
-/// the error that ended the stream.
-inline Run run_file(const core::SourceFile& file, const std::string& machine_name = "portal_3x",
-                    Options options = {}, std::size_t max_commands = 10000) {
-  const machines::Machine& m = machine(machine_name);
-  Interpreter interp(file, m, options);
+/// Interprets `file` on machine `m`: trace lines of up to `max_commands` commands, and the
+/// error that ended the stream; with `warnings`, each warning as a line "warning <id>" after
+/// the commands.
+inline Run run_on_machine(const core::SourceFile& file, const machines::Machine& m,
+                          Options options = {}, std::size_t max_commands = 10000,
+                          bool warnings = false) {
+  Interpreter interp(file, m, std::move(options));
   Run r;
   while (r.lines.size() < max_commands) {
     auto c = interp.next_decode_only();
@@ -58,7 +59,17 @@ inline Run run_file(const core::SourceFile& file, const std::string& machine_nam
     r.error_line = e->loc.line;
     r.error_message = e->message;
   }
+  if (warnings) {
+    for (const auto& d : interp.diagnostics().items())
+      if (d.severity == core::Severity::warning) r.lines.push_back("warning " + d.id);
+  }
   return r;
+}
+
+/// Interprets `file` on a bundled machine (run_on_machine).
+inline Run run_file(const core::SourceFile& file, const std::string& machine_name = "portal_3x",
+                    Options options = {}, std::size_t max_commands = 10000) {
+  return run_on_machine(file, machine(machine_name), std::move(options), max_commands);
 }
 
 /// run_file() of a program given as text (file name "test.nc").
