@@ -367,6 +367,9 @@ bool Interpreter::Impl::read_addresses(const ast::Block& b, BlockWords& bw) {
                   " F" + core::number_text(*v) + " must be greater than 0");
         }
         if (modal.feed_mode == FeedMode::inverse_time) {
+          if (!(*v <= core::kLongestTime)) {
+            return fail(w.loc, "NC4032", longest_time_text("G93 block time", *v));
+          }
           bw.block_time = *v;  // G93: seconds (PROG-206602507)
         } else {
           feed = *v * unit / 60.0;  // mm/min -> mm/s (PROG-206811147)
@@ -447,8 +450,9 @@ bool Interpreter::Impl::run_dwell(const ast::Block& b, const BlockWords& bw) {
   }
   if (!t) return fail(b.loc, "20013", "G04 without a dwell time");
   if (*t < 0.0) return fail(b.loc, "20013", "negative dwell time");
+  if (!(*t <= core::kLongestTime)) return fail(b.loc, "20752", longest_time_text("dwell", *t));
   emit(line, Dwell{*t});
-  blocks_without_motion = 0;
+  if (*t > 0.0) blocks_without_motion = 0;  // a 0 s dwell passes no time
   return true;
 }
 
@@ -500,6 +504,9 @@ bool Interpreter::Impl::run_program_m(const ast::Block& b, int code) {
                  " while synchronised with the conveyor: the coupling stays for a following "
                  "program (seed 004 §2.1.1.2); #SYNC OUT first to end decoupled");
       }
+      // An open spline section ends with the program as at #SPLINE OFF: its last points run,
+      // never dropped (issue 34 item 5; docs/interp.md "Splines").
+      if (spline && (code == 2 || code == 30) && !spline_off(b.loc)) return false;
       emit(line, End{code});
       finished = true;
       break;
