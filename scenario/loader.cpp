@@ -241,7 +241,7 @@ class Reader : public ReaderBase {
         if (const auto v = integer(node, item, 1.0, kLineMax))
           pass = static_cast<std::uint32_t>(*v);
       } else if (name == "override") {
-        if (const auto v = number(node, item, 0.0, kOverrideMaxPercent, "%")) {
+        if (const auto v = percent(node, item)) {
           path_override = *v / 100.0;
         }
       } else if (name == "axis_override") {
