@@ -7,6 +7,7 @@
 
 #include <array>
 #include <charconv>
+#include <cmath>
 #include <string>
 
 #include "core/number_text.hpp"
@@ -18,6 +19,12 @@ inline std::string num(double v) {
   std::array<char, 32> buf{};
   const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
   return std::string(buf.data(), r.ptr);
+}
+
+/// A number in --json: num(), or `null` where `v` is not finite: JSON has no NaN or infinity
+/// (issue 34 item 11: a NaN that got through was written as `-nan`, invalid JSON).
+inline std::string json_num(double v) {
+  return std::isfinite(v) ? num(v) : std::string("null");
 }
 
 /// Text of `v` for people: 6 significant digits.

@@ -135,3 +135,13 @@ TEST_CASE("num: seeded random doubles of every kind read back bit for bit, short
   CHECK(subnormals == 20000);
   CHECK(negatives > 9000);
 }
+
+TEST_CASE("json_num: a number that is not finite is null, never nan or inf") {
+  // issue 34 item 11: `time --json` wrote -nan
+  CHECK(ncsim::cli::json_num(std::nan("")) == "null");
+  CHECK(ncsim::cli::json_num(-std::nan("")) == "null");
+  CHECK(ncsim::cli::json_num(HUGE_VAL) == "null");
+  CHECK(ncsim::cli::json_num(-HUGE_VAL) == "null");
+  CHECK(ncsim::cli::json_num(0.1) == "0.1");
+  CHECK(ncsim::cli::json_num(-2.5e-300) == ncsim::cli::num(-2.5e-300));
+}

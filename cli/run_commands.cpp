@@ -164,7 +164,23 @@ std::string diagnostic_text(const Loaded& in, const interp::Interpreter& interp,
   const core::Diagnostic* d = src.error();
   if (d == nullptr) d = interp.error();
   if (d == nullptr) return "ncsim: error: " + fallback + "\n";
-  std::string text = d->file == in.file.name() ? core::format(*d, in.file) : core::format(*d);
+  std::string text;
+  if (d->file == in.file.name()) {
+    text = core::format(*d, in.file);
+  } else {
+    // A subroutine file's block is echoed too (the interpreter's files 1, 2, ... in call order;
+    // file_name() throws std::out_of_range past the last).
+    text = core::format(*d);
+    try {
+      for (std::uint16_t f = 1; f != 0; ++f) {
+        if (interp.file_name(f) == d->file) {
+          text = core::format(*d, interp.source_file(f));
+          break;
+        }
+      }
+    } catch (const std::out_of_range&) {
+    }
+  }
   // A subroutine file's syntax errors (NC4306 stands at the call): each with its own position,
   // after the error that ended the run, as `check` lists them (issue 34).
   for (const core::Diagnostic& e : interp.diagnostics().items()) {
@@ -388,9 +404,9 @@ std::string stop_reason(bool failed, const ipo::Channel& ch) {
 }
 
 void json_split(std::ostream& os, const ipo::TimeSplit& s) {
-  os << "{\"rapid\":" << num(s.rapid) << ",\"feed\":" << num(s.feed)
-     << ",\"dwell\":" << num(s.dwell) << ",\"exact_stop\":" << num(s.exact_stop)
-     << ",\"waiting\":" << num(s.starved) << ",\"held\":" << num(s.held) << '}';
+  os << "{\"rapid\":" << json_num(s.rapid) << ",\"feed\":" << json_num(s.feed)
+     << ",\"dwell\":" << json_num(s.dwell) << ",\"exact_stop\":" << json_num(s.exact_stop)
+     << ",\"waiting\":" << json_num(s.starved) << ",\"held\":" << json_num(s.held) << '}';
 }
 
 }  // namespace
@@ -402,13 +418,14 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
 
   interp::Interpreter interp(in.file, in.machine, in.interp);
   ipo::ProgramSource src(interp, in.machine, in.t_cycle);
+  src.refuse_beyond_soft_limits(true);  // check's NC4601 before the block moves (issue 34)
   bool first_block = true;
   if (options.json) {
     out << "{\"program\":";
     json_string(out, in.file.name());
     out << ",\"machine\":";
     json_string(out, in.machine.name);
-    out << ",\"cycle_s\":" << num(in.t_cycle);
+    out << ",\"cycle_s\":" << json_num(in.t_cycle);
     if (options.blocks) out << ",\"blocks\":[";
   } else if (options.blocks) {
     out << "# line time_s distance_mm feed_programmed_mm_min feed_reached_mm_min rapid_s feed_s "
@@ -422,11 +439,11 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
         out << ",\"file\":";
         json_string(out, interp.file_name(b.file));
       }
-      out << ",\"time_s\":" << num(b.time) << ",\"distance_mm\":" << num(b.distance)
-          << ",\"feed_programmed_mm_min\":" << num(b.feed_programmed * 60.0)
-          << ",\"feed_reached_mm_min\":" << num(b.feed_reached * 60.0);
-      if (b.feed_cap > 0.0) out << ",\"feed_cap_mm_min\":" << num(b.feed_cap * 60.0);
-      out << ",\"lost_s\":" << num(b.lost) << ",\"split_s\":";
+      out << ",\"time_s\":" << json_num(b.time) << ",\"distance_mm\":" << json_num(b.distance)
+          << ",\"feed_programmed_mm_min\":" << json_num(b.feed_programmed * 60.0)
+          << ",\"feed_reached_mm_min\":" << json_num(b.feed_reached * 60.0);
+      if (b.feed_cap > 0.0) out << ",\"feed_cap_mm_min\":" << json_num(b.feed_cap * 60.0);
+      out << ",\"lost_s\":" << json_num(b.lost) << ",\"split_s\":";
       json_split(out, b.split);
       out << '}';
     } else {
@@ -497,8 +514,8 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
       out << ",\"error\":";
       json_string(out, first_line(error_text));
     }
-    out << ",\"cycles\":" << r.cycles << ",\"total_s\":" << num(r.total)
-        << ",\"distance_mm\":" << num(r.distance) << ",\"lost_s\":" << num(r.lost)
+    out << ",\"cycles\":" << r.cycles << ",\"total_s\":" << json_num(r.total)
+        << ",\"distance_mm\":" << json_num(r.distance) << ",\"lost_s\":" << json_num(r.lost)
         << ",\"split_s\":";
     json_split(out, r.split);
     spooled = !cycles || rows->finish(cycles->finish(), out);  // --- line: before "stop"
@@ -739,6 +756,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
 
   interp::Interpreter interp(in.file, in.machine, in.interp);
   ipo::ProgramSource src(interp, in.machine, in.t_cycle);
+  src.refuse_beyond_soft_limits(true);  // check's NC4601 before the block moves (issue 34)
   ipo::ChannelConfig cfg = ipo::channel_config(in.machine, in.t_cycle);
   const std::vector<std::string> names = axis_names(in.machine);
   CsvSink csv(f, names.size(), options.every, options.detail);
@@ -933,6 +951,7 @@ LineOutcome run_line(const ProgramOptions& program, std::optional<std::uint64_t>
   if (run.conv_vel) in.interp.conv_vel = run.conv_vel;
   interp::Interpreter interp(in.file, in.machine, in.interp);
   ipo::ProgramSource src(interp, in.machine, in.t_cycle);
+  src.refuse_beyond_soft_limits(true);  // check's NC4601 before the block moves (issue 34)
   ipo::ChannelConfig cfg = ipo::channel_config(in.machine, in.t_cycle);
   std::unique_ptr<ipo::Audit> audit;
   if (run.audit) {

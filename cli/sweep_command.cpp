@@ -109,9 +109,10 @@ int run_sweep(const SweepOptions& o, std::ostream& out, std::ostream& err) {
         << "' must be LO:HI in mm/s with 0 <= LO < HI [" << kSweepRangeId << "]\n";
     return kExitUsage;
   }
-  if (!(o.tolerance > 0.0) || !std::isfinite(o.tolerance)) {
+  if (!(o.tolerance >= kSweepToleranceMin) || !std::isfinite(o.tolerance)) {
     err << "ncsim: error: sweep: --tolerance " << human(o.tolerance)
-        << " mm/s must be a positive number [" << kSweepToleranceId << "]\n";
+        << " mm/s must be a number >= " << human(kSweepToleranceMin) << " mm/s ["
+        << kSweepToleranceId << "]\n";
     return kExitUsage;
   }
   const unsigned grid = std::max(1u, o.grid);
@@ -157,8 +158,13 @@ int run_sweep(const SweepOptions& o, std::ostream& out, std::ostream& err) {
   while (std::isfinite(fail) && fail - best.v > o.tolerance) {
     ++round;
     std::vector<double> vs;
-    for (unsigned i = 1; i <= grid; ++i)
-      vs.push_back(best.v + (fail - best.v) * i / (grid + 1));
+    for (unsigned i = 1; i <= grid; ++i) {
+      const double v = best.v + (fail - best.v) * i / (grid + 1);
+      if (v > best.v && v < fail && (vs.empty() || v > vs.back())) vs.push_back(v);
+    }
+    // No double lies between the two any more (huge velocities): the interval cannot shrink,
+    // so the sweep ends rather than trying the same candidates again (issue 34 item 6).
+    if (vs.empty()) break;
     std::vector<Candidate> cs = evaluate_all(o, vs, jobs);
     for (const Candidate& c : cs)
       print(c, round, out);

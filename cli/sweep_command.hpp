@@ -46,8 +46,11 @@ namespace ncsim::cli {
 
 /// NC9120: --belt-velocity is not LO:HI with 0 <= LO < HI (both finite numbers, mm/s).
 inline constexpr const char* kSweepRangeId = "NC9120";
-/// NC9121: --tolerance is not a positive number.
+/// NC9121: --tolerance is not a number >= kSweepToleranceMin.
 inline constexpr const char* kSweepToleranceId = "NC9121";
+/// Smallest --tolerance [mm/s]: 1 um/s (docs/conveyor.md "The line's limits offline"); 1e-300
+/// never ended, the same candidate again and again (issue 34 item 6).
+inline constexpr double kSweepToleranceMin = 0.001;
 /// NC9122: the machine has no conveyor axis or its channel no conveyor tracking: nothing to sweep.
 inline constexpr const char* kSweepNoConveyorId = "NC9122";
 /// NC9123: an encoder belt whose scenario velocity at t = 0 is 0: nothing to scale.

@@ -86,16 +86,17 @@ TEST_CASE("a coordinate that overflows in inch conversion or G91 addition is NC4
   CHECK(inch.lines.empty());
   const auto centre = test::run("%t\nG70 G02 X0 Y0 I[10 ** 307] J0 F100\nM30\n");
   CHECK(centre.error_id == "NC4101");
-  const auto incremental = test::run("%t\nG01 X[10 ** 308] F100\nG91 G01 X[10 ** 308]\nM30\n");
+  // (G00: a G01 that far at F100 is NC4032 first, longer than a day)
+  const auto incremental = test::run("%t\nG00 X[10 ** 308]\nG91 G00 X[10 ** 308]\nM30\n");
   CHECK(incremental.error_id == "NC4101");
   CHECK(incremental.error_line == 3);
   REQUIRE(incremental.lines.size() == 1);
   const auto arc =
-      test::run("%t\nG01 X[10 ** 308] F100\nG02 X[-10 ** 308] Y0 I[-10 ** 308] J0\nM30\n");
+      test::run("%t\nG00 X[10 ** 308]\nG02 X[-10 ** 308] Y0 I[-10 ** 308] J0 F100\nM30\n");
   CHECK(arc.error_id == "NC4101");
   CHECK(arc.error_line == 3);
   // Large but representable values stay motions.
-  const auto large = test::run("%t\nG70 G01 X[10 ** 300] F100\nM30\n");
+  const auto large = test::run("%t\nG70 G00 X[10 ** 300]\nM30\n");
   CHECK(large.error_id.empty());
 }
 

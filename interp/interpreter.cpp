@@ -752,7 +752,8 @@ bool Interpreter::Impl::step() {
   current_file = pc.file;
   const ast::Block* block = fetch(pc);
   if (block == nullptr || (is_header(block) && pc.ordinal != unit_start)) {
-    if (!calls.empty()) return subroutine_return();  // the next % ends a subroutine
+    if (!calls.empty()) return subroutine_return();      // the next % ends a subroutine
+    if (spline && !spline_off({line, 1})) return false;  // as at M30 (interpreter_block.cpp)
     emit(line, End{0});
     finished = true;
     return true;

@@ -83,6 +83,9 @@ bool Interpreter::Impl::axis_indp(const ast::Block& b, const ast::AxisCommand& a
     return fail(ac.loc, "NC4030", "INDP FEED must be greater than 0");
   }
   if (*time && **time <= 0.0) return fail(ac.loc, "NC4030", "INDP TIME must be greater than 0");
+  if (*time && !(**time <= core::kLongestTime)) {
+    return fail(ac.loc, "NC4032", longest_time_text("INDP TIME", **time));
+  }
   if (*feed_value) c.feed = **feed_value / 60.0;  // mm/min -> mm/s (PROG-208612235)
   c.time = *time;
   c.interruptible = items.find("INTERRUPTIBLE") != nullptr;

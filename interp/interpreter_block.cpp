@@ -413,13 +413,13 @@ bool Interpreter::Impl::additional_value(const ast::Block& b, const ast::Word& w
   if (w.kind == ast::WordKind::m &&
       (m == 3 || m == 4 || m == 5 || m == 19 || (m >= 40 && m <= 45))) {
     return fail(
-        w.loc, "NC4032",
+        w.loc, "NC4033",
         "M" + std::to_string(m) + " takes no additional value (spindle and gear functions)");
   }
   auto v = eval(b, w.extra);
   if (!v) return false;
   if (!(std::abs(*v) <= 2147483647.0) || *v != std::trunc(*v)) {
-    return fail(b.exprs[w.extra].loc, "NC4032",
+    return fail(b.exprs[w.extra].loc, "NC4033",
                 "the additional value of " + name + core::number_text(*code) +
                     " must be a whole number in -2147483648..2147483647, not " +
                     core::number_text(*v));
@@ -452,6 +452,9 @@ bool Interpreter::Impl::read_addresses(const ast::Block& b, BlockWords& bw) {
                   " F" + core::number_text(*v) + " must be greater than 0");
         }
         if (modal.feed_mode == FeedMode::inverse_time) {
+          if (!(*v <= core::kLongestTime)) {
+            return fail(w.loc, "NC4032", longest_time_text("G93 block time", *v));
+          }
           bw.block_time = *v;  // G93: seconds (PROG-206602507)
         } else {
           // F in mm/min by default; P-CHAN-00108 sets another unit (F x 100 / factor mm/min)
@@ -537,8 +540,9 @@ bool Interpreter::Impl::run_dwell(const ast::Block& b, const BlockWords& bw) {
   }
   if (!t) return fail(b.loc, "20013", "G04 without a dwell time");
   if (*t < 0.0) return fail(b.loc, "20013", "negative dwell time");
+  if (!(*t <= core::kLongestTime)) return fail(b.loc, "20752", longest_time_text("dwell", *t));
   emit(line, Dwell{*t});
-  blocks_without_motion = 0;
+  if (*t > 0.0) blocks_without_motion = 0;  // a 0 s dwell passes no time
   return true;
 }
 
@@ -591,6 +595,9 @@ bool Interpreter::Impl::run_program_m(const ast::Block& b, int code) {
                  " while synchronised with the conveyor: the coupling stays for a following "
                  "program (seed 004 §2.1.1.2); #SYNC OUT first to end decoupled");
       }
+      // An open spline section ends with the program as at #SPLINE OFF: its last points run,
+      // never dropped (issue 34 item 5; docs/interp.md "Splines").
+      if (spline && (code == 2 || code == 30) && !spline_off(b.loc)) return false;
       emit(line, End{code});
       finished = true;
       break;

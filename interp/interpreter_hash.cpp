@@ -552,8 +552,9 @@ bool Interpreter::Impl::hash_time(const ast::Block& b, const ast::HashCommand& h
   auto v = item_value(b, &b.items[0]);
   if (!v) return false;
   if (*v < 0.0) return fail(h.loc, "20013", "negative dwell time");
+  if (!(*v <= core::kLongestTime)) return fail(h.loc, "20751", longest_time_text("dwell", *v));
   emit(line, Dwell{*v});
-  blocks_without_motion = 0;
+  if (*v > 0.0) blocks_without_motion = 0;  // a 0 s dwell passes no time
   return true;
 }
 

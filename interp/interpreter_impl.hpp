@@ -10,6 +10,7 @@
 #include <set>
 #include <string_view>
 
+#include "core/limits.hpp"
 #include "core/number_text.hpp"
 #include "grammar/keywords.hpp"
 #include "interp/interpreter.hpp"
@@ -83,6 +84,18 @@ struct GotoResult {
 /// Entries each memo of jump destinations holds at most; a full memo is cleared and refilled
 /// on demand, so memory does not grow with the program length.
 inline constexpr std::size_t kMaxMemoEntries = 1u << 16;
+
+/// Largest arc radius [mm] the interpreter accepts (NC4203; docs/interp.md "Arcs of a huge
+/// radius"): a centre 1e9 mm away is represented to 1.2e-7 mm.
+inline constexpr double kArcRadiusMax = 1e9;
+
+/// "<what> <seconds> s is longer than ncsim's longest time, 86400 s (one day)": the text of
+/// 20751 / 20752 / NC4032 (core/limits.hpp, docs/interp.md "The longest time").
+inline std::string longest_time_text(std::string_view what, double seconds) {
+  return std::string(what) + " " + core::number_text(seconds) +
+         " s is longer than ncsim's longest time, " + core::number_text(core::kLongestTime) +
+         " s (one day)";
+}
 
 struct CallFrame {
   Pc ret;
@@ -206,7 +219,7 @@ struct Interpreter::Impl {
   bool run_assignments(const ast::Block& b);
   bool read_g_codes(const ast::Block& b, BlockWords& bw);
   bool read_addresses(const ast::Block& b, BlockWords& bw);
-  /// The additional value of M/H word `w` (`M200=1200`), nullopt if none; NC4032 if it is not
+  /// The additional value of M/H word `w` (`M200=1200`), nullopt if none; NC4033 if it is not
   /// a whole number or its function takes none.
   bool additional_value(const ast::Block& b, const ast::Word& w, std::optional<double>& out);
   // --- tool radius compensation (interpreter_trc.cpp, docs/trc.md)

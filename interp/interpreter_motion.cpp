@@ -2,6 +2,7 @@
 // command in the current frame with its start (the re-based current position, see
 // interpreter_frames.cpp), arc centres from I/J/K or R, spline points.
 #include <cmath>
+#include <numbers>
 
 #include "interp/interpreter_impl.hpp"
 
@@ -158,10 +159,40 @@ bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const A
     if (!std::isfinite(c1) || !std::isfinite(c2) || !std::isfinite(r)) {
       return fail(b.loc, "NC4101", "circle centre or radius is not a finite number");
     }
+    // Beyond 1e9 mm the centre's coordinates keep less than 0.2 um (a double's ulp), and the
+    // arc is a straight line to far below that: refused, not run as a NaN or a full circle
+    // (issue 34 items 3, 4; docs/interp.md "Arcs of a huge radius").
+    if (r > kArcRadiusMax) {
+      return fail(b.loc, "NC4203",
+                  "circle radius " + core::number_text(r) + " mm is above ncsim's largest, " +
+                      core::number_text(kArcRadiusMax) +
+                      " mm: the centre cannot be represented to the micrometre; program a "
+                      "straight line (G01)");
+    }
     m.arc = Arc{c1, c2, a1, a2, r, full};
   }
+  if (kind != MotionKind::rapid && modal.feed_mode == FeedMode::per_minute && m.feed > 0.0) {
+    // The block's time at its feed, from a lower bound of its length (the X/Y/Z chord; a full
+    // circle's circumference): beyond ncsim's longest time it is an error here, as for a
+    // dwell, instead of a run of days (issue 34 item 19; docs/interp.md "The longest time").
+    double length = 0.0;  // [mm]
+    for (const auto& a : xyz) {
+      if (a) length = std::hypot(length, target[*a] - position[*a]);
+    }
+    if (m.arc && m.arc->full_circle) length = 2.0 * std::numbers::pi * m.arc->radius;
+    const double t_feed = length / m.feed;  // [s]
+    if (!(t_feed <= core::kLongestTime)) {
+      return fail(b.loc, "NC4032",
+                  longest_time_text("the motion time at F" + core::number_text(m.feed * 60.0) +
+                                        " (" + core::number_text(length) + " mm)",
+                                    t_feed));
+    }
+  }
+  // A zero-length G00/G01 moves nothing (the planner drops it), so it is no progress for
+  // NC4901 / NC4903: a loop of them would otherwise decode forever while the run stands
+  // (issue 34 item 2; docs/interp.md "Endless loops").
+  if (arc || target != position) blocks_without_motion = 0;
   position = target;
-  blocks_without_motion = 0;
   emit(line, std::move(m));
   return true;
 }

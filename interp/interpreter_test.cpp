@@ -313,6 +313,57 @@ TEST_CASE("a loop without motion that returns to the same state cannot end [NC49
   CHECK(ok.error_id.empty());
 }
 
+TEST_CASE("an arc of a radius above 1e9 mm is NC4203 at its line; up to it the arc is run") {
+  // issue 34 items 3, 4: R 1e300 ran with NaN, R 1e10 as a full circle
+  const auto id_at = [](const std::string& block) {
+    const auto r = test::run("%t\nG00 X10 Y10\n" + block + "\nM30\n");
+    return r.error_id + "@" + std::to_string(r.error_line);
+  };
+  CHECK(id_at("G02 X20 Y10 I5 J-10000000000 F1000") == "NC4203@3");
+  CHECK(id_at("G02 X20 Y10 I5 J-1" + std::string(300, '0') + " F1000") == "NC4203@3");
+  CHECK(id_at("G02 X20 Y10 R2000000000 F1000") == "NC4203@3");
+  CHECK(id_at("G02 X20 Y10 I5 J-999999999 F1000") == "@0");
+  CHECK(id_at("G02 X20 Y10 I5 J-100000000 F1000") == "@0");
+  // check's soft-limit extent of such an arc is its tiny sweep, not the full circle
+  core::SourceFile file("huge.nc", "%t\nG00 X10 Y10\nG02 X20 Y10 I5 J-999999999 F1000\nM30\n");
+  CHECK(!check_semantics(file, test::machine(), {}).has_errors());
+}
+
+TEST_CASE("M30 or the program's end closes an open spline section: its last points run") {
+  // issue 34 item 5: #SPLINE ON without #SPLINE OFF dropped the last points silently
+  for (const char* end : {"M30\n", "M02\n", ""}) {
+    CAPTURE(end);
+    const auto r = run(
+        std::string("%t\nG01 X0 Y0 F1000\n#SPLINE ON\nX10 Y10\nX20 Y20\nX30 Y10\nX40 Y20\n") + end);
+    CHECK(r.error_id.empty());
+    REQUIRE(r.lines.size() >= 2);
+    const std::string& close = r.lines[r.lines.size() - 2];
+    CHECK(close.find("SPLINE_END") != std::string::npos);
+    CHECK(close.find("points=5") != std::string::npos);
+    CHECK(r.lines.back().find("END") != std::string::npos);
+  }
+  // too few points for the curve: NC4401 at the end block, as at #SPLINE OFF
+  const auto few = run("%t\nG01 X0 Y0 F1000\n#SPLINE ON\nX10 Y10\nM30\n");
+  CHECK(few.error_id == "NC4401");
+  CHECK(few.error_line == 5);
+}
+
+TEST_CASE("a loop whose only motion is a zero-length move or a 0 s dwell cannot end [NC4901]") {
+  // issue 34 item 2: time/run never returned, the move before the loop never ran
+  auto r = run("%t\nG90 G00 X10 Y10 Z0\n$WHILE 1\nG01 X10 F6000\n$ENDWHILE\nM30\n");
+  CHECK(r.error_id == "NC4901");
+  CHECK(r.error_line == 3);
+  auto d = run("%t\n$WHILE 1\nG04 0\n#TIME 0\n$ENDWHILE\nM30\n");
+  CHECK(d.error_id == "NC4901");
+  // what still counts as progress: a move that gets somewhere, a full circle, a dwell > 0
+  for (const char* body : {"G00 X1\nG00 X2", "G02 X0 Y0 I5 F600", "G04 0.001"}) {
+    CAPTURE(body);
+    const auto ok = run(std::string("%t\n$WHILE 1\n") + body + "\n$ENDWHILE\nM30\n");
+    CHECK(ok.error_id.empty());
+    CHECK(ok.lines.size() == 10000);
+  }
+}
+
 TEST_CASE("a loop that repeats with motion in it runs on and is named endless") {
   core::SourceFile file("cycle.nc",
                         "%t\nP1 = 0\n$WHILE 1\nG01 X[P1] F600\nP1 = 1 - P1\n"
@@ -350,7 +401,7 @@ TEST_CASE("check_semantics reports soft-limit violations and names endless progr
   auto d = check_semantics(limits, test::machine(), {});
   REQUIRE(d.items().size() == 1);
   CHECK(d.items()[0].id == "NC4601");
-  core::SourceFile endless("e.nc", "%t\n$WHILE 1\nG00 X1\n$ENDWHILE\nM30\n");
+  core::SourceFile endless("e.nc", "%t\n$WHILE 1\nG00 X1\nG00 X2\n$ENDWHILE\nM30\n");
   auto e = check_semantics(endless, test::machine(), {});
   REQUIRE(!e.items().empty());
   CHECK(e.items().back().id == "NC4904");
@@ -388,6 +439,27 @@ TEST_CASE("a feed, block time or speed that cannot be is NC4030 at its word") {
   CHECK(id_at("S0 M05") == "@0");
   CHECK(id_at("S1[MC_MoveVelocity Velocity=0 Acceleration=-1 Direction=1]", "laser_portal") ==
         "@0");
+}
+
+TEST_CASE("a dwell, block time or feed motion longer than one day is an error at its line") {
+  // issue 34 items 1, 19: G04 1e17 s became a 0 s dwell, 1e16 s ran for days (core/limits.hpp)
+  const auto id_at = [](const std::string& block) {
+    const auto r = test::run("%t\nG01 X1 F600\n" + block + "\nM30\n");
+    return r.error_id + "@" + std::to_string(r.error_line);
+  };
+  CHECK(id_at("G04 100000000000000000") == "20752@3");
+  CHECK(id_at("G04 10000000000000000") == "20752@3");
+  CHECK(id_at("G04 X86400.001") == "20752@3");
+  CHECK(id_at("#TIME 100000") == "20751@3");
+  CHECK(id_at("G93 G01 X10 F1000000000") == "NC4032@3");
+  CHECK(id_at("X[INDP_SYN G1 G90 POS10 TIME100000000]") == "NC4032@3");
+  CHECK(id_at("G01 X10 F0.000001") == "NC4032@3");      // 9 mm at 1e-6 mm/min: 5.4e8 s
+  CHECK(id_at("G02 X1 Y0 I5 F0.00001") == "NC4032@3");  // a full circle of 31 mm
+  // the longest accepted: one day exactly
+  CHECK(id_at("G04 86400") == "@0");
+  CHECK(id_at("#TIME 86400") == "@0");
+  CHECK(id_at("G93 G01 X10 F86400") == "@0");
+  CHECK(id_at("G01 X25 F1") == "@0");  // 24 mm at 1 mm/min: 1440 s
 }
 
 }  // namespace

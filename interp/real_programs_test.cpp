@@ -82,9 +82,9 @@ TEST_CASE("M and H functions carry an additional value to the PLC (M200=1200, H5
 }
 
 TEST_CASE("an additional value must be a whole number, and spindle M functions take none") {
-  CHECK(run("%t\nM200=1.5\nM30\n").error_id == "NC4032");
-  CHECK(run("%t\nM3=100\nM30\n").error_id == "NC4032");
-  CHECK(run("%t\nM42=1\nM30\n").error_id == "NC4032");
+  CHECK(run("%t\nM200=1.5\nM30\n").error_id == "NC4033");
+  CHECK(run("%t\nM3=100\nM30\n").error_id == "NC4033");
+  CHECK(run("%t\nM42=1\nM30\n").error_id == "NC4033");
 }
 
 TEST_CASE("an implicit call without a configured subroutine is 20131 naming the parameter") {

@@ -67,11 +67,16 @@ std::pair<std::array<double, 2>, std::array<double, 2>> arc_extent(const Motion&
   constexpr double kTwoPi = 6.283185307179586;
   const bool ccw = m.kind == MotionKind::arc_ccw;
   const double a0 = std::atan2(s2, s1);
-  double sweep = std::atan2(e2, e1) - a0;
+  // The angle start -> end from the cross and dot products with the chord (as the planner's
+  // Segment::arc): a tiny sweep on a huge radius stays tiny (issue 34 item 4).
+  const double r = a.radius;
+  const double d1 = m.end[a.axis_1] - m.start[a.axis_1], d2 = m.end[a.axis_2] - m.start[a.axis_2];
+  const double rs = std::hypot(s1, s2);
+  double sweep = 0.0;
+  if (rs > 0.0) sweep = std::atan2((s1 * d2 - s2 * d1) / rs, rs + (s1 * d1 + s2 * d2) / rs);
   if (ccw && sweep <= 0.0) sweep += kTwoPi;
   if (!ccw && sweep >= 0.0) sweep -= kTwoPi;
   if (a.full_circle) sweep = ccw ? kTwoPi : -kTwoPi;
-  const double r = a.radius;
   for (int q = 0; q < 4; ++q) {  // the axis directions at 0, 90, 180, 270 degrees
     const double angle = q * kTwoPi / 4.0;
     double d = std::remainder(angle - a0, kTwoPi);  // in (-pi, pi]
@@ -314,6 +319,60 @@ int write_trace(const core::SourceFile& file, const machines::Machine& machine,
   return interp.error() != nullptr ? 1 : 0;
 }
 
+void add_soft_limit_errors(const Command& c, const machines::Machine& machine,
+                           const std::string& file, core::DiagnosticList& out) {
+  if (const auto* m = std::get_if<Motion>(&c.body)) {
+    // soft limits where decidable: in the MCS without kinematics (axis values)
+    if (!(m->frame == CoordFrame{})) return;
+    const auto outside = [&](std::size_t i, double v) {
+      const auto& lim = machine.axes[i].soft_limits;
+      return v < lim.neg || v > lim.pos;
+    };
+    const auto report = [&](std::size_t i, const std::string& what, double v) {
+      const auto& lim = machine.axes[i].soft_limits;
+      out.add({core::Severity::error,
+               file,
+               {c.line, 1},
+               "NC4601",
+               what + " " + machine.axes[i].name + "=" + core::number_text(v) +
+                   " is outside the software limits [" + core::number_text(lim.neg) + ", " +
+                   core::number_text(lim.pos) + "] (P-AXIS-00177/00178)"});
+    };
+    AxisMask reported = 0;
+    for (std::size_t i = 0; i < machine.axes.size() && i < kMaxAxes; ++i) {
+      if (((m->programmed >> i) & 1u) == 0 || !outside(i, m->end[i])) continue;
+      report(i, "target", m->end[i]);
+      reported |= AxisMask{1} << i;
+    }
+    if (m->arc) {
+      // The circle's extent: its extreme points on each plane axis that the arc passes.
+      const auto [lo, hi] = arc_extent(*m);
+      for (int k = 0; k < 2; ++k) {
+        const std::size_t i = k == 0 ? m->arc->axis_1 : m->arc->axis_2;
+        if (i >= machine.axes.size() || ((reported >> i) & 1u) != 0) continue;
+        if (outside(i, lo[k])) report(i, "the arc reaches", lo[k]);
+        if (outside(i, hi[k])) report(i, "the arc reaches", hi[k]);
+      }
+    }
+  } else if (const auto* p = std::get_if<SplinePoint>(&c.body)) {
+    // A spline vertex is a programmed point like a motion's target (the curve between
+    // vertices is the planner's: an Akima or B-spline may overshoot them).
+    if (!(p->frame == CoordFrame{})) return;
+    for (std::size_t i = 0; i < machine.axes.size() && i < kMaxAxes; ++i) {
+      const auto& lim = machine.axes[i].soft_limits;
+      const double v = p->point[i];
+      if (((p->programmed >> i) & 1u) == 0 || (v >= lim.neg && v <= lim.pos)) continue;
+      out.add({core::Severity::error,
+               file,
+               {c.line, 1},
+               "NC4601",
+               "spline point " + machine.axes[i].name + "=" + core::number_text(v) +
+                   " is outside the software limits [" + core::number_text(lim.neg) + ", " +
+                   core::number_text(lim.pos) + "] (P-AXIS-00177/00178)"});
+    }
+  }
+}
+
 core::DiagnosticList check_semantics(const core::SourceFile& file, const machines::Machine& machine,
                                      const Options& options) {
   Interpreter interp(file, machine, options);
@@ -342,56 +401,11 @@ core::DiagnosticList check_semantics(const core::SourceFile& file, const machine
       break;
     }
     ++count;
-    if (const auto* m = std::get_if<Motion>(&c->body)) {
-      // soft limits where decidable: in the MCS without kinematics (axis values)
-      if (!(m->frame == CoordFrame{})) continue;
-      const auto outside = [&](std::size_t i, double v) {
-        const auto& lim = machine.axes[i].soft_limits;
-        return v < lim.neg || v > lim.pos;
-      };
-      const auto report = [&](std::size_t i, const std::string& what, double v) {
-        const auto& lim = machine.axes[i].soft_limits;
-        add_once({core::Severity::error,
-                  interp.file_name(c->file),
-                  {c->line, 1},
-                  "NC4601",
-                  what + " " + machine.axes[i].name + "=" + core::number_text(v) +
-                      " is outside the software limits [" + core::number_text(lim.neg) + ", " +
-                      core::number_text(lim.pos) + "] (P-AXIS-00177/00178)"});
-      };
-      AxisMask reported = 0;
-      for (std::size_t i = 0; i < machine.axes.size() && i < kMaxAxes; ++i) {
-        if (((m->programmed >> i) & 1u) == 0 || !outside(i, m->end[i])) continue;
-        report(i, "target", m->end[i]);
-        reported |= AxisMask{1} << i;
-      }
-      if (m->arc) {
-        // The circle's extent: its extreme points on each plane axis that the arc passes.
-        const auto [lo, hi] = arc_extent(*m);
-        for (int k = 0; k < 2; ++k) {
-          const std::size_t i = k == 0 ? m->arc->axis_1 : m->arc->axis_2;
-          if (i >= machine.axes.size() || ((reported >> i) & 1u) != 0) continue;
-          if (outside(i, lo[k])) report(i, "the arc reaches", lo[k]);
-          if (outside(i, hi[k])) report(i, "the arc reaches", hi[k]);
-        }
-      }
-    } else if (const auto* p = std::get_if<SplinePoint>(&c->body)) {
-      // A spline vertex is a programmed point like a motion's target (the curve between
-      // vertices is the planner's: an Akima or B-spline may overshoot them).
-      if (!(p->frame == CoordFrame{})) continue;
-      for (std::size_t i = 0; i < machine.axes.size() && i < kMaxAxes; ++i) {
-        const auto& lim = machine.axes[i].soft_limits;
-        const double v = p->point[i];
-        if (((p->programmed >> i) & 1u) == 0 || (v >= lim.neg && v <= lim.pos)) continue;
-        add_once({core::Severity::error,
-                  interp.file_name(c->file),
-                  {c->line, 1},
-                  "NC4601",
-                  "spline point " + machine.axes[i].name + "=" + core::number_text(v) +
-                      " is outside the software limits [" + core::number_text(lim.neg) + ", " +
-                      core::number_text(lim.pos) + "] (P-AXIS-00177/00178)"});
-      }
-    }
+    // through add_once: a block in a loop reports its soft-limit error once (NC4602)
+    core::DiagnosticList found;
+    add_soft_limit_errors(*c, machine, interp.file_name(c->file), found);
+    for (const core::Diagnostic& d : found.items())
+      add_once(d);
   }
   for (const auto& [key, repeat] : repeats) {
     if (repeat.second == 0) continue;

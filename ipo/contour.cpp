@@ -77,27 +77,42 @@ double arc_distance(const planner::Move& m, const planner::AxisVec& x) noexcept 
   const planner::Arc& arc = *m.arc;
   const Basis b = arc_basis(m);
   const auto [x0, y0] = in_plane(b, m, m.start);
-  const auto [x1, y1] = in_plane(b, m, m.end);
-  const auto [px, py] = in_plane(b, m, x);
+  // The chord (dx, dy) and the point (qx, qy) relative to the start, from the positions: no
+  // rounding of a centre far away enters (issue 34 item 28: on R 1e8 the audit flagged its
+  // own 1.5e-8 mm rounding as a contour error). Angles from the start by atan2 of the cross
+  // and dot products divided by r (planner::Segment::arc's sweep), the radial distance as
+  // (|w + q|^2 - r^2) / (|w + q| + r) = (2 w.q + |q|^2) / (|w + q| + r), w the start radius.
+  double dx = 0.0, dy = 0.0, qx = 0.0, qy = 0.0;
+  for (std::size_t i = 0; i < m.axis_count; ++i) {
+    dx += (m.end[i] - m.start[i]) * b.u[i];
+    dy += (m.end[i] - m.start[i]) * b.v[i];
+    qx += (x[i] - m.start[i]) * b.u[i];
+    qy += (x[i] - m.start[i]) * b.v[i];
+  }
   const double r = std::hypot(x0, y0);
-  const double th0 = std::atan2(y0, x0);
-  const double th1 = std::atan2(y1, x1);
+  const double ends = std::min(point_distance(m, x, m.start), point_distance(m, x, m.end));
+  if (!(r > 0.0)) return ends;
+  const double ux = x0 / r, uy = y0 / r;
+  const auto angle = [&](double ax, double ay) {  // from the start to start + (ax, ay)
+    return std::atan2(ux * ay - uy * ax, r + ux * ax + uy * ay);
+  };
   const double dir = arc.clockwise ? -1.0 : 1.0;
   // Swept angle in (0, 2 pi], measured in the direction of motion.
-  double sweep = std::fmod(dir * (th1 - th0) + 2.0 * kTwoPi, kTwoPi);
-  if (arc.full_circle || sweep <= 0.0) sweep = kTwoPi;
-  const double th = std::atan2(py, px);
-  const double off = std::fmod(dir * (th - th0) + 2.0 * kTwoPi, kTwoPi);
-  const double ends = std::min(point_distance(m, x, m.start), point_distance(m, x, m.end));
+  double sweep = dir * angle(dx, dy);
+  if (sweep <= 0.0) sweep += kTwoPi;
+  if (arc.full_circle) sweep = kTwoPi;
+  double off = dir * angle(qx, qy);
+  if (off < 0.0) off += kTwoPi;
   if (off > sweep && sweep < kTwoPi) return ends;  // beyond the arc: nearest is an end point
   const double u = off / sweep;
-  const double radial = std::hypot(px, py) - r;
+  const double px = x0 + qx, py = y0 + qy;
+  const double radial = (2.0 * (x0 * qx + y0 * qy) + qx * qx + qy * qy) / (std::hypot(px, py) + r);
   // Out of the plane: the point's displacement from the start without its in-plane part,
   // against the share u of the block's own out-of-plane displacement (the helix rise).
   double sum = radial * radial;
   for (std::size_t i = 0; i < m.axis_count; ++i) {
-    const double have = x[i] - m.start[i] - (px - x0) * b.u[i] - (py - y0) * b.v[i];
-    const double rise = m.end[i] - m.start[i] - (x1 - x0) * b.u[i] - (y1 - y0) * b.v[i];
+    const double have = x[i] - m.start[i] - qx * b.u[i] - qy * b.v[i];
+    const double rise = m.end[i] - m.start[i] - dx * b.u[i] - dy * b.v[i];
     const double e = have - u * rise;
     sum += e * e;
   }

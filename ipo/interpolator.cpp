@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "core/limits.hpp"
 #include "planner/joint_limits.hpp"
 
 namespace ncsim::ipo {
@@ -111,7 +112,9 @@ Status PathInterpolator::fail(const char* what) noexcept {
 
 std::uint64_t PathInterpolator::cycles_for(double seconds) const noexcept {
   if (!(seconds > 0.0)) return 0;
-  return static_cast<std::uint64_t>(std::ceil(seconds / t_ - kCycleRounding));
+  // Dwells are at most core::kLongestTime (fill() refuses longer ones), far inside uint64_t.
+  return static_cast<std::uint64_t>(
+      std::ceil(std::min(seconds, core::kLongestTime) / t_ - kCycleRounding));
 }
 
 bool PathInterpolator::fill() noexcept {
@@ -133,8 +136,8 @@ bool PathInterpolator::fill() noexcept {
         continue;
       }
       if (const Dwell* d = std::get_if<Dwell>(&item_)) {
-        if (!(d->seconds >= 0.0) || !std::isfinite(d->seconds)) {
-          message_ = "G04 dwell time must be a finite number >= 0, got " +
+        if (!(d->seconds >= 0.0) || !(d->seconds <= core::kLongestTime)) {
+          message_ = "G04 dwell time must be 0 .. 86400 s (core::kLongestTime), got " +
                      std::to_string(d->seconds) + " s (line " + std::to_string(d->line) + ")";
           return false;
         }
@@ -495,6 +498,15 @@ Status PathInterpolator::step() noexcept {
     if (failed_) return Status::error;
   }
   sample(distance);
+  // No NaN reaches a sink: a setpoint that is not a finite number ends the run here (issue 34
+  // item 3: an arc beyond double precision ran with NaN and `time --json` wrote -nan).
+  for (std::size_t i = 0; i < axes_.size(); ++i) {
+    if (!std::isfinite(c.x[i]) || !std::isfinite(c.distance)) {
+      return fail(
+          "NC6302 ipo: a position setpoint is not a finite number (a curve beyond double "
+          "precision)");
+    }
+  }
   c.held = held;
   c.factor = held ? 0.0 : plan_factor_;
   c.lost = lost_;

@@ -266,6 +266,24 @@ TEST_CASE("a malformed Move or a failing source ends the stream with an error, n
   CHECK(ipo2.message().find("G04") != std::string::npos);
 }
 
+TEST_CASE("a dwell beyond one day ends the stream with an error, never a 0 s dwell") {
+  // issue 34 item 1: ceil(1e17 / t) converted to uint64_t was undefined (a 0 s dwell)
+  const auto ax = axis(100.0, 1000.0, 1e5);
+  for (const double seconds : {1e17, 1e300, 86'400.5}) {
+    CAPTURE(seconds);
+    ListSource src({line(vec(0, 0), vec(1, 0), 10.0, 1), Dwell{seconds, 2}});
+    Recorder rec;
+    PathInterpolator ipo(config({ax, ax, ax}), src, &rec);
+    Status st = Status::running;
+    for (int k = 0; k < 100000 && st == Status::running; ++k)
+      st = ipo.step();
+    CHECK(st == Status::error);
+    CHECK(ipo.message().find("86400") != std::string::npos);
+    for (const Cycle& c : rec.cycles)
+      CHECK(c.activity != Activity::dwell);
+  }
+}
+
 TEST_CASE("a callback source: the program ends when it returns false") {
   const auto ax = axis(100.0, 1000.0, 1e5);
   int calls = 0;

@@ -56,8 +56,10 @@ void ProgramSource::check_workspace(const planner::Move& move, std::uint32_t lin
   if (!trafo_) fail(line, "motion under #TRAFO ON without a kinematic");
   const planner::Segment seg = planner::Segment::from_move(move);
   const double length = seg.length();
-  const int n = std::clamp(static_cast<int>(std::ceil(length / planner::kJointSpacing)),
-                           planner::kJointMinSamples, planner::kJointMaxSamples);
+  // Clamped as a double before the conversion: a huge length would overflow the int.
+  const int n = static_cast<int>(std::fmin(
+      std::fmax(std::ceil(length / planner::kJointSpacing), double{planner::kJointMinSamples}),
+      double{planner::kJointMaxSamples}));
   const std::array<int, 3>& xyz = trafo_->xyz;
   // The target first (its error names the programmed point), then the path towards it.
   for (int i = 0; i <= n; ++i) {

@@ -6,6 +6,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "interp/trace.hpp"
 #include "ipo/machine_data.hpp"
 
 namespace ncsim::ipo {
@@ -154,7 +155,19 @@ void ProgramSource::fail_in(std::uint16_t file, std::uint32_t line, const std::s
   throw Stop{};
 }
 
+void ProgramSource::check_soft_limits(const interp::Command& c) {
+  core::DiagnosticList limits;
+  interp::add_soft_limit_errors(c, machine_, interp_.file_name(c.file), limits);
+  if (!limits.items().empty()) {
+    const core::Diagnostic& d = limits.items().front();
+    fail_in(c.file, c.line, d.id, d.message);
+  }
+}
+
 planner::Move ProgramSource::to_move(const interp::Motion& m, std::uint32_t line) {
+  // --- issue 34 item 22: check's NC4601, refused here before the block moves (one rule)
+  if (refuse_soft_limits_ && m.frame == interp::CoordFrame{})
+    check_soft_limits(interp::Command{line, file_, m});
   for (std::size_t i = 0; i < machine_.axes.size(); ++i) {
     if (slot_[i] < 0 && (((m.programmed >> i) & 1u) != 0 || m.end[i] != m.start[i])) {
       fail(line, "motion of axis " + machine_.axes[i].name +

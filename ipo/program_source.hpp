@@ -105,6 +105,12 @@ class ProgramSource final : public Source {
   /// first stops the path and waits for that motion (a `#WAIT INDP` of those axes: P-CHAN-00451's
   /// implicit synchronisation); the answer then gives those axes where they stand.
   void answer_positions_from(const AxisVec* set_positions) noexcept { positions_ = set_positions; }
+  /// --- issue 34 item 22: refuse, before it moves, a block whose programmed target (or arc
+  /// extent, spline point) in the MCS without kinematics lies beyond the soft limits, with
+  /// `check`'s NC4601 at its line (interp::add_soft_limit_errors), so `time` / `run` and
+  /// `check` apply one rule. Off by default (the channel's per-cycle monitor NC5501 / NC5502
+  /// alone, as the unit tests of the monitor need); every CLI run turns it on.
+  void refuse_beyond_soft_limits(bool on) noexcept { refuse_soft_limits_ = on; }
 
  private:
   struct Stop {};  ///< thrown by fail() to leave the visit; caught in next()
@@ -121,6 +127,9 @@ class ProgramSource final : public Source {
   /// which may be older than file_: a block held for its tolerance ball).
   [[noreturn]] void fail_in(std::uint16_t file, std::uint32_t line, const std::string& id,
                             const std::string& what);
+  /// --- issue 34 item 22: the first of check's NC4601 errors of `c` (interp::
+  /// add_soft_limit_errors) ends the stream at its line, before the block moves.
+  void check_soft_limits(const interp::Command& c);
   planner::Move to_move(const interp::Motion& m, std::uint32_t line);
   /// The modal fields of a Move from the block's snapshot (transition, contour, slope, ...).
   void set_modal(const interp::ModalSnapshot& s, planner::Move& mv, std::uint32_t line);
@@ -142,6 +151,8 @@ class ProgramSource final : public Source {
   void spline_point(const interp::SplinePoint& p, std::uint32_t line);
   void spline_end(std::uint32_t line);
   void queue_pieces(std::span<const planner::SplinePiece> pieces);
+  /// One piece (or a part of it, planner::split_near_cusp) as a Move into emit_path().
+  void queue_piece(const planner::SplinePiece& piece);
 
   interp::Interpreter& interp_;
   const machines::Machine& machine_;
@@ -172,6 +183,7 @@ class ProgramSource final : public Source {
   std::optional<interp::Barrier> open_;  ///< a barrier waiting for the flush's Dwell to pass
   // --- planner: run-time position answers (answer_positions_from).
   const AxisVec* positions_ = nullptr;  ///< the channel's set positions; null: none
+  bool refuse_soft_limits_ = false;     ///< refuse_beyond_soft_limits()
   interp::AxisMask indp_running_ = 0;   ///< machine axes an INDP_ASYN motion may still move
   interp::AxisMask run_time_ = 0;       ///< axes the open barrier answers from run time
   // Channel events (ipo/channel_event.hpp).

@@ -345,3 +345,28 @@ TEST_CASE("#CAXTRACK: a main axis is 120626; ROTMODE 2 and OPTALIGN are not supp
   CHECK(pull("N10 #CAXTRACK ON [AX=C, OPTALIGN=5]\nM30\n", "static_saw").error_id ==
         ipo::kNotSupportedId);
 }
+
+TEST_CASE("a target beyond the soft limits is check's NC4601 before it moves, when refused") {
+  // issue 34 item 22: `check` said NC4601, `time` moved 48 s and stopped with NC5502
+  const machines::Machine& m = interp::test::machine("portal_3x");
+  const core::SourceFile file("far.nc", "%t\nG01 X100 F6000\nG00 X10000000\nM30\n");
+  for (const bool refuse : {true, false}) {
+    CAPTURE(refuse);
+    interp::Interpreter in(file, m);
+    ipo::ProgramSource src(in, m);
+    src.refuse_beyond_soft_limits(refuse);
+    std::vector<std::uint32_t> lines;
+    ipo::Item item;
+    while (src.next(item))
+      if (const auto* mv = std::get_if<planner::Move>(&item)) lines.push_back(mv->line);
+    if (refuse) {
+      CHECK(lines == std::vector<std::uint32_t>{2});  // the block before it, not the far one
+      REQUIRE(src.error() != nullptr);
+      CHECK(src.error()->id == "NC4601");
+      CHECK(src.error()->loc.line == 3);
+    } else {
+      CHECK(lines == std::vector<std::uint32_t>{2, 3});  // the per-cycle monitor's matter
+      CHECK(src.error() == nullptr);
+    }
+  }
+}

@@ -14,6 +14,7 @@
 
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "ipo/program_source.hpp"
 
@@ -42,6 +43,9 @@ void ProgramSource::spline_point(const interp::SplinePoint& p, std::uint32_t lin
                      " (spindle / conveyor axes are not path-interpolated)");
     }
   }
+  // issue 34 item 22: check's NC4601 for a vertex, refused before the section moves on
+  if (refuse_soft_limits_ && p.frame == interp::CoordFrame{})
+    check_soft_limits(interp::Command{line, file_, p});
   queue_pieces(spline_->push({to_mcs(p.frame, p.point, line), line, p.feed}));
 }
 
@@ -54,20 +58,28 @@ void ProgramSource::spline_end(std::uint32_t line) {
 void ProgramSource::queue_pieces(std::span<const planner::SplinePiece> pieces) {
   // The queue is empty before each command (pull() hands it out first); one command completes
   // at most 4 pieces (SplineBuilder::finish()), each of which emit_path() may split.
-  for (const planner::SplinePiece& piece : pieces) {
-    planner::Move mv = planner::spline_move(piece, spline_modal_);
-    mv.file = file_;  // --- conveyor-tail: Moves carry their file (next())
-    // A piece in PCS1 runs with the belt on top as a line does (ProgramSource::to_move): under
-    // #TRAFO ON belt_share samples the piece's curve (docs/conveyor.md "Machining in PCS1"),
-    // else the axes get the PCS1 velocity split (S-5).
-    if (spline_pcs1_) {
-      if (mv.transformed)
-        reserve_belt_share(mv);
-      else
-        mv.belt = belt_;
-    }
-    emit_path(std::move(mv));
+  for (const planner::SplinePiece& whole : pieces) {
+    // issue 34 item 12: a near-cusp runs slowly in its own parts, not the whole piece
+    const std::vector<planner::SplinePiece> parts = planner::split_near_cusp(whole, path_axes_);
+    if (parts.empty()) queue_piece(whole);
+    for (const planner::SplinePiece& part : parts)
+      queue_piece(part);
   }
+}
+
+void ProgramSource::queue_piece(const planner::SplinePiece& piece) {
+  planner::Move mv = planner::spline_move(piece, spline_modal_);
+  mv.file = file_;  // --- conveyor-tail: Moves carry their file (next())
+  // A piece in PCS1 runs with the belt on top as a line does (ProgramSource::to_move): under
+  // #TRAFO ON belt_share samples the piece's curve (docs/conveyor.md "Machining in PCS1"),
+  // else the axes get the PCS1 velocity split (S-5).
+  if (spline_pcs1_) {
+    if (mv.transformed)
+      reserve_belt_share(mv);
+    else
+      mv.belt = belt_;
+  }
+  emit_path(std::move(mv));
 }
 
 }  // namespace ncsim::ipo

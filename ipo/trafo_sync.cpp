@@ -264,7 +264,9 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
   const std::size_t nj = std::min(joints.size(), planner::kMaxAxes);
   const std::size_t na = segment.axis_count();
   const double w = carry.v_belt;
-  const int n = std::clamp(static_cast<int>(std::ceil(length / 5.0)), 4, kBeltShareSamples);
+  // Clamped as a double before the conversion: a huge length would overflow the int.
+  const int n = static_cast<int>(
+      std::fmin(std::fmax(std::ceil(length / 5.0), 4.0), double{kBeltShareSamples}));
   const auto s_at = [&](int k) { return length * static_cast<double>(k) / n; };
 
   // Belt travel 0: the largest path derivatives, at most what the planner plans with. The

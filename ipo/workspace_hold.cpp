@@ -73,7 +73,9 @@ namespace {
 /// Samples of one block: n + 1 points [from, to], n = ceil(length / kSampleStep) in
 /// [1, kMaxSamples].
 int samples_of(const HoldBlock& b) noexcept {
-  return std::clamp(static_cast<int>(std::ceil((b.to - b.from) / kSampleStep)), 1, kMaxSamples);
+  // Clamped as a double before the conversion: a huge length would overflow the int.
+  return static_cast<int>(
+      std::fmin(std::fmax(std::ceil((b.to - b.from) / kSampleStep), 1.0), double{kMaxSamples}));
 }
 
 }  // namespace

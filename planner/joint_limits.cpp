@@ -12,8 +12,10 @@ std::optional<DerivativeBounds> joint_bounds(const Segment& segment, const Joint
                                              std::size_t joint_count) {
   const std::size_t n = segment.axis_count();
   const double length = segment.length();
-  const int samples = std::clamp(static_cast<int>(std::ceil(length / kJointSpacing)),
-                                 kJointMinSamples, kJointMaxSamples);
+  // Clamped as a double before the conversion: a huge length would overflow the int.
+  const int samples = static_cast<int>(
+      std::fmin(std::fmax(std::ceil(length / kJointSpacing), double{kJointMinSamples}),
+                double{kJointMaxSamples}));
   const double ds = length / samples;
   const double d = kJointStep;
   DerivativeBounds b;

@@ -2,6 +2,11 @@
 // Arc notation: theta(s) = theta0 + omega * s, omega = sweep / L; x(s) = o + lin s +
 // r (cos(theta) u + sin(theta) v): for G17 / G18 / G19 u, v are the plane's unit axes (plane
 // axis 1 is c1 + r cos(theta), axis 2 c2 + r sin(theta)); every other axis moves linearly.
+// Evaluated from the start point p0 = x(0), not from the centre o: x(s) = p0 + lin s +
+// r ((cos(theta) - cos(theta0)) u + (sin(theta) - sin(theta0)) v), the differences written with
+// the half angle h = omega s / 2 as -2 sin(theta0 + h) sin(h) and 2 cos(theta0 + h) sin(h). So a
+// point carries the rounding of the chord, not of a centre 1e9 mm away (issue 34 items 4, 28;
+// docs/planner.md "Arcs of a huge radius").
 
 #include "planner/path.hpp"
 
@@ -45,12 +50,14 @@ AxisVec line_point(const geom::LineGeom& l, std::size_t n, double s) {
 }
 
 AxisVec arc_point(const geom::ArcGeom& a, std::size_t n, double s) {
-  AxisVec x = a.o;
-  const double th = a.theta0 + a.omega * s;
-  const double rc = a.radius * std::cos(th);
-  const double rs = a.radius * std::sin(th);
+  AxisVec x = a.p0;
+  const double h = 0.5 * a.omega * s;
+  const double m = a.theta0 + h;
+  const double chord = 2.0 * a.radius * std::sin(h);  // signed chord length
+  const double dc = -chord * std::sin(m);             // r (cos(theta) - cos(theta0))
+  const double ds = chord * std::cos(m);              // r (sin(theta) - sin(theta0))
   for (std::size_t i = 0; i < n; ++i)
-    x[i] += a.lin[i] * s + rc * a.u[i] + rs * a.v[i];
+    x[i] += a.lin[i] * s + dc * a.u[i] + ds * a.v[i];
   return x;
 }
 
@@ -62,16 +69,19 @@ PathPoint line_at(const geom::LineGeom& l, std::size_t n, double s) {
 }
 
 PathPoint arc_at(const geom::ArcGeom& a, std::size_t n, double s) {
-  PathPoint p{a.o, {}, {}, {}};
-  const double th = a.theta0 + a.omega * s;
-  const double c = std::cos(th);
-  const double sn = std::sin(th);
+  PathPoint p{a.p0, {}, {}, {}};
+  const double h = 0.5 * a.omega * s;
+  const double sh = std::sin(h), ch = std::cos(h);
+  const double sm = std::sin(a.theta0 + h), cm = std::cos(a.theta0 + h);
+  const double c = cm * ch - sm * sh;   // cos(theta)
+  const double sn = sm * ch + cm * sh;  // sin(theta)
   const double r = a.radius;
   const double w = a.omega;
-  const double rc = r * c;
-  const double rs = r * sn;
+  const double chord = 2.0 * r * sh;
+  const double dc = -chord * sm;  // r (cos(theta) - cos(theta0))
+  const double ds = chord * cm;   // r (sin(theta) - sin(theta0))
   for (std::size_t i = 0; i < n; ++i) {
-    p.x[i] += a.lin[i] * s + rc * a.u[i] + rs * a.v[i];
+    p.x[i] += a.lin[i] * s + dc * a.u[i] + ds * a.v[i];
     p.d1[i] = a.lin[i] + r * w * (-sn * a.u[i] + c * a.v[i]);
     p.d2[i] = -r * w * w * (c * a.u[i] + sn * a.v[i]);
     p.d3[i] = r * w * w * w * (sn * a.u[i] - c * a.v[i]);
@@ -158,30 +168,45 @@ Segment Segment::arc(const Move& move) {
     g.v[arc.axis_2] = 1.0;
     plane = (AxisMask{1} << arc.axis_1) | (AxisMask{1} << arc.axis_2);
   }
-  // In-plane coordinates of start and end relative to the centre.
-  double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;
+  // In-plane coordinates of the start relative to the centre.
+  double x0 = 0.0, y0 = 0.0;
   for (std::size_t i = 0; i < move.axis_count; ++i) {
     x0 += (move.start[i] - g.o[i]) * g.u[i];
     y0 += (move.start[i] - g.o[i]) * g.v[i];
-    x1 += (move.end[i] - g.o[i]) * g.u[i];
-    y1 += (move.end[i] - g.o[i]) * g.v[i];
   }
+  g.p0 = move.start;
   g.radius = std::hypot(x0, y0);
   g.theta0 = std::atan2(y0, x0);
   // Sweep in (0, 2 pi] counter-clockwise, [-2 pi, 0) clockwise; a closed arc is a full turn.
-  double ccw = std::atan2(y1, x1) - g.theta0;
-  ccw = std::fmod(ccw + 2.0 * kTwoPi, kTwoPi);
-  const bool closed = arc.full_circle || std::hypot(x1 - x0, y1 - y0) <= 1e-9 * g.radius;
+  // The angle from start to end is atan2 of the cross and dot products of (x0, y0) and the
+  // end's (x0 + dx, y0 + dy), both divided by r and written with the chord (dx, dy) from the end
+  // points, so a tiny sweep on a huge radius keeps its digits (the difference of two atan2 of
+  // nearly equal angles kept none: 1e-10 rad became 0, a full circle; issue 34 item 4). Closed
+  // means what the interpreter decided (Arc::full_circle) or an end within 1e-9 mm of the start,
+  // its own rule (interp "full" circle), not a chord below 1e-9 of the radius.
+  double dx = 0.0, dy = 0.0;
+  for (std::size_t i = 0; i < move.axis_count; ++i) {
+    dx += (move.end[i] - move.start[i]) * g.u[i];
+    dy += (move.end[i] - move.start[i]) * g.v[i];
+  }
+  double phi = 0.0;  // signed angle from start to end, (-pi, pi]
+  if (g.radius > 0.0) {
+    const double ux = x0 / g.radius, uy = y0 / g.radius;
+    phi = std::atan2(ux * dy - uy * dx, g.radius + ux * dx + uy * dy);
+  }
+  const bool closed = arc.full_circle || std::hypot(dx, dy) < 1e-9;
   double sweep = 0.0;
   if (closed)
     sweep = arc.clockwise ? -kTwoPi : kTwoPi;
+  else if (arc.clockwise)
+    sweep = phi < 0.0 ? phi : phi - kTwoPi;
   else
-    sweep = arc.clockwise ? ccw - kTwoPi : ccw;
+    sweep = phi > 0.0 ? phi : phi + kTwoPi;
   // The rise: the displacement without its in-plane part (0 on the axes of a principal plane).
   AxisVec delta{};
   for (std::size_t i = 0; i < move.axis_count; ++i) {
     if (!move.arc_plane && has(plane, i)) continue;
-    delta[i] = move.end[i] - move.start[i] - (x1 - x0) * g.u[i] - (y1 - y0) * g.v[i];
+    delta[i] = move.end[i] - move.start[i] - dx * g.u[i] - dy * g.v[i];
   }
   // Arc length: the plane axes always measure it; the other path axes add the helix rise.
   AxisMask all = 0;

@@ -47,6 +47,7 @@ struct LineGeom {
 /// omega s, with u, v orthonormal (two unit machine axes for G17 / G18 / G19, any plane under a
 /// rotated #CS) and lin the helix rise, orthogonal to the plane.
 struct ArcGeom {
+  AxisVec p0{};         ///< the start point; points are computed from it [mm | deg]
   AxisVec o{};          ///< centre, plus the start of the axes outside the plane [mm | deg]
   AxisVec lin{};        ///< d x_i/ds of the linear (helix) part [1]
   AxisVec u{};          ///< first in-plane unit vector [1]

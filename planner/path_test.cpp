@@ -228,3 +228,40 @@ TEST_CASE("a Bezier's end points and derivatives are the limits of its inner poi
     }
   }
 }
+
+TEST_CASE("an arc of a huge radius and a tiny sweep stays a tiny sweep, exact to the nanometre") {
+  // issue 34 items 4, 28: R 1e10 on a 10 mm chord ran as a full circle; points computed from
+  // a centre 1e8 mm away carried its rounding (1e-8 mm steps)
+  for (const double r : {10.0, 1e6, 1e8, 1e9, 1e10}) {
+    CAPTURE(r);
+    const double c2 = 10.0 - std::sqrt(r * r - 25.0);
+    const Segment seg = Segment::arc(arc_move(vec(10, 10), vec(20, 10), 15, c2, true));
+    const double y0 = 10.0 - c2;  // the start relative to the centre, as rounded
+    const double radius = std::hypot(5.0, y0);
+    const double sweep = 2.0 * std::asin(5.0 / radius);
+    CHECK(seg.length() == doctest::Approx(radius * sweep).epsilon(1e-12));
+    const AxisVec end = seg.point(seg.length());
+    CHECK(std::abs(end[0] - 20.0) < 1e-9);
+    CHECK(std::abs(end[1] - 10.0) < 1e-9);
+    const AxisVec mid = seg.point(seg.length() / 2.0);
+    CHECK(std::abs(mid[0] - 15.0) < 1e-9);
+    CHECK(std::abs(mid[1] - (10.0 + 25.0 / (radius + y0))) < 1e-9);  // the sagitta
+    double x = 10.0;
+    for (int k = 1; k <= 1000; ++k) {  // X rises steadily, Y stays on the arc
+      const AxisVec p = seg.point(seg.length() * k / 1000.0);
+      CHECK(p[0] > x);
+      x = p[0];
+    }
+  }
+}
+
+TEST_CASE("an arc whose end lies a tiny angle short of its start is a tiny sweep, not a circle") {
+  // G03 from (R, 0) to just below it: the long way round, 2 pi minus the tiny angle; G02 the
+  // tiny way. Closed only when the interpreter says so or the end is the start.
+  const double r = 1e9;
+  const double phi = 1e-14;
+  Move m = arc_move(vec(r, 0), vec(r * std::cos(phi), -r * std::sin(phi)), 0, 0, true);
+  CHECK(Segment::arc(m).length() == doctest::Approx(r * phi).epsilon(1e-6));
+  m.arc->clockwise = false;
+  CHECK(Segment::arc(m).length() == doctest::Approx(r * (2.0 * kPi - phi)).epsilon(1e-12));
+}

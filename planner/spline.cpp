@@ -196,4 +196,137 @@ std::span<const SplinePiece> SplineBuilder::finish() {
   return {out_.data(), out_n_};
 }
 
+std::vector<SplinePiece> split_near_cusp(const SplinePiece& piece, AxisMask path_axes) {
+  constexpr int kSamples = 1024;
+  constexpr int kHalvings = 30;  // the innermost parts are 2^-30 of a sample interval wide
+  const std::size_t n = piece.curve.axis_count();
+  const std::array<AxisVec, 4>& c = piece.control;
+  constexpr double kMinPart = 1e-3;   // [mm] no cut nearer the near-cusp than 1 um
+  const auto point = [&](double t) {  // B(t)
+    const double s = 1.0 - t;
+    AxisVec p{};
+    for (std::size_t i = 0; i < n; ++i)
+      p[i] = s * s * s * c[0][i] + 3.0 * s * s * t * c[1][i] + 3.0 * s * t * t * c[2][i] +
+             t * t * t * c[3][i];
+    return p;
+  };
+  const auto distance = [&](const AxisVec& a, const AxisVec& b) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (((path_axes >> i) & 1u) != 0) sum += (a[i] - b[i]) * (a[i] - b[i]);
+    return std::sqrt(sum);
+  };
+  const auto speed2 = [&](double t) {  // (|B'(t)| / 3)^2 over the path axes
+    const double s = 1.0 - t;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (((path_axes >> i) & 1u) == 0) continue;
+      const double d = s * s * (c[1][i] - c[0][i]) + 2.0 * s * t * (c[2][i] - c[1][i]) +
+                       t * t * (c[3][i] - c[2][i]);
+      sum += d * d;
+    }
+    return sum;
+  };
+  std::array<double, kSamples + 1> v{};
+  double v_max = 0.0;
+  for (int k = 0; k <= kSamples; ++k) {
+    v[k] = std::sqrt(speed2(static_cast<double>(k) / kSamples));
+    v_max = std::max(v_max, v[k]);
+  }
+  // A run of samples below kCuspExtent of the largest speed, widened by a sample, whose
+  // slowest sample is below kCuspSpeed holds a near-cusp: its speed minimum t_m (golden-section
+  // search) and cuts at halving distances towards it from both ends of the run, so each part's
+  // bounds come from its end nearest the near-cusp and the path slows down only as much as the
+  // curvature there asks.
+  const double low = kCuspExtent * v_max;
+  std::vector<double> cuts;  // increasing parameters in (0, 1)
+  for (int k = 0; k <= kSamples; ++k) {
+    if (!(v[k] < low)) continue;
+    int last = k;
+    double slowest = v[k];
+    while (last < kSamples && v[last + 1] < low)
+      slowest = std::min(slowest, v[++last]);
+    if (!(slowest < kCuspSpeed * v_max)) {
+      k = last;
+      continue;
+    }
+    const double t_lo = static_cast<double>(std::max(0, k - 1)) / kSamples;
+    const double t_hi = static_cast<double>(std::min(kSamples, last + 1)) / kSamples;
+    k = last + 1;
+    constexpr double kGolden = 0.6180339887498949;
+    double lo = t_lo, hi = t_hi;
+    double x1 = hi - kGolden * (hi - lo), x2 = lo + kGolden * (hi - lo);
+    double f1 = speed2(x1), f2 = speed2(x2);
+    for (int it = 0; it < 100 && hi - lo > 1e-15; ++it) {
+      if (f1 <= f2) {
+        hi = x2;
+        x2 = x1;
+        f2 = f1;
+        x1 = hi - kGolden * (hi - lo);
+        f1 = speed2(x1);
+      } else {
+        lo = x1;
+        x1 = x2;
+        f1 = f2;
+        x2 = lo + kGolden * (hi - lo);
+        f2 = speed2(x2);
+      }
+    }
+    const double t_m = 0.5 * (lo + hi);
+    // Halving stops 1 um from the near-cusp: smaller parts lose their digits (control points
+    // within a few ulp of 500 mm), and the innermost part's curvature is the near-cusp's.
+    const AxisVec p_m = point(t_m);
+    const auto far = [&](double t) { return distance(point(t), p_m) >= kMinPart; };
+    const auto add_cut = [&](double t) {
+      if (t > 0.0 && t < 1.0 && (cuts.empty() || t > cuts.back())) cuts.push_back(t);
+    };
+    for (int j = 0; j <= kHalvings && far(t_m - (t_m - t_lo) * std::ldexp(1.0, -j)); ++j)
+      add_cut(t_m - (t_m - t_lo) * std::ldexp(1.0, -j));
+    int j_right = 0;  // the innermost cut right of t_m still 1 um away
+    while (j_right < kHalvings && far(t_m + (t_hi - t_m) * std::ldexp(1.0, -(j_right + 1))))
+      ++j_right;
+    for (int j = j_right; j >= 0; --j)
+      add_cut(t_m + (t_hi - t_m) * std::ldexp(1.0, -j));
+  }
+  std::vector<SplinePiece> out;
+  if (cuts.empty()) return out;
+  // de Casteljau: the control points of the part [0, t] of `p`, and of [t, 1].
+  const auto split = [n](const std::array<AxisVec, 4>& p, double t) {
+    std::array<AxisVec, 4> left{}, right{};
+    for (std::size_t i = 0; i < n; ++i) {
+      const double a = p[0][i] + t * (p[1][i] - p[0][i]);
+      const double b = p[1][i] + t * (p[2][i] - p[1][i]);
+      const double d = p[2][i] + t * (p[3][i] - p[2][i]);
+      const double ab = a + t * (b - a);
+      const double bd = b + t * (d - b);
+      const double m = ab + t * (bd - ab);
+      left[0][i] = p[0][i];
+      left[1][i] = a;
+      left[2][i] = ab;
+      left[3][i] = m;
+      right[0][i] = m;
+      right[1][i] = bd;
+      right[2][i] = d;
+      right[3][i] = p[3][i];
+    }
+    return std::pair{left, right};
+  };
+  const auto add = [&](const std::array<AxisVec, 4>& p) {
+    const auto axes = static_cast<std::uint8_t>(n);
+    out.push_back(
+        {Segment::cubic(axes, polygon_metric(axes, path_axes, p), p), piece.line, piece.feed, p});
+  };
+  out.reserve(cuts.size() + 1);
+  std::array<AxisVec, 4> rest = c;
+  double t_rest = 0.0;  // where `rest` starts on the piece
+  for (const double t : cuts) {
+    const auto [left, right] = split(rest, (t - t_rest) / (1.0 - t_rest));
+    add(left);  // a part ends where the next starts, bit for bit (the same point m)
+    rest = right;
+    t_rest = t;
+  }
+  add(rest);
+  return out;
+}
+
 }  // namespace ncsim::planner

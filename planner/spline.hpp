@@ -35,6 +35,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "planner/move.hpp"
 #include "planner/path.hpp"
@@ -65,6 +66,24 @@ struct SplinePiece {
 /// transition, exact stop, path axes) from `modal`; start, end, feed and line from the piece;
 /// Move::spline its inner control points, so Segment::from_move() gives the same curve.
 Move spline_move(const SplinePiece& piece, const Move& modal);
+
+/// Near-cusps (issue 34 item 12; docs/planner.md "Splines"): where control points fold back,
+/// a piece's speed |B'(t)| nearly vanishes and its curvature peaks; a piece's path limits hold
+/// for all of it, so the whole piece would run at the near-cusp's velocity. When the speed
+/// sampled at 1,025 parameters falls below kCuspSpeed of its largest, the piece is split by de
+/// Casteljau into exact sub-cubics (same curve, same line and feed): at both ends of the
+/// interval around it below kCuspExtent (a cubic has at most two) and at halving distances
+/// towards its speed minimum, so the path slows down only near the near-cusp. Empty: no near-cusp,
+/// the piece stays whole. `path_axes` measure the speed.
+std::vector<SplinePiece> split_near_cusp(const SplinePiece& piece, AxisMask path_axes);
+
+/// Speed ratio (of a piece's largest) below which split_near_cusp() splits: 0.5 %. Pieces of
+/// CAM-like points come down to about 1.4 % (B-spline, steps of 0.1 .. 5 mm); a fold of 0.001 mm
+/// to 0.2 % and less. Segment::bezier_bounds searches below 5 % (correct bounds); the split is
+/// for speed only.
+inline constexpr double kCuspSpeed = 0.005;
+/// The parts around a near-cusp reach out to where the speed is back at 10 % of the largest.
+inline constexpr double kCuspExtent = 0.1;
 
 /// Builds the pieces of one spline section from its points, streaming.
 class SplineBuilder {

@@ -323,3 +323,49 @@ TEST_CASE("spline pieces' derivative bounds hold against 2049 samples in arc len
   CHECK(worst <= 1.0);
   CHECK(worst > 0.9);  // and they are not loose
 }
+
+TEST_CASE("a B-spline folding back on itself is split around its near-cusp into exact parts") {
+  // issue 34 item 12: the control points of the issue (portal_3x, F1000)
+  const std::vector<AxisVec> cps = {{10, 10, 0},     {20, 20, 0},       {790, 590, 0},
+                                    {20, 20.001, 0}, {790, 590.001, 0}, {20, 20, 0}};
+  std::vector<SplineVertex> pts;
+  for (std::size_t k = 0; k < cps.size(); ++k) {
+    SplineVertex v;
+    v.point = cps[k];
+    v.line = static_cast<std::uint32_t>(10 + k);
+    v.feed = 1000.0 / 60.0;
+    pts.push_back(v);
+  }
+  int split_pieces = 0;
+  for (const SplinePiece& piece : build(SplineType::bspline, pts)) {
+    const std::vector<SplinePiece> parts = split_near_cusp(piece, 0b111);
+    if (parts.empty()) continue;
+    ++split_pieces;
+    double length = 0.0;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+      length += parts[k].curve.length();
+      CHECK(parts[k].line == piece.line);
+      CHECK(parts[k].feed == piece.feed);
+      if (k > 0) CHECK(parts[k].control[0] == parts[k - 1].control[3]);
+    }
+    CHECK(parts.front().control[0] == piece.control[0]);
+    CHECK(parts.back().control[3] == piece.control[3]);
+    CHECK(length == doctest::Approx(piece.curve.length()).epsilon(1e-3));
+    // Running each part at the velocity its curvature bound allows (portal_3x: 3000 mm/s^2)
+    // takes seconds, not the hours of the whole piece at the near-cusp's velocity.
+    double seconds = 0.0, d2_max = 0.0;
+    for (const SplinePiece& part : parts) {
+      const double d2 = vec_norm(part.curve.bounds().d2);
+      d2_max = std::max(d2_max, d2);
+      seconds += part.curve.length() / std::min(1000.0 / 60.0, std::sqrt(3000.0 / d2));
+    }
+    CHECK(d2_max > 1e6);  // the near-cusp's curvature is there, in its innermost parts
+    CHECK(seconds < 2.0 * piece.curve.length() / (1000.0 / 60.0) + 5.0);
+  }
+  CHECK(split_pieces >= 2);
+  // pieces of CAM-like points (mostly forward) come back whole
+  std::mt19937 rng(34);
+  for (const SplineType type : {SplineType::akima, SplineType::bspline})
+    for (const SplinePiece& piece : build(type, random_points(rng, 40)))
+      CHECK(split_near_cusp(piece, 0b111).empty());
+}

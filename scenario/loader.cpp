@@ -254,7 +254,7 @@ class Reader : public ReaderBase {
         pass_node = &node;
         if (const auto v = integer(node, item, 1, kLineMax)) pass = static_cast<std::uint32_t>(*v);
       } else if (name == "override") {
-        if (const auto v = number(node, item, 0.0, kOverrideMaxPercent, "%")) {
+        if (const auto v = percent(node, item)) {
           path_override = *v / 100.0;
           if (context_.path_override_max && *path_override > *context_.path_override_max) {
             error(kOverrideBeyondType, node.source(),

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/diagnostic.hpp"
+#include "core/limits.hpp"
 #include "core/number_text.hpp"
 #include "core/source_file.hpp"
 #include "scenario/loader.hpp"
@@ -41,8 +42,9 @@ constexpr const char* kPathAxisOverride = "NC7020";
 constexpr const char* kOverrideBeyondType = "NC6102";
 constexpr const char* kIndpOverride = "NC6105";
 
-constexpr double kTimeMax = 1e9;  // [s] largest `at`, `duration`, stop.time
+constexpr double kTimeMax = core::kLongestTime;  // [s] largest `at`, `duration`, stop.time
 constexpr double kOverrideMaxPercent = kOverrideMax * 100.0;
+constexpr double kOverrideMinPercent = kOverrideMin * 100.0;
 constexpr std::int64_t kLineMax = 4294967295;  // line and pass counts are 32-bit
 // TOML integers are 64-bit signed: 2^63-1, compared and printed as the integer it is.
 constexpr std::int64_t kCyclesMax = std::numeric_limits<std::int64_t>::max();
@@ -110,6 +112,18 @@ class ReaderBase {
     return v;
   }
 
+  // An override in %: 0 (a stop) or kOverrideMinPercent .. kOverrideMaxPercent.
+  std::optional<double> percent(const toml::node& node, const std::string& path) {
+    const auto v = number(node, path, 0.0, kOverrideMaxPercent, "%");
+    if (v && *v > 0.0 && *v < kOverrideMinPercent) {
+      error(kRange, node.source(),
+            path + " = " + value_text(*v) + " % is out of range: 0 (a stop) or " +
+                value_text(kOverrideMinPercent) + " .. " + value_text(kOverrideMaxPercent) + " %");
+      return std::nullopt;
+    }
+    return v;
+  }
+
   // An integer in [lo, hi]; a float is a wrong type (a count is whole).
   // Compared and printed as integers (a double cannot hold 2^63-1).
   std::optional<std::uint64_t> integer(const toml::node& node, const std::string& path,
@@ -162,7 +176,7 @@ class ReaderBase {
         continue;
       }
       seen.push_back(up);
-      const auto v = percent ? number(value, item, 0.0, kOverrideMaxPercent, "%")
+      const auto v = percent ? this->percent(value, item)
                              : number(value, item, std::numeric_limits<double>::lowest(),
                                       std::numeric_limits<double>::max(), "");
       if (v) out(up, percent ? *v / 100.0 : *v, key.source());

@@ -153,6 +153,27 @@ TEST_CASE("an out-of-range value is NC7004 with value, range and unit") {
             "event[1].axis_override.C = -5 %"));
 }
 
+TEST_CASE("an override between 0 and 0.1 % or a time beyond one day is NC7004 at its key") {
+  // issue 34 items 7, 19: 1e-300 % and a feed hold of 1e9 s were accepted and ran for ages
+  CHECK(has(only_error(parse("[[event]]\nat = 1\noverride = 1e-300\n")), "NC7004", 3,
+            "event[1].override = 1e-300 % is out of range: 0 (a stop) or 0.1 .. 1000 %"));
+  CHECK(
+      has(only_error(parse("[[event]]\nat = 1\noverride = 0.09\n")), "NC7004", 3, "0.1 .. 1000 %"));
+  CHECK(has(only_error(parse("[[event]]\nat = 1\naxis_override = { C = 1e-9 }\n")), "NC7004", 3,
+            "event[1].axis_override.C = 1e-09 % is out of range"));
+  CHECK(has(only_error(parse("[[event]]\nat = 1\nfeed_hold = true\nduration = 1e9\n")), "NC7004", 4,
+            "event[1].duration = 1000000000 s is out of range 0 .. 86400 s"));
+  CHECK(has(only_error(parse("[[event]]\nat = 86401\noverride = 10\n")), "NC7004", 2,
+            "out of range 0 .. 86400 s"));
+  CHECK(has(only_error(parse("[stop]\ntime = 1e6\n")), "NC7004", 2, "stop.time"));
+  // the limits themselves load
+  for (const char* ok : {"[[event]]\nat = 1\noverride = 0\n", "[[event]]\nat = 1\noverride = 0.1\n",
+                         "[[event]]\nat = 86400\nfeed_hold = true\nduration = 86400\n"}) {
+    CAPTURE(ok);
+    CHECK(parse(ok).diagnostics.error_count() == 0);
+  }
+}
+
 TEST_CASE("time events out of order are NC7005 naming both") {
   const core::Diagnostic& d =
       only_error(parse("[[event]]\nat = 2.5\noverride = 50\n[[event]]\nline = 7\noverride = 10\n"

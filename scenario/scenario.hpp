@@ -172,6 +172,9 @@ struct Conveyor {
 
 /// Largest override: 1000 % (docs/scenario.md "Decisions").
 inline constexpr double kOverrideMax = 10.0;
+/// Smallest override above 0: 0.1 % (docs/scenario.md "Decisions"); below it a path would
+/// creep for ages (1e-300 % never ended, issue 34 item 7).
+inline constexpr double kOverrideMin = 0.001;
 /// Tolerance of time comparisons [s]: cycle times are sums of t_cycle, not exact decimals.
 inline constexpr double kTimeEpsilon = 1e-9;
 

@@ -42,3 +42,7 @@ set_tests_properties(cli_robust_files_test PROPERTIES TIMEOUT 600)
 add_test(NAME cli_trc_test
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/trc_test.sh $<TARGET_FILE:ncsim>
                  ${CMAKE_CURRENT_SOURCE_DIR}/cli)
+# Issue 34's critical motion defects (items 1-7, 11, 12, 19, 22): every run ends, positioned
+# errors, check and time agree, no NaN in the outputs.
+add_test(NAME cli_robust_motion_test
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/robust_motion_test.sh $<TARGET_FILE:ncsim>)

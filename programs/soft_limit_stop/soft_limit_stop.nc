@@ -1,12 +1,12 @@
-; soft_limit_stop: a contour that leaves the soft limits at run time. Two 40 x 30 mm parts with
+; soft_limit_stop: a contour that would leave the soft limits. Two 40 x 30 mm parts with
 ;   corner radius 6 mm, each at the X position the PLC gives in V.E.PART_X (mm), read when the
 ;   part starts (a V.E. barrier: the path stops before it, docs/scenario.md). scenario.toml
 ;   starts with PART_X = 100, so `ncsim check` (which reads [ve]) passes; while the first part
 ;   is cut the PLC writes PART_X = 765: the second part's right side would reach X 805, beyond
 ;   portal_3x's maximum soft position limit X 800 mm (P-AXIS-00178, x.lis). N60 ends inside it
-;   (X 799); the corner arc N70 leaves it on its way to X 805. The channel checks the command
-;   position every cycle and stops with run-time error NC5502 in the arc (line 18); the axis
-;   never receives a set position beyond the limit.
+;   (X 799); the corner arc N70 would leave it on its way to X 805: its target is refused at
+;   decode before it moves (NC4601 at line 18, as `check` reports such a target; the manual's
+;   P-AXIS-00554 ERROR), so the run ends at X 799; the axis never gets beyond the limit.
 ; portal_3x; the first part at X 100..140, Y 20..50.
 %soft_limit_stop
 N10 G17 G90 G71 G94

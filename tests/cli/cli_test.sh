@@ -382,11 +382,13 @@ else
   failures=$((failures + 1)); echo "FAIL run stopped by a run-time error"
   tail -3 "$work/soft.csv"
 fi
-# --- planner: a run-time error in a block of a subroutine file names that file and its line
-# (docs/ipo.md "Blocks of subroutine files"); `time --blocks` names such blocks file:line.
+# --- planner: an error in a block of a subroutine file names that file and its line
+# (docs/ipo.md "Blocks of subroutine files"); `time --blocks` names such blocks file:line. The
+# target beyond the soft limit is refused before it moves, as `check` reports it (NC4601, issue
+# 34 item 22); it was run-time error NC5502 on the way.
 sub_prog="$fixtures/../../programs/subroutine_soft_limit/subroutine_soft_limit.nc"
 expect "a soft limit reached in a subroutine file names the subroutine file and its line" 1 '' \
-  'part_contour\.sub:10:1: error: run-time error at t=[0-9.]+ s: axis X: .*\(P-AXIS-00178\) \[NC5502\]' -- \
+  'part_contour\.sub:10:1: error: target X=805 is outside the software limits .*\(P-AXIS-00177/00178\) \[NC4601\]' -- \
   time "$sub_prog"
 checks=$((checks + 1))
 if grep -q '^N70 G03' "$work/err" && ! grep -q 'subroutine_soft_limit\.nc:10:' "$work/err"; then
@@ -401,7 +403,7 @@ status=0
 "$ncsim" run -o "$work/sub.csv" "$sub_prog" 2>/dev/null || status=$?
 checks=$((checks + 1))
 if [[ $status -eq 1 ]] &&
-  [[ $(tail -2 "$work/sub.csv" | head -1) == "# error: "*"part_contour.sub:10:1: error: run-time error"*"[NC5502]" ]]; then
+  [[ $(tail -2 "$work/sub.csv" | head -1) == "# error: "*"part_contour.sub:10:1: error: target X=805"*"[NC4601]" ]]; then
   echo "ok   the CSV's closing comment names the subroutine file"
 else
   failures=$((failures + 1)); echo "FAIL the CSV's closing comment names the subroutine file"

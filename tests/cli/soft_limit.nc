@@ -1,5 +1,5 @@
 %soft_limit
-; a line beyond the X soft limit P-AXIS-00178 = 800 mm of portal_3x: the channel stops the
-; axes in the cycle the command would cross it (run-time error NC5502, exit 1)
-N10 G01 X1000 F6000
+; X800 under a #CS shifted by X200 is MCS X1000, beyond portal_3x's P-AXIS-00178 800 mm: run-time NC5502
+N5 #CS ON [1] [200, 0, 0, 0, 0, 0]
+N10 G01 X800 F6000
 N20 M30
