@@ -46,3 +46,9 @@ add_test(NAME cli_trc_test
 # errors, check and time agree, no NaN in the outputs.
 add_test(NAME cli_robust_motion_test
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/robust_motion_test.sh $<TARGET_FILE:ncsim>)
+# Issue 34's property over seeded hostile programs and scenarios: every run ends with a
+# documented status, JSON parses, no NaN or infinity in any output, no temporary file left.
+add_test(NAME cli_hostile_property_test
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/hostile_property_test.sh $<TARGET_FILE:ncsim>
+                 ${PROJECT_SOURCE_DIR} 40 34)
+set_tests_properties(cli_hostile_property_test PROPERTIES TIMEOUT 900)
