@@ -351,6 +351,10 @@ void check_channel_refs(Machine& m, const ListValues& ch, Reporter& r) {
                     number_text(factor) + " must be > 0 (100: F in mm/min, 0.1: m/min); 100 taken");
     }
     m.channel.feedrate_factor = 100.0;
+  } else if (factor < 1e-6) {  // ncsim's bound: F x 100 / factor must stay a finite feed
+    r.error(file, ch.loc("prog_start.feedrate_factor"), "NC3004",
+            param_ref("prog_start.feedrate_factor", ListKind::channel) + " = " +
+                number_text(factor) + " is below 1e-6 (100: F in mm/min, 0.1: m/min)");
   }
   const std::string override_type = ch.text("ncsim.path_override_type");
   if (override_type != "REDUCED" && override_type != "ORIGINAL" &&
