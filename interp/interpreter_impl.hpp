@@ -149,10 +149,11 @@ struct Interpreter::Impl {
   // --- offsets, scaling, path limits (interpreter_offsets.cpp) ---
   /// Zero-offset groups np_grp[0..96] (P-ZERO-00002's range).
   static constexpr std::size_t kZeroGroups = 97;
-  std::size_t zero_group = 0;                               // G53..G59 / G159=n: the active group
-  bool mcs_on = false;                                      // #MCS ON: the zero offsets are off
-  bool scale_on = false;                                    // #SCALE ON
-  std::array<double, kMaxAxes> scale_factors{};             // #SCALE factors by machine index
+  std::size_t zero_group = 0;                    // G53..G59 / G159=n: the active group
+  std::array<std::string, kMaxAxes> zero_names;  // "NP.V.X": each axis's V.G. offset array
+  bool mcs_on = false;                           // #MCS ON: the zero offsets are off
+  bool scale_on = false;                         // #SCALE ON
+  std::array<double, kMaxAxes> scale_factors{};  // #SCALE factors by machine index
   std::optional<std::pair<bool, ContourParams>> hsc_saved;  // #HSC ON: G26x state replaced
   std::optional<double> vector_vel;  // #VECTOR LIMIT ON [VEL]: path velocity cap [mm/s]
   void init_zero_offsets();

@@ -21,7 +21,8 @@ void Interpreter::Impl::init_zero_offsets() {
     v.values.assign(kZeroGroups, 0.0);
     for (std::size_t i = 0; i < kZeroGroups; ++i)
       v.values[i] = machine.zero_offsets.offset(i, j);
-    vars.provide_global("NP.V." + grammar::to_upper(machine.axes[j].name), std::move(v));
+    zero_names[j] = "NP.V." + grammar::to_upper(machine.axes[j].name);
+    vars.provide_global(zero_names[j], std::move(v));
   }
   zero_group = static_cast<std::size_t>(machine.zero_offsets.default_index);
 }
@@ -32,8 +33,7 @@ double Interpreter::Impl::zero_offset(std::uint8_t axis) const {
   const double preset = pset_offsets[axis];
   // G53 / G159=0 deselects every offset unless P-ZERO-00001 makes group 0 an offset too.
   if (zero_group == 0 && !machine.zero_offsets.g53_available) return preset;
-  return preset +
-         vars.global_element("NP.V." + grammar::to_upper(machine.axes[axis].name), zero_group);
+  return preset + vars.global_element(zero_names[axis], zero_group);
 }
 
 std::optional<double> Interpreter::Impl::axis_item(const ast::Block& b, const ast::Item& it,

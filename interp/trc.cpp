@@ -332,13 +332,7 @@ std::optional<Error> Compensator::push(Command c, std::deque<Command>& out) {
       return std::nullopt;
     }
     if (!in_plane) {  // a motion out of the plane (Z): runs where the compensated path is
-      if (behind_.size() >= kMaxHeldCommands) {
-        return error_at(c, "90011",
-                        "more than " + std::to_string(kMaxHeldCommands) +
-                            " blocks without a motion in the TRC plane");
-      }
-      behind_.push_back(std::move(c));
-      return std::nullopt;
+      return hold_behind(std::move(c));
     }
     const Motion motion = *m;
     return plane_motion(std::move(c), motion, out);
@@ -358,6 +352,11 @@ std::optional<Error> Compensator::push(Command c, std::deque<Command>& out) {
                         " while tool radius compensation is active (program G40 and a "
                         "deselection block before it)");
   }
+  return hold_behind(std::move(c));
+}
+
+std::optional<Error> Compensator::hold_behind(Command c) {
+  // 90011: the kernel's limit of blocks without a motion in the plane while compensating.
   if (behind_.size() >= kMaxHeldCommands) {
     return error_at(c, "90011",
                     "more than " + std::to_string(kMaxHeldCommands) +

@@ -123,6 +123,8 @@ class Compensator {
             bool transition) const;
   bool plane_of(const Motion& m, std::uint8_t& a1, std::uint8_t& a2) const;
   Error error_at(const Command& c, std::string id, std::string message) const;
+  /// Keeps `c` behind the held element (90011 beyond kMaxHeldCommands).
+  std::optional<Error> hold_behind(Command c);
 
   std::array<std::optional<std::uint8_t>, 3> xyz_;
   std::optional<Held> held_;

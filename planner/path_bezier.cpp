@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "planner/minimise.hpp"
 #include "planner/path.hpp"
 
 namespace ncsim::planner {
@@ -681,26 +682,8 @@ DerivativeBounds Segment::bezier_bounds() const noexcept {
           (k == 0 || speed[k] <= speed[k - 1]) && (k == samples || speed[k] <= speed[k + 1]);
       if (!low || !local) continue;
       const double tk = t0 + dt * static_cast<double>(k);
-      double lo = std::max(t0, tk - dt), hi = std::min(t1, tk + dt);
-      constexpr double kGolden = 0.6180339887498949;
-      double x1 = hi - kGolden * (hi - lo), x2 = lo + kGolden * (hi - lo);
-      double f1 = speed2(x1), f2 = speed2(x2);
-      for (int it = 0; it < 80 && hi - lo > 1e-15; ++it) {
-        if (f1 <= f2) {
-          hi = x2;
-          x2 = x1;
-          f2 = f1;
-          x1 = hi - kGolden * (hi - lo);
-          f1 = speed2(x1);
-        } else {
-          lo = x1;
-          x1 = x2;
-          f1 = f2;
-          x2 = lo + kGolden * (hi - lo);
-          f2 = speed2(x2);
-        }
-      }
-      const double tm = 0.5 * (lo + hi);
+      const double tm =
+          golden_section_minimum(speed2, std::max(t0, tk - dt), std::min(t1, tk + dt), 80);
       sample_at(tm);
       for (double d = dt; d > 1e-16; d *= 0.5) {
         if (tm - d >= t0) sample_at(tm - d);

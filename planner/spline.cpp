@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "planner/minimise.hpp"
+
 namespace ncsim::planner {
 
 namespace {
@@ -253,26 +255,7 @@ std::vector<SplinePiece> split_near_cusp(const SplinePiece& piece, AxisMask path
     const double t_lo = static_cast<double>(std::max(0, k - 1)) / kSamples;
     const double t_hi = static_cast<double>(std::min(kSamples, last + 1)) / kSamples;
     k = last + 1;
-    constexpr double kGolden = 0.6180339887498949;
-    double lo = t_lo, hi = t_hi;
-    double x1 = hi - kGolden * (hi - lo), x2 = lo + kGolden * (hi - lo);
-    double f1 = speed2(x1), f2 = speed2(x2);
-    for (int it = 0; it < 100 && hi - lo > 1e-15; ++it) {
-      if (f1 <= f2) {
-        hi = x2;
-        x2 = x1;
-        f2 = f1;
-        x1 = hi - kGolden * (hi - lo);
-        f1 = speed2(x1);
-      } else {
-        lo = x1;
-        x1 = x2;
-        f1 = f2;
-        x2 = lo + kGolden * (hi - lo);
-        f2 = speed2(x2);
-      }
-    }
-    const double t_m = 0.5 * (lo + hi);
+    const double t_m = golden_section_minimum(speed2, t_lo, t_hi, 100);
     // Halving stops 1 um from the near-cusp: smaller parts lose their digits (control points
     // within a few ulp of 500 mm), and the innermost part's curvature is the near-cusp's.
     const AxisVec p_m = point(t_m);
