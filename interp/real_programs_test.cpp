@@ -173,6 +173,22 @@ TEST_CASE("L CYCLE [NAME=.. @P1=..] calls a cycle file with its parameters") {
   CHECK(field(r.full[0], "Y") == doctest::Approx(4));
 }
 
+TEST_CASE("two implicit calls in one block are NC4308; #FILE NAME of another G code is NC4309") {
+  CHECK(run("%t\nG80 G81\nM30\n").error_id == "NC4308");
+  CHECK(run("%t\n#FILE NAME [G01=\"x.nc\"]\nM30\n").error_id == "NC4309");
+  CHECK(run("%t\n#FILE NAME [G805=5]\nM30\n").error_id == "NC4309");
+}
+
+TEST_CASE("#VECTOR LIMIT ON [VEL] without a value takes the channel's vector.velocity "
+          "(P-CHAN-00090)") {
+  machines::Machine m = test::machine("portal_3x");
+  m.channel.vector_velocity = 20.0;  // [mm/s] = 1200 mm/min
+  const test::Run r =
+      run_source(m, core::SourceFile("t.nc", "%t\n#VECTOR LIMIT ON [VEL]\nG01 X5 F6000\nM30\n"));
+  REQUIRE(r.error_id.empty());
+  CHECK(field(r.full[0], "F") == doctest::Approx(20.0));
+}
+
 TEST_CASE("a bad character in an implicit call's list is 22151; more than 50 values too") {
   CHECK(run("%t\nG80 [12 !]\nM30\n").error_id == "22151");
   std::string many = "%t\nG80 [";

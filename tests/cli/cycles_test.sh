@@ -56,6 +56,18 @@ else
   grep '^# tech' "$work/job.csv" | head -3
   echo "$last"
 fi
+# The zero-offset list (P-ZERO) and the feed unit (P-CHAN-00108) as the loader reads them.
+cp -r "$root/machines/mill_3x" "$work/zero"
+printf 'np_grp[1].achse[3].versch 10000\n' >>"$work/zero/zero.lis"
+expect "a zero offset of an axis the channel does not have is NC3016 at its key" 2 '' \
+  'zero\.lis:[0-9]+:[0-9]+: error: np_grp\[1\]\.achse\[3\]\.versch.*\[NC3016\]' -- \
+  check --machine "$work/zero" "$work/job.nc"
+cp -r "$root/machines/mill_3x" "$work/feed"
+printf 'prog_start.feedrate_factor 0\n' >>"$work/feed/channel.lis"
+printf '%%f\nG01 X10 F1000\nM30\n' >"$work/feed.nc"
+expect "P-CHAN-00108 = 0 is warning NC3022, F stays mm/min" 0 'feed\.nc: ok' '\[NC3022\]' -- \
+  check --machine "$work/feed" "$work/feed.nc"
+
 # --max-time ends a program that runs endlessly, with the reason (issue 33 item 9).
 cat >"$work/endless.nc" <<'NC'
 %endless
