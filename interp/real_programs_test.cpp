@@ -179,8 +179,9 @@ TEST_CASE("two implicit calls in one block are NC4308; #FILE NAME of another G c
   CHECK(run("%t\n#FILE NAME [G805=5]\nM30\n").error_id == "NC4309");
 }
 
-TEST_CASE("#VECTOR LIMIT ON [VEL] without a value takes the channel's vector.velocity "
-          "(P-CHAN-00090)") {
+TEST_CASE(
+    "#VECTOR LIMIT ON [VEL] without a value takes the channel's vector.velocity "
+    "(P-CHAN-00090)") {
   machines::Machine m = test::machine("portal_3x");
   m.channel.vector_velocity = 20.0;  // [mm/s] = 1200 mm/min
   const test::Run r =
