@@ -118,6 +118,15 @@ std::variant<Loaded, int> load(const ProgramOptions& options,
   if (s) {
     for (const scenario::VeInitial& v : s->ve)
       interp_options.external.emplace(v.name, v.value);
+    // [tech]: execution times over the machine's NCSIM-CHAN-650..653 (docs/scenario.md).
+    machines::TechTable& tech = loaded.machine->channel.tech;
+    for (const scenario::TechDuration& d : s->tech) {
+      machines::TechFunction& f = d.kind == 'M'   ? tech.m[d.number]
+                                  : d.kind == 'H' ? tech.h[d.number]
+                                  : d.kind == 'S' ? tech.s
+                                                  : tech.t;
+      f.duration = d.seconds;
+    }
   }
   const core::DiagnosticList syntax = grammar::check_program(file);
   for (const core::Diagnostic& d : syntax.items())
@@ -405,8 +414,9 @@ std::string stop_reason(bool failed, const ipo::Channel& ch) {
 
 void json_split(std::ostream& os, const ipo::TimeSplit& s) {
   os << "{\"rapid\":" << json_num(s.rapid) << ",\"feed\":" << json_num(s.feed)
-     << ",\"dwell\":" << json_num(s.dwell) << ",\"exact_stop\":" << json_num(s.exact_stop)
-     << ",\"waiting\":" << json_num(s.starved) << ",\"held\":" << json_num(s.held) << '}';
+     << ",\"dwell\":" << json_num(s.dwell) << ",\"tech\":" << json_num(s.tech)
+     << ",\"exact_stop\":" << json_num(s.exact_stop) << ",\"waiting\":" << json_num(s.starved)
+     << ",\"held\":" << json_num(s.held) << '}';
 }
 
 }  // namespace
@@ -429,7 +439,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
     if (options.blocks) out << ",\"blocks\":[";
   } else if (options.blocks) {
     out << "# line time_s distance_mm feed_programmed_mm_min feed_reached_mm_min rapid_s feed_s "
-           "dwell_s exact_stop_s waiting_s held_s lost_s feed_cap_mm_min\n";
+           "dwell_s tech_s exact_stop_s waiting_s held_s lost_s feed_cap_mm_min\n";
   }
   const auto on_block = [&](const ipo::BlockTime& b) {
     if (!options.blocks) return;
@@ -450,8 +460,8 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
       out << block_where(interp, b.file, b.line) << ' ' << num(b.time) << ' ' << num(b.distance)
           << ' ' << num(b.feed_programmed * 60.0) << ' ' << num(b.feed_reached * 60.0) << ' '
           << num(b.split.rapid) << ' ' << num(b.split.feed) << ' ' << num(b.split.dwell) << ' '
-          << num(b.split.exact_stop) << ' ' << num(b.split.starved) << ' ' << num(b.split.held)
-          << ' ' << num(b.lost) << ' ';
+          << num(b.split.tech) << ' ' << num(b.split.exact_stop) << ' ' << num(b.split.starved)
+          << ' ' << num(b.split.held) << ' ' << num(b.lost) << ' ';
       if (b.feed_cap > 0.0)
         out << num(b.feed_cap * 60.0) << '\n';
       else
@@ -526,8 +536,9 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
     out << in.file.name() << ": " << (failed ? "stopped after " : "") << seconds(r.total) << " s ("
         << r.cycles << " cycles of " << num(in.t_cycle * 1e3) << " ms), path " << human(r.distance)
         << " mm; rapid " << human(r.split.rapid) << " s, feed " << human(r.split.feed)
-        << " s, dwell " << human(r.split.dwell) << " s, exact stop " << human(r.split.exact_stop)
-        << " s, waiting " << human(r.split.starved) << " s, held " << human(r.split.held) << " s";
+        << " s, dwell " << human(r.split.dwell) << " s, tech " << human(r.split.tech)
+        << " s, exact stop " << human(r.split.exact_stop) << " s, waiting "
+        << human(r.split.starved) << " s, held " << human(r.split.held) << " s";
     // Under a scenario: the time lost to override and holds (docs/ipo.md "Time lost").
     if (channel_plays) out << "; lost to override and holds " << human(r.lost) << " s";
     out << '\n';

@@ -160,8 +160,16 @@ struct SplineEnd {
   std::uint32_t points = 0;  ///< vertices of the section, start included
 };
 
+/// G04, or the wait for a technology function's acknowledgement (TechSync): the path stops
+/// before it.
 struct Dwell {
   double seconds = 0.0;
+  /// A technology function's acknowledgement (`time`'s tech column), not a G04
+  bool tech = false;
+  /// MVS_SNS's wait after the block's motion: `seconds` count from the functions' output at the
+  /// block's start, so only what the motion did not cover is left (docs/interp.md "Technology
+  /// functions")
+  bool since_output = false;
 };
 
 enum class TechKind : std::uint8_t { m, h, s, t, d };
@@ -172,6 +180,9 @@ struct Tech {
   /// M/H additional value for the PLC (`M200=1200`: 1200; TF5200 "M/H functions with optional
   /// additional information"), a whole number
   std::optional<double> extra;
+  /// Its synchronisation type from the channel list (machines::TechTable); NO_SYNCH is not
+  /// output to the PLC
+  machines::TechSync sync = machines::TechSync::mos;
 };
 
 /// M00 (optional = false) / M01 (optional = true).

@@ -7,6 +7,7 @@
 #include "grammar/block_parser.hpp"
 #include "grammar/keywords.hpp"
 #include "interp/interpreter_impl.hpp"
+#include "interp/tech_functions.hpp"
 
 namespace ncsim::interp {
 namespace {
@@ -172,8 +173,11 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
   bw.clear();
   if (!read_g_codes(b, bw) || !read_addresses(b, bw) || !update_trc(bw)) return false;
   if (bw.g74 && !check_homing(b, bw)) return false;  // --- static-saw: before S is emitted
+  // Technology functions (interp/tech_functions.hpp): MNS_SNS ones after the block's action.
+  const TechWaits waits = resolve_tech(bw.tech, machine.channel.tech);
   for (const Tech& t : bw.tech)
-    emit(line, t);
+    if (t.sync != machines::TechSync::mns_sns) emit(line, t);
+  if (waits.before) emit(line, Dwell{*waits.before, true, false});
   bool ok = true;
   if (bw.g04) {
     ok = run_dwell(b, bw);
@@ -185,6 +189,12 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
     ok = run_block_motion(b, bw);
   }
   if (!ok || !run_axis_commands(b)) return false;
+  if (waits.since) emit(line, Dwell{*waits.since, true, true});
+  if (waits.after) {
+    for (const Tech& t : bw.tech)
+      if (t.sync == machines::TechSync::mns_sns) emit(line, t);
+    emit(line, Dwell{*waits.after, true, false});
+  }
   return !bw.program_m || run_program_m(b, *bw.program_m);
 }
 

@@ -127,8 +127,9 @@ std::string to_trace_line(const Command& c, const machines::Machine& m) {
           out += b.type == SplineType::akima ? " SPLINE_END AKIMA" : " SPLINE_END BSPLINE";
           out += " points=" + std::to_string(b.points);
         } else if constexpr (std::is_same_v<T, Dwell>) {
-          out += " DWELL";
+          out += b.tech ? " TECH-WAIT" : " DWELL";
           field(out, "t", b.seconds);
+          if (b.since_output) out += " since=output";
         } else if constexpr (std::is_same_v<T, Tech>) {
           static constexpr const char* kNames[] = {"M", "H", "S", "T", "D"};
           out += " TECH ";
@@ -136,6 +137,12 @@ std::string to_trace_line(const Command& c, const machines::Machine& m) {
           out += '=';
           num(out, b.value);
           if (b.extra) field(out, "value", *b.extra);
+          if (b.sync != machines::TechSync::mos) {  // the default is not shown
+            static constexpr const char* kSync[] = {"NO_SYNCH", "MOS", "MVS_SVS", "MVS_SNS",
+                                                    "MNS_SNS"};
+            out += " sync=";
+            out += kSync[static_cast<int>(b.sync)];
+          }
         } else if constexpr (std::is_same_v<T, ProgramStop>) {
           out += b.optional ? " STOP M01" : " STOP M00";
         } else if constexpr (std::is_same_v<T, AxisCommand>) {

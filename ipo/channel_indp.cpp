@@ -148,6 +148,7 @@ Channel::EventOutcome Channel::indp_wait(const interp::WaitIndp& w, const Channe
 }
 
 Channel::EventOutcome Channel::indp_tech(const interp::Tech& t, const ChannelEvent& e) noexcept {
+  if (t.sync == machines::TechSync::none) return EventOutcome::done;  // NO_SYNCH: no output
   try {
     tech_.push_back(TechOutput{static_cast<double>(ipo_.cycle().index) * ipo_.t_cycle(), e.line,
                                e.file, t.kind, t.value, t.extra});

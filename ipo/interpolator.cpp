@@ -141,7 +141,7 @@ bool PathInterpolator::fill() noexcept {
                      std::to_string(d->seconds) + " s (line " + std::to_string(d->line) + ")";
           return false;
         }
-        dwell_ = PendingDwell{d->seconds, d->line, d->event_tag, d->file};
+        dwell_ = PendingDwell{d->seconds, d->line, d->event_tag, d->file, d->tech, d->since_output};
         prep_.finish(ready_);  // the path stops before the dwell
         continue;
       }
@@ -227,6 +227,10 @@ void PathInterpolator::sample(double distance) noexcept {
   c.interval_jerk_limited = interval_jerk_limited_;
   c.programmed = &prog;
   if (observer_ != nullptr && path.parts() > 1) report_part_starts(s_from, ps.s);  // --- operator
+  if (prog.event_tag > c.event_tag) {
+    tag_rise_ = prog.event_tag;
+    tag_rise_index_ = c.index + 1;  // sample() runs before the cycle is counted
+  }
   c.event_tag = std::max(c.event_tag, prog.event_tag);
   if (detail_ != Detail::axes) return;
   if (sink_ && path.parts() > 1) report_inner_joints(s_from, ps.s);
@@ -378,7 +382,11 @@ Status PathInterpolator::step() noexcept {
     }
     if (dwell_) {
       wait_left_ = cycles_for(dwell_->seconds);
-      wait_kind_ = Activity::dwell;
+      if (dwell_->since_output && dwell_->event_tag == tag_rise_) {
+        const std::uint64_t since = c.index >= tag_rise_index_ ? c.index - tag_rise_index_ : 0;
+        wait_left_ = wait_left_ > since ? wait_left_ - since : 0;
+      }
+      wait_kind_ = dwell_->tech ? Activity::tech : Activity::dwell;
       wait_line_ = dwell_->line;
       wait_file_ = dwell_->file;
       // --- operator: a G04 starts (a 0 s dwell is the source's flush before a barrier, or

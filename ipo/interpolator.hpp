@@ -49,6 +49,11 @@ struct Dwell {
   std::uint32_t line = 0;       ///< source line of the G04 block
   std::uint32_t event_tag = 0;  ///< channel events up to this tag fire when the dwell starts
   std::uint16_t file = 0;       ///< source file of `line` (interp::Command::file, 0: main)
+  /// A technology function's acknowledgement (Activity::tech), not a G04
+  bool tech = false;
+  /// `seconds` count from the output of the events of `event_tag` when a motion started with
+  /// them (MVS_SNS: the wait at the block's end is what the motion did not cover)
+  bool since_output = false;
 };
 
 /// A point of the program where the channel takes over (ipo/channel_event.hpp): the path
@@ -140,6 +145,7 @@ enum class Activity : std::uint8_t {
   exact_stop,  ///< G60 / G360: waiting for the window and the settling time
   starved,     ///< the source gave nothing that moves (zero-length blocks only)
   channel,     ///< the path stands at a ChannelWait until the channel releases it
+  tech,        ///< waiting for a technology function's acknowledgement (Dwell::tech)
 };
 
 /// The cycle just done.
@@ -305,6 +311,8 @@ class PathInterpolator {
     std::uint32_t line = 0;
     std::uint32_t event_tag = 0;
     std::uint16_t file = 0;
+    bool tech = false;
+    bool since_output = false;
   };
   /// Keeps the window full: pulls items, prepares Moves, pushes segments. Returns false on error.
   bool fill() noexcept;
@@ -361,7 +369,11 @@ class PathInterpolator {
   bool finished_ = false;
   bool failed_ = false;
   std::optional<PendingDwell> dwell_;  ///< G04 after the moves in the window
-  std::optional<ChannelWait> wait_;    ///< ChannelWait after the moves in the window
+  /// The last rise of Cycle::event_tag by a motion: its tag and the cycle it rose in (the
+  /// output of its events; Dwell::since_output)
+  std::uint32_t tag_rise_ = 0;
+  std::uint64_t tag_rise_index_ = 0;
+  std::optional<ChannelWait> wait_;  ///< ChannelWait after the moves in the window
   WaitHandler* wait_handler_ = nullptr;
   bool channel_held_ = false;  ///< the path holds at a ChannelWait until release_wait()
 

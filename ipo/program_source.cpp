@@ -434,8 +434,8 @@ bool ProgramSource::pull(Item& out) {
             else
               emit_path(std::move(mv));  // --- static-saw: queued, handed out at the loop's top
           } else if constexpr (std::is_same_v<T, interp::Dwell>) {
-            static_stop(line, "a dwell");  // --- static-saw
-            out = Dwell{body.seconds, line, tag_};
+            static_stop(line, body.tech ? "a technology function's acknowledgement" : "a dwell");
+            out = Dwell{body.seconds, line, tag_, 0, body.tech, body.since_output};
             given_ = tag_;
             produced = true;
           } else if constexpr (std::is_same_v<T, interp::End>) {

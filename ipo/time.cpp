@@ -10,9 +10,9 @@ namespace ncsim::ipo {
 
 namespace {
 
-/// Cycles by activity (rapid, feed, dwell, exact stop, starved, held): integers, so the split
-/// adds up to the total exactly.
-using Counts = std::array<std::uint64_t, 6>;
+/// Cycles by activity (rapid, feed, dwell, exact stop, starved, held, tech): integers, so the
+/// split adds up to the total exactly.
+using Counts = std::array<std::uint64_t, 7>;
 
 void count(Counts& n, const Cycle& c) {
   switch (c.activity) {
@@ -25,6 +25,9 @@ void count(Counts& n, const Cycle& c) {
     case Activity::exact_stop:
       ++n[3];
       break;
+    case Activity::tech:
+      ++n[6];
+      break;
     case Activity::starved:
     case Activity::channel:  // the path stands for a channel event: "waiting" too
       ++n[4];
@@ -34,7 +37,7 @@ void count(Counts& n, const Cycle& c) {
 
 TimeSplit split_of(const Counts& n, double t) {
   auto s = [&](std::size_t i) { return static_cast<double>(n[i]) * t; };
-  return TimeSplit{s(0), s(1), s(2), s(3), s(4), s(5)};
+  return TimeSplit{s(0), s(1), s(2), s(3), s(4), s(5), s(6)};
 }
 
 }  // namespace

@@ -14,7 +14,7 @@
 // before every cycle (it may call set_override / set_feed_hold); cycles in which the path stands by
 // hold count as `held`, and each block carries the time lost to override and holds, measured on the
 // path (Cycle::lost). Invariants: total == cycles * T == rapid + feed + dwell + exact_stop +
-// starved + held.
+// starved + held + tech.
 
 #include <array>
 #include <cstdint>
@@ -34,6 +34,7 @@ struct TimeSplit {
   double starved = 0.0;     ///< waiting: the path stands for a channel event (ChannelWait:
                             ///< #SYNC IN, INDP, #WAIT INDP) or has nothing to move
   double held = 0.0;        ///< motion cycles standing by feed hold / override 0 (issue 13)
+  double tech = 0.0;        ///< waiting for technology functions' acknowledgements (issue 33)
 };
 
 /// One block as executed.
@@ -74,7 +75,7 @@ class TimeCounter {
   TimeResult finish();
 
  private:
-  using Counts = std::array<std::uint64_t, 6>;  // rapid, feed, dwell, exact stop, starved, held
+  using Counts = std::array<std::uint64_t, 7>;  // rapid .. held, tech (time.cpp)
   double t_ = 0.0;
   std::function<void(const BlockTime&)> on_block_;
   TimeResult r_;

@@ -5,6 +5,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -75,6 +76,40 @@ TEST_CASE("a G60 block shows its settling time; a dwell its time; distances are 
   CHECK(blocks[2].distance == doctest::Approx(40.0).epsilon(1e-12));
   CHECK(r.distance == doctest::Approx(70.0).epsilon(1e-12));
   CHECK(r.split.rapid == 0.0);
+}
+
+TEST_CASE(
+    "a technology function's wait counts as tech; MVS_SNS waits only what the motion did not "
+    "cover since the output") {
+  const auto ax = axis(100.0, 1000.0, 1e5);
+  Config cfg;
+  cfg.axes = {ax, ax, ax};
+  const double t = cfg.channel.t_cycle;
+  for (const double d : {0.5, 3.0}) {
+    CAPTURE(d);
+    planner::Move mv = line(vec(0, 0), vec(30, 0), 20.0, 1);
+    mv.event_tag = 1;  // the MVS_SNS function's output: when this motion starts
+    ListSource src({mv, Dwell{d, 2, 1, 0, true, true}, line(vec(30, 0), vec(30, 5), 20.0, 3)});
+    std::vector<BlockTime> blocks;
+    const TimeResult r = machining_time(cfg, src, [&](const BlockTime& b) { blocks.push_back(b); });
+    REQUIRE(r.status == Status::finished);
+    const double motion = blocks[0].time;
+    REQUIRE(motion > 1.5);  // 30 mm at 20 mm/s
+    const double left = std::max(0.0, d - motion);
+    CHECK(std::abs(r.split.tech - left) <= t + 1e-9);  // to the cycle
+    CHECK(r.split.dwell == 0.0);
+  }
+  // A G04-like tech wait (MVS_SVS / MNS_SNS) is whole; a since-output wait with no motion of its
+  // tag is whole too.
+  for (const bool since : {false, true}) {
+    ListSource src({line(vec(0, 0), vec(30, 0), 20.0, 1), Dwell{0.75, 2, 7, 0, true, since},
+                    line(vec(30, 0), vec(30, 5), 20.0, 3)});
+    const TimeResult r = machining_time(cfg, src);
+    CHECK(r.split.tech == doctest::Approx(0.75));
+    const TimeSplit& s = r.split;
+    CHECK(s.rapid + s.feed + s.dwell + s.tech + s.exact_stop + s.starved + s.held ==
+          doctest::Approx(r.total).epsilon(1e-12));
+  }
 }
 
 TEST_CASE("an F above the axes' velocity is capped and the block names the cap") {

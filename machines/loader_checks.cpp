@@ -441,6 +441,7 @@ void check_machine(Machine& m, const ListValues& ch, const std::vector<ListValue
   }
   const bool functions_known = interpret_functions(m.channel, ch, r);
   check_channel_refs(m, ch, r);
+  read_tech_table(m.channel, ch, diagnostics);
   check_conveyor(m, ch, axes, functions_known, r);
 }
 

@@ -72,4 +72,8 @@ core::Diagnostic make_diag(core::Severity severity, const std::string& file, cor
 void check_machine(Machine& machine, const ListValues& channel_values,
                    const std::vector<ListValues>& axis_values, core::DiagnosticList& diagnostics);
 
+/// The technology functions' synchronisation types and execution times (tech_sync.cpp).
+void read_tech_table(ChannelParams& channel, const ListValues& channel_values,
+                     core::DiagnosticList& diagnostics);
+
 }  // namespace ncsim::machines::detail

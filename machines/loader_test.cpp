@@ -570,5 +570,64 @@ TEST_CASE(
   }
 }
 
+TEST_CASE(
+    "P-CHAN-00041 / 00027 / 00081 / 00086: technology functions' synchronisation types by name or "
+    "hex, PLC_INFO joined, and NCSIM-CHAN-650..653 execution times in ms") {
+  const std::string head =
+      "configuration.interpolator.function FCT_DLM\n"
+      "conveyor_sync.log_number_master 4\n";
+  const ChannelLoad r = load_base_with_channel("tech_ok", head +
+                                                              "m_synch[6] MVS_SVS\n"
+                                                              "m_synch[8] 0x00000008   # MNS_SNS\n"
+                                                              "m_synch[9] NO_SYNCH\n"
+                                                              "h_synch[2] PLC_INFO|MVS_SNS\n"
+                                                              "spindel[0].s_synch 0x00020002\n"
+                                                              "tool.synch MNS_SNS\n"
+                                                              "ncsim.m_duration[6] 2500\n"
+                                                              "ncsim.m_duration[7] 10\n"
+                                                              "ncsim.h_duration[2] 40\n"
+                                                              "ncsim.t_duration 4000\n");
+  INFO(all_diagnostics(r.result));
+  CHECK(r.result.diagnostics.items().empty());
+  REQUIRE(r.result.machine.has_value());
+  const TechTable& t = r.result.machine->channel.tech;
+  CHECK(t.m.at(6).sync == TechSync::mvs_svs);
+  CHECK(t.m.at(6).duration == doctest::Approx(2.5));
+  CHECK(t.m.at(7).sync == TechSync::mos);  // a time alone keeps ncsim's default type
+  CHECK(t.m.at(7).duration == doctest::Approx(0.01));
+  CHECK(t.m.at(8).sync == TechSync::mns_sns);
+  CHECK(t.m.at(9).sync == TechSync::none);
+  CHECK(t.h.at(2).sync == TechSync::mvs_sns);
+  CHECK(t.h.at(2).duration == doctest::Approx(0.04));
+  CHECK(t.s.sync == TechSync::mvs_svs);
+  CHECK(t.s.duration == 0.0);
+  CHECK(t.t.sync == TechSync::mns_sns);
+  CHECK(t.t.duration == doctest::Approx(4.0));
+  CHECK(t.m.count(3) == 0);  // not listed: MOS with no time (TechFunction's default)
+}
+
+TEST_CASE(
+    "P-CHAN-00041: MET_SVS, MNE_SNS, FAW_SYNCH and two base types are NC3013 not supported, an "
+    "unknown name NC3003, a negative time NC3004, each at its line") {
+  const std::string head =
+      "configuration.interpolator.function FCT_DLM\n"
+      "conveyor_sync.log_number_master 4\n";
+  const std::pair<const char*, const char*> bad[] = {
+      {"m_synch[7] MET_SVS", "NC3013"},       {"m_synch[7] MNE_SNS", "NC3013"},
+      {"m_synch[7] MOS|FAW_SYNCH", "NC3013"}, {"m_synch[7] 0x00000006", "NC3013"},
+      {"m_synch[7] 0x10000002", "NC3013"},    {"m_synch[7] MVS_FOO", "NC3003"},
+      {"tool.synch 0x0000000G", "NC3003"},    {"ncsim.m_duration[7] -1", "NC3004"},
+      {"m_synch[1000] MOS", "NC3009"}};
+  for (const auto& [text, id] : bad) {
+    CAPTURE(text);
+    const ChannelLoad r = load_base_with_channel("tech_bad", head + text + "\n");
+    const core::Diagnostic e = only_error(r.result);
+    CHECK(e.id == id);
+    CHECK(e.file == r.channel_file);
+    CHECK(e.loc.line == 3);
+    if (std::string(id) == "NC3013") CHECK(e.message.find("not supported") != std::string::npos);
+  }
+}
+
 }  // namespace
 }  // namespace ncsim::machines

@@ -191,6 +191,34 @@ enum class PathOverrideType {
 /// NC3013 at load: ncsim does not model the HSC profile (docs/machines.md).
 enum class SlopeProfile { step, trapez, sin2 };
 
+/// What the channel does with a technology function, the TF5200 synchronisation types
+/// (P-CHAN-00041 m_synch[i], P-CHAN-00027 h_synch[i], P-CHAN-00081 spindel[0].s_synch,
+/// P-CHAN-00086 tool.synch) that ncsim runs; docs/interp.md "Technology functions".
+enum class TechSync : std::uint8_t {
+  none,     ///< NO_SYNCH 0x0: not output to the PLC, takes no time
+  mos,      ///< MOS 0x1: output before the block's motion, no acknowledgement awaited
+  mvs_svs,  ///< MVS_SVS 0x2: output before the block; its motion starts after the acknowledgement
+  mvs_sns,  ///< MVS_SNS 0x4: output before the block; the path stops at its end until acknowledged
+  mns_sns,  ///< MNS_SNS 0x8: output after the block's motion; the path waits there
+};
+
+/// One technology function's synchronisation and execution time (the PLC's acknowledgement
+/// after its output: a tool change, a valve, a laser on / off).
+struct TechFunction {
+  /// ncsim's default when the list names none: MOS (the manual's NOT_VALID would refuse every
+  /// M function a list does not name; docs/interp.md "Technology functions")
+  TechSync sync = TechSync::mos;
+  double duration = 0.0;  ///< [s] output -> acknowledgement, >= 0 (NCSIM-CHAN-650..653)
+};
+
+/// The channel's technology functions by kind and number.
+struct TechTable {
+  std::map<std::uint32_t, TechFunction> m;  ///< M functions by number
+  std::map<std::uint32_t, TechFunction> h;  ///< H functions by number
+  TechFunction s;                           ///< the spindle's S function
+  TechFunction t;                           ///< the tool request (T)
+};
+
 struct ChannelParams {
   InterpolatorFunction interpolator;
   SlopeProfile start_slope = SlopeProfile::step;  ///< P-CHAN-00071 prog_start.slope.profile
@@ -225,6 +253,8 @@ struct ChannelParams {
   double feedrate_factor = 100.0;
   /// P-CHAN-00099 prog_start.feedrate: the feed before the program's first F; 0: none [mm/s]
   double default_feed = 0.0;
+  /// Technology functions' synchronisation types and execution times (TechTable)
+  TechTable tech;
 };
 
 /// The zero-offset list (TF5200 "Zero offsets", P-ZERO-0000x), converted to mm / deg.

@@ -63,6 +63,8 @@ void split(std::string& s, const ipo::TimeSplit& x) {
   exact(s, x.feed);
   s += ",\"dwell\":";
   exact(s, x.dwell);
+  s += ",\"tech\":";
+  exact(s, x.tech);
   s += ",\"exact_stop\":";
   exact(s, x.exact_stop);
   s += ",\"waiting\":";

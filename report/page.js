@@ -244,9 +244,10 @@
   if (D.error) el('pre', root, D.error, 'err');
   if (D.t.length === 0) el('p', root, 'The run has no interpolation cycle: nothing to chart.', 'bad');
   var sp = D.total.split;
-  table(root, ['rapid [s]', 'feed [s]', 'dwell [s]', 'exact stop [s]', 'waiting [s]', 'held [s]'],
-        [[fmt(sp.rapid), fmt(sp.feed), fmt(sp.dwell), fmt(sp.exact_stop), fmt(sp.waiting),
-          fmt(sp.held)]]);
+  table(root, ['rapid [s]', 'feed [s]', 'dwell [s]', 'tech [s]', 'exact stop [s]', 'waiting [s]',
+               'held [s]'],
+        [[fmt(sp.rapid), fmt(sp.feed), fmt(sp.dwell), fmt(sp.tech), fmt(sp.exact_stop),
+          fmt(sp.waiting), fmt(sp.held)]]);
 
   // --- Audit.
   el('h2', root, 'Audit');
@@ -413,13 +414,14 @@
      ' block records (ncsim time --blocks), longest first', 'note');
   table(root, ['line', 'time [s]', 'distance [mm]', 'feed programmed [mm/min]',
                'feed reached [mm/min]', 'F capped by the axes to [mm/min]', 'rapid [s]',
-               'feed [s]', 'dwell [s]', 'exact stop [s]', 'waiting [s]'],
+               'feed [s]', 'dwell [s]', 'tech [s]', 'exact stop [s]', 'waiting [s]'],
         D.slowest.map(function (b) {
           return [b.line, fmt(b.time_s), fmt(b.distance_mm), fmt(b.feed_programmed_mm_min),
                   fmt(b.feed_reached_mm_min),
                   b.feed_cap_mm_min === undefined ? '' : fmt(b.feed_cap_mm_min),
                   fmt(b.split.rapid), fmt(b.split.feed),
-                  fmt(b.split.dwell), fmt(b.split.exact_stop), fmt(b.split.waiting)];
+                  fmt(b.split.dwell), fmt(b.split.tech), fmt(b.split.exact_stop),
+                  fmt(b.split.waiting)];
         }));
   building = false;
   update();

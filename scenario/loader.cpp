@@ -10,6 +10,7 @@
 #include <string_view>
 #include <utility>
 
+#include "core/limits.hpp"
 #include "core/number_text.hpp"
 #include "scenario/loader_detail.hpp"
 
@@ -129,6 +130,8 @@ class Reader : public ReaderBase {
         read_events(node, s);
       } else if (name == "stop") {
         read_stop(node, s);
+      } else if (name == "tech") {
+        read_tech(node, s);
       } else if (name == "conveyor") {
         read_conveyor(*this, node, s);
         if (context_.conveyor_axis == false) {
@@ -154,7 +157,7 @@ class Reader : public ReaderBase {
       } else {
         error(kUnknownKey, key.source(),
               "unknown key `" + name + "`" +
-                  suggestion(name, {"description", "ve", "event", "stop", "conveyor"}));
+                  suggestion(name, {"description", "ve", "event", "stop", "conveyor", "tech"}));
       }
     }
     return s;
@@ -188,6 +191,31 @@ class Reader : public ReaderBase {
   void read_ve(const toml::node& node, Scenario& s) {
     read_named(node, "ve", false, [&](const std::string& name, double v, const auto& at) {
       s.ve.push_back(VeInitial{name, v, loc(at)});
+    });
+  }
+
+  // [tech] M6 = 4.5: names M<n> / H<n> (n 0 .. 999), S, T; seconds 0 .. 86400.
+  void read_tech(const toml::node& node, Scenario& s) {
+    read_named(node, "tech", false, [&](const std::string& name, double v, const auto& at) {
+      TechDuration d;
+      d.kind = name[0];
+      d.seconds = v;
+      const std::string digits = name.substr(1);
+      const bool numbered = d.kind == 'M' || d.kind == 'H';
+      const bool digits_ok = !digits.empty() && digits.size() <= 3 &&
+                             digits.find_first_not_of("0123456789") == std::string::npos;
+      if (numbered ? !digits_ok : !(name == "S" || name == "T")) {
+        error(
+            kName, at,
+            "tech." + name + ": name a technology function: M<n> or H<n> with n 0 .. 999, S or T");
+        return;
+      }
+      if (numbered) d.number = static_cast<std::uint32_t>(std::stoul(digits));
+      if (!(v >= 0.0 && v <= core::kLongestTime)) {
+        error(kRange, at, "tech." + name + " = " + value_text(v) + " s is outside 0 .. 86400 s");
+        return;
+      }
+      s.tech.push_back(d);
     });
   }
 

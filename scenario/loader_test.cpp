@@ -94,6 +94,29 @@ TEST_CASE("V.E. values alone need no channel loop") {
   CHECK_FALSE(r.scenario->needs_channel());
 }
 
+TEST_CASE("[tech] gives technology functions' execution times in seconds; bad names and values") {
+  const LoadResult r = parse("[tech]\nM6 = 4.5\nh12 = 0.25\nS = 1\nT = 0\n");
+  REQUIRE(r.scenario);
+  CHECK_FALSE(r.scenario->needs_channel());
+  const auto& t = r.scenario->tech;
+  REQUIRE(t.size() == 4);
+  const auto seconds = [&](char kind, std::uint32_t number) {
+    for (const TechDuration& d : t)
+      if (d.kind == kind && d.number == number) return d.seconds;
+    return -1.0;
+  };
+  CHECK(seconds('M', 6) == 4.5);
+  CHECK(seconds('H', 12) == 0.25);
+  CHECK(seconds('S', 0) == 1.0);
+  CHECK(seconds('T', 0) == 0.0);
+  CHECK(has(only_error(parse("[tech]\nM1000 = 1\n")), "NC7008", 2, "M<n> or H<n>"));
+  CHECK(has(only_error(parse("[tech]\nQ = 1\n")), "NC7008", 2, "S or T"));
+  CHECK(has(only_error(parse("[tech]\nM = 1\n")), "NC7008", 2, "M<n>"));
+  CHECK(has(only_error(parse("[tech]\nM3 = -1\n")), "NC7004", 2, "outside 0 .. 86400 s"));
+  CHECK(has(only_error(parse("[tech]\nM3 = 90000\n")), "NC7004", 2, "outside"));
+  CHECK(has(only_error(parse("[tech]\nM3 = 'x'\n")), "NC7003", 2, "tech.M3"));
+}
+
 TEST_CASE("a TOML syntax error is NC7001 at its line and column") {
   const LoadResult r = parse("[ve]\nA = \n");
   const core::Diagnostic& d = only_error(r);

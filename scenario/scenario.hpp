@@ -178,6 +178,14 @@ inline constexpr double kOverrideMin = 0.001;
 /// Tolerance of time comparisons [s]: cycle times are sums of t_cycle, not exact decimals.
 inline constexpr double kTimeEpsilon = 1e-9;
 
+/// `[tech]`: a technology function's execution time, output -> acknowledgement (`M6 = 4.5`:
+/// seconds), over the machine's NCSIM-CHAN-650..653 (docs/scenario.md "[tech]").
+struct TechDuration {
+  char kind = 'M';           ///< 'M', 'H', 'S' or 'T'
+  std::uint32_t number = 0;  ///< M / H number 0 .. 999 (0 for S and T)
+  double seconds = 0.0;      ///< [s] 0 .. 86400
+};
+
 /// The scenario: built only by load_scenario(); immutable afterwards.
 struct Scenario {
   std::string file;                  ///< the file it was read from, as given
@@ -186,6 +194,7 @@ struct Scenario {
   std::vector<Event> events;         ///< `[[event]]`, in file order
   StopConditions stop;               ///< `[stop]`
   std::optional<Conveyor> conveyor;  ///< `[conveyor]` (conveyor tracking, issue 14)
+  std::vector<TechDuration> tech;    ///< `[tech]`, in key order
 
   /// True when something needs the channel loop (events or stop conditions), i.e. more than
   /// the V.E. initial values that decode-only commands (`check`, `trace`) read.

@@ -73,10 +73,10 @@ expect "a 0.5 s feed hold makes the run (1.507 s) 0.5 s longer" 0 've_branch\.nc
 checks=$((checks + 1))
 "$ncsim" time --blocks "$fixtures/ve_branch.nc" --scenario "$work/hold.toml" >"$work/hb" 2>&1
 "$ncsim" time --blocks --json "$fixtures/ve_branch.nc" --scenario "$work/hold.toml" >"$work/hj" 2>&1
-held2=$(awk '$1 == 2 { print $11 }' "$work/hb")
-lost2=$(awk '$1 == 2 { print $12 }' "$work/hb")
-held_sum=$(awk '!/^#/ && NF == 13 { s += $11 } END { print s }' "$work/hb")
-lost_sum=$(awk '!/^#/ && NF == 13 { s += $12 } END { printf "%.9f", s }' "$work/hb")
+held2=$(awk '$1 == 2 { print $12 }' "$work/hb")
+lost2=$(awk '$1 == 2 { print $13 }' "$work/hb")
+held_sum=$(awk '!/^#/ && NF == 14 { s += $12 } END { print s }' "$work/hb")
+lost_sum=$(awk '!/^#/ && NF == 14 { s += $13 } END { printf "%.9f", s }' "$work/hb")
 lost_total=$(sed -E 's/.*"total_s":[^,]+,"distance_mm":[^,]+,"lost_s":([^,]+),.*/\1/' "$work/hj")
 if grep -q '^# line .* waiting_s held_s lost_s feed_cap_mm_min$' "$work/hb" &&
   [[ $held_sum == "$held2" ]] &&
@@ -257,14 +257,14 @@ expect "time prints its total to the microsecond, not the sum's rounding" 0 \
   'laser_repaired\.nc: 56\.306 s \(56306 cycles of 1 ms\)' '' -- \
   time "$root/programs/laser_repaired/laser_repaired.nc"
 expect "time --blocks gives the line's time, distance and feeds" 0 \
-  '^4 7\.035 700 6000 6000 0 7\.035 0 0 0 0 0 -$' '' -- time --blocks "$fixtures/long_line.nc"
+  '^4 7\.035 700 6000 6000 0 7\.035 0 0 0 0 0 0 -$' '' -- time --blocks "$fixtures/long_line.nc"
 # F above what the axes allow is capped, with the cap in the last column (issue 12; portal_3x:
 # X v_max P-AXIS-00212 500 mm/s = 30000 mm/min, F 60000 asks twice that).
 printf '%%cap\nN10 G01 X500 F60000\nN20 X0 F6000\nM30\n' >"$work/cap.nc"
 expect "time --blocks names the axes' cap of an F above their velocity" 0 \
-  '^2 [0-9.]+ [0-9.]+ 60000 30000 0 [0-9.]+ 0 0 0 0 0 30000$' '' -- time --blocks "$work/cap.nc"
+  '^2 [0-9.]+ [0-9.]+ 60000 30000 0 [0-9.]+ 0 0 0 0 0 0 30000$' '' -- time --blocks "$work/cap.nc"
 expect "time --blocks leaves the cap column empty where F is reachable" 0 \
-  '^3 [0-9.]+ [0-9.]+ 6000 6000 0 [0-9.]+ 0 0 0 0 0 -$' '' -- time --blocks "$work/cap.nc"
+  '^3 [0-9.]+ [0-9.]+ 6000 6000 0 [0-9.]+ 0 0 0 0 0 0 -$' '' -- time --blocks "$work/cap.nc"
 expect "time --json gives the cap of a capped block" 0 \
   '"line":2,"time_s":[0-9.]+,"distance_mm":[0-9.]+,"feed_programmed_mm_min":60000,"feed_reached_mm_min":30000,"feed_cap_mm_min":30000,' \
   '' -- time --json --blocks "$work/cap.nc"
@@ -416,7 +416,7 @@ checks=$((checks + 1))
 # (time prints to the microsecond, the CSV the exact double: compared as numbers.)
 last_t=$(grep -v "^#" "$work/es.csv" | tail -1 | cut -d, -f1)
 if [[ -n $total ]] && awk -v a="$total" -v b="$last_t" 'BEGIN { exit !(a - b < 1e-9 && b - a < 1e-9) }' &&
-  "$ncsim" time --blocks "$fixtures/exact_stop.nc" | grep -Eq '^3 [0-9.]+ 100 6000 6000 0 [0-9.]+ 0 0\.0[0-9]+ 0 0 0 -$'; then
+  "$ncsim" time --blocks "$fixtures/exact_stop.nc" | grep -Eq '^3 [0-9.]+ 100 6000 6000 0 [0-9.]+ 0 0 0\.0[0-9]+ 0 0 0 -$'; then
   echo "ok   G60 waits for the actual position (exact stop time > 0); time equals run ($total s)"
 else
   failures=$((failures + 1)); echo "FAIL G60 exact stop: time $total, run $(grep -v "^#" "$work/es.csv" | tail -1 | cut -d, -f1)"
@@ -426,7 +426,7 @@ fi
 # --- static-saw: G74 (docs/homing.md): X then Y home to P-AXIS-00152 (0) at P-AXIS-00219; the
 # homing time is counted on the G74 line (waiting), and the path goes on from the reference point.
 expect "time --blocks shows the G74 homing time on its line" 0 \
-  '^5 1\.964 0 0 0 0 0 0 0 1\.964 0 0 -$' '' -- time --blocks "$fixtures/homing.nc"
+  '^5 1\.964 0 0 0 0 0 0 0 0 1\.964 0 0 -$' '' -- time --blocks "$fixtures/homing.nc"
 expect "after G74 the next block starts at the reference point" 0 \
   '^6 0\.135 10 6000' '' -- time --blocks "$fixtures/homing.nc"
 printf '%%h\n#TRAFO ON\nG74 X1\nM30\n' >"$work/g74_trafo.nc"
