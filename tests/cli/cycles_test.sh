@@ -84,4 +84,42 @@ expect "run --max-time 1 closes its CSV with the reason" 0 '' 'run stopped \(--m
   run --max-time 1 -o "$work/endless.csv" "$work/endless.nc"
 expect "--max-time takes a positive number of seconds" 2 '' 'max-time' -- \
   time --max-time 0 "$work/endless.nc"
+# Technology functions (docs/interp.md "Technology functions"): mill_3x's M06 MVS_SVS 5.5 s,
+# M03 MVS_SNS 1.2 s, M05 MNS_SNS 0.9 s in their own column, and a scenario's [tech] over them.
+cat >"$work/tool.nc" <<'NC'
+%tool
+G00 X10 Y10 Z50
+T2 M06
+S6000 M03
+G01 X60 F3000
+G00 Z80 M05
+M30
+NC
+expect "time counts the acknowledgement waits in their own tech column" 0 \
+  'tool.nc: .* dwell 0 s, tech 7\.6 s, exact stop' '' -- \
+  time --machine "$root/machines/mill_3x" "$work/tool.nc"
+expect "time --blocks puts the tool change's 5.5 s on its block, under tech_s" 0 \
+  '^3 5\.5 0 0 0 0 0 0 5\.5 ' '' -- \
+  time --blocks --machine "$root/machines/mill_3x" "$work/tool.nc"
+printf '[tech]\nM6 = 2\nM3 = 0\n' >"$work/tech.toml"
+expect "a scenario's [tech] replaces the machine's times (M06 2 s, M03 0 s: 2.9 s)" 0 \
+  'tech 2\.9 s' '' -- \
+  time --scenario "$work/tech.toml" --machine "$root/machines/mill_3x" "$work/tool.nc"
+expect "time --json has the tech split" 0 '"tech":7\.6' '' -- \
+  time --json --machine "$root/machines/mill_3x" "$work/tool.nc"
+printf '[tech]\nM6 = -2\n' >"$work/bad_tech.toml"
+expect "a negative [tech] time is NC7004 at its line" 2 '' 'bad_tech.toml:2:.*\[NC7004\]' -- \
+  time --scenario "$work/bad_tech.toml" --machine "$root/machines/mill_3x" "$work/tool.nc"
+expect "run writes the waiting cycles: as many rows as time has cycles" 0 '' '' -- \
+  run -o "$work/tool.csv" --machine "$root/machines/mill_3x" "$work/tool.nc"
+rows=$(grep -vc '^#' "$work/tool.csv")
+cycles=$("$ncsim" time --machine "$root/machines/mill_3x" "$work/tool.nc" | grep -o '([0-9]* cycles' | tr -dc 0-9)
+checks=$((checks + 1))
+if [[ $rows -eq $((cycles + 1)) ]]; then
+  echo "ok   run's rows (header included) are time's cycles + 1 with the tech waits"
+else
+  failures=$((failures + 1))
+  echo "FAIL run rows $rows, time cycles $cycles"
+fi
+
 summary cycles_test
