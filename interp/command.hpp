@@ -20,6 +20,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -94,6 +95,27 @@ struct ToolRadiusComp {
   TrcApproach approach = TrcApproach::indirect;
 };
 
+/// All axes at 100 %.
+constexpr AxisValues all_ones() {
+  AxisValues v{};
+  for (double& x : v)
+    x = 1.0;
+  return v;
+}
+
+/// Dynamics weightings in force, as fractions per machine axis, already limited to what ncsim
+/// runs (TF5200 G127/G128 PROG-206573067, G129 PROG-206578955, G130/G131/G230/G231
+/// PROG-206590731, G132/G133/G233 PROG-206596619; docs/interp.md "Dynamics weighting").
+struct DynamicsWeights {
+  AxisValues v_feed = all_ones();     ///< G127 / G128: P-AXIS-00212 v_max, 0.01 .. 1
+  double v_rapid = 1.0;               ///< G129: P-AXIS-00209 (G00), 0.01 .. 1
+  AxisValues a_feed = all_ones();     ///< G130 / G131: G01/G02/G03 acceleration, 0.01 .. 1
+  AxisValues a_rapid = all_ones();    ///< G230 / G231: G00 acceleration, 0.01 .. 1
+  AxisValues ramp_feed = all_ones();  ///< G132 / G133: G01/G02/G03 ramp time, 1 .. 100
+  double ramp_rapid = 1.0;            ///< G233: G00 ramp time, 1 .. 100
+  bool operator==(const DynamicsWeights&) const = default;
+};
+
 /// The modal state a motion needs, as it was when the block was decoded.
 struct ModalSnapshot {
   Plane plane = Plane::xy;
@@ -111,6 +133,8 @@ struct ModalSnapshot {
   bool kinematics_on = false;         ///< #TRAFO ON (also in Motion::frame)
   bool caxtrack = false;              ///< #CAXTRACK ON
   ToolRadiusComp trc;                 ///< G40/G41/G42, D, G25/G26, G138/G139
+  /// Dynamics weightings; null: every weight 100 % (shared: one per change, not per block)
+  std::shared_ptr<const DynamicsWeights> weights;
 };
 
 struct Arc {

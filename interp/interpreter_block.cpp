@@ -8,6 +8,7 @@
 #include "grammar/keywords.hpp"
 #include "interp/interpreter_impl.hpp"
 #include "interp/tech_functions.hpp"
+#include "interp/weights.hpp"
 
 namespace ncsim::interp {
 namespace {
@@ -172,6 +173,7 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
   BlockWords& bw = block_words;  // reused: its vectors keep their capacity across blocks
   bw.clear();
   if (!read_g_codes(b, bw) || !read_addresses(b, bw) || !update_trc(bw)) return false;
+  if (!bw.weightings.empty()) apply_weightings(bw);
   if (bw.g74 && !check_homing(b, bw)) return false;  // --- static-saw: before S is emitted
   // Technology functions (interp/tech_functions.hpp): MNS_SNS ones after the block's action.
   const TechWaits waits = resolve_tech(bw.tech, machine.channel.tech);
@@ -196,6 +198,21 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
     emit(line, Dwell{*waits.after, true, false});
   }
   return !bw.program_m || run_program_m(b, *bw.program_m);
+}
+
+void Interpreter::Impl::apply_weightings(const BlockWords& bw) {
+  DynamicsWeights w = modal.weights ? *modal.weights : DynamicsWeights{};
+  std::vector<std::string> names;
+  for (const machines::AxisParams& a : machine.axes)
+    names.push_back(a.name);
+  for (const BlockWords::Weighting& g : bw.weightings) {
+    for (std::string& note : apply_weighting(w, g.code, g.group, bw.axis_words, names))
+      warn(g.loc, "NC4314", std::move(note));
+  }
+  if (w == DynamicsWeights{})
+    modal.weights.reset();
+  else
+    modal.weights = std::make_shared<const DynamicsWeights>(w);
 }
 
 bool Interpreter::Impl::run_assignments(const ast::Block& b) {
@@ -360,22 +377,27 @@ bool Interpreter::Impl::read_g_codes(const ast::Block& b, BlockWords& bw) {
       case 134:
       case 233:
       case 338:
-      case 339:
+      case 339: {
         // Axis-specific forms (G130 X70) give weights, not positions; the group forms
-        // (G131=50) leave the block's axis words positions.
-        if (w.code == 127 || w.code == 130 || w.code == 132 || w.code == 230 || w.code == 333 ||
-            w.code == 338) {
+        // (G131=50) leave the block's axis words positions. Applied after the addresses are
+        // read (run_words, interp/weights.hpp).
+        std::optional<double> group;
+        if (is_axis_weighting(w.code)) {
           bw.weights_axes = true;
-        } else if (w.value != ast::kNoNode && !eval(b, w.value)) {
-          return false;
+        } else if (w.value != ast::kNoNode) {
+          group = eval(b, w.value);
+          if (!group) return false;
         }
-        if (unmodelled_g.insert(w.code).second) {
+        if (is_applied_weighting(w.code)) {
+          bw.weightings.push_back({w.code, group, w.loc});
+        } else if (unmodelled_g.insert(w.code).second) {
           warn(w.loc, "NC4313",
                "G" + std::to_string(w.code) +
                    " (dynamics weighting) is not modelled by ncsim: the axes' listed velocity, "
                    "acceleration and ramp times apply");
         }
         break;
+      }
       case 161:
         centre_absolute = true;
         break;

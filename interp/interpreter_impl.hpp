@@ -199,6 +199,12 @@ struct Interpreter::Impl {
     core::SourceLoc trc_loc;                                  ///< where that G code stands
     std::optional<double> d_word;                             ///< D in this block
     core::SourceLoc d_loc;
+    struct Weighting {
+      std::uint32_t code = 0;       ///< G127 .. G233 (interp/weights.hpp)
+      std::optional<double> group;  ///< the group form's value [%]
+      core::SourceLoc loc;
+    };
+    std::vector<Weighting> weightings;  ///< applied after the addresses (apply_weightings)
     void clear() {
       motion_word.reset();
       g04 = g74 = g92 = g60 = g61 = g09 = weights_axes = false;
@@ -213,11 +219,13 @@ struct Interpreter::Impl {
       axis_words.clear();
       trc_side.reset();
       d_word.reset();
+      weightings.clear();
     }
   };
   BlockWords block_words;               // run_words' scratch (one block at a time)
   bool run_words(const ast::Block& b);  // the order of a block's parts; calls the pieces below
   bool run_assignments(const ast::Block& b);
+  void apply_weightings(const BlockWords& bw);  // G127..G233 into modal.weights
   bool read_g_codes(const ast::Block& b, BlockWords& bw);
   bool read_addresses(const ast::Block& b, BlockWords& bw);
   /// The additional value of M/H word `w` (`M200=1200`), nullopt if none; NC4033 if it is not

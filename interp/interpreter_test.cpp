@@ -409,6 +409,28 @@ TEST_CASE("check_semantics reports soft-limit violations and names endless progr
   CHECK(!e.has_errors());
 }
 
+TEST_CASE("check applies the soft limits in MCS under #CS, as time does (issue 33)") {
+  // portal_3x X: [-1, 800] mm. Under a #CS shifted by 750 mm, X100 is MCS X850: NC4601 with the
+  // MCS value; X40 (MCS 790) passes; a rotation by 90 deg about Z takes Y-900 to MCS X900.
+  core::SourceFile shifted("s.nc", "%t\n#CS ON [1] [750,0,0,0,0,0]\nG00 X40\nG00 X100\nM30\n");
+  auto d = check_semantics(shifted, test::machine(), {});
+  REQUIRE(d.items().size() == 1);
+  CHECK(d.items()[0].id == "NC4601");
+  CHECK(d.items()[0].loc.line == 4);
+  CHECK(d.items()[0].message.find("X=850") != std::string::npos);
+  core::SourceFile arc("a.nc",
+                       "%t\n#CS ON [1] [760,0,0,0,0,0]\nG00 X0 Y100\nG02 X0 Y0 R50 F600\nM30\n");
+  auto a = check_semantics(arc, test::machine(), {});
+  REQUIRE(a.items().size() == 1);  // its ends are inside; the arc reaches MCS X760 + 50
+  CHECK(a.items()[0].message.find("the arc reaches X=810") != std::string::npos);
+  core::SourceFile rotated("r.nc", "%t\n#CS ON [1] [0,0,0,90,0,0]\nG00 Y-900\nM30\n");
+  auto r = check_semantics(rotated, test::machine(), {});
+  REQUIRE(r.items().size() == 1);
+  CHECK(r.items()[0].message.find("X=900") != std::string::npos);
+  core::SourceFile off("o.nc", "%t\n#CS ON [1] [750,0,0,0,0,0]\n#CS OFF\nG00 X100\nM30\n");
+  CHECK(!check_semantics(off, test::machine(), {}).has_errors());
+}
+
 TEST_CASE("check_semantics checks a long finite program to its end (issue 9 defect 6)") {
   // 300,000 motions before the error: the old check stopped after 100,000 commands, said ok.
   core::SourceFile file("long.nc",

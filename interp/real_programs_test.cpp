@@ -282,10 +282,14 @@ TEST_CASE("the channel's feed unit (P-CHAN-00108) and default feed (P-CHAN-00099
   CHECK(field(r.full[1], "F") == doctest::Approx(50.0));          // 3 m/min = 50 mm/s
 }
 
-TEST_CASE("dynamics weightings are warning NC4313; G130 X70 weights X, it does not move it") {
-  const test::Run r = run_warn("%t\nG00 X1\nG130 X70 Y50\nG231=80 G00 X5\nG131=50\nM30\n");
+TEST_CASE("feedhold and geometric ramp weightings are warning NC4313; G130 X70 weights X") {
+  const test::Run r =
+      run_warn("%t\nG00 X1\nG130 X70 Y50\nG231=80 G00 X5\nG131=50\nG334=50\nG134=70\nM30\n");
   REQUIRE(r.error_id.empty());
-  CHECK(has_line(r, "warning NC4313"));
+  int unmodelled = 0;
+  for (const auto& l : r.lines)
+    unmodelled += l.find("warning NC4313") != std::string::npos;
+  CHECK(unmodelled == 2);  // G334 and G134; G130, G231 and G131 are applied
   REQUIRE(r.full.size() >= 2);
   CHECK(field(r.full[1], "X") == doctest::Approx(5));  // the next motion is the G231 block's
 }

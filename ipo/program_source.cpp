@@ -164,10 +164,30 @@ void ProgramSource::check_soft_limits(const interp::Command& c) {
   }
 }
 
+std::shared_ptr<const planner::AxisWeights> axis_weights(const interp::DynamicsWeights& w,
+                                                         std::span<const std::uint8_t> axes,
+                                                         bool rapid) {
+  planner::AxisWeights out;
+  bool any = false;
+  for (std::size_t k = 0; k < axes.size() && k < planner::kMaxAxes; ++k) {
+    const std::uint8_t m = axes[k];
+    out.v[k] = rapid ? w.v_rapid : w.v_feed[m];
+    out.a[k] = rapid ? w.a_rapid[m] : w.a_feed[m];
+    out.j[k] = out.a[k] / (rapid ? w.ramp_rapid : w.ramp_feed[m]);
+    any = any || out.v[k] != 1.0 || out.a[k] != 1.0 || out.j[k] != 1.0;
+  }
+  return any ? std::make_shared<const planner::AxisWeights>(out) : nullptr;
+}
+
 planner::Move ProgramSource::to_move(const interp::Motion& m, std::uint32_t line) {
   // --- issue 34 item 22: check's NC4601, refused here before the block moves (one rule)
-  if (refuse_soft_limits_ && m.frame == interp::CoordFrame{})
+  if (refuse_soft_limits_ && m.frame == interp::CoordFrame{}) {
     check_soft_limits(interp::Command{line, file_, m});
+  } else if (refuse_soft_limits_) {  // under a #CS chain: in MCS, as check does (issue 33)
+    if (const auto in_mcs =
+            interp::command_in_mcs(interp::Command{line, file_, m}, cs_frame_, machine_))
+      check_soft_limits(*in_mcs);
+  }
   for (std::size_t i = 0; i < machine_.axes.size(); ++i) {
     if (slot_[i] < 0 && (((m.programmed >> i) & 1u) != 0 || m.end[i] != m.start[i])) {
       fail(line, "motion of axis " + machine_.axes[i].name +
@@ -223,6 +243,12 @@ void ProgramSource::set_modal(const interp::ModalSnapshot& s, planner::Move& mv,
   }
   mv.transvelmin = s.transvelmin;
   mv.slope = to_planner(s.slope);
+  if (s.weights != weights_src_) {  // G127..G233: converted once per change (program_source.hpp)
+    weights_src_ = s.weights;
+    weights_feed_ = s.weights ? axis_weights(*s.weights, axes_, false) : nullptr;
+    weights_rapid_ = s.weights ? axis_weights(*s.weights, axes_, true) : nullptr;
+  }
+  mv.weights = mv.rapid ? weights_rapid_ : weights_feed_;
   mv.transformed = s.kinematics_on;  // --- trafo: X, Y, Z are the TCP (program_kinematics.cpp)
 }
 

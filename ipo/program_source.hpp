@@ -28,6 +28,7 @@
 #include <array>
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -67,6 +68,12 @@ Config machine_config(const machines::Machine& machine, double t_cycle);
 
 /// The CLI's interpolation cycle when `--cycle-us` is not given [s].
 inline constexpr double kDefaultCycle = 0.001;
+
+/// A block's planner weights (planner::AxisWeights) from the interpreter's, for the
+/// interpolated machine axes `axes`, of a G00 block when `rapid`; null when all are 100 %.
+std::shared_ptr<const planner::AxisWeights> axis_weights(const interp::DynamicsWeights& w,
+                                                         std::span<const std::uint8_t> axes,
+                                                         bool rapid);
 
 class ProgramSource final : public Source {
  public:
@@ -131,6 +138,11 @@ class ProgramSource final : public Source {
   /// add_soft_limit_errors) ends the stream at its line, before the block moves.
   void check_soft_limits(const interp::Command& c);
   planner::Move to_move(const interp::Motion& m, std::uint32_t line);
+  /// Dynamics weightings (docs/interp.md "Dynamics weighting"): the interpreter's last, and
+  /// the planner's for feed and G00 blocks (interpolated order), made once per change.
+  std::shared_ptr<const interp::DynamicsWeights> weights_src_;
+  std::shared_ptr<const planner::AxisWeights> weights_feed_;
+  std::shared_ptr<const planner::AxisWeights> weights_rapid_;
   /// The modal fields of a Move from the block's snapshot (transition, contour, slope, ...).
   void set_modal(const interp::ModalSnapshot& s, planner::Move& mv, std::uint32_t line);
   /// Interpolated-axis values of machine values `p` given in `frame`, in MCS (program_frames).

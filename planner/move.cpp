@@ -193,6 +193,24 @@ AxisLimits reserved_limits(const AxisLimits& axis, double reserve) noexcept {
   return out;
 }
 
+AxisLimits weighted_limits(const AxisLimits& axis, const AxisWeights& w, std::size_t i,
+                           bool rapid) noexcept {
+  constexpr double kCreep = 0.001;  // [mm/s] 1 um/s
+  AxisLimits out = axis;
+  if (rapid) {
+    out.v_rapid = std::max(axis.v_rapid * w.v[i], kCreep);
+  } else {
+    out.v_max = std::max(axis.v_max * w.v[i], kCreep);
+    out.v_reference = std::min(axis.v_reference, out.v_max);
+  }
+  out.a_max *= w.a[i];
+  out.d_max *= w.a[i];
+  out.a_rapid *= w.a[i];
+  out.j_max *= w.j[i];
+  out.j_rapid *= w.j[i];
+  return out;
+}
+
 AxisLimits rapid_limits(const AxisLimits& axis) noexcept {
   AxisLimits r = axis;
   if (axis.a_rapid > 0.0) r.a_max = r.d_max = axis.a_rapid;

@@ -81,6 +81,16 @@ struct JointShare {
   AxisVec j{};  ///< jerk taken of joint i, >= 0 [deg/s^3 | mm/s^3]
 };
 
+/// A block's dynamics weightings (interp::DynamicsWeights, TF5200 G127..G133 / G229..G233) per
+/// axis as fractions <= 1 of the limits it plans with: `v` of v_max and v_reference (G00:
+/// v_rapid), `a` of the accelerations, `j` of the jerks (the acceleration's weight over the
+/// ramp time's); docs/interp.md "Dynamics weighting".
+struct AxisWeights {
+  AxisVec v{};
+  AxisVec a{};
+  AxisVec j{};
+};
+
 /// One path block (a line, or an arc / helix when `arc` is set).
 struct Move {
   std::uint8_t axis_count = 3;        ///< machine axes in use, 1..kMaxAxes
@@ -125,6 +135,8 @@ struct Move {
   /// takes of each joint: the block is planned with the joints' limits lowered by them
   /// (belt_joint_limits). Shared and immutable, as `spline`; null off the conveyor.
   std::shared_ptr<const JointShare> belt_joints;
+  /// Dynamics weightings (AxisWeights); null: none. Not applied to the joints under #TRAFO ON.
+  std::shared_ptr<const AxisWeights> weights;
 };
 
 /// Whether the corner at the end of `move` is contoured (G61 / G261, DEV or DIST).
@@ -152,6 +164,11 @@ struct AxisLimits {
   /// G00 jerk (P-AXIS-00004 / P-AXIS-00200) [mm/s^3]; 0: G00 uses j_max.
   double j_rapid = 0.0;
 };
+
+/// `axis` (axis i of a block, G00 when `rapid`) with the block's weights applied: velocity,
+/// accelerations and jerks lowered, never below 1 um/s (TF5200 G127: "0 %: 1 um/s").
+AxisLimits weighted_limits(const AxisLimits& axis, const AxisWeights& w, std::size_t i,
+                           bool rapid) noexcept;
 
 /// The limits a G00 block is planned with: a_rapid / j_rapid where set, else the feed values.
 AxisLimits rapid_limits(const AxisLimits& axis) noexcept;

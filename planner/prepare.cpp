@@ -95,6 +95,16 @@ void Preparer::set_joints(JointLimits joints) {
 }
 
 std::span<const AxisLimits> Preparer::axes_for(const Move& move) const {
+  const std::span<const AxisLimits> axes = belt_axes_for(move);
+  if (!move.weights) return axes;
+  // Dynamics weightings (AxisWeights, docs/interp.md "Dynamics weighting").
+  const std::size_t n = std::min(axes.size(), weighted_axes_.size());
+  for (std::size_t i = 0; i < n; ++i)
+    weighted_axes_[i] = weighted_limits(axes[i], *move.weights, i, move.rapid);
+  return std::span<const AxisLimits>(weighted_axes_.data(), n);
+}
+
+std::span<const AxisLimits> Preparer::belt_axes_for(const Move& move) const {
   std::span<const AxisLimits> axes = axes_;
   if (move.transformed && joints_ && !joints_->cartesian.empty()) axes = joints_->cartesian;
   // --- sync-feed: a PCS1 block on a conveyor: the belt's share taken off (belt_limits).

@@ -128,6 +128,8 @@ class Preparer {
   PathLimits limits(const Segment& path, const Move& move) const;
   /// The axis limits a Move is planned with (the Cartesian ones for a transformed Move).
   std::span<const AxisLimits> axes_for(const Move& move) const;
+  /// axes_for() without the weightings: the Cartesian or belt limits of `move`.
+  std::span<const AxisLimits> belt_axes_for(const Move& move) const;
   /// The joint limits that apply to a Move (null: none).
   const JointLimits* joints_for(const Move& move) const;
   /// Appends `in` with its end joint to `out_path` (velocity cap v_out) resolved; `ends`, when
@@ -152,6 +154,8 @@ class Preparer {
   std::optional<JointLimits> joints_;  ///< set_joints()
   /// --- sync-feed: axes_for()'s limits of a Move on a conveyor (Move::belt), rewritten per call.
   mutable std::array<AxisLimits, kMaxAxes> belt_axes_{};
+  /// axes_for()'s limits of a Move with dynamics weightings (Move::weights), rewritten per call.
+  mutable std::array<AxisLimits, kMaxAxes> weighted_axes_{};
   /// --- belt-jerk: limits()'s joint limits of a Move on a conveyor (Move::belt_joints).
   mutable std::array<AxisLimits, kMaxAxes> belt_joints_{};
 };

@@ -30,7 +30,7 @@ same "run --report writes the page of report" "$work/a.html" "$work/c.html"
 same "run --report leaves the CSV unchanged" "$work/plain.csv" "$work/with.csv"
 
 expect "a run-time error still writes the page, exit 1, the error on stderr as run prints it" \
-  1 '' 'run-time error at t=8\.018 s' -- report "$fixtures/soft_limit.nc" -o "$work/soft.html"
+  1 '' 'run-time error at t=8\.523 s' -- report "$fixtures/soft_limit.nc" -o "$work/soft.html"
 holds "the page shows the outcome and the error id" \
   grep -q '"outcome":"error".*NC5502' "$work/soft.html"
 

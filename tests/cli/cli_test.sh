@@ -366,16 +366,16 @@ fi
 # The channel loop (issue 12): run-time errors stop the channel at file:line:col with the time
 # and the id, exit 1; the CSV keeps the trajectory up to the stop and names the error.
 expect "a soft limit reached at run time stops the channel: position, time, id" 1 \
-  'soft_limit\.nc: stopped after 8\.017 s' \
-  'soft_limit\.nc:4:1: error: run-time error at t=8\.018 s: axis X: command position .* above the maximum soft position limit 800 mm \(P-AXIS-00178\) \[NC5502\]' -- \
+  'soft_limit\.nc: stopped after 8\.522 s' \
+  'soft_limit\.nc:7:1: error: run-time error at t=8\.523 s: axis X: command position .* above the maximum soft position limit 800 mm \(P-AXIS-00178\) \[NC5502\]' -- \
   time "$fixtures/soft_limit.nc"
 status=0
 "$ncsim" run -o "$work/soft.csv" "$fixtures/soft_limit.nc" 2>/dev/null || status=$?
 checks=$((checks + 1))
 if [[ $status -eq 1 && -f $work/soft.csv ]] &&
-  [[ $(tail -2 "$work/soft.csv" | head -1) == "# error: "*"soft_limit.nc:4:1: error: run-time error at t=8.018 s"*"[NC5502]" ]] &&
+  [[ $(tail -2 "$work/soft.csv" | head -1) == "# error: "*"soft_limit.nc:7:1: error: run-time error at t=8.523 s"*"[NC5502]" ]] &&
   [[ $(tail -1 "$work/soft.csv") == "# stop: error" ]] &&
-  [[ $(tail -3 "$work/soft.csv" | head -1 | cut -d, -f1) == "8.017" ]] &&
+  [[ $(tail -3 "$work/soft.csv" | head -1 | cut -d, -f1) == "8.522" ]] &&
   no_temp "$work/soft.csv"; then
   echo "ok   run stopped by a run-time error: rows up to the stop, closing # error comment"
 else

@@ -128,20 +128,20 @@ cp "$work/keep.csv" "$work/keep.orig"
 same "an existing FILE is not clobbered by a failing start" "$work/keep.orig" "$work/keep.csv"
 holds "a failing start leaves no FILE.tmp beside an existing FILE" no_temp "$work/keep.csv"
 
-# A run-time error (X beyond its soft limit 800 mm at t=8.018 s, NC5502) ends the run: FILE is
+# A run-time error (X beyond its soft limit 800 mm at t=8.523 s, NC5502) ends the run: FILE is
 # complete, replaces the old one, every row has the head's fields, and two closing comments name
 # the error.
-expect "a run-time error ends the run with status 1" 1 '' 'soft_limit\.nc:4:1: error: .*\[NC5502\]' -- \
+expect "a run-time error ends the run with status 1" 1 '' 'soft_limit\.nc:7:1: error: .*\[NC5502\]' -- \
   run -o "$work/keep.csv" "$fixtures/soft_limit.nc"
 holds "run-time error: FILE replaced, no FILE.tmp left" \
   bash -c "test -s '$work/keep.csv' && ! compgen -G '$work/keep.csv.*tmp' >/dev/null"
 complete_csv() {
   local f=$1
   [[ $(head -1 "$f") == "# ncsim run" ]] || return 1
-  [[ $(tail -2 "$f" | head -1) == "# error: "*"soft_limit.nc:4:1: error: run-time error at t=8.018 s: "*"[NC5502]" ]] || return 1
-  [[ $(grep -v '^#' "$f" | tail -1 | cut -d, -f1) == 8.017 ]] || return 1
+  [[ $(tail -2 "$f" | head -1) == "# error: "*"soft_limit.nc:7:1: error: run-time error at t=8.523 s: "*"[NC5502]" ]] || return 1
+  [[ $(grep -v '^#' "$f" | tail -1 | cut -d, -f1) == 8.522 ]] || return 1
   [[ $(tail -1 "$f") == "# stop: error" ]] || return 1
-  grep -v '^#' "$f" | awk -F, 'NR == 1 { n = NF; next } NF != n { exit 1 } END { exit NR != 8018 }'
+  grep -v '^#' "$f" | awk -F, 'NR == 1 { n = NF; next } NF != n { exit 1 } END { exit NR != 8523 }'
 }
 holds "run-time error: the CSV is complete, rows whole, closing comments name the error" \
   complete_csv "$work/keep.csv"
@@ -189,7 +189,7 @@ holds "every CSV field is a shortest round-trip number" shortest "$work/detail.c
 # ---- --every N: rows of every Nth cycle, and always the last cycle ------------------------
 # 7035 cycles at --every 10: the rows of cycles 10, 20, ..., 7030, then the last one (t 7.035,
 # X on the programmed end 700), so the last t is time's total also at --every N; after a
-# run-time error the last row is the last good cycle (t 8.017), not the last multiple of N.
+# run-time error the last row is the last good cycle (t 8.522), not the last multiple of N.
 last_row() { grep -v '^#' "$1" | tail -1; }
 "$ncsim" run --every 10 -o "$work/every.csv" "$fixtures/long_line.nc" 2>/dev/null
 holds "--every 10: a row every 10 cycles, then the last cycle (704 rows)" \
@@ -199,8 +199,8 @@ holds "--every 10: the last row is the program end (t 7.035, X 700)" \
 holds "--every 10: the row before it is cycle 7030" \
   test "$(grep -v '^#' "$work/every.csv" | tail -2 | head -1 | cut -d, -f1)" = 7.03
 "$ncsim" run --every 1000 -o "$work/every_err.csv" "$fixtures/soft_limit.nc" 2>/dev/null
-holds "--every 1000 and a run-time error: the last row is the last good cycle (t 8.017)" \
-  test "$(last_row "$work/every_err.csv" | cut -d, -f1)" = 8.017
+holds "--every 1000 and a run-time error: the last row is the last good cycle (t 8.522)" \
+  test "$(last_row "$work/every_err.csv" | cut -d, -f1)" = 8.522
 holds "--every 1000 and a run-time error: the closing comments follow it" \
   test "$(tail -1 "$work/every_err.csv")" = "# stop: error"
 "$ncsim" run --every 7035 -o "$work/every_one.csv" "$fixtures/long_line.nc" 2>/dev/null
