@@ -1,7 +1,7 @@
 #pragma once
 // conveyor/port: what the channel loop asks of the conveyor each cycle (issue 14).
 //
-// Purpose: the one seam between the channel loop (ipo/, #SYNC IN/OUT, the PCS1 frame, the
+// Purpose: the one seam between the channel loop (channel/, #SYNC IN/OUT, the PCS1 frame, the
 // catch-up, workspace monitoring) and the conveyor world (conveyor/: the belt from the scenario
 // or driven by MC_MoveVelocity, the encoder with noise and dead time, the touch-probe latch and
 // its queue, the actual-value filters and the delay-time compensation of seed 004 §2.1.4/2.1.5).
