@@ -27,7 +27,7 @@
 #include <functional>
 #include <string>
 
-#include "tracking/conveyor_sync.hpp"
+#include "tracking/sync_phase.hpp"
 
 namespace ncsim::ipo {
 

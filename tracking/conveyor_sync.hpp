@@ -32,6 +32,7 @@
 #include "tracking/catch_up.hpp"
 #include "tracking/sync_checks.hpp"
 #include "tracking/sync_frame.hpp"
+#include "tracking/sync_phase.hpp"
 #include "tracking/workspace.hpp"
 #include "tracking/workspace_hold.hpp"
 
@@ -42,16 +43,6 @@ struct SyncAxis {
   std::string name;         ///< axis name (messages)
   int xyz = -1;             ///< 0, 1, 2: the axis is X, Y, Z (its share of the belt); -1: none
   axes::Dynamics dynamics;  ///< PTP dynamics of the catch-up (V, A+, A-, J)
-};
-
-enum class SyncPhase : std::uint8_t {
-  off,          ///< not synchronised: MCS
-  waiting,      ///< after #SYNC IN, until the Port has a latch ("waiting for measured value")
-  latched,      ///< PCS1 moves with the belt; the next G00/G01 is the catch-up
-  catching_up,  ///< the catch-up profile runs
-  tracking,     ///< synchronised: PCS1 blocks run on the moving frame
-  leaving,      ///< after #SYNC OUT: MCS, the axes still move with the belt until the next motion
-  departing,    ///< the desynchronisation PTP from the moving state to a fixed MCS target
 };
 
 class ConveyorSync {
