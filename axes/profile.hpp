@@ -174,7 +174,7 @@ Result plan_synchronized(std::span<const MotionState> starts,
 Result plan_moving_target(const MotionState& start, double p1, double v1, const Dynamics& dynamics,
                           Profile& out, double& t_meet) noexcept;
 /// As above, meeting the target's position with velocity `v_arrive` [mm/s] instead of v1
-/// (|v_arrive| <= V): the conveyor catch-up's relative velocity FEED_CONT (ipo/catch_up).
+/// (|v_arrive| <= V): the conveyor catch-up's relative velocity FEED_CONT (tracking/catch_up).
 Result plan_moving_target(const MotionState& start, double p1, double v1, double v_arrive,
                           const Dynamics& dynamics, Profile& out, double& t_meet) noexcept;
 

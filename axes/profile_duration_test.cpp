@@ -177,7 +177,7 @@ TEST_CASE("synchronised axes skip a duration in an axis's gap: all meet at its f
 
 TEST_CASE("a moving target just ahead and faster is met by turning or dipping, not NC5015") {
   // X at 18.188 mm moving at 223 mm/s, the target 38.8 mm behind at 328.111 mm/s (the conveyor
-  // catch-up case of ipo/catch_up_test.cpp, NC5015 before).
+  // catch-up case of tracking/catch_up_test.cpp, NC5015 before).
   const Dynamics d{1000.0, 5000.0, 5000.0, 50000.0};
   const MotionState start{18.188, 223.002, 0.0};
   Profile p;

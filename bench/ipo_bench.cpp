@@ -14,10 +14,10 @@
 #include <random>
 #include <vector>
 
+#include "audit/audit.hpp"
+#include "audit/time.hpp"
 #include "bench/move200.hpp"
-#include "ipo/audit.hpp"
 #include "ipo/interpolator.hpp"
-#include "ipo/time.hpp"
 
 namespace {
 

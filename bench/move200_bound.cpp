@@ -34,9 +34,9 @@
 #include <string>
 #include <vector>
 
+#include "audit/time.hpp"
 #include "bench/move200.hpp"
 #include "ipo/interpolator.hpp"
-#include "ipo/time.hpp"
 #include "planner/corner.hpp"
 #include "planner/path.hpp"
 

@@ -71,14 +71,14 @@ void WorkspaceWatch::on_cycle(const ipo::Channel& channel) noexcept {
   const ipo::ConveyorSync* sync = channel.conveyor_sync();
   if (!box_ || sync == nullptr || !sync->synchronised()) return;
   // The commanded TCP: the axes' setpoints, or under #TRAFO ON the TCP the joints were computed
-  // from (Channel::tcp(): the PCS1 point plus the belt offset in MCS, what ipo/trafo_sync checks
-  // the workspace's faces with).
+  // from (Channel::tcp(): the PCS1 point plus the belt offset in MCS, what tracking/trafo_sync
+  // checks the workspace's faces with).
   const auto& x = channel.transformed() ? channel.tcp() : channel.setpoints();
   Eigen::Vector3d p = Eigen::Vector3d::Zero();
   for (std::size_t i = 0; i < channel.axis_count(); ++i)
     if (const int k = sync->xyz(i); k >= 0) p[k] = x[i].p;
   const Eigen::Vector3d& e = sync->frame().direction();
-  constexpr double kCos60 = 0.5;  // ipo/workspace's class of a conveying face
+  constexpr double kCos60 = 0.5;  // tracking/workspace's class of a conveying face
   for (int k = 0; k < 3; ++k) {
     double d = 0.0;
     if (e[k] > kCos60) {

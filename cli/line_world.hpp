@@ -13,15 +13,15 @@
 // Workspace margin: while synchronised, the distance of the commanded TCP (the setpoints of
 // X/Y/Z; under #TRAFO ON the channel's TCP, Channel::tcp()) to the conveyor workspace's faces in
 // the conveying direction (the faces whose outward normal is within 60 deg of it, as
-// ipo/workspace classifies them); the smallest over the run.
+// tracking/workspace classifies them); the smallest over the run.
 // Invariants: pure functions and small value objects; never throw (except make_unique).
 
 #include <cstdint>
 #include <memory>
 #include <optional>
 
+#include "channel/channel.hpp"
 #include "conveyor/port.hpp"
-#include "ipo/channel.hpp"
 #include "machines/machine.hpp"
 #include "scenario/scenario.hpp"
 

@@ -15,6 +15,10 @@
 #include <stdexcept>
 #include <variant>
 
+#include "audit/audit.hpp"
+#include "audit/time.hpp"
+#include "audit/workpiece_cycles.hpp"  // --- line
+#include "channel/channel.hpp"
 #include "cli/commands.hpp"
 #include "cli/cycle_option.hpp"
 #include "cli/number_format.hpp"
@@ -26,14 +30,10 @@
 #include "core/source_file.hpp"
 #include "grammar/check.hpp"
 #include "interp/interpreter.hpp"
-#include "ipo/audit.hpp"
-#include "ipo/channel.hpp"
 #include "ipo/interpolator.hpp"
-#include "ipo/program_source.hpp"
-#include "ipo/time.hpp"
-#include "ipo/trafo.hpp"             // --- trafo-jerk
-#include "ipo/workpiece_cycles.hpp"  // --- line
 #include "machines/loader.hpp"
+#include "program/program_source.hpp"
+#include "program/trafo.hpp"    // --- trafo-jerk
 #include "report/html.hpp"      // --- report:
 #include "report/recorder.hpp"  // --- report:
 #include "scenario/player.hpp"
@@ -303,7 +303,7 @@ void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names,
        << " axis " << (x.axis < names.size() ? names[x.axis] : std::to_string(x.axis)) << ' '
        << ipo::quantity_name(x.quantity) << " (" << ipo::method_name(x.method) << ") "
        << num(x.value) << " > " << num(x.limit);
-    if (x.path >= 0.0)  // --- conveyor: the axis moved with the belt (ipo/audit.hpp)
+    if (x.path >= 0.0)  // --- conveyor: the axis moved with the belt (audit/audit.hpp)
       os << " (" << num(x.path) << " without the belt's share)";
     os << '\n';
   }
@@ -636,7 +636,7 @@ class CsvSink final : public ipo::Sink {
     row_.v_path = c.path.v;
     row_.feed = c.feed;
     // --- line: the conveyor display variables with synchro_lag (seed 004 §6,
-    // Channel::master_display, ipo/synchro_lag.hpp)
+    // Channel::master_display, tracking/synchro_lag.hpp)
     if (conveyor_ != nullptr) row_.master = conveyor_->master_display();
   }
   void write_row() {
@@ -816,7 +816,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   if (recorder) recorder->set_conveyor(channel.conveyor_sync());
   // The conveyor display variables (seed 004 §6; docs/conveyor.md) with --detail on a channel
   // that tracks a conveyor: mm, mm/s, mm/s^2, 0 before the first measurement; synchro_lag
-  // [mm] machine minus real workpiece (ipo/synchro_lag.hpp), 0 unless the frame moves.
+  // [mm] machine minus real workpiece (tracking/synchro_lag.hpp), 0 unless the frame moves.
   if (options.detail && in.port != nullptr && channel.conveyor_sync() != nullptr) {
     head +=
         ",current_pos_master,current_v_master,current_a_master,pos_master_comp,v_master_comp,"

@@ -20,9 +20,9 @@
 #include <optional>
 #include <string>
 
+#include "channel/channel.hpp"  // --- line
 #include "cli/commands.hpp"
 #include "conveyor/port.hpp"      // --- line
-#include "ipo/channel.hpp"        // --- line
 #include "machines/machine.hpp"   // --- line
 #include "scenario/scenario.hpp"  // --- line
 

@@ -12,8 +12,8 @@
 
 #include "cli/number_format.hpp"
 #include "cli/run_commands.hpp"
-#include "ipo/program_source.hpp"
-#include "ipo/synchro_lag.hpp"
+#include "program/program_source.hpp"
+#include "tracking/synchro_lag.hpp"
 
 namespace ncsim::cli {
 namespace {

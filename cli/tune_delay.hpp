@@ -56,7 +56,7 @@ struct LagStats {
 
 /// The contour error on the real workpiece over the synchronised feed cycles (G01/G02/G03 with
 /// the path moving): the actual X/Y/Z mapped into the true workpiece frame (real belt travel since
-/// the real front edge, ipo/synchro_lag.hpp real_travel) minus the commanded PCS1 point; the
+/// the real front edge, tracking/synchro_lag.hpp real_travel) minus the commanded PCS1 point; the
 /// contour error is its part normal to the path's direction, the position error all of it.
 struct ContourStats {
   std::uint64_t cycles = 0;

@@ -16,7 +16,7 @@
 #include <memory>
 #include <ostream>
 
-#include "ipo/workpiece_cycles.hpp"
+#include "audit/workpiece_cycles.hpp"
 
 namespace ncsim::cli {
 

@@ -1,7 +1,7 @@
 #pragma once
 // conveyor/port: what the channel loop asks of the conveyor each cycle (issue 14).
 //
-// Purpose: the one seam between the channel loop (ipo/, #SYNC IN/OUT, the PCS1 frame, the
+// Purpose: the one seam between the channel loop (channel/, #SYNC IN/OUT, the PCS1 frame, the
 // catch-up, workspace monitoring) and the conveyor world (conveyor/: the belt from the scenario
 // or driven by MC_MoveVelocity, the encoder with noise and dead time, the touch-probe latch and
 // its queue, the actual-value filters and the delay-time compensation of seed 004 §2.1.4/2.1.5).
@@ -20,8 +20,8 @@
 #include <utility>
 #include <vector>
 
-#include "interp/command.hpp"
 #include "machines/machine.hpp"
+#include "machines/motion_blocks.hpp"
 
 namespace ncsim::conveyor {
 
@@ -71,9 +71,9 @@ class Port {
   /// velocity with the command's (or the axis list's) dynamics from the next step() on.
   /// Returns false when not taken: in encoder mode, where the scenario moves the belt, and for
   /// a velocity above the axis's P-AXIS-00212; error() then says why (NC9006, NC9005).
-  virtual bool command_velocity(const interp::MoveVelocity& command) noexcept = 0;
+  virtual bool command_velocity(const machines::MoveVelocity& command) noexcept = 0;
   /// S1[MC_TouchProbe ...]: arms the latch. A retrigger while armed is P-ERR-44009 (error()).
-  virtual void arm_probe(const interp::ProbeArm& command) noexcept = 0;
+  virtual void arm_probe(const machines::ProbeArm& command) noexcept = 0;
   /// The oldest latched front edge not yet taken, as a conveyor position [mm] (the measured
   /// value #SYNC IN waits for), and removes it; nullopt while none is latched.
   virtual std::optional<double> take_latch() noexcept = 0;

@@ -199,7 +199,7 @@ void World::step(double t) noexcept {
   }
 }
 
-bool World::command_velocity(const interp::MoveVelocity& c) noexcept {
+bool World::command_velocity(const machines::MoveVelocity& c) noexcept {
   if (encoder_) {
     raise(kEncoderBelt, "MC_MoveVelocity on conveyor axis " + axis_->name +
                             ": the scenario moves this belt ([conveyor] mode = \"encoder\", "
@@ -219,8 +219,8 @@ bool World::command_velocity(const interp::MoveVelocity& c) noexcept {
     return false;
   }
   double v = c.velocity;
-  if (c.direction == interp::VelocityDirection::negative ||
-      (c.direction == interp::VelocityDirection::current && belt_.state().v < 0.0))
+  if (c.direction == machines::VelocityDirection::negative ||
+      (c.direction == machines::VelocityDirection::current && belt_.state().v < 0.0))
     v = -v;
   // 0 (or less): the axis list's value (PROG-208363915); never beyond P-AXIS-00008.
   VelocityDynamics dyn;
@@ -232,8 +232,8 @@ bool World::command_velocity(const interp::MoveVelocity& c) noexcept {
   return true;
 }
 
-void World::arm_probe(const interp::ProbeArm& c) noexcept {
-  const bool rising = c.edge ? *c.edge == interp::ProbeEdge::rising : default_rising_;
+void World::arm_probe(const machines::ProbeArm& c) noexcept {
+  const bool rising = c.edge ? *c.edge == machines::ProbeEdge::rising : default_rising_;
   if (armed_) {  // seed 004 §6.3.1: not retriggerable; the active command stays
     if (c.axis != armed_->axis) {
       raise("P-ERR-44001",

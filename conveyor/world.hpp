@@ -57,8 +57,8 @@ class World final : public Port {
   const BeltState& actual() const noexcept override { return belt_.state(); }
   const BeltState& measured() const noexcept override { return measured_; }
   const BeltState& master() const noexcept override { return master_; }
-  bool command_velocity(const interp::MoveVelocity& command) noexcept override;
-  void arm_probe(const interp::ProbeArm& command) noexcept override;
+  bool command_velocity(const machines::MoveVelocity& command) noexcept override;
+  void arm_probe(const machines::ProbeArm& command) noexcept override;
   std::optional<double> take_latch() noexcept override;
   void set_reduced_filter(bool on) noexcept override { filter_.set_reduced(on); }
   const std::optional<PortError>& error() const noexcept override { return error_; }

@@ -19,8 +19,8 @@ void run(Port& w, int& k, double until) {
     w.step(++k * kT);
 }
 
-interp::ProbeArm arm(int channel = 1, std::optional<interp::ProbeEdge> edge = std::nullopt) {
-  interp::ProbeArm a;
+machines::ProbeArm arm(int channel = 1, std::optional<machines::ProbeEdge> edge = std::nullopt) {
+  machines::ProbeArm a;
   a.axis = 1;
   a.channel = channel;
   a.edge = edge;
@@ -147,7 +147,7 @@ TEST_CASE(
   s.conveyor->dead_time = 0.01;
   World w(m, &s, kT);
   CHECK(w.method() == MeasuringMethod::drive);
-  interp::MoveVelocity mv;
+  machines::MoveVelocity mv;
   mv.axis = 1;
   mv.velocity = 300.0;
   REQUIRE(w.command_velocity(mv));
@@ -230,7 +230,7 @@ TEST_CASE(
   auto s = test::belt(ConveyorMode::encoder, 300.0);
   s.conveyor->workpieces = {at_travel(30.0, 45.0)};
   World w(m, &s, kT);
-  w.arm_probe(arm(1, interp::ProbeEdge::falling));
+  w.arm_probe(arm(1, machines::ProbeEdge::falling));
   int k = 0;
   run(w, k, 0.5);
   const auto latch = w.take_latch();
@@ -263,7 +263,7 @@ TEST_CASE("a camera gives both edges at the front edge") {
   s.conveyor->sensor.kind = scenario::SensorKind::camera;
   s.conveyor->workpieces = {at_travel(30.0, 45.0)};
   World w(m, &s, kT);
-  w.arm_probe(arm(1, interp::ProbeEdge::falling));
+  w.arm_probe(arm(1, machines::ProbeEdge::falling));
   int k = 0;
   run(w, k, 0.5);
   const auto latch = w.take_latch();
@@ -291,14 +291,14 @@ TEST_CASE("MC_TouchProbe while a measurement is active: P-ERR-44009, 44011, 4401
   auto s = test::belt(ConveyorMode::encoder, 300.0);
   s.conveyor->workpieces = {at_travel(300.0)};
   struct Case {
-    interp::ProbeArm second;
+    machines::ProbeArm second;
     const char* id;
   };
-  interp::ProbeArm other_axis = arm();
+  machines::ProbeArm other_axis = arm();
   other_axis.axis = 0;
-  for (const Case& c :
-       {Case{arm(), "P-ERR-44009"}, Case{arm(2), "P-ERR-44011"},
-        Case{arm(1, interp::ProbeEdge::falling), "P-ERR-44012"}, Case{other_axis, "P-ERR-44001"}}) {
+  for (const Case& c : {Case{arm(), "P-ERR-44009"}, Case{arm(2), "P-ERR-44011"},
+                        Case{arm(1, machines::ProbeEdge::falling), "P-ERR-44012"},
+                        Case{other_axis, "P-ERR-44001"}}) {
     World w(m, &s, kT);
     w.arm_probe(arm());
     w.arm_probe(c.second);
@@ -330,7 +330,7 @@ TEST_CASE(
   }
   {
     World w(m, &s, kT);
-    interp::ProbeArm a = arm();
+    machines::ProbeArm a = arm();
     a.axis = 0;
     w.arm_probe(a);
     REQUIRE(w.error());
@@ -339,7 +339,7 @@ TEST_CASE(
 }
 
 TEST_CASE("MC_MoveVelocity: NC9006 on an encoder belt, NC9005 above P-AXIS-00212") {
-  interp::MoveVelocity mv;
+  machines::MoveVelocity mv;
   mv.axis = 1;
   mv.velocity = 300.0;
   {

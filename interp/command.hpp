@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "machines/machine.hpp"
+#include "machines/motion_blocks.hpp"
 
 namespace ncsim::interp {
 
@@ -227,28 +228,12 @@ struct AxisCommand {
   CoordFrame frame;            ///< the frame of `target`
 };
 
-/// MC_MoveVelocity Direction (PLCopen MC_Direction): 1 positive, 3 negative, 4 current.
-enum class VelocityDirection : std::uint8_t { positive, negative, current };
-
-/// S1[MC_MoveVelocity ...] (PROG-208363915).
-struct MoveVelocity {
-  std::uint8_t axis = 0;
-  double velocity = 0.0;      ///< [mm/s] (program: um/s)
-  double acceleration = 0.0;  ///< [mm/s^2]; 0: axis list value
-  double deceleration = 0.0;  ///< [mm/s^2]; 0: axis list value
-  double jerk = 0.0;          ///< [mm/s^3]; 0: axis list value
-  VelocityDirection direction = VelocityDirection::positive;
-};
-
-/// MC_TouchProbe Mode: 1 falling, 2 rising edge (PROG-306968203).
-enum class ProbeEdge : std::uint8_t { falling, rising };
-
-/// S1[MC_TouchProbe ...] (PROG-306968203): arms the latch.
-struct ProbeArm {
-  std::uint8_t axis = 0;
-  int channel = 1;                ///< Channel (the probe input)
-  std::optional<ProbeEdge> edge;  ///< Mode; nullopt: the axis list's P-AXIS-00518
-};
+// S1[MC_MoveVelocity ...] and S1[MC_TouchProbe ...]: the blocks' inputs, shared with the
+// conveyor world (machines/motion_blocks.hpp).
+using machines::MoveVelocity;
+using machines::ProbeArm;
+using machines::ProbeEdge;
+using machines::VelocityDirection;
 
 struct SyncIn {
   std::uint8_t conveyor = 0;  ///< machine index of the conveyor axis
@@ -282,7 +267,7 @@ struct CaxTrack {
   double anglimit = 0.0;  ///< [deg]
   double offset = 0.0;    ///< [deg]
   double angpos = 0.0;    ///< OFF position [deg]
-  // --- static-saw: the rest of the ON / OFF words (ipo/caxtrack.hpp, docs/caxtrack.md)
+  // --- static-saw: the rest of the ON / OFF words (tracking/caxtrack.hpp, docs/caxtrack.md)
   bool angpos_given = false;  ///< OFF: ANGPOS was programmed (else the axis stays)
   double rotmode = 0.0;       ///< ROTMODE as programmed (0 tool, 1 workpiece)
   std::string unsupported;    ///< the first word ncsim does not run (OPTALIGN, ...), "" none

@@ -291,7 +291,7 @@ void PathInterpolator::report_joint(const planner::PlannedSegment& next, double 
   }
   // --- trafo: the joints' own steps, for the audit's formulas on the joints. Not in PCS1
   // (belt_joints set): the path point is the programmed one, the joints follow it where the
-  // belt has carried it (ipo/channel_kinematics.cpp), a few per cent apart on the delta
+  // belt has carried it (channel/channel_kinematics.cpp), a few per cent apart on the delta
   // picker; those joints stay unlisted and their stencils velocity-only.
   if (joints_ && prog_in.transformed && prog_out.transformed && !prog_in.belt_joints &&
       !prog_out.belt_joints && jt.stop == planner::StopReason::none) {

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "ipo/audit.hpp"
+#include "audit/audit.hpp"
 #include "ipo/interpolator.hpp"
 #include "machines/delta_kinematics.hpp"
 

@@ -18,10 +18,10 @@
 #include <string>
 #include <vector>
 
-#include "ipo/audit.hpp"
+#include "audit/audit.hpp"
+#include "audit/time.hpp"
 #include "ipo/interpolator.hpp"
 #include "ipo/test_support.hpp"
-#include "ipo/time.hpp"
 
 namespace {
 

@@ -1,7 +1,7 @@
 // ipo/override_trafo: the raised cap of a path override above 100 % under #TRAFO ON (issue 12;
 // docs/ipo.md "Override and feed hold"). Above 100 % (REDUCED_ABOVE_100) the cap is the G00
 // velocity along the path (000 l.360); under a transform the Cartesian X, Y, Z have stand-in
-// limits only (ipo/trafo.hpp), so the cap comes from the joints: each joint at MIN(rapid,
+// limits only (program/trafo.hpp), so the cap comes from the joints: each joint at MIN(rapid,
 // reference, maximum) over its own derivative bound along the entry, the path a and j those the
 // joints allow at that velocity (planner::limits_from_bounds, as for the axes).
 

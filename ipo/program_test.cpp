@@ -12,7 +12,7 @@
 #include <random>
 #include <vector>
 
-#include "ipo/audit.hpp"
+#include "audit/audit.hpp"
 #include "ipo/interpolator.hpp"
 #include "ipo/test_support.hpp"
 

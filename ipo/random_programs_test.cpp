@@ -15,10 +15,10 @@
 #include <random>
 #include <vector>
 
-#include "ipo/audit.hpp"
+#include "audit/audit.hpp"
+#include "audit/time.hpp"
 #include "ipo/interpolator.hpp"
 #include "ipo/test_support.hpp"
-#include "ipo/time.hpp"
 
 namespace {
 

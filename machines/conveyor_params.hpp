@@ -1,7 +1,7 @@
 #pragma once
 // machines/conveyor_params: the conveyor axis's actual-value filter and delay-time parameters
 // by their list key (seed 004 §2.1.4, §5.2.1): the one key -> field mapping the loader and a
-// program's `#MACHINE DATA` (ipo/machine_data.hpp; 004 l.391) share.
+// program's `#MACHINE DATA` (program/machine_data.hpp; 004 l.391) share.
 
 #include <array>
 #include <string_view>

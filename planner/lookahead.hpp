@@ -161,7 +161,7 @@ class LookAhead {
   /// The next pop() starts at `v` [mm/s] instead of v_committed(): clamped to [0,
   /// front_entry_cap()], so the plan stays feasible. Returns the velocity set.
   double start_at(double v) noexcept;
-  // --- hold: the workspace hold's prediction across block ends (issue 14, ipo/workspace_hold)
+  // --- hold: the workspace hold's prediction across block ends (issue 14, tracking/workspace_hold)
   /// The k-th oldest segment not popped yet (k = 0: front()); null when k >= size().
   const PreparedSegment* queued(std::size_t k) const noexcept {
     return k < count_ ? &slots_[(head_ + k) % slots_.size()].segment : nullptr;

@@ -120,7 +120,7 @@ struct Move {
   /// Source file of `line`: an index into the interpreter's file table (interp::Command::file,
   /// 0: the main program), so a run-time error in a subroutine file names that file.
   std::uint16_t file = 0;
-  /// Channel events (ipo/channel_event.hpp) up to this tag fire when the block starts; tags
+  /// Channel events (program/channel_event.hpp) up to this tag fire when the block starts; tags
   /// increase in program order, 0: none.
   std::uint32_t event_tag = 0;
   /// #TRAFO ON: X, Y, Z are the Cartesian TCP and the joints of the kinematic transform limit

@@ -30,8 +30,8 @@ double planning_jerk(const PathLimits& lim, double t_cycle) {
 }
 
 /// A side whose cap is its programmed feed is not lowered below it: the feed may be a
-/// requirement (the static processing unit's belt feed, ipo/x_virtual.cpp, where the X share of
-/// the path velocity must equal the belt's).
+/// requirement (the static processing unit's belt feed, tracking/x_virtual.cpp, where the X share
+/// of the path velocity must equal the belt's).
 bool feed_must_hold(const PathLimits& lim, double cap) {
   return lim.limit == VelocityLimit::programmed && lim.v_max > cap;
 }

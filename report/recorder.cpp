@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "ipo/joint_stage.hpp"
-#include "ipo/synchro_lag.hpp"
+#include "tracking/synchro_lag.hpp"
 
 namespace ncsim::report {
 
@@ -82,7 +82,7 @@ void Recorder::conveyor_values() {
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   v[3] = d.valid ? d.current_pos_master : nan;
   v[4] = d.valid ? d.pos_master_comp : nan;
-  // synchro_lag against the real workpiece (ipo/synchro_lag.hpp); under #TRAFO ON the TCP's
+  // synchro_lag against the real workpiece (tracking/synchro_lag.hpp); under #TRAFO ON the TCP's
   // (set_tcp(), set_forward()).
   v[5] = nan;
   if (axes_state_ != nullptr) {

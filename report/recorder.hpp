@@ -30,14 +30,14 @@
 #include <string>
 #include <vector>
 
-#include "ipo/audit.hpp"
-#include "ipo/channel.hpp"
-#include "ipo/conveyor_sync.hpp"
+#include "audit/audit.hpp"
+#include "audit/time.hpp"
+#include "audit/workpiece_cycles.hpp"
+#include "channel/channel.hpp"
 #include "ipo/interpolator.hpp"
-#include "ipo/time.hpp"
-#include "ipo/workpiece_cycles.hpp"
 #include "planner/joint_limits.hpp"
 #include "report/decimate.hpp"
+#include "tracking/conveyor_sync.hpp"
 
 namespace ncsim::report {
 

@@ -12,8 +12,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "ipo/test_port.hpp"
 #include "ipo/test_support.hpp"
+#include "tracking/test_port.hpp"
 
 namespace {
 

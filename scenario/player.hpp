@@ -2,7 +2,7 @@
 // scenario/player: evaluates a Scenario cycle by cycle for the channel loop.
 //
 // Purpose: the one place that decides which scenario events are due when. The channel loop
-// (ipo/) owns a Player; per interpolation cycle it reports the blocks that started executing
+// (channel/) owns a Player; per interpolation cycle it reports the blocks that started executing
 // (block_started) and then asks for the actions due in that cycle (step).
 // Inputs: the Scenario (must outlive the Player), the cycle index and time, the main-program
 // lines of the blocks that start. Outputs: the due Actions in order, the V.E. store the

@@ -1,0 +1,189 @@
+// channel/channel_kinematics: step 2 of the channel cycle under #TRAFO ON (docs/ipo.md
+// "Kinematics in run and time").
+//
+// The path interpolator gives the TCP (X, Y, Z Cartesian, other axes as they are) with its
+// closed-form v, a, j; the joint stage (ipo/joint_stage.hpp) turns them into the setpoints of
+// the machine axes, which the position control and the monitors then act on: soft limits, lag
+// and the exact-stop window are the joints'. A point the inverse transform cannot map (the
+// adapter and the planner check every block before, so only a broken invariant of theirs gets
+// here) stops the channel with the kinematic's workspace error NC3201 at the active block.
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <span>
+#include <string>
+
+#include "channel/channel.hpp"
+#include "program/program_source.hpp"
+#include "tracking/trafo_sync.hpp"
+
+namespace ncsim::ipo {
+
+bool Channel::map_joints(const Cycle& c) noexcept {
+  transformed_ = true;
+  // The TCP of this cycle: the path's point, or where a catch-up / departure left it, or the
+  // catch-up's own setpoint, or the path's PCS1 point moved by the belt (docs/conveyor.md
+  // "Conveyor tracking under #TRAFO ON"): PCS1 -> MCS TCP -> joints.
+  AxisVec x = c.x;
+  AxisVec v = c.v;
+  AxisVec a = c.a;
+  AxisVec j = c.j;
+  if (c.activity == Activity::motion) sync_hold_.reset();
+  if (sync_hold_) {
+    x = *sync_hold_;
+    v = a = j = AxisVec{};
+  }
+  if (sync_ && sync_->driving()) {
+    for (std::size_t i = 0; i < axes_.size(); ++i) {
+      const axes::Setpoint sp = sync_->catch_up_setpoint(i);
+      x[i] = sp.p;
+      v[i] = sp.v;
+      a[i] = sp.a;
+      j[i] = sp.j;
+    }
+  } else if (sync_ && sync_->moving_frame()) {
+    for (std::size_t i = 0; i < axes_.size(); ++i) {
+      x[i] += sync_->offset(i);
+      v[i] += sync_->offset_v(i);
+      a[i] += sync_->offset_a(i);
+    }
+  }
+  for (std::size_t i = 0; i < axes_.size(); ++i)
+    tcp_[i] = axes::Setpoint{x[i], v[i], a[i], j[i]};
+  JointSetpoint s;
+  if (!stage_->step(x, v, a, j, s)) {
+    const AxisVec& p = stage_->failed_point();
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "TCP point (%.6g, %.6g, %.6g) mm outside the workspace of the kinematic "
+                  "transform",
+                  p[0], p[1], p[2]);
+    stop("NC3201", text, c, -1);
+    return false;
+  }
+  // --- trafo-checks: the jerk stencil holds this cycle and the two before.
+  const bool consecutive = c.index == q_index_ + 1;
+  q_plain_ = {c.interval_jerk_limited && !relay_.take_seen(), consecutive && q_plain_[0],
+              consecutive && q_plain_[1]};
+  if (sync_ && (sync_->driving() || sync_->moving_frame())) trafo_sync_check(c, s);
+  q_known_ = consecutive ? std::min(q_known_ + 1, 3) : 1;
+  q_index_ = c.index;
+  q_back3_ = q_back2_;
+  q_back2_ = q_back1_;
+  q_back1_ = s.q;
+  joints_ = s;
+  for (std::size_t i = 0; i < axes_.size(); ++i)
+    setpoint_[i] = axes::Setpoint{s.q[i], s.v[i], s.a[i], s.j[i]};
+  return true;
+}
+
+void Channel::trafo_sync_check(const Cycle& c, const JointSetpoint& s) noexcept {
+  if (trafo_warning_) return;  // the first overrun of the run; the audit lists every one
+  std::array<axes::Dynamics, planner::kMaxAxes> dyn{};
+  const std::size_t n = std::min(axes_.size(), sync_->axis_count());
+  for (std::size_t i = 0; i < n; ++i)
+    dyn[i] = sync_->dynamics(i);
+  // The closed-form v, a and j of the joints, then their setpoints' differences: a belt that
+  // changes faster than its measured acceleration tells (a step, noise without filters) moves
+  // the PCS1 offset and with it the joints between cycles beyond what the closed form shows.
+  // --- trafo-checks: the jerk as the audit checks it: the closed form on a jerk-limited slope,
+  // the third difference where its stencil is jerk-limited and holds no documented path step.
+  auto o = joint_overrun(s, std::span(dyn.data(), n), c.jerk_limited);
+  JointSetpoint diff;
+  bool jerk = false;
+  if (!o && joint_differences(c, s, diff, jerk))
+    o = joint_overrun(diff, std::span(dyn.data(), n), jerk);
+  if (!o) return;
+  const char* phase = sync_->phase() == SyncPhase::catching_up ? "the catch-up"
+                      : sync_->phase() == SyncPhase::departing ? "the departure"
+                                                               : "synchronised motion";
+  const char* quantity = o->quantity == 'v' ? "v" : o->quantity == 'a' ? "a" : "j";
+  const char* limit = o->quantity == 'v'   ? "P-AXIS-00212"
+                      : o->quantity == 'a' ? "P-AXIS-00008"
+                                           : "the jerk of P-AXIS-00195..00198";
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "joint %s: |%s| %.6g above its %.6g (%s) in %s under #TRAFO ON (004 l.609: the "
+                "joint dynamics are not ensured there; reduce the belt velocity or the feed)",
+                axes_[o->joint].config.name.c_str(), quantity, o->value, o->limit, limit, phase);
+  try {
+    RunTimeError w;
+    w.id = kTrafoSyncOverrunId;
+    w.message = text;
+    w.line = c.line;
+    w.file = c.file;
+    w.t = c.t;
+    w.axis = static_cast<int>(o->joint);
+    trafo_warning_ = std::move(w);
+  } catch (...) {
+    std::abort();  // out of memory while reporting a warning
+  }
+}
+
+bool Channel::joint_differences(const Cycle& c, const JointSetpoint& s, JointSetpoint& out,
+                                bool& jerk) const noexcept {
+  if (q_known_ < 2 || c.index != q_index_ + 1) return false;
+  const double t = ipo_.t_cycle();
+  jerk = q_known_ >= 3 && q_plain_[0] && q_plain_[1] && q_plain_[2];
+  for (std::size_t i = 0; i < axes_.size(); ++i) {
+    out.q[i] = s.q[i];
+    out.v[i] = (s.q[i] - q_back1_[i]) / t;
+    out.a[i] = (s.q[i] - 2.0 * q_back1_[i] + q_back2_[i]) / (t * t);
+    out.j[i] =
+        jerk ? (s.q[i] - 3.0 * q_back1_[i] + 3.0 * q_back2_[i] - q_back3_[i]) / (t * t * t) : 0.0;
+  }
+  return true;
+}
+
+bool Channel::trafo_sync_motion(bool catch_up, std::span<const axes::MotionState> start,
+                                std::span<const double> target, double feed_cont,
+                                axes::Result& r) noexcept {
+  const std::size_t n = start.size();
+  std::array<axes::Dynamics, planner::kMaxAxes> joints{};
+  std::array<axes::Dynamics, planner::kMaxAxes> tcp{};
+  for (std::size_t i = 0; i < n; ++i)
+    joints[i] = tcp[i] = sync_->dynamics(i);
+  const planner::JointMap& inverse = stage_->inverse();
+  std::array<int, 3> xyz{-1, -1, -1};
+  for (std::size_t i = 0; i < n; ++i)
+    if (const int k = sync_->xyz(i); k >= 0) xyz[static_cast<std::size_t>(k)] = static_cast<int>(i);
+  // The points the TCP passes: the start, the target (at the start), and for a catch-up the
+  // meeting point and the middle between start and meeting.
+  std::array<AxisVec, 4> points{};
+  for (std::size_t i = 0; i < n; ++i) {
+    points[0][i] = start[i].p;
+    points[1][i] = target[i];
+    points[2][i] = (start[i].p + target[i]) / 2.0;
+  }
+  std::size_t count = 3;
+  for (int pass = 0; pass < 2; ++pass) {
+    const auto d =
+        tcp_dynamics(inverse, xyz, std::span(joints.data(), n), std::span(points.data(), count));
+    if (!d) {
+      r = axes::Result::error_invalid_input;
+      return false;
+    }
+    for (const int k : xyz)
+      if (k >= 0) tcp[static_cast<std::size_t>(k)] = *d;
+    // --- trafo-feed: FEED_CONT > 0 meets the workpiece moving; the meeting point, its
+    // velocity belt + f u inside the TCP's V, is covered by the second pass (S-1).
+    r = catch_up ? sync_->start_catch_up(start, target, feed_cont, std::span(tcp.data(), n))
+                 : sync_->start_departure(start, target, std::span(tcp.data(), n));
+    if (r != axes::Result::ok || !catch_up) return r == axes::Result::ok;
+    // The meeting point is known now: cover it and the way there, then plan again.
+    const CatchUp& cu = sync_->catch_up();
+    const double vb = cu.belt_velocity();
+    const double s_meet = sync_->travel() + vb * cu.duration();  // the forecast belt
+    for (std::size_t i = 0; i < n; ++i) {
+      const axes::Setpoint end = cu.setpoint(i, cu.duration(), s_meet, vb, 0.0);
+      points[2][i] = end.p;
+      points[3][i] = (start[i].p + end.p) / 2.0;
+    }
+    count = 4;
+  }
+  return r == axes::Result::ok;
+}
+
+}  // namespace ncsim::ipo

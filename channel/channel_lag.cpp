@@ -1,0 +1,20 @@
+// channel/channel_lag: Channel::master_display(), the conveyor display variables of the last cycle
+// with synchro_lag (line; tracking/synchro_lag.hpp, docs/conveyor.md "synchro_lag sign").
+
+#include "channel/channel.hpp"
+#include "tracking/synchro_lag.hpp"
+
+namespace ncsim::ipo {
+
+MasterDisplay Channel::master_display() const noexcept {
+  if (!sync_) return MasterDisplay{};
+  MasterDisplay d = sync_->display();
+  const std::size_t n = axes_.size();
+  if (const auto lag = cycle_lag(*sync_, std::span<const double>(state_.command.data(), n),
+                                 std::span<const double>(state_.actual.data(), n), transformed_,
+                                 &tcp_, forward_))
+    d.synchro_lag = *lag;
+  return d;
+}
+
+}  // namespace ncsim::ipo

@@ -1,0 +1,150 @@
+// channel/channel_sync_error_trafo: the channel after a run-time error raised while synchronised
+// under #TRAFO ON (sync-trafo, issue 14; seed 004 §2.3 l.492-498, §2.2 l.609, l.687;
+// tracking/sync_error_trafo.hpp; docs/conveyor.md "Errors while synchronised", "Under #TRAFO ON").
+//
+// Flow: as in channel_sync_error.cpp, but the stop acts on the TCP: every cycle the path's
+// PCS1 point (braking to 0 by the feed hold) plus the belt's offset is the TCP (map_joints),
+// and a SyncErrorStop over the TCP's X, Y, Z (the conveyor workspace's faces as their limits,
+// dynamics derived from the joints' at the points the following passes) decides when it must
+// brake and brakes it, each Cartesian coordinate jerk-limited to rest, so that the TCP leaves
+// the belt on its own line (Z does not move towards the belt). The joints come from the
+// braking TCP by the joint stage. The joints themselves are watched too (the generic
+// SyncErrorStop on the joint setpoints): a joint that following would take above its V or
+// whose own stop would pass its soft limit starts the TCP's stop as well.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "channel/channel.hpp"
+#include "tracking/sync_error_trafo.hpp"
+
+namespace ncsim::ipo {
+
+bool Channel::sync_error_trafo_begin() noexcept {
+  after_trafo_ = false;
+  after_joint_ = -1;
+  if (!stage_) return false;
+  const std::size_t n = std::min(axes_.size(), sync_->axis_count());
+  std::array<int, 3> xyz{-1, -1, -1};
+  std::array<AfterErrorAxis, planner::kMaxAxes> joints{};
+  AxisVec p{};
+  for (std::size_t i = 0; i < n; ++i) {
+    if (const int k = sync_->xyz(i); k >= 0 && k < 3)
+      xyz[static_cast<std::size_t>(k)] = static_cast<int>(i);
+    // The tighter of the joint's feed / G00 limits (the audit's) and its PTP dynamics.
+    AfterErrorAxis a = after_.limits(i);
+    const axes::Dynamics& d = sync_->dynamics(i);
+    a.v_max = std::min(a.v_max, d.v_max);
+    a.a_max = std::min(a.a_max, d.a_max);
+    a.d_max = std::min(a.d_max, d.d_max);
+    a.j_max = std::min(a.j_max, d.j_max);
+    joints[i] = a;
+    p[i] = tcp_[i].p;
+  }
+  // A TCP beyond a face of the workspace already (NC9052 / NC9053 themselves, a listing whose
+  // working height is outside it): the limit is passed, the run ends at once as in the
+  // Cartesian case of an axis beyond its soft limit (docs/conveyor.md).
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (xyz[k] < 0) return false;
+    const double x = p[static_cast<std::size_t>(xyz[k])];
+    if (x < after_box_.lower[static_cast<int>(k)] || x > after_box_.upper[static_cast<int>(k)])
+      return false;
+  }
+  Eigen::Vector3d dir = sync_->frame().direction();
+  if (sync_->belt_velocity() < 0.0) dir = -dir;
+  const auto lim =
+      tcp_after_error_axes(stage_->inverse(), xyz, std::span(joints.data(), n), after_box_, dir, p);
+  if (!lim || !after_tcp_.configure(std::span(lim->data(), n), ipo_.t_cycle())) return false;
+  after_tcp_.begin();
+  after_trafo_ = true;
+  return true;
+}
+
+bool Channel::sync_error_trafo_step(const Cycle& c, bool& end) noexcept {
+  const std::size_t n = axes_.size();
+  // The TCP following the belt (tcp_), and its joints (setpoint_) where the transform maps it.
+  const bool mapped = map_to_axes(c);
+  if (!mapped) error_.reset();  // NC3201 is not raised after the error: the run ends below
+  std::span<axes::Setpoint> tcp(tcp_.data(), n);
+  bool braked = false;
+  if (after_tcp_.stopping()) {
+    after_tcp_.step(tcp);
+    braked = true;
+    end = after_tcp_.stood();
+  } else {
+    if (!mapped) return false;
+    AfterErrorEnd why = AfterErrorEnd::soft_limit;
+    int axis = -1;
+    const bool path_stands = c.path.v == 0.0 && c.path.a == 0.0;
+    const bool belt_stands = std::fabs(sync_->belt_velocity()) <= SyncErrorStop::kStandstill;
+    if (path_stands && belt_stands) {
+      after_tcp_.start_stopping(tcp, AfterErrorEnd::belt_stop, -1);
+      end = true;
+    } else if (after_tcp_.must_stop(tcp, why, axis)) {
+      after_tcp_.start_stopping(tcp, why, axis);  // this cycle as computed, braking from the next
+    } else if (after_.must_stop(std::span<const axes::Setpoint>(setpoint_.data(), n), why, axis)) {
+      after_joint_ = axis;
+      after_joint_why_ = why;
+      after_tcp_.start_stopping(tcp, why, -1);
+    }
+    after_tcp_.follow_cycle();
+  }
+  if (!braked) return true;
+  AxisVec x{}, v{}, a{}, j{};
+  for (std::size_t i = 0; i < n; ++i) {
+    x[i] = tcp_[i].p;
+    v[i] = tcp_[i].v;
+    a[i] = tcp_[i].a;
+    j[i] = tcp_[i].j;
+  }
+  JointSetpoint s;
+  if (!stage_->step(x, v, a, j, s)) return false;
+  joints_ = s;
+  for (std::size_t i = 0; i < n; ++i)
+    setpoint_[i] = axes::Setpoint{s.q[i], s.v[i], s.a[i], s.j[i]};
+  return true;
+}
+
+std::string Channel::after_error_trafo_note() const {
+  static constexpr const char* kXyz[3] = {"X", "Y", "Z"};
+  char buf[512];
+  std::string what;
+  if (after_joint_ >= 0) {
+    const auto i = static_cast<std::size_t>(after_joint_);
+    std::snprintf(buf, sizeof buf, "the TCP braked: joint %s %s", axes_[i].config.name.c_str(),
+                  after_joint_why_ == AfterErrorEnd::velocity
+                      ? "would have exceeded its maximum velocity following the belt"
+                      : "would have passed its soft limit");
+    what = buf;
+  } else if (after_tcp_.why() == AfterErrorEnd::soft_limit && after_tcp_.axis() >= 0) {
+    const auto i = static_cast<std::size_t>(after_tcp_.axis());
+    const int k = sync_ ? sync_->xyz(i) : -1;
+    const AfterErrorAxis& l = after_tcp_.limits(i);
+    const double p = tcp_[i].p;
+    const bool up = std::fabs(l.soft.max_position - p) < std::fabs(p - l.soft.min_position);
+    static constexpr const char* kUpper[3] = {"00859", "00861", "00863"};
+    static constexpr const char* kLower[3] = {"00860", "00862", "00864"};
+    const std::size_t kk = k >= 0 && k < 3 ? static_cast<std::size_t>(k) : 0;
+    std::snprintf(buf, sizeof buf,
+                  "the TCP braked before the conveyor workspace's %s face %.6g mm (P-CHAN-%s), "
+                  "standing at %.6g mm",
+                  kXyz[kk], up ? l.soft.max_position : l.soft.min_position,
+                  up ? kUpper[kk] : kLower[kk], p);
+    what = buf;
+  } else if (after_tcp_.why() == AfterErrorEnd::belt_stop) {
+    what = "the TCP stood with the belt";
+  } else {
+    what = "the TCP braked after ncsim's longest following";
+  }
+  std::snprintf(buf, sizeof buf,
+                "synchronisation kept after %s under #TRAFO ON (004 §2.3): the path braked to 0 "
+                "in PCS1, the TCP followed the belt for %.6g s; %s; it stood at t=%.6g s",
+                sync_error_->id.c_str(), after_tcp_.followed(), what.c_str(), after_end_t_);
+  return std::string(buf) + after_passed_;
+}
+
+}  // namespace ncsim::ipo
