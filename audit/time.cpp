@@ -1,4 +1,4 @@
-// ipo/time: the time loop (see the header).
+// audit/time: the time loop (see the header).
 
 #include "audit/time.hpp"
 

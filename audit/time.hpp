@@ -1,5 +1,5 @@
 #pragma once
-// ipo/time: machining time of a program (`ncsim time`), by the same cycle loop as `run`.
+// audit/time: machining time of a program (`ncsim time`), by the same cycle loop as `run`.
 //
 // Purpose: total time and per-block times, split by what the channel did.
 // Inputs: the interpolator Config (its Detail is forced to Detail::path: no points, no sinks),

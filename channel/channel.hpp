@@ -1,5 +1,5 @@
 #pragma once
-// ipo/channel: the channel loop, one interpolation cycle T per Channel::step() (issue 12).
+// channel/channel: the channel loop, one interpolation cycle T per Channel::step() (issue 12).
 //
 // Purpose: what the kernel's channel does each cycle after decoding: the path interpolator
 // gives the commanded path point; the point is mapped to machine axis setpoints; every axis
@@ -31,8 +31,8 @@
 //      the wait ends with NC6101 after ChannelConfig::exact_stop_wait_max.
 //   5. The Sink sees the joints of the cycle and then the cycle, only when no run-time error
 //      was raised in it: a stopped run's stream ends with the last good cycle.
-//   1a. Channel events (ipo/channel_event.hpp, docs/ipo.md "Channel events"): the events due
-//      (Cycle::event_tag) are dispatched by kind (ipo/channel_events.cpp) after the
+//   1a. Channel events (program/channel_event.hpp, docs/ipo.md "Channel events"): the events due
+//      (Cycle::event_tag) are dispatched by kind (channel/channel_events.cpp) after the
 //      interpolator's step; at a ChannelWait the interpolator asks the channel (on_wait) inside
 //      its step, and a wait whose events are not done holds the path (Activity::channel) until
 //      they are: a blocking event is dispatched again at the start of every cycle, and when it
@@ -48,7 +48,7 @@
 //      During 1, every block that starts (also several in one cycle: the interpolator's
 //      BlockObserver) goes to Player::block_started and its `line` events fire at once
 //      (Player::fire_lines): they belong to the cycle in which the block starts.
-//   2b. (indp) INDP axes (ipo/channel_indp.cpp): IndpAxes::step(); an axis the INDP layer owns
+//   2b. (indp) INDP axes (channel/channel_indp.cpp): IndpAxes::step(); an axis the INDP layer owns
 //      gets its INDP setpoint instead of the path's (Cycle::independent); X[INDP_SYN ...],
 //      X[INDP_ASYN ...], #WAIT INDP and M/H/S/T/D arrive as channel events (docs/ipo.md "INDP
 //      axes and technology functions").
@@ -126,8 +126,8 @@ struct ChannelAxis {
   axes::PositionControlParams control;  ///< position control model (axes/control.hpp)
   axes::AxisMonitorParams monitor;      ///< soft limits, lag, exact stop, ...
   // --- indp:
-  IndpAxisConfig indp;  ///< the axis as an INDP axis (ipo/indp_axes.hpp)
-  // --- static-saw: G74 (ipo/channel_homing.cpp, docs/homing.md)
+  IndpAxisConfig indp;  ///< the axis as an INDP axis (channel/indp_axes.hpp)
+  // --- static-saw: G74 (channel/channel_homing.cpp, docs/homing.md)
   double reference_position = 0.0;  ///< P-AXIS-00152 pos_refpkt [mm | deg]
   double homing_velocity = 83.333;  ///< P-AXIS-00219 vb_refmax [mm/s | deg/s]
 };
@@ -141,7 +141,7 @@ struct ChannelConfig {
   std::optional<machines::ConveyorSyncChannel> conveyor;  ///< FCT_DLM channels only
   std::vector<SyncAxis> sync_axes;  ///< one per entry of path.axes (with `conveyor`)
   /// The conveyor axis's conv_sync.* as loaded: what `#MACHINE DATA` changes at run time
-  /// (ipo/machine_data.hpp); set with `conveyor` when the machine has a conveyor axis.
+  /// (program/machine_data.hpp); set with `conveyor` when the machine has a conveyor axis.
   std::optional<machines::ConveyorAxisParams> conveyor_axis;
   /// --- trafo: the forward transform of the machine's kinematic (ipo::forward_map; empty
   /// without one): synchro_lag under #TRAFO ON (Channel::master_display, ipo::cycle_lag).
@@ -189,7 +189,7 @@ class Channel {
   /// Why the channel stopped at run time, if it did.
   const std::optional<RunTimeError>& run_time_error() const noexcept { return error_; }
   /// --- trafo: the first joint overrun while synchronised under #TRAFO ON (warning NC6210,
-  /// ipo/trafo_sync.hpp); the run goes on (004 l.609: the joint dynamics are not ensured).
+  /// tracking/trafo_sync.hpp); the run goes on (004 l.609: the joint dynamics are not ensured).
   const std::optional<RunTimeError>& trafo_warning() const noexcept { return trafo_warning_; }
   /// The interpolator's message when the source failed.
   const std::string& message() const noexcept { return ipo_.message(); }
@@ -234,10 +234,10 @@ class Channel {
   }
   /// The channel's conveyor tracking state; null without FCT_DLM.
   const ConveyorSync* conveyor_sync() const noexcept { return sync_ ? &*sync_ : nullptr; }
-  // --- line: the display variables of seed 004 §6 with synchro_lag (ipo/synchro_lag.hpp) of
-  // the last cycle; all 0 without FCT_DLM (ipo/channel_lag.cpp).
+  // --- line: the display variables of seed 004 §6 with synchro_lag (tracking/synchro_lag.hpp) of
+  // the last cycle; all 0 without FCT_DLM (channel/channel_lag.cpp).
   MasterDisplay master_display() const noexcept;
-  // --- indp: independent axes (ipo/channel_indp.cpp, docs/ipo.md "INDP axes and technology
+  // --- indp: independent axes (channel/channel_indp.cpp, docs/ipo.md "INDP axes and technology
   // functions"). Conveyor tracking takes an INTERRUPTIBLE INDP_SYN motion over, moving, when
   // the catch-up after the next #SYNC IN starts (IndpAxes::hand_over, docs/conveyor.md S-4).
   IndpAxes& indp() noexcept { return indp_; }
@@ -246,13 +246,13 @@ class Channel {
   /// order (`run` writes them as CSV comments; docs/ipo.md "INDP axes and technology functions").
   const std::vector<TechOutput>& tech_outputs() const noexcept { return tech_; }
   // --- workspace: an error while synchronised keeps the synchronisation (seed 004 §2.3,
-  // ipo/sync_error.hpp, ipo/channel_sync_error.cpp, docs/conveyor.md "Errors while
+  // tracking/sync_error.hpp, channel/channel_sync_error.cpp, docs/conveyor.md "Errors while
   // synchronised"): the run goes on until the machine stands, then ends with that error.
   /// What the machine did after such an error (empty: none): the following, the stop, why.
   std::string after_error_note() const;
 
  private:
-  /// What executing a channel event gave (ipo/channel_events.cpp).
+  /// What executing a channel event gave (channel/channel_events.cpp).
   enum class EventOutcome : std::uint8_t {
     done,      ///< executed; the next event may follow
     blocking,  ///< not done yet: dispatched again next cycle, the path holds meanwhile
@@ -267,7 +267,7 @@ class Channel {
    private:
     Channel& channel_;
   };
-  /// Executes one event by kind (ipo/channel_events.cpp: the one dispatch point).
+  /// Executes one event by kind (channel/channel_events.cpp: the one dispatch point).
   EventOutcome dispatch(const ChannelEvent& event) noexcept;
   /// Dispatches the blocked event and then the due events up to `up_to`; false when one
   /// blocks (kept in blocked_) or raised an error.
@@ -276,7 +276,7 @@ class Channel {
   bool on_wait(const ChannelWait& wait) noexcept;
   /// Raises a run-time error at an event's line, at the time of the cycle being computed.
   EventOutcome event_error(const char* id, std::string message, const ChannelEvent& e) noexcept;
-  // --- conveyor-sync: the conveyor events (ipo/channel_conveyor.cpp)
+  // --- conveyor-sync: the conveyor events (channel/channel_conveyor.cpp)
   EventOutcome on_sync_in(const interp::SyncIn& command, const ChannelEvent& e) noexcept;
   EventOutcome on_sync_out(const interp::SyncOut& command, const ChannelEvent& e) noexcept;
   /// --- sync-feed: hands the INDP axes to the catch-up / departure starting now: in position
@@ -290,9 +290,9 @@ class Channel {
   }
   /// The catch-up after #SYNC IN / the departure after #SYNC OUT (ProgramSource::sync_motion).
   EventOutcome on_sync_motion(const interp::Motion& motion, const ChannelEvent& e) noexcept;
-  // --- sync-feed: FEED_CONT > 0 / FEED_CONT_AUTO (ipo/channel_sync_entry.cpp, S-1)
+  // --- sync-feed: FEED_CONT > 0 / FEED_CONT_AUTO (channel/channel_sync_entry.cpp, S-1)
   /// The relative velocity the catch-up from `start` to `target` meets its target with: the
-  /// #SYNC IN's, reduced to what the path's first block allows (ipo/sync_entry); 0: at rest.
+  /// #SYNC IN's, reduced to what the path's first block allows (tracking/sync_entry); 0: at rest.
   double sync_entry_velocity(std::span<const axes::MotionState> start,
                              std::span<const double> target) noexcept;
   /// The catch-up meets its target `lag` [s] into this cycle: the path starts there, moving.
@@ -308,7 +308,7 @@ class Channel {
   EventOutcome port_outcome(const ChannelEvent& e) noexcept;
   EventOutcome on_move_velocity(const interp::MoveVelocity& command,
                                 const ChannelEvent& e) noexcept;
-  /// `#MACHINE DATA` on the conveyor axis's filters and delay time (ipo/machine_data.hpp):
+  /// `#MACHINE DATA` on the conveyor axis's filters and delay time (program/machine_data.hpp):
   /// passed to the Port with the path standing (isg-language.md §5.10).
   EventOutcome on_machine_data(const interp::MachineData& command, const ChannelEvent& e) noexcept;
   std::optional<machines::ConveyorAxisParams> conveyor_axis_;  ///< as changed so far
@@ -349,16 +349,16 @@ class Channel {
   Status stop(const char* id, std::string message, const Cycle& c, int axis) noexcept;
   /// Step 0: the scenario's cycle; false when the run ends before it (stop or error).
   bool play_cycle(Status& status) noexcept;
-  // --- conveyor-sync (ipo/channel_conveyor.cpp)
+  // --- conveyor-sync (channel/channel_conveyor.cpp)
   /// The conveyor workspace on the cycle's MCS setpoints while synchronised; false: stopped.
   bool sync_check_workspace(const Cycle& c) noexcept;
-  // --- static-saw (ipo/channel_static.cpp)
+  // --- static-saw (channel/channel_static.cpp)
   /// A synchronised static unit (P-CHAN-00364): the path override is the belt's master
   /// velocity over the planned kXvPlanFactor * CONV_VEL, so the virtual X follows the belt;
   /// the operator's override is restored after #SYNC OUT.
   void static_override() noexcept;
   bool static_unit_ = false;  ///< P-CHAN-00364 x_virtual
-  /// G74: each order's axes drive to P-AXIS-00152 as INDP motions (ipo/channel_homing.cpp).
+  /// G74: each order's axes drive to P-AXIS-00152 as INDP motions (channel/channel_homing.cpp).
   EventOutcome on_homing(const interp::Homing& command, const ChannelEvent& e) noexcept;
   std::optional<int> homing_order_;          ///< the order number homing now; empty: none started
   std::optional<double> operator_override_;  ///< the override before the static unit took it
@@ -389,7 +389,7 @@ class Channel {
   double after_end_t_ = 0.0;                ///< [s] the machine stood
   std::string after_passed_;                ///< a soft limit passed after all (the note says it)
   // --- sync-trafo: the same under #TRAFO ON (channel_sync_error_trafo.cpp): the TCP brakes
-  // before the conveyor workspace's face (ipo/sync_error_trafo.hpp), the joints are checked.
+  // before the conveyor workspace's face (tracking/sync_error_trafo.hpp), the joints are checked.
   bool sync_error_trafo_begin() noexcept;
   /// The after-error setpoints of a transformed cycle (tcp_ and the joints from it); false: the
   /// TCP left the kinematic's reach (the run ends there, the note says it).
@@ -436,7 +436,7 @@ class Channel {
   /// Applies one scenario action to the interpolator; the run-time error (id, text) it
   /// raises, if any.
   std::optional<std::pair<const char*, std::string>> act(const scenario::Action& a) noexcept;
-  // --- indp: (ipo/channel_indp.cpp)
+  // --- indp: (channel/channel_indp.cpp)
   /// After step 2: advances the INDP axes and gives each axis they own its INDP setpoint;
   /// false when a run-time error stopped the channel (NC6103).
   bool indp_cycle(const Cycle& c) noexcept;
@@ -498,7 +498,7 @@ class Channel {
   /// interval_jerk_limited) and passed no path joint: the third difference is checked.
   std::array<bool, 3> q_plain_{false, false, false};
   /// The catch-up / departure under #TRAFO ON: the TCP's dynamics from the joints
-  /// (ipo/trafo_sync); false: the plan failed (`r` holds why). channel_kinematics.cpp.
+  /// (tracking/trafo_sync); false: the plan failed (`r` holds why). channel_kinematics.cpp.
   /// --- trafo-feed: `feed_cont` [mm/s] the catch-up's relative velocity at the meeting (S-1).
   bool trafo_sync_motion(bool catch_up, std::span<const axes::MotionState> start,
                          std::span<const double> target, double feed_cont,

@@ -1,6 +1,7 @@
-// ipo/channel_events: the channel's one dispatch point for channel events (ipo/channel_event.hpp,
-// docs/ipo.md "Channel events"). Each event kind the channel executes gets a branch here that
-// calls into its own file; a kind without one is run-time error NC6001 at the event's line.
+// channel/channel_events: the channel's one dispatch point for channel events
+// (program/channel_event.hpp, docs/ipo.md "Channel events"). Each event kind the channel executes
+// gets a branch here that calls into its own file; a kind without one is run-time error NC6001 at
+// the event's line.
 
 #include <cstdlib>
 #include <string>
@@ -27,7 +28,7 @@ Channel::EventOutcome Channel::dispatch(const ChannelEvent& e) noexcept {
   return std::visit(
       [&](const auto& body) -> EventOutcome {
         using T = std::decay_t<decltype(body)>;
-        // --- indp: M/H/S/T/D, #WAIT INDP, INDP (ipo/channel_indp.cpp)
+        // --- indp: M/H/S/T/D, #WAIT INDP, INDP (channel/channel_indp.cpp)
         if constexpr (std::is_same_v<T, interp::Tech>) {
           return indp_tech(body, e);
         } else if constexpr (std::is_same_v<T, interp::WaitIndp>) {

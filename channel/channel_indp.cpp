@@ -1,5 +1,5 @@
-// ipo/channel_indp: the channel's INDP axes per cycle and the scenario's axis override (see
-// ipo/channel.hpp and docs/ipo.md "INDP axes and technology functions").
+// channel/channel_indp: the channel's INDP axes per cycle and the scenario's axis override (see
+// channel/channel.hpp and docs/ipo.md "INDP axes and technology functions").
 
 #include <cmath>
 #include <cstdio>

@@ -467,7 +467,7 @@ core::DiagnosticList check_semantics(const core::SourceFile& file, const machine
       std::max<std::uint64_t>(kCheckMaxCommands, kCheckCommandsPerLine * file.line_count());
   std::uint64_t count = 0;
   bool ended = false;
-  // The #CS chain as the adapter follows it (ipo/program_frames.cpp): PCS targets to MCS.
+  // The #CS chain as the adapter follows it (program/program_frames.cpp): PCS targets to MCS.
   machines::CsStack cs(machine.channel.cs_rotation_sequence);
   machines::Frame cs_frame = cs.active_frame();
   // A soft-limit error of a block inside a loop is the same on every pass: reported once, with

@@ -56,7 +56,7 @@ struct Dwell {
   bool since_output = false;
 };
 
-/// A point of the program where the channel takes over (ipo/channel_event.hpp): the path
+/// A point of the program where the channel takes over (program/channel_event.hpp): the path
 /// stops exactly at the end of the block before it (the look-ahead ends there, as at a dwell);
 /// the WaitHandler then decides whether the path goes on at once or holds (Activity::channel
 /// cycles) until release_wait().
@@ -72,7 +72,7 @@ struct ChannelWait {
 /// One item of the program stream.
 using Item = std::variant<planner::Move, Dwell, ChannelWait>;
 
-struct ChannelEvent;  // ipo/channel_event.hpp
+struct ChannelEvent;  // program/channel_event.hpp
 
 /// Where the interpolator pulls its items from. next() fills `out` and returns true, or
 /// returns false at the end of the program. May be endless; may throw (the interpolator
@@ -127,7 +127,7 @@ struct Config {
   std::size_t window = 120;               ///< look-ahead entries (planner::window_size)
   AxisVec start{};                        ///< axis positions before the first move [mm | deg]
   Detail detail = Detail::axes;
-  /// Channel hook (ipo/channel.hpp): true makes a G60 / G360 stop wait, in exact_stop
+  /// Channel hook (channel/channel.hpp): true makes a G60 / G360 stop wait, in exact_stop
   /// cycles, until release_exact_stop() instead of for the settling time (the channel tests
   /// the window P-AXIS-00236 on the axes' actual positions).
   bool hold_exact_stop = false;
@@ -278,7 +278,7 @@ class PathInterpolator {
   OverrideType override_type() const noexcept { return override_type_; }
   // --- operator: block starts (null: none); `observer` must outlive the interpolator.
   void observe_blocks(BlockObserver* observer) noexcept { observer_ = observer; }
-  // --- workspace: a path velocity cap from outside (issue 14, ipo/workspace_hold.hpp)
+  // --- workspace: a path velocity cap from outside (issue 14, tracking/workspace_hold.hpp)
   /// Caps the path velocity [mm/s] (+inf: none) from the next step(): a jerk-limited replan
   /// from the path state as for an override change (also inside a tolerance ball); the entry
   /// that starts while capped starts capped. Negative or NaN values are taken as 0.
@@ -291,7 +291,7 @@ class PathInterpolator {
     return window_.queued(k);
   }
   // --- workspace: end
-  // --- sync-feed: a path that starts moving after a catch-up (issue 14, ipo/sync_entry.hpp)
+  // --- sync-feed: a path that starts moving after a catch-up (issue 14, tracking/sync_entry.hpp)
   /// While the path holds at a ChannelWait: pulls and prepares what follows the wait into the
   /// look-ahead window (as the path's own start would), so that its first segment is known.
   /// False when the source failed (the next step() reports it).

@@ -393,7 +393,7 @@ bool ProgramSource::pull(Item& out) {
     const std::uint32_t line = cmd->line;
     file_ = cmd->file;
     // --- conveyor-sync: the first motion after #SYNC IN / #SYNC OUT is the catch-up /
-    // departure, a PTP motion the channel runs while the path stands (ipo/conveyor_sync).
+    // departure, a PTP motion the channel runs while the path stands (tracking/conveyor_sync).
     if (sync_motion_ && std::holds_alternative<interp::Motion>(cmd->body)) {
       sync_motion_ = false;
       events_.push_back(ChannelEvent{++tag_, line, cmd->file, sync_motion(cmd->body, line)});

@@ -1,5 +1,5 @@
 #pragma once
-// ipo/program_source: the interpreter's command stream as an ipo::Source, and the machine's
+// program/program_source: the interpreter's command stream as an ipo::Source, and the machine's
 // axis lists as the interpolator's Config.
 //
 // Purpose: the first end-to-end seam interp -> planner -> ipo (`ncsim time`, `ncsim run`).
@@ -87,7 +87,7 @@ class ProgramSource final : public Source {
   /// The next Move, Dwell or ChannelWait; false at End or at a program error (error() then
   /// holds it).
   bool next(Item& out) override;
-  /// The oldest channel event with tag <= up_to (ipo/channel_event.hpp).
+  /// The oldest channel event with tag <= up_to (program/channel_event.hpp).
   bool take_event(std::uint32_t up_to, ChannelEvent& out) override;
 
   /// The error that ended the stream: the interpreter's, or the adapter's NC6001. Check it
@@ -198,7 +198,7 @@ class ProgramSource final : public Source {
   bool refuse_soft_limits_ = false;     ///< refuse_beyond_soft_limits()
   interp::AxisMask indp_running_ = 0;   ///< machine axes an INDP_ASYN motion may still move
   interp::AxisMask run_time_ = 0;       ///< axes the open barrier answers from run time
-  // Channel events (ipo/channel_event.hpp).
+  // Channel events (program/channel_event.hpp).
   std::deque<ChannelEvent> events_;  ///< not yet taken by the channel
   std::uint32_t tag_ = 0;            ///< tag of the last event queued
   std::uint32_t given_ = 0;          ///< largest tag handed out with an item
