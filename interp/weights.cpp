@@ -3,6 +3,7 @@
 #include "interp/weights.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/number_text.hpp"
 
@@ -13,6 +14,10 @@ constexpr double kLowest = 0.01;  // 1 %
 constexpr double kLongestRamp = 100.0;
 
 double limit(double percent, bool ramp, const std::string& what, std::vector<std::string>& notes) {
+  if (!std::isfinite(percent)) {
+    notes.push_back(what + " is not a finite number: 100 % stays");
+    return 1.0;
+  }
   const double f = percent / 100.0;
   const double lo = ramp ? 1.0 : kLowest;
   const double hi = ramp ? kLongestRamp : 1.0;

@@ -4,6 +4,7 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <utility>
@@ -58,6 +59,8 @@ TEST_CASE("NC4314: more than the lists allow is limited to 100 %, 0 % to 1 %") {
   CHECK(w.ramp_feed[0] == 1.0);
   CHECK(apply_weighting(w, 128, 0.0, {}, kNames).size() == 1);
   CHECK(w.v_feed[0] == doctest::Approx(0.01));
+  CHECK(apply_weighting(w, 131, std::nan(""), {}, kNames).size() == 1);
+  CHECK(w.a_feed[0] == 1.0);  // a weight that is no number changes nothing
 }
 
 TEST_CASE("the interpreter carries the weights in force with each motion, one shared value") {

@@ -302,7 +302,7 @@ bool ProgramSource::pull(Item& out) {
       out_queued_ = true;
       return true;
     }
-    if (held_error_) {  // --- trafo-pcs1: the error after the held block (above)
+    if (held_error_) {  // the error after the held block (release_held)
       error_ = std::move(held_error_);
       held_error_.reset();
       throw Stop{};
@@ -312,236 +312,263 @@ bool ProgramSource::pull(Item& out) {
       answer(*open_);
       open_.reset();
     }
-    std::optional<interp::Command> cmd;
-    if (held_) {  // --- indp: the command after a block's INDP_SYN commands
-      cmd = std::move(held_);
-      held_.reset();
-    } else {
-      cmd =
-          store_ != nullptr || positions_ != nullptr ? interp_.next() : interp_.next_decode_only();
-    }
-    // --- operator: the program's V.E. assignments decoded so far reach the shared store
-    // before any barrier after them is answered.
-    if (store_ != nullptr)
-      for (const auto& [name, value] : interp_.take_ve_writes())
-        store_->write(name, value);
-    // --- static-blend: a part held for its tolerance ball goes out before anything that is not
-    // the next path block (program_static.cpp); that command is taken again at the next pull.
-    // Commands that emit nothing and do not stop the path keep it held: an event riding on the
-    // next block (an M function) that will not fill the event queue, a message, M00 / M01,
-    // #CAXTRACK (the held part is tracked already).
-    if (xv_held_) {
-      const bool passes = cmd && ((is_channel_event(cmd->body) && !stops_path(cmd->body) &&
-                                   !syn_wait_ && tag_ + 1 - given_ < kMaxPendingEvents) ||
-                                  std::holds_alternative<interp::Message>(cmd->body) ||
-                                  std::holds_alternative<interp::ProgramStop>(cmd->body) ||
-                                  std::holds_alternative<interp::CaxTrack>(cmd->body));
-      if (!passes && (!cmd || !std::holds_alternative<interp::Motion>(cmd->body))) {
-        if (cmd) held_ = std::move(cmd);
-        // --- conveyor-tail: its joint with the next part is checked (joint_belt_check) unless
-        // the path stops between them (next() forgets it at a Dwell or a ChannelWait).
-        xv_last_ = *xv_held_;
-        out = std::move(*xv_held_);
-        xv_held_.reset();
-        return true;
-      }
-    }
-    // --- trafo-pcs1: a block held for its ball's share goes out before any other command
-    // than the next Motion (that command is taken again at the next pull). --- trafo-checks:
-    // commands that emit nothing and do not stop the path keep it held, as the static unit's
-    // part above: the planner blends across them, so the ball still needs its share (an event
-    // riding on the next block that will not fill the event queue, a message, M00 / M01,
-    // #FLUSH CONTINUE; a plain #FLUSH stops the path, docs/ipo.md).
-    if (ball_held_) {
-      const auto* flush = std::get_if<interp::Flush>(cmd ? &cmd->body : nullptr);
-      const bool passes = cmd && (std::holds_alternative<interp::Motion>(cmd->body) ||
-                                  (is_channel_event(cmd->body) && !stops_path(cmd->body) &&
-                                   !syn_wait_ && tag_ + 1 - given_ < kMaxPendingEvents) ||
-                                  std::holds_alternative<interp::Message>(cmd->body) ||
-                                  std::holds_alternative<interp::ProgramStop>(cmd->body) ||
-                                  (flush && flush->kind == interp::FlushKind::continue_));
-      if (!passes) {
-        if (cmd) held_ = std::move(cmd);
-        ball_release(nullptr);
-        continue;
-      }
-    }
+    std::optional<interp::Command> cmd = take_command();
+    const Pulled held = release_held(cmd, out);
+    if (held == Pulled::item) return true;
+    if (held == Pulled::again) continue;
     if (!cmd) {
       if (const core::Diagnostic* e = interp_.error()) error_ = *e;
       return false;
     }
-    // --- indp: the INDP_SYN commands of one block share one ChannelWait after the last of them,
-    // so their axes start together and the next block waits for all (isg-language.md 6.1).
-    if (syn_wait_) {
-      const auto* a = std::get_if<interp::AxisCommand>(&cmd->body);
-      const bool same_block = cmd->line == syn_wait_->line && cmd->file == file_ &&
-                              is_channel_event(cmd->body) &&
-                              (!stops_path(cmd->body) || a != nullptr);
-      if (!same_block) {
-        // --- sync-feed: an INTERRUPTIBLE block before the next synchronisation (S-4).
-        syn_wait_->interruptible =
-            syn_interruptible_ && (std::holds_alternative<interp::ProbeArm>(cmd->body) ||
-                                   std::holds_alternative<interp::SyncIn>(cmd->body));
-        held_ = std::move(cmd);
-        out = *syn_wait_;
-        given_ = syn_wait_->tag;
-        syn_wait_.reset();
-        return true;
-      }
-    }
+    if (syn_wait_ && close_syn_wait(cmd, out)) return true;
     line_ = cmd->line;
-    const std::uint32_t line = cmd->line;
     file_ = cmd->file;
-    // --- conveyor-sync: the first motion after #SYNC IN / #SYNC OUT is the catch-up /
-    // departure, a PTP motion the channel runs while the path stands (tracking/conveyor_sync).
-    if (sync_motion_ && std::holds_alternative<interp::Motion>(cmd->body)) {
-      sync_motion_ = false;
-      events_.push_back(ChannelEvent{++tag_, line, cmd->file, sync_motion(cmd->body, line)});
-      out = ChannelWait{line, tag_};
-      given_ = tag_;
-      return true;
+    const Pulled p = is_channel_event(cmd->body) || sync_motion_ ? route_event(*cmd, out)
+                                                                 : run_command(*cmd, out);
+    if (p == Pulled::item) return true;
+    if (p == Pulled::end) return false;
+  }
+}
+
+std::optional<interp::Command> ProgramSource::take_command() {
+  std::optional<interp::Command> cmd;
+  if (held_) {  // the command after a block's INDP_SYN commands, or after a held block
+    cmd = std::move(held_);
+    held_.reset();
+  } else {
+    cmd = store_ != nullptr || positions_ != nullptr ? interp_.next() : interp_.next_decode_only();
+  }
+  // The program's V.E. assignments decoded so far reach the shared store before any barrier
+  // after them is answered.
+  if (store_ != nullptr)
+    for (const auto& [name, value] : interp_.take_ve_writes())
+      store_->write(name, value);
+  return cmd;
+}
+
+bool ProgramSource::rides_along(const interp::Command& cmd) const noexcept {
+  // An event riding on the next block that will not fill the event queue, a message, M00 / M01.
+  return (is_channel_event(cmd.body) && !stops_path(cmd.body) && !syn_wait_ &&
+          tag_ + 1 - given_ < kMaxPendingEvents) ||
+         std::holds_alternative<interp::Message>(cmd.body) ||
+         std::holds_alternative<interp::ProgramStop>(cmd.body);
+}
+
+ProgramSource::Pulled ProgramSource::release_held(std::optional<interp::Command>& cmd, Item& out) {
+  // The static unit's part held for its tolerance ball goes out before anything that is not
+  // the next path block (program_static.cpp); that command is taken again at the next pull.
+  // Commands that emit nothing and do not stop the path keep it held (rides_along, and
+  // #CAXTRACK: the held part is tracked already).
+  if (xv_held_) {
+    const bool passes =
+        cmd && (rides_along(*cmd) || std::holds_alternative<interp::CaxTrack>(cmd->body));
+    if (!passes && (!cmd || !std::holds_alternative<interp::Motion>(cmd->body))) {
+      if (cmd) held_ = std::move(cmd);
+      // Its joint with the next part is checked (joint_belt_check) unless the path stops
+      // between them (next() forgets it at a Dwell or a ChannelWait).
+      xv_last_ = *xv_held_;
+      out = std::move(*xv_held_);
+      xv_held_.reset();
+      return Pulled::item;
     }
-    if (std::holds_alternative<interp::SyncIn>(cmd->body) ||
-        std::holds_alternative<interp::SyncOut>(cmd->body)) {
-      sync_motion_ = true;     // --- conveyor-sync (end)
-      static_sync(cmd->body);  // --- static-saw
+  }
+  // A PCS1 block held for its ball's share goes out before any other command than the next
+  // Motion (that command is taken again at the next pull). Commands that emit nothing and do
+  // not stop the path keep it held, as the static unit's part above: the planner blends across
+  // them, so the ball still needs its share (rides_along, #FLUSH CONTINUE; a plain #FLUSH stops
+  // the path, docs/ipo.md).
+  if (ball_held_) {
+    const auto* flush = std::get_if<interp::Flush>(cmd ? &cmd->body : nullptr);
+    const bool passes =
+        cmd && (std::holds_alternative<interp::Motion>(cmd->body) || rides_along(*cmd) ||
+                (flush && flush->kind == interp::FlushKind::continue_));
+    if (!passes) {
+      if (cmd) held_ = std::move(cmd);
+      ball_release(nullptr);
+      return Pulled::again;
     }
-    sync_belt(cmd->body);  // --- sync-feed: the PCS1 velocity split
-    if (const auto* in = std::get_if<interp::SyncIn>(&cmd->body))
-      belt_conv_vel_ = in->conv_vel;  // --- trafo: the belt's share under #TRAFO ON
-    if (is_channel_event(cmd->body)) {
-      if (const auto* md = std::get_if<interp::MachineData>(&cmd->body))
-        if (std::optional<std::string> why = machine_data_unsupported(*md, machine_))
-          fail(line, *why);
-      note_indp(cmd->body);    // --- planner
-      note_homing(cmd->body);  // --- static-saw: homed axes are answered at run time
-      const bool stops = stops_path(cmd->body);
-      const bool syn = std::holds_alternative<interp::AxisCommand>(cmd->body) && stops;
-      if (syn) {  // --- sync-feed: every INDP_SYN motion of the block INTERRUPTIBLE
-        const bool interruptible = std::get<interp::AxisCommand>(cmd->body).interruptible;
-        syn_interruptible_ = (syn_wait_ ? syn_interruptible_ : true) && interruptible;
-      }
-      events_.push_back(ChannelEvent{++tag_, line, cmd->file, std::move(cmd->body)});
-      if ((syn || syn_wait_) && tag_ - given_ < kMaxPendingEvents) {  // --- indp
-        syn_wait_ = ChannelWait{line, tag_};  // the block's later events are due with it
-        continue;
-      }
-      syn_wait_.reset();
-      if (stops || tag_ - given_ >= kMaxPendingEvents) {
-        out = ChannelWait{line, tag_};
-        given_ = tag_;
-        return true;
-      }
-      continue;
-    }
-    bool produced = false;
-    bool ended = false;
-    std::visit(
-        [&](const auto& body) {
-          using T = std::decay_t<decltype(body)>;
-          if constexpr (std::is_same_v<T, interp::Motion>) {
-            planner::Move mv;
-            try {
-              mv = to_move(body, line);
-            } catch (const Stop&) {
-              if (!ball_held_) throw;
-              // --- trafo-pcs1: the held block runs to its end before the error stops the
-              // stream, as every block before a faulty one does.
-              held_error_ = std::move(error_);
-              error_.reset();
-              ball_release(nullptr);
-              return;
-            }
-            mv.event_tag = tag_;
-            given_ = tag_;
-            ball_release(&mv);  // --- trafo-pcs1: the ball's share, then the held block out
-            if (holds_for_ball(mv, body.frame.space == interp::Space::pcs1))
-              ball_held_ = std::move(mv);
-            else
-              emit_path(std::move(mv));  // --- static-saw: queued, handed out at the loop's top
-          } else if constexpr (std::is_same_v<T, interp::Dwell>) {
-            static_stop(line, body.tech ? "a technology function's acknowledgement" : "a dwell");
-            out = Dwell{body.seconds, line, tag_, 0, body.tech, body.since_output};
+  }
+  return Pulled::none;
+}
+
+bool ProgramSource::close_syn_wait(std::optional<interp::Command>& cmd, Item& out) {
+  // The INDP_SYN commands of one block share one ChannelWait after the last of them, so their
+  // axes start together and the next block waits for all (isg-language.md 6.1).
+  const auto* a = std::get_if<interp::AxisCommand>(&cmd->body);
+  const bool same_block = cmd->line == syn_wait_->line && cmd->file == file_ &&
+                          is_channel_event(cmd->body) && (!stops_path(cmd->body) || a != nullptr);
+  if (same_block) return false;
+  // An INTERRUPTIBLE block before the next synchronisation (docs/conveyor.md S-4).
+  syn_wait_->interruptible =
+      syn_interruptible_ && (std::holds_alternative<interp::ProbeArm>(cmd->body) ||
+                             std::holds_alternative<interp::SyncIn>(cmd->body));
+  held_ = std::move(cmd);
+  out = *syn_wait_;
+  given_ = syn_wait_->tag;
+  syn_wait_.reset();
+  return true;
+}
+
+ProgramSource::Pulled ProgramSource::route_event(interp::Command& cmd, Item& out) {
+  const std::uint32_t line = cmd.line;
+  // The first motion after #SYNC IN / #SYNC OUT is the catch-up / departure, a PTP motion the
+  // channel runs while the path stands (tracking/conveyor_sync).
+  if (sync_motion_ && std::holds_alternative<interp::Motion>(cmd.body)) {
+    sync_motion_ = false;
+    events_.push_back(ChannelEvent{++tag_, line, cmd.file, sync_motion(cmd.body, line)});
+    out = ChannelWait{line, tag_};
+    given_ = tag_;
+    return Pulled::item;
+  }
+  if (!is_channel_event(cmd.body)) return run_command(cmd, out);
+  if (std::holds_alternative<interp::SyncIn>(cmd.body) ||
+      std::holds_alternative<interp::SyncOut>(cmd.body)) {
+    sync_motion_ = true;
+    static_sync(cmd.body);  // the static unit's belt feed
+  }
+  sync_belt(cmd.body);  // the PCS1 velocity split
+  if (const auto* in = std::get_if<interp::SyncIn>(&cmd.body))
+    belt_conv_vel_ = in->conv_vel;  // the belt's share under #TRAFO ON
+  if (const auto* md = std::get_if<interp::MachineData>(&cmd.body))
+    if (std::optional<std::string> why = machine_data_unsupported(*md, machine_)) fail(line, *why);
+  note_indp(cmd.body);
+  note_homing(cmd.body);  // homed axes are answered at run time
+  const bool stops = stops_path(cmd.body);
+  const bool syn = std::holds_alternative<interp::AxisCommand>(cmd.body) && stops;
+  if (syn) {  // every INDP_SYN motion of the block INTERRUPTIBLE (docs/conveyor.md S-4)
+    const bool interruptible = std::get<interp::AxisCommand>(cmd.body).interruptible;
+    syn_interruptible_ = (syn_wait_ ? syn_interruptible_ : true) && interruptible;
+  }
+  events_.push_back(ChannelEvent{++tag_, line, cmd.file, std::move(cmd.body)});
+  if ((syn || syn_wait_) && tag_ - given_ < kMaxPendingEvents) {
+    syn_wait_ = ChannelWait{line, tag_};  // the block's later events are due with it
+    return Pulled::again;
+  }
+  syn_wait_.reset();
+  if (stops || tag_ - given_ >= kMaxPendingEvents) {
+    out = ChannelWait{line, tag_};
+    given_ = tag_;
+    return Pulled::item;
+  }
+  return Pulled::again;
+}
+
+void ProgramSource::motion(const interp::Motion& body, std::uint32_t line) {
+  planner::Move mv;
+  try {
+    mv = to_move(body, line);
+  } catch (const Stop&) {
+    if (!ball_held_) throw;
+    // The held block runs to its end before the error stops the stream, as every block before
+    // a faulty one does.
+    held_error_ = std::move(error_);
+    error_.reset();
+    ball_release(nullptr);
+    return;
+  }
+  mv.event_tag = tag_;
+  given_ = tag_;
+  ball_release(&mv);  // the ball's share, then the held block out
+  if (holds_for_ball(mv, body.frame.space == interp::Space::pcs1))
+    ball_held_ = std::move(mv);
+  else
+    emit_path(std::move(mv));  // queued, handed out at the loop's top
+}
+
+bool ProgramSource::barrier(const interp::Barrier& body, std::uint32_t line, Item& out) {
+  // P-CHAN-00451 implicit synchronisation (docs/ipo.md "Position barriers"): the block programs
+  // again an axis whose INDP motion may still run.
+  const interp::AxisMask sync = positions_ != nullptr && body.wants(interp::BarrierNeed::position)
+                                    ? body.axes & indp_running_
+                                    : 0;
+  if (store_ == nullptr && positions_ == nullptr) return false;  // next_decode_only() answers
+  if (sync != 0) {
+    events_.push_back(ChannelEvent{++tag_, line, file_, interp::WaitIndp{sync}});
+    open_ = body;  // answered at the next pull, with the path standing
+    run_time_ = sync;
+    out = ChannelWait{line, tag_};
+    given_ = tag_;
+    return true;
+  }
+  if (flush_ && body.wants(interp::BarrierNeed::external)) {
+    open_ = body;  // the path stops first: answered at the next pull
+    out = Dwell{0.0, line};
+    return true;
+  }
+  answer(body);
+  return false;
+}
+
+ProgramSource::Pulled ProgramSource::run_command(interp::Command& cmd, Item& out) {
+  const std::uint32_t line = cmd.line;
+  bool produced = false;
+  bool ended = false;
+  std::visit(
+      [&](const auto& body) {
+        using T = std::decay_t<decltype(body)>;
+        if constexpr (std::is_same_v<T, interp::Motion>) {
+          motion(body, line);
+        } else if constexpr (std::is_same_v<T, interp::Dwell>) {
+          static_stop(line, body.tech ? "a technology function's acknowledgement" : "a dwell");
+          out = Dwell{body.seconds, line, tag_, 0, body.tech, body.since_output};
+          given_ = tag_;
+          produced = true;
+        } else if constexpr (std::is_same_v<T, interp::End>) {
+          ended = true;
+        } else if constexpr (std::is_same_v<T, interp::Message> ||
+                             std::is_same_v<T, interp::ProgramStop>) {
+          // pass: no motion (M00/M01 do not stop: there is no operator to press start)
+        } else if constexpr (std::is_same_v<T, interp::Flush>) {
+          // isg-language.md 5.1 [C]: #FLUSH empties the channel buffer, the path stops at the
+          // end of the last motion block (the events before it done); #FLUSH WAIT lets the
+          // decoder wait until the buffer ran empty: a stop too. #FLUSH CONTINUE does not stop
+          // when the next motion block is already there, as it always is here.
+          if (body.kind != interp::FlushKind::continue_) {
+            static_stop(line, "#FLUSH");
+            out = ChannelWait{line, tag_};
             given_ = tag_;
             produced = true;
-          } else if constexpr (std::is_same_v<T, interp::End>) {
-            ended = true;
-          } else if constexpr (std::is_same_v<T, interp::Message> ||
-                               std::is_same_v<T, interp::ProgramStop>) {
-            // pass: no motion (M00/M01 do not stop: there is no operator to press start)
-          } else if constexpr (std::is_same_v<T, interp::Flush>) {
-            // isg-language.md 5.1 [C]: #FLUSH empties the channel buffer, the path stops at the
-            // end of the last motion block (the events before it done); #FLUSH WAIT lets the
-            // decoder wait until the buffer ran empty: a stop too. #FLUSH CONTINUE does not stop
-            // when the next motion block is already there, as it always is here.
-            if (body.kind != interp::FlushKind::continue_) {
-              static_stop(line, "#FLUSH");  // --- static-saw
-              out = ChannelWait{line, tag_};
-              given_ = tag_;
-              produced = true;
-            }
-          } else if constexpr (std::is_same_v<T, interp::Barrier>) {
-            // --- planner: P-CHAN-00451 implicit synchronisation (docs/ipo.md "Position
-            // barriers"): the block programs again an axis whose INDP motion may still run.
-            const interp::AxisMask sync =
-                positions_ != nullptr && body.wants(interp::BarrierNeed::position)
-                    ? body.axes & indp_running_
-                    : 0;
-            if (store_ == nullptr && positions_ == nullptr) {
-              // answered by next_decode_only()
-            } else if (sync != 0) {
-              events_.push_back(ChannelEvent{++tag_, line, file_, interp::WaitIndp{sync}});
-              open_ = body;  // answered at the next pull, with the path standing
-              run_time_ = sync;
-              out = ChannelWait{line, tag_};
-              given_ = tag_;
-              produced = true;
-            } else if (flush_ && body.wants(interp::BarrierNeed::external)) {
-              open_ = body;  // the path stops first: answered at the next pull
-              out = Dwell{0.0, line};
-              produced = true;
-            } else {
-              answer(body);
-            }
-          } else if constexpr (std::is_same_v<T, interp::SelectCs>) {
-            select_cs(body, line);
-          } else if constexpr (std::is_same_v<T, interp::Kinematics>) {
-            produced = kinematics(body, line, out);  // --- trafo: a switch stops the path
-          } else if constexpr (std::is_same_v<T, interp::CaxTrack>) {
-            caxtrack(body, line);  // --- static-saw
-          } else if constexpr (std::is_same_v<T, interp::SplineBegin>) {
-            spline_begin(body, line);
-          } else if constexpr (std::is_same_v<T, interp::SplinePoint>) {
-            spline_point(body, line);
-          } else if constexpr (std::is_same_v<T, interp::SplineEnd>) {
-            spline_end(line);
-          } else if constexpr (std::is_same_v<T, interp::Tech> ||
-                               std::is_same_v<T, interp::WaitIndp> ||
-                               std::is_same_v<T, interp::AxisCommand> ||
-                               std::is_same_v<T, interp::MoveVelocity> ||
-                               std::is_same_v<T, interp::ProbeArm> ||
-                               std::is_same_v<T, interp::SyncIn> ||
-                               std::is_same_v<T, interp::SyncOut> ||
-                               std::is_same_v<T, interp::Homing> ||
-                               std::is_same_v<T, interp::MachineData>) {  // --- static-saw
-            // channel events: queued above (is_channel_event), never here
-          } else if constexpr (std::is_same_v<T, interp::SetPosition>) {
-            fail(line, "G92 set position");
-          } else {
-            static_assert(!sizeof(T*), "every command kind is handled");
           }
-        },
-        cmd->body);
-    if (ended) {
-      if (tag_ == given_) return false;
-      // Events after the last motion: the channel executes them before the program ends.
-      end_reached_ = true;
-      out = ChannelWait{line, tag_};
-      given_ = tag_;
-      return true;
-    }
-    if (produced) return true;
+        } else if constexpr (std::is_same_v<T, interp::Barrier>) {
+          produced = barrier(body, line, out);
+        } else if constexpr (std::is_same_v<T, interp::SelectCs>) {
+          select_cs(body, line);
+        } else if constexpr (std::is_same_v<T, interp::Kinematics>) {
+          produced = kinematics(body, line, out);  // a switch of #TRAFO stops the path
+        } else if constexpr (std::is_same_v<T, interp::CaxTrack>) {
+          caxtrack(body, line);
+        } else if constexpr (std::is_same_v<T, interp::SplineBegin>) {
+          spline_begin(body, line);
+        } else if constexpr (std::is_same_v<T, interp::SplinePoint>) {
+          spline_point(body, line);
+        } else if constexpr (std::is_same_v<T, interp::SplineEnd>) {
+          spline_end(line);
+        } else if constexpr (std::is_same_v<T, interp::Tech> ||
+                             std::is_same_v<T, interp::WaitIndp> ||
+                             std::is_same_v<T, interp::AxisCommand> ||
+                             std::is_same_v<T, interp::MoveVelocity> ||
+                             std::is_same_v<T, interp::ProbeArm> ||
+                             std::is_same_v<T, interp::SyncIn> ||
+                             std::is_same_v<T, interp::SyncOut> ||
+                             std::is_same_v<T, interp::Homing> ||
+                             std::is_same_v<T, interp::MachineData>) {
+          // channel events: queued by route_event (is_channel_event), never here
+        } else if constexpr (std::is_same_v<T, interp::SetPosition>) {
+          fail(line, "G92 set position");
+        } else {
+          static_assert(!sizeof(T*), "every command kind is handled");
+        }
+      },
+      cmd.body);
+  if (ended) {
+    if (tag_ == given_) return Pulled::end;
+    // Events after the last motion: the channel executes them before the program ends.
+    end_reached_ = true;
+    out = ChannelWait{line, tag_};
+    given_ = tag_;
+    return Pulled::item;
   }
+  return produced ? Pulled::item : Pulled::again;
 }
 
 bool is_channel_event(const interp::CommandBody& body) noexcept {

@@ -121,7 +121,27 @@ class ProgramSource final : public Source {
 
  private:
   struct Stop {};  ///< thrown by fail() to leave the visit; caught in next()
+  /// What a step of pull() did: handed out an item, go on with the next command, the stream
+  /// ended, or nothing (release_held: the command goes on its way).
+  enum class Pulled : std::uint8_t { item, again, end, none };
   bool pull(Item& out);
+  /// The next command: the one held back, else the interpreter's (its V.E. writes to store_).
+  std::optional<interp::Command> take_command();
+  /// A command that emits nothing and does not stop the path (a held block stays held).
+  bool rides_along(const interp::Command& cmd) const noexcept;
+  /// Hands out the static unit's held part or the PCS1 block held for its ball when `cmd` does
+  /// not continue its path (`cmd` is then held back for the next pull).
+  Pulled release_held(std::optional<interp::Command>& cmd, Item& out);
+  /// The block's shared INDP_SYN wait goes out when `cmd` is not of that block (held back).
+  bool close_syn_wait(std::optional<interp::Command>& cmd, Item& out);
+  /// A channel event (or the catch-up / departure motion after #SYNC IN / OUT): queued with
+  /// its tag; the path stops where it needs to.
+  Pulled route_event(interp::Command& cmd, Item& out);
+  /// Every other command: motion, dwell, flush, barrier, frames, splines, end.
+  Pulled run_command(interp::Command& cmd, Item& out);
+  void motion(const interp::Motion& body, std::uint32_t line);
+  /// A barrier answered now (false) or after the path stopped (true: `out` holds the stop).
+  bool barrier(const interp::Barrier& body, std::uint32_t line, Item& out);
   /// Answers the open barrier: the decode-only state with the store's V.E. values and, for
   /// the axes waited for (run_time_), the set positions.
   void answer(const interp::Barrier& barrier);
