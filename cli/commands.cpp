@@ -16,6 +16,7 @@
 #include "core/source_file.hpp"
 #include "grammar/check.hpp"
 #include "grammar/keywords.hpp"
+#include "interp/interpreter.hpp"
 #include "interp/trace.hpp"
 #include "machines/loader.hpp"
 #include "scenario/loader.hpp"
@@ -24,11 +25,6 @@ namespace ncsim::cli {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Where the bundled machines are: the source tree this command was built from.
-fs::path source_root() {
-  return NCSIM_SOURCE_ROOT;
-}
 
 // `-` names standard input (read whole into memory; a file is read in place).
 bool is_stdin(const fs::path& path) {
@@ -111,8 +107,9 @@ std::variant<Loaded, int> load(const ProgramOptions& options, std::ostream& err)
   core::SourceFile file = load_program(options.program);
   // The scenario's V.E. values are the decode-only state; a --ve of the same name wins
   // (docs/scenario.md "Decisions").
-  auto scenario = load_scenario_for(options, file, *loaded.machine, err);
-  if (const int* status = std::get_if<int>(&scenario)) return *status;
+  auto scenario = runner::load_scenario_for(options, file, *loaded.machine, err);
+  if (const runner::Exit* status = std::get_if<runner::Exit>(&scenario))
+    return static_cast<int>(*status);
   if (const auto& s = std::get<std::optional<scenario::Scenario>>(scenario)) {
     for (const scenario::VeInitial& v : s->ve)
       interp_options.external.emplace(v.name, v.value);
@@ -181,11 +178,6 @@ class Report {
 
 }  // namespace
 
-void apply_cycle_options(const ProgramOptions& options, interp::Options& interp) {
-  interp.cycle_dirs = options.cycle_dirs;
-  interp.skip_missing_cycles = options.missing_cycles == "skip";
-}
-
 int run_check(const CheckOptions& options, std::ostream& out, std::ostream& err) {
   if (options.syntax_only) {
     // Syntax and structure need neither machine nor interpreter.
@@ -246,87 +238,6 @@ int finish_stdout(int status, std::ostream& err) {
          "[NC9151]\n";
   err.flush();
   return kExitUsage;
-}
-
-std::optional<std::filesystem::path> scenario_file(const ProgramOptions& options) {
-  if (options.scenario) return *options.scenario;
-  const fs::path named =
-      (is_stdin(options.program) ? fs::path(".") : options.program.parent_path()) /
-      scenario::kDefaultScenarioFile;
-  std::error_code ec;
-  if (fs::is_regular_file(named, ec)) return named;
-  return std::nullopt;
-}
-
-std::variant<std::optional<scenario::Scenario>, int> load_scenario_for(
-    const ProgramOptions& options, const core::SourceFile& program,
-    const machines::Machine& machine, std::ostream& err) {
-  const std::optional<fs::path> path = scenario_file(options);
-  if (!path) return std::optional<scenario::Scenario>{};
-  std::error_code ec;
-  if (!fs::exists(*path, ec)) {
-    err << "ncsim: error: no such scenario file: '" << path->string() << "'\n";
-    return kExitUsage;
-  }
-  scenario::Context context;
-  context.program = &program;
-  context.conveyor_wired = true;  // run / time play the conveyor world (docs/conveyor.md)
-  context.conveyor_axis = machine.conveyor_axis() != nullptr;  // NC7019
-  // NC6102, NC6105 at their values: check refuses the overrides time / run cannot play.
-  context.path_override_max =
-      machine.channel.path_override_type == machines::PathOverrideType::reduced_above_100
-          ? scenario::kOverrideMax
-          : 1.0;
-  context.axis_override_max = 1.0;  // 002 2.2: an INDP axis takes 0 .. 100 %
-  // NC7020: an axis override of a path axis. The path axes as ipo::interpolated_axes has them
-  // (check and trace do not link the interpolator): not a spindle, an encoder or the conveyor.
-  context.path_axes.emplace();
-  for (const machines::AxisParams& a : machine.axes) {
-    if (a.kind != machines::AxisKind::spindle && !a.encoder_only && &a != machine.conveyor_axis())
-      context.path_axes->push_back(a.name);
-  }
-  context.axes.emplace();
-  for (const machines::AxisParams& axis : machine.axes)
-    context.axes->push_back(axis.name);
-  std::optional<core::SourceFile> file;
-  try {
-    // No pipe or device: refused before anything is read (docs/scenario.md).
-    file.emplace(core::SourceFile::load_regular(*path, std::numeric_limits<std::size_t>::max()));
-  } catch (const std::exception& e) {
-    err << "ncsim: error: cannot read the scenario '" << path->string() << "': " << e.what()
-        << '\n';
-    return kExitUsage;
-  }
-  scenario::LoadResult loaded = scenario::parse_scenario(*file, context);
-  for (const core::Diagnostic& d : loaded.diagnostics.items())
-    err << core::format(d, *file);
-  if (!loaded.scenario) {
-    err << "ncsim: error: scenario '" << path->string() << "': " << loaded.diagnostics.error_count()
-        << " error" << (loaded.diagnostics.error_count() == 1 ? "" : "s") << '\n';
-    return kExitUsage;
-  }
-  return std::move(loaded.scenario);
-}
-
-std::optional<std::filesystem::path> machine_folder(const ProgramOptions& options,
-                                                    std::ostream& err) {
-  if (options.machine_dir) return *options.machine_dir;
-  const fs::path named =
-      (is_stdin(options.program) ? fs::path(".") : options.program.parent_path()) / "machine";
-  std::string name(machines::kDefaultMachine);
-  if (fs::is_regular_file(named)) {
-    std::ifstream in(named);
-    std::string line;
-    std::getline(in, line);
-    const auto first = line.find_first_not_of(" \t\r");
-    const auto last = line.find_last_not_of(" \t\r");
-    if (first == std::string::npos) {
-      err << "ncsim: error: " << named.string() << " names no machine\n";
-      return std::nullopt;
-    }
-    name = line.substr(first, last - first + 1);
-  }
-  return machines::bundled_machine_dir(source_root(), name);
 }
 
 }  // namespace ncsim::cli

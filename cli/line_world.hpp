@@ -7,7 +7,7 @@
 // cycle. Outputs: the changed machine / scenario, a Port decorator, the margin.
 // Belt velocity (decision): a spindle belt (the program's S1[MC_MoveVelocity]) keeps the
 // program's commands but every Velocity > 0 becomes the candidate (direction, dynamics kept;
-// CONV_VEL is the caller's: LineRun::conv_vel);
+// CONV_VEL is the caller's: runner::RunSpec::conv_vel);
 // an encoder belt has its scenario velocity at t = 0 and every profile velocity scaled by
 // candidate / velocity at t = 0 (fluctuation, noise, dead time unchanged: relative).
 // Workspace margin: while synchronised, the distance of the commanded TCP (the setpoints of

@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
     cmd.add_option("--ve", options.external,
                    "V.E. variable value, NAME=value (repeatable; each NAME once; wins over the "
                    "scenario's [ve] value)");
-    add_cycle_options(cmd, options);
+    ncsim::cli::add_cycle_options(cmd, options);
   };
 
   ncsim::cli::CheckOptions check;

@@ -1,5 +1,7 @@
 #pragma once
-// cli/run_commands: `ncsim time` and `ncsim run` on the channel loop ipo::Channel (design.md §5).
+// cli/run_commands: `ncsim time`, `ncsim run` and `ncsim report` on the channel loop
+// (design.md §5): their options, then a runner::RunSpec for runner/ (which loads and assembles
+// the run), then the printing (cli/time_command.cpp, cli/run_command.cpp).
 //
 // Purpose: the end-to-end pipeline program -> interpreter -> planner -> interpolator -> axes.
 // Inputs: the program, its machine (--machine, the program folder's `machine` file, else the
@@ -14,17 +16,15 @@
 // cli/run_progress.hpp).
 
 #include <cstdint>
-#include <functional>  // --- line
 #include <iosfwd>
-#include <memory>  // --- line
+#include <memory>
 #include <optional>
 #include <string>
+#include <variant>
 
-#include "channel/channel.hpp"  // --- line
 #include "cli/commands.hpp"
-#include "conveyor/port.hpp"      // --- line
-#include "machines/machine.hpp"   // --- line
-#include "scenario/scenario.hpp"  // --- line
+#include "runner/load.hpp"
+#include "runner/spec.hpp"
 
 namespace CLI {
 class App;
@@ -72,38 +72,15 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err);
 /// `ncsim report`: run_run without CSV, with the report page (exit statuses as run).
 int run_report(const ReportOptions& options, std::ostream& out, std::ostream& err);
 
-// --- line: one headless run of a program for `ncsim sweep` / `ncsim tune-delay` and the
-// accuracy benchmark (cli/line_commands.hpp): the pass of `time --audit`, with the world
-// adjusted before it is built and the channel shown to the caller after every cycle.
-struct LineRun {
-  /// Changes the loaded machine and scenario before the conveyor world is built (may be empty);
-  /// the third argument is the run's interpolation cycle [s] (--cycle-us or the default).
-  std::function<void(machines::Machine&, std::optional<scenario::Scenario>&, double t_cycle)>
-      adjust;
-  /// Wraps the conveyor world (may be empty): e.g. a belt velocity override.
-  std::function<std::unique_ptr<conveyor::Port>(std::unique_ptr<conveyor::Port>)> wrap;
-  /// Sees the channel after every running cycle (may be empty).
-  std::function<void(const ipo::Channel&)> on_cycle;
-  bool audit = true;  ///< the audit on the axes' setpoints (as `time --audit`)
-  /// [mm/s] replaces every #SYNC IN's CONV_VEL (interp::Options::conv_vel); nullopt: the
-  /// program's (sweep --conv-vel follow / keep).
-  std::optional<double> conv_vel;
-};
-struct LineOutcome {
-  int status = kExitOk;  ///< kExitOk, kExitProgramErrors (error), kExitUsage (load), kExitAudit
-  std::string id;        ///< the error's id (run-time or program error), "" when none
-  std::string error;     ///< the error's first line, or the audit's first violation
-  double t_end = 0.0;    ///< [s] end of the last cycle
-  std::uint64_t audit_violations = 0;
-};
-/// Loads `program` (diagnostics on `err`) and runs it once as `run` says.
-LineOutcome run_line(const ProgramOptions& program, std::optional<std::uint64_t> cycle_us,
-                     const LineRun& run, std::ostream& err);
+/// Loads `spec` with the runner (runner/load.hpp) and prints what loading said on `err`: the
+/// loaded run, or the exit status when it cannot start (an exception loading raised is
+/// rethrown after its messages).
+std::variant<std::unique_ptr<runner::Loaded>, int> load_run(const runner::RunSpec& spec,
+                                                            std::ostream& err);
 
-/// The lines (main program) whose `#MACHINE DATA` sets parameter `id` ("P-AXIS-00626"), from a
-/// decode-only pass of at most `max_commands` commands; empty when the program does not load.
-std::vector<std::uint32_t> machine_data_lines(const ProgramOptions& program, std::string_view id,
-                                              std::size_t max_commands = 100000);
+/// The RunSpec of one headless run (sweep, tune-delay; runner/line.hpp): the pass of
+/// `time --audit` without position answers, as these runs always decoded.
+runner::RunSpec line_spec(const ProgramOptions& program, std::optional<std::uint64_t> cycle_us);
 
 /// The `time` and `run` subcommands of `app`: the hook main.cpp calls.
 /// The program, --machine and --scenario options of the subcommands that run a program on the

@@ -19,6 +19,7 @@
 #include "cli/line_world.hpp"
 #include "cli/number_format.hpp"
 #include "cli/run_commands.hpp"
+#include "runner/line.hpp"
 
 namespace ncsim::cli {
 namespace {
@@ -32,11 +33,11 @@ std::optional<double> parse_number(std::string_view s) {
 
 struct Candidate {
   double v = 0.0;  ///< [mm/s]
-  LineOutcome outcome;
+  runner::LineOutcome outcome;
   std::string load_errors;  ///< what loading printed (configuration errors)
   WorkspaceMargin margin;
   BeltSetting belt;  ///< how the velocity was applied
-  bool ok() const { return outcome.status == kExitOk; }
+  bool ok() const { return outcome.status == runner::Exit::ok; }
 };
 
 // One candidate: the program at belt velocity `v`, with the workspace margin watched.
@@ -45,7 +46,7 @@ Candidate evaluate(const SweepOptions& o, double v) {
   c.v = v;
   std::ostringstream err;
   WorkspaceWatch watch;
-  LineRun run;
+  runner::RunSpec run = line_spec(o.program, o.cycle_us);
   run.adjust = [&](machines::Machine& m, std::optional<scenario::Scenario>& s, double) {
     c.belt = set_belt_velocity(m, s, v);
     watch.configure(m);
@@ -54,8 +55,8 @@ Candidate evaluate(const SweepOptions& o, double v) {
     return override_belt(std::move(port), v);
   };
   if (o.conv_vel == "follow") run.conv_vel = v;
-  run.on_cycle = [&](const ipo::Channel& ch) { watch.on_cycle(ch); };
-  c.outcome = run_line(o.program, o.cycle_us, run, err);
+  c.outcome = runner::run_line(
+      run, [&](const ipo::Channel& ch) { watch.on_cycle(ch); }, err);
   c.load_errors = err.str();
   c.margin = watch.margin();
   return c;
@@ -120,7 +121,7 @@ int run_sweep(const SweepOptions& o, std::ostream& out, std::ostream& err) {
   // Round 0: both ends (also tells whether the machine can be swept at all).
   std::vector<Candidate> ends = evaluate_all(o, {*lo, *hi}, jobs);
   for (const Candidate& c : ends) {
-    if (c.outcome.status == kExitUsage) {
+    if (c.outcome.status == runner::Exit::usage) {
       err << c.load_errors;
       if (!c.outcome.error.empty()) err << "ncsim: error: sweep: " << c.outcome.error << '\n';
       return kExitUsage;

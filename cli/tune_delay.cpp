@@ -13,6 +13,7 @@
 #include "cli/number_format.hpp"
 #include "cli/run_commands.hpp"
 #include "program/program_source.hpp"
+#include "runner/line.hpp"
 #include "tracking/synchro_lag.hpp"
 
 namespace ncsim::cli {
@@ -71,7 +72,7 @@ void contour_cycle(const ipo::Channel& ch, const ipo::ConveyorSync& sync, Contou
 }
 
 struct Pass {
-  LineOutcome outcome;
+  runner::LineOutcome outcome;
   LagStats lag;
   ContourStats contour;
   bool conveyor = false;
@@ -84,7 +85,7 @@ struct Pass {
 Pass pass(const TuneDelayOptions& o, std::optional<double> delay, std::ostream& err) {
   Pass p;
   double sum = 0.0, sum2 = 0.0, v_sum = 0.0, c2 = 0.0, p2 = 0.0;
-  LineRun run;
+  runner::RunSpec run = line_spec(o.program, o.cycle_us);
   run.audit = false;
   run.adjust = [&](machines::Machine& m, std::optional<scenario::Scenario>& s, double t) {
     machines::ConveyorAxisParams* c = conveyor_params(m);
@@ -96,7 +97,7 @@ Pass pass(const TuneDelayOptions& o, std::optional<double> delay, std::ostream& 
       p.filter_delay = (c->order_pos_filter - 1) * t / 2.0;
     if (s && s->conveyor) p.dead_time = s->conveyor->dead_time;
   };
-  run.on_cycle = [&](const ipo::Channel& ch) {
+  const auto on_cycle = [&](const ipo::Channel& ch) {
     const ipo::ConveyorSync* sync = ch.conveyor_sync();
     if (sync == nullptr || sync->phase() != ipo::SyncPhase::tracking || !sync->synchronised())
       return;
@@ -112,7 +113,7 @@ Pass pass(const TuneDelayOptions& o, std::optional<double> delay, std::ostream& 
     sum2 += lag * lag;
     v_sum += d.v_master_comp;
   };
-  p.outcome = run_line(o.program, o.cycle_us, run, err);
+  p.outcome = runner::run_line(run, on_cycle, err);
   if (p.lag.cycles > 0) {
     const double n = static_cast<double>(p.lag.cycles);
     p.lag.mean = sum / n;
@@ -145,14 +146,14 @@ void print(const Pass& p, const char* what, bool contour, std::ostream& out) {
 
 int run_tune_delay(const TuneDelayOptions& o, std::ostream& out, std::ostream& err) {
   const Pass first = pass(o, std::nullopt, err);
-  if (first.outcome.status == kExitUsage) return kExitUsage;
+  if (first.outcome.status == runner::Exit::usage) return kExitUsage;
   if (!first.conveyor) {
     err << "ncsim: error: tune-delay: the machine has no conveyor axis with conveyor tracking "
            "(FCT_DLM and conv_sync.is_master) ["
         << kTuneNoConveyorId << "]\n";
     return kExitUsage;
   }
-  if (first.outcome.status == kExitProgramErrors && first.lag.cycles == 0) {
+  if (first.outcome.status == runner::Exit::program_errors && first.lag.cycles == 0) {
     err << first.outcome.error << '\n';
     return kExitProgramErrors;
   }
@@ -164,14 +165,14 @@ int run_tune_delay(const TuneDelayOptions& o, std::ostream& out, std::ostream& e
   }
   // A run that stops (the laser listing as printed leaves the workspace on its 20th pass) still
   // tells the lag of the cycles it ran synchronised: said, and used.
-  if (first.outcome.status == kExitProgramErrors)
+  if (first.outcome.status == runner::Exit::program_errors)
     out << "tune-delay: note: the run stopped: " << first.outcome.error
         << "; the statistics are of the cycles before\n";
   print(first, "with the machine's", o.contour, out);
   const double proposed =
       std::max(0.0, std::round((first.delay - first.lag.mean / first.lag.v_mean) * 1e6)) * 1e-6;
   const Pass check = pass(o, proposed, err);
-  if (check.outcome.status == kExitUsage || check.lag.cycles == 0) {
+  if (check.outcome.status == runner::Exit::usage || check.lag.cycles == 0) {
     err << check.outcome.error << '\n';
     return kExitProgramErrors;
   }
@@ -180,7 +181,7 @@ int run_tune_delay(const TuneDelayOptions& o, std::ostream& out, std::ostream& e
   // A program that sets the delay time itself overrides the list's value from that line on:
   // both runs then track with the program's value there, and the check cannot show the
   // proposal's effect (issue 34 item 21).
-  if (const auto lines = machine_data_lines(o.program, "P-AXIS-00626"); !lines.empty()) {
+  if (const auto lines = runner::machine_data_lines(o.program, "P-AXIS-00626"); !lines.empty()) {
     out << "tune-delay: note: the program sets P-AXIS-00626 itself (#MACHINE DATA at line";
     for (std::size_t i = 0; i < lines.size(); ++i)
       out << (i == 0 ? " " : ", ") << lines[i];
