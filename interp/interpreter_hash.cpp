@@ -131,23 +131,23 @@ bool Interpreter::Impl::run_hash(const ast::Block& b, const ast::HashCommand& h)
     case HashKind::pre_else:
       return hash_pre_if(b, h);
     case HashKind::file_name:
-      return hash_file_name(b, h);
+      return subs.hash_file_name(b, h);
     case HashKind::hsc_on:
     case HashKind::hsc_off:
-      return hash_hsc(b, h);
+      return offsets.hash_hsc(b, h);
     case HashKind::vector_limit_on:
     case HashKind::vector_limit_off:
-      return hash_vector_limit(b, h);
+      return offsets.hash_vector_limit(b, h);
     case HashKind::scale_on:
     case HashKind::scale_off:
-      return hash_scale(b, h);
+      return offsets.hash_scale(b, h);
     case HashKind::mcs_on:
     case HashKind::mcs_off:
-      return hash_mcs(b, h);
+      return offsets.hash_mcs(b, h);
     case HashKind::accepted:
       return hash_accepted(b);
     case HashKind::pset:
-      return hash_pset(b, h);
+      return offsets.hash_pset(b, h);
     case HashKind::bcs_def:
     case HashKind::bcs_on:
     case HashKind::bcs_off:
@@ -575,6 +575,17 @@ bool Interpreter::Impl::hash_delete(const ast::Block& b, const ast::HashCommand&
     if (!evaluator.resolve(b, b.items[k].value, ref)) return fail_eval();
     vars.remove(ref);
   }
+  return true;
+}
+
+bool Interpreter::Impl::hash_accepted(const ast::Block& b) {
+  // Read, shown in trace, no effect on motion or time in ncsim's model (docs/language.md).
+  Message m;
+  m.mode = MessageMode::accepted;
+  m.text = std::string(b.text.substr(0, std::min<std::size_t>(b.text.size(), 200)));
+  while (!m.text.empty() && (m.text.back() == ' ' || m.text.back() == '\r'))
+    m.text.pop_back();
+  emit(line, std::move(m));
   return true;
 }
 

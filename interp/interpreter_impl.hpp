@@ -13,7 +13,10 @@
 #include "core/limits.hpp"
 #include "core/number_text.hpp"
 #include "grammar/keywords.hpp"
+#include "interp/control_flow.hpp"
 #include "interp/interpreter.hpp"
+#include "interp/offsets.hpp"
+#include "interp/subroutines.hpp"
 #include "interp/trc.hpp"
 #include "machines/kinematics.hpp"
 #include "machines/param_table.hpp"
@@ -48,43 +51,6 @@ struct Pc {
   std::uint32_t ordinal = 0;
 };
 
-enum class FrameKind : std::uint8_t { for_, while_, do_, repeat, switch_ };
-
-struct ControlFrame {
-  FrameKind kind = FrameKind::for_;
-  std::uint16_t file = 0;
-  std::uint32_t open = 0;              // ordinal of the opening block
-  std::uint32_t end = 0xFFFFFFFFu;     // ordinal of the closing block, once known
-  VarRef counter;                      // $FOR
-  double end_value = 0.0, step = 0.0;  // $FOR
-  std::uint32_t line = 0;
-};
-
-/// A $GOTO target copied out of its block (the block may leave the cache during the search).
-struct GotoLabel {
-  ast::GotoKind kind = ast::GotoKind::none;
-  std::uint32_t number = 0;  // block number for GotoKind::block_number
-  std::string name;          // label name, or the block number's digits
-  bool matches(const ast::Block& b) const {
-    if (kind == ast::GotoKind::block_number) {
-      return b.number && b.number->is_label && b.number->number == number;
-    }
-    return b.label && grammar::iequals(b.label->name, name);
-  }
-};
-
-/// Where a $GOTO site lands and what the jump leaves or enters, remembered per site.
-struct GotoResult {
-  std::uint32_t label = 0;          // ordinal of the labelled block
-  bool backward = false;            // found before the $GOTO
-  int closed = 0;                   // forward: loop/$SWITCH ends passed (frames left)
-  std::vector<std::uint32_t> open;  // backward: openers enclosing the label
-};
-
-/// Entries each memo of jump destinations holds at most; a full memo is cleared and refilled
-/// on demand, so memory does not grow with the program length.
-inline constexpr std::size_t kMaxMemoEntries = 1u << 16;
-
 /// Largest arc radius [mm] the interpreter accepts (NC4203; docs/interp.md "Arcs of a huge
 /// radius"): a centre 1e9 mm away is represented to 1.2e-7 mm.
 inline constexpr double kArcRadiusMax = 1e9;
@@ -112,72 +78,10 @@ struct Interpreter::Impl {
   bool watch_for_repeat(std::uint32_t block_line);
   std::uint64_t state_fingerprint(std::size_t& cost) const;
   const ast::Block* fetch(Pc pc);
-  bool run_control(const ast::Block& b, const ast::Control& c);
-  bool jump_to_label(const ast::Block& b, const ast::GotoTarget& target);
-  std::optional<GotoResult> find_label(const GotoLabel& target, core::SourceLoc at);
-  static void remember(std::unordered_map<std::uint64_t, std::uint32_t>& memo, std::uint64_t key,
-                       std::uint32_t value);
-  std::optional<std::uint32_t> matching_end(std::uint16_t file, std::uint32_t from,
-                                            core::SourceLoc at);
-  std::optional<std::uint32_t> next_if_branch(std::uint16_t file, std::uint32_t from,
-                                              bool endif_only, core::SourceLoc at);
-  bool call(const ast::Block& b, const ast::Call& c);
-  /// Loads global subroutine file `path` (checked whole), remembered as `key`.
-  std::optional<std::uint16_t> load_global_file(const std::string& key,
-                                                const std::filesystem::path& path,
-                                                core::SourceLoc at);
-  void enter_level(Pc target, std::uint32_t header);  // a subroutine level starts at target
 
-  // --- cycles (interpreter_cycles.cpp) ---
-  /// A cycle call read from a block, run after the block's words: G80-G89 / G800-G839 with
-  /// their parameter list (PROG-206278923) or `L CYCLE [NAME=.. @P1=..]` (PROG-206859019).
-  struct CycleCall {
-    std::uint32_t g_code = 0;  ///< 0: L CYCLE
-    core::SourceLoc loc;
-    std::string name;                           ///< L CYCLE's NAME; G: found at run_cycle_call
-    std::vector<std::optional<double>> params;  ///< [k]: @P(k+1); nullopt: a gap
-  };
-  std::optional<CycleCall> cycle_call;
-  std::map<std::uint32_t, std::string> file_names;  // #FILE NAME [G80="x.nc"] until M30
-  std::set<std::string> skipped_cycles;             // G codes and cycle names warned about (NC4307)
-  std::set<std::uint32_t> unmodelled_g;             // dynamics weightings warned about (NC4313)
-  bool read_implicit_call(const ast::Block& b, const ast::Word& w);
-  bool read_cycle_call(const ast::Block& b, const ast::Call& c);
-  bool run_cycle_call();  // enters cycle_call's subroutine (or skips it) and clears it
-  bool hash_file_name(const ast::Block& b, const ast::HashCommand& h);
+  std::set<std::uint32_t> unmodelled_g;  // dynamics weightings warned about (NC4313)
 
-  // --- offsets, scaling, path limits (interpreter_offsets.cpp) ---
-  /// Zero-offset groups np_grp[0..96] (P-ZERO-00002's range).
-  static constexpr std::size_t kZeroGroups = 97;
-  std::size_t zero_group = 0;                    // G53..G59 / G159=n: the active group
-  std::array<std::string, kMaxAxes> zero_names;  // "NP.V.X": each axis's V.G. offset array
-  bool mcs_on = false;                           // #MCS ON: the zero offsets are off
-  bool scale_on = false;                         // #SCALE ON
-  std::array<double, kMaxAxes> scale_factors{};  // #SCALE factors by machine index
-  std::optional<std::pair<bool, ContourParams>> hsc_saved;  // #HSC ON: G26x state replaced
-  std::optional<double> vector_vel;  // #VECTOR LIMIT ON [VEL]: path velocity cap [mm/s]
-  void init_zero_offsets();
-  double zero_offset(std::uint8_t axis) const;  // the active offset of `axis` [mm | deg]
-  double scale_of(std::uint8_t axis) const;     // its #SCALE factor (1 when off)
-  bool select_zero_offset(const ast::Block& b, const ast::Word& w);  // G53..G59, G159=n
-  bool check_offsets_frame(const ast::Block& b, AxisMask programmed);
-  bool hash_scale(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_mcs(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_hsc(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_vector_limit(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_accepted(const ast::Block& b);
-  std::array<double, kMaxAxes> pset_offsets{};  // #PSET: program = machine - zero - this [mm]
-  bool hash_pset(const ast::Block& b, const ast::HashCommand& h);
-  /// An `X<value>` item of #SCALE / #PSET: its machine axis and value (NC4103 for an axis the
-  /// machine does not have).
-  std::optional<double> axis_item(const ast::Block& b, const ast::Item& it, const char* command,
-                                  std::uint8_t& axis);  // #PSET X200 (no motion)
-  /// #SCALE on an arc: I/J/K and R scaled by the plane's factor, which must be the same for
-  /// both plane axes (NC4312; an arc does not scale into an ellipse).
-  bool scale_arc(const ast::Block& b, std::array<std::optional<double>, 3>& ijk,
-                 std::optional<double>& radius);
-  bool subroutine_return();
-  bool find_main_start(ProgramFile& pf, std::uint16_t index);
+  bool hash_accepted(const ast::Block& b);  // # commands read without an effect
   bool fail(core::SourceLoc loc, std::string id, std::string message);
   bool fail_eval();
   void warn(core::SourceLoc loc, std::string id, std::string message);
@@ -227,6 +131,7 @@ struct Interpreter::Impl {
   bool run_assignments(const ast::Block& b);
   void apply_weightings(const BlockWords& bw);  // G127..G233 into modal.weights
   bool read_g_codes(const ast::Block& b, BlockWords& bw);
+  bool read_weighting(const ast::Block& b, const ast::Word& w, BlockWords& bw);  // G127..G339
   bool read_addresses(const ast::Block& b, BlockWords& bw);
   /// The additional value of M/H word `w` (`M200=1200`), nullopt if none; NC4033 if it is not
   /// a whole number or its function takes none.
@@ -287,6 +192,11 @@ struct Interpreter::Impl {
   bool run_motion(const ast::Block& b, MotionKind kind, const AxisValues& target,
                   AxisMask programmed, const std::array<std::optional<double>, 3>& ijk,
                   std::optional<double> radius, const BlockMotionWords& words);
+  /// The arc of a G02/G03 from `position` to `target` (centre from I/J/K or R, corrected onto
+  /// the bisector); nullopt after an error.
+  std::optional<Arc> make_arc(const ast::Block& b, MotionKind kind, const AxisValues& target,
+                              const std::array<std::optional<double>, 3>& ijk,
+                              std::optional<double> radius);
   std::optional<std::uint8_t> axis_index(std::string_view name) const;
   ModalSnapshot snapshot() const;
 
@@ -333,10 +243,10 @@ struct Interpreter::Impl {
   std::uint32_t unit_start = 0;  // header ordinal of the running program level
   bool started = false;
   bool finished = false;
-  std::vector<ControlFrame> control;
   std::vector<CallFrame> calls;
-  std::unordered_map<std::uint64_t, std::uint32_t> jump_memo;  // $IF/loop partners
-  std::unordered_map<std::uint64_t, GotoResult> goto_memo;     // by $GOTO site
+  ControlFlow flow{*this};  // $IF, $SWITCH, loops, $GOTO (control_flow.hpp)
+  Subroutines subs{*this};  // calls, program levels, cycles (subroutines.hpp)
+  Offsets offsets{*this};   // zero offsets, #PSET, #SCALE, #MCS, #HSC, #VECTOR LIMIT
   std::deque<Command> pending;
   std::uint64_t blocks_without_motion = 0;
   // Repeat detection (Brent's cycle finding over decoder states, docs/interp.md "Endless
