@@ -100,7 +100,7 @@ bool Evaluator::assign(const ast::Block& block, ast::NodeIndex n, double value) 
   if (!resolve(block, n, ref)) return false;
   VarError err;
   if (!vars_.write(ref, value, err)) return fail(block.exprs[n].loc, err.id, err.message);
-  vars_.note_ve_write(ref);  // --- operator: the run time's V.E. store sees it
+  vars_.note_ve_write(ref);  // the run time's V.E. store sees it
   return true;
 }
 

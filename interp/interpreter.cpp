@@ -241,7 +241,7 @@ bool Interpreter::Impl::step() {
     }
   }
   if (const auto* c = std::get_if<ast::Control>(&block->body)) return flow.run(*block, *c);
-  if (const auto* h = std::get_if<ast::HashCommand>(&block->body)) return run_hash(*block, *h);
+  if (const auto* h = std::get_if<ast::HashCommand>(&block->body)) return hash.run_hash(*block, *h);
   if (const auto* d = std::get_if<ast::Declaration>(&block->body)) {
     return run_declaration(*block, *d);
   }
@@ -322,7 +322,7 @@ std::optional<Command> Interpreter::next() {
   return std::nullopt;
 }
 
-// --- operator
+// The program's own V.E. writes, for the run time's store.
 void Interpreter::record_ve_writes(bool on) {
   impl_->vars.record_ve_writes(on);
 }

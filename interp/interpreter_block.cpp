@@ -174,7 +174,7 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
   bw.clear();
   if (!read_g_codes(b, bw) || !read_addresses(b, bw) || !update_trc(bw)) return false;
   if (!bw.weightings.empty()) apply_weightings(bw);
-  if (bw.g74 && !check_homing(b, bw)) return false;  // --- static-saw: before S is emitted
+  if (bw.g74 && !check_homing(b, bw)) return false;  // before S is emitted
   // Technology functions (interp/tech_functions.hpp): MNS_SNS ones after the block's action.
   const TechWaits waits = resolve_tech(bw.tech, machine.channel.tech);
   for (const Tech& t : bw.tech)

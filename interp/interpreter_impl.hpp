@@ -14,6 +14,7 @@
 #include "core/number_text.hpp"
 #include "grammar/keywords.hpp"
 #include "interp/control_flow.hpp"
+#include "interp/hash_commands.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/offsets.hpp"
 #include "interp/subroutines.hpp"
@@ -73,7 +74,7 @@ struct Interpreter::Impl {
   Impl(const core::SourceFile& file, const machines::Machine& machine, Options options,
        core::DiagnosticList& diags);
 
-  // --- stream (interpreter.cpp) ---
+  // stream (interpreter.cpp)
   bool step();  // decodes one block; false when the stream ended
   bool watch_for_repeat(std::uint32_t block_line);
   std::uint64_t state_fingerprint(std::size_t& cost) const;
@@ -81,13 +82,12 @@ struct Interpreter::Impl {
 
   std::set<std::uint32_t> unmodelled_g;  // dynamics weightings warned about (NC4313)
 
-  bool hash_accepted(const ast::Block& b);  // # commands read without an effect
   bool fail(core::SourceLoc loc, std::string id, std::string message);
   bool fail_eval();
   void warn(core::SourceLoc loc, std::string id, std::string message);
   std::optional<double> eval(const ast::Block& b, ast::NodeIndex n);
 
-  // --- blocks (interpreter_block.cpp) ---
+  // blocks (interpreter_block.cpp)
   /// What one block's G codes and addresses say (run_words reads them, then acts).
   struct BlockWords {
     std::optional<MotionKind> motion_word;  ///< G00..G03 in this block
@@ -136,7 +136,7 @@ struct Interpreter::Impl {
   /// The additional value of M/H word `w` (`M200=1200`), nullopt if none; NC4033 if it is not
   /// a whole number or its function takes none.
   bool additional_value(const ast::Block& b, const ast::Word& w, std::optional<double>& out);
-  // --- tool radius compensation (interpreter_trc.cpp, docs/trc.md)
+  // tool radius compensation (interpreter_trc.cpp, docs/trc.md)
   bool trc_g_code(const ast::Word& w, BlockWords& bw);      // G25/G26/G40/G41/G42/G138/G139
   bool plane_change_allowed(core::SourceLoc at, Plane to);  // 20133 while TRC is active
   bool update_trc(const BlockWords& bw);                    // D and G40/G41/G42 of the block
@@ -147,34 +147,13 @@ struct Interpreter::Impl {
   std::deque<Command> trc_out;  // commands the filter released
   bool run_dwell(const ast::Block& b, const BlockWords& bw);     // G04
   void run_homing(const BlockWords& bw);                         // G74
-  bool check_homing(const ast::Block& b, const BlockWords& bw);  // --- static-saw: own file
+  bool check_homing(const ast::Block& b, const BlockWords& bw);  // interpreter_homing.cpp
   void run_set_position(const BlockWords& bw);                   // G92
   bool run_block_motion(const ast::Block& b, const BlockWords& bw);
-  bool run_program_m(const ast::Block& b, int code);              // M00/M01/M02/M30/M17/M29
-  bool run_hash(const ast::Block& b, const ast::HashCommand& h);  // dispatches to hash_*
-  std::optional<double> item_value(const ast::Block& b, const ast::Item* it);
-  bool hash_sync_in(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_sync_out(const ast::Block& b, const ast::HashCommand& h);
-  bool duplicate_free(const ast::Block& b, const ast::HashCommand& h,
-                      std::initializer_list<std::string_view> keywords);  // else NC4507
-  bool feed_cont(const ast::Block& b, const Items& items, std::optional<double>& out);
-  bool hash_cs(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_kinematics(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_caxtrack(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_contour_mode(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_slope(const ast::Block& b, const ast::HashCommand& h);
+  bool run_program_m(const ast::Block& b, int code);  // M00/M01/M02/M30/M17/M29
   /// The channel's slope, P-CHAN-00071: the program's start slope and `#SLOPE DEFAULT`'s.
   SlopeType channel_slope() const;
-  bool hash_machine_data(const ast::Block& b, const ast::HashCommand& h);  // own file
-  bool machine_setting(core::SourceLoc at, const machines::ParamSpec& spec,
-                       std::optional<std::uint16_t> index, double value, MachineData& md);
-  bool hash_msg(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_time(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_transvelmin_on(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_wait_indp(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_delete(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_pre_if(const ast::Block& b, const ast::HashCommand& h);  // #IF / #ELSE skips
-  bool spline_on(core::SourceLoc at);                                // #SPLINE ON / G151
+  bool spline_on(core::SourceLoc at);   // #SPLINE ON / G151
   bool spline_off(core::SourceLoc at);  // #SPLINE OFF / G150 (emits SplineEnd)
   bool run_declaration(const ast::Block& b, const ast::Declaration& d);
   bool run_axis_commands(const ast::Block& b);  // dispatches to axis_*
@@ -200,7 +179,7 @@ struct Interpreter::Impl {
   std::optional<std::uint8_t> axis_index(std::string_view name) const;
   ModalSnapshot snapshot() const;
 
-  // --- frames (interpreter_frames.cpp) ---
+  // frames (interpreter_frames.cpp)
   CoordFrame frame() const;  // the frame `position` is in
   Eigen::Vector3d xyz_of(const AxisValues& values) const;
   void set_xyz(AxisValues& values, const Eigen::Vector3d& p) const;
@@ -208,7 +187,7 @@ struct Interpreter::Impl {
   bool rebase_trafo(bool on, core::SourceLoc at);  // before modal.kinematics_on changes
   AxisValues sync_rebased(bool in) const;          // position after #SYNC IN/OUT, travel 0
 
-  // --- the seam (interpreter_seam.cpp) ---
+  // the seam (interpreter_seam.cpp)
   bool barrier_before(const ast::Block& b);  // emits a Barrier when b needs run-time state
   bool emit_barrier(const ast::Block& b, bool sync_in, AxisMask position_needed);  // slow path
   AxisMask position_needs(const ast::Block& b) const;  // unknown axes the block needs
@@ -246,7 +225,9 @@ struct Interpreter::Impl {
   std::vector<CallFrame> calls;
   ControlFlow flow{*this};  // $IF, $SWITCH, loops, $GOTO (control_flow.hpp)
   Subroutines subs{*this};  // calls, program levels, cycles (subroutines.hpp)
-  Offsets offsets{*this};   // zero offsets, #PSET, #SCALE, #MCS, #HSC, #VECTOR LIMIT
+  Offsets offsets{*this};
+  HashCommands hash{*this};  // # commands (hash_commands.hpp)   // zero offsets, #PSET, #SCALE,
+                             // #MCS, #HSC, #VECTOR LIMIT
   std::deque<Command> pending;
   std::uint64_t blocks_without_motion = 0;
   // Repeat detection (Brent's cycle finding over decoder states, docs/interp.md "Endless

@@ -192,7 +192,7 @@ bool Offsets::hash_hsc(const ast::Block& b, const ast::HashCommand& h) {
   ip_.modal.contouring = true;
   ip_.modal.contour.kind = ContourKind::dev;
   if (const ast::Item* it = items.find("PATH_DEV")) {
-    auto v = ip_.item_value(b, it);
+    auto v = ip_.hash.item_value(b, it);
     if (!v) return false;
     if (!(*v > 0.0) || !std::isfinite(*v)) {
       return ip_.fail(it->loc, "NC4031",
@@ -214,7 +214,7 @@ bool Offsets::hash_vector_limit(const ast::Block& b, const ast::HashCommand& h) 
     // VEL<vel> in mm/min; without a value the channel's vector.velocity (P-CHAN-00090).
     double vel = ip_.machine.channel.vector_velocity;
     if (it != nullptr && it->value != ast::kNoNode) {
-      auto v = ip_.item_value(b, it);
+      auto v = ip_.hash.item_value(b, it);
       if (!v) return false;
       if (!(*v > 0.0) || !std::isfinite(*v)) {
         return ip_.fail(it->loc, "NC4030",
