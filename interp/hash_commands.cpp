@@ -1,5 +1,5 @@
-// interp/interpreter_hash.cpp: # commands, one function per command (run_hash dispatches).
-// Axis-bracket commands (INDP, MC_*) are in interpreter_axis.cpp.
+// interp/hash_commands.cpp: # commands, one function per command (run_hash dispatches).
+// Axis-bracket commands (INDP, MC_*) are in axis_commands.cpp.
 #include <cmath>
 
 #include "core/number_text.hpp"

@@ -133,7 +133,7 @@ std::uint64_t Interpreter::Impl::state_fingerprint(std::size_t& cost) const {
   h = mix(h, bits(m.trc.radius));
   h = mix(h, bits(d_number));
   h = mix(h, files.size());
-  // offsets, scaling and path limits (interpreter_offsets.cpp)
+  // offsets, scaling and path limits (offsets.cpp)
   h = mix(h, (std::uint64_t{offsets.zero_group} << 8) | (std::uint64_t{offsets.mcs_on} << 2) |
                  (std::uint64_t{offsets.scale_on} << 1) |
                  std::uint64_t{offsets.hsc_saved.has_value()});
@@ -215,7 +215,7 @@ bool Interpreter::Impl::step() {
   const bool skipped = block->skip && *block->skip >= 1 && *block->skip <= 32 &&
                        (options.skip_levels & (1u << (*block->skip - 1))) != 0;
   // A barrier comes before the block is counted: the block is decoded once, after resume().
-  if (!skipped && barrier_before(*block)) {
+  if (!skipped && seam.barrier_before(*block)) {
     --pc.ordinal;
     return true;
   }

@@ -1,6 +1,6 @@
 // interp/interpreter_block.cpp: one block's words (assignments, G/M/F/axis words), G04, G74,
 // G92, program ends, declarations and string macros. Motions and arcs are in
-// interpreter_motion.cpp, # commands in interpreter_hash.cpp.
+// interpreter_motion.cpp, # commands in hash_commands.cpp.
 #include <cmath>
 
 #include "core/number_text.hpp"
@@ -190,7 +190,7 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
   } else {
     ok = run_block_motion(b, bw);
   }
-  if (!ok || !run_axis_commands(b)) return false;
+  if (!ok || !axis_commands.run(b)) return false;
   if (waits.since) emit(line, Dwell{*waits.since, true, true});
   if (waits.after) {
     for (const Tech& t : bw.tech)

@@ -1,7 +1,9 @@
 #pragma once
-// interp/interpreter_impl: the decoder's private state, shared by interpreter.cpp (block
-// stream, control flow, subroutines) and interpreter_block.cpp (words, modal state, motion,
-// # commands). Not part of the public interface.
+// interp/interpreter_impl: the decoder's private state: the block stream, the order of a
+// block's parts, modal state, position, variables and the call stack, shared by the parts it
+// owns (ControlFlow, Subroutines, Offsets, HashCommands, AxisCommands, Seam: each in its own
+// files) and by interpreter_*.cpp (words, motion, frames, TRC). Not part of the public
+// interface.
 
 #include <deque>
 #include <filesystem>
@@ -13,10 +15,12 @@
 #include "core/limits.hpp"
 #include "core/number_text.hpp"
 #include "grammar/keywords.hpp"
+#include "interp/axis_commands.hpp"
 #include "interp/control_flow.hpp"
 #include "interp/hash_commands.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/offsets.hpp"
+#include "interp/seam.hpp"
 #include "interp/subroutines.hpp"
 #include "interp/trc.hpp"
 #include "machines/kinematics.hpp"
@@ -156,10 +160,6 @@ struct Interpreter::Impl {
   bool spline_on(core::SourceLoc at);   // #SPLINE ON / G151
   bool spline_off(core::SourceLoc at);  // #SPLINE OFF / G150 (emits SplineEnd)
   bool run_declaration(const ast::Block& b, const ast::Declaration& d);
-  bool run_axis_commands(const ast::Block& b);  // dispatches to axis_*
-  bool axis_indp(const ast::Block& b, const ast::AxisCommand& ac, std::uint8_t axis);
-  bool axis_move_velocity(const ast::Block& b, const ast::AxisCommand& ac, std::uint8_t axis);
-  bool axis_touch_probe(const ast::Block& b, const ast::AxisCommand& ac, std::uint8_t axis);
   /// What a block says about its own motion only (non-modal words, isg-language.md §2.4).
   struct BlockMotionWords {
     bool stop_at_end = false;          ///< G09
@@ -187,19 +187,7 @@ struct Interpreter::Impl {
   bool rebase_trafo(bool on, core::SourceLoc at);  // before modal.kinematics_on changes
   AxisValues sync_rebased(bool in) const;          // position after #SYNC IN/OUT, travel 0
 
-  // the seam (interpreter_seam.cpp)
-  bool barrier_before(const ast::Block& b);  // emits a Barrier when b needs run-time state
-  bool emit_barrier(const ast::Block& b, bool sync_in, AxisMask position_needed);  // slow path
-  AxisMask position_needs(const ast::Block& b) const;  // unknown axes the block needs
-  /// The block has a V.E. node or a string (a possible macro): remembered per block text.
-  bool may_read_external(const ast::Block& b);
-  struct ExternalScan {
-    std::uint64_t key = 0;  // file and Block::offset of the block scanned, + 1; 0: empty
-    bool may_read = false;
-  };
-  std::array<ExternalScan, 256> external_scans{};
-  void apply(const RunState& state, const Barrier& barrier);
-  RunState decode_only(const Barrier& barrier) const;
+  // run-time state the seam (seam.hpp) keeps for the whole decoder
   bool resumed = false;       // the barrier before the block at pc was answered
   AxisMask unknown_axes = 0;  // axes whose actual position only the run time knows
   // The part of unknown_axes that only an INDP_ASYN motion made unknown: a
@@ -223,11 +211,12 @@ struct Interpreter::Impl {
   bool started = false;
   bool finished = false;
   std::vector<CallFrame> calls;
-  ControlFlow flow{*this};  // $IF, $SWITCH, loops, $GOTO (control_flow.hpp)
-  Subroutines subs{*this};  // calls, program levels, cycles (subroutines.hpp)
-  Offsets offsets{*this};
-  HashCommands hash{*this};  // # commands (hash_commands.hpp)   // zero offsets, #PSET, #SCALE,
-                             // #MCS, #HSC, #VECTOR LIMIT
+  ControlFlow flow{*this};            // $IF, $SWITCH, loops, $GOTO (control_flow.hpp)
+  Subroutines subs{*this};            // calls, program levels, cycles (subroutines.hpp)
+  Offsets offsets{*this};             // zero offsets, #PSET, #SCALE, #MCS, #HSC, #VECTOR LIMIT
+  HashCommands hash{*this};           // # commands (hash_commands.hpp)
+  AxisCommands axis_commands{*this};  // INDP, MC_* (axis_commands.hpp)
+  Seam seam{*this};                   // barriers and the run time's answers (seam.hpp)
   std::deque<Command> pending;
   std::uint64_t blocks_without_motion = 0;
   // Repeat detection (Brent's cycle finding over decoder states, docs/interp.md "Endless

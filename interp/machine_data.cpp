@@ -1,4 +1,4 @@
-// interp/interpreter_machine_data.cpp: #MACHINE DATA (isg-language.md §5.10, PROG-207492747)
+// interp/machine_data.cpp: #MACHINE DATA (isg-language.md §5.10, PROG-207492747)
 // resolved at decode time: every parameter, given by its id (`P-AXIS-00178=...`,
 // `P-AXIS-00209.0 5`) or by its list key (`AXPARAM="kenngr.swe_pos 15000000"`), is looked up
 // in the machine's one parameter table (machines/param_table.hpp) and becomes a typed
