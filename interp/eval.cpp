@@ -100,7 +100,7 @@ bool Evaluator::assign(const ast::Block& block, ast::NodeIndex n, double value) 
   if (!resolve(block, n, ref)) return false;
   VarError err;
   if (!vars_.write(ref, value, err)) return fail(block.exprs[n].loc, err.id, err.message);
-  vars_.note_ve_write(ref);  // --- operator: the run time's V.E. store sees it
+  vars_.note_ve_write(ref);  // the run time's V.E. store sees it
   return true;
 }
 
@@ -119,27 +119,8 @@ std::optional<double> Evaluator::eval(const ast::Block& block, ast::NodeIndex n)
     case Op::number:
     case Op::constant:
       return node.value;
-    case Op::variable: {
-      if (node.var_class == ast::VarClass::p && node.a == ast::kNoNode) {
-        // fast path: scalar P parameter
-        scratch_.cls = ast::VarClass::p;
-        scratch_.index_count = 0;
-        scratch_.number = (node.value >= 1.0 && node.value == std::trunc(node.value))
-                              ? static_cast<std::uint32_t>(node.value)
-                              : 0;
-      } else if (!resolve(block, n, scratch_)) {
-        return std::nullopt;
-      }
-      VarError err;
-      auto v = vars_.read(scratch_, err);
-      if (!v && err.id == "NC4011" && !node.text.empty()) {
-        // The variable as the program wrote it (V.G.KIN[9].PROGRAMMING_MODE), not the store's
-        // name with its indices at the end.
-        err.message = "unknown variable " + std::string(node.text);
-      }
-      if (!v) fail(node.loc, err.id, err.message);
-      return v;
-    }
+    case Op::variable:
+      return read_variable(block, n, node);
     case Op::string:
       fail(node.loc, "NC4005",
            "string \"" + std::string(node.text) +
@@ -192,7 +173,33 @@ std::optional<double> Evaluator::eval(const ast::Block& block, ast::NodeIndex n)
   auto b = eval(block, node.b);
   --depth_;
   if (!b) return std::nullopt;
-  const double y = *b;
+  return binary(node, x, *b);
+}
+
+std::optional<double> Evaluator::read_variable(const ast::Block& block, ast::NodeIndex n,
+                                               const ast::ExprNode& node) {
+  if (node.var_class == ast::VarClass::p && node.a == ast::kNoNode) {
+    // fast path: scalar P parameter
+    scratch_.cls = ast::VarClass::p;
+    scratch_.index_count = 0;
+    scratch_.number = (node.value >= 1.0 && node.value == std::trunc(node.value))
+                          ? static_cast<std::uint32_t>(node.value)
+                          : 0;
+  } else if (!resolve(block, n, scratch_)) {
+    return std::nullopt;
+  }
+  VarError err;
+  auto v = vars_.read(scratch_, err);
+  if (!v && err.id == "NC4011" && !node.text.empty()) {
+    // The variable as the program wrote it (V.G.KIN[9].PROGRAMMING_MODE), not the store's
+    // name with its indices at the end.
+    err.message = "unknown variable " + std::string(node.text);
+  }
+  if (!v) fail(node.loc, err.id, err.message);
+  return v;
+}
+
+std::optional<double> Evaluator::binary(const ast::ExprNode& node, double x, double y) {
   switch (node.op) {
     case Op::power: {
       const double r = std::pow(x, y);

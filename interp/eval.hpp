@@ -60,6 +60,10 @@ class Evaluator {
   [[gnu::cold, gnu::noinline]] std::optional<double> not_finite(const grammar::ast::ExprNode& node,
                                                                 double value);
   std::optional<double> call(const grammar::ast::Block& block, const grammar::ast::ExprNode& n);
+  std::optional<double> read_variable(const grammar::ast::Block& block, grammar::ast::NodeIndex n,
+                                      const grammar::ast::ExprNode& node);
+  /// The binary operator of `node` on its evaluated operands.
+  std::optional<double> binary(const grammar::ast::ExprNode& node, double x, double y);
 
   Variables& vars_;
   EvalError error_;

@@ -1,4 +1,5 @@
-// interp/interpreter.cpp: the block stream, control flow ($IF ... $GOTO), subroutines.
+// interp/interpreter.cpp: the block stream, subroutines, repeat detection, the public
+// Interpreter (control flow: interp/control_flow.cpp).
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -11,66 +12,7 @@
 #include "interp/interpreter_impl.hpp"
 
 namespace ncsim::interp {
-namespace {
-
-using ast::ControlKind;
-
-bool is_opener(ControlKind k) {
-  return k == ControlKind::for_ || k == ControlKind::while_ || k == ControlKind::do_ ||
-         k == ControlKind::repeat || k == ControlKind::switch_;
-}
-bool is_closer(ControlKind k) {
-  return k == ControlKind::endfor || k == ControlKind::endwhile || k == ControlKind::enddo ||
-         k == ControlKind::until || k == ControlKind::endswitch;
-}
-bool is_loop(FrameKind k) {
-  return k != FrameKind::switch_;
-}
-
-/// A subroutine file name that stays in or below the program's folder: relative, no `..`
-/// (Options::confine_subroutine_files).
-bool is_confined_name(const std::string& name) {
-  const std::filesystem::path p(name);
-  if (p.has_root_path()) return false;
-  return std::none_of(p.begin(), p.end(),
-                      [](const std::filesystem::path& part) { return part == ".."; });
-}
-
-/// Why `path` cannot be a subroutine file (" not found", " is a directory", ...), or nothing.
-std::optional<std::string> subroutine_file_problem(const std::filesystem::path& path) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (ec || !fs::exists(st)) return std::string(" not found");
-  switch (st.type()) {
-    case fs::file_type::regular:
-      return std::nullopt;
-    case fs::file_type::directory:
-      return std::string(" is a directory, not a program file");
-    case fs::file_type::character:
-    case fs::file_type::block:
-      return std::string(" is a device, not a program file");
-    case fs::file_type::fifo:
-      return std::string(" is a pipe, not a program file");
-    case fs::file_type::socket:
-      return std::string(" is a socket, not a program file");
-    default:
-      return std::string(" is not a regular file");
-  }
-}
-
-const ast::Control* control_of(const ast::Block* b) {
-  return b == nullptr ? nullptr : std::get_if<ast::Control>(&b->body);
-}
-bool is_header(const ast::Block* b) {
-  return b != nullptr && std::holds_alternative<ast::ProgramHeader>(b->body);
-}
-/// `$IF cond $GOTO label` has no $ENDIF (PROG-206915851).
-bool is_block_if(const ast::Control& c) {
-  return c.kind == ControlKind::if_ && c.target.kind == ast::GotoKind::none;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 Interpreter::Impl::Impl(const core::SourceFile& file, const machines::Machine& m, Options o,
                         core::DiagnosticList& d)
@@ -93,8 +35,8 @@ Interpreter::Impl::Impl(const core::SourceFile& file, const machines::Machine& m
   // G261 without #CONTOUR MODE PATH_DEV: the channel's radius (NCSIM-CHAN-620, default the
   // manual's 1 mm; docs/planner.md "Tolerance balls").
   modal.contour.path_dev = machine.channel.default_path_dev;
-  scale_factors.fill(1.0);
-  init_zero_offsets();
+  offsets.scale_factors.fill(1.0);
+  offsets.init_zero_offsets();
   vars.create_cycle_param_on_read(machine.channel.create_cycle_param_on_read);  // P-CHAN-00463
   if (machine.channel.default_feed > 0.0) feed = machine.channel.default_feed;  // P-CHAN-00099
 }
@@ -127,509 +69,6 @@ const ast::Block* Interpreter::Impl::fetch(Pc at) {
   return files[at.file]->blocks->fetch(at.ordinal, diags);
 }
 
-bool Interpreter::Impl::find_main_start(ProgramFile& pf, std::uint16_t index) {
-  // Local subroutines precede the main part (PROG-206828043); record them, skip their bodies.
-  std::uint32_t k = 0;
-  for (;;) {
-    const ast::Block* b = pf.blocks->fetch(k, diags);
-    if (b == nullptr) break;
-    const auto* h = std::get_if<ast::ProgramHeader>(&b->body);
-    if (h == nullptr) break;
-    if (!h->local) {
-      pf.main_start = k + 1;
-      return true;
-    }
-    const std::string name = grammar::to_upper(h->name);
-    pf.local_subs[name] = k;
-    for (++k;; ++k) {
-      const ast::Block* body = pf.blocks->fetch(k, diags);
-      if (body == nullptr || is_header(body)) break;
-    }
-  }
-  pf.main_start = k;
-  (void)index;
-  return true;
-}
-
-std::optional<std::uint32_t> Interpreter::Impl::matching_end(std::uint16_t file, std::uint32_t from,
-                                                             core::SourceLoc at) {
-  const std::uint64_t key = (std::uint64_t{file} << 33) | (std::uint64_t{1} << 32) | from;
-  if (auto it = jump_memo.find(key); it != jump_memo.end()) return it->second;
-  int depth = 0;
-  for (std::uint32_t k = from;; ++k) {
-    const ast::Block* b = fetch({file, k});
-    if (b == nullptr || is_header(b)) {
-      fail(at, "NC4020", "no matching end of this loop or $SWITCH in the same program level");
-      return std::nullopt;
-    }
-    const ast::Control* c = control_of(b);
-    if (c == nullptr) continue;
-    if (is_opener(c->kind)) {
-      ++depth;
-    } else if (is_closer(c->kind)) {
-      if (depth == 0) {
-        remember(jump_memo, key, k);
-        return k;
-      }
-      --depth;
-    }
-  }
-}
-
-std::optional<std::uint32_t> Interpreter::Impl::next_if_branch(std::uint16_t file,
-                                                               std::uint32_t from, bool endif_only,
-                                                               core::SourceLoc at) {
-  const std::uint64_t key =
-      (std::uint64_t{file} << 33) | (endif_only ? 0u : (std::uint64_t{1} << 31)) | from;
-  if (auto it = jump_memo.find(key); it != jump_memo.end()) return it->second;
-  int depth = 0;
-  for (std::uint32_t k = from;; ++k) {
-    const ast::Block* b = fetch({file, k});
-    if (b == nullptr || is_header(b)) {
-      fail(at, "NC4021", "$IF without $ENDIF in the same program level");
-      return std::nullopt;
-    }
-    const ast::Control* c = control_of(b);
-    if (c == nullptr) continue;
-    if (is_block_if(*c)) {
-      ++depth;
-    } else if (c->kind == ControlKind::endif) {
-      if (depth == 0) {
-        remember(jump_memo, key, k);
-        return k;
-      }
-      --depth;
-    } else if (!endif_only && depth == 0 &&
-               (c->kind == ControlKind::elseif || c->kind == ControlKind::else_)) {
-      remember(jump_memo, key, k);
-      return k;
-    }
-  }
-}
-
-void Interpreter::Impl::remember(std::unordered_map<std::uint64_t, std::uint32_t>& memo,
-                                 std::uint64_t key, std::uint32_t value) {
-  if (memo.size() >= kMaxMemoEntries) memo.clear();  // bounded: rebuilt on demand
-  memo[key] = value;
-}
-
-std::optional<GotoResult> Interpreter::Impl::find_label(const GotoLabel& target,
-                                                        core::SourceLoc at) {
-  const std::uint16_t file = pc.file;
-  const std::uint32_t here = pc.ordinal;  // block after the $GOTO
-  // Forward search to the end of the program level (PROG-206915851: both directions).
-  GotoResult r;
-  int depth = 0;
-  for (std::uint32_t k = here;; ++k) {
-    const ast::Block* blk = fetch({file, k});
-    if (blk == nullptr || is_header(blk)) break;
-    if (target.matches(*blk)) {
-      if (depth > 0) {
-        fail(at, "21480", "$GOTO jumps into a loop");
-        return std::nullopt;
-      }
-      r.label = k;
-      return r;
-    }
-    if (const ast::Control* c = control_of(blk)) {
-      if (is_opener(c->kind)) ++depth;
-      if (is_closer(c->kind)) {
-        if (depth > 0) {
-          --depth;
-        } else {
-          ++r.closed;
-        }
-      }
-    }
-  }
-  // Backward: from the start of the program level up to the $GOTO.
-  r = GotoResult{};
-  r.backward = true;
-  for (std::uint32_t k = unit_start; k < here; ++k) {
-    const ast::Block* blk = fetch({file, k});
-    if (blk == nullptr) break;
-    if (k != unit_start && is_header(blk)) break;
-    if (target.matches(*blk)) {
-      r.label = k;
-      return r;
-    }
-    if (const ast::Control* c = control_of(blk)) {
-      if (is_opener(c->kind)) r.open.push_back(k);  // unmatched openers before the label
-      if (is_closer(c->kind) && !r.open.empty()) r.open.pop_back();
-    }
-  }
-  fail(at, "NC4023", "jump label " + target.name + " not found in this program level");
-  return std::nullopt;
-}
-
-bool Interpreter::Impl::jump_to_label(const ast::Block& b, const ast::GotoTarget& target) {
-  // Copy what is needed of the $GOTO block now: the label search fetches blocks through the
-  // cache, which may reuse the slot holding `b` (issue 9, defect 1).
-  const core::SourceLoc at = target.loc.line != 0 ? target.loc : b.loc;
-  if (target.kind == ast::GotoKind::variable || target.kind == ast::GotoKind::none) {
-    return fail(at, "NC4022", "$GOTO to a variable target is not supported by ncsim");
-  }
-  const std::uint16_t file = pc.file;
-  // The result depends only on the program text between the level start and the label, so it
-  // is remembered per $GOTO site: a backward jump in a loop scans once, not every pass.
-  const std::uint64_t key = (std::uint64_t{file} << 32) | pc.ordinal;
-  auto it = goto_memo.find(key);
-  if (it == goto_memo.end()) {
-    const GotoLabel label{target.kind, target.number, std::string(target.name)};
-    auto found = find_label(label, at);
-    if (!found) return false;
-    if (goto_memo.size() >= kMaxMemoEntries) goto_memo.clear();
-    it = goto_memo.emplace(key, std::move(*found)).first;
-  }
-  const GotoResult& r = it->second;
-  if (!r.backward) {
-    for (int i = 0; i < r.closed && !control.empty(); ++i)
-      control.pop_back();
-    pc.ordinal = r.label;
-    return true;
-  }
-  const std::size_t base = calls.empty() ? 0 : calls.back().control_depth;
-  for (std::uint32_t o : r.open) {
-    const bool is_open =
-        std::any_of(control.begin() + static_cast<std::ptrdiff_t>(base), control.end(),
-                    [&](const ControlFrame& f) { return f.file == file && f.open == o; });
-    if (!is_open) return fail(at, "21480", "$GOTO jumps into a loop");
-  }
-  while (control.size() > base && control.back().open >= r.label)
-    control.pop_back();
-  pc.ordinal = r.label;
-  return true;
-}
-
-bool Interpreter::Impl::call(const ast::Block& b, const ast::Call& c) {
-  std::string name;
-  if (c.target == ast::CallTarget::macro) {
-    const std::string* text = vars.macro(c.name);
-    if (text == nullptr)
-      return fail(c.loc, "NC4005", "macro \"" + std::string(c.name) + "\" is not defined");
-    name = *text;
-  } else if (c.target == ast::CallTarget::variable) {
-    VarRef ref;
-    if (!evaluator.resolve(b, c.variable, ref)) return fail_eval();
-    const std::string* text = vars.read_string(ref);
-    if (text == nullptr) return fail(c.loc, "NC4303", "the call needs a STRING variable");
-    name = *text;
-  } else {
-    name = std::string(c.name);
-  }
-  if (c.kind == ast::CallKind::cycle) return read_cycle_call(b, c) && run_cycle_call();
-  if (static_cast<int>(calls.size()) >= options.max_subroutine_depth) {
-    return fail(c.loc, "NC4302",
-                "subroutine nesting deeper than " + std::to_string(options.max_subroutine_depth) +
-                    " levels (call of " + name + ")");
-  }
-  Pc target;
-  std::uint32_t header = 0;
-  if (c.kind == ast::CallKind::local) {
-    auto& subs = files[pc.file]->local_subs;
-    auto it = subs.find(grammar::to_upper(name));
-    if (it == subs.end()) {
-      return fail(c.loc, "NC4301",
-                  "local subroutine " + name + " is not defined before the main program");
-    }
-    target = {pc.file, it->second + 1};
-    header = it->second;
-  } else {
-    auto it = file_by_name.find(name);
-    std::uint16_t index = 0;
-    if (it == file_by_name.end()) {
-      const std::filesystem::path dir = std::filesystem::path(files[0]->file->name()).parent_path();
-      if (options.confine_subroutine_files && !is_confined_name(name)) {
-        return fail(c.loc, "NC4301",
-                    "global subroutine file " + name +
-                        " is outside the program's folder (absolute path or '..')");
-      }
-      const std::filesystem::path path = dir / name;
-      if (auto problem = subroutine_file_problem(path)) {
-        return fail(c.loc, "NC4301", "global subroutine file " + path.string() + *problem);
-      }
-      auto loaded = load_global_file(name, path, c.loc);
-      if (!loaded) return false;
-      index = *loaded;
-    } else {
-      index = it->second;
-    }
-    target = {index, files[index]->main_start};
-    header = files[index]->main_start == 0 ? 0 : files[index]->main_start - 1;
-  }
-  enter_level(target, header);
-  return true;
-}
-
-std::optional<std::uint16_t> Interpreter::Impl::load_global_file(const std::string& key,
-                                                                 const std::filesystem::path& path,
-                                                                 core::SourceLoc at) {
-  auto pf = std::make_unique<ProgramFile>();
-  try {
-    pf->own = std::make_unique<core::SourceFile>(core::SourceFile::load(path));
-  } catch (const std::exception& e) {
-    fail(at, "NC4301", e.what());
-    return std::nullopt;
-  }
-  // A subroutine file is checked whole when it is first called, as the main program is
-  // before it runs: its syntax errors are reported even in blocks never reached.
-  const core::DiagnosticList syntax = grammar::check_program(*pf->own);
-  if (syntax.has_errors()) {
-    for (const core::Diagnostic& d : syntax.items())
-      diags.add(d);
-    fail(at, "NC4306",
-         "global subroutine file " + path.string() + " has " +
-             std::to_string(syntax.error_count()) + " syntax error" +
-             (syntax.error_count() == 1 ? "" : "s"));
-    return std::nullopt;
-  }
-  pf->file = pf->own.get();
-  pf->blocks = std::make_unique<BlockSource>(*pf->file);
-  const auto index = static_cast<std::uint16_t>(files.size());
-  files.push_back(std::move(pf));
-  file_by_name[key] = index;
-  find_main_start(*files[index], index);
-  return index;
-}
-
-void Interpreter::Impl::enter_level(Pc target, std::uint32_t header) {
-  calls.push_back({pc, control.size(), unit_start});
-  vars.push_level();
-  pc = target;
-  unit_start = header;
-}
-
-bool Interpreter::Impl::subroutine_return() {
-  if (calls.empty()) return true;  // M17 in the main program: ignored
-  const CallFrame f = calls.back();
-  calls.pop_back();
-  control.resize(std::min(control.size(), f.control_depth));
-  vars.pop_level();
-  pc = f.ret;
-  unit_start = f.unit_start;
-  return true;
-}
-
-bool Interpreter::Impl::run_control(const ast::Block& b, const ast::Control& c) {
-  const std::uint32_t here = pc.ordinal - 1;
-  const std::uint16_t file = pc.file;
-  const core::SourceLoc at = c.loc;
-  // `b` and `c` live in the block cache: read them before any fetch (a search may evict them).
-  const std::uint32_t open_line = b.loc.line;
-  switch (c.kind) {
-    case ControlKind::if_: {
-      auto v = eval(b, c.expr);
-      if (!v) return false;
-      if (!is_block_if(c)) {  // $IF cond $GOTO label
-        return is_true(*v) ? jump_to_label(b, c.target) : true;
-      }
-      if (is_true(*v)) return true;
-      std::uint32_t from = here + 1;
-      for (;;) {
-        auto k = next_if_branch(file, from, false, at);
-        if (!k) return false;
-        const ast::Block* nb = fetch({file, *k});
-        const ast::Control* nc = control_of(nb);
-        if (nc->kind == ControlKind::elseif) {
-          auto cond = eval(*nb, nc->expr);
-          if (!cond) return false;
-          if (is_true(*cond)) {
-            pc.ordinal = *k + 1;
-            return true;
-          }
-          from = *k + 1;
-          continue;
-        }
-        pc.ordinal = *k + 1;  // $ELSE or $ENDIF
-        return true;
-      }
-    }
-    case ControlKind::elseif:
-    case ControlKind::else_: {  // end of the branch taken: continue after $ENDIF
-      auto k = next_if_branch(file, here + 1, true, at);
-      if (!k) return false;
-      pc.ordinal = *k + 1;
-      return true;
-    }
-    case ControlKind::endif:
-      return true;
-    case ControlKind::switch_: {
-      auto v = eval(b, c.expr);
-      if (!v) return false;
-      std::optional<std::uint32_t> default_at;
-      int depth = 0;
-      for (std::uint32_t k = here + 1;; ++k) {
-        const ast::Block* nb = fetch({file, k});
-        if (nb == nullptr || is_header(nb)) {
-          return fail(at, "NC4020", "$SWITCH without $ENDSWITCH");
-        }
-        const ast::Control* nc = control_of(nb);
-        if (nc == nullptr) continue;
-        if (is_opener(nc->kind)) {
-          ++depth;
-        } else if (is_closer(nc->kind)) {
-          if (depth > 0) {
-            --depth;
-            continue;
-          }
-          if (!default_at) {
-            pc.ordinal = k + 1;  // no case matched, no $DEFAULT
-            return true;
-          }
-          control.push_back({FrameKind::switch_, file, here, k, {}, 0, 0, open_line});
-          pc.ordinal = *default_at + 1;
-          return true;
-        } else if (depth == 0 && nc->kind == ControlKind::case_) {
-          auto cv = eval(*nb, nc->expr);
-          if (!cv) return false;
-          if (std::fabs(*cv - *v) < 0.001) {  // PROG-206908427
-            control.push_back({FrameKind::switch_, file, here, 0xFFFFFFFFu, {}, 0, 0, open_line});
-            pc.ordinal = k + 1;
-            return true;
-          }
-        } else if (depth == 0 && nc->kind == ControlKind::default_) {
-          default_at = k;
-        }
-      }
-    }
-    case ControlKind::case_:
-    case ControlKind::default_:
-      return true;  // fall-through (decision, docs/interp.md)
-    case ControlKind::endswitch:
-      if (!control.empty() && control.back().kind == FrameKind::switch_) control.pop_back();
-      return true;
-    case ControlKind::for_: {
-      ControlFrame f{FrameKind::for_, file, here, 0xFFFFFFFFu, {}, 0, 0, b.loc.line};
-      if (!evaluator.resolve(b, c.counter, f.counter)) return fail_eval();
-      auto start = eval(b, c.start);
-      if (!start) return false;
-      auto end = eval(b, c.end);
-      if (!end) return false;
-      std::optional<double> step = 1.0;
-      if (c.step != ast::kNoNode) step = eval(b, c.step);
-      if (!step) return false;
-      f.end_value = *end;
-      f.step = *step;
-      VarError err;
-      if (!vars.write(f.counter, *start, err)) return fail(at, err.id, err.message);
-      if (f.step == 0.0) warn(at, "NC4024", "$FOR with step 0 loops forever (PROG-206929163)");
-      const bool run = f.step > 0.0 ? *start <= *end : (f.step < 0.0 ? *start >= *end : true);
-      if (!run) {
-        auto k = matching_end(file, here + 1, at);
-        if (!k) return false;
-        pc.ordinal = *k + 1;
-        return true;
-      }
-      control.push_back(std::move(f));
-      return true;
-    }
-    case ControlKind::while_: {
-      auto v = eval(b, c.expr);
-      if (!v) return false;
-      const bool reentry = !control.empty() && control.back().open == here &&
-                           control.back().file == file && control.back().kind == FrameKind::while_;
-      if (is_true(*v)) {
-        if (!reentry)
-          control.push_back({FrameKind::while_, file, here, 0xFFFFFFFFu, {}, 0, 0, b.loc.line});
-        return true;
-      }
-      std::uint32_t end = 0;
-      if (reentry && control.back().end != 0xFFFFFFFFu) {
-        end = control.back().end;
-      } else {
-        auto k = matching_end(file, here + 1, at);
-        if (!k) return false;
-        end = *k;
-      }
-      if (reentry) control.pop_back();
-      pc.ordinal = end + 1;
-      return true;
-    }
-    case ControlKind::do_:
-      control.push_back({FrameKind::do_, file, here, 0xFFFFFFFFu, {}, 0, 0, b.loc.line});
-      return true;
-    case ControlKind::repeat:
-      control.push_back({FrameKind::repeat, file, here, 0xFFFFFFFFu, {}, 0, 0, b.loc.line});
-      return true;
-    case ControlKind::endfor:
-    case ControlKind::endwhile:
-    case ControlKind::enddo:
-    case ControlKind::until: {
-      const FrameKind want = c.kind == ControlKind::endfor     ? FrameKind::for_
-                             : c.kind == ControlKind::endwhile ? FrameKind::while_
-                             : c.kind == ControlKind::enddo    ? FrameKind::do_
-                                                               : FrameKind::repeat;
-      const std::size_t base = calls.empty() ? 0 : calls.back().control_depth;
-      if (control.size() <= base || control.back().kind != want || control.back().file != file) {
-        return fail(at, c.kind == ControlKind::endwhile ? "20237" : "NC4025",
-                    "loop end without a matching loop start");
-      }
-      ControlFrame& f = control.back();
-      f.end = here;
-      if (want == FrameKind::while_) {
-        pc.ordinal = f.open;
-        return true;
-      }
-      if (want == FrameKind::for_) {
-        VarError err;
-        auto value = vars.read(f.counter, err);
-        if (!value || !vars.write(f.counter, *value + f.step, err)) {
-          return fail(at, err.id, err.message);
-        }
-        const double v = *value + f.step;
-        const bool run = f.step > 0.0 ? v <= f.end_value : (f.step < 0.0 ? v >= f.end_value : true);
-        if (run) {
-          pc.ordinal = f.open + 1;
-        } else {
-          control.pop_back();
-        }
-        return true;
-      }
-      auto v = eval(b, c.expr);
-      if (!v) return false;
-      const bool again = want == FrameKind::do_ ? is_true(*v) : !is_true(*v);
-      if (again) {
-        pc.ordinal = f.open + 1;
-      } else {
-        control.pop_back();
-      }
-      return true;
-    }
-    case ControlKind::break_:
-    case ControlKind::continue_: {
-      const std::size_t base = calls.empty() ? 0 : calls.back().control_depth;
-      const bool brk = c.kind == ControlKind::break_;
-      for (;;) {
-        if (control.size() <= base) {
-          return fail(at, brk ? "20243" : "20244",
-                      brk ? "$BREAK outside a loop or $SWITCH" : "$CONTINUE outside a loop");
-        }
-        ControlFrame& f = control.back();
-        if (f.end == 0xFFFFFFFFu) {
-          auto k = matching_end(file, pc.ordinal, at);
-          if (!k) return false;
-          f.end = *k;
-        }
-        if (brk) {
-          pc.ordinal = f.end + 1;
-          control.pop_back();
-          return true;
-        }
-        if (!is_loop(f.kind)) {  // $CONTINUE inside a $SWITCH: leave the switch first
-          pc.ordinal = f.end + 1;
-          control.pop_back();
-          continue;
-        }
-        pc.ordinal = f.end;  // the loop end block does the step / the test
-        return true;
-      }
-    }
-    case ControlKind::goto_:
-      return jump_to_label(b, c.target);
-  }
-  return true;
-}
-
 namespace {
 
 std::uint64_t mix(std::uint64_t h, std::uint64_t x) {
@@ -656,7 +95,7 @@ std::uint64_t Interpreter::Impl::state_fingerprint(std::size_t& cost) const {
   std::uint64_t h = vars.fingerprint(cost);
   h = mix(h, (std::uint64_t{pc.file} << 32) | pc.ordinal);
   h = mix(h, unit_start);
-  for (const ControlFrame& f : control) {
+  for (const ControlFrame& f : flow.frames()) {
     h = mix(h, (static_cast<std::uint64_t>(f.kind) << 48) | (std::uint64_t{f.file} << 32) | f.open);
     h = mix(h, f.end);
     h = mix(h, (static_cast<std::uint64_t>(f.counter.cls) << 32) | f.counter.number);
@@ -694,15 +133,16 @@ std::uint64_t Interpreter::Impl::state_fingerprint(std::size_t& cost) const {
   h = mix(h, bits(m.trc.radius));
   h = mix(h, bits(d_number));
   h = mix(h, files.size());
-  // offsets, scaling and path limits (interpreter_offsets.cpp)
-  h = mix(h, (std::uint64_t{zero_group} << 8) | (std::uint64_t{mcs_on} << 2) |
-                 (std::uint64_t{scale_on} << 1) | std::uint64_t{hsc_saved.has_value()});
-  for (const double f : scale_factors)
+  // offsets, scaling and path limits (offsets.cpp)
+  h = mix(h, (std::uint64_t{offsets.zero_group} << 8) | (std::uint64_t{offsets.mcs_on} << 2) |
+                 (std::uint64_t{offsets.scale_on} << 1) |
+                 std::uint64_t{offsets.hsc_saved.has_value()});
+  for (const double f : offsets.scale_factors)
     h = mix(h, bits(f));
-  h = mix(h, bits(vector_vel));
-  for (const auto& [code, name] : file_names)
+  h = mix(h, bits(offsets.vector_vel));
+  for (const auto& [code, name] : subs.file_names)
     h = mix(h, code);
-  cost += control.size() + calls.size() + kMaxAxes;
+  cost += flow.frames().size() + calls.size() + kMaxAxes;
   return h;
 }
 
@@ -720,7 +160,7 @@ bool Interpreter::Impl::watch_for_repeat(std::uint32_t block_line) {
     if (now == repeat.fingerprint) {
       // No motion or time since the saved state: the decoder would loop here forever.
       if (blocks_without_motion >= decoded - repeat.at) {
-        const std::uint32_t loop_line = control.empty() ? repeat.line : control.back().line;
+        const std::uint32_t loop_line = flow.loop_line(repeat.line);
         return fail({loop_line, 1}, "NC4901",
                     "endless loop without motion: the decoder returns to this block with the "
                     "same variables and state after " +
@@ -744,7 +184,7 @@ bool Interpreter::Impl::watch_for_repeat(std::uint32_t block_line) {
 bool Interpreter::Impl::step() {
   if (!started) {
     started = true;
-    find_main_start(*files[0], 0);
+    subs.find_main_start(*files[0], 0);
     pc = {0, files[0]->main_start};
     unit_start = files[0]->main_start == 0 ? 0 : files[0]->main_start - 1;
   }
@@ -752,8 +192,8 @@ bool Interpreter::Impl::step() {
   current_file = pc.file;
   const ast::Block* block = fetch(pc);
   if (block == nullptr || (is_header(block) && pc.ordinal != unit_start)) {
-    if (!calls.empty()) return subroutine_return();      // the next % ends a subroutine
-    if (spline && !spline_off({line, 1})) return false;  // as at M30 (interpreter_block.cpp)
+    if (!calls.empty()) return subs.subroutine_return();  // the next % ends a subroutine
+    if (spline && !spline_off({line, 1})) return false;   // as at M30 (interpreter_block.cpp)
     emit(line, End{0});
     finished = true;
     return true;
@@ -775,14 +215,14 @@ bool Interpreter::Impl::step() {
   const bool skipped = block->skip && *block->skip >= 1 && *block->skip <= 32 &&
                        (options.skip_levels & (1u << (*block->skip - 1))) != 0;
   // A barrier comes before the block is counted: the block is decoded once, after resume().
-  if (!skipped && barrier_before(*block)) {
+  if (!skipped && seam.barrier_before(*block)) {
     --pc.ordinal;
     return true;
   }
   if (!watch_for_repeat(line)) return false;
   if (options.max_blocks_without_motion != 0 &&
       ++blocks_without_motion > options.max_blocks_without_motion) {
-    const std::uint32_t loop_line = control.empty() ? line : control.back().line;
+    const std::uint32_t loop_line = flow.loop_line(line);
     return fail({loop_line, 1}, "NC4903",
                 "more than " + std::to_string(options.max_blocks_without_motion) +
                     " blocks decoded without motion or time passing; the loop has not returned "
@@ -800,8 +240,8 @@ bool Interpreter::Impl::step() {
                       " out of range: 0 to 4294967295, as for a literal");
     }
   }
-  if (const auto* c = std::get_if<ast::Control>(&block->body)) return run_control(*block, *c);
-  if (const auto* h = std::get_if<ast::HashCommand>(&block->body)) return run_hash(*block, *h);
+  if (const auto* c = std::get_if<ast::Control>(&block->body)) return flow.run(*block, *c);
+  if (const auto* h = std::get_if<ast::HashCommand>(&block->body)) return hash.run_hash(*block, *h);
   if (const auto* d = std::get_if<ast::Declaration>(&block->body)) {
     return run_declaration(*block, *d);
   }
@@ -814,18 +254,18 @@ bool Interpreter::Impl::step() {
       break;
     }
   }
-  cycle_call.reset();
+  subs.cycle_call.reset();
   if (!run_words(*run)) return false;
-  if (run->trailing_goto) return jump_to_label(*run, run->trailing_goto->target);
-  if (cycle_call) {  // G80-G89 / G800-G839: the last action of the block (P-CHAN-00160)
+  if (run->trailing_goto) return flow.jump_to_label(*run, run->trailing_goto->target);
+  if (subs.cycle_call) {  // G80-G89 / G800-G839: the last action of the block (P-CHAN-00160)
     if (run->call) {
       return fail(run->call->loc, "21542",
                   "a subroutine call in a block that already calls G" +
-                      std::to_string(cycle_call->g_code) + "'s subroutine");
+                      std::to_string(subs.cycle_call->g_code) + "'s subroutine");
     }
-    return run_cycle_call();
+    return subs.run_cycle_call();
   }
-  if (run->call) return call(*run, *run->call);
+  if (run->call) return subs.call(*run, *run->call);
   return true;
 }
 
@@ -882,7 +322,7 @@ std::optional<Command> Interpreter::next() {
   return std::nullopt;
 }
 
-// --- operator
+// The program's own V.E. writes, for the run time's store.
 void Interpreter::record_ve_writes(bool on) {
   impl_->vars.record_ve_writes(on);
 }
@@ -908,12 +348,8 @@ Interpreter::Footprint Interpreter::footprint() const {
   std::size_t indexed = 0;
   for (const auto& f : s.files)
     indexed += f->blocks->indexed_blocks();
-  return {s.control.size(),
-          s.calls.size(),
-          s.pending.size(),
-          indexed,
-          s.jump_memo.size() + s.goto_memo.size(),
-          s.vars.p_count()};
+  return {s.flow.frames().size(), s.calls.size(),  s.pending.size(), indexed,
+          s.flow.memo_entries(),  s.vars.p_count()};
 }
 
 }  // namespace ncsim::interp

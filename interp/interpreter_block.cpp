@@ -1,6 +1,6 @@
 // interp/interpreter_block.cpp: one block's words (assignments, G/M/F/axis words), G04, G74,
 // G92, program ends, declarations and string macros. Motions and arcs are in
-// interpreter_motion.cpp, # commands in interpreter_hash.cpp.
+// interpreter_motion.cpp, # commands in hash_commands.cpp.
 #include <cmath>
 
 #include "core/number_text.hpp"
@@ -174,7 +174,7 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
   bw.clear();
   if (!read_g_codes(b, bw) || !read_addresses(b, bw) || !update_trc(bw)) return false;
   if (!bw.weightings.empty()) apply_weightings(bw);
-  if (bw.g74 && !check_homing(b, bw)) return false;  // --- static-saw: before S is emitted
+  if (bw.g74 && !check_homing(b, bw)) return false;  // before S is emitted
   // Technology functions (interp/tech_functions.hpp): MNS_SNS ones after the block's action.
   const TechWaits waits = resolve_tech(bw.tech, machine.channel.tech);
   for (const Tech& t : bw.tech)
@@ -190,7 +190,7 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
   } else {
     ok = run_block_motion(b, bw);
   }
-  if (!ok || !run_axis_commands(b)) return false;
+  if (!ok || !axis_commands.run(b)) return false;
   if (waits.since) emit(line, Dwell{*waits.since, true, true});
   if (waits.after) {
     for (const Tech& t : bw.tech)
@@ -262,37 +262,134 @@ bool Interpreter::Impl::run_assignments(const ast::Block& b) {
   return true;
 }
 
+namespace {
+
+/// The G codes that set a modal state or a flag of the block and nothing else; false: `code`
+/// is not one of them.
+bool read_flag_g(std::uint32_t code, ModalSnapshot& modal, bool& centre_absolute,
+                 Interpreter::Impl::BlockWords& bw) {
+  switch (code) {
+    case 0:
+      bw.motion_word = MotionKind::rapid;
+      return true;
+    case 1:
+      bw.motion_word = MotionKind::linear;
+      return true;
+    case 2:
+      bw.motion_word = MotionKind::arc_cw;
+      return true;
+    case 3:
+      bw.motion_word = MotionKind::arc_ccw;
+      return true;
+    case 4:
+      bw.g04 = true;
+      return true;
+    case 8:
+      modal.transition = Transition::accelerate_at_start;
+      return true;
+    case 9:
+      bw.g09 = true;
+      return true;
+    case 900:
+      modal.transition = Transition::decel_at_end;
+      return true;
+    case 901:
+      modal.transition = Transition::decel_after_end;
+      return true;
+    case 60:
+      bw.g60 = true;
+      return true;
+    case 61:
+      bw.g61 = true;
+      return true;
+    case 359:
+      modal.exact_stop = false;
+      return true;
+    case 360:
+      modal.exact_stop = true;
+      return true;
+    case 260:
+      modal.contouring = false;
+      return true;
+    case 261:
+      modal.contouring = true;
+      return true;
+    case 70:
+      modal.inch = true;
+      return true;
+    case 71:
+      modal.inch = false;
+      return true;
+    case 74:
+      bw.g74 = true;
+      return true;
+    case 90:
+      modal.incremental = false;
+      return true;
+    case 91:
+      modal.incremental = true;
+      return true;
+    case 92:
+      bw.g92 = true;
+      return true;
+    case 93:
+      modal.feed_mode = FeedMode::inverse_time;
+      return true;
+    case 94:
+      modal.feed_mode = FeedMode::per_minute;
+      return true;
+    case 161:
+      centre_absolute = true;
+      return true;
+    case 162:
+      centre_absolute = false;
+      return true;
+    case 163:
+    case 164:
+    case 165:
+    case 115:
+    case 116:
+    case 117:
+      return true;  // accepted, no effect
+    default:
+      return false;
+  }
+}
+
+bool is_weighting_g(std::uint32_t code) {
+  switch (code) {
+    case 127:  // velocity weighting per axis / group / rapid (PROG-206578955 ...)
+    case 128:
+    case 129:
+    case 130:  // acceleration weighting (PROG-206590731)
+    case 131:
+    case 230:
+    case 231:
+    case 333:
+    case 334:
+    case 132:  // ramp-time weighting
+    case 133:
+    case 134:
+    case 233:
+    case 338:
+    case 339:
+      return true;
+    default:
+      return false;
+  }
+}
+
+}  // namespace
+
 bool Interpreter::Impl::read_g_codes(const ast::Block& b, BlockWords& bw) {
   for (const ast::Word& w : b.words) {
     if (w.kind != ast::WordKind::g) continue;
+    if (read_flag_g(w.code, modal, centre_absolute, bw)) continue;
+    if (is_weighting_g(w.code)) {
+      if (!read_weighting(b, w, bw)) return false;
+      continue;
+    }
     switch (w.code) {
-      case 0:
-        bw.motion_word = MotionKind::rapid;
-        break;
-      case 1:
-        bw.motion_word = MotionKind::linear;
-        break;
-      case 2:
-        bw.motion_word = MotionKind::arc_cw;
-        break;
-      case 3:
-        bw.motion_word = MotionKind::arc_ccw;
-        break;
-      case 4:
-        bw.g04 = true;
-        break;
-      case 8:
-        modal.transition = Transition::accelerate_at_start;
-        break;
-      case 9:
-        bw.g09 = true;
-        break;
-      case 900:
-        modal.transition = Transition::decel_at_end;
-        break;
-      case 901:
-        modal.transition = Transition::decel_after_end;
-        break;
       case 17:
         if (!plane_change_allowed(w.loc, Plane::xy)) return false;
         modal.plane = Plane::xy;
@@ -304,48 +401,6 @@ bool Interpreter::Impl::read_g_codes(const ast::Block& b, BlockWords& bw) {
       case 19:
         if (!plane_change_allowed(w.loc, Plane::yz)) return false;
         modal.plane = Plane::yz;
-        break;
-      case 60:
-        bw.g60 = true;
-        break;
-      case 61:
-        bw.g61 = true;
-        break;
-      case 359:
-        modal.exact_stop = false;
-        break;
-      case 360:
-        modal.exact_stop = true;
-        break;
-      case 260:
-        modal.contouring = false;
-        break;
-      case 261:
-        modal.contouring = true;
-        break;
-      case 70:
-        modal.inch = true;
-        break;
-      case 71:
-        modal.inch = false;
-        break;
-      case 74:
-        bw.g74 = true;
-        break;
-      case 90:
-        modal.incremental = false;
-        break;
-      case 91:
-        modal.incremental = true;
-        break;
-      case 92:
-        bw.g92 = true;
-        break;
-      case 93:
-        modal.feed_mode = FeedMode::inverse_time;
-        break;
-      case 94:
-        modal.feed_mode = FeedMode::per_minute;
         break;
       case 150:  // = #SPLINE OFF (PROG-207216267): a point in this block is not a vertex
         if (!spline_off(w.loc)) return false;
@@ -361,48 +416,7 @@ bool Interpreter::Impl::read_g_codes(const ast::Block& b, BlockWords& bw) {
       case 58:
       case 59:
       case 159:
-        if (!select_zero_offset(b, w)) return false;
-        break;
-      case 127:  // velocity weighting per axis / group / rapid (PROG-206578955 ...)
-      case 128:
-      case 129:
-      case 130:  // acceleration weighting (PROG-206590731)
-      case 131:
-      case 230:
-      case 231:
-      case 333:
-      case 334:
-      case 132:  // ramp-time weighting
-      case 133:
-      case 134:
-      case 233:
-      case 338:
-      case 339: {
-        // Axis-specific forms (G130 X70) give weights, not positions; the group forms
-        // (G131=50) leave the block's axis words positions. Applied after the addresses are
-        // read (run_words, interp/weights.hpp).
-        std::optional<double> group;
-        if (is_axis_weighting(w.code)) {
-          bw.weights_axes = true;
-        } else if (w.value != ast::kNoNode) {
-          group = eval(b, w.value);
-          if (!group) return false;
-        }
-        if (is_applied_weighting(w.code)) {
-          bw.weightings.push_back({w.code, group, w.loc});
-        } else if (unmodelled_g.insert(w.code).second) {
-          warn(w.loc, "NC4313",
-               "G" + std::to_string(w.code) +
-                   " (dynamics weighting) is not modelled by ncsim: the axes' listed velocity, "
-                   "acceleration and ramp times apply");
-        }
-        break;
-      }
-      case 161:
-        centre_absolute = true;
-        break;
-      case 162:
-        centre_absolute = false;
+        if (!offsets.select_zero_offset(b, w)) return false;
         break;
       case 25:
       case 26:
@@ -413,20 +427,35 @@ bool Interpreter::Impl::read_g_codes(const ast::Block& b, BlockWords& bw) {
       case 139:
         if (!trc_g_code(w, bw)) return false;  // interpreter_trc.cpp
         break;
-      case 163:
-      case 164:
-      case 165:
-      case 115:
-      case 116:
-      case 117:
-        break;  // accepted, no effect
       default:
         if (grammar::is_implicit_call_g(w.code)) {
-          if (!read_implicit_call(b, w)) return false;
+          if (!subs.read_implicit_call(b, w)) return false;
           break;
         }
         return fail(w.loc, "NC4102", "G" + std::to_string(w.code) + " is not supported by ncsim");
     }
+  }
+  return true;
+}
+
+bool Interpreter::Impl::read_weighting(const ast::Block& b, const ast::Word& w, BlockWords& bw) {
+  // Axis-specific forms (G130 X70) give weights, not positions; the group forms
+  // (G131=50) leave the block's axis words positions. Applied after the addresses are
+  // read (run_words, interp/weights.hpp).
+  std::optional<double> group;
+  if (is_axis_weighting(w.code)) {
+    bw.weights_axes = true;
+  } else if (w.value != ast::kNoNode) {
+    group = eval(b, w.value);
+    if (!group) return false;
+  }
+  if (is_applied_weighting(w.code)) {
+    bw.weightings.push_back({w.code, group, w.loc});
+  } else if (unmodelled_g.insert(w.code).second) {
+    warn(w.loc, "NC4313",
+         "G" + std::to_string(w.code) +
+             " (dynamics weighting) is not modelled by ncsim: the axes' listed velocity, "
+             "acceleration and ramp times apply");
   }
   return true;
 }
@@ -582,7 +611,7 @@ void Interpreter::Impl::run_homing(const BlockWords& bw) {
   Homing h;
   for (const auto& [axis, order] : bw.axis_words) {
     h.axes.emplace_back(axis, static_cast<int>(order));
-    pset_offsets[axis] = 0.0;             // G74 deselects the #PSET preset (PROG-207101835)
+    offsets.pset_offsets[axis] = 0.0;     // G74 deselects the #PSET preset (PROG-207101835)
     unknown_axes |= AxisMask{1} << axis;  // the reference position: run-time state
     indp_unknown &= ~(AxisMask{1} << axis);
   }
@@ -613,7 +642,7 @@ bool Interpreter::Impl::run_program_m(const ast::Block& b, int code) {
       break;
     case 17:
     case 29:
-      return subroutine_return();
+      return subs.subroutine_return();
     default:
       if (!calls.empty()) {
         warn(b.loc, "NC4305", "M02/M30 inside a subroutine ends the program (PROG-206828043)");

@@ -1,7 +1,9 @@
 #pragma once
-// interp/interpreter_impl: the decoder's private state, shared by interpreter.cpp (block
-// stream, control flow, subroutines) and interpreter_block.cpp (words, modal state, motion,
-// # commands). Not part of the public interface.
+// interp/interpreter_impl: the decoder's private state: the block stream, the order of a
+// block's parts, modal state, position, variables and the call stack, shared by the parts it
+// owns (ControlFlow, Subroutines, Offsets, HashCommands, AxisCommands, Seam: each in its own
+// files) and by interpreter_*.cpp (words, motion, frames, TRC). Not part of the public
+// interface.
 
 #include <deque>
 #include <filesystem>
@@ -13,7 +15,13 @@
 #include "core/limits.hpp"
 #include "core/number_text.hpp"
 #include "grammar/keywords.hpp"
+#include "interp/axis_commands.hpp"
+#include "interp/control_flow.hpp"
+#include "interp/hash_commands.hpp"
 #include "interp/interpreter.hpp"
+#include "interp/offsets.hpp"
+#include "interp/seam.hpp"
+#include "interp/subroutines.hpp"
 #include "interp/trc.hpp"
 #include "machines/kinematics.hpp"
 #include "machines/param_table.hpp"
@@ -48,43 +56,6 @@ struct Pc {
   std::uint32_t ordinal = 0;
 };
 
-enum class FrameKind : std::uint8_t { for_, while_, do_, repeat, switch_ };
-
-struct ControlFrame {
-  FrameKind kind = FrameKind::for_;
-  std::uint16_t file = 0;
-  std::uint32_t open = 0;              // ordinal of the opening block
-  std::uint32_t end = 0xFFFFFFFFu;     // ordinal of the closing block, once known
-  VarRef counter;                      // $FOR
-  double end_value = 0.0, step = 0.0;  // $FOR
-  std::uint32_t line = 0;
-};
-
-/// A $GOTO target copied out of its block (the block may leave the cache during the search).
-struct GotoLabel {
-  ast::GotoKind kind = ast::GotoKind::none;
-  std::uint32_t number = 0;  // block number for GotoKind::block_number
-  std::string name;          // label name, or the block number's digits
-  bool matches(const ast::Block& b) const {
-    if (kind == ast::GotoKind::block_number) {
-      return b.number && b.number->is_label && b.number->number == number;
-    }
-    return b.label && grammar::iequals(b.label->name, name);
-  }
-};
-
-/// Where a $GOTO site lands and what the jump leaves or enters, remembered per site.
-struct GotoResult {
-  std::uint32_t label = 0;          // ordinal of the labelled block
-  bool backward = false;            // found before the $GOTO
-  int closed = 0;                   // forward: loop/$SWITCH ends passed (frames left)
-  std::vector<std::uint32_t> open;  // backward: openers enclosing the label
-};
-
-/// Entries each memo of jump destinations holds at most; a full memo is cleared and refilled
-/// on demand, so memory does not grow with the program length.
-inline constexpr std::size_t kMaxMemoEntries = 1u << 16;
-
 /// Largest arc radius [mm] the interpreter accepts (NC4203; docs/interp.md "Arcs of a huge
 /// radius"): a centre 1e9 mm away is represented to 1.2e-7 mm.
 inline constexpr double kArcRadiusMax = 1e9;
@@ -107,83 +78,20 @@ struct Interpreter::Impl {
   Impl(const core::SourceFile& file, const machines::Machine& machine, Options options,
        core::DiagnosticList& diags);
 
-  // --- stream (interpreter.cpp) ---
+  // stream (interpreter.cpp)
   bool step();  // decodes one block; false when the stream ended
   bool watch_for_repeat(std::uint32_t block_line);
   std::uint64_t state_fingerprint(std::size_t& cost) const;
   const ast::Block* fetch(Pc pc);
-  bool run_control(const ast::Block& b, const ast::Control& c);
-  bool jump_to_label(const ast::Block& b, const ast::GotoTarget& target);
-  std::optional<GotoResult> find_label(const GotoLabel& target, core::SourceLoc at);
-  static void remember(std::unordered_map<std::uint64_t, std::uint32_t>& memo, std::uint64_t key,
-                       std::uint32_t value);
-  std::optional<std::uint32_t> matching_end(std::uint16_t file, std::uint32_t from,
-                                            core::SourceLoc at);
-  std::optional<std::uint32_t> next_if_branch(std::uint16_t file, std::uint32_t from,
-                                              bool endif_only, core::SourceLoc at);
-  bool call(const ast::Block& b, const ast::Call& c);
-  /// Loads global subroutine file `path` (checked whole), remembered as `key`.
-  std::optional<std::uint16_t> load_global_file(const std::string& key,
-                                                const std::filesystem::path& path,
-                                                core::SourceLoc at);
-  void enter_level(Pc target, std::uint32_t header);  // a subroutine level starts at target
 
-  // --- cycles (interpreter_cycles.cpp) ---
-  /// A cycle call read from a block, run after the block's words: G80-G89 / G800-G839 with
-  /// their parameter list (PROG-206278923) or `L CYCLE [NAME=.. @P1=..]` (PROG-206859019).
-  struct CycleCall {
-    std::uint32_t g_code = 0;  ///< 0: L CYCLE
-    core::SourceLoc loc;
-    std::string name;                           ///< L CYCLE's NAME; G: found at run_cycle_call
-    std::vector<std::optional<double>> params;  ///< [k]: @P(k+1); nullopt: a gap
-  };
-  std::optional<CycleCall> cycle_call;
-  std::map<std::uint32_t, std::string> file_names;  // #FILE NAME [G80="x.nc"] until M30
-  std::set<std::string> skipped_cycles;             // G codes and cycle names warned about (NC4307)
-  std::set<std::uint32_t> unmodelled_g;             // dynamics weightings warned about (NC4313)
-  bool read_implicit_call(const ast::Block& b, const ast::Word& w);
-  bool read_cycle_call(const ast::Block& b, const ast::Call& c);
-  bool run_cycle_call();  // enters cycle_call's subroutine (or skips it) and clears it
-  bool hash_file_name(const ast::Block& b, const ast::HashCommand& h);
+  std::set<std::uint32_t> unmodelled_g;  // dynamics weightings warned about (NC4313)
 
-  // --- offsets, scaling, path limits (interpreter_offsets.cpp) ---
-  /// Zero-offset groups np_grp[0..96] (P-ZERO-00002's range).
-  static constexpr std::size_t kZeroGroups = 97;
-  std::size_t zero_group = 0;                    // G53..G59 / G159=n: the active group
-  std::array<std::string, kMaxAxes> zero_names;  // "NP.V.X": each axis's V.G. offset array
-  bool mcs_on = false;                           // #MCS ON: the zero offsets are off
-  bool scale_on = false;                         // #SCALE ON
-  std::array<double, kMaxAxes> scale_factors{};  // #SCALE factors by machine index
-  std::optional<std::pair<bool, ContourParams>> hsc_saved;  // #HSC ON: G26x state replaced
-  std::optional<double> vector_vel;  // #VECTOR LIMIT ON [VEL]: path velocity cap [mm/s]
-  void init_zero_offsets();
-  double zero_offset(std::uint8_t axis) const;  // the active offset of `axis` [mm | deg]
-  double scale_of(std::uint8_t axis) const;     // its #SCALE factor (1 when off)
-  bool select_zero_offset(const ast::Block& b, const ast::Word& w);  // G53..G59, G159=n
-  bool check_offsets_frame(const ast::Block& b, AxisMask programmed);
-  bool hash_scale(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_mcs(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_hsc(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_vector_limit(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_accepted(const ast::Block& b);
-  std::array<double, kMaxAxes> pset_offsets{};  // #PSET: program = machine - zero - this [mm]
-  bool hash_pset(const ast::Block& b, const ast::HashCommand& h);
-  /// An `X<value>` item of #SCALE / #PSET: its machine axis and value (NC4103 for an axis the
-  /// machine does not have).
-  std::optional<double> axis_item(const ast::Block& b, const ast::Item& it, const char* command,
-                                  std::uint8_t& axis);  // #PSET X200 (no motion)
-  /// #SCALE on an arc: I/J/K and R scaled by the plane's factor, which must be the same for
-  /// both plane axes (NC4312; an arc does not scale into an ellipse).
-  bool scale_arc(const ast::Block& b, std::array<std::optional<double>, 3>& ijk,
-                 std::optional<double>& radius);
-  bool subroutine_return();
-  bool find_main_start(ProgramFile& pf, std::uint16_t index);
   bool fail(core::SourceLoc loc, std::string id, std::string message);
   bool fail_eval();
   void warn(core::SourceLoc loc, std::string id, std::string message);
   std::optional<double> eval(const ast::Block& b, ast::NodeIndex n);
 
-  // --- blocks (interpreter_block.cpp) ---
+  // blocks (interpreter_block.cpp)
   /// What one block's G codes and addresses say (run_words reads them, then acts).
   struct BlockWords {
     std::optional<MotionKind> motion_word;  ///< G00..G03 in this block
@@ -227,11 +135,12 @@ struct Interpreter::Impl {
   bool run_assignments(const ast::Block& b);
   void apply_weightings(const BlockWords& bw);  // G127..G233 into modal.weights
   bool read_g_codes(const ast::Block& b, BlockWords& bw);
+  bool read_weighting(const ast::Block& b, const ast::Word& w, BlockWords& bw);  // G127..G339
   bool read_addresses(const ast::Block& b, BlockWords& bw);
   /// The additional value of M/H word `w` (`M200=1200`), nullopt if none; NC4033 if it is not
   /// a whole number or its function takes none.
   bool additional_value(const ast::Block& b, const ast::Word& w, std::optional<double>& out);
-  // --- tool radius compensation (interpreter_trc.cpp, docs/trc.md)
+  // tool radius compensation (interpreter_trc.cpp, docs/trc.md)
   bool trc_g_code(const ast::Word& w, BlockWords& bw);      // G25/G26/G40/G41/G42/G138/G139
   bool plane_change_allowed(core::SourceLoc at, Plane to);  // 20133 while TRC is active
   bool update_trc(const BlockWords& bw);                    // D and G40/G41/G42 of the block
@@ -242,40 +151,15 @@ struct Interpreter::Impl {
   std::deque<Command> trc_out;  // commands the filter released
   bool run_dwell(const ast::Block& b, const BlockWords& bw);     // G04
   void run_homing(const BlockWords& bw);                         // G74
-  bool check_homing(const ast::Block& b, const BlockWords& bw);  // --- static-saw: own file
+  bool check_homing(const ast::Block& b, const BlockWords& bw);  // interpreter_homing.cpp
   void run_set_position(const BlockWords& bw);                   // G92
   bool run_block_motion(const ast::Block& b, const BlockWords& bw);
-  bool run_program_m(const ast::Block& b, int code);              // M00/M01/M02/M30/M17/M29
-  bool run_hash(const ast::Block& b, const ast::HashCommand& h);  // dispatches to hash_*
-  std::optional<double> item_value(const ast::Block& b, const ast::Item* it);
-  bool hash_sync_in(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_sync_out(const ast::Block& b, const ast::HashCommand& h);
-  bool duplicate_free(const ast::Block& b, const ast::HashCommand& h,
-                      std::initializer_list<std::string_view> keywords);  // else NC4507
-  bool feed_cont(const ast::Block& b, const Items& items, std::optional<double>& out);
-  bool hash_cs(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_kinematics(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_caxtrack(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_contour_mode(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_slope(const ast::Block& b, const ast::HashCommand& h);
+  bool run_program_m(const ast::Block& b, int code);  // M00/M01/M02/M30/M17/M29
   /// The channel's slope, P-CHAN-00071: the program's start slope and `#SLOPE DEFAULT`'s.
   SlopeType channel_slope() const;
-  bool hash_machine_data(const ast::Block& b, const ast::HashCommand& h);  // own file
-  bool machine_setting(core::SourceLoc at, const machines::ParamSpec& spec,
-                       std::optional<std::uint16_t> index, double value, MachineData& md);
-  bool hash_msg(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_time(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_transvelmin_on(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_wait_indp(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_delete(const ast::Block& b, const ast::HashCommand& h);
-  bool hash_pre_if(const ast::Block& b, const ast::HashCommand& h);  // #IF / #ELSE skips
-  bool spline_on(core::SourceLoc at);                                // #SPLINE ON / G151
+  bool spline_on(core::SourceLoc at);   // #SPLINE ON / G151
   bool spline_off(core::SourceLoc at);  // #SPLINE OFF / G150 (emits SplineEnd)
   bool run_declaration(const ast::Block& b, const ast::Declaration& d);
-  bool run_axis_commands(const ast::Block& b);  // dispatches to axis_*
-  bool axis_indp(const ast::Block& b, const ast::AxisCommand& ac, std::uint8_t axis);
-  bool axis_move_velocity(const ast::Block& b, const ast::AxisCommand& ac, std::uint8_t axis);
-  bool axis_touch_probe(const ast::Block& b, const ast::AxisCommand& ac, std::uint8_t axis);
   /// What a block says about its own motion only (non-modal words, isg-language.md §2.4).
   struct BlockMotionWords {
     bool stop_at_end = false;          ///< G09
@@ -287,10 +171,15 @@ struct Interpreter::Impl {
   bool run_motion(const ast::Block& b, MotionKind kind, const AxisValues& target,
                   AxisMask programmed, const std::array<std::optional<double>, 3>& ijk,
                   std::optional<double> radius, const BlockMotionWords& words);
+  /// The arc of a G02/G03 from `position` to `target` (centre from I/J/K or R, corrected onto
+  /// the bisector); nullopt after an error.
+  std::optional<Arc> make_arc(const ast::Block& b, MotionKind kind, const AxisValues& target,
+                              const std::array<std::optional<double>, 3>& ijk,
+                              std::optional<double> radius);
   std::optional<std::uint8_t> axis_index(std::string_view name) const;
   ModalSnapshot snapshot() const;
 
-  // --- frames (interpreter_frames.cpp) ---
+  // frames (interpreter_frames.cpp)
   CoordFrame frame() const;  // the frame `position` is in
   Eigen::Vector3d xyz_of(const AxisValues& values) const;
   void set_xyz(AxisValues& values, const Eigen::Vector3d& p) const;
@@ -298,19 +187,7 @@ struct Interpreter::Impl {
   bool rebase_trafo(bool on, core::SourceLoc at);  // before modal.kinematics_on changes
   AxisValues sync_rebased(bool in) const;          // position after #SYNC IN/OUT, travel 0
 
-  // --- the seam (interpreter_seam.cpp) ---
-  bool barrier_before(const ast::Block& b);  // emits a Barrier when b needs run-time state
-  bool emit_barrier(const ast::Block& b, bool sync_in, AxisMask position_needed);  // slow path
-  AxisMask position_needs(const ast::Block& b) const;  // unknown axes the block needs
-  /// The block has a V.E. node or a string (a possible macro): remembered per block text.
-  bool may_read_external(const ast::Block& b);
-  struct ExternalScan {
-    std::uint64_t key = 0;  // file and Block::offset of the block scanned, + 1; 0: empty
-    bool may_read = false;
-  };
-  std::array<ExternalScan, 256> external_scans{};
-  void apply(const RunState& state, const Barrier& barrier);
-  RunState decode_only(const Barrier& barrier) const;
+  // run-time state the seam (seam.hpp) keeps for the whole decoder
   bool resumed = false;       // the barrier before the block at pc was answered
   AxisMask unknown_axes = 0;  // axes whose actual position only the run time knows
   // The part of unknown_axes that only an INDP_ASYN motion made unknown: a
@@ -333,10 +210,13 @@ struct Interpreter::Impl {
   std::uint32_t unit_start = 0;  // header ordinal of the running program level
   bool started = false;
   bool finished = false;
-  std::vector<ControlFrame> control;
   std::vector<CallFrame> calls;
-  std::unordered_map<std::uint64_t, std::uint32_t> jump_memo;  // $IF/loop partners
-  std::unordered_map<std::uint64_t, GotoResult> goto_memo;     // by $GOTO site
+  ControlFlow flow{*this};            // $IF, $SWITCH, loops, $GOTO (control_flow.hpp)
+  Subroutines subs{*this};            // calls, program levels, cycles (subroutines.hpp)
+  Offsets offsets{*this};             // zero offsets, #PSET, #SCALE, #MCS, #HSC, #VECTOR LIMIT
+  HashCommands hash{*this};           // # commands (hash_commands.hpp)
+  AxisCommands axis_commands{*this};  // INDP, MC_* (axis_commands.hpp)
+  Seam seam{*this};                   // barriers and the run time's answers (seam.hpp)
   std::deque<Command> pending;
   std::uint64_t blocks_without_motion = 0;
   // Repeat detection (Brent's cycle finding over decoder states, docs/interp.md "Endless

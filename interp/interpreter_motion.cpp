@@ -30,21 +30,21 @@ bool Interpreter::Impl::run_block_motion(const ast::Block& b, const BlockWords& 
     const bool rotary = machine.axes[axis].kind == machines::AxisKind::rotary;
     // #SCALE scales the programmed value about the active zero point; the zero offset then
     // takes effect at the next absolute value (PROG-206487307: G91 values do not move by it).
-    const double v = value * (rotary ? 1.0 : bw.unit) * scale_of(axis);
-    target[axis] = modal.incremental ? position[axis] + v : v + zero_offset(axis);
+    const double v = value * (rotary ? 1.0 : bw.unit) * offsets.scale_of(axis);
+    target[axis] = modal.incremental ? position[axis] + v : v + offsets.zero_offset(axis);
     if (!std::isfinite(target[axis])) {  // G91: the sum left the range of a double
       return fail(b.loc, "NC4101",
                   "target of axis " + machine.axes[axis].name + " is not a finite number");
     }
     programmed |= AxisMask{1} << axis;
   }
-  if (!check_offsets_frame(b, programmed)) return false;
+  if (!offsets.check_offsets_frame(b, programmed)) return false;
   const bool arc = motion == MotionKind::arc_cw || motion == MotionKind::arc_ccw;
   if (programmed != 0 || (arc && bw.motion_word && (bw.ijk[0] || bw.ijk[1] || bw.ijk[2]))) {
     const BlockMotionWords words{bw.g09, bw.g60, bw.g61, bw.block_time, bw.end_feed};
     std::array<std::optional<double>, 3> ijk = bw.ijk;
     std::optional<double> radius = bw.radius;
-    if (scale_on && arc && !scale_arc(b, ijk, radius)) return false;
+    if (offsets.scale_on && arc && !offsets.scale_arc(b, ijk, radius)) return false;
     if (!run_motion(b, motion, target, programmed, ijk, radius, words)) return false;
   } else if (bw.g60) {
     return fail(b.loc, "20003", "G60 without a motion in the block");
@@ -88,7 +88,8 @@ bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const A
   m.end = target;
   m.programmed = programmed;
   m.feed = kind == MotionKind::rapid ? 0.0 : feed.value_or(0.0);
-  if (vector_vel && kind != MotionKind::rapid) m.feed = std::min(m.feed, *vector_vel);
+  if (offsets.vector_vel && kind != MotionKind::rapid)
+    m.feed = std::min(m.feed, *offsets.vector_vel);
   m.modal = snapshot();
   if (words.stop_at_end) m.modal.transition = Transition::stop_at_end;
   m.modal.exact_stop = m.modal.exact_stop || words.exact_stop;
@@ -96,80 +97,8 @@ bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const A
   m.block_time = words.block_time;
   m.end_feed = words.end_feed;
   if (arc) {
-    // Plane axes (PROG-206253067): G17 X/Y, G18 Z/X, G19 Y/Z; I/J/K belong to X/Y/Z.
-    const int p1 = modal.plane == Plane::xy ? 0 : (modal.plane == Plane::zx ? 2 : 1);
-    const int p2 = modal.plane == Plane::xy ? 1 : (modal.plane == Plane::zx ? 0 : 2);
-    if (!xyz[p1] || !xyz[p2]) {
-      return fail(b.loc, "NC4103", "the machine lacks an axis of the circle plane");
-    }
-    const std::uint8_t a1 = *xyz[p1], a2 = *xyz[p2];
-    const double s1 = position[a1], s2 = position[a2];
-    const double e1 = target[a1], e2 = target[a2];
-    const double d1 = e1 - s1, d2 = e2 - s2;
-    const double chord = std::hypot(d1, d2);
-    if (!std::isfinite(chord)) {
-      return fail(b.loc, "NC4101", "circle end point too far from its start for a double");
-    }
-    double c1 = 0.0, c2 = 0.0;
-    const bool full = chord < 1e-9;
-    if (radius) {
-      // TC2 R programming (isg-language.md §2.2): R > 0 short arc, R < 0 long arc.
-      if (full) return fail(b.loc, "20034", "a full circle cannot be programmed with R");
-      const double r = std::fabs(*radius);
-      if (chord > 2.0 * r + options.centre_diff_max) {
-        return fail(b.loc, "NC4202",
-                    "radius R" + core::number_text(*radius) + " is smaller than half the chord");
-      }
-      const double h = std::sqrt(std::max(0.0, r * r - chord * chord / 4.0));
-      const double n1 = -d2 / chord, n2 = d1 / chord;  // left normal of the chord
-      const bool ccw = kind == MotionKind::arc_ccw;
-      const double side = (ccw == (*radius > 0.0)) ? 1.0 : -1.0;
-      c1 = (s1 + e1) / 2.0 + side * h * n1;
-      c2 = (s2 + e2) / 2.0 + side * h * n2;
-    } else {
-      const auto& o1 = ijk[static_cast<std::size_t>(p1)];
-      const auto& o2 = ijk[static_cast<std::size_t>(p2)];
-      // G161: absolute centre coordinates, shifted by the zero offset as axis values are.
-      const auto shift = [&](int p) {
-        const auto& a = xyz[static_cast<std::size_t>(p)];
-        return a ? zero_offset(*a) : 0.0;
-      };
-      c1 = centre_absolute ? (o1 ? *o1 + shift(p1) : s1) : s1 + o1.value_or(0.0);
-      c2 = centre_absolute ? (o2 ? *o2 + shift(p2) : s2) : s2 + o2.value_or(0.0);
-      const double r_start = std::hypot(s1 - c1, s2 - c2);
-      const double r_end = std::hypot(e1 - c1, e2 - c2);
-      const double diff = std::fabs(r_end - r_start);
-      // P-CHAN-00059 / P-CHAN-00060 (PROG-206551563): beyond both limits is an error.
-      if (diff > options.centre_diff_max && diff > options.centre_factor * r_start) {
-        return fail(b.loc, "NC4201",
-                    "circle end point radius " + core::number_text(r_end) +
-                        " differs from the start radius " + core::number_text(r_start) +
-                        " by more than P-CHAN-00059/00060 allow");
-      }
-      if (r_start < 1e-9) return fail(b.loc, "NC4201", "circle with radius 0");
-      if (!full && diff > 0.0) {  // centre correction onto the perpendicular bisector
-        const double n1 = -d2 / chord, n2 = d1 / chord;
-        const double m1 = (s1 + e1) / 2.0, m2 = (s2 + e2) / 2.0;
-        const double t = (c1 - m1) * n1 + (c2 - m2) * n2;
-        c1 = m1 + t * n1;
-        c2 = m2 + t * n2;
-      }
-    }
-    const double r = std::hypot(s1 - c1, s2 - c2);
-    if (!std::isfinite(c1) || !std::isfinite(c2) || !std::isfinite(r)) {
-      return fail(b.loc, "NC4101", "circle centre or radius is not a finite number");
-    }
-    // Beyond 1e9 mm the centre's coordinates keep less than 0.2 um (a double's ulp), and the
-    // arc is a straight line to far below that: refused, not run as a NaN or a full circle
-    // (issue 34 items 3, 4; docs/interp.md "Arcs of a huge radius").
-    if (r > kArcRadiusMax) {
-      return fail(b.loc, "NC4203",
-                  "circle radius " + core::number_text(r) + " mm is above ncsim's largest, " +
-                      core::number_text(kArcRadiusMax) +
-                      " mm: the centre cannot be represented to the micrometre; program a "
-                      "straight line (G01)");
-    }
-    m.arc = Arc{c1, c2, a1, a2, r, full};
+    m.arc = make_arc(b, kind, target, ijk, radius);
+    if (!m.arc) return false;
   }
   if (kind != MotionKind::rapid && modal.feed_mode == FeedMode::per_minute && m.feed > 0.0) {
     // The block's time at its feed, from a lower bound of its length (the X/Y/Z chord; a full
@@ -195,6 +124,90 @@ bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const A
   position = target;
   emit(line, std::move(m));
   return true;
+}
+
+std::optional<Arc> Interpreter::Impl::make_arc(const ast::Block& b, MotionKind kind,
+                                               const AxisValues& target,
+                                               const std::array<std::optional<double>, 3>& ijk,
+                                               std::optional<double> radius) {
+  const auto fail_arc = [&](core::SourceLoc at, const char* id, std::string message) {
+    fail(at, id, std::move(message));
+    return std::nullopt;
+  };
+  // Plane axes (PROG-206253067): G17 X/Y, G18 Z/X, G19 Y/Z; I/J/K belong to X/Y/Z.
+  const int p1 = modal.plane == Plane::xy ? 0 : (modal.plane == Plane::zx ? 2 : 1);
+  const int p2 = modal.plane == Plane::xy ? 1 : (modal.plane == Plane::zx ? 0 : 2);
+  if (!xyz[p1] || !xyz[p2]) {
+    return fail_arc(b.loc, "NC4103", "the machine lacks an axis of the circle plane");
+  }
+  const std::uint8_t a1 = *xyz[p1], a2 = *xyz[p2];
+  const double s1 = position[a1], s2 = position[a2];
+  const double e1 = target[a1], e2 = target[a2];
+  const double d1 = e1 - s1, d2 = e2 - s2;
+  const double chord = std::hypot(d1, d2);
+  if (!std::isfinite(chord)) {
+    return fail_arc(b.loc, "NC4101", "circle end point too far from its start for a double");
+  }
+  double c1 = 0.0, c2 = 0.0;
+  const bool full = chord < 1e-9;
+  if (radius) {
+    // TC2 R programming (isg-language.md §2.2): R > 0 short arc, R < 0 long arc.
+    if (full) return fail_arc(b.loc, "20034", "a full circle cannot be programmed with R");
+    const double r = std::fabs(*radius);
+    if (chord > 2.0 * r + options.centre_diff_max) {
+      return fail_arc(b.loc, "NC4202",
+                      "radius R" + core::number_text(*radius) + " is smaller than half the chord");
+    }
+    const double h = std::sqrt(std::max(0.0, r * r - chord * chord / 4.0));
+    const double n1 = -d2 / chord, n2 = d1 / chord;  // left normal of the chord
+    const bool ccw = kind == MotionKind::arc_ccw;
+    const double side = (ccw == (*radius > 0.0)) ? 1.0 : -1.0;
+    c1 = (s1 + e1) / 2.0 + side * h * n1;
+    c2 = (s2 + e2) / 2.0 + side * h * n2;
+  } else {
+    const auto& o1 = ijk[static_cast<std::size_t>(p1)];
+    const auto& o2 = ijk[static_cast<std::size_t>(p2)];
+    // G161: absolute centre coordinates, shifted by the zero offset as axis values are.
+    const auto shift = [&](int p) {
+      const auto& a = xyz[static_cast<std::size_t>(p)];
+      return a ? offsets.zero_offset(*a) : 0.0;
+    };
+    c1 = centre_absolute ? (o1 ? *o1 + shift(p1) : s1) : s1 + o1.value_or(0.0);
+    c2 = centre_absolute ? (o2 ? *o2 + shift(p2) : s2) : s2 + o2.value_or(0.0);
+    const double r_start = std::hypot(s1 - c1, s2 - c2);
+    const double r_end = std::hypot(e1 - c1, e2 - c2);
+    const double diff = std::fabs(r_end - r_start);
+    // P-CHAN-00059 / P-CHAN-00060 (PROG-206551563): beyond both limits is an error.
+    if (diff > options.centre_diff_max && diff > options.centre_factor * r_start) {
+      return fail_arc(b.loc, "NC4201",
+                      "circle end point radius " + core::number_text(r_end) +
+                          " differs from the start radius " + core::number_text(r_start) +
+                          " by more than P-CHAN-00059/00060 allow");
+    }
+    if (r_start < 1e-9) return fail_arc(b.loc, "NC4201", "circle with radius 0");
+    if (!full && diff > 0.0) {  // centre correction onto the perpendicular bisector
+      const double n1 = -d2 / chord, n2 = d1 / chord;
+      const double m1 = (s1 + e1) / 2.0, m2 = (s2 + e2) / 2.0;
+      const double t = (c1 - m1) * n1 + (c2 - m2) * n2;
+      c1 = m1 + t * n1;
+      c2 = m2 + t * n2;
+    }
+  }
+  const double r = std::hypot(s1 - c1, s2 - c2);
+  if (!std::isfinite(c1) || !std::isfinite(c2) || !std::isfinite(r)) {
+    return fail_arc(b.loc, "NC4101", "circle centre or radius is not a finite number");
+  }
+  // Beyond 1e9 mm the centre's coordinates keep less than 0.2 um (a double's ulp), and the
+  // arc is a straight line to far below that: refused, not run as a NaN or a full circle
+  // (issue 34 items 3, 4; docs/interp.md "Arcs of a huge radius").
+  if (r > kArcRadiusMax) {
+    return fail_arc(b.loc, "NC4203",
+                    "circle radius " + core::number_text(r) + " mm is above ncsim's largest, " +
+                        core::number_text(kArcRadiusMax) +
+                        " mm: the centre cannot be represented to the micrometre; program a "
+                        "straight line (G01)");
+  }
+  return Arc{c1, c2, a1, a2, r, full};
 }
 
 }  // namespace ncsim::interp

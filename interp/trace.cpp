@@ -92,199 +92,242 @@ std::pair<std::array<double, 2>, std::array<double, 2>> arc_extent(const Motion&
   return {{lo[0] + a.centre_1, lo[1] + a.centre_2}, {hi[0] + a.centre_1, hi[1] + a.centre_2}};
 }
 
+namespace {
+
+void put(std::string& out, const Motion& b, const machines::Machine& m) {
+  static constexpr const char* kNames[] = {"G00", "G01", "G02", "G03"};
+  out += ' ';
+  out += kNames[static_cast<int>(b.kind)];
+  axes(out, b.end, m);
+  if (b.kind != MotionKind::rapid) field(out, "F", b.feed);
+  if (b.block_time) field(out, "TIME", *b.block_time);
+  if (b.end_feed) field(out, "E", *b.end_feed);
+  if (b.arc) {
+    out += " centre";
+    field(out, axis_name(m, b.arc->axis_1), b.arc->centre_1);
+    field(out, axis_name(m, b.arc->axis_2), b.arc->centre_2);
+    field(out, "R", b.arc->radius);
+    if (b.arc->full_circle) out += " FULL";
+  }
+  modal(out, b.modal);
+  out += " frame=" + frame_name(b.frame) + " start";
+  axes(out, b.start, m);
+}
+
+void put(std::string& out, const SplineBegin& b, const machines::Machine& m) {
+  out += b.type == SplineType::akima ? " SPLINE_BEGIN AKIMA" : " SPLINE_BEGIN BSPLINE";
+  out += " frame=" + frame_name(b.frame) + " start";
+  axes(out, b.start, m);
+}
+
+void put(std::string& out, const SplinePoint& b, const machines::Machine& m) {
+  out += " SPLINE_POINT " + std::to_string(b.index);
+  axes(out, b.point, m);
+  field(out, "F", b.feed);
+  out += " frame=" + frame_name(b.frame);
+}
+
+void put(std::string& out, const SplineEnd& b, const machines::Machine& /*m*/) {
+  out += b.type == SplineType::akima ? " SPLINE_END AKIMA" : " SPLINE_END BSPLINE";
+  out += " points=" + std::to_string(b.points);
+}
+
+void put(std::string& out, const Dwell& b, const machines::Machine& /*m*/) {
+  out += b.tech ? " TECH-WAIT" : " DWELL";
+  field(out, "t", b.seconds);
+  if (b.since_output) out += " since=output";
+}
+
+void put(std::string& out, const Tech& b, const machines::Machine& /*m*/) {
+  static constexpr const char* kNames[] = {"M", "H", "S", "T", "D"};
+  out += " TECH ";
+  out += kNames[static_cast<int>(b.kind)];
+  out += '=';
+  num(out, b.value);
+  if (b.extra) field(out, "value", *b.extra);
+  if (b.sync != machines::TechSync::mos) {  // the default is not shown
+    static constexpr const char* kSync[] = {"NO_SYNCH", "MOS", "MVS_SVS", "MVS_SNS", "MNS_SNS"};
+    out += " sync=";
+    out += kSync[static_cast<int>(b.sync)];
+  }
+}
+
+void put(std::string& out, const ProgramStop& b, const machines::Machine& /*m*/) {
+  out += b.optional ? " STOP M01" : " STOP M00";
+}
+
+void put(std::string& out, const AxisCommand& b, const machines::Machine& m) {
+  out += b.kind == IndpKind::syn ? " INDP_SYN " : " INDP_ASYN ";
+  out += axis_name(m, b.axis);
+  out += b.rapid ? " G00" : " G01";
+  field(out, "POS", b.target);
+  if (b.feed) field(out, "FEED", *b.feed);
+  if (b.time) field(out, "TIME", *b.time);
+  if (b.interruptible) out += " INTERRUPTIBLE";
+  out += " frame=" + frame_name(b.frame);
+}
+
+void put(std::string& out, const MoveVelocity& b, const machines::Machine& m) {
+  out += " MC_MOVEVELOCITY ";
+  out += axis_name(m, b.axis);
+  field(out, "v", b.velocity);
+  field(out, "a", b.acceleration);
+  field(out, "d", b.deceleration);
+  field(out, "j", b.jerk);
+  static constexpr const char* kDirections[] = {"1", "3", "4"};  // MC_Direction codes
+  out += " dir=";
+  out += kDirections[static_cast<int>(b.direction)];
+}
+
+void put(std::string& out, const ProbeArm& b, const machines::Machine& m) {
+  out += " PROBE_ARM ";
+  out += axis_name(m, b.axis);
+  out += " channel=" + std::to_string(b.channel);
+  if (b.edge) out += *b.edge == ProbeEdge::falling ? " mode=1" : " mode=2";
+}
+
+void put(std::string& out, const SyncIn& b, const machines::Machine& m) {
+  out += " SYNC_IN ";
+  out += axis_name(m, b.conveyor);
+  field(out, "conv_vel", b.conv_vel);
+  field(out, "latch", b.latch);
+  if (b.feed_cont) field(out, "FEED_CONT", *b.feed_cont);
+  if (b.feed_cont_auto) out += " FEED_CONT_AUTO";
+}
+
+void put(std::string& out, const SyncOut& b, const machines::Machine& /*m*/) {
+  out += " SYNC_OUT";
+  if (b.feed_cont) field(out, "FEED_CONT", *b.feed_cont);
+  if (b.feed_cont_auto) out += " FEED_CONT_AUTO";
+}
+
+void put(std::string& out, const SelectCs& b, const machines::Machine& /*m*/) {
+  static constexpr const char* kOps[] = {"DEF", "ON", "OFF", "OFF_ALL"};
+  out += " CS ";
+  out += kOps[static_cast<int>(b.op)];
+  if (b.id) out += " id=" + std::to_string(*b.id);
+  if (b.values) {
+    out += " [";
+    for (std::size_t k = 0; k < 6; ++k) {
+      if (k != 0) out += ',';
+      num(out, (*b.values)[k]);
+    }
+    out += ']';
+  }
+  out += " active=" + std::to_string(b.active_count);
+}
+
+void put(std::string& out, const Kinematics& b, const machines::Machine& /*m*/) {
+  out += " KIN";
+  if (b.kin_id) out += " id=" + std::to_string(*b.kin_id);
+  out += b.trafo_on ? " TRAFO_ON" : " TRAFO_OFF";
+}
+
+void put(std::string& out, const CaxTrack& b, const machines::Machine& m) {
+  out += b.on ? " CAXTRACK_ON" : " CAXTRACK_OFF";
+  if (b.axis) {
+    out += " AX=";
+    out += axis_name(m, *b.axis);
+  }
+  field(out, "ANGLIMIT", b.anglimit);
+  field(out, "OFFSET", b.offset);
+  if (!b.on) field(out, "ANGPOS", b.angpos);
+}
+
+void put(std::string& out, const MachineData& b, const machines::Machine& m) {
+  out += " MACHINE_DATA";
+  if (b.syn) out += " SYN";
+  if (b.axis) {
+    out += " AX=";
+    out += axis_name(m, *b.axis);
+  }
+  for (const auto& p : b.settings) {
+    out += ' ';
+    out += p.id;
+    out += ' ';
+    out += p.key;
+    if (p.index) out += '[' + std::to_string(*p.index) + ']';
+    out += '=';
+    num(out, p.value);
+  }
+  if (b.wait) out += " WAIT";
+}
+
+void put(std::string& out, const Message& b, const machines::Machine& /*m*/) {
+  if (b.mode == MessageMode::accepted) {
+    out += " ACCEPTED \"" + b.text + "\"";
+  } else {
+    out += " MSG";
+    static constexpr const char* kModes[] = {"", " SYN", " SYN_ACK", " ACK"};
+    out += kModes[static_cast<int>(b.mode)];
+    out += " \"" + b.text + "\"";
+  }
+}
+
+void put(std::string& out, const Flush& b, const machines::Machine& /*m*/) {
+  static constexpr const char* kKinds[] = {" FLUSH", " FLUSH CONTINUE", " FLUSH WAIT"};
+  out += kKinds[static_cast<int>(b.kind)];
+}
+
+void put(std::string& out, const Barrier& b, const machines::Machine& m) {
+  out += " BARRIER";
+  if (b.wants(BarrierNeed::external)) {
+    out += " FLUSH V.E.READ";
+    for (const auto& name : b.external)
+      out += " V.E." + name;
+  }
+  if (b.wants(BarrierNeed::probe_latch) && b.probe) {
+    out += " PROBE_LATCH ";
+    out += axis_name(m, *b.probe);
+  }
+  if (b.wants(BarrierNeed::position)) {
+    out += " POSITION frame=" + frame_name(b.frame);
+    for (std::size_t i = 0; i < kMaxAxes; ++i) {
+      if ((b.axes >> i) & 1u) {
+        out += ' ';
+        out += axis_name(m, static_cast<std::uint8_t>(i));
+      }
+    }
+  }
+}
+
+void put(std::string& out, const WaitIndp& b, const machines::Machine& m) {
+  out += " WAIT_INDP";
+  if (b.axes == 0) out += " ALL";
+  for (std::size_t i = 0; i < kMaxAxes; ++i) {
+    if ((b.axes >> i) & 1u) {
+      out += ' ';
+      out += axis_name(m, static_cast<std::uint8_t>(i));
+    }
+  }
+}
+
+void put(std::string& out, const Homing& b, const machines::Machine& m) {
+  out += " HOME";
+  for (const auto& [axis, order] : b.axes) {
+    out += ' ';
+    out += axis_name(m, axis);
+    out += '=' + std::to_string(order);
+  }
+}
+
+void put(std::string& out, const SetPosition& b, const machines::Machine& m) {
+  out += " G92";
+  for (std::size_t i = 0; i < kMaxAxes; ++i) {
+    if ((b.axes >> i) & 1u) field(out, axis_name(m, static_cast<std::uint8_t>(i)), b.values[i]);
+  }
+}
+
+void put(std::string& out, const End& b, const machines::Machine& /*m*/) {
+  out += " END";
+  if (b.code != 0) out += (b.code < 10 ? " M0" : " M") + std::to_string(b.code);  // M02
+}
+
+}  // namespace
+
 std::string to_trace_line(const Command& c, const machines::Machine& m) {
   std::string out = std::to_string(c.line) + ":";
-  std::visit(
-      [&](const auto& b) {
-        using T = std::decay_t<decltype(b)>;
-        if constexpr (std::is_same_v<T, Motion>) {
-          static constexpr const char* kNames[] = {"G00", "G01", "G02", "G03"};
-          out += ' ';
-          out += kNames[static_cast<int>(b.kind)];
-          axes(out, b.end, m);
-          if (b.kind != MotionKind::rapid) field(out, "F", b.feed);
-          if (b.block_time) field(out, "TIME", *b.block_time);
-          if (b.end_feed) field(out, "E", *b.end_feed);
-          if (b.arc) {
-            out += " centre";
-            field(out, axis_name(m, b.arc->axis_1), b.arc->centre_1);
-            field(out, axis_name(m, b.arc->axis_2), b.arc->centre_2);
-            field(out, "R", b.arc->radius);
-            if (b.arc->full_circle) out += " FULL";
-          }
-          modal(out, b.modal);
-          out += " frame=" + frame_name(b.frame) + " start";
-          axes(out, b.start, m);
-        } else if constexpr (std::is_same_v<T, SplineBegin>) {
-          out += b.type == SplineType::akima ? " SPLINE_BEGIN AKIMA" : " SPLINE_BEGIN BSPLINE";
-          out += " frame=" + frame_name(b.frame) + " start";
-          axes(out, b.start, m);
-        } else if constexpr (std::is_same_v<T, SplinePoint>) {
-          out += " SPLINE_POINT " + std::to_string(b.index);
-          axes(out, b.point, m);
-          field(out, "F", b.feed);
-          out += " frame=" + frame_name(b.frame);
-        } else if constexpr (std::is_same_v<T, SplineEnd>) {
-          out += b.type == SplineType::akima ? " SPLINE_END AKIMA" : " SPLINE_END BSPLINE";
-          out += " points=" + std::to_string(b.points);
-        } else if constexpr (std::is_same_v<T, Dwell>) {
-          out += b.tech ? " TECH-WAIT" : " DWELL";
-          field(out, "t", b.seconds);
-          if (b.since_output) out += " since=output";
-        } else if constexpr (std::is_same_v<T, Tech>) {
-          static constexpr const char* kNames[] = {"M", "H", "S", "T", "D"};
-          out += " TECH ";
-          out += kNames[static_cast<int>(b.kind)];
-          out += '=';
-          num(out, b.value);
-          if (b.extra) field(out, "value", *b.extra);
-          if (b.sync != machines::TechSync::mos) {  // the default is not shown
-            static constexpr const char* kSync[] = {"NO_SYNCH", "MOS", "MVS_SVS", "MVS_SNS",
-                                                    "MNS_SNS"};
-            out += " sync=";
-            out += kSync[static_cast<int>(b.sync)];
-          }
-        } else if constexpr (std::is_same_v<T, ProgramStop>) {
-          out += b.optional ? " STOP M01" : " STOP M00";
-        } else if constexpr (std::is_same_v<T, AxisCommand>) {
-          out += b.kind == IndpKind::syn ? " INDP_SYN " : " INDP_ASYN ";
-          out += axis_name(m, b.axis);
-          out += b.rapid ? " G00" : " G01";
-          field(out, "POS", b.target);
-          if (b.feed) field(out, "FEED", *b.feed);
-          if (b.time) field(out, "TIME", *b.time);
-          if (b.interruptible) out += " INTERRUPTIBLE";
-          out += " frame=" + frame_name(b.frame);
-        } else if constexpr (std::is_same_v<T, MoveVelocity>) {
-          out += " MC_MOVEVELOCITY ";
-          out += axis_name(m, b.axis);
-          field(out, "v", b.velocity);
-          field(out, "a", b.acceleration);
-          field(out, "d", b.deceleration);
-          field(out, "j", b.jerk);
-          static constexpr const char* kDirections[] = {"1", "3", "4"};  // MC_Direction codes
-          out += " dir=";
-          out += kDirections[static_cast<int>(b.direction)];
-        } else if constexpr (std::is_same_v<T, ProbeArm>) {
-          out += " PROBE_ARM ";
-          out += axis_name(m, b.axis);
-          out += " channel=" + std::to_string(b.channel);
-          if (b.edge) out += *b.edge == ProbeEdge::falling ? " mode=1" : " mode=2";
-        } else if constexpr (std::is_same_v<T, SyncIn>) {
-          out += " SYNC_IN ";
-          out += axis_name(m, b.conveyor);
-          field(out, "conv_vel", b.conv_vel);
-          field(out, "latch", b.latch);
-          if (b.feed_cont) field(out, "FEED_CONT", *b.feed_cont);
-          if (b.feed_cont_auto) out += " FEED_CONT_AUTO";
-        } else if constexpr (std::is_same_v<T, SyncOut>) {
-          out += " SYNC_OUT";
-          if (b.feed_cont) field(out, "FEED_CONT", *b.feed_cont);
-          if (b.feed_cont_auto) out += " FEED_CONT_AUTO";
-        } else if constexpr (std::is_same_v<T, SelectCs>) {
-          static constexpr const char* kOps[] = {"DEF", "ON", "OFF", "OFF_ALL"};
-          out += " CS ";
-          out += kOps[static_cast<int>(b.op)];
-          if (b.id) out += " id=" + std::to_string(*b.id);
-          if (b.values) {
-            out += " [";
-            for (std::size_t k = 0; k < 6; ++k) {
-              if (k != 0) out += ',';
-              num(out, (*b.values)[k]);
-            }
-            out += ']';
-          }
-          out += " active=" + std::to_string(b.active_count);
-        } else if constexpr (std::is_same_v<T, Kinematics>) {
-          out += " KIN";
-          if (b.kin_id) out += " id=" + std::to_string(*b.kin_id);
-          out += b.trafo_on ? " TRAFO_ON" : " TRAFO_OFF";
-        } else if constexpr (std::is_same_v<T, CaxTrack>) {
-          out += b.on ? " CAXTRACK_ON" : " CAXTRACK_OFF";
-          if (b.axis) {
-            out += " AX=";
-            out += axis_name(m, *b.axis);
-          }
-          field(out, "ANGLIMIT", b.anglimit);
-          field(out, "OFFSET", b.offset);
-          if (!b.on) field(out, "ANGPOS", b.angpos);
-        } else if constexpr (std::is_same_v<T, MachineData>) {
-          out += " MACHINE_DATA";
-          if (b.syn) out += " SYN";
-          if (b.axis) {
-            out += " AX=";
-            out += axis_name(m, *b.axis);
-          }
-          for (const auto& p : b.settings) {
-            out += ' ';
-            out += p.id;
-            out += ' ';
-            out += p.key;
-            if (p.index) out += '[' + std::to_string(*p.index) + ']';
-            out += '=';
-            num(out, p.value);
-          }
-          if (b.wait) out += " WAIT";
-        } else if constexpr (std::is_same_v<T, Message>) {
-          if (b.mode == MessageMode::accepted) {
-            out += " ACCEPTED \"" + b.text + "\"";
-          } else {
-            out += " MSG";
-            static constexpr const char* kModes[] = {"", " SYN", " SYN_ACK", " ACK"};
-            out += kModes[static_cast<int>(b.mode)];
-            out += " \"" + b.text + "\"";
-          }
-        } else if constexpr (std::is_same_v<T, Flush>) {
-          static constexpr const char* kKinds[] = {" FLUSH", " FLUSH CONTINUE", " FLUSH WAIT"};
-          out += kKinds[static_cast<int>(b.kind)];
-        } else if constexpr (std::is_same_v<T, Barrier>) {
-          out += " BARRIER";
-          if (b.wants(BarrierNeed::external)) {
-            out += " FLUSH V.E.READ";
-            for (const auto& name : b.external)
-              out += " V.E." + name;
-          }
-          if (b.wants(BarrierNeed::probe_latch) && b.probe) {
-            out += " PROBE_LATCH ";
-            out += axis_name(m, *b.probe);
-          }
-          if (b.wants(BarrierNeed::position)) {
-            out += " POSITION frame=" + frame_name(b.frame);
-            for (std::size_t i = 0; i < kMaxAxes; ++i) {
-              if ((b.axes >> i) & 1u) {
-                out += ' ';
-                out += axis_name(m, static_cast<std::uint8_t>(i));
-              }
-            }
-          }
-        } else if constexpr (std::is_same_v<T, WaitIndp>) {
-          out += " WAIT_INDP";
-          if (b.axes == 0) out += " ALL";
-          for (std::size_t i = 0; i < kMaxAxes; ++i) {
-            if ((b.axes >> i) & 1u) {
-              out += ' ';
-              out += axis_name(m, static_cast<std::uint8_t>(i));
-            }
-          }
-        } else if constexpr (std::is_same_v<T, Homing>) {
-          out += " HOME";
-          for (const auto& [axis, order] : b.axes) {
-            out += ' ';
-            out += axis_name(m, axis);
-            out += '=' + std::to_string(order);
-          }
-        } else if constexpr (std::is_same_v<T, SetPosition>) {
-          out += " G92";
-          for (std::size_t i = 0; i < kMaxAxes; ++i) {
-            if ((b.axes >> i) & 1u)
-              field(out, axis_name(m, static_cast<std::uint8_t>(i)), b.values[i]);
-          }
-        } else if constexpr (std::is_same_v<T, End>) {
-          out += " END";
-          if (b.code != 0) out += (b.code < 10 ? " M0" : " M") + std::to_string(b.code);  // M02
-        }
-      },
-      c.body);
+  std::visit([&](const auto& b) { put(out, b, m); }, c.body);
   return out;
 }
 

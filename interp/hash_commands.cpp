@@ -1,5 +1,5 @@
-// interp/interpreter_hash.cpp: # commands, one function per command (run_hash dispatches).
-// Axis-bracket commands (INDP, MC_*) are in interpreter_axis.cpp.
+// interp/hash_commands.cpp: # commands, one function per command (run_hash dispatches).
+// Axis-bracket commands (INDP, MC_*) are in axis_commands.cpp.
 #include <cmath>
 
 #include "core/number_text.hpp"
@@ -55,13 +55,25 @@ bool Interpreter::Impl::spline_off(core::SourceLoc at) {
   return true;
 }
 
-std::optional<double> Interpreter::Impl::item_value(const ast::Block& b, const ast::Item* it) {
+SlopeType Interpreter::Impl::channel_slope() const {
+  switch (machine.channel.start_slope) {
+    case machines::SlopeProfile::step:
+      return SlopeType::step;
+    case machines::SlopeProfile::trapez:
+      return SlopeType::trapez;
+    case machines::SlopeProfile::sin2:
+      return SlopeType::sin2;
+  }
+  return SlopeType::step;
+}
+
+std::optional<double> HashCommands::item_value(const ast::Block& b, const ast::Item* it) {
   if (it == nullptr || it->value == ast::kNoNode) return std::nullopt;
-  return eval(b, it->value);
+  return ip_.eval(b, it->value);
 }
 
 // One function per # command (or family); run_hash only dispatches.
-bool Interpreter::Impl::run_hash(const ast::Block& b, const ast::HashCommand& h) {
+bool HashCommands::run_hash(const ast::Block& b, const ast::HashCommand& h) {
   const core::SourceLoc at = h.loc;
   switch (h.kind) {
     case HashKind::sync_in:
@@ -83,15 +95,15 @@ bool Interpreter::Impl::run_hash(const ast::Block& b, const ast::HashCommand& h)
     case HashKind::caxtrack_off:
       return hash_caxtrack(b, h);
     case HashKind::spline_type_akima:
-      spline_type = SplineType::akima;
+      ip_.spline_type = SplineType::akima;
       return true;
     case HashKind::spline_type_bspline:
-      spline_type = SplineType::bspline;
+      ip_.spline_type = SplineType::bspline;
       return true;
     case HashKind::spline_on:
-      return spline_on(at);
+      return ip_.spline_on(at);
     case HashKind::spline_off:
-      return spline_off(at);
+      return ip_.spline_off(at);
     case HashKind::contour_mode:
     case HashKind::contour_mode_on:
     case HashKind::contour_mode_off:
@@ -104,24 +116,24 @@ bool Interpreter::Impl::run_hash(const ast::Block& b, const ast::HashCommand& h)
     case HashKind::msg:
       return hash_msg(b, h);
     case HashKind::flush:
-      emit(line, Flush{FlushKind::stop});
+      ip_.emit(ip_.line, Flush{FlushKind::stop});
       return true;
     case HashKind::flush_continue:
-      emit(line, Flush{FlushKind::continue_});
+      ip_.emit(ip_.line, Flush{FlushKind::continue_});
       return true;
     case HashKind::flush_wait:
-      emit(line, Flush{FlushKind::wait});
+      ip_.emit(ip_.line, Flush{FlushKind::wait});
       return true;
     case HashKind::time:
       return hash_time(b, h);
     case HashKind::transvelmin_on:
       return hash_transvelmin_on(b, h);
     case HashKind::transvelmin_off:
-      modal.transvelmin.reset();
+      ip_.modal.transvelmin.reset();
       return true;
     case HashKind::wait_indp_all:
-      emit(line, WaitIndp{0});
-      blocks_without_motion = 0;
+      ip_.emit(ip_.line, WaitIndp{0});
+      ip_.blocks_without_motion = 0;
       return true;
     case HashKind::wait_indp:
       return hash_wait_indp(b, h);
@@ -131,112 +143,118 @@ bool Interpreter::Impl::run_hash(const ast::Block& b, const ast::HashCommand& h)
     case HashKind::pre_else:
       return hash_pre_if(b, h);
     case HashKind::file_name:
-      return hash_file_name(b, h);
+      return ip_.subs.hash_file_name(b, h);
     case HashKind::hsc_on:
     case HashKind::hsc_off:
-      return hash_hsc(b, h);
+      return ip_.offsets.hash_hsc(b, h);
     case HashKind::vector_limit_on:
     case HashKind::vector_limit_off:
-      return hash_vector_limit(b, h);
+      return ip_.offsets.hash_vector_limit(b, h);
     case HashKind::scale_on:
     case HashKind::scale_off:
-      return hash_scale(b, h);
+      return ip_.offsets.hash_scale(b, h);
     case HashKind::mcs_on:
     case HashKind::mcs_off:
-      return hash_mcs(b, h);
+      return ip_.offsets.hash_mcs(b, h);
     case HashKind::accepted:
       return hash_accepted(b);
     case HashKind::pset:
-      return hash_pset(b, h);
+      return ip_.offsets.hash_pset(b, h);
     case HashKind::bcs_def:
     case HashKind::bcs_on:
     case HashKind::bcs_off:
     case HashKind::bcs_off_all:
-      return fail(at, "NC4104", "#BCS is not supported by ncsim");
+      return ip_.fail(at, "NC4104", "#BCS is not supported by ncsim");
     default:
       return true;  // #VAR, #ENDVAR, #COMMENT, #INIT, #ENDIF: nothing to do at run time
   }
 }
 
-bool Interpreter::Impl::hash_sync_in(const ast::Block& b, const ast::HashCommand& h) {
+bool HashCommands::hash_sync_in(const ast::Block& b, const ast::HashCommand& h) {
   const Items items{b, 0, h.item_count};
   const core::SourceLoc at = h.loc;
-  if (modal.synchronised) return fail(at, "22265", "#SYNC IN while already synchronised");
-  if (cs.active_count() > 0) {
-    return fail(at, "22262", "#SYNC IN with an active #CS coordinate system");
+  if (ip_.modal.synchronised) return ip_.fail(at, "22265", "#SYNC IN while already synchronised");
+  if (ip_.cs.active_count() > 0) {
+    return ip_.fail(at, "22262", "#SYNC IN with an active #CS coordinate system");
   }
   if (!duplicate_free(b, h, {"CONVEYOR", "CONV_VEL", "VEL_RESOLUTION", "FEED_CONT"})) return false;
   std::optional<std::uint8_t> conveyor;
   if (const ast::Item* c = items.find("CONVEYOR")) {
     // The word names the axis: its faults are the word's, not the machine's.
-    conveyor = axis_index(c->text);
+    conveyor = ip_.axis_index(c->text);
     if (!conveyor) {
-      return fail(c->loc, "NC4103",
-                  "CONVEYOR=" + std::string(c->text) + ": no such axis on machine " + machine.name);
+      return ip_.fail(
+          c->loc, "NC4103",
+          "CONVEYOR=" + std::string(c->text) + ": no such axis on machine " + ip_.machine.name);
     }
-    if (!machine.axes[*conveyor].conveyor.has_value()) {
-      return fail(c->loc, "NC4501",
-                  "CONVEYOR=" + std::string(c->text) +
-                      " is not a conveyor axis (conv_sync.is_master is not set in its list)");
+    if (!ip_.machine.axes[*conveyor].conveyor.has_value()) {
+      return ip_.fail(c->loc, "NC4501",
+                      "CONVEYOR=" + std::string(c->text) +
+                          " is not a conveyor axis (conv_sync.is_master is not set in its list)");
     }
-  } else if (machine.channel.conveyor) {
-    if (const auto* a = machine.find_axis_number(machine.channel.conveyor->master_axis_number)) {
-      conveyor = axis_index(a->name);
+  } else if (ip_.machine.channel.conveyor) {
+    if (const auto* a =
+            ip_.machine.find_axis_number(ip_.machine.channel.conveyor->master_axis_number)) {
+      conveyor = ip_.axis_index(a->name);
     }
   }
-  if (!conveyor || !machine.channel.conveyor || !machine.axes[*conveyor].conveyor.has_value()) {
-    return fail(at, "NC4501",
-                "#SYNC IN needs a conveyor axis (FCT_DLM in P-CHAN-00650, conv_sync.is_master)");
+  if (!conveyor || !ip_.machine.channel.conveyor ||
+      !ip_.machine.axes[*conveyor].conveyor.has_value()) {
+    return ip_.fail(
+        at, "NC4501",
+        "#SYNC IN needs a conveyor axis (FCT_DLM in P-CHAN-00650, conv_sync.is_master)");
   }
   const ast::Item* vel = items.find("CONV_VEL");
-  if (vel == nullptr) return fail(at, "NC4507", "#SYNC IN needs CONV_VEL");
+  if (vel == nullptr) return ip_.fail(at, "NC4507", "#SYNC IN needs CONV_VEL");
   auto v = item_value(b, vel);
   if (!v) return false;
   if (*v <= 0.0) {  // the expected belt velocity; 0 or less synchronises with nothing
-    return fail(vel->loc, "NC4030",
-                "CONV_VEL " + core::number_text(*v) + " must be greater than 0");
+    return ip_.fail(vel->loc, "NC4030",
+                    "CONV_VEL " + core::number_text(*v) + " must be greater than 0");
   }
   const ast::Item* res = items.find("VEL_RESOLUTION");
   auto factor = velocity_factor(res != nullptr ? res->text : std::string_view{});
-  if (!factor) return fail(res->loc, "NC4507", "unknown VEL_RESOLUTION " + std::string(res->text));
+  if (!factor)
+    return ip_.fail(res->loc, "NC4507", "unknown VEL_RESOLUTION " + std::string(res->text));
   SyncIn s;
   s.conveyor = *conveyor;
-  s.conv_vel = options.conv_vel ? *options.conv_vel : *v * *factor;  // sweep --conv-vel follow
-  if (xyz[0] && !machine.channel.conveyor->x_virtual) {
-    const double v_max = machine.axes[*xyz[0]].dynamics.v_max;
+  s.conv_vel =
+      ip_.options.conv_vel ? *ip_.options.conv_vel : *v * *factor;  // sweep --conv-vel follow
+  if (ip_.xyz[0] && !ip_.machine.channel.conveyor->x_virtual) {
+    const double v_max = ip_.machine.axes[*ip_.xyz[0]].dynamics.v_max;
     if (v_max > 0.0 && s.conv_vel > v_max) {
-      return fail(at, "50587",
-                  "CONV_VEL " + core::number_text(s.conv_vel) +
-                      " mm/s exceeds the maximum velocity in the conveying "
-                      "direction " +
-                      core::number_text(v_max) + " mm/s");
+      return ip_.fail(at, "50587",
+                      "CONV_VEL " + core::number_text(s.conv_vel) +
+                          " mm/s exceeds the maximum velocity in the conveying "
+                          "direction " +
+                          core::number_text(v_max) + " mm/s");
     }
   }
   if (!feed_cont(b, items, s.feed_cont)) return false;
   s.feed_cont_auto = items.find("FEED_CONT_AUTO") != nullptr;
-  s.latch = latch;  // answered by the barrier before this block
-  emit(line, s);
-  blocks_without_motion = 0;
+  s.latch = ip_.latch;  // answered by the barrier before this block
+  ip_.emit(ip_.line, s);
+  ip_.blocks_without_motion = 0;
   // The catch-up starts where the tool is in PCS1: run-time state (a barrier before the
   // next block that uses the position); decode-only: belt travel 0.
-  position = sync_rebased(true);
-  unknown_axes = path_axes;
-  indp_unknown &= ~path_axes;
-  modal.synchronised = true;
-  motion_since_sync = false;
+  ip_.position = ip_.sync_rebased(true);
+  ip_.unknown_axes = ip_.path_axes;
+  ip_.indp_unknown &= ~ip_.path_axes;
+  ip_.modal.synchronised = true;
+  ip_.motion_since_sync = false;
   return true;
 }
 
-bool Interpreter::Impl::duplicate_free(const ast::Block& b, const ast::HashCommand& h,
-                                       std::initializer_list<std::string_view> keywords) {
+bool HashCommands::duplicate_free(const ast::Block& b, const ast::HashCommand& h,
+                                  std::initializer_list<std::string_view> keywords) {
   for (std::string_view key : keywords) {
     const ast::Item* first = nullptr;
     for (std::uint32_t k = 0; k < h.item_count && k < b.items.size(); ++k) {
       if (!grammar::iequals(b.items[k].keyword, key)) continue;
       if (first != nullptr) {
-        return fail(b.items[k].loc, "NC4507",
-                    std::string(key) + " is given twice (first at column " +
-                        std::to_string(first->loc.column) + ")");
+        return ip_.fail(b.items[k].loc, "NC4507",
+                        std::string(key) + " is given twice (first at column " +
+                            std::to_string(first->loc.column) + ")");
       }
       first = &b.items[k];
     }
@@ -244,44 +262,43 @@ bool Interpreter::Impl::duplicate_free(const ast::Block& b, const ast::HashComma
   return true;
 }
 
-bool Interpreter::Impl::feed_cont(const ast::Block& b, const Items& items,
-                                  std::optional<double>& out) {
+bool HashCommands::feed_cont(const ast::Block& b, const Items& items, std::optional<double>& out) {
   // FEED_CONT: relative velocity in mm/min (seed 004 l.529), converted once, here.
   const ast::Item* fc = items.find("FEED_CONT");
   if (fc == nullptr) return true;
   auto f = item_value(b, fc);
   if (!f) return false;
   if (*f < 0.0) {
-    return fail(fc->loc, "NC4030", "FEED_CONT " + core::number_text(*f) + " is negative");
+    return ip_.fail(fc->loc, "NC4030", "FEED_CONT " + core::number_text(*f) + " is negative");
   }
   out = *f / 60.0;
   return true;
 }
 
-bool Interpreter::Impl::hash_sync_out(const ast::Block& b, const ast::HashCommand& h) {
+bool HashCommands::hash_sync_out(const ast::Block& b, const ast::HashCommand& h) {
   const Items items{b, 0, h.item_count};
   const core::SourceLoc at = h.loc;
-  if (!modal.synchronised) return fail(at, "NC4503", "#SYNC OUT without #SYNC IN");
-  if (cs.active_count() > 0) {
-    return fail(at, "22263", "#SYNC OUT with an active #CS coordinate system");
+  if (!ip_.modal.synchronised) return ip_.fail(at, "NC4503", "#SYNC OUT without #SYNC IN");
+  if (ip_.cs.active_count() > 0) {
+    return ip_.fail(at, "22263", "#SYNC OUT with an active #CS coordinate system");
   }
   if (!duplicate_free(b, h, {"FEED_CONT"})) return false;
   SyncOut s;
   if (!feed_cont(b, items, s.feed_cont)) return false;
   s.feed_cont_auto = items.find("FEED_CONT_AUTO") != nullptr;
-  emit(line, s);
-  position = sync_rebased(false);
-  unknown_axes = path_axes;  // where the tool left the moving workpiece: run time
-  indp_unknown &= ~path_axes;
-  modal.synchronised = false;
-  motion_since_sync = true;
+  ip_.emit(ip_.line, s);
+  ip_.position = ip_.sync_rebased(false);
+  ip_.unknown_axes = ip_.path_axes;  // where the tool left the moving workpiece: run time
+  ip_.indp_unknown &= ~ip_.path_axes;
+  ip_.modal.synchronised = false;
+  ip_.motion_since_sync = true;
   return true;
 }
 
-bool Interpreter::Impl::hash_cs(const ast::Block& b, const ast::HashCommand& h) {
+bool HashCommands::hash_cs(const ast::Block& b, const ast::HashCommand& h) {
   const core::SourceLoc at = h.loc;
-  if (modal.synchronised && !motion_since_sync) {
-    return fail(at, "NC4505", "#CS only after the synchronisation movement (seed 004 §2.1.1)");
+  if (ip_.modal.synchronised && !ip_.motion_since_sync) {
+    return ip_.fail(at, "NC4505", "#CS only after the synchronisation movement (seed 004 §2.1.1)");
   }
   std::vector<const ast::Item*> g0, g1;
   for (std::uint32_t k = 0; k < h.item_count; ++k) {
@@ -314,79 +331,79 @@ bool Interpreter::Impl::hash_cs(const ast::Block& b, const ast::HashCommand& h) 
     cv = machines::CsValues{{vals[0], vals[1], vals[2]}, {vals[3], vals[4], vals[5]}};
   }
   std::optional<machines::CsError> err;
-  const machines::Frame before = cs.active_frame();
+  const machines::Frame before = ip_.cs.active_frame();
   switch (h.kind) {
     case HashKind::cs_def:
       sel.op = CsOp::def;
-      err = cs.def(id, cv.value_or(machines::CsValues{}));
+      err = ip_.cs.def(id, cv.value_or(machines::CsValues{}));
       break;
     case HashKind::cs_on:
       sel.op = CsOp::on;
-      err = cs.on(id, cv);
+      err = ip_.cs.on(id, cv);
       break;
     case HashKind::cs_off:
       sel.op = CsOp::off;
-      err = cs.off();
+      err = ip_.cs.off();
       break;
     default:
       sel.op = CsOp::off_all;
-      cs.off_all();
+      ip_.cs.off_all();
       break;
   }
-  if (err) return fail(at, err->id, err->message);
-  if (sel.op != CsOp::def) rebase_cs(before);
-  sel.active_count = static_cast<std::uint8_t>(cs.active_count());
-  emit(line, sel);
+  if (err) return ip_.fail(at, err->id, err->message);
+  if (sel.op != CsOp::def) ip_.rebase_cs(before);
+  sel.active_count = static_cast<std::uint8_t>(ip_.cs.active_count());
+  ip_.emit(ip_.line, sel);
   return true;
 }
 
-bool Interpreter::Impl::hash_kinematics(const ast::Block& b, const ast::HashCommand& h) {
+bool HashCommands::hash_kinematics(const ast::Block& b, const ast::HashCommand& h) {
   const core::SourceLoc at = h.loc;
-  if (modal.synchronised) {
-    return fail(at, "NC4504",
-                "kinematic selection inside #SYNC IN/OUT is not allowed (seed 004 §2.1.1)");
+  if (ip_.modal.synchronised) {
+    return ip_.fail(at, "NC4504",
+                    "kinematic selection inside #SYNC IN/OUT is not allowed (seed 004 §2.1.1)");
   }
   if (h.kind == HashKind::kin_id) {
-    if (h.item_count == 0) return fail(at, "292005", "#KIN ID needs an id");
+    if (h.item_count == 0) return ip_.fail(at, "292005", "#KIN ID needs an id");
     auto v = item_value(b, &b.items[0]);
     if (!v) return false;
     const int id = static_cast<int>(std::lround(*v));
     bool known = false;
-    for (const auto& t : machine.channel.trafos)
+    for (const auto& t : ip_.machine.channel.trafos)
       known = known || t.id == id;
     if (!known) {
-      return fail(
-          at, "292005",
-          "kinematic id " + std::to_string(id) + " is not configured on machine " + machine.name);
+      return ip_.fail(at, "292005",
+                      "kinematic id " + std::to_string(id) + " is not configured on machine " +
+                          ip_.machine.name);
     }
-    if (modal.kinematics_on) return fail(at, "NC4508", "#KIN ID while #TRAFO ON is active");
-    kin_id = id;
+    if (ip_.modal.kinematics_on) return ip_.fail(at, "NC4508", "#KIN ID while #TRAFO ON is active");
+    ip_.kin_id = id;
   } else if (h.kind == HashKind::trafo_on) {
-    if (!kin_id && machine.channel.trafos.empty()) {
-      return fail(at, "292005", "#TRAFO ON without a configured kinematic");
+    if (!ip_.kin_id && ip_.machine.channel.trafos.empty()) {
+      return ip_.fail(at, "292005", "#TRAFO ON without a configured kinematic");
     }
-    if (!kin_id) kin_id = machine.channel.trafos.front().id;
-    if (!modal.kinematics_on && !rebase_trafo(true, at)) return false;
-    modal.kinematics_on = true;
+    if (!ip_.kin_id) ip_.kin_id = ip_.machine.channel.trafos.front().id;
+    if (!ip_.modal.kinematics_on && !ip_.rebase_trafo(true, at)) return false;
+    ip_.modal.kinematics_on = true;
   } else if (h.kind == HashKind::trafo_off) {
-    if (modal.kinematics_on && !rebase_trafo(false, at)) return false;
-    modal.kinematics_on = false;
+    if (ip_.modal.kinematics_on && !ip_.rebase_trafo(false, at)) return false;
+    ip_.modal.kinematics_on = false;
   } else {
-    return fail(at, "NC4104", "#TRAFO [...] multi-step form is not supported by ncsim");
+    return ip_.fail(at, "NC4104", "#TRAFO [...] multi-step form is not supported by ncsim");
   }
-  emit(line, Kinematics{kin_id, modal.kinematics_on});
+  ip_.emit(ip_.line, Kinematics{ip_.kin_id, ip_.modal.kinematics_on});
   return true;
 }
 
-bool Interpreter::Impl::hash_caxtrack(const ast::Block& b, const ast::HashCommand& h) {
+bool HashCommands::hash_caxtrack(const ast::Block& b, const ast::HashCommand& h) {
   const Items items{b, 0, h.item_count};
   const core::SourceLoc at = h.loc;
   CaxTrack c;
   c.on = h.kind == HashKind::caxtrack_on;
   if (const ast::Item* ax = items.find("AX")) {
-    c.axis = axis_index(ax->text);
+    c.axis = ip_.axis_index(ax->text);
     if (!c.axis)
-      return fail(ax->loc, "NC4103", "axis " + std::string(ax->text) + " does not exist");
+      return ip_.fail(ax->loc, "NC4103", "axis " + std::string(ax->text) + " does not exist");
   }
   for (auto [key, slot] : {std::pair<const char*, double*>{"ANGLIMIT", &c.anglimit},
                            {"OFFSET", &c.offset},
@@ -397,7 +414,7 @@ bool Interpreter::Impl::hash_caxtrack(const ast::Block& b, const ast::HashComman
       *slot = *v;
     }
   }
-  // --- static-saw: ROTMODE, ANGPOS given, the words ncsim does not run (docs/caxtrack.md)
+  // ROTMODE, ANGPOS given, the words ncsim does not run (docs/caxtrack.md)
   c.angpos_given = items.find("ANGPOS") != nullptr;
   if (const ast::Item* it = items.find("ROTMODE")) {
     auto v = item_value(b, it);
@@ -408,17 +425,17 @@ bool Interpreter::Impl::hash_caxtrack(const ast::Block& b, const ast::HashComman
     if (c.unsupported.empty() && items.find(key) != nullptr) c.unsupported = key;
   if (c.anglimit < 0.0 || c.anglimit > 360.0 || std::fabs(c.offset) > 360.0 ||
       std::fabs(c.angpos) > 360.0) {
-    return fail(at, "21135", "#CAXTRACK: ANGLIMIT, OFFSET or ANGPOS out of range");
+    return ip_.fail(at, "21135", "#CAXTRACK: ANGLIMIT, OFFSET or ANGPOS out of range");
   }
-  modal.caxtrack = c.on;
-  emit(line, c);
+  ip_.modal.caxtrack = c.on;
+  ip_.emit(ip_.line, c);
   return true;
 }
 
-bool Interpreter::Impl::hash_contour_mode(const ast::Block& b, const ast::HashCommand& h) {
+bool HashCommands::hash_contour_mode(const ast::Block& b, const ast::HashCommand& h) {
   const Items items{b, 0, h.item_count};
   if (h.kind == HashKind::contour_mode_off) {
-    modal.contouring = false;
+    ip_.modal.contouring = false;
     return true;
   }
   static constexpr std::pair<const char*, ContourKind> kKinds[] = {
@@ -429,68 +446,56 @@ bool Interpreter::Impl::hash_contour_mode(const ast::Block& b, const ast::HashCo
       {"POS", ContourKind::pos},
       {"PTP", ContourKind::ptp}};
   for (const auto& [name, kind] : kKinds) {
-    if (items.find(name) != nullptr) modal.contour.kind = kind;
+    if (items.find(name) != nullptr) ip_.modal.contour.kind = kind;
   }
-  for (auto [key, slot] : {std::pair<const char*, double*>{"PATH_DEV", &modal.contour.path_dev},
-                           {"PRE_DIST", &modal.contour.pre_dist},
-                           {"POST_DIST", &modal.contour.post_dist}}) {
+  for (auto [key, slot] : {std::pair<const char*, double*>{"PATH_DEV", &ip_.modal.contour.path_dev},
+                           {"PRE_DIST", &ip_.modal.contour.pre_dist},
+                           {"POST_DIST", &ip_.modal.contour.post_dist}}) {
     if (const ast::Item* it = items.find(key)) {
       auto v = item_value(b, it);
       if (!v) return false;
       // A ball of radius 0 or a blend from 0 mm before the corner cannot be (§5.3's values are
       // lengths; the planner's blend needs them > 0).
       if (!(*v > 0.0) || !std::isfinite(*v)) {
-        return fail(it->loc, "NC4031",
-                    std::string("#CONTOUR MODE ") + key + " must be a length > 0 mm, got " +
-                        core::number_text(*v));
+        return ip_.fail(it->loc, "NC4031",
+                        std::string("#CONTOUR MODE ") + key + " must be a length > 0 mm, got " +
+                            core::number_text(*v));
       }
       *slot = *v;
     }
   }
-  if (h.kind == HashKind::contour_mode_on) modal.contouring = true;
+  if (h.kind == HashKind::contour_mode_on) ip_.modal.contouring = true;
   return true;
 }
 
-SlopeType Interpreter::Impl::channel_slope() const {
-  switch (machine.channel.start_slope) {
-    case machines::SlopeProfile::step:
-      return SlopeType::step;
-    case machines::SlopeProfile::trapez:
-      return SlopeType::trapez;
-    case machines::SlopeProfile::sin2:
-      return SlopeType::sin2;
-  }
-  return SlopeType::step;
-}
-
-bool Interpreter::Impl::hash_slope(const ast::Block& b, const ast::HashCommand& h) {
+bool HashCommands::hash_slope(const ast::Block& b, const ast::HashCommand& h) {
   const Items items{b, 0, h.item_count};
   const core::SourceLoc at = h.loc;
-  if (modal.synchronised) {
-    return fail(at, "NC4506", "#SLOPE is not allowed while synchronised (seed 004 §2.1.7)");
+  if (ip_.modal.synchronised) {
+    return ip_.fail(at, "NC4506", "#SLOPE is not allowed while synchronised (seed 004 §2.1.7)");
   }
   // `#SLOPE DEFAULT` restores P-CHAN-00071 prog_start.slope.profile (isg-language.md §5.5,
   // PROG-207190411).
   if (h.kind == HashKind::slope_default) {
-    modal.slope = channel_slope();
+    ip_.modal.slope = ip_.channel_slope();
     return true;
   }
-  modal.slope = SlopeType::step;
+  ip_.modal.slope = SlopeType::step;
   if (const ast::Item* t = items.find("TYPE")) {
     if (grammar::iequals(t->text, "TRAPEZ"))
-      modal.slope = SlopeType::trapez;
+      ip_.modal.slope = SlopeType::trapez;
     else if (grammar::iequals(t->text, "SIN2"))
-      modal.slope = SlopeType::sin2;
+      ip_.modal.slope = SlopeType::sin2;
     else if (grammar::iequals(t->text, "HSC"))
-      modal.slope = SlopeType::hsc;
+      ip_.modal.slope = SlopeType::hsc;
     else if (!grammar::iequals(t->text, "STEP")) {
-      return fail(t->loc, "NC4509", "unknown #SLOPE TYPE " + std::string(t->text));
+      return ip_.fail(t->loc, "NC4509", "unknown #SLOPE TYPE " + std::string(t->text));
     }
   }
   return true;
 }
 
-bool Interpreter::Impl::hash_msg(const ast::Block& b, const ast::HashCommand& h) {
+bool HashCommands::hash_msg(const ast::Block& b, const ast::HashCommand& h) {
   Message m;
   for (std::uint32_t k = 0; k < h.item_count; ++k) {
     const ast::Item& it = b.items[k];
@@ -499,82 +504,93 @@ bool Interpreter::Impl::hash_msg(const ast::Block& b, const ast::HashCommand& h)
     if (grammar::iequals(it.keyword, "ACK")) m.mode = MessageMode::ack;
     if (grammar::iequals(it.keyword, "SYN_ACK")) m.mode = MessageMode::syn_ack;
   }
-  emit(line, std::move(m));
+  ip_.emit(ip_.line, std::move(m));
   return true;
 }
 
-bool Interpreter::Impl::hash_wait_indp(const ast::Block& b, const ast::HashCommand& h) {
+bool HashCommands::hash_wait_indp(const ast::Block& b, const ast::HashCommand& h) {
   WaitIndp w;
   for (std::uint32_t k = 0; k < h.item_count; ++k) {
     const ast::Item& it = b.items[k];
     const std::string_view name = it.keyword.empty() ? it.text : it.keyword;
-    auto index = axis_index(name);
-    if (!index) return fail(it.loc, "NC4103", "axis " + std::string(name) + " does not exist");
+    auto index = ip_.axis_index(name);
+    if (!index) return ip_.fail(it.loc, "NC4103", "axis " + std::string(name) + " does not exist");
     w.axes |= AxisMask{1} << *index;
   }
-  emit(line, w);
-  blocks_without_motion = 0;
+  ip_.emit(ip_.line, w);
+  ip_.blocks_without_motion = 0;
   return true;
 }
 
-bool Interpreter::Impl::hash_pre_if(const ast::Block& b, const ast::HashCommand& h) {
+bool HashCommands::hash_pre_if(const ast::Block& b, const ast::HashCommand& h) {
   const core::SourceLoc at = h.loc;
   if (h.kind == HashKind::pre_if) {
-    auto v = eval(b, h.expr);
+    auto v = ip_.eval(b, h.expr);
     if (!v) return false;
     if (is_true(*v)) return true;
   }
   // skip to the matching #ELSE (from a false #IF) or #ENDIF (isg-language.md §4.8)
   int depth = 0;
   const bool from_if = h.kind == HashKind::pre_if;
-  for (std::uint32_t k = pc.ordinal;; ++k) {
-    const ast::Block* nb = fetch({pc.file, k});
-    if (nb == nullptr) return fail(at, "NC4026", "#IF without #ENDIF");
+  for (std::uint32_t k = ip_.pc.ordinal;; ++k) {
+    const ast::Block* nb = ip_.fetch({ip_.pc.file, k});
+    if (nb == nullptr) return ip_.fail(at, "NC4026", "#IF without #ENDIF");
     const auto* nh = std::get_if<ast::HashCommand>(&nb->body);
     if (nh == nullptr) continue;
     if (nh->kind == HashKind::pre_if) ++depth;
     if (nh->kind == HashKind::pre_endif) {
       if (depth == 0) {
-        pc.ordinal = k + 1;
+        ip_.pc.ordinal = k + 1;
         return true;
       }
       --depth;
     }
     if (nh->kind == HashKind::pre_else && depth == 0 && from_if) {
-      pc.ordinal = k + 1;
+      ip_.pc.ordinal = k + 1;
       return true;
     }
   }
 }
 
-bool Interpreter::Impl::hash_time(const ast::Block& b, const ast::HashCommand& h) {
-  if (h.item_count == 0) return fail(h.loc, "20013", "#TIME without a time");
+bool HashCommands::hash_time(const ast::Block& b, const ast::HashCommand& h) {
+  if (h.item_count == 0) return ip_.fail(h.loc, "20013", "#TIME without a time");
   auto v = item_value(b, &b.items[0]);
   if (!v) return false;
-  if (*v < 0.0) return fail(h.loc, "20013", "negative dwell time");
-  if (!(*v <= core::kLongestTime)) return fail(h.loc, "20751", longest_time_text("dwell", *v));
-  emit(line, Dwell{*v});
-  if (*v > 0.0) blocks_without_motion = 0;  // a 0 s dwell passes no time
+  if (*v < 0.0) return ip_.fail(h.loc, "20013", "negative dwell time");
+  if (!(*v <= core::kLongestTime)) return ip_.fail(h.loc, "20751", longest_time_text("dwell", *v));
+  ip_.emit(ip_.line, Dwell{*v});
+  if (*v > 0.0) ip_.blocks_without_motion = 0;  // a 0 s dwell passes no time
   return true;
 }
 
-bool Interpreter::Impl::hash_transvelmin_on(const ast::Block& b, const ast::HashCommand& h) {
-  modal.transvelmin = 0.0;
+bool HashCommands::hash_transvelmin_on(const ast::Block& b, const ast::HashCommand& h) {
+  ip_.modal.transvelmin = 0.0;
   if (h.item_count > 0) {
     auto v = item_value(b, &b.items[0]);
     if (!v) return false;
-    modal.transvelmin = *v / 60.0;  // mm/min -> mm/s (PROG-207486091)
+    ip_.modal.transvelmin = *v / 60.0;  // mm/min -> mm/s (PROG-207486091)
   }
   return true;
 }
 
-bool Interpreter::Impl::hash_delete(const ast::Block& b, const ast::HashCommand& h) {
+bool HashCommands::hash_delete(const ast::Block& b, const ast::HashCommand& h) {
   for (std::uint32_t k = 0; k < h.item_count; ++k) {
     VarRef ref;
     if (b.items[k].value == ast::kNoNode) continue;
-    if (!evaluator.resolve(b, b.items[k].value, ref)) return fail_eval();
-    vars.remove(ref);
+    if (!ip_.evaluator.resolve(b, b.items[k].value, ref)) return ip_.fail_eval();
+    ip_.vars.remove(ref);
   }
+  return true;
+}
+
+bool HashCommands::hash_accepted(const ast::Block& b) {
+  // Read, shown in trace, no effect on motion or time in ncsim's model (docs/language.md).
+  Message m;
+  m.mode = MessageMode::accepted;
+  m.text = std::string(b.text.substr(0, std::min<std::size_t>(b.text.size(), 200)));
+  while (!m.text.empty() && (m.text.back() == ' ' || m.text.back() == '\r'))
+    m.text.pop_back();
+  ip_.emit(ip_.line, std::move(m));
   return true;
 }
 

@@ -1,6 +1,8 @@
-// interp/interpreter_seam.cpp: the run-time half of the seam. Which blocks need run-time state
-// (a Barrier before them), how the run time's answer (RunState) enters the interpreter, and
+// interp/seam.cpp: the run-time half of the seam (interp/seam.hpp). Which blocks need run-time
+// state (a Barrier before them), how the run time's answer (RunState) enters the interpreter, and
 // the decode-only answer `check` and `trace` use (docs/interp.md "The seam").
+#include "interp/seam.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <stdexcept>
@@ -82,26 +84,26 @@ bool uses_position(const ast::Block& b) {
 
 }  // namespace
 
-bool Interpreter::Impl::barrier_before(const ast::Block& b) {
-  if (resumed) {  // the barrier before this block was answered
-    resumed = false;
+bool Seam::barrier_before(const ast::Block& b) {
+  if (ip_.resumed) {  // the barrier before this block was answered
+    ip_.resumed = false;
     return false;
   }
   // The common case first, without building anything: no V.E. node, no #SYNC IN, no position
   // pending (this runs for every block; check's throughput depends on it).
   const auto* h = std::get_if<ast::HashCommand>(&b.body);
-  const bool sync_in = h != nullptr && h->kind == HashKind::sync_in && !modal.synchronised;
-  const AxisMask position_needed = unknown_axes != 0 ? position_needs(b) : 0;
+  const bool sync_in = h != nullptr && h->kind == HashKind::sync_in && !ip_.modal.synchronised;
+  const AxisMask position_needed = ip_.unknown_axes != 0 ? position_needs(b) : 0;
   const bool external = may_read_external(b) &&
                         std::any_of(b.exprs.begin(), b.exprs.end(), [&](const ast::ExprNode& e) {
                           return (e.op == ast::Op::variable && e.var_class == ast::VarClass::v_e) ||
-                                 (e.op == ast::Op::string && vars.macro(e.text) != nullptr);
+                                 (e.op == ast::Op::string && ip_.vars.macro(e.text) != nullptr);
                         });
   if (!sync_in && position_needed == 0 && !external) return false;
   return emit_barrier(b, sync_in, position_needed);
 }
 
-bool Interpreter::Impl::emit_barrier(const ast::Block& b, bool sync_in, AxisMask position_needed) {
+bool Seam::emit_barrier(const ast::Block& b, bool sync_in, AxisMask position_needed) {
   Barrier barrier;
   // V.E. reads, not the targets of plain assignments (a write needs no run-time value).
   std::vector<ast::NodeIndex> written;
@@ -122,7 +124,8 @@ bool Interpreter::Impl::emit_barrier(const ast::Block& b, bool sync_in, AxisMask
   }
   for (const ast::ExprNode& e : b.exprs) {  // reads hidden in a string macro's text
     if (e.op != ast::Op::string) continue;
-    if (const std::string* text = vars.macro(e.text)) external_names_in(*text, barrier.external);
+    if (const std::string* text = ip_.vars.macro(e.text))
+      external_names_in(*text, barrier.external);
   }
   if (!barrier.external.empty()) barrier.needs |= static_cast<std::uint8_t>(BarrierNeed::external);
   if (sync_in) {
@@ -130,10 +133,11 @@ bool Interpreter::Impl::emit_barrier(const ast::Block& b, bool sync_in, AxisMask
     // #SYNC IN waits for the measured value (seed 004 §3): the conveyor's latched position.
     std::optional<std::uint8_t> conveyor;
     for (std::uint32_t k = 0; k < h->item_count && k < b.items.size(); ++k) {
-      if (grammar::iequals(b.items[k].keyword, "CONVEYOR")) conveyor = axis_index(b.items[k].text);
+      if (grammar::iequals(b.items[k].keyword, "CONVEYOR"))
+        conveyor = ip_.axis_index(b.items[k].text);
     }
     if (!conveyor) {
-      if (const auto* a = machine.conveyor_axis()) conveyor = axis_index(a->name);
+      if (const auto* a = ip_.machine.conveyor_axis()) conveyor = ip_.axis_index(a->name);
     }
     if (conveyor) {  // else #SYNC IN itself reports the missing conveyor
       barrier.needs |= static_cast<std::uint8_t>(BarrierNeed::probe_latch);
@@ -143,19 +147,19 @@ bool Interpreter::Impl::emit_barrier(const ast::Block& b, bool sync_in, AxisMask
   if (position_needed != 0) {
     barrier.needs |= static_cast<std::uint8_t>(BarrierNeed::position);
     barrier.axes = position_needed;
-    barrier.frame = frame();
+    barrier.frame = ip_.frame();
   }
   if (barrier.needs == 0) return false;
-  current_file = pc.file;
-  emit(b.loc.line, std::move(barrier));
+  ip_.current_file = ip_.pc.file;
+  ip_.emit(b.loc.line, std::move(barrier));
   return true;
 }
 
-bool Interpreter::Impl::may_read_external(const ast::Block& b) {
+bool Seam::may_read_external(const ast::Block& b) {
   // A block is identified by its file and byte offset: a loop body decodes the same blocks
   // again and again, so their scan is remembered (a direct-mapped table, bounded).
-  const std::uint64_t key = ((std::uint64_t{pc.file} << 48) ^ b.offset) + 1;  // 0: empty
-  ExternalScan& memo = external_scans[(key * 0x9E3779B97F4A7C15ull) >> 56];
+  const std::uint64_t key = ((std::uint64_t{ip_.pc.file} << 48) ^ b.offset) + 1;  // 0: empty
+  ExternalScan& memo = external_scans_[(key * 0x9E3779B97F4A7C15ull) >> 56];
   if (memo.key == key) return memo.may_read;
   memo.key = key;
   memo.may_read = std::any_of(b.exprs.begin(), b.exprs.end(), [](const ast::ExprNode& e) {
@@ -165,14 +169,14 @@ bool Interpreter::Impl::may_read_external(const ast::Block& b) {
   return memo.may_read;
 }
 
-AxisMask Interpreter::Impl::position_needs(const ast::Block& b) const {
+AxisMask Seam::position_needs(const ast::Block& b) const {
   if (!uses_position(b)) return 0;
   const bool moves = std::any_of(b.words.begin(), b.words.end(), [](const ast::Word& w) {
     return w.kind == ast::WordKind::axis || w.kind == ast::WordKind::i ||
            w.kind == ast::WordKind::j || w.kind == ast::WordKind::k || w.kind == ast::WordKind::r ||
            (w.kind == ast::WordKind::g && w.code == 151);
   });
-  if (!std::holds_alternative<ast::Words>(b.body)) return unknown_axes;
+  if (!std::holds_alternative<ast::Words>(b.body)) return ip_.unknown_axes;
   if (moves) {
     // An axis an INDP motion made unknown is asked for only by a block that names it
     // (isg-language.md 6.1: INDP_ASYN is synchronised by #WAIT INDP or by programming the axis
@@ -181,21 +185,21 @@ AxisMask Interpreter::Impl::position_needs(const ast::Block& b) const {
     for (const ast::Word& w : b.words) {
       switch (w.kind) {
         case ast::WordKind::axis:
-          if (auto axis = axis_index(w.name)) named |= AxisMask{1} << *axis;
+          if (auto axis = ip_.axis_index(w.name)) named |= AxisMask{1} << *axis;
           break;
         case ast::WordKind::i:
         case ast::WordKind::j:
         case ast::WordKind::k:
         case ast::WordKind::r:
-          return unknown_axes;
+          return ip_.unknown_axes;
         case ast::WordKind::g:
-          if (w.code == 151) return unknown_axes;
+          if (w.code == 151) return ip_.unknown_axes;
           break;
         default:
           break;
       }
     }
-    return (unknown_axes & ~indp_unknown) | (indp_unknown & named);
+    return (ip_.unknown_axes & ~ip_.indp_unknown) | (ip_.indp_unknown & named);
   }
   // Only axis-bracket commands: an INDP move needs the position of its own axis only.
   AxisMask mask = 0;
@@ -203,12 +207,12 @@ AxisMask Interpreter::Impl::position_needs(const ast::Block& b) const {
     if (ac.kind != ast::AxisCommandKind::indp_syn && ac.kind != ast::AxisCommandKind::indp_asyn) {
       continue;
     }
-    if (auto axis = axis_index(ac.axis)) mask |= AxisMask{1} << *axis;
+    if (auto axis = ip_.axis_index(ac.axis)) mask |= AxisMask{1} << *axis;
   }
-  return mask & unknown_axes;
+  return mask & ip_.unknown_axes;
 }
 
-void Interpreter::Impl::apply(const RunState& state, const Barrier& barrier) {
+void Seam::apply(const RunState& state, const Barrier& barrier) {
   if (barrier.wants(BarrierNeed::external)) {
     for (const std::string& name : barrier.external) {
       auto it = state.external.find(name);
@@ -217,39 +221,37 @@ void Interpreter::Impl::apply(const RunState& state, const Barrier& barrier) {
       ref.cls = ast::VarClass::v_e;
       ref.name = name;
       VarError err;
-      vars.write(ref, it->second, err);  // a scalar V.E. write cannot fail
+      ip_.vars.write(ref, it->second, err);  // a scalar V.E. write cannot fail
     }
   }
-  if (barrier.wants(BarrierNeed::probe_latch)) latch = state.latch;
+  if (barrier.wants(BarrierNeed::probe_latch)) ip_.latch = state.latch;
   if (barrier.wants(BarrierNeed::position)) {
     for (std::size_t i = 0; i < kMaxAxes; ++i) {
-      if ((barrier.axes >> i) & 1u) position[i] = state.position[i];
+      if ((barrier.axes >> i) & 1u) ip_.position[i] = state.position[i];
     }
-    unknown_axes &= ~barrier.axes;
-    indp_unknown &= unknown_axes;
+    ip_.unknown_axes &= ~barrier.axes;
+    ip_.indp_unknown &= ip_.unknown_axes;
   }
   // A run-time answer is time passing (the channel drained its queue and waited), as motion
   // is: a loop that waits for a V.E. value the outside world writes is not "cannot end".
-  blocks_without_motion = 0;
-  resumed = true;
+  ip_.blocks_without_motion = 0;
+  ip_.resumed = true;
 }
 
-RunState Interpreter::Impl::decode_only(const Barrier& barrier) const {
+RunState Seam::decode_only(const Barrier& barrier) const {
   RunState s;
   for (const std::string& name : barrier.external) {
     VarRef ref;
     ref.cls = ast::VarClass::v_e;
     ref.name = name;
     VarError err;
-    if (auto v = vars.read(ref, err)) s.external[name] = *v;
+    if (auto v = ip_.vars.read(ref, err)) s.external[name] = *v;
   }
   s.latch = 0.0;
   s.frame = barrier.frame;
-  s.position = position;  // programmed, re-based with the belt travel 0 (sync_rebased)
+  s.position = ip_.position;  // programmed, re-based with the belt travel 0 (sync_rebased)
   return s;
 }
-
-// ---------------------------------------------------------------------------------------------
 
 void Interpreter::resume(const RunState& state) {
   if (!open_barrier_) {
@@ -264,12 +266,12 @@ void Interpreter::resume(const RunState& state) {
                            frame_name(barrier.frame) + ", the state gives " +
                            frame_name(state.frame));
   }
-  impl_->apply(state, barrier);
+  impl_->seam.apply(state, barrier);
   open_barrier_.reset();
 }
 
 RunState Interpreter::decode_only_state(const Barrier& barrier) const {
-  return impl_->decode_only(barrier);
+  return impl_->seam.decode_only(barrier);
 }
 
 std::optional<Command> Interpreter::next_decode_only() {

@@ -1,6 +1,8 @@
-// interp/interpreter_axis.cpp: axis-bracket commands, one function per kind: X[INDP_SYN ...] /
+// interp/axis_commands.cpp: axis-bracket commands, one function per kind: X[INDP_SYN ...] /
 // X[INDP_ASYN ...] (isg-language.md §6.1), S1[MC_MoveVelocity ...] (PROG-208363915),
 // S1[MC_TouchProbe ...] (PROG-306968203).
+#include "interp/axis_commands.hpp"
+
 #include <cmath>
 
 #include "interp/interpreter_impl.hpp"
@@ -25,12 +27,13 @@ struct ItemNumbers {
 
 }  // namespace
 
-bool Interpreter::Impl::run_axis_commands(const ast::Block& b) {
+bool AxisCommands::run(const ast::Block& b) {
   for (const ast::AxisCommand& ac : b.axis_commands) {
-    auto axis = axis_index(ac.axis);
+    auto axis = ip_.axis_index(ac.axis);
     if (!axis) {
-      return fail(ac.loc, "NC4103",
-                  "axis " + std::string(ac.axis) + " does not exist on machine " + machine.name);
+      return ip_.fail(
+          ac.loc, "NC4103",
+          "axis " + std::string(ac.axis) + " does not exist on machine " + ip_.machine.name);
     }
     bool ok = true;
     switch (ac.kind) {
@@ -45,27 +48,26 @@ bool Interpreter::Impl::run_axis_commands(const ast::Block& b) {
         ok = axis_touch_probe(b, ac, *axis);
         break;
       default:
-        return fail(ac.loc, "NC4512",
-                    "this MC_ command is not supported by ncsim (only MC_MoveVelocity and "
-                    "MC_TouchProbe)");
+        return ip_.fail(ac.loc, "NC4512",
+                        "this MC_ command is not supported by ncsim (only MC_MoveVelocity and "
+                        "MC_TouchProbe)");
     }
     if (!ok) return false;
   }
   return true;
 }
 
-bool Interpreter::Impl::axis_indp(const ast::Block& b, const ast::AxisCommand& ac,
-                                  std::uint8_t axis) {
+bool AxisCommands::axis_indp(const ast::Block& b, const ast::AxisCommand& ac, std::uint8_t axis) {
   const Items items{b, ac.first_item, ac.item_count};
-  const ItemNumbers num{*this, b, items};
+  const ItemNumbers num{ip_, b, items};
   AxisCommand c;
   c.kind = ac.kind == ast::AxisCommandKind::indp_syn ? IndpKind::syn : IndpKind::asyn;
   c.axis = axis;
-  bool absolute = !modal.incremental;
+  bool absolute = !ip_.modal.incremental;
   for (std::uint32_t k = ac.first_item; k < ac.first_item + ac.item_count; ++k) {
     const ast::Item& it = b.items[k];
     if (!grammar::iequals(it.keyword, "G")) continue;
-    auto g = eval(b, it.value);
+    auto g = ip_.eval(b, it.value);
     if (!g) return false;
     const int code = static_cast<int>(std::lround(*g));
     if (code == 0) c.rapid = true;
@@ -77,26 +79,26 @@ bool Interpreter::Impl::axis_indp(const ast::Block& b, const ast::AxisCommand& a
   auto feed_value = num("FEED");
   auto time = num("TIME");
   if (!pos || !feed_value || !time) return false;
-  if (!*pos) return fail(ac.loc, "NC4510", "INDP command without POS");
-  c.target = absolute ? **pos : position[axis] + **pos;
+  if (!*pos) return ip_.fail(ac.loc, "NC4510", "INDP command without POS");
+  c.target = absolute ? **pos : ip_.position[axis] + **pos;
   if (*feed_value && **feed_value <= 0.0) {
-    return fail(ac.loc, "NC4030", "INDP FEED must be greater than 0");
+    return ip_.fail(ac.loc, "NC4030", "INDP FEED must be greater than 0");
   }
-  if (*time && **time <= 0.0) return fail(ac.loc, "NC4030", "INDP TIME must be greater than 0");
+  if (*time && **time <= 0.0) return ip_.fail(ac.loc, "NC4030", "INDP TIME must be greater than 0");
   if (*time && !(**time <= core::kLongestTime)) {
-    return fail(ac.loc, "NC4032", longest_time_text("INDP TIME", **time));
+    return ip_.fail(ac.loc, "NC4032", longest_time_text("INDP TIME", **time));
   }
   if (*feed_value) c.feed = **feed_value / 60.0;  // mm/min -> mm/s (PROG-208612235)
   c.time = *time;
   c.interruptible = items.find("INTERRUPTIBLE") != nullptr;
-  c.frame = frame();
-  if (c.interruptible && !machine.channel.conveyor) {
-    return fail(ac.loc, "50603", "INTERRUPTIBLE needs conveyor synchronisation (FCT_DLM)");
+  c.frame = ip_.frame();
+  if (c.interruptible && !ip_.machine.channel.conveyor) {
+    return ip_.fail(ac.loc, "50603", "INTERRUPTIBLE needs conveyor synchronisation (FCT_DLM)");
   }
   if (!c.rapid && !c.feed && !c.time) {
-    return fail(ac.loc, "20008", "INDP G01 motion needs FEED or TIME");
+    return ip_.fail(ac.loc, "20008", "INDP G01 motion needs FEED or TIME");
   }
-  position[axis] = c.target;
+  ip_.position[axis] = c.target;
   // INDP_ASYN runs on beside the program; INTERRUPTIBLE may be cut short by the next #SYNC IN:
   // where the axis is afterwards is run-time state (decode-only: the target).
   if (c.kind == IndpKind::asyn || c.interruptible) {
@@ -104,30 +106,30 @@ bool Interpreter::Impl::axis_indp(const ast::Block& b, const ast::AxisCommand& a
     // INDP_ASYN: asked for only by the blocks that program the axis again (P-CHAN-00451). An
     // INTERRUPTIBLE motion (cut short by the next #SYNC IN) and an axis unknown for another
     // reason (#SYNC, G74) stay asked for by every block that uses the position.
-    const bool other = (unknown_axes & ~indp_unknown & bit) != 0;
+    const bool other = (ip_.unknown_axes & ~ip_.indp_unknown & bit) != 0;
     if (c.kind == IndpKind::asyn && !other)
-      indp_unknown |= bit;
+      ip_.indp_unknown |= bit;
     else
-      indp_unknown &= ~bit;
-    unknown_axes |= bit;
+      ip_.indp_unknown &= ~bit;
+    ip_.unknown_axes |= bit;
   }
-  emit(line, c);
-  blocks_without_motion = 0;
+  ip_.emit(ip_.line, c);
+  ip_.blocks_without_motion = 0;
   return true;
 }
 
-bool Interpreter::Impl::axis_move_velocity(const ast::Block& b, const ast::AxisCommand& ac,
-                                           std::uint8_t axis) {
-  const ItemNumbers num{*this, b, Items{b, ac.first_item, ac.item_count}};
+bool AxisCommands::axis_move_velocity(const ast::Block& b, const ast::AxisCommand& ac,
+                                      std::uint8_t axis) {
+  const ItemNumbers num{ip_, b, Items{b, ac.first_item, ac.item_count}};
   MoveVelocity m;
   m.axis = axis;
   auto v = num("VELOCITY"), a = num("ACCELERATION"), d = num("DECELERATION"), j = num("JERK"),
        dir = num("DIRECTION");
   if (!v || !a || !d || !j || !dir) return false;
-  if (!*v) return fail(ac.loc, "NC4511", "MC_MoveVelocity needs Velocity");
+  if (!*v) return ip_.fail(ac.loc, "NC4511", "MC_MoveVelocity needs Velocity");
   // PLCopen: the velocity is a magnitude, Direction gives the sign (PROG-208363915).
   if (**v < 0.0) {
-    return fail(ac.loc, "NC4030", "MC_MoveVelocity Velocity must not be negative");
+    return ip_.fail(ac.loc, "NC4030", "MC_MoveVelocity Velocity must not be negative");
   }
   m.velocity = **v / 1000.0;  // um/s -> mm/s (PROG-208363915), once, here
   m.acceleration = a->value_or(0.0);
@@ -143,17 +145,17 @@ bool Interpreter::Impl::axis_move_velocity(const ast::Block& b, const ast::AxisC
   } else if (code == 4.0) {
     m.direction = VelocityDirection::current;
   } else {
-    return fail(ac.loc, "NC4030",
-                "MC_MoveVelocity Direction " + core::number_text(code) +
-                    " is not 1 (positive), 3 (negative) or 4 (current)");
+    return ip_.fail(ac.loc, "NC4030",
+                    "MC_MoveVelocity Direction " + core::number_text(code) +
+                        " is not 1 (positive), 3 (negative) or 4 (current)");
   }
-  emit(line, m);
+  ip_.emit(ip_.line, m);
   return true;
 }
 
-bool Interpreter::Impl::axis_touch_probe(const ast::Block& b, const ast::AxisCommand& ac,
-                                         std::uint8_t axis) {
-  const ItemNumbers num{*this, b, Items{b, ac.first_item, ac.item_count}};
+bool AxisCommands::axis_touch_probe(const ast::Block& b, const ast::AxisCommand& ac,
+                                    std::uint8_t axis) {
+  const ItemNumbers num{ip_, b, Items{b, ac.first_item, ac.item_count}};
   ProbeArm p;
   p.axis = axis;
   auto ch = num("CHANNEL"), mode = num("MODE");
@@ -166,12 +168,12 @@ bool Interpreter::Impl::axis_touch_probe(const ast::Block& b, const ast::AxisCom
     } else if (**mode == 2.0) {
       p.edge = ProbeEdge::rising;
     } else {
-      return fail(ac.loc, "NC4030",
-                  "MC_TouchProbe Mode " + core::number_text(**mode) +
-                      " is not 1 (falling edge) or 2 (rising edge)");
+      return ip_.fail(ac.loc, "NC4030",
+                      "MC_TouchProbe Mode " + core::number_text(**mode) +
+                          " is not 1 (falling edge) or 2 (rising edge)");
     }
   }
-  emit(line, p);
+  ip_.emit(ip_.line, p);
   return true;
 }
 
