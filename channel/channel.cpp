@@ -36,6 +36,14 @@ std::string text(const char* format, double a, double b) {
   return buf;
 }
 
+/// `config`'s axes, when there is one per interpolated axis.
+const std::vector<ChannelAxis>& checked_axes(const ChannelConfig& config, std::size_t n) {
+  if (config.axes.size() != n)
+    throw std::invalid_argument("ipo::Channel: " + std::to_string(config.axes.size()) +
+                                " channel axes for " + std::to_string(n) + " interpolated axes");
+  return config.axes;
+}
+
 }  // namespace
 
 Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
@@ -46,42 +54,21 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
            sink != nullptr || config.path.joints ? &relay_ : nullptr),
       source_(source),
       sink_(sink),
-      exact_stop_wait_max_(config.exact_stop_wait_max),
+      axes_(checked_axes(config, ipo_.axis_count()), config.path.start, ipo_.t_cycle()),
+      exact_stop_(config.exact_stop_wait_max, ipo_.t_cycle()),
       measured_value_wait_max_(config.measured_value_wait_max),
       indp_(indp_configs(config), ipo_.t_cycle(), config.path.start) {  // --- indp
   // --- trafo: the joint stage maps the TCP to the machine axes under #TRAFO ON.
   if (config.path.joints) stage_.emplace(config.path.joints->inverse, config.axes.size());
   conveyor_axis_ = config.conveyor_axis;  // what #MACHINE DATA changes (program/machine_data.hpp)
   forward_ = std::move(config.forward);   // --- trafo: synchro_lag under #TRAFO ON
-  if (config.axes.size() != ipo_.axis_count())
-    throw std::invalid_argument("ipo::Channel: " + std::to_string(config.axes.size()) +
-                                " channel axes for " + std::to_string(ipo_.axis_count()) +
-                                " interpolated axes");
-  if (!(exact_stop_wait_max_ > 0.0))
-    throw std::invalid_argument("ipo::Channel: exact_stop_wait_max must be > 0 s, got " +
-                                std::to_string(exact_stop_wait_max_));
   const double t = ipo_.t_cycle();
-  // Same rounding as every wait (docs/ipo.md): the limit in whole cycles, never shorter.
-  wait_cycles_max_ = static_cast<std::uint64_t>(std::ceil(exact_stop_wait_max_ / t - 1e-9));
   if (!(measured_value_wait_max_ > 0.0))
     throw std::invalid_argument("ipo::Channel: measured_value_wait_max must be > 0 s, got " +
                                 std::to_string(measured_value_wait_max_));
   measure_wait_cycles_max_ =
       static_cast<std::uint64_t>(std::ceil(measured_value_wait_max_ / t - 1e-9));
   ipo_.set_wait_handler(&wait_relay_);
-  axes_.reserve(config.axes.size());
-  for (std::size_t i = 0; i < config.axes.size(); ++i) {
-    const double p0 = config.path.start[i];
-    ChannelAxis& a = config.axes[i];
-    try {
-      axes_.push_back(Axis{a, axes::PositionControlModel(a.control, t, p0),
-                           axes::AxisMonitor(a.monitor, t, static_cast<int>(i))});
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument("axis " + a.name + ": " + e.what());
-    }
-    state_.command[i] = p0;
-    state_.actual[i] = p0;
-  }
   // --- conveyor-sync: conveyor tracking on FCT_DLM channels
   if (config.conveyor) {
     sync_.emplace(*config.conveyor, config.sync_axes, t);
@@ -97,7 +84,8 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
   }
 }
 
-Status Channel::stop(const char* id, std::string message, const Cycle& c, int axis) noexcept {
+void raise(std::optional<RunTimeError>& error, const char* id, std::string message, const Cycle& c,
+           int axis) noexcept {
   try {
     RunTimeError e;
     e.id = id;
@@ -106,10 +94,14 @@ Status Channel::stop(const char* id, std::string message, const Cycle& c, int ax
     e.file = c.file;
     e.t = c.t;
     e.axis = axis;
-    error_ = std::move(e);
+    error = std::move(e);
   } catch (...) {
     std::abort();  // out of memory while reporting a run-time error: nothing sane is left
   }
+}
+
+Status Channel::stop(const char* id, std::string message, const Cycle& c, int axis) noexcept {
+  raise(error_, id, std::move(message), c, axis);
   return Status::error;
 }
 
@@ -123,22 +115,23 @@ bool Channel::map_to_axes(const Cycle& c) noexcept {
   belt_.following = false;  // --- conveyor: the audit's belt share (set below)
   if (stage_ && ipo::transformed(c, transformed_)) return map_joints(c);
   transformed_ = false;
+  std::array<axes::Setpoint, planner::kMaxAxes>& setpoint = axes_.setpoints();
   for (std::size_t i = 0; i < axes_.size(); ++i)
-    setpoint_[i] = axes::Setpoint{c.x[i], c.v[i], c.a[i], c.j[i]};
+    setpoint[i] = axes::Setpoint{c.x[i], c.v[i], c.a[i], c.j[i]};
   // --- conveyor-sync: the catch-up / departure drive the axes; PCS1 moves with the belt. After
   // one, the path stands where it ended (sync_hold_) until its next block moves.
   if (c.activity == Activity::motion) sync_hold_.reset();
   if (sync_hold_)
     for (std::size_t i = 0; i < axes_.size(); ++i)
-      setpoint_[i] = axes::Setpoint{(*sync_hold_)[i]};
+      setpoint[i] = axes::Setpoint{(*sync_hold_)[i]};
   if (sync_ && sync_->driving()) {
     for (std::size_t i = 0; i < axes_.size(); ++i)
-      setpoint_[i] = sync_->catch_up_setpoint(i);
+      setpoint[i] = sync_->catch_up_setpoint(i);
   } else if (sync_ && sync_->moving_frame()) {
     for (std::size_t i = 0; i < axes_.size(); ++i) {
-      setpoint_[i].p += sync_->offset(i);
-      setpoint_[i].v += sync_->offset_v(i);
-      setpoint_[i].a += sync_->offset_a(i);
+      setpoint[i].p += sync_->offset(i);
+      setpoint[i].v += sync_->offset_v(i);
+      setpoint[i].a += sync_->offset_a(i);
     }
   }
   if (sync_ && sync_->following()) {
@@ -151,97 +144,10 @@ bool Channel::map_to_axes(const Cycle& c) noexcept {
 }
 
 bool Channel::drive_axis(std::size_t i, const Cycle& c) noexcept {
-  Axis& a = axes_[i];
-  const axes::Setpoint& sp = setpoint_[i];
-  const int axis = static_cast<int>(i);
-  state_.command[i] = sp.p;
-  // Soft limits P-AXIS-00177 / 00178 on the command position, every cycle: the axis never
-  // receives a set position beyond them (an arc can cross a limit between its end points).
-  if (const auto alarm = axes::check_soft_limits(a.config.monitor.soft_limits, sp.p, axis, c.t)) {
-    const bool low = alarm->kind == axes::AlarmKind::soft_limit_min;
-    stop(alarm->id.data(),
-         "axis " + a.config.name +
-             text(low ? ": command position %.6g mm below the minimum soft position limit %.6g mm "
-                        "(P-AXIS-00177)"
-                      : ": command position %.6g mm above the maximum soft position limit %.6g mm "
-                        "(P-AXIS-00178)",
-                  sp.p, alarm->limit),
-         c, axis);
-    return false;
-  }
-  const axes::ActualValue act = a.control.step(sp);
-  state_.actual[i] = act.position;
-  state_.following_error[i] = act.following_error;
-  lag_max_[i] = std::max(lag_max_[i], std::fabs(act.following_error));
-  const bool waiting = in_exact_stop_ && ((moved_ >> i) & 1u) != 0;
-  axes::AxisSample s;
-  s.t = c.t;
-  s.command_position = sp.p;
-  s.actual_position = act.position;
-  s.motion_active = indp_.owned(i) ? !indp_.in_position(i)  // --- indp
-                                   : c.activity == Activity::motion && !waiting;
-  if (waiting) s.target = target_[i];
-  const auto alarm = a.monitor.step(s);
-  if (!alarm) return true;
-  std::string what;
-  switch (alarm->kind) {
-    case axes::AlarmKind::position_lag:
-      what = text(
-          ": position lag %.6g mm above the maximum %.6g mm for longer than the filter "
-          "time (NCSIM-AXIS-025 / 026)",
-          alarm->value, alarm->limit);
-      break;
-    case axes::AlarmKind::exact_stop_timeout:
-      what = text(
-                 ": exact stop window P-AXIS-00236 (%.6g mm) not reached within P-AXIS-00532 "
-                 "(%.6g s)",
-                 a.config.monitor.exact_stop.window, alarm->limit) +
-             text(", %.6g mm from the target after %.6g s", std::fabs(target_[i] - act.position),
-                  static_cast<double>(waited_) * ipo_.t_cycle());
-      break;
-    default:
-      what = ": " + axes::describe(*alarm);
-      break;
-  }
-  stop(alarm->id.data(), "axis " + a.config.name + what, c, axis);
-  return false;
-}
-
-bool Channel::exact_stop(const Cycle& c) noexcept {
-  bool all_in = true;
-  for (std::size_t i = 0; i < axes_.size(); ++i)
-    if (((moved_ >> i) & 1u) != 0 && !axes_[i].monitor.status().in_exact_stop_window)
-      all_in = false;
-  if (all_in) {
-    ipo_.release_exact_stop();
-    in_exact_stop_ = false;
-    return true;
-  }
-  if (c.activity == Activity::exact_stop) ++waited_;  // the stop cycle itself counts 0
-  const double waited = static_cast<double>(waited_) * ipo_.t_cycle();
-  if (waited_ > wait_cycles_max_) {
-    int worst = 0;
-    double worst_d = -1.0;
-    for (std::size_t i = 0; i < axes_.size(); ++i) {
-      const double d = std::fabs(target_[i] - state_.actual[i]);
-      if (((moved_ >> i) & 1u) != 0 && !axes_[i].monitor.status().in_exact_stop_window &&
-          d > worst_d) {
-        worst = static_cast<int>(i);
-        worst_d = d;
-      }
-    }
-    const std::size_t w = static_cast<std::size_t>(worst);
-    stop(kExactStopWaitId,
-         "axis " + axes_[w].config.name +
-             text(": exact stop window P-AXIS-00236 (%.6g mm) not reached, %.6g mm from the "
-                  "target",
-                  axes_[w].config.monitor.exact_stop.window, worst_d) +
-             text(" after %.6g s (P-AXIS-00532 does not monitor the time; ncsim's limit %.6g s)",
-                  waited, exact_stop_wait_max_),
-         c, worst);
-    return false;
-  }
-  return true;
+  const bool waiting = exact_stop_.waits_for(i);
+  const bool active =
+      indp_.owned(i) ? !indp_.in_position(i) : c.activity == Activity::motion && !waiting;
+  return axes_.drive(i, c, active, waiting, exact_stop_.target(i), exact_stop_.waited(), error_);
 }
 
 // --- operator: block starts and scenario actions (docs/scenario.md "When events fire")
@@ -382,28 +288,18 @@ Status Channel::step_program() noexcept {
   if (sync_ && !sync_check_workspace(c)) return Status::error;  // --- conveyor-sync
   // --- workspace: the hold against the conveying direction
   if (sync_ && !sync_workspace_cap(c)) return Status::error;
-  if (!in_exact_stop_ && ipo_.holding_exact_stop()) {
-    // The command reached the end of a G60 / G360 block in this cycle (001 l.149: t_1).
-    in_exact_stop_ = true;
-    waited_ = 0;
-    moved_ = 0;
-    for (std::size_t i = 0; i < axes_.size(); ++i)
-      target_[i] = setpoint_[i].p;  // --- trafo: the joints' end point under #TRAFO
-    if (const planner::Move* prog = c.programmed) {
-      for (std::size_t i = 0; i < axes_.size(); ++i) {
-        const bool moved = prog->end[i] != prog->start[i] ||
-                           (prog->arc && (prog->arc->axis_1 == i || prog->arc->axis_2 == i));
-        // --- trafo: every joint of a transformed block is waited for
-        if (moved || transformed_) moved_ |= 1u << i;
-      }
-    }
-  }
+  if (!exact_stop_.active() && ipo_.holding_exact_stop())
+    exact_stop_.begin(c, std::span(axes_.setpoints().data(), axes_.size()), transformed_);
   if (!indp_cycle(c)) return Status::error;  // --- indp
   for (std::size_t i = 0; i < axes_.size(); ++i) {
     driven_ = i + 1;  // --- workspace: a monitor's alarm comes after the axis's control step
     if (!drive_axis(i, c)) return Status::error;
   }
-  if (in_exact_stop_ && !exact_stop(c)) return Status::error;
+  if (exact_stop_.active()) {
+    bool release = false;
+    if (!exact_stop_.check(c, axes_, release, error_)) return Status::error;
+    if (release) ipo_.release_exact_stop();
+  }
   if (sink_) sink_->on_cycle(cycle());  // --- indp: with the INDP axes' setpoints
   return Status::running;
 }

@@ -65,6 +65,9 @@
 
 #include "axes/control.hpp"
 #include "axes/monitor.hpp"
+#include "channel/axis_stage.hpp"
+#include "channel/channel_types.hpp"
+#include "channel/exact_stop.hpp"
 #include "channel/indp_axes.hpp"
 #include "ipo/interpolator.hpp"
 #include "ipo/joint_stage.hpp"
@@ -77,60 +80,6 @@
 #include "tracking/sync_error.hpp"     // --- workspace
 
 namespace ncsim::ipo {
-
-/// NC6101: the exact-stop window P-AXIS-00236 was not reached within
-/// ChannelConfig::exact_stop_wait_max while P-AXIS-00532 does not monitor the time.
-inline constexpr const char* kExactStopWaitId = "NC6101";
-
-/// NC6102: a scenario's path override is above the largest the channel's override type
-/// (NCSIM-CHAN-630) accepts.
-inline constexpr const char* kOverrideRangeId = "NC6102";
-
-/// NC6301: the path stands by feed hold or override 0 and nothing in the scenario can release
-/// it (the run would never end). --- operator
-inline constexpr const char* kHeldForeverId = "NC6301";
-
-/// NC9081: the belt stood while the workspace hold kept the tool at the hold line for longer
-/// than ChannelConfig::measured_value_wait_max (the belt was not restarted). --- workspace
-inline constexpr const char* kHoldBeltStoodId = "NC9081";
-
-/// NC9054: #SYNC IN waited longer than ChannelConfig::measured_value_wait_max for its measured
-/// value (no workpiece edge latched).
-inline constexpr const char* kMeasuredValueWaitId = "NC9054";
-/// --- sync-trafo: #SYNC IN FEED_CONT > 0 / FEED_CONT_AUTO on a static processing unit
-/// (x_virtual): its feed follows the belt (004 l.438); docs/conveyor.md S-1.
-inline constexpr const char* kStaticFeedContId = "NC9060";
-/// NC9061: #MACHINE DATA of the conveyor's filters or delay time while the channel tracks the
-/// belt (catch-up or PCS1): the filters' restart would step the frame under the tool
-/// (docs/conveyor.md F-7).
-inline constexpr const char* kFilterWhileTrackingId = "NC9061";
-// --- indp:
-/// NC6103: the path programs an axis while its INDP motion runs or away from where it left it.
-inline constexpr const char* kIndpPathId = "NC6103";
-/// NC6105: a scenario axis override names no channel axis or is outside 0 .. 100 %.
-inline constexpr const char* kIndpOverrideId = "NC6105";
-
-/// A technology function the channel output (M/H/S/T/D, to the PLC side).
-struct TechOutput {
-  double t = 0.0;          ///< [s] end of the cycle in which it was output
-  std::uint32_t line = 0;  ///< source line
-  std::uint16_t file = 0;  ///< interp::Command::file (0: the main program)
-  interp::TechKind kind = interp::TechKind::m;
-  double value = 0.0;           ///< the function's number (M3 -> 3)
-  std::optional<double> extra;  ///< M/H additional value (M200=1200 -> 1200)
-};
-
-/// One interpolated axis as the channel drives it.
-struct ChannelAxis {
-  std::string name;                     ///< axis name (messages)
-  axes::PositionControlParams control;  ///< position control model (axes/control.hpp)
-  axes::AxisMonitorParams monitor;      ///< soft limits, lag, exact stop, ...
-  // --- indp:
-  IndpAxisConfig indp;  ///< the axis as an INDP axis (channel/indp_axes.hpp)
-  // --- static-saw: G74 (channel/channel_homing.cpp, docs/homing.md)
-  double reference_position = 0.0;  ///< P-AXIS-00152 pos_refpkt [mm | deg]
-  double homing_velocity = 83.333;  ///< P-AXIS-00219 vb_refmax [mm/s | deg/s]
-};
 
 struct ChannelConfig {
   Config path;                        ///< the interpolator's (detail and hold_exact_stop are set)
@@ -153,23 +102,6 @@ struct ChannelConfig {
 /// monitor parameters through axes/axis_config (the one machine -> axes adapter).
 ChannelConfig channel_config(const machines::Machine& machine, double t_cycle);
 
-/// A run-time error: the channel stopped as the kernel would (the axes and the path compound).
-struct RunTimeError {
-  std::string id;          ///< the manual's id (P-ERR-70082, 0x4550) or ncsim's (NC5501, NC6101)
-  std::string message;     ///< what happened, with the value and the limit
-  std::uint32_t line = 0;  ///< source line of the active block
-  std::uint16_t file = 0;  ///< source file of `line` (interp::Command::file, 0: main program)
-  double t = 0.0;          ///< [s] end of the cycle that raised it
-  int axis = -1;           ///< interpolated axis index
-};
-
-/// The axes after a cycle.
-struct AxesState {
-  AxisVec command{};          ///< set positions [mm | deg] (the mapped path point)
-  AxisVec actual{};           ///< measured actual positions [mm | deg]
-  AxisVec following_error{};  ///< set - actual [mm | deg] (000 7.1.5)
-};
-
 class Channel {
  public:
   /// Throws std::invalid_argument (value and parameter named) on an unusable configuration
@@ -185,7 +117,7 @@ class Channel {
   /// The path record of the last cycle step() reported (INDP axes: their setpoints).
   const Cycle& cycle() const noexcept { return shown_ ? *shown_ : ipo_.cycle(); }
   /// Command, actual position and following error of every axis after the last cycle.
-  const AxesState& axes() const noexcept { return state_; }
+  const AxesState& axes() const noexcept { return axes_.state(); }
   /// Why the channel stopped at run time, if it did.
   const std::optional<RunTimeError>& run_time_error() const noexcept { return error_; }
   /// --- trafo: the first joint overrun while synchronised under #TRAFO ON (warning NC6210,
@@ -196,7 +128,7 @@ class Channel {
   double t_cycle() const noexcept { return ipo_.t_cycle(); }  ///< [s]
   std::size_t axis_count() const noexcept { return axes_.size(); }
   /// Largest |following error| seen per axis so far [mm | deg].
-  const AxisVec& following_error_max() const noexcept { return lag_max_; }
+  const AxisVec& following_error_max() const noexcept { return axes_.following_error_max(); }
 
   /// Plays `player`'s scenario from the next cycle on (step 0); null: none. `player` must
   /// outlive the channel. The ProgramSource's barriers read player->ve() (the caller wires it:
@@ -220,7 +152,7 @@ class Channel {
   const planner::JointMap& forward() const noexcept { return forward_; }
   /// The setpoint (p, v, a, j) every axis received in the last cycle [mm | deg, /s ...].
   const std::array<axes::Setpoint, planner::kMaxAxes>& setpoints() const noexcept {
-    return setpoint_;
+    return axes_.setpoints();
   }
   /// --- conveyor: the belt's share of setpoints() in the last cycle (Audit::set_belt()).
   const BeltOffset& belt_share() const noexcept { return belt_; }
@@ -331,21 +263,14 @@ class Channel {
     bool seen_ = false;
   };
 
-  struct Axis {
-    ChannelAxis config;
-    axes::PositionControlModel control;
-    axes::AxisMonitor monitor;
-  };
-
   /// Step 2: the path point -> machine axis setpoints (identity, or the joint stage under
   /// #TRAFO); false when it raised a run-time error.
   bool map_to_axes(const Cycle& c) noexcept;
   /// --- trafo: step 2 under #TRAFO ON (channel_kinematics.cpp); false: run-time error.
   bool map_joints(const Cycle& c) noexcept;
-  /// Step 3 for axis i; false when it raised a run-time error.
+  /// Step 3 for axis i (AxisStage::drive with the exact stop's and the INDP axes' flags);
+  /// false when it raised a run-time error.
   bool drive_axis(std::size_t i, const Cycle& c) noexcept;
-  /// Step 4: the exact-stop wait.
-  bool exact_stop(const Cycle& c) noexcept;
   Status stop(const char* id, std::string message, const Cycle& c, int axis) noexcept;
   /// Step 0: the scenario's cycle; false when the run ends before it (stop or error).
   bool play_cycle(Status& status) noexcept;
@@ -457,18 +382,9 @@ class Channel {
   PathInterpolator ipo_;
   Source& source_;
   Sink* sink_ = nullptr;
-  std::vector<Axis> axes_;
-  double exact_stop_wait_max_ = 60.0;
-  std::uint64_t wait_cycles_max_ = 0;  ///< exact_stop_wait_max_ in cycles
-  AxesState state_;
-  std::array<axes::Setpoint, planner::kMaxAxes> setpoint_{};
-  BeltOffset belt_;  ///< --- conveyor: the belt's share of setpoint_ (map_to_axes)
-  AxisVec lag_max_{};
-  // Exact stop in progress: the block's moved axes and their targets.
-  bool in_exact_stop_ = false;
-  std::uint32_t moved_ = 0;  ///< bit i: axis i moved in the exact-stop block
-  AxisVec target_{};
-  std::uint64_t waited_ = 0;  ///< cycles waited at this exact stop
+  AxisStage axes_;
+  ExactStopWait exact_stop_;
+  BeltOffset belt_;  ///< --- conveyor: the belt's share of the setpoints (map_to_axes)
   std::optional<RunTimeError> error_;
   // Scenario (step 0).
   scenario::Player* player_ = nullptr;

@@ -35,7 +35,7 @@ bool Channel::sync_check_workspace(const Cycle& c) noexcept {
     if (const int k = sync_->xyz(i); k >= 0)
       p[k] = transformed_     ? tcp_[i].p            // --- trafo: the TCP under #TRAFO
              : indp_.owned(i) ? indp_.setpoint(i).p  // --- trafo-feed: the INDP axis's own
-                              : setpoint_[i].p;
+                              : axes_.setpoints()[i].p;
   try {
     if (auto e = sync_->workspace(p)) {
       stop(e->id.c_str(), std::move(e->message), c, -1);
@@ -119,7 +119,8 @@ Channel::EventOutcome Channel::on_sync_motion(const interp::Motion& motion,
   std::array<double, planner::kMaxAxes> target{};
   for (std::size_t i = 0; i < n; ++i) {
     // The command state at the end of the last cycle (the catch-up starts in the next one).
-    start[i] = axes::MotionState{state_.command[i], setpoint_[i].v, setpoint_[i].a};
+    start[i] =
+        axes::MotionState{axes_.state().command[i], axes_.setpoints()[i].v, axes_.setpoints()[i].a};
     // --- trafo: under #TRAFO ON the catch-up is a TCP motion (004 l.609)
     if (stage_ && transformed_) start[i] = axes::MotionState{tcp_[i].p, tcp_[i].v, tcp_[i].a};
     target[i] = motion.end[i];  // interpolated order, MCS at belt travel 0
@@ -149,7 +150,7 @@ Channel::EventOutcome Channel::on_sync_motion(const interp::Motion& motion,
   try {
     const int axis = sync_->catch_up().failed_axis();
     std::string what = catch_up ? "the catch-up after #SYNC IN" : "the departure after #SYNC OUT";
-    if (axis >= 0) what += " of axis " + axes_[static_cast<std::size_t>(axis)].config.name;
+    if (axis >= 0) what += " of axis " + axes_.config(static_cast<std::size_t>(axis)).name;
     return event_error(kCatchUpNotSynchronizableId,
                        what + ": " + std::string(axes::describe(r)) + " (" +
                            std::string(axes::diagnostic_id(r)) + ")",
@@ -165,7 +166,7 @@ bool Channel::sync_take_indp_axes() noexcept {
   for (std::size_t i = 0; i < axes_.size(); ++i) {
     if (!indp_.owned(i)) continue;
     if (indp_.in_position(i)) {
-      indp_.release(i);  // its setpoint (setpoint_[i]) is where the INDP motion left it
+      indp_.release(i);  // its setpoint (axes_.setpoints()[i]) is where the INDP motion left it
     } else if (!indp_.hand_over(i)) {
       ready = false;  // not INTERRUPTIBLE (or INDP_ASYN): the motion first ends in position
     }

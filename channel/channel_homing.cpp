@@ -31,7 +31,7 @@ Channel::EventOutcome Channel::on_homing(const interp::Homing& command,
                                          const ChannelEvent& e) noexcept {
   const auto channel_axis = [&](std::uint8_t machine_index) {
     std::size_t i = 0;
-    while (i < axes_.size() && axes_[i].config.indp.machine_index != machine_index)
+    while (i < axes_.size() && axes_.config(i).indp.machine_index != machine_index)
       ++i;
     return i;
   };
@@ -65,8 +65,8 @@ Channel::EventOutcome Channel::on_homing(const interp::Homing& command,
     if (order != next) continue;
     const std::size_t i = channel_axis(axis);
     IndpMove m;
-    m.target = axes_[i].config.reference_position;
-    m.feed = axes_[i].config.homing_velocity;
+    m.target = axes_.config(i).reference_position;
+    m.feed = axes_.config(i).homing_velocity;
     if (const auto err = indp_.command(i, m)) {
       homing_order_.reset();
       return event_error(err->id.c_str(), "G74: " + err->message, e);

@@ -28,7 +28,7 @@ bool Channel::indp_cycle(const Cycle& c) noexcept {
   // An axis the path drives: its INDP state follows the path's setpoint, so an INDP command
   // starts from where (and how fast) the axis is.
   for (std::size_t i = 0; i < axes_.size(); ++i)
-    if (((owned >> i) & 1u) == 0) indp_.follow(i, setpoint_[i]);
+    if (((owned >> i) & 1u) == 0) indp_.follow(i, axes_.setpoints()[i]);
   if (owned == 0) {
     shown_ = nullptr;
     return true;
@@ -47,7 +47,7 @@ bool Channel::indp_cycle(const Cycle& c) noexcept {
       const double p = indp_.setpoint(i).p;
       if (!indp_.in_position(i) || std::fabs(m.start[i] - p) > 1e-9 * std::max(1.0, std::fabs(p))) {
         stop(kIndpPathId,
-             "not supported: axis " + axes_[i].config.name +
+             "not supported: axis " + axes_.config(i).name +
                  " programmed as a path axis while its INDP motion " +
                  (indp_.in_position(i) ? "left it at " + number(p) + " (the block starts at " +
                                              number(m.start[i]) + ")"
@@ -57,7 +57,7 @@ bool Channel::indp_cycle(const Cycle& c) noexcept {
         return false;
       }
       indp_.release(i);
-      indp_.follow(i, setpoint_[i]);
+      indp_.follow(i, axes_.setpoints()[i]);
       owned &= ~(planner::AxisMask{1} << i);
     }
   }
@@ -66,7 +66,7 @@ bool Channel::indp_cycle(const Cycle& c) noexcept {
   for (std::size_t i = 0; i < axes_.size(); ++i) {
     if (((owned >> i) & 1u) == 0) continue;
     const axes::Setpoint& sp = indp_.setpoint(i);
-    setpoint_[i] = sp;
+    axes_.setpoints()[i] = sp;
     patched_.x[i] = sp.p;
     patched_.v[i] = sp.v;
     patched_.a[i] = sp.a;
@@ -80,7 +80,7 @@ std::optional<std::pair<const char*, std::string>> Channel::indp_override(
     const scenario::AxisOverride& o) noexcept {
   try {
     std::size_t i = 0;
-    while (i < axes_.size() && axes_[i].config.name != o.axis)
+    while (i < axes_.size() && axes_.config(i).name != o.axis)
       ++i;
     if (i == axes_.size())
       return std::pair{kIndpOverrideId,
@@ -101,7 +101,7 @@ std::optional<std::pair<const char*, std::string>> Channel::indp_override(
 Channel::EventOutcome Channel::indp_command(const interp::AxisCommand& c,
                                             const ChannelEvent& e) noexcept {
   std::size_t i = 0;
-  while (i < axes_.size() && axes_[i].config.indp.machine_index != c.axis)
+  while (i < axes_.size() && axes_.config(i).indp.machine_index != c.axis)
     ++i;
   if (i == axes_.size())
     return event_error(kNotSupportedId,
@@ -120,7 +120,7 @@ Channel::EventOutcome Channel::indp_command(const interp::AxisCommand& c,
                   std::fabs(sync_->frame().direction()[sync_->xyz(i)]) >= 1e-12));
   if (belt_moves || c.frame.kinematics)
     return event_error(kNotSupportedId,
-                       "not supported: INDP motion of axis " + axes_[i].config.name +
+                       "not supported: INDP motion of axis " + axes_.config(i).name +
                            (c.frame.kinematics ? " under #TRAFO ON" : " while synchronised (PCS1)"),
                        e);
   IndpMove m;
@@ -141,7 +141,7 @@ Channel::EventOutcome Channel::indp_wait(const interp::WaitIndp& w, const Channe
   // (isg-language.md 6.1): blocking until then, the path holding at the wait.
   planner::AxisMask mask = 0;
   for (std::size_t i = 0; i < axes_.size(); ++i)
-    if (w.axes == 0 || ((w.axes >> axes_[i].config.indp.machine_index) & 1u) != 0)
+    if (w.axes == 0 || ((w.axes >> axes_.config(i).indp.machine_index) & 1u) != 0)
       mask |= planner::AxisMask{1} << i;
   if (mask == 0) return EventOutcome::done;  // none of the named axes is a channel axis
   return indp_.in_position_mask(mask) ? EventOutcome::done : EventOutcome::blocking;

@@ -75,7 +75,7 @@ bool Channel::map_joints(const Cycle& c) noexcept {
   q_back1_ = s.q;
   joints_ = s;
   for (std::size_t i = 0; i < axes_.size(); ++i)
-    setpoint_[i] = axes::Setpoint{s.q[i], s.v[i], s.a[i], s.j[i]};
+    axes_.setpoints()[i] = axes::Setpoint{s.q[i], s.v[i], s.a[i], s.j[i]};
   return true;
 }
 
@@ -107,7 +107,7 @@ void Channel::trafo_sync_check(const Cycle& c, const JointSetpoint& s) noexcept 
   std::snprintf(text, sizeof text,
                 "joint %s: |%s| %.6g above its %.6g (%s) in %s under #TRAFO ON (004 l.609: the "
                 "joint dynamics are not ensured there; reduce the belt velocity or the feed)",
-                axes_[o->joint].config.name.c_str(), quantity, o->value, o->limit, limit, phase);
+                axes_.config(o->joint).name.c_str(), quantity, o->value, o->limit, limit, phase);
   try {
     RunTimeError w;
     w.id = kTrafoSyncOverrunId;

@@ -86,7 +86,7 @@ Status Channel::sync_error_cycle(bool fresh) noexcept {
   (void)sync_->step(c.t);
   if (!after_trafo_) map_to_axes(c);
   sync_error_indp_step(c);  // --- trafo-feed
-  std::span<axes::Setpoint> sp(setpoint_.data(), axes_.size());
+  std::span<axes::Setpoint> sp(axes_.setpoints().data(), axes_.size());
   bool end = false;
   if (after_trafo_) {  // --- sync-trafo: the TCP's stop and the joints from it
     if (!sync_error_trafo_step(c, end)) {
@@ -119,8 +119,8 @@ Status Channel::sync_error_cycle(bool fresh) noexcept {
   // not to get there; a machine already at its limit when the error came cannot follow at all.
   const std::size_t first = fresh ? 0 : driven_;
   for (std::size_t i = first; i < axes_.size(); ++i) {
-    const auto alarm = axes::check_soft_limits(axes_[i].config.monitor.soft_limits, setpoint_[i].p,
-                                               static_cast<int>(i), c.t);
+    const auto alarm = axes::check_soft_limits(axes_.config(i).monitor.soft_limits,
+                                               axes_.setpoints()[i].p, static_cast<int>(i), c.t);
     if (!alarm) continue;
     if (!fresh) {  // the error's own cycle: it ends the run as every error does (no note)
       error_ = std::move(sync_error_);
@@ -132,7 +132,7 @@ Status Channel::sync_error_cycle(bool fresh) noexcept {
       std::snprintf(buf, sizeof buf,
                     "; axis %s would have passed its soft limit %.6g mm at t=%.6g s: the run "
                     "ended there",
-                    axes_[i].config.name.c_str(), alarm->limit, c.t);
+                    axes_.config(i).name.c_str(), alarm->limit, c.t);
       after_passed_ = buf;
     } catch (...) {
       std::abort();
@@ -141,15 +141,8 @@ Status Channel::sync_error_cycle(bool fresh) noexcept {
     error_ = sync_error_;
     return Status::error;
   }
-  for (std::size_t i = first; i < axes_.size(); ++i) {
-    Axis& a = axes_[i];
-    const axes::Setpoint& s = setpoint_[i];
-    state_.command[i] = s.p;
-    const axes::ActualValue act = a.control.step(s);
-    state_.actual[i] = act.position;
-    state_.following_error[i] = act.following_error;
-    lag_max_[i] = std::max(lag_max_[i], std::fabs(act.following_error));
-  }
+  for (std::size_t i = first; i < axes_.size(); ++i)
+    axes_.follow(i);
   if (sink_) sink_->on_cycle(cycle());
   if (end) {
     after_end_t_ = c.t;
@@ -166,16 +159,16 @@ std::string Channel::after_error_note() const {
   std::string limit;
   if (after_.axis() >= 0) {
     const auto i = static_cast<std::size_t>(after_.axis());
-    axis = " axis " + axes_[i].config.name;
+    axis = " axis " + axes_.config(i).name;
     const AfterErrorAxis& l = after_.limits(i);
     if (after_.why() == AfterErrorEnd::soft_limit) {
-      const double p = setpoint_[i].p;
+      const double p = axes_.setpoints()[i].p;
       const bool up = l.soft.max_enabled &&
                       (!l.soft.min_enabled ||
                        std::fabs(l.soft.max_position - p) < std::fabs(p - l.soft.min_position));
       std::snprintf(buf, sizeof buf, " %.6g mm (%s), standing at %.6g mm",
                     up ? l.soft.max_position : l.soft.min_position,
-                    up ? "P-AXIS-00178" : "P-AXIS-00177", setpoint_[i].p);
+                    up ? "P-AXIS-00178" : "P-AXIS-00177", axes_.setpoints()[i].p);
       limit = buf;
     }
   }
@@ -186,7 +179,7 @@ std::string Channel::after_error_note() const {
                 limit.c_str(), after_end_t_);
   std::string indp;  // --- trafo-feed
   for (std::size_t i = 0; i < axes_.size(); ++i)
-    if ((after_indp_ >> i) & 1u) indp += (indp.empty() ? "" : ", ") + axes_[i].config.name;
+    if ((after_indp_ >> i) & 1u) indp += (indp.empty() ? "" : ", ") + axes_.config(i).name;
   if (!indp.empty()) indp = "; INDP axis " + indp + " braked on its own ramp";
   return std::string(buf) + indp + after_passed_;
 }

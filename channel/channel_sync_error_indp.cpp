@@ -52,7 +52,7 @@ void Channel::sync_error_indp_apply() noexcept {
   for (std::size_t i = 0; i < axes_.size(); ++i) {
     if (((after_indp_ >> i) & 1u) == 0) continue;
     const axes::Setpoint& sp = indp_.setpoint(i);
-    setpoint_[i] = sp;
+    axes_.setpoints()[i] = sp;
     after_cycle_.x[i] = sp.p;
     after_cycle_.v[i] = sp.v;
     after_cycle_.a[i] = sp.a;
@@ -63,8 +63,8 @@ void Channel::sync_error_indp_apply() noexcept {
 std::array<axes::Setpoint, planner::kMaxAxes> Channel::sync_error_path_axes() const noexcept {
   std::array<axes::Setpoint, planner::kMaxAxes> out{};
   for (std::size_t i = 0; i < axes_.size(); ++i) {
-    out[i] = setpoint_[i];
-    if ((after_indp_ >> i) & 1u) out[i] = axes::Setpoint{setpoint_[i].p, 0.0, 0.0, 0.0};
+    out[i] = axes_.setpoints()[i];
+    if ((after_indp_ >> i) & 1u) out[i] = axes::Setpoint{axes_.setpoints()[i].p, 0.0, 0.0, 0.0};
   }
   return out;
 }

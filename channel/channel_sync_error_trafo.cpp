@@ -86,7 +86,8 @@ bool Channel::sync_error_trafo_step(const Cycle& c, bool& end) noexcept {
       end = true;
     } else if (after_tcp_.must_stop(tcp, why, axis)) {
       after_tcp_.start_stopping(tcp, why, axis);  // this cycle as computed, braking from the next
-    } else if (after_.must_stop(std::span<const axes::Setpoint>(setpoint_.data(), n), why, axis)) {
+    } else if (after_.must_stop(std::span<const axes::Setpoint>(axes_.setpoints().data(), n), why,
+                                axis)) {
       after_joint_ = axis;
       after_joint_why_ = why;
       after_tcp_.start_stopping(tcp, why, -1);
@@ -105,7 +106,7 @@ bool Channel::sync_error_trafo_step(const Cycle& c, bool& end) noexcept {
   if (!stage_->step(x, v, a, j, s)) return false;
   joints_ = s;
   for (std::size_t i = 0; i < n; ++i)
-    setpoint_[i] = axes::Setpoint{s.q[i], s.v[i], s.a[i], s.j[i]};
+    axes_.setpoints()[i] = axes::Setpoint{s.q[i], s.v[i], s.a[i], s.j[i]};
   return true;
 }
 
@@ -115,7 +116,7 @@ std::string Channel::after_error_trafo_note() const {
   std::string what;
   if (after_joint_ >= 0) {
     const auto i = static_cast<std::size_t>(after_joint_);
-    std::snprintf(buf, sizeof buf, "the TCP braked: joint %s %s", axes_[i].config.name.c_str(),
+    std::snprintf(buf, sizeof buf, "the TCP braked: joint %s %s", axes_.config(i).name.c_str(),
                   after_joint_why_ == AfterErrorEnd::velocity
                       ? "would have exceeded its maximum velocity following the belt"
                       : "would have passed its soft limit");
