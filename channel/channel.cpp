@@ -47,21 +47,18 @@ const std::vector<ChannelAxis>& checked_axes(const ChannelConfig& config, std::s
 }  // namespace
 
 Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
-    : relay_(sink),
+    : kin_(config.path.joints, config.axes.size(), std::move(config.forward), sink),
       // Without a sink nobody reads the joints: the interpolator then does not compute them;
-      // --- trafo-checks: under a kinematic the channel reads them (NC6210's jerk stencil).
+      // under a kinematic the channel reads them (NC6210's jerk stencil).
       ipo_(prepared(config.path), source,
-           sink != nullptr || config.path.joints ? &relay_ : nullptr),
+           sink != nullptr || config.path.joints ? kin_.relay() : nullptr),
       source_(source),
       sink_(sink),
       axes_(checked_axes(config, ipo_.axis_count()), config.path.start, ipo_.t_cycle()),
       exact_stop_(config.exact_stop_wait_max, ipo_.t_cycle()),
       measured_value_wait_max_(config.measured_value_wait_max),
       indp_(indp_configs(config), ipo_.t_cycle(), config.path.start) {  // --- indp
-  // --- trafo: the joint stage maps the TCP to the machine axes under #TRAFO ON.
-  if (config.path.joints) stage_.emplace(config.path.joints->inverse, config.axes.size());
   conveyor_axis_ = config.conveyor_axis;  // what #MACHINE DATA changes (program/machine_data.hpp)
-  forward_ = std::move(config.forward);   // --- trafo: synchro_lag under #TRAFO ON
   const double t = ipo_.t_cycle();
   if (!(measured_value_wait_max_ > 0.0))
     throw std::invalid_argument("ipo::Channel: measured_value_wait_max must be > 0 s, got " +
@@ -106,21 +103,19 @@ Status Channel::stop(const char* id, std::string message, const Cycle& c, int ax
 }
 
 bool Channel::map_to_axes(const Cycle& c) noexcept {
-  // ---- The mapping path point -> machine axis setpoints. ----------------------------------
-  // Identity outside #TRAFO: the path is planned in machine axis values (MCS).
-  // The conveyor's moving PCS1 frame (issue 14) plugs in here: it turns c.x, c.v, c.a, c.j
-  // into the setpoints of the machine axes, which everything below drives and monitors.
-  // --- trafo: under #TRAFO ON the joint stage gives the joints (channel_kinematics.cpp).
-  // The PCS1 frame and the catch-up act on the TCP there, before the kinematic.
-  belt_.following = false;  // --- conveyor: the audit's belt share (set below)
-  if (stage_ && ipo::transformed(c, transformed_)) return map_joints(c);
-  transformed_ = false;
+  // Identity outside #TRAFO: the path is planned in machine axis values (MCS). The conveyor's
+  // moving PCS1 frame turns c.x, c.v, c.a, c.j into the setpoints of the machine axes, which
+  // everything after drives and monitors. Under #TRAFO ON the kinematic stage gives the joints;
+  // the PCS1 frame and the catch-up act on the TCP there, before the kinematic.
+  belt_.following = false;  // the audit's belt share (set below)
+  // Where a catch-up / departure left the path, it stands until its next block moves.
+  if (c.activity == Activity::motion) sync_hold_.reset();
+  if (kin_.decide(c))
+    return kin_.map(c, sync_hold_, sync_ ? &*sync_ : nullptr, ipo_.t_cycle(), axes_, error_);
   std::array<axes::Setpoint, planner::kMaxAxes>& setpoint = axes_.setpoints();
   for (std::size_t i = 0; i < axes_.size(); ++i)
     setpoint[i] = axes::Setpoint{c.x[i], c.v[i], c.a[i], c.j[i]};
-  // --- conveyor-sync: the catch-up / departure drive the axes; PCS1 moves with the belt. After
-  // one, the path stands where it ended (sync_hold_) until its next block moves.
-  if (c.activity == Activity::motion) sync_hold_.reset();
+  // The catch-up / departure drive the axes; PCS1 moves with the belt.
   if (sync_hold_)
     for (std::size_t i = 0; i < axes_.size(); ++i)
       setpoint[i] = axes::Setpoint{(*sync_hold_)[i]};
@@ -140,13 +135,12 @@ bool Channel::map_to_axes(const Cycle& c) noexcept {
     belt_.acceleration = sync_->belt_acceleration();
   }
   return true;
-  // ---- end of the mapping -----------------------------------------------------------------
 }
 
 bool Channel::drive_axis(std::size_t i, const Cycle& c) noexcept {
   const bool waiting = exact_stop_.waits_for(i);
-  const bool active =
-      indp_.owned(i) ? !indp_.in_position(i) : c.activity == Activity::motion && !waiting;
+  const bool active = indp_.axes().owned(i) ? !indp_.axes().in_position(i)
+                                            : c.activity == Activity::motion && !waiting;
   return axes_.drive(i, c, active, waiting, exact_stop_.target(i), exact_stop_.waited(), error_);
 }
 
@@ -184,7 +178,7 @@ std::optional<std::pair<const char*, std::string>> Channel::act(
                           "channel's override type (NCSIM-CHAN-630)",
                           o->fraction * 100.0, max * 100.0)};
   }
-  return indp_override(std::get<scenario::AxisOverride>(a));  // --- indp
+  return indp_.set_override(std::get<scenario::AxisOverride>(a), axes_);
 }
 
 bool Channel::play_cycle(Status& status) noexcept {
@@ -217,7 +211,7 @@ bool Channel::play_cycle(Status& status) noexcept {
 }
 
 Status Channel::step() noexcept {
-  tech_.clear();  // --- indp: the technology functions of this cycle
+  indp_.clear_tech();  // the technology functions of this cycle
   // --- workspace: after an error while synchronised the machine moves on (004 §2.3).
   if (sync_error_ && !error_) return sync_error_cycle(true);
   const std::uint64_t before = ipo_.cycle().index;
@@ -239,7 +233,7 @@ Status Channel::step_program() noexcept {
     const bool holding = ipo_.holding_channel();
     const bool done = run_events(holding ? wait_tag_ : ipo_.cycle().event_tag);
     if (error_) return Status::error;
-    if (done && holding && indp_syn_done()) ipo_.release_wait();  // --- indp: INDP_SYN axes
+    if (done && holding && indp_.syn_done(wait_interruptible_, axes_.size())) ipo_.release_wait();
   }
   static_override();  // --- static-saw: a synchronised static unit's path follows the belt
   Status s = ipo_.step();
@@ -248,7 +242,8 @@ Status Channel::step_program() noexcept {
     run_events(~std::uint32_t{0});  // none left: ProgramSource ends with a ChannelWait
     if (error_) s = Status::error;
   }
-  if (s == Status::finished && !indp_.in_position_mask(0))  // --- indp: the end waits for them
+  if (s == Status::finished &&
+      !indp_.axes().in_position_mask(0))  // --- indp: the end waits for them
     return indp_tail();
   if (s != Status::running) {
     ended_ = s;
@@ -289,8 +284,8 @@ Status Channel::step_program() noexcept {
   // --- workspace: the hold against the conveying direction
   if (sync_ && !sync_workspace_cap(c)) return Status::error;
   if (!exact_stop_.active() && ipo_.holding_exact_stop())
-    exact_stop_.begin(c, std::span(axes_.setpoints().data(), axes_.size()), transformed_);
-  if (!indp_cycle(c)) return Status::error;  // --- indp
+    exact_stop_.begin(c, std::span(axes_.setpoints().data(), axes_.size()), kin_.transformed());
+  if (!indp_.step(c, axes_, shown_, error_)) return Status::error;
   for (std::size_t i = 0; i < axes_.size(); ++i) {
     driven_ = i + 1;  // --- workspace: a monitor's alarm comes after the axis's control step
     if (!drive_axis(i, c)) return Status::error;
@@ -301,6 +296,16 @@ Status Channel::step_program() noexcept {
     if (release) ipo_.release_exact_stop();
   }
   if (sink_) sink_->on_cycle(cycle());  // --- indp: with the INDP axes' setpoints
+  return Status::running;
+}
+
+Status Channel::indp_tail() noexcept {
+  const Cycle& c = indp_.tail(ipo_.cycle(), ipo_.t_cycle());
+  map_to_axes(c);
+  if (!indp_.step(c, axes_, shown_, error_)) return Status::error;
+  for (std::size_t i = 0; i < axes_.size(); ++i)
+    if (!drive_axis(i, c)) return Status::error;
+  if (sink_) sink_->on_cycle(cycle());
   return Status::running;
 }
 

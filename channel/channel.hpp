@@ -67,8 +67,12 @@
 #include "axes/monitor.hpp"
 #include "channel/axis_stage.hpp"
 #include "channel/channel_types.hpp"
+#include "channel/event_context.hpp"
 #include "channel/exact_stop.hpp"
+#include "channel/homing.hpp"
 #include "channel/indp_axes.hpp"
+#include "channel/indp_stage.hpp"
+#include "channel/kinematic_stage.hpp"
 #include "ipo/interpolator.hpp"
 #include "ipo/joint_stage.hpp"
 #include "machines/machine.hpp"
@@ -122,7 +126,7 @@ class Channel {
   const std::optional<RunTimeError>& run_time_error() const noexcept { return error_; }
   /// --- trafo: the first joint overrun while synchronised under #TRAFO ON (warning NC6210,
   /// tracking/trafo_sync.hpp); the run goes on (004 l.609: the joint dynamics are not ensured).
-  const std::optional<RunTimeError>& trafo_warning() const noexcept { return trafo_warning_; }
+  const std::optional<RunTimeError>& trafo_warning() const noexcept { return kin_.warning(); }
   /// The interpolator's message when the source failed.
   const std::string& message() const noexcept { return ipo_.message(); }
   double t_cycle() const noexcept { return ipo_.t_cycle(); }  ///< [s]
@@ -142,14 +146,14 @@ class Channel {
 
   // --- trafo: kinematics (channel_kinematics.cpp, docs/ipo.md "Kinematics in run and time")
   /// The last cycle ran under #TRAFO ON: cycle().x is the TCP, the axes got joints().
-  bool transformed() const noexcept { return transformed_; }
+  bool transformed() const noexcept { return kin_.transformed(); }
   /// The joint setpoints of the last transformed cycle (machine axes in interpolated order).
-  const JointSetpoint& joints() const noexcept { return joints_; }
+  const JointSetpoint& joints() const noexcept { return kin_.joints(); }
   /// The TCP setpoint of the last transformed cycle, in MCS (X, Y, Z first; the PCS1 offset
   /// and the catch-up included): what the joints() were computed from [mm, mm/s, ...].
-  const std::array<axes::Setpoint, planner::kMaxAxes>& tcp() const noexcept { return tcp_; }
+  const std::array<axes::Setpoint, planner::kMaxAxes>& tcp() const noexcept { return kin_.tcp(); }
   /// --- trafo-checks: ChannelConfig::forward (joints -> TCP; empty without a kinematic).
-  const planner::JointMap& forward() const noexcept { return forward_; }
+  const planner::JointMap& forward() const noexcept { return kin_.forward(); }
   /// The setpoint (p, v, a, j) every axis received in the last cycle [mm | deg, /s ...].
   const std::array<axes::Setpoint, planner::kMaxAxes>& setpoints() const noexcept {
     return axes_.setpoints();
@@ -172,11 +176,11 @@ class Channel {
   // --- indp: independent axes (channel/channel_indp.cpp, docs/ipo.md "INDP axes and technology
   // functions"). Conveyor tracking takes an INTERRUPTIBLE INDP_SYN motion over, moving, when
   // the catch-up after the next #SYNC IN starts (IndpAxes::hand_over, docs/conveyor.md S-4).
-  IndpAxes& indp() noexcept { return indp_; }
-  const IndpAxes& indp() const noexcept { return indp_; }
+  IndpAxes& indp() noexcept { return indp_.axes(); }
+  const IndpAxes& indp() const noexcept { return indp_.axes(); }
   /// The technology functions (M/H/S/T/D) the channel output in the last step(), in program
   /// order (`run` writes them as CSV comments; docs/ipo.md "INDP axes and technology functions").
-  const std::vector<TechOutput>& tech_outputs() const noexcept { return tech_; }
+  const std::vector<TechOutput>& tech_outputs() const noexcept { return indp_.tech_outputs(); }
   // --- workspace: an error while synchronised keeps the synchronisation (seed 004 §2.3,
   // tracking/sync_error.hpp, channel/channel_sync_error.cpp, docs/conveyor.md "Errors while
   // synchronised"): the run goes on until the machine stands, then ends with that error.
@@ -184,12 +188,6 @@ class Channel {
   std::string after_error_note() const;
 
  private:
-  /// What executing a channel event gave (channel/channel_events.cpp).
-  enum class EventOutcome : std::uint8_t {
-    done,      ///< executed; the next event may follow
-    blocking,  ///< not done yet: dispatched again next cycle, the path holds meanwhile
-    error,     ///< a run-time error was raised (error_)
-  };
   /// Hands the interpolator's ChannelWait to the channel.
   class WaitRelay final : public WaitHandler {
    public:
@@ -211,10 +209,6 @@ class Channel {
   // --- conveyor-sync: the conveyor events (channel/channel_conveyor.cpp)
   EventOutcome on_sync_in(const interp::SyncIn& command, const ChannelEvent& e) noexcept;
   EventOutcome on_sync_out(const interp::SyncOut& command, const ChannelEvent& e) noexcept;
-  /// --- sync-feed: hands the INDP axes to the catch-up / departure starting now: in position
-  /// ones released, INTERRUPTIBLE INDP_SYN ones taken over moving; false while another INDP
-  /// motion still runs (the motion event waits for it).
-  bool sync_take_indp_axes() noexcept;
   /// --- sync-feed: the channel moves with the conveyor (catch-up or PCS1 tracking).
   bool sync_tracking() const noexcept {
     return sync_ &&
@@ -244,30 +238,9 @@ class Channel {
   /// passed to the Port with the path standing (isg-language.md §5.10).
   EventOutcome on_machine_data(const interp::MachineData& command, const ChannelEvent& e) noexcept;
   std::optional<machines::ConveyorAxisParams> conveyor_axis_;  ///< as changed so far
-  /// Passes the interpolator's joints on at once; cycles are passed on by step().
-  /// --- trafo-checks: notes that a joint passed (a documented path step: NC6210's jerk
-  /// stencil leaves it out, as the audit's does).
-  class JointRelay final : public Sink {
-   public:
-    explicit JointRelay(Sink* sink) : sink_(sink) {}
-    void on_joint(const Joint& joint) override {
-      seen_ = true;
-      if (sink_) sink_->on_joint(joint);
-    }
-    void on_cycle(const Cycle&) override {}
-    /// A joint passed since the last call.
-    bool take_seen() noexcept { return std::exchange(seen_, false); }
-
-   private:
-    Sink* sink_;
-    bool seen_ = false;
-  };
-
   /// Step 2: the path point -> machine axis setpoints (identity, or the joint stage under
   /// #TRAFO); false when it raised a run-time error.
   bool map_to_axes(const Cycle& c) noexcept;
-  /// --- trafo: step 2 under #TRAFO ON (channel_kinematics.cpp); false: run-time error.
-  bool map_joints(const Cycle& c) noexcept;
   /// Step 3 for axis i (AxisStage::drive with the exact stop's and the INDP axes' flags);
   /// false when it raised a run-time error.
   bool drive_axis(std::size_t i, const Cycle& c) noexcept;
@@ -282,10 +255,7 @@ class Channel {
   /// velocity over the planned kXvPlanFactor * CONV_VEL, so the virtual X follows the belt;
   /// the operator's override is restored after #SYNC OUT.
   void static_override() noexcept;
-  bool static_unit_ = false;  ///< P-CHAN-00364 x_virtual
-  /// G74: each order's axes drive to P-AXIS-00152 as INDP motions (channel/channel_homing.cpp).
-  EventOutcome on_homing(const interp::Homing& command, const ChannelEvent& e) noexcept;
-  std::optional<int> homing_order_;          ///< the order number homing now; empty: none started
+  bool static_unit_ = false;                 ///< P-CHAN-00364 x_virtual
   std::optional<double> operator_override_;  ///< the override before the static unit took it
   /// --- workspace: gives the interpolator the hold's path velocity cap (channel_workspace.cpp);
   /// false: NC9081 (the belt stood under the hold longer than ncsim's wait limit).
@@ -330,7 +300,7 @@ class Channel {
   // its own deceleration ramp while the path axes follow the belt (docs/conveyor.md).
   /// Stops the owned INDP axes; false: not built (INDP axes under #TRAFO ON), the run ends.
   bool sync_error_indp_begin() noexcept;
-  /// Steps the INDP axes once for cycle `c` (unless indp_cycle() did) and applies them.
+  /// Steps the INDP axes once for cycle `c` (unless IndpStage::step() did) and applies them.
   void sync_error_indp_step(const Cycle& c) noexcept;
   /// Their setpoints into setpoint_ and the shown cycle (after SyncErrorStop wrote all axes).
   void sync_error_indp_apply() noexcept;
@@ -338,8 +308,7 @@ class Channel {
   std::array<axes::Setpoint, planner::kMaxAxes> sync_error_path_axes() const noexcept;
   /// Every INDP axis braked at the error stands.
   bool sync_error_indp_stood() const noexcept;
-  planner::AxisMask after_indp_ = 0;                ///< the INDP axes owned at the error
-  std::uint64_t indp_stepped_ = ~std::uint64_t{0};  ///< the cycle indp_.step() last ran for
+  planner::AxisMask after_indp_ = 0;  ///< the INDP axes owned at the error
   // --- trafo-feed: end
   std::size_t driven_ = 0;  ///< axes driven in the cycle being computed (step 3)
   // --- workspace: end
@@ -362,22 +331,10 @@ class Channel {
   /// raises, if any.
   std::optional<std::pair<const char*, std::string>> act(const scenario::Action& a) noexcept;
   // --- indp: (channel/channel_indp.cpp)
-  /// After step 2: advances the INDP axes and gives each axis they own its INDP setpoint;
-  /// false when a run-time error stopped the channel (NC6103).
-  bool indp_cycle(const Cycle& c) noexcept;
-  /// A scenario axis override: the run-time error (NC6105) it raises, if any.
-  std::optional<std::pair<const char*, std::string>> indp_override(
-      const scenario::AxisOverride& o) noexcept;
-  /// Event handlers: X[INDP_SYN / INDP_ASYN ...], #WAIT INDP, M/H/S/T/D.
-  EventOutcome indp_command(const interp::AxisCommand& c, const ChannelEvent& e) noexcept;
-  EventOutcome indp_wait(const interp::WaitIndp& w, const ChannelEvent& e) noexcept;
-  EventOutcome indp_tech(const interp::Tech& t, const ChannelEvent& e) noexcept;
-  /// True when every INDP_SYN motion started is in position (the next block may start).
-  bool indp_syn_done() noexcept;
   /// A cycle after the path's end while INDP axes still move (the program end waits for them).
   Status indp_tail() noexcept;
 
-  JointRelay relay_;
+  KinematicStage kin_;  ///< #TRAFO ON: the joint stage (declared before ipo_: its relay)
   WaitRelay wait_relay_{*this};
   PathInterpolator ipo_;
   Source& source_;
@@ -397,38 +354,8 @@ class Channel {
   std::uint32_t wait_tag_ = 0;           ///< tag of the ChannelWait the path holds at
   bool wait_interruptible_ = false;      ///< --- sync-feed: ChannelWait::interruptible of that wait
   ChannelEvent event_;                   ///< scratch: the event being taken
-  // --- trafo: the joint stage (Config::joints) and the state of the last cycle.
-  std::optional<JointStage> stage_;
-  bool transformed_ = false;
-  JointSetpoint joints_{};
-  /// The TCP setpoint of the last cycle under #TRAFO ON (PCS1 offset, catch-up included).
-  std::array<axes::Setpoint, planner::kMaxAxes> tcp_{};
-  planner::JointMap forward_;                  ///< ChannelConfig::forward
-  std::optional<RunTimeError> trafo_warning_;  ///< the first NC6210 of the run
-  /// The joint positions of the three cycles before (q at index - 1, - 2, - 3) and how many of
-  /// them are of consecutive transformed cycles: NC6210 checks the setpoints' differences.
-  AxisVec q_back1_{}, q_back2_{}, q_back3_{};
-  std::uint64_t q_index_ = 0;
-  int q_known_ = 0;
-  /// --- trafo-checks: this cycle and the two before were jerk-limited (Cycle::
-  /// interval_jerk_limited) and passed no path joint: the third difference is checked.
-  std::array<bool, 3> q_plain_{false, false, false};
-  /// The catch-up / departure under #TRAFO ON: the TCP's dynamics from the joints
-  /// (tracking/trafo_sync); false: the plan failed (`r` holds why). channel_kinematics.cpp.
-  /// --- trafo-feed: `feed_cont` [mm/s] the catch-up's relative velocity at the meeting (S-1).
-  bool trafo_sync_motion(bool catch_up, std::span<const axes::MotionState> start,
-                         std::span<const double> target, double feed_cont,
-                         axes::Result& r) noexcept;
-  /// Checks the joints of a synchronised cycle under #TRAFO ON (NC6210 warning).
-  void trafo_sync_check(const Cycle& c, const JointSetpoint& s) noexcept;
-  /// The joint setpoints' v and a by differences over this cycle and the two before (what the
-  /// drives get and the audit measures); false until two consecutive transformed cycles ran.
-  /// --- trafo-checks: `jerk` true: out.j holds the third difference (three consecutive
-  /// transformed cycles before, the stencil plain: q_plain_).
-  bool joint_differences(const Cycle& c, const JointSetpoint& s, JointSetpoint& out,
-                         bool& jerk) const noexcept;
-  std::optional<ConveyorSync> sync_;           ///< --- conveyor-sync: with FCT_DLM only
-  conveyor::Port* port_ = nullptr;             ///< the attached conveyor world (reduced filter)
+  std::optional<ConveyorSync> sync_;     ///< --- conveyor-sync: with FCT_DLM only
+  conveyor::Port* port_ = nullptr;       ///< the attached conveyor world (reduced filter)
   double measured_value_wait_max_ = 600.0;     ///< ChannelConfig::measured_value_wait_max [s]
   std::uint64_t measure_wait_cycles_max_ = 0;  ///< the same in cycles
   std::uint64_t measure_waited_ = 0;           ///< cycles #SYNC IN waited so far
@@ -436,14 +363,9 @@ class Channel {
   std::uint32_t sync_tag_ = 0;      ///< --- conveyor-sync: the event being executed
   /// --- conveyor-sync: where the path stands after a catch-up / departure until it moves.
   std::optional<AxisVec> sync_hold_;
-  // --- indp:
-  IndpAxes indp_;
-  Cycle patched_;                 ///< the cycle with the INDP axes' setpoints
-  const Cycle* shown_ = nullptr;  ///< &patched_ while INDP axes are owned, else null
-  planner::AxisMask syn_ = 0;     ///< axes of INDP_SYN motions the path waits for
-  std::vector<TechOutput> tech_;  ///< technology functions output in this step
-  Cycle tail_;                    ///< the last cycle, then the cycles after the path's end
-  bool in_tail_ = false;          ///< the path has ended, INDP axes still move
+  HomingSequence homing_;         ///< G74
+  IndpStage indp_;                ///< INDP axes and technology outputs
+  const Cycle* shown_ = nullptr;  ///< the cycle shown instead of the path's (INDP, after error)
 };
 
 }  // namespace ncsim::ipo

@@ -33,9 +33,10 @@ bool Channel::sync_check_workspace(const Cycle& c) noexcept {
   Eigen::Vector3d p = Eigen::Vector3d::Zero();
   for (std::size_t i = 0; i < axes_.size(); ++i)
     if (const int k = sync_->xyz(i); k >= 0)
-      p[k] = transformed_     ? tcp_[i].p            // --- trafo: the TCP under #TRAFO
-             : indp_.owned(i) ? indp_.setpoint(i).p  // --- trafo-feed: the INDP axis's own
-                              : axes_.setpoints()[i].p;
+      p[k] = kin_.transformed() ? kin_.tcp()[i].p  // --- trafo: the TCP under #TRAFO
+             : indp_.axes().owned(i)
+                 ? indp_.axes().setpoint(i).p  // --- trafo-feed: the INDP axis's own
+                 : axes_.setpoints()[i].p;
   try {
     if (auto e = sync_->workspace(p)) {
       stop(e->id.c_str(), std::move(e->message), c, -1);
@@ -47,8 +48,7 @@ bool Channel::sync_check_workspace(const Cycle& c) noexcept {
   return true;
 }
 
-Channel::EventOutcome Channel::on_sync_in(const interp::SyncIn& command,
-                                          const ChannelEvent& e) noexcept {
+EventOutcome Channel::on_sync_in(const interp::SyncIn& command, const ChannelEvent& e) noexcept {
   try {
     if (!sync_ || sync_->port() == nullptr)
       return event_error(kNotSupportedId, std::string("not supported: #SYNC IN") + kNeedsWorld, e);
@@ -85,8 +85,7 @@ Channel::EventOutcome Channel::on_sync_in(const interp::SyncIn& command,
   }
 }
 
-Channel::EventOutcome Channel::on_sync_out(const interp::SyncOut& command,
-                                           const ChannelEvent& e) noexcept {
+EventOutcome Channel::on_sync_out(const interp::SyncOut& command, const ChannelEvent& e) noexcept {
   try {
     if (!sync_ || sync_->port() == nullptr)
       return event_error(kNotSupportedId, std::string("not supported: #SYNC OUT") + kNeedsWorld, e);
@@ -101,8 +100,7 @@ Channel::EventOutcome Channel::on_sync_out(const interp::SyncOut& command,
   return EventOutcome::done;
 }
 
-Channel::EventOutcome Channel::on_sync_motion(const interp::Motion& motion,
-                                              const ChannelEvent& e) noexcept {
+EventOutcome Channel::on_sync_motion(const interp::Motion& motion, const ChannelEvent& e) noexcept {
   if (!sync_) {
     return event_error(kNotSupportedId, "not supported: a synchronisation motion without FCT_DLM",
                        e);
@@ -112,7 +110,7 @@ Channel::EventOutcome Channel::on_sync_motion(const interp::Motion& motion,
     return sync_->driving() ? EventOutcome::blocking : EventOutcome::done;
   }
   // --- sync-feed: the INDP axes go to the catch-up / departure (docs/conveyor.md S-4).
-  if (!sync_take_indp_axes()) return EventOutcome::blocking;
+  if (!indp_.hand_over(axes_.size())) return EventOutcome::blocking;
   sync_tag_ = e.tag;
   const std::size_t n = axes_.size();
   std::array<axes::MotionState, planner::kMaxAxes> start{};
@@ -122,7 +120,8 @@ Channel::EventOutcome Channel::on_sync_motion(const interp::Motion& motion,
     start[i] =
         axes::MotionState{axes_.state().command[i], axes_.setpoints()[i].v, axes_.setpoints()[i].a};
     // --- trafo: under #TRAFO ON the catch-up is a TCP motion (004 l.609)
-    if (stage_ && transformed_) start[i] = axes::MotionState{tcp_[i].p, tcp_[i].v, tcp_[i].a};
+    if (kin_.transformed())
+      start[i] = axes::MotionState{kin_.tcp()[i].p, kin_.tcp()[i].v, kin_.tcp()[i].a};
     target[i] = motion.end[i];  // interpolated order, MCS at belt travel 0
   }
   const bool catch_up = sync_->phase() == SyncPhase::latched;
@@ -132,8 +131,9 @@ Channel::EventOutcome Channel::on_sync_motion(const interp::Motion& motion,
   const double f =
       moving ? sync_entry_velocity(std::span(start.data(), n), std::span(target.data(), n)) : 0.0;
   axes::Result r = axes::Result::ok;
-  if (stage_ && transformed_) {  // --- trafo
-    trafo_sync_motion(catch_up, std::span(start.data(), n), std::span(target.data(), n), f, r);
+  if (kin_.transformed()) {  // --- trafo
+    kin_.plan_sync_motion(*sync_, catch_up, std::span(start.data(), n), std::span(target.data(), n),
+                          f, r);
   } else {
     r = catch_up ? sync_->start_catch_up(std::span(start.data(), n), std::span(target.data(), n), f)
                  : sync_->start_departure(std::span(start.data(), n), std::span(target.data(), n));
@@ -160,22 +160,8 @@ Channel::EventOutcome Channel::on_sync_motion(const interp::Motion& motion,
   }
 }
 
-// --- sync-feed: the on-the-fly change (004 l.277-279, docs/conveyor.md S-4).
-bool Channel::sync_take_indp_axes() noexcept {
-  bool ready = true;
-  for (std::size_t i = 0; i < axes_.size(); ++i) {
-    if (!indp_.owned(i)) continue;
-    if (indp_.in_position(i)) {
-      indp_.release(i);  // its setpoint (axes_.setpoints()[i]) is where the INDP motion left it
-    } else if (!indp_.hand_over(i)) {
-      ready = false;  // not INTERRUPTIBLE (or INDP_ASYN): the motion first ends in position
-    }
-  }
-  return ready;
-}
-
-Channel::EventOutcome Channel::on_probe_arm(const interp::ProbeArm& command,
-                                            const ChannelEvent& e) noexcept {
+EventOutcome Channel::on_probe_arm(const interp::ProbeArm& command,
+                                   const ChannelEvent& e) noexcept {
   if (!sync_ || sync_->port() == nullptr) {
     try {
       return event_error(kNotSupportedId, std::string("not supported: MC_TouchProbe") + kNeedsWorld,
@@ -188,8 +174,8 @@ Channel::EventOutcome Channel::on_probe_arm(const interp::ProbeArm& command,
   return port_outcome(e);
 }
 
-Channel::EventOutcome Channel::on_move_velocity(const interp::MoveVelocity& command,
-                                                const ChannelEvent& e) noexcept {
+EventOutcome Channel::on_move_velocity(const interp::MoveVelocity& command,
+                                       const ChannelEvent& e) noexcept {
   if (!sync_ || sync_->port() == nullptr) {
     try {
       return event_error(kNotSupportedId,
@@ -203,7 +189,7 @@ Channel::EventOutcome Channel::on_move_velocity(const interp::MoveVelocity& comm
   return port_outcome(e);
 }
 
-Channel::EventOutcome Channel::port_outcome(const ChannelEvent& e) noexcept {
+EventOutcome Channel::port_outcome(const ChannelEvent& e) noexcept {
   const auto& err = sync_->port()->error();
   if (!err) return EventOutcome::done;
   try {
@@ -213,8 +199,8 @@ Channel::EventOutcome Channel::port_outcome(const ChannelEvent& e) noexcept {
   }
 }
 
-Channel::EventOutcome Channel::on_machine_data(const interp::MachineData& command,
-                                               const ChannelEvent& e) noexcept {
+EventOutcome Channel::on_machine_data(const interp::MachineData& command,
+                                      const ChannelEvent& e) noexcept {
   try {
     // ProgramSource let only the conveyor axis's filter parameters through (machine_data.hpp).
     if (!sync_ || sync_->port() == nullptr || !conveyor_axis_)

@@ -14,8 +14,8 @@
 
 namespace ncsim::ipo {
 
-Channel::EventOutcome Channel::event_error(const char* id, std::string message,
-                                           const ChannelEvent& e) noexcept {
+EventOutcome Channel::event_error(const char* id, std::string message,
+                                  const ChannelEvent& e) noexcept {
   Cycle at = ipo_.cycle();
   at.line = e.line;
   at.file = e.file;
@@ -24,17 +24,18 @@ Channel::EventOutcome Channel::event_error(const char* id, std::string message,
   return EventOutcome::error;
 }
 
-Channel::EventOutcome Channel::dispatch(const ChannelEvent& e) noexcept {
+EventOutcome Channel::dispatch(const ChannelEvent& e) noexcept {
   return std::visit(
       [&](const auto& body) -> EventOutcome {
         using T = std::decay_t<decltype(body)>;
         // --- indp: M/H/S/T/D, #WAIT INDP, INDP (channel/channel_indp.cpp)
         if constexpr (std::is_same_v<T, interp::Tech>) {
-          return indp_tech(body, e);
+          return indp_.tech(body, EventContext(e, ipo_, error_));
         } else if constexpr (std::is_same_v<T, interp::WaitIndp>) {
-          return indp_wait(body, e);
+          return indp_.wait(body, axes_);
         } else if constexpr (std::is_same_v<T, interp::AxisCommand>) {
-          return indp_command(body, e);
+          return indp_.command(body, axes_, sync_ ? &*sync_ : nullptr,
+                               EventContext(e, ipo_, error_));
         } else if constexpr (std::is_same_v<T, interp::Motion>) {  // --- conveyor-sync
           return on_sync_motion(body, e);
         } else if constexpr (std::is_same_v<T, interp::MoveVelocity>) {  // --- conveyor-sync
@@ -46,7 +47,7 @@ Channel::EventOutcome Channel::dispatch(const ChannelEvent& e) noexcept {
         } else if constexpr (std::is_same_v<T, interp::SyncOut>) {  // --- conveyor-sync
           return on_sync_out(body, e);
         } else if constexpr (std::is_same_v<T, interp::Homing>) {  // --- static-saw: G74
-          return on_homing(body, e);
+          return homing_.step(body, axes_, indp_.axes(), EventContext(e, ipo_, error_));
         } else if constexpr (std::is_same_v<T, interp::MachineData>) {
           return on_machine_data(body, e);
         } else {
@@ -80,8 +81,8 @@ bool Channel::run_events(std::uint32_t up_to) noexcept {
 bool Channel::on_wait(const ChannelWait& wait) noexcept {
   if (sync_error_) return false;  // --- workspace: after the error nothing more is executed
   wait_tag_ = wait.tag;
-  wait_interruptible_ = wait.interruptible;                     // --- sync-feed
-  return !blocked_ && run_events(wait.tag) && indp_syn_done();  // --- indp: INDP_SYN axes
+  wait_interruptible_ = wait.interruptible;  // --- sync-feed
+  return !blocked_ && run_events(wait.tag) && indp_.syn_done(wait_interruptible_, axes_.size());
 }
 
 }  // namespace ncsim::ipo

@@ -12,7 +12,7 @@ MasterDisplay Channel::master_display() const noexcept {
   const std::size_t n = axes_.size();
   if (const auto lag = cycle_lag(*sync_, std::span<const double>(axes_.state().command.data(), n),
                                  std::span<const double>(axes_.state().actual.data(), n),
-                                 transformed_, &tcp_, forward_))
+                                 kin_.transformed(), &kin_.tcp(), kin_.forward()))
     d.synchro_lag = *lag;
   return d;
 }

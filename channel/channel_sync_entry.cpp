@@ -28,14 +28,14 @@ double Channel::sync_entry_velocity(std::span<const axes::MotionState> start,
   return sync_entry_.v;
 }
 
-Channel::EventOutcome Channel::sync_hand_over(double lag, const ChannelEvent& e) noexcept {
+EventOutcome Channel::sync_hand_over(double lag, const ChannelEvent& e) noexcept {
   const planner::PreparedSegment* first = ipo_.next_segment();
   if (first == nullptr) return EventOutcome::done;  // v_relative() > 0 only with a block ahead
   const double v = ipo_.start_moving(sync_->v_relative(), lag);
   // --- trafo-checks: through the relay, which notes it for NC6210's jerk stencil.
-  if (sink_ != nullptr || stage_) {
+  if (sink_ != nullptr || kin_.configured()) {
     try {
-      relay_.on_joint(sync_entry_joint(sync_entry_, sync_u_, *first, v, ipo_.cycle().t + lag,
+      kin_.pass_joint(sync_entry_joint(sync_entry_, sync_u_, *first, v, ipo_.cycle().t + lag,
                                        e.line, axes_.size()));
     } catch (...) {
       std::abort();  // out of memory in the sink

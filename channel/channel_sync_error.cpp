@@ -48,7 +48,7 @@ bool Channel::sync_error_begin() noexcept {
   if (!sync_error_indp_begin()) return false;  // --- trafo-feed: the INDP axes brake
   // --- sync-trafo: under #TRAFO ON the TCP's stop (channel_sync_error_trafo.cpp)
   after_trafo_ = false;
-  if (transformed_ && !sync_error_trafo_begin()) return false;
+  if (kin_.transformed() && !sync_error_trafo_begin()) return false;
   after_begun_ = true;
   sync_error_ = std::move(error_);
   error_.reset();

@@ -27,7 +27,7 @@ namespace ncsim::ipo {
 bool Channel::sync_error_trafo_begin() noexcept {
   after_trafo_ = false;
   after_joint_ = -1;
-  if (!stage_) return false;
+  if (!kin_.configured()) return false;
   const std::size_t n = std::min(axes_.size(), sync_->axis_count());
   std::array<int, 3> xyz{-1, -1, -1};
   std::array<AfterErrorAxis, planner::kMaxAxes> joints{};
@@ -43,7 +43,7 @@ bool Channel::sync_error_trafo_begin() noexcept {
     a.d_max = std::min(a.d_max, d.d_max);
     a.j_max = std::min(a.j_max, d.j_max);
     joints[i] = a;
-    p[i] = tcp_[i].p;
+    p[i] = kin_.tcp()[i].p;
   }
   // A TCP beyond a face of the workspace already (NC9052 / NC9053 themselves, a listing whose
   // working height is outside it): the limit is passed, the run ends at once as in the
@@ -56,8 +56,8 @@ bool Channel::sync_error_trafo_begin() noexcept {
   }
   Eigen::Vector3d dir = sync_->frame().direction();
   if (sync_->belt_velocity() < 0.0) dir = -dir;
-  const auto lim =
-      tcp_after_error_axes(stage_->inverse(), xyz, std::span(joints.data(), n), after_box_, dir, p);
+  const auto lim = tcp_after_error_axes(kin_.stage().inverse(), xyz, std::span(joints.data(), n),
+                                        after_box_, dir, p);
   if (!lim || !after_tcp_.configure(std::span(lim->data(), n), ipo_.t_cycle())) return false;
   after_tcp_.begin();
   after_trafo_ = true;
@@ -69,7 +69,7 @@ bool Channel::sync_error_trafo_step(const Cycle& c, bool& end) noexcept {
   // The TCP following the belt (tcp_), and its joints (setpoint_) where the transform maps it.
   const bool mapped = map_to_axes(c);
   if (!mapped) error_.reset();  // NC3201 is not raised after the error: the run ends below
-  std::span<axes::Setpoint> tcp(tcp_.data(), n);
+  std::span<axes::Setpoint> tcp(kin_.tcp().data(), n);
   bool braked = false;
   if (after_tcp_.stopping()) {
     after_tcp_.step(tcp);
@@ -95,19 +95,7 @@ bool Channel::sync_error_trafo_step(const Cycle& c, bool& end) noexcept {
     after_tcp_.follow_cycle();
   }
   if (!braked) return true;
-  AxisVec x{}, v{}, a{}, j{};
-  for (std::size_t i = 0; i < n; ++i) {
-    x[i] = tcp_[i].p;
-    v[i] = tcp_[i].v;
-    a[i] = tcp_[i].a;
-    j[i] = tcp_[i].j;
-  }
-  JointSetpoint s;
-  if (!stage_->step(x, v, a, j, s)) return false;
-  joints_ = s;
-  for (std::size_t i = 0; i < n; ++i)
-    axes_.setpoints()[i] = axes::Setpoint{s.q[i], s.v[i], s.a[i], s.j[i]};
-  return true;
+  return kin_.map_tcp(axes_);
 }
 
 std::string Channel::after_error_trafo_note() const {
@@ -125,7 +113,7 @@ std::string Channel::after_error_trafo_note() const {
     const auto i = static_cast<std::size_t>(after_tcp_.axis());
     const int k = sync_ ? sync_->xyz(i) : -1;
     const AfterErrorAxis& l = after_tcp_.limits(i);
-    const double p = tcp_[i].p;
+    const double p = kin_.tcp()[i].p;
     const bool up = std::fabs(l.soft.max_position - p) < std::fabs(p - l.soft.min_position);
     static constexpr const char* kUpper[3] = {"00859", "00861", "00863"};
     static constexpr const char* kLower[3] = {"00860", "00862", "00864"};
