@@ -22,18 +22,11 @@ Config prepared(Config config) {
   return config;
 }
 
-// --- indp:
 std::vector<IndpAxisConfig> indp_configs(const ChannelConfig& config) {
   std::vector<IndpAxisConfig> out;
   for (const ChannelAxis& a : config.axes)
     out.push_back(a.indp);
   return out;
-}
-
-std::string text(const char* format, double a, double b) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, format, a, b);
-  return buf;
 }
 
 /// `config`'s axes, when there is one per interpolated axis.
@@ -57,7 +50,7 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
       axes_(checked_axes(config, ipo_.axis_count()), config.path.start, ipo_.t_cycle()),
       exact_stop_(config.exact_stop_wait_max, ipo_.t_cycle()),
       measured_value_wait_max_(config.measured_value_wait_max),
-      indp_(indp_configs(config), ipo_.t_cycle(), config.path.start) {  // --- indp
+      indp_(indp_configs(config), ipo_.t_cycle(), config.path.start) {
   conveyor_axis_ = config.conveyor_axis;  // what #MACHINE DATA changes (program/machine_data.hpp)
   const double t = ipo_.t_cycle();
   if (!(measured_value_wait_max_ > 0.0))
@@ -66,18 +59,18 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
   measure_wait_cycles_max_ =
       static_cast<std::uint64_t>(std::ceil(measured_value_wait_max_ / t - 1e-9));
   ipo_.set_wait_handler(&wait_relay_);
-  // --- conveyor-sync: conveyor tracking on FCT_DLM channels
+  // Conveyor tracking on FCT_DLM channels.
   if (config.conveyor) {
     sync_.emplace(*config.conveyor, config.sync_axes, t);
     for (std::size_t i = 0; i < sync_->axis_count(); ++i)  // fixed by T0: set once
       belt_.share[i] = sync_->share(i);
-    static_unit_ = config.conveyor->x_virtual;  // --- static-saw
-    // --- workspace: the stop after an error while synchronised (tracking/sync_error.hpp)
+    static_unit_ = config.conveyor->x_virtual;
+    // The stop after an error while synchronised (tracking/sync_error.hpp).
     std::vector<AfterErrorAxis> after;
     for (std::size_t i = 0; i < config.axes.size(); ++i)
       after.push_back(after_error_axis(config.path.axes[i], config.axes[i].monitor.soft_limits));
     after_.configure(after, t);
-    after_box_ = config.conveyor->workspace;  // --- sync-trafo
+    after_box_ = config.conveyor->workspace;
   }
 }
 
@@ -144,75 +137,9 @@ bool Channel::drive_axis(std::size_t i, const Cycle& c) noexcept {
   return axes_.drive(i, c, active, waiting, exact_stop_.target(i), exact_stop_.waited(), error_);
 }
 
-// --- operator: block starts and scenario actions (docs/scenario.md "When events fire")
-
-void Channel::block_started(std::uint32_t line) noexcept {
-  if (sync_error_) return;  // --- workspace: the program is aborted (its blocks only brake)
-  player_->block_started(line);
-  for (const scenario::Action& a : player_->fire_lines()) {
-    if (failed_) break;
-    failed_ = act(a);
-  }
-}
-
-std::optional<std::pair<const char*, std::string>> Channel::act(
-    const scenario::Action& a) noexcept {
-  if (std::holds_alternative<scenario::VeWrite>(a)) return std::nullopt;  // in player_->ve()
-  // MCV_SetReducedFilter: play_cycle hands player_->reduced_filter() to the Port every cycle.
-  if (std::holds_alternative<scenario::ReducedFilter>(a)) return std::nullopt;
-  if (const auto* h = std::get_if<scenario::FeedHold>(&a)) {
-    ipo_.set_feed_hold(h->on);
-    return std::nullopt;
-  }
-  if (const auto* o = std::get_if<scenario::PathOverride>(&a)) {
-    const double max = max_override(ipo_.override_type());
-    if (o->fraction <= max) {
-      try {
-        ipo_.set_override(o->fraction);
-        return std::nullopt;
-      } catch (const std::invalid_argument&) {
-      }
-    }
-    return std::pair{kOverrideRangeId,
-                     text("scenario path override %.6g %% above %.6g %%, the largest of the "
-                          "channel's override type (NCSIM-CHAN-630)",
-                          o->fraction * 100.0, max * 100.0)};
-  }
-  return indp_.set_override(std::get<scenario::AxisOverride>(a), axes_);
-}
-
-bool Channel::play_cycle(Status& status) noexcept {
-  if (stopped_) {
-    status = Status::finished;
-    return false;
-  }
-  const Cycle& last = ipo_.cycle();
-  const std::uint64_t k = last.index;
-  const double t = static_cast<double>(k) * ipo_.t_cycle();
-  for (const scenario::Action& a : player_->step(k, t)) {
-    if (auto e = act(a)) {
-      Cycle at = last;
-      at.t = t;
-      status = stop(e->first, std::move(e->second), at, -1);
-      return false;
-    }
-  }
-  // MCV_SetReducedFilter from the PLC side (docs/conveyor.md "Filters").
-  // --- sync-feed: and the channel's feed hold while it tracks the conveyor (docs/conveyor.md
-  // F-4: P-AXIS-00624/00625 "in the case of feedhold").
-  if (port_ != nullptr)
-    port_->set_reduced_filter(player_->reduced_filter() || (ipo_.feed_hold() && sync_tracking()));
-  if (const auto reason = player_->stop()) {
-    stopped_ = *reason;
-    status = Status::finished;
-    return false;
-  }
-  return true;
-}
-
 Status Channel::step() noexcept {
   indp_.clear_tech();  // the technology functions of this cycle
-  // --- workspace: after an error while synchronised the machine moves on (004 §2.3).
+  // After an error while synchronised the machine moves on (004 §2.3).
   if (sync_error_ && !error_) return sync_error_cycle(true);
   const std::uint64_t before = ipo_.cycle().index;
   const Status s = step_program();
@@ -223,37 +150,38 @@ Status Channel::step() noexcept {
 Status Channel::step_program() noexcept {
   if (error_) return Status::error;
   if (ended_) return *ended_;  // the player sees each cycle once
-  if (player_ != nullptr) {
+  if (play_.player() != nullptr) {
     Status ended = Status::finished;
-    if (!play_cycle(ended)) return ended;
+    if (!play_.step(sync_tracking(), port_, ended, error_)) return ended;
   }
   // A blocked event is dispatched again each cycle; a path holding at a ChannelWait goes on in
   // this cycle once the events up to the wait's tag are done.
-  if (blocked_ || ipo_.holding_channel()) {
+  if (events_.blocked() || ipo_.holding_channel()) {
     const bool holding = ipo_.holding_channel();
-    const bool done = run_events(holding ? wait_tag_ : ipo_.cycle().event_tag);
+    const bool done = run_events(holding ? events_.wait_tag() : ipo_.cycle().event_tag);
     if (error_) return Status::error;
-    if (done && holding && indp_.syn_done(wait_interruptible_, axes_.size())) ipo_.release_wait();
+    if (done && holding && indp_.syn_done(events_.wait_interruptible(), axes_.size()))
+      ipo_.release_wait();
   }
-  static_override();  // --- static-saw: a synchronised static unit's path follows the belt
+  static_override();  // a synchronised static unit's path follows the belt
   Status s = ipo_.step();
   if (error_) return Status::error;  // raised by an event at a ChannelWait inside the step
   if (s == Status::finished) {
     run_events(~std::uint32_t{0});  // none left: ProgramSource ends with a ChannelWait
     if (error_) s = Status::error;
   }
-  if (s == Status::finished &&
-      !indp_.axes().in_position_mask(0))  // --- indp: the end waits for them
-    return indp_tail();
+  if (s == Status::finished && !indp_.axes().in_position_mask(0))
+    return indp_tail();  // the program end waits for the INDP axes
   if (s != Status::running) {
     ended_ = s;
     return s;
   }
   const Cycle& c = ipo_.cycle();
-  driven_ = 0;                                                                  // --- workspace
-  if (failed_) return stop(failed_->first, std::move(failed_->second), c, -1);  // --- operator
-  // --- operator: no endless hold; --- workspace: unless the hold waits for the belt (NC9081)
-  if (player_ != nullptr && c.held && !player_->more_to_come() && !workspace_hold_waits())
+  driven_ = 0;
+  if (auto& f = play_.failed()) return stop(f->first, std::move(f->second), c, -1);
+  // No endless hold, unless the workspace hold waits for the belt (NC9081).
+  if (play_.player() != nullptr && c.held && !play_.player()->more_to_come() &&
+      !workspace_hold_waits())
     return stop(kHeldForeverId,
                 ipo_.feed_hold() ? "the path stands by feed hold and no later scenario event "
                                    "releases it: the run would never end"
@@ -261,33 +189,34 @@ Status Channel::step_program() noexcept {
                                    "raises it: the run would never end",
                 c, -1);
   // Events riding on the blocks started in this cycle.
-  if (!blocked_) run_events(c.event_tag);
+  if (!events_.blocked()) run_events(c.event_tag);
   if (error_) return Status::error;
-  // --- conveyor-sync: the conveyor world's cycle (latch, 50653, the Port's errors).
+  // The conveyor world's cycle (latch, 50653, the Port's errors).
   if (sync_) {
     if (auto e = sync_->step(c.t)) return stop(e->id.c_str(), std::move(e->message), c, -1);
     // The V.E. values of the workpiece just measured go to the world's store, where the next
     // barrier reads them (docs/conveyor.md "Wiring").
-    if (port_ != nullptr && player_ != nullptr && port_->last_latch().workpiece != ve_workpiece_) {
+    if (port_ != nullptr && play_.player() != nullptr &&
+        port_->last_latch().workpiece != ve_workpiece_) {
       const conveyor::LatchInfo& l = port_->last_latch();
       ve_workpiece_ = l.workpiece;
       try {
         for (const auto& [name, value] : l.ve)
-          player_->ve().write(name, value);
+          play_.player()->ve().write(name, value);
       } catch (...) {
         std::abort();  // out of memory writing a V.E. value
       }
     }
   }
   if (!map_to_axes(c)) return Status::error;
-  if (sync_ && !sync_check_workspace(c)) return Status::error;  // --- conveyor-sync
-  // --- workspace: the hold against the conveying direction
+  // The conveyor workspace, and the hold against the conveying direction.
+  if (sync_ && !sync_check_workspace(c)) return Status::error;
   if (sync_ && !sync_workspace_cap(c)) return Status::error;
   if (!exact_stop_.active() && ipo_.holding_exact_stop())
     exact_stop_.begin(c, std::span(axes_.setpoints().data(), axes_.size()), kin_.transformed());
   if (!indp_.step(c, axes_, shown_, error_)) return Status::error;
   for (std::size_t i = 0; i < axes_.size(); ++i) {
-    driven_ = i + 1;  // --- workspace: a monitor's alarm comes after the axis's control step
+    driven_ = i + 1;  // a monitor's alarm comes after the axis's control step
     if (!drive_axis(i, c)) return Status::error;
   }
   if (exact_stop_.active()) {
@@ -295,7 +224,7 @@ Status Channel::step_program() noexcept {
     if (!exact_stop_.check(c, axes_, release, error_)) return Status::error;
     if (release) ipo_.release_exact_stop();
   }
-  if (sink_) sink_->on_cycle(cycle());  // --- indp: with the INDP axes' setpoints
+  if (sink_) sink_->on_cycle(cycle());  // with the INDP axes' setpoints
   return Status::running;
 }
 

@@ -51,21 +51,22 @@ bool Channel::sync_check_workspace(const Cycle& c) noexcept {
 EventOutcome Channel::on_sync_in(const interp::SyncIn& command, const ChannelEvent& e) noexcept {
   try {
     if (!sync_ || sync_->port() == nullptr)
-      return event_error(kNotSupportedId, std::string("not supported: #SYNC IN") + kNeedsWorld, e);
+      return EventContext(e, ipo_, error_)
+          .fail(kNotSupportedId, std::string("not supported: #SYNC IN") + kNeedsWorld);
     // --- sync-feed: FEED_CONT > 0 / FEED_CONT_AUTO run (S-1); --- sync-trafo: on a static unit
     // they have nothing to act on (docs/conveyor.md S-1): NC9060
     if (static_unit_ && (command.feed_cont_auto || command.feed_cont.value_or(0.0) > 0.0))
-      return event_error(kStaticFeedContId,
-                         "#SYNC IN FEED_CONT > 0 or FEED_CONT_AUTO on the static processing unit "
-                         "(P-CHAN-00364 x_virtual): its feed is the belt's and \"cannot be "
-                         "influenced independently\" (004 l.438), the contour starts from the "
-                         "catch-up at rest (l.443); remove FEED_CONT",
-                         e);
+      return EventContext(e, ipo_, error_)
+          .fail(kStaticFeedContId,
+                "#SYNC IN FEED_CONT > 0 or FEED_CONT_AUTO on the static processing unit "
+                "(P-CHAN-00364 x_virtual): its feed is the belt's and \"cannot be "
+                "influenced independently\" (004 l.438), the contour starts from the "
+                "catch-up at rest (l.443); remove FEED_CONT");
     if (sync_tag_ != e.tag) {  // first dispatch: from now the path waits for the measured value
       sync_tag_ = e.tag;
       measure_waited_ = 0;
       if (auto err = sync_->sync_in(command))
-        return event_error(err->id.c_str(), std::move(err->message), e);
+        return EventContext(e, ipo_, error_).fail(err->id.c_str(), std::move(err->message));
       return EventOutcome::blocking;
     }
     if (sync_->phase() != SyncPhase::waiting) return EventOutcome::done;
@@ -77,7 +78,7 @@ EventOutcome Channel::on_sync_in(const interp::SyncIn& command, const ChannelEve
                     "#SYNC IN: no measured value within %.6g s (ncsim's limit): no workpiece "
                     "edge was latched while the probe was armed",
                     measured_value_wait_max_);
-      return event_error(kMeasuredValueWaitId, buf, e);
+      return EventContext(e, ipo_, error_).fail(kMeasuredValueWaitId, buf);
     }
     return EventOutcome::blocking;
   } catch (...) {
@@ -88,7 +89,8 @@ EventOutcome Channel::on_sync_in(const interp::SyncIn& command, const ChannelEve
 EventOutcome Channel::on_sync_out(const interp::SyncOut& command, const ChannelEvent& e) noexcept {
   try {
     if (!sync_ || sync_->port() == nullptr)
-      return event_error(kNotSupportedId, std::string("not supported: #SYNC OUT") + kNeedsWorld, e);
+      return EventContext(e, ipo_, error_)
+          .fail(kNotSupportedId, std::string("not supported: #SYNC OUT") + kNeedsWorld);
     // --- sync-feed: FEED_CONT / FEED_CONT_AUTO of #SYNC OUT, the velocity the
     // desynchronisation movement terminates at (004 l.529), is "reduced as required" (l.284) to
     // 0: that movement is INDP positioning (l.535-552) or the departure PTP, both ending in
@@ -102,8 +104,8 @@ EventOutcome Channel::on_sync_out(const interp::SyncOut& command, const ChannelE
 
 EventOutcome Channel::on_sync_motion(const interp::Motion& motion, const ChannelEvent& e) noexcept {
   if (!sync_) {
-    return event_error(kNotSupportedId, "not supported: a synchronisation motion without FCT_DLM",
-                       e);
+    return EventContext(e, ipo_, error_)
+        .fail(kNotSupportedId, "not supported: a synchronisation motion without FCT_DLM");
   }
   if (sync_tag_ == e.tag) {  // dispatched again: blocking while the profile runs
     if (const auto lag = sync_->handover_lag()) return sync_hand_over(*lag, e);  // --- sync-feed
@@ -151,10 +153,9 @@ EventOutcome Channel::on_sync_motion(const interp::Motion& motion, const Channel
     const int axis = sync_->catch_up().failed_axis();
     std::string what = catch_up ? "the catch-up after #SYNC IN" : "the departure after #SYNC OUT";
     if (axis >= 0) what += " of axis " + axes_.config(static_cast<std::size_t>(axis)).name;
-    return event_error(kCatchUpNotSynchronizableId,
-                       what + ": " + std::string(axes::describe(r)) + " (" +
-                           std::string(axes::diagnostic_id(r)) + ")",
-                       e);
+    return EventContext(e, ipo_, error_)
+        .fail(kCatchUpNotSynchronizableId, what + ": " + std::string(axes::describe(r)) + " (" +
+                                               std::string(axes::diagnostic_id(r)) + ")");
   } catch (...) {
     std::abort();
   }
@@ -164,8 +165,8 @@ EventOutcome Channel::on_probe_arm(const interp::ProbeArm& command,
                                    const ChannelEvent& e) noexcept {
   if (!sync_ || sync_->port() == nullptr) {
     try {
-      return event_error(kNotSupportedId, std::string("not supported: MC_TouchProbe") + kNeedsWorld,
-                         e);
+      return EventContext(e, ipo_, error_)
+          .fail(kNotSupportedId, std::string("not supported: MC_TouchProbe") + kNeedsWorld);
     } catch (...) {
       std::abort();
     }
@@ -178,8 +179,8 @@ EventOutcome Channel::on_move_velocity(const interp::MoveVelocity& command,
                                        const ChannelEvent& e) noexcept {
   if (!sync_ || sync_->port() == nullptr) {
     try {
-      return event_error(kNotSupportedId,
-                         std::string("not supported: MC_MoveVelocity") + kNeedsWorld, e);
+      return EventContext(e, ipo_, error_)
+          .fail(kNotSupportedId, std::string("not supported: MC_MoveVelocity") + kNeedsWorld);
     } catch (...) {
       std::abort();
     }
@@ -193,7 +194,7 @@ EventOutcome Channel::port_outcome(const ChannelEvent& e) noexcept {
   const auto& err = sync_->port()->error();
   if (!err) return EventOutcome::done;
   try {
-    return event_error(err->id.c_str(), std::string(err->message), e);
+    return EventContext(e, ipo_, error_).fail(err->id.c_str(), std::string(err->message));
   } catch (...) {
     std::abort();  // out of memory building a message
   }
@@ -204,21 +205,21 @@ EventOutcome Channel::on_machine_data(const interp::MachineData& command,
   try {
     // ProgramSource let only the conveyor axis's filter parameters through (machine_data.hpp).
     if (!sync_ || sync_->port() == nullptr || !conveyor_axis_)
-      return event_error(
-          kNotSupportedId,
-          std::string("not supported: #MACHINE DATA of the conveyor filters") + kNeedsWorld, e);
+      return EventContext(e, ipo_, error_)
+          .fail(kNotSupportedId,
+                std::string("not supported: #MACHINE DATA of the conveyor filters") + kNeedsWorld);
     if (sync_tracking())
-      return event_error(kFilterWhileTrackingId,
-                         "#MACHINE DATA of the conveyor's filters or delay time while "
-                         "synchronised: the filters would restart under the tool and step PCS1 "
-                         "(change them before #SYNC IN or after #SYNC OUT)",
-                         e);
+      return EventContext(e, ipo_, error_)
+          .fail(kFilterWhileTrackingId,
+                "#MACHINE DATA of the conveyor's filters or delay time while "
+                "synchronised: the filters would restart under the tool and step PCS1 "
+                "(change them before #SYNC IN or after #SYNC OUT)");
     const machines::ConveyorAxisParams changed = apply_machine_data(*conveyor_axis_, command);
     if (!sync_->port()->set_axis_params(changed))
-      return event_error(kNotSupportedId,
-                         "not supported: #MACHINE DATA of the conveyor filters on this conveyor "
-                         "world",
-                         e);
+      return EventContext(e, ipo_, error_)
+          .fail(kNotSupportedId,
+                "not supported: #MACHINE DATA of the conveyor filters on this conveyor "
+                "world");
     conveyor_axis_ = changed;
     return EventOutcome::done;
   } catch (...) {

@@ -51,6 +51,7 @@ bool Channel::sync_error_begin() noexcept {
   if (kin_.transformed() && !sync_error_trafo_begin()) return false;
   after_begun_ = true;
   sync_error_ = std::move(error_);
+  play_.abort_program();  // its blocks only brake now
   error_.reset();
   after_.begin();
   after_path_ended_ = false;
@@ -115,8 +116,9 @@ Status Channel::sync_error_cycle(bool fresh) noexcept {
     }
     after_.follow_cycle();
   }
-  // No axis receives a set position beyond its soft limit (as in step 3). The stop is planned
-  // not to get there; a machine already at its limit when the error came cannot follow at all.
+  // No axis receives a set position beyond its soft limit (as AxisStage::drive). The stop is
+  // planned not to get there; a machine already at its limit when the error came cannot follow at
+  // all.
   const std::size_t first = fresh ? 0 : driven_;
   for (std::size_t i = first; i < axes_.size(); ++i) {
     const auto alarm = axes::check_soft_limits(axes_.config(i).monitor.soft_limits,
