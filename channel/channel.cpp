@@ -49,22 +49,17 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
       sink_(sink),
       axes_(checked_axes(config, ipo_.axis_count()), config.path.start, ipo_.t_cycle()),
       exact_stop_(config.exact_stop_wait_max, ipo_.t_cycle()),
-      measured_value_wait_max_(config.measured_value_wait_max),
-      indp_(indp_configs(config), ipo_.t_cycle(), config.path.start) {
-  conveyor_axis_ = config.conveyor_axis;  // what #MACHINE DATA changes (program/machine_data.hpp)
+      indp_(indp_configs(config), ipo_.t_cycle(), config.path.start),
+      tracking_(sync_, ipo_, axes_, indp_, kin_, after_, error_, sink,
+                config.measured_value_wait_max, config.conveyor_axis) {
   const double t = ipo_.t_cycle();
-  if (!(measured_value_wait_max_ > 0.0))
-    throw std::invalid_argument("ipo::Channel: measured_value_wait_max must be > 0 s, got " +
-                                std::to_string(measured_value_wait_max_));
-  measure_wait_cycles_max_ =
-      static_cast<std::uint64_t>(std::ceil(measured_value_wait_max_ / t - 1e-9));
   ipo_.set_wait_handler(&wait_relay_);
   // Conveyor tracking on FCT_DLM channels.
   if (config.conveyor) {
     sync_.emplace(*config.conveyor, config.sync_axes, t);
     for (std::size_t i = 0; i < sync_->axis_count(); ++i)  // fixed by T0: set once
       belt_.share[i] = sync_->share(i);
-    static_unit_ = config.conveyor->x_virtual;
+    tracking_.set_static_unit(config.conveyor->x_virtual);
     // The stop after an error while synchronised (tracking/sync_error.hpp).
     std::vector<AfterErrorAxis> after;
     for (std::size_t i = 0; i < config.axes.size(); ++i)
@@ -102,16 +97,17 @@ bool Channel::map_to_axes(const Cycle& c) noexcept {
   // the PCS1 frame and the catch-up act on the TCP there, before the kinematic.
   belt_.following = false;  // the audit's belt share (set below)
   // Where a catch-up / departure left the path, it stands until its next block moves.
-  if (c.activity == Activity::motion) sync_hold_.reset();
+  std::optional<AxisVec>& hold = tracking_.hold();
+  if (c.activity == Activity::motion) hold.reset();
   if (kin_.decide(c))
-    return kin_.map(c, sync_hold_, sync_ ? &*sync_ : nullptr, ipo_.t_cycle(), axes_, error_);
+    return kin_.map(c, hold, sync_ ? &*sync_ : nullptr, ipo_.t_cycle(), axes_, error_);
   std::array<axes::Setpoint, planner::kMaxAxes>& setpoint = axes_.setpoints();
   for (std::size_t i = 0; i < axes_.size(); ++i)
     setpoint[i] = axes::Setpoint{c.x[i], c.v[i], c.a[i], c.j[i]};
   // The catch-up / departure drive the axes; PCS1 moves with the belt.
-  if (sync_hold_)
+  if (hold)
     for (std::size_t i = 0; i < axes_.size(); ++i)
-      setpoint[i] = axes::Setpoint{(*sync_hold_)[i]};
+      setpoint[i] = axes::Setpoint{(*hold)[i]};
   if (sync_ && sync_->driving()) {
     for (std::size_t i = 0; i < axes_.size(); ++i)
       setpoint[i] = sync_->catch_up_setpoint(i);
@@ -152,7 +148,7 @@ Status Channel::step_program() noexcept {
   if (ended_) return *ended_;  // the player sees each cycle once
   if (play_.player() != nullptr) {
     Status ended = Status::finished;
-    if (!play_.step(sync_tracking(), port_, ended, error_)) return ended;
+    if (!play_.step(tracking_.tracking(), port_, ended, error_)) return ended;
   }
   // A blocked event is dispatched again each cycle; a path holding at a ChannelWait goes on in
   // this cycle once the events up to the wait's tag are done.
@@ -163,7 +159,7 @@ Status Channel::step_program() noexcept {
     if (done && holding && indp_.syn_done(events_.wait_interruptible(), axes_.size()))
       ipo_.release_wait();
   }
-  static_override();  // a synchronised static unit's path follows the belt
+  tracking_.static_override();  // a synchronised static unit's path follows the belt
   Status s = ipo_.step();
   if (error_) return Status::error;  // raised by an event at a ChannelWait inside the step
   if (s == Status::finished) {
@@ -181,7 +177,7 @@ Status Channel::step_program() noexcept {
   if (auto& f = play_.failed()) return stop(f->first, std::move(f->second), c, -1);
   // No endless hold, unless the workspace hold waits for the belt (NC9081).
   if (play_.player() != nullptr && c.held && !play_.player()->more_to_come() &&
-      !workspace_hold_waits())
+      !tracking_.hold_waits())
     return stop(kHeldForeverId,
                 ipo_.feed_hold() ? "the path stands by feed hold and no later scenario event "
                                    "releases it: the run would never end"
@@ -210,8 +206,8 @@ Status Channel::step_program() noexcept {
   }
   if (!map_to_axes(c)) return Status::error;
   // The conveyor workspace, and the hold against the conveying direction.
-  if (sync_ && !sync_check_workspace(c)) return Status::error;
-  if (sync_ && !sync_workspace_cap(c)) return Status::error;
+  if (sync_ && !tracking_.check_workspace(c)) return Status::error;
+  if (sync_ && !tracking_.workspace_cap(c)) return Status::error;
   if (!exact_stop_.active() && ipo_.holding_exact_stop())
     exact_stop_.begin(c, std::span(axes_.setpoints().data(), axes_.size()), kin_.transformed());
   if (!indp_.step(c, axes_, shown_, error_)) return Status::error;

@@ -51,6 +51,7 @@
 #include "axes/monitor.hpp"
 #include "channel/axis_stage.hpp"
 #include "channel/channel_types.hpp"
+#include "channel/conveyor_tracking.hpp"
 #include "channel/event_context.hpp"
 #include "channel/event_queue.hpp"
 #include "channel/exact_stop.hpp"
@@ -189,37 +190,6 @@ class Channel {
   bool run_events(std::uint32_t up_to) noexcept;
   /// The path reached a ChannelWait: true when its events are all done (the path goes on).
   bool on_wait(const ChannelWait& wait) noexcept;
-  // the conveyor events (channel/channel_conveyor.cpp)
-  EventOutcome on_sync_in(const interp::SyncIn& command, const ChannelEvent& e) noexcept;
-  EventOutcome on_sync_out(const interp::SyncOut& command, const ChannelEvent& e) noexcept;
-  /// the channel moves with the conveyor (catch-up or PCS1 tracking).
-  bool sync_tracking() const noexcept {
-    return sync_ &&
-           (sync_->phase() == SyncPhase::catching_up || sync_->phase() == SyncPhase::tracking);
-  }
-  /// The catch-up after #SYNC IN / the departure after #SYNC OUT (ProgramSource::sync_motion).
-  EventOutcome on_sync_motion(const interp::Motion& motion, const ChannelEvent& e) noexcept;
-  // FEED_CONT > 0 / FEED_CONT_AUTO (channel/channel_sync_entry.cpp, S-1)
-  /// The relative velocity the catch-up from `start` to `target` meets its target with: the
-  /// #SYNC IN's, reduced to what the path's first block allows (tracking/sync_entry); 0: at rest.
-  double sync_entry_velocity(std::span<const axes::MotionState> start,
-                             std::span<const double> target) noexcept;
-  /// The catch-up meets its target `lag` [s] into this cycle: the path starts there, moving.
-  EventOutcome sync_hand_over(double lag, const ChannelEvent& e) noexcept;
-  SyncEntry sync_entry_{};     ///< the hand-over decided at the catch-up's start
-  planner::AxisVec sync_u_{};  ///< the catch-up's direction (FEED_CONT's) [1]
-  EventOutcome on_probe_arm(const interp::ProbeArm& command, const ChannelEvent& e) noexcept;
-  /// After a command the Port took (MC_TouchProbe, MC_MoveVelocity): a refusal it raised
-  /// (P-ERR-44009 retrigger, 44001, 44011, 44012 of seed 004 §6.3.1; NC9003; NC9005 above the
-  /// conveyor axis's P-AXIS-00212) is that block's error, at its line and cycle, not the next
-  /// cycle's step's at the block after it.
-  EventOutcome port_outcome(const ChannelEvent& e) noexcept;
-  EventOutcome on_move_velocity(const interp::MoveVelocity& command,
-                                const ChannelEvent& e) noexcept;
-  /// `#MACHINE DATA` on the conveyor axis's filters and delay time (program/machine_data.hpp):
-  /// passed to the Port with the path standing (isg-language.md §5.10).
-  EventOutcome on_machine_data(const interp::MachineData& command, const ChannelEvent& e) noexcept;
-  std::optional<machines::ConveyorAxisParams> conveyor_axis_;  ///< as changed so far
   /// The path point -> machine axis setpoints (identity plus the conveyor's frame, or the
   /// KinematicStage under #TRAFO ON); false when it raised a run-time error.
   bool map_to_axes(const Cycle& c) noexcept;
@@ -228,27 +198,7 @@ class Channel {
   bool drive_axis(std::size_t i, const Cycle& c) noexcept;
   /// Raises a run-time error at cycle `c` (raise()); Status::error.
   Status stop(const char* id, std::string message, const Cycle& c, int axis) noexcept;
-  // (channel/channel_conveyor.cpp)
-  /// The conveyor workspace on the cycle's MCS setpoints while synchronised; false: stopped.
-  bool sync_check_workspace(const Cycle& c) noexcept;
-  // (channel/channel_static.cpp)
-  /// A synchronised static unit (P-CHAN-00364): the path override is the belt's master
-  /// velocity over the planned kXvPlanFactor * CONV_VEL, so the virtual X follows the belt;
-  /// the operator's override is restored after #SYNC OUT.
-  void static_override() noexcept;
-  bool static_unit_ = false;                 ///< P-CHAN-00364 x_virtual
-  std::optional<double> operator_override_;  ///< the override before the static unit took it
-  /// gives the interpolator the hold's path velocity cap (channel_workspace.cpp);
-  /// false: NC9081 (the belt stood under the hold longer than ncsim's wait limit).
-  bool sync_workspace_cap(const Cycle& c) noexcept;
-  /// lowers that cap where a belt slower than CONV_VEL would take an axis of a
-  /// block planned against the belt (v_max + CONV_VEL) above its v_max (channel_workspace.cpp).
-  void sync_belt_cap(const Cycle& c) noexcept;
-  /// the hold caps the path at 0 (the belt stands): the tool waits for the belt,
-  /// not for the operator (no NC6301).
-  bool workspace_hold_waits() const noexcept;
-  std::uint64_t hold_stood_ = 0;  ///< cycles the belt stood under the hold
-  // after an error while synchronised (channel_sync_error.cpp)
+  // After an error while synchronised (channel_sync_error.cpp).
   /// One cycle of the program (the channel loop before an error kept synchronisation).
   Status step_program() noexcept;
   /// The error just raised keeps the synchronisation: it is held back (sync_error_), the
@@ -264,7 +214,7 @@ class Channel {
   bool after_path_ended_ = false;           ///< the interpolator gave its last cycle
   double after_end_t_ = 0.0;                ///< [s] the machine stood
   std::string after_passed_;                ///< a soft limit passed after all (the note says it)
-  // the same under #TRAFO ON (channel_sync_error_trafo.cpp): the TCP brakes
+  // The same under #TRAFO ON (channel_sync_error_trafo.cpp): the TCP brakes
   // before the conveyor workspace's face (tracking/sync_error_trafo.hpp), the joints are checked.
   bool sync_error_trafo_begin() noexcept;
   /// The after-error setpoints of a transformed cycle (tcp_ and the joints from it); false: the
@@ -276,7 +226,7 @@ class Channel {
   bool after_trafo_ = false;       ///< the error came under #TRAFO ON
   int after_joint_ = -1;           ///< the joint whose limit decided the stop (-1: the TCP's)
   AfterErrorEnd after_joint_why_ = AfterErrorEnd::soft_limit;  ///< why for that joint
-  // INDP axes owned at the error (channel_sync_error_indp.cpp): each brakes on
+  // The INDP axes owned at the error (channel_sync_error_indp.cpp): each brakes on
   // its own deceleration ramp while the path axes follow the belt (docs/conveyor.md).
   /// Stops the owned INDP axes; false: not built (INDP axes under #TRAFO ON), the run ends.
   bool sync_error_indp_begin() noexcept;
@@ -302,22 +252,16 @@ class Channel {
   ExactStopWait exact_stop_;
   BeltOffset belt_;  ///< the belt's share of the setpoints (map_to_axes)
   std::optional<RunTimeError> error_;
-  std::optional<Status> ended_;  ///< the interpolator's stream ended so
-  // Channel events.
-  EventQueue events_;                          ///< the events due and the one that blocks
-  std::optional<ConveyorSync> sync_;           ///< with FCT_DLM only
-  conveyor::Port* port_ = nullptr;             ///< the attached conveyor world (reduced filter)
-  double measured_value_wait_max_ = 600.0;     ///< ChannelConfig::measured_value_wait_max [s]
-  std::uint64_t measure_wait_cycles_max_ = 0;  ///< the same in cycles
-  std::uint64_t measure_waited_ = 0;           ///< cycles #SYNC IN waited so far
-  std::uint64_t ve_workpiece_ = 0;  ///< the measured workpiece whose V.E. values were written
-  std::uint32_t sync_tag_ = 0;      ///< the event being executed
-  /// where the path stands after a catch-up / departure until it moves.
-  std::optional<AxisVec> sync_hold_;
-  HomingSequence homing_;         ///< G74
-  IndpStage indp_;                ///< INDP axes and technology outputs
-  const Cycle* shown_ = nullptr;  ///< the cycle shown instead of the path's (INDP, after error)
+  std::optional<Status> ended_;       ///< the interpolator's stream ended so
+  EventQueue events_;                 ///< the events due and the one that blocks
+  std::optional<ConveyorSync> sync_;  ///< with FCT_DLM only
+  conveyor::Port* port_ = nullptr;    ///< the attached conveyor world (reduced filter)
+  std::uint64_t ve_workpiece_ = 0;    ///< the measured workpiece whose V.E. values were written
+  HomingSequence homing_;             ///< G74
+  IndpStage indp_;                    ///< INDP axes and technology outputs
+  const Cycle* shown_ = nullptr;      ///< the cycle shown instead of the path's (INDP, after error)
   ScenarioPlay play_{ipo_, indp_, axes_};  ///< the scenario, before each cycle
+  ConveyorTracking tracking_;              ///< the channel's side of conveyor tracking
 };
 
 }  // namespace ncsim::ipo

@@ -1,5 +1,5 @@
 // channel/channel_conveyor: the channel's conveyor tracking (issue 14; docs/conveyor.md
-// "Synchronisation"): the Channel members conveyor-sync owns, kept out of channel.cpp.
+// "Synchronisation"): ConveyorTracking's conveyor events (see channel/conveyor_tracking.hpp).
 //
 // Event flow (program/channel_event.hpp): #SYNC IN stops the path; its handler blocks while the
 // Port has no latch ("waiting for measured value"). The first motion after it reaches the
@@ -9,12 +9,14 @@
 // #SYNC OUT switches to `leaving` (the axes move on with the belt); the first motion after it
 // is the departure PTP from that moving state.
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
-#include "channel/channel.hpp"
+#include "channel/conveyor_tracking.hpp"
 #include "program/machine_data.hpp"
 #include "program/program_source.hpp"
 
@@ -28,18 +30,40 @@ constexpr const char* kNeedsWorld =
 
 }  // namespace
 
-bool Channel::sync_check_workspace(const Cycle& c) noexcept {
+ConveyorTracking::ConveyorTracking(std::optional<ConveyorSync>& sync, PathInterpolator& ipo,
+                                   AxisStage& axes, IndpStage& indp, KinematicStage& kin,
+                                   const SyncErrorStop& after, std::optional<RunTimeError>& error,
+                                   Sink* sink, double measured_value_wait_max,
+                                   std::optional<machines::ConveyorAxisParams> conveyor_axis)
+    : sync_(sync),
+      ipo_(ipo),
+      axes_(axes),
+      indp_(indp),
+      kin_(kin),
+      after_(after),
+      error_(error),
+      sink_(sink),
+      measured_value_wait_max_(measured_value_wait_max),
+      conveyor_axis_(std::move(conveyor_axis)) {
+  if (!(measured_value_wait_max_ > 0.0))
+    throw std::invalid_argument("ipo::Channel: measured_value_wait_max must be > 0 s, got " +
+                                std::to_string(measured_value_wait_max_));
+  // Same rounding as every wait (docs/ipo.md): the limit in whole cycles, never shorter.
+  measure_wait_cycles_max_ =
+      static_cast<std::uint64_t>(std::ceil(measured_value_wait_max_ / ipo_.t_cycle() - 1e-9));
+}
+
+bool ConveyorTracking::check_workspace(const Cycle& c) noexcept {
   if (!sync_->synchronised()) return true;
   Eigen::Vector3d p = Eigen::Vector3d::Zero();
   for (std::size_t i = 0; i < axes_.size(); ++i)
     if (const int k = sync_->xyz(i); k >= 0)
-      p[k] = kin_.transformed() ? kin_.tcp()[i].p  // --- trafo: the TCP under #TRAFO
-             : indp_.axes().owned(i)
-                 ? indp_.axes().setpoint(i).p  // --- trafo-feed: the INDP axis's own
-                 : axes_.setpoints()[i].p;
+      p[k] = kin_.transformed()      ? kin_.tcp()[i].p             // the TCP under #TRAFO
+             : indp_.axes().owned(i) ? indp_.axes().setpoint(i).p  // the INDP axis's own
+                                     : axes_.setpoints()[i].p;
   try {
     if (auto e = sync_->workspace(p)) {
-      stop(e->id.c_str(), std::move(e->message), c, -1);
+      raise(error_, e->id.c_str(), std::move(e->message), c, -1);
       return false;
     }
   } catch (...) {
@@ -48,12 +72,13 @@ bool Channel::sync_check_workspace(const Cycle& c) noexcept {
   return true;
 }
 
-EventOutcome Channel::on_sync_in(const interp::SyncIn& command, const ChannelEvent& e) noexcept {
+EventOutcome ConveyorTracking::on_sync_in(const interp::SyncIn& command,
+                                          const ChannelEvent& e) noexcept {
   try {
     if (!sync_ || sync_->port() == nullptr)
       return EventContext(e, ipo_, error_)
           .fail(kNotSupportedId, std::string("not supported: #SYNC IN") + kNeedsWorld);
-    // --- sync-feed: FEED_CONT > 0 / FEED_CONT_AUTO run (S-1); --- sync-trafo: on a static unit
+    // FEED_CONT > 0 / FEED_CONT_AUTO run (S-1); on a static unit
     // they have nothing to act on (docs/conveyor.md S-1): NC9060
     if (static_unit_ && (command.feed_cont_auto || command.feed_cont.value_or(0.0) > 0.0))
       return EventContext(e, ipo_, error_)
@@ -86,12 +111,13 @@ EventOutcome Channel::on_sync_in(const interp::SyncIn& command, const ChannelEve
   }
 }
 
-EventOutcome Channel::on_sync_out(const interp::SyncOut& command, const ChannelEvent& e) noexcept {
+EventOutcome ConveyorTracking::on_sync_out(const interp::SyncOut& command,
+                                           const ChannelEvent& e) noexcept {
   try {
     if (!sync_ || sync_->port() == nullptr)
       return EventContext(e, ipo_, error_)
           .fail(kNotSupportedId, std::string("not supported: #SYNC OUT") + kNeedsWorld);
-    // --- sync-feed: FEED_CONT / FEED_CONT_AUTO of #SYNC OUT, the velocity the
+    // FEED_CONT / FEED_CONT_AUTO of #SYNC OUT, the velocity the
     // desynchronisation movement terminates at (004 l.529), is "reduced as required" (l.284) to
     // 0: that movement is INDP positioning (l.535-552) or the departure PTP, both ending in
     // position, and what follows them starts at rest (docs/conveyor.md S-2).
@@ -102,16 +128,17 @@ EventOutcome Channel::on_sync_out(const interp::SyncOut& command, const ChannelE
   return EventOutcome::done;
 }
 
-EventOutcome Channel::on_sync_motion(const interp::Motion& motion, const ChannelEvent& e) noexcept {
+EventOutcome ConveyorTracking::on_sync_motion(const interp::Motion& motion,
+                                              const ChannelEvent& e) noexcept {
   if (!sync_) {
     return EventContext(e, ipo_, error_)
         .fail(kNotSupportedId, "not supported: a synchronisation motion without FCT_DLM");
   }
   if (sync_tag_ == e.tag) {  // dispatched again: blocking while the profile runs
-    if (const auto lag = sync_->handover_lag()) return sync_hand_over(*lag, e);  // --- sync-feed
+    if (const auto lag = sync_->handover_lag()) return sync_hand_over(*lag, e);
     return sync_->driving() ? EventOutcome::blocking : EventOutcome::done;
   }
-  // --- sync-feed: the INDP axes go to the catch-up / departure (docs/conveyor.md S-4).
+  // the INDP axes go to the catch-up / departure (docs/conveyor.md S-4).
   if (!indp_.hand_over(axes_.size())) return EventOutcome::blocking;
   sync_tag_ = e.tag;
   const std::size_t n = axes_.size();
@@ -121,19 +148,19 @@ EventOutcome Channel::on_sync_motion(const interp::Motion& motion, const Channel
     // The command state at the end of the last cycle (the catch-up starts in the next one).
     start[i] =
         axes::MotionState{axes_.state().command[i], axes_.setpoints()[i].v, axes_.setpoints()[i].a};
-    // --- trafo: under #TRAFO ON the catch-up is a TCP motion (004 l.609)
+    // under #TRAFO ON the catch-up is a TCP motion (004 l.609)
     if (kin_.transformed())
       start[i] = axes::MotionState{kin_.tcp()[i].p, kin_.tcp()[i].v, kin_.tcp()[i].a};
     target[i] = motion.end[i];  // interpolated order, MCS at belt travel 0
   }
   const bool catch_up = sync_->phase() == SyncPhase::latched;
-  // --- sync-feed: a catch-up meeting the workpiece moving (FEED_CONT > 0, FEED_CONT_AUTO);
-  // --- trafo-feed: under #TRAFO ON too, as a TCP motion (docs/conveyor.md S-1)
+  // a catch-up meeting the workpiece moving (FEED_CONT > 0, FEED_CONT_AUTO);
+  // under #TRAFO ON too, as a TCP motion (docs/conveyor.md S-1)
   const bool moving = catch_up && sync_->feed_cont_wanted() > 0.0;
   const double f =
       moving ? sync_entry_velocity(std::span(start.data(), n), std::span(target.data(), n)) : 0.0;
   axes::Result r = axes::Result::ok;
-  if (kin_.transformed()) {  // --- trafo
+  if (kin_.transformed()) {
     kin_.plan_sync_motion(*sync_, catch_up, std::span(start.data(), n), std::span(target.data(), n),
                           f, r);
   } else {
@@ -145,7 +172,7 @@ EventOutcome Channel::on_sync_motion(const interp::Motion& motion, const Channel
     for (std::size_t i = 0; i < n; ++i)
       hold[i] = target[i];
     sync_hold_ = hold;
-    // --- sync-feed: a moving catch-up shorter than a cycle hands over in this one
+    // a moving catch-up shorter than a cycle hands over in this one
     if (const auto lag = sync_->handover_lag()) return sync_hand_over(*lag, e);
     return EventOutcome::blocking;
   }
@@ -161,8 +188,8 @@ EventOutcome Channel::on_sync_motion(const interp::Motion& motion, const Channel
   }
 }
 
-EventOutcome Channel::on_probe_arm(const interp::ProbeArm& command,
-                                   const ChannelEvent& e) noexcept {
+EventOutcome ConveyorTracking::on_probe_arm(const interp::ProbeArm& command,
+                                            const ChannelEvent& e) noexcept {
   if (!sync_ || sync_->port() == nullptr) {
     try {
       return EventContext(e, ipo_, error_)
@@ -175,8 +202,8 @@ EventOutcome Channel::on_probe_arm(const interp::ProbeArm& command,
   return port_outcome(e);
 }
 
-EventOutcome Channel::on_move_velocity(const interp::MoveVelocity& command,
-                                       const ChannelEvent& e) noexcept {
+EventOutcome ConveyorTracking::on_move_velocity(const interp::MoveVelocity& command,
+                                                const ChannelEvent& e) noexcept {
   if (!sync_ || sync_->port() == nullptr) {
     try {
       return EventContext(e, ipo_, error_)
@@ -190,7 +217,7 @@ EventOutcome Channel::on_move_velocity(const interp::MoveVelocity& command,
   return port_outcome(e);
 }
 
-EventOutcome Channel::port_outcome(const ChannelEvent& e) noexcept {
+EventOutcome ConveyorTracking::port_outcome(const ChannelEvent& e) noexcept {
   const auto& err = sync_->port()->error();
   if (!err) return EventOutcome::done;
   try {
@@ -200,15 +227,15 @@ EventOutcome Channel::port_outcome(const ChannelEvent& e) noexcept {
   }
 }
 
-EventOutcome Channel::on_machine_data(const interp::MachineData& command,
-                                      const ChannelEvent& e) noexcept {
+EventOutcome ConveyorTracking::on_machine_data(const interp::MachineData& command,
+                                               const ChannelEvent& e) noexcept {
   try {
     // ProgramSource let only the conveyor axis's filter parameters through (machine_data.hpp).
     if (!sync_ || sync_->port() == nullptr || !conveyor_axis_)
       return EventContext(e, ipo_, error_)
           .fail(kNotSupportedId,
                 std::string("not supported: #MACHINE DATA of the conveyor filters") + kNeedsWorld);
-    if (sync_tracking())
+    if (tracking())
       return EventContext(e, ipo_, error_)
           .fail(kFilterWhileTrackingId,
                 "#MACHINE DATA of the conveyor's filters or delay time while "

@@ -17,7 +17,8 @@ EventOutcome Channel::dispatch(const ChannelEvent& e) noexcept {
   return std::visit(
       [&](const auto& body) -> EventOutcome {
         using T = std::decay_t<decltype(body)>;
-        // --- indp: M/H/S/T/D, #WAIT INDP, INDP (channel/channel_indp.cpp)
+        // M/H/S/T/D, #WAIT INDP, INDP (IndpStage); G74 (HomingSequence); the conveyor
+        // (ConveyorTracking)
         if constexpr (std::is_same_v<T, interp::Tech>) {
           return indp_.tech(body, EventContext(e, ipo_, error_));
         } else if constexpr (std::is_same_v<T, interp::WaitIndp>) {
@@ -25,20 +26,20 @@ EventOutcome Channel::dispatch(const ChannelEvent& e) noexcept {
         } else if constexpr (std::is_same_v<T, interp::AxisCommand>) {
           return indp_.command(body, axes_, sync_ ? &*sync_ : nullptr,
                                EventContext(e, ipo_, error_));
-        } else if constexpr (std::is_same_v<T, interp::Motion>) {  // --- conveyor-sync
-          return on_sync_motion(body, e);
-        } else if constexpr (std::is_same_v<T, interp::MoveVelocity>) {  // --- conveyor-sync
-          return on_move_velocity(body, e);
-        } else if constexpr (std::is_same_v<T, interp::ProbeArm>) {  // --- conveyor-sync
-          return on_probe_arm(body, e);
-        } else if constexpr (std::is_same_v<T, interp::SyncIn>) {  // --- conveyor-sync
-          return on_sync_in(body, e);
-        } else if constexpr (std::is_same_v<T, interp::SyncOut>) {  // --- conveyor-sync
-          return on_sync_out(body, e);
-        } else if constexpr (std::is_same_v<T, interp::Homing>) {  // --- static-saw: G74
+        } else if constexpr (std::is_same_v<T, interp::Motion>) {
+          return tracking_.on_sync_motion(body, e);
+        } else if constexpr (std::is_same_v<T, interp::MoveVelocity>) {
+          return tracking_.on_move_velocity(body, e);
+        } else if constexpr (std::is_same_v<T, interp::ProbeArm>) {
+          return tracking_.on_probe_arm(body, e);
+        } else if constexpr (std::is_same_v<T, interp::SyncIn>) {
+          return tracking_.on_sync_in(body, e);
+        } else if constexpr (std::is_same_v<T, interp::SyncOut>) {
+          return tracking_.on_sync_out(body, e);
+        } else if constexpr (std::is_same_v<T, interp::Homing>) {  // G74
           return homing_.step(body, axes_, indp_.axes(), EventContext(e, ipo_, error_));
         } else if constexpr (std::is_same_v<T, interp::MachineData>) {
-          return on_machine_data(body, e);
+          return tracking_.on_machine_data(body, e);
         } else {
           return EventContext(e, ipo_, error_)
               .fail(kNotSupportedId, "not supported: this command in the channel");

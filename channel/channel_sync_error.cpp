@@ -43,7 +43,7 @@ bool Channel::sync_error_begin() noexcept {
   if (!error_ || after_begun_ || !sync_ || !after_.usable()) return false;  // once a run
   if (sync_->phase() != SyncPhase::tracking || !sync_->synchronised()) return false;
   // Not built (docs/conveyor.md): a static unit (no real X follows the belt).
-  if (static_unit_) return false;
+  if (tracking_.static_unit()) return false;
   if (!SyncErrorStop::keeps_synchronisation(error_->id)) return false;
   if (!sync_error_indp_begin()) return false;  // --- trafo-feed: the INDP axes brake
   // --- sync-trafo: under #TRAFO ON the TCP's stop (channel_sync_error_trafo.cpp)

@@ -3,11 +3,11 @@
 // tracking/sync_error_trafo.hpp; docs/conveyor.md "Errors while synchronised", "Under #TRAFO ON").
 //
 // Flow: as in channel_sync_error.cpp, but the stop acts on the TCP: every cycle the path's
-// PCS1 point (braking to 0 by the feed hold) plus the belt's offset is the TCP (map_joints),
-// and a SyncErrorStop over the TCP's X, Y, Z (the conveyor workspace's faces as their limits,
-// dynamics derived from the joints' at the points the following passes) decides when it must
-// brake and brakes it, each Cartesian coordinate jerk-limited to rest, so that the TCP leaves
-// the belt on its own line (Z does not move towards the belt). The joints come from the
+// PCS1 point (braking to 0 by the feed hold) plus the belt's offset is the TCP
+// (KinematicStage::map), and a SyncErrorStop over the TCP's X, Y, Z (the conveyor workspace's faces
+// as their limits, dynamics derived from the joints' at the points the following passes) decides
+// when it must brake and brakes it, each Cartesian coordinate jerk-limited to rest, so that the TCP
+// leaves the belt on its own line (Z does not move towards the belt). The joints come from the
 // braking TCP by the joint stage. The joints themselves are watched too (the generic
 // SyncErrorStop on the joint setpoints): a joint that following would take above its V or
 // whose own stop would pass its soft limit starts the TCP's stop as well.

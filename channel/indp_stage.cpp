@@ -120,7 +120,7 @@ EventOutcome IndpStage::command(const interp::AxisCommand& c, const AxisStage& a
   // isg-language.md 6.1: "By default no offsets are applied": POS is the axis value (MCS) under
   // a #CS too; under #SYNC (PCS1) or #TRAFO ON the target would need the moving frame or the
   // kinematics.
-  // --- trafo-feed: while synchronised an axis the belt does not move (its share of T0's X is
+  // while synchronised an axis the belt does not move (its share of T0's X is
   // 0: Z, C) has PCS1 = MCS up to T0's constant offset: POS is its MCS value as outside #SYNC
   // (docs/conveyor.md "With INDP axes"). An axis the belt moves would need the moving frame.
   const bool belt_moves = c.frame.space == interp::Space::pcs1 &&

@@ -71,7 +71,7 @@ bool KinematicStage::map(const Cycle& c, const std::optional<AxisVec>& hold,
     raise(error, "NC3201", text, c, -1);
     return false;
   }
-  // --- trafo-checks: the jerk stencil holds this cycle and the two before.
+  // the jerk stencil holds this cycle and the two before.
   const bool consecutive = c.index == q_index_ + 1;
   q_plain_ = {c.interval_jerk_limited && !relay_.take_seen(), consecutive && q_plain_[0],
               consecutive && q_plain_[1]};
@@ -97,7 +97,7 @@ void KinematicStage::check_sync(const Cycle& c, const JointSetpoint& s, const Co
   // The closed-form v, a and j of the joints, then their setpoints' differences: a belt that
   // changes faster than its measured acceleration tells (a step, noise without filters) moves
   // the PCS1 offset and with it the joints between cycles beyond what the closed form shows.
-  // --- trafo-checks: the jerk as the audit checks it: the closed form on a jerk-limited slope,
+  // the jerk as the audit checks it: the closed form on a jerk-limited slope,
   // the third difference where its stencil is jerk-limited and holds no documented path step.
   auto o = joint_overrun(s, std::span(dyn.data(), n), c.jerk_limited);
   JointSetpoint diff;
@@ -194,7 +194,7 @@ bool KinematicStage::plan_sync_motion(ConveyorSync& sync, bool catch_up,
     }
     for (const int k : xyz)
       if (k >= 0) tcp[static_cast<std::size_t>(k)] = *d;
-    // --- trafo-feed: FEED_CONT > 0 meets the workpiece moving; the meeting point, its
+    // FEED_CONT > 0 meets the workpiece moving; the meeting point, its
     // velocity belt + f u inside the TCP's V, is covered by the second pass (S-1).
     r = catch_up ? sync.start_catch_up(start, target, feed_cont, std::span(tcp.data(), n))
                  : sync.start_departure(start, target, std::span(tcp.data(), n));
