@@ -22,7 +22,6 @@ Config prepared(Config config) {
   return config;
 }
 
-// --- indp:
 std::vector<IndpAxisConfig> indp_configs(const ChannelConfig& config) {
   std::vector<IndpAxisConfig> out;
   for (const ChannelAxis& a : config.axes)
@@ -30,74 +29,48 @@ std::vector<IndpAxisConfig> indp_configs(const ChannelConfig& config) {
   return out;
 }
 
-std::string text(const char* format, double a, double b) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, format, a, b);
-  return buf;
+/// `config`'s axes, when there is one per interpolated axis.
+const std::vector<ChannelAxis>& checked_axes(const ChannelConfig& config, std::size_t n) {
+  if (config.axes.size() != n)
+    throw std::invalid_argument("ipo::Channel: " + std::to_string(config.axes.size()) +
+                                " channel axes for " + std::to_string(n) + " interpolated axes");
+  return config.axes;
 }
 
 }  // namespace
 
 Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
-    : relay_(sink),
+    : kin_(config.path.joints, config.axes.size(), std::move(config.forward), sink),
       // Without a sink nobody reads the joints: the interpolator then does not compute them;
-      // --- trafo-checks: under a kinematic the channel reads them (NC6210's jerk stencil).
+      // under a kinematic the channel reads them (NC6210's jerk stencil).
       ipo_(prepared(config.path), source,
-           sink != nullptr || config.path.joints ? &relay_ : nullptr),
+           sink != nullptr || config.path.joints ? kin_.relay() : nullptr),
       source_(source),
       sink_(sink),
-      exact_stop_wait_max_(config.exact_stop_wait_max),
-      measured_value_wait_max_(config.measured_value_wait_max),
-      indp_(indp_configs(config), ipo_.t_cycle(), config.path.start) {  // --- indp
-  // --- trafo: the joint stage maps the TCP to the machine axes under #TRAFO ON.
-  if (config.path.joints) stage_.emplace(config.path.joints->inverse, config.axes.size());
-  conveyor_axis_ = config.conveyor_axis;  // what #MACHINE DATA changes (program/machine_data.hpp)
-  forward_ = std::move(config.forward);   // --- trafo: synchro_lag under #TRAFO ON
-  if (config.axes.size() != ipo_.axis_count())
-    throw std::invalid_argument("ipo::Channel: " + std::to_string(config.axes.size()) +
-                                " channel axes for " + std::to_string(ipo_.axis_count()) +
-                                " interpolated axes");
-  if (!(exact_stop_wait_max_ > 0.0))
-    throw std::invalid_argument("ipo::Channel: exact_stop_wait_max must be > 0 s, got " +
-                                std::to_string(exact_stop_wait_max_));
+      axes_(checked_axes(config, ipo_.axis_count()), config.path.start, ipo_.t_cycle()),
+      exact_stop_(config.exact_stop_wait_max, ipo_.t_cycle()),
+      indp_(indp_configs(config), ipo_.t_cycle(), config.path.start),
+      tracking_(sync_, ipo_, axes_, indp_, kin_, after_, error_, sink,
+                config.measured_value_wait_max, config.conveyor_axis) {
   const double t = ipo_.t_cycle();
-  // Same rounding as every wait (docs/ipo.md): the limit in whole cycles, never shorter.
-  wait_cycles_max_ = static_cast<std::uint64_t>(std::ceil(exact_stop_wait_max_ / t - 1e-9));
-  if (!(measured_value_wait_max_ > 0.0))
-    throw std::invalid_argument("ipo::Channel: measured_value_wait_max must be > 0 s, got " +
-                                std::to_string(measured_value_wait_max_));
-  measure_wait_cycles_max_ =
-      static_cast<std::uint64_t>(std::ceil(measured_value_wait_max_ / t - 1e-9));
   ipo_.set_wait_handler(&wait_relay_);
-  axes_.reserve(config.axes.size());
-  for (std::size_t i = 0; i < config.axes.size(); ++i) {
-    const double p0 = config.path.start[i];
-    ChannelAxis& a = config.axes[i];
-    try {
-      axes_.push_back(Axis{a, axes::PositionControlModel(a.control, t, p0),
-                           axes::AxisMonitor(a.monitor, t, static_cast<int>(i))});
-    } catch (const std::invalid_argument& e) {
-      throw std::invalid_argument("axis " + a.name + ": " + e.what());
-    }
-    state_.command[i] = p0;
-    state_.actual[i] = p0;
-  }
-  // --- conveyor-sync: conveyor tracking on FCT_DLM channels
+  // Conveyor tracking on FCT_DLM channels.
   if (config.conveyor) {
     sync_.emplace(*config.conveyor, config.sync_axes, t);
     for (std::size_t i = 0; i < sync_->axis_count(); ++i)  // fixed by T0: set once
       belt_.share[i] = sync_->share(i);
-    static_unit_ = config.conveyor->x_virtual;  // --- static-saw
-    // --- workspace: the stop after an error while synchronised (tracking/sync_error.hpp)
+    tracking_.set_static_unit(config.conveyor->x_virtual);
+    // The stop after an error while synchronised (tracking/sync_error.hpp).
     std::vector<AfterErrorAxis> after;
     for (std::size_t i = 0; i < config.axes.size(); ++i)
       after.push_back(after_error_axis(config.path.axes[i], config.axes[i].monitor.soft_limits));
     after_.configure(after, t);
-    after_box_ = config.conveyor->workspace;  // --- sync-trafo
+    after_box_ = config.conveyor->workspace;
   }
 }
 
-Status Channel::stop(const char* id, std::string message, const Cycle& c, int axis) noexcept {
+void raise(std::optional<RunTimeError>& error, const char* id, std::string message, const Cycle& c,
+           int axis) noexcept {
   try {
     RunTimeError e;
     e.id = id;
@@ -106,39 +79,43 @@ Status Channel::stop(const char* id, std::string message, const Cycle& c, int ax
     e.file = c.file;
     e.t = c.t;
     e.axis = axis;
-    error_ = std::move(e);
+    error = std::move(e);
   } catch (...) {
     std::abort();  // out of memory while reporting a run-time error: nothing sane is left
   }
+}
+
+Status Channel::stop(const char* id, std::string message, const Cycle& c, int axis) noexcept {
+  raise(error_, id, std::move(message), c, axis);
   return Status::error;
 }
 
 bool Channel::map_to_axes(const Cycle& c) noexcept {
-  // ---- The mapping path point -> machine axis setpoints. ----------------------------------
-  // Identity outside #TRAFO: the path is planned in machine axis values (MCS).
-  // The conveyor's moving PCS1 frame (issue 14) plugs in here: it turns c.x, c.v, c.a, c.j
-  // into the setpoints of the machine axes, which everything below drives and monitors.
-  // --- trafo: under #TRAFO ON the joint stage gives the joints (channel_kinematics.cpp).
-  // The PCS1 frame and the catch-up act on the TCP there, before the kinematic.
-  belt_.following = false;  // --- conveyor: the audit's belt share (set below)
-  if (stage_ && ipo::transformed(c, transformed_)) return map_joints(c);
-  transformed_ = false;
+  // Identity outside #TRAFO: the path is planned in machine axis values (MCS). The conveyor's
+  // moving PCS1 frame turns c.x, c.v, c.a, c.j into the setpoints of the machine axes, which
+  // everything after drives and monitors. Under #TRAFO ON the kinematic stage gives the joints;
+  // the PCS1 frame and the catch-up act on the TCP there, before the kinematic.
+  belt_.following = false;  // the audit's belt share (set below)
+  // Where a catch-up / departure left the path, it stands until its next block moves.
+  std::optional<AxisVec>& hold = tracking_.hold();
+  if (c.activity == Activity::motion) hold.reset();
+  if (kin_.decide(c))
+    return kin_.map(c, hold, sync_ ? &*sync_ : nullptr, ipo_.t_cycle(), axes_, error_);
+  std::array<axes::Setpoint, planner::kMaxAxes>& setpoint = axes_.setpoints();
   for (std::size_t i = 0; i < axes_.size(); ++i)
-    setpoint_[i] = axes::Setpoint{c.x[i], c.v[i], c.a[i], c.j[i]};
-  // --- conveyor-sync: the catch-up / departure drive the axes; PCS1 moves with the belt. After
-  // one, the path stands where it ended (sync_hold_) until its next block moves.
-  if (c.activity == Activity::motion) sync_hold_.reset();
-  if (sync_hold_)
+    setpoint[i] = axes::Setpoint{c.x[i], c.v[i], c.a[i], c.j[i]};
+  // The catch-up / departure drive the axes; PCS1 moves with the belt.
+  if (hold)
     for (std::size_t i = 0; i < axes_.size(); ++i)
-      setpoint_[i] = axes::Setpoint{(*sync_hold_)[i]};
+      setpoint[i] = axes::Setpoint{(*hold)[i]};
   if (sync_ && sync_->driving()) {
     for (std::size_t i = 0; i < axes_.size(); ++i)
-      setpoint_[i] = sync_->catch_up_setpoint(i);
+      setpoint[i] = sync_->catch_up_setpoint(i);
   } else if (sync_ && sync_->moving_frame()) {
     for (std::size_t i = 0; i < axes_.size(); ++i) {
-      setpoint_[i].p += sync_->offset(i);
-      setpoint_[i].v += sync_->offset_v(i);
-      setpoint_[i].a += sync_->offset_a(i);
+      setpoint[i].p += sync_->offset(i);
+      setpoint[i].v += sync_->offset_v(i);
+      setpoint[i].a += sync_->offset_a(i);
     }
   }
   if (sync_ && sync_->following()) {
@@ -147,172 +124,18 @@ bool Channel::map_to_axes(const Cycle& c) noexcept {
     belt_.acceleration = sync_->belt_acceleration();
   }
   return true;
-  // ---- end of the mapping -----------------------------------------------------------------
 }
 
 bool Channel::drive_axis(std::size_t i, const Cycle& c) noexcept {
-  Axis& a = axes_[i];
-  const axes::Setpoint& sp = setpoint_[i];
-  const int axis = static_cast<int>(i);
-  state_.command[i] = sp.p;
-  // Soft limits P-AXIS-00177 / 00178 on the command position, every cycle: the axis never
-  // receives a set position beyond them (an arc can cross a limit between its end points).
-  if (const auto alarm = axes::check_soft_limits(a.config.monitor.soft_limits, sp.p, axis, c.t)) {
-    const bool low = alarm->kind == axes::AlarmKind::soft_limit_min;
-    stop(alarm->id.data(),
-         "axis " + a.config.name +
-             text(low ? ": command position %.6g mm below the minimum soft position limit %.6g mm "
-                        "(P-AXIS-00177)"
-                      : ": command position %.6g mm above the maximum soft position limit %.6g mm "
-                        "(P-AXIS-00178)",
-                  sp.p, alarm->limit),
-         c, axis);
-    return false;
-  }
-  const axes::ActualValue act = a.control.step(sp);
-  state_.actual[i] = act.position;
-  state_.following_error[i] = act.following_error;
-  lag_max_[i] = std::max(lag_max_[i], std::fabs(act.following_error));
-  const bool waiting = in_exact_stop_ && ((moved_ >> i) & 1u) != 0;
-  axes::AxisSample s;
-  s.t = c.t;
-  s.command_position = sp.p;
-  s.actual_position = act.position;
-  s.motion_active = indp_.owned(i) ? !indp_.in_position(i)  // --- indp
-                                   : c.activity == Activity::motion && !waiting;
-  if (waiting) s.target = target_[i];
-  const auto alarm = a.monitor.step(s);
-  if (!alarm) return true;
-  std::string what;
-  switch (alarm->kind) {
-    case axes::AlarmKind::position_lag:
-      what = text(
-          ": position lag %.6g mm above the maximum %.6g mm for longer than the filter "
-          "time (NCSIM-AXIS-025 / 026)",
-          alarm->value, alarm->limit);
-      break;
-    case axes::AlarmKind::exact_stop_timeout:
-      what = text(
-                 ": exact stop window P-AXIS-00236 (%.6g mm) not reached within P-AXIS-00532 "
-                 "(%.6g s)",
-                 a.config.monitor.exact_stop.window, alarm->limit) +
-             text(", %.6g mm from the target after %.6g s", std::fabs(target_[i] - act.position),
-                  static_cast<double>(waited_) * ipo_.t_cycle());
-      break;
-    default:
-      what = ": " + axes::describe(*alarm);
-      break;
-  }
-  stop(alarm->id.data(), "axis " + a.config.name + what, c, axis);
-  return false;
-}
-
-bool Channel::exact_stop(const Cycle& c) noexcept {
-  bool all_in = true;
-  for (std::size_t i = 0; i < axes_.size(); ++i)
-    if (((moved_ >> i) & 1u) != 0 && !axes_[i].monitor.status().in_exact_stop_window)
-      all_in = false;
-  if (all_in) {
-    ipo_.release_exact_stop();
-    in_exact_stop_ = false;
-    return true;
-  }
-  if (c.activity == Activity::exact_stop) ++waited_;  // the stop cycle itself counts 0
-  const double waited = static_cast<double>(waited_) * ipo_.t_cycle();
-  if (waited_ > wait_cycles_max_) {
-    int worst = 0;
-    double worst_d = -1.0;
-    for (std::size_t i = 0; i < axes_.size(); ++i) {
-      const double d = std::fabs(target_[i] - state_.actual[i]);
-      if (((moved_ >> i) & 1u) != 0 && !axes_[i].monitor.status().in_exact_stop_window &&
-          d > worst_d) {
-        worst = static_cast<int>(i);
-        worst_d = d;
-      }
-    }
-    const std::size_t w = static_cast<std::size_t>(worst);
-    stop(kExactStopWaitId,
-         "axis " + axes_[w].config.name +
-             text(": exact stop window P-AXIS-00236 (%.6g mm) not reached, %.6g mm from the "
-                  "target",
-                  axes_[w].config.monitor.exact_stop.window, worst_d) +
-             text(" after %.6g s (P-AXIS-00532 does not monitor the time; ncsim's limit %.6g s)",
-                  waited, exact_stop_wait_max_),
-         c, worst);
-    return false;
-  }
-  return true;
-}
-
-// --- operator: block starts and scenario actions (docs/scenario.md "When events fire")
-
-void Channel::block_started(std::uint32_t line) noexcept {
-  if (sync_error_) return;  // --- workspace: the program is aborted (its blocks only brake)
-  player_->block_started(line);
-  for (const scenario::Action& a : player_->fire_lines()) {
-    if (failed_) break;
-    failed_ = act(a);
-  }
-}
-
-std::optional<std::pair<const char*, std::string>> Channel::act(
-    const scenario::Action& a) noexcept {
-  if (std::holds_alternative<scenario::VeWrite>(a)) return std::nullopt;  // in player_->ve()
-  // MCV_SetReducedFilter: play_cycle hands player_->reduced_filter() to the Port every cycle.
-  if (std::holds_alternative<scenario::ReducedFilter>(a)) return std::nullopt;
-  if (const auto* h = std::get_if<scenario::FeedHold>(&a)) {
-    ipo_.set_feed_hold(h->on);
-    return std::nullopt;
-  }
-  if (const auto* o = std::get_if<scenario::PathOverride>(&a)) {
-    const double max = max_override(ipo_.override_type());
-    if (o->fraction <= max) {
-      try {
-        ipo_.set_override(o->fraction);
-        return std::nullopt;
-      } catch (const std::invalid_argument&) {
-      }
-    }
-    return std::pair{kOverrideRangeId,
-                     text("scenario path override %.6g %% above %.6g %%, the largest of the "
-                          "channel's override type (NCSIM-CHAN-630)",
-                          o->fraction * 100.0, max * 100.0)};
-  }
-  return indp_override(std::get<scenario::AxisOverride>(a));  // --- indp
-}
-
-bool Channel::play_cycle(Status& status) noexcept {
-  if (stopped_) {
-    status = Status::finished;
-    return false;
-  }
-  const Cycle& last = ipo_.cycle();
-  const std::uint64_t k = last.index;
-  const double t = static_cast<double>(k) * ipo_.t_cycle();
-  for (const scenario::Action& a : player_->step(k, t)) {
-    if (auto e = act(a)) {
-      Cycle at = last;
-      at.t = t;
-      status = stop(e->first, std::move(e->second), at, -1);
-      return false;
-    }
-  }
-  // MCV_SetReducedFilter from the PLC side (docs/conveyor.md "Filters").
-  // --- sync-feed: and the channel's feed hold while it tracks the conveyor (docs/conveyor.md
-  // F-4: P-AXIS-00624/00625 "in the case of feedhold").
-  if (port_ != nullptr)
-    port_->set_reduced_filter(player_->reduced_filter() || (ipo_.feed_hold() && sync_tracking()));
-  if (const auto reason = player_->stop()) {
-    stopped_ = *reason;
-    status = Status::finished;
-    return false;
-  }
-  return true;
+  const bool waiting = exact_stop_.waits_for(i);
+  const bool active = indp_.axes().owned(i) ? !indp_.axes().in_position(i)
+                                            : c.activity == Activity::motion && !waiting;
+  return axes_.drive(i, c, active, waiting, exact_stop_.target(i), exact_stop_.waited(), error_);
 }
 
 Status Channel::step() noexcept {
-  tech_.clear();  // --- indp: the technology functions of this cycle
-  // --- workspace: after an error while synchronised the machine moves on (004 §2.3).
+  indp_.clear_tech();  // the technology functions of this cycle
+  // After an error while synchronised the machine moves on (004 §2.3).
   if (sync_error_ && !error_) return sync_error_cycle(true);
   const std::uint64_t before = ipo_.cycle().index;
   const Status s = step_program();
@@ -323,36 +146,38 @@ Status Channel::step() noexcept {
 Status Channel::step_program() noexcept {
   if (error_) return Status::error;
   if (ended_) return *ended_;  // the player sees each cycle once
-  if (player_ != nullptr) {
+  if (play_.player() != nullptr) {
     Status ended = Status::finished;
-    if (!play_cycle(ended)) return ended;
+    if (!play_.step(tracking_.tracking(), port_, ended, error_)) return ended;
   }
   // A blocked event is dispatched again each cycle; a path holding at a ChannelWait goes on in
   // this cycle once the events up to the wait's tag are done.
-  if (blocked_ || ipo_.holding_channel()) {
+  if (events_.blocked() || ipo_.holding_channel()) {
     const bool holding = ipo_.holding_channel();
-    const bool done = run_events(holding ? wait_tag_ : ipo_.cycle().event_tag);
+    const bool done = run_events(holding ? events_.wait_tag() : ipo_.cycle().event_tag);
     if (error_) return Status::error;
-    if (done && holding && indp_syn_done()) ipo_.release_wait();  // --- indp: INDP_SYN axes
+    if (done && holding && indp_.syn_done(events_.wait_interruptible(), axes_.size()))
+      ipo_.release_wait();
   }
-  static_override();  // --- static-saw: a synchronised static unit's path follows the belt
+  tracking_.static_override();  // a synchronised static unit's path follows the belt
   Status s = ipo_.step();
   if (error_) return Status::error;  // raised by an event at a ChannelWait inside the step
   if (s == Status::finished) {
     run_events(~std::uint32_t{0});  // none left: ProgramSource ends with a ChannelWait
     if (error_) s = Status::error;
   }
-  if (s == Status::finished && !indp_.in_position_mask(0))  // --- indp: the end waits for them
-    return indp_tail();
+  if (s == Status::finished && !indp_.axes().in_position_mask(0))
+    return indp_tail();  // the program end waits for the INDP axes
   if (s != Status::running) {
     ended_ = s;
     return s;
   }
   const Cycle& c = ipo_.cycle();
-  driven_ = 0;                                                                  // --- workspace
-  if (failed_) return stop(failed_->first, std::move(failed_->second), c, -1);  // --- operator
-  // --- operator: no endless hold; --- workspace: unless the hold waits for the belt (NC9081)
-  if (player_ != nullptr && c.held && !player_->more_to_come() && !workspace_hold_waits())
+  driven_ = 0;
+  if (auto& f = play_.failed()) return stop(f->first, std::move(f->second), c, -1);
+  // No endless hold, unless the workspace hold waits for the belt (NC9081).
+  if (play_.player() != nullptr && c.held && !play_.player()->more_to_come() &&
+      !tracking_.hold_waits())
     return stop(kHeldForeverId,
                 ipo_.feed_hold() ? "the path stands by feed hold and no later scenario event "
                                    "releases it: the run would never end"
@@ -360,51 +185,52 @@ Status Channel::step_program() noexcept {
                                    "raises it: the run would never end",
                 c, -1);
   // Events riding on the blocks started in this cycle.
-  if (!blocked_) run_events(c.event_tag);
+  if (!events_.blocked()) run_events(c.event_tag);
   if (error_) return Status::error;
-  // --- conveyor-sync: the conveyor world's cycle (latch, 50653, the Port's errors).
+  // The conveyor world's cycle (latch, 50653, the Port's errors).
   if (sync_) {
     if (auto e = sync_->step(c.t)) return stop(e->id.c_str(), std::move(e->message), c, -1);
     // The V.E. values of the workpiece just measured go to the world's store, where the next
     // barrier reads them (docs/conveyor.md "Wiring").
-    if (port_ != nullptr && player_ != nullptr && port_->last_latch().workpiece != ve_workpiece_) {
+    if (port_ != nullptr && play_.player() != nullptr &&
+        port_->last_latch().workpiece != ve_workpiece_) {
       const conveyor::LatchInfo& l = port_->last_latch();
       ve_workpiece_ = l.workpiece;
       try {
         for (const auto& [name, value] : l.ve)
-          player_->ve().write(name, value);
+          play_.player()->ve().write(name, value);
       } catch (...) {
         std::abort();  // out of memory writing a V.E. value
       }
     }
   }
   if (!map_to_axes(c)) return Status::error;
-  if (sync_ && !sync_check_workspace(c)) return Status::error;  // --- conveyor-sync
-  // --- workspace: the hold against the conveying direction
-  if (sync_ && !sync_workspace_cap(c)) return Status::error;
-  if (!in_exact_stop_ && ipo_.holding_exact_stop()) {
-    // The command reached the end of a G60 / G360 block in this cycle (001 l.149: t_1).
-    in_exact_stop_ = true;
-    waited_ = 0;
-    moved_ = 0;
-    for (std::size_t i = 0; i < axes_.size(); ++i)
-      target_[i] = setpoint_[i].p;  // --- trafo: the joints' end point under #TRAFO
-    if (const planner::Move* prog = c.programmed) {
-      for (std::size_t i = 0; i < axes_.size(); ++i) {
-        const bool moved = prog->end[i] != prog->start[i] ||
-                           (prog->arc && (prog->arc->axis_1 == i || prog->arc->axis_2 == i));
-        // --- trafo: every joint of a transformed block is waited for
-        if (moved || transformed_) moved_ |= 1u << i;
-      }
-    }
-  }
-  if (!indp_cycle(c)) return Status::error;  // --- indp
+  // The conveyor workspace, and the hold against the conveying direction.
+  if (sync_ && !tracking_.check_workspace(c)) return Status::error;
+  if (sync_ && !tracking_.workspace_cap(c)) return Status::error;
+  if (!exact_stop_.active() && ipo_.holding_exact_stop())
+    exact_stop_.begin(c, std::span(axes_.setpoints().data(), axes_.size()), kin_.transformed());
+  if (!indp_.step(c, axes_, shown_, error_)) return Status::error;
   for (std::size_t i = 0; i < axes_.size(); ++i) {
-    driven_ = i + 1;  // --- workspace: a monitor's alarm comes after the axis's control step
+    driven_ = i + 1;  // a monitor's alarm comes after the axis's control step
     if (!drive_axis(i, c)) return Status::error;
   }
-  if (in_exact_stop_ && !exact_stop(c)) return Status::error;
-  if (sink_) sink_->on_cycle(cycle());  // --- indp: with the INDP axes' setpoints
+  if (exact_stop_.active()) {
+    bool release = false;
+    if (!exact_stop_.check(c, axes_, release, error_)) return Status::error;
+    if (release) ipo_.release_exact_stop();
+  }
+  if (sink_) sink_->on_cycle(cycle());  // with the INDP axes' setpoints
+  return Status::running;
+}
+
+Status Channel::indp_tail() noexcept {
+  const Cycle& c = indp_.tail(ipo_.cycle(), ipo_.t_cycle());
+  map_to_axes(c);
+  if (!indp_.step(c, axes_, shown_, error_)) return Status::error;
+  for (std::size_t i = 0; i < axes_.size(); ++i)
+    if (!drive_axis(i, c)) return Status::error;
+  if (sink_) sink_->on_cycle(cycle());
   return Status::running;
 }
 

@@ -14,44 +14,28 @@
 // (its `x` is the axes' command position), axes() the command, actual position and following
 // error of every axis; run_time_error() says why the channel stopped (docs/ipo.md "The
 // channel loop").
-// Per cycle (Channel::step):
-//   1. PathInterpolator::step(): path state and point (Detail::axes).
-//   2. Mapping point -> machine axis setpoints: identity, or under #TRAFO ON the joint stage
-//      (the TCP point -> joint setpoints, ipo/joint_stage.hpp), plus the conveyor's moving PCS1
-//      frame (ConveyorSync: the Port is stepped first; the catch-up / departure profiles drive
-//      the axes while they run; PCS1 blocks get the frame's offset; under #TRAFO ON the
-//      offset moves the TCP before the joint stage, docs/conveyor.md).
-//   3. Per axis: soft limits P-AXIS-00177 / 00178 on the command position (NC5501 / NC5502),
-//      PositionControlModel::step(), AxisMonitor::step() (position lag 0x4550, exact-stop
-//      window P-ERR-70082, and the other monitors the axis list enables).
-//   4. Exact stop (G60 / G360): from the cycle the command reaches the block end, the path
-//      waits until every axis that moved in the block has its actual position inside its
-//      window P-AXIS-00236 (001 l.149-150, l.172); P-AXIS-00532 is the longest time allowed
-//      for that (P-ERR-70082, 001 l.150, l.157); without time monitoring (P-AXIS-00532 = 0)
-//      the wait ends with NC6101 after ChannelConfig::exact_stop_wait_max.
-//   5. The Sink sees the joints of the cycle and then the cycle, only when no run-time error
-//      was raised in it: a stopped run's stream ends with the last good cycle.
-//   1a. Channel events (program/channel_event.hpp, docs/ipo.md "Channel events"): the events due
-//      (Cycle::event_tag) are dispatched by kind (channel/channel_events.cpp) after the
-//      interpolator's step; at a ChannelWait the interpolator asks the channel (on_wait) inside
-//      its step, and a wait whose events are not done holds the path (Activity::channel) until
-//      they are: a blocking event is dispatched again at the start of every cycle, and when it
-//      and the events after it up to the wait's tag are done, the path is released before the
-//      interpolator's step of that cycle. An event kind the channel cannot execute is run-time
-//      error NC6001 `not supported: ...` at the event's line.
-//   0. Under a scenario (play()), before 1: Player::step(k, t) with k the cycle's index and t
-//      its start time; its V.E. writes are in the store the ProgramSource answers barriers from; a
-//      [stop] condition met ends the run before the cycle (Status::finished, scenario_stop());
-//      path override and feed hold go to PathInterpolator::set_override / set_feed_hold (an
-//      override above the type's largest is run-time error NC6102); an axis override goes to
-//      IndpAxes::set_override (002 2.2; NC6105 above 100 % or for no channel axis).
-//      During 1, every block that starts (also several in one cycle: the interpolator's
-//      BlockObserver) goes to Player::block_started and its `line` events fire at once
-//      (Player::fire_lines): they belong to the cycle in which the block starts.
-//   2b. (indp) INDP axes (channel/channel_indp.cpp): IndpAxes::step(); an axis the INDP layer owns
-//      gets its INDP setpoint instead of the path's (Cycle::independent); X[INDP_SYN ...],
-//      X[INDP_ASYN ...], #WAIT INDP and M/H/S/T/D arrive as channel events (docs/ipo.md "INDP
-//      axes and technology functions").
+// The channel is made of owned parts, each with its own file in channel/ (channel/README.md);
+// per cycle (Channel::step), in this order:
+//   - the scenario's cycle (ScenarioPlay, before the path: actions, [stop] conditions);
+//   - a blocked channel event and the events of a ChannelWait the path holds at (EventQueue,
+//     dispatched by kind in Channel::dispatch; the parts execute them through an EventContext;
+//     NC6001 `not supported` for a kind no part executes);
+//   - the path interpolator's step (PathInterpolator::step; block starts go to the scenario);
+//   - the events riding on the blocks started in the cycle;
+//   - the conveyor world's cycle (ConveyorSync, the Port) and the V.E. values of a latch;
+//   - the mapping of the path point to machine axis setpoints: identity plus the conveyor's
+//     moving PCS1 frame / the catch-up, or under #TRAFO ON the KinematicStage (the TCP moved by
+//     the frame -> joints);
+//   - the conveyor workspace and the workspace hold (tracking);
+//   - the start of an exact stop (ExactStopWait) when the command reached a G60 / G360 block end;
+//   - the INDP axes (IndpStage): an axis they own gets its INDP setpoint;
+//   - every axis driven (AxisStage: soft limits, position control, monitors);
+//   - the exact-stop check on actual positions (release, P-ERR-70082, NC6101);
+//   - the Sink sees the cycle, only when no run-time error was raised in it: a stopped run's
+//     stream ends with the last good cycle.
+// After a run-time error while synchronised the cycles go on with the after-error stop
+// (channel_sync_error*.cpp) until the machine stands; after the path's end the cycles go on
+// while INDP axes still move.
 // Invariants: step() never throws (an error ends the stream with Status::error); it is
 // deterministic (encoder noise is seeded per axis); memory is the interpolator's (bounded by
 // the look-ahead window) plus one control model and one monitor per axis.
@@ -65,85 +49,41 @@
 
 #include "axes/control.hpp"
 #include "axes/monitor.hpp"
+#include "channel/axis_stage.hpp"
+#include "channel/channel_types.hpp"
+#include "channel/conveyor_tracking.hpp"
+#include "channel/event_context.hpp"
+#include "channel/event_queue.hpp"
+#include "channel/exact_stop.hpp"
+#include "channel/homing.hpp"
 #include "channel/indp_axes.hpp"
+#include "channel/indp_stage.hpp"
+#include "channel/kinematic_stage.hpp"
+#include "channel/scenario_play.hpp"
 #include "ipo/interpolator.hpp"
 #include "ipo/joint_stage.hpp"
 #include "machines/machine.hpp"
 #include "program/channel_event.hpp"
 #include "scenario/player.hpp"
-#include "tracking/belt_offset.hpp"    // --- conveyor: BeltOffset
-#include "tracking/conveyor_sync.hpp"  // --- conveyor-sync
-#include "tracking/sync_entry.hpp"     // --- sync-feed
-#include "tracking/sync_error.hpp"     // --- workspace
+#include "tracking/belt_offset.hpp"
+#include "tracking/conveyor_sync.hpp"
+#include "tracking/sync_entry.hpp"
+#include "tracking/sync_error.hpp"
 
 namespace ncsim::ipo {
-
-/// NC6101: the exact-stop window P-AXIS-00236 was not reached within
-/// ChannelConfig::exact_stop_wait_max while P-AXIS-00532 does not monitor the time.
-inline constexpr const char* kExactStopWaitId = "NC6101";
-
-/// NC6102: a scenario's path override is above the largest the channel's override type
-/// (NCSIM-CHAN-630) accepts.
-inline constexpr const char* kOverrideRangeId = "NC6102";
-
-/// NC6301: the path stands by feed hold or override 0 and nothing in the scenario can release
-/// it (the run would never end). --- operator
-inline constexpr const char* kHeldForeverId = "NC6301";
-
-/// NC9081: the belt stood while the workspace hold kept the tool at the hold line for longer
-/// than ChannelConfig::measured_value_wait_max (the belt was not restarted). --- workspace
-inline constexpr const char* kHoldBeltStoodId = "NC9081";
-
-/// NC9054: #SYNC IN waited longer than ChannelConfig::measured_value_wait_max for its measured
-/// value (no workpiece edge latched).
-inline constexpr const char* kMeasuredValueWaitId = "NC9054";
-/// --- sync-trafo: #SYNC IN FEED_CONT > 0 / FEED_CONT_AUTO on a static processing unit
-/// (x_virtual): its feed follows the belt (004 l.438); docs/conveyor.md S-1.
-inline constexpr const char* kStaticFeedContId = "NC9060";
-/// NC9061: #MACHINE DATA of the conveyor's filters or delay time while the channel tracks the
-/// belt (catch-up or PCS1): the filters' restart would step the frame under the tool
-/// (docs/conveyor.md F-7).
-inline constexpr const char* kFilterWhileTrackingId = "NC9061";
-// --- indp:
-/// NC6103: the path programs an axis while its INDP motion runs or away from where it left it.
-inline constexpr const char* kIndpPathId = "NC6103";
-/// NC6105: a scenario axis override names no channel axis or is outside 0 .. 100 %.
-inline constexpr const char* kIndpOverrideId = "NC6105";
-
-/// A technology function the channel output (M/H/S/T/D, to the PLC side).
-struct TechOutput {
-  double t = 0.0;          ///< [s] end of the cycle in which it was output
-  std::uint32_t line = 0;  ///< source line
-  std::uint16_t file = 0;  ///< interp::Command::file (0: the main program)
-  interp::TechKind kind = interp::TechKind::m;
-  double value = 0.0;           ///< the function's number (M3 -> 3)
-  std::optional<double> extra;  ///< M/H additional value (M200=1200 -> 1200)
-};
-
-/// One interpolated axis as the channel drives it.
-struct ChannelAxis {
-  std::string name;                     ///< axis name (messages)
-  axes::PositionControlParams control;  ///< position control model (axes/control.hpp)
-  axes::AxisMonitorParams monitor;      ///< soft limits, lag, exact stop, ...
-  // --- indp:
-  IndpAxisConfig indp;  ///< the axis as an INDP axis (channel/indp_axes.hpp)
-  // --- static-saw: G74 (channel/channel_homing.cpp, docs/homing.md)
-  double reference_position = 0.0;  ///< P-AXIS-00152 pos_refpkt [mm | deg]
-  double homing_velocity = 83.333;  ///< P-AXIS-00219 vb_refmax [mm/s | deg/s]
-};
 
 struct ChannelConfig {
   Config path;                        ///< the interpolator's (detail and hold_exact_stop are set)
   std::vector<ChannelAxis> axes;      ///< one per entry of path.axes, same order
   double exact_stop_wait_max = 60.0;  ///< [s] longest exact-stop wait without P-AXIS-00532
   double measured_value_wait_max = 600.0;  ///< [s] longest #SYNC IN wait for a measured value
-  // --- conveyor-sync: conveyor tracking (docs/conveyor.md "Synchronisation")
+  // conveyor tracking (docs/conveyor.md "Synchronisation")
   std::optional<machines::ConveyorSyncChannel> conveyor;  ///< FCT_DLM channels only
   std::vector<SyncAxis> sync_axes;  ///< one per entry of path.axes (with `conveyor`)
   /// The conveyor axis's conv_sync.* as loaded: what `#MACHINE DATA` changes at run time
   /// (program/machine_data.hpp); set with `conveyor` when the machine has a conveyor axis.
   std::optional<machines::ConveyorAxisParams> conveyor_axis;
-  /// --- trafo: the forward transform of the machine's kinematic (ipo::forward_map; empty
+  /// the forward transform of the machine's kinematic (ipo::forward_map; empty
   /// without one): synchro_lag under #TRAFO ON (Channel::master_display, ipo::cycle_lag).
   planner::JointMap forward;
 };
@@ -152,23 +92,6 @@ struct ChannelConfig {
 /// Config of machine_config() and, per interpolated axis, the axis core's position control and
 /// monitor parameters through axes/axis_config (the one machine -> axes adapter).
 ChannelConfig channel_config(const machines::Machine& machine, double t_cycle);
-
-/// A run-time error: the channel stopped as the kernel would (the axes and the path compound).
-struct RunTimeError {
-  std::string id;          ///< the manual's id (P-ERR-70082, 0x4550) or ncsim's (NC5501, NC6101)
-  std::string message;     ///< what happened, with the value and the limit
-  std::uint32_t line = 0;  ///< source line of the active block
-  std::uint16_t file = 0;  ///< source file of `line` (interp::Command::file, 0: main program)
-  double t = 0.0;          ///< [s] end of the cycle that raised it
-  int axis = -1;           ///< interpolated axis index
-};
-
-/// The axes after a cycle.
-struct AxesState {
-  AxisVec command{};          ///< set positions [mm | deg] (the mapped path point)
-  AxisVec actual{};           ///< measured actual positions [mm | deg]
-  AxisVec following_error{};  ///< set - actual [mm | deg] (000 7.1.5)
-};
 
 class Channel {
  public:
@@ -185,46 +108,45 @@ class Channel {
   /// The path record of the last cycle step() reported (INDP axes: their setpoints).
   const Cycle& cycle() const noexcept { return shown_ ? *shown_ : ipo_.cycle(); }
   /// Command, actual position and following error of every axis after the last cycle.
-  const AxesState& axes() const noexcept { return state_; }
+  const AxesState& axes() const noexcept { return axes_.state(); }
   /// Why the channel stopped at run time, if it did.
   const std::optional<RunTimeError>& run_time_error() const noexcept { return error_; }
-  /// --- trafo: the first joint overrun while synchronised under #TRAFO ON (warning NC6210,
+  /// the first joint overrun while synchronised under #TRAFO ON (warning NC6210,
   /// tracking/trafo_sync.hpp); the run goes on (004 l.609: the joint dynamics are not ensured).
-  const std::optional<RunTimeError>& trafo_warning() const noexcept { return trafo_warning_; }
+  const std::optional<RunTimeError>& trafo_warning() const noexcept { return kin_.warning(); }
   /// The interpolator's message when the source failed.
   const std::string& message() const noexcept { return ipo_.message(); }
   double t_cycle() const noexcept { return ipo_.t_cycle(); }  ///< [s]
   std::size_t axis_count() const noexcept { return axes_.size(); }
   /// Largest |following error| seen per axis so far [mm | deg].
-  const AxisVec& following_error_max() const noexcept { return lag_max_; }
+  const AxisVec& following_error_max() const noexcept { return axes_.following_error_max(); }
 
-  /// Plays `player`'s scenario from the next cycle on (step 0); null: none. `player` must
+  /// Plays `player`'s scenario from the next cycle on (ScenarioPlay); null: none. `player` must
   /// outlive the channel. The ProgramSource's barriers read player->ve() (the caller wires it:
   /// ProgramSource::answer_barriers_from).
-  void play(scenario::Player* player) noexcept {
-    player_ = player;
-    ipo_.observe_blocks(player != nullptr ? &blocks_ : nullptr);  // --- operator
-  }
+  void play(scenario::Player* player) noexcept { play_.attach(player); }
   /// The [stop] condition that ended the run, if one did (step() then returned finished).
-  const std::optional<scenario::StopReason>& scenario_stop() const noexcept { return stopped_; }
+  const std::optional<scenario::StopReason>& scenario_stop() const noexcept {
+    return play_.stop_reason();
+  }
 
-  // --- trafo: kinematics (channel_kinematics.cpp, docs/ipo.md "Kinematics in run and time")
+  // kinematics (channel/kinematic_stage.hpp, docs/ipo.md "Kinematics in run and time")
   /// The last cycle ran under #TRAFO ON: cycle().x is the TCP, the axes got joints().
-  bool transformed() const noexcept { return transformed_; }
+  bool transformed() const noexcept { return kin_.transformed(); }
   /// The joint setpoints of the last transformed cycle (machine axes in interpolated order).
-  const JointSetpoint& joints() const noexcept { return joints_; }
+  const JointSetpoint& joints() const noexcept { return kin_.joints(); }
   /// The TCP setpoint of the last transformed cycle, in MCS (X, Y, Z first; the PCS1 offset
   /// and the catch-up included): what the joints() were computed from [mm, mm/s, ...].
-  const std::array<axes::Setpoint, planner::kMaxAxes>& tcp() const noexcept { return tcp_; }
-  /// --- trafo-checks: ChannelConfig::forward (joints -> TCP; empty without a kinematic).
-  const planner::JointMap& forward() const noexcept { return forward_; }
+  const std::array<axes::Setpoint, planner::kMaxAxes>& tcp() const noexcept { return kin_.tcp(); }
+  /// ChannelConfig::forward (joints -> TCP; empty without a kinematic).
+  const planner::JointMap& forward() const noexcept { return kin_.forward(); }
   /// The setpoint (p, v, a, j) every axis received in the last cycle [mm | deg, /s ...].
   const std::array<axes::Setpoint, planner::kMaxAxes>& setpoints() const noexcept {
-    return setpoint_;
+    return axes_.setpoints();
   }
-  /// --- conveyor: the belt's share of setpoints() in the last cycle (Audit::set_belt()).
+  /// the belt's share of setpoints() in the last cycle (Audit::set_belt()).
   const BeltOffset& belt_share() const noexcept { return belt_; }
-  // --- conveyor-sync: conveyor tracking (docs/conveyor.md "Synchronisation")
+  // conveyor tracking (docs/conveyor.md "Synchronisation")
   /// The conveyor world the channel steps every cycle and tracks between #SYNC IN and
   /// #SYNC OUT (null: none; #SYNC IN is then NC6001 `not supported`). Must outlive the channel.
   /// Ignored on a channel without conveyor tracking (no FCT_DLM).
@@ -234,30 +156,24 @@ class Channel {
   }
   /// The channel's conveyor tracking state; null without FCT_DLM.
   const ConveyorSync* conveyor_sync() const noexcept { return sync_ ? &*sync_ : nullptr; }
-  // --- line: the display variables of seed 004 §6 with synchro_lag (tracking/synchro_lag.hpp) of
+  // the display variables of seed 004 §6 with synchro_lag (tracking/synchro_lag.hpp) of
   // the last cycle; all 0 without FCT_DLM (channel/channel_lag.cpp).
   MasterDisplay master_display() const noexcept;
-  // --- indp: independent axes (channel/channel_indp.cpp, docs/ipo.md "INDP axes and technology
+  // independent axes (channel/indp_stage.hpp, docs/ipo.md "INDP axes and technology
   // functions"). Conveyor tracking takes an INTERRUPTIBLE INDP_SYN motion over, moving, when
   // the catch-up after the next #SYNC IN starts (IndpAxes::hand_over, docs/conveyor.md S-4).
-  IndpAxes& indp() noexcept { return indp_; }
-  const IndpAxes& indp() const noexcept { return indp_; }
+  IndpAxes& indp() noexcept { return indp_.axes(); }
+  const IndpAxes& indp() const noexcept { return indp_.axes(); }
   /// The technology functions (M/H/S/T/D) the channel output in the last step(), in program
   /// order (`run` writes them as CSV comments; docs/ipo.md "INDP axes and technology functions").
-  const std::vector<TechOutput>& tech_outputs() const noexcept { return tech_; }
-  // --- workspace: an error while synchronised keeps the synchronisation (seed 004 §2.3,
+  const std::vector<TechOutput>& tech_outputs() const noexcept { return indp_.tech_outputs(); }
+  // an error while synchronised keeps the synchronisation (seed 004 §2.3,
   // tracking/sync_error.hpp, channel/channel_sync_error.cpp, docs/conveyor.md "Errors while
   // synchronised"): the run goes on until the machine stands, then ends with that error.
   /// What the machine did after such an error (empty: none): the following, the stop, why.
   std::string after_error_note() const;
 
  private:
-  /// What executing a channel event gave (channel/channel_events.cpp).
-  enum class EventOutcome : std::uint8_t {
-    done,      ///< executed; the next event may follow
-    blocking,  ///< not done yet: dispatched again next cycle, the path holds meanwhile
-    error,     ///< a run-time error was raised (error_)
-  };
   /// Hands the interpolator's ChannelWait to the channel.
   class WaitRelay final : public WaitHandler {
    public:
@@ -269,110 +185,20 @@ class Channel {
   };
   /// Executes one event by kind (channel/channel_events.cpp: the one dispatch point).
   EventOutcome dispatch(const ChannelEvent& event) noexcept;
-  /// Dispatches the blocked event and then the due events up to `up_to`; false when one
-  /// blocks (kept in blocked_) or raised an error.
+  /// EventQueue::run with dispatch(): the blocked event, then the due events up to `up_to`;
+  /// false when one blocks or raised an error.
   bool run_events(std::uint32_t up_to) noexcept;
   /// The path reached a ChannelWait: true when its events are all done (the path goes on).
   bool on_wait(const ChannelWait& wait) noexcept;
-  /// Raises a run-time error at an event's line, at the time of the cycle being computed.
-  EventOutcome event_error(const char* id, std::string message, const ChannelEvent& e) noexcept;
-  // --- conveyor-sync: the conveyor events (channel/channel_conveyor.cpp)
-  EventOutcome on_sync_in(const interp::SyncIn& command, const ChannelEvent& e) noexcept;
-  EventOutcome on_sync_out(const interp::SyncOut& command, const ChannelEvent& e) noexcept;
-  /// --- sync-feed: hands the INDP axes to the catch-up / departure starting now: in position
-  /// ones released, INTERRUPTIBLE INDP_SYN ones taken over moving; false while another INDP
-  /// motion still runs (the motion event waits for it).
-  bool sync_take_indp_axes() noexcept;
-  /// --- sync-feed: the channel moves with the conveyor (catch-up or PCS1 tracking).
-  bool sync_tracking() const noexcept {
-    return sync_ &&
-           (sync_->phase() == SyncPhase::catching_up || sync_->phase() == SyncPhase::tracking);
-  }
-  /// The catch-up after #SYNC IN / the departure after #SYNC OUT (ProgramSource::sync_motion).
-  EventOutcome on_sync_motion(const interp::Motion& motion, const ChannelEvent& e) noexcept;
-  // --- sync-feed: FEED_CONT > 0 / FEED_CONT_AUTO (channel/channel_sync_entry.cpp, S-1)
-  /// The relative velocity the catch-up from `start` to `target` meets its target with: the
-  /// #SYNC IN's, reduced to what the path's first block allows (tracking/sync_entry); 0: at rest.
-  double sync_entry_velocity(std::span<const axes::MotionState> start,
-                             std::span<const double> target) noexcept;
-  /// The catch-up meets its target `lag` [s] into this cycle: the path starts there, moving.
-  EventOutcome sync_hand_over(double lag, const ChannelEvent& e) noexcept;
-  SyncEntry sync_entry_{};     ///< the hand-over decided at the catch-up's start
-  planner::AxisVec sync_u_{};  ///< the catch-up's direction (FEED_CONT's) [1]
-  // --- sync-feed: end
-  EventOutcome on_probe_arm(const interp::ProbeArm& command, const ChannelEvent& e) noexcept;
-  /// After a command the Port took (MC_TouchProbe, MC_MoveVelocity): a refusal it raised
-  /// (P-ERR-44009 retrigger, 44001, 44011, 44012 of seed 004 §6.3.1; NC9003; NC9005 above the
-  /// conveyor axis's P-AXIS-00212) is that block's error, at its line and cycle, not the next
-  /// cycle's step's at the block after it.
-  EventOutcome port_outcome(const ChannelEvent& e) noexcept;
-  EventOutcome on_move_velocity(const interp::MoveVelocity& command,
-                                const ChannelEvent& e) noexcept;
-  /// `#MACHINE DATA` on the conveyor axis's filters and delay time (program/machine_data.hpp):
-  /// passed to the Port with the path standing (isg-language.md §5.10).
-  EventOutcome on_machine_data(const interp::MachineData& command, const ChannelEvent& e) noexcept;
-  std::optional<machines::ConveyorAxisParams> conveyor_axis_;  ///< as changed so far
-  /// Passes the interpolator's joints on at once; cycles are passed on by step().
-  /// --- trafo-checks: notes that a joint passed (a documented path step: NC6210's jerk
-  /// stencil leaves it out, as the audit's does).
-  class JointRelay final : public Sink {
-   public:
-    explicit JointRelay(Sink* sink) : sink_(sink) {}
-    void on_joint(const Joint& joint) override {
-      seen_ = true;
-      if (sink_) sink_->on_joint(joint);
-    }
-    void on_cycle(const Cycle&) override {}
-    /// A joint passed since the last call.
-    bool take_seen() noexcept { return std::exchange(seen_, false); }
-
-   private:
-    Sink* sink_;
-    bool seen_ = false;
-  };
-
-  struct Axis {
-    ChannelAxis config;
-    axes::PositionControlModel control;
-    axes::AxisMonitor monitor;
-  };
-
-  /// Step 2: the path point -> machine axis setpoints (identity, or the joint stage under
-  /// #TRAFO); false when it raised a run-time error.
+  /// The path point -> machine axis setpoints (identity plus the conveyor's frame, or the
+  /// KinematicStage under #TRAFO ON); false when it raised a run-time error.
   bool map_to_axes(const Cycle& c) noexcept;
-  /// --- trafo: step 2 under #TRAFO ON (channel_kinematics.cpp); false: run-time error.
-  bool map_joints(const Cycle& c) noexcept;
-  /// Step 3 for axis i; false when it raised a run-time error.
+  /// Drives axis i (AxisStage::drive with the exact stop's and the INDP axes' flags);
+  /// false when it raised a run-time error.
   bool drive_axis(std::size_t i, const Cycle& c) noexcept;
-  /// Step 4: the exact-stop wait.
-  bool exact_stop(const Cycle& c) noexcept;
+  /// Raises a run-time error at cycle `c` (raise()); Status::error.
   Status stop(const char* id, std::string message, const Cycle& c, int axis) noexcept;
-  /// Step 0: the scenario's cycle; false when the run ends before it (stop or error).
-  bool play_cycle(Status& status) noexcept;
-  // --- conveyor-sync (channel/channel_conveyor.cpp)
-  /// The conveyor workspace on the cycle's MCS setpoints while synchronised; false: stopped.
-  bool sync_check_workspace(const Cycle& c) noexcept;
-  // --- static-saw (channel/channel_static.cpp)
-  /// A synchronised static unit (P-CHAN-00364): the path override is the belt's master
-  /// velocity over the planned kXvPlanFactor * CONV_VEL, so the virtual X follows the belt;
-  /// the operator's override is restored after #SYNC OUT.
-  void static_override() noexcept;
-  bool static_unit_ = false;  ///< P-CHAN-00364 x_virtual
-  /// G74: each order's axes drive to P-AXIS-00152 as INDP motions (channel/channel_homing.cpp).
-  EventOutcome on_homing(const interp::Homing& command, const ChannelEvent& e) noexcept;
-  std::optional<int> homing_order_;          ///< the order number homing now; empty: none started
-  std::optional<double> operator_override_;  ///< the override before the static unit took it
-  /// --- workspace: gives the interpolator the hold's path velocity cap (channel_workspace.cpp);
-  /// false: NC9081 (the belt stood under the hold longer than ncsim's wait limit).
-  bool sync_workspace_cap(const Cycle& c) noexcept;
-  /// --- belt-split: lowers that cap where a belt slower than CONV_VEL would take an axis of a
-  /// block planned against the belt (v_max + CONV_VEL) above its v_max (channel_workspace.cpp).
-  void sync_belt_cap(const Cycle& c) noexcept;
-  /// --- workspace: the hold caps the path at 0 (the belt stands): the tool waits for the belt,
-  /// not for the operator (no NC6301).
-  bool workspace_hold_waits() const noexcept;
-  std::uint64_t hold_stood_ = 0;  ///< --- workspace: cycles the belt stood under the hold
-  // --- workspace: after an error while synchronised (channel_sync_error.cpp)
+  // After an error while synchronised (channel_sync_error.cpp).
   /// One cycle of the program (the channel loop before an error kept synchronisation).
   Status step_program() noexcept;
   /// The error just raised keeps the synchronisation: it is held back (sync_error_), the
@@ -388,7 +214,7 @@ class Channel {
   bool after_path_ended_ = false;           ///< the interpolator gave its last cycle
   double after_end_t_ = 0.0;                ///< [s] the machine stood
   std::string after_passed_;                ///< a soft limit passed after all (the note says it)
-  // --- sync-trafo: the same under #TRAFO ON (channel_sync_error_trafo.cpp): the TCP brakes
+  // The same under #TRAFO ON (channel_sync_error_trafo.cpp): the TCP brakes
   // before the conveyor workspace's face (tracking/sync_error_trafo.hpp), the joints are checked.
   bool sync_error_trafo_begin() noexcept;
   /// The after-error setpoints of a transformed cycle (tcp_ and the joints from it); false: the
@@ -400,12 +226,11 @@ class Channel {
   bool after_trafo_ = false;       ///< the error came under #TRAFO ON
   int after_joint_ = -1;           ///< the joint whose limit decided the stop (-1: the TCP's)
   AfterErrorEnd after_joint_why_ = AfterErrorEnd::soft_limit;  ///< why for that joint
-  // --- sync-trafo: end
-  // --- trafo-feed: INDP axes owned at the error (channel_sync_error_indp.cpp): each brakes on
+  // The INDP axes owned at the error (channel_sync_error_indp.cpp): each brakes on
   // its own deceleration ramp while the path axes follow the belt (docs/conveyor.md).
   /// Stops the owned INDP axes; false: not built (INDP axes under #TRAFO ON), the run ends.
   bool sync_error_indp_begin() noexcept;
-  /// Steps the INDP axes once for cycle `c` (unless indp_cycle() did) and applies them.
+  /// Steps the INDP axes once for cycle `c` (unless IndpStage::step() did) and applies them.
   void sync_error_indp_step(const Cycle& c) noexcept;
   /// Their setpoints into setpoint_ and the shown cycle (after SyncErrorStop wrote all axes).
   void sync_error_indp_apply() noexcept;
@@ -413,121 +238,30 @@ class Channel {
   std::array<axes::Setpoint, planner::kMaxAxes> sync_error_path_axes() const noexcept;
   /// Every INDP axis braked at the error stands.
   bool sync_error_indp_stood() const noexcept;
-  planner::AxisMask after_indp_ = 0;                ///< the INDP axes owned at the error
-  std::uint64_t indp_stepped_ = ~std::uint64_t{0};  ///< the cycle indp_.step() last ran for
-  // --- trafo-feed: end
-  std::size_t driven_ = 0;  ///< axes driven in the cycle being computed (step 3)
-  // --- workspace: end
-  // --- operator: block starts and the actions of scenario events
-  /// Passes the interpolator's block starts to the channel's player.
-  class BlockRelay final : public BlockObserver {
-   public:
-    explicit BlockRelay(Channel& channel) : channel_(channel) {}
-    void on_block_started(std::uint32_t line, std::uint16_t file) noexcept override {
-      channel_.block_started(file == 0 ? line : 0);  // --- planner: scenario lines are the main's
-    }
-
-   private:
-    Channel& channel_;
-  };
-  /// A block starts inside the cycle being computed: the player counts it and fires its
-  /// `line` events now; an action's run-time error waits in failed_ for the cycle's end.
-  void block_started(std::uint32_t line) noexcept;
-  /// Applies one scenario action to the interpolator; the run-time error (id, text) it
-  /// raises, if any.
-  std::optional<std::pair<const char*, std::string>> act(const scenario::Action& a) noexcept;
-  // --- indp: (channel/channel_indp.cpp)
-  /// After step 2: advances the INDP axes and gives each axis they own its INDP setpoint;
-  /// false when a run-time error stopped the channel (NC6103).
-  bool indp_cycle(const Cycle& c) noexcept;
-  /// A scenario axis override: the run-time error (NC6105) it raises, if any.
-  std::optional<std::pair<const char*, std::string>> indp_override(
-      const scenario::AxisOverride& o) noexcept;
-  /// Event handlers: X[INDP_SYN / INDP_ASYN ...], #WAIT INDP, M/H/S/T/D.
-  EventOutcome indp_command(const interp::AxisCommand& c, const ChannelEvent& e) noexcept;
-  EventOutcome indp_wait(const interp::WaitIndp& w, const ChannelEvent& e) noexcept;
-  EventOutcome indp_tech(const interp::Tech& t, const ChannelEvent& e) noexcept;
-  /// True when every INDP_SYN motion started is in position (the next block may start).
-  bool indp_syn_done() noexcept;
+  planner::AxisMask after_indp_ = 0;  ///< the INDP axes owned at the error
+  std::size_t driven_ = 0;            ///< axes driven in the cycle being computed
   /// A cycle after the path's end while INDP axes still move (the program end waits for them).
   Status indp_tail() noexcept;
 
-  JointRelay relay_;
+  KinematicStage kin_;  ///< #TRAFO ON: the joint stage (declared before ipo_: its relay)
   WaitRelay wait_relay_{*this};
   PathInterpolator ipo_;
   Source& source_;
   Sink* sink_ = nullptr;
-  std::vector<Axis> axes_;
-  double exact_stop_wait_max_ = 60.0;
-  std::uint64_t wait_cycles_max_ = 0;  ///< exact_stop_wait_max_ in cycles
-  AxesState state_;
-  std::array<axes::Setpoint, planner::kMaxAxes> setpoint_{};
-  BeltOffset belt_;  ///< --- conveyor: the belt's share of setpoint_ (map_to_axes)
-  AxisVec lag_max_{};
-  // Exact stop in progress: the block's moved axes and their targets.
-  bool in_exact_stop_ = false;
-  std::uint32_t moved_ = 0;  ///< bit i: axis i moved in the exact-stop block
-  AxisVec target_{};
-  std::uint64_t waited_ = 0;  ///< cycles waited at this exact stop
+  AxisStage axes_;
+  ExactStopWait exact_stop_;
+  BeltOffset belt_;  ///< the belt's share of the setpoints (map_to_axes)
   std::optional<RunTimeError> error_;
-  // Scenario (step 0).
-  scenario::Player* player_ = nullptr;
-  std::optional<scenario::StopReason> stopped_;
-  std::optional<Status> ended_;  ///< the interpolator's stream ended so
-  BlockRelay blocks_{*this};     ///< --- operator
-  std::optional<std::pair<const char*, std::string>> failed_;  ///< an action's error, mid-cycle
-  // Channel events.
-  std::optional<ChannelEvent> blocked_;  ///< an event not done yet (EventOutcome::blocking)
-  std::uint32_t wait_tag_ = 0;           ///< tag of the ChannelWait the path holds at
-  bool wait_interruptible_ = false;      ///< --- sync-feed: ChannelWait::interruptible of that wait
-  ChannelEvent event_;                   ///< scratch: the event being taken
-  // --- trafo: the joint stage (Config::joints) and the state of the last cycle.
-  std::optional<JointStage> stage_;
-  bool transformed_ = false;
-  JointSetpoint joints_{};
-  /// The TCP setpoint of the last cycle under #TRAFO ON (PCS1 offset, catch-up included).
-  std::array<axes::Setpoint, planner::kMaxAxes> tcp_{};
-  planner::JointMap forward_;                  ///< ChannelConfig::forward
-  std::optional<RunTimeError> trafo_warning_;  ///< the first NC6210 of the run
-  /// The joint positions of the three cycles before (q at index - 1, - 2, - 3) and how many of
-  /// them are of consecutive transformed cycles: NC6210 checks the setpoints' differences.
-  AxisVec q_back1_{}, q_back2_{}, q_back3_{};
-  std::uint64_t q_index_ = 0;
-  int q_known_ = 0;
-  /// --- trafo-checks: this cycle and the two before were jerk-limited (Cycle::
-  /// interval_jerk_limited) and passed no path joint: the third difference is checked.
-  std::array<bool, 3> q_plain_{false, false, false};
-  /// The catch-up / departure under #TRAFO ON: the TCP's dynamics from the joints
-  /// (tracking/trafo_sync); false: the plan failed (`r` holds why). channel_kinematics.cpp.
-  /// --- trafo-feed: `feed_cont` [mm/s] the catch-up's relative velocity at the meeting (S-1).
-  bool trafo_sync_motion(bool catch_up, std::span<const axes::MotionState> start,
-                         std::span<const double> target, double feed_cont,
-                         axes::Result& r) noexcept;
-  /// Checks the joints of a synchronised cycle under #TRAFO ON (NC6210 warning).
-  void trafo_sync_check(const Cycle& c, const JointSetpoint& s) noexcept;
-  /// The joint setpoints' v and a by differences over this cycle and the two before (what the
-  /// drives get and the audit measures); false until two consecutive transformed cycles ran.
-  /// --- trafo-checks: `jerk` true: out.j holds the third difference (three consecutive
-  /// transformed cycles before, the stencil plain: q_plain_).
-  bool joint_differences(const Cycle& c, const JointSetpoint& s, JointSetpoint& out,
-                         bool& jerk) const noexcept;
-  std::optional<ConveyorSync> sync_;           ///< --- conveyor-sync: with FCT_DLM only
-  conveyor::Port* port_ = nullptr;             ///< the attached conveyor world (reduced filter)
-  double measured_value_wait_max_ = 600.0;     ///< ChannelConfig::measured_value_wait_max [s]
-  std::uint64_t measure_wait_cycles_max_ = 0;  ///< the same in cycles
-  std::uint64_t measure_waited_ = 0;           ///< cycles #SYNC IN waited so far
-  std::uint64_t ve_workpiece_ = 0;  ///< the measured workpiece whose V.E. values were written
-  std::uint32_t sync_tag_ = 0;      ///< --- conveyor-sync: the event being executed
-  /// --- conveyor-sync: where the path stands after a catch-up / departure until it moves.
-  std::optional<AxisVec> sync_hold_;
-  // --- indp:
-  IndpAxes indp_;
-  Cycle patched_;                 ///< the cycle with the INDP axes' setpoints
-  const Cycle* shown_ = nullptr;  ///< &patched_ while INDP axes are owned, else null
-  planner::AxisMask syn_ = 0;     ///< axes of INDP_SYN motions the path waits for
-  std::vector<TechOutput> tech_;  ///< technology functions output in this step
-  Cycle tail_;                    ///< the last cycle, then the cycles after the path's end
-  bool in_tail_ = false;          ///< the path has ended, INDP axes still move
+  std::optional<Status> ended_;       ///< the interpolator's stream ended so
+  EventQueue events_;                 ///< the events due and the one that blocks
+  std::optional<ConveyorSync> sync_;  ///< with FCT_DLM only
+  conveyor::Port* port_ = nullptr;    ///< the attached conveyor world (reduced filter)
+  std::uint64_t ve_workpiece_ = 0;    ///< the measured workpiece whose V.E. values were written
+  HomingSequence homing_;             ///< G74
+  IndpStage indp_;                    ///< INDP axes and technology outputs
+  const Cycle* shown_ = nullptr;      ///< the cycle shown instead of the path's (INDP, after error)
+  ScenarioPlay play_{ipo_, indp_, axes_};  ///< the scenario, before each cycle
+  ConveyorTracking tracking_;              ///< the channel's side of conveyor tracking
 };
 
 }  // namespace ncsim::ipo

@@ -3,7 +3,6 @@
 // gets a branch here that calls into its own file; a kind without one is run-time error NC6001 at
 // the event's line.
 
-#include <cstdlib>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -14,74 +13,50 @@
 
 namespace ncsim::ipo {
 
-Channel::EventOutcome Channel::event_error(const char* id, std::string message,
-                                           const ChannelEvent& e) noexcept {
-  Cycle at = ipo_.cycle();
-  at.line = e.line;
-  at.file = e.file;
-  at.t = static_cast<double>(at.index) * ipo_.t_cycle();
-  stop(id, std::move(message), at, -1);
-  return EventOutcome::error;
-}
-
-Channel::EventOutcome Channel::dispatch(const ChannelEvent& e) noexcept {
+EventOutcome Channel::dispatch(const ChannelEvent& e) noexcept {
   return std::visit(
       [&](const auto& body) -> EventOutcome {
         using T = std::decay_t<decltype(body)>;
-        // --- indp: M/H/S/T/D, #WAIT INDP, INDP (channel/channel_indp.cpp)
+        // M/H/S/T/D, #WAIT INDP, INDP (IndpStage); G74 (HomingSequence); the conveyor
+        // (ConveyorTracking)
         if constexpr (std::is_same_v<T, interp::Tech>) {
-          return indp_tech(body, e);
+          return indp_.tech(body, EventContext(e, ipo_, error_));
         } else if constexpr (std::is_same_v<T, interp::WaitIndp>) {
-          return indp_wait(body, e);
+          return indp_.wait(body, axes_);
         } else if constexpr (std::is_same_v<T, interp::AxisCommand>) {
-          return indp_command(body, e);
-        } else if constexpr (std::is_same_v<T, interp::Motion>) {  // --- conveyor-sync
-          return on_sync_motion(body, e);
-        } else if constexpr (std::is_same_v<T, interp::MoveVelocity>) {  // --- conveyor-sync
-          return on_move_velocity(body, e);
-        } else if constexpr (std::is_same_v<T, interp::ProbeArm>) {  // --- conveyor-sync
-          return on_probe_arm(body, e);
-        } else if constexpr (std::is_same_v<T, interp::SyncIn>) {  // --- conveyor-sync
-          return on_sync_in(body, e);
-        } else if constexpr (std::is_same_v<T, interp::SyncOut>) {  // --- conveyor-sync
-          return on_sync_out(body, e);
-        } else if constexpr (std::is_same_v<T, interp::Homing>) {  // --- static-saw: G74
-          return on_homing(body, e);
+          return indp_.command(body, axes_, sync_ ? &*sync_ : nullptr,
+                               EventContext(e, ipo_, error_));
+        } else if constexpr (std::is_same_v<T, interp::Motion>) {
+          return tracking_.on_sync_motion(body, e);
+        } else if constexpr (std::is_same_v<T, interp::MoveVelocity>) {
+          return tracking_.on_move_velocity(body, e);
+        } else if constexpr (std::is_same_v<T, interp::ProbeArm>) {
+          return tracking_.on_probe_arm(body, e);
+        } else if constexpr (std::is_same_v<T, interp::SyncIn>) {
+          return tracking_.on_sync_in(body, e);
+        } else if constexpr (std::is_same_v<T, interp::SyncOut>) {
+          return tracking_.on_sync_out(body, e);
+        } else if constexpr (std::is_same_v<T, interp::Homing>) {  // G74
+          return homing_.step(body, axes_, indp_.axes(), EventContext(e, ipo_, error_));
         } else if constexpr (std::is_same_v<T, interp::MachineData>) {
-          return on_machine_data(body, e);
+          return tracking_.on_machine_data(body, e);
         } else {
-          return event_error(kNotSupportedId, "not supported: this command in the channel", e);
+          return EventContext(e, ipo_, error_)
+              .fail(kNotSupportedId, "not supported: this command in the channel");
         }
       },
       e.body);
 }
 
 bool Channel::run_events(std::uint32_t up_to) noexcept {
-  if (blocked_) {
-    const EventOutcome o = dispatch(*blocked_);
-    if (o != EventOutcome::done) return false;
-    blocked_.reset();
-  }
-  try {
-    while (source_.take_event(up_to, event_)) {
-      const EventOutcome o = dispatch(event_);
-      if (o == EventOutcome::error) return false;
-      if (o == EventOutcome::blocking) {
-        blocked_ = std::move(event_);
-        return false;
-      }
-    }
-  } catch (...) {
-    std::abort();  // out of memory moving an event: nothing sane is left
-  }
-  return true;
+  return events_.run(source_, up_to, [this](const ChannelEvent& e) { return dispatch(e); });
 }
 
 bool Channel::on_wait(const ChannelWait& wait) noexcept {
-  if (sync_error_) return false;  // --- workspace: after the error nothing more is executed
-  wait_tag_ = wait.tag;
-  wait_interruptible_ = wait.interruptible;                     // --- sync-feed
-  return !blocked_ && run_events(wait.tag) && indp_syn_done();  // --- indp: INDP_SYN axes
+  if (sync_error_) return false;  // after the error nothing more is executed
+  events_.at_wait(wait);
+  return !events_.blocked() && run_events(wait.tag) &&
+         indp_.syn_done(events_.wait_interruptible(), axes_.size());
 }
 
 }  // namespace ncsim::ipo

@@ -10,9 +10,9 @@ MasterDisplay Channel::master_display() const noexcept {
   if (!sync_) return MasterDisplay{};
   MasterDisplay d = sync_->display();
   const std::size_t n = axes_.size();
-  if (const auto lag = cycle_lag(*sync_, std::span<const double>(state_.command.data(), n),
-                                 std::span<const double>(state_.actual.data(), n), transformed_,
-                                 &tcp_, forward_))
+  if (const auto lag = cycle_lag(*sync_, std::span<const double>(axes_.state().command.data(), n),
+                                 std::span<const double>(axes_.state().actual.data(), n),
+                                 kin_.transformed(), &kin_.tcp(), kin_.forward()))
     d.synchro_lag = *lag;
   return d;
 }

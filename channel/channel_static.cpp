@@ -13,7 +13,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "channel/channel.hpp"
+#include "channel/conveyor_tracking.hpp"
 #include "tracking/x_virtual.hpp"
 
 namespace ncsim::ipo {
@@ -34,7 +34,7 @@ constexpr double kCycleShare = 0.5;
 
 }  // namespace
 
-void Channel::static_override() noexcept {
+void ConveyorTracking::static_override() noexcept {
   if (!sync_ || !static_unit_) return;
   if (sync_->phase() != SyncPhase::tracking) {
     if (operator_override_) {
@@ -59,12 +59,12 @@ void Channel::static_override() noexcept {
       std::abort();  // every override type accepts 0 .. 1
     }
   }
-  // --- static-blend: where the plan's X component would be faster than the belt's (a tolerance
+  // where the plan's X component would be faster than the belt's (a tolerance
   // ball, whose X share varies, and the blocks beside it, whose feed was raised for it:
   // tracking/x_virtual.hpp blend_belt_feed), the path velocity is capped at belt / |dX/ds| a little
   // ahead of the path. The cap is a jerk-limited replan that acts inside
   // the ball too (PathInterpolator::set_velocity_cap); the workspace hold's cap, set after each
-  // cycle (Channel::sync_workspace_cap), is kept when it is lower.
+  // cycle (ConveyorTracking::workspace_cap), is kept when it is lower.
   const Cycle& c = ipo_.cycle();
   const planner::PlannedSegment* e = ipo_.active_entry();
   if (c.activity != Activity::motion || e == nullptr || c.programmed == nullptr || planned <= 0.0)
@@ -73,7 +73,7 @@ void Channel::static_override() noexcept {
   for (std::size_t i = 0; i < sync_->axis_count() && x < 0; ++i)
     if (sync_->xyz(i) == 0) x = static_cast<int>(i);
   if (x < 0) return;
-  // --- static-c1: the velocity the path must have is v_req(s) = belt / |dX/ds|. The cap is a
+  // the velocity the path must have is v_req(s) = belt / |dX/ds|. The cap is a
   // jerk-limited replan towards its level; a level that moves at r = dv_req/dt is followed
   // r^2 / (2 j) behind (the replan settles where the acceleration it has, r, takes r / j to
   // bring to 0). So the cap is v_req where the path will be r / (2 j) later than the middle of

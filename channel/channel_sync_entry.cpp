@@ -3,7 +3,7 @@
 // workpiece with, decided against the path's first PCS1 block (tracking/sync_entry), and the
 // hand-over inside the cycle in which the catch-up meets its target.
 //
-// Flow: at the catch-up's first dispatch (Channel::on_sync_motion) the path holds at the
+// Flow: at the catch-up's first dispatch (ConveyorTracking::on_sync_motion) the path holds at the
 // catch-up's ChannelWait; the interpolator prepares what follows it into its look-ahead window
 // (PathInterpolator::prefill), sync_entry() reduces FEED_CONT to what the link and the first
 // block's entry allow, and ConveyorSync plans the catch-up for it (reducing it further if an
@@ -14,12 +14,12 @@
 
 #include <cstdlib>
 
-#include "channel/channel.hpp"
+#include "channel/conveyor_tracking.hpp"
 
 namespace ncsim::ipo {
 
-double Channel::sync_entry_velocity(std::span<const axes::MotionState> start,
-                                    std::span<const double> target) noexcept {
+double ConveyorTracking::sync_entry_velocity(std::span<const axes::MotionState> start,
+                                             std::span<const double> target) noexcept {
   sync_entry_ = SyncEntry{};
   sync_u_ = sync_->catch_up_direction(start, target);
   if (!ipo_.prefill()) return 0.0;  // the source failed: the next step reports it
@@ -28,14 +28,14 @@ double Channel::sync_entry_velocity(std::span<const axes::MotionState> start,
   return sync_entry_.v;
 }
 
-Channel::EventOutcome Channel::sync_hand_over(double lag, const ChannelEvent& e) noexcept {
+EventOutcome ConveyorTracking::sync_hand_over(double lag, const ChannelEvent& e) noexcept {
   const planner::PreparedSegment* first = ipo_.next_segment();
   if (first == nullptr) return EventOutcome::done;  // v_relative() > 0 only with a block ahead
   const double v = ipo_.start_moving(sync_->v_relative(), lag);
-  // --- trafo-checks: through the relay, which notes it for NC6210's jerk stencil.
-  if (sink_ != nullptr || stage_) {
+  // through the relay, which notes it for NC6210's jerk stencil.
+  if (sink_ != nullptr || kin_.configured()) {
     try {
-      relay_.on_joint(sync_entry_joint(sync_entry_, sync_u_, *first, v, ipo_.cycle().t + lag,
+      kin_.pass_joint(sync_entry_joint(sync_entry_, sync_u_, *first, v, ipo_.cycle().t + lag,
                                        e.line, axes_.size()));
     } catch (...) {
       std::abort();  // out of memory in the sink

@@ -43,14 +43,15 @@ bool Channel::sync_error_begin() noexcept {
   if (!error_ || after_begun_ || !sync_ || !after_.usable()) return false;  // once a run
   if (sync_->phase() != SyncPhase::tracking || !sync_->synchronised()) return false;
   // Not built (docs/conveyor.md): a static unit (no real X follows the belt).
-  if (static_unit_) return false;
+  if (tracking_.static_unit()) return false;
   if (!SyncErrorStop::keeps_synchronisation(error_->id)) return false;
   if (!sync_error_indp_begin()) return false;  // --- trafo-feed: the INDP axes brake
   // --- sync-trafo: under #TRAFO ON the TCP's stop (channel_sync_error_trafo.cpp)
   after_trafo_ = false;
-  if (transformed_ && !sync_error_trafo_begin()) return false;
+  if (kin_.transformed() && !sync_error_trafo_begin()) return false;
   after_begun_ = true;
   sync_error_ = std::move(error_);
+  play_.abort_program();  // its blocks only brake now
   error_.reset();
   after_.begin();
   after_path_ended_ = false;
@@ -86,7 +87,7 @@ Status Channel::sync_error_cycle(bool fresh) noexcept {
   (void)sync_->step(c.t);
   if (!after_trafo_) map_to_axes(c);
   sync_error_indp_step(c);  // --- trafo-feed
-  std::span<axes::Setpoint> sp(setpoint_.data(), axes_.size());
+  std::span<axes::Setpoint> sp(axes_.setpoints().data(), axes_.size());
   bool end = false;
   if (after_trafo_) {  // --- sync-trafo: the TCP's stop and the joints from it
     if (!sync_error_trafo_step(c, end)) {
@@ -115,12 +116,13 @@ Status Channel::sync_error_cycle(bool fresh) noexcept {
     }
     after_.follow_cycle();
   }
-  // No axis receives a set position beyond its soft limit (as in step 3). The stop is planned
-  // not to get there; a machine already at its limit when the error came cannot follow at all.
+  // No axis receives a set position beyond its soft limit (as AxisStage::drive). The stop is
+  // planned not to get there; a machine already at its limit when the error came cannot follow at
+  // all.
   const std::size_t first = fresh ? 0 : driven_;
   for (std::size_t i = first; i < axes_.size(); ++i) {
-    const auto alarm = axes::check_soft_limits(axes_[i].config.monitor.soft_limits, setpoint_[i].p,
-                                               static_cast<int>(i), c.t);
+    const auto alarm = axes::check_soft_limits(axes_.config(i).monitor.soft_limits,
+                                               axes_.setpoints()[i].p, static_cast<int>(i), c.t);
     if (!alarm) continue;
     if (!fresh) {  // the error's own cycle: it ends the run as every error does (no note)
       error_ = std::move(sync_error_);
@@ -132,7 +134,7 @@ Status Channel::sync_error_cycle(bool fresh) noexcept {
       std::snprintf(buf, sizeof buf,
                     "; axis %s would have passed its soft limit %.6g mm at t=%.6g s: the run "
                     "ended there",
-                    axes_[i].config.name.c_str(), alarm->limit, c.t);
+                    axes_.config(i).name.c_str(), alarm->limit, c.t);
       after_passed_ = buf;
     } catch (...) {
       std::abort();
@@ -141,15 +143,8 @@ Status Channel::sync_error_cycle(bool fresh) noexcept {
     error_ = sync_error_;
     return Status::error;
   }
-  for (std::size_t i = first; i < axes_.size(); ++i) {
-    Axis& a = axes_[i];
-    const axes::Setpoint& s = setpoint_[i];
-    state_.command[i] = s.p;
-    const axes::ActualValue act = a.control.step(s);
-    state_.actual[i] = act.position;
-    state_.following_error[i] = act.following_error;
-    lag_max_[i] = std::max(lag_max_[i], std::fabs(act.following_error));
-  }
+  for (std::size_t i = first; i < axes_.size(); ++i)
+    axes_.follow(i);
   if (sink_) sink_->on_cycle(cycle());
   if (end) {
     after_end_t_ = c.t;
@@ -166,16 +161,16 @@ std::string Channel::after_error_note() const {
   std::string limit;
   if (after_.axis() >= 0) {
     const auto i = static_cast<std::size_t>(after_.axis());
-    axis = " axis " + axes_[i].config.name;
+    axis = " axis " + axes_.config(i).name;
     const AfterErrorAxis& l = after_.limits(i);
     if (after_.why() == AfterErrorEnd::soft_limit) {
-      const double p = setpoint_[i].p;
+      const double p = axes_.setpoints()[i].p;
       const bool up = l.soft.max_enabled &&
                       (!l.soft.min_enabled ||
                        std::fabs(l.soft.max_position - p) < std::fabs(p - l.soft.min_position));
       std::snprintf(buf, sizeof buf, " %.6g mm (%s), standing at %.6g mm",
                     up ? l.soft.max_position : l.soft.min_position,
-                    up ? "P-AXIS-00178" : "P-AXIS-00177", setpoint_[i].p);
+                    up ? "P-AXIS-00178" : "P-AXIS-00177", axes_.setpoints()[i].p);
       limit = buf;
     }
   }
@@ -186,7 +181,7 @@ std::string Channel::after_error_note() const {
                 limit.c_str(), after_end_t_);
   std::string indp;  // --- trafo-feed
   for (std::size_t i = 0; i < axes_.size(); ++i)
-    if ((after_indp_ >> i) & 1u) indp += (indp.empty() ? "" : ", ") + axes_[i].config.name;
+    if ((after_indp_ >> i) & 1u) indp += (indp.empty() ? "" : ", ") + axes_.config(i).name;
   if (!indp.empty()) indp = "; INDP axis " + indp + " braked on its own ramp";
   return std::string(buf) + indp + after_passed_;
 }

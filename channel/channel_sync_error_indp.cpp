@@ -26,23 +26,20 @@ bool Channel::sync_error_indp_begin() noexcept {
   after_indp_ = 0;
   if (error_->id == kNotSupportedId || error_->id == kIndpPlanId) return false;  // decision
   for (std::size_t i = 0; i < axes_.size(); ++i)
-    if (indp_.owned(i)) after_indp_ |= planner::AxisMask{1} << i;
+    if (indp_.axes().owned(i)) after_indp_ |= planner::AxisMask{1} << i;
   if (after_indp_ == 0) return true;
-  if (transformed_) {  // not built (docs/conveyor.md): the run ends with the error at once
+  if (kin_.transformed()) {  // not built (docs/conveyor.md): the run ends with the error at once
     after_indp_ = 0;
     return false;
   }
   for (std::size_t i = 0; i < axes_.size(); ++i)
-    if ((after_indp_ >> i) & 1u) (void)indp_.stop(i);  // false: it stood already
+    if ((after_indp_ >> i) & 1u) (void)indp_.axes().stop(i);  // false: it stood already
   return true;
 }
 
 void Channel::sync_error_indp_step(const Cycle& c) noexcept {
   if (after_indp_ == 0) return;
-  if (indp_stepped_ != c.index) {  // the error's own cycle may have stepped them already
-    indp_.step();
-    indp_stepped_ = c.index;
-  }
+  indp_.step_once(c);  // the error's own cycle may have stepped them already
   sync_error_indp_apply();
 }
 
@@ -51,8 +48,8 @@ void Channel::sync_error_indp_apply() noexcept {
   after_cycle_.independent = after_indp_;
   for (std::size_t i = 0; i < axes_.size(); ++i) {
     if (((after_indp_ >> i) & 1u) == 0) continue;
-    const axes::Setpoint& sp = indp_.setpoint(i);
-    setpoint_[i] = sp;
+    const axes::Setpoint& sp = indp_.axes().setpoint(i);
+    axes_.setpoints()[i] = sp;
     after_cycle_.x[i] = sp.p;
     after_cycle_.v[i] = sp.v;
     after_cycle_.a[i] = sp.a;
@@ -63,14 +60,14 @@ void Channel::sync_error_indp_apply() noexcept {
 std::array<axes::Setpoint, planner::kMaxAxes> Channel::sync_error_path_axes() const noexcept {
   std::array<axes::Setpoint, planner::kMaxAxes> out{};
   for (std::size_t i = 0; i < axes_.size(); ++i) {
-    out[i] = setpoint_[i];
-    if ((after_indp_ >> i) & 1u) out[i] = axes::Setpoint{setpoint_[i].p, 0.0, 0.0, 0.0};
+    out[i] = axes_.setpoints()[i];
+    if ((after_indp_ >> i) & 1u) out[i] = axes::Setpoint{axes_.setpoints()[i].p, 0.0, 0.0, 0.0};
   }
   return out;
 }
 
 bool Channel::sync_error_indp_stood() const noexcept {
-  return after_indp_ == 0 || indp_.in_position_mask(after_indp_);
+  return after_indp_ == 0 || indp_.axes().in_position_mask(after_indp_);
 }
 
 }  // namespace ncsim::ipo

@@ -3,11 +3,11 @@
 // tracking/sync_error_trafo.hpp; docs/conveyor.md "Errors while synchronised", "Under #TRAFO ON").
 //
 // Flow: as in channel_sync_error.cpp, but the stop acts on the TCP: every cycle the path's
-// PCS1 point (braking to 0 by the feed hold) plus the belt's offset is the TCP (map_joints),
-// and a SyncErrorStop over the TCP's X, Y, Z (the conveyor workspace's faces as their limits,
-// dynamics derived from the joints' at the points the following passes) decides when it must
-// brake and brakes it, each Cartesian coordinate jerk-limited to rest, so that the TCP leaves
-// the belt on its own line (Z does not move towards the belt). The joints come from the
+// PCS1 point (braking to 0 by the feed hold) plus the belt's offset is the TCP
+// (KinematicStage::map), and a SyncErrorStop over the TCP's X, Y, Z (the conveyor workspace's faces
+// as their limits, dynamics derived from the joints' at the points the following passes) decides
+// when it must brake and brakes it, each Cartesian coordinate jerk-limited to rest, so that the TCP
+// leaves the belt on its own line (Z does not move towards the belt). The joints come from the
 // braking TCP by the joint stage. The joints themselves are watched too (the generic
 // SyncErrorStop on the joint setpoints): a joint that following would take above its V or
 // whose own stop would pass its soft limit starts the TCP's stop as well.
@@ -27,7 +27,7 @@ namespace ncsim::ipo {
 bool Channel::sync_error_trafo_begin() noexcept {
   after_trafo_ = false;
   after_joint_ = -1;
-  if (!stage_) return false;
+  if (!kin_.configured()) return false;
   const std::size_t n = std::min(axes_.size(), sync_->axis_count());
   std::array<int, 3> xyz{-1, -1, -1};
   std::array<AfterErrorAxis, planner::kMaxAxes> joints{};
@@ -43,7 +43,7 @@ bool Channel::sync_error_trafo_begin() noexcept {
     a.d_max = std::min(a.d_max, d.d_max);
     a.j_max = std::min(a.j_max, d.j_max);
     joints[i] = a;
-    p[i] = tcp_[i].p;
+    p[i] = kin_.tcp()[i].p;
   }
   // A TCP beyond a face of the workspace already (NC9052 / NC9053 themselves, a listing whose
   // working height is outside it): the limit is passed, the run ends at once as in the
@@ -56,8 +56,8 @@ bool Channel::sync_error_trafo_begin() noexcept {
   }
   Eigen::Vector3d dir = sync_->frame().direction();
   if (sync_->belt_velocity() < 0.0) dir = -dir;
-  const auto lim =
-      tcp_after_error_axes(stage_->inverse(), xyz, std::span(joints.data(), n), after_box_, dir, p);
+  const auto lim = tcp_after_error_axes(kin_.stage().inverse(), xyz, std::span(joints.data(), n),
+                                        after_box_, dir, p);
   if (!lim || !after_tcp_.configure(std::span(lim->data(), n), ipo_.t_cycle())) return false;
   after_tcp_.begin();
   after_trafo_ = true;
@@ -69,7 +69,7 @@ bool Channel::sync_error_trafo_step(const Cycle& c, bool& end) noexcept {
   // The TCP following the belt (tcp_), and its joints (setpoint_) where the transform maps it.
   const bool mapped = map_to_axes(c);
   if (!mapped) error_.reset();  // NC3201 is not raised after the error: the run ends below
-  std::span<axes::Setpoint> tcp(tcp_.data(), n);
+  std::span<axes::Setpoint> tcp(kin_.tcp().data(), n);
   bool braked = false;
   if (after_tcp_.stopping()) {
     after_tcp_.step(tcp);
@@ -86,7 +86,8 @@ bool Channel::sync_error_trafo_step(const Cycle& c, bool& end) noexcept {
       end = true;
     } else if (after_tcp_.must_stop(tcp, why, axis)) {
       after_tcp_.start_stopping(tcp, why, axis);  // this cycle as computed, braking from the next
-    } else if (after_.must_stop(std::span<const axes::Setpoint>(setpoint_.data(), n), why, axis)) {
+    } else if (after_.must_stop(std::span<const axes::Setpoint>(axes_.setpoints().data(), n), why,
+                                axis)) {
       after_joint_ = axis;
       after_joint_why_ = why;
       after_tcp_.start_stopping(tcp, why, -1);
@@ -94,19 +95,7 @@ bool Channel::sync_error_trafo_step(const Cycle& c, bool& end) noexcept {
     after_tcp_.follow_cycle();
   }
   if (!braked) return true;
-  AxisVec x{}, v{}, a{}, j{};
-  for (std::size_t i = 0; i < n; ++i) {
-    x[i] = tcp_[i].p;
-    v[i] = tcp_[i].v;
-    a[i] = tcp_[i].a;
-    j[i] = tcp_[i].j;
-  }
-  JointSetpoint s;
-  if (!stage_->step(x, v, a, j, s)) return false;
-  joints_ = s;
-  for (std::size_t i = 0; i < n; ++i)
-    setpoint_[i] = axes::Setpoint{s.q[i], s.v[i], s.a[i], s.j[i]};
-  return true;
+  return kin_.map_tcp(axes_);
 }
 
 std::string Channel::after_error_trafo_note() const {
@@ -115,7 +104,7 @@ std::string Channel::after_error_trafo_note() const {
   std::string what;
   if (after_joint_ >= 0) {
     const auto i = static_cast<std::size_t>(after_joint_);
-    std::snprintf(buf, sizeof buf, "the TCP braked: joint %s %s", axes_[i].config.name.c_str(),
+    std::snprintf(buf, sizeof buf, "the TCP braked: joint %s %s", axes_.config(i).name.c_str(),
                   after_joint_why_ == AfterErrorEnd::velocity
                       ? "would have exceeded its maximum velocity following the belt"
                       : "would have passed its soft limit");
@@ -124,7 +113,7 @@ std::string Channel::after_error_trafo_note() const {
     const auto i = static_cast<std::size_t>(after_tcp_.axis());
     const int k = sync_ ? sync_->xyz(i) : -1;
     const AfterErrorAxis& l = after_tcp_.limits(i);
-    const double p = tcp_[i].p;
+    const double p = kin_.tcp()[i].p;
     const bool up = std::fabs(l.soft.max_position - p) < std::fabs(p - l.soft.min_position);
     static constexpr const char* kUpper[3] = {"00859", "00861", "00863"};
     static constexpr const char* kLower[3] = {"00860", "00862", "00864"};

@@ -12,12 +12,12 @@
 #include <cstdlib>
 #include <limits>
 
-#include "channel/channel.hpp"
+#include "channel/conveyor_tracking.hpp"
 #include "tracking/sync_checks.hpp"
 
 namespace ncsim::ipo {
 
-bool Channel::sync_workspace_cap(const Cycle& c) noexcept {
+bool ConveyorTracking::workspace_cap(const Cycle& c) noexcept {
   HoldState st;
   std::array<HoldEntry, kHoldAhead> ahead{};  // the look-ahead window's next entries
   const planner::PlannedSegment* e = ipo_.active_entry();
@@ -42,7 +42,7 @@ bool Channel::sync_workspace_cap(const Cycle& c) noexcept {
   }
   const double cap = sync_->workspace_cap(st);
   ipo_.set_velocity_cap(cap);
-  sync_belt_cap(c);  // --- belt-split: kept when it is lower than the hold's
+  sync_belt_cap(c);  // kept when it is lower than the hold's
   // A belt that stops while the hold caps the path: the cap follows it to 0 and the tool waits
   // with the belt (it stands in MCS and on the workpiece); the belt's restart releases it. A
   // belt that never restarts ends the run after ncsim's wait limit with NC9081.
@@ -56,7 +56,7 @@ bool Channel::sync_workspace_cap(const Cycle& c) noexcept {
                     "hold line %.6g mm: the belt was not restarted",
                     measured_value_wait_max_, h->config().line);
       try {
-        stop(kHoldBeltStoodId, buf, c, -1);
+        raise(error_, kHoldBeltStoodId, buf, c, -1);
       } catch (...) {
         std::abort();
       }
@@ -68,7 +68,7 @@ bool Channel::sync_workspace_cap(const Cycle& c) noexcept {
   return true;
 }
 
-// --- belt-split (004 l.317-319; docs/conveyor.md "velocity split"): a PCS1 line against the
+// (004 l.317-319; docs/conveyor.md "velocity split"): a PCS1 line against the
 // belt is planned with v_max + CONV_VEL on the axes it moves against the conveying direction
 // (program/program_sync.cpp); in PCS0 an axis moves at v_path x' + w, w the belt's velocity on it,
 // within v_max only while the belt runs at CONV_VEL or faster. A slower belt (a ramp, a stop)
@@ -79,7 +79,7 @@ bool Channel::sync_workspace_cap(const Cycle& c) noexcept {
 // r^2 / (2 j) behind, so the belt is forecast r / (2 j) ahead with its acceleration (as the
 // static unit's cap, channel_static.cpp). The belt's own deceleration beyond the path's d_max
 // cannot be followed: the residual the tests measure.
-void Channel::sync_belt_cap(const Cycle& c) noexcept {
+void ConveyorTracking::sync_belt_cap(const Cycle& c) noexcept {
   constexpr double kSlack = 1e-9;      // [1] a cap within this of the segment's limit is none
   constexpr double kLeadMax = 0.05;    // [s] longest forecast
   constexpr double kCycleShare = 0.5;  // [1] the cap acts on the whole next cycle: its middle
@@ -148,7 +148,7 @@ void Channel::sync_belt_cap(const Cycle& c) noexcept {
   ipo_.set_velocity_cap(std::min(ipo_.velocity_cap(), cap));
 }
 
-bool Channel::workspace_hold_waits() const noexcept {
+bool ConveyorTracking::hold_waits() const noexcept {
   const WorkspaceHold* h = sync_ ? sync_->hold() : nullptr;
   return h != nullptr && h->capped() && h->cap() == 0.0;
 }

@@ -1,4 +1,4 @@
-// channel/channel_kinematics: step 2 of the channel cycle under #TRAFO ON (docs/ipo.md
+// channel/kinematic_stage: the channel's mapping under #TRAFO ON (docs/ipo.md
 // "Kinematics in run and time").
 //
 // The path interpolator gives the TCP (X, Y, Z Cartesian, other axes as they are) with its
@@ -8,6 +8,8 @@
 // adapter and the planner check every block before, so only a broken invariant of theirs gets
 // here) stops the channel with the kinematic's workspace error NC3201 at the active block.
 
+#include "channel/kinematic_stage.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -15,13 +17,20 @@
 #include <span>
 #include <string>
 
-#include "channel/channel.hpp"
 #include "program/program_source.hpp"
 #include "tracking/trafo_sync.hpp"
 
 namespace ncsim::ipo {
 
-bool Channel::map_joints(const Cycle& c) noexcept {
+KinematicStage::KinematicStage(const std::optional<planner::JointLimits>& joints,
+                               std::size_t axis_count, planner::JointMap forward, Sink* sink)
+    : relay_(sink), forward_(std::move(forward)) {
+  if (joints) stage_.emplace(joints->inverse, axis_count);
+}
+
+bool KinematicStage::map(const Cycle& c, const std::optional<AxisVec>& hold,
+                         const ConveyorSync* sync, double t_cycle, AxisStage& axes,
+                         std::optional<RunTimeError>& error) noexcept {
   transformed_ = true;
   // The TCP of this cycle: the path's point, or where a catch-up / departure left it, or the
   // catch-up's own setpoint, or the path's PCS1 point moved by the belt (docs/conveyor.md
@@ -30,27 +39,26 @@ bool Channel::map_joints(const Cycle& c) noexcept {
   AxisVec v = c.v;
   AxisVec a = c.a;
   AxisVec j = c.j;
-  if (c.activity == Activity::motion) sync_hold_.reset();
-  if (sync_hold_) {
-    x = *sync_hold_;
+  if (hold) {
+    x = *hold;
     v = a = j = AxisVec{};
   }
-  if (sync_ && sync_->driving()) {
-    for (std::size_t i = 0; i < axes_.size(); ++i) {
-      const axes::Setpoint sp = sync_->catch_up_setpoint(i);
+  if (sync && sync->driving()) {
+    for (std::size_t i = 0; i < axes.size(); ++i) {
+      const axes::Setpoint sp = sync->catch_up_setpoint(i);
       x[i] = sp.p;
       v[i] = sp.v;
       a[i] = sp.a;
       j[i] = sp.j;
     }
-  } else if (sync_ && sync_->moving_frame()) {
-    for (std::size_t i = 0; i < axes_.size(); ++i) {
-      x[i] += sync_->offset(i);
-      v[i] += sync_->offset_v(i);
-      a[i] += sync_->offset_a(i);
+  } else if (sync && sync->moving_frame()) {
+    for (std::size_t i = 0; i < axes.size(); ++i) {
+      x[i] += sync->offset(i);
+      v[i] += sync->offset_v(i);
+      a[i] += sync->offset_a(i);
     }
   }
-  for (std::size_t i = 0; i < axes_.size(); ++i)
+  for (std::size_t i = 0; i < axes.size(); ++i)
     tcp_[i] = axes::Setpoint{x[i], v[i], a[i], j[i]};
   JointSetpoint s;
   if (!stage_->step(x, v, a, j, s)) {
@@ -60,45 +68,46 @@ bool Channel::map_joints(const Cycle& c) noexcept {
                   "TCP point (%.6g, %.6g, %.6g) mm outside the workspace of the kinematic "
                   "transform",
                   p[0], p[1], p[2]);
-    stop("NC3201", text, c, -1);
+    raise(error, "NC3201", text, c, -1);
     return false;
   }
-  // --- trafo-checks: the jerk stencil holds this cycle and the two before.
+  // the jerk stencil holds this cycle and the two before.
   const bool consecutive = c.index == q_index_ + 1;
   q_plain_ = {c.interval_jerk_limited && !relay_.take_seen(), consecutive && q_plain_[0],
               consecutive && q_plain_[1]};
-  if (sync_ && (sync_->driving() || sync_->moving_frame())) trafo_sync_check(c, s);
+  if (sync && (sync->driving() || sync->moving_frame())) check_sync(c, s, *sync, t_cycle, axes);
   q_known_ = consecutive ? std::min(q_known_ + 1, 3) : 1;
   q_index_ = c.index;
   q_back3_ = q_back2_;
   q_back2_ = q_back1_;
   q_back1_ = s.q;
   joints_ = s;
-  for (std::size_t i = 0; i < axes_.size(); ++i)
-    setpoint_[i] = axes::Setpoint{s.q[i], s.v[i], s.a[i], s.j[i]};
+  for (std::size_t i = 0; i < axes.size(); ++i)
+    axes.setpoints()[i] = axes::Setpoint{s.q[i], s.v[i], s.a[i], s.j[i]};
   return true;
 }
 
-void Channel::trafo_sync_check(const Cycle& c, const JointSetpoint& s) noexcept {
-  if (trafo_warning_) return;  // the first overrun of the run; the audit lists every one
+void KinematicStage::check_sync(const Cycle& c, const JointSetpoint& s, const ConveyorSync& sync,
+                                double t_cycle, const AxisStage& axes) noexcept {
+  if (warning_) return;  // the first overrun of the run; the audit lists every one
   std::array<axes::Dynamics, planner::kMaxAxes> dyn{};
-  const std::size_t n = std::min(axes_.size(), sync_->axis_count());
+  const std::size_t n = std::min(axes.size(), sync.axis_count());
   for (std::size_t i = 0; i < n; ++i)
-    dyn[i] = sync_->dynamics(i);
+    dyn[i] = sync.dynamics(i);
   // The closed-form v, a and j of the joints, then their setpoints' differences: a belt that
   // changes faster than its measured acceleration tells (a step, noise without filters) moves
   // the PCS1 offset and with it the joints between cycles beyond what the closed form shows.
-  // --- trafo-checks: the jerk as the audit checks it: the closed form on a jerk-limited slope,
+  // the jerk as the audit checks it: the closed form on a jerk-limited slope,
   // the third difference where its stencil is jerk-limited and holds no documented path step.
   auto o = joint_overrun(s, std::span(dyn.data(), n), c.jerk_limited);
   JointSetpoint diff;
   bool jerk = false;
-  if (!o && joint_differences(c, s, diff, jerk))
+  if (!o && differences(c, s, axes.size(), t_cycle, diff, jerk))
     o = joint_overrun(diff, std::span(dyn.data(), n), jerk);
   if (!o) return;
-  const char* phase = sync_->phase() == SyncPhase::catching_up ? "the catch-up"
-                      : sync_->phase() == SyncPhase::departing ? "the departure"
-                                                               : "synchronised motion";
+  const char* phase = sync.phase() == SyncPhase::catching_up ? "the catch-up"
+                      : sync.phase() == SyncPhase::departing ? "the departure"
+                                                             : "synchronised motion";
   const char* quantity = o->quantity == 'v' ? "v" : o->quantity == 'a' ? "a" : "j";
   const char* limit = o->quantity == 'v'   ? "P-AXIS-00212"
                       : o->quantity == 'a' ? "P-AXIS-00008"
@@ -107,7 +116,7 @@ void Channel::trafo_sync_check(const Cycle& c, const JointSetpoint& s) noexcept 
   std::snprintf(text, sizeof text,
                 "joint %s: |%s| %.6g above its %.6g (%s) in %s under #TRAFO ON (004 l.609: the "
                 "joint dynamics are not ensured there; reduce the belt velocity or the feed)",
-                axes_[o->joint].config.name.c_str(), quantity, o->value, o->limit, limit, phase);
+                axes.config(o->joint).name.c_str(), quantity, o->value, o->limit, limit, phase);
   try {
     RunTimeError w;
     w.id = kTrafoSyncOverrunId;
@@ -116,18 +125,18 @@ void Channel::trafo_sync_check(const Cycle& c, const JointSetpoint& s) noexcept 
     w.file = c.file;
     w.t = c.t;
     w.axis = static_cast<int>(o->joint);
-    trafo_warning_ = std::move(w);
+    warning_ = std::move(w);
   } catch (...) {
     std::abort();  // out of memory while reporting a warning
   }
 }
 
-bool Channel::joint_differences(const Cycle& c, const JointSetpoint& s, JointSetpoint& out,
-                                bool& jerk) const noexcept {
+bool KinematicStage::differences(const Cycle& c, const JointSetpoint& s, std::size_t n,
+                                 double t_cycle, JointSetpoint& out, bool& jerk) const noexcept {
   if (q_known_ < 2 || c.index != q_index_ + 1) return false;
-  const double t = ipo_.t_cycle();
+  const double t = t_cycle;
   jerk = q_known_ >= 3 && q_plain_[0] && q_plain_[1] && q_plain_[2];
-  for (std::size_t i = 0; i < axes_.size(); ++i) {
+  for (std::size_t i = 0; i < n; ++i) {
     out.q[i] = s.q[i];
     out.v[i] = (s.q[i] - q_back1_[i]) / t;
     out.a[i] = (s.q[i] - 2.0 * q_back1_[i] + q_back2_[i]) / (t * t);
@@ -137,18 +146,36 @@ bool Channel::joint_differences(const Cycle& c, const JointSetpoint& s, JointSet
   return true;
 }
 
-bool Channel::trafo_sync_motion(bool catch_up, std::span<const axes::MotionState> start,
-                                std::span<const double> target, double feed_cont,
-                                axes::Result& r) noexcept {
+bool KinematicStage::map_tcp(AxisStage& axes) noexcept {
+  const std::size_t n = axes.size();
+  AxisVec x{}, v{}, a{}, j{};
+  for (std::size_t i = 0; i < n; ++i) {
+    x[i] = tcp_[i].p;
+    v[i] = tcp_[i].v;
+    a[i] = tcp_[i].a;
+    j[i] = tcp_[i].j;
+  }
+  JointSetpoint s;
+  if (!stage_->step(x, v, a, j, s)) return false;
+  joints_ = s;
+  for (std::size_t i = 0; i < n; ++i)
+    axes.setpoints()[i] = axes::Setpoint{s.q[i], s.v[i], s.a[i], s.j[i]};
+  return true;
+}
+
+bool KinematicStage::plan_sync_motion(ConveyorSync& sync, bool catch_up,
+                                      std::span<const axes::MotionState> start,
+                                      std::span<const double> target, double feed_cont,
+                                      axes::Result& r) const noexcept {
   const std::size_t n = start.size();
   std::array<axes::Dynamics, planner::kMaxAxes> joints{};
   std::array<axes::Dynamics, planner::kMaxAxes> tcp{};
   for (std::size_t i = 0; i < n; ++i)
-    joints[i] = tcp[i] = sync_->dynamics(i);
+    joints[i] = tcp[i] = sync.dynamics(i);
   const planner::JointMap& inverse = stage_->inverse();
   std::array<int, 3> xyz{-1, -1, -1};
   for (std::size_t i = 0; i < n; ++i)
-    if (const int k = sync_->xyz(i); k >= 0) xyz[static_cast<std::size_t>(k)] = static_cast<int>(i);
+    if (const int k = sync.xyz(i); k >= 0) xyz[static_cast<std::size_t>(k)] = static_cast<int>(i);
   // The points the TCP passes: the start, the target (at the start), and for a catch-up the
   // meeting point and the middle between start and meeting.
   std::array<AxisVec, 4> points{};
@@ -167,15 +194,15 @@ bool Channel::trafo_sync_motion(bool catch_up, std::span<const axes::MotionState
     }
     for (const int k : xyz)
       if (k >= 0) tcp[static_cast<std::size_t>(k)] = *d;
-    // --- trafo-feed: FEED_CONT > 0 meets the workpiece moving; the meeting point, its
+    // FEED_CONT > 0 meets the workpiece moving; the meeting point, its
     // velocity belt + f u inside the TCP's V, is covered by the second pass (S-1).
-    r = catch_up ? sync_->start_catch_up(start, target, feed_cont, std::span(tcp.data(), n))
-                 : sync_->start_departure(start, target, std::span(tcp.data(), n));
+    r = catch_up ? sync.start_catch_up(start, target, feed_cont, std::span(tcp.data(), n))
+                 : sync.start_departure(start, target, std::span(tcp.data(), n));
     if (r != axes::Result::ok || !catch_up) return r == axes::Result::ok;
     // The meeting point is known now: cover it and the way there, then plan again.
-    const CatchUp& cu = sync_->catch_up();
+    const CatchUp& cu = sync.catch_up();
     const double vb = cu.belt_velocity();
-    const double s_meet = sync_->travel() + vb * cu.duration();  // the forecast belt
+    const double s_meet = sync.travel() + vb * cu.duration();  // the forecast belt
     for (std::size_t i = 0; i < n; ++i) {
       const axes::Setpoint end = cu.setpoint(i, cu.duration(), s_meet, vb, 0.0);
       points[2][i] = end.p;

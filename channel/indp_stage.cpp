@@ -1,12 +1,14 @@
-// channel/channel_indp: the channel's INDP axes per cycle and the scenario's axis override (see
-// channel/channel.hpp and docs/ipo.md "INDP axes and technology functions").
+// channel/indp_stage: the channel's INDP axes and technology outputs (see the header and
+// docs/ipo.md "INDP axes and technology functions").
 
+#include "channel/indp_stage.hpp"
+
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
 
-#include "channel/channel.hpp"
 #include "program/program_source.hpp"
 
 namespace ncsim::ipo {
@@ -21,16 +23,26 @@ std::string number(double x) {
 
 }  // namespace
 
-bool Channel::indp_cycle(const Cycle& c) noexcept {
+IndpStage::IndpStage(std::vector<IndpAxisConfig> axes, double t_cycle, const AxisVec& start)
+    : indp_(std::move(axes), t_cycle, start) {}
+
+void IndpStage::step_once(const Cycle& c) noexcept {
+  if (stepped_ == c.index) return;  // the error's own cycle may have stepped them already
   indp_.step();
-  indp_stepped_ = c.index;  // --- trafo-feed: sync_error_indp_step() steps it once a cycle
+  stepped_ = c.index;
+}
+
+bool IndpStage::step(const Cycle& c, AxisStage& axes, const Cycle*& shown,
+                     std::optional<RunTimeError>& error) noexcept {
+  indp_.step();
+  stepped_ = c.index;
   planner::AxisMask owned = indp_.owned_mask();
   // An axis the path drives: its INDP state follows the path's setpoint, so an INDP command
   // starts from where (and how fast) the axis is.
-  for (std::size_t i = 0; i < axes_.size(); ++i)
-    if (((owned >> i) & 1u) == 0) indp_.follow(i, setpoint_[i]);
+  for (std::size_t i = 0; i < axes.size(); ++i)
+    if (((owned >> i) & 1u) == 0) indp_.follow(i, axes.setpoints()[i]);
   if (owned == 0) {
-    shown_ = nullptr;
+    shown = nullptr;
     return true;
   }
   // The path programs an axis the INDP layer owns: the axis goes back to the path when its
@@ -39,50 +51,50 @@ bool Channel::indp_cycle(const Cycle& c) noexcept {
   // for a running INDP_ASYN motion) is not done: NC6103 (docs/ipo.md).
   if (c.activity == Activity::motion && c.programmed != nullptr) {
     const planner::Move& m = *c.programmed;
-    for (std::size_t i = 0; i < axes_.size(); ++i) {
+    for (std::size_t i = 0; i < axes.size(); ++i) {
       if (((owned >> i) & 1u) == 0) continue;
       const bool moved =
           m.end[i] != m.start[i] || (m.arc && (m.arc->axis_1 == i || m.arc->axis_2 == i));
       if (!moved) continue;
       const double p = indp_.setpoint(i).p;
       if (!indp_.in_position(i) || std::fabs(m.start[i] - p) > 1e-9 * std::max(1.0, std::fabs(p))) {
-        stop(kIndpPathId,
-             "not supported: axis " + axes_[i].config.name +
-                 " programmed as a path axis while its INDP motion " +
-                 (indp_.in_position(i) ? "left it at " + number(p) + " (the block starts at " +
-                                             number(m.start[i]) + ")"
-                                       : "runs (to " + number(indp_.target(i)) + ")") +
-                 "; program #WAIT INDP before (P-CHAN-00451 implicit synchronisation)",
-             c, static_cast<int>(i));
+        raise(error, kIndpPathId,
+              "not supported: axis " + axes.config(i).name +
+                  " programmed as a path axis while its INDP motion " +
+                  (indp_.in_position(i) ? "left it at " + number(p) + " (the block starts at " +
+                                              number(m.start[i]) + ")"
+                                        : "runs (to " + number(indp_.target(i)) + ")") +
+                  "; program #WAIT INDP before (P-CHAN-00451 implicit synchronisation)",
+              c, static_cast<int>(i));
         return false;
       }
       indp_.release(i);
-      indp_.follow(i, setpoint_[i]);
+      indp_.follow(i, axes.setpoints()[i]);
       owned &= ~(planner::AxisMask{1} << i);
     }
   }
   patched_ = c;
   patched_.independent = owned;
-  for (std::size_t i = 0; i < axes_.size(); ++i) {
+  for (std::size_t i = 0; i < axes.size(); ++i) {
     if (((owned >> i) & 1u) == 0) continue;
     const axes::Setpoint& sp = indp_.setpoint(i);
-    setpoint_[i] = sp;
+    axes.setpoints()[i] = sp;
     patched_.x[i] = sp.p;
     patched_.v[i] = sp.v;
     patched_.a[i] = sp.a;
     patched_.j[i] = sp.j;
   }
-  shown_ = &patched_;
+  shown = &patched_;
   return true;
 }
 
-std::optional<std::pair<const char*, std::string>> Channel::indp_override(
-    const scenario::AxisOverride& o) noexcept {
+std::optional<std::pair<const char*, std::string>> IndpStage::set_override(
+    const scenario::AxisOverride& o, const AxisStage& axes) noexcept {
   try {
     std::size_t i = 0;
-    while (i < axes_.size() && axes_[i].config.name != o.axis)
+    while (i < axes.size() && axes.config(i).name != o.axis)
       ++i;
-    if (i == axes_.size())
+    if (i == axes.size())
       return std::pair{kIndpOverrideId,
                        "scenario axis override of " + o.axis +
                            ": not an axis of the channel (spindles, the conveyor and encoder axes "
@@ -98,31 +110,26 @@ std::optional<std::pair<const char*, std::string>> Channel::indp_override(
   }
 }
 
-Channel::EventOutcome Channel::indp_command(const interp::AxisCommand& c,
-                                            const ChannelEvent& e) noexcept {
-  std::size_t i = 0;
-  while (i < axes_.size() && axes_[i].config.indp.machine_index != c.axis)
-    ++i;
-  if (i == axes_.size())
-    return event_error(kNotSupportedId,
-                       "not supported: INDP motion of a spindle, the conveyor or an encoder axis "
-                       "(only interpolated axes move independently)",
-                       e);
+EventOutcome IndpStage::command(const interp::AxisCommand& c, const AxisStage& axes,
+                                const ConveyorSync* sync, const EventContext& ctx) noexcept {
+  const std::size_t i = axes.find(c.axis);
+  if (i == axes.size())
+    return ctx.fail(kNotSupportedId,
+                    "not supported: INDP motion of a spindle, the conveyor or an encoder axis "
+                    "(only interpolated axes move independently)");
   // isg-language.md 6.1: "By default no offsets are applied": POS is the axis value (MCS) under
   // a #CS too; under #SYNC (PCS1) or #TRAFO ON the target would need the moving frame or the
   // kinematics.
-  // --- trafo-feed: while synchronised an axis the belt does not move (its share of T0's X is
+  // while synchronised an axis the belt does not move (its share of T0's X is
   // 0: Z, C) has PCS1 = MCS up to T0's constant offset: POS is its MCS value as outside #SYNC
   // (docs/conveyor.md "With INDP axes"). An axis the belt moves would need the moving frame.
-  const bool belt_moves =
-      c.frame.space == interp::Space::pcs1 &&
-      (!sync_ || (sync_->xyz(i) >= 0 && sync_->xyz(i) < 3 &&
-                  std::fabs(sync_->frame().direction()[sync_->xyz(i)]) >= 1e-12));
+  const bool belt_moves = c.frame.space == interp::Space::pcs1 &&
+                          (!sync || (sync->xyz(i) >= 0 && sync->xyz(i) < 3 &&
+                                     std::fabs(sync->frame().direction()[sync->xyz(i)]) >= 1e-12));
   if (belt_moves || c.frame.kinematics)
-    return event_error(kNotSupportedId,
-                       "not supported: INDP motion of axis " + axes_[i].config.name +
-                           (c.frame.kinematics ? " under #TRAFO ON" : " while synchronised (PCS1)"),
-                       e);
+    return ctx.fail(kNotSupportedId,
+                    "not supported: INDP motion of axis " + axes.config(i).name +
+                        (c.frame.kinematics ? " under #TRAFO ON" : " while synchronised (PCS1)"));
   IndpMove m;
   m.target = c.target;
   m.rapid = c.rapid;
@@ -131,50 +138,64 @@ Channel::EventOutcome Channel::indp_command(const interp::AxisCommand& c,
   // INTERRUPTIBLE belongs to INDP_SYN motions after #SYNC OUT (TF5264 examples); with
   // INDP_ASYN it is ignored (docs/ipo.md).
   m.interruptible = c.interruptible && c.kind == interp::IndpKind::syn;
-  if (const auto err = indp_.command(i, m)) return event_error(err->id.c_str(), err->message, e);
+  if (const auto err = indp_.command(i, m)) return ctx.fail(err->id.c_str(), err->message);
   if (c.kind == interp::IndpKind::syn) syn_ |= planner::AxisMask{1} << i;
   return EventOutcome::done;
 }
 
-Channel::EventOutcome Channel::indp_wait(const interp::WaitIndp& w, const ChannelEvent&) noexcept {
+EventOutcome IndpStage::wait(const interp::WaitIndp& w, const AxisStage& axes) const noexcept {
   // #WAIT INDP [axes] / ALL: "waits until axis Z's command value reaches its target"
   // (isg-language.md 6.1): blocking until then, the path holding at the wait.
   planner::AxisMask mask = 0;
-  for (std::size_t i = 0; i < axes_.size(); ++i)
-    if (w.axes == 0 || ((w.axes >> axes_[i].config.indp.machine_index) & 1u) != 0)
+  for (std::size_t i = 0; i < axes.size(); ++i)
+    if (w.axes == 0 || ((w.axes >> axes.config(i).indp.machine_index) & 1u) != 0)
       mask |= planner::AxisMask{1} << i;
   if (mask == 0) return EventOutcome::done;  // none of the named axes is a channel axis
   return indp_.in_position_mask(mask) ? EventOutcome::done : EventOutcome::blocking;
 }
 
-Channel::EventOutcome Channel::indp_tech(const interp::Tech& t, const ChannelEvent& e) noexcept {
+EventOutcome IndpStage::tech(const interp::Tech& t, const EventContext& ctx) noexcept {
   if (t.sync == machines::TechSync::none) return EventOutcome::done;  // NO_SYNCH: no output
   try {
-    tech_.push_back(TechOutput{static_cast<double>(ipo_.cycle().index) * ipo_.t_cycle(), e.line,
-                               e.file, t.kind, t.value, t.extra});
+    const ChannelEvent& e = ctx.event();
+    tech_.push_back(TechOutput{ctx.t(), e.line, e.file, t.kind, t.value, t.extra});
   } catch (...) {
     std::abort();  // out of memory: bounded by the events of one cycle (kMaxPendingEvents)
   }
   return EventOutcome::done;
 }
 
-bool Channel::indp_syn_done() noexcept {
+bool IndpStage::syn_done(bool interruptible, std::size_t n) noexcept {
   planner::AxisMask wait = syn_;
-  // --- sync-feed: before the next synchronisation the program goes on while INTERRUPTIBLE
-  // INDP_SYN motions run; the catch-up takes them over (docs/conveyor.md S-4).
-  if (wait_interruptible_)
-    for (std::size_t i = 0; i < axes_.size(); ++i)
+  // Before the next synchronisation the program goes on while INTERRUPTIBLE INDP_SYN motions
+  // run; the catch-up takes them over (docs/conveyor.md S-4).
+  if (interruptible)
+    for (std::size_t i = 0; i < n; ++i)
       if (indp_.interruptible(i)) wait &= ~(planner::AxisMask{1} << i);
   if (wait != 0 && !indp_.in_position_mask(wait)) return false;
   syn_ = 0;
   return true;
 }
 
-Status Channel::indp_tail() noexcept {
+// The on-the-fly change (004 l.277-279, docs/conveyor.md S-4).
+bool IndpStage::hand_over(std::size_t n) noexcept {
+  bool ready = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!indp_.owned(i)) continue;
+    if (indp_.in_position(i)) {
+      indp_.release(i);  // its setpoint is where the INDP motion left it
+    } else if (!indp_.hand_over(i)) {
+      ready = false;  // not INTERRUPTIBLE (or INDP_ASYN): the motion first ends in position
+    }
+  }
+  return ready;
+}
+
+const Cycle& IndpStage::tail(const Cycle& last, double t_cycle) noexcept {
   // The path stands at its end; the cycles go on (Activity::channel, counted as waiting by
   // `time`) until every INDP axis is in position, so `run` and `time` cover the whole motion.
   if (!in_tail_) {
-    tail_ = ipo_.cycle();
+    tail_ = last;
     in_tail_ = true;
     tail_.activity = Activity::channel;
     tail_.programmed = nullptr;
@@ -186,13 +207,8 @@ Status Channel::indp_tail() noexcept {
     tail_.j = AxisVec{};
   }
   ++tail_.index;
-  tail_.t = static_cast<double>(tail_.index) * ipo_.t_cycle();
-  map_to_axes(tail_);
-  if (!indp_cycle(tail_)) return Status::error;
-  for (std::size_t i = 0; i < axes_.size(); ++i)
-    if (!drive_axis(i, tail_)) return Status::error;
-  if (sink_) sink_->on_cycle(cycle());
-  return Status::running;
+  tail_.t = static_cast<double>(tail_.index) * t_cycle;
+  return tail_;
 }
 
 }  // namespace ncsim::ipo

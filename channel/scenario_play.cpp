@@ -1,0 +1,87 @@
+// channel/scenario_play: the scenario played in the channel loop (see the header).
+
+#include "channel/scenario_play.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+#include <variant>
+
+namespace ncsim::ipo {
+
+namespace {
+
+std::string text(const char* format, double a, double b) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, format, a, b);
+  return buf;
+}
+
+}  // namespace
+
+void ScenarioPlay::block_started(std::uint32_t line) noexcept {
+  if (aborted_) return;  // the program is aborted (its blocks only brake)
+  player_->block_started(line);
+  for (const scenario::Action& a : player_->fire_lines()) {
+    if (failed_) break;
+    failed_ = act(a);
+  }
+}
+
+std::optional<std::pair<const char*, std::string>> ScenarioPlay::act(
+    const scenario::Action& a) noexcept {
+  if (std::holds_alternative<scenario::VeWrite>(a)) return std::nullopt;  // in player_->ve()
+  // MCV_SetReducedFilter: step() hands player_->reduced_filter() to the Port every cycle.
+  if (std::holds_alternative<scenario::ReducedFilter>(a)) return std::nullopt;
+  if (const auto* h = std::get_if<scenario::FeedHold>(&a)) {
+    ipo_.set_feed_hold(h->on);
+    return std::nullopt;
+  }
+  if (const auto* o = std::get_if<scenario::PathOverride>(&a)) {
+    const double max = max_override(ipo_.override_type());
+    if (o->fraction <= max) {
+      try {
+        ipo_.set_override(o->fraction);
+        return std::nullopt;
+      } catch (const std::invalid_argument&) {
+      }
+    }
+    return std::pair{kOverrideRangeId,
+                     text("scenario path override %.6g %% above %.6g %%, the largest of the "
+                          "channel's override type (NCSIM-CHAN-630)",
+                          o->fraction * 100.0, max * 100.0)};
+  }
+  return indp_.set_override(std::get<scenario::AxisOverride>(a), axes_);
+}
+
+bool ScenarioPlay::step(bool tracking, conveyor::Port* port, Status& status,
+                        std::optional<RunTimeError>& error) noexcept {
+  if (stopped_) {
+    status = Status::finished;
+    return false;
+  }
+  const Cycle& last = ipo_.cycle();
+  const std::uint64_t k = last.index;
+  const double t = static_cast<double>(k) * ipo_.t_cycle();
+  for (const scenario::Action& a : player_->step(k, t)) {
+    if (auto e = act(a)) {
+      Cycle at = last;
+      at.t = t;
+      raise(error, e->first, std::move(e->second), at, -1);
+      status = Status::error;
+      return false;
+    }
+  }
+  // MCV_SetReducedFilter from the PLC side (docs/conveyor.md "Filters").
+  // And the channel's feed hold while it tracks the conveyor (docs/conveyor.md F-4:
+  // P-AXIS-00624/00625 "in the case of feedhold").
+  if (port != nullptr)
+    port->set_reduced_filter(player_->reduced_filter() || (ipo_.feed_hold() && tracking));
+  if (const auto reason = player_->stop()) {
+    stopped_ = *reason;
+    status = Status::finished;
+    return false;
+  }
+  return true;
+}
+
+}  // namespace ncsim::ipo
