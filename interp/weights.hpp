@@ -1,5 +1,5 @@
 #pragma once
-// interp/weights: the dynamics weightings G127..G133, G229..G233 (docs/interp.md "Dynamics
+// interp/weights: the dynamics weightings G127..G133, G230, G231, G233 (docs/interp.md "Dynamics
 // weighting").
 //
 // Inputs: one weighting G code of a block, its group value [%] (G128=50) or the block's axis
@@ -23,7 +23,7 @@
 
 namespace ncsim::interp {
 
-/// True for the weighting codes ncsim applies (G127..G133, G229..G231, G233).
+/// True for the weighting codes ncsim applies (G127..G133, G230, G231, G233).
 bool is_applied_weighting(std::uint32_t code) noexcept;
 /// True for the axis-specific forms (G127, G130, G132, G230, G333, G338): axis words are weights.
 bool is_axis_weighting(std::uint32_t code) noexcept;

@@ -1,4 +1,4 @@
-// Dynamics weightings G127..G133 / G229..G233 (TF5200 PROG-206573067, PROG-206578955,
+// Dynamics weightings G127..G133, G230, G231, G233 (TF5200 PROG-206573067, PROG-206578955,
 // PROG-206590731, PROG-206596619): each selection from 100 %, limits ncsim keeps (NC4314).
 #include "interp/weights.hpp"
 

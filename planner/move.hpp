@@ -81,7 +81,7 @@ struct JointShare {
   AxisVec j{};  ///< jerk taken of joint i, >= 0 [deg/s^3 | mm/s^3]
 };
 
-/// A block's dynamics weightings (interp::DynamicsWeights, TF5200 G127..G133 / G229..G233) per
+/// A block's dynamics weightings (interp::DynamicsWeights, TF5200 G127..G133, G230, G231, G233) per
 /// axis as fractions <= 1 of the limits it plans with: `v` of v_max and v_reference (G00:
 /// v_rapid), `a` of the accelerations, `j` of the jerks (the acceleration's weight over the
 /// ramp time's); docs/interp.md "Dynamics weighting".
