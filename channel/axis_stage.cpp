@@ -4,21 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 
 namespace ncsim::ipo {
-
-namespace {
-
-std::string text(const char* format, double a, double b) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, format, a, b);
-  return buf;
-}
-
-}  // namespace
 
 AxisStage::AxisStage(const std::vector<ChannelAxis>& axes, const AxisVec& start, double t_cycle) {
   axes_.reserve(axes.size());
@@ -67,11 +56,12 @@ bool AxisStage::drive(std::size_t i, const Cycle& c, bool motion_active, bool wa
     const bool low = alarm->kind == axes::AlarmKind::soft_limit_min;
     raise(error, alarm->id.data(),
           "axis " + a.config.name +
-              text(low ? ": command position %.6g mm below the minimum soft position limit %.6g "
-                         "mm (P-AXIS-00177)"
-                       : ": command position %.6g mm above the maximum soft position limit %.6g "
-                         "mm (P-AXIS-00178)",
-                   sp.p, alarm->limit),
+              format_text(
+                  low ? ": command position %.6g mm below the minimum soft position limit %.6g "
+                        "mm (P-AXIS-00177)"
+                      : ": command position %.6g mm above the maximum soft position limit %.6g "
+                        "mm (P-AXIS-00178)",
+                  sp.p, alarm->limit),
           c, axis);
     return false;
   }
@@ -87,18 +77,18 @@ bool AxisStage::drive(std::size_t i, const Cycle& c, bool motion_active, bool wa
   std::string what;
   switch (alarm->kind) {
     case axes::AlarmKind::position_lag:
-      what = text(
+      what = format_text(
           ": position lag %.6g mm above the maximum %.6g mm for longer than the filter "
           "time (NCSIM-AXIS-025 / 026)",
           alarm->value, alarm->limit);
       break;
     case axes::AlarmKind::exact_stop_timeout:
-      what = text(
+      what = format_text(
                  ": exact stop window P-AXIS-00236 (%.6g mm) not reached within P-AXIS-00532 "
                  "(%.6g s)",
                  a.config.monitor.exact_stop.window, alarm->limit) +
-             text(", %.6g mm from the target after %.6g s", std::fabs(target - state_.actual[i]),
-                  waited);
+             format_text(", %.6g mm from the target after %.6g s",
+                         std::fabs(target - state_.actual[i]), waited);
       break;
     default:
       what = ": " + axes::describe(*alarm);

@@ -69,6 +69,12 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
   }
 }
 
+std::string format_text(const char* format, double a, double b) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, format, a, b);
+  return buf;
+}
+
 void raise(std::optional<RunTimeError>& error, const char* id, std::string message, const Cycle& c,
            int axis) noexcept {
   try {

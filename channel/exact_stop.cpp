@@ -3,21 +3,10 @@
 #include "channel/exact_stop.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 
 namespace ncsim::ipo {
-
-namespace {
-
-std::string text(const char* format, double a, double b) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, format, a, b);
-  return buf;
-}
-
-}  // namespace
 
 ExactStopWait::ExactStopWait(double wait_max, double t_cycle)
     : wait_max_(wait_max), t_cycle_(t_cycle) {
@@ -69,11 +58,12 @@ bool ExactStopWait::check(const Cycle& c, const AxisStage& axes, bool& release,
   const ChannelAxis& w = axes.config(static_cast<std::size_t>(worst));
   raise(error, kExactStopWaitId,
         "axis " + w.name +
-            text(": exact stop window P-AXIS-00236 (%.6g mm) not reached, %.6g mm from the "
-                 "target",
-                 w.monitor.exact_stop.window, worst_d) +
-            text(" after %.6g s (P-AXIS-00532 does not monitor the time; ncsim's limit %.6g s)",
-                 waited(), wait_max_),
+            format_text(": exact stop window P-AXIS-00236 (%.6g mm) not reached, %.6g mm from the "
+                        "target",
+                        w.monitor.exact_stop.window, worst_d) +
+            format_text(
+                " after %.6g s (P-AXIS-00532 does not monitor the time; ncsim's limit %.6g s)",
+                waited(), wait_max_),
         c, worst);
   return false;
 }

@@ -2,21 +2,10 @@
 
 #include "channel/scenario_play.hpp"
 
-#include <cstdio>
 #include <stdexcept>
 #include <variant>
 
 namespace ncsim::ipo {
-
-namespace {
-
-std::string text(const char* format, double a, double b) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, format, a, b);
-  return buf;
-}
-
-}  // namespace
 
 void ScenarioPlay::block_started(std::uint32_t line) noexcept {
   if (aborted_) return;  // the program is aborted (its blocks only brake)
@@ -46,9 +35,9 @@ std::optional<std::pair<const char*, std::string>> ScenarioPlay::act(
       }
     }
     return std::pair{kOverrideRangeId,
-                     text("scenario path override %.6g %% above %.6g %%, the largest of the "
-                          "channel's override type (NCSIM-CHAN-630)",
-                          o->fraction * 100.0, max * 100.0)};
+                     format_text("scenario path override %.6g %% above %.6g %%, the largest of the "
+                                 "channel's override type (NCSIM-CHAN-630)",
+                                 o->fraction * 100.0, max * 100.0)};
   }
   return indp_.set_override(std::get<scenario::AxisOverride>(a), axes_);
 }

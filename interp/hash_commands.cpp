@@ -4,6 +4,7 @@
 
 #include "core/number_text.hpp"
 #include "grammar/keywords.hpp"
+#include "interp/cs_select.hpp"
 #include "interp/interpreter_impl.hpp"
 
 namespace ncsim::interp {
@@ -318,7 +319,6 @@ bool HashCommands::hash_cs(const ast::Block& b, const ast::HashCommand& h) {
   }
   SelectCs sel;
   sel.id = id;
-  std::optional<machines::CsValues> cv;
   if (values != nullptr) {
     std::array<double, 6> vals{};
     for (std::size_t k = 0; k < values->size() && k < 6; ++k) {
@@ -328,29 +328,13 @@ bool HashCommands::hash_cs(const ast::Block& b, const ast::HashCommand& h) {
       vals[k] = *v;
     }
     sel.values = vals;
-    cv = machines::CsValues{{vals[0], vals[1], vals[2]}, {vals[3], vals[4], vals[5]}};
   }
-  std::optional<machines::CsError> err;
+  sel.op = h.kind == HashKind::cs_def   ? CsOp::def
+           : h.kind == HashKind::cs_on  ? CsOp::on
+           : h.kind == HashKind::cs_off ? CsOp::off
+                                        : CsOp::off_all;
   const machines::Frame before = ip_.cs.active_frame();
-  switch (h.kind) {
-    case HashKind::cs_def:
-      sel.op = CsOp::def;
-      err = ip_.cs.def(id, cv.value_or(machines::CsValues{}));
-      break;
-    case HashKind::cs_on:
-      sel.op = CsOp::on;
-      err = ip_.cs.on(id, cv);
-      break;
-    case HashKind::cs_off:
-      sel.op = CsOp::off;
-      err = ip_.cs.off();
-      break;
-    default:
-      sel.op = CsOp::off_all;
-      ip_.cs.off_all();
-      break;
-  }
-  if (err) return ip_.fail(at, err->id, err->message);
+  if (const auto err = apply_selection(ip_.cs, sel)) return ip_.fail(at, err->id, err->message);
   if (sel.op != CsOp::def) ip_.rebase_cs(before);
   sel.active_count = static_cast<std::uint8_t>(ip_.cs.active_count());
   ip_.emit(ip_.line, sel);

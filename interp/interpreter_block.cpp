@@ -202,11 +202,8 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
 
 void Interpreter::Impl::apply_weightings(const BlockWords& bw) {
   DynamicsWeights w = modal.weights ? *modal.weights : DynamicsWeights{};
-  std::vector<std::string> names;
-  for (const machines::AxisParams& a : machine.axes)
-    names.push_back(a.name);
   for (const BlockWords::Weighting& g : bw.weightings) {
-    for (std::string& note : apply_weighting(w, g.code, g.group, bw.axis_words, names))
+    for (std::string& note : apply_weighting(w, g.code, g.group, bw.axis_words, machine.axes))
       warn(g.loc, "NC4314", std::move(note));
   }
   if (w == DynamicsWeights{})

@@ -8,7 +8,7 @@
 #include <map>
 
 #include "core/number_text.hpp"
-#include "machines/cs_stack.hpp"
+#include "interp/cs_select.hpp"
 
 namespace ncsim::interp {
 namespace {
@@ -424,83 +424,6 @@ void add_soft_limit_errors(const Command& c, const machines::Machine& machine,
   }
 }
 
-namespace {
-// A #CS selection the interpreter made (and checked) applied to a stack that follows it.
-void follow_cs(machines::CsStack& cs, const SelectCs& sel) {
-  std::optional<machines::CsValues> values;
-  if (sel.values) {
-    const std::array<double, 6>& v = *sel.values;
-    values = machines::CsValues{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
-  }
-  switch (sel.op) {
-    case CsOp::def:
-      cs.def(sel.id, values.value_or(machines::CsValues{}));
-      break;
-    case CsOp::on:
-      cs.on(sel.id, values);
-      break;
-    case CsOp::off:
-      cs.off();
-      break;
-    case CsOp::off_all:
-      cs.off_all();
-      break;
-  }
-}
-}  // namespace
-
-std::optional<Command> command_in_mcs(const Command& c, const machines::Frame& pcs_to_mcs,
-                                      const machines::Machine& machine) {
-  const CoordFrame* frame = nullptr;
-  if (const auto* m = std::get_if<Motion>(&c.body)) frame = &m->frame;
-  if (const auto* p = std::get_if<SplinePoint>(&c.body)) frame = &p->frame;
-  if (frame == nullptr || frame->space != Space::pcs || frame->kinematics) return std::nullopt;
-  std::array<int, 3> xyz{-1, -1, -1};
-  const char* names[3] = {"X", "Y", "Z"};
-  for (std::size_t k = 0; k < 3; ++k)
-    if (const machines::AxisParams* a = machine.find_axis(names[k]))
-      xyz[k] = static_cast<int>(a - machine.axes.data());
-  const auto to_mcs = [&](AxisValues& p) {
-    Eigen::Vector3d q = Eigen::Vector3d::Zero();
-    for (std::size_t k = 0; k < 3; ++k)
-      if (xyz[k] >= 0) q[static_cast<Eigen::Index>(k)] = p[static_cast<std::size_t>(xyz[k])];
-    q = pcs_to_mcs.apply(q);
-    for (std::size_t k = 0; k < 3; ++k)
-      if (xyz[k] >= 0) p[static_cast<std::size_t>(xyz[k])] = q[static_cast<Eigen::Index>(k)];
-  };
-  // A rotated chain mixes X, Y and Z: all three MCS targets follow from a programmed one.
-  const auto programmed_xyz = [&](AxisMask& programmed) {
-    AxisMask xyz_bits = 0;
-    for (const int i : xyz)
-      if (i >= 0) xyz_bits |= AxisMask{1} << i;
-    if ((programmed & xyz_bits) != 0) programmed |= xyz_bits;
-  };
-  Command out = c;
-  if (auto* m = std::get_if<Motion>(&out.body)) {
-    to_mcs(m->start);
-    to_mcs(m->end);
-    programmed_xyz(m->programmed);
-    m->frame = CoordFrame{};
-    if (m->arc) {
-      if (!pcs_to_mcs.rotation.isIdentity(0.0)) {
-        m->arc.reset();  // its plane turns: the target alone is decidable here
-      } else {           // a shift moves the centre with the points
-        for (std::size_t k = 0; k < 3; ++k) {
-          const double d = pcs_to_mcs.translation[static_cast<Eigen::Index>(k)];
-          if (xyz[k] == m->arc->axis_1) m->arc->centre_1 += d;
-          if (xyz[k] == m->arc->axis_2) m->arc->centre_2 += d;
-        }
-      }
-    }
-  } else {
-    auto& p = std::get<SplinePoint>(out.body);
-    to_mcs(p.point);
-    programmed_xyz(p.programmed);
-    p.frame = CoordFrame{};
-  }
-  return out;
-}
-
 core::DiagnosticList check_semantics(const core::SourceFile& file, const machines::Machine& machine,
                                      const Options& options) {
   Interpreter interp(file, machine, options);
@@ -535,7 +458,7 @@ core::DiagnosticList check_semantics(const core::SourceFile& file, const machine
     // through add_once: a block in a loop reports its soft-limit error once (NC4602)
     core::DiagnosticList found;
     if (const auto* sel = std::get_if<SelectCs>(&c->body)) {
-      follow_cs(cs, *sel);
+      apply_selection(cs, *sel);
       cs_frame = cs.active_frame();
     }
     const std::optional<Command> in_mcs = command_in_mcs(*c, cs_frame, machine);

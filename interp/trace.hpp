@@ -20,7 +20,6 @@
 #include "core/source_file.hpp"
 #include "interp/command.hpp"
 #include "interp/interpreter.hpp"
-#include "machines/frame.hpp"
 #include "machines/machine.hpp"
 
 namespace ncsim::interp {
@@ -53,15 +52,6 @@ std::pair<std::array<double, 2>, std::array<double, 2>> arc_extent(const Motion&
 /// the first, before it moves (ipo::ProgramSource), so both apply one rule (issue 34 item 22).
 void add_soft_limit_errors(const Command& c, const machines::Machine& machine,
                            const std::string& file, core::DiagnosticList& out);
-
-/// `c`, a motion or spline point programmed under the #CS chain whose frame (PCS -> MCS) is
-/// `pcs_to_mcs` (frame PCS, no kinematics, not synchronised), with its X, Y, Z points in MCS:
-/// what add_soft_limit_errors judges, so `check` applies the soft limits in MCS as `time` does
-/// (issue 33). A rotated chain drops an arc's extent (its plane turns; the channel's monitor
-/// NC5501 / NC5502 watches the arc) and keeps its target. nullopt: `c` is neither, or in
-/// another frame.
-std::optional<Command> command_in_mcs(const Command& c, const machines::Frame& pcs_to_mcs,
-                                      const machines::Machine& machine);
 
 /// Commands a golden trace holds at most (endless programs are cut there).
 inline constexpr std::uint64_t kGoldenCommands = 400;

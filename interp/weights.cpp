@@ -79,7 +79,7 @@ bool is_axis_weighting(std::uint32_t code) noexcept {
 std::vector<std::string> apply_weighting(DynamicsWeights& w, std::uint32_t code,
                                          std::optional<double> group,
                                          std::span<const std::pair<std::uint8_t, double>> axes,
-                                         std::span<const std::string> axis_names) {
+                                         std::span<const machines::AxisParams> axes_of_machine) {
   std::vector<std::string> notes;
   const bool ramp = code == 132 || code == 133 || code == 233;
   const std::string g = "G" + std::to_string(code);
@@ -93,7 +93,7 @@ std::vector<std::string> apply_weighting(DynamicsWeights& w, std::uint32_t code,
   *target = all_ones();  // every selection starts from 100 %
   if (is_axis_weighting(code)) {
     for (const auto& [axis, percent] : axes) {
-      const std::string name = axis < axis_names.size() ? axis_names[axis] : "axis";
+      const std::string name = axis < axes_of_machine.size() ? axes_of_machine[axis].name : "axis";
       (*target)[axis] = limit(percent, ramp, g + " " + name, notes);
     }
   } else {

@@ -29,10 +29,11 @@ bool is_applied_weighting(std::uint32_t code) noexcept;
 bool is_axis_weighting(std::uint32_t code) noexcept;
 
 /// Applies `code` to `w`. `group`: the group form's value [%]; `axes`: machine index and value
-/// [%] of the axis-specific form. Returns the notes (one per limited value) for NC4314.
+/// [%] of the axis-specific form; `axes_of_machine` name them in the notes. Returns the notes
+/// (one per limited value) for NC4314.
 std::vector<std::string> apply_weighting(DynamicsWeights& w, std::uint32_t code,
                                          std::optional<double> group,
                                          std::span<const std::pair<std::uint8_t, double>> axes,
-                                         std::span<const std::string> axis_names);
+                                         std::span<const machines::AxisParams> axes_of_machine);
 
 }  // namespace ncsim::interp

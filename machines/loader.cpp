@@ -23,25 +23,6 @@ bool is_identifier(std::string_view text) {
   });
 }
 
-// Integer literal: optional sign, decimal digits, or 0x hex digits.
-std::optional<double> parse_integer(std::string_view text) {
-  bool negative = false;
-  if (!text.empty() && (text.front() == '-' || text.front() == '+')) {
-    negative = text.front() == '-';
-    text.remove_prefix(1);
-  }
-  int base = 10;
-  if (text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X')) {
-    base = 16;
-    text.remove_prefix(2);
-  }
-  if (text.empty() || text.size() > 18) return std::nullopt;
-  long long value = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value, base);
-  if (ec != std::errc{} || end != text.data() + text.size()) return std::nullopt;
-  return static_cast<double>(negative ? -value : value);
-}
-
 // Real literal: decimal with optional fraction and exponent ("5.000e+004").
 std::optional<double> parse_real(std::string_view text) {
   if (!text.empty() && text.front() == '+') text.remove_prefix(1);
@@ -85,6 +66,25 @@ std::string range_text(const ParamSpec& spec) {
 }
 
 }  // namespace
+
+// loader_detail.hpp: integer literal: optional sign, decimal digits, or 0x hex digits.
+std::optional<double> parse_integer(std::string_view text) {
+  bool negative = false;
+  if (!text.empty() && (text.front() == '-' || text.front() == '+')) {
+    negative = text.front() == '-';
+    text.remove_prefix(1);
+  }
+  int base = 10;
+  if (text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X')) {
+    base = 16;
+    text.remove_prefix(2);
+  }
+  if (text.empty() || text.size() > 18) return std::nullopt;
+  long long value = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value, base);
+  if (ec != std::errc{} || end != text.data() + text.size()) return std::nullopt;
+  return static_cast<double>(negative ? -value : value);
+}
 
 std::string pattern_of(std::string_view key) {
   std::string out;

@@ -24,12 +24,6 @@ struct Reporter {
   }
 };
 
-std::string hex_text(std::uint32_t bits) {
-  char buf[16];
-  std::snprintf(buf, sizeof buf, "0x%08X", bits);
-  return buf;
-}
-
 // False when any of `keys` was written with a rejected value: a check that compares it would
 // compare against its default and report a follow-on error (issue 9: one error per bad value).
 bool usable(const ListValues& v, std::initializer_list<std::string_view> keys) {
@@ -197,12 +191,7 @@ bool interpret_functions(ChannelParams& ch, const ListValues& v, Reporter& r) {
   InterpolatorFunction& f = ch.interpolator;
   std::string size_flag;
   bool all_known = true;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const std::size_t bar = text.find('|', start);
-    const std::string flag =
-        text.substr(start, bar == std::string::npos ? std::string::npos : bar - start);
-    start = bar == std::string::npos ? text.size() + 1 : bar + 1;
+  for (const std::string& flag : split_flags(text)) {
     if (std::find(kKnown.begin(), kKnown.end(), flag) == kKnown.end()) {
       r.error(v.file(), v.loc(key), "NC3003", ref + ": unknown function '" + flag + "'");
       all_known = false;
@@ -417,6 +406,23 @@ void check_channel_refs(Machine& m, const ListValues& ch, Reporter& r) {
 }
 
 }  // namespace
+
+std::vector<std::string> split_flags(const std::string& text) {
+  std::vector<std::string> flags;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t bar = text.find('|', start);
+    flags.push_back(text.substr(start, bar == std::string::npos ? std::string::npos : bar - start));
+    start = bar == std::string::npos ? text.size() + 1 : bar + 1;
+  }
+  return flags;
+}
+
+std::string hex_text(std::uint32_t bits) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "0x%08X", bits);
+  return buf;
+}
 
 void check_machine(Machine& m, const ListValues& ch, const std::vector<ListValues>& axes,
                    core::DiagnosticList& diagnostics) {

@@ -4,6 +4,8 @@
 // ListValues holds the validated entries of one list (type- and range-checked, duplicates
 // rejected) and answers typed lookups with the table defaults; it is used only while loading.
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -56,6 +58,13 @@ class ListValues {
   std::vector<StoredValue> values_;
   std::vector<std::string> rejected_;  // normalised keys of written but rejected values
 };
+
+/// A list's integer literal: optional sign, decimal digits, or 0x hex digits (loader.cpp).
+std::optional<double> parse_integer(std::string_view text);
+/// The names of a flag value as the list parser normalised it ("A|B" -> {"A", "B"}).
+std::vector<std::string> split_flags(const std::string& text);
+/// Bits as the lists write them: "0x00020002" (loader_checks.cpp).
+std::string hex_text(std::uint32_t bits);
 
 /// "kenngr.swe_pos (P-AXIS-00178)"
 std::string param_ref(std::string_view key, ListKind kind);

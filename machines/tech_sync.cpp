@@ -11,7 +11,6 @@
 // FAW_SYNCH) are NC3013 `not supported` at their line, as is a value with two base types.
 
 #include <cstdint>
-#include <cstdio>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -39,29 +38,16 @@ constexpr std::string_view kUnsupported[] = {"MNE_SNS", "MVS_SLM", "MVS_SLP", "M
 // The bits of a value: hex, or names joined by '|'; nullopt with `why` set when not usable.
 std::optional<std::uint32_t> parse_bits(const std::string& text, std::string& why) {
   if (text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X')) {
-    std::uint32_t bits = 0;
-    for (std::size_t i = 2; i < text.size(); ++i) {
-      const char c = text[i];
-      const int d = c >= '0' && c <= '9'   ? c - '0'
-                    : c >= 'a' && c <= 'f' ? c - 'a' + 10
-                    : c >= 'A' && c <= 'F' ? c - 'A' + 10
-                                           : -1;
-      if (d < 0 || i > 9) {
-        why = "expects a synchronisation type or a hex value of at most 8 digits, found '" + text +
-              "'";
-        return std::nullopt;
-      }
-      bits = bits * 16 + static_cast<std::uint32_t>(d);
+    const std::optional<double> v = parse_integer(text);
+    if (!v || *v > 4294967295.0) {
+      why =
+          "expects a synchronisation type or a hex value of at most 8 digits, found '" + text + "'";
+      return std::nullopt;
     }
-    return bits;
+    return static_cast<std::uint32_t>(*v);
   }
   std::uint32_t bits = 0;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const std::size_t bar = text.find('|', start);
-    const std::string name =
-        text.substr(start, bar == std::string::npos ? std::string::npos : bar - start);
-    start = bar == std::string::npos ? text.size() + 1 : bar + 1;
+  for (const std::string& name : split_flags(text)) {
     bool found = false;
     for (const Named& n : kNames)
       if (n.name == name) {
@@ -98,9 +84,7 @@ std::optional<TechSync> to_sync(std::uint32_t bits, std::string& why) {
     default:
       break;
   }
-  char buf[16];
-  std::snprintf(buf, sizeof buf, "0x%08X", base);
-  why = std::string("not supported: synchronisation bits ") + buf +
+  why = "not supported: synchronisation bits " + hex_text(base) +
         " (ncsim runs one of NO_SYNCH 0x0, MOS 0x1, MVS_SVS 0x2, MVS_SNS 0x4, MNS_SNS 0x8, with "
         "PLC_INFO / BWD_SYNCH / FWD_SYNCH)";
   return std::nullopt;

@@ -13,31 +13,13 @@
 #include <cmath>
 #include <string>
 
+#include "interp/cs_select.hpp"
 #include "program/program_source.hpp"
 
 namespace ncsim::ipo {
 
 void ProgramSource::select_cs(const interp::SelectCs& sel, std::uint32_t line) {
-  std::optional<machines::CsValues> values;
-  if (sel.values) {
-    const std::array<double, 6>& v = *sel.values;
-    values = machines::CsValues{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
-  }
-  std::optional<machines::CsError> err;
-  switch (sel.op) {
-    case interp::CsOp::def:
-      err = cs_.def(sel.id, values.value_or(machines::CsValues{}));
-      break;
-    case interp::CsOp::on:
-      err = cs_.on(sel.id, values);
-      break;
-    case interp::CsOp::off:
-      err = cs_.off();
-      break;
-    case interp::CsOp::off_all:
-      cs_.off_all();
-      break;
-  }
+  const std::optional<machines::CsError> err = interp::apply_selection(cs_, sel);
   // The interpreter applied the same operation to the same stack and reported its errors; a
   // disagreement here is a broken invariant of the seam, reported rather than run.
   if (err || cs_.active_count() != sel.active_count)

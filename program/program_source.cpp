@@ -6,6 +6,7 @@
 #include <type_traits>
 #include <variant>
 
+#include "interp/cs_select.hpp"
 #include "interp/trace.hpp"
 #include "program/machine_data.hpp"
 

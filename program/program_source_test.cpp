@@ -44,6 +44,18 @@ Pulled pull(const std::string& text, const std::string& machine_name = "portal_3
   return p;
 }
 
+// Cycles of `text` on portal_3x at T = 1 ms, run to its end without an error.
+std::uint64_t cycles_of(const std::string& text) {
+  const core::SourceFile file("t.nc", text);
+  const machines::Machine& m = interp::test::machine("portal_3x");
+  interp::Interpreter in(file, m);
+  ipo::ProgramSource src(in, m);
+  const ipo::TimeResult r = ipo::machining_time(ipo::machine_config(m, 0.001), src);
+  REQUIRE(r.status == ipo::Status::finished);
+  REQUIRE(src.error() == nullptr);
+  return r.cycles;
+}
+
 }  // namespace
 
 TEST_CASE("motion, feed, modal transition, contour and slope become the Move's fields") {
@@ -126,44 +138,24 @@ TEST_CASE("a plain #FLUSH between two collinear lines stops the path: twice the 
   // portal_3x, STEP slope: 100 mm at 100 mm/s is 1 + 1/30 + 0.001 s -> 1035 cycles (the test
   // above). Through #FLUSH the path stops at X100 and starts again; without it, or with
   // #FLUSH CONTINUE, the two lines are one 200 mm run (2035 cycles).
-  const auto cycles = [](const std::string& text) {
-    const core::SourceFile file("t.nc", text);
-    const machines::Machine& m = interp::test::machine("portal_3x");
-    interp::Interpreter in(file, m);
-    ipo::ProgramSource src(in, m);
-    const ipo::TimeResult r = ipo::machining_time(ipo::machine_config(m, 0.001), src);
-    REQUIRE(r.status == ipo::Status::finished);
-    REQUIRE(src.error() == nullptr);
-    return r.cycles;
-  };
-  CHECK(cycles("N10 G01 X100 F6000\nN20 X200\nN30 M30\n") == 2035);
-  CHECK(cycles("N10 G01 X100 F6000\nN15 #FLUSH CONTINUE\nN20 X200\nN30 M30\n") == 2035);
-  CHECK(cycles("N10 G01 X100 F6000\nN15 #FLUSH\nN20 X200\nN30 M30\n") == 2 * 1035);
-  CHECK(cycles("N10 G01 X100 F6000\nN15 #FLUSH WAIT\nN20 X200\nN30 M30\n") == 2 * 1035);
+  CHECK(cycles_of("N10 G01 X100 F6000\nN20 X200\nN30 M30\n") == 2035);
+  CHECK(cycles_of("N10 G01 X100 F6000\nN15 #FLUSH CONTINUE\nN20 X200\nN30 M30\n") == 2035);
+  CHECK(cycles_of("N10 G01 X100 F6000\nN15 #FLUSH\nN20 X200\nN30 M30\n") == 2 * 1035);
+  CHECK(cycles_of("N10 G01 X100 F6000\nN15 #FLUSH WAIT\nN20 X200\nN30 M30\n") == 2 * 1035);
 }
 
 TEST_CASE("dynamics weightings lower the block's limits: G131 its acceleration, G128 its v_max") {
   // portal_3x, STEP: 100 mm at 100 mm/s takes 1 + v/A + T with A 3000 mm/s^2 (1035 cycles,
   // above). G131=50 halves A: 1 + 1/15 + 0.001 s; G128=10 caps X at 50 mm/s: 2 + 50/3000 +
   // 0.001 s; G129 weights G00 only, so a G01 block keeps its time.
-  const auto cycles = [](const std::string& text) {
-    const core::SourceFile file("t.nc", text);
-    const machines::Machine& m = interp::test::machine("portal_3x");
-    interp::Interpreter in(file, m);
-    ipo::ProgramSource src(in, m);
-    const ipo::TimeResult r = ipo::machining_time(ipo::machine_config(m, 0.001), src);
-    REQUIRE(r.status == ipo::Status::finished);
-    REQUIRE(src.error() == nullptr);
-    return static_cast<double>(r.cycles);
-  };
-  CHECK(cycles("N10 G131=50 G01 X100 F6000\nN30 M30\n") ==
+  CHECK(cycles_of("N10 G131=50 G01 X100 F6000\nN30 M30\n") ==
         doctest::Approx(1000.0 + 1000.0 / 15.0 + 1.0).epsilon(0.002));
-  CHECK(cycles("N5 G130 X50\nN10 G01 X100 F6000\nN30 M30\n") ==
+  CHECK(cycles_of("N5 G130 X50\nN10 G01 X100 F6000\nN30 M30\n") ==
         doctest::Approx(1000.0 + 1000.0 / 15.0 + 1.0).epsilon(0.002));
-  CHECK(cycles("N10 G128=10 G01 X100 F6000\nN30 M30\n") ==
+  CHECK(cycles_of("N10 G128=10 G01 X100 F6000\nN30 M30\n") ==
         doctest::Approx(2000.0 + 1000.0 / 60.0 + 1.0).epsilon(0.002));
-  CHECK(cycles("N10 G129=10 G01 X100 F6000\nN30 M30\n") == 1035);
-  CHECK(cycles("N5 G130 Y50\nN10 G01 X100 F6000\nN30 M30\n") == 1035);  // Y does not move
+  CHECK(cycles_of("N10 G129=10 G01 X100 F6000\nN30 M30\n") == 1035);
+  CHECK(cycles_of("N5 G130 Y50\nN10 G01 X100 F6000\nN30 M30\n") == 1035);  // Y does not move
 }
 
 TEST_CASE("an unsupported command is NC6001 at its line, never skipped") {
