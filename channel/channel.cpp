@@ -53,7 +53,7 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
       tracking_(sync_, ipo_, axes_, indp_, kin_, after_, error_, sink,
                 config.measured_value_wait_max, config.conveyor_axis) {
   const double t = ipo_.t_cycle();
-  ipo_.set_wait_handler(&wait_relay_);
+  ipo_.standstill().set_wait_handler(&wait_relay_);
   // Conveyor tracking on FCT_DLM channels.
   if (config.conveyor) {
     sync_.emplace(*config.conveyor, config.sync_axes, t);
@@ -158,12 +158,12 @@ Status Channel::step_program() noexcept {
   }
   // A blocked event is dispatched again each cycle; a path holding at a ChannelWait goes on in
   // this cycle once the events up to the wait's tag are done.
-  if (events_.blocked() || ipo_.holding_channel()) {
-    const bool holding = ipo_.holding_channel();
+  if (events_.blocked() || ipo_.standstill().holding_channel()) {
+    const bool holding = ipo_.standstill().holding_channel();
     const bool done = run_events(holding ? events_.wait_tag() : ipo_.cycle().event_tag);
     if (error_) return Status::error;
     if (done && holding && indp_.syn_done(events_.wait_interruptible(), axes_.size()))
-      ipo_.release_wait();
+      ipo_.standstill().release_wait();
   }
   tracking_.static_override();  // a synchronised static unit's path follows the belt
   Status s = ipo_.step();
@@ -185,10 +185,11 @@ Status Channel::step_program() noexcept {
   if (play_.player() != nullptr && c.held && !play_.player()->more_to_come() &&
       !tracking_.hold_waits())
     return stop(kHeldForeverId,
-                ipo_.feed_hold() ? "the path stands by feed hold and no later scenario event "
-                                   "releases it: the run would never end"
-                                 : "the path stands at override 0 and no later scenario event "
-                                   "raises it: the run would never end",
+                ipo_.path_override().feed_hold()
+                    ? "the path stands by feed hold and no later scenario event "
+                      "releases it: the run would never end"
+                    : "the path stands at override 0 and no later scenario event "
+                      "raises it: the run would never end",
                 c, -1);
   // Events riding on the blocks started in this cycle.
   if (!events_.blocked()) run_events(c.event_tag);
@@ -214,7 +215,7 @@ Status Channel::step_program() noexcept {
   // The conveyor workspace, and the hold against the conveying direction.
   if (sync_ && !tracking_.check_workspace(c)) return Status::error;
   if (sync_ && !tracking_.workspace_cap(c)) return Status::error;
-  if (!exact_stop_.active() && ipo_.holding_exact_stop())
+  if (!exact_stop_.active() && ipo_.standstill().holding_exact_stop())
     exact_stop_.begin(c, std::span(axes_.setpoints().data(), axes_.size()), kin_.transformed());
   if (!indp_.step(c, axes_, shown_, error_)) return Status::error;
   for (std::size_t i = 0; i < axes_.size(); ++i) {
@@ -224,7 +225,7 @@ Status Channel::step_program() noexcept {
   if (exact_stop_.active()) {
     bool release = false;
     if (!exact_stop_.check(c, axes_, release, error_)) return Status::error;
-    if (release) ipo_.release_exact_stop();
+    if (release) ipo_.standstill().release_exact_stop();
   }
   if (sink_) sink_->on_cycle(cycle());  // with the INDP axes' setpoints
   return Status::running;

@@ -55,8 +55,8 @@ bool Channel::sync_error_begin() noexcept {
   error_.reset();
   after_.begin();
   after_path_ended_ = false;
-  ipo_.set_feed_hold(true);  // the path velocity in PCS1 goes to 0 (l.494)
-  ipo_.set_velocity_cap(WorkspaceHold::kNone);
+  ipo_.path_override().set_feed_hold(true);  // the path velocity in PCS1 goes to 0 (l.494)
+  ipo_.path_override().set_velocity_cap(WorkspaceHold::kNone);
   return true;
 }
 
