@@ -317,8 +317,10 @@ bool HashCommands::hash_cs(const ast::Block& b, const ast::HashCommand& h) {
     }
     if (!g1.empty()) values = &g1;
   }
+  ip_.offsets.follow_cs_base();
   SelectCs sel;
   sel.id = id;
+  sel.base = ip_.offsets.cs_base();
   if (values != nullptr) {
     std::array<double, 6> vals{};
     for (std::size_t k = 0; k < values->size() && k < 6; ++k) {

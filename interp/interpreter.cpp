@@ -142,6 +142,8 @@ std::uint64_t Interpreter::Impl::state_fingerprint(std::size_t& cost) const {
   h = mix(h, bits(offsets.vector_vel));
   for (const auto& [code, name] : subs.file_names)
     h = mix(h, code);
+  h = mix(h,
+          (std::uint64_t{subs.m6_file.has_value()} << 1) | std::uint64_t{subs.d_file.has_value()});
   cost += flow.frames().size() + calls.size() + kMaxAxes;
   return h;
 }
@@ -260,8 +262,8 @@ bool Interpreter::Impl::step() {
   if (subs.cycle_call) {  // G80-G89 / G800-G839: the last action of the block (P-CHAN-00160)
     if (run->call) {
       return fail(run->call->loc, "21542",
-                  "a subroutine call in a block that already calls G" +
-                      std::to_string(subs.cycle_call->g_code) + "'s subroutine");
+                  "a subroutine call in a block that already calls " +
+                      Subroutines::call_name(*subs.cycle_call) + "'s subroutine");
     }
     return subs.run_cycle_call();
   }

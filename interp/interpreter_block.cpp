@@ -534,18 +534,27 @@ bool Interpreter::Impl::read_addresses(const ast::Block& b, BlockWords& bw) {
       case ast::WordKind::t:
         bw.tech.push_back(Tech{TechKind::t, *v, {}});
         break;
-      case ast::WordKind::d:
+      case ast::WordKind::d: {
+        bool failed = false;  // P-CHAN-00429: a D word may also call a subroutine
+        subs.read_word_call("D", w.loc, failed);
+        if (failed) return false;
         bw.tech.push_back(Tech{TechKind::d, *v, {}});
         bw.d_word = *v;  // the tool for TRC (interpreter_trc.cpp)
         bw.d_loc = w.loc;
         break;
+      }
       case ast::WordKind::h:
       case ast::WordKind::m: {
         std::optional<double> extra;
         if (!additional_value(b, w, extra)) return false;
         const int code = static_cast<int>(std::lround(*v));
+        bool failed = false;
         if (w.kind == ast::WordKind::h) {
           bw.tech.push_back(Tech{TechKind::h, *v, extra});
+        } else if (code == 6 && *v == 6.0 && !extra && subs.read_word_call("M6", w.loc, failed)) {
+          // P-CHAN-00118: M6 calls its subroutine and is no M function (no technology process)
+        } else if (failed) {
+          return false;
         } else if (code == 0 || code == 1 || code == 2 || code == 30 || code == 17 || code == 29) {
           bw.program_m = code;  // an additional value goes to the PLC with it (not modelled)
         } else {

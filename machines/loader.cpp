@@ -503,6 +503,8 @@ ChannelParams build_channel(const ListValues& v) {
     const std::string key = "g800_prog_file[" + std::to_string(i) + "]";
     if (v.given(key)) ch.implicit_call_files[800 + i] = v.text(key);
   }
+  if (v.given("m6_prog_file")) ch.m6_prog_file = v.text("m6_prog_file");          // P-CHAN-00118
+  if (v.given("d_prog_file")) ch.d_prog_file = v.text("d_prog_file");             // P-CHAN-00429
   ch.create_cycle_param_on_read = v.number("create_cycle_param_on_read") != 0.0;  // P-CHAN-00463
   ch.vector_velocity = v.internal("vector.velocity");                             // P-CHAN-00090
   ch.feedrate_factor = v.number("prog_start.feedrate_factor");                    // P-CHAN-00108
