@@ -1,19 +1,4 @@
-// program/program_kinematics: #KIN ID / #TRAFO ON / OFF at the adapter (docs/ipo.md "Kinematics in
-// run and time").
-//
-// Under #TRAFO ON the interpreter gives X, Y, Z as the Cartesian TCP (re-based at the switch by
-// the kinematic's forward / inverse transform); the Moves carry Move::transformed and the
-// planner limits them by the joints (planner::Preparer::set_joints). Here:
-// - a switch of #TRAFO (ON after OFF or OFF after ON) hands out a 0 s Dwell first: the path
-//   stops at the block end before the switch, the rest of that cycle is dropped, and the next
-//   Move starts from the transformed position (decision: the kernel's axes and TCP views cannot
-//   both be interpolated across one cycle; 0 s costs no time beyond the stop itself);
-// - only the machine's first kinematic (trafo[0]) is wired into the channel: #TRAFO ON with
-//   another #KIN ID is NC6001 `not supported`;
-// - a transformed Move is sampled along its path (the planner's spacing, planner::kJointSpacing)
-//   through the inverse transform: a point outside the workspace or beyond a drive limit is the
-//   kinematic's error (NC3201 / NC3202, machines/delta_kinematics.hpp) at the block's line, so
-//   the program stops at the last good block with a positioned diagnostic.
+#include "program/trafo_path.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -26,34 +11,32 @@
 
 #include "planner/blend.hpp"
 #include "planner/joint_limits.hpp"
-#include "planner/path.hpp"
-#include "program/program_source.hpp"
-#include "tracking/trafo_sync.hpp"
 
 namespace ncsim::ipo {
 
-void ProgramSource::fail_with(std::uint32_t line, const std::string& id, const std::string& what) {
-  fail_in(file_, line, id, what);
-}
-
-bool ProgramSource::kinematics(const interp::Kinematics& k, std::uint32_t line, Item& out) {
+bool TrafoPath::select(const interp::Kinematics& k, std::uint32_t line, Item& out) {
   if (k.trafo_on == trafo_on_) return false;  // #KIN ID alone, or no change
   if (k.trafo_on) {
     if (!trafo_) trafo_ = machine_trafo(machine_, machine_config(machine_, t_cycle_));
     if (!trafo_)
-      fail(line, "#TRAFO ON: machine '" + machine_.name + "' has no kinematic ncsim can build");
+      errors_.not_supported(
+          line, "#TRAFO ON: machine '" + machine_.name + "' has no kinematic ncsim can build");
     if (k.kin_id && *k.kin_id != trafo_->kin_id)
-      fail(line, "#TRAFO ON with kinematic id " + std::to_string(*k.kin_id) +
-                     " (the channel drives the machine's first kinematic, id " +
-                     std::to_string(trafo_->kin_id) + ")");
+      errors_.not_supported(line, "#TRAFO ON with kinematic id " + std::to_string(*k.kin_id) +
+                                      " (the channel drives the machine's first kinematic, id " +
+                                      std::to_string(trafo_->kin_id) + ")");
   }
   trafo_on_ = k.trafo_on;
   out = Dwell{0.0, line};  // the path stands at the switch
   return true;
 }
 
-void ProgramSource::check_workspace(const planner::Move& move, std::uint32_t line) {
-  if (!trafo_) fail(line, "motion under #TRAFO ON without a kinematic");
+void TrafoPath::on_command(const interp::CommandBody& body) noexcept {
+  if (const auto* in = std::get_if<interp::SyncIn>(&body)) belt_conv_vel_ = in->conv_vel;
+}
+
+void TrafoPath::check_workspace(const planner::Move& move, std::uint32_t line) const {
+  if (!trafo_) errors_.not_supported(line, "motion under #TRAFO ON without a kinematic");
   const planner::Segment seg = planner::Segment::from_move(move);
   const double length = seg.length();
   // Clamped as a double before the conversion: a huge length would overflow the int.
@@ -73,10 +56,10 @@ void ProgramSource::check_workspace(const planner::Move& move, std::uint32_t lin
     if (r.ok()) continue;
     char where[160];
     std::snprintf(where, sizeof where, "TCP X%.6g Y%.6g Z%.6g", p[0], p[1], p[2]);
-    fail_with(line, r.error->id,
-              std::string(k == n ? "target " : "path point ") + where +
-                  " under #TRAFO ON (kinematic " + std::to_string(trafo_->kin_id) +
-                  "): " + r.error->message);
+    errors_.raise(line, r.error->id,
+                  std::string(k == n ? "target " : "path point ") + where +
+                      " under #TRAFO ON (kinematic " + std::to_string(trafo_->kin_id) +
+                      "): " + r.error->message);
   }
 }
 
@@ -86,7 +69,7 @@ constexpr double kBeltMargin = 1.1;  // 50653 lets the belt run 10 % above CONV_
 
 }  // namespace
 
-bool ProgramSource::belt_carry(BeltCarry& carry) const {
+bool TrafoPath::belt_carry(BeltCarry& carry) const {
   if (!trafo_ || !machine_.channel.conveyor || !(belt_conv_vel_ > 0.0)) return false;
   const machines::ConveyorSyncChannel& conv = *machine_.channel.conveyor;
   const Eigen::Vector3d dir = conv.t0().rotation.col(0);  // PCS0 +X in MCS
@@ -102,9 +85,9 @@ bool ProgramSource::belt_carry(BeltCarry& carry) const {
   return true;
 }
 
-BeltShare ProgramSource::belt_share_at(const planner::Segment& path, double feed,
-                                       const planner::Move& at,
-                                       std::span<const planner::AxisLimits> joints) {
+BeltShare TrafoPath::belt_share_at(const planner::Segment& path, double feed,
+                                   const planner::Move& at,
+                                   std::span<const planner::AxisLimits> joints) const {
   BeltCarry carry;
   belt_carry(carry);
   const std::variant<BeltShare, BeltOverload> share =
@@ -120,9 +103,9 @@ BeltShare ProgramSource::belt_share_at(const planner::Segment& path, double feed
                   "the belt at 1.1 x CONV_VEL (%.6g mm/s) %s %.6g of joint %s's %s at TCP X%.6g "
                   "Y%.6g Z%.6g (PCS1 moved %.6g mm along the belt) under #TRAFO ON",
                   carry.v_belt, over->quantity == 'v' ? "alone needs" : "takes", over->needed,
-                  machine_.axes[axes_[over->joint]].name.c_str(), limit, over->tcp[0], over->tcp[1],
-                  over->tcp[2], over->shift);
-    fail_in(at.file, at.line, "NC6211", text);
+                  machine_.axes[layout_.axes[over->joint]].name.c_str(), limit, over->tcp[0],
+                  over->tcp[1], over->tcp[2], over->shift);
+    errors_.raise_in(at.file, at.line, "NC6211", text);
   }
   return std::get<BeltShare>(share);
 }
@@ -135,10 +118,10 @@ bool any_taken(const planner::AxisVec& x) {
 
 }  // namespace
 
-void ProgramSource::reserve_belt_share(planner::Move& move) {
+void TrafoPath::reserve_belt_share(planner::Move& move) const {
   BeltCarry carry;
   if (!belt_carry(carry)) return;
-  // --- trafo-pcs1: G00 runs each joint at its rapid rule (000 l.360: MIN(rapid, reference,
+  // G00 runs each joint at its rapid rule (000 l.360: MIN(rapid, reference,
   // maximum), the G00 slope; planner::path_limits): its share is taken of those limits, with
   // no programmed feed to cap (the cap goes into Move::feed, which the planner's joint limits
   // apply to a G00 in PCS1: planner/joint_limits.cpp).
@@ -147,7 +130,7 @@ void ProgramSource::reserve_belt_share(planner::Move& move) {
     for (const planner::AxisLimits& j : trafo_->limits.joints)
       rapid.push_back(planner::joint_rapid_limits(j));
   }
-  // --- trafo-pcs1: G93 sets the path velocity by the block time (length / time, the
+  // G93 sets the path velocity by the block time (length / time, the
   // planner's programmed velocity, planner::path_limits): a lower cap makes the block longer.
   const planner::Segment path = planner::Segment::from_move(move);
   double feed = move.rapid ? std::numeric_limits<double>::infinity() : move.feed;
@@ -166,24 +149,16 @@ void ProgramSource::reserve_belt_share(planner::Move& move) {
     move.belt_joints = std::make_shared<const planner::JointShare>(s.joints);
 }
 
-// --- trafo-pcs1: the tolerance ball between two PCS1 blocks (docs/conveyor.md "Machining in
-// PCS1", "The ball").
-bool ProgramSource::holds_for_ball(const planner::Move& move, bool pcs1) const {
+// The tolerance ball between two PCS1 blocks (docs/conveyor.md "Machining in PCS1", "The
+// ball").
+bool TrafoPath::holds_for_ball(const planner::Move& move, bool pcs1) const {
   BeltCarry carry;
   return move.transformed && pcs1 && planner::contoured(move) && !move.rapid && !move.block_time &&
          !move.exact_stop && move.transition != planner::Transition::stop_at_end &&
          belt_carry(carry);
 }
 
-void ProgramSource::ball_release(const planner::Move* next) {
-  if (!ball_held_) return;
-  planner::Move in = std::move(*ball_held_);
-  ball_held_.reset();
-  if (next != nullptr) reserve_ball_share(in, *next);
-  emit_path(std::move(in));
-}
-
-void ProgramSource::reserve_ball_share(planner::Move& in, const planner::Move& out) {
+void TrafoPath::reserve_ball_share(planner::Move& in, const planner::Move& out) const {
   if (!out.transformed || !trafo_) return;
   const planner::Segment in_path = planner::Segment::from_move(in);
   const planner::Segment out_path = planner::Segment::from_move(out);
