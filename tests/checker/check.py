@@ -256,7 +256,9 @@ class Checker:
                                       "dv_allow": float(dv_allow[i]), "da_allow": float(da_allow[i]),
                                       "rule": grp[0].rule, "lines": (grp[0].a.line, grp[-1].b.line)})
             eff = dv_allow.copy()
-            if est is not None:
+            if est is not None and len(moving) == 1:
+                # one step: it is at most what was measured (the sum of several steps at
+                # different instants of the cycle does not bound their effects one by one)
                 eff = np.minimum(dv_allow, np.abs(est[0]) + est[1])
             dv_eff[kk] = (eff, da_allow)
 
