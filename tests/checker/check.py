@@ -134,11 +134,12 @@ class Checker:
         # 000 l.108: v_jump[i] = C0[i] min(A+[i], -A-[i]) T, with the limits of both blocks.
         formula = self.c0 * np.minimum.reduce([up_a, down_a, up_b, down_b]) * T
         geometric = v_up * dt  # the step a link at path velocity <= v_up makes at this knee
+        g00 = "+G00" if (a.rapid or b.rapid) else ""
         if stop:
             return Boundary(k, a, b, True, False, zero, zero, "stop")
         blended = a.contour and turn <= BLEND_MAX_TURN and not np.all(geometric <= formula)
         if blended:  # the line changes where the ball ends: a C2 joint (docs/planner.md)
-            return Boundary(k, a, b, False, True, zero, zero, "ball")
+            return Boundary(k, a, b, False, True, zero, zero, "ball" + g00)
         dv = np.minimum(formula, geometric)
         rule = "velojump"
         if a.transvelmin is not None and not a.contour:  # isg-language.md §5.6: priority
@@ -154,7 +155,7 @@ class Checker:
         else:  # P-CHAN-00009 = 0: no reduction for the curvature jump, only the a limits
             da = np.maximum(up_a, down_a) + np.maximum(up_b, down_b)
             rule += "+c1-unbounded"
-        return Boundary(k, a, b, False, False, dv, da, rule)
+        return Boundary(k, a, b, False, False, dv, da, rule + g00)
 
     # -- the checks -----------------------------------------------------------------------------
     def check(self, lines: np.ndarray, pos: np.ndarray, start=None):
@@ -195,7 +196,10 @@ class Checker:
                 groups.setdefault(kk, []).append(
                     self._boundary(kk, self.blocks[i], self.blocks[i + 1], v_up))
         findings, steps = [], []
-        dv_eff = {}
+        dv_eff, rules = {}, {}
+
+        def rules_near(ks):
+            return "|".join(sorted({rules[q] for q in ks if q in rules and np.any(dv_eff[q][0] + dv_eff[q][1] > 0)}))
         line_of = lines
         names = [ax.name for ax in self.ax]
 
@@ -261,6 +265,7 @@ class Checker:
                 # different instants of the cycle does not bound their effects one by one)
                 eff = np.minimum(dv_allow, np.abs(est[0]) + est[1])
             dv_eff[kk] = (eff, da_allow)
+            rules[kk] = "|".join(sorted({b.rule for b in moving})) or "stop"
 
         # per-cycle allowances from the steps (README "Steps")
         acc_allow = np.zeros((N + 2, n))
@@ -301,7 +306,7 @@ class Checker:
             for k0, i in zip(*np.nonzero(bad)):
                 note = "(A+)" if speeding[k0, i] else "(A-)" if slowing[k0, i] else ""
                 if allow[k0, i] > 0:
-                    note += f" (+{allow[k0, i]:.6g} for steps)"
+                    note += f" (+{allow[k0, i]:.6g} for steps at {rules_near((k0 + 1, k0 + 2))})"
                 add("acceleration", i, k0 + 1, abs(a[k0, i]), alim[k0, i] + allow[k0, i], note.strip())
 
         # jerk: j_k on intervals k..k+2, only where every block there is jerk-limited
@@ -314,7 +319,8 @@ class Checker:
             allow = jerk_allow[1:N - 1]
             bad = (~s3[:, None]) & (np.abs(j) > jlim * (1 + REL) + allow + e_j)
             for k0, i in zip(*np.nonzero(bad)):
-                note = f"(+{allow[k0, i]:.6g} for steps)" if allow[k0, i] > 0 else ""
+                note = (f"(+{allow[k0, i]:.6g} for steps at {rules_near((k0 + 1, k0 + 2, k0 + 3))})"
+                        if allow[k0, i] > 0 else "")
                 add("jerk", i, k0 + 1, abs(j[k0, i]), jlim[k0, i] + allow[k0, i], note)
         stats = {"cycles": int(N), "boundaries": int(sum(len(g) for g in groups.values())),
                  "jerk_cycles": int((~(has_step[:-2] | has_step[1:-1] | has_step[2:])).sum()) if N > 2 else 0}

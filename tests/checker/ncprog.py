@@ -97,6 +97,7 @@ def read(path: str, start_slope: int = 0) -> list[Block]:
         lines = f.read().splitlines()
     for number, raw in enumerate(lines, start=1):
         text = re.sub(r"\(.*?\)", "", raw.split(";", 1)[0]).strip().upper()
+        text = re.sub(r"^N\d+\s*", "", text)
         if not text or text.startswith("%"):
             continue
         if text.startswith("#"):

@@ -121,7 +121,7 @@ def parse_seeds(text):
 
 
 def read_expect(path):
-    """seed -> note; lines `SEED  issue-36 item N: text`, `#` comments."""
+    """key -> expected tags; lines `KEY TAG,TAG,...  # issue 36 item N: ...`."""
     out = {}
     if not path:
         return out
@@ -129,9 +129,40 @@ def read_expect(path):
         for raw in f:
             line = raw.split("#", 1)[0].strip()
             if line:
-                key, _, note = line.partition(" ")
-                out[key] = note.strip()
+                key, _, rest = line.partition(" ")
+                out[key] = sorted(t for t in rest.strip().split(",") if t)
     return out
+
+
+def tags(res):
+    """The kinds of finding of one result, e.g. `c1-step@transvelmin`, `g00-joint-bound`,
+    `audit-only:jerk(finite differences)`: what --expect compares (README "Known findings")."""
+    out = set()
+    for v in res["violations"]:
+        note = v["note"]
+        if v["kind"] in ("velojump", "c1-step"):
+            rule = note.split(" at ", 1)[1].split(",")[0] if " at " in note else ""
+            out.add(f"{v['kind']}@{rule}")
+        elif "for steps at " in note:
+            out.add(f"{v['kind']}@steps:{note.split('for steps at ', 1)[1].rstrip(')')}")
+        else:
+            out.add(v["kind"])
+    for d in res["disagreements"]:
+        why = d["why"]
+        if why.startswith("checker violation"):
+            out.add("not-in-audit:" + d["kind"])
+        elif why.startswith("audit violation"):
+            method = why.split("(")[1].split(")")[0].replace(" ", "-")
+            out.add(f"audit-only:{d['kind']}({method})")
+        elif "G00 block" in why:
+            out.add("g00-joint-bound")
+        elif why.startswith("step allowed"):
+            out.add(f"unlisted-step:{d['kind']}@{d['rule']}")
+        elif why.startswith("the run printed no audit"):
+            out.add("no-audit")
+        else:
+            out.add(why.split(" (")[0].replace(" ", "-"))
+    return sorted(out)
 
 
 def describe(res):
@@ -158,6 +189,7 @@ def main(argv=None):
     ap.add_argument("--keep", help="copy failing programs to this folder")
     ap.add_argument("--json", help="write every result to this file")
     ap.add_argument("--quiet", action="store_true", help="summary only")
+    ap.add_argument("--write-expect", help="write the current tags of every failing key here")
     args = ap.parse_args(argv)
     t0 = time.monotonic()
     if args.known:
@@ -178,20 +210,20 @@ def main(argv=None):
         for d in r["disagreements"]:
             dis[d["why"].split(" (")[0]] += 1
         bad = bool(r["violations"] or r["disagreements"])
+        r["tags"] = tags(r)
         if bad:
             failing.append(key(r))
         if not args.quiet and (bad or r["error"]):
-            note = f"  [expected: {expect[key(r)]}]" if key(r) in expect else ""
+            note = "  [expected]" if expect.get(key(r)) == r["tags"] else ""
             print(f"{r['name']}: {len(r['violations'])} violations, "
                   f"{len(r['disagreements'])} disagreements, {r['cycles']} cycles, "
                   f"audit {r['audit_violations']} violations ({r['audit_contour']} contour), "
                   f"exit {r['rc']}{note}")
+            print("  tags: " + ",".join(r["tags"]))
             for line in describe(r)[:40]:
                 print(line)
-        if bad and expect and key(r) not in expect:
-            unexpected.append(key(r))
-        if not bad and key(r) in expect:
-            fixed.append(key(r))
+        if args.expect and r["tags"] != expect.get(key(r), []):
+            (unexpected if bad else fixed).append(key(r))
     wall = time.monotonic() - t0
     print()
     print(f"{'programs':<34}{len(results):>10}")
@@ -205,17 +237,24 @@ def main(argv=None):
     print(f"{'audit violations (contour, apart)':<34}{sum(r['audit_contour'] for r in results):>10}")
     print(f"{'audit steps listed':<34}{sum(r['audit_steps'] for r in results):>10}")
     print(f"{'wall time [s]':<34}{wall:>10.1f}")
+    if args.write_expect:
+        with open(args.write_expect, "w") as f:
+            for r in results:
+                if r["tags"]:
+                    f.write(f"{key(r)} {','.join(r['tags'])}\n")
     if args.json:
         with open(args.json, "w") as f:
             json.dump(results, f, indent=1)
-    if expect:
+    if args.expect:
         in_set = {key(r) for r in results}
         print(f"expected failures in this set: {len([k for k in expect if k in in_set])}, "
               f"failing now: {len(failing)}")
+        by_key = {key(r): r for r in results}
         for k in unexpected:
-            print(f"NEW FAILURE (not in {args.expect}): {k}")
+            print(f"CHANGED: {k}: expected [{','.join(expect.get(k, []))}], "
+                  f"now [{','.join(by_key[k]['tags'])}] (update {args.expect} only for a known cause)")
         for k in fixed:
-            print(f"NOW PASSING (remove from {args.expect}): {k}: {expect[k]}")
+            print(f"NOW PASSING: {k}: expected [{','.join(expect[k])}]: remove it from {args.expect}")
         return 1 if (unexpected or fixed) else 0
     return 1 if failing else 0
 
