@@ -23,3 +23,6 @@ add_test(NAME checker_known_strict
          COMMAND ${NCSIM_CHECKER_PYTHON} ${_checker}/run_set.py --ncsim $<TARGET_FILE:ncsim>
                  --known --jobs 2 --quiet)
 set_tests_properties(checker_known_strict PROPERTIES TIMEOUT 300 LABELS checker WILL_FAIL TRUE)
+# The checker itself on synthetic trajectories with known answers (no ncsim).
+add_test(NAME checker_selftest COMMAND ${NCSIM_CHECKER_PYTHON} ${_checker}/selftest.py)
+set_tests_properties(checker_selftest PROPERTIES LABELS checker)
