@@ -1,8 +1,8 @@
 #pragma once
 // interp/interpreter_impl: the decoder's private state: the block stream, the order of a
 // block's parts, modal state, position, variables and the call stack, shared by the parts it
-// owns (ControlFlow, Subroutines, Offsets, HashCommands, AxisCommands, Seam: each in its own
-// files) and by interpreter_*.cpp (words, motion, frames, TRC). Not part of the public
+// owns (ControlFlow, Subroutines, Offsets, HashCommands, AxisCommands, Seam, Frames: each in
+// its own files) and by interpreter_*.cpp (words, motion, TRC). Not part of the public
 // interface.
 
 #include <deque>
@@ -17,13 +17,13 @@
 #include "grammar/keywords.hpp"
 #include "interp/axis_commands.hpp"
 #include "interp/control_flow.hpp"
+#include "interp/frames.hpp"
 #include "interp/hash_commands.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/offsets.hpp"
 #include "interp/seam.hpp"
 #include "interp/subroutines.hpp"
 #include "interp/trc.hpp"
-#include "machines/kinematics.hpp"
 #include "machines/param_table.hpp"
 
 namespace ncsim::interp {
@@ -179,14 +179,6 @@ struct Interpreter::Impl {
   std::optional<std::uint8_t> axis_index(std::string_view name) const;
   ModalSnapshot snapshot() const;
 
-  // frames (interpreter_frames.cpp)
-  CoordFrame frame() const;  // the frame `position` is in
-  Eigen::Vector3d xyz_of(const AxisValues& values) const;
-  void set_xyz(AxisValues& values, const Eigen::Vector3d& p) const;
-  void rebase_cs(const machines::Frame& before);   // after a #CS ON/OFF changed the chain
-  bool rebase_trafo(bool on, core::SourceLoc at);  // before modal.kinematics_on changes
-  AxisValues sync_rebased(bool in) const;          // position after #SYNC IN/OUT, travel 0
-
   // run-time state the seam (seam.hpp) keeps for the whole decoder
   bool resumed = false;       // the barrier before the block at pc was answered
   AxisMask unknown_axes = 0;  // axes whose actual position only the run time knows
@@ -249,7 +241,6 @@ struct Interpreter::Impl {
   std::optional<double> feed;     // [mm/s]
   bool motion_since_sync = true;  // first motion after #SYNC IN not yet seen
   std::optional<int> kin_id;
-  std::unique_ptr<machines::Kinematics> kinematic;  // built at #TRAFO ON for kin_id
   machines::CsStack cs;
   SplineType spline_type = SplineType::akima;
   struct OpenSpline {
@@ -258,8 +249,9 @@ struct Interpreter::Impl {
     std::uint32_t distinct = 1;  // of them, those unlike the one before (the planner drops
                                  // a repeated vertex: planner/spline.cpp kSamePoint)
   };
-  std::optional<OpenSpline> spline;                  // between #SPLINE ON and OFF
-  std::array<std::optional<std::uint8_t>, 3> xyz{};  // machine indices of X, Y, Z
+  std::optional<OpenSpline> spline;        // between #SPLINE ON and OFF
+  Frames::Xyz xyz{};                       // machine indices of X, Y, Z
+  Frames frames{machine, cs, modal, xyz};  // the frame of `position`, re-basing (frames.hpp)
   std::string scratch_text;
 };
 
