@@ -131,7 +131,7 @@ std::uint64_t Interpreter::Impl::state_fingerprint(std::size_t& cost) const {
                  (static_cast<std::uint64_t>(m.trc.corner) << 8) |
                  static_cast<std::uint64_t>(m.trc.approach));
   h = mix(h, bits(m.trc.radius));
-  h = mix(h, bits(d_number));
+  h = mix(h, bits(trc_words.d_number));
   h = mix(h, files.size());
   // offsets, scaling and path limits (offsets.cpp)
   h = mix(h, (std::uint64_t{offsets.zero_group} << 8) | (std::uint64_t{offsets.mcs_on} << 2) |

@@ -1,21 +1,21 @@
 #pragma once
 // interp/interpreter_impl: the decoder's private state: the block stream, the order of a
 // block's parts, modal state, position, variables and the call stack, shared by the parts it
-// owns (ControlFlow, Subroutines, Offsets, HashCommands, AxisCommands, Seam, Frames: each in
-// its own files) and by interpreter_*.cpp (words, motion, TRC). Not part of the public
-// interface.
+// owns (ControlFlow, Subroutines, Offsets, HashCommands, AxisCommands, Seam, Frames,
+// WordReader, TrcWords: each in its own files) and by interpreter_*.cpp (G04, G74,
+// G92, motion, program ends). Not part of the public interface.
 
 #include <deque>
 #include <filesystem>
 #include <initializer_list>
 #include <map>
-#include <set>
 #include <string_view>
 
 #include "core/limits.hpp"
 #include "core/number_text.hpp"
 #include "grammar/keywords.hpp"
 #include "interp/axis_commands.hpp"
+#include "interp/block_words.hpp"
 #include "interp/control_flow.hpp"
 #include "interp/frames.hpp"
 #include "interp/hash_commands.hpp"
@@ -24,6 +24,7 @@
 #include "interp/seam.hpp"
 #include "interp/subroutines.hpp"
 #include "interp/trc.hpp"
+#include "interp/trc_words.hpp"
 #include "machines/param_table.hpp"
 
 namespace ncsim::interp {
@@ -84,69 +85,15 @@ struct Interpreter::Impl {
   std::uint64_t state_fingerprint(std::size_t& cost) const;
   const ast::Block* fetch(Pc pc);
 
-  std::set<std::uint32_t> unmodelled_g;  // dynamics weightings warned about (NC4313)
-
   bool fail(core::SourceLoc loc, std::string id, std::string message);
   bool fail_eval();
   void warn(core::SourceLoc loc, std::string id, std::string message);
   std::optional<double> eval(const ast::Block& b, ast::NodeIndex n);
 
   // blocks (interpreter_block.cpp)
-  /// What one block's G codes and addresses say (run_words reads them, then acts).
-  struct BlockWords {
-    std::optional<MotionKind> motion_word;  ///< G00..G03 in this block
-    bool g04 = false, g74 = false, g92 = false, g60 = false, g61 = false, g09 = false;
-    bool weights_axes = false;  ///< G130/G132/G230/G333/G338: the axis words are weights
-    double unit = 1.0;          ///< [mm per program unit] (G70: 25.4)
-    std::array<std::optional<double>, 3> ijk;  ///< [mm]
-    std::optional<double> radius, bare, end_feed, block_time;
-    std::vector<Tech> tech;
-    std::optional<int> program_m;                             ///< M00/M01/M02/M30/M17/M29
-    std::vector<std::pair<std::uint8_t, double>> axis_words;  ///< machine index, value
-    std::optional<TrcSide> trc_side;                          ///< G40/G41/G42 in this block
-    core::SourceLoc trc_loc;                                  ///< where that G code stands
-    std::optional<double> d_word;                             ///< D in this block
-    core::SourceLoc d_loc;
-    struct Weighting {
-      std::uint32_t code = 0;       ///< G127 .. G233 (interp/weights.hpp)
-      std::optional<double> group;  ///< the group form's value [%]
-      core::SourceLoc loc;
-    };
-    std::vector<Weighting> weightings;  ///< applied after the addresses (apply_weightings)
-    void clear() {
-      motion_word.reset();
-      g04 = g74 = g92 = g60 = g61 = g09 = weights_axes = false;
-      unit = 1.0;
-      ijk = {};
-      radius.reset();
-      bare.reset();
-      end_feed.reset();
-      block_time.reset();
-      tech.clear();
-      program_m.reset();
-      axis_words.clear();
-      trc_side.reset();
-      d_word.reset();
-      weightings.clear();
-    }
-  };
   BlockWords block_words;               // run_words' scratch (one block at a time)
   bool run_words(const ast::Block& b);  // the order of a block's parts; calls the pieces below
   bool run_assignments(const ast::Block& b);
-  void apply_weightings(const BlockWords& bw);  // G127..G233 into modal.weights
-  bool read_g_codes(const ast::Block& b, BlockWords& bw);
-  bool read_weighting(const ast::Block& b, const ast::Word& w, BlockWords& bw);  // G127..G339
-  bool read_addresses(const ast::Block& b, BlockWords& bw);
-  /// The additional value of M/H word `w` (`M200=1200`), nullopt if none; NC4033 if it is not
-  /// a whole number or its function takes none.
-  bool additional_value(const ast::Block& b, const ast::Word& w, std::optional<double>& out);
-  // tool radius compensation (interpreter_trc.cpp, docs/trc.md)
-  bool trc_g_code(const ast::Word& w, BlockWords& bw);      // G25/G26/G40/G41/G42/G138/G139
-  bool plane_change_allowed(core::SourceLoc at, Plane to);  // 20133 while TRC is active
-  bool update_trc(const BlockWords& bw);                    // D and G40/G41/G42 of the block
-  std::optional<double> tool_radius(core::SourceLoc at);    // of the D in force
-  std::optional<double> d_number;                           // the D in force (none: D0)
-  core::SourceLoc d_loc;                                    // where it was programmed
   trc::Compensator trc_filter;  // between pending and the consumer (Interpreter::next)
   std::deque<Command> trc_out;  // commands the filter released
   bool run_dwell(const ast::Block& b, const BlockWords& bw);     // G04
@@ -209,6 +156,8 @@ struct Interpreter::Impl {
   HashCommands hash{*this};           // # commands (hash_commands.hpp)
   AxisCommands axis_commands{*this};  // INDP, MC_* (axis_commands.hpp)
   Seam seam{*this};                   // barriers and the run time's answers (seam.hpp)
+  WordReader word_reader{*this};      // a block's G codes and addresses (block_words.hpp)
+  TrcWords trc_words{*this};          // G40/G41/G42, D: the TRC state (trc_words.hpp)
   std::deque<Command> pending;
   std::uint64_t blocks_without_motion = 0;
   // Repeat detection (Brent's cycle finding over decoder states, docs/interp.md "Endless
