@@ -2,7 +2,7 @@
 // interp/interpreter_impl: the decoder's private state: the block stream, the order of a
 // block's parts, modal state, position, variables and the call stack, shared by the parts it
 // owns (ControlFlow, Subroutines, Offsets, HashCommands, AxisCommands, Seam, Frames,
-// WordReader, TrcWords: each in its own files) and by interpreter_*.cpp (G04, G74,
+// WordReader, TrcWords, RepeatWatch: each in its own files) and by interpreter_*.cpp (G04, G74,
 // G92, motion, program ends). Not part of the public interface.
 
 #include <deque>
@@ -21,6 +21,7 @@
 #include "interp/hash_commands.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/offsets.hpp"
+#include "interp/repeat_watch.hpp"
 #include "interp/seam.hpp"
 #include "interp/subroutines.hpp"
 #include "interp/trc.hpp"
@@ -81,8 +82,6 @@ struct Interpreter::Impl {
 
   // stream (interpreter.cpp)
   bool step();  // decodes one block; false when the stream ended
-  bool watch_for_repeat(std::uint32_t block_line);
-  std::uint64_t state_fingerprint(std::size_t& cost) const;
   const ast::Block* fetch(Pc pc);
 
   bool fail(core::SourceLoc loc, std::string id, std::string message);
@@ -160,19 +159,8 @@ struct Interpreter::Impl {
   TrcWords trc_words{*this};          // G40/G41/G42, D: the TRC state (trc_words.hpp)
   std::deque<Command> pending;
   std::uint64_t blocks_without_motion = 0;
-  // Repeat detection (Brent's cycle finding over decoder states, docs/interp.md "Endless
-  // programs"): the state saved at block `at` of the run, compared whenever pc returns to it.
-  struct RepeatWatch {
-    Pc pc{0xFFFF, 0};
-    std::uint32_t line = 0;
-    std::uint64_t fingerprint = 0;
-    std::uint64_t at = 0;      // blocks decoded when saved
-    std::uint64_t period = 1;  // blocks until the next save
-    std::uint64_t credit = 0;  // blocks to decode before the next (costly) comparison
-  } repeat;
-  std::uint64_t decoded = 0;  // blocks decoded in this run
-  std::optional<std::uint32_t> endless_from;
-  std::uint32_t line = 0;  // line of the block being decoded
+  RepeatWatch repeat{*this};  // endless programs (repeat_watch.hpp)
+  std::uint32_t line = 0;     // line of the block being decoded
   std::uint16_t current_file = 0;
 
   Variables vars;
