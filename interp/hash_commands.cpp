@@ -96,10 +96,9 @@ bool HashCommands::run_hash(const ast::Block& b, const ast::HashCommand& h) {
     case HashKind::caxtrack_off:
       return hash_caxtrack(b, h);
     case HashKind::spline_type_akima:
-      ip_.spline_type = SplineType::akima;
-      return true;
     case HashKind::spline_type_bspline:
-      ip_.spline_type = SplineType::bspline;
+      ip_.spline_type =
+          h.kind == HashKind::spline_type_akima ? SplineType::akima : SplineType::bspline;
       return true;
     case HashKind::spline_on:
       return ip_.spline_on(at);
@@ -117,13 +116,11 @@ bool HashCommands::run_hash(const ast::Block& b, const ast::HashCommand& h) {
     case HashKind::msg:
       return hash_msg(b, h);
     case HashKind::flush:
-      ip_.emit(ip_.line, Flush{FlushKind::stop});
-      return true;
     case HashKind::flush_continue:
-      ip_.emit(ip_.line, Flush{FlushKind::continue_});
-      return true;
     case HashKind::flush_wait:
-      ip_.emit(ip_.line, Flush{FlushKind::wait});
+      ip_.emit(ip_.line, Flush{h.kind == HashKind::flush            ? FlushKind::stop
+                               : h.kind == HashKind::flush_continue ? FlushKind::continue_
+                                                                    : FlushKind::wait});
       return true;
     case HashKind::time:
       return hash_time(b, h);

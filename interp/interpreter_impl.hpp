@@ -189,7 +189,6 @@ struct Interpreter::Impl {
   std::optional<OpenSpline> spline;        // between #SPLINE ON and OFF
   Frames::Xyz xyz{};                       // machine indices of X, Y, Z
   Frames frames{machine, cs, modal, xyz};  // the frame of `position`, re-basing (frames.hpp)
-  std::string scratch_text;
 };
 
 }  // namespace ncsim::interp
