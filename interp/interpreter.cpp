@@ -159,7 +159,7 @@ void Interpreter::Impl::emit(std::uint32_t at_line, CommandBody body) {
   pending.push_back(Command{at_line, current_file, std::move(body)});
 }
 
-// ---------------------------------------------------------------------------------------------
+// The public Interpreter: commands through the TRC filter, the V.E. writes, the files.
 
 Interpreter::Interpreter(const core::SourceFile& file, const machines::Machine& machine,
                          Options options)

@@ -490,10 +490,10 @@ AxisParams build_axis(const ListValues& v, core::DiagnosticList& diagnostics) {
   a.control.kv = v.internal("getriebe[0].kv");
   a.control.pt1_time = v.internal("drive.pt1_time");
 
-  // --- static-saw: G74 homing (docs/homing.md)
+  // G74 homing (docs/homing.md)
   a.reference_position = v.internal("getriebe[0].pos_refpkt");
   a.homing_velocity = v.internal("getriebe[0].vb_refmax");
-  a.conv_sync_optim = v.number("kenngr.conv_sync_optim") != 0.0;  // --- workspace
+  a.conv_sync_optim = v.number("kenngr.conv_sync_optim") != 0.0;  // P-AXIS-00555
   if (v.number("conv_sync.is_master") != 0.0) {
     ConveyorAxisParams c;
     for (const ConveyorFilterParam& f : kConveyorFilterParams)
