@@ -1,6 +1,6 @@
 // interp/interpreter_motion.cpp: a block's motion: the target from the axis words, the Motion
 // command in the current frame with its start (the re-based current position, see
-// interpreter_frames.cpp), arc centres from I/J/K or R, spline points.
+// interp/frames.cpp), arc centres from I/J/K or R, spline points.
 #include <cmath>
 #include <numbers>
 
@@ -65,7 +65,7 @@ bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const A
   }
   if (spline && !arc) {
     if (!feed) return fail(b.loc, "20008", "the spline needs a feed F");
-    emit(line, SplinePoint{spline->points, frame(), target, programmed, *feed});
+    emit(line, SplinePoint{spline->points, frames.frame(), target, programmed, *feed});
     ++spline->points;
     if (!same_spline_point(position, target)) ++spline->distinct;
     position = target;
@@ -84,7 +84,7 @@ bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const A
   }
   Motion m;
   m.kind = kind;
-  m.frame = frame();
+  m.frame = frames.frame();
   m.start = position;
   m.end = target;
   m.programmed = programmed;

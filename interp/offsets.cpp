@@ -61,7 +61,7 @@ void Offsets::follow_cs_base() {
   if (Eigen::Vector3d(base[0], base[1], base[2]) == ip_.cs.base()) return;
   const machines::Frame before = ip_.cs.active_frame();
   ip_.cs.set_base({base[0], base[1], base[2]});
-  ip_.rebase_cs(before);
+  ip_.frames.rebase_cs(before, ip_.position);
   SelectCs sel;
   sel.op = CsOp::base;
   sel.base = base;
