@@ -51,14 +51,14 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
       exact_stop_(config.exact_stop_wait_max, ipo_.t_cycle()),
       indp_(indp_configs(config), ipo_.t_cycle(), config.path.start),
       tracking_(sync_, ipo_, axes_, indp_, kin_, after_, error_, sink,
-                config.measured_value_wait_max, config.conveyor_axis) {
+                config.measured_value_wait_max, config.conveyor_axis),
+      mapping_(kin_, tracking_, sync_, axes_, error_, ipo_.t_cycle()) {
   const double t = ipo_.t_cycle();
   ipo_.set_wait_handler(&wait_relay_);
   // Conveyor tracking on FCT_DLM channels.
   if (config.conveyor) {
     sync_.emplace(*config.conveyor, config.sync_axes, t);
-    for (std::size_t i = 0; i < sync_->axis_count(); ++i)  // fixed by T0: set once
-      belt_.share[i] = sync_->share(i);
+    mapping_.set_shares();  // fixed by T0: set once
     tracking_.set_static_unit(config.conveyor->x_virtual);
     // The stop after an error while synchronised (tracking/sync_error.hpp).
     std::vector<AfterErrorAxis> after;
@@ -91,47 +91,6 @@ void raise(std::optional<RunTimeError>& error, const char* id, std::string messa
   }
 }
 
-Status Channel::stop(const char* id, std::string message, const Cycle& c, int axis) noexcept {
-  raise(error_, id, std::move(message), c, axis);
-  return Status::error;
-}
-
-bool Channel::map_to_axes(const Cycle& c) noexcept {
-  // Identity outside #TRAFO: the path is planned in machine axis values (MCS). The conveyor's
-  // moving PCS1 frame turns c.x, c.v, c.a, c.j into the setpoints of the machine axes, which
-  // everything after drives and monitors. Under #TRAFO ON the kinematic stage gives the joints;
-  // the PCS1 frame and the catch-up act on the TCP there, before the kinematic.
-  belt_.following = false;  // the audit's belt share (set below)
-  // Where a catch-up / departure left the path, it stands until its next block moves.
-  std::optional<AxisVec>& hold = tracking_.hold();
-  if (c.activity == Activity::motion) hold.reset();
-  if (kin_.decide(c))
-    return kin_.map(c, hold, sync_ ? &*sync_ : nullptr, ipo_.t_cycle(), axes_, error_);
-  std::array<axes::Setpoint, planner::kMaxAxes>& setpoint = axes_.setpoints();
-  for (std::size_t i = 0; i < axes_.size(); ++i)
-    setpoint[i] = axes::Setpoint{c.x[i], c.v[i], c.a[i], c.j[i]};
-  // The catch-up / departure drive the axes; PCS1 moves with the belt.
-  if (hold)
-    for (std::size_t i = 0; i < axes_.size(); ++i)
-      setpoint[i] = axes::Setpoint{(*hold)[i]};
-  if (sync_ && sync_->driving()) {
-    for (std::size_t i = 0; i < axes_.size(); ++i)
-      setpoint[i] = sync_->catch_up_setpoint(i);
-  } else if (sync_ && sync_->moving_frame()) {
-    for (std::size_t i = 0; i < axes_.size(); ++i) {
-      setpoint[i].p += sync_->offset(i);
-      setpoint[i].v += sync_->offset_v(i);
-      setpoint[i].a += sync_->offset_a(i);
-    }
-  }
-  if (sync_ && sync_->following()) {
-    belt_.following = true;
-    belt_.travel = sync_->travel();
-    belt_.acceleration = sync_->belt_acceleration();
-  }
-  return true;
-}
-
 bool Channel::drive_axis(std::size_t i, const Cycle& c) noexcept {
   const bool waiting = exact_stop_.waits_for(i);
   const bool active = indp_.axes().owned(i) ? !indp_.axes().in_position(i)
@@ -152,10 +111,8 @@ Status Channel::step() noexcept {
 Status Channel::step_program() noexcept {
   if (error_) return Status::error;
   if (ended_) return *ended_;  // the player sees each cycle once
-  if (play_.player() != nullptr) {
-    Status ended = Status::finished;
-    if (!play_.step(tracking_.tracking(), port_, ended, error_)) return ended;
-  }
+  Status ended = Status::running;
+  if (!play_.step(tracking_.tracking(), port_, ended, error_)) return ended;
   // A blocked event is dispatched again each cycle; a path holding at a ChannelWait goes on in
   // this cycle once the events up to the wait's tag are done.
   if (events_.blocked() || ipo_.holding_channel()) {
@@ -180,40 +137,13 @@ Status Channel::step_program() noexcept {
   }
   const Cycle& c = ipo_.cycle();
   driven_ = 0;
-  if (auto& f = play_.failed()) return stop(f->first, std::move(f->second), c, -1);
-  // No endless hold, unless the workspace hold waits for the belt (NC9081).
-  if (play_.player() != nullptr && c.held && !play_.player()->more_to_come() &&
-      !tracking_.hold_waits())
-    return stop(kHeldForeverId,
-                ipo_.feed_hold() ? "the path stands by feed hold and no later scenario event "
-                                   "releases it: the run would never end"
-                                 : "the path stands at override 0 and no later scenario event "
-                                   "raises it: the run would never end",
-                c, -1);
+  if (!play_.check(c, tracking_.hold_waits(), error_)) return Status::error;
   // Events riding on the blocks started in this cycle.
   if (!events_.blocked()) run_events(c.event_tag);
   if (error_) return Status::error;
-  // The conveyor world's cycle (latch, 50653, the Port's errors).
-  if (sync_) {
-    if (auto e = sync_->step(c.t)) return stop(e->id.c_str(), std::move(e->message), c, -1);
-    // The V.E. values of the workpiece just measured go to the world's store, where the next
-    // barrier reads them (docs/conveyor.md "Wiring").
-    if (port_ != nullptr && play_.player() != nullptr &&
-        port_->last_latch().workpiece != ve_workpiece_) {
-      const conveyor::LatchInfo& l = port_->last_latch();
-      ve_workpiece_ = l.workpiece;
-      try {
-        for (const auto& [name, value] : l.ve)
-          play_.player()->ve().write(name, value);
-      } catch (...) {
-        std::abort();  // out of memory writing a V.E. value
-      }
-    }
-  }
-  if (!map_to_axes(c)) return Status::error;
-  // The conveyor workspace, and the hold against the conveying direction.
-  if (sync_ && !tracking_.check_workspace(c)) return Status::error;
-  if (sync_ && !tracking_.workspace_cap(c)) return Status::error;
+  if (!tracking_.world_step(c, play_.player())) return Status::error;
+  if (!mapping_.map(c)) return Status::error;
+  if (!tracking_.workspace(c)) return Status::error;
   if (!exact_stop_.active() && ipo_.holding_exact_stop())
     exact_stop_.begin(c, std::span(axes_.setpoints().data(), axes_.size()), kin_.transformed());
   if (!indp_.step(c, axes_, shown_, error_)) return Status::error;
@@ -232,7 +162,7 @@ Status Channel::step_program() noexcept {
 
 Status Channel::indp_tail() noexcept {
   const Cycle& c = indp_.tail(ipo_.cycle(), ipo_.t_cycle());
-  map_to_axes(c);
+  mapping_.map(c);
   if (!indp_.step(c, axes_, shown_, error_)) return Status::error;
   for (std::size_t i = 0; i < axes_.size(); ++i)
     if (!drive_axis(i, c)) return Status::error;

@@ -23,9 +23,9 @@
 //   - the path interpolator's step (PathInterpolator::step; block starts go to the scenario);
 //   - the events riding on the blocks started in the cycle;
 //   - the conveyor world's cycle (ConveyorSync, the Port) and the V.E. values of a latch;
-//   - the mapping of the path point to machine axis setpoints: identity plus the conveyor's
-//     moving PCS1 frame / the catch-up, or under #TRAFO ON the KinematicStage (the TCP moved by
-//     the frame -> joints);
+//   - the mapping of the path point to machine axis setpoints (AxisMapping: identity plus the
+//     conveyor's moving PCS1 frame / the catch-up, or under #TRAFO ON the KinematicStage: the
+//     TCP moved by the frame -> joints);
 //   - the conveyor workspace and the workspace hold (tracking);
 //   - the start of an exact stop (ExactStopWait) when the command reached a G60 / G360 block end;
 //   - the INDP axes (IndpStage): an axis they own gets its INDP setpoint;
@@ -49,6 +49,7 @@
 
 #include "axes/control.hpp"
 #include "axes/monitor.hpp"
+#include "channel/axis_mapping.hpp"
 #include "channel/axis_stage.hpp"
 #include "channel/channel_types.hpp"
 #include "channel/conveyor_tracking.hpp"
@@ -145,7 +146,7 @@ class Channel {
     return axes_.setpoints();
   }
   /// the belt's share of setpoints() in the last cycle (Audit::set_belt()).
-  const BeltOffset& belt_share() const noexcept { return belt_; }
+  const BeltOffset& belt_share() const noexcept { return mapping_.belt(); }
   // conveyor tracking (docs/conveyor.md "Synchronisation")
   /// The conveyor world the channel steps every cycle and tracks between #SYNC IN and
   /// #SYNC OUT (null: none; #SYNC IN is then NC6001 `not supported`). Must outlive the channel.
@@ -190,14 +191,9 @@ class Channel {
   bool run_events(std::uint32_t up_to) noexcept;
   /// The path reached a ChannelWait: true when its events are all done (the path goes on).
   bool on_wait(const ChannelWait& wait) noexcept;
-  /// The path point -> machine axis setpoints (identity plus the conveyor's frame, or the
-  /// KinematicStage under #TRAFO ON); false when it raised a run-time error.
-  bool map_to_axes(const Cycle& c) noexcept;
   /// Drives axis i (AxisStage::drive with the exact stop's and the INDP axes' flags);
   /// false when it raised a run-time error.
   bool drive_axis(std::size_t i, const Cycle& c) noexcept;
-  /// Raises a run-time error at cycle `c` (raise()); Status::error.
-  Status stop(const char* id, std::string message, const Cycle& c, int axis) noexcept;
   // After an error while synchronised (channel_sync_error.cpp).
   /// One cycle of the program (the channel loop before an error kept synchronisation).
   Status step_program() noexcept;
@@ -250,18 +246,17 @@ class Channel {
   Sink* sink_ = nullptr;
   AxisStage axes_;
   ExactStopWait exact_stop_;
-  BeltOffset belt_;  ///< the belt's share of the setpoints (map_to_axes)
   std::optional<RunTimeError> error_;
   std::optional<Status> ended_;       ///< the interpolator's stream ended so
   EventQueue events_;                 ///< the events due and the one that blocks
   std::optional<ConveyorSync> sync_;  ///< with FCT_DLM only
   conveyor::Port* port_ = nullptr;    ///< the attached conveyor world (reduced filter)
-  std::uint64_t ve_workpiece_ = 0;    ///< the measured workpiece whose V.E. values were written
   HomingSequence homing_;             ///< G74
   IndpStage indp_;                    ///< INDP axes and technology outputs
   const Cycle* shown_ = nullptr;      ///< the cycle shown instead of the path's (INDP, after error)
   ScenarioPlay play_{ipo_, indp_, axes_};  ///< the scenario, before each cycle
   ConveyorTracking tracking_;              ///< the channel's side of conveyor tracking
+  AxisMapping mapping_;                    ///< the path point -> the axes' setpoints
 };
 
 }  // namespace ncsim::ipo

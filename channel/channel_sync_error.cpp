@@ -85,7 +85,7 @@ Status Channel::sync_error_cycle(bool fresh) noexcept {
   const Cycle& c = after_cycle_;
   // The belt's world goes on (its errors are not raised again: the channel is in error).
   (void)sync_->step(c.t);
-  if (!after_trafo_) map_to_axes(c);
+  if (!after_trafo_) mapping_.map(c);
   sync_error_indp_step(c);  // --- trafo-feed
   std::span<axes::Setpoint> sp(axes_.setpoints().data(), axes_.size());
   bool end = false;

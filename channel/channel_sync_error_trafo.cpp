@@ -67,7 +67,7 @@ bool Channel::sync_error_trafo_begin() noexcept {
 bool Channel::sync_error_trafo_step(const Cycle& c, bool& end) noexcept {
   const std::size_t n = axes_.size();
   // The TCP following the belt (tcp_), and its joints (setpoint_) where the transform maps it.
-  const bool mapped = map_to_axes(c);
+  const bool mapped = mapping_.map(c);
   if (!mapped) error_.reset();  // NC3201 is not raised after the error: the run ends below
   std::span<axes::Setpoint> tcp(kin_.tcp().data(), n);
   bool braked = false;
