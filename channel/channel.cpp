@@ -2,15 +2,11 @@
 
 #include "channel/channel.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <span>
 #include <stdexcept>
 #include <utility>
-#include <variant>
-
-#include "program/program_source.hpp"
 
 namespace ncsim::ipo {
 
@@ -45,16 +41,16 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
       // under a kinematic the channel reads them (NC6210's jerk stencil).
       ipo_(prepared(config.path), source,
            sink != nullptr || config.path.joints ? kin_.relay() : nullptr),
-      source_(source),
       sink_(sink),
       axes_(checked_axes(config, ipo_.axis_count()), config.path.start, ipo_.t_cycle()),
       exact_stop_(config.exact_stop_wait_max, ipo_.t_cycle()),
       indp_(indp_configs(config), ipo_.t_cycle(), config.path.start),
-      tracking_(sync_, ipo_, axes_, indp_, kin_, after_, error_, sink,
+      tracking_(sync_, ipo_, axes_, indp_, kin_, after_.axes_stop(), error_, sink,
                 config.measured_value_wait_max, config.conveyor_axis),
-      mapping_(kin_, tracking_, sync_, axes_, error_, ipo_.t_cycle()) {
+      mapping_(kin_, tracking_, sync_, axes_, error_, ipo_.t_cycle()),
+      events_(source, ipo_, axes_, indp_, tracking_, sync_, after_, error_) {
   const double t = ipo_.t_cycle();
-  ipo_.set_wait_handler(&wait_relay_);
+  ipo_.set_wait_handler(&events_);
   // Conveyor tracking on FCT_DLM channels.
   if (config.conveyor) {
     sync_.emplace(*config.conveyor, config.sync_axes, t);
@@ -64,8 +60,7 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
     std::vector<AfterErrorAxis> after;
     for (std::size_t i = 0; i < config.axes.size(); ++i)
       after.push_back(after_error_axis(config.path.axes[i], config.axes[i].monitor.soft_limits));
-    after_.configure(after, t);
-    after_box_ = config.conveyor->workspace;
+    after_.configure(after, config.conveyor->workspace, t);
   }
 }
 
@@ -91,71 +86,47 @@ void raise(std::optional<RunTimeError>& error, const char* id, std::string messa
   }
 }
 
-bool Channel::drive_axis(std::size_t i, const Cycle& c) noexcept {
-  const bool waiting = exact_stop_.waits_for(i);
-  const bool active = indp_.axes().owned(i) ? !indp_.axes().in_position(i)
-                                            : c.activity == Activity::motion && !waiting;
-  return axes_.drive(i, c, active, waiting, exact_stop_.target(i), exact_stop_.waited(), error_);
-}
-
 Status Channel::step() noexcept {
-  indp_.clear_tech();  // the technology functions of this cycle
-  // After an error while synchronised the machine moves on (004 §2.3).
-  if (sync_error_ && !error_) return sync_error_cycle(true);
+  indp_.clear_tech();                         // the technology functions of this cycle
+  if (after_.active()) return after_.step();  // the machine moves on after an error (004 §2.3)
   const std::uint64_t before = ipo_.cycle().index;
-  const Status s = step_program();
-  if (s != Status::error || !sync_error_begin()) return s;
-  return sync_error_cycle(ipo_.cycle().index == before);
+  const Status s = program_cycle();
+  if (s != Status::error) return s;
+  // The error keeps the synchronisation (the cycle is completed), or the run ends with it.
+  return after_.enter(ipo_.cycle().index != before, driven_);
 }
 
-Status Channel::step_program() noexcept {
+Status Channel::program_cycle() noexcept {
   if (error_) return Status::error;
   if (ended_) return *ended_;  // the player sees each cycle once
-  Status ended = Status::running;
-  if (!play_.step(tracking_.tracking(), port_, ended, error_)) return ended;
-  // A blocked event is dispatched again each cycle; a path holding at a ChannelWait goes on in
-  // this cycle once the events up to the wait's tag are done.
-  if (events_.blocked() || ipo_.holding_channel()) {
-    const bool holding = ipo_.holding_channel();
-    const bool done = run_events(holding ? events_.wait_tag() : ipo_.cycle().event_tag);
-    if (error_) return Status::error;
-    if (done && holding && indp_.syn_done(events_.wait_interruptible(), axes_.size()))
-      ipo_.release_wait();
-  }
-  tracking_.static_override();  // a synchronised static unit's path follows the belt
-  Status s = ipo_.step();
+  Status s = Status::running;
+  if (!play_.step(tracking_.tracking(), port_, s, error_)) return s;  // the scenario's cycle
+  if (!events_.before_path()) return Status::error;  // a blocked event, a ChannelWait's events
+  tracking_.static_override();       // a synchronised static unit's path follows the belt
+  s = ipo_.step();                   // the path (block starts go to the scenario)
   if (error_) return Status::error;  // raised by an event at a ChannelWait inside the step
-  if (s == Status::finished) {
-    run_events(~std::uint32_t{0});  // none left: ProgramSource ends with a ChannelWait
-    if (error_) s = Status::error;
-  }
-  if (s == Status::finished && !indp_.axes().in_position_mask(0))
-    return indp_tail();  // the program end waits for the INDP axes
+  if (s == Status::finished && !events_.at_end()) s = Status::error;  // the events left
+  if (s == Status::finished && !indp_.axes().in_position_mask(0)) return indp_tail();
   if (s != Status::running) {
     ended_ = s;
     return s;
   }
+  // The path's cycle: its parts in order.
   const Cycle& c = ipo_.cycle();
   driven_ = 0;
-  if (!play_.check(c, tracking_.hold_waits(), error_)) return Status::error;
-  // Events riding on the blocks started in this cycle.
-  if (!events_.blocked()) run_events(c.event_tag);
-  if (error_) return Status::error;
-  if (!tracking_.world_step(c, play_.player())) return Status::error;
-  if (!mapping_.map(c)) return Status::error;
-  if (!tracking_.workspace(c)) return Status::error;
-  if (!exact_stop_.active() && ipo_.holding_exact_stop())
+  if (!play_.check(c, tracking_.hold_waits(), error_)) return Status::error;  // NC6301, an action
+  if (!events_.riding(c)) return Status::error;  // the events of the blocks started in it
+  if (!tracking_.world_step(c, play_.player())) return Status::error;  // the conveyor world
+  if (!mapping_.map(c)) return Status::error;              // the path point -> the axes' setpoints
+  if (!tracking_.workspace(c)) return Status::error;       // the conveyor workspace and its hold
+  if (!exact_stop_.active() && ipo_.holding_exact_stop())  // a G60 / G360 block end reached
     exact_stop_.begin(c, std::span(axes_.setpoints().data(), axes_.size()), kin_.transformed());
-  if (!indp_.step(c, axes_, shown_, error_)) return Status::error;
-  for (std::size_t i = 0; i < axes_.size(); ++i) {
-    driven_ = i + 1;  // a monitor's alarm comes after the axis's control step
-    if (!drive_axis(i, c)) return Status::error;
-  }
-  if (exact_stop_.active()) {
-    bool release = false;
-    if (!exact_stop_.check(c, axes_, release, error_)) return Status::error;
-    if (release) ipo_.release_exact_stop();
-  }
+  if (!indp_.step(c, axes_, shown_, error_)) return Status::error;  // the INDP axes' setpoints
+  if (!drive_axes(c)) return Status::error;  // soft limits, position control, monitors
+  bool release = false;
+  // The exact stop on actual positions: released, or still waiting (P-ERR-70082, NC6101).
+  if (exact_stop_.active() && !exact_stop_.check(c, axes_, release, error_)) return Status::error;
+  if (release) ipo_.release_exact_stop();
   if (sink_) sink_->on_cycle(cycle());  // with the INDP axes' setpoints
   return Status::running;
 }
@@ -164,10 +135,21 @@ Status Channel::indp_tail() noexcept {
   const Cycle& c = indp_.tail(ipo_.cycle(), ipo_.t_cycle());
   mapping_.map(c);
   if (!indp_.step(c, axes_, shown_, error_)) return Status::error;
-  for (std::size_t i = 0; i < axes_.size(); ++i)
-    if (!drive_axis(i, c)) return Status::error;
+  if (!drive_axes(c)) return Status::error;
   if (sink_) sink_->on_cycle(cycle());
   return Status::running;
+}
+
+bool Channel::drive_axes(const Cycle& c) noexcept {
+  for (std::size_t i = 0; i < axes_.size(); ++i) {
+    driven_ = i + 1;  // a monitor's alarm comes after the axis's control step
+    const bool waiting = exact_stop_.waits_for(i);
+    const bool active = indp_.axes().owned(i) ? !indp_.axes().in_position(i)
+                                              : c.activity == Activity::motion && !waiting;
+    if (!axes_.drive(i, c, active, waiting, exact_stop_.target(i), exact_stop_.waited(), error_))
+      return false;
+  }
+  return true;
 }
 
 }  // namespace ncsim::ipo
