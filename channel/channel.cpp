@@ -45,6 +45,7 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
       axes_(checked_axes(config, ipo_.axis_count()), config.path.start, ipo_.t_cycle()),
       exact_stop_(config.exact_stop_wait_max, ipo_.t_cycle()),
       indp_(indp_configs(config), ipo_.t_cycle(), config.path.start),
+      after_(ipo_, axes_, kin_, indp_, mapping_, play_, tracking_, sync_, error_, shown_, sink),
       tracking_(sync_, ipo_, axes_, indp_, kin_, after_.axes_stop(), error_, sink,
                 config.measured_value_wait_max, config.conveyor_axis),
       mapping_(kin_, tracking_, sync_, axes_, error_, ipo_.t_cycle()),

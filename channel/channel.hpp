@@ -196,8 +196,7 @@ class Channel {
   std::size_t driven_ = 0;            ///< axes driven in the cycle being computed
   ScenarioPlay play_{ipo_, indp_, axes_};  ///< the scenario, before each cycle
   /// The stop after an error while synchronised (declared before tracking_: its limits).
-  AfterErrorStop after_{ipo_,      axes_, kin_,   indp_,  mapping_, play_,
-                        tracking_, sync_, error_, shown_, sink_};
+  AfterErrorStop after_;
   ConveyorTracking tracking_;  ///< the channel's side of conveyor tracking
   AxisMapping mapping_;        ///< the path point -> the axes' setpoints
   ChannelEvents events_;       ///< the events due, their dispatch (the interpolator's WaitHandler)
