@@ -2,15 +2,11 @@
 
 #include "channel/channel.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <span>
 #include <stdexcept>
 #include <utility>
-#include <variant>
-
-#include "program/program_source.hpp"
 
 namespace ncsim::ipo {
 
@@ -45,27 +41,27 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
       // under a kinematic the channel reads them (NC6210's jerk stencil).
       ipo_(prepared(config.path), source,
            sink != nullptr || config.path.joints ? kin_.relay() : nullptr),
-      source_(source),
       sink_(sink),
       axes_(checked_axes(config, ipo_.axis_count()), config.path.start, ipo_.t_cycle()),
       exact_stop_(config.exact_stop_wait_max, ipo_.t_cycle()),
       indp_(indp_configs(config), ipo_.t_cycle(), config.path.start),
-      tracking_(sync_, ipo_, axes_, indp_, kin_, after_, error_, sink,
-                config.measured_value_wait_max, config.conveyor_axis) {
+      after_(ipo_, axes_, kin_, indp_, mapping_, play_, tracking_, sync_, error_, shown_, sink),
+      tracking_(sync_, ipo_, axes_, indp_, kin_, after_.axes_stop(), error_, sink,
+                config.measured_value_wait_max, config.conveyor_axis),
+      mapping_(kin_, tracking_, sync_, axes_, error_, ipo_.t_cycle()),
+      events_(source, ipo_, axes_, indp_, tracking_, sync_, after_, error_) {
   const double t = ipo_.t_cycle();
-  ipo_.standstill().set_wait_handler(&wait_relay_);
+  ipo_.standstill().set_wait_handler(&events_);
   // Conveyor tracking on FCT_DLM channels.
   if (config.conveyor) {
     sync_.emplace(*config.conveyor, config.sync_axes, t);
-    for (std::size_t i = 0; i < sync_->axis_count(); ++i)  // fixed by T0: set once
-      belt_.share[i] = sync_->share(i);
+    mapping_.set_shares();  // fixed by T0: set once
     tracking_.set_static_unit(config.conveyor->x_virtual);
     // The stop after an error while synchronised (tracking/sync_error.hpp).
     std::vector<AfterErrorAxis> after;
     for (std::size_t i = 0; i < config.axes.size(); ++i)
       after.push_back(after_error_axis(config.path.axes[i], config.axes[i].monitor.soft_limits));
-    after_.configure(after, t);
-    after_box_ = config.conveyor->workspace;
+    after_.configure(after, config.conveyor->workspace, t);
   }
 }
 
@@ -91,154 +87,71 @@ void raise(std::optional<RunTimeError>& error, const char* id, std::string messa
   }
 }
 
-Status Channel::stop(const char* id, std::string message, const Cycle& c, int axis) noexcept {
-  raise(error_, id, std::move(message), c, axis);
-  return Status::error;
-}
-
-bool Channel::map_to_axes(const Cycle& c) noexcept {
-  // Identity outside #TRAFO: the path is planned in machine axis values (MCS). The conveyor's
-  // moving PCS1 frame turns c.x, c.v, c.a, c.j into the setpoints of the machine axes, which
-  // everything after drives and monitors. Under #TRAFO ON the kinematic stage gives the joints;
-  // the PCS1 frame and the catch-up act on the TCP there, before the kinematic.
-  belt_.following = false;  // the audit's belt share (set below)
-  // Where a catch-up / departure left the path, it stands until its next block moves.
-  std::optional<AxisVec>& hold = tracking_.hold();
-  if (c.activity == Activity::motion) hold.reset();
-  if (kin_.decide(c))
-    return kin_.map(c, hold, sync_ ? &*sync_ : nullptr, ipo_.t_cycle(), axes_, error_);
-  std::array<axes::Setpoint, planner::kMaxAxes>& setpoint = axes_.setpoints();
-  for (std::size_t i = 0; i < axes_.size(); ++i)
-    setpoint[i] = axes::Setpoint{c.x[i], c.v[i], c.a[i], c.j[i]};
-  // The catch-up / departure drive the axes; PCS1 moves with the belt.
-  if (hold)
-    for (std::size_t i = 0; i < axes_.size(); ++i)
-      setpoint[i] = axes::Setpoint{(*hold)[i]};
-  if (sync_ && sync_->driving()) {
-    for (std::size_t i = 0; i < axes_.size(); ++i)
-      setpoint[i] = sync_->catch_up_setpoint(i);
-  } else if (sync_ && sync_->moving_frame()) {
-    for (std::size_t i = 0; i < axes_.size(); ++i) {
-      setpoint[i].p += sync_->offset(i);
-      setpoint[i].v += sync_->offset_v(i);
-      setpoint[i].a += sync_->offset_a(i);
-    }
-  }
-  if (sync_ && sync_->following()) {
-    belt_.following = true;
-    belt_.travel = sync_->travel();
-    belt_.acceleration = sync_->belt_acceleration();
-  }
-  return true;
-}
-
-bool Channel::drive_axis(std::size_t i, const Cycle& c) noexcept {
-  const bool waiting = exact_stop_.waits_for(i);
-  const bool active = indp_.axes().owned(i) ? !indp_.axes().in_position(i)
-                                            : c.activity == Activity::motion && !waiting;
-  return axes_.drive(i, c, active, waiting, exact_stop_.target(i), exact_stop_.waited(), error_);
-}
-
 Status Channel::step() noexcept {
-  indp_.clear_tech();  // the technology functions of this cycle
-  // After an error while synchronised the machine moves on (004 §2.3).
-  if (sync_error_ && !error_) return sync_error_cycle(true);
+  indp_.clear_tech();                         // the technology functions of this cycle
+  if (after_.active()) return after_.step();  // the machine moves on after an error (004 §2.3)
   const std::uint64_t before = ipo_.cycle().index;
-  const Status s = step_program();
-  if (s != Status::error || !sync_error_begin()) return s;
-  return sync_error_cycle(ipo_.cycle().index == before);
+  const Status s = program_cycle();
+  if (s != Status::error) return s;
+  // The error keeps the synchronisation (the cycle is completed), or the run ends with it.
+  return after_.enter(ipo_.cycle().index != before, driven_);
 }
 
-Status Channel::step_program() noexcept {
+Status Channel::program_cycle() noexcept {
   if (error_) return Status::error;
   if (ended_) return *ended_;  // the player sees each cycle once
-  if (play_.player() != nullptr) {
-    Status ended = Status::finished;
-    if (!play_.step(tracking_.tracking(), port_, ended, error_)) return ended;
-  }
-  // A blocked event is dispatched again each cycle; a path holding at a ChannelWait goes on in
-  // this cycle once the events up to the wait's tag are done.
-  if (events_.blocked() || ipo_.standstill().holding_channel()) {
-    const bool holding = ipo_.standstill().holding_channel();
-    const bool done = run_events(holding ? events_.wait_tag() : ipo_.cycle().event_tag);
-    if (error_) return Status::error;
-    if (done && holding && indp_.syn_done(events_.wait_interruptible(), axes_.size()))
-      ipo_.standstill().release_wait();
-  }
-  tracking_.static_override();  // a synchronised static unit's path follows the belt
-  Status s = ipo_.step();
+  Status s = Status::running;
+  if (!play_.step(tracking_.tracking(), port_, s, error_)) return s;  // the scenario's cycle
+  if (!events_.before_path()) return Status::error;  // a blocked event, a ChannelWait's events
+  tracking_.static_override();       // a synchronised static unit's path follows the belt
+  s = ipo_.step();                   // the path (block starts go to the scenario)
   if (error_) return Status::error;  // raised by an event at a ChannelWait inside the step
-  if (s == Status::finished) {
-    run_events(~std::uint32_t{0});  // none left: ProgramSource ends with a ChannelWait
-    if (error_) s = Status::error;
-  }
-  if (s == Status::finished && !indp_.axes().in_position_mask(0))
-    return indp_tail();  // the program end waits for the INDP axes
+  if (s == Status::finished && !events_.at_end()) s = Status::error;  // the events left
+  if (s == Status::finished && !indp_.axes().in_position_mask(0)) return indp_tail();
   if (s != Status::running) {
     ended_ = s;
     return s;
   }
+  // The path's cycle: its parts in order.
   const Cycle& c = ipo_.cycle();
   driven_ = 0;
-  if (auto& f = play_.failed()) return stop(f->first, std::move(f->second), c, -1);
-  // No endless hold, unless the workspace hold waits for the belt (NC9081).
-  if (play_.player() != nullptr && c.held && !play_.player()->more_to_come() &&
-      !tracking_.hold_waits())
-    return stop(kHeldForeverId,
-                ipo_.path_override().feed_hold()
-                    ? "the path stands by feed hold and no later scenario event "
-                      "releases it: the run would never end"
-                    : "the path stands at override 0 and no later scenario event "
-                      "raises it: the run would never end",
-                c, -1);
-  // Events riding on the blocks started in this cycle.
-  if (!events_.blocked()) run_events(c.event_tag);
-  if (error_) return Status::error;
-  // The conveyor world's cycle (latch, 50653, the Port's errors).
-  if (sync_) {
-    if (auto e = sync_->step(c.t)) return stop(e->id.c_str(), std::move(e->message), c, -1);
-    // The V.E. values of the workpiece just measured go to the world's store, where the next
-    // barrier reads them (docs/conveyor.md "Wiring").
-    if (port_ != nullptr && play_.player() != nullptr &&
-        port_->last_latch().workpiece != ve_workpiece_) {
-      const conveyor::LatchInfo& l = port_->last_latch();
-      ve_workpiece_ = l.workpiece;
-      try {
-        for (const auto& [name, value] : l.ve)
-          play_.player()->ve().write(name, value);
-      } catch (...) {
-        std::abort();  // out of memory writing a V.E. value
-      }
-    }
-  }
-  if (!map_to_axes(c)) return Status::error;
-  // The conveyor workspace, and the hold against the conveying direction.
-  if (sync_ && !tracking_.check_workspace(c)) return Status::error;
-  if (sync_ && !tracking_.workspace_cap(c)) return Status::error;
+  if (!play_.check(c, tracking_.hold_waits(), error_)) return Status::error;  // NC6301, an action
+  if (!events_.riding(c)) return Status::error;  // the events of the blocks started in it
+  if (!tracking_.world_step(c, play_.player())) return Status::error;  // the conveyor world
+  if (!mapping_.map(c)) return Status::error;         // the path point -> the axes' setpoints
+  if (!tracking_.workspace(c)) return Status::error;  // the conveyor workspace and its hold
+  // A G60 / G360 block end reached:
   if (!exact_stop_.active() && ipo_.standstill().holding_exact_stop())
     exact_stop_.begin(c, std::span(axes_.setpoints().data(), axes_.size()), kin_.transformed());
-  if (!indp_.step(c, axes_, shown_, error_)) return Status::error;
-  for (std::size_t i = 0; i < axes_.size(); ++i) {
-    driven_ = i + 1;  // a monitor's alarm comes after the axis's control step
-    if (!drive_axis(i, c)) return Status::error;
-  }
-  if (exact_stop_.active()) {
-    bool release = false;
-    if (!exact_stop_.check(c, axes_, release, error_)) return Status::error;
-    if (release) ipo_.standstill().release_exact_stop();
-  }
+  if (!indp_.step(c, axes_, shown_, error_)) return Status::error;  // the INDP axes' setpoints
+  if (!drive_axes(c)) return Status::error;  // soft limits, position control, monitors
+  bool release = false;
+  // The exact stop on actual positions: released, or still waiting (P-ERR-70082, NC6101).
+  if (exact_stop_.active() && !exact_stop_.check(c, axes_, release, error_)) return Status::error;
+  if (release) ipo_.standstill().release_exact_stop();
   if (sink_) sink_->on_cycle(cycle());  // with the INDP axes' setpoints
   return Status::running;
 }
 
 Status Channel::indp_tail() noexcept {
   const Cycle& c = indp_.tail(ipo_.cycle(), ipo_.t_cycle());
-  map_to_axes(c);
+  mapping_.map(c);
   if (!indp_.step(c, axes_, shown_, error_)) return Status::error;
-  for (std::size_t i = 0; i < axes_.size(); ++i)
-    if (!drive_axis(i, c)) return Status::error;
+  if (!drive_axes(c)) return Status::error;
   if (sink_) sink_->on_cycle(cycle());
   return Status::running;
+}
+
+bool Channel::drive_axes(const Cycle& c) noexcept {
+  for (std::size_t i = 0; i < axes_.size(); ++i) {
+    driven_ = i + 1;  // a monitor's alarm comes after the axis's control step
+    const bool waiting = exact_stop_.waits_for(i);
+    const bool active = indp_.axes().owned(i) ? !indp_.axes().in_position(i)
+                                              : c.activity == Activity::motion && !waiting;
+    if (!axes_.drive(i, c, active, waiting, exact_stop_.target(i), exact_stop_.waited(), error_))
+      return false;
+  }
+  return true;
 }
 
 }  // namespace ncsim::ipo

@@ -15,27 +15,30 @@
 // error of every axis; run_time_error() says why the channel stopped (docs/ipo.md "The
 // channel loop").
 // The channel is made of owned parts, each with its own file in channel/ (channel/README.md);
-// per cycle (Channel::step), in this order:
+// per cycle (Channel::step, Channel::program_cycle), in this order:
+//   - the after-error stop (AfterErrorStop): while the machine moves on after a run-time error
+//     raised synchronised, the cycle is its own (the steps below do not run);
 //   - the scenario's cycle (ScenarioPlay, before the path: actions, [stop] conditions);
-//   - a blocked channel event and the events of a ChannelWait the path holds at (EventQueue,
-//     dispatched by kind in Channel::dispatch; the parts execute them through an EventContext;
-//     NC6001 `not supported` for a kind no part executes);
+//   - a blocked channel event and the events of a ChannelWait the path holds at (ChannelEvents,
+//     one dispatch by kind; the parts execute them through an EventContext; NC6001
+//     `not supported` for a kind no part executes);
+//   - the static unit's override (ConveyorTracking);
 //   - the path interpolator's step (PathInterpolator::step; block starts go to the scenario);
-//   - the events riding on the blocks started in the cycle;
-//   - the conveyor world's cycle (ConveyorSync, the Port) and the V.E. values of a latch;
-//   - the mapping of the path point to machine axis setpoints: identity plus the conveyor's
-//     moving PCS1 frame / the catch-up, or under #TRAFO ON the KinematicStage (the TCP moved by
-//     the frame -> joints);
-//   - the conveyor workspace and the workspace hold (tracking);
+//     at its end the events left, and the cycles go on while INDP axes still move;
+//   - the scenario's checks on the cycle (an action's error, a path held forever);
+//   - the events riding on the blocks started in the cycle (ChannelEvents);
+//   - the conveyor world's cycle and the V.E. values of a latch (ConveyorTracking);
+//   - the mapping of the path point to machine axis setpoints (AxisMapping: identity plus the
+//     conveyor's moving PCS1 frame / the catch-up, or under #TRAFO ON the KinematicStage);
+//   - the conveyor workspace and the workspace hold (ConveyorTracking);
 //   - the start of an exact stop (ExactStopWait) when the command reached a G60 / G360 block end;
 //   - the INDP axes (IndpStage): an axis they own gets its INDP setpoint;
 //   - every axis driven (AxisStage: soft limits, position control, monitors);
 //   - the exact-stop check on actual positions (release, P-ERR-70082, NC6101);
 //   - the Sink sees the cycle, only when no run-time error was raised in it: a stopped run's
-//     stream ends with the last good cycle.
-// After a run-time error while synchronised the cycles go on with the after-error stop
-// (channel_sync_error*.cpp) until the machine stands; after the path's end the cycles go on
-// while INDP axes still move.
+//     stream ends with the last good cycle;
+//   - a run-time error raised in the cycle goes to the after-error stop, which keeps the
+//     synchronisation (the cycles go on until the machine stands) or lets the run end with it.
 // Invariants: step() never throws (an error ends the stream with Status::error); it is
 // deterministic (encoder noise is seeded per axis); memory is the interpolator's (bounded by
 // the look-ahead window) plus one control model and one monitor per axis.
@@ -49,13 +52,13 @@
 
 #include "axes/control.hpp"
 #include "axes/monitor.hpp"
+#include "channel/after_error.hpp"
+#include "channel/axis_mapping.hpp"
 #include "channel/axis_stage.hpp"
+#include "channel/channel_events.hpp"
 #include "channel/channel_types.hpp"
 #include "channel/conveyor_tracking.hpp"
-#include "channel/event_context.hpp"
-#include "channel/event_queue.hpp"
 #include "channel/exact_stop.hpp"
-#include "channel/homing.hpp"
 #include "channel/indp_axes.hpp"
 #include "channel/indp_stage.hpp"
 #include "channel/kinematic_stage.hpp"
@@ -67,8 +70,6 @@
 #include "scenario/player.hpp"
 #include "tracking/belt_offset.hpp"
 #include "tracking/conveyor_sync.hpp"
-#include "tracking/sync_entry.hpp"
-#include "tracking/sync_error.hpp"
 
 namespace ncsim::ipo {
 
@@ -118,8 +119,6 @@ class Channel {
   const std::string& message() const noexcept { return ipo_.message(); }
   double t_cycle() const noexcept { return ipo_.t_cycle(); }  ///< [s]
   std::size_t axis_count() const noexcept { return axes_.size(); }
-  /// Largest |following error| seen per axis so far [mm | deg].
-  const AxisVec& following_error_max() const noexcept { return axes_.following_error_max(); }
 
   /// Plays `player`'s scenario from the next cycle on (ScenarioPlay); null: none. `player` must
   /// outlive the channel. The ProgramSource's barriers read player->ve() (the caller wires it:
@@ -145,7 +144,7 @@ class Channel {
     return axes_.setpoints();
   }
   /// the belt's share of setpoints() in the last cycle (Audit::set_belt()).
-  const BeltOffset& belt_share() const noexcept { return belt_; }
+  const BeltOffset& belt_share() const noexcept { return mapping_.belt(); }
   // conveyor tracking (docs/conveyor.md "Synchronisation")
   /// The conveyor world the channel steps every cycle and tracks between #SYNC IN and
   /// #SYNC OUT (null: none; #SYNC IN is then NC6001 `not supported`). Must outlive the channel.
@@ -168,100 +167,39 @@ class Channel {
   /// order (`run` writes them as CSV comments; docs/ipo.md "INDP axes and technology functions").
   const std::vector<TechOutput>& tech_outputs() const noexcept { return indp_.tech_outputs(); }
   // an error while synchronised keeps the synchronisation (seed 004 §2.3,
-  // tracking/sync_error.hpp, channel/channel_sync_error.cpp, docs/conveyor.md "Errors while
-  // synchronised"): the run goes on until the machine stands, then ends with that error.
+  // channel/after_error.hpp, docs/conveyor.md "Errors while synchronised"): the run goes on until
+  // the machine stands, then ends with that error.
   /// What the machine did after such an error (empty: none): the following, the stop, why.
-  std::string after_error_note() const;
+  std::string after_error_note() const { return after_.note(); }
 
  private:
-  /// Hands the interpolator's ChannelWait to the channel.
-  class WaitRelay final : public WaitHandler {
-   public:
-    explicit WaitRelay(Channel& channel) : channel_(channel) {}
-    bool on_wait(const ChannelWait& wait) noexcept override { return channel_.on_wait(wait); }
-
-   private:
-    Channel& channel_;
-  };
-  /// Executes one event by kind (channel/channel_events.cpp: the one dispatch point).
-  EventOutcome dispatch(const ChannelEvent& event) noexcept;
-  /// EventQueue::run with dispatch(): the blocked event, then the due events up to `up_to`;
-  /// false when one blocks or raised an error.
-  bool run_events(std::uint32_t up_to) noexcept;
-  /// The path reached a ChannelWait: true when its events are all done (the path goes on).
-  bool on_wait(const ChannelWait& wait) noexcept;
-  /// The path point -> machine axis setpoints (identity plus the conveyor's frame, or the
-  /// KinematicStage under #TRAFO ON); false when it raised a run-time error.
-  bool map_to_axes(const Cycle& c) noexcept;
-  /// Drives axis i (AxisStage::drive with the exact stop's and the INDP axes' flags);
-  /// false when it raised a run-time error.
-  bool drive_axis(std::size_t i, const Cycle& c) noexcept;
-  /// Raises a run-time error at cycle `c` (raise()); Status::error.
-  Status stop(const char* id, std::string message, const Cycle& c, int axis) noexcept;
-  // After an error while synchronised (channel_sync_error.cpp).
-  /// One cycle of the program (the channel loop before an error kept synchronisation).
-  Status step_program() noexcept;
-  /// The error just raised keeps the synchronisation: it is held back (sync_error_), the
-  /// path brakes by feed hold; false: the run ends with it as always.
-  bool sync_error_begin() noexcept;
-  /// One cycle after the error: the path brakes, the axes follow the belt or brake before
-  /// their soft limits. `fresh`: a new cycle (else the error's own cycle is completed).
-  Status sync_error_cycle(bool fresh) noexcept;
-  std::optional<RunTimeError> sync_error_;  ///< the error held back while the machine moves
-  SyncErrorStop after_;                     ///< the axes' stop after it
-  Cycle after_cycle_;                       ///< the cycle shown while after the error
-  bool after_begun_ = false;                ///< an error kept synchronisation (once a run)
-  bool after_path_ended_ = false;           ///< the interpolator gave its last cycle
-  double after_end_t_ = 0.0;                ///< [s] the machine stood
-  std::string after_passed_;                ///< a soft limit passed after all (the note says it)
-  // The same under #TRAFO ON (channel_sync_error_trafo.cpp): the TCP brakes
-  // before the conveyor workspace's face (tracking/sync_error_trafo.hpp), the joints are checked.
-  bool sync_error_trafo_begin() noexcept;
-  /// The after-error setpoints of a transformed cycle (tcp_ and the joints from it); false: the
-  /// TCP left the kinematic's reach (the run ends there, the note says it).
-  bool sync_error_trafo_step(const Cycle& c, bool& end) noexcept;
-  std::string after_error_trafo_note() const;
-  SyncErrorStop after_tcp_;        ///< the TCP's stop (X, Y, Z: the workspace box)
-  machines::Workspace after_box_;  ///< P-CHAN-00859..00864 [mm]
-  bool after_trafo_ = false;       ///< the error came under #TRAFO ON
-  int after_joint_ = -1;           ///< the joint whose limit decided the stop (-1: the TCP's)
-  AfterErrorEnd after_joint_why_ = AfterErrorEnd::soft_limit;  ///< why for that joint
-  // The INDP axes owned at the error (channel_sync_error_indp.cpp): each brakes on
-  // its own deceleration ramp while the path axes follow the belt (docs/conveyor.md).
-  /// Stops the owned INDP axes; false: not built (INDP axes under #TRAFO ON), the run ends.
-  bool sync_error_indp_begin() noexcept;
-  /// Steps the INDP axes once for cycle `c` (unless IndpStage::step() did) and applies them.
-  void sync_error_indp_step(const Cycle& c) noexcept;
-  /// Their setpoints into setpoint_ and the shown cycle (after SyncErrorStop wrote all axes).
-  void sync_error_indp_apply() noexcept;
-  /// setpoint_ with the INDP axes at rest: what SyncErrorStop decides on (not theirs to stop).
-  std::array<axes::Setpoint, planner::kMaxAxes> sync_error_path_axes() const noexcept;
-  /// Every INDP axis braked at the error stands.
-  bool sync_error_indp_stood() const noexcept;
-  planner::AxisMask after_indp_ = 0;  ///< the INDP axes owned at the error
-  std::size_t driven_ = 0;            ///< axes driven in the cycle being computed
+  /// One cycle of the program, the cycle's parts in order (see the header); Status::error when
+  /// one raised a run-time error.
+  Status program_cycle() noexcept;
   /// A cycle after the path's end while INDP axes still move (the program end waits for them).
   Status indp_tail() noexcept;
+  /// Drives every axis (AxisStage::drive with the exact stop's and the INDP axes' flags);
+  /// false when one raised a run-time error.
+  bool drive_axes(const Cycle& c) noexcept;
 
   KinematicStage kin_;  ///< #TRAFO ON: the joint stage (declared before ipo_: its relay)
-  WaitRelay wait_relay_{*this};
   PathInterpolator ipo_;
-  Source& source_;
   Sink* sink_ = nullptr;
   AxisStage axes_;
   ExactStopWait exact_stop_;
-  BeltOffset belt_;  ///< the belt's share of the setpoints (map_to_axes)
   std::optional<RunTimeError> error_;
   std::optional<Status> ended_;       ///< the interpolator's stream ended so
-  EventQueue events_;                 ///< the events due and the one that blocks
   std::optional<ConveyorSync> sync_;  ///< with FCT_DLM only
   conveyor::Port* port_ = nullptr;    ///< the attached conveyor world (reduced filter)
-  std::uint64_t ve_workpiece_ = 0;    ///< the measured workpiece whose V.E. values were written
-  HomingSequence homing_;             ///< G74
   IndpStage indp_;                    ///< INDP axes and technology outputs
   const Cycle* shown_ = nullptr;      ///< the cycle shown instead of the path's (INDP, after error)
+  std::size_t driven_ = 0;            ///< axes driven in the cycle being computed
   ScenarioPlay play_{ipo_, indp_, axes_};  ///< the scenario, before each cycle
-  ConveyorTracking tracking_;              ///< the channel's side of conveyor tracking
+  /// The stop after an error while synchronised (declared before tracking_: its limits).
+  AfterErrorStop after_;
+  ConveyorTracking tracking_;  ///< the channel's side of conveyor tracking
+  AxisMapping mapping_;        ///< the path point -> the axes' setpoints
+  ChannelEvents events_;       ///< the events due, their dispatch (the interpolator's WaitHandler)
 };
 
 }  // namespace ncsim::ipo

@@ -5,7 +5,7 @@
 // Port has no latch ("waiting for measured value"). The first motion after it reaches the
 // channel as a Motion event (ProgramSource::sync_motion, end in MCS at belt travel 0): the
 // catch-up PTP runs while the path stands, and its handler blocks until the profile has met
-// the moving target. The path's PCS1 blocks then run with the frame's offset (map_to_axes).
+// the moving target. The path's PCS1 blocks then run with the frame's offset (AxisMapping).
 // #SYNC OUT switches to `leaving` (the axes move on with the belt); the first motion after it
 // is the departure PTP from that moving state.
 

@@ -1,19 +1,51 @@
-// channel/channel_events: the channel's one dispatch point for channel events
-// (program/channel_event.hpp, docs/ipo.md "Channel events"). Each event kind the channel executes
-// gets a branch here that calls into its own file; a kind without one is run-time error NC6001 at
-// the event's line.
+// channel/channel_events: the channel's events part (see the header). Each event kind the
+// channel executes gets a branch in dispatch() that calls into its part; a kind without one is
+// run-time error NC6001 at the event's line.
+
+#include "channel/channel_events.hpp"
 
 #include <string>
 #include <type_traits>
 #include <utility>
 #include <variant>
 
-#include "channel/channel.hpp"
+#include "channel/after_error.hpp"
 #include "program/program_source.hpp"
 
 namespace ncsim::ipo {
 
-EventOutcome Channel::dispatch(const ChannelEvent& e) noexcept {
+bool ChannelEvents::before_path() noexcept {
+  if (!queue_.blocked() && !ipo_.standstill().holding_channel()) return true;
+  const bool holding = ipo_.standstill().holding_channel();
+  const bool done = run(holding ? queue_.wait_tag() : ipo_.cycle().event_tag);
+  if (error_) return false;
+  if (done && holding && indp_.syn_done(queue_.wait_interruptible(), axes_.size()))
+    ipo_.standstill().release_wait();
+  return true;
+}
+
+bool ChannelEvents::riding(const Cycle& c) noexcept {
+  if (!queue_.blocked()) run(c.event_tag);
+  return !error_;
+}
+
+bool ChannelEvents::at_end() noexcept {
+  run(~std::uint32_t{0});
+  return !error_;
+}
+
+bool ChannelEvents::on_wait(const ChannelWait& wait) noexcept {
+  if (after_.active()) return false;  // after the error nothing more is executed
+  queue_.at_wait(wait);
+  return !queue_.blocked() && run(wait.tag) &&
+         indp_.syn_done(queue_.wait_interruptible(), axes_.size());
+}
+
+bool ChannelEvents::run(std::uint32_t up_to) noexcept {
+  return queue_.run(source_, up_to, [this](const ChannelEvent& e) { return dispatch(e); });
+}
+
+EventOutcome ChannelEvents::dispatch(const ChannelEvent& e) noexcept {
   return std::visit(
       [&](const auto& body) -> EventOutcome {
         using T = std::decay_t<decltype(body)>;
@@ -46,17 +78,6 @@ EventOutcome Channel::dispatch(const ChannelEvent& e) noexcept {
         }
       },
       e.body);
-}
-
-bool Channel::run_events(std::uint32_t up_to) noexcept {
-  return events_.run(source_, up_to, [this](const ChannelEvent& e) { return dispatch(e); });
-}
-
-bool Channel::on_wait(const ChannelWait& wait) noexcept {
-  if (sync_error_) return false;  // after the error nothing more is executed
-  events_.at_wait(wait);
-  return !events_.blocked() && run_events(wait.tag) &&
-         indp_.syn_done(events_.wait_interruptible(), axes_.size());
 }
 
 }  // namespace ncsim::ipo

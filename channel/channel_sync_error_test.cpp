@@ -1,5 +1,5 @@
 // The channel after a run-time error raised while synchronised (seed 004 §2.3; tracking/sync_error,
-// channel/channel_sync_error.cpp; docs/conveyor.md "Errors while synchronised"): the path brakes to
+// channel/after_error.cpp; docs/conveyor.md "Errors while synchronised"): the path brakes to
 // 0 in PCS1, the machine moves on with the belt and stops before X's soft limit; a belt that
 // stands stops it with it. Laser portal: X soft limits [-200, 4000] mm, the conveyor workspace
 // narrowed to X <= 3000 mm so that NC9052 comes 1000 mm before the soft limit.

@@ -88,7 +88,7 @@ struct ConveyorRig {
               conveyor::Port* port, Sink* sink = nullptr)
       : file("t.nc", text),
         in(file, m),
-        src(in, m, config.path.channel.t_cycle),
+        src(in, m, SourceConfig{.t_cycle = config.path.channel.t_cycle}),
         ch(std::move(config), src, sink) {
     ch.attach_conveyor(port);
   }

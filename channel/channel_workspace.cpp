@@ -1,8 +1,9 @@
-// channel/channel_workspace: the channel's side of the workspace hold against the conveying
-// direction (tracking/workspace_hold.hpp; docs/conveyor.md "Workspace: the hold methods"): after
-// each cycle the hold decides on the path state of that cycle, and its cap acts on the
-// interpolator from the next one (PathOverride::set_velocity_cap, a jerk-limited replan).
-// The hold looks across block ends: the active entry and the look-ahead window's next entries
+// channel/channel_workspace: ConveyorTracking per cycle: the conveyor world's step, the conveyor
+// workspace and the channel's side of the workspace hold against the conveying direction
+// (tracking/workspace_hold.hpp; docs/conveyor.md "Workspace: the hold methods"): after each
+// cycle the hold decides on the path state of that cycle, and its cap acts on the interpolator
+// from the next one (PathOverride::set_velocity_cap, a jerk-limited replan). The hold looks
+// across block ends: the active entry and the look-ahead window's next entries
 // (PathInterpolator::queued_entry, at most kHoldAhead).
 
 #include <algorithm>
@@ -11,11 +12,39 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <utility>
 
 #include "channel/conveyor_tracking.hpp"
 #include "tracking/sync_checks.hpp"
 
 namespace ncsim::ipo {
+
+bool ConveyorTracking::world_step(const Cycle& c, scenario::Player* player) noexcept {
+  if (!sync_) return true;
+  if (auto e = sync_->step(c.t)) {
+    raise(error_, e->id.c_str(), std::move(e->message), c, -1);
+    return false;
+  }
+  // The V.E. values of the workpiece just measured go to the world's store, where the next
+  // barrier reads them (docs/conveyor.md "Wiring").
+  const conveyor::Port* port = sync_->port();
+  if (port != nullptr && player != nullptr && port->last_latch().workpiece != ve_workpiece_) {
+    const conveyor::LatchInfo& l = port->last_latch();
+    ve_workpiece_ = l.workpiece;
+    try {
+      for (const auto& [name, value] : l.ve)
+        player->ve().write(name, value);
+    } catch (...) {
+      std::abort();  // out of memory writing a V.E. value
+    }
+  }
+  return true;
+}
+
+bool ConveyorTracking::workspace(const Cycle& c) noexcept {
+  if (!sync_) return true;
+  return check_workspace(c) && workspace_cap(c);
+}
 
 bool ConveyorTracking::workspace_cap(const Cycle& c) noexcept {
   HoldState st;

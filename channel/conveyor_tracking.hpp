@@ -5,14 +5,15 @@
 // Purpose: the channel's side of ConveyorSync: the conveyor events (#SYNC IN waiting for the
 // measured value, the catch-up / departure PTP as a Motion event, #SYNC OUT, MC_TouchProbe,
 // MC_MoveVelocity, #MACHINE DATA of the filters; channel_conveyor.cpp), the moving hand-over of
-// FEED_CONT > 0 / FEED_CONT_AUTO (channel_sync_entry.cpp), the conveyor workspace and the
-// workspace hold with its belt cap (channel_workspace.cpp) and the static unit's override
-// (channel_static.cpp).
+// FEED_CONT > 0 / FEED_CONT_AUTO (channel_sync_entry.cpp), per cycle the conveyor world's step
+// with the V.E. values of a latch, the conveyor workspace and the workspace hold with its belt
+// cap (channel_workspace.cpp) and the static unit's override (channel_static.cpp).
 // Inputs: the ChannelConfig's measured-value wait; the channel's ConveyorSync and the parts it
 // acts on (the interpolator, the axes, the INDP axes, the kinematic stage), bound at
 // construction. Outputs: EventOutcome per event; the interpolator's velocity cap and override;
 // hold() where the path stands after a catch-up / departure; run-time errors (NC9054, NC9060,
-// NC9061, NC9081, the workspace's) through raise().
+// NC9061, NC9081, the workspace's, the Port's) through raise(); V.E. values into the player's
+// store.
 // Invariants: noexcept; no allocation per cycle.
 
 #include <cstdint>
@@ -25,6 +26,7 @@
 #include "channel/indp_stage.hpp"
 #include "channel/kinematic_stage.hpp"
 #include "ipo/interpolator.hpp"
+#include "scenario/player.hpp"
 #include "tracking/conveyor_sync.hpp"
 #include "tracking/sync_entry.hpp"
 #include "tracking/sync_error.hpp"
@@ -65,21 +67,30 @@ class ConveyorTracking {
   /// passed to the Port with the path standing (isg-language.md §5.10).
   EventOutcome on_machine_data(const interp::MachineData& command, const ChannelEvent& e) noexcept;
 
-  // Per cycle (channel_workspace.cpp, channel_static.cpp).
+  // Per cycle (channel_workspace.cpp, channel_static.cpp); each does nothing without a
+  // ConveyorSync.
   /// A synchronised static unit: the path override is the belt's master velocity over the
   /// planned kXvPlanFactor * CONV_VEL, so the virtual X follows the belt; the operator's
   /// override is restored after #SYNC OUT.
   void static_override() noexcept;
-  /// The conveyor workspace on the cycle's MCS setpoints while synchronised; false: stopped.
-  bool check_workspace(const Cycle& c) noexcept;
-  /// Gives the interpolator the hold's path velocity cap; false: NC9081 (the belt stood under
-  /// the hold longer than ncsim's wait limit).
-  bool workspace_cap(const Cycle& c) noexcept;
+  /// The conveyor world's cycle at cycle `c` (latch, 50653, the Port's errors), and the V.E.
+  /// values of a workpiece just measured into `player`'s store (null: none), where the next
+  /// barrier reads them (docs/conveyor.md "Wiring"). False: a run-time error raised.
+  bool world_step(const Cycle& c, scenario::Player* player) noexcept;
+  /// After the mapping: the conveyor workspace on the cycle's MCS setpoints while synchronised,
+  /// then the hold against the conveying direction (its path velocity cap for the next cycle).
+  /// False: a run-time error raised (the workspace's, NC9081).
+  bool workspace(const Cycle& c) noexcept;
   /// The hold caps the path at 0 (the belt stands): the tool waits for the belt, not for the
   /// operator (no NC6301).
   bool hold_waits() const noexcept;
 
  private:
+  /// The conveyor workspace on the cycle's MCS setpoints while synchronised; false: stopped.
+  bool check_workspace(const Cycle& c) noexcept;
+  /// Gives the interpolator the hold's path velocity cap; false: NC9081 (the belt stood under
+  /// the hold longer than ncsim's wait limit).
+  bool workspace_cap(const Cycle& c) noexcept;
   /// The relative velocity the catch-up from `start` to `target` meets its target with: the
   /// #SYNC IN's, reduced to what the path's first block allows (tracking/sync_entry); 0: at rest.
   double sync_entry_velocity(std::span<const axes::MotionState> start,
@@ -115,6 +126,7 @@ class ConveyorTracking {
   bool static_unit_ = false;                                   ///< P-CHAN-00364 x_virtual
   std::optional<double> operator_override_;  ///< the override before the static unit took it
   std::uint64_t hold_stood_ = 0;             ///< cycles the belt stood under the hold
+  std::uint64_t ve_workpiece_ = 0;  ///< the measured workpiece whose V.E. values were written
 };
 
 }  // namespace ncsim::ipo

@@ -3,6 +3,7 @@
 #include "channel/scenario_play.hpp"
 
 #include <stdexcept>
+#include <utility>
 #include <variant>
 
 namespace ncsim::ipo {
@@ -44,6 +45,7 @@ std::optional<std::pair<const char*, std::string>> ScenarioPlay::act(
 
 bool ScenarioPlay::step(bool tracking, conveyor::Port* port, Status& status,
                         std::optional<RunTimeError>& error) noexcept {
+  if (player_ == nullptr) return true;
   if (stopped_) {
     status = Status::finished;
     return false;
@@ -72,6 +74,24 @@ bool ScenarioPlay::step(bool tracking, conveyor::Port* port, Status& status,
     return false;
   }
   return true;
+}
+
+bool ScenarioPlay::check(const Cycle& c, bool hold_waits,
+                         std::optional<RunTimeError>& error) noexcept {
+  if (failed_) {
+    raise(error, failed_->first, std::move(failed_->second), c, -1);
+    return false;
+  }
+  // No endless hold, unless the workspace hold waits for the belt (NC9081).
+  if (player_ == nullptr || !c.held || player_->more_to_come() || hold_waits) return true;
+  raise(error, kHeldForeverId,
+        ipo_.path_override().feed_hold()
+            ? "the path stands by feed hold and no later scenario event releases "
+              "it: the run would never end"
+            : "the path stands at override 0 and no later scenario event raises "
+              "it: the run would never end",
+        c, -1);
+  return false;
 }
 
 }  // namespace ncsim::ipo

@@ -10,7 +10,8 @@
 // that starts inside a cycle (the interpolator's BlockObserver) goes to Player::block_started
 // and its `line` events fire at once: they belong to the cycle in which the block starts.
 // Inputs: the Player (null: none), the interpolator and the INDP axes it acts on.
-// Outputs: the actions applied, the stop reason, an action's error raised mid-cycle (failed()).
+// Outputs: the actions applied, the stop reason, an action's error raised mid-cycle and a path
+// held forever (NC6301) as run-time errors (check()).
 // Invariants: noexcept; no allocation per cycle beyond the Player's own.
 
 #include <optional>
@@ -40,15 +41,19 @@ class ScenarioPlay {
     ipo_.observe_blocks(player != nullptr ? &blocks_ : nullptr);
   }
   scenario::Player* player() const noexcept { return player_; }
-  /// The scenario's cycle before the interpolator's; false when the run ends before it:
-  /// `status` finished (a [stop] condition) or error (raised into `error`). `tracking`: the
-  /// channel tracks the conveyor (its feed hold reduces the filters of `port`, null: none).
+  /// The scenario's cycle before the interpolator's (none without a player); false when the
+  /// run ends before it: `status` finished (a [stop] condition) or error (raised into `error`).
+  /// `tracking`: the channel tracks the conveyor (its feed hold reduces the filters of `port`,
+  /// null: none).
   bool step(bool tracking, conveyor::Port* port, Status& status,
             std::optional<RunTimeError>& error) noexcept;
+  /// After the interpolator's step, at its cycle `c`: an action's run-time error raised by a
+  /// block start inside the cycle, or NC6301 when the path stands by feed hold or override 0
+  /// and no later scenario event releases it (unless `hold_waits`: the workspace hold waits for
+  /// the belt, NC9081). False: raised into `error`.
+  bool check(const Cycle& c, bool hold_waits, std::optional<RunTimeError>& error) noexcept;
   /// The [stop] condition that ended the run, if one did.
   const std::optional<scenario::StopReason>& stop_reason() const noexcept { return stopped_; }
-  /// An action's run-time error (id, text) raised by a block start inside the cycle.
-  std::optional<std::pair<const char*, std::string>>& failed() noexcept { return failed_; }
   /// The program is aborted (after an error while synchronised): its blocks only brake.
   void abort_program() noexcept { aborted_ = true; }
 

@@ -1,5 +1,5 @@
 // An error while synchronised with an INDP axis moving (seed 004 §2.3; trafo-feed, issue 14;
-// channel/channel_sync_error_indp.cpp; docs/conveyor.md "Errors while synchronised", "With INDP
+// channel/after_error_indp.cpp; docs/conveyor.md "Errors while synchronised", "With INDP
 // axes"): the INDP axis brakes jerk-limited on its own ramp, the path axes follow the belt and
 // brake before X's soft limit, the run ends with the original error when everything stands.
 // Laser portal: X soft limits [-200, 4000] mm, the conveyor workspace narrowed to X <= 3000 mm

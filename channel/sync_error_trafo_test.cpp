@@ -1,5 +1,5 @@
 // An error while synchronised under #TRAFO ON (seed 004 §2.3 with §2.2 l.609, l.687;
-// tracking/sync_error_trafo, channel/channel_sync_error_trafo.cpp; docs/conveyor.md "Errors while
+// tracking/sync_error_trafo, channel/after_error_trafo.cpp; docs/conveyor.md "Errors while
 // synchronised"): the delta picker grips a workpiece on a 100 mm/s belt; the belt speeds up to
 // 120 mm/s (50653, more than 10 % above CONV_VEL) while it grips. The TCP keeps following the
 // belt on its line (Y, Z unchanged), brakes before the conveyor workspace's X face 600 mm, the

@@ -1,6 +1,14 @@
 #pragma once
 // grammar/hash_commands: the grammar of each `#` command (internal). isg-language.md §5; each
 // command reads its mode words, then its bracket lists with the command's own keyword table.
+//
+// parse_hash_command reads `#` and the command's name, then hands the rest of the block to the
+// family's reader in kHashCommands (one function per command family). A reader sets the
+// command's kind and keyword table (HashReader::set) and appends its items to the block; errors
+// throw from State (fail, not_supported) at the position they name.
+
+#include <algorithm>
+#include <array>
 
 #include "grammar/custom_rules.hpp"
 
@@ -34,11 +42,366 @@ void parse_variable_list(Input& in, State& st) {
   }
 }
 
+namespace hash {
+
+using H = ast::HashKind;
+using T = ast::TableId;
+
+/// One `#` command being read: the input after its name, the parser state, the command so far.
+template <typename Input>
+struct HashReader {
+  Input& in;
+  State& st;
+  ast::HashCommand cmd;
+  std::string_view name;  // the command's name as written ("SYNC")
+  const char* name_at;    // where the name starts (the `#` is one before)
+
+  bool is(std::string_view w) const { return iequals(name, w); }
+  void ws() { skip_ws(in, st); }
+  bool word(std::string_view w) { return accept(in, w); }
+  /// The next word, for a "not supported" text.
+  std::string next_word() const { return std::string(lex::ident(lex::rest(in))); }
+  void set(H kind, T table = T::none) {
+    cmd.kind = kind;
+    cmd.table = table;
+    st.table = table;
+    st.block->body = cmd;
+  }
+  /// Up to `max_lists` bracket lists (groups 0, 1, ...); `required`: the first one must be there.
+  void lists(int max_lists, bool required) {
+    for (int g = 0; g < max_lists; ++g) {
+      ws();
+      if (!parse_list(in, st, static_cast<std::uint8_t>(g))) {
+        if (required && g == 0) st.fail(in.current(), "'['");
+        return;
+      }
+    }
+  }
+  /// An item with a keyword and no value (`SYN` of #MACHINE DATA, `ALL` of #VECTOR LIMIT).
+  void keyword_item(const char* at, std::string_view keyword, std::uint16_t key) {
+    ast::Item item;
+    item.loc = st.loc(at);
+    item.key = key;
+    item.keyword = keyword;
+    st.block->items.push_back(item);
+  }
+};
+
+template <typename Input>
+void read_sync(HashReader<Input>& r) {  // §5.13, seed 004 "#SYNC IN / #SYNC OUT"
+  const H k = expect_mode(r.in, r.st, {"IN", "OUT", "OFF"}, {H::sync_in, H::sync_out, H::sync_off},
+                          "IN, OUT or OFF after #SYNC");
+  r.set(k, k == H::sync_in ? T::sync_in : T::sync_out);
+  r.lists(1, false);
+}
+
+template <typename Input>
+void read_cs(HashReader<Input>& r) {  // §5.8: #CS and #BCS
+  const bool b = r.is("BCS");
+  r.ws();
+  if (r.word("DEF")) {
+    r.set(b ? H::bcs_def : H::cs_def, T::cs);
+    r.lists(2, false);
+  } else if (r.word("ON")) {
+    r.set(b ? H::bcs_on : H::cs_on, T::cs);
+    r.lists(2, false);
+  } else if (r.word("OFF")) {
+    r.ws();
+    const bool all = r.word("ALL");
+    r.set(all ? (b ? H::bcs_off_all : H::cs_off_all) : (b ? H::bcs_off : H::cs_off));
+  } else {
+    const std::string w = r.next_word();
+    if (!w.empty()) r.st.not_supported(r.in.current(), "#" + std::string(r.name) + " " + w);
+    r.st.fail(r.in.current(), "DEF, ON or OFF");
+  }
+}
+
+template <typename Input>
+void read_caxtrack(HashReader<Input>& r) {  // §5.7
+  const H k = expect_mode(r.in, r.st, {"ON", "OFF"}, {H::caxtrack_on, H::caxtrack_off},
+                          "ON or OFF after #CAXTRACK");
+  r.set(k, k == H::caxtrack_on ? T::caxtrack_on : T::caxtrack_off);
+  r.lists(1, false);
+}
+
+template <typename Input>
+void read_spline_type(HashReader<Input>& r, const char* expected) {
+  r.set(expect_mode(r.in, r.st, {"AKIMA", "BSPLINE"},
+                    {H::spline_type_akima, H::spline_type_bspline}, expected));
+}
+
+template <typename Input>
+void read_spline(HashReader<Input>& r) {  // §5.4
+  r.ws();
+  if (r.word("TYPE")) return read_spline_type(r, "AKIMA or BSPLINE after #SPLINE TYPE");
+  r.set(expect_mode(r.in, r.st, {"ON", "OFF"}, {H::spline_on, H::spline_off},
+                    "TYPE, ON or OFF after #SPLINE"));
+}
+
+template <typename Input>
+void read_set(HashReader<Input>& r) {  // old spellings, §5.4
+  r.ws();
+  if (r.word("SPLINETYPE")) return read_spline_type(r, "AKIMA or BSPLINE after #SET SPLINETYPE");
+  if (!r.word("SPLINE")) r.st.not_supported(r.name_at - 1, "#SET " + r.next_word());
+  r.set(expect_mode(r.in, r.st, {"ON", "OFF"}, {H::spline_on, H::spline_off},
+                    "ON or OFF after #SET SPLINE"));
+}
+
+template <typename Input>
+void read_contour(HashReader<Input>& r) {  // §5.3
+  r.ws();
+  if (!r.word("MODE")) r.st.fail(r.in.current(), "MODE after #CONTOUR");
+  r.ws();
+  if (r.word("OFF")) return r.set(H::contour_mode_off);
+  r.set(r.word("ON") ? H::contour_mode_on : H::contour_mode, T::contour_mode);
+  r.lists(1, false);
+}
+
+template <typename Input>
+void read_slope(HashReader<Input>& r) {  // §5.5
+  r.ws();
+  if (r.word("DEFAULT")) return r.set(H::slope_default);
+  r.set(H::slope, T::slope);
+  if (!parse_list(r.in, r.st, 0)) r.st.fail(r.in.current(), "'[' or DEFAULT after #SLOPE");
+}
+
+template <typename Input>
+void read_kin(HashReader<Input>& r) {  // §5.9
+  r.ws();
+  if (!r.word("ID")) r.st.fail(r.in.current(), "ID after #KIN");
+  r.set(H::kin_id, T::kin_id);
+  r.lists(1, true);
+}
+
+template <typename Input>
+void read_trafo(HashReader<Input>& r) {  // §5.9
+  r.ws();
+  if (r.word("ON")) return r.set(H::trafo_on);
+  if (r.word("OFF")) return r.set(H::trafo_off);
+  r.set(H::trafo_steps, T::trafo);
+  if (!parse_list(r.in, r.st, 0)) r.st.fail(r.in.current(), "ON, OFF or '[' after #TRAFO");
+}
+
+template <typename Input>
+void read_machine(HashReader<Input>& r) {  // §5.10
+  r.ws();
+  if (!r.word("DATA")) r.st.fail(r.in.current(), "DATA after #MACHINE");
+  r.set(H::machine_data, T::machine_data);
+  r.ws();
+  const char* mode_at = r.in.current();
+  if (r.word("SYN")) {  // mode word without brackets, as in DIAG-21413's example
+    r.keyword_item(mode_at, std::string_view(mode_at, 3), 0);
+  }
+  r.lists(2, true);
+}
+
+template <typename Input>
+void read_msg(HashReader<Input>& r) {  // §5.11
+  r.set(H::msg, T::msg);
+  const KeywordTable& table = keyword_table(T::msg);
+  for (;;) {
+    r.ws();
+    const std::string_view w = lex::ident(lex::rest(r.in));
+    if (w.empty()) break;
+    ast::Item item;
+    item.loc = r.st.loc(r.in.current());
+    item.keyword = w;
+    for (std::size_t k = 0; k < table.entries.size(); ++k) {
+      if (iequals(table.entries[k].name, w)) item.key = static_cast<std::uint16_t>(k);
+    }
+    r.st.block->items.push_back(item);
+    r.in.bump(w.size());
+  }
+  r.ws();
+  (void)parse_list(r.in, r.st, 1);
+}
+
+template <typename Input>
+void read_flush(HashReader<Input>& r) {  // §5.1
+  r.ws();
+  r.set(r.word("CONTINUE") ? H::flush_continue : r.word("WAIT") ? H::flush_wait : H::flush);
+}
+
+template <typename Input>
+void read_time(HashReader<Input>& r) {  // §5.2
+  r.set(H::time, T::time);
+  r.ws();
+  ast::Item item;
+  item.kind = ast::ItemKind::positional;
+  item.loc = r.st.loc(r.in.current());
+  item.value = parse_expression(r.in, r.st, "a time in seconds after #TIME");
+  r.st.block->items.push_back(item);
+}
+
+template <typename Input>
+void read_transvelmin(HashReader<Input>& r) {  // §5.6
+  const H k = expect_mode(r.in, r.st, {"ON", "OFF"}, {H::transvelmin_on, H::transvelmin_off},
+                          "ON or OFF after #TRANSVELMIN");
+  r.set(k, T::transvelmin);
+  if (k == H::transvelmin_on) r.lists(1, false);
+}
+
+template <typename Input>
+void read_wait(HashReader<Input>& r) {  // §6.1
+  r.ws();
+  if (!r.word("INDP")) r.st.not_supported(r.name_at - 1, "#WAIT " + r.next_word());
+  r.ws();
+  if (r.word("ALL")) return r.set(H::wait_indp_all);
+  r.set(H::wait_indp, T::wait_indp);
+  r.lists(1, true);
+}
+
+template <typename Input>
+void read_variables(HashReader<Input>& r) {  // #DELETE §3.6, #INIT §3.5
+  const bool del = r.is("DELETE");
+  r.set(del ? H::delete_ : H::init, del ? T::delete_ : T::init);
+  parse_variable_list(r.in, r.st);
+}
+
+template <typename Input>
+void read_file_name(HashReader<Input>& r) {  // P-CHAN-00160 remarks: #FILE NAME [G80="x"]
+  if (r.is("FILE")) {
+    r.ws();
+    if (!r.word("NAME")) r.st.fail(r.in.current(), "NAME after #FILE");
+  }
+  r.set(H::file_name, T::file_name);
+  r.lists(1, true);
+}
+
+template <typename Input>
+void read_hsc(HashReader<Input>& r) {  // TF5200 "HSC": #HSC ON [...] / #HSC OFF / #HSC [...]
+  r.ws();
+  if (r.word("OFF")) return r.set(H::hsc_off);
+  (void)r.word("ON");
+  r.set(H::hsc_on, T::hsc);
+  r.lists(1, false);
+}
+
+template <typename Input>
+void read_vector(HashReader<Input>& r) {  // PROG-207477899
+  r.ws();
+  if (!r.word("LIMIT")) r.st.not_supported(r.name_at - 1, "#VECTOR " + r.next_word());
+  const H k = expect_mode(r.in, r.st, {"ON", "OFF"}, {H::vector_limit_on, H::vector_limit_off},
+                          "ON or OFF after #VECTOR LIMIT");
+  r.set(k, T::vector_limit);
+  r.ws();
+  if (r.word("ALL")) return r.keyword_item(r.in.current() - 3, "ALL", ast::kUnknownKeyword);
+  r.lists(1, false);
+}
+
+// PROG-207656459 #SCALE [ON] X2 Y2 / OFF; PROG-207101835 #PSET X200 Y0
+template <typename Input>
+void read_scale(HashReader<Input>& r) {
+  r.ws();
+  const bool scale = r.is("SCALE");
+  if (scale && r.word("OFF")) return r.set(H::scale_off);
+  if (scale) (void)r.word("ON");
+  r.set(scale ? H::scale_on : H::pset, T::scale);
+  for (;;) {  // axis name (letters, then digits) and its factor
+    r.ws();
+    const std::string_view rest = lex::rest(r.in);
+    if (rest.empty() || !lex::is_alpha(rest[0])) break;
+    std::size_t n = 0;
+    while (n < rest.size() && lex::is_alpha(rest[n]))
+      ++n;
+    ast::Item item;
+    item.kind = ast::ItemKind::keyword;
+    item.loc = r.st.loc(r.in.current());
+    item.keyword = rest.substr(0, n);
+    r.in.bump(n);
+    r.ws();
+    if (!r.in.empty() && r.in.peek_char() == '=') r.in.bump(1);
+    r.ws();
+    item.value = parse_expression(r.in, r.st, "a scaling factor after the axis name");
+    r.st.block->items.push_back(item);
+  }
+}
+
+template <typename Input>
+void read_mcs(HashReader<Input>& r) {  // PROG-208517515: #MCS ON [EX TOOL] / #MCS OFF
+  r.ws();
+  if (r.word("OFF")) return r.set(H::mcs_off);
+  if (!r.word("ON")) r.st.fail(r.in.current(), "ON or OFF after #MCS");
+  r.set(H::mcs_on);
+  r.ws();
+  if (!r.word("EX")) return;
+  r.ws();
+  if (!r.word("TOOL")) r.st.fail(r.in.current(), "TOOL after #MCS ON EX");
+}
+
+// Commands that change neither motion nor time in ncsim's model (docs/language.md "#
+// commands"): read to the block end and shown in trace as ACCEPTED.
+template <typename Input>
+void read_accepted(HashReader<Input>& r) {
+  r.set(H::accepted);
+  r.in.bump(r.in.size());
+}
+
+template <typename Input>
+void read_comment(HashReader<Input>& r) {  // §1.5
+  r.set(expect_mode(r.in, r.st, {"BEGIN", "END"}, {H::comment_begin, H::comment_end},
+                    "BEGIN or END after #COMMENT"));
+}
+
+template <typename Input>
+void read_pre_if(HashReader<Input>& r) {  // §4.8
+  r.set(H::pre_if);
+  r.ws();
+  r.cmd.expr = parse_expression(r.in, r.st, "a condition after #IF");
+}
+
+/// A command's name and its reader; without a reader the name alone is the command (`kind`).
+template <typename Input>
+struct Entry {
+  std::string_view name;
+  void (*read)(HashReader<Input>&);
+  H kind = H::flush;
+};
+
+template <typename Input>
+inline constexpr std::array<Entry<Input>, 35> kHashCommands{{
+    {"SYNC", read_sync<Input>},
+    {"CS", read_cs<Input>},
+    {"BCS", read_cs<Input>},
+    {"CAXTRACK", read_caxtrack<Input>},
+    {"SPLINE", read_spline<Input>},
+    {"SET", read_set<Input>},
+    {"CONTOUR", read_contour<Input>},
+    {"SLOPE", read_slope<Input>},
+    {"KIN", read_kin<Input>},
+    {"TRAFO", read_trafo<Input>},
+    {"MACHINE", read_machine<Input>},
+    {"MSG", read_msg<Input>},
+    {"FLUSH", read_flush<Input>},
+    {"TIME", read_time<Input>},
+    {"TRANSVELMIN", read_transvelmin<Input>},
+    {"WAIT", read_wait<Input>},
+    {"DELETE", read_variables<Input>},
+    {"INIT", read_variables<Input>},
+    {"FILE", read_file_name<Input>},
+    {"FILENAME", read_file_name<Input>},
+    {"HSC", read_hsc<Input>},
+    {"VECTOR", read_vector<Input>},
+    {"SCALE", read_scale<Input>},
+    {"PSET", read_scale<Input>},
+    {"MCS", read_mcs<Input>},
+    {"CHANNEL", read_accepted<Input>},
+    {"IDENT", read_accepted<Input>},
+    {"ORI", read_accepted<Input>},
+    {"TOOL", read_accepted<Input>},
+    {"VAR", nullptr, H::var},
+    {"ENDVAR", nullptr, H::endvar},
+    {"COMMENT", read_comment<Input>},
+    {"IF", read_pre_if<Input>},
+    {"ELSE", nullptr, H::pre_else},
+    {"ENDIF", nullptr, H::pre_endif},
+}};
+
+}  // namespace hash
+
 template <typename Input>
 bool parse_hash_command(Input& in, State& st) {
   if (in.empty() || in.peek_char() != '#') return false;
-  using H = ast::HashKind;
-  using T = ast::TableId;
   ast::HashCommand cmd;
   cmd.loc = st.loc(in.current());
   in.bump(1);
@@ -47,264 +410,18 @@ bool parse_hash_command(Input& in, State& st) {
   const std::string_view name = lex::ident(lex::rest(in));
   if (name.empty()) st.fail(in.current(), "a # command name");
   in.bump(name.size());
-  const auto set = [&](H kind, T table = T::none) {
-    cmd.kind = kind;
-    cmd.table = table;
-    st.table = table;
-    st.block->body = cmd;
-  };
-  const auto lists = [&](int max_lists, bool required) {
-    for (int g = 0; g < max_lists; ++g) {
-      skip_ws(in, st);
-      if (!parse_list(in, st, static_cast<std::uint8_t>(g))) {
-        if (required && g == 0) st.fail(in.current(), "'['");
-        return;
-      }
-    }
-  };
-  const auto is = [&](std::string_view w) { return iequals(name, w); };
-
-  if (is("SYNC")) {  // §5.13, seed 004 "#SYNC IN / #SYNC OUT"
-    const H k = expect_mode(in, st, {"IN", "OUT", "OFF"}, {H::sync_in, H::sync_out, H::sync_off},
-                            "IN, OUT or OFF after #SYNC");
-    set(k, k == H::sync_in ? T::sync_in : T::sync_out);
-    lists(1, false);
-  } else if (is("CS") || is("BCS")) {  // §5.8
-    const bool b = is("BCS");
-    skip_ws(in, st);
-    if (accept(in, "DEF")) {
-      set(b ? H::bcs_def : H::cs_def, T::cs);
-      lists(2, false);
-    } else if (accept(in, "ON")) {
-      set(b ? H::bcs_on : H::cs_on, T::cs);
-      lists(2, false);
-    } else if (accept(in, "OFF")) {
-      skip_ws(in, st);
-      const bool all = accept(in, "ALL");
-      set(all ? (b ? H::bcs_off_all : H::cs_off_all) : (b ? H::bcs_off : H::cs_off));
-    } else {
-      const std::string_view w = lex::ident(lex::rest(in));
-      if (!w.empty())
-        st.not_supported(in.current(), "#" + std::string(name) + " " + std::string(w));
-      st.fail(in.current(), "DEF, ON or OFF");
-    }
-  } else if (is("CAXTRACK")) {  // §5.7
-    const H k = expect_mode(in, st, {"ON", "OFF"}, {H::caxtrack_on, H::caxtrack_off},
-                            "ON or OFF after #CAXTRACK");
-    set(k, k == H::caxtrack_on ? T::caxtrack_on : T::caxtrack_off);
-    lists(1, false);
-  } else if (is("SPLINE")) {  // §5.4
-    skip_ws(in, st);
-    if (accept(in, "TYPE")) {
-      set(expect_mode(in, st, {"AKIMA", "BSPLINE"}, {H::spline_type_akima, H::spline_type_bspline},
-                      "AKIMA or BSPLINE after #SPLINE TYPE"));
-    } else {
-      set(expect_mode(in, st, {"ON", "OFF"}, {H::spline_on, H::spline_off},
-                      "TYPE, ON or OFF after #SPLINE"));
-    }
-  } else if (is("SET")) {  // old spellings, §5.4
-    skip_ws(in, st);
-    if (accept(in, "SPLINETYPE")) {
-      set(expect_mode(in, st, {"AKIMA", "BSPLINE"}, {H::spline_type_akima, H::spline_type_bspline},
-                      "AKIMA or BSPLINE after #SET SPLINETYPE"));
-    } else if (accept(in, "SPLINE")) {
-      set(expect_mode(in, st, {"ON", "OFF"}, {H::spline_on, H::spline_off},
-                      "ON or OFF after #SET SPLINE"));
-    } else {
-      st.not_supported(name_at - 1, "#SET " + std::string(lex::ident(lex::rest(in))));
-    }
-  } else if (is("CONTOUR")) {  // §5.3
-    skip_ws(in, st);
-    if (!accept(in, "MODE")) st.fail(in.current(), "MODE after #CONTOUR");
-    skip_ws(in, st);
-    if (accept(in, "OFF")) {
-      set(H::contour_mode_off);
-    } else {
-      set(accept(in, "ON") ? H::contour_mode_on : H::contour_mode, T::contour_mode);
-      lists(1, false);
-    }
-  } else if (is("SLOPE")) {  // §5.5
-    skip_ws(in, st);
-    if (accept(in, "DEFAULT")) {
-      set(H::slope_default);
-    } else {
-      set(H::slope, T::slope);
-      if (!parse_list(in, st, 0)) st.fail(in.current(), "'[' or DEFAULT after #SLOPE");
-    }
-  } else if (is("KIN")) {  // §5.9
-    skip_ws(in, st);
-    if (!accept(in, "ID")) st.fail(in.current(), "ID after #KIN");
-    set(H::kin_id, T::kin_id);
-    lists(1, true);
-  } else if (is("TRAFO")) {  // §5.9
-    skip_ws(in, st);
-    if (accept(in, "ON")) {
-      set(H::trafo_on);
-    } else if (accept(in, "OFF")) {
-      set(H::trafo_off);
-    } else {
-      set(H::trafo_steps, T::trafo);
-      if (!parse_list(in, st, 0)) st.fail(in.current(), "ON, OFF or '[' after #TRAFO");
-    }
-  } else if (is("MACHINE")) {  // §5.10
-    skip_ws(in, st);
-    if (!accept(in, "DATA")) st.fail(in.current(), "DATA after #MACHINE");
-    set(H::machine_data, T::machine_data);
-    skip_ws(in, st);
-    const char* mode_at = in.current();
-    if (accept(in, "SYN")) {  // mode word without brackets, as in DIAG-21413's example
-      ast::Item item;
-      item.loc = st.loc(mode_at);
-      item.key = 0;
-      item.keyword = std::string_view(mode_at, 3);
-      st.block->items.push_back(item);
-    }
-    lists(2, true);
-  } else if (is("MSG")) {  // §5.11
-    set(H::msg, T::msg);
-    const KeywordTable& table = keyword_table(T::msg);
-    for (;;) {
-      skip_ws(in, st);
-      const std::string_view w = lex::ident(lex::rest(in));
-      if (w.empty()) break;
-      ast::Item item;
-      item.loc = st.loc(in.current());
-      item.keyword = w;
-      for (std::size_t k = 0; k < table.entries.size(); ++k) {
-        if (iequals(table.entries[k].name, w)) item.key = static_cast<std::uint16_t>(k);
-      }
-      st.block->items.push_back(item);
-      in.bump(w.size());
-    }
-    skip_ws(in, st);
-    (void)parse_list(in, st, 1);
-  } else if (is("FLUSH")) {  // §5.1
-    skip_ws(in, st);
-    set(accept(in, "CONTINUE") ? H::flush_continue : accept(in, "WAIT") ? H::flush_wait : H::flush);
-  } else if (is("TIME")) {  // §5.2
-    set(H::time, T::time);
-    skip_ws(in, st);
-    ast::Item item;
-    item.kind = ast::ItemKind::positional;
-    item.loc = st.loc(in.current());
-    item.value = parse_expression(in, st, "a time in seconds after #TIME");
-    st.block->items.push_back(item);
-  } else if (is("TRANSVELMIN")) {  // §5.6
-    const H k = expect_mode(in, st, {"ON", "OFF"}, {H::transvelmin_on, H::transvelmin_off},
-                            "ON or OFF after #TRANSVELMIN");
-    set(k, T::transvelmin);
-    if (k == H::transvelmin_on) lists(1, false);
-  } else if (is("WAIT")) {  // §6.1
-    skip_ws(in, st);
-    if (!accept(in, "INDP")) {
-      st.not_supported(name_at - 1, "#WAIT " + std::string(lex::ident(lex::rest(in))));
-    }
-    skip_ws(in, st);
-    if (accept(in, "ALL")) {
-      set(H::wait_indp_all);
-    } else {
-      set(H::wait_indp, T::wait_indp);
-      lists(1, true);
-    }
-  } else if (is("DELETE") || is("INIT")) {  // §3.6, §3.5
-    set(is("DELETE") ? H::delete_ : H::init, is("DELETE") ? T::delete_ : T::init);
-    parse_variable_list(in, st);
-  } else if (is("FILE") || is("FILENAME")) {  // P-CHAN-00160 remarks: #FILE NAME [G80="x"]
-    if (is("FILE")) {
-      skip_ws(in, st);
-      if (!accept(in, "NAME")) st.fail(in.current(), "NAME after #FILE");
-    }
-    set(H::file_name, T::file_name);
-    lists(1, true);
-  } else if (is("HSC")) {  // TF5200 "HSC": #HSC ON [...] / #HSC OFF / #HSC [...]
-    skip_ws(in, st);
-    if (accept(in, "OFF")) {
-      set(H::hsc_off);
-    } else {
-      (void)accept(in, "ON");
-      set(H::hsc_on, T::hsc);
-      lists(1, false);
-    }
-  } else if (is("VECTOR")) {  // PROG-207477899
-    skip_ws(in, st);
-    if (!accept(in, "LIMIT"))
-      st.not_supported(name_at - 1, "#VECTOR " + std::string(lex::ident(lex::rest(in))));
-    const H k = expect_mode(in, st, {"ON", "OFF"}, {H::vector_limit_on, H::vector_limit_off},
-                            "ON or OFF after #VECTOR LIMIT");
-    set(k, T::vector_limit);
-    skip_ws(in, st);
-    if (accept(in, "ALL")) {
-      ast::Item item;
-      item.loc = st.loc(in.current() - 3);
-      item.keyword = "ALL";
-      st.block->items.push_back(item);
-    } else {
-      lists(1, false);
-    }
-  } else if (is("SCALE") || is("PSET")) {  // PROG-207656459 #SCALE [ON] X2 Y2 / OFF;
-    skip_ws(in, st);                       // PROG-207101835 #PSET X200 Y0
-    if (is("SCALE") && accept(in, "OFF")) {
-      set(H::scale_off);
-    } else {
-      if (is("SCALE")) (void)accept(in, "ON");
-      set(is("SCALE") ? H::scale_on : H::pset, T::scale);
-      for (;;) {  // axis name (letters, then digits) and its factor
-        skip_ws(in, st);
-        const std::string_view r = lex::rest(in);
-        if (r.empty() || !lex::is_alpha(r[0])) break;
-        std::size_t n = 0;
-        while (n < r.size() && lex::is_alpha(r[n]))
-          ++n;
-        ast::Item item;
-        item.kind = ast::ItemKind::keyword;
-        item.loc = st.loc(in.current());
-        item.keyword = r.substr(0, n);
-        in.bump(n);
-        skip_ws(in, st);
-        if (!in.empty() && in.peek_char() == '=') in.bump(1);
-        skip_ws(in, st);
-        item.value = parse_expression(in, st, "a scaling factor after the axis name");
-        st.block->items.push_back(item);
-      }
-    }
-  } else if (is("MCS")) {  // PROG-208517515: #MCS ON [EX TOOL] / #MCS OFF
-    skip_ws(in, st);
-    if (accept(in, "OFF")) {
-      set(H::mcs_off);
-    } else {
-      if (!accept(in, "ON")) st.fail(in.current(), "ON or OFF after #MCS");
-      set(H::mcs_on);
-      skip_ws(in, st);
-      if (accept(in, "EX")) {
-        skip_ws(in, st);
-        if (!accept(in, "TOOL")) st.fail(in.current(), "TOOL after #MCS ON EX");
-      }
-    }
-  } else if (is("CHANNEL") || is("IDENT") || is("ORI") || is("TOOL")) {
-    // Commands that change neither motion nor time in ncsim's model (docs/language.md "#
-    // commands"): read to the block end and shown in trace as ACCEPTED.
-    set(H::accepted);
-    in.bump(in.size());
-  } else if (is("VAR")) {
-    set(H::var);
-  } else if (is("ENDVAR")) {
-    set(H::endvar);
-  } else if (is("COMMENT")) {  // §1.5
-    set(expect_mode(in, st, {"BEGIN", "END"}, {H::comment_begin, H::comment_end},
-                    "BEGIN or END after #COMMENT"));
-  } else if (is("IF")) {  // §4.8
-    set(H::pre_if);
-    skip_ws(in, st);
-    cmd.expr = parse_expression(in, st, "a condition after #IF");
-  } else if (is("ELSE")) {
-    set(H::pre_else);
-  } else if (is("ENDIF")) {
-    set(H::pre_endif);
+  hash::HashReader<Input> r{in, st, cmd, name, name_at};
+  const auto& table = hash::kHashCommands<Input>;
+  const auto* entry = std::find_if(table.begin(), table.end(),
+                                   [&](const hash::Entry<Input>& e) { return r.is(e.name); });
+  if (entry == table.end()) st.not_supported(name_at - 1, "#" + std::string(name));
+  if (entry->read != nullptr) {
+    entry->read(r);
   } else {
-    st.not_supported(name_at - 1, "#" + std::string(name));
+    r.set(entry->kind);
   }
-  cmd.item_count = static_cast<std::uint32_t>(st.block->items.size());
-  st.block->body = cmd;
+  r.cmd.item_count = static_cast<std::uint32_t>(st.block->items.size());
+  st.block->body = r.cmd;
   return true;
 }
 

@@ -91,7 +91,7 @@ bool AxisCommands::axis_indp(const ast::Block& b, const ast::AxisCommand& ac, st
   if (*feed_value) c.feed = **feed_value / 60.0;  // mm/min -> mm/s (PROG-208612235)
   c.time = *time;
   c.interruptible = items.find("INTERRUPTIBLE") != nullptr;
-  c.frame = ip_.frame();
+  c.frame = ip_.frames.frame();
   if (c.interruptible && !ip_.machine.channel.conveyor) {
     return ip_.fail(ac.loc, "50603", "INTERRUPTIBLE needs conveyor synchronisation (FCT_DLM)");
   }

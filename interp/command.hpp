@@ -248,12 +248,14 @@ struct SyncOut {
   bool feed_cont_auto = false;
 };
 
-enum class CsOp : std::uint8_t { def, on, off, off_all };
+/// `base`: only the zero offsets below an active chain changed (G54.., V.G.NP[i]).
+enum class CsOp : std::uint8_t { def, on, off, off_all, base };
 struct SelectCs {
   CsOp op = CsOp::on;
   std::optional<int> id;
   std::optional<std::array<double, 6>> values;  ///< v1..v3 [mm], phi1..phi3 [deg]
   std::uint8_t active_count = 0;                ///< active systems after the command
+  std::array<double, 3> base{};  ///< X/Y/Z zero offsets [mm] the chain sits on (CsStack::base)
 };
 
 struct Kinematics {

@@ -13,7 +13,10 @@ std::optional<machines::CsError> apply_selection(machines::CsStack& cs, const Se
     const std::array<double, 6>& v = *sel.values;
     values = machines::CsValues{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
   }
+  cs.set_base({sel.base[0], sel.base[1], sel.base[2]});
   switch (sel.op) {
+    case CsOp::base:
+      break;
     case CsOp::def:
       return cs.def(sel.id, values.value_or(machines::CsValues{}));
     case CsOp::on:

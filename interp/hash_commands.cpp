@@ -32,7 +32,7 @@ bool Interpreter::Impl::spline_on(core::SourceLoc at) {
     return fail(at, "120255", "spline together with polynomial contouring (DIAG 120255)");
   }
   spline = OpenSpline{spline_type, 1};
-  emit(line, SplineBegin{spline_type, frame(), position, snapshot()});
+  emit(line, SplineBegin{spline_type, frames.frame(), position, snapshot()});
   return true;
 }
 
@@ -96,10 +96,9 @@ bool HashCommands::run_hash(const ast::Block& b, const ast::HashCommand& h) {
     case HashKind::caxtrack_off:
       return hash_caxtrack(b, h);
     case HashKind::spline_type_akima:
-      ip_.spline_type = SplineType::akima;
-      return true;
     case HashKind::spline_type_bspline:
-      ip_.spline_type = SplineType::bspline;
+      ip_.spline_type =
+          h.kind == HashKind::spline_type_akima ? SplineType::akima : SplineType::bspline;
       return true;
     case HashKind::spline_on:
       return ip_.spline_on(at);
@@ -117,13 +116,11 @@ bool HashCommands::run_hash(const ast::Block& b, const ast::HashCommand& h) {
     case HashKind::msg:
       return hash_msg(b, h);
     case HashKind::flush:
-      ip_.emit(ip_.line, Flush{FlushKind::stop});
-      return true;
     case HashKind::flush_continue:
-      ip_.emit(ip_.line, Flush{FlushKind::continue_});
-      return true;
     case HashKind::flush_wait:
-      ip_.emit(ip_.line, Flush{FlushKind::wait});
+      ip_.emit(ip_.line, Flush{h.kind == HashKind::flush            ? FlushKind::stop
+                               : h.kind == HashKind::flush_continue ? FlushKind::continue_
+                                                                    : FlushKind::wait});
       return true;
     case HashKind::time:
       return hash_time(b, h);
@@ -238,7 +235,7 @@ bool HashCommands::hash_sync_in(const ast::Block& b, const ast::HashCommand& h) 
   ip_.blocks_without_motion = 0;
   // The catch-up starts where the tool is in PCS1: run-time state (a barrier before the
   // next block that uses the position); decode-only: belt travel 0.
-  ip_.position = ip_.sync_rebased(true);
+  ip_.position = ip_.frames.sync_rebased(true, ip_.position);
   ip_.unknown_axes = ip_.path_axes;
   ip_.indp_unknown &= ~ip_.path_axes;
   ip_.modal.synchronised = true;
@@ -288,7 +285,7 @@ bool HashCommands::hash_sync_out(const ast::Block& b, const ast::HashCommand& h)
   if (!feed_cont(b, items, s.feed_cont)) return false;
   s.feed_cont_auto = items.find("FEED_CONT_AUTO") != nullptr;
   ip_.emit(ip_.line, s);
-  ip_.position = ip_.sync_rebased(false);
+  ip_.position = ip_.frames.sync_rebased(false, ip_.position);
   ip_.unknown_axes = ip_.path_axes;  // where the tool left the moving workpiece: run time
   ip_.indp_unknown &= ~ip_.path_axes;
   ip_.modal.synchronised = false;
@@ -317,8 +314,10 @@ bool HashCommands::hash_cs(const ast::Block& b, const ast::HashCommand& h) {
     }
     if (!g1.empty()) values = &g1;
   }
+  ip_.offsets.follow_cs_base();
   SelectCs sel;
   sel.id = id;
+  sel.base = ip_.offsets.cs_base();
   if (values != nullptr) {
     std::array<double, 6> vals{};
     for (std::size_t k = 0; k < values->size() && k < 6; ++k) {
@@ -335,7 +334,7 @@ bool HashCommands::hash_cs(const ast::Block& b, const ast::HashCommand& h) {
                                         : CsOp::off_all;
   const machines::Frame before = ip_.cs.active_frame();
   if (const auto err = apply_selection(ip_.cs, sel)) return ip_.fail(at, err->id, err->message);
-  if (sel.op != CsOp::def) ip_.rebase_cs(before);
+  if (sel.op != CsOp::def) ip_.frames.rebase_cs(before, ip_.position);
   sel.active_count = static_cast<std::uint8_t>(ip_.cs.active_count());
   ip_.emit(ip_.line, sel);
   return true;
@@ -362,16 +361,17 @@ bool HashCommands::hash_kinematics(const ast::Block& b, const ast::HashCommand& 
     }
     if (ip_.modal.kinematics_on) return ip_.fail(at, "NC4508", "#KIN ID while #TRAFO ON is active");
     ip_.kin_id = id;
-  } else if (h.kind == HashKind::trafo_on) {
-    if (!ip_.kin_id && ip_.machine.channel.trafos.empty()) {
+  } else if (h.kind == HashKind::trafo_on || h.kind == HashKind::trafo_off) {
+    const bool on = h.kind == HashKind::trafo_on;
+    if (on && !ip_.kin_id && ip_.machine.channel.trafos.empty()) {
       return ip_.fail(at, "292005", "#TRAFO ON without a configured kinematic");
     }
-    if (!ip_.kin_id) ip_.kin_id = ip_.machine.channel.trafos.front().id;
-    if (!ip_.modal.kinematics_on && !ip_.rebase_trafo(true, at)) return false;
-    ip_.modal.kinematics_on = true;
-  } else if (h.kind == HashKind::trafo_off) {
-    if (ip_.modal.kinematics_on && !ip_.rebase_trafo(false, at)) return false;
-    ip_.modal.kinematics_on = false;
+    if (on && !ip_.kin_id) ip_.kin_id = ip_.machine.channel.trafos.front().id;
+    if (ip_.modal.kinematics_on != on) {  // the position goes through the kinematic
+      const auto e = ip_.frames.rebase_trafo(on, ip_.kin_id, ip_.position);
+      if (e) return ip_.fail(at, e->id, e->message);
+    }
+    ip_.modal.kinematics_on = on;
   } else {
     return ip_.fail(at, "NC4104", "#TRAFO [...] multi-step form is not supported by ncsim");
   }

@@ -1,8 +1,7 @@
-// interp/interpreter.cpp: the block stream, subroutines, repeat detection, the public
-// Interpreter (control flow: interp/control_flow.cpp).
+// interp/interpreter.cpp: the block stream, the decoder's services (fail, warn, eval, emit) and
+// the public Interpreter.
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
@@ -12,7 +11,6 @@
 #include "interp/interpreter_impl.hpp"
 
 namespace ncsim::interp {
-namespace {}  // namespace
 
 Interpreter::Impl::Impl(const core::SourceFile& file, const machines::Machine& m, Options o,
                         core::DiagnosticList& d)
@@ -69,118 +67,6 @@ const ast::Block* Interpreter::Impl::fetch(Pc at) {
   return files[at.file]->blocks->fetch(at.ordinal, diags);
 }
 
-namespace {
-
-std::uint64_t mix(std::uint64_t h, std::uint64_t x) {
-  x += 0x9E3779B97F4A7C15ull + h;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
-std::uint64_t bits(double v) {
-  std::uint64_t b = 0;
-  std::memcpy(&b, &v, sizeof b);
-  return b;
-}
-std::uint64_t bits(const std::optional<double>& v) {
-  return v ? bits(*v) : 0x7FF4000000000001ull;  // a NaN payload no computation yields
-}
-
-}  // namespace
-
-// Everything that decides what the following blocks do: where the decoder is, the open loops
-// and calls, every variable, and the modal state motions and checks depend on. Two equal
-// fingerprints at the same block mean the decoder runs the same way again from there.
-std::uint64_t Interpreter::Impl::state_fingerprint(std::size_t& cost) const {
-  std::uint64_t h = vars.fingerprint(cost);
-  h = mix(h, (std::uint64_t{pc.file} << 32) | pc.ordinal);
-  h = mix(h, unit_start);
-  for (const ControlFrame& f : flow.frames()) {
-    h = mix(h, (static_cast<std::uint64_t>(f.kind) << 48) | (std::uint64_t{f.file} << 32) | f.open);
-    h = mix(h, f.end);
-    h = mix(h, (static_cast<std::uint64_t>(f.counter.cls) << 32) | f.counter.number);
-    for (const char c : f.counter.name)
-      h = mix(h, static_cast<unsigned char>(c));
-    for (std::uint32_t i = 0; i < f.counter.index_count && i < f.counter.index.size(); ++i)
-      h = mix(h, bits(f.counter.index[i]));
-    h = mix(h, bits(f.end_value));
-    h = mix(h, bits(f.step));
-  }
-  for (const CallFrame& f : calls) {
-    h = mix(h, (std::uint64_t{f.ret.file} << 32) | f.ret.ordinal);
-    h = mix(h, (std::uint64_t{f.unit_start} << 32) | f.control_depth);
-  }
-  for (const double v : position)
-    h = mix(h, bits(v));
-  h = mix(h, static_cast<std::uint64_t>(motion));
-  h = mix(h, bits(feed));
-  h = mix(h, (std::uint64_t{centre_absolute} << 3) | (std::uint64_t{motion_since_sync} << 2) |
-                 (std::uint64_t{spline.has_value()} << 1) | std::uint64_t{kin_id.has_value()});
-  if (kin_id) h = mix(h, static_cast<std::uint64_t>(*kin_id));
-  const ModalSnapshot& m = modal;
-  h = mix(h, (static_cast<std::uint64_t>(m.plane) << 40) |
-                 (static_cast<std::uint64_t>(m.feed_mode) << 32) |
-                 (static_cast<std::uint64_t>(m.transition) << 24) |
-                 (static_cast<std::uint64_t>(m.slope) << 16) | (std::uint64_t{m.inch} << 7) |
-                 (std::uint64_t{m.incremental} << 6) | (std::uint64_t{m.exact_stop} << 5) |
-                 (std::uint64_t{m.contouring} << 4) | (std::uint64_t{m.synchronised} << 3) |
-                 (std::uint64_t{m.cs_active} << 2) | (std::uint64_t{m.kinematics_on} << 1) |
-                 std::uint64_t{m.caxtrack});
-  h = mix(h, bits(m.transvelmin));
-  h = mix(h, (static_cast<std::uint64_t>(m.trc.side) << 16) |
-                 (static_cast<std::uint64_t>(m.trc.corner) << 8) |
-                 static_cast<std::uint64_t>(m.trc.approach));
-  h = mix(h, bits(m.trc.radius));
-  h = mix(h, bits(d_number));
-  h = mix(h, files.size());
-  // offsets, scaling and path limits (offsets.cpp)
-  h = mix(h, (std::uint64_t{offsets.zero_group} << 8) | (std::uint64_t{offsets.mcs_on} << 2) |
-                 (std::uint64_t{offsets.scale_on} << 1) |
-                 std::uint64_t{offsets.hsc_saved.has_value()});
-  for (const double f : offsets.scale_factors)
-    h = mix(h, bits(f));
-  h = mix(h, bits(offsets.vector_vel));
-  for (const auto& [code, name] : subs.file_names)
-    h = mix(h, code);
-  cost += flow.frames().size() + calls.size() + kMaxAxes;
-  return h;
-}
-
-// Brent's cycle detection over decoder states: a state is saved after 1, 2, 4, ... blocks; a
-// cycle of length L is found once the period reaches L. States are compared only where the
-// block is the saved one, and a costly comparison (many variables) waits until as many
-// blocks have been decoded as it costs, so the detection never dominates the decoding.
-bool Interpreter::Impl::watch_for_repeat(std::uint32_t block_line) {
-  ++decoded;
-  if (repeat.credit > 0) --repeat.credit;
-  if (pc.file == repeat.pc.file && pc.ordinal == repeat.pc.ordinal && repeat.credit == 0) {
-    std::size_t cost = 0;
-    const std::uint64_t now = state_fingerprint(cost);
-    repeat.credit = cost / 16;
-    if (now == repeat.fingerprint) {
-      // No motion or time since the saved state: the decoder would loop here forever.
-      if (blocks_without_motion >= decoded - repeat.at) {
-        const std::uint32_t loop_line = flow.loop_line(repeat.line);
-        return fail({loop_line, 1}, "NC4901",
-                    "endless loop without motion: the decoder returns to this block with the "
-                    "same variables and state after " +
-                        std::to_string(decoded - repeat.at) + " blocks, so the program cannot end");
-      }
-      if (!endless_from) endless_from = repeat.line;
-    }
-  }
-  if (decoded - repeat.at >= repeat.period) {
-    std::size_t cost = 0;
-    repeat.pc = pc;
-    repeat.line = block_line;
-    repeat.fingerprint = state_fingerprint(cost);
-    repeat.at = decoded;
-    repeat.period *= 2;
-    repeat.credit = cost / 16;
-  }
-  return true;
-}
-
 bool Interpreter::Impl::step() {
   if (!started) {
     started = true;
@@ -219,7 +105,7 @@ bool Interpreter::Impl::step() {
     --pc.ordinal;
     return true;
   }
-  if (!watch_for_repeat(line)) return false;
+  if (!repeat.watch(line)) return false;
   if (options.max_blocks_without_motion != 0 &&
       ++blocks_without_motion > options.max_blocks_without_motion) {
     const std::uint32_t loop_line = flow.loop_line(line);
@@ -260,8 +146,8 @@ bool Interpreter::Impl::step() {
   if (subs.cycle_call) {  // G80-G89 / G800-G839: the last action of the block (P-CHAN-00160)
     if (run->call) {
       return fail(run->call->loc, "21542",
-                  "a subroutine call in a block that already calls G" +
-                      std::to_string(subs.cycle_call->g_code) + "'s subroutine");
+                  "a subroutine call in a block that already calls " +
+                      Subroutines::call_name(*subs.cycle_call) + "'s subroutine");
     }
     return subs.run_cycle_call();
   }
@@ -273,7 +159,7 @@ void Interpreter::Impl::emit(std::uint32_t at_line, CommandBody body) {
   pending.push_back(Command{at_line, current_file, std::move(body)});
 }
 
-// ---------------------------------------------------------------------------------------------
+// The public Interpreter: commands through the TRC filter, the V.E. writes, the files.
 
 Interpreter::Interpreter(const core::SourceFile& file, const machines::Machine& machine,
                          Options options)
@@ -332,7 +218,7 @@ std::map<std::string, double> Interpreter::take_ve_writes() {
 }
 
 std::optional<std::uint32_t> Interpreter::endless_from() const {
-  return impl_->endless_from;
+  return impl_->repeat.endless_from();
 }
 
 const std::string& Interpreter::file_name(std::uint16_t file) const {

@@ -1,6 +1,7 @@
-// interp/interpreter_block.cpp: one block's words (assignments, G/M/F/axis words), G04, G74,
-// G92, program ends, declarations and string macros. Motions and arcs are in
-// interpreter_motion.cpp, # commands in hash_commands.cpp.
+// interp/interpreter_block.cpp: the order of a block's parts (run_words), assignments, G04,
+// G74, G92, program ends, declarations and string macros. The G codes and addresses are read
+// in block_words.cpp, motions and arcs in interpreter_motion.cpp, # commands in
+// hash_commands.cpp.
 #include <cmath>
 
 #include "core/number_text.hpp"
@@ -8,12 +9,9 @@
 #include "grammar/keywords.hpp"
 #include "interp/interpreter_impl.hpp"
 #include "interp/tech_functions.hpp"
-#include "interp/weights.hpp"
 
 namespace ncsim::interp {
 namespace {
-
-constexpr double kInch = 25.4;  // [mm/inch] (G70, PROG-206272267)
 
 std::string unescape(std::string_view s) {
   std::string out;
@@ -171,9 +169,8 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
   // technology functions, then the block's one action, axis-bracket commands, program end.
   if (!run_assignments(b)) return false;
   BlockWords& bw = block_words;  // reused: its vectors keep their capacity across blocks
-  bw.clear();
-  if (!read_g_codes(b, bw) || !read_addresses(b, bw) || !update_trc(bw)) return false;
-  if (!bw.weightings.empty()) apply_weightings(bw);
+  if (!word_reader.read(b, bw) || !trc_words.update(bw)) return false;
+  if (!bw.weightings.empty()) word_reader.apply_weightings(bw);
   if (bw.g74 && !check_homing(b, bw)) return false;  // before S is emitted
   // Technology functions (interp/tech_functions.hpp): MNS_SNS ones after the block's action.
   const TechWaits waits = resolve_tech(bw.tech, machine.channel.tech);
@@ -198,18 +195,6 @@ bool Interpreter::Impl::run_words(const ast::Block& b) {
     emit(line, Dwell{*waits.after, true, false});
   }
   return !bw.program_m || run_program_m(b, *bw.program_m);
-}
-
-void Interpreter::Impl::apply_weightings(const BlockWords& bw) {
-  DynamicsWeights w = modal.weights ? *modal.weights : DynamicsWeights{};
-  for (const BlockWords::Weighting& g : bw.weightings) {
-    for (std::string& note : apply_weighting(w, g.code, g.group, bw.axis_words, machine.axes))
-      warn(g.loc, "NC4314", std::move(note));
-  }
-  if (w == DynamicsWeights{})
-    modal.weights.reset();
-  else
-    modal.weights = std::make_shared<const DynamicsWeights>(w);
 }
 
 bool Interpreter::Impl::run_assignments(const ast::Block& b) {
@@ -254,331 +239,6 @@ bool Interpreter::Impl::run_assignments(const ast::Block& b) {
         }
       }
       if (!evaluator.assign(b, w.target, value)) return fail_eval();
-    }
-  }
-  return true;
-}
-
-namespace {
-
-/// The G codes that set a modal state or a flag of the block and nothing else; false: `code`
-/// is not one of them.
-bool read_flag_g(std::uint32_t code, ModalSnapshot& modal, bool& centre_absolute,
-                 Interpreter::Impl::BlockWords& bw) {
-  switch (code) {
-    case 0:
-      bw.motion_word = MotionKind::rapid;
-      return true;
-    case 1:
-      bw.motion_word = MotionKind::linear;
-      return true;
-    case 2:
-      bw.motion_word = MotionKind::arc_cw;
-      return true;
-    case 3:
-      bw.motion_word = MotionKind::arc_ccw;
-      return true;
-    case 4:
-      bw.g04 = true;
-      return true;
-    case 8:
-      modal.transition = Transition::accelerate_at_start;
-      return true;
-    case 9:
-      bw.g09 = true;
-      return true;
-    case 900:
-      modal.transition = Transition::decel_at_end;
-      return true;
-    case 901:
-      modal.transition = Transition::decel_after_end;
-      return true;
-    case 60:
-      bw.g60 = true;
-      return true;
-    case 61:
-      bw.g61 = true;
-      return true;
-    case 359:
-      modal.exact_stop = false;
-      return true;
-    case 360:
-      modal.exact_stop = true;
-      return true;
-    case 260:
-      modal.contouring = false;
-      return true;
-    case 261:
-      modal.contouring = true;
-      return true;
-    case 70:
-      modal.inch = true;
-      return true;
-    case 71:
-      modal.inch = false;
-      return true;
-    case 74:
-      bw.g74 = true;
-      return true;
-    case 90:
-      modal.incremental = false;
-      return true;
-    case 91:
-      modal.incremental = true;
-      return true;
-    case 92:
-      bw.g92 = true;
-      return true;
-    case 93:
-      modal.feed_mode = FeedMode::inverse_time;
-      return true;
-    case 94:
-      modal.feed_mode = FeedMode::per_minute;
-      return true;
-    case 161:
-      centre_absolute = true;
-      return true;
-    case 162:
-      centre_absolute = false;
-      return true;
-    case 163:
-    case 164:
-    case 165:
-    case 115:
-    case 116:
-    case 117:
-      return true;  // accepted, no effect
-    default:
-      return false;
-  }
-}
-
-bool is_weighting_g(std::uint32_t code) {
-  switch (code) {
-    case 127:  // velocity weighting per axis / group / rapid (PROG-206578955 ...)
-    case 128:
-    case 129:
-    case 130:  // acceleration weighting (PROG-206590731)
-    case 131:
-    case 230:
-    case 231:
-    case 333:
-    case 334:
-    case 132:  // ramp-time weighting
-    case 133:
-    case 134:
-    case 233:
-    case 338:
-    case 339:
-      return true;
-    default:
-      return false;
-  }
-}
-
-}  // namespace
-
-bool Interpreter::Impl::read_g_codes(const ast::Block& b, BlockWords& bw) {
-  for (const ast::Word& w : b.words) {
-    if (w.kind != ast::WordKind::g) continue;
-    if (read_flag_g(w.code, modal, centre_absolute, bw)) continue;
-    if (is_weighting_g(w.code)) {
-      if (!read_weighting(b, w, bw)) return false;
-      continue;
-    }
-    switch (w.code) {
-      case 17:
-        if (!plane_change_allowed(w.loc, Plane::xy)) return false;
-        modal.plane = Plane::xy;
-        break;
-      case 18:
-        if (!plane_change_allowed(w.loc, Plane::zx)) return false;
-        modal.plane = Plane::zx;
-        break;
-      case 19:
-        if (!plane_change_allowed(w.loc, Plane::yz)) return false;
-        modal.plane = Plane::yz;
-        break;
-      case 150:  // = #SPLINE OFF (PROG-207216267): a point in this block is not a vertex
-        if (!spline_off(w.loc)) return false;
-        break;
-      case 151:  // = #SPLINE ON (PROG-207209611)
-        if (!spline_on(w.loc)) return false;
-        break;
-      case 53:
-      case 54:
-      case 55:
-      case 56:
-      case 57:
-      case 58:
-      case 59:
-      case 159:
-        if (!offsets.select_zero_offset(b, w)) return false;
-        break;
-      case 25:
-      case 26:
-      case 40:
-      case 41:
-      case 42:
-      case 138:
-      case 139:
-        if (!trc_g_code(w, bw)) return false;  // interpreter_trc.cpp
-        break;
-      default:
-        if (grammar::is_implicit_call_g(w.code)) {
-          if (!subs.read_implicit_call(b, w)) return false;
-          break;
-        }
-        return fail(w.loc, "NC4102", "G" + std::to_string(w.code) + " is not supported by ncsim");
-    }
-  }
-  return true;
-}
-
-bool Interpreter::Impl::read_weighting(const ast::Block& b, const ast::Word& w, BlockWords& bw) {
-  // Axis-specific forms (G130 X70) give weights, not positions; the group forms
-  // (G131=50) leave the block's axis words positions. Applied after the addresses are
-  // read (run_words, interp/weights.hpp).
-  std::optional<double> group;
-  if (is_axis_weighting(w.code)) {
-    bw.weights_axes = true;
-  } else if (w.value != ast::kNoNode) {
-    group = eval(b, w.value);
-    if (!group) return false;
-  }
-  if (is_applied_weighting(w.code)) {
-    bw.weightings.push_back({w.code, group, w.loc});
-  } else if (unmodelled_g.insert(w.code).second) {
-    warn(w.loc, "NC4313",
-         "G" + std::to_string(w.code) +
-             " (dynamics weighting) is not modelled by ncsim: the axes' listed velocity, "
-             "acceleration and ramp times apply");
-  }
-  return true;
-}
-
-bool Interpreter::Impl::additional_value(const ast::Block& b, const ast::Word& w,
-                                         std::optional<double>& out) {
-  out.reset();
-  if (w.extra == ast::kNoNode) return true;
-  // TF5200 "M/H functions with optional additional information": a negative or positive
-  // integer (ncsim: within SGN32), not for the spindle functions M03/M04/M05/M19 and the gear
-  // stages M40-M45.
-  const std::string name = (w.kind == ast::WordKind::h ? "H" : "M");
-  auto code = eval(b, w.value);
-  if (!code) return false;
-  const long m = std::lround(*code);
-  if (w.kind == ast::WordKind::m &&
-      (m == 3 || m == 4 || m == 5 || m == 19 || (m >= 40 && m <= 45))) {
-    return fail(
-        w.loc, "NC4033",
-        "M" + std::to_string(m) + " takes no additional value (spindle and gear functions)");
-  }
-  auto v = eval(b, w.extra);
-  if (!v) return false;
-  if (!(std::abs(*v) <= 2147483647.0) || *v != std::trunc(*v)) {
-    return fail(b.exprs[w.extra].loc, "NC4033",
-                "the additional value of " + name + core::number_text(*code) +
-                    " must be a whole number in -2147483648..2147483647, not " +
-                    core::number_text(*v));
-  }
-  out = *v;
-  return true;
-}
-
-bool Interpreter::Impl::read_addresses(const ast::Block& b, BlockWords& bw) {
-  bw.unit = modal.inch ? kInch : 1.0;
-  const double unit = bw.unit;
-  for (const ast::Word& w : b.words) {
-    if (w.kind == ast::WordKind::g || w.kind == ast::WordKind::assignment ||
-        w.kind == ast::WordKind::macro_def) {
-      continue;
-    }
-    auto v = eval(b, w.value);
-    if (!v) return false;
-    if (!std::isfinite(*v * unit)) {  // G70: a finite inch value beyond the mm range
-      return fail(w.loc, "NC4101",
-                  "value " + core::number_text(*v) + " is out of range in millimetres (G70)");
-    }
-    switch (w.kind) {
-      case ast::WordKind::f:
-        // A feed or block time of 0 would never end the block (decision, docs/interp.md).
-        if (*v <= 0.0) {
-          return fail(
-              w.loc, "NC4030",
-              std::string(modal.feed_mode == FeedMode::inverse_time ? "block time" : "feed") +
-                  " F" + core::number_text(*v) + " must be greater than 0");
-        }
-        if (modal.feed_mode == FeedMode::inverse_time) {
-          if (!(*v <= core::kLongestTime)) {
-            return fail(w.loc, "NC4032", longest_time_text("G93 block time", *v));
-          }
-          bw.block_time = *v;  // G93: seconds (PROG-206602507)
-        } else {
-          // F in mm/min by default; P-CHAN-00108 sets another unit (F x 100 / factor mm/min)
-          feed = *v * unit * (100.0 / machine.channel.feedrate_factor) / 60.0;
-        }
-        break;
-      case ast::WordKind::e:
-        if (*v < 0.0) {  // E0 is a stop at the block end; a negative feed is none
-          return fail(w.loc, "NC4030", "end feed E" + core::number_text(*v) + " is negative");
-        }
-        bw.end_feed = *v * unit / 60.0;
-        break;
-      case ast::WordKind::s:
-        if (*v < 0.0) {  // the direction is M03/M04's, the speed a magnitude
-          return fail(w.loc, "NC4030", "spindle speed S" + core::number_text(*v) + " is negative");
-        }
-        bw.tech.push_back(Tech{TechKind::s, *v, {}});
-        break;
-      case ast::WordKind::t:
-        bw.tech.push_back(Tech{TechKind::t, *v, {}});
-        break;
-      case ast::WordKind::d:
-        bw.tech.push_back(Tech{TechKind::d, *v, {}});
-        bw.d_word = *v;  // the tool for TRC (interpreter_trc.cpp)
-        bw.d_loc = w.loc;
-        break;
-      case ast::WordKind::h:
-      case ast::WordKind::m: {
-        std::optional<double> extra;
-        if (!additional_value(b, w, extra)) return false;
-        const int code = static_cast<int>(std::lround(*v));
-        if (w.kind == ast::WordKind::h) {
-          bw.tech.push_back(Tech{TechKind::h, *v, extra});
-        } else if (code == 0 || code == 1 || code == 2 || code == 30 || code == 17 || code == 29) {
-          bw.program_m = code;  // an additional value goes to the PLC with it (not modelled)
-        } else {
-          bw.tech.push_back(Tech{TechKind::m, *v, extra});
-        }
-        break;
-      }
-      case ast::WordKind::i:
-        bw.ijk[0] = *v * unit;
-        break;
-      case ast::WordKind::j:
-        bw.ijk[1] = *v * unit;
-        break;
-      case ast::WordKind::k:
-        bw.ijk[2] = *v * unit;
-        break;
-      case ast::WordKind::r:
-        bw.radius = *v * unit;
-        break;
-      case ast::WordKind::bare_value:
-        bw.bare = *v;
-        break;
-      case ast::WordKind::axis: {
-        auto index = axis_index(w.name);
-        if (!index) {
-          return fail(w.loc, "NC4103",
-                      "axis " + std::string(w.name) + " does not exist on machine " + machine.name);
-        }
-        bw.axis_words.emplace_back(*index, *v);
-        break;
-      }
-      default:
-        break;
     }
   }
   return true;

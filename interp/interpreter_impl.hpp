@@ -1,29 +1,31 @@
 #pragma once
 // interp/interpreter_impl: the decoder's private state: the block stream, the order of a
 // block's parts, modal state, position, variables and the call stack, shared by the parts it
-// owns (ControlFlow, Subroutines, Offsets, HashCommands, AxisCommands, Seam: each in its own
-// files) and by interpreter_*.cpp (words, motion, frames, TRC). Not part of the public
-// interface.
+// owns (ControlFlow, Subroutines, Offsets, HashCommands, AxisCommands, Seam, Frames,
+// WordReader, TrcWords, RepeatWatch: each in its own files) and by interpreter_*.cpp (G04, G74,
+// G92, motion, program ends). Not part of the public interface.
 
 #include <deque>
 #include <filesystem>
 #include <initializer_list>
 #include <map>
-#include <set>
 #include <string_view>
 
 #include "core/limits.hpp"
 #include "core/number_text.hpp"
 #include "grammar/keywords.hpp"
 #include "interp/axis_commands.hpp"
+#include "interp/block_words.hpp"
 #include "interp/control_flow.hpp"
+#include "interp/frames.hpp"
 #include "interp/hash_commands.hpp"
 #include "interp/interpreter.hpp"
 #include "interp/offsets.hpp"
+#include "interp/repeat_watch.hpp"
 #include "interp/seam.hpp"
 #include "interp/subroutines.hpp"
 #include "interp/trc.hpp"
-#include "machines/kinematics.hpp"
+#include "interp/trc_words.hpp"
 #include "machines/param_table.hpp"
 
 namespace ncsim::interp {
@@ -80,11 +82,7 @@ struct Interpreter::Impl {
 
   // stream (interpreter.cpp)
   bool step();  // decodes one block; false when the stream ended
-  bool watch_for_repeat(std::uint32_t block_line);
-  std::uint64_t state_fingerprint(std::size_t& cost) const;
   const ast::Block* fetch(Pc pc);
-
-  std::set<std::uint32_t> unmodelled_g;  // dynamics weightings warned about (NC4313)
 
   bool fail(core::SourceLoc loc, std::string id, std::string message);
   bool fail_eval();
@@ -92,61 +90,9 @@ struct Interpreter::Impl {
   std::optional<double> eval(const ast::Block& b, ast::NodeIndex n);
 
   // blocks (interpreter_block.cpp)
-  /// What one block's G codes and addresses say (run_words reads them, then acts).
-  struct BlockWords {
-    std::optional<MotionKind> motion_word;  ///< G00..G03 in this block
-    bool g04 = false, g74 = false, g92 = false, g60 = false, g61 = false, g09 = false;
-    bool weights_axes = false;  ///< G130/G132/G230/G333/G338: the axis words are weights
-    double unit = 1.0;          ///< [mm per program unit] (G70: 25.4)
-    std::array<std::optional<double>, 3> ijk;  ///< [mm]
-    std::optional<double> radius, bare, end_feed, block_time;
-    std::vector<Tech> tech;
-    std::optional<int> program_m;                             ///< M00/M01/M02/M30/M17/M29
-    std::vector<std::pair<std::uint8_t, double>> axis_words;  ///< machine index, value
-    std::optional<TrcSide> trc_side;                          ///< G40/G41/G42 in this block
-    core::SourceLoc trc_loc;                                  ///< where that G code stands
-    std::optional<double> d_word;                             ///< D in this block
-    core::SourceLoc d_loc;
-    struct Weighting {
-      std::uint32_t code = 0;       ///< G127 .. G233 (interp/weights.hpp)
-      std::optional<double> group;  ///< the group form's value [%]
-      core::SourceLoc loc;
-    };
-    std::vector<Weighting> weightings;  ///< applied after the addresses (apply_weightings)
-    void clear() {
-      motion_word.reset();
-      g04 = g74 = g92 = g60 = g61 = g09 = weights_axes = false;
-      unit = 1.0;
-      ijk = {};
-      radius.reset();
-      bare.reset();
-      end_feed.reset();
-      block_time.reset();
-      tech.clear();
-      program_m.reset();
-      axis_words.clear();
-      trc_side.reset();
-      d_word.reset();
-      weightings.clear();
-    }
-  };
   BlockWords block_words;               // run_words' scratch (one block at a time)
   bool run_words(const ast::Block& b);  // the order of a block's parts; calls the pieces below
   bool run_assignments(const ast::Block& b);
-  void apply_weightings(const BlockWords& bw);  // G127..G233 into modal.weights
-  bool read_g_codes(const ast::Block& b, BlockWords& bw);
-  bool read_weighting(const ast::Block& b, const ast::Word& w, BlockWords& bw);  // G127..G339
-  bool read_addresses(const ast::Block& b, BlockWords& bw);
-  /// The additional value of M/H word `w` (`M200=1200`), nullopt if none; NC4033 if it is not
-  /// a whole number or its function takes none.
-  bool additional_value(const ast::Block& b, const ast::Word& w, std::optional<double>& out);
-  // tool radius compensation (interpreter_trc.cpp, docs/trc.md)
-  bool trc_g_code(const ast::Word& w, BlockWords& bw);      // G25/G26/G40/G41/G42/G138/G139
-  bool plane_change_allowed(core::SourceLoc at, Plane to);  // 20133 while TRC is active
-  bool update_trc(const BlockWords& bw);                    // D and G40/G41/G42 of the block
-  std::optional<double> tool_radius(core::SourceLoc at);    // of the D in force
-  std::optional<double> d_number;                           // the D in force (none: D0)
-  core::SourceLoc d_loc;                                    // where it was programmed
   trc::Compensator trc_filter;  // between pending and the consumer (Interpreter::next)
   std::deque<Command> trc_out;  // commands the filter released
   bool run_dwell(const ast::Block& b, const BlockWords& bw);     // G04
@@ -179,14 +125,6 @@ struct Interpreter::Impl {
   std::optional<std::uint8_t> axis_index(std::string_view name) const;
   ModalSnapshot snapshot() const;
 
-  // frames (interpreter_frames.cpp)
-  CoordFrame frame() const;  // the frame `position` is in
-  Eigen::Vector3d xyz_of(const AxisValues& values) const;
-  void set_xyz(AxisValues& values, const Eigen::Vector3d& p) const;
-  void rebase_cs(const machines::Frame& before);   // after a #CS ON/OFF changed the chain
-  bool rebase_trafo(bool on, core::SourceLoc at);  // before modal.kinematics_on changes
-  AxisValues sync_rebased(bool in) const;          // position after #SYNC IN/OUT, travel 0
-
   // run-time state the seam (seam.hpp) keeps for the whole decoder
   bool resumed = false;       // the barrier before the block at pc was answered
   AxisMask unknown_axes = 0;  // axes whose actual position only the run time knows
@@ -217,21 +155,12 @@ struct Interpreter::Impl {
   HashCommands hash{*this};           // # commands (hash_commands.hpp)
   AxisCommands axis_commands{*this};  // INDP, MC_* (axis_commands.hpp)
   Seam seam{*this};                   // barriers and the run time's answers (seam.hpp)
+  WordReader word_reader{*this};      // a block's G codes and addresses (block_words.hpp)
+  TrcWords trc_words{*this};          // G40/G41/G42, D: the TRC state (trc_words.hpp)
   std::deque<Command> pending;
   std::uint64_t blocks_without_motion = 0;
-  // Repeat detection (Brent's cycle finding over decoder states, docs/interp.md "Endless
-  // programs"): the state saved at block `at` of the run, compared whenever pc returns to it.
-  struct RepeatWatch {
-    Pc pc{0xFFFF, 0};
-    std::uint32_t line = 0;
-    std::uint64_t fingerprint = 0;
-    std::uint64_t at = 0;      // blocks decoded when saved
-    std::uint64_t period = 1;  // blocks until the next save
-    std::uint64_t credit = 0;  // blocks to decode before the next (costly) comparison
-  } repeat;
-  std::uint64_t decoded = 0;  // blocks decoded in this run
-  std::optional<std::uint32_t> endless_from;
-  std::uint32_t line = 0;  // line of the block being decoded
+  RepeatWatch repeat{*this};  // endless programs (repeat_watch.hpp)
+  std::uint32_t line = 0;     // line of the block being decoded
   std::uint16_t current_file = 0;
 
   Variables vars;
@@ -249,7 +178,6 @@ struct Interpreter::Impl {
   std::optional<double> feed;     // [mm/s]
   bool motion_since_sync = true;  // first motion after #SYNC IN not yet seen
   std::optional<int> kin_id;
-  std::unique_ptr<machines::Kinematics> kinematic;  // built at #TRAFO ON for kin_id
   machines::CsStack cs;
   SplineType spline_type = SplineType::akima;
   struct OpenSpline {
@@ -258,9 +186,9 @@ struct Interpreter::Impl {
     std::uint32_t distinct = 1;  // of them, those unlike the one before (the planner drops
                                  // a repeated vertex: planner/spline.cpp kSamePoint)
   };
-  std::optional<OpenSpline> spline;                  // between #SPLINE ON and OFF
-  std::array<std::optional<std::uint8_t>, 3> xyz{};  // machine indices of X, Y, Z
-  std::string scratch_text;
+  std::optional<OpenSpline> spline;        // between #SPLINE ON and OFF
+  Frames::Xyz xyz{};                       // machine indices of X, Y, Z
+  Frames frames{machine, cs, modal, xyz};  // the frame of `position`, re-basing (frames.hpp)
 };
 
 }  // namespace ncsim::interp

@@ -1,6 +1,6 @@
 // interp/interpreter_motion.cpp: a block's motion: the target from the axis words, the Motion
 // command in the current frame with its start (the re-based current position, see
-// interpreter_frames.cpp), arc centres from I/J/K or R, spline points.
+// interp/frames.cpp), arc centres from I/J/K or R, spline points.
 #include <cmath>
 #include <numbers>
 
@@ -23,6 +23,7 @@ bool same_spline_point(const AxisValues& a, const AxisValues& b) {
 bool Interpreter::Impl::run_block_motion(const ast::Block& b, const BlockWords& bw) {
   if (bw.axis_words.empty() && !bw.motion_word && !bw.g60) return true;  // no motion here
   if (bw.weights_axes) return true;  // G130 X70: the axis words were weights
+  offsets.follow_cs_base();
   AxisValues target = position;
   AxisMask programmed = 0;
   if (bw.motion_word) motion = *bw.motion_word;
@@ -31,7 +32,7 @@ bool Interpreter::Impl::run_block_motion(const ast::Block& b, const BlockWords& 
     // #SCALE scales the programmed value about the active zero point; the zero offset then
     // takes effect at the next absolute value (PROG-206487307: G91 values do not move by it).
     const double v = value * (rotary ? 1.0 : bw.unit) * offsets.scale_of(axis);
-    target[axis] = modal.incremental ? position[axis] + v : v + offsets.zero_offset(axis);
+    target[axis] = modal.incremental ? position[axis] + v : v + offsets.axis_offset(axis);
     if (!std::isfinite(target[axis])) {  // G91: the sum left the range of a double
       return fail(b.loc, "NC4101",
                   "target of axis " + machine.axes[axis].name + " is not a finite number");
@@ -64,7 +65,7 @@ bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const A
   }
   if (spline && !arc) {
     if (!feed) return fail(b.loc, "20008", "the spline needs a feed F");
-    emit(line, SplinePoint{spline->points, frame(), target, programmed, *feed});
+    emit(line, SplinePoint{spline->points, frames.frame(), target, programmed, *feed});
     ++spline->points;
     if (!same_spline_point(position, target)) ++spline->distinct;
     position = target;
@@ -83,7 +84,7 @@ bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const A
   }
   Motion m;
   m.kind = kind;
-  m.frame = frame();
+  m.frame = frames.frame();
   m.start = position;
   m.end = target;
   m.programmed = programmed;
@@ -170,7 +171,7 @@ std::optional<Arc> Interpreter::Impl::make_arc(const ast::Block& b, MotionKind k
     // G161: absolute centre coordinates, shifted by the zero offset as axis values are.
     const auto shift = [&](int p) {
       const auto& a = xyz[static_cast<std::size_t>(p)];
-      return a ? offsets.zero_offset(*a) : 0.0;
+      return a ? offsets.axis_offset(*a) : 0.0;
     };
     c1 = centre_absolute ? (o1 ? *o1 + shift(p1) : s1) : s1 + o1.value_or(0.0);
     c2 = centre_absolute ? (o2 ? *o2 + shift(p2) : s2) : s2 + o2.value_or(0.0);

@@ -35,6 +35,40 @@ double Offsets::zero_offset(std::uint8_t axis) const {
   return preset + ip_.vars.global_element(zero_names[axis], zero_group);
 }
 
+bool Offsets::cs_carries_offsets() const {
+  return ip_.cs.active_count() > 0 && !ip_.modal.kinematics_on && !ip_.modal.synchronised;
+}
+
+double Offsets::axis_offset(std::uint8_t axis) const {
+  if (cs_carries_offsets()) {
+    for (const auto& a : ip_.xyz)
+      if (a == axis) return 0.0;
+  }
+  return zero_offset(axis);
+}
+
+std::array<double, 3> Offsets::cs_base() const {
+  std::array<double, 3> base{};
+  if (ip_.modal.kinematics_on || ip_.modal.synchronised) return base;
+  for (std::size_t k = 0; k < 3; ++k)
+    if (ip_.xyz[k]) base[k] = zero_offset(*ip_.xyz[k]);
+  return base;
+}
+
+void Offsets::follow_cs_base() {
+  if (!cs_carries_offsets()) return;
+  const std::array<double, 3> base = cs_base();
+  if (Eigen::Vector3d(base[0], base[1], base[2]) == ip_.cs.base()) return;
+  const machines::Frame before = ip_.cs.active_frame();
+  ip_.cs.set_base({base[0], base[1], base[2]});
+  ip_.frames.rebase_cs(before, ip_.position);
+  SelectCs sel;
+  sel.op = CsOp::base;
+  sel.base = base;
+  sel.active_count = static_cast<std::uint8_t>(ip_.cs.active_count());
+  ip_.emit(ip_.line, sel);
+}
+
 std::optional<double> Offsets::axis_item(const ast::Block& b, const ast::Item& it,
                                          const char* command, std::uint8_t& axis) {
   const auto index = ip_.axis_index(it.keyword);
@@ -96,9 +130,11 @@ bool Offsets::select_zero_offset(const ast::Block& b, const ast::Word& w) {
 }
 
 bool Offsets::check_offsets_frame(const ast::Block& b, AxisMask programmed) {
-  // The zero offset shifts the axes; under a #CS frame or #TRAFO the programmed coordinates are
-  // not axis values, so the shift would need the chain below them, which ncsim does not model.
-  if (mcs_on || (ip_.cs.active_count() == 0 && !ip_.modal.kinematics_on && !ip_.modal.synchronised))
+  // The zero offset shifts the axes; under #TRAFO or #SYNC IN the programmed coordinates are
+  // not axis values, so the shift would need the chain below them, which ncsim does not model
+  // there. Under #CS alone the chain carries the X/Y/Z offsets (follow_cs_base).
+  if (mcs_on || cs_carries_offsets() ||
+      (ip_.cs.active_count() == 0 && !ip_.modal.kinematics_on && !ip_.modal.synchronised))
     return true;
   for (std::size_t i = 0; i < ip_.machine.axes.size() && i < kMaxAxes; ++i) {
     if (((programmed >> i) & 1u) == 0) continue;
@@ -107,7 +143,7 @@ bool Offsets::check_offsets_frame(const ast::Block& b, AxisMask programmed) {
                "not supported: a zero offset (G" +
                    std::to_string(53 + std::min<std::size_t>(zero_group, 6)) + ") of axis " +
                    ip_.machine.axes[i].name +
-                   " together with #CS, #TRAFO or #SYNC IN; select G53 first");
+                   " together with #TRAFO or #SYNC IN; select G53 first");
       return false;
     }
   }

@@ -29,7 +29,18 @@ class Offsets {
 
   void init_zero_offsets();                     // V.G.NP[i].V.<axis> from the machine
   double zero_offset(std::uint8_t axis) const;  // the active offset of `axis` [mm | deg]
-  double scale_of(std::uint8_t axis) const;     // its #SCALE factor (1 when off)
+  /// What an absolute value of `axis` is shifted by: zero_offset(), except X/Y/Z while the
+  /// #CS chain carries their offsets as its base (0 then).
+  double axis_offset(std::uint8_t axis) const;
+  /// Under #CS (no #TRAFO, not synchronised) the X/Y/Z zero offsets are the chain's base.
+  bool cs_carries_offsets() const;
+  /// The X/Y/Z zero offsets [mm] a #CS selection puts below the chain (0 where it cannot).
+  std::array<double, 3> cs_base() const;
+  /// Before a motion or a #CS command: when the X/Y/Z offsets changed below an active chain
+  /// (G54.., V.G.NP[i]), the stack takes the new base, the position is re-based (the tool
+  /// stays, its coordinates change) and the adapter follows (SelectCs CsOp::base).
+  void follow_cs_base();
+  double scale_of(std::uint8_t axis) const;  // its #SCALE factor (1 when off)
   bool select_zero_offset(const grammar::ast::Block& b,
                           const grammar::ast::Word& w);  // G53..G59, G159=n
   /// NC4102 when a programmed axis has a zero offset under #CS, #TRAFO or #SYNC IN.

@@ -173,6 +173,69 @@ TEST_CASE("L CYCLE [NAME=.. @P1=..] calls a cycle file with its parameters") {
   CHECK(field(r.full[0], "Y") == doctest::Approx(4));
 }
 
+TEST_CASE("a text as a cycle parameter is 'not supported', not a missing value") {
+  Folder f("lcycle_text");
+  f.write("pocket.cyc", "%pocket\nG01 X1 F100\nM17\n");
+  f.write("main.nc", "%main\nL CYCLE [NAME=pocket.cyc @P1=\"left\" @P2=4]\nM30\n");
+  const test::Run r = run_on(cycle_machine(), f.dir / "main.nc");
+  CHECK(r.error_id == "NC4304");
+  CHECK(r.error_message.find("not supported: a text as cycle parameter @P1") != std::string::npos);
+  f.write("flag.nc", "%flag\nL CYCLE [NAME=pocket.cyc @P1]\nM30\n");
+  CHECK(run_on(cycle_machine(), f.dir / "flag.nc").error_message.find("needs a value") !=
+        std::string::npos);
+}
+
+/// The trace lines of `r` that are motions (G00 / G01 ...), in order.
+std::vector<std::string> motions(const test::Run& r) {
+  std::vector<std::string> out;
+  for (const std::string& line : r.full)
+    if (line.find(": G0") != std::string::npos) out.push_back(line);
+  return out;
+}
+
+TEST_CASE("M6 calls m6_prog_file instead of being an M function; #FILE NAME [M6=..] overrides") {
+  // P-CHAN-00118: "M6 is not treated as a normal M function but becomes a global subroutine
+  // call analogous to 'L ...'", executed as the last action at block end.
+  Folder f("m6call");
+  f.write("change.nc", "%change\nG00 Z50\nM17\n");
+  f.write("other.nc", "%other\nG00 Z70\nM17\n");
+  f.write("main.nc",
+          "%main\nG00 X1 M6\nG00 X2\n#FILE NAME [M6=\"other.nc\" MSG=\"log.txt\"]\nM6\nM30\n");
+  machines::Machine m = cycle_machine();
+  m.channel.m6_prog_file = "change.nc";
+  const test::Run r = run_on(m, f.dir / "main.nc");
+  REQUIRE(r.error_id.empty());
+  const std::vector<std::string> mv = motions(r);
+  REQUIRE(mv.size() == 4);
+  CHECK(field(mv[0], "X") == doctest::Approx(1));   // the block's motion first
+  CHECK(field(mv[1], "Z") == doctest::Approx(50));  // then the subroutine
+  CHECK(field(mv[2], "X") == doctest::Approx(2));
+  CHECK(field(mv[3], "Z") == doctest::Approx(70));  // #FILE NAME's subroutine
+  CHECK_FALSE(has_line(r, "TECH M=6"));             // no M function
+  // Not configured, the first M6 is an M function; after #FILE NAME the second one calls.
+  const test::Run plain = run_on(cycle_machine(), f.dir / "main.nc");
+  REQUIRE(plain.error_id.empty());
+  CHECK(has_line(plain, "TECH M=6"));
+  CHECK(motions(plain).size() == 3);
+}
+
+TEST_CASE("a D word also calls d_prog_file (P-CHAN-00429); with G80 in the block it is NC4308") {
+  Folder f("dcall");
+  f.write("tooldata.nc", "%tooldata\nG00 Y9\nM17\n");
+  f.write("main.nc", "%main\nG00 X1 D0\nM30\n");
+  f.write("two.nc", "%two\nG80 D0\nM30\n");
+  machines::Machine m = cycle_machine();
+  m.channel.d_prog_file = "tooldata.nc";
+  const test::Run r = run_on(m, f.dir / "main.nc");
+  REQUIRE(r.error_id.empty());
+  const std::vector<std::string> mv = motions(r);
+  REQUIRE(mv.size() == 2);
+  CHECK(field(mv[0], "X") == doctest::Approx(1));
+  CHECK(field(mv[1], "Y") == doctest::Approx(9));
+  CHECK(has_line(r, "TECH D=0"));  // the D word itself still acts
+  CHECK(run_on(m, f.dir / "two.nc").error_id == "NC4308");
+}
+
 TEST_CASE("two implicit calls in one block are NC4308; #FILE NAME of another G code is NC4309") {
   CHECK(run("%t\nG80 G81\nM30\n").error_id == "NC4308");
   CHECK(run("%t\n#FILE NAME [G01=\"x.nc\"]\nM30\n").error_id == "NC4309");

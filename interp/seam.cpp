@@ -147,7 +147,7 @@ bool Seam::emit_barrier(const ast::Block& b, bool sync_in, AxisMask position_nee
   if (position_needed != 0) {
     barrier.needs |= static_cast<std::uint8_t>(BarrierNeed::position);
     barrier.axes = position_needed;
-    barrier.frame = ip_.frame();
+    barrier.frame = ip_.frames.frame();
   }
   if (barrier.needs == 0) return false;
   ip_.current_file = ip_.pc.file;
@@ -249,7 +249,7 @@ RunState Seam::decode_only(const Barrier& barrier) const {
   }
   s.latch = 0.0;
   s.frame = barrier.frame;
-  s.position = ip_.position;  // programmed, re-based with the belt travel 0 (sync_rebased)
+  s.position = ip_.position;  // programmed, re-based with the belt travel 0 (Frames::sync_rebased)
   return s;
 }
 

@@ -204,10 +204,39 @@ bool Subroutines::subroutine_return() {
   return true;
 }
 
+std::string Subroutines::call_name(const CycleCall& c) {
+  if (!c.word.empty()) return c.word;
+  return c.g_code != 0 ? "G" + std::to_string(c.g_code) : "L CYCLE";
+}
+
+bool Subroutines::read_word_call(const char* word, core::SourceLoc at, bool& failed) {
+  // P-CHAN-00118 / P-CHAN-00429: the channel's name, or #FILE NAME's until the program end;
+  // neither: M6 is an M function and D a plain D word.
+  const bool m6 = std::string_view(word) == "M6";
+  const std::optional<std::string>& over = m6 ? m6_file : d_file;
+  const std::string& listed =
+      m6 ? ip_.machine.channel.m6_prog_file : ip_.machine.channel.d_prog_file;
+  const std::string name = over ? *over : listed;
+  if (name.empty()) return false;
+  if (cycle_call) {
+    failed = true;
+    ip_.fail(at, "NC4308",
+             std::string(word) + " after " + call_name(*cycle_call) +
+                 ": one implicit subroutine call per block");
+    return false;
+  }
+  CycleCall c;
+  c.word = word;
+  c.name = name;
+  c.loc = at;
+  cycle_call = std::move(c);
+  return true;
+}
+
 bool Subroutines::read_implicit_call(const ast::Block& b, const ast::Word& w) {
   if (cycle_call) {
     return ip_.fail(w.loc, "NC4308",
-                    "G" + std::to_string(w.code) + " after G" + std::to_string(cycle_call->g_code) +
+                    "G" + std::to_string(w.code) + " after " + call_name(*cycle_call) +
                         ": one implicit subroutine call per block");
   }
   CycleCall c;
@@ -248,6 +277,11 @@ bool Subroutines::read_cycle_call(const ast::Block& b, const ast::Call& c) {
                       "not supported: " + std::string(it.keyword) +
                           " in L CYCLE (ncsim runs a cycle once, at its call)");
     }
+    if (it.value == ast::kNoNode && it.text.data() != nullptr) {  // @P1="text" (PROG-206859019)
+      return ip_.fail(it.loc, "NC4304",
+                      "not supported: a text as cycle parameter " + std::string(it.keyword) +
+                          " (ncsim's @P parameters are numbers)");
+    }
     if (it.value == ast::kNoNode) {
       return ip_.fail(it.loc, "NC4304", std::string(it.keyword) + " needs a value (@P1=<expr>)");
     }
@@ -269,10 +303,11 @@ bool Subroutines::read_cycle_call(const ast::Block& b, const ast::Call& c) {
 bool Subroutines::run_cycle_call() {
   CycleCall c = std::move(*cycle_call);
   cycle_call.reset();
-  const std::string what = c.g_code != 0 ? "G" + std::to_string(c.g_code) : "L CYCLE";
+  const std::string what = call_name(c);
   // The skipped-call warning NC4307, once per G code or cycle name (--missing-cycles skip).
   const auto skip = [&](const std::string& why) {
-    if (skipped_cycles.insert(c.g_code != 0 ? what : what + " " + c.name).second) {
+    if (skipped_cycles.insert(c.g_code != 0 || !c.word.empty() ? what : what + " " + c.name)
+            .second) {
       ip_.warn(c.loc, "NC4307", what + " skipped (--missing-cycles skip): " + why);
     }
     ip_.blocks_without_motion = 0;
@@ -301,7 +336,7 @@ bool Subroutines::run_cycle_call() {
                         c.name + ")");
   }
   // A local subroutine of that name (LL CYCLE) comes first.
-  if (c.g_code == 0) {
+  if (c.g_code == 0 && c.word.empty()) {
     auto& subs = ip_.files[ip_.pc.file]->local_subs;
     if (auto it = subs.find(grammar::to_upper(c.name)); it != subs.end()) {
       enter_level({ip_.pc.file, it->second + 1}, it->second);
@@ -335,8 +370,10 @@ bool Subroutines::run_cycle_call() {
   if (!found) {
     const std::string why =
         "its file " + c.name + " is not in " + looked +
-        (c.g_code != 0 ? " (configured by " + configuring_parameter(c.g_code) + " or #FILE NAME)"
-                       : "") +
+        (c.g_code != 0    ? " (configured by " + configuring_parameter(c.g_code) + " or #FILE NAME)"
+         : c.word == "M6" ? " (configured by m6_prog_file (P-CHAN-00118) or #FILE NAME)"
+         : c.word == "D"  ? " (configured by d_prog_file (P-CHAN-00429) or #FILE NAME)"
+                          : "") +
         "; give the folder with --cycles DIR";
     if (ip_.options.skip_missing_cycles) return skip(why);
     return ip_.fail(c.loc, "NC4301", what + " cannot be run: " + why);
@@ -352,16 +389,31 @@ bool Subroutines::run_cycle_call() {
   }
   const std::uint32_t start = ip_.files[index]->main_start;
   enter_level({index, start}, start == 0 ? 0 : start - 1);
-  ip_.vars.set_cycle_params(std::move(c.params));
+  // M6 and D call "analogous to L ..." (P-CHAN-00118): a subroutine, not a cycle.
+  if (c.word.empty()) ip_.vars.set_cycle_params(std::move(c.params));
   return true;
 }
 
 bool Subroutines::hash_file_name(const ast::Block& b, const ast::HashCommand& h) {
-  // #FILE NAME [G80="x.nc" G805="y.nc"]: the subroutine of an implicit call until the program
-  // end (P-CHAN-00160 remarks); an empty name removes the override.
+  // #FILE NAME [G80="x.nc" G805="y.nc" M6="t.nc" D="d.nc" MSG="m.txt"] (PROG-207504523): the
+  // subroutine of an implicit call until the program end (P-CHAN-00160, 00118, 00429
+  // remarks); an empty name removes the override. MSG names #MSG SAVE's file, which ncsim
+  // does not write (accepted, shown in trace).
   for (std::uint32_t k = 0; k < h.item_count && k < b.items.size(); ++k) {
     const ast::Item& it = b.items[k];
     const std::string_view kw = it.keyword;
+    const bool m6 = grammar::iequals(kw, "M6");
+    if (m6 || grammar::iequals(kw, "D") || grammar::iequals(kw, "MSG")) {
+      if (it.kind != ast::ItemKind::keyword || (it.text.empty() && it.value != ast::kNoNode)) {
+        return ip_.fail(
+            it.loc, "NC4309",
+            std::string(kw) + " needs a quoted file name (" + std::string(kw) + "=\"x.nc\")");
+      }
+      if (grammar::iequals(kw, "MSG")) continue;
+      std::optional<std::string>& over = m6 ? m6_file : d_file;
+      over = std::string(it.text);
+      continue;
+    }
     std::uint32_t code = 0;
     bool digits = kw.size() >= 2 && grammar::ascii_upper(kw[0]) == 'G';
     for (std::size_t j = 1; digits && j < kw.size(); ++j) {
@@ -371,7 +423,8 @@ bool Subroutines::hash_file_name(const ast::Block& b, const ast::HashCommand& h)
     if (!digits || kw.size() > 4 || !grammar::is_implicit_call_g(code)) {
       return ip_.fail(
           it.loc, "NC4309",
-          "#FILE NAME names the subroutine of G80-G89 or G800-G839, not '" + std::string(kw) + "'");
+          "#FILE NAME names the subroutine of G80-G89, G800-G839, M6 or D, or MSG's file, not '" +
+              std::string(kw) + "'");
     }
     if (it.kind != ast::ItemKind::keyword || (it.text.empty() && it.value != ast::kNoNode)) {
       return ip_.fail(it.loc, "NC4309",

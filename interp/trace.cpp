@@ -202,7 +202,7 @@ void put(std::string& out, const SyncOut& b, const machines::Machine& /*m*/) {
 }
 
 void put(std::string& out, const SelectCs& b, const machines::Machine& /*m*/) {
-  static constexpr const char* kOps[] = {"DEF", "ON", "OFF", "OFF_ALL"};
+  static constexpr const char* kOps[] = {"DEF", "ON", "OFF", "OFF_ALL", "BASE"};
   out += " CS ";
   out += kOps[static_cast<int>(b.op)];
   if (b.id) out += " id=" + std::to_string(*b.id);
@@ -211,6 +211,14 @@ void put(std::string& out, const SelectCs& b, const machines::Machine& /*m*/) {
     for (std::size_t k = 0; k < 6; ++k) {
       if (k != 0) out += ',';
       num(out, (*b.values)[k]);
+    }
+    out += ']';
+  }
+  if (b.op == CsOp::base || b.base != std::array<double, 3>{}) {
+    out += " base=[";
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (k != 0) out += ',';
+      num(out, b.base[k]);
     }
     out += ']';
   }

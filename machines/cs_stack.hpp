@@ -12,6 +12,10 @@
 // chained; the chain keeps the frame a system had when it was activated (a later DEF of the
 // same id applies from its next activation); the frame of a system is built with the rotation
 // sequence in force when it is defined.
+// The base (docs/interp.md "Zero offsets under #CS"): a CS is defined relative to the workpiece
+// coordinate system, whose position in the MCS the zero offset, #PSET and G92 give (TF5200
+// "Definition of a machining coordinate system"); the X/Y/Z offsets in force are the base the
+// chain sits on while a system is active.
 // Invariants: stored().size() <= kMaxStored, active_count() <= kMaxActive.
 
 #include <optional>
@@ -51,7 +55,12 @@ class CsStack {
   /// #CS MODE ON [ROTATION_SEQUENCE ..]: applies to systems defined afterwards.
   void set_rotation_sequence(RotationSequence sequence) { sequence_ = sequence; }
 
-  /// Composition of the active systems: first activated is outermost (maps PCS -> PCS1).
+  /// The X/Y/Z zero offsets [mm] (MCS) the active chain sits on.
+  void set_base(const Eigen::Vector3d& base_mm) { base_mm_ = base_mm; }
+  const Eigen::Vector3d& base() const { return base_mm_; }
+
+  /// Composition of the active systems on their base: first activated is outermost (maps
+  /// PCS -> PCS1); the identity when none is active.
   Frame active_frame() const;
   std::size_t active_count() const { return active_.size(); }
   std::size_t stored_count() const { return stored_.size(); }
@@ -75,8 +84,9 @@ class CsStack {
   RotationSequence sequence_;
   std::vector<Stored> stored_;
   std::vector<Active> active_;
-  int last_defined_ = 0;     // 0: none yet
-  int next_automatic_ = -1;  // automatic ids count downwards
+  Eigen::Vector3d base_mm_ = Eigen::Vector3d::Zero();  // [mm]
+  int last_defined_ = 0;                               // 0: none yet
+  int next_automatic_ = -1;                            // automatic ids count downwards
 };
 
 }  // namespace ncsim::machines

@@ -107,145 +107,167 @@ core::Diagnostic make_diag(core::Severity severity, const std::string& file, cor
   return core::Diagnostic{severity, file, loc, std::move(id), std::move(message)};
 }
 
+namespace {
+
+/// A list's errors, added to the diagnostics with the list's file.
+struct ErrorSink {
+  core::DiagnosticList& diagnostics;
+  const std::string& file;
+  void operator()(core::SourceLoc loc, const char* id, std::string message) const {
+    diagnostics.add(make_diag(core::Severity::error, file, loc, id, std::move(message)));
+  }
+};
+
+// The key of a written entry whose value the list parser rejected, with its indices.
+std::string rejected_key(const ParamSpec& spec, const ListEntry& entry) {
+  std::string key;
+  std::size_t index_no = 0;
+  for (const char c : spec.key) {
+    key += c;
+    if (c == '[' && index_no < entry.indices.size()) {
+      key += std::to_string(entry.indices[index_no++]);
+    }
+  }
+  return key;
+}
+
+// A key the list's table lacks: retired (NC3015 / NC3013), the other list's (NC3011) or
+// unknown (NC3002, with the closest known key).
+void report_unknown(ListKind kind, const ListEntry& entry, const ErrorSink& error) {
+  const ListKind other = kind == ListKind::axis ? ListKind::channel : ListKind::axis;
+  const char* list_name = kind == ListKind::axis      ? "axis"
+                          : kind == ListKind::channel ? "channel"
+                                                      : "zero-offset";
+  if (const RetiredKey* retired = find_retired(kind, entry.pattern)) {
+    const bool replaced = retired->diagnostic == "NC3015";
+    error(entry.key_loc, std::string(retired->diagnostic).c_str(),
+          (replaced ? entry.key + " is no longer read (a retired ncsim key): "
+                    : "not supported: " + entry.key + "; ") +
+              std::string(retired->use_instead));
+  } else if (const ParamSpec* elsewhere = find_param(other, entry.pattern)) {
+    error(entry.key_loc, "NC3011",
+          entry.key + " (" + std::string(elsewhere->id) + ") is a " +
+              (other == ListKind::axis ? "axis" : "channel") +
+              " parameter; it cannot be set in the " + list_name + " list");
+  } else {
+    error(entry.key_loc, "NC3002",
+          "unknown parameter '" + entry.key + "' in the " + list_name + " list" +
+              suggestion(kind, entry.pattern));
+  }
+}
+
+// The normalised key (indices without leading zeros); nullopt after NC3009, an index outside
+// the table's bounds.
+std::optional<std::string> checked_key(const ParamSpec& spec, const ListEntry& entry,
+                                       const ErrorSink& error) {
+  std::string key;
+  std::size_t index_no = 0;
+  for (std::size_t i = 0; i < spec.key.size(); ++i) {
+    key += spec.key[i];
+    if (spec.key[i] == '[') {
+      const int index = entry.indices[index_no];
+      const int max = index_no == 0 ? spec.index_max_0 : spec.index_max_1;
+      if (index > max) {
+        error(entry.key_loc, "NC3009",
+              entry.key + " (" + std::string(spec.id) + "): index " + std::to_string(index) +
+                  " is outside 0.." + std::to_string(max));
+        return std::nullopt;
+      }
+      key += std::to_string(index);
+      ++index_no;
+    }
+  }
+  return key;
+}
+
+// The value converted by the parameter's type into `value.number`; false after NC3003.
+bool convert(const ParamSpec& spec, const ListEntry& entry, const std::string& ref,
+             StoredValue& value, const ErrorSink& error) {
+  switch (spec.type) {
+    case ValueType::word:
+      if (is_identifier(entry.value)) return true;
+      error(entry.value_loc, "NC3003",
+            ref + " expects a name (letters, digits, '_'), found '" + entry.value + "'");
+      return false;
+    case ValueType::flag_set:
+      return true;  // flag names are checked where they are interpreted
+    case ValueType::file_name:
+      // TF5200 P-CHAN-00160: STRING, at most 83 characters (the list's token has no blanks)
+      if (!entry.value.empty() && entry.value.size() <= 83) return true;
+      error(entry.value_loc, "NC3003",
+            ref + " expects a file name of 1 to 83 characters, found '" + entry.value + "'");
+      return false;
+    case ValueType::real64:
+      if (const auto v = parse_real(entry.value)) {
+        value.number = *v;
+        return true;
+      }
+      error(entry.value_loc, "NC3003",
+            ref + " expects a number (REAL64), found '" + entry.value + "'");
+      return false;
+    default:
+      if (const auto v = parse_integer(entry.value)) {
+        value.number = *v;
+        return true;
+      }
+      error(entry.value_loc, "NC3003",
+            ref + " expects an integer (" + std::string(type_name(spec.type)) + "), found '" +
+                entry.value + "'");
+      return false;
+  }
+}
+
+// NC3004 for a number outside the parameter's range or an axis mode with undefined bits.
+bool in_range(const ParamSpec& spec, const ListEntry& entry, const std::string& ref, double number,
+              const ErrorSink& error) {
+  const bool numeric = spec.type != ValueType::word && spec.type != ValueType::flag_set &&
+                       spec.type != ValueType::file_name;
+  if (numeric && (number < spec.min || number > spec.max)) {
+    error(entry.value_loc, "NC3004",
+          ref + " = " + entry.value + " is outside its range " + range_text(spec));
+    return false;
+  }
+  if (spec.type == ValueType::axis_mode) {
+    const auto bits = static_cast<std::uint32_t>(number);
+    if ((bits & ~axis_mode::kKnownBits) != 0U) {
+      char buf[16];
+      std::snprintf(buf, sizeof buf, "0x%08X", bits & ~axis_mode::kKnownBits);
+      error(entry.value_loc, "NC3004",
+            ref + " = " + entry.value + " sets undefined mode bits " + buf);
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
 void ListValues::read(const core::SourceFile& source, core::DiagnosticList& diagnostics) {
   ListParse parsed = parse_list(source);
   for (core::Diagnostic& d : parsed.diagnostics)
     diagnostics.add(std::move(d));
-  const ListKind other = kind_ == ListKind::axis ? ListKind::channel : ListKind::axis;
-  const char* list_name = kind_ == ListKind::axis      ? "axis"
-                          : kind_ == ListKind::channel ? "channel"
-                                                       : "zero-offset";
-  auto error = [&](core::SourceLoc loc, const char* id, std::string message) {
-    diagnostics.add(make_diag(core::Severity::error, file_, loc, id, std::move(message)));
-  };
-
+  const ErrorSink error{diagnostics, file_};
   for (const ListEntry& entry : parsed.rejected) {
-    const ParamSpec* spec = find_param(kind_, entry.pattern);
-    if (spec == nullptr) continue;
-    std::string key;
-    std::size_t index_no = 0;
-    for (const char c : spec->key) {
-      key += c;
-      if (c == '[' && index_no < entry.indices.size()) {
-        key += std::to_string(entry.indices[index_no++]);
-      }
+    if (const ParamSpec* spec = find_param(kind_, entry.pattern)) {
+      rejected_.push_back(rejected_key(*spec, entry));
     }
-    rejected_.push_back(std::move(key));
   }
-
   for (const ListEntry& entry : parsed.entries) {
     const ParamSpec* spec = find_param(kind_, entry.pattern);
     if (spec == nullptr) {
-      if (const RetiredKey* retired = find_retired(kind_, entry.pattern)) {
-        const bool replaced = retired->diagnostic == "NC3015";
-        error(entry.key_loc, std::string(retired->diagnostic).c_str(),
-              (replaced ? entry.key + " is no longer read (a retired ncsim key): "
-                        : "not supported: " + entry.key + "; ") +
-                  std::string(retired->use_instead));
-        continue;
-      }
-      if (const ParamSpec* elsewhere = find_param(other, entry.pattern)) {
-        error(entry.key_loc, "NC3011",
-              entry.key + " (" + std::string(elsewhere->id) + ") is a " +
-                  (other == ListKind::axis ? "axis" : "channel") +
-                  " parameter; it cannot be set in the " + list_name + " list");
-      } else {
-        error(entry.key_loc, "NC3002",
-              "unknown parameter '" + entry.key + "' in the " + list_name + " list" +
-                  suggestion(kind_, entry.pattern));
-      }
+      report_unknown(kind_, entry, error);
       continue;
     }
-    // Indices within the table's bounds; normalised key without leading zeros.
-    std::string key;
-    bool index_ok = true;
-    std::size_t index_no = 0;
-    for (std::size_t i = 0; i < spec->key.size(); ++i) {
-      key += spec->key[i];
-      if (spec->key[i] == '[') {
-        const int index = entry.indices[index_no];
-        const int max = index_no == 0 ? spec->index_max_0 : spec->index_max_1;
-        if (index > max && index_ok) {
-          error(entry.key_loc, "NC3009",
-                entry.key + " (" + std::string(spec->id) + "): index " + std::to_string(index) +
-                    " is outside 0.." + std::to_string(max));
-          index_ok = false;
-        }
-        key += std::to_string(index);
-        ++index_no;
-      }
-    }
-    if (!index_ok) continue;
-
-    StoredValue value{spec, key, 0.0, entry.value, entry.key_loc};
-    const std::string ref = key + " (" + std::string(spec->id) + ")";
-    bool ok = true;
-    switch (spec->type) {
-      case ValueType::word:
-        if (!is_identifier(entry.value)) {
-          error(entry.value_loc, "NC3003",
-                ref + " expects a name (letters, digits, '_'), found '" + entry.value + "'");
-          ok = false;
-        }
-        break;
-      case ValueType::flag_set:
-        break;  // flag names are checked where they are interpreted
-      case ValueType::file_name:
-        // TF5200 P-CHAN-00160: STRING, at most 83 characters (the list's token has no blanks)
-        if (entry.value.empty() || entry.value.size() > 83) {
-          error(entry.value_loc, "NC3003",
-                ref + " expects a file name of 1 to 83 characters, found '" + entry.value + "'");
-          ok = false;
-        }
-        break;
-      case ValueType::real64: {
-        const auto v = parse_real(entry.value);
-        if (!v) {
-          error(entry.value_loc, "NC3003",
-                ref + " expects a number (REAL64), found '" + entry.value + "'");
-          ok = false;
-        } else {
-          value.number = *v;
-        }
-        break;
-      }
-      default: {
-        const auto v = parse_integer(entry.value);
-        if (!v) {
-          error(entry.value_loc, "NC3003",
-                ref + " expects an integer (" + std::string(type_name(spec->type)) + "), found '" +
-                    entry.value + "'");
-          ok = false;
-        } else {
-          value.number = *v;
-        }
-        break;
-      }
-    }
-    if (!ok) {
-      rejected_.push_back(key);
+    const std::optional<std::string> key = checked_key(*spec, entry, error);
+    if (!key) continue;
+    StoredValue value{spec, *key, 0.0, entry.value, entry.key_loc};
+    const std::string ref = *key + " (" + std::string(spec->id) + ")";
+    if (!convert(*spec, entry, ref, value, error) ||
+        !in_range(*spec, entry, ref, value.number, error)) {
+      rejected_.push_back(*key);
       continue;
     }
-    const bool numeric = spec->type != ValueType::word && spec->type != ValueType::flag_set &&
-                         spec->type != ValueType::file_name;
-    if (numeric && (value.number < spec->min || value.number > spec->max)) {
-      error(entry.value_loc, "NC3004",
-            ref + " = " + entry.value + " is outside its range " + range_text(*spec));
-      rejected_.push_back(key);
-      continue;
-    }
-    if (spec->type == ValueType::axis_mode) {
-      const auto bits = static_cast<std::uint32_t>(value.number);
-      if ((bits & ~axis_mode::kKnownBits) != 0U) {
-        char buf[16];
-        std::snprintf(buf, sizeof buf, "0x%08X", bits & ~axis_mode::kKnownBits);
-        error(entry.value_loc, "NC3004",
-              ref + " = " + entry.value + " sets undefined mode bits " + buf);
-        rejected_.push_back(key);
-        continue;
-      }
-    }
-    if (const StoredValue* first = find(key)) {
+    if (const StoredValue* first = find(*key)) {
       error(entry.key_loc, "NC3005",
             ref + " is given twice; first on line " + std::to_string(first->loc.line));
       continue;
@@ -468,10 +490,10 @@ AxisParams build_axis(const ListValues& v, core::DiagnosticList& diagnostics) {
   a.control.kv = v.internal("getriebe[0].kv");
   a.control.pt1_time = v.internal("drive.pt1_time");
 
-  // --- static-saw: G74 homing (docs/homing.md)
+  // G74 homing (docs/homing.md)
   a.reference_position = v.internal("getriebe[0].pos_refpkt");
   a.homing_velocity = v.internal("getriebe[0].vb_refmax");
-  a.conv_sync_optim = v.number("kenngr.conv_sync_optim") != 0.0;  // --- workspace
+  a.conv_sync_optim = v.number("kenngr.conv_sync_optim") != 0.0;  // P-AXIS-00555
   if (v.number("conv_sync.is_master") != 0.0) {
     ConveyorAxisParams c;
     for (const ConveyorFilterParam& f : kConveyorFilterParams)
@@ -503,6 +525,8 @@ ChannelParams build_channel(const ListValues& v) {
     const std::string key = "g800_prog_file[" + std::to_string(i) + "]";
     if (v.given(key)) ch.implicit_call_files[800 + i] = v.text(key);
   }
+  if (v.given("m6_prog_file")) ch.m6_prog_file = v.text("m6_prog_file");          // P-CHAN-00118
+  if (v.given("d_prog_file")) ch.d_prog_file = v.text("d_prog_file");             // P-CHAN-00429
   ch.create_cycle_param_on_read = v.number("create_cycle_param_on_read") != 0.0;  // P-CHAN-00463
   ch.vector_velocity = v.internal("vector.velocity");                             // P-CHAN-00090
   ch.feedrate_factor = v.number("prog_start.feedrate_factor");                    // P-CHAN-00108

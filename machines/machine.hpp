@@ -243,6 +243,10 @@ struct ChannelParams {
   /// P-CHAN-00160..00169 g80_prog_file .. g89_prog_file and P-CHAN-00187 g800_prog_file[i]:
   /// the global subroutine each implicit call G80-G89 / G800-G839 runs, by G code
   std::map<std::uint32_t, std::string> implicit_call_files;
+  /// P-CHAN-00118 m6_prog_file: M6 calls this global subroutine instead of being an M function
+  std::string m6_prog_file;
+  /// P-CHAN-00429 d_prog_file: a D word also calls this global subroutine (tool settings)
+  std::string d_prog_file;
   /// P-CHAN-00463 create_cycle_param_on_read (the manual's default 1)
   bool create_cycle_param_on_read = true;
   /// P-CHAN-00090 vector.velocity: the path velocity limit `#VECTOR LIMIT ON [VEL]` without a

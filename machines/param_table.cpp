@@ -133,6 +133,8 @@ constexpr std::array kTable = {
   ParamSpec{"P-CHAN-00168", "g88_prog_file", C, ValueType::file_name, 0, 0, "", 1, "", "", kOpt, -1, -1, "TF5200 P-CHAN-00168 (G88's implicit subroutine, PROG-206278923)"},
   ParamSpec{"P-CHAN-00169", "g89_prog_file", C, ValueType::file_name, 0, 0, "", 1, "", "", kOpt, -1, -1, "TF5200 P-CHAN-00169 (G89's implicit subroutine, PROG-206278923)"},
   ParamSpec{"P-CHAN-00187", "g800_prog_file[]", C, ValueType::file_name, 0, 0, "", 1, "", "", kOpt, 39, -1, "TF5200 P-CHAN-00187 (G800-G839's implicit subroutines, [i] for G8(00+i))"},
+  ParamSpec{"P-CHAN-00118", "m6_prog_file", C, ValueType::file_name, 0, 0, "", 1, "", "", kOpt, -1, -1, "TF5200 P-CHAN-00118 (M6 calls this global subroutine instead of being an M function)"},
+  ParamSpec{"P-CHAN-00429", "d_prog_file", C, ValueType::file_name, 0, 0, "", 1, "", "", kOpt, -1, -1, "TF5200 P-CHAN-00429 (a D word also calls this global subroutine)"},
   ParamSpec{"P-CHAN-00108", "prog_start.feedrate_factor", C, ValueType::real64, -1, kRealMax, "", 1, "", "100", kOpt, -1, -1, "TF5200 P-CHAN-00108 (100: F in mm/min, 0.1: m/min; F [mm/min] = F x 100 / factor; <= 0: 100)"},
   ParamSpec{"P-CHAN-00099", "prog_start.feedrate", C, ValueType::real64, 0, kRealMax, "mm/min", 1.0 / 60.0, "mm/s", "0", kOpt, -1, -1, "TF5200 P-CHAN-00099 (the feed of G01/G02/G03 before any F; 0: none)"},
   ParamSpec{"P-CHAN-00090", "vector.velocity", C, ValueType::real64, 1e-9, kRealMax, "mm/min", 1.0 / 60.0, "mm/s", "2000000000", kOpt, -1, -1, "TF5200 P-CHAN-00090 (#VECTOR LIMIT ON [VEL] without a value)"},

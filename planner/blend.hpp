@@ -84,7 +84,7 @@ std::optional<CornerDistances> corner_distances(const Move& move) noexcept;
 /// The blend the block `in_move` asks for at its end between its path `in` and the next block's
 /// `out` (make_blend with corner_distances(in_move)), or nullopt when it asks for none or the
 /// corner is not blended. One place for the planner (prepare.cpp) and for what the adapter
-/// predicts of the planner's blends (program/program_kinematics.cpp, tracking/x_virtual.cpp), so
+/// predicts of the planner's blends (program/trafo_path.cpp, tracking/x_virtual.cpp), so
 /// that both build the same curve under DEV and DIST.
 std::optional<Blend> corner_blend(const Move& in_move, const Segment& in, const Segment& out,
                                   const JointEnds& ends, double max_cut_in, double max_cut_out);

@@ -55,7 +55,7 @@ bool joint_derivatives(const PathPoint& point, std::size_t axis_count, const Joi
 
 /// The limits a joint runs a G00 with under a transform: the G00 slope (rapid_limits) and the
 /// velocity MIN(rapid, reference, maximum) (000 l.360). Used by path_limits and by the adapter's
-/// belt share of a G00 in PCS1 (program/program_kinematics.cpp), which must see the same limits.
+/// belt share of a G00 in PCS1 (program/trafo_path.cpp), which must see the same limits.
 AxisLimits joint_rapid_limits(const AxisLimits& joint) noexcept;
 
 /// Path limits of `segment` under the axis limits AND the joint limits (the smaller of each).

@@ -136,6 +136,36 @@ TEST_CASE("a square under #CS rotation and offset runs through the transformed p
   CHECK(r.final_x[0] == 0.0);
 }
 
+TEST_CASE("a #CS chain sits on the zero offset's X/Y/Z; G55 under the chain moves the chain") {
+  // TF5200 "Definition of a machining coordinate system": a CS is defined relative to the
+  // workpiece coordinate system, which the zero offset places in the MCS.
+  const std::string prog =
+      "V.G.NP[1].V.X = 100\n"
+      "V.G.NP[1].V.Y = 50\n"
+      "V.G.NP[2].V.X = 200\n"
+      "N30 G54 G00 X0 Y0 Z0\n"
+      "N40 #CS ON [0, 0, 0, 90, 0, 0]\n"
+      "N50 G01 X10 Y0 F3000\n"
+      "N60 G55\n"
+      "N70 G01 X10 Y0\n"
+      "N80 #CS OFF\n"
+      "N90 G01 X0 Y0\n"
+      "N100 M30\n";
+  const std::map<std::uint32_t, std::array<double, 3>> expected = {
+      {4, {100, 50, 0}}, {6, {100, 60, 0}}, {8, {200, 10, 0}}, {10, {200, 0, 0}}};
+  std::string error;
+  const std::vector<planner::Move> mv = moves(prog, &error);
+  CHECK(error.empty());
+  std::size_t seen = 0;
+  for (const planner::Move& m : mv) {
+    if (!expected.contains(m.line)) continue;
+    ++seen;
+    for (std::size_t i = 0; i < 3; ++i)
+      CHECK(m.end[i] == doctest::Approx(expected.at(m.line)[i]).epsilon(1e-12));
+  }
+  CHECK(seen == expected.size());
+}
+
 TEST_CASE("an arc under a rotated #CS is an arc in the rotated plane through the right points") {
   // Rotation about X by 90 deg (phi3 in ZYX): the PCS XY plane becomes the MCS XZ plane.
   const std::string prog =

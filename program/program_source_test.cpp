@@ -283,7 +283,7 @@ TEST_CASE("the blocks before a faulty one run to their end; then the error stand
   CHECK(src.error()->loc.line == 2);
 }
 
-// --- static-saw: #CAXTRACK at the adapter (docs/caxtrack.md)
+// #CAXTRACK at the adapter (docs/caxtrack.md)
 TEST_CASE("#CAXTRACK: C follows the tangent + OFFSET; a corner above ANGLIMIT stops and turns C") {
   const Pulled p = pull(
       "N10 G00 X0 Y0 C0\n"
@@ -369,8 +369,7 @@ TEST_CASE("a target beyond the soft limits is check's NC4601 before it moves, wh
   for (const bool refuse : {true, false}) {
     CAPTURE(refuse);
     interp::Interpreter in(file, m);
-    ipo::ProgramSource src(in, m);
-    src.refuse_beyond_soft_limits(refuse);
+    ipo::ProgramSource src(in, m, ipo::SourceConfig{.refuse_soft_limits = refuse});
     std::vector<std::uint32_t> lines;
     ipo::Item item;
     while (src.next(item))

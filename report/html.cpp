@@ -94,10 +94,8 @@ void axis_audit(std::string& s, const ipo::AxisAudit& a, std::optional<std::size
   s += '}';
 }
 
-std::string json(const ReportData& d) {
-  std::string s;
-  s.reserve(1 << 20);
-  s += '{';
+// The run's names, outcome and the axes with their soft limits.
+void head(std::string& s, const ReportData& d) {
   key(s, "program");
   s += json_quote(d.program);
   s += ',';
@@ -131,40 +129,51 @@ std::string json(const ReportData& d) {
     s += ']';
   }
   s += "],";
+}
+
+// The conveyor's workspace (null without one).
+void workspace(std::string& s, const ReportData& d) {
   key(s, "workspace");
-  if (d.workspace) {
-    const WorkspaceView& w = *d.workspace;
-    s += "{\"lower\":[";
-    for (int k = 0; k < 3; ++k) {
-      if (k > 0) s += ',';
-      value(s, w.lower[k]);
-    }
-    s += "],\"upper\":[";
-    for (int k = 0; k < 3; ++k) {
-      if (k > 0) s += ',';
-      value(s, w.upper[k]);
-    }
-    s += "],\"pos_limit\":";
-    value(s, w.pos_limit);
-    s += std::string(",\"along_x\":") + (w.along_x ? "true" : "false") +
-         ",\"sign\":" + std::to_string(w.sign) + "},";
-  } else {
+  if (!d.workspace) {
     s += "null,";
+    return;
   }
+  const WorkspaceView& w = *d.workspace;
+  s += "{\"lower\":[";
+  for (int k = 0; k < 3; ++k) {
+    if (k > 0) s += ',';
+    value(s, w.lower[k]);
+  }
+  s += "],\"upper\":[";
+  for (int k = 0; k < 3; ++k) {
+    if (k > 0) s += ',';
+    value(s, w.upper[k]);
+  }
+  s += "],\"pos_limit\":";
+  value(s, w.pos_limit);
+  s += std::string(",\"along_x\":") + (w.along_x ? "true" : "false") +
+       ",\"sign\":" + std::to_string(w.sign) + "},";
+}
+
+// The workpieces, the same objects as `ncsim time --json` (ipo::append_json); null without.
+void workpieces(std::string& s, const ReportData& d) {
   key(s, "workpieces");
-  if (d.workpieces) {
-    // The same objects as `ncsim time --json` (ipo::append_json).
-    s += "{\"summary\":";
-    ipo::append_json(s, *d.workpieces);
-    s += ",\"rows\":[";
-    for (std::size_t k = 0; k < d.workpiece_rows.size(); ++k) {
-      if (k > 0) s += ',';
-      ipo::append_json(s, d.workpiece_rows[k]);
-    }
-    s += "]},";
-  } else {
+  if (!d.workpieces) {
     s += "null,";
+    return;
   }
+  s += "{\"summary\":";
+  ipo::append_json(s, *d.workpieces);
+  s += ",\"rows\":[";
+  for (std::size_t k = 0; k < d.workpiece_rows.size(); ++k) {
+    if (k > 0) s += ',';
+    ipo::append_json(s, d.workpiece_rows[k]);
+  }
+  s += "]},";
+}
+
+// The decimated time series, their names and units, and the tool path.
+void series(std::string& s, const ReportData& d) {
   key(s, "bucket_cycles");
   s += std::to_string(d.bucket_width);
   s += ',';
@@ -192,6 +201,10 @@ std::string json(const ReportData& d) {
   s += ",\"pcs1\":";
   array(s, d.path_pcs1, value);
   s += "},";
+}
+
+// The machining time: the total, the block count and the slowest blocks.
+void times(std::string& s, const ReportData& d) {
   key(s, "total");
   s += "{\"cycles\":" + std::to_string(d.time_total.cycles) + ",\"total_s\":";
   exact(s, d.time_total.total);
@@ -224,6 +237,68 @@ std::string json(const ReportData& d) {
     s += '}';
   }
   s += "],";
+}
+
+// The joints under #TRAFO ON, checked apart (as the CLI's audit lists them): those that a
+// transformed cycle moved, each with its axis index.
+void joints(std::string& s, const ipo::Verdict& v) {
+  bool first = true;
+  for (std::size_t i = 0; i < v.joints.size(); ++i) {
+    const ipo::AxisAudit& a = v.joints[i];
+    if (a.v_closed == 0.0 && a.v_diff == 0.0) continue;
+    if (!first) s += ',';
+    first = false;
+    axis_audit(s, a, i);
+  }
+}
+
+// The documented steps per kind with the one closest to its formula (as the CLI prints them).
+void step_kinds(std::string& s, const ipo::Verdict& v, const std::vector<std::string>& axes) {
+  bool first_kind = true;
+  for (std::size_t k = 0; k < ipo::kStepKindNames.size(); ++k) {
+    const ipo::StepKind& sk = v.step_kinds[k];
+    if (sk.count == 0) continue;
+    const ipo::Step& c = sk.closest;
+    s += first_kind ? "{\"kind\":" : ",{\"kind\":";
+    first_kind = false;
+    s += json_quote(ipo::kStepKindNames[k]) +
+         ",\"formula\":" + json_quote(ipo::kStepKindFormulas[k]) +
+         ",\"count\":" + std::to_string(sk.count) + ",\"t\":";
+    exact(s, c.t);
+    s += ",\"line\":" + std::to_string(c.line) +
+         ",\"axis\":" + json_quote(c.axis < axes.size() ? axes[c.axis] : std::to_string(c.axis)) +
+         ",\"value\":";
+    value(s, c.value);
+    s += ",\"bound\":";
+    value(s, c.bound);
+    s += ",\"v_link\":";
+    value(s, c.v_link);
+    s += '}';
+  }
+}
+
+// The first kPageViolations violations.
+void violations(std::string& s, const ipo::Verdict& v, const std::vector<std::string>& axes) {
+  const std::size_t listed = std::min(v.violations.size(), kPageViolations);
+  for (std::size_t k = 0; k < listed; ++k) {
+    const ipo::Violation& x = v.violations[k];
+    const std::string axis = x.joint                ? "joint " + std::to_string(x.axis)
+                             : x.axis < axes.size() ? axes[x.axis]
+                                                    : std::to_string(x.axis);
+    s += (k > 0 ? ",{\"t\":" : "{\"t\":");
+    exact(s, x.t);
+    s += ",\"line\":" + std::to_string(x.line) + ",\"axis\":" + json_quote(axis) +
+         ",\"quantity\":" + json_quote(ipo::quantity_name(x.quantity)) +
+         ",\"method\":" + json_quote(ipo::method_name(x.method)) + ",\"value\":";
+    value(s, x.value);
+    s += ",\"limit\":";
+    value(s, x.limit);
+    s += '}';
+  }
+}
+
+// The audit of the same pass: the verdict, the extremes per axis and joint, steps, violations.
+void audit(std::string& s, const ReportData& d) {
   const ipo::Verdict& v = d.verdict;
   key(s, "audit");
   s += std::string("{\"ok\":") + (v.ok() ? "true" : "false") + ",\"contour_mm\":";
@@ -236,59 +311,27 @@ std::string json(const ReportData& d) {
     if (i > 0) s += ',';
     axis_audit(s, v.axes[i], {});
   }
-  // --- the joints under #TRAFO ON, checked apart (as the CLI's audit lists them): those that a
-  // transformed cycle moved, each with its axis index.
   s += "],\"joints\":[";
-  bool first = true;
-  for (std::size_t i = 0; i < v.joints.size(); ++i) {
-    const ipo::AxisAudit& a = v.joints[i];
-    if (a.v_closed == 0.0 && a.v_diff == 0.0) continue;
-    if (!first) s += ',';
-    first = false;
-    axis_audit(s, a, i);
-  }
-  // The documented steps per kind with the one closest to its formula (as the CLI prints them).
+  joints(s, v);
   s += "],\"step_kinds\":[";
-  bool first_kind = true;
-  for (std::size_t k = 0; k < ipo::kStepKindNames.size(); ++k) {
-    const ipo::StepKind& sk = v.step_kinds[k];
-    if (sk.count == 0) continue;
-    const ipo::Step& c = sk.closest;
-    s += first_kind ? "{\"kind\":" : ",{\"kind\":";
-    first_kind = false;
-    s += json_quote(ipo::kStepKindNames[k]) +
-         ",\"formula\":" + json_quote(ipo::kStepKindFormulas[k]) +
-         ",\"count\":" + std::to_string(sk.count) + ",\"t\":";
-    exact(s, c.t);
-    s += ",\"line\":" + std::to_string(c.line) + ",\"axis\":" +
-         json_quote(c.axis < d.axes.size() ? d.axes[c.axis] : std::to_string(c.axis)) +
-         ",\"value\":";
-    value(s, c.value);
-    s += ",\"bound\":";
-    value(s, c.bound);
-    s += ",\"v_link\":";
-    value(s, c.v_link);
-    s += '}';
-  }
+  step_kinds(s, v, d.axes);
   s += "],\"belt_count\":" + std::to_string(v.belt_count);
   s += ",\"violations\":[";
-  const std::size_t listed = std::min(v.violations.size(), kPageViolations);
-  for (std::size_t k = 0; k < listed; ++k) {
-    const ipo::Violation& x = v.violations[k];
-    const std::string axis = x.joint                  ? "joint " + std::to_string(x.axis)
-                             : x.axis < d.axes.size() ? d.axes[x.axis]
-                                                      : std::to_string(x.axis);
-    s += (k > 0 ? ",{\"t\":" : "{\"t\":");
-    exact(s, x.t);
-    s += ",\"line\":" + std::to_string(x.line) + ",\"axis\":" + json_quote(axis) +
-         ",\"quantity\":" + json_quote(ipo::quantity_name(x.quantity)) +
-         ",\"method\":" + json_quote(ipo::method_name(x.method)) + ",\"value\":";
-    value(s, x.value);
-    s += ",\"limit\":";
-    value(s, x.limit);
-    s += '}';
-  }
-  s += "]}}";
+  violations(s, v, d.axes);
+  s += "]}";
+}
+
+std::string json(const ReportData& d) {
+  std::string s;
+  s.reserve(1 << 20);
+  s += '{';
+  head(s, d);
+  workspace(s, d);
+  workpieces(s, d);
+  series(s, d);
+  times(s, d);
+  audit(s, d);
+  s += '}';
   return s;
 }
 

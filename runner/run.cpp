@@ -26,10 +26,11 @@ class Run::Fanout final : public ipo::Sink {
 Run::Run(std::unique_ptr<Loaded> loaded, const RunSpec& spec)
     : in_(std::move(loaded)),
       interp_(in_->file, in_->machine, in_->interp),
-      src_(interp_, in_->machine, in_->t_cycle),
+      // refuse: check's NC4601 before the block moves (issue 34)
+      src_(interp_, in_->machine,
+           ipo::SourceConfig{.t_cycle = in_->t_cycle, .refuse_soft_limits = true}),
       config_(ipo::channel_config(in_->machine, in_->t_cycle)),
       answer_positions_(spec.answer_positions) {
-  src_.refuse_beyond_soft_limits(true);  // check's NC4601 before the block moves (issue 34)
   if (!spec.audit) return;
   audit_ = std::make_unique<ipo::Audit>(config_.path.axes, config_.path.channel.t_cycle,
                                         config_.path.start);

@@ -2,7 +2,7 @@
 // runner/run: one assembled run of a program on the channel loop (design.md §5).
 //
 // Purpose: the wiring every command that runs the channel shares: Interpreter -> ProgramSource
-// (refuse_beyond_soft_limits, answer_barriers_from the scenario's player, answer_positions_from
+// (config.refuse_soft_limits, answer_barriers_from the scenario's player, answer_positions_from
 // the channel) -> channel_config -> Audit -> Channel -> scenario Player -> conveyor Port.
 // Inputs: a Loaded (runner/load.hpp) and the RunSpec's audit and position answers; the caller's
 // sinks (CSV, report recorder), which see every cycle after the audit. Outputs: the channel

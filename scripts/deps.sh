@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages ncsim needs to build and test, if any is missing, then the
+# Installs the Debian 12 packages ncsim needs to build and test (python3-numpy: the trajectory
+# checker, tests/checker), if any is missing, then the
 # report's charting library (report/web: `npm ci` from the pinned package-lock.json, when
 # node_modules does not match it). Idempotent; needs root only when a package must be installed.
 set -euo pipefail
@@ -7,7 +8,7 @@ set -euo pipefail
 packages=(
   cmake ninja-build g++ clang libclang-rt-14-dev clang-format
   tao-pegtl-dev libcli11-dev doctest-dev libeigen3-dev libbenchmark-dev
-  libtomlplusplus-dev libglpk-dev chromium
+  libtomlplusplus-dev libglpk-dev chromium python3 python3-numpy
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -50,7 +50,7 @@ std::optional<SyncError> check_conv_vel(const planner::AxisLimits& axis, double 
 /// v_max - v_conv is left in the conveying direction and v_max + v_conv against it; the
 /// planner has one symmetric limit, so the smaller one, v_max - v_conv, applies both ways
 /// (v_reference and v_rapid alike); --- belt-split: a line against the belt gets v_max +
-/// CONV_VEL instead (ProgramSource::split_belt, guarded by Channel::sync_belt_cap).
+/// CONV_VEL instead (BeltSplit::split, guarded by Channel::sync_belt_cap).
 /// v_conv = 1.10 * CONV_VEL: the fastest belt 50653 lets through, so X never exceeds v_max
 /// without an error first. Accelerations and jerk are left
 /// unchanged: the belt's own acceleration adds to them (docs/conveyor.md). Requires
