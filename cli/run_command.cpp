@@ -229,16 +229,15 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   }
   err << runner::warnings_text(run);
   if (!end.failed && !run.channel().scenario_stop()) err << runner::still_moving_text(run);
-  if (!end.error_text.empty()) {
-    err << end.error_text;
-    return kExitProgramErrors;
-  }
+  if (!end.error_text.empty()) err << end.error_text;
+  // The audit covers every cycle that was run, whatever ended the run (issue 36 item 4); a
+  // run-time error keeps its exit status 1 over the audit's 3.
   if (const ipo::Audit* audit = run.audit()) {
     print_audit(audit->verdict(), names, runner::axis_units(run.loaded().machine),
                 run.interpreter(), err, options.audit_steps);
-    if (!audit->verdict().ok()) return kExitAudit;
+    if (end.error_text.empty() && !audit->verdict().ok()) return kExitAudit;
   }
-  return kExitOk;
+  return end.error_text.empty() ? kExitOk : kExitProgramErrors;
 }
 
 }  // namespace ncsim::cli

@@ -185,18 +185,17 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
   }
   err << runner::warnings_text(run);
   if (!end.failed && !run.channel().scenario_stop()) err << runner::still_moving_text(run);
-  if (end.failed) {
-    err << end.error_text;
-    return kExitProgramErrors;
-  }
+  if (end.failed) err << end.error_text;
+  // The audit covers every cycle that was run, whatever ended the run (issue 36 item 4); a
+  // run-time error keeps its exit status 1 over the audit's 3.
   if (const ipo::Audit* audit = run.audit()) {
     const ipo::Verdict& v = audit->verdict();
     print_audit(v, runner::axis_names(run.loaded().machine),
                 runner::axis_units(run.loaded().machine), run.interpreter(),
                 options.json ? err : out, options.audit_steps);
-    if (!v.ok()) return kExitAudit;
+    if (!end.failed && !v.ok()) return kExitAudit;
   }
-  return kExitOk;
+  return end.failed ? kExitProgramErrors : kExitOk;
 }
 
 }  // namespace ncsim::cli

@@ -135,6 +135,11 @@ TEST_CASE("unsupported commands are reported as such with their position") {
   REQUIRE(o.diags.items().size() == 1);
   CHECK(o.diags.items()[0].loc.column == 3);
   CHECK(check("G237 X1") == std::vector<std::string>{"1:1 NC1002"});
+  // PROG-208525707's auxiliary transformations: not supported, not a syntax error.
+  const Parsed w("#MCS TO WCS [X1 Y2 Z3]");
+  REQUIRE(w.diags.items().size() == 1);
+  CHECK(w.diags.items()[0].id == "NC1002");
+  CHECK(w.diags.items()[0].message == "not supported: #MCS TO WCS");
 }
 
 TEST_CASE("control statements: $IF one-line goto, $FOR header, $GOTO targets") {

@@ -321,6 +321,10 @@ template <typename Input>
 void read_mcs(HashReader<Input>& r) {  // PROG-208517515: #MCS ON [EX TOOL] / #MCS OFF
   r.ws();
   if (r.word("OFF")) return r.set(H::mcs_off);
+  if (r.word("TO")) {  // PROG-208525707: #MCS TO WCS, the auxiliary transformation
+    r.ws();
+    r.st.not_supported(r.name_at - 1, "#MCS TO " + r.next_word());
+  }
   if (!r.word("ON")) r.st.fail(r.in.current(), "ON or OFF after #MCS");
   r.set(H::mcs_on);
   r.ws();

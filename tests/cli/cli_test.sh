@@ -309,6 +309,12 @@ expect "time --audit names a rotary axis's units in degrees" 0 \
 expect "time --audit says the jerk is not limited under an acceleration-limited slope (never |j| 0)" 0 \
   '^audit: X .*\|j\| not limited \(acceleration-limited slope\)$' '' -- \
   time --audit "$root/programs/rotary_table/rotary_table.nc"
+# Issue 36 item 4: a run that ends in a run-time error is audited to its last cycle; exit 1.
+expect "time --audit after a run-time error: the audit of every cycle run, the error's exit 1" 1 \
+  '^audit: 25 violations$' '\[50653\]' -- time --audit "$root/programs/belt_too_fast/belt_too_fast.nc"
+expect "run --audit after a run-time error: the audit on stderr after the error" 1 '' \
+  '^audit: 25 of the violations are the belt.s own' -- \
+  run --audit -o "$work/error_audit.csv" "$root/programs/belt_too_fast/belt_too_fast.nc"
 expect "time --audit of conveyor tracking checks the axes on their setpoints (belt offset, catch-up): ok" 0 \
   '^audit: ok$' '' -- time --audit "$root/programs/conveyor_squares/conveyor_squares.nc"
 # A program that ends right after #SYNC OUT (conveyor_squares' first sheet, then M30): X still
