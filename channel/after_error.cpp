@@ -81,8 +81,8 @@ bool AfterErrorStop::keep() noexcept {
   error_.reset();
   axes_stop_.begin();
   path_ended_ = false;
-  ipo_.set_feed_hold(true);  // the path velocity in PCS1 goes to 0 (l.494)
-  ipo_.set_velocity_cap(WorkspaceHold::kNone);
+  ipo_.path_override().set_feed_hold(true);  // the path velocity in PCS1 goes to 0 (l.494)
+  ipo_.path_override().set_velocity_cap(WorkspaceHold::kNone);
   state_ = State::following;
   return true;
 }

@@ -51,7 +51,7 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
       mapping_(kin_, tracking_, sync_, axes_, error_, ipo_.t_cycle()),
       events_(source, ipo_, axes_, indp_, tracking_, sync_, after_, error_) {
   const double t = ipo_.t_cycle();
-  ipo_.set_wait_handler(&events_);
+  ipo_.standstill().set_wait_handler(&events_);
   // Conveyor tracking on FCT_DLM channels.
   if (config.conveyor) {
     sync_.emplace(*config.conveyor, config.sync_axes, t);
@@ -118,16 +118,17 @@ Status Channel::program_cycle() noexcept {
   if (!play_.check(c, tracking_.hold_waits(), error_)) return Status::error;  // NC6301, an action
   if (!events_.riding(c)) return Status::error;  // the events of the blocks started in it
   if (!tracking_.world_step(c, play_.player())) return Status::error;  // the conveyor world
-  if (!mapping_.map(c)) return Status::error;              // the path point -> the axes' setpoints
-  if (!tracking_.workspace(c)) return Status::error;       // the conveyor workspace and its hold
-  if (!exact_stop_.active() && ipo_.holding_exact_stop())  // a G60 / G360 block end reached
+  if (!mapping_.map(c)) return Status::error;         // the path point -> the axes' setpoints
+  if (!tracking_.workspace(c)) return Status::error;  // the conveyor workspace and its hold
+  // A G60 / G360 block end reached:
+  if (!exact_stop_.active() && ipo_.standstill().holding_exact_stop())
     exact_stop_.begin(c, std::span(axes_.setpoints().data(), axes_.size()), kin_.transformed());
   if (!indp_.step(c, axes_, shown_, error_)) return Status::error;  // the INDP axes' setpoints
   if (!drive_axes(c)) return Status::error;  // soft limits, position control, monitors
   bool release = false;
   // The exact stop on actual positions: released, or still waiting (P-ERR-70082, NC6101).
   if (exact_stop_.active() && !exact_stop_.check(c, axes_, release, error_)) return Status::error;
-  if (release) ipo_.release_exact_stop();
+  if (release) ipo_.standstill().release_exact_stop();
   if (sink_) sink_->on_cycle(cycle());  // with the INDP axes' setpoints
   return Status::running;
 }

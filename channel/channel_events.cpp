@@ -15,12 +15,12 @@
 namespace ncsim::ipo {
 
 bool ChannelEvents::before_path() noexcept {
-  if (!queue_.blocked() && !ipo_.holding_channel()) return true;
-  const bool holding = ipo_.holding_channel();
+  if (!queue_.blocked() && !ipo_.standstill().holding_channel()) return true;
+  const bool holding = ipo_.standstill().holding_channel();
   const bool done = run(holding ? queue_.wait_tag() : ipo_.cycle().event_tag);
   if (error_) return false;
   if (done && holding && indp_.syn_done(queue_.wait_interruptible(), axes_.size()))
-    ipo_.release_wait();
+    ipo_.standstill().release_wait();
   return true;
 }
 

@@ -60,12 +60,13 @@ std::vector<ipo::Cycle> interpolate(std::vector<ipo::Item> items, Handler* handl
   cfg.axes.assign(3, ipo::test::axis(100.0, 1000.0, 1e5));
   cfg.channel.t_cycle = 0.001;
   ipo::PathInterpolator ipo(cfg, src);
-  ipo.set_wait_handler(handler);
+  ipo.standstill().set_wait_handler(handler);
   std::vector<ipo::Cycle> out;
   int held = 0;
   while (ipo.step() == ipo::Status::running) {
     out.push_back(ipo.cycle());
-    if (ipo.holding_channel() && ++held >= release_after) ipo.release_wait();
+    if (ipo.standstill().holding_channel() && ++held >= release_after)
+      ipo.standstill().release_wait();
     REQUIRE(out.size() < 100'000);
   }
   return out;

@@ -39,7 +39,7 @@ void ConveyorTracking::static_override() noexcept {
   if (sync_->phase() != SyncPhase::tracking) {
     if (operator_override_) {
       try {
-        ipo_.set_override(*operator_override_);  // it was accepted before: in range
+        ipo_.path_override().set_override(*operator_override_);  // it was accepted before: in range
       } catch (...) {
         std::abort();
       }
@@ -47,14 +47,14 @@ void ConveyorTracking::static_override() noexcept {
     }
     return;
   }
-  if (!operator_override_) operator_override_ = ipo_.override_factor();
+  if (!operator_override_) operator_override_ = ipo_.path_override().override_factor();
   const double belt = sync_->frame().sign() * sync_->display().v_master_comp;  // [mm/s]
   const double planned = kXvPlanFactor * sync_->conv_vel();
   const double f = planned > 0.0 ? std::clamp(belt / planned, 0.0, 1.0) : 0.0;
-  if (std::fabs(f - ipo_.override_factor()) > kOverrideStep ||
-      (f == 0.0) != (ipo_.override_factor() == 0.0)) {
+  if (std::fabs(f - ipo_.path_override().override_factor()) > kOverrideStep ||
+      (f == 0.0) != (ipo_.path_override().override_factor() == 0.0)) {
     try {
-      ipo_.set_override(f);
+      ipo_.path_override().set_override(f);
     } catch (...) {
       std::abort();  // every override type accepts 0 .. 1
     }
@@ -63,7 +63,7 @@ void ConveyorTracking::static_override() noexcept {
   // ball, whose X share varies, and the blocks beside it, whose feed was raised for it:
   // tracking/x_virtual.hpp blend_belt_feed), the path velocity is capped at belt / |dX/ds| a little
   // ahead of the path. The cap is a jerk-limited replan that acts inside
-  // the ball too (PathInterpolator::set_velocity_cap); the workspace hold's cap, set after each
+  // the ball too (PathOverride::set_velocity_cap); the workspace hold's cap, set after each
   // cycle (ConveyorTracking::workspace_cap), is kept when it is lower.
   const Cycle& c = ipo_.cycle();
   const planner::PlannedSegment* e = ipo_.active_entry();
@@ -109,7 +109,8 @@ void ConveyorTracking::static_override() noexcept {
   const double share = std::fabs(q.d1[xi]);
   const double feed = c.programmed->feed;  // [mm/s] the part's belt feed (raised at a ball)
   if (!(share > 0.0) || feed * share <= planned * (1.0 + kCapSlack)) return;
-  ipo_.set_velocity_cap(std::min(ipo_.velocity_cap(), std::max(belt, 0.0) / share));
+  ipo_.path_override().set_velocity_cap(
+      std::min(ipo_.path_override().velocity_cap(), std::max(belt, 0.0) / share));
 }
 
 }  // namespace ncsim::ipo

@@ -280,11 +280,11 @@ TEST_CASE(
   std::size_t waits = 0;
   while (held.step() == ipo::Status::running) {
     if (held.cycle().activity != ipo::Activity::exact_stop) continue;
-    CHECK(held.holding_exact_stop());
+    CHECK(held.standstill().holding_exact_stop());
     CHECK(held.cycle().line == 1);
-    if (++waits == 37) held.release_exact_stop();  // the channel decides when
+    if (++waits == 37) held.standstill().release_exact_stop();  // the channel decides when
   }
   CHECK(waits == 37);
-  CHECK_FALSE(held.holding_exact_stop());
+  CHECK_FALSE(held.standstill().holding_exact_stop());
   CHECK(held.cycle().x[0] == 20.0);  // the program ran to its end after the release
 }

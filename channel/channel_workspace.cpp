@@ -2,7 +2,7 @@
 // workspace and the channel's side of the workspace hold against the conveying direction
 // (tracking/workspace_hold.hpp; docs/conveyor.md "Workspace: the hold methods"): after each
 // cycle the hold decides on the path state of that cycle, and its cap acts on the interpolator
-// from the next one (PathInterpolator::set_velocity_cap, a jerk-limited replan). The hold looks
+// from the next one (PathOverride::set_velocity_cap, a jerk-limited replan). The hold looks
 // across block ends: the active entry and the look-ahead window's next entries
 // (PathInterpolator::queued_entry, at most kHoldAhead).
 
@@ -70,7 +70,7 @@ bool ConveyorTracking::workspace_cap(const Cycle& c) noexcept {
     st.ahead = ahead.data();
   }
   const double cap = sync_->workspace_cap(st);
-  ipo_.set_velocity_cap(cap);
+  ipo_.path_override().set_velocity_cap(cap);
   sync_belt_cap(c);  // kept when it is lower than the hold's
   // A belt that stops while the hold caps the path: the cap follows it to 0 and the tool waits
   // with the belt (it stands in MCS and on the workpiece); the belt's restart releases it. A
@@ -104,7 +104,7 @@ bool ConveyorTracking::workspace_cap(const Cycle& c) noexcept {
 // caps the path at min over the axes of (v_max - sign(x') w) / |x'| a little ahead, where that
 // is below the segment's own velocity limit (so a plan that fits any belt up to 1.10 CONV_VEL,
 // every block along the belt and every curve, is never touched). The cap is a jerk-limited
-// replan (PathInterpolator::set_velocity_cap); a cap that falls at r [mm/s^2] is followed
+// replan (PathOverride::set_velocity_cap); a cap that falls at r [mm/s^2] is followed
 // r^2 / (2 j) behind, so the belt is forecast r / (2 j) ahead with its acceleration (as the
 // static unit's cap, channel_static.cpp). The belt's own deceleration beyond the path's d_max
 // cannot be followed: the residual the tests measure.
@@ -174,7 +174,7 @@ void ConveyorTracking::sync_belt_cap(const Cycle& c) noexcept {
   if (!point(s0 + v * lead)) return;
   const double cap = cap_at(lead, rate);
   if (!(cap < level * (1.0 - kSlack))) return;
-  ipo_.set_velocity_cap(std::min(ipo_.velocity_cap(), cap));
+  ipo_.path_override().set_velocity_cap(std::min(ipo_.path_override().velocity_cap(), cap));
 }
 
 bool ConveyorTracking::hold_waits() const noexcept {

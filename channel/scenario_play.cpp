@@ -23,14 +23,14 @@ std::optional<std::pair<const char*, std::string>> ScenarioPlay::act(
   // MCV_SetReducedFilter: step() hands player_->reduced_filter() to the Port every cycle.
   if (std::holds_alternative<scenario::ReducedFilter>(a)) return std::nullopt;
   if (const auto* h = std::get_if<scenario::FeedHold>(&a)) {
-    ipo_.set_feed_hold(h->on);
+    ipo_.path_override().set_feed_hold(h->on);
     return std::nullopt;
   }
   if (const auto* o = std::get_if<scenario::PathOverride>(&a)) {
-    const double max = max_override(ipo_.override_type());
+    const double max = max_override(ipo_.path_override().override_type());
     if (o->fraction <= max) {
       try {
-        ipo_.set_override(o->fraction);
+        ipo_.path_override().set_override(o->fraction);
         return std::nullopt;
       } catch (const std::invalid_argument&) {
       }
@@ -66,7 +66,8 @@ bool ScenarioPlay::step(bool tracking, conveyor::Port* port, Status& status,
   // And the channel's feed hold while it tracks the conveyor (docs/conveyor.md F-4:
   // P-AXIS-00624/00625 "in the case of feedhold").
   if (port != nullptr)
-    port->set_reduced_filter(player_->reduced_filter() || (ipo_.feed_hold() && tracking));
+    port->set_reduced_filter(player_->reduced_filter() ||
+                             (ipo_.path_override().feed_hold() && tracking));
   if (const auto reason = player_->stop()) {
     stopped_ = *reason;
     status = Status::finished;
@@ -84,10 +85,11 @@ bool ScenarioPlay::check(const Cycle& c, bool hold_waits,
   // No endless hold, unless the workspace hold waits for the belt (NC9081).
   if (player_ == nullptr || !c.held || player_->more_to_come() || hold_waits) return true;
   raise(error, kHeldForeverId,
-        ipo_.feed_hold() ? "the path stands by feed hold and no later scenario event releases "
-                           "it: the run would never end"
-                         : "the path stands at override 0 and no later scenario event raises "
-                           "it: the run would never end",
+        ipo_.path_override().feed_hold()
+            ? "the path stands by feed hold and no later scenario event releases "
+              "it: the run would never end"
+            : "the path stands at override 0 and no later scenario event raises "
+              "it: the run would never end",
         c, -1);
   return false;
 }

@@ -5,7 +5,7 @@
 // Purpose: Player::step(k, t) with k the cycle's index and t its start time; its V.E. writes are
 // in the store the ProgramSource answers barriers from; a [stop] condition met ends the run
 // before the cycle (Status::finished, stop_reason()); path override and feed hold go to
-// PathInterpolator::set_override / set_feed_hold (an override above the type's largest is
+// PathOverride::set_override / set_feed_hold (an override above the type's largest is
 // run-time error NC6102); an axis override goes to the INDP axes (002 2.2; NC6105). Every block
 // that starts inside a cycle (the interpolator's BlockObserver) goes to Player::block_started
 // and its `line` events fire at once: they belong to the cycle in which the block starts.

@@ -215,16 +215,16 @@ TEST_CASE("an endless program runs in bounded memory") {
   Config cfg = config({ax, ax, ax});
   cfg.window = 30;
   PathInterpolator ipo(std::move(cfg), src);
-  const std::size_t ring = ipo.ring_capacity();
+  const std::size_t ring = ipo.queue().ring_capacity();
   long long peak_first = 0, peak_second = 0;
   for (int k = 0; k < 200000; ++k) {
     REQUIRE(ipo.step() == Status::running);
     if (k > 10000)
       (k < 100000 ? peak_first : peak_second) =
           std::max(k < 100000 ? peak_first : peak_second, g_live.load());
-    CHECK(ipo.window_fill() <= 30);
+    CHECK(ipo.queue().window().size() <= 30);
   }
-  CHECK(ipo.ring_capacity() == ring);
+  CHECK(ipo.queue().ring_capacity() == ring);
   CHECK(src.ln > 1000);
   CHECK(peak_second <= peak_first + 64);
 }

@@ -70,7 +70,7 @@ struct RaisedLimits {
 };
 RaisedLimits raised_limits(const planner::PlannedSegment& entry,
                            std::span<const planner::AxisLimits> axes) noexcept;
-/// --- trafo-conveyor: the same under #TRAFO ON (ipo/override_trafo.cpp): the joints' G00 rule
+/// The same under #TRAFO ON (ipo/override_trafo.cpp): the joints' G00 rule
 /// MIN(rapid, reference, maximum) per joint along the joints' derivative bounds of the entry
 /// (planner::joint_bounds), each joint inside its a and j; a, d, j at most the planned ones.
 /// The planned limits when the inverse fails or nothing is gained.

@@ -122,7 +122,7 @@ double example_peak(OverrideType type, double factor) {
   Recorder rec(cfg);
   const Status st = run(cfg, {line(vec(0, 0), vec(168, 0), 1000.0, 1)}, rec,
                         [&](PathInterpolator& ipo, std::size_t k) {
-                          if (k == 0) ipo.set_override(factor);
+                          if (k == 0) ipo.path_override().set_override(factor);
                         });
   CHECK(st == Status::finished);
   check_audit(rec);
@@ -152,12 +152,12 @@ TEST_CASE("override levels per type; factors outside the type's range are refuse
   const auto ax = axis(100.0, 1000.0, 1e5);
   ListSource src({});
   PathInterpolator reduced(config({ax, ax, ax}), src);
-  CHECK_THROWS_AS(reduced.set_override(1.2), std::invalid_argument);
-  CHECK_THROWS_AS(reduced.set_override(-0.1), std::invalid_argument);
-  CHECK_THROWS_AS(reduced.set_override(std::nan("")), std::invalid_argument);
+  CHECK_THROWS_AS(reduced.path_override().set_override(1.2), std::invalid_argument);
+  CHECK_THROWS_AS(reduced.path_override().set_override(-0.1), std::invalid_argument);
+  CHECK_THROWS_AS(reduced.path_override().set_override(std::nan("")), std::invalid_argument);
   PathInterpolator above(config({ax, ax, ax}, OverrideType::reduced_above_100), src);
-  CHECK_NOTHROW(above.set_override(1.2));
-  CHECK_THROWS_AS(above.set_override(kMaxOverride * 1.01), std::invalid_argument);
+  CHECK_NOTHROW(above.path_override().set_override(1.2));
+  CHECK_THROWS_AS(above.path_override().set_override(kMaxOverride * 1.01), std::invalid_argument);
 }
 
 TEST_CASE("a change mid-block ramps with the jerk limit; at 100 % nothing differs from the plan") {
@@ -169,15 +169,15 @@ TEST_CASE("a change mid-block ramps with the jerk limit; at 100 % nothing differ
   run(cfg, prog, plain);
   Recorder same(cfg);
   run(cfg, prog, same, [](PathInterpolator& ipo, std::size_t k) {
-    if (k == 500) ipo.set_override(1.0);
+    if (k == 500) ipo.path_override().set_override(1.0);
   });
   REQUIRE(plain.cycles.size() == same.cycles.size());
   for (std::size_t k = 0; k < plain.cycles.size(); ++k)
     CHECK(plain.cycles[k].x == same.cycles[k].x);
   Recorder slow(cfg);
   run(cfg, prog, slow, [](PathInterpolator& ipo, std::size_t k) {
-    if (k == 1500) ipo.set_override(0.4);
-    if (k == 3500) ipo.set_override(0.9);
+    if (k == 1500) ipo.path_override().set_override(0.4);
+    if (k == 3500) ipo.path_override().set_override(0.9);
   });
   check_audit(slow);
   // Before the change the path is on plan; after the ramp it cruises at 40 mm/s.
@@ -205,8 +205,8 @@ TEST_CASE("feed hold in the middle of an arc stops on the arc, holds, resumes an
   Recorder rec(arc_cfg);
   std::size_t hold_from = 0;
   const Status st = run(arc_cfg, {arc}, rec, [&](PathInterpolator& ipo, std::size_t k) {
-    if (k == 800) ipo.set_feed_hold(true);
-    if (k == 2000) ipo.set_feed_hold(false);
+    if (k == 800) ipo.path_override().set_feed_hold(true);
+    if (k == 2000) ipo.path_override().set_feed_hold(false);
     hold_from = k;
   });
   CHECK(st == Status::finished);
@@ -250,7 +250,7 @@ TEST_CASE("an override change inside the tolerance ball waits until the ball is 
   bool requested = false;
   const Status st = run(cfg, ball_program(), rec, [&](PathInterpolator& ipo, std::size_t k) {
     if (!requested && k > 0 && in_ball(rec.cycles.back())) {
-      ipo.set_override(0.3);
+      ipo.path_override().set_override(0.3);
       requested = true;
     }
   });
@@ -282,10 +282,10 @@ TEST_CASE("feed hold inside the tolerance ball stops at once on the blend curve 
   const Status st = run(cfg, ball_program(), rec, [&](PathInterpolator& ipo, std::size_t k) {
     message = ipo.message();
     if (on == 0 && k > 0 && in_ball(rec.cycles.back()) && rec.cycles.back().x[1] > 0.01) {
-      ipo.set_feed_hold(true);
+      ipo.path_override().set_feed_hold(true);
       on = k;
     }
-    if (on != 0 && k == on + 500) ipo.set_feed_hold(false);
+    if (on != 0 && k == on + 500) ipo.path_override().set_feed_hold(false);
   });
   CAPTURE(message);
   CHECK(st == Status::finished);
@@ -308,7 +308,7 @@ TEST_CASE("Reduced [0 .. >100 %]: a step to 120 % speeds up to 1.2 F within the 
   const std::vector<Item> prog = {line(vec(0, 0), vec(400, 0), 100.0, 1)};
   Recorder rec(cfg);
   run(cfg, prog, rec, [](PathInterpolator& ipo, std::size_t k) {
-    if (k == 1000) ipo.set_override(1.2);
+    if (k == 1000) ipo.path_override().set_override(1.2);
   });
   check_audit(rec);
   CHECK(rec.cycles[900].path.v == doctest::Approx(100.0));
@@ -321,7 +321,7 @@ TEST_CASE("Reduced [0 .. >100 %]: a step to 120 % speeds up to 1.2 F within the 
   // 200 % is limited by the axis's G00 velocity 150 mm/s (000 l.357).
   Recorder fast(cfg);
   run(cfg, prog, fast, [](PathInterpolator& ipo, std::size_t k) {
-    if (k == 0) ipo.set_override(2.0);
+    if (k == 0) ipo.path_override().set_override(2.0);
   });
   check_audit(fast);
   CHECK(max_v(fast.cycles) == doctest::Approx(150.0).epsilon(1e-9));
@@ -336,7 +336,7 @@ TEST_CASE("above 100 % the planned stops and corners hold: the exit never exceed
                                   line(vec(50, 50), vec(0, 50), 100.0, 3)};
   Recorder rec(cfg);
   run(cfg, prog, rec, [](PathInterpolator& ipo, std::size_t k) {
-    if (k == 0) ipo.set_override(3.0);
+    if (k == 0) ipo.path_override().set_override(3.0);
   });
   check_audit(rec);
   bool stopped = false;
@@ -352,8 +352,8 @@ TEST_CASE("override 0 from the start holds at the start point until released") {
   const Config cfg = config({ax, ax, ax});
   Recorder rec(cfg);
   run(cfg, {line(vec(0, 0), vec(10, 0), 50.0, 7)}, rec, [](PathInterpolator& ipo, std::size_t k) {
-    if (k == 0) ipo.set_override(0.0);
-    if (k == 100) ipo.set_override(0.5);
+    if (k == 0) ipo.path_override().set_override(0.0);
+    if (k == 100) ipo.path_override().set_override(0.5);
   });
   for (std::size_t k = 0; k < 100; ++k) {
     CHECK(rec.cycles[k].held);
@@ -377,7 +377,10 @@ TEST_CASE("machining time counts held cycles and the time lost per block") {
         block_lost += b.lost;
         block_held += b.split.held;
       },
-      0, [](PathInterpolator& ipo, std::uint64_t k) { ipo.set_feed_hold(k >= 300 && k < 800); });
+      0,
+      [](PathInterpolator& ipo, std::uint64_t k) {
+        ipo.path_override().set_feed_hold(k >= 300 && k < 800);
+      });
   CHECK(r.status == Status::finished);
   CHECK(r.split.held == doctest::Approx(block_held));
   CHECK(r.split.held > 0.3);  // 500 cycles of hold minus the ramp down (0.15 s)
@@ -395,13 +398,14 @@ struct RandomOperator {
     std::uniform_real_distribution<double> u(0.0, 1.0);
     const double e = u(rng);
     if (e < 0.004) {
-      ipo.set_override(type == OverrideType::reduced_above_100 ? 1.5 * u(rng) : u(rng));
+      ipo.path_override().set_override(type == OverrideType::reduced_above_100 ? 1.5 * u(rng)
+                                                                               : u(rng));
     } else if (e < 0.0045) {
-      ipo.set_override(0.0);
+      ipo.path_override().set_override(0.0);
     } else if (e < 0.005) {
-      ipo.set_override(1.0);
+      ipo.path_override().set_override(1.0);
     } else if (e < 0.006) {
-      ipo.set_feed_hold(!ipo.feed_hold());
+      ipo.path_override().set_feed_hold(!ipo.path_override().feed_hold());
     }
   }
 };
@@ -441,8 +445,8 @@ TEST_CASE("property: random override and hold sequences keep limits and contour,
       const Status st = run(cfg, items, rec, [&](PathInterpolator& ipo, std::size_t k) {
         op(ipo, k);
         if (k % 20000 == 19999) {  // never stay stopped: the program must complete
-          ipo.set_feed_hold(false);
-          ipo.set_override(1.0);
+          ipo.path_override().set_feed_hold(false);
+          ipo.path_override().set_override(1.0);
         }
       });
       CAPTURE(trial);
@@ -506,8 +510,8 @@ TEST_CASE("carried speed-ups and brakes under random override and hold changes k
       const Status st = run(cfg, items, rec, [&](PathInterpolator& ipo, std::size_t k) {
         if (pass == 1) op(ipo, k);
         if (k % 20000 == 19999) {
-          ipo.set_feed_hold(false);
-          ipo.set_override(1.0);
+          ipo.path_override().set_feed_hold(false);
+          ipo.path_override().set_override(1.0);
         }
         const Cycle& c = ipo.cycle();
         if (c.line != line_before && line_before != 0) a_at_joint = std::max(a_at_joint, c.path.a);

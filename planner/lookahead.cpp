@@ -1,50 +1,25 @@
-// planner/lookahead: window, backward and forward passes, segment profiles (see the header).
+// planner/lookahead: the window, its backward and forward passes, and the ramps carried
+// through soft joints (see the header; the segment profiles are in lookahead_profile.cpp).
 
 #include "planner/lookahead.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
+#include "planner/lookahead_ramps.hpp"
+
 namespace ncsim::planner {
 
+using ramps::as_state_ramp;
+using ramps::ramps_distance_model;
+using ramps::released_velocity;
+
 namespace {
-
-/// Distance of the two ramps (v_entry, a_entry) -> level -> v_exit.
-double ramps_distance(double v_entry, double a_entry, double level, double v_exit, double a,
-                      double d, double j) {
-  const jerk::Ramp up = jerk::velocity_ramp(v_entry, a_entry, level, a, d, j);
-  const jerk::Ramp down = jerk::velocity_ramp(level, 0.0, v_exit, a, d, j);
-  return jerk::distance(v_entry, a_entry, up) + jerk::distance(level, 0.0, down);
-}
-
-/// Velocity at which the acceleration a0 >= 0 is released with j (no lower level is reached
-/// from (v0, a0) without the velocity passing it first).
-double released_velocity(double v0, double a0, double j) noexcept {
-  return a0 > 0.0 ? v0 + 0.5 * a0 * a0 / j : v0;
-}
-
-/// The phases of `r` after the time t (the acceleration there is a_at): a carried brake's
-/// rest, followed exactly as it was planned (solving the change again from the cut state can
-/// differ: the pulse's peak is a square root of the velocity change, so a rounding residue of
-/// it becomes a pulse of its own).
-jerk::Ramp ramp_after(jerk::Ramp r, double t, double a_at) noexcept {
-  for (std::size_t i = 0; i < 3; ++i) {
-    const double cut = std::min(t, r.duration[i]);
-    r.duration[i] -= cut;
-    t -= cut;
-    if (i == 2 && cut > 0.0) r.a_peak = a_at;  // phases 0, 1 emptied: they end at a_at
-  }
-  return r;
-}
-
-/// The same phases as a StateRamp (a_end = 0), for the kernel's cut functions.
-jerk::StateRamp as_state_ramp(const jerk::Ramp& r) noexcept {
-  return jerk::StateRamp{r.jerk, r.duration, r.a_peak, r.v_end, 0.0};
-}
 
 /// Where `ramp` begun at (v0, a0) has covered `length`: its time and state there.
 struct Cut {
@@ -96,135 +71,6 @@ double highest_fitting(double good, double bad, const Ok& ok) {
   return good;
 }
 
-/// Duration of a ramp between two velocities dv >= 0 apart with a = 0 at both ends (the
-/// kernel's velocity_ramp from a0 = 0): jerk phases alone up to dv = a^2 / j (peak acceleration
-/// sqrt(dv j)), else with a hold at a.
-double ramp_time(double dv, double a, double j) {
-  return dv * j <= a * a ? 2.0 * std::sqrt(dv / j) : dv / a + a / j;
-}
-
-/// ramps_distance() in closed form: a ramp with a = 0 at both ends is symmetric, so it covers
-/// its mean velocity times its duration. Equal to ramps_distance() up to rounding (and the
-/// kernel's snapping of rounding residues); used only to guess where the level lies.
-double ramps_distance_model(double v_entry, double level, double v_exit, double a, double d,
-                            double j) {
-  return 0.5 * (v_entry + level) * ramp_time(level - v_entry, a, j) +
-         0.5 * (level + v_exit) * ramp_time(level - v_exit, d, j);
-}
-
-/// ramps_distance() from a carried (v0, a0 > 0), as a guess: the first ramp is the rest of a
-/// ramp begun at a = 0 at v0 - a0^2 / 2j a0 / j earlier (exact when its peak is at least a0).
-double carried_ramps_distance_model(double v0, double a0, double level, double v_exit, double a,
-                                    double d, double j) {
-  const double t = a0 / j;
-  const double v_start = v0 - 0.5 * a0 * t;
-  const double before = v_start * t + j * t * t * t / 6.0;
-  return ramps_distance_model(v_start, level, v_exit, a, d, j) - before;
-}
-
-/// Weight of the stale end of the bracket when the same end moved twice in a row
-/// (Anderson-Bjorck: 1 - g_new / g_replaced; Illinois' 1/2 where that is not in (0, 1)).
-double stale_weight(double g_new, double g_replaced) noexcept {
-  const double m = 1.0 - g_new / g_replaced;
-  return m > 0.0 ? m : 0.5;
-}
-
-/// A sign-changing bracket of a rising g: g(fit) <= 0 < g(miss), both evaluated.
-struct Bracket {
-  double fit, miss;
-  double g_fit, g_miss;
-};
-
-/// Narrows `b` by a bracketed secant (Anderson-Bjorck) until miss - fit <= width (at most 40
-/// evaluations of g).
-template <class G>
-void narrow(Bracket& b, const G& g, double width) {
-  int side = 0;  // which end moved last: -1 fit, +1 miss
-  for (int iter = 0; iter < 40 && b.miss - b.fit > width; ++iter) {
-    double x = (b.fit * b.g_miss - b.miss * b.g_fit) / (b.g_miss - b.g_fit);
-    if (!(x > b.fit && x < b.miss)) x = 0.5 * (b.fit + b.miss);
-    const double gx = g(x);
-    if (gx <= 0.0) {
-      if (side == -1) b.g_miss *= stale_weight(gx, b.g_fit);
-      b.fit = x;
-      b.g_fit = gx;
-      side = -1;
-    } else {
-      if (side == 1) b.g_fit *= stale_weight(gx, b.g_miss);
-      b.miss = x;
-      b.g_miss = gx;
-      side = 1;
-    }
-  }
-}
-
-/// The level the bisection "keep lo while distance(mid) <= length" on [lo, hi] would return,
-/// to the last bit, with a handful of distance evaluations (docs/planner.md "Profile level").
-/// distance(hi) > length on entry; distance() rises with the level; `model` is a cheap
-/// closed form of distance() (equal up to rounding).
-/// First the model's root, found by a bracketed secant on the model alone, is bracketed by two
-/// evaluations of distance() a fifth of the bisection's final width apart; where that fails
-/// (the model does not bracket, or its root is off) a bracketed secant on distance() narrows
-/// [fit, miss] to a quarter of that width. Then the bisection is replayed on its own midpoints:
-/// a midpoint at or below `fit` fits and one at or above `miss` does not (monotonicity), so
-/// only midpoints inside the narrow bracket are evaluated.
-/// `g_hi` = distance(hi) - length > 0.
-template <class Distance, class Model>
-double level_search(double lo, double hi, double g_hi, const Distance& distance, const Model& model,
-                    double length) {
-  // g < 0 exactly when distance < length: a difference of doubles has the exact sign.
-  const auto g = [&](double x) { return distance(x) - length; };
-  const double width = 0.25e-12 * std::max(1.0, hi);
-  Bracket b{lo, hi, 0.0, g_hi};
-  bool fit_known = false;  // b.fit evaluated (else it is lo, not evaluated yet)
-  const auto gm = [&](double x) { return model(x) - length; };
-  Bracket m{lo, hi, gm(lo), gm(hi)};
-  if (m.g_fit <= 0.0 && m.g_miss > 0.0) {
-    narrow(m, gm, 0.01 * width);
-    const double x = 0.5 * (m.fit + m.miss);
-    const double x1 = std::max(lo, x - 0.4 * width);
-    const double x2 = x + 0.4 * width;
-    const double g1 = g(x1);
-    if (g1 <= 0.0) {
-      b.fit = x1;
-      b.g_fit = g1;
-      fit_known = true;
-      if (x2 < hi) {
-        const double g2 = g(x2);
-        (g2 <= 0.0 ? b.fit : b.miss) = x2;
-        (g2 <= 0.0 ? b.g_fit : b.g_miss) = g2;
-      }
-    } else if (x1 == lo) {
-      return lo;  // nothing fits (below)
-    } else {
-      b.miss = x1;
-      b.g_miss = g1;
-    }
-  }
-  if (!fit_known) {
-    b.g_fit = g(lo);
-    // Nothing fits: every midpoint of the bisection misses, so it ends at lo.
-    if (b.g_fit > 0.0) return lo;
-  }
-  narrow(b, g, width);
-  // The bisection of the reference (profile() before the secant, same loop bounds).
-  for (int iter = 0; iter < 100 && hi - lo > 1e-12 * std::max(1.0, hi); ++iter) {
-    const double mid = 0.5 * (lo + hi);
-    bool fits = false;
-    if (mid <= b.fit) {
-      fits = true;
-    } else if (mid < b.miss) {
-      fits = g(mid) <= 0.0;
-      (fits ? b.fit : b.miss) = mid;
-    }
-    if (fits)
-      lo = mid;
-    else
-      hi = mid;
-  }
-  return lo;
-}
-
 }  // namespace
 
 std::size_t window_size(LookAheadKind kind, std::optional<std::size_t> custom,
@@ -244,108 +90,6 @@ std::size_t window_size(LookAheadKind kind, std::optional<std::size_t> custom,
                                 (custom ? std::to_string(*custom) : std::string("(none)")) +
                                 " outside [10, " + std::to_string(custom_max) + "] (P-CHAN-00653)");
   return *custom;
-}
-
-SegmentProfile profile(const PlannedSegment& planned) noexcept {
-  const double length = planned.segment.path.length();
-  const double cap = planned.segment.limits.v_max;
-  const bool carried = planned.shape != ProfileShape::plain;
-  const double a = carried ? planned.ramp_a : planned.a_max;
-  const double d = carried ? planned.ramp_d : planned.d_max;
-  const double j = carried ? planned.ramp_j : planned.j_max;
-  const double v0 = planned.v_entry;
-  const double a0 = planned.a_entry;
-  const double v1 = planned.v_exit;
-  SegmentProfile out;
-  out.v0 = v0;
-  out.a0 = a0;
-  if (planned.shape == ProfileShape::brake_end) {  // the rest of a carried brake, then cruise
-    const jerk::Ramp brake = jerk::velocity_ramp(planned.level, 0.0, planned.v_toward, a, d, j);
-    out.first = ramp_after(brake, planned.t_cut, a0);
-    out.t_first = out.first.time();
-    if (planned.v_toward > 0.0)
-      out.t_cruise = std::max(0.0, length - jerk::distance(v0, a0, out.first)) / planned.v_toward;
-    out.second.v_end = planned.v_toward;  // no second ramp: the velocity stays
-    out.v_level = v0;
-    return out;
-  }
-  if (planned.shape == ProfileShape::brake_through) {  // a carried brake between two cuts
-    const jerk::Ramp brake = jerk::velocity_ramp(planned.level, 0.0, planned.v_toward, a, d, j);
-    out.first = ramp_after(brake, planned.t_cut, a0);
-    out.t_first = std::clamp(planned.t_brake - planned.t_cut, 0.0, out.first.time());
-    out.v_level = v0;
-    return out;
-  }
-  if (planned.shape == ProfileShape::carry_up) {
-    out.first = jerk::velocity_ramp(v0, a0, planned.v_toward, a, a, j);  // as LookAhead::pop
-    out.t_first = std::clamp(planned.t_cut, 0.0, out.first.time());
-    out.v_level = v1;
-    return out;
-  }
-  if (planned.shape == ProfileShape::carry_down) {  // level, cruise, a brake cut at the end
-    out.v_level = planned.level;
-    out.first = jerk::velocity_ramp(v0, a0, planned.level, a, d, j);
-    out.t_first = out.first.time();
-    out.second = jerk::velocity_ramp(planned.level, 0.0, planned.v_brake, a, d, j);
-    out.t_second = std::clamp(planned.t_brake, 0.0, out.second.time());
-    const double e = jerk::state_at(planned.level, 0.0, as_state_ramp(out.second), out.t_second).p;
-    const double rest = length - jerk::distance(v0, a0, out.first) - e;
-    out.t_cruise = planned.level > 0.0 ? std::max(0.0, rest) / planned.level : 0.0;
-    return out;
-  }
-  // Highest level in [max(v0, v1), cap] whose two ramps fit the length (monotone in level);
-  // from a0 > 0 no level below the release's velocity is reached.
-  const double lo = std::max(released_velocity(v0, a0, j), v1);
-  const double hi = std::max(cap, lo);
-  double level = hi;
-  const double g_hi = ramps_distance(v0, a0, hi, v1, a, d, j) - length;
-  const auto dist = [&](double x) { return ramps_distance(v0, a0, x, v1, a, d, j); };
-  if (g_hi > 0.0) {
-    if (a0 == 0.0)
-      level = level_search(
-          lo, hi, g_hi, dist, [&](double x) { return ramps_distance_model(v0, x, v1, a, d, j); },
-          length);
-    else  // the closed form from the virtual start at a = 0 the first ramp passes through
-      level = level_search(
-          lo, hi, g_hi, dist,
-          [&](double x) { return carried_ramps_distance_model(v0, a0, x, v1, a, d, j); }, length);
-  }
-  out.v_level = level;
-  out.first = jerk::velocity_ramp(v0, a0, level, a, d, j);
-  out.t_first = out.first.time();
-  out.second = jerk::velocity_ramp(level, 0.0, v1, a, d, j);
-  out.t_second = out.second.time();
-  const double rest =
-      length - jerk::distance(v0, a0, out.first) - jerk::distance(level, 0.0, out.second);
-  out.t_cruise = level > 0.0 ? std::max(0.0, rest) / level : 0.0;
-  return out;
-}
-
-PathState profile_at(const SegmentProfile& profile, double t) noexcept {
-  t = std::clamp(t, 0.0, profile.time());
-  jerk::State st{0.0, profile.v0, profile.a0};
-  // One ramp: phases with their jerk; boundary values snapped to the ramp's exact ones.
-  auto ramp = [&](const jerk::Ramp& r, PathState& out) {
-    for (std::size_t i = 0; i < 3; ++i) {
-      if (t <= r.duration[i]) {
-        const jerk::State at = jerk::advance(st, r.jerk[i], t);
-        out = PathState{at.p, at.v, at.a, r.jerk[i]};
-        return true;
-      }
-      st = jerk::advance(st, r.jerk[i], r.duration[i]);
-      st.a = i < 2 ? r.a_peak : 0.0;
-      t -= r.duration[i];
-    }
-    st.v = r.v_end;
-    return false;
-  };
-  PathState out;
-  if (ramp(profile.first, out)) return out;
-  if (t <= profile.t_cruise) return PathState{st.p + st.v * t, st.v, 0.0, 0.0};
-  st.p += st.v * profile.t_cruise;
-  t -= profile.t_cruise;
-  if (ramp(profile.second, out)) return out;
-  return PathState{st.p, st.v, 0.0, 0.0};
 }
 
 LookAhead::LookAhead(std::size_t capacity, double t_cycle, SoftJoints soft)
@@ -520,138 +264,199 @@ bool LookAhead::best_carry(double v0, double a0, Carry& out) const noexcept {
          carry_fits(v0, a0, lowest, a, j, out, true);
 }
 
+/// The brakes brake_carry() tries, one per slot m (1 <= m <= kMaxBrakeJoints) they end in:
+/// the brake ends at the end of slot m, at its exit cap w (with a = 0, where the backward
+/// pass's caps hold), crossing joints 0 .. m-1 (joint k ends slot k) below bounds[k], each
+/// within that joint's cap and the next slot's. The plan with a = 0 at every joint brakes from
+/// exit cap to exit cap over each of these slots; after slot m both go on from (w, 0), so their
+/// times over slots 0 .. m compare the two. extend() takes the next slot in; find_level() finds the
+/// brake's level for the slots taken.
+class LookAhead::BrakeSpan {
+ public:
+  /// From (v0, 0) at the front slot's start; `exit_zero`: its exit with a = 0 at joint 0.
+  BrakeSpan(const LookAhead& window, double v0, double exit_zero) noexcept
+      : window_(window),
+        front_(window.slots_[window.head_]),
+        v0_(v0),
+        z_(exit_zero),
+        a_(front_.a),
+        d_(front_.d),
+        j_(front_.j) {}
+
+  /// Takes slot m + 1 in; false where no brake ends there or beyond (the tries end).
+  bool extend() noexcept;
+  /// The highest level whose brake to w() ends at slot m's end, begins in the front slot and
+  /// passes every joint it crosses within its bound; none where no level fits.
+  std::optional<double> find_level() const noexcept;
+  /// The brake from `level` (a = 0) to w() under the span's limits.
+  jerk::Ramp brake(double level) const noexcept {
+    return jerk::velocity_ramp(level, 0.0, w_, a_, d_, j_);
+  }
+  /// The brake's part in the front slot [mm] (after the ramp up from v0 to `level`), or 0
+  /// where the level does not fit there.
+  double part_here(double level, const jerk::Ramp& brake) const noexcept;
+
+  std::size_t m() const noexcept { return m_; }
+  double w() const noexcept { return w_; }  ///< velocity the brake ends at [mm/s]
+  double bound(std::size_t k) const noexcept { return bounds_[k]; }  ///< at joint k [mm/s]
+  double a() const noexcept { return a_; }  ///< the ramp's limits: the smallest of the slots
+  double d() const noexcept { return d_; }
+  double j() const noexcept { return j_; }
+  /// The plan with a = 0 at the joints: its time over slots 1 .. m [s].
+  double t_zero() const noexcept { return t_zero_; }
+
+ private:
+  const Slot& slot(std::size_t k) const noexcept {
+    return window_.slots_[(window_.head_ + k) % window_.slots_.size()];
+  }
+  bool fits_here(double level) const noexcept { return part_here(level, brake(level)) > 0.0; }
+  bool cuts_fit(double level) const noexcept;
+
+  const LookAhead& window_;
+  const Slot& front_;
+  double v0_ = 0.0;
+  std::size_t m_ = 0;
+  std::array<double, kMaxBrakeJoints> bounds_{};
+  double z_ = 0.0;        ///< the plan with a = 0 at the joints: velocity at the last one
+  double w_ = 0.0;        ///< exit cap of slot m [mm/s]
+  double a_, d_, j_;      ///< the ramp's limits over slots 0 .. m
+  double t_zero_ = 0.0;   ///< the plan with a = 0 at the joints over slots 1 .. m [s]
+  double covered_ = 0.0;  ///< the brake's distance after joint 0 [mm]
+};
+
+bool LookAhead::BrakeSpan::extend() noexcept {
+  const std::size_t m = m_ + 1;
+  if (m > kMaxBrakeJoints || m >= window_.count_) return false;
+  const Slot& prev = slot(m - 1);
+  const Slot& sm = slot(m);
+  if (m > 1 && (prev.segment.stop != StopReason::none || prev.segment.a_zero_at_end)) return false;
+  bounds_[m - 1] = std::min(prev.joint_cap, sm.cap);
+  // A joint whose caps bind the plan with a = 0 there is not passed faster braking: the
+  // brake ends at it (as at joint 0: brake_carry()).
+  if (m > 1 && !(z_ < bounds_[m - 1])) return false;
+  const double w = std::min(sm.exit_cap, sm.cap);
+  // Only where the plan with a = 0 at the joints brakes over each slot crossed, and a plan
+  // ending at a = 0 at a joint (the override's, up to z: PlannedSegment::v_exit_zero)
+  // leaves slot m its brake to w. The backward pass's exit cap can lie above the entry
+  // velocity for w (that velocity of a short jerk-limited brake is not monotone in the
+  // exit: "Look-ahead"; the slot's pop then brakes to a lower exit): no carry there.
+  if (!(w < z_) || z_ > jerk::entry_velocity_for_exit(w, sm.length, sm.d, sm.j)) return false;
+  const jerk::Ramp zero = jerk::velocity_ramp(z_, 0.0, w, sm.a, sm.d, sm.j);
+  t_zero_ +=
+      zero.time() + (w > 0.0 ? std::max(0.0, sm.length - jerk::distance(z_, 0.0, zero)) / w : 0.0);
+  z_ = w;
+  a_ = std::min(a_, sm.a);
+  d_ = std::min(d_, sm.d);
+  j_ = std::min(j_, sm.j);
+  covered_ += sm.length;
+  m_ = m;
+  w_ = w;
+  return true;
+}
+
+double LookAhead::BrakeSpan::part_here(double level, const jerk::Ramp& brake) const noexcept {
+  // Its part here and its velocity at every joint grow with the level: the fitting levels
+  // are [lo, highest].
+  const jerk::Ramp up = jerk::velocity_ramp(v0_, 0.0, level, a_, d_, j_);
+  const double e = jerk::distance(level, 0.0, brake) - covered_;
+  return e > 0.0 && jerk::distance(v0_, 0.0, up) + e <= front_.length * (1.0 + 1e-12) ? e : 0.0;
+}
+
+bool LookAhead::BrakeSpan::cuts_fit(double level) const noexcept {
+  // Every joint the brake crosses lies inside its ramp (a < 0 there, and a release from the
+  // state there ends at or above w); its velocity there is within the joint's bound where
+  // the ramp passes the bound before it (distance_to_velocity: no inversion of the
+  // distance). The distances are summed in the order through_brake() sums them.
+  const jerk::Ramp br = brake(level);
+  double s = part_here(level, br);
+  if (!(s > 0.0)) return false;
+  for (std::size_t k = 0; k < m_; ++k) {
+    if (k > 0) s += slot(k).length;
+    if (bounds_[k] < level && s < distance_to_velocity(level, br, bounds_[k]) * (1.0 + 1e-12))
+      return false;
+  }
+  return true;
+}
+
+std::optional<double> LookAhead::BrakeSpan::find_level() const noexcept {
+  // The highest level by the distance alone first (cheap), to 1e-3 relative (a target: the
+  // cut state is exact for whichever level is taken), then the cuts' checks. The distance in
+  // closed form first (ramps_distance_model: equal to the kernel's distances up to rounding),
+  // by bisection on it (1e-3 relative), then the kernel's check.
+  const auto here = [this](double v) { return fits_here(v); };
+  const auto model_fits = [this](double v) {
+    return ramps_distance_model(v0_, v, w_, a_, d_, j_) - covered_ <= front_.length;
+  };
+  const auto cuts = [this](double v) { return cuts_fit(v); };
+  // The brake must begin before the joint (e > 0): from just above the level whose brake
+  // to w is as long as the slots after joint 0 (the kernel's inverse; its distance grows
+  // with the level).
+  const double hi = std::max(front_.cap, std::max(v0_, w_));
+  double lo = std::max(v0_, w_);
+  if (!fits_here(lo)) {
+    const double exact = jerk::entry_velocity_for_exit(w_, covered_, d_, j_);
+    lo = std::max(lo, exact + 1e-9 * exact);
+    if (!(lo < hi) || !fits_here(lo)) return std::nullopt;
+  }
+  double level = highest_fitting(lo, hi, model_fits);
+  if (!fits_here(level)) level = highest_fitting(lo, level, here);
+  if (!cuts_fit(level)) {
+    if (!cuts_fit(lo)) return std::nullopt;
+    level = highest_fitting(lo, level, cuts);
+  }
+  return level;
+}
+
 bool LookAhead::brake_carry(double v0, PlannedSegment& out, Carry& carry) const noexcept {
   const double exit_zero = out.v_exit;
   const Slot& front = slots_[head_];
-  const auto slot = [&](std::size_t k) -> const Slot& {
-    return slots_[(head_ + k) % slots_.size()];
-  };
   // Nothing to gain where the joint's caps bind the plan with a = 0 there.
-  if (!(exit_zero < std::min(front.joint_cap, slot(1).cap))) return false;
-  // For m = 1, 2, ...: the brake ends at the end of slot m, at its exit cap w (with a = 0,
-  // where the backward pass's caps hold), crossing joints 0 .. m-1 (joint k ends slot k)
-  // below bounds[k], each within that joint's cap and the next slot's. The plan with a = 0 at
-  // every joint brakes from exit cap to exit cap over each of these slots; after slot m both
-  // go on from (w, 0), so their times over slots 0 .. m compare the two.
-  struct Try {
-    double t_cut = 0.0, v1 = 0.0, a1 = 0.0;
-  };
+  if (!(exit_zero < std::min(front.joint_cap, slots_[(head_ + 1) % slots_.size()].cap)))
+    return false;
   struct Best {
-    Try cut;
+    Cut cut;
     double level = 0.0, w = 0.0, e = 0.0, a = 0.0, d = 0.0, j = 0.0, gain = 0.0;
     std::size_t m = 0;
   } best;
-  std::array<double, kMaxBrakeJoints> bounds{};
-  double a = front.a, d = front.d, j = front.j;
-  double z = exit_zero;   // the plan with a = 0 at the joints: velocity at the last one
-  double t_zero = 0.0;    // the same, over slots 1 .. m
   double t_front = -1.0;  // the front slot's time with a = 0 at joint 0 (when first needed)
-  double covered = 0.0;   // the brake's distance after joint 0
-  for (std::size_t m = 1; m <= kMaxBrakeJoints && m < count_; ++m) {
-    const Slot& prev = slot(m - 1);
-    const Slot& sm = slot(m);
-    if (m > 1 && (prev.segment.stop != StopReason::none || prev.segment.a_zero_at_end)) break;
-    bounds[m - 1] = std::min(prev.joint_cap, sm.cap);
-    // A joint whose caps bind the plan with a = 0 there is not passed faster braking: the
-    // brake ends at it (as at joint 0 above).
-    if (m > 1 && !(z < bounds[m - 1])) break;
-    const double w = std::min(sm.exit_cap, sm.cap);
-    // Only where the plan with a = 0 at the joints brakes over each slot crossed, and a plan
-    // ending at a = 0 at a joint (the override's, up to z: PlannedSegment::v_exit_zero)
-    // leaves slot m its brake to w. The backward pass's exit cap can lie above the entry
-    // velocity for w (that velocity of a short jerk-limited brake is not monotone in the
-    // exit: "Look-ahead"; the slot's pop then brakes to a lower exit): no carry there.
-    if (!(w < z) || z > jerk::entry_velocity_for_exit(w, sm.length, sm.d, sm.j)) break;
-    const jerk::Ramp zero = jerk::velocity_ramp(z, 0.0, w, sm.a, sm.d, sm.j);
-    t_zero +=
-        zero.time() + (w > 0.0 ? std::max(0.0, sm.length - jerk::distance(z, 0.0, zero)) / w : 0.0);
-    z = w;
-    a = std::min(a, sm.a);
-    d = std::min(d, sm.d);
-    j = std::min(j, sm.j);
-    covered += sm.length;
-    // For a level: the brake towards w ending at slot m's end; its part in the front slot
-    // (e > 0), or 0 where the level does not fit there. Its part here and its velocity at
-    // every joint grow with the level: the fitting levels are [lo, highest]. The highest by
-    // the distance alone first (cheap), to 1e-3 relative (a target: the cut state is exact
-    // for whichever level is taken), then the cuts' checks.
-    const auto part_here = [&](double level, const jerk::Ramp& brake) {
-      const jerk::Ramp up = jerk::velocity_ramp(v0, 0.0, level, a, d, j);
-      const double e = jerk::distance(level, 0.0, brake) - covered;
-      return e > 0.0 && jerk::distance(v0, 0.0, up) + e <= front.length * (1.0 + 1e-12) ? e : 0.0;
-    };
-    const auto fits_here = [&](double level) {
-      return part_here(level, jerk::velocity_ramp(level, 0.0, w, a, d, j)) > 0.0;
-    };
-    // The same in closed form (ramps_distance_model: equal to the kernel's distances up to
-    // rounding): the highest level by bisection on it (1e-3 relative), then the kernel's check.
-    const auto model_fits = [&](double level) {
-      return ramps_distance_model(v0, level, w, a, d, j) - covered <= front.length;
-    };
-    // Every joint the brake crosses lies inside its ramp (a < 0 there, and a release from the
-    // state there ends at or above w); its velocity there is within the joint's bound where
-    // the ramp passes the bound before it (distance_to_velocity: no inversion of the
-    // distance). The distances are summed in the order through_brake() sums them.
-    const auto cuts_fit = [&](double level) {
-      const jerk::Ramp brake = jerk::velocity_ramp(level, 0.0, w, a, d, j);
-      double s = part_here(level, brake);
-      if (!(s > 0.0)) return false;
-      for (std::size_t k = 0; k < m; ++k) {
-        if (k > 0) s += slot(k).length;
-        if (bounds[k] < level && s < distance_to_velocity(level, brake, bounds[k]) * (1.0 + 1e-12))
-          return false;
-      }
-      return true;
-    };
-    // The brake must begin before the joint (e > 0): from just above the level whose brake
-    // to w is as long as the slots after joint 0 (the kernel's inverse; its distance grows
-    // with the level).
-    const double hi = std::max(front.cap, std::max(v0, w));
-    double lo = std::max(v0, w);
-    if (!fits_here(lo)) {
-      const double exact = jerk::entry_velocity_for_exit(w, covered, d, j);
-      lo = std::max(lo, exact + 1e-9 * exact);
-      if (!(lo < hi) || !fits_here(lo)) continue;
-    }
-    double level = highest_fitting(lo, hi, model_fits);
-    if (!fits_here(level)) level = highest_fitting(lo, level, fits_here);
-    if (!cuts_fit(level)) {
-      if (!cuts_fit(lo)) continue;
-      level = highest_fitting(lo, level, cuts_fit);
-    }
+  BrakeSpan span(*this, v0, exit_zero);
+  while (span.extend()) {
+    const std::optional<double> level = span.find_level();
+    if (!level) continue;
     // The state committed at joint 0, checked on the cut itself.
-    const jerk::Ramp brake = jerk::velocity_ramp(level, 0.0, w, a, d, j);
-    const double e = part_here(level, brake);
-    const Cut cut = cut_at(level, 0.0, brake, e);
-    const Try t{cut.t, cut.v, cut.a};
-    if (!(e > 0.0 && t.a1 < 0.0 && t.v1 <= bounds[0] && t.v1 - 0.5 * t.a1 * t.a1 / j >= w))
+    const jerk::Ramp brake = span.brake(*level);
+    const double e = span.part_here(*level, brake);
+    const Cut cut = cut_at(*level, 0.0, brake, e);
+    if (!(e > 0.0 && cut.a < 0.0 && cut.v <= span.bound(0) &&
+          cut.v - 0.5 * cut.a * cut.a / span.j() >= span.w()))
       continue;
-    if (!(t.v1 > exit_zero)) continue;  // joint 0 no faster than with a = 0 there
+    if (!(cut.v > exit_zero)) continue;  // joint 0 no faster than with a = 0 there
     PlannedSegment tried = out;
     tried.shape = ProfileShape::carry_down;
-    tried.v_exit = t.v1;
-    tried.a_exit = t.a1;
-    tried.v_brake = w;
-    tried.t_brake = t.t_cut;
-    tried.level = level;
-    tried.ramp_a = a;
-    tried.ramp_d = d;
-    tried.ramp_j = j;
+    tried.v_exit = cut.v;
+    tried.a_exit = cut.a;
+    tried.v_brake = span.w();
+    tried.t_brake = cut.t;
+    tried.level = *level;
+    tried.ramp_a = span.a();
+    tried.ramp_d = span.d();
+    tried.ramp_j = span.j();
     if (t_front < 0.0) t_front = profile(out).time();
-    const double gain = t_front + t_zero - (profile(tried).time() + (brake.time() - t.t_cut));
-    if (gain > best.gain) best = Best{t, level, w, e, a, d, j, gain, m};
+    const double gain = t_front + span.t_zero() - (profile(tried).time() + (brake.time() - cut.t));
+    if (gain > best.gain)
+      best = Best{cut, *level, span.w(), e, span.a(), span.d(), span.j(), gain, span.m()};
   }
   if (best.m == 0) return false;
   out.shape = ProfileShape::carry_down;
   out.v_exit_zero = exit_zero;
-  out.v_exit = best.cut.v1;
-  out.a_exit = best.cut.a1;
+  out.v_exit = best.cut.v;
+  out.a_exit = best.cut.a;
   out.v_brake = best.w;
-  out.t_brake = best.cut.t_cut;
+  out.t_brake = best.cut.t;
   out.level = best.level;
   carry.v_toward = best.w;
   carry.level = best.level;
-  carry.t_cut = best.cut.t_cut;
+  carry.t_cut = best.cut.t;
   carry.s_cut = best.e;
   carry.joints = best.m - 1;
   carry.a = best.a;
@@ -661,7 +466,7 @@ bool LookAhead::brake_carry(double v0, PlannedSegment& out, Carry& carry) const 
   return true;
 }
 
-double LookAhead::start_at(double v) noexcept {  // --- sync-feed
+double LookAhead::start_at(double v) noexcept {  // a path that starts moving (sync-feed)
   v_committed_ = std::clamp(v, 0.0, front_entry_cap());
   a_committed_ = 0.0;
   return v_committed_;

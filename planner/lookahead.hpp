@@ -150,7 +150,7 @@ class LookAhead {
   double v_committed() const noexcept { return v_committed_; }
   /// Acceleration there [mm/s^2] (!= 0 only where a ramp is carried across a soft joint).
   double a_committed() const noexcept { return a_committed_; }
-  // --- sync-feed: a path that starts moving (the hand-over from the catch-up, issue 14)
+  // A path that starts moving (sync-feed: the hand-over from the catch-up, issue 14):
   /// The oldest segment not popped yet (null: the window is empty).
   const PreparedSegment* front() const noexcept {
     return empty() ? nullptr : &slots_[head_].segment;
@@ -161,12 +161,11 @@ class LookAhead {
   /// The next pop() starts at `v` [mm/s] instead of v_committed(): clamped to [0,
   /// front_entry_cap()], so the plan stays feasible. Returns the velocity set.
   double start_at(double v) noexcept;
-  // --- hold: the workspace hold's prediction across block ends (issue 14, tracking/workspace_hold)
+  // The workspace hold's prediction across block ends (issue 14, tracking/workspace_hold):
   /// The k-th oldest segment not popped yet (k = 0: front()); null when k >= size().
   const PreparedSegment* queued(std::size_t k) const noexcept {
     return k < count_ ? &slots_[(head_ + k) % slots_.size()].segment : nullptr;
   }
-  // --- hold: end
 
  private:
   struct Slot {
@@ -217,6 +216,8 @@ class LookAhead {
   /// spans, the fastest m fills it (v_exit, a_exit < 0, v_brake, t_brake, level, limits) and
   /// `carry`; false otherwise.
   bool brake_carry(double v0, PlannedSegment& out, Carry& carry) const noexcept;
+  /// The slots a brake carried by brake_carry() may span, and its level (lookahead.cpp).
+  class BrakeSpan;
   /// pop() for the front slot: after a carried brake, its rest or its part up to the next
   /// cut; else the plan with a = 0 at the exit, a carried speed-up or a carried brake.
   void end_brake(PlannedSegment& out) noexcept;

@@ -19,7 +19,7 @@
 // the line of the active block, the following look-ahead entries, the belt travel and
 // velocity along the conveying direction).
 // Outputs: the path velocity cap [mm/s] (+inf: none), which the channel gives the interpolator
-// (PathInterpolator::set_velocity_cap: a jerk-limited replan, the override machinery), and the
+// (PathOverride::set_velocity_cap: a jerk-limited replan, the override machinery), and the
 // check of the line + P-CHAN-00367 on the commanded TCP (NC9080).
 // Invariants: pure decisions on the inputs (deterministic); never throws; no allocation.
 
