@@ -288,7 +288,8 @@ bool WordReader::read_addresses(const ast::Block& b, BlockWords& bw) {
         bool failed = false;
         if (w.kind == ast::WordKind::h) {
           bw.tech.push_back(Tech{TechKind::h, *v, extra});
-        } else if (code == 6 && *v == 6.0 && !extra && ip_.subs.read_word_call("M6", w.loc, failed)) {
+        } else if (code == 6 && *v == 6.0 && !extra &&
+                   ip_.subs.read_word_call("M6", w.loc, failed)) {
           // P-CHAN-00118: M6 calls its subroutine and is no M function (no technology process)
         } else if (failed) {
           return false;
