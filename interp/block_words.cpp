@@ -272,9 +272,8 @@ bool WordReader::read_addresses(const ast::Block& b, BlockWords& bw) {
         bw.tech.push_back(Tech{TechKind::t, *v, {}});
         break;
       case ast::WordKind::d: {
-        bool failed = false;  // P-CHAN-00429: a D word may also call a subroutine
-        ip_.subs.read_word_call("D", w.loc, failed);
-        if (failed) return false;
+        bool called = false;  // P-CHAN-00429: a D word may also call a subroutine
+        if (!ip_.subs.read_word_call(WordCall::d, w.loc, called)) return false;
         bw.tech.push_back(Tech{TechKind::d, *v, {}});
         bw.d_word = *v;  // the tool for TRC (trc_words.cpp)
         bw.d_loc = w.loc;
@@ -285,14 +284,15 @@ bool WordReader::read_addresses(const ast::Block& b, BlockWords& bw) {
         std::optional<double> extra;
         if (!additional_value(b, w, extra)) return false;
         const int code = static_cast<int>(std::lround(*v));
-        bool failed = false;
+        bool called = false;
+        if (w.kind == ast::WordKind::m && *v == 6.0 && !extra &&
+            !ip_.subs.read_word_call(WordCall::m6, w.loc, called)) {
+          return false;
+        }
         if (w.kind == ast::WordKind::h) {
           bw.tech.push_back(Tech{TechKind::h, *v, extra});
-        } else if (code == 6 && *v == 6.0 && !extra &&
-                   ip_.subs.read_word_call("M6", w.loc, failed)) {
+        } else if (called) {
           // P-CHAN-00118: M6 calls its subroutine and is no M function (no technology process)
-        } else if (failed) {
-          return false;
         } else if (code == 0 || code == 1 || code == 2 || code == 30 || code == 17 || code == 29) {
           bw.program_m = code;  // an additional value goes to the PLC with it (not modelled)
         } else {

@@ -133,9 +133,7 @@ bool Offsets::check_offsets_frame(const ast::Block& b, AxisMask programmed) {
   // The zero offset shifts the axes; under #TRAFO or #SYNC IN the programmed coordinates are
   // not axis values, so the shift would need the chain below them, which ncsim does not model
   // there. Under #CS alone the chain carries the X/Y/Z offsets (follow_cs_base).
-  if (mcs_on || cs_carries_offsets() ||
-      (ip_.cs.active_count() == 0 && !ip_.modal.kinematics_on && !ip_.modal.synchronised))
-    return true;
+  if (mcs_on || (!ip_.modal.kinematics_on && !ip_.modal.synchronised)) return true;
   for (std::size_t i = 0; i < ip_.machine.axes.size() && i < kMaxAxes; ++i) {
     if (((programmed >> i) & 1u) == 0) continue;
     if (zero_offset(static_cast<std::uint8_t>(i)) != 0.0) {

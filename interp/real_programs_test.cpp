@@ -219,6 +219,21 @@ TEST_CASE("M6 calls m6_prog_file instead of being an M function; #FILE NAME [M6=
   CHECK(motions(plain).size() == 3);
 }
 
+TEST_CASE("#FILE NAME [M6=\"\"] gives M6 the channel's m6_prog_file (P-CHAN-00118) again") {
+  Folder f("m6reset");
+  f.write("change.nc", "%change\nG00 Z50\nM17\n");
+  f.write("other.nc", "%other\nG00 Z70\nM17\n");
+  f.write("main.nc", "%main\n#FILE NAME [M6=\"other.nc\"]\nM6\n#FILE NAME [M6=\"\"]\nM6\nM30\n");
+  machines::Machine m = cycle_machine();
+  m.channel.m6_prog_file = "change.nc";
+  const test::Run r = run_on(m, f.dir / "main.nc");
+  REQUIRE(r.error_id.empty());
+  const std::vector<std::string> mv = motions(r);
+  REQUIRE(mv.size() == 2);
+  CHECK(field(mv[0], "Z") == doctest::Approx(70));
+  CHECK(field(mv[1], "Z") == doctest::Approx(50));
+}
+
 TEST_CASE("a D word also calls d_prog_file (P-CHAN-00429); with G80 in the block it is NC4308") {
   Folder f("dcall");
   f.write("tooldata.nc", "%tooldata\nG00 Y9\nM17\n");

@@ -81,8 +81,8 @@ std::uint64_t RepeatWatch::fingerprint(std::size_t& cost) const {
   h = mix(h, bits(d.offsets.vector_vel));
   for (const auto& [code, name] : d.subs.file_names)
     h = mix(h, code);
-  h = mix(h, (std::uint64_t{d.subs.m6_file.has_value()} << 1) |
-                 std::uint64_t{d.subs.d_file.has_value()});
+  for (const auto& name : d.subs.word_files)
+    h = mix(h, name.has_value());
   cost += d.flow.frames().size() + d.calls.size() + kMaxAxes;
   return h;
 }

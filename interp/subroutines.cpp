@@ -47,6 +47,11 @@ std::optional<std::string> subroutine_file_problem(const std::filesystem::path& 
   }
 }
 
+/// M6 / D as the program writes it.
+const char* word_name(WordCall w) {
+  return w == WordCall::m6 ? "M6" : "D";
+}
+
 /// The channel parameter that configures G `code`'s subroutine, as a user writes it.
 std::string configuring_parameter(std::uint32_t code) {
   if (code >= 80 && code <= 89) {
@@ -54,6 +59,11 @@ std::string configuring_parameter(std::uint32_t code) {
            ")";
   }
   return "g800_prog_file[" + std::to_string(code - 800) + "] (P-CHAN-00187)";
+}
+
+/// The channel parameter that configures M6's or D's subroutine.
+const char* word_parameter(WordCall w) {
+  return w == WordCall::m6 ? "m6_prog_file (P-CHAN-00118)" : "d_prog_file (P-CHAN-00429)";
 }
 
 /// `@P12` -> 12; 0 when `keyword` is not a cycle parameter name.
@@ -205,25 +215,23 @@ bool Subroutines::subroutine_return() {
 }
 
 std::string Subroutines::call_name(const CycleCall& c) {
-  if (!c.word.empty()) return c.word;
+  if (c.word) return word_name(*c.word);
   return c.g_code != 0 ? "G" + std::to_string(c.g_code) : "L CYCLE";
 }
 
-bool Subroutines::read_word_call(const char* word, core::SourceLoc at, bool& failed) {
-  // P-CHAN-00118 / P-CHAN-00429: the channel's name, or #FILE NAME's until the program end;
+bool Subroutines::read_word_call(WordCall word, core::SourceLoc at, bool& called) {
+  // P-CHAN-00118 / P-CHAN-00429: #FILE NAME's name until the program end, else the channel's;
   // neither: M6 is an M function and D a plain D word.
-  const bool m6 = std::string_view(word) == "M6";
-  const std::optional<std::string>& over = m6 ? m6_file : d_file;
-  const std::string& listed =
-      m6 ? ip_.machine.channel.m6_prog_file : ip_.machine.channel.d_prog_file;
-  const std::string name = over ? *over : listed;
-  if (name.empty()) return false;
+  const std::optional<std::string>& over = word_files[static_cast<std::size_t>(word)];
+  const std::string& name = over                   ? *over
+                            : word == WordCall::m6 ? ip_.machine.channel.m6_prog_file
+                                                   : ip_.machine.channel.d_prog_file;
+  called = !name.empty();
+  if (!called) return true;
   if (cycle_call) {
-    failed = true;
-    ip_.fail(at, "NC4308",
-             std::string(word) + " after " + call_name(*cycle_call) +
-                 ": one implicit subroutine call per block");
-    return false;
+    return ip_.fail(at, "NC4308",
+                    std::string(word_name(word)) + " after " + call_name(*cycle_call) +
+                        ": one implicit subroutine call per block");
   }
   CycleCall c;
   c.word = word;
@@ -306,8 +314,7 @@ bool Subroutines::run_cycle_call() {
   const std::string what = call_name(c);
   // The skipped-call warning NC4307, once per G code or cycle name (--missing-cycles skip).
   const auto skip = [&](const std::string& why) {
-    if (skipped_cycles.insert(c.g_code != 0 || !c.word.empty() ? what : what + " " + c.name)
-            .second) {
+    if (skipped_cycles.insert(c.g_code != 0 || c.word ? what : what + " " + c.name).second) {
       ip_.warn(c.loc, "NC4307", what + " skipped (--missing-cycles skip): " + why);
     }
     ip_.blocks_without_motion = 0;
@@ -336,7 +343,7 @@ bool Subroutines::run_cycle_call() {
                         c.name + ")");
   }
   // A local subroutine of that name (LL CYCLE) comes first.
-  if (c.g_code == 0 && c.word.empty()) {
+  if (c.g_code == 0 && !c.word) {
     auto& subs = ip_.files[ip_.pc.file]->local_subs;
     if (auto it = subs.find(grammar::to_upper(c.name)); it != subs.end()) {
       enter_level({ip_.pc.file, it->second + 1}, it->second);
@@ -370,10 +377,9 @@ bool Subroutines::run_cycle_call() {
   if (!found) {
     const std::string why =
         "its file " + c.name + " is not in " + looked +
-        (c.g_code != 0    ? " (configured by " + configuring_parameter(c.g_code) + " or #FILE NAME)"
-         : c.word == "M6" ? " (configured by m6_prog_file (P-CHAN-00118) or #FILE NAME)"
-         : c.word == "D"  ? " (configured by d_prog_file (P-CHAN-00429) or #FILE NAME)"
-                          : "") +
+        (c.g_code != 0 ? " (configured by " + configuring_parameter(c.g_code) + " or #FILE NAME)"
+         : c.word ? std::string(" (configured by ") + word_parameter(*c.word) + " or #FILE NAME)"
+                  : "") +
         "; give the folder with --cycles DIR";
     if (ip_.options.skip_missing_cycles) return skip(why);
     return ip_.fail(c.loc, "NC4301", what + " cannot be run: " + why);
@@ -390,7 +396,7 @@ bool Subroutines::run_cycle_call() {
   const std::uint32_t start = ip_.files[index]->main_start;
   enter_level({index, start}, start == 0 ? 0 : start - 1);
   // M6 and D call "analogous to L ..." (P-CHAN-00118): a subroutine, not a cycle.
-  if (c.word.empty()) ip_.vars.set_cycle_params(std::move(c.params));
+  if (!c.word) ip_.vars.set_cycle_params(std::move(c.params));
   return true;
 }
 
@@ -402,38 +408,37 @@ bool Subroutines::hash_file_name(const ast::Block& b, const ast::HashCommand& h)
   for (std::uint32_t k = 0; k < h.item_count && k < b.items.size(); ++k) {
     const ast::Item& it = b.items[k];
     const std::string_view kw = it.keyword;
-    const bool m6 = grammar::iequals(kw, "M6");
-    if (m6 || grammar::iequals(kw, "D") || grammar::iequals(kw, "MSG")) {
-      if (it.kind != ast::ItemKind::keyword || (it.text.empty() && it.value != ast::kNoNode)) {
-        return ip_.fail(
-            it.loc, "NC4309",
-            std::string(kw) + " needs a quoted file name (" + std::string(kw) + "=\"x.nc\")");
-      }
-      if (grammar::iequals(kw, "MSG")) continue;
-      std::optional<std::string>& over = m6 ? m6_file : d_file;
-      over = std::string(it.text);
-      continue;
-    }
     std::uint32_t code = 0;
     bool digits = kw.size() >= 2 && grammar::ascii_upper(kw[0]) == 'G';
     for (std::size_t j = 1; digits && j < kw.size(); ++j) {
       if (kw[j] < '0' || kw[j] > '9') digits = false;
       if (digits) code = code * 10 + static_cast<std::uint32_t>(kw[j] - '0');
     }
-    if (!digits || kw.size() > 4 || !grammar::is_implicit_call_g(code)) {
+    const bool g = digits && kw.size() <= 4 && grammar::is_implicit_call_g(code);
+    const bool m6 = grammar::iequals(kw, "M6");
+    const bool d = grammar::iequals(kw, "D");
+    if (!g && !m6 && !d && !grammar::iequals(kw, "MSG")) {
       return ip_.fail(
           it.loc, "NC4309",
           "#FILE NAME names the subroutine of G80-G89, G800-G839, M6 or D, or MSG's file, not '" +
               std::string(kw) + "'");
     }
     if (it.kind != ast::ItemKind::keyword || (it.text.empty() && it.value != ast::kNoNode)) {
-      return ip_.fail(it.loc, "NC4309",
-                      std::string(kw) + " needs a quoted file name (G80=\"x.nc\")");
+      return ip_.fail(
+          it.loc, "NC4309",
+          std::string(kw) + " needs a quoted file name (" + std::string(kw) + "=\"x.nc\")");
     }
-    if (it.text.empty()) {
-      file_names.erase(code);
-    } else {
-      file_names[code] = std::string(it.text);
+    const std::string name(it.text);  // empty: the channel's subroutine again
+    if (g && name.empty()) file_names.erase(code);
+    if (g && !name.empty()) file_names[code] = name;
+    if (m6 || d) {
+      std::optional<std::string>& over =
+          word_files[static_cast<std::size_t>(m6 ? WordCall::m6 : WordCall::d)];
+      if (name.empty()) {
+        over.reset();
+      } else {
+        over = name;
+      }
     }
   }
   return true;

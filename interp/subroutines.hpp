@@ -11,6 +11,7 @@
 // called level, a CallFrame on the decoder's call stack, a new variable level (@P parameters).
 // Invariant: a level returns to the pc and control depth it was called from.
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <map>
@@ -27,6 +28,9 @@ namespace ncsim::interp {
 struct ProgramFile;
 struct Pc;
 
+/// The words that may call a configured subroutine besides the G codes (P-CHAN-00118, 00429).
+enum class WordCall : std::uint8_t { m6, d };
+
 class Subroutines {
  public:
   explicit Subroutines(Interpreter::Impl& decoder) : ip_(decoder) {}
@@ -34,8 +38,8 @@ class Subroutines {
   /// A cycle call read from a block, run after the block's words: G80-G89 / G800-G839 with
   /// their parameter list (PROG-206278923) or `L CYCLE [NAME=.. @P1=..]` (PROG-206859019).
   struct CycleCall {
-    std::uint32_t g_code = 0;  ///< 0: L CYCLE, M6 or D
-    std::string word;          ///< "M6" / "D": an implicit call without parameters (P-CHAN-00118)
+    std::uint32_t g_code = 0;      ///< 0: L CYCLE, M6 or D
+    std::optional<WordCall> word;  ///< M6 / D: an implicit call without parameters
     core::SourceLoc loc;
     std::string name;                           ///< L CYCLE's NAME; G: found at run_cycle_call
     std::vector<std::optional<double>> params;  ///< [k]: @P(k+1); nullopt: a gap
@@ -46,19 +50,19 @@ class Subroutines {
   /// Records the local subroutines before the main part of `pf` and where the main part starts.
   bool find_main_start(ProgramFile& pf, std::uint16_t index);
   bool read_implicit_call(const grammar::ast::Block& b, const grammar::ast::Word& w);  // G80..
-  /// M6 (`word` "M6") or a D word ("D"): true when its subroutine is configured (P-CHAN-00118,
-  /// P-CHAN-00429, `#FILE NAME [M6=..]`) and the call was read; false with `failed` set on an
-  /// error (a second implicit call in the block, NC4308).
-  bool read_word_call(const char* word, core::SourceLoc at, bool& failed);
+  /// M6 or a D word: reads its implicit call when a subroutine is configured (P-CHAN-00118,
+  /// P-CHAN-00429, `#FILE NAME [M6=..]`); `called` says whether it was. False: an error (a
+  /// second implicit call in the block, NC4308).
+  bool read_word_call(WordCall word, core::SourceLoc at, bool& called);
   /// "G805", "M6", "D" or "L CYCLE": what made the call, for messages.
   static std::string call_name(const CycleCall& c);
   bool run_cycle_call();  // enters cycle_call's subroutine (or skips it) and clears it
   bool hash_file_name(const grammar::ast::Block& b, const grammar::ast::HashCommand& h);
 
-  std::optional<CycleCall> cycle_call;              // read from the block being decoded
-  std::map<std::uint32_t, std::string> file_names;  // #FILE NAME [G80="x.nc"] until M30
-  std::optional<std::string> m6_file, d_file;       // #FILE NAME [M6=".." D=".."] until M30
-  std::set<std::string> skipped_cycles;             // G codes and cycle names warned about (NC4307)
+  std::optional<CycleCall> cycle_call;                   // read from the block being decoded
+  std::map<std::uint32_t, std::string> file_names;       // #FILE NAME [G80="x.nc"] until M30
+  std::array<std::optional<std::string>, 2> word_files;  // #FILE NAME [M6=.. D=..] until M30
+  std::set<std::string> skipped_cycles;  // G codes and cycle names warned about (NC4307)
 
  private:
   bool read_cycle_call(const grammar::ast::Block& b, const grammar::ast::Call& c);

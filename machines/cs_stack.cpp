@@ -99,7 +99,7 @@ void CsStack::drop_automatic_if_inactive(int id) {
 
 Frame CsStack::active_frame() const {
   if (active_.empty()) return Frame::identity();
-  Frame f = base_mm_.isZero() ? Frame::identity() : Frame::shift(base_mm_);
+  Frame f = Frame::shift(base_mm_);
   for (const Active& a : active_)
     f = f * a.frame;
   return f;
