@@ -63,6 +63,7 @@ void Audit::check(Quantity q, Method m, std::size_t axis, const Cycle& c, double
 }
 
 void Audit::on_joint(const Joint& jt) {
+  joint_rapid_ = joint_rapid_ || jt.rapid_in || jt.rapid_out;
   // Under #TRAFO the steps are Cartesian: the joints' checks take over (on_joints()), with the
   // joints' own steps where the interpolator gave them. The state is the last cycle's: a switch
   // happens with the path standing, and the first cycle after it starts from rest, so it
@@ -112,28 +113,42 @@ void Audit::note_step(const Step& s) {
 
 void Audit::step_formulas(const Joint& jt) {
   for (std::size_t i = 0; i < limits_.size(); ++i) {
-    const planner::AxisLimits& l = limits_[i];
+    // At a joint with a G00 block the slope in force in both blocks (P-AXIS-00004).
+    const planner::AxisLimits l = planner::joint_slope(limits_[i], jt.rapid_in, jt.rapid_out);
     const double dv = std::abs(jt.dv[i]);
     const double da = std::abs(jt.da[i]);
     dv_[i][0] += dv;
     da_[i][0] += da;
-    // VELOJUMP (000 l.108): |dv_i| <= C0_i min(A+_i, |A-_i|) T. Where #TRANSVELMIN raised the
-    // link (isg-language.md 5.6: it has priority), the step is v |dx'_i| with |dx'_i| =
-    // |dv_i| / v, allowed up to the programmed v_min: |dv_i| <= v_min |dx'_i|.
-    const bool raised = jt.rule == planner::LinkRule::transvelmin && jt.v > 0.0;
-    if (dv > 1e-12 * std::max(1.0, jt.v))
-      formula_step(raised ? Quantity::transvelmin : Quantity::velojump, i, jt, dv,
-                   raised ? jt.transvelmin * (dv / jt.v) : l.c0 * std::min(l.a_max, l.d_max) * t_,
-                   false);
-    // C1 (P-CHAN-00009 semantics, docs/planner.md "Corners"; with P-CHAN-00009 = 0 the kernel
-    // does not reduce the velocity for it: not bounded): |da_i| <= j_i T, at C1 joints
+    // VELOJUMP (000 l.108): |dv_i| <= C0_i min(A+_i, |A-_i|) T. #TRANSVELMIN (not under G261)
+    // raises the link above it (isg-language.md 5.6: it has priority): the step is v |dx'_i|
+    // with |dx'_i| = |dv_i| / v, allowed up to the programmed v_min: |dv_i| <= v_min |dx'_i|.
+    const double velojump = l.c0 * std::min(l.a_max, l.d_max) * t_;
+    const double raised = jt.transvelmin > 0.0 && jt.v > 0.0 && jt.cls == planner::TransitionClass::c0
+                              ? jt.transvelmin * (dv / jt.v)
+                              : 0.0;
+    // A step is one the planner's classification sees (corner.hpp): a tangent change above
+    // kTangentTolerance, a curvature change above 1e-9 /mm. Below, it is the rounding of a C2
+    // joint (a ball's G2 contact leaves about 1e-10 mm/s): checked, not listed.
+    if (dv <= planner::kTangentTolerance * jt.v) {
+      if (dv > std::max(velojump, raised) * (1.0 + kRelative))
+        violate(Quantity::velojump, Method::formula, i, jt.t, jt.line, jt.file, dv,
+                std::max(velojump, raised), false);
+    } else if (dv > 1e-12 * std::max(1.0, jt.v)) {
+      if (raised > velojump)
+        formula_step(Quantity::transvelmin, i, jt, dv, raised, false);
+      else
+        formula_step(Quantity::velojump, i, jt, dv, velojump, false);
+    }
+    // C1 (P-CHAN-00009 semantics, docs/planner.md "Corners"): |da_i| <= j_i T, at C1 joints
     // and, since session 31, at C0 joints too (a knee into a curve: the curvature jump; a knee
-    // that carries the acceleration: its own step and the curvature's). A link #TRANSVELMIN
-    // raised (it has priority, isg-language.md 5.6) is the programmer's: not bounded here.
-    const bool c0_raised = raised && jt.cls == planner::TransitionClass::c0;
-    if (jt.cls != planner::TransitionClass::c2 && !c0_raised && jt.jerk_limited && jt.c1_limited &&
-        da > 1e-12 * std::max(1.0, jt.v * jt.v))
-      formula_step(Quantity::c1_step, i, jt, da, l.j_max * t_, false);
+    // that carries the acceleration: its own step and the curvature's), #TRANSVELMIN links
+    // included (PROG-207486091: the jerk limitation is prioritised). With P-CHAN-00009 = 0 the
+    // kernel does not reduce the velocity for it: the step is listed against the acceleration
+    // limits alone, A+ + |A-| (the most a step between two cycles within them can be).
+    if (jt.cls != planner::TransitionClass::c2 && jt.jerk_limited &&
+        da > 1e-9 * std::max(1.0, jt.v * jt.v))
+      formula_step(Quantity::c1_step, i, jt, da,
+                   jt.c1_limited ? l.j_max * t_ : l.a_max + l.d_max, false);
   }
 }
 
@@ -212,7 +227,9 @@ void Audit::on_cycle(const Cycle& c) {
   const bool trafo = transformed(c, transformed_);
   if (trafo != transformed_) switch_transform(trafo);
   jerk_limited_[0] = c.interval_jerk_limited;
-  rapid_[0] = c.rapid;
+  rapid_[0] = c.rapid || last_rapid_ || joint_rapid_;
+  last_rapid_ = c.rapid;
+  joint_rapid_ = false;
   const bool any_rapid = rapid_[0] || rapid_[1] || rapid_[2];
   for (std::size_t i = 0; i < limits_.size() && !trafo; ++i) {
     // --- indp: an INDP motion (Cycle::independent) keeps the axis's G01 limits, jerk-limited.

@@ -213,7 +213,12 @@ class Audit final : public Sink {
   std::vector<std::array<double, 3>> dv_;
   std::vector<std::array<double, 3>> da_;
   std::array<bool, 3> jerk_limited_{true, true, true};
-  std::array<bool, 3> rapid_{false, false, false};  ///< G00 in the last three cycles
+  /// A G00 block in each of the last three cycles: at the cycle's end, at the end of the cycle
+  /// before (its block runs on into this one) or at a joint passed in it (item 6 of issue 36:
+  /// the G00 before a stop ends inside the first cycle named after the G01).
+  std::array<bool, 3> rapid_{false, false, false};
+  bool last_rapid_ = false;   ///< the last cycle ended in a G00 block
+  bool joint_rapid_ = false;  ///< a joint with a G00 block was passed since the last cycle
   double contour_ratio_ = 0.0;
   // Joints (set_joint_limits()): limits, last positions, the joints' step allowances of the
   // last three cycles (Joint::dq, dw; as dv_, da_), and whether they held a path step whose

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <utility>
 #include <vector>
 
 #include "ipo/test_support.hpp"
@@ -98,6 +99,27 @@ TEST_CASE("a VELOJUMP step above C0 min(A+, A-) T is a violation; one within is 
   CHECK(k.closest.value == 10.5);
 }
 
+TEST_CASE("a VELOJUMP step at a joint with a G00 block is held to the slope of both blocks") {
+  // P-AXIS-00004 a_grenz 4000 below the feed's 10000: C0 min(A+, A-) T = 4 mm/s (issue 36, F1).
+  std::vector<planner::AxisLimits> axes = {axis(100.0, 10000.0, 1e5, 1.0)};
+  axes[0].a_rapid = 4000.0;
+  Joint j;
+  j.cls = planner::TransitionClass::c0;
+  j.v = 5.0;
+  j.dv[0] = 5.0;
+  Audit feed(axes, 0.001, AxisVec{});
+  feed.on_joint(j);
+  CHECK(feed.verdict().ok());  // within the feed's 10 mm/s
+  for (const auto& [in, out] : {std::pair{true, false}, std::pair{false, true}}) {
+    j.rapid_in = in;
+    j.rapid_out = out;
+    Audit audit(axes, 0.001, AxisVec{});
+    audit.on_joint(j);
+    CHECK(has(audit.verdict(), Quantity::velojump, Method::formula));
+    CHECK(audit.verdict().steps[0].bound == doctest::Approx(4.0));
+  }
+}
+
 TEST_CASE("a #TRANSVELMIN link is checked against v_min |dx'_i|, not VELOJUMP; beyond it fails") {
   // VELOJUMP allows 10 mm/s per axis (C0 = 1, A = 10000, T = 1 ms); #TRANSVELMIN 30 mm/s
   // raised the link of a 90 degree corner (|dx'_i| = 1) to 30 mm/s (isg-language.md 5.6).
@@ -127,9 +149,10 @@ TEST_CASE("a #TRANSVELMIN link is checked against v_min |dx'_i|, not VELOJUMP; b
   CHECK_FALSE(has(audit.verdict(), Quantity::velojump, Method::formula));
   CHECK(audit.verdict().violations.front().limit == doctest::Approx(30.0));
   CHECK(audit.verdict().violations.front().line == 6);
-  // Without the rule the same step is a VELOJUMP violation.
+  // Without #TRANSVELMIN (or under G261: JointReport gives 0) it is a VELOJUMP violation.
   Audit plain(axes, 0.001, AxisVec{});
   j.rule = planner::LinkRule::velojump;
+  j.transvelmin = 0.0;
   plain.on_joint(j);
   CHECK(has(plain.verdict(), Quantity::velojump, Method::formula));
 }
@@ -222,10 +245,11 @@ TEST_CASE("a line into a tangent arc R = 10 links at sqrt(J T R): its C1 step is
   CHECK(has(audited_with_half_jerk(axes, {in, arc}), Quantity::c1_step, Method::formula));
 }
 
-TEST_CASE("P-CHAN-00009 = 0: the C1 step is not reduced, and the audit does not bound it") {
+TEST_CASE("P-CHAN-00009 = 0: the C1 step is not reduced; it is listed against A+ + |A-|") {
   // corr_v_trans_jerk 0 (the manual's default, isg-language.md 7.1): the kernel passes a line
   // into a tangent arc at the segments' caps; the acceleration step is the channel's choice,
-  // neither listed against j T nor a violation (its jerk is allowed for in the differences).
+  // not held to j T, but listed with the only bound left, the acceleration limits on both
+  // sides (issue 36 item 5: "every step the audit allows must be listed").
   const std::vector<planner::AxisLimits> axes(3, axis(200.0, 10000.0, 1e5, 1.0));
   planner::Move in = line(vec(0, 0), vec(50, 0), 100.0, 1);
   planner::Move arc = line(vec(50, 0), vec(60, 10), 100.0, 2);
@@ -241,7 +265,10 @@ TEST_CASE("P-CHAN-00009 = 0: the C1 step is not reduced, and the audit does not 
     if (ipo.cycle().line == 2) v_max_at_joint = std::max(v_max_at_joint, ipo.cycle().path.v);
   const Verdict& v = audit.verdict();
   CHECK(v.ok());
-  CHECK(v.step_kinds[step_kind(Quantity::c1_step)].count == 0);
+  const StepKind& c1 = v.step_kinds[step_kind(Quantity::c1_step)];
+  REQUIRE(c1.count >= 1);
+  CHECK(c1.closest.bound == doctest::Approx(20000.0));
+  CHECK(c1.closest.value > 1e5 * 1e-3 * 2.0);                  // far above j T
   CHECK(v_max_at_joint > 2.0 * std::sqrt(1e5 * 1e-3 * 10.0));  // not reduced to 31.6 mm/s
 }
 
@@ -311,6 +338,31 @@ TEST_CASE("a #TRANSVELMIN corner above VELOJUMP passes the audit, its steps list
   while (ipo.step() == Status::running) {
   }
   CHECK(has(strict.verdict(), Quantity::transvelmin, Method::formula));
+}
+
+TEST_CASE("a #TRANSVELMIN knee into an arc keeps the jerk limitation (PROG-207486091)") {
+  // Issue 36 item 5: a 30 degree knee into an R 1 arc under #TRANSVELMIN 100 mm/s. TF5200:
+  // with a non-linear slope and P-CHAN-00009 "jerk limitation is prioritised": the link is at
+  // most sqrt(j T / |dx''|) and the acceleration step is within j T (it was 14.6 x j T).
+  const std::vector<planner::AxisLimits> axes(3, axis(500.0, 10000.0, 5e4, 1.0));
+  // G03 from (50, 0), its start tangent at 30 degrees to X: centre (50 - sin 30, cos 30),
+  // the start at -60 degrees from it, 1 rad of arc.
+  const double cx = 50.0 - 0.5;
+  const double cy = std::sqrt(0.75);
+  const double phi = -M_PI / 3.0 + 1.0;
+  planner::Move in = line(vec(0, 0), vec(50, 0), 100.0, 1);
+  planner::Move arc = line(vec(50, 0), vec(cx + std::cos(phi), cy + std::sin(phi)), 100.0, 2);
+  arc.arc = planner::Arc{0, 1, cx, cy, false, false};
+  in.transvelmin = 100.0;
+  Audit audit(axes, 0.001, AxisVec{});
+  run_into(audit, axes, {in, arc});
+  const Verdict& v = audit.verdict();
+  CHECK(v.ok());
+  const StepKind& c1 = v.step_kinds[step_kind(Quantity::c1_step)];
+  REQUIRE(c1.count >= 1);
+  // Y's curvature jumps by cos 30 / R: v = sqrt(j T R / cos 30) = 7.60 mm/s, not 100.
+  CHECK(c1.closest.v_link == doctest::Approx(std::sqrt(5e4 * 1e-3 / std::sqrt(0.75))));
+  CHECK(c1.closest.value <= 5e4 * 1e-3 * (1.0 + 1e-9));
 }
 
 TEST_CASE("a real run audited against tighter limits than it was planned with fails") {

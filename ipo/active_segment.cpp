@@ -102,6 +102,8 @@ bool ActiveSegment::plan_entry(double f, double cap) noexcept {
   // At 100 % every type asks for the look-ahead's own profile: follow it unchanged.
   const auto follow = [&] {
     plan_ = PathPlan{prof_, 0.0, false, cur_.segment.path.length()};
+    v_ceiling_ = cur_.segment.limits.v_max;
+    a_ceiling_ = std::max(cur_.a_max, cur_.d_max);
     on_plan_ = true;
     plan_factor_ = 1.0;
     plan_cap_ = cap;
@@ -160,6 +162,8 @@ bool ActiveSegment::replan(double f, double cap, double s, double v, double a) n
   PathPlan np;
   if (!make_plan(r, np)) return false;
   plan_cap_ = cap;
+  v_ceiling_ = std::max({lim.v_max, r.level, v});
+  a_ceiling_ = std::max({r.a, r.d, std::abs(a)});
   np.s0 = s;
   plan_ = np;
   t_in_ = 0.0;

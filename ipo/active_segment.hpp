@@ -74,6 +74,10 @@ class ActiveSegment {
   double lost() const noexcept { return lost_; }  ///< time lost in this cycle [s] (< 0: gained)
   /// Every segment visited in this cycle is jerk-limited.
   bool interval_jerk_limited() const noexcept { return interval_jerk_limited_; }
+  /// Ceilings of the plan followed: the highest path velocity [mm/s] and acceleration
+  /// [mm/s^2] it can reach (above the 100 % caps under an override above 100 %).
+  double v_ceiling() const noexcept { return v_ceiling_; }
+  double a_ceiling() const noexcept { return a_ceiling_; }
   double v_arrive() const noexcept { return v_arrive_; }  ///< at the last joint [mm/s]
   double a_arrive() const noexcept { return a_arrive_; }  ///< at the last joint [mm/s^2]
 
@@ -100,6 +104,8 @@ class ActiveSegment {
   bool on_plan_ = true;       ///< plan_ is the look-ahead's 100 % profile itself
   double plan_factor_ = 1.0;  ///< factor plan_ was made for
   double plan_cap_ = std::numeric_limits<double>::infinity();  ///< cap plan_ was made for
+  double v_ceiling_ = 0.0;                                     ///< v_ceiling()
+  double a_ceiling_ = 0.0;                                     ///< a_ceiling()
   double v_arrive_ = 0.0;      ///< path velocity at the end of the previous entry [mm/s]
   double a_arrive_ = 0.0;      ///< path acceleration there [mm/s^2] (a carried ramp)
   bool has_ball_ = false;      ///< the entry holds a tolerance-ball blend

@@ -75,12 +75,17 @@ struct Joint {
   planner::TransitionClass cls = planner::TransitionClass::c0;
   planner::StopReason stop = planner::StopReason::none;
   bool jerk_limited = true;  ///< both sides jerk-limited slopes
+  /// The incoming / outgoing block is G00: the formulas take the slope in force in both
+  /// (planner::joint_slope, P-AXIS-00004).
+  bool rapid_in = false;
+  bool rapid_out = false;
   /// P-CHAN-00009 on (ChannelLimits::limit_c1_by_jerk): the acceleration steps are bounded by
   /// j T; off, the kernel does not reduce the velocity for them and they are not bounded.
   bool c1_limited = true;
   double v = 0.0;                                            ///< path velocity at the joint [mm/s]
   planner::LinkRule rule = planner::LinkRule::segment_caps;  ///< what set the link velocity
-  double transvelmin = 0.0;  ///< #TRANSVELMIN of the incoming block [mm/s] (0: not programmed)
+  /// #TRANSVELMIN of the incoming block [mm/s] (0: not programmed, or under G261 / G61)
+  double transvelmin = 0.0;
   AxisVec dv{};              ///< axis velocity step out - in [mm/s] (VELOJUMP)
   AxisVec da{};              ///< axis acceleration step out - in [mm/s^2] (C1, and C0 on curves)
   /// Under a kinematic transform (Config::joints, both blocks transformed) the joints' steps:

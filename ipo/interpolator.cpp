@@ -125,8 +125,8 @@ std::optional<Status> PathInterpolator::traverse(double& distance, bool& held) n
     const double length = cur.segment.path.length();
     distance += length - entry_.s_sampled();
     // Knees between the last sample and the end of a chain are passed in this cycle too.
-    joint_report_.inner(cur, entry_.s_sampled(), length,
-                        static_cast<double>(cycle_.index + 1) * t_);
+    joint_report_.inner(cur, entry_.s_sampled(), length, static_cast<double>(cycle_.index + 1) * t_,
+                        entry_.v_ceiling(), entry_.a_ceiling());
     if (observer_ != nullptr && cur.segment.path.parts() > 1)
       queue_.report_part_starts(cur.segment.path, entry_.s_sampled(), length, *observer_);
     entry_.set_sampled(length);
@@ -179,7 +179,8 @@ void PathInterpolator::sample(double distance) noexcept {
     queue_.report_part_starts(path, s_from, ps.s, *observer_);
   stand_.note_tag(prog.event_tag, c);
   if (detail_ != Detail::axes) return;
-  joint_report_.inner(cur, s_from, ps.s, static_cast<double>(c.index + 1) * t_);
+  joint_report_.inner(cur, s_from, ps.s, static_cast<double>(c.index + 1) * t_, entry_.v_ceiling(),
+                      entry_.a_ceiling());
   set_axis_values(path.at(ps.s), ps, axes_.size(), c);
 }
 

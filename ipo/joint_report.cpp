@@ -24,13 +24,16 @@ void JointReport::between(const planner::PlannedSegment& in, const planner::Plan
   jt.cls = in.segment.joint;
   jt.stop = in.segment.stop;
   jt.jerk_limited = planner::jerk_limited(prog_in.slope) && planner::jerk_limited(prog_out.slope);
+  jt.rapid_in = prog_in.rapid;
+  jt.rapid_out = prog_out.rapid;
   jt.c1_limited = c1_limited_;  // P-CHAN-00009
   // The velocity and acceleration are the ones the path arrives with (below the plan's under
   // an override); a != 0 only where a ramp is carried through a soft joint (a knee steps the
   // axis acceleration by a dx' too).
   jt.v = v;
   jt.rule = in.segment.rule;
-  jt.transvelmin = prog_in.transvelmin.value_or(0.0);
+  // #TRANSVELMIN acts at discontinuous transitions, not with G261 (isg-language.md §5.6).
+  jt.transvelmin = planner::contoured(prog_in) ? 0.0 : prog_in.transvelmin.value_or(0.0);
   for (std::size_t i = 0; i < axis_count_; ++i) {
     jt.dv[i] = v * (p_out.d1[i] - p_in.d1[i]);
     jt.da[i] = v * v * (p_out.d2[i] - p_in.d2[i]) + a * (p_out.d1[i] - p_in.d1[i]);
@@ -57,18 +60,17 @@ void JointReport::between(const planner::PlannedSegment& in, const planner::Plan
   sink_->on_joint(jt);
 }
 
-void JointReport::inner(const planner::PlannedSegment& entry, double s_from, double s_to,
-                        double t) const noexcept {
+void JointReport::inner(const planner::PlannedSegment& entry, double s_from, double s_to, double t,
+                        double v, double a) const noexcept {
   if (sink_ == nullptr) return;
   // Knees inside a chain (planner/corner.hpp knee_carries_acceleration) step the axis velocity
   // by v dx' and the acceleration by v^2 dx'' + a dx' with the path acceleration carried; the
   // audit needs both for its finite-difference allowances. The joint's own instant is not
-  // resolved: v is bounded by the chain's velocity cap and a by its path limits, which only
-  // widens the allowances by what a knee can cause; the VELOJUMP check of v dx' at the cap is
-  // the planner's own chaining condition (docs/ipo.md "The audit").
+  // resolved: v and a are bounded by the ceilings of the plan followed (the chain's caps at
+  // 100 %, the raised ones under an override above 100 %: issue 36 item 6), which only widens
+  // the allowances by what a knee can cause; the VELOJUMP check of v dx' at the cap is the
+  // planner's own chaining condition (docs/ipo.md "The audit").
   const planner::Chain& path = entry.segment.path;
-  const double v = entry.segment.limits.v_max;
-  const double a = std::max(entry.segment.limits.a_max, entry.segment.limits.d_max);
   for (std::size_t k = 0; k + 1 < path.parts(); ++k) {
     const double e = path.part_end(k);
     if (!(e > s_from && e <= s_to)) continue;
@@ -84,6 +86,8 @@ void JointReport::inner(const planner::PlannedSegment& entry, double s_from, dou
     jt.cls = planner::TransitionClass::c2;
     jt.stop = planner::StopReason::none;
     jt.jerk_limited = planner::jerk_limited(prog_in.slope) && planner::jerk_limited(prog_out.slope);
+    jt.rapid_in = prog_in.rapid;
+    jt.rapid_out = prog_out.rapid;
     jt.c1_limited = c1_limited_;  // P-CHAN-00009
     jt.v = v;
     for (std::size_t i = 0; i < axis_count_; ++i) {

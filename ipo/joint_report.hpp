@@ -38,9 +38,11 @@ class JointReport {
   /// velocity `v` [mm/s] and acceleration `a` [mm/s^2].
   void between(const planner::PlannedSegment& in, const planner::PlannedSegment& out, double t,
                double v, double a) const noexcept;
-  /// The knees inside `entry`'s chain passed in (s_from, s_to] [mm], reported at time `t` [s].
-  void inner(const planner::PlannedSegment& entry, double s_from, double s_to,
-             double t) const noexcept;
+  /// The knees inside `entry`'s chain passed in (s_from, s_to] [mm], reported at time `t` [s],
+  /// with the path velocity and acceleration at most `v` [mm/s] and `a` [mm/s^2] there (the
+  /// ceilings of the plan followed: above the chain's caps under an override above 100 %).
+  void inner(const planner::PlannedSegment& entry, double s_from, double s_to, double t, double v,
+             double a) const noexcept;
 
  private:
   Sink* sink_ = nullptr;  ///< null: no reports (no Sink, or Detail::path)

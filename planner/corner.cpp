@@ -127,9 +127,20 @@ Link link_velocity(const PathPoint& in_end, const PathPoint& out_start, std::siz
         link.rule = LinkRule::velojump;
         link.limiting_axis = ax;
       }
+      // #TRANSVELMIN raises the link above VELOJUMP (000 l.108 "if v_link < v_min then
+      // v_link = v_min").
+      if (transvelmin) {
+        const double v_min = std::min(std::max(*transvelmin, 0.0), cap);
+        if (link.v_link < v_min) {
+          link.v_link = v_min;
+          link.rule = LinkRule::transvelmin;
+        }
+      }
       // The curvature jump of a knee into a curve too: the acceleration step v^2 |dk_i| within
       // j_i T, as at a tangent joint (P-CHAN-00009 semantics; docs/planner.md "Corners"):
       // without it a knee of 1e-4 rad let the arc's own cap through, and a jerk of 12x J.
+      // It has priority over #TRANSVELMIN (TF5200 PROG-207486091: "with a non-linear slope
+      // ... P-CHAN-00009 ... jerk limitation is prioritised"; issue 36 item 5).
       double v_curvature = kInf;
       if (channel.limit_c1_by_jerk && jerk_limited_slope) {
         v_curvature = c1_velocity(in_end.d2, out_start.d2, used, channel.t_cycle, &ax);
@@ -137,13 +148,6 @@ Link link_velocity(const PathPoint& in_end, const PathPoint& out_start, std::siz
           link.v_link = v_curvature;
           link.rule = LinkRule::c1_jerk;
           link.limiting_axis = ax;
-        }
-      }
-      if (transvelmin) {
-        const double v_min = std::min(std::max(*transvelmin, 0.0), cap);
-        if (link.v_link < v_min) {
-          link.v_link = v_min;
-          link.rule = LinkRule::transvelmin;
         }
       }
       // A knee that limits nothing and whose acceleration step fits the C1 budget carries the

@@ -192,9 +192,17 @@ TEST_CASE("a knee into a curve: the curvature jump keeps the C1 budget as at a t
   CHECK(link_velocity(tangent(0), arc_start, 3, 0b111, ax, ChannelLimits{}, 100, 100, std::nullopt,
                       false)
             .v_link == doctest::Approx(100.0));
-  // #TRANSVELMIN has priority at C0 (isg-language.md 5.6), also over this rule.
-  CHECK(link_velocity(tangent(0), arc_start, 3, 0b111, ax, ChannelLimits{}, 100, 100, 90.0, true)
-            .v_link == doctest::Approx(90.0));
+  // #TRANSVELMIN has priority over VELOJUMP at C0 (isg-language.md 5.6), not over this rule:
+  // "jerk limitation is prioritised" (TF5200 PROG-207486091; issue 36 item 5). On a STEP
+  // slope (no jerk limitation) it raises the link.
+  const Link raised =
+      link_velocity(tangent(0), arc_start, 3, 0b111, ax, ChannelLimits{}, 100, 100, 90.0, true);
+  CHECK(raised.v_link == doctest::Approx(std::sqrt(1e5 * 1e-3 / 0.1)));
+  CHECK(raised.rule == LinkRule::c1_jerk);
+  const Link corner = link_velocity(tangent(0), tangent(90.0), 3, 0b111, ax, ChannelLimits{}, 100,
+                                    100, 90.0, false);
+  CHECK(corner.v_link == doctest::Approx(90.0));
+  CHECK(corner.rule == LinkRule::transvelmin);
   // A knee between two lines has no curvature jump: unchanged (it carries, as above).
   const Link lines = link_velocity(tangent(0), tangent(2.0), 3, 0b111, limits(10000.0),
                                    ChannelLimits{}, 100, 100, std::nullopt, true);

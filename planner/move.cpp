@@ -218,4 +218,15 @@ AxisLimits rapid_limits(const AxisLimits& axis) noexcept {
   return r;
 }
 
+AxisLimits joint_slope(const AxisLimits& axis, bool rapid_in, bool rapid_out) noexcept {
+  if (!rapid_in && !rapid_out) return axis;
+  const AxisLimits r = rapid_limits(axis);
+  if (rapid_in && rapid_out) return r;
+  AxisLimits both = axis;
+  both.a_max = std::min(axis.a_max, r.a_max);
+  both.d_max = std::min(axis.d_max, r.d_max);
+  both.j_max = std::min(axis.j_max, r.j_max);
+  return both;
+}
+
 }  // namespace ncsim::planner

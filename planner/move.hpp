@@ -172,6 +172,11 @@ AxisLimits weighted_limits(const AxisLimits& axis, const AxisWeights& w, std::si
 
 /// The limits a G00 block is planned with: a_rapid / j_rapid where set, else the feed values.
 AxisLimits rapid_limits(const AxisLimits& axis) noexcept;
+/// The slope in force on both sides of a joint between a block (`rapid_in`: G00) and the next
+/// (`rapid_out`): each of a_max, d_max, j_max the smaller of the two blocks' (a G00 block's
+/// from rapid_limits), for the corner formulas VELOJUMP and C1 (000 l.108 "A+[i], A-[i] the
+/// acceleration or deceleration limits for the axis": the step happens in both blocks).
+AxisLimits joint_slope(const AxisLimits& axis, bool rapid_in, bool rapid_out) noexcept;
 
 /// --- sync-feed: the limits of an axis of which a conveyor takes `taken` [mm/s] (004
 /// l.311-319): v_max, v_reference and v_rapid lowered by it, each kept at >= 1 % of itself;

@@ -165,19 +165,30 @@ const PathLimits& Preparer::pending_limits(Pending& p) const {
   return *p.limits;
 }
 
+std::span<const AxisLimits> Preparer::slopes_at_joint(std::span<const AxisLimits> axes,
+                                                      bool rapid_in, bool rapid_out) const {
+  if (!rapid_in && !rapid_out) return axes;
+  const std::size_t n = std::min(axes.size(), joint_axes_.size());
+  for (std::size_t i = 0; i < n; ++i)
+    joint_axes_[i] = joint_slope(axes[i], rapid_in, rapid_out);
+  return std::span<const AxisLimits>(joint_axes_.data(), n);
+}
+
 void Preparer::emit_joint(PreparedSegment in, const Move& in_move, const Segment& out_path,
-                          double v_out, std::vector<PreparedSegment>& out, const JointEnds* ends) {
+                          bool out_rapid, double v_out, std::vector<PreparedSegment>& out,
+                          const JointEnds* ends) {
   const std::uint8_t n = std::max(in.path.axis_count(), out_path.axis_count());
   const AxisMask metric = in.path.metric() | out_path.metric();
   // #TRANSVELMIN acts at discontinuous transitions, not with G261 (isg-language.md §5.6).
   const std::optional<double> v_min = contoured(in_move) ? std::nullopt : in_move.transvelmin;
+  const std::span<const AxisLimits> axes =
+      slopes_at_joint(axes_for(in_move), in_move.rapid, out_rapid);
   const Link link =
       ends != nullptr
-          ? link_velocity(ends->in_end, ends->out_start, n, metric, axes_for(in_move), channel_,
-                          in.limits.v_end, v_out, v_min, jerk_limited(in_move.slope))
-          : link_velocity(in.path.at(in.path.length()), out_path.at(0.0), n, metric,
-                          axes_for(in_move), channel_, in.limits.v_end, v_out, v_min,
-                          jerk_limited(in_move.slope));
+          ? link_velocity(ends->in_end, ends->out_start, n, metric, axes, channel_, in.limits.v_end,
+                          v_out, v_min, jerk_limited(in_move.slope))
+          : link_velocity(in.path.at(in.path.length()), out_path.at(0.0), n, metric, axes, channel_,
+                          in.limits.v_end, v_out, v_min, jerk_limited(in_move.slope));
   in.v_end = link.v_link;
   if (joints_for(in_move) != nullptr && link.cls != TransitionClass::c2) {
     // Under a transform the joints take their own steps at a C0 / C1 joint: the VELOJUMP and
@@ -346,8 +357,10 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
     const double out_cap = on_own_axes(move) ? seg_cap() : path_limits(seg, move, axes_).v_max;
     return std::min(in_cap, out_cap);
   };
-  if (ends && (joints_for(move) != nullptr ||  // under a transform every G261 corner gets its ball
-               !knee_needs_no_ball(p.path, seg, *ends, axes_, channel_, knee_cap))) {
+  if (ends &&
+      (joints_for(move) != nullptr ||  // under a transform every G261 corner gets its ball
+       !knee_needs_no_ball(p.path, seg, *ends, slopes_at_joint(axes_, p.move.rapid, move.rapid),
+                           channel_, knee_cap))) {
     const auto ball = corner_blend(p.move, p.path, seg, *ends,
                                    std::min(p.full_length / 2, p.path.length()), seg.length() / 2);
     if (ball) {
@@ -357,7 +370,9 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
       // The blend moves at most at the slower of its neighbours' programmed velocities.
       PreparedSegment in_ps = make(in_path, p.move, false);
       Move blend_move = p.move;
-      blend_move.rapid = false;
+      // A ball between two G00 blocks is a G00 curve, planned with their slope (P-AXIS-00004,
+      // issue 36 item 2: with the feed slope X took 1114 mm/s^2 against a_grenz 1000).
+      blend_move.rapid = p.move.rapid && move.rapid;
       blend_move.block_time.reset();
       blend_move.end_feed.reset();
       blend_move.feed = std::min(in_ps.limits.v_programmed, out_limits.v_programmed);
@@ -369,8 +384,9 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
         blend_move.belt[i] = std::max(p.move.belt[i], move.belt[i]);
       PreparedSegment blend_ps = make(ball->curve, blend_move, true);
       if (in_path.length() >= kMinLength)
-        emit_joint(std::move(in_ps), p.move, ball->curve, blend_ps.limits.v_max, out);
-      emit_joint(std::move(blend_ps), blend_move, out_path, out_limits.v_max, out);
+        emit_joint(std::move(in_ps), p.move, ball->curve, blend_move.rapid, blend_ps.limits.v_max,
+                   out);
+      emit_joint(std::move(blend_ps), blend_move, out_path, move.rapid, out_limits.v_max, out);
       pending()->path = out_path;
       pending()->limits = out_limits;
       return;
@@ -378,7 +394,7 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
   }
   const double v_out = seg_cap();
   pending()->limits = seg_limits;
-  emit_joint(make(p.path, p.move, false, pending_limits(p)), p.move, seg, v_out, out,
+  emit_joint(make(p.path, p.move, false, pending_limits(p)), p.move, seg, move.rapid, v_out, out,
              ends ? &*ends : nullptr);
 }
 

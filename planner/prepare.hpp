@@ -132,10 +132,15 @@ class Preparer {
   std::span<const AxisLimits> belt_axes_for(const Move& move) const;
   /// The joint limits that apply to a Move (null: none).
   const JointLimits* joints_for(const Move& move) const;
-  /// Appends `in` with its end joint to `out_path` (velocity cap v_out) resolved; `ends`, when
-  /// given, is the joint's joint_ends (blend.hpp), else it is evaluated here.
-  void emit_joint(PreparedSegment in, const Move& in_move, const Segment& out_path, double v_out,
-                  std::vector<PreparedSegment>& out, const JointEnds* ends = nullptr);
+  /// Appends `in` with its end joint to `out_path` (velocity cap v_out; `out_rapid`: the
+  /// outgoing block is G00) resolved; `ends`, when given, is the joint's joint_ends (blend.hpp),
+  /// else it is evaluated here.
+  void emit_joint(PreparedSegment in, const Move& in_move, const Segment& out_path, bool out_rapid,
+                  double v_out, std::vector<PreparedSegment>& out, const JointEnds* ends = nullptr);
+  /// The limits the corner formulas take at a joint of a G00 block (`rapid_in` / `rapid_out`)
+  /// with `axes` (joint_slope, docs/planner.md "G00 slope"); `axes` itself at a feed joint.
+  std::span<const AxisLimits> slopes_at_joint(std::span<const AxisLimits> axes, bool rapid_in,
+                                              bool rapid_out) const;
   /// Appends the pending segment ending in a stop.
   void emit_stop(Pending& p, StopReason why, std::vector<PreparedSegment>& out);
   /// Chaining stage: merges `ps` into the held segment across a C2 joint that limits nothing
@@ -156,6 +161,8 @@ class Preparer {
   mutable std::array<AxisLimits, kMaxAxes> belt_axes_{};
   /// axes_for()'s limits of a Move with dynamics weightings (Move::weights), rewritten per call.
   mutable std::array<AxisLimits, kMaxAxes> weighted_axes_{};
+  /// slopes_at_joint()'s limits at a joint with a G00 block, rewritten per call.
+  mutable std::array<AxisLimits, kMaxAxes> joint_axes_{};
   /// --- belt-jerk: limits()'s joint limits of a Move on a conveyor (Move::belt_joints).
   mutable std::array<AxisLimits, kMaxAxes> belt_joints_{};
 };

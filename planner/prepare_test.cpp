@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "planner/test_support.hpp"
@@ -57,6 +58,38 @@ TEST_CASE("a 90 degree corner without contouring links at the VELOJUMP velocity"
   REQUIRE(out.size() == 2);
   CHECK(out[1].v_end == 0.0);
   CHECK(out[1].stop == StopReason::end_of_stream);
+}
+
+TEST_CASE("a corner with a G00 block takes the slope in force in both blocks (P-AXIS-00004)") {
+  // C0 = 1, T = 1 ms, 90 degrees: v = C0 min(A+, A-) T / |dx'| = A T (feed A 10000: 10 mm/s).
+  // With a G00 slope a_grenz of 4000 on either side the link is 4 mm/s (issue 36, F1).
+  auto ax = limits();
+  for (AxisLimits& a : ax)
+    a.a_rapid = 4000.0;
+  for (const auto& [rapid_in, rapid_out] : {std::pair{true, true}, std::pair{false, true}}) {
+    Preparer prep(ax, ChannelLimits{});
+    std::vector<PreparedSegment> out;
+    Move first = line(vec(0, 0), vec(10, 0));
+    Move second = line(vec(10, 0), vec(10, 10), 100.0, 2);
+    first.rapid = rapid_in;
+    second.rapid = rapid_out;
+    prep.push(first, out);
+    prep.push(second, out);
+    REQUIRE(out.size() == 1);
+    CHECK(out[0].rule == LinkRule::velojump);
+    CHECK(out[0].v_end == doctest::Approx(4.0));
+  }
+  // A G00 slope above the feed slope leaves the feed's at a feed-to-G00 joint.
+  for (AxisLimits& a : ax)
+    a.a_rapid = 20000.0;
+  Preparer prep(ax, ChannelLimits{});
+  std::vector<PreparedSegment> out;
+  Move second = line(vec(10, 0), vec(10, 10), 100.0, 2);
+  second.rapid = true;
+  prep.push(line(vec(0, 0), vec(10, 0)), out);
+  prep.push(second, out);
+  REQUIRE(out.size() == 1);
+  CHECK(out[0].v_end == doctest::Approx(10.0));
 }
 
 TEST_CASE("G09, G60 and G00 followed by G01 stop at the block end") {
