@@ -10,6 +10,10 @@ add_test(NAME cli_random_scenarios
 # --- line: time per workpiece, synchro_lag, sweep, tune-delay (docs/conveyor.md)
 add_test(NAME cli_line_test
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/line_test.sh $<TARGET_FILE:ncsim>)
+# Issue 36 items 7, 8: under conveyor tracking X.v is the derivative of X, and synchro_lag on a
+# fluctuating belt ripples by the manual's residual (docs/conveyor.md F-8)
+add_test(NAME cli_conveyor_ff_test
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/conveyor_ff_test.sh $<TARGET_FILE:ncsim>)
 # --- workspace: an error while synchronised keeps the synchronisation (docs/conveyor.md)
 add_test(NAME cli_sync_error_test
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/sync_error_test.sh $<TARGET_FILE:ncsim>)

@@ -100,6 +100,8 @@ std::optional<SyncError> ConveyorSync::step(double t) noexcept {
     v_ = frame_.along_x(m.v);
     a_ = frame_.along_x(m.a);
     v_slope_ = first ? v_ : frame_.along_x((m.p - p_last_) / dt);
+    // The slope is the mean velocity over the cycle, half a cycle behind its end (F-8).
+    v_frame_ = first ? v_ : v_slope_ + 0.5 * a_ * dt;
   }
   p_last_ = m.p;
   const bool checked = phase_ == SyncPhase::waiting || phase_ == SyncPhase::latched ||
@@ -115,7 +117,7 @@ std::optional<SyncError> ConveyorSync::step(double t) noexcept {
     t_catch_ += t_cycle_;
     bool within = true;
     for (std::size_t i = 0; i < n_; ++i) {
-      catch_sp_[i] = catch_up_.setpoint(i, t_catch_, s_, v_, a_);
+      catch_sp_[i] = catch_up_.setpoint(i, t_catch_, s_, v_frame_, a_);
       if (std::fabs(catch_sp_[i].p - catch_up_.target_at(i, s_)) > tolerance_ &&
           t_catch_ < catch_up_.duration())
         within = false;
@@ -175,7 +177,7 @@ axes::Result ConveyorSync::start_catch_up(std::span<const axes::MotionState> sta
   phase_ = SyncPhase::catching_up;
   t_catch_ = 0.0;
   for (std::size_t i = 0; i < n_; ++i)
-    catch_sp_[i] = catch_up_.setpoint(i, 0.0, s_, v_, a_);
+    catch_sp_[i] = catch_up_.setpoint(i, 0.0, s_, v_frame_, a_);
   return r;
 }
 

@@ -122,7 +122,9 @@ class ConveyorSync {
   /// True while the axes move with the belt: the catch-up, PCS1 and after #SYNC OUT until the
   /// departure starts (the audit's belt share, audit/audit.hpp).
   bool following() const noexcept { return phase_ == SyncPhase::catching_up || moving_frame(); }
-  double offset_v(std::size_t i) const noexcept { return share_[i] * v_; }  ///< [mm/s]
+  /// The velocity of offset(i) at the cycle's end [mm/s]: the frame's velocity (v_frame_), the
+  /// axes' velocity feed-forward; not the master's reported velocity (docs/conveyor.md F-8).
+  double offset_v(std::size_t i) const noexcept { return share_[i] * v_frame_; }
   double offset_a(std::size_t i) const noexcept { return share_[i] * a_; }  ///< [mm/s^2]
 
   SyncPhase phase() const noexcept { return phase_; }
@@ -173,6 +175,13 @@ class ConveyorSync {
   /// forecast. It differs from v_ (the filtered velocity) while a delay-compensated belt
   /// accelerates (F-5: p = filtered p + filtered v x delay time).
   double v_slope_ = 0.0;
+  /// The PCS1 frame's velocity at the cycle's end along PCS0 X [mm/s]: v_slope_ + a_ T / 2, the
+  /// velocity the master position moves at (F-5 moves it at filtered v + filtered a x delay
+  /// time, and the position filter's slope is not the velocity filter's); exact for a master
+  /// position of constant acceleration a_. What offset_v() and the catch-up's setpoints carry,
+  /// so the axes' velocity is the derivative of their position (docs/conveyor.md F-8, issue 36
+  /// items 7 and 8; 004 l.422-428).
+  double v_frame_ = 0.0;
   double p_last_ = 0.0;  ///< the master position of the last step() [mm] (stepped_t_ >= 0)
   double waited_ = 0.0;
   CatchUp catch_up_;

@@ -183,6 +183,38 @@ TEST_CASE("the catch-up forecasts the belt at its position's slope, not its repo
   CHECK(std::fabs(x1) / (kT * kT) <= 5000.0 + 1e-6);
 }
 
+TEST_CASE(
+    "the frame's velocity is its position's at the cycle's end: the slope over the cycle plus "
+    "half a cycle of the master's acceleration, not the master's reported velocity") {
+  // Issue 36 items 7 and 8 (docs/conveyor.md F-8): with delay-time compensation the master
+  // position moves at filtered v + filtered a x delay time (004 l.422-428), but the offset's
+  // velocity carried the filtered v alone: X.v was not the derivative of X, and the axes'
+  // velocity feed-forward fell short of their position by a x delay time (1.6 mm/s on a
+  // 300 mm/s belt at +-5 % 1 Hz with 17.455 ms).
+  Run r;
+  r.port.v_lag_ = 1.6;       // the reported velocity behind the position's slope
+  r.port.a_report_ = 94.25;  // the reported acceleration (15 mm/s x 2 pi 1/s)
+  REQUIRE_FALSE(r.sync.sync_in(sync_in(300.0)));
+  r.port.latches_.push_back(0.0);
+  REQUIRE_FALSE(r.cycle());
+  REQUIRE(r.sync.phase() == SyncPhase::latched);
+  const std::array<axes::MotionState, 3> start{};
+  const std::array<double, 3> target{50.0, 40.0, -10.0};
+  REQUIRE(r.sync.start_catch_up(start, target, 0.0) == axes::Result::ok);
+  for (int guard = 0; guard < 10000 && r.sync.phase() != SyncPhase::tracking; ++guard)
+    REQUIRE_FALSE(r.cycle());
+  REQUIRE(r.sync.phase() == SyncPhase::tracking);
+  double last = r.sync.offset(0);
+  for (int i = 0; i < 200; ++i) {
+    REQUIRE_FALSE(r.cycle());
+    const double slope = (r.sync.offset(0) - last) / kT;
+    last = r.sync.offset(0);
+    CHECK(r.sync.offset_v(0) == doctest::Approx(slope + r.sync.offset_a(0) * kT / 2).epsilon(1e-9));
+    CHECK(r.sync.offset_v(0) == doctest::Approx(300.0 + 94.25 * kT / 2).epsilon(1e-9));
+    CHECK(r.sync.offset_a(0) == doctest::Approx(94.25));
+  }
+}
+
 TEST_CASE("50653 while synchronised: the belt more than 10 % above CONV_VEL") {
   Run r;
   r.port.v_ = 331.0;

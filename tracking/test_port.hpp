@@ -20,7 +20,7 @@ class FakePort final : public ncsim::conveyor::Port {
     if (v_change2_at_ && steps_ + 1 == *v_change2_at_) v_ = v_new2_;
     p_ += v_ * (t - t_);
     t_ = t;
-    state_ = ncsim::conveyor::BeltState{p_, v_ - v_lag_, 0.0};
+    state_ = ncsim::conveyor::BeltState{p_, v_ - v_lag_, a_report_};
     ++steps_;
     if (latch_at_ && steps_ == *latch_at_) latches_.push_back(p_);
   }
@@ -60,6 +60,8 @@ class FakePort final : public ncsim::conveyor::Port {
   /// The master's velocity reports the position's slope less this [mm/s]: a filtered velocity
   /// behind its delay-compensated position while the belt accelerates (seed 004 §2.1.5).
   double v_lag_ = 0.0;
+  /// The master's reported acceleration [mm/s^2] (the position integrates v_ alone).
+  double a_report_ = 0.0;
   ncsim::conveyor::BeltState state_;
   std::optional<ncsim::machines::ConveyorAxisParams> params_;  ///< the last set_axis_params()
   long params_at_ = -1;                                        ///< steps_ when it came
