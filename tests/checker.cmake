@@ -17,12 +17,12 @@ add_test(NAME checker_known
          COMMAND ${NCSIM_CHECKER_PYTHON} ${_checker}/run_set.py --ncsim $<TARGET_FILE:ncsim>
                  --known --jobs 2 --expect ${_checker}/known/expected.txt)
 set_tests_properties(checker_known PROPERTIES TIMEOUT 300 LABELS checker)
-# The same cases with no expectations: they fail today (issue 36 items 1, 2, 5, 6 are open), so
-# the test is WILL_FAIL; when every item is fixed it fails, and WILL_FAIL comes off.
+# The same cases with no expectations: every item is fixed (issue 36 items 1, 2, 5, 6; item 1 in
+# session 36), so each case must be clean.
 add_test(NAME checker_known_strict
          COMMAND ${NCSIM_CHECKER_PYTHON} ${_checker}/run_set.py --ncsim $<TARGET_FILE:ncsim>
                  --known --jobs 2 --quiet)
-set_tests_properties(checker_known_strict PROPERTIES TIMEOUT 300 LABELS checker WILL_FAIL TRUE)
+set_tests_properties(checker_known_strict PROPERTIES TIMEOUT 300 LABELS checker)
 # The checker itself on synthetic trajectories with known answers (no ncsim).
 add_test(NAME checker_selftest COMMAND ${NCSIM_CHECKER_PYTHON} ${_checker}/selftest.py)
 set_tests_properties(checker_selftest PROPERTIES LABELS checker)
