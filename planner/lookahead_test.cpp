@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -543,6 +544,42 @@ PreparedSegment straight(double length, double cap, double a, double j, double v
   return ps;
 }
 
+/// Short blocks between a faster block and a slower one, entered at their backward entry cap
+/// (above their exit cap w: a slow-down inside the block): each leaves at w, or what it can
+/// reach, and its profile covers its length. `draw(k)` gives {w [mm/s], stub length [mm],
+/// a = d [mm/s^2], j [mm/s^3] (+inf: STEP)}; returns how many stubs were entered above w.
+template <class Draw>
+std::size_t check_short_blocks(int n, const Draw& draw) {
+  std::size_t above = 0;
+  for (int k = 0; k < n; ++k) {
+    const auto [w, stub, a, j] = draw(k);
+    CAPTURE(k);
+    CAPTURE(w);
+    CAPTURE(stub);
+    const double t_cycle = 0.001;
+    const double j_plan = std::isfinite(j) ? j : a / t_cycle;  // STEP: the look-ahead's
+    LookAhead window(8, t_cycle);
+    window.push(straight(1000.0, 4 * w, a, j, 4 * w));  // long enough to reach 4 w
+    window.push(straight(stub, 4 * w, a, j, w));
+    window.push(straight(1000.0, w, a, j, 0.0));
+    window.pop();
+    const PlannedSegment s = window.pop();
+    if (s.v_entry > w) ++above;
+    // Entered within the entry cap of its exit cap, the block leaves at that cap (or what it
+    // can reach). A few entries lie above it: the block's entry cap shrank when its exit cap
+    // rose (the non-monotone slow-down of docs/planner.md "Look-ahead"); they slow down more.
+    if (s.v_entry <= jerk::entry_velocity_for_exit(w, stub, a, j_plan))
+      CHECK(s.v_exit == std::min(w, jerk::reachable_velocity(s.v_entry, 0.0, stub, a, j_plan)));
+    const SegmentProfile m = profile(s);
+    CHECK(profile_at(m, m.time()).s == doctest::Approx(stub).epsilon(1e-6));
+  }
+  return above;
+}
+
+struct ShortBlock {
+  double w, stub, a, j;
+};
+
 }  // namespace
 
 TEST_CASE("a stub between two balls is passed at its exit cap, not planned to a stop") {
@@ -555,29 +592,26 @@ TEST_CASE("a stub between two balls is passed at its exit cap, not planned to a 
   std::mt19937 rng(3636);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   auto range = [&](double lo, double hi) { return lo * std::pow(hi / lo, u(rng)); };
-  std::size_t below = 0;  // stubs entered above their exit cap (a slow-down inside the stub)
-  for (int k = 0; k < 2000; ++k) {
-    const double w = k == 0 ? 0.51386183198484081 : range(0.01, 50);  // the stub's exit cap
-    const double stub = k == 0 ? 8.59219e-08 : range(1e-9, 1e-5);     // [mm]
-    const double j = k == 0 ? 53489.8 : range(1e3, 1e7);
-    const double a = k == 0 ? 3209.39 : range(100, 1e4);
-    CAPTURE(k);
-    CAPTURE(w);
-    CAPTURE(stub);
-    LookAhead window(8, 0.001);
-    window.push(straight(1000.0, 2 * w, a, j, 2 * w));  // long enough to reach 2 w
-    window.push(straight(stub, 2 * w, a, j, w));
-    window.push(straight(1000.0, w, a, j, 0.0));
-    window.pop();
-    const PlannedSegment s = window.pop();
-    if (s.v_entry > w) ++below;
-    // Entered within the entry cap of its exit cap, the stub leaves at that cap (or what it can
-    // reach). A few entries lie above it: the stub's entry cap shrank when its exit cap rose
-    // (the non-monotone slow-down of docs/planner.md "Look-ahead"); they slow down more.
-    if (s.v_entry <= jerk::entry_velocity_for_exit(w, stub, a, j))
-      CHECK(s.v_exit == std::min(w, jerk::reachable_velocity(s.v_entry, 0.0, stub, a, j)));
-    const SegmentProfile m = profile(s);
-    CHECK(profile_at(m, m.time()).s == doctest::Approx(stub).epsilon(1e-6));
-  }
-  CHECK(below > 1000);
+  const std::size_t above = check_short_blocks(2000, [&](int k) {
+    if (k == 0) return ShortBlock{0.51386183198484081, 8.59219e-08, 3209.39, 53489.8};
+    return ShortBlock{range(0.01, 50), range(1e-9, 1e-5), range(100, 1e4), range(1e3, 1e7)};
+  });
+  CHECK(above > 1000);
+}
+
+TEST_CASE("a short STEP block after a #TRANSVELMIN link leaves at its exit cap, not at a stop") {
+  // Issue 36 F2 (checker seed 894): a 1.85 mm block links at #TRANSVELMIN's 134 mm/s into a
+  // 0.001 mm block before a G19 arc capped at 35.5526 mm/s, all #SLOPE STEP. The backward pass
+  // capped the link by what the short block can brake in (35.5529 mm/s), but the forward
+  // pass's check of that 3.5e-4 mm/s slow-down missed the 0.001 mm by rounding (1e-11 of it)
+  // and planned the block to a stop: the path stood at its end for 25 cycles and X stepped from
+  // 27.9 mm/s to 0 in one cycle (27875 mm/s^2 against 4119).
+  std::mt19937 rng(894);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  auto range = [&](double lo, double hi) { return lo * std::pow(hi / lo, u(rng)); };
+  const double inf = std::numeric_limits<double>::infinity();
+  const std::size_t above = check_short_blocks(2000, [&](int) {
+    return ShortBlock{range(1, 200), range(1e-5, 1e-2), range(100, 1e4), inf};
+  });
+  CHECK(above > 1000);
 }
