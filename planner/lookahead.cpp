@@ -149,9 +149,9 @@ bool LookAhead::feasible_exit(double v_entry, double a_entry, double v_upper, co
   };
   // Speeding up (or cruising) to v_upper <= reach always fits (from a = 0), and so does the
   // slow-down to the exit cap from at most the backward pass's entry cap: the kernel's inverse
-  // found it to fit. Not asked again here: over a tiny length the two velocities differ by a
-  // few ulps of their difference, and the forward distance (the square root of that difference)
-  // missed the length by rounding (issue 36 item 1, docs/planner.md "Look-ahead").
+  // found it to fit. Not asked again here: the forward distance grows with the square root of
+  // the velocity difference, so where that is tiny its rounding missed the length and the
+  // bisection below planned a stop (issue 36 item 1, F2; docs/planner.md "Look-ahead").
   if (a_entry == 0.0 && (v_upper >= v_entry || v_entry <= s.entry_cap)) {
     out = v_upper;
     return true;
