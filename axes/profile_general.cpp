@@ -18,6 +18,7 @@
 #include "axes/profile_builder.hpp"
 #include "axes/profile_classify.hpp"
 #include "axes/profile_outside.hpp"
+#include "core/tolerance.hpp"
 
 namespace ncsim::axes {
 
@@ -29,9 +30,6 @@ using detail::distance;
 using detail::ProfileBuilder;
 using detail::ramp_distance;
 using detail::velocity_ramp;
-
-// Relative size of a rounding residue: a difference below kResidue times its terms is zero.
-constexpr double kResidue = 8.0 * std::numeric_limits<double>::epsilon();
 
 bool finite(const MotionState& s) noexcept {
   return std::isfinite(s.p) && std::isfinite(s.v) && std::isfinite(s.a);

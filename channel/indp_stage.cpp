@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "core/tolerance.hpp"
 #include "program/program_source.hpp"
 
 namespace ncsim::ipo {
@@ -57,7 +58,8 @@ bool IndpStage::step(const Cycle& c, AxisStage& axes, const Cycle*& shown,
           m.end[i] != m.start[i] || (m.arc && (m.arc->axis_1 == i || m.arc->axis_2 == i));
       if (!moved) continue;
       const double p = indp_.setpoint(i).p;
-      if (!indp_.in_position(i) || std::fabs(m.start[i] - p) > 1e-9 * std::max(1.0, std::fabs(p))) {
+      if (!indp_.in_position(i) ||
+          std::fabs(m.start[i] - p) > kRelTol * std::max(1.0, std::fabs(p))) {
         raise(error, kIndpPathId,
               "not supported: axis " + axes.config(i).name +
                   " programmed as a path axis while its INDP motion " +
@@ -125,7 +127,7 @@ EventOutcome IndpStage::command(const interp::AxisCommand& c, const AxisStage& a
   // (docs/conveyor.md "With INDP axes"). An axis the belt moves would need the moving frame.
   const bool belt_moves = c.frame.space == interp::Space::pcs1 &&
                           (!sync || (sync->xyz(i) >= 0 && sync->xyz(i) < 3 &&
-                                     std::fabs(sync->frame().direction()[sync->xyz(i)]) >= 1e-12));
+                                     std::fabs(sync->frame().direction()[sync->xyz(i)]) >= kTiny));
   if (belt_moves || c.frame.kinematics)
     return ctx.fail(kNotSupportedId,
                     "not supported: INDP motion of axis " + axes.config(i).name +

@@ -150,7 +150,7 @@ enum class Status : std::uint8_t {
 /// (Status::not_supported): an arrival velocity that needs a turn (the frame of travel from
 /// p0 to p1 disagrees with v1, or the start cannot stop within the distance: see
 /// reversal_of_duration). The end state is met exactly by the chain to rounding. A move whose
-/// time is not `duration` to 1e-9 relative is never answered (not_supported instead).
+/// time is not `duration` to kRelTol relative is never answered (not_supported instead).
 Status move_of_duration(const State& start, double p1, double v1, double duration,
                         const Limits& limits, Move& out) noexcept;
 
@@ -256,7 +256,7 @@ Status dip_crossing_move(const State& start, double p1, double v1, const Limits&
 /// one's time): the change meets p1 - v1 t_cruise and the rest is cruised at v1, t_cruise found
 /// by bisection (each step the fastest member for its target). Status::too_short below the
 /// fastest time; not_supported where the family does not apply or no cruise gives the duration
-/// to 1e-12 (the members end before the target moves out of their reach).
+/// to kRelRounding (the members end before the target moves out of their reach).
 Status dip_crossing_of_duration(const State& start, double p1, double v1, double duration,
                                 const Limits& limits, DipCrossing& out) noexcept;
 

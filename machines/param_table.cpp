@@ -9,7 +9,8 @@ constexpr double kSgn32Min = -2147483648.0;
 constexpr double kSgn32Max = 2147483647.0;
 constexpr double kUns16Max = 65535.0;
 constexpr double kUns32Max = 4294967295.0;
-constexpr double kRealMax = 1.0e300;  // MAX(REAL64) in practice; keeps messages readable
+constexpr double kRealMax = 1.0e300;   // MAX(REAL64) in practice; keeps messages readable
+constexpr double kAboveZero = 1.0e-9;  // least value of a real that must be > 0 (a window, a feed)
 
 // Conversions (docs/machines.md, "Units"): 0.1 um -> mm and 0.0001 deg -> deg share 1e-4;
 // 0.1 mdeg is 1e-4 deg too (seed 004 §5.2.2 P-CHAN-00371); us -> s; 0.1 % -> fraction.
@@ -80,10 +81,10 @@ constexpr std::array kTable = {
   ParamSpec{"P-AXIS-00099", "getriebe[].kv", A, ValueType::uns32, 1, kUns32Max, "0.01/s", kCenti, "1/s", "1000", kOpt, 7, -1, "TF5200 P-AXIS-00099"},
   ParamSpec{"NCSIM-AXIS-023", "drive.pt1_time", A, ValueType::real64, 0, kRealMax, "s", 1, "s", "0.0", kOpt, -1, -1, "000 §7.5.8"},
   ParamSpec{"NCSIM-AXIS-024", "monitoring.position_lag", A, ValueType::boolean, 0, 1, "", 1, "", "1", kOpt, -1, -1, "000 §7.1.5"},
-  ParamSpec{"NCSIM-AXIS-025", "monitoring.position_lag_max", A, ValueType::real64, 1e-9, kRealMax, "mm | deg", 1, "mm | deg", "5.0", kOpt, -1, -1, "000 §7.1.5"},
+  ParamSpec{"NCSIM-AXIS-025", "monitoring.position_lag_max", A, ValueType::real64, kAboveZero, kRealMax, "mm | deg", 1, "mm | deg", "5.0", kOpt, -1, -1, "000 §7.1.5"},
   ParamSpec{"NCSIM-AXIS-026", "monitoring.position_lag_filter_time", A, ValueType::real64, 0, kRealMax, "s", 1, "s", "0.02", kOpt, -1, -1, "000 §7.1.5"},
   ParamSpec{"NCSIM-AXIS-027", "monitoring.target_position", A, ValueType::boolean, 0, 1, "", 1, "", "1", kOpt, -1, -1, "000 §7.1.5"},
-  ParamSpec{"NCSIM-AXIS-028", "monitoring.target_position_window", A, ValueType::real64, 1e-9, kRealMax, "mm | deg", 1, "mm | deg", "2.0", kOpt, -1, -1, "000 §7.1.5"},
+  ParamSpec{"NCSIM-AXIS-028", "monitoring.target_position_window", A, ValueType::real64, kAboveZero, kRealMax, "mm | deg", 1, "mm | deg", "2.0", kOpt, -1, -1, "000 §7.1.5"},
   ParamSpec{"NCSIM-AXIS-029", "monitoring.target_position_time", A, ValueType::real64, 0, kRealMax, "s", 1, "s", "0.02", kOpt, -1, -1, "000 §7.1.5"},
   ParamSpec{"P-AXIS-00126", "getriebe[].moduloo", A, ValueType::sgn32, kSgn32Min, kSgn32Max, "0.1 um | 0.0001 deg", kTenthMicron, "mm | deg", "3600000", kOpt, 7, -1, "TF5200 P-AXIS-00126 (> P-AXIS-00127)"},
   ParamSpec{"P-AXIS-00127", "getriebe[].modulou", A, ValueType::sgn32, kSgn32Min, kSgn32Max, "0.1 um | 0.0001 deg", kTenthMicron, "mm | deg", "0", kOpt, 7, -1, "TF5200 P-AXIS-00127"},
@@ -119,7 +120,7 @@ constexpr std::array kTable = {
   ParamSpec{"NCSIM-CHAN-002", "main_spindle_ax_nr", C, ValueType::uns16, 1, kUns16Max, "", 1, "", "", kOpt, -1, -1, "004 §4.9.1 (listing)"},
   ParamSpec{"NCSIM-CHAN-003", "main_spindle_name", C, ValueType::word, 0, 0, "", 1, "", "", kOpt, -1, -1, "004 §4.9.1 (listing)"},
   ParamSpec{"NCSIM-CHAN-610", "ncsim.cycle_time", C, ValueType::uns32, 1, 1000000, "us", kMicrosecond, "s", "1000", kOpt, -1, -1, "no key in the manuals at hand (docs/ipo.md \"The cycle time\"); the bounds of --cycle-us, which overrides it"},
-  ParamSpec{"NCSIM-CHAN-620", "ncsim.default_path_dev", C, ValueType::real64, 1e-9, kRealMax, "mm", 1, "mm", "1.0", kOpt, -1, -1, "isg-language §5.3 (PROG-475164939: PATH_DEV 1 mm); no ISG key: G261's ball radius where #CONTOUR MODE gives no PATH_DEV"},
+  ParamSpec{"NCSIM-CHAN-620", "ncsim.default_path_dev", C, ValueType::real64, kAboveZero, kRealMax, "mm", 1, "mm", "1.0", kOpt, -1, -1, "isg-language §5.3 (PROG-475164939: PATH_DEV 1 mm); no ISG key: G261's ball radius where #CONTOUR MODE gives no PATH_DEV"},
   ParamSpec{"NCSIM-CHAN-640", "conveyor_sync.ncsim_dynamics_reserve", C, ValueType::uns16, 0, 500, "0.1 %", kPerMille, "fraction", "0", kOpt, -1, -1, "004 l.454 (reduce the dynamic axis limits; no ISG key)"},
   ParamSpec{"NCSIM-CHAN-630", "ncsim.path_override_type", C, ValueType::word, 0, 0, "REDUCED | ORIGINAL | REDUCED_ABOVE_100", 1, "", "REDUCED", kOpt, -1, -1, "000 §7.5.6 (override types; no ISG key)"},
   ParamSpec{"P-CHAN-00160", "g80_prog_file", C, ValueType::file_name, 0, 0, "", 1, "", "", kOpt, -1, -1, "TF5200 P-CHAN-00160 (G80's implicit subroutine, PROG-206278923)"},
@@ -137,7 +138,7 @@ constexpr std::array kTable = {
   ParamSpec{"P-CHAN-00429", "d_prog_file", C, ValueType::file_name, 0, 0, "", 1, "", "", kOpt, -1, -1, "TF5200 P-CHAN-00429 (a D word also calls this global subroutine)"},
   ParamSpec{"P-CHAN-00108", "prog_start.feedrate_factor", C, ValueType::real64, -1, kRealMax, "", 1, "", "100", kOpt, -1, -1, "TF5200 P-CHAN-00108 (100: F in mm/min, 0.1: m/min; F [mm/min] = F x 100 / factor; <= 0: 100)"},
   ParamSpec{"P-CHAN-00099", "prog_start.feedrate", C, ValueType::real64, 0, kRealMax, "mm/min", 1.0 / 60.0, "mm/s", "0", kOpt, -1, -1, "TF5200 P-CHAN-00099 (the feed of G01/G02/G03 before any F; 0: none)"},
-  ParamSpec{"P-CHAN-00090", "vector.velocity", C, ValueType::real64, 1e-9, kRealMax, "mm/min", 1.0 / 60.0, "mm/s", "2000000000", kOpt, -1, -1, "TF5200 P-CHAN-00090 (#VECTOR LIMIT ON [VEL] without a value)"},
+  ParamSpec{"P-CHAN-00090", "vector.velocity", C, ValueType::real64, kAboveZero, kRealMax, "mm/min", 1.0 / 60.0, "mm/s", "2000000000", kOpt, -1, -1, "TF5200 P-CHAN-00090 (#VECTOR LIMIT ON [VEL] without a value)"},
   ParamSpec{"P-CHAN-00041", "m_synch[]", C, ValueType::flag_set, 0, 0, "NO_SYNCH | MOS | MVS_SVS | MVS_SNS | MNS_SNS | 0x...", 1, "", "MOS", kOpt, 999, -1, "TF5200 P-CHAN-00041 (M function i's synchronisation type; ncsim's default MOS, docs/interp.md \"Technology functions\")"},
   ParamSpec{"P-CHAN-00027", "h_synch[]", C, ValueType::flag_set, 0, 0, "NO_SYNCH | MOS | MVS_SVS | MVS_SNS | MNS_SNS | 0x...", 1, "", "MOS", kOpt, 999, -1, "TF5200 P-CHAN-00027 (H function i's synchronisation type)"},
   ParamSpec{"P-CHAN-00081", "spindel[].s_synch", C, ValueType::flag_set, 0, 0, "NO_SYNCH | MOS | MVS_SVS | MVS_SNS | MNS_SNS | 0x...", 1, "", "MOS", kOpt, 0, -1, "TF5200 P-CHAN-00081 (the S function's synchronisation type; ncsim has one spindle entry, [0])"},

@@ -8,6 +8,8 @@
 #include <string>
 #include <type_traits>
 
+#include "core/tolerance.hpp"
+
 namespace ncsim::planner {
 
 namespace {
@@ -110,7 +112,7 @@ void validate(const Move& move) {
     }
     if (g.axes[0] == g.axes[1] || g.axes[1] == g.axes[2] || g.axes[0] == g.axes[2])
       fail(at() + "arc plane axes not distinct");
-    if (std::abs(uu - 1.0) > 1e-9 || std::abs(vv - 1.0) > 1e-9 || std::abs(uv) > 1e-9)
+    if (std::abs(uu - 1.0) > kRelTol || std::abs(vv - 1.0) > kRelTol || std::abs(uv) > kRelTol)
       fail(at() + "arc plane u, v not orthonormal");
     double x = 0.0, y = 0.0;
     for (std::size_t k = 0; k < 3; ++k) {
