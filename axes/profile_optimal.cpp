@@ -213,7 +213,7 @@ bool plan_fastest(const MotionState& start, const PositionTarget& target, const 
   // Candidate 4 (starts moving away): stop with A-, then the fastest move from rest; a
   // reversing ramp can only use min(A+, A-) across v = 0, so the stop can be faster.
   if (direct || (start.v == 0.0 && start.a == 0.0)) return found;
-  // --- ptp-speed: skipped where its lower bound shows it cannot be faster (profile_classify);
+  // Skipped where its lower bound shows it cannot be faster (profile_classify);
   // infinite where its go part cannot reach an arrival velocity (issue 11, session 26).
   const double t_found = found ? out.duration() : std::numeric_limits<double>::infinity();
   if (stop_then_go_bound(start, target, dyn, &stop) >= t_found) return found;

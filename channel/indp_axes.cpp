@@ -214,7 +214,6 @@ bool IndpAxes::interrupt(std::size_t i) noexcept {
   return true;
 }
 
-// --- trafo-feed
 bool IndpAxes::stop(std::size_t i) noexcept {
   Axis& a = axes_[i];
   if (a.mode == Mode::idle) return false;
@@ -230,7 +229,6 @@ bool IndpAxes::stop(std::size_t i) noexcept {
   return true;
 }
 
-// --- sync-feed
 bool IndpAxes::hand_over(std::size_t i) noexcept {
   if (!interruptible(i)) return false;
   Axis& a = axes_[i];

@@ -217,8 +217,6 @@ bool keeps_direction(const Element& e, Vec2 start, Vec2 end) {
   return u_end - u_start >= -kRelTol;  // [rad]
 }
 
-// ---------------------------------------------------------------------------------------------
-
 namespace {
 
 double signed_offset(const ToolRadiusComp& t) {

@@ -172,7 +172,7 @@ Status fastest_move(const State& start, double p1, double v1, const Limits& limi
 /// World state at the end of `move` started from `start` (closed-form chain).
 State end_state(const State& start, const Move& move) noexcept;
 
-// --- ptp additions (issue 11): two-peak velocity changes.
+// Two-peak velocity changes (issue 11).
 
 /// A velocity change (v0, a0) -> (v1, 0) whose acceleration keeps one sign and has two peaks
 /// (it does not return to 0 between them): jerk from a0 toward 0 down to a_dip, jerk to
@@ -279,7 +279,7 @@ Status fastest_move_newton(const State& start, double p1, double v1, const Limit
 Status reversal_of_duration(const State& start, double p1, double v1, double duration,
                             const Limits& limits, Reversal& out) noexcept;
 
-// --- planner-c2 additions (issue 12): velocity changes that end with an acceleration.
+// Velocity changes that end with an acceleration (issue 12).
 
 /// Up to three constant-jerk phases from (v0, a0) to (v1, a1): jerk towards the extreme
 /// acceleration a_peak, [hold there], jerk to a1. The intended boundary values travel with it.

@@ -172,7 +172,7 @@ void Recorder::on_cycle(const ipo::Cycle& c) {
 
 void Recorder::add_mcs(const ipo::AxisVec& axes) {
   mcs_point_.resize(mcs_.dims());
-  // --- trafo-jerk: untransformed, a kinematic machine's axes are joints: their TCP.
+  // Untransformed, a kinematic machine's axes are joints: their TCP.
   ipo::AxisVec tcp{};
   const bool joints = !transformed_ && forward_;
   if (joints && !forward_(axes, tcp)) return;
