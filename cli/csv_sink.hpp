@@ -1,6 +1,6 @@
 #pragma once
 // cli/csv_sink: the rows of `ncsim run`'s CSV trajectory (design.md §5), buffered, numbers by
-// std::to_chars (cli/number_format.hpp); the technology functions as `# tech` comments.
+// core::num (core/number_text.hpp); the technology functions as `# tech` comments.
 
 #include <array>
 #include <cerrno>

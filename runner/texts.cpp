@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "core/diagnostic.hpp"
-#include "core/number_format.hpp"
+#include "core/number_text.hpp"
 #include "runner/run.hpp"
 
 namespace ncsim::runner {
