@@ -423,7 +423,7 @@ TEST_CASE("G00 runs and is audited with its own slope P-AXIS-00004 / 00200, G01 
   CHECK_FALSE(strict.verdict().ok());
 }
 
-// --- conveyor: an axis moving with a belt that accelerates by itself (004 l.454).
+// An axis moving with a belt that accelerates by itself (004 l.454).
 TEST_CASE("an axis carried by an accelerating belt: the violation names its path share") {
   const std::vector<planner::AxisLimits> axes = {axis(100.0, 100.0, 1e6)};
   for (const double own : {0.0, 200.0}) {  // the path's own acceleration on top of the belt's

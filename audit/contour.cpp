@@ -8,6 +8,8 @@
 #include <numbers>
 #include <utility>
 
+#include "core/tolerance.hpp"
+
 namespace ncsim::ipo {
 
 namespace {
@@ -149,7 +151,7 @@ double spline_distance(const planner::Move& m, const planner::AxisVec& x) noexce
     if (!left || !right) continue;
     double lo = std::max(0, k - 1) / static_cast<double>(kSamples);
     double hi = std::min(kSamples, k + 1) / static_cast<double>(kSamples);
-    for (int it = 0; it < 60 && hi - lo > 1e-15; ++it) {
+    for (int it = 0; it < 60 && hi - lo > kParameterWidth; ++it) {
       const double a = hi - g * (hi - lo);
       const double b = lo + g * (hi - lo);
       if (point_distance(m, x, cubic_at(m, a)) < point_distance(m, x, cubic_at(m, b)))

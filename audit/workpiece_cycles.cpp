@@ -2,12 +2,12 @@
 
 #include "audit/workpiece_cycles.hpp"
 
-#include <array>
-#include <charconv>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 #include <utility>
+
+#include "core/number_text.hpp"
 
 namespace ncsim::ipo {
 
@@ -19,13 +19,7 @@ void field(std::string& out, const char* key, double v) {
   out += '"';
   out += key;
   out += "\":";
-  if (!std::isfinite(v)) {
-    out += "null";
-    return;
-  }
-  std::array<char, 32> buf{};
-  const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
-  out.append(buf.data(), r.ptr);
+  out += core::json_num(v);
 }
 
 /// The five phases and their total, `"waiting_s":..,...,"total_s":..`.

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/number_text.hpp"
+#include "core/tolerance.hpp"
 
 namespace ncsim::axes {
 namespace {
@@ -97,7 +98,7 @@ HomingOutput Homing::step(const HomingInput& input, double t_cycle) noexcept {
       break;
     case HomingPhase::stopping:
       if (!moving()) {
-        if (params_.move_to_home && std::fabs(setpoint_.p - params_.home_position) > 1e-9) {
+        if (params_.move_to_home && std::fabs(setpoint_.p - params_.home_position) > kSamePoint) {
           Profile profile;
           const MotionState now{setpoint_.p - shift_, 0.0, 0.0};
           plan(plan_position(now, PositionTarget{params_.home_position - shift_, 0.0},

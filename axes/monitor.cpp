@@ -5,13 +5,10 @@
 #include <stdexcept>
 
 #include "core/number_text.hpp"
+#include "core/tolerance.hpp"
 
 namespace ncsim::axes {
 namespace {
-
-// Tolerance for turning a time into a whole number of cycles: 0.003 s / 0.001 s is
-// 2.9999999999999996 in double and must count as 3 cycles.
-constexpr double kCycleRounding = 1e-9;
 
 void require_non_negative(const char* parameter, double value) {
   if (!std::isfinite(value) || value < 0.0) {

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "axes/profile_builder.hpp"
+#include "core/tolerance.hpp"
 
 namespace ncsim::axes {
 
@@ -91,7 +92,8 @@ Result plan_phase_synchronized(std::span<const MotionState> starts,
   const MotionState u0{};
   const PositionTarget u1{1.0, 0.0};
   if (plan_position(u0, u1, du, u, rule) != Result::ok) return time_sync();
-  if (u.duration() > t_slowest * (1.0 + 1e-9)) return time_sync();  // the phases cannot be shared
+  if (u.duration() > t_slowest * (1.0 + kRelTol))
+    return time_sync();  // the phases cannot be shared
   if (min_duration > u.duration() &&
       plan_position_of_duration(u0, u1, du, min_duration, u) != Result::ok) {
     return time_sync();

@@ -31,7 +31,7 @@ enum class SyncKind : std::uint8_t {
 /// Phase-synchronised multi-axis motion: the 1-D motion u: 0 -> 1 is planned under the
 /// tightest scaled limits (V_u = min V_i / |D_i|, likewise A+, A-, J) with `rule`, and every
 /// axis follows p_i0 + D_i u(t). Its duration is max(its own, min_duration [s]); used when it
-/// is not slower than the slowest axis alone (relative 1e-9), else falls back to
+/// is not slower than the slowest axis alone (relative kRelTol), else falls back to
 /// plan_synchronized. All spans have one size; `used` (optional) receives the variant.
 Result plan_phase_synchronized(std::span<const MotionState> starts,
                                std::span<const PositionTarget> targets,

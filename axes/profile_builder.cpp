@@ -8,6 +8,8 @@
 #include <cstdlib>
 #include <limits>
 
+#include "core/tolerance.hpp"
+
 namespace ncsim::axes::detail {
 
 namespace {
@@ -114,8 +116,7 @@ void append_rest_to_rest(ProfileBuilder& builder, double p_target,
   const double d_dec = ramp_distance(v_level, dynamics.d_max, jerk);
   // A cruise that is only the rounding residue of dist - d_acc - d_dec is dropped (Numerics).
   const double d_cruise = dist - d_acc - d_dec;
-  const double t_cruise =
-      d_cruise > 8.0 * std::numeric_limits<double>::epsilon() * dist ? d_cruise / v_level : 0.0;
+  const double t_cruise = d_cruise > kResidue * dist ? d_cruise / v_level : 0.0;
   builder.set_level(v_level);
   builder.add(velocity_ramp(0.0, 0.0, v_level, dynamics.a_max, dynamics.d_max, jerk), s);
   builder.add(0.0, t_cruise);

@@ -3,7 +3,7 @@
 //
 // Each bound is the candidate's own closed-form parts (the stop's phases, the fastest
 // rest-to-rest time, the final ramp to the arrival speed) over a distance shortened by a
-// rounding margin, times (1 - 1e-9): the candidates' durations are sums of the same phases
+// rounding margin, times (1 - kRelTol): the candidates' durations are sums of the same phases
 // integrated by the profile builder, equal to these to ~1e-15 relative.
 //  - "stop, then go": t_stop + T_r2r(|p1 - p_stop|) for a target at rest (the fastest
 //    rest-to-rest move is the closed form); for an arrival velocity v1 infinite where the go
@@ -27,12 +27,13 @@
 #include <limits>
 
 #include "axes/profile_builder.hpp"
+#include "core/tolerance.hpp"
 
 namespace ncsim::axes::detail {
 
 namespace {
 
-constexpr double kMargin = 1e-9;  // relative rounding margin of every bound
+constexpr double kMargin = kRelTol;  // relative rounding margin of every bound
 
 // Distance shortened by the rounding margin of the positions it is computed from [mm].
 double shortened(double dist, double scale) noexcept {
@@ -56,8 +57,7 @@ double manual_rest_to_rest_time(double dist, const Dynamics& dyn) noexcept {
   }
   const double vm = std::min(dyn.v_max, v_reach);
   const double d_cruise = dist - ramp_distance(vm, dyn.a_max, j) - ramp_distance(vm, dyn.d_max, j);
-  const double t_cruise =
-      d_cruise > 8.0 * std::numeric_limits<double>::epsilon() * dist ? d_cruise / vm : 0.0;
+  const double t_cruise = d_cruise > kResidue * dist ? d_cruise / vm : 0.0;
   return rest_ramp_time(vm, dyn.a_max, j) + t_cruise + rest_ramp_time(vm, dyn.d_max, j);
 }
 

@@ -5,7 +5,7 @@
 //
 // Inputs: the start state, the target, the dynamics (as plan_position).
 // Outputs: durations [s]; a lower bound is <= the candidate's planned duration (with a margin
-// of 1e-9 relative for rounding), 0 where no bound is known (the candidate is then evaluated).
+// of kRelTol relative for rounding), 0 where no bound is known (the candidate is then evaluated).
 // Invariants: skipping a candidate whose bound is >= the best duration found changes nothing
 // (plan_fastest keeps a candidate only when it is strictly faster); checked against the full
 // search by profile_classify_test.cpp. Nothing allocates, nothing throws.

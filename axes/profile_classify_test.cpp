@@ -141,7 +141,7 @@ TEST_CASE("the manual bound is below the manual plan's duration (100000 seeded c
   int tight = 0;
   for (int i = 0; i < 100000; ++i) {
     const Case c = draw(rng);
-    // --- ptp-outside: from outside the limits the manual plan first recovers
+    // From outside the limits the manual plan first recovers
     // (profile_outside.hpp, manual_recover); the bound is not used there (profile_general.cpp).
     if (detail::outside_limits(c.start, c.dyn)) continue;
     const double bound = detail::manual_bound(c.start, c.target, c.dyn);

@@ -18,6 +18,7 @@
 #include "axes/profile_builder.hpp"
 #include "axes/profile_classify.hpp"
 #include "axes/profile_outside.hpp"
+#include "core/tolerance.hpp"
 
 namespace ncsim::axes {
 
@@ -29,9 +30,6 @@ using detail::distance;
 using detail::ProfileBuilder;
 using detail::ramp_distance;
 using detail::velocity_ramp;
-
-// Relative size of a rounding residue: a difference below kResidue times its terms is zero.
-constexpr double kResidue = 8.0 * std::numeric_limits<double>::epsilon();
 
 bool finite(const MotionState& s) noexcept {
   return std::isfinite(s.p) && std::isfinite(s.v) && std::isfinite(s.a);
@@ -128,7 +126,7 @@ void append_stop_and_return(ProfileBuilder& b, const PositionTarget& target,
 // plan (docs/axes-profile.md); a start outside the limits is first brought back inside.
 void plan_time_optimal(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
                        Profile& out) noexcept {
-  // --- ptp-limits: a start outside the limits is first brought back inside
+  // A start outside the limits is first brought back inside
   // (axes/profile_outside.hpp, docs/axes-profile-outside.md).
   const bool outside = detail::outside_limits(start, dyn);
   if (outside && detail::plan_from_outside(start, target, dyn, out)) return;
@@ -141,9 +139,9 @@ void plan_time_optimal(const MotionState& start, const PositionTarget& target, c
   detail::StopPoint stop{-1.0, 0.0};  // t < 0: not computed by plan_fastest
   const bool found = detail::plan_fastest(start, target, dyn, out, direct, stop);
   if (found && (direct || (target.v == 0.0 && inside_limits(start, dyn)))) return;
-  // --- ptp-speed: the manual's stop-and-return skipped where its lower bound shows it cannot
+  // The manual's stop-and-return skipped where its lower bound shows it cannot
   // be faster (axes/profile_classify.hpp).
-  // --- ptp-outside: the bound describes the manual plan from inside the limits only (from
+  // The bound describes the manual plan from inside the limits only (from
   // outside, the manual first recovers: manual_recover).
   if (found && !outside &&
       detail::manual_bound(start, target, dyn, stop.t >= 0.0 ? &stop : nullptr) >= out.duration()) {
@@ -211,7 +209,7 @@ bool manual_level(double v1, double a1, double vf, double dist, const Dynamics& 
 // (case 2), or stop and return (case 3).
 void plan_manual(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,
                  Profile& out) noexcept {
-  // --- ptp-outside: a start whose forced release reverses the motion beyond V or A+ is first
+  // A start whose forced release reverses the motion beyond V or A+ is first
   // brought inside by the manual's own rules (axes/profile_outside.hpp, manual_recover).
   if (detail::outside_limits(start, dyn) &&
       detail::plan_manual_from_outside(start, target, dyn, out)) {

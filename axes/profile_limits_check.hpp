@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "axes/profile.hpp"
+#include "core/tolerance.hpp"
 
 namespace ncsim::test {
 
@@ -68,7 +69,7 @@ inline bool inside(double v, double a, const axes::Dynamics& d, double tol) {
 /// `d`), beyond what the start forces; empty when none. `tol`: relative tolerance of every
 /// limit; `grid`: uniform samples over the duration in addition to the phase samples.
 inline std::string profile_limit_violation(const axes::Profile& p, const axes::Dynamics& d,
-                                           const axes::MotionState& start, double tol = 1e-9,
+                                           const axes::MotionState& start, double tol = kRelTol,
                                            int grid = 256) {
   using namespace limits_detail;
   const double j = d.j_max;

@@ -202,6 +202,8 @@ class LpOracle {
     glp_init_smcp(&parm);
     parm.msg_lev = GLP_MSG_OFF;
     parm.meth = GLP_DUALP;
+    // GLPK's primal and dual feasibility tolerances, tighter than its 1e-7 defaults (a
+    // solver setting, not one of ncsim's tolerances).
     parm.tol_bnd = 1e-10;
     parm.tol_dj = 1e-10;
     // An iteration limit, not a time limit (deterministic): a solve that stalls (seen once in

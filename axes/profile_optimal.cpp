@@ -16,6 +16,7 @@
 #include "axes/profile.hpp"
 #include "axes/profile_builder.hpp"
 #include "axes/profile_classify.hpp"
+#include "core/tolerance.hpp"
 #include "jerk/trusted.hpp"
 
 namespace ncsim::axes {
@@ -107,8 +108,7 @@ void append_rest_to_rest_fastest(ProfileBuilder& b, double p_target, const Dynam
   const double vm = std::min(dyn.v_max, rest_to_rest_level(dist, dyn));
   const double j = dyn.j_max;
   const double d_cruise = dist - ramp_distance(vm, dyn.a_max, j) - ramp_distance(vm, dyn.d_max, j);
-  const double t_cruise =
-      d_cruise > 8.0 * std::numeric_limits<double>::epsilon() * dist ? d_cruise / vm : 0.0;
+  const double t_cruise = d_cruise > kResidue * dist ? d_cruise / vm : 0.0;
   b.set_level(vm);
   b.add(velocity_ramp(0.0, 0.0, vm, dyn.a_max, dyn.d_max, j), s);
   b.add(0.0, t_cruise);
@@ -213,7 +213,7 @@ bool plan_fastest(const MotionState& start, const PositionTarget& target, const 
   // Candidate 4 (starts moving away): stop with A-, then the fastest move from rest; a
   // reversing ramp can only use min(A+, A-) across v = 0, so the stop can be faster.
   if (direct || (start.v == 0.0 && start.a == 0.0)) return found;
-  // --- ptp-speed: skipped where its lower bound shows it cannot be faster (profile_classify);
+  // Skipped where its lower bound shows it cannot be faster (profile_classify);
   // infinite where its go part cannot reach an arrival velocity (issue 11, session 26).
   const double t_found = found ? out.duration() : std::numeric_limits<double>::infinity();
   if (stop_then_go_bound(start, target, dyn, &stop) >= t_found) return found;
@@ -282,12 +282,12 @@ class StretchedTwoPeak {
     x_tri_ = std::sqrt(w_);
     lim_ = lim;
     if (!(x_tri_ > std::max(alpha0_, 0.0)) || x_tri_ > lim) return false;
-    return duration >= (2.0 * x_tri_ - alpha0_) / j_ * (1.0 - 1e-9);  // not below the triangle
+    return duration >= (2.0 * x_tri_ - alpha0_) / j_ * (1.0 - kRelTol);  // not below the triangle
   }
 
   /// The dip z from 0 (deepest) up to the shallowest still slow enough, by bisection on the
   /// distance (monotone along that curve: assumed, checked by the bracket); false where the
-  /// time and the distance do not both meet to 1e-9.
+  /// time and the distance do not both meet to kRelTol.
   bool solve(jerk::TwoPeak& tp) const noexcept {
     if (!(t_eq(0.0) >= duration_)) return false;  // even the deepest dip is too fast
     double z_lo = 0.0;
@@ -298,7 +298,7 @@ class StretchedTwoPeak {
     const double g_hi = gap(z_hi, tp_hi);
     if (!std::isfinite(g_lo) || !std::isfinite(g_hi) || (g_lo > 0.0) == (g_hi > 0.0)) return false;
     tp = tp_lo;
-    for (int i = 0; i < 200 && z_hi - z_lo > kEps * z_hi; ++i) {
+    for (int i = 0; i < 200 && z_hi - z_lo > kBisectWidth * z_hi; ++i) {
       const double mid = 0.5 * (z_lo + z_hi);
       jerk::TwoPeak t_mid;
       const double g_mid = gap(mid, t_mid);
@@ -307,13 +307,11 @@ class StretchedTwoPeak {
       if ((g_mid > 0.0) == (g_lo > 0.0)) g_lo = g_mid;
       tp = t_mid;
     }
-    return std::abs(tp.time() - duration_) <= 1e-9 * duration_ &&
-           std::abs(distance(tp) - d_) <= 1e-9 * std::max(d_, 1e-9);
+    return std::abs(tp.time() - duration_) <= kRelTol * duration_ &&
+           std::abs(distance(tp) - d_) <= kRelTol * std::max(d_, kSamePoint);
   }
 
  private:
-  static constexpr double kEps = 4.0 * std::numeric_limits<double>::epsilon();
-
   double x2_of(double x1, double z) const noexcept {
     return std::sqrt(std::max(0.0, w_ + z * z - x1 * x1));
   }
@@ -345,7 +343,7 @@ class StretchedTwoPeak {
     double hi = x_tri_;
     double lo = std::max({x_eq, alpha0_, z});
     if (lo > lim_ || !(time_of(lo, z) >= duration_) || time_of(hi, z) > duration_) return -1.0;
-    for (int i = 0; i < 200 && hi - lo > kEps * hi; ++i) {
+    for (int i = 0; i < 200 && hi - lo > kBisectWidth * hi; ++i) {
       const double mid = 0.5 * (lo + hi);
       (time_of(mid, z) >= duration_ ? lo : hi) = mid;
     }
@@ -366,7 +364,7 @@ class StretchedTwoPeak {
   double shallowest_dip() const noexcept {
     double z_ok = 0.0;
     double z_no = x_tri_;
-    for (int i = 0; i < 200 && z_no - z_ok > kEps * x_tri_; ++i) {
+    for (int i = 0; i < 200 && z_no - z_ok > kBisectWidth * x_tri_; ++i) {
       const double mid = 0.5 * (z_ok + z_no);
       (t_eq(mid) >= duration_ ? z_ok : z_no) = mid;
     }
@@ -420,7 +418,7 @@ bool plan_two_peak_of_duration(const MotionState& start, const PositionTarget& t
     if (!(w_u > 0.0)) continue;
     const double t_tri = (alpha0 - 2.0 * u + 2.0 * std::sqrt(w_u)) / j;
     const double t_sym = (alpha0 - 2.0 * u + 4.0 * std::sqrt(0.5 * w_u)) / j;
-    if (duration < t_tri * (1.0 - 1e-9) || duration > t_sym * (1.0 + 1e-9)) continue;
+    if (duration < t_tri * (1.0 - kRelTol) || duration > t_sym * (1.0 + kRelTol)) continue;
     MotionState s1 = jerk::advance(start, -f * sigma * j, t0);
     s1.a = f * sigma * u;
     Profile tail;
@@ -528,7 +526,7 @@ Result position_of_duration(const MotionState& start, const PositionTarget& targ
   // The duration of the fastest profile itself (e.g. a two-peak change, which has no slower
   // variant in these families).
   if (plan_position(start, target, dyn, out, ProfileRule::time_optimal) == Result::ok &&
-      std::abs(out.duration() - duration) <= 1e-12 * duration) {
+      std::abs(out.duration() - duration) <= kRelRounding * duration) {
     return Result::ok;
   }
   if (plan_two_peak_of_duration(start, target, dyn, duration, out)) return Result::ok;
@@ -615,9 +613,7 @@ double next_feasible_duration(const MotionState& start, const PositionTarget& ta
         }
         t_no = duration + step;
       }
-      for (int i = 0; t_yes > 0.0 && i < 200 &&
-                      t_yes - t_no > 4.0 * std::numeric_limits<double>::epsilon() * t_yes;
-           ++i) {
+      for (int i = 0; t_yes > 0.0 && i < 200 && t_yes - t_no > kBisectWidth * t_yes; ++i) {
         const double mid = 0.5 * (t_no + t_yes);
         (turns(mid) ? t_yes : t_no) = mid;
       }
@@ -654,7 +650,7 @@ Result plan_moving_target(const MotionState& start, double p1, double v1, double
   const auto meet = [&](double t) {
     if (!reach(t)) return false;
     if (position_of_duration(start, target_at(t), dyn, t, out, false) == Result::ok) return true;
-    if (std::abs(probe.duration() - t) <= 1e-9 * std::max(t, 1e-9)) {
+    if (std::abs(probe.duration() - t) <= kRelTol * std::max(t, kSameTime)) {
       out = probe;  // at the boundary of reach: the fastest profile takes T
       return true;
     }
@@ -674,8 +670,7 @@ Result plan_moving_target(const MotionState& start, double p1, double v1, double
       step *= 2.0;
       t_hi = t_start + step;
     }
-    for (int i = 0; i < 200 && t_hi - t_lo > 4.0 * std::numeric_limits<double>::epsilon() * t_hi;
-         ++i) {
+    for (int i = 0; i < 200 && t_hi - t_lo > kBisectWidth * t_hi; ++i) {
       const double mid = 0.5 * (t_lo + t_hi);
       (pred(mid) ? t_hi : t_lo) = mid;
     }
@@ -704,8 +699,7 @@ Result plan_moving_target(const MotionState& start, double p1, double v1, double
         step *= 2.0;
       }
       double t_no = std::max(0.0, t_ok - step);
-      for (int i = 0; i < 200 && t_ok - t_no > 4.0 * std::numeric_limits<double>::epsilon() * t_ok;
-           ++i) {
+      for (int i = 0; i < 200 && t_ok - t_no > kBisectWidth * t_ok; ++i) {
         const double mid = 0.5 * (t_no + t_ok);
         (meet(mid) ? t_ok : t_no) = mid;
       }

@@ -243,7 +243,7 @@ TEST_CASE("time-optimal from random moving states: never slower than the manual,
             Result::ok);
     REQUIRE(ncsim::axes::plan_position(start, PositionTarget{dist, v_end}, d, fast,
                                        ProfileRule::time_optimal) == Result::ok);
-    // --- ptp-limits: a start outside the limits (or forced beyond V by its release) is first
+    // A start outside the limits (or forced beyond V by its release) is first
     // brought inside as fast as possible, which can cost total time (profile_outside_test.cpp).
     if (!ncsim::axes::detail::outside_limits(start, d)) {
       REQUIRE(fast.duration() <= manual.duration() * (1.0 + 1e-9));
@@ -359,7 +359,7 @@ TEST_CASE("time-optimal from random starts moving away keeps the path limits A-/
                                        ProfileRule::time_optimal) == Result::ok);
     REQUIRE(ncsim::axes::plan_position(start, PositionTarget{dist, v_end}, d, manual) ==
             Result::ok);
-    // --- ptp-limits: as above, only starts inside the limits.
+    // As above, only starts inside the limits.
     if (!ncsim::axes::detail::outside_limits(start, d)) {
       REQUIRE(fast.duration() <= manual.duration() * (1.0 + 1e-9));
     }

@@ -28,12 +28,12 @@
 #include <limits>
 
 #include "axes/profile_builder.hpp"
+#include "core/tolerance.hpp"
 
 namespace ncsim::axes::detail {
 
 namespace {
 
-constexpr double kTol = 1e-12;  // relative: a state on a limit is inside
 constexpr double kForever = std::numeric_limits<double>::infinity();
 
 double release_velocity(double v, double a, double j) noexcept {
@@ -45,7 +45,7 @@ double release_velocity(double v, double a, double j) noexcept {
 double falling_crossing(double v, double a, double jr, double level, double t_max) noexcept {
   double best = -1.0;
   const auto take = [&](double t) {
-    const bool falling = a + jr * t <= kTol * (std::abs(a) + std::abs(jr * t));
+    const bool falling = a + jr * t <= kRelRounding * (std::abs(a) + std::abs(jr * t));
     if (t > 0.0 && t <= t_max && falling && (best < 0.0 || t < best)) best = t;
   };
   const double c = v - level;
@@ -54,7 +54,8 @@ double falling_crossing(double v, double a, double jr, double level, double t_ma
     return best;
   }
   double disc = a * a - 2.0 * jr * c;
-  if (disc < 0.0 && disc >= -kTol * (a * a + std::abs(2.0 * jr * c))) disc = 0.0;  // touching
+  if (disc < 0.0 && disc >= -kRelRounding * (a * a + std::abs(2.0 * jr * c)))
+    disc = 0.0;  // touching
   if (disc < 0.0) return best;
   const double sq = std::sqrt(disc);
   take((-a - sq) / jr);
@@ -67,17 +68,17 @@ double falling_crossing(double v, double a, double jr, double level, double t_ma
 bool crossing_excess(double v, double a, const Dynamics& dyn) noexcept {
   if (!(v > 0.0 && a < 0.0) || release_velocity(v, a, dyn.j_max) >= 0.0) return false;
   const double two_jv = 2.0 * dyn.j_max * v;  // tolerance relative to the terms' rounding
-  return a * a - two_jv > dyn.a_max * dyn.a_max + kTol * (a * a + two_jv);
+  return a * a - two_jv > dyn.a_max * dyn.a_max + kRelRounding * (a * a + two_jv);
 }
 
 }  // namespace
 
 bool outside_limits(const MotionState& s, const Dynamics& dyn) noexcept {
-  const double v_lim = dyn.v_max * (1.0 + kTol);
+  const double v_lim = dyn.v_max * (1.0 + kRelRounding);
   if (std::abs(s.v) > v_lim) return true;
   const double av = s.a * s.v;
   const double cap = av < 0.0 ? dyn.d_max : dyn.a_max;  // at v = 0 any a speeds up: A+
-  if (std::abs(s.a) > cap * (1.0 + kTol)) return true;
+  if (std::abs(s.a) > cap * (1.0 + kRelRounding)) return true;
   if (std::abs(release_velocity(s.v, s.a, dyn.j_max)) > v_lim) return true;
   return av < 0.0 && crossing_excess(std::abs(s.v), -std::abs(s.a), dyn);
 }
@@ -116,11 +117,11 @@ bool recover(const MotionState& start, const Dynamics& dyn, Recovery& out) noexc
     const double m = motion_sign(st, 1.0);
     const double v = m * st.v;
     const double a = m * st.a;
-    if (a > dyn.a_max * (1.0 + kTol)) {  // A: speeding up beyond A+
+    if (a > dyn.a_max * (1.0 + kRelRounding)) {  // A: speeding up beyond A+
       if (!push(m, -j_max, (a - dyn.a_max) / j_max)) return false;
       st.a = m * dyn.a_max;
       settle();
-    } else if (v > 0.0 && a < -dyn.d_max * (1.0 + kTol)) {  // A: braking beyond A-
+    } else if (v > 0.0 && a < -dyn.d_max * (1.0 + kRelRounding)) {  // A: braking beyond A-
       const double t_a = (-dyn.d_max - a) / j_max;
       const double disc = a * a - 2.0 * j_max * v;
       const double t_zero = disc >= 0.0 ? (-a - std::sqrt(disc)) / j_max : -1.0;
@@ -134,12 +135,12 @@ bool recover(const MotionState& start, const Dynamics& dyn, Recovery& out) noexc
         settle();
       }
     } else if (crossing_excess(v, a, dyn) &&
-               release_velocity(v, a, j_max) >= -v_max * (1.0 + kTol)) {  // C': to v = 0
+               release_velocity(v, a, j_max) >= -v_max * (1.0 + kRelRounding)) {  // C': to v = 0
       const double t_zero = (-a - std::sqrt(std::max(0.0, a * a - 2.0 * j_max * v))) / j_max;
       if (!push(m, j_max, t_zero)) return false;
       st.v = 0.0;
       settle();
-    } else if (a < 0.0 && release_velocity(v, a, j_max) < -v_max * (1.0 + kTol)) {  // C
+    } else if (a < 0.0 && release_velocity(v, a, j_max) < -v_max * (1.0 + kRelRounding)) {  // C
       const double v_release = release_velocity(v, a, j_max);
       if (!push(m, j_max, -a / j_max)) return false;
       st.v = m * v_release;
@@ -241,7 +242,7 @@ bool manual_recover(const MotionState& start, const Dynamics& dyn, Recovery& out
   const double m = motion_sign(st, 1.0);
   const double v = m * st.v;
   const double a = m * st.a;
-  if (a < 0.0 && release_velocity(v, a, j_max) < -dyn.v_max * (1.0 + kTol)) {
+  if (a < 0.0 && release_velocity(v, a, j_max) < -dyn.v_max * (1.0 + kRelRounding)) {
     // The release reverses the motion beyond -V (forced); in the frame of the release the
     // velocity change to the level V is a reduction, limited by A- (002_* 2.2: the override's
     // ramp to the new level, a = 0 on arrival). velocity_ramp's first phase is the release
@@ -254,7 +255,7 @@ bool manual_recover(const MotionState& start, const Dynamics& dyn, Recovery& out
     push(n * r.jerk[2], r.duration[2], 0.0);
     st.v = n * dyn.v_max;
     st.a = 0.0;
-  } else if (v > 0.0 && a < -dyn.d_max * (1.0 + kTol)) {
+  } else if (v > 0.0 && a < -dyn.d_max * (1.0 + kRelRounding)) {
     // Braking beyond A- that reaches v = 0 before the acceleration is back at -A-: the clamp's
     // jerk (+J) until v = 0 only. Beyond v = 0 the acceleration speeds the motion up (A+), and
     // a clamp to -A- in the old frame would brake the reversed motion with A+ (seen: 367 A-).

@@ -24,7 +24,7 @@ namespace ncsim::axes::detail {
 
 /// True when `s` lies outside the limits: |v| > V, |a| beyond A+ (speeding up, or at rest)
 /// or A- (slowing down), the release of a at full jerk ending beyond +-V, or crossing v = 0
-/// with |a| beyond A+ (relative tolerance 1e-12, so a start on a limit is inside).
+/// with |a| beyond A+ (relative tolerance kRelRounding, so a start on a limit is inside).
 bool outside_limits(const MotionState& s, const Dynamics& dyn) noexcept;
 
 /// The recovery from a start outside the limits: up to kMaxPhases constant-jerk phases.

@@ -36,6 +36,7 @@
 
 #include "audit/time.hpp"
 #include "bench/move200.hpp"
+#include "core/tolerance.hpp"
 #include "ipo/interpolator.hpp"
 #include "planner/corner.hpp"
 #include "planner/path.hpp"
@@ -63,7 +64,7 @@ void accel_interval(const Sample& p, double u, double& lo, double& hi) {
   lo = -kInf;
   hi = kInf;
   for (int i = 0; i < kAxes; ++i) {
-    if (std::abs(p.d1[i]) > 1e-12) {
+    if (std::abs(p.d1[i]) > kTiny) {
       const double b1 = (-kA - p.d2[i] * u) / p.d1[i];
       const double b2 = (kA - p.d2[i] * u) / p.d1[i];
       lo = std::max(lo, std::min(b1, b2));
@@ -110,7 +111,7 @@ Sample sample_at(const planner::PathPoint& pt, double feed) {
 double fillet_cap(const planner::AxisVec& t_in, const planner::AxisVec& t_out, double feed) {
   const double theta = planner::tangent_angle(t_in, t_out, kAxes, 0b11);
   const double alpha = std::numbers::pi - theta;
-  if (alpha <= 1e-9) return 0.0;  // reversal: no tangent blend fits
+  if (alpha <= kRelTol) return 0.0;  // reversal: no tangent blend fits
   const double radius = kBall * std::tan(alpha / 2.0);
   // Apex: tangent along t_in + t_out, normal towards the inside (t_out - t_in).
   Sample s{};

@@ -13,7 +13,7 @@ namespace ncsim::ipo {
 ChannelConfig channel_config(const machines::Machine& machine, double t_cycle) {
   ChannelConfig c;
   c.path = machine_config(machine, t_cycle);
-  // --- trafo: with a kinematic, transformed Moves are limited by the joints (program/trafo.hpp).
+  // With a kinematic, transformed Moves are limited by the joints (program/trafo.hpp).
   if (auto trafo = machine_trafo(machine, c.path)) {
     c.forward = forward_map(trafo->kinematics, trafo->xyz);
     c.path.joints = std::move(trafo->limits);
@@ -24,13 +24,13 @@ ChannelConfig channel_config(const machines::Machine& machine, double t_cycle) {
     a.name = axis.name;
     a.control = axes::make_position_control(axis);  // P-AXIS-00099, NCSIM-AXIS-023
     a.monitor = axes::make_monitor_params(axis);    // P-AXIS-00177/178/236/532, NCSIM-AXIS-024..
-    a.indp = indp_axis_config(axis);  // --- indp: G01 / G00 dynamics, soft limits, rule
+    a.indp = indp_axis_config(axis);                // G01 / G00 dynamics, soft limits, rule
     a.indp.machine_index = i;
-    a.reference_position = axis.reference_position;  // --- static-saw: G74, P-AXIS-00152
-    a.homing_velocity = axis.homing_velocity;        // --- static-saw: G74, P-AXIS-00219
+    a.reference_position = axis.reference_position;  // G74, P-AXIS-00152
+    a.homing_velocity = axis.homing_velocity;        // G74, P-AXIS-00219
     c.axes.push_back(std::move(a));
   }
-  // --- conveyor-sync: conveyor tracking (docs/conveyor.md "Synchronisation")
+  // Conveyor tracking (docs/conveyor.md "Synchronisation")
   if (machine.channel.conveyor) {
     c.conveyor = machine.channel.conveyor;
     if (const machines::AxisParams* belt = machine.conveyor_axis())

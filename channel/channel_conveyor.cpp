@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "channel/conveyor_tracking.hpp"
+#include "core/tolerance.hpp"
 #include "program/machine_data.hpp"
 #include "program/program_source.hpp"
 
@@ -49,8 +50,8 @@ ConveyorTracking::ConveyorTracking(std::optional<ConveyorSync>& sync, PathInterp
     throw std::invalid_argument("ipo::Channel: measured_value_wait_max must be > 0 s, got " +
                                 std::to_string(measured_value_wait_max_));
   // Same rounding as every wait (docs/ipo.md): the limit in whole cycles, never shorter.
-  measure_wait_cycles_max_ =
-      static_cast<std::uint64_t>(std::ceil(measured_value_wait_max_ / ipo_.t_cycle() - 1e-9));
+  measure_wait_cycles_max_ = static_cast<std::uint64_t>(
+      std::ceil(measured_value_wait_max_ / ipo_.t_cycle() - kCycleRounding));
 }
 
 bool ConveyorTracking::check_workspace(const Cycle& c) noexcept {

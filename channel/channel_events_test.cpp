@@ -99,7 +99,7 @@ TEST_CASE("#WAIT INDP stops the path at the end of the block before it, then it 
   CHECK(waited.cycles.back().x[0] == doctest::Approx(20.0).epsilon(1e-12));
 }
 
-// --- indp: INDP moves are executed now (channel/channel_indp.cpp, docs/ipo.md "INDP axes ...").
+// INDP moves are executed now (channel/channel_indp.cpp, docs/ipo.md "INDP axes ...").
 TEST_CASE("INDP_ASYN rides on the next block and runs beside the path; the end waits for it") {
   const Result plain = run("%t\nG01 X10 F3000\nX20\nM30\n");
   const Result r = run("%t\nG01 X10 F3000\nY[INDP_ASYN G01 POS5 FEED600]\nX20\nM30\n");

@@ -146,7 +146,7 @@ Adapted adapt(const char* name, const machines::Machine& m) {
 TEST_CASE(
     "a PCS1 block held for its tolerance ball keeps its own file when the next block is in a "
     "subroutine file") {
-  // --- conveyor-tail: under #TRAFO ON the adapter holds a PCS1 block that ends in a ball
+  // Under #TRAFO ON the adapter holds a PCS1 block that ends in a ball
   // (ProgramSource::ball_held_) until the next Motion is read; here that Motion is line 2 of
   // held_ball_trafo_sub.nc, called by `L` after main line 10 (N60 G261 G01). Before, the held
   // block went out with the file of the command read last: N60 was named in the subroutine
@@ -166,7 +166,7 @@ TEST_CASE(
 TEST_CASE(
     "a static unit's part held for its tolerance ball keeps its own file, in its items and "
     "in NC9100") {
-  // --- conveyor-tail: on a static unit (x_virtual) the last part of a block that ends in a
+  // On a static unit (x_virtual) the last part of a block that ends in a
   // ball waits for the next path part (ProgramSource::xv_held_), here line 2 of
   // held_ball_static_sub.nc after main line 5 (N40 G261 G01 X-100 Y-100).
   const machines::Machine& m = interp::test::machine("static_saw");

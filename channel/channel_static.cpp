@@ -14,6 +14,7 @@
 #include <cstdlib>
 
 #include "channel/conveyor_tracking.hpp"
+#include "core/tolerance.hpp"
 #include "tracking/x_virtual.hpp"
 
 namespace ncsim::ipo {
@@ -25,7 +26,7 @@ namespace {
 constexpr double kOverrideStep = 2e-4;
 /// The plan's X component may exceed the belt's by this much before the cap acts [1]: a
 /// straight block's belt feed gives exactly the belt's, to rounding.
-constexpr double kCapSlack = 1e-9;
+constexpr double kCapSlack = kRelTol;
 /// Longest look-ahead of the cap [s].
 constexpr double kLeadMax = 0.05;
 /// Share of the next cycle the cap looks ahead besides the replan's lag [1] (the cap acts on the

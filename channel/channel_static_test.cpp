@@ -141,7 +141,7 @@ TEST_CASE("x_virtual: a ball the axes cannot run at the belt's X velocity is NC9
 
 namespace {
 
-// --- static-c1: a line at -45 deg (X share 0.707) into a tangent G02 arc of R 300 that turns
+// A line at -45 deg (X share 0.707) into a tangent G02 arc of R 300 that turns
 // the path to -X (share 1), then a line on along -X: two C1 joints (the curvature jumps by
 // 1/300 mm^-1, l.441 asks for C2). The planner's C1 rule (docs/planner.md "C1") allows
 // sqrt(j_Y T / |dx''_Y|) there: 291 mm/s at the first joint (Y's jerk 200000 mm/s^3, its
@@ -198,7 +198,7 @@ TEST_CASE("x_virtual: the C1 joint check uses the run's cycle (a shorter one low
 }
 
 TEST_CASE("x_virtual: a part released early by a command that keeps the path running is joined") {
-  // --- conveyor-tail: N30 ends in a G261 ball that the tangent joint does not get (nothing to
+  // N30 ends in a G261 ball that the tangent joint does not get (nothing to
   // blend), so the part is held for it; #FLUSH CONTINUE, which does not stop the path, lets it
   // out as it is. The joint N30 -> N40 is the C1 joint of the test above (466.69 mm/s needed, 291
   // allowed). Before, the released part was not remembered for joint_belt_check: the joint

@@ -15,6 +15,7 @@
 #include <utility>
 
 #include "channel/conveyor_tracking.hpp"
+#include "core/tolerance.hpp"
 #include "tracking/sync_checks.hpp"
 
 namespace ncsim::ipo {
@@ -109,7 +110,7 @@ bool ConveyorTracking::workspace_cap(const Cycle& c) noexcept {
 // static unit's cap, channel_static.cpp). The belt's own deceleration beyond the path's d_max
 // cannot be followed: the residual the tests measure.
 void ConveyorTracking::sync_belt_cap(const Cycle& c) noexcept {
-  constexpr double kSlack = 1e-9;      // [1] a cap within this of the segment's limit is none
+  constexpr double kSlack = kRelTol;   // [1] a cap within this of the segment's limit is none
   constexpr double kLeadMax = 0.05;    // [s] longest forecast
   constexpr double kCycleShare = 0.5;  // [1] the cap acts on the whole next cycle: its middle
   if (static_unit_ || sync_->phase() != SyncPhase::tracking) return;

@@ -220,7 +220,7 @@ TEST_CASE(
   CHECK(tolerant.min_x >= -195.0);
 }
 
-// --- workspace: a belt that stops while the hold keeps the tool at the line (issue 14).
+// A belt that stops while the hold keeps the tool at the line (issue 14).
 namespace {
 
 struct BeltStop {

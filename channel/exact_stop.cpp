@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/tolerance.hpp"
+
 namespace ncsim::ipo {
 
 ExactStopWait::ExactStopWait(double wait_max, double t_cycle)
@@ -14,7 +16,7 @@ ExactStopWait::ExactStopWait(double wait_max, double t_cycle)
     throw std::invalid_argument("ipo::Channel: exact_stop_wait_max must be > 0 s, got " +
                                 std::to_string(wait_max_));
   // Same rounding as every wait (docs/ipo.md): the limit in whole cycles, never shorter.
-  wait_cycles_max_ = static_cast<std::uint64_t>(std::ceil(wait_max_ / t_cycle_ - 1e-9));
+  wait_cycles_max_ = static_cast<std::uint64_t>(std::ceil(wait_max_ / t_cycle_ - kCycleRounding));
 }
 
 void ExactStopWait::begin(const Cycle& c, std::span<const axes::Setpoint> setpoints,

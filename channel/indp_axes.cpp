@@ -11,8 +11,14 @@
 
 #include "axes/axis_config.hpp"
 #include "core/number_text.hpp"
+#include "core/tolerance.hpp"
 
 namespace ncsim::ipo {
+
+namespace {
+/// [mm/s | deg/s] the least V of a TIME= move: a level of 0 still gives a positive V.
+constexpr double kVelocityFloor = 1e-12;
+}  // namespace
 
 IndpAxisConfig indp_axis_config(const machines::AxisParams& axis) {
   const machines::Dynamics& d = axis.dynamics;
@@ -146,7 +152,7 @@ std::optional<IndpError> IndpAxes::command(std::size_t i, const IndpMove& move) 
     a.target = move.target;
     a.dynamics = d;
     a.v_level = full.v_level();
-    if (move.time) a.dynamics.v_max = std::max(a.v_level, 1e-12);  // the level TIME= chose
+    if (move.time) a.dynamics.v_max = std::max(a.v_level, kVelocityFloor);  // the level TIME= chose
     a.interruptible = move.interruptible;
     if (a.override_ == 1.0) {
       take(a, full);
@@ -208,7 +214,6 @@ bool IndpAxes::interrupt(std::size_t i) noexcept {
   return true;
 }
 
-// --- trafo-feed
 bool IndpAxes::stop(std::size_t i) noexcept {
   Axis& a = axes_[i];
   if (a.mode == Mode::idle) return false;
@@ -224,7 +229,6 @@ bool IndpAxes::stop(std::size_t i) noexcept {
   return true;
 }
 
-// --- sync-feed
 bool IndpAxes::hand_over(std::size_t i) noexcept {
   if (!interruptible(i)) return false;
   Axis& a = axes_[i];
@@ -241,7 +245,7 @@ void IndpAxes::step() noexcept {
     ++a.k;
     a.t = static_cast<double>(a.k) * t_cycle_;
     // Whole cycles, never shorter (the rounding of every wait, docs/ipo.md).
-    if (a.t < a.profile.duration() * (1.0 - 1e-12)) {
+    if (a.t < a.profile.duration() * (1.0 - kRelRounding)) {
       a.sp = a.profile.at(a.t);
       continue;
     }

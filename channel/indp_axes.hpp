@@ -111,7 +111,7 @@ class IndpAxes {
   bool interrupt(std::size_t i) noexcept;
   /// True when axis `i` runs an INTERRUPTIBLE INDP_SYN motion.
   bool interruptible(std::size_t i) const noexcept;
-  // --- trafo-feed: an error while synchronised (004 §2.3, docs/conveyor.md).
+  // An error while synchronised (004 §2.3, docs/conveyor.md).
   /// Stops the motion of axis `i`, whatever it is, on its deceleration ramp (the fastest stop
   /// with the motion's own A- and J, plan_stop); the motion counts as done where it stops.
   /// False when the axis runs none (in position).
@@ -139,7 +139,7 @@ class IndpAxes {
   }
   /// Hands axis `i` back to the path (it must be in position). Its setpoint stays as it is.
   void release(std::size_t i) noexcept { axes_[i].owned = false; }
-  // --- sync-feed: the on-the-fly change (004 l.277-279).
+  // The on-the-fly change (004 l.277-279).
   /// Ends the INTERRUPTIBLE INDP_SYN motion of axis `i` where it is, moving, and hands the axis
   /// to a motion that starts from its state (the catch-up after the next #SYNC IN). True when
   /// a motion was handed over; false (nothing changed) when the axis runs none.

@@ -287,7 +287,7 @@ TEST_CASE("seeded random INDP commands and overrides keep v, a, j within the axi
   }
 }
 
-// --- hold: NC6104 had no test (issue 14, the ids without a test)
+// NC6104 had no test (issue 14, the ids without a test)
 TEST_CASE("NC6104: an INDP motion the PTP core cannot plan names the axis and the core's id") {
   IndpAxisConfig c = axis_config("C");
   c.feed = {0.0, 0.0, 0.0, 0.0};  // unusable dynamics: the core answers NC5001

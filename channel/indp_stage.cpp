@@ -5,23 +5,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <string>
 
+#include "core/number_text.hpp"
+#include "core/tolerance.hpp"
 #include "program/program_source.hpp"
 
 namespace ncsim::ipo {
-
-namespace {
-
-std::string number(double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  return buf;
-}
-
-}  // namespace
 
 IndpStage::IndpStage(std::vector<IndpAxisConfig> axes, double t_cycle, const AxisVec& start)
     : indp_(std::move(axes), t_cycle, start) {}
@@ -57,15 +48,17 @@ bool IndpStage::step(const Cycle& c, AxisStage& axes, const Cycle*& shown,
           m.end[i] != m.start[i] || (m.arc && (m.arc->axis_1 == i || m.arc->axis_2 == i));
       if (!moved) continue;
       const double p = indp_.setpoint(i).p;
-      if (!indp_.in_position(i) || std::fabs(m.start[i] - p) > 1e-9 * std::max(1.0, std::fabs(p))) {
-        raise(error, kIndpPathId,
-              "not supported: axis " + axes.config(i).name +
-                  " programmed as a path axis while its INDP motion " +
-                  (indp_.in_position(i) ? "left it at " + number(p) + " (the block starts at " +
-                                              number(m.start[i]) + ")"
-                                        : "runs (to " + number(indp_.target(i)) + ")") +
-                  "; program #WAIT INDP before (P-CHAN-00451 implicit synchronisation)",
-              c, static_cast<int>(i));
+      if (!indp_.in_position(i) ||
+          std::fabs(m.start[i] - p) > kRelTol * std::max(1.0, std::fabs(p))) {
+        raise(
+            error, kIndpPathId,
+            "not supported: axis " + axes.config(i).name +
+                " programmed as a path axis while its INDP motion " +
+                (indp_.in_position(i) ? "left it at " + core::human(p) + " (the block starts at " +
+                                            core::human(m.start[i]) + ")"
+                                      : "runs (to " + core::human(indp_.target(i)) + ")") +
+                "; program #WAIT INDP before (P-CHAN-00451 implicit synchronisation)",
+            c, static_cast<int>(i));
         return false;
       }
       indp_.release(i);
@@ -102,7 +95,7 @@ std::optional<std::pair<const char*, std::string>> IndpStage::set_override(
     // 002_* 2.2: ignored_braking_phase / rejected_stopping keep the value for later.
     if (indp_.set_override(i, o.fraction) == axes::Result::error_invalid_input)
       return std::pair{kIndpOverrideId, "scenario axis override of " + o.axis + " = " +
-                                            number(o.fraction * 100.0) +
+                                            core::human(o.fraction * 100.0) +
                                             " % outside 0 .. 100 % (002_* 2.2)"};
     return std::nullopt;
   } catch (...) {
@@ -125,7 +118,7 @@ EventOutcome IndpStage::command(const interp::AxisCommand& c, const AxisStage& a
   // (docs/conveyor.md "With INDP axes"). An axis the belt moves would need the moving frame.
   const bool belt_moves = c.frame.space == interp::Space::pcs1 &&
                           (!sync || (sync->xyz(i) >= 0 && sync->xyz(i) < 3 &&
-                                     std::fabs(sync->frame().direction()[sync->xyz(i)]) >= 1e-12));
+                                     std::fabs(sync->frame().direction()[sync->xyz(i)]) >= kTiny));
   if (belt_moves || c.frame.kinematics)
     return ctx.fail(kNotSupportedId,
                     "not supported: INDP motion of axis " + axes.config(i).name +

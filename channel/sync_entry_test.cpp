@@ -212,7 +212,7 @@ TEST_CASE("sync_entry: the smallest of FEED_CONT, the link and the entry cap, an
   CHECK(ipo::sync_entry(50.0, minus_y, &seg, 100.0, axes, kT).v == doctest::Approx(5.0));
 }
 
-// --- trafo-feed: under #TRAFO ON it runs (channel/trafo_feed_test.cpp).
+// Under #TRAFO ON it runs (channel/trafo_feed_test.cpp).
 TEST_CASE("FEED_CONT > 0 on a static unit is NC9060 (004 l.438)") {
   SUBCASE("static processing unit (P-CHAN-00364 x_virtual): NC9060 at the #SYNC IN line") {
     for (const char* feed : {"FEED_CONT=600", "FEED_CONT_AUTO"}) {

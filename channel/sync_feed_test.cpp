@@ -327,7 +327,7 @@ TEST_CASE(
 
 TEST_CASE(
     "an override above 100 % keeps a PCS1 block at its split velocity: X stays within v_max") {
-  // --- conveyor-tail: REDUCED_ABOVE_100 raises the path above its F up to the G00 rule of the
+  // REDUCED_ABOVE_100 raises the path above its F up to the G00 rule of the
   // axes (000 l.357, l.360; ipo::raised_limits). The axes' full limits do not know the belt's
   // share of X (the split lowered only the plan), so at 150 % the block of the test above was
   // raised to X's 1000 mm/s in PCS1 and X commanded 1000 + 300 mm/s in MCS (measured before:

@@ -181,7 +181,7 @@ TEST_CASE("NC6211's overload: the belt's own jerk beyond a joint's J at a travel
   CHECK(o.tcp[0] + o.shift <= 600.0 + 1e-6);  // inside the workspace: a travel the run reaches
 }
 
-// --- trafo-pcs1: what was not reserved (docs/conveyor.md "Machining in PCS1").
+// What was not reserved (docs/conveyor.md "Machining in PCS1").
 
 namespace {
 

@@ -28,7 +28,7 @@ void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names,
     os << human(std::max(a.j_closed, a.j_diff)) << " / " << human(a.j_limit) << ' ' << u
        << "/s^3\n";
   }
-  // --- trafo: under #TRAFO ON the joints (the machine axes) are checked apart.
+  // Under #TRAFO ON the joints (the machine axes) are checked apart.
   for (std::size_t i = 0; i < v.joints.size(); ++i) {
     const ipo::AxisAudit& a = v.joints[i];
     if (a.v_closed == 0.0 && a.v_diff == 0.0) continue;  // no transformed cycle moved it
@@ -74,14 +74,14 @@ void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names,
        << " axis " << (x.axis < names.size() ? names[x.axis] : std::to_string(x.axis)) << ' '
        << ipo::quantity_name(x.quantity) << " (" << ipo::method_name(x.method) << ") "
        << num(x.value) << " > " << num(x.limit);
-    if (x.path >= 0.0)  // --- conveyor: the axis moved with the belt (audit/audit.hpp)
+    if (x.path >= 0.0)  // the axis moved with the belt (audit/audit.hpp)
       os << " (" << num(x.path) << " without the belt's share)";
     os << '\n';
   }
   if (v.violation_count > v.violations.size()) {
     os << "audit: ... " << (v.violation_count - v.violations.size()) << " more violations\n";
   }
-  if (v.belt_count > 0)  // --- conveyor: 004 l.454
+  if (v.belt_count > 0)  // the belt's own dynamics (004 l.454)
     os << "audit: " << v.belt_count
        << " of the violations are the belt's own acceleration or jerk on top of a path within "
           "the axis's limits (004 l.454: \"dynamic overshoots ... caused by fluctuations in "

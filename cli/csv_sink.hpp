@@ -1,6 +1,6 @@
 #pragma once
 // cli/csv_sink: the rows of `ncsim run`'s CSV trajectory (design.md §5), buffered, numbers by
-// std::to_chars (cli/number_format.hpp); the technology functions as `# tech` comments.
+// core::num (core/number_text.hpp); the technology functions as `# tech` comments.
 
 #include <array>
 #include <cerrno>
@@ -61,7 +61,7 @@ class CsvSink final : public ipo::Sink {
   void set_axes(const ipo::AxesState* state) { axes_state_ = state; }
   /// The channel whose conveyor display variables --detail writes (null: none). --- line
   void set_conveyor(const ipo::Channel* channel) { conveyor_ = channel; }
-  /// --- trafo: the setpoints the axes received (the joints under #TRAFO), read at each on_cycle.
+  /// The setpoints the axes received (the joints under #TRAFO), read at each on_cycle.
   void set_setpoints(const std::array<axes::Setpoint, planner::kMaxAxes>* set) { set_ = set; }
 
  private:
@@ -81,7 +81,7 @@ class CsvSink final : public ipo::Sink {
     if (!detail_) return;
     row_.v_path = c.path.v;
     row_.feed = c.feed;
-    // --- line: the conveyor display variables with synchro_lag (seed 004 §6,
+    // The conveyor display variables with synchro_lag (seed 004 §6,
     // Channel::master_display, tracking/synchro_lag.hpp)
     if (conveyor_ != nullptr) row_.master = conveyor_->master_display();
   }
@@ -143,7 +143,7 @@ class CsvSink final : public ipo::Sink {
   std::uint64_t every_;
   bool detail_;
   const ipo::AxesState* axes_state_ = nullptr;
-  const ipo::Channel* conveyor_ = nullptr;  // --- line: the channel's master_display()
+  const ipo::Channel* conveyor_ = nullptr;  // the channel's master_display()
   const std::array<axes::Setpoint, planner::kMaxAxes>* set_ = nullptr;
   std::string buf_;
   Row row_;               // the last cycle's values

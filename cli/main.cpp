@@ -21,8 +21,8 @@
 #include "cli/commands.hpp"
 #include "cli/golden_command.hpp"
 #include "cli/run_commands.hpp"
-#include "cli/sweep_command.hpp"  // --- line
-#include "cli/tune_delay.hpp"     // --- line
+#include "cli/sweep_command.hpp"
+#include "cli/tune_delay.hpp"
 #include "core/output_file.hpp"
 
 namespace {
@@ -73,8 +73,8 @@ int main(int argc, char** argv) {
 
   ncsim::cli::RunCommands run_commands(app);             // binds its options: not const, not moved
   ncsim::cli::GoldenCommands golden_commands(app);       // likewise
-  ncsim::cli::SweepCommand sweep_command(app);           // --- line: likewise
-  ncsim::cli::TuneDelayCommand tune_delay_command(app);  // --- line: likewise
+  ncsim::cli::SweepCommand sweep_command(app);           // likewise
+  ncsim::cli::TuneDelayCommand tune_delay_command(app);  // likewise
 
   // A first word that is no option and no subcommand is named (CLI11 would only say that a
   // subcommand is required).

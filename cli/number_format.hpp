@@ -1,8 +1,8 @@
 #pragma once
-// cli/number_format: the command's numbers are core/number_format's (num, json_num, human,
+// cli/number_format: the command's numbers are core/number_text's (num, json_num, human,
 // seconds), named here for the cli's files.
 
-#include "core/number_format.hpp"
+#include "core/number_text.hpp"
 
 namespace ncsim::cli {
 

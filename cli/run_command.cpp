@@ -15,9 +15,9 @@
 #include "cli/run_commands.hpp"
 #include "cli/run_progress.hpp"
 #include "core/output_file.hpp"
-#include "program/trafo.hpp"    // --- trafo-jerk
-#include "report/html.hpp"      // --- report:
-#include "report/recorder.hpp"  // --- report:
+#include "program/trafo.hpp"
+#include "report/html.hpp"
+#include "report/recorder.hpp"
 #include "runner/run.hpp"
 #include "runner/texts.hpp"
 
@@ -31,8 +31,8 @@ namespace {
 struct Outputs {
   bool to_stdout = false;
   std::optional<core::OutputFile> csv_file;
-  std::optional<core::OutputFile> page_file;  // --- report:
-  std::FILE* f = nullptr;                     ///< where the CSV goes (null: no CSV)
+  std::optional<core::OutputFile> page_file;
+  std::FILE* f = nullptr;  ///< where the CSV goes (null: no CSV)
 };
 
 // Opens the outputs of `options`; the exit status (reported on `err`) when one cannot be.
@@ -64,14 +64,14 @@ std::optional<int> open_outputs(const RunOptions& options, Outputs& o, std::ostr
   return std::nullopt;
 }
 
-// --- report: the page's recorder, sized from the run's configuration before the channel.
+// The page's recorder, sized from the run's configuration before the channel.
 std::unique_ptr<report::Recorder> make_recorder(const runner::Run& run,
                                                 const std::vector<std::string>& names) {
   const ipo::ChannelConfig& cfg = run.config();
   auto recorder = std::make_unique<report::Recorder>(names, cfg.path.axes, cfg.path.channel.t_cycle,
                                                      cfg.path.start);
   recorder->set_limits(cfg);
-  // --- trafo-jerk: on a kinematic machine the MCS toolpath before #TRAFO ON is the joints' TCP.
+  // On a kinematic machine the MCS toolpath before #TRAFO ON is the joints' TCP.
   if (cfg.path.joints) {
     if (const auto trafo = ipo::machine_trafo(run.loaded().machine, cfg.path))
       recorder->set_forward(ipo::forward_map(trafo->kinematics, trafo->xyz));
@@ -113,13 +113,13 @@ void wire_sinks(const RunOptions& options, const runner::Run& run, std::string h
   if (options.detail && run.loaded().port != nullptr && channel.conveyor_sync() != nullptr) {
     head +=
         ",current_pos_master,current_v_master,current_a_master,pos_master_comp,v_master_comp,"
-        "a_master_comp,synchro_lag";  // --- line: synchro_lag
+        "a_master_comp,synchro_lag";  // synchro_lag
     csv.set_conveyor(&channel);
   }
   head += '\n';
   csv.text(head);
   csv.set_axes(&channel.axes());
-  if (recorder) recorder->set_axes(&channel.axes());  // --- report:
+  if (recorder) recorder->set_axes(&channel.axes());
   csv.set_setpoints(&channel.setpoints());
 }
 
@@ -132,10 +132,10 @@ ipo::Status run_cycles(runner::Run& run, CsvSink& csv, report::Recorder* recorde
   while ((s = run.step()) == ipo::Status::running && !csv.failed()) {
     if (recorder && channel.transformed()) recorder->on_joints(channel.cycle(), channel.joints());
     progress.update(channel.cycle().t, channel.cycle().line);
-    write_tech(channel, csv);  // --- indp
+    write_tech(channel, csv);
   }
   csv.write_last();          // --every N: the run's last cycle, whatever its index
-  write_tech(channel, csv);  // --- indp: those of the program's final wait
+  write_tech(channel, csv);  // those of the program's final wait
   progress.finish();
   return s;
 }
@@ -147,7 +147,7 @@ std::optional<int> close_csv(runner::Run& run, ipo::Status s, runner::Ending& en
   const ipo::Channel& channel = run.channel();
   if (end.failed) {
     csv.text("# error: " + runner::first_line(end.error_text) + "\n");
-    // --- workspace: an error while synchronised: the motion after it (004 §2.3)
+    // An error while synchronised: the motion after it (004 §2.3)
     if (const std::string note = channel.after_error_note(); !note.empty()) {
       csv.text("# after the error: " + note + "\n");
       end.error_text += "ncsim: note: " + note + "\n";
@@ -177,7 +177,7 @@ std::optional<int> close_csv(runner::Run& run, ipo::Status s, runner::Ending& en
   return std::nullopt;
 }
 
-// --- report: the page, also after a run-time error (it shows it); the exit status (reported on
+// The page, also after a run-time error (it shows it); the exit status (reported on
 // `err`) when it cannot be written.
 std::optional<int> write_page(const RunOptions& options, const runner::Run& run,
                               const runner::Ending& end, report::Recorder& recorder, Outputs& o,
@@ -214,7 +214,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   runner::Run run(std::move(std::get<std::unique_ptr<runner::Loaded>>(loaded)), spec);
   const std::vector<std::string> names = runner::axis_names(run.loaded().machine);
   CsvSink csv(o.f, names.size(), options.every, options.detail);
-  std::unique_ptr<report::Recorder> recorder;  // --- report: the same joints and cycles
+  std::unique_ptr<report::Recorder> recorder;  // the same joints and cycles
   if (!options.report.empty()) recorder = make_recorder(run, names);
   std::vector<ipo::Sink*> sinks;
   if (options.csv) sinks.push_back(&csv);

@@ -26,7 +26,6 @@ runner::RunSpec line_spec(const ProgramOptions& program, std::optional<std::uint
   return spec;
 }
 
-// --- report:
 int run_report(const ReportOptions& options, std::ostream& out, std::ostream& err) {
   RunOptions run;
   run.program = options.program;
@@ -100,11 +99,9 @@ RunCommands::RunCommands(CLI::App& app) {
       "--detail", run_.detail,
       "Add each axis's v and a, the path velocity, the programmed feed and each axis's "
       "following error");
-  run_cmd_->add_option(
-      "--report", run_.report,
-      "Also write the HTML run report of the same pass (docs/report.md)");  // --- report:
+  run_cmd_->add_option("--report", run_.report,
+                       "Also write the HTML run report of the same pass (docs/report.md)");
 
-  // --- report:
   report_cmd_ = app.add_subcommand(
       "report", "Run on the path interpolator and write the HTML run report (docs/report.md)");
   add_run_program_options(*report_cmd_, report_.program);
@@ -115,7 +112,7 @@ RunCommands::RunCommands(CLI::App& app) {
 std::optional<int> RunCommands::dispatch(std::ostream& out, std::ostream& err) const {
   if (time_cmd_->parsed()) return run_time(time_, out, err);
   if (run_cmd_->parsed()) return run_run(run_, out, err);
-  if (report_cmd_->parsed()) return run_report(report_, out, err);  // --- report:
+  if (report_cmd_->parsed()) return run_report(report_, out, err);
   return std::nullopt;
 }
 

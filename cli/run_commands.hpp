@@ -52,12 +52,12 @@ struct RunOptions {
   bool audit_steps = false;  ///< --audit-steps: --audit, every documented step listed
   bool detail = false;  ///< --detail: per-axis v and a, path velocity, programmed feed, per-axis
                         ///< following error (`<axis>.ferr`, mm | deg)
-  // --- report: the HTML run report of the same pass (docs/report.md)
+  // The HTML run report of the same pass (docs/report.md)
   std::string report;  ///< --report FILE: also write the report page ("" none)
   bool csv = true;     ///< false for `ncsim report`: no CSV at all
 };
 
-// --- report: `ncsim report PROG.nc -o FILE` (docs/report.md)
+// `ncsim report PROG.nc -o FILE` (docs/report.md)
 struct ReportOptions {
   ProgramOptions program;
   std::string output = "report.html";  ///< -o: the page
@@ -101,10 +101,10 @@ class RunCommands {
  private:
   TimeOptions time_;
   RunOptions run_;
-  ReportOptions report_;  // --- report:
+  ReportOptions report_;
   CLI::App* time_cmd_ = nullptr;
   CLI::App* run_cmd_ = nullptr;
-  CLI::App* report_cmd_ = nullptr;  // --- report:
+  CLI::App* report_cmd_ = nullptr;
 };
 
 }  // namespace ncsim::cli

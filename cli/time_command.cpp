@@ -74,7 +74,7 @@ class BlockPrinter {
  private:
   void json(const ipo::BlockTime& b) {
     out_ << (first_ ? "" : ",") << "{\"line\":" << b.line;
-    if (b.file != 0) {  // --- planner: a block of a subroutine file
+    if (b.file != 0) {  // A block of a subroutine file
       out_ << ",\"file\":";
       json_string(out_, interp_.file_name(b.file));
     }
@@ -111,7 +111,7 @@ bool print_time_total(const TimeOptions& options, runner::Run& run, const runner
   const ipo::TimeResult r = run.time_result();
   const runner::Loaded& in = run.loaded();
   const auto& stop = run.channel().scenario_stop();
-  bool spooled = true;  // --- line: the workpiece rows were copied out
+  bool spooled = true;  // the workpiece rows were copied out
   const auto workpieces = [&] {
     if (const auto summary = run.workpiece_summary()) spooled = rows->finish(*summary, out);
   };
@@ -126,7 +126,7 @@ bool print_time_total(const TimeOptions& options, runner::Run& run, const runner
         << ",\"distance_mm\":" << json_num(r.distance) << ",\"lost_s\":" << json_num(r.lost)
         << ",\"split_s\":";
     json_split(out, r.split);
-    workpieces();  // --- line: before "stop"
+    workpieces();  // before "stop"
     out << ",\"stop\":";
     json_string(out, end.stop);
     out << "}\n";
@@ -141,7 +141,7 @@ bool print_time_total(const TimeOptions& options, runner::Run& run, const runner
   // Under a scenario: the time lost to override and holds (docs/ipo.md "Time lost").
   if (run.plays()) out << "; lost to override and holds " << human(r.lost) << " s";
   out << '\n';
-  workpieces();  // --- line
+  workpieces();
   if (stop)
     out << "stop: " << scenario::to_string(*stop) << " (" << runner::stop_source(*in.scenario)
         << ") at " << seconds(r.total) << " s\n";
@@ -163,7 +163,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
   // pass): the same cycles, so the total equals run's last t to the cycle.
   run.start();
   run.count_time(BlockPrinter(options, run.interpreter(), out));
-  // --- line: the time per workpiece on a channel that tracks a conveyor (cli/workpiece_report)
+  // The time per workpiece on a channel that tracks a conveyor (cli/workpiece_report)
   std::optional<WorkpieceReport> rows;
   if (run.tracks_conveyor()) {
     try {
@@ -179,7 +179,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
       [&progress](const ipo::Channel& ch) { progress.update(ch.cycle().t, ch.cycle().line); });
   progress.finish();
   const runner::Ending end = run.ending(status);
-  if (!print_time_total(options, run, end, rows, out)) {  // --- line
+  if (!print_time_total(options, run, end, rows, out)) {
     err << "ncsim: error: cannot read back the workpiece rows' temporary file\n";
     return kExitUsage;
   }

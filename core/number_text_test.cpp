@@ -3,7 +3,9 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <random>
 
 using ncsim::core::micro_text;
 using ncsim::core::number_text;
@@ -41,4 +43,49 @@ TEST_CASE("micro_text: to the microsecond, no trailing zeros, never -0") {
   CHECK(micro_text(-4e-7) == "0");
   CHECK(micro_text(-1.25) == "-1.25");
   CHECK(micro_text(1e300) == number_text(1e300));
+}
+
+TEST_CASE("human and significant_text are printf's %g, locale-independent") {
+  using ncsim::core::human;
+  using ncsim::core::significant_text;
+  CHECK(human(3000.0000000000027) == "3000");
+  CHECK(human(0.14200000000000002) == "0.142");
+  CHECK(human(1e-5) == "1e-05");
+  CHECK(significant_text(2.0 / 3.0, 7) == "0.6666667");
+  std::mt19937_64 rng(35);
+  std::uniform_real_distribution<double> mantissa(-10.0, 10.0);
+  std::uniform_int_distribution<int> exponent(-12, 12);
+  for (int i = 0; i < 1000; ++i) {
+    const double v = mantissa(rng) * std::pow(10.0, exponent(rng));
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    CHECK(human(v) == buf);
+    std::snprintf(buf, sizeof buf, "%.7g", v);
+    CHECK(significant_text(v, 7) == buf);
+  }
+}
+
+TEST_CASE("json_num writes null where JSON has no number") {
+  using ncsim::core::json_num;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  CHECK(json_num(0.1) == "0.1");
+  CHECK(json_num(nan) == "null");
+  CHECK(json_num(-inf) == "null");
+  CHECK(json_num(2.0 / 3.0, 7) == "0.6666667");
+  CHECK(json_num(inf, 7) == "null");
+}
+
+TEST_CASE("fixed_text is exact in fixed notation; decimals_text rounds and has no -0") {
+  using ncsim::core::decimals_text;
+  using ncsim::core::fixed_text;
+  CHECK(fixed_text(0.0001) == "0.0001");
+  CHECK(fixed_text(2.5) == "2.5");
+  CHECK(fixed_text(1e20) == "100000000000000000000");
+  CHECK(decimals_text(1.23456, 4) == "1.2346");
+  CHECK(decimals_text(-2.0, 4) == "-2.0000");
+  CHECK(decimals_text(-0.0, 4) == "0.0000");
+  CHECK(decimals_text(-0.00001, 4) == "0.0000");
+  CHECK(decimals_text(-0.00005, 4) == "-0.0001");
+  CHECK(decimals_text(std::numeric_limits<double>::max(), 4).size() == 309 + 5);
 }

@@ -18,7 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// --- signal cleanup. The handler may only use async-signal-safe calls and state that is
+// Signal cleanup. The handler may only use async-signal-safe calls and state that is
 // complete whenever it reads it: a slot's path is written before its state becomes kArmed and
 // is not changed while armed. This is process state by nature (a signal handler has no other),
 // kept to this file.

@@ -11,19 +11,14 @@
 #include <cmath>
 #include <deque>
 #include <istream>
-#include <sstream>
 
+#include "core/number_text.hpp"
 #include "golden/golden.hpp"
 
 namespace ncsim::golden {
 namespace {
 
-std::string num(double v) {
-  std::ostringstream os;
-  os.precision(6);
-  os << v;
-  return os.str();
-}
+using core::human;
 
 std::string outcome_text(int status, const std::optional<RunError>& e) {
   std::string s = "status " + std::to_string(status);
@@ -253,9 +248,9 @@ Comparison compare(RunCsv& csv, const Outcome& outcome, std::istream& positions,
           d.size = std::abs(row.values[worst] - gpos.row.values[worst]);
           d.tolerance = tol[worst];
           d.file_line = gpos.file_line;
-          d.what = d.axis + " is " + num(row.values[worst]) + " in the run, " +
-                   num(gpos.row.values[worst]) + " in the golden: off by " + num(d.size) +
-                   " (tolerance " + num(d.tolerance) + ")";
+          d.what = d.axis + " is " + human(row.values[worst]) + " in the run, " +
+                   human(gpos.row.values[worst]) + " in the golden: off by " + human(d.size) +
+                   " (tolerance " + human(d.tolerance) + ")";
           out.add(std::move(d));
         }
         gpos_ok = gp.next(gpos);

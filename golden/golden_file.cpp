@@ -2,7 +2,6 @@
 // (golden.hpp; the format is specified in docs/golden.md).
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <istream>
@@ -23,13 +22,6 @@ using text::parse_double;
 using text::parse_u64;
 using text::trim;
 using text::words;
-
-// Shortest round-trip text in fixed notation ("0.0001", "2.5").
-std::string tolerance_text(double v) {
-  std::array<char, 400> buf{};
-  const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v, std::chars_format::fixed);
-  return std::string(buf.data(), r.ptr);
-}
 
 void write_row(std::ostream& out, const Row& row, bool block_end, std::uint64_t cycle_us) {
   std::string s;
@@ -78,7 +70,7 @@ Summary write_golden(RunCsv& csv, const Outcome& outcome, const Settings& settin
     out << ' ' << c;
   out << "\ntolerance";
   for (const std::string& c : csv.columns())
-    out << ' ' << c << '=' << tolerance_text(settings.tolerance_for(c));
+    out << ' ' << c << '=' << core::fixed_text(settings.tolerance_for(c));
   out << '\n';
 
   Summary sum;

@@ -10,6 +10,9 @@
 namespace ncsim::golden {
 namespace {
 
+/// A cycle [us] or a time [cycles] of the CSV this close to a whole number is that number.
+constexpr double kWholeNumber = 1e-6;
+
 using text::parse_double;
 using text::parse_u64;
 using text::trim;
@@ -103,7 +106,7 @@ RunCsv::RunCsv(std::istream& in) : in_(in) {
           fail(csv_line_, "bad cycle '" + std::string(*c) + "'");
         const double us = cycle_s_ * 1e6;
         cycle_us_ = static_cast<std::uint64_t>(std::llround(us));
-        if (cycle_us_ == 0 || std::abs(us - static_cast<double>(cycle_us_)) > 1e-6)
+        if (cycle_us_ == 0 || std::abs(us - static_cast<double>(cycle_us_)) > kWholeNumber)
           fail(csv_line_, "the cycle " + std::string(*c) + " is not a whole microsecond");
       }
       continue;
@@ -150,7 +153,7 @@ bool RunCsv::next(Row& row) {
     if (!parse_double(field(), t) || t < 0.0) fail(csv_line_, "bad time");
     const double k = t * 1e6 / static_cast<double>(cycle_us_);
     row.cycle = static_cast<std::uint64_t>(std::llround(k));
-    if (std::abs(k - static_cast<double>(row.cycle)) > 1e-6)
+    if (std::abs(k - static_cast<double>(row.cycle)) > kWholeNumber)
       fail(csv_line_, "time " + std::string(s.substr(0, s.find(','))) + " is not a whole cycle");
     if (any_row_ && row.cycle <= last_cycle_) fail(csv_line_, "cycles out of order");
     last_cycle_ = row.cycle;

@@ -113,7 +113,6 @@ struct ExprNode {
   NodeIndex next = kNoNode;  ///< next argument / next subscript
 };
 
-// ---------------------------------------------------------------------------------------------
 // Words
 
 enum class WordKind : std::uint8_t {
@@ -152,7 +151,6 @@ struct Word {
   std::string_view text;            ///< macro_def: replacement text (raw, escapes kept)
 };
 
-// ---------------------------------------------------------------------------------------------
 // Bracket lists (# commands, axis-bracket commands, L CYCLE)
 
 enum class ItemKind : std::uint8_t {
@@ -206,7 +204,6 @@ enum class TableId : std::uint8_t {
   scale,         ///< #SCALE [ON] X2 Y0.5
 };
 
-// ---------------------------------------------------------------------------------------------
 // Axis-bracket commands and calls
 
 enum class AxisCommandKind : std::uint8_t {
@@ -246,7 +243,6 @@ struct Call {
   std::uint32_t item_count = 0;
 };
 
-// ---------------------------------------------------------------------------------------------
 // Block bodies
 
 struct Empty {};
@@ -391,8 +387,6 @@ struct Declaration {
 struct Words {};  ///< the body is the word list in Block::words (plus calls/axis commands)
 
 using Body = std::variant<Empty, ProgramHeader, Control, HashCommand, Declaration, Words>;
-
-// ---------------------------------------------------------------------------------------------
 
 struct BlockNumber {
   core::SourceLoc loc;

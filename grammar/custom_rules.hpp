@@ -102,7 +102,7 @@ bool accept(Input& in, std::string_view word) {
   return true;
 }
 
-// ---- items of bracket lists -----------------------------------------------------------------
+// Items of bracket lists
 
 inline bool starts_expression(char c) {
   return lex::is_digit(c) || c == '.' || c == '+' || c == '-' || c == '[' || c == '\'';

@@ -40,7 +40,7 @@ using pegtl::star;
     static bool match(Input& in, State& st);                                                  \
   }
 
-// ---- lexical (isg-language.md §1) ------------------------------------------------------------
+// Lexical (isg-language.md §1)
 struct ident_char : sor<alnum, one<'_'>> {};
 template <typename S>
 struct kw : seq<S, not_at<ident_char>> {};
@@ -69,7 +69,7 @@ struct string_body : star<sor<seq<one<'\\'>, any>, not_one<'"', '\\'>>> {};
 struct close_quote2 : one<'"'> {};
 struct quoted : seq<one<'"'>, string_body, must<close_quote2>> {};
 
-// ---- expressions (isg-language.md §3; precedence in docs/language.md) -------------------------
+// Expressions (isg-language.md §3; precedence in docs/language.md)
 struct expression;
 struct open_bracket : one<'['> {};
 struct close_bracket : one<']'> {};
@@ -134,7 +134,7 @@ struct lor_tail : seq<ws, op_lor, ws, must<lxor>> {};
 struct lor : seq<lxor, star<lor_tail>> {};
 struct expression : lor {};
 
-// ---- words (isg-language.md §1.3, §1.9, §2, §3.7, §3.8, §4.9, §6) ---------------------------
+// Words (isg-language.md §1.3, §1.9, §2, §3.7, §3.8, §4.9, §6)
 struct sign : one<'+', '-'> {};
 struct address_operand : sor<number, hex_number, group, variable, string_operand> {};
 struct address_value : seq<opt<sign>, ws, must<address_operand>> {};
@@ -198,7 +198,7 @@ struct word_spec : sor<misplaced_statement, subroutine_call, macro_def, assignme
                        g_word, mh_word, named_axis, address_word, bare_value> {};
 NCSIM_CUSTOM_RULE(word);
 
-// ---- $ control statements (isg-language.md §4) -----------------------------------------------
+// $ control statements (isg-language.md §4)
 NCSIM_CUSTOM_RULE(goto_target);  // N10, [name], V.E.x; else error 20839
 struct goto_kw : seq<one<'$'>, ws, NCSIM_KW("GOTO")> {};
 struct goto_stmt : seq<goto_kw, ws, goto_target> {};
@@ -213,11 +213,11 @@ NCSIM_CUSTOM_RULE(control_operands);  // the operands of the keyword just read
 NCSIM_CUSTOM_RULE(statement_end);     // end of block, else 20219 / NC2008 / NC2007
 struct control_stmt : seq<control_keyword, control_operands, statement_end> {};
 
-// ---- # commands (isg-language.md §5) ---------------------------------------------------------
+// # commands (isg-language.md §5)
 NCSIM_CUSTOM_RULE(hash_command);  // '#' NAME ... (per-command grammar in block_parser.cpp)
 struct hash_stmt : seq<hash_command, statement_end> {};
 
-// ---- block ----------------------------------------------------------------------------------
+// Block
 struct skip_level : seq<one<'/'>, opt<digits>> {};
 struct block_number_expr : expression {};
 struct block_number

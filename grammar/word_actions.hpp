@@ -249,7 +249,7 @@ struct Action<rules::word_list> {
   }
 };
 
-// ---- block prefixes -------------------------------------------------------------------------
+// Block prefixes
 
 template <>
 struct Action<rules::skip_level> {
@@ -336,7 +336,7 @@ struct Action<rules::header> {
   }
 };
 
-// ---- $FOR operands --------------------------------------------------------------------------
+// $FOR operands
 
 template <>
 struct Action<rules::for_counter> {
@@ -356,7 +356,7 @@ struct Action<rules::for_value> {
   }
 };
 
-// ---- declarations ---------------------------------------------------------------------------
+// Declarations
 
 template <>
 struct Action<rules::decl_variable> {

@@ -269,7 +269,7 @@ struct CaxTrack {
   double anglimit = 0.0;  ///< [deg]
   double offset = 0.0;    ///< [deg]
   double angpos = 0.0;    ///< OFF position [deg]
-  // --- static-saw: the rest of the ON / OFF words (tracking/caxtrack.hpp, docs/caxtrack.md)
+  // The rest of the ON / OFF words (tracking/caxtrack.hpp, docs/caxtrack.md)
   bool angpos_given = false;  ///< OFF: ANGPOS was programmed (else the axis stays)
   double rotmode = 0.0;       ///< ROTMODE as programmed (0 tool, 1 workpiece)
   std::string unsupported;    ///< the first word ncsim does not run (OPTALIGN, ...), "" none

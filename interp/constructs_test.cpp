@@ -48,7 +48,7 @@ bool starts_with(const std::string& s, const std::string& prefix) {
   return s.rfind(prefix, 0) == 0;
 }
 
-// --- splines: G151 / G150 are #SPLINE ON / OFF (isg-language.md §2.4, §5.4) ---
+// Splines: G151 / G150 are #SPLINE ON / OFF (isg-language.md §2.4, §5.4)
 
 TEST_CASE("G151 ... G150 stream the points of one spline like #SPLINE ON/OFF") {
   auto r = run("%t\nG01 F600\nG151\nX1\nX2 Y1\nX3\nG150\nM30\n");
@@ -94,7 +94,7 @@ TEST_CASE("a spline while polynomial contouring is active is error 120255") {
   CHECK(run("%t\nG01 F600\nG261\nG151\nM30\n").error_id == "120255");
 }
 
-// --- subroutines ---
+// Subroutines
 
 TEST_CASE("L calls a subroutine file next to the program; data passes through P and V.P.") {
   core::SourceFile file = core::SourceFile::load(test::source_root() / "interp/testdata/l_main.nc");
@@ -145,7 +145,7 @@ TEST_CASE(
   CHECK(run("%t\nV.P.X = 1\nL V.P.X\nM30\n").error_id == "NC4303");
 }
 
-// --- variables ---
+// Variables
 
 TEST_CASE("#DELETE removes a variable: a later read is NC4011") {
   auto ok = run("%t\nV.P.A = 2\nG00 X[V.P.A]\n#DELETE V.P.A\nM30\n");
@@ -194,7 +194,7 @@ TEST_CASE("declaring a V.E. variable is error 20908") {
   CHECK(run("%t\n#VAR\nV.E.X : REAL\n#ENDVAR\nM30\n").error_id == "20908");
 }
 
-// --- conditional interpretation ---
+// Conditional interpretation
 
 TEST_CASE("#IF / #ELSE / #ENDIF interprets only the chosen branch") {
   auto r =
@@ -217,7 +217,7 @@ TEST_CASE("a false #IF without #ENDIF is NC4026") {
   CHECK(run("%t\n#IF 0\nG00 X1\nM30\n").error_id == "NC4026");
 }
 
-// --- control-flow errors ---
+// Control-flow errors
 
 TEST_CASE("$ENDWHILE without $WHILE is 20237; $CONTINUE outside a loop is 20244") {
   CHECK(run("%t\n$ENDWHILE\nM30\n").error_id == "20237");
@@ -239,7 +239,7 @@ TEST_CASE("$FOR with step 0 warns NC4024") {
   CHECK(std::find(c.warnings.begin(), c.warnings.end(), "NC4024") != c.warnings.end());
 }
 
-// --- modal state ---
+// Modal state
 
 TEST_CASE("G93 takes F as the block time in seconds; G94 returns to mm/min") {
   auto r = run("%t\nG93 G01 X10 F2.5\nG94 G01 X20 F600\nM30\n");
@@ -386,7 +386,7 @@ TEST_CASE("R below half the chord is NC4202") {
   CHECK(run("%t\nG01 F600\nG02 X20 Y0 R5\nM30\n").error_id == "NC4202");
 }
 
-// --- # commands ---
+// # commands
 
 TEST_CASE("#MACHINE DATA with AXPARAM becomes a command at its point in the stream") {
   auto r =
@@ -429,7 +429,6 @@ TEST_CASE("#CAXTRACK ON/OFF become commands; values out of range are 21135") {
   CHECK(run("%t\n#CAXTRACK ON [AX=C ANGLIMIT=400]\nM30\n", "static_saw").error_id == "21135");
 }
 
-// --- static-saw
 TEST_CASE("#CAXTRACK keeps ROTMODE, whether ANGPOS was given and the first word ncsim lacks") {
   auto c = commands(
       "%t\n#CAXTRACK ON [AX=C, ANGLIMIT 3, OFFSET 180, ROTMODE=1]\n#CAXTRACK OFF\n"

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "core/number_text.hpp"
+#include "core/tolerance.hpp"
 #include "grammar/keywords.hpp"
 
 namespace ncsim::interp {
@@ -16,9 +17,8 @@ namespace ast = grammar::ast;
 using ast::Op;
 
 constexpr double kDeg = std::numbers::pi / 180.0;
-constexpr int kMaxDepth = 400;
-constexpr double kZeroDivisor = 1e-12;  // |divisor| below this is zero (COS[90] = 6e-17)  // deeper
-                                        // than the grammar's kMaxNesting allows
+constexpr int kMaxDepth = 400;          // deeper than the grammar's kMaxNesting allows
+constexpr double kZeroDivisor = kTiny;  // |divisor| below this is zero (COS[90] = 6e-17)
 
 std::int64_t to_int(double x) {
   if (!(std::fabs(x) < 9.0e18)) return 0;
@@ -27,7 +27,7 @@ std::int64_t to_int(double x) {
 
 bool nearly_equal(double a, double b) {
   const double scale = std::max({1.0, std::fabs(a), std::fabs(b)});
-  return std::fabs(a - b) <= 1e-9 * scale;
+  return std::fabs(a - b) <= kRelTol * scale;
 }
 
 /// "V.P.TABLE[2]" -> "TABLE"; "V.G.KIN[90].PARAM[0]" -> "KIN.PARAM" (indices kept apart).
@@ -74,7 +74,8 @@ bool Evaluator::resolve(const ast::Block& block, ast::NodeIndex n, VarRef& out) 
     }
     auto v = eval(block, block.exprs[s].a);
     if (!v) return false;
-    index[index_count++] = std::trunc(*v + (*v >= 0 ? 1e-9 : -1e-9));
+    // An index within the `==` tolerance below a whole number is that number.
+    index[index_count++] = std::trunc(*v + (*v >= 0 ? kRelTol : -kRelTol));
   }
   out.cls = node.var_class;
   out.index = index;
@@ -298,12 +299,12 @@ std::optional<double> Evaluator::call(const ast::Block& block, const ast::ExprNo
       return std::cos(x * kDeg);
     case F::tan: {
       const double c = std::cos(x * kDeg);
-      if (std::fabs(c) < 1e-12) return domain("TAN");
+      if (std::fabs(c) < kTiny) return domain("TAN");
       return std::sin(x * kDeg) / c;
     }
     case F::cot: {
       const double s = std::sin(x * kDeg);
-      if (std::fabs(s) < 1e-12) return domain("COT");
+      if (std::fabs(s) < kTiny) return domain("COT");
       return std::cos(x * kDeg) / s;
     }
     case F::asin:

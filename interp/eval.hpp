@@ -5,8 +5,9 @@
 // an EvalError with the node's position and an id.
 // Decisions (docs/interp.md "Expressions"): trigonometric functions take and give degrees; a
 // value is TRUE when |x| >= 0.5 (PROG-206901003); comparisons give 1 or 0, `==` and `!=`
-// compare with a relative tolerance of 1e-9; division by zero (also MOD 0) is error 20396
-// (DIAG-20396); domain errors (SQRT of a negative number, LN/LOG of x <= 0, ASIN/ACOS outside
+// compare with a relative tolerance of kRelTol (core/tolerance.hpp); division by zero (also MOD 0)
+// is error 20396 (DIAG-20396); domain errors (SQRT of a negative number, LN/LOG of x <= 0,
+// ASIN/ACOS outside
 // [-1, 1], TAN/COT at a pole) are NC4101; bit operations work on the values truncated to
 // 32-bit integers.
 // Invariants: evaluation never allocates for P parameters and numbers; nothing is thrown.

@@ -110,7 +110,7 @@ class Interpreter {
   /// (a program that runs endlessly, e.g. a `$WHILE 1` pick-and-place cycle); nullopt while
   /// no such repeat was seen. Without motion in between the repeat is error NC4901 instead.
   std::optional<std::uint32_t> endless_from() const;
-  // --- operator: the program's own V.E. writes (docs/scenario.md "The program's V.E. writes")
+  // The program's own V.E. writes (docs/scenario.md "The program's V.E. writes")
   /// Records the program's scalar V.E. assignments from now on (off by default).
   void record_ve_writes(bool on);
   /// The V.E. values the program assigned since the last call (the last per name, as

@@ -4,15 +4,15 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/tolerance.hpp"
 #include "interp/interpreter_impl.hpp"
 
 namespace ncsim::interp {
 namespace {
 
-// A spline vertex the planner drops as a repeat of the one before: every axis within 1e-9
-// (planner/spline.cpp kSamePoint).
+// A spline vertex the planner drops as a repeat of the one before: every axis within
+// kSamePoint (planner/spline.cpp).
 bool same_spline_point(const AxisValues& a, const AxisValues& b) {
-  constexpr double kSamePoint = 1e-9;  // [mm | deg]
   for (std::size_t i = 0; i < a.size(); ++i)
     if (std::abs(a[i] - b[i]) > kSamePoint) return false;
   return true;
@@ -150,7 +150,7 @@ std::optional<Arc> Interpreter::Impl::make_arc(const ast::Block& b, MotionKind k
     return fail_arc(b.loc, "NC4101", "circle end point too far from its start for a double");
   }
   double c1 = 0.0, c2 = 0.0;
-  const bool full = chord < 1e-9;
+  const bool full = chord < kSamePoint;
   if (radius) {
     // TC2 R programming (isg-language.md §2.2): R > 0 short arc, R < 0 long arc.
     if (full) return fail_arc(b.loc, "20034", "a full circle cannot be programmed with R");
@@ -185,7 +185,7 @@ std::optional<Arc> Interpreter::Impl::make_arc(const ast::Block& b, MotionKind k
                           " differs from the start radius " + core::number_text(r_start) +
                           " by more than P-CHAN-00059/00060 allow");
     }
-    if (r_start < 1e-9) return fail_arc(b.loc, "NC4201", "circle with radius 0");
+    if (r_start < kSamePoint) return fail_arc(b.loc, "NC4201", "circle with radius 0");
     if (!full && diff > 0.0) {  // centre correction onto the perpendicular bisector
       const double n1 = -d2 / chord, n2 = d1 / chord;
       const double m1 = (s1 + e1) / 2.0, m2 = (s2 + e2) / 2.0;

@@ -209,7 +209,7 @@ TEST_CASE("after INDP_ASYN the axis position is run-time state; INDP_SYN is not"
       "G01 Y6 F600\nM30\n");
   REQUIRE(s.error_id.empty());
   CHECK(line_at(s, 4, "BARRIER").empty());
-  // --- planner: a block that does not program X does not ask for it (P-CHAN-00451).
+  // A block that does not program X does not ask for it (P-CHAN-00451).
   CHECK(line_at(s, 6, "BARRIER").empty());
   const Motion* m = motion_at(s, 6);
   REQUIRE(m != nullptr);
@@ -217,7 +217,7 @@ TEST_CASE("after INDP_ASYN the axis position is run-time state; INDP_SYN is not"
   CHECK(line_at(s, 5, "INDP_ASYN").ends_with(" frame=MCS"));
 }
 
-// --- planner: isg-language.md 6.1, INDP_ASYN "is synchronised by #WAIT INDP or by programming
+// isg-language.md 6.1, INDP_ASYN "is synchronised by #WAIT INDP or by programming
 // the axis again as a path axis" (P-CHAN-00451, docs/ipo.md "Position barriers").
 TEST_CASE("after INDP_ASYN only a block that programs the axis asks for it, with implicit sync") {
   auto s = stream("%t\nX[INDP_ASYN POS20 FEED600]\nG01 Y6 F600\nG91 X2\nG90 G01 Y7\nY8 X30\nM30\n");

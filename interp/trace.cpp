@@ -1,9 +1,7 @@
 #include "interp/trace.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <map>
 
@@ -13,17 +11,9 @@
 namespace ncsim::interp {
 namespace {
 
-// Fixed notation of the largest double: 309 digits, sign, point and 4 decimals.
-constexpr std::size_t kFixedMax = 320;
-
+/// A trace number: fixed with 4 decimals, never "-0.0000".
 void num(std::string& out, double v) {
-  char buf[kFixedMax];
-  if (v == 0.0) v = 0.0;  // no "-0.0000"
-  auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, 4);
-  if (r.ec != std::errc{}) std::abort();  // kFixedMax holds every finite double
-  std::string_view s(buf, static_cast<std::size_t>(r.ptr - buf));
-  if (s == "-0.0000") s = "0.0000";
-  out += s;
+  out += core::decimals_text(v, 4);
 }
 
 void field(std::string& out, std::string_view name, double v) {

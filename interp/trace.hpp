@@ -2,12 +2,11 @@
 // interp/trace: the stable one-line text form of commands, and the `ncsim trace` driver.
 //
 // Inputs: Commands (and the machine for axis names). Outputs: one line per command:
-// `<line>: <KIND> <fields>`; numbers fixed with 4 decimals, locale-independent (std::to_chars);
-// axis values as NAME=value for the machine's path axes in machine order; a motion ends with
-// its frame and start point.
-// Also check_semantics(): the semantic check behind `ncsim check` (interprets the whole
-// program to its end; stops at the first error, at the first repeat of an endless program
-// with note NC4904, or after kCheckMaxCommands with warning NC4902).
+// `<line>: <KIND> <fields>`; numbers fixed with 4 decimals, locale-independent
+// (core::decimals_text); axis values as NAME=value for the machine's path axes in machine order; a
+// motion ends with its frame and start point. Also check_semantics(): the semantic check behind
+// `ncsim check` (interprets the whole program to its end; stops at the first error, at the first
+// repeat of an endless program with note NC4904, or after kCheckMaxCommands with warning NC4902).
 
 #include <array>
 #include <cstdint>

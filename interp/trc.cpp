@@ -5,12 +5,14 @@
 #include <utility>
 
 #include "core/number_text.hpp"
+#include "core/tolerance.hpp"
 
 namespace ncsim::interp::trc {
 namespace {
 
-constexpr double kEps = 1e-9;       // [mm] points closer than this are the same point
-constexpr double kParallel = 1e-9;  // |sin| of a turn below this: the elements are tangent
+constexpr double kParallel = kRelTol;  // |sin| of a turn below this: the elements are tangent
+/// |sin| of a turn and gap [mm] below which offset elements without an intersection still meet.
+constexpr double kNearlyTangent = 1e-6;
 
 Vec2 operator+(Vec2 a, Vec2 b) {
   return {a.x + b.x, a.y + b.y};
@@ -78,7 +80,7 @@ std::vector<Vec2> intersections(const Element& a, const Element& b) {
   const double r1 = radius_of(a), r2 = radius_of(b);
   const Vec2 dc = b.centre - a.centre;
   const double dist = norm(dc);
-  if (dist < kEps || dist > r1 + r2 || dist < std::fabs(r1 - r2)) return out;
+  if (dist < kSamePoint || dist > r1 + r2 || dist < std::fabs(r1 - r2)) return out;
   const double along = (dist * dist + r1 * r1 - r2 * r2) / (2.0 * dist);
   const double h = std::sqrt(std::max(0.0, r1 * r1 - along * along));
   const Vec2 e = dc * (1.0 / dist);
@@ -141,7 +143,7 @@ Join join(const Element& a, const Element& b, Vec2 corner, double d, TrcCorner m
   if (std::fabs(turn) >= kParallel && d * turn > 0.0) {  // inner: turns towards the tool
     const std::vector<Vec2> xs = intersections(a, b);
     if (xs.empty()) {
-      if (std::fabs(turn) < 1e-6 && norm(ea - sb) < 1e-6) {  // nearly tangent
+      if (std::fabs(turn) < kNearlyTangent && norm(ea - sb) < kNearlyTangent) {
         j.a_end = j.b_start = mid;
         return j;
       }
@@ -158,9 +160,9 @@ Join join(const Element& a, const Element& b, Vec2 corner, double d, TrcCorner m
   // outer corner (a reversal too): bypassed with transition elements
   j.a_end = ea;
   j.b_start = sb;
-  if (norm(ea - sb) < kEps) return j;
+  if (norm(ea - sb) < kSamePoint) return j;
   auto insert = [&j](Element e) {
-    if (e.arc || norm(e.end - e.start) >= kEps) j.inserted.push_back(e);
+    if (e.arc || norm(e.end - e.start) >= kSamePoint) j.inserted.push_back(e);
   };
   if (mode == TrcCorner::circle) {  // G26: a circle about the programmed corner
     Element arc;
@@ -204,7 +206,7 @@ Join join(const Element& a, const Element& b, Vec2 corner, double d, TrcCorner m
 }
 
 bool keeps_direction(const Element& e, Vec2 start, Vec2 end) {
-  if (!e.arc) return dot(end - start, unit(e.end - e.start)) >= -kEps;
+  if (!e.arc) return dot(end - start, unit(e.end - e.start)) >= -kSamePoint;
   const double dir = e.ccw ? 1.0 : -1.0;
   const double a0 = angle_of(e.start - e.centre), a1 = angle_of(e.end - e.centre);
   double sweep = e.full ? 2.0 * std::numbers::pi : dir * (a1 - a0);
@@ -212,10 +214,8 @@ bool keeps_direction(const Element& e, Vec2 start, Vec2 end) {
     sweep += 2.0 * std::numbers::pi;
   const double u_start = angle_pi(dir * (angle_of(start - e.centre) - a0));
   const double u_end = sweep + angle_pi(dir * (angle_of(end - e.centre) - a1));
-  return u_end - u_start >= -1e-9;
+  return u_end - u_start >= -kRelTol;  // [rad]
 }
-
-// ---------------------------------------------------------------------------------------------
 
 namespace {
 
@@ -287,7 +287,7 @@ void Compensator::emit(const Command& pattern, const Element& e, std::uint32_t l
   m.end[a2_] = e.end.y;
   if (e.arc) {
     const double r = radius_of(e);
-    const bool full = e.full && norm(e.end - e.start) < kEps;
+    const bool full = e.full && norm(e.end - e.start) < kSamePoint;
     m.arc = Arc{e.centre.x, e.centre.y, a1_, a2_, r, full};
   } else {
     m.arc.reset();
@@ -300,7 +300,7 @@ void Compensator::release(const Vec2& end, std::deque<Command>& out) {
   Element e = h.offset;
   e.start = h.start;
   e.end = end;
-  e.full = h.offset.full && norm(end - h.start) < kEps;
+  e.full = h.offset.full && norm(end - h.start) < kSamePoint;
   emit(h.command, e, h.command.line, out, false);
   for (Command& c : behind_) {
     if (auto* m = std::get_if<Motion>(&c.body)) {  // a motion out of the plane: at the end
@@ -325,7 +325,7 @@ std::optional<Error> Compensator::push(Command c, std::deque<Command>& out) {
     bool in_plane = false;
     if ((active || held_) && plane_of(*m, a1, a2)) {
       in_plane = m->arc.has_value() ||
-                 std::hypot(m->end[a1] - m->start[a1], m->end[a2] - m->start[a2]) > kEps;
+                 std::hypot(m->end[a1] - m->start[a1], m->end[a2] - m->start[a2]) > kSamePoint;
     }
     if (!held_ && !(active && in_plane)) {
       out.push_back(std::move(c));

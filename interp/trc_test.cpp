@@ -38,7 +38,7 @@ double radius(const Element& e) {
   return std::hypot(e.start.x - e.centre.x, e.start.y - e.centre.y);
 }
 
-// ---- geometry ---------------------------------------------------------------------------------
+// Geometry
 
 TEST_CASE("a line is offset to the left (G41, d > 0) and to the right (G42, d < 0)") {
   const Element l = line({0, 0}, {10, 0});
@@ -155,7 +155,7 @@ TEST_CASE("a trimmed element that runs backwards is a contour violation") {
   CHECK_FALSE(trc::keeps_direction(a, {0, 10}, {s, s}));
 }
 
-// ---- the filter in the interpreter ----------------------------------------------------------
+// The filter in the interpreter
 
 struct Path {
   std::vector<Command> motions;

@@ -93,7 +93,7 @@ Variables::Variables(PersistentVariables* persistent, std::map<std::string, doub
   locals_.emplace_back();
 }
 
-// --- operator: the program's own V.E. writes (docs/scenario.md "The program's V.E. writes")
+// The program's own V.E. writes (docs/scenario.md "The program's V.E. writes")
 void Variables::note_ve_write(const VarRef& ref) {
   if (!record_ve_ || ref.cls != VarClass::v_e || ref.index_count != 0) return;
   VarError err;

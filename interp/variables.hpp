@@ -119,7 +119,7 @@ class Variables {
 
   std::size_t p_count() const { return p_values_.size(); }
 
-  // --- operator: the program's own V.E. writes for the run time's shared store
+  // The program's own V.E. writes for the run time's shared store
   // (docs/scenario.md "The program's V.E. writes").
   /// Starts (or stops) recording the program's scalar V.E. writes; off by default.
   void record_ve_writes(bool on) { record_ve_ = on; }
@@ -156,8 +156,8 @@ class Variables {
   bool create_cycle_param_on_read_ = true;
   std::optional<double>* cycle_param(const VarRef& ref, bool create, VarError& error);
   std::map<std::string, std::string, std::less<>> macros_;
-  bool record_ve_ = false;                    // --- operator
-  std::map<std::string, double> ve_written_;  // --- operator
+  bool record_ve_ = false;
+  std::map<std::string, double> ve_written_;
 };
 
 }  // namespace ncsim::interp

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/tolerance.hpp"
 #include "planner/limits.hpp"
 #include "planner/path.hpp"
 
@@ -17,6 +18,8 @@ namespace {
 constexpr int kGrid = 24;
 /// Bisection steps after the grid (2^-50 of a grid interval).
 constexpr int kBisect = 50;
+/// Relative width [1] (at least as much absolute) at which those bisections stop.
+constexpr double kBisectWidthRel = 1e-13;
 
 /// Distance of the time-optimal change (v0, a0) -> (v1, 0).
 double ramp_distance(double v0, double a0, double v1, const PlanRequest& r) noexcept {
@@ -24,9 +27,10 @@ double ramp_distance(double v0, double a0, double v1, const PlanRequest& r) noex
   return jerk::distance(v0, a0, ramp);
 }
 
-/// The kernel's ramps agree with the lengths to rounding, not exactly (as in the look-ahead).
+/// The kernel's ramps agree with the lengths to rounding, not exactly (as in the look-ahead):
+/// relative kRelRounding, and as much in mm, so that a length of 0 has a tolerance too.
 bool within(double distance, double length) noexcept {
-  return distance <= length * (1.0 + 1e-12) + 1e-12;
+  return distance <= length * (1.0 + kRelRounding) + kRelRounding;
 }
 
 /// Lowest x in [lo, hi] with fits(x), assuming fits(hi) may or may not hold; the fitting set
@@ -47,7 +51,7 @@ bool lowest_fitting(double lo, double hi, const Fits& fits, double& out) noexcep
     }
     double bad = prev;
     double good = x;
-    for (int i = 0; i < kBisect && good - bad > 1e-13 * std::max(1.0, good); ++i) {
+    for (int i = 0; i < kBisect && good - bad > kBisectWidthRel * std::max(1.0, good); ++i) {
       const double mid = 0.5 * (bad + good);
       (fits(mid) ? good : bad) = mid;
     }
@@ -70,7 +74,7 @@ double highest_fitting(double lo, double hi, const Fits& fits) noexcept {
     }
     double good = x;
     double bad = prev;
-    for (int i = 0; i < kBisect && bad - good > 1e-13 * std::max(1.0, bad); ++i) {
+    for (int i = 0; i < kBisect && bad - good > kBisectWidthRel * std::max(1.0, bad); ++i) {
       const double mid = 0.5 * (bad + good);
       (fits(mid) ? good : bad) = mid;
     }
@@ -136,7 +140,7 @@ RaisedLimits raised_limits(const planner::PlannedSegment& entry,
   double rapid = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < n; ++i) {
     const planner::AxisLimits& ax = axes[i];
-    if (b.d1[i] > 1e-12)
+    if (b.d1[i] > kTiny)
       rapid = std::min(rapid, std::min({ax.v_rapid, ax.v_reference, ax.v_max}) / b.d1[i]);
   }
   if (!std::isfinite(rapid)) return out;
@@ -175,7 +179,7 @@ bool make_plan(const PlanRequest& r, PathPlan& out) noexcept {
   const double length = std::max(r.length, 0.0);
   // A slow-down under way must end at v >= 0 with the jerk at hand (a smaller j than the
   // plan's, above 100 %, takes longer to release it): else the path would move backwards.
-  if (a0 < 0.0 && v0 - 0.5 * a0 * a0 / r.j < -1e-12 * std::max(1.0, v0)) return false;
+  if (a0 < 0.0 && v0 - 0.5 * a0 * a0 / r.j < -kRelRounding * std::max(1.0, v0)) return false;
   // Exit: at most the 100 % plan's and what a speed-up can reach within the length.
   const double reach = jerk::reachable_velocity(v0, a0, length, r.a, r.j);
   const double exit_hi = std::max(0.0, std::min(r.exit_cap, reach));
@@ -218,7 +222,8 @@ double profile_time_at(const planner::SegmentProfile& profile, double s) noexcep
   double lo = 0.0;
   double hi = total;
   if (planner::profile_at(profile, hi).s <= s) return total;
-  for (int i = 0; i < 100 && hi - lo > 1e-12 * std::max(1e-3, hi); ++i) {
+  // Relative to the time, at least to 1 ms [s].
+  for (int i = 0; i < 100 && hi - lo > kRelRounding * std::max(1e-3, hi); ++i) {
     const double mid = 0.5 * (lo + hi);
     (planner::profile_at(profile, mid).s < s ? lo : hi) = mid;
   }

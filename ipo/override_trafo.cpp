@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/tolerance.hpp"
 #include "ipo/override.hpp"
 
 namespace ncsim::ipo {
@@ -36,7 +37,7 @@ RaisedLimits raised_limits_joints(const planner::PlannedSegment& entry,
   double rapid = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < n; ++i) {
     const planner::AxisLimits& q = joints.joints[i];
-    if (b.d1[i] > 1e-12)
+    if (b.d1[i] > kTiny)
       rapid = std::min(rapid, std::min({q.v_rapid, q.v_reference, q.v_max}) / b.d1[i]);
   }
   if (!std::isfinite(rapid)) return planned;

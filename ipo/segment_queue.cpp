@@ -9,13 +9,14 @@
 #include <utility>
 
 #include "core/limits.hpp"
+#include "core/tolerance.hpp"
 
 namespace ncsim::ipo {
 
 namespace {
 
 /// Moves shorter than this carry no path (planner/prepare.cpp drops them with the same rule).
-constexpr double kMinLength = 1e-9;  // [mm]
+constexpr double kMinLength = kSamePoint;  // [mm]
 /// Items pulled in one fill() at most: a source of endless zero-length blocks cannot hang a
 /// cycle (the cycle is reported as Activity::starved).
 constexpr std::size_t kMaxPulls = 4096;

@@ -9,15 +9,9 @@
 #include <utility>
 
 #include "core/limits.hpp"
+#include "core/tolerance.hpp"
 
 namespace ncsim::ipo {
-
-namespace {
-
-/// Tolerance of the rounding of a wait to whole cycles [cycles]: 0.1 s at 1 ms is 100 cycles.
-constexpr double kCycleRounding = 1e-9;
-
-}  // namespace
 
 Standstill::Standstill(std::vector<ExactStop> exact_stop, std::size_t axis_count, double t_cycle,
                        bool hold_exact_stop)

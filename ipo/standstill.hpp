@@ -8,8 +8,8 @@
 // Inputs: the exact-stop settings of each axis, the cycle T, Config::hold_exact_stop; the
 // dwells, waits and exact stops the interpolator reaches; the channel's release calls.
 // Outputs: standing(), the standing cycles' records (activity, line, zero motion).
-// Invariants: waits are whole cycles, rounded up (1e-9 cycles tolerance); a dwell is at most
-// core::kLongestTime; nothing here throws after construction.
+// Invariants: waits are whole cycles, rounded up (kCycleRounding, core/tolerance.hpp); a dwell is
+// at most core::kLongestTime; nothing here throws after construction.
 
 #include <cstddef>
 #include <cstdint>

@@ -33,6 +33,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/tolerance.hpp"
 #include "jerk/crossing.hpp"
 #include "jerk/jerk.hpp"
 #include "jerk/root.hpp"
@@ -42,7 +43,6 @@ namespace ncsim::jerk {
 
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
 // Cells of the grid over the dip on which the largest root is looked for (its cost: a member
 // evaluation each, only where the bounds before it leave the target within reach and the
 // fastest member beats the best time found). 8 and 16 cells missed the fastest root in some of
@@ -94,7 +94,7 @@ double member(const Frame& f, double x, const Limits& lim, DipCrossing& out) noe
   const double ease = f.b0 - x;
   out.jerk = -j;
   out.t_cruise = 0.0;
-  out.dip = ease > detail::kResidue * f.b0 ? ease / j : 0.0;
+  out.dip = ease > kResidue * f.b0 ? ease / j : 0.0;
   out.a_dip = x;
   State s = advance(State{0.0, f.u0, f.b0}, -j, out.dip);
   s.a = x;
@@ -117,11 +117,11 @@ double member(const Frame& f, double x, const Limits& lim, DipCrossing& out) noe
 // monotonically from u0 < 0 to w1 > 0 with an acceleration of at most max(A+, A-), so it
 // spends at least (w1 - u0) / a_hi of its time t on the change and covers
 //     u0 t + c <= d(x) <= w1 t - c,  c = (w1 - u0)^2 / (2 a_hi),
-// and t <= t_lo widens both sides. A margin of 1e-9 keeps rounding on the safe side.
+// and t <= t_lo widens both sides. A margin of kRelTol keeps rounding on the safe side.
 bool within_reach(const Frame& f, const Limits& lim, double d, double t_lo) noexcept {
   const double dv = f.w1 - f.u0;
   const double c = dv * dv / (2.0 * std::max(lim.a_max, lim.d_max));
-  const double margin = 1e-9 * (f.w1 - f.u0) * t_lo;
+  const double margin = kRelTol * (f.w1 - f.u0) * t_lo;
   return d <= f.w1 * t_lo - c + margin && d >= f.u0 * t_lo + c - margin;
 }
 
@@ -179,7 +179,7 @@ Status detail::dip_crossing_move_trusted(const State& start, double p1, double v
   // The two ends bound every member's velocity (the fastest from above, the slowest from below:
   // dip_cross_test.cpp), so d_lo - w1 dt <= d(x) <= d_hi + w1 dt, dt = t_lo - t_hi.
   if (!std::isnan(d_lo)) {
-    const double slack = f.w1 * (t_lo - out.time()) + 1e-9 * (f.w1 - f.u0) * t_lo;
+    const double slack = f.w1 * (t_lo - out.time()) + kRelTol * (f.w1 - f.u0) * t_lo;
     if (d > d_hi + slack || d < d_lo - slack) return Status::not_supported;
   }
   // The fastest member meeting the target is the root of d(x) = D with the largest dip
@@ -187,7 +187,7 @@ Status detail::dip_crossing_move_trusted(const State& start, double p1, double v
   // case, rises again: dip_cross_test.cpp), so the cells of a grid over [x_lo, b0] are
   // checked for a change of sign from the top down, and the first cell with one is solved.
   // A pair of roots inside one cell is not seen (a faster member missed, never an invalid one).
-  const double tol = 8.0 * kEps * std::max(std::abs(d), std::abs(d_hi));
+  const double tol = kResidue * std::max(std::abs(d), std::abs(d_hi));
   double x_top = f.b0;
   double g_top = d_hi - d;
   if (g_top == 0.0) return Status::ok;
@@ -244,7 +244,7 @@ Status dip_crossing_of_duration(const State& start, double p1, double v1, double
   if (st != Status::ok) return st;
   const double t_min = fastest.time();
   if (duration <= t_min) {
-    if (duration < t_min * (1.0 - 1e-12)) return Status::too_short;
+    if (duration < t_min * (1.0 - kRelRounding)) return Status::too_short;
     out = fastest;
     return Status::ok;
   }
@@ -258,13 +258,13 @@ Status dip_crossing_of_duration(const State& start, double p1, double v1, double
   };
   double lo = 0.0;
   double hi = duration;  // T(duration) >= duration (or no member)
-  for (int i = 0; i < 200 && hi - lo > kEps * hi; ++i) {
+  for (int i = 0; i < 200 && hi - lo > kMachineEpsilon * hi; ++i) {
     const double mid = 0.5 * (lo + hi);
     (too_long(mid) ? hi : lo) = mid;
   }
   for (const double tau : {lo, hi}) {
     if (dip_crossing_move(start, p1 - v1 * tau, v1, lim, dc) != Status::ok) continue;
-    if (std::abs(dc.time() + tau - duration) <= 1e-12 * duration) {
+    if (std::abs(dc.time() + tau - duration) <= kRelRounding * duration) {
       out = dc;
       out.t_cruise = tau;
       return Status::ok;

@@ -150,7 +150,7 @@ enum class Status : std::uint8_t {
 /// (Status::not_supported): an arrival velocity that needs a turn (the frame of travel from
 /// p0 to p1 disagrees with v1, or the start cannot stop within the distance: see
 /// reversal_of_duration). The end state is met exactly by the chain to rounding. A move whose
-/// time is not `duration` to 1e-9 relative is never answered (not_supported instead).
+/// time is not `duration` to kRelTol relative is never answered (not_supported instead).
 Status move_of_duration(const State& start, double p1, double v1, double duration,
                         const Limits& limits, Move& out) noexcept;
 
@@ -172,7 +172,7 @@ Status fastest_move(const State& start, double p1, double v1, const Limits& limi
 /// World state at the end of `move` started from `start` (closed-form chain).
 State end_state(const State& start, const Move& move) noexcept;
 
-// --- ptp additions (issue 11): two-peak velocity changes.
+// Two-peak velocity changes (issue 11).
 
 /// A velocity change (v0, a0) -> (v1, 0) whose acceleration keeps one sign and has two peaks
 /// (it does not return to 0 between them): jerk from a0 toward 0 down to a_dip, jerk to
@@ -256,7 +256,7 @@ Status dip_crossing_move(const State& start, double p1, double v1, const Limits&
 /// one's time): the change meets p1 - v1 t_cruise and the rest is cruised at v1, t_cruise found
 /// by bisection (each step the fastest member for its target). Status::too_short below the
 /// fastest time; not_supported where the family does not apply or no cruise gives the duration
-/// to 1e-12 (the members end before the target moves out of their reach).
+/// to kRelRounding (the members end before the target moves out of their reach).
 Status dip_crossing_of_duration(const State& start, double p1, double v1, double duration,
                                 const Limits& limits, DipCrossing& out) noexcept;
 
@@ -279,7 +279,7 @@ Status fastest_move_newton(const State& start, double p1, double v1, const Limit
 Status reversal_of_duration(const State& start, double p1, double v1, double duration,
                             const Limits& limits, Reversal& out) noexcept;
 
-// --- planner-c2 additions (issue 12): velocity changes that end with an acceleration.
+// Velocity changes that end with an acceleration (issue 12).
 
 /// Up to three constant-jerk phases from (v0, a0) to (v1, a1): jerk towards the extreme
 /// acceleration a_peak, [hold there], jerk to a1. The intended boundary values travel with it.

@@ -17,6 +17,7 @@
 #include <functional>
 #include <limits>
 
+#include "core/tolerance.hpp"
 #include "jerk/crossing.hpp"
 #include "jerk/jerk.hpp"
 #include "jerk/root.hpp"
@@ -25,8 +26,6 @@
 namespace ncsim::jerk {
 
 namespace {
-
-constexpr double kResidue = 8.0 * std::numeric_limits<double>::epsilon();
 
 // The move in its frame: start (v0, a0), end velocity v1 >= 0, distance d >= 0.
 struct Frame {
@@ -86,7 +85,7 @@ void level_slope(Level& lv, double vm, double j) noexcept {
   const double p1 = lv.first.a_peak;
   const double q = -lv.second.a_peak;
   const bool cross_fixed =
-      !(lv.cross.time() > 0.0) || lv.cross.a_zero < (1.0 - 1e-9) * std::sqrt(2.0 * j * vm);
+      !(lv.cross.time() > 0.0) || lv.cross.a_zero < (1.0 - kRelTol) * std::sqrt(2.0 * j * vm);
   if (!cross_fixed || p1 == 0.0 || q == 0.0) {
     lv.slope = lv.curve = std::numeric_limits<double>::quiet_NaN();
     return;
@@ -114,16 +113,16 @@ Ramp ramp_from_coast(double vm, double v1, double a_up, double a_down, double j)
   const double a_lim = s > 0.0 ? a_up : a_down;
   const double dv = s * (v1 - vm);
   const double radicand = j * dv;
-  double a_peak = radicand > detail::kResidue * std::abs(radicand) ? std::sqrt(radicand) : 0.0;
+  double a_peak = radicand > kResidue * std::abs(radicand) ? std::sqrt(radicand) : 0.0;
   double t_hold = 0.0;
   if (a_peak > a_lim) {
     a_peak = a_lim;
     const double dv_ramps = (2.0 * a_peak * a_peak) / (2.0 * j);  // [mm/s]
     const double dv_hold = dv - dv_ramps;
-    if (dv_hold > detail::kResidue * (std::abs(dv) + std::abs(dv_ramps))) t_hold = dv_hold / a_peak;
+    if (dv_hold > kResidue * (std::abs(dv) + std::abs(dv_ramps))) t_hold = dv_hold / a_peak;
   }
   out.jerk = {s * j, 0.0, -s * j};
-  out.duration = {a_peak > detail::kResidue * a_peak ? a_peak / j : 0.0, t_hold, a_peak / j};
+  out.duration = {a_peak > kResidue * a_peak ? a_peak / j : 0.0, t_hold, a_peak / j};
   out.a_peak = s * a_peak;
   return out;
 }
@@ -384,7 +383,7 @@ Status stretch_from(const Frame& f, double vm_top, double duration, const Limits
   const Level top = level(f, vm_top, lim);
   const double t_min = top.t_ramp + cruise_time(f, vm_top, top);
   if (duration <= t_min) {
-    if (duration < t_min * (1.0 - 1e-12)) return Status::too_short;
+    if (duration < t_min * (1.0 - kRelRounding)) return Status::too_short;
     set_move(out, f, vm_top, top, cruise_time(f, vm_top, top));
     return Status::ok;
   }
@@ -419,7 +418,7 @@ Status stretch_from(const Frame& f, double vm_top, double duration, const Limits
   if (!(g_lo > 0.0)) return Status::not_supported;  // slower than the family allows
   const double vm = solve_bracket(vm_top, lo, g(vm_top), g_lo, kResidue * duration, g);
   const Level lv = level(f, vm, lim);
-  if (lv.dist > f.d + 1e-9 * d_abs) return Status::not_supported;  // range not connected
+  if (lv.dist > f.d + kRelTol * d_abs) return Status::not_supported;  // range not connected
   set_move(out, f, vm, lv, cruise_time(f, vm, lv));
   return Status::ok;
 }
@@ -554,7 +553,7 @@ Status move_of_duration(const State& start, double p1, double v1, double duratio
   // release ends beyond V: a 0.178 s move answered for 599 s, jerk/move_test.cpp): such a move
   // is no move of that duration and is refused (not_supported), so that callers try the turn.
   const auto checked = [&](Status st) {
-    if (st == Status::ok && !(std::abs(out.time() - duration) <= 1e-9 * duration)) {
+    if (st == Status::ok && !(std::abs(out.time() - duration) <= kRelTol * duration)) {
       return Status::not_supported;
     }
     return st;

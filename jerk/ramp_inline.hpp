@@ -6,15 +6,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
+
+#include "core/tolerance.hpp"
 
 namespace ncsim::jerk {
 
 namespace detail {
-// A difference below kResidue times the size of its terms is a rounding residue, taken as 0
-// (docs/axes-profile.md, "Numerics": a phase of that length cannot be addressed by a time).
-inline constexpr double kResidue = 8.0 * std::numeric_limits<double>::epsilon();
-
 // Weight of the stale end of a root bracket when the same end moved twice in a row
 // (Anderson-Bjorck: 1 - g_new / g_replaced; Illinois' 1/2 where that is not in (0, 1)). It
 // converges in fewer steps than Illinois' constant 1/2 on the convex distance functions.
@@ -47,7 +44,7 @@ inline Ramp velocity_ramp(double v0, double a0, double v1, double a_up, double a
     const double dv_hold = dv - dv_ramps;
     out.jerk = {-s * j, 0.0, -s * j};
     out.duration = {(a_s - a_lim) / j,
-                    dv_hold > detail::kResidue * (std::abs(dv) + dv_ramps) ? dv_hold / a_lim : 0.0,
+                    dv_hold > kResidue * (std::abs(dv) + dv_ramps) ? dv_hold / a_lim : 0.0,
                     a_lim / j};
     out.a_peak = s * a_lim;
     return out;
@@ -56,19 +53,18 @@ inline Ramp velocity_ramp(double v0, double a0, double v1, double a_up, double a
   // the radicand is a rounding residue, whose root would be a spurious pulse of sqrt(eps)
   // relative size: taken as 0 (docs/axes-profile.md, "Numerics" 5).
   const double radicand = j * dv + 0.5 * a_s * a_s;
-  double a_peak = radicand > detail::kResidue * (std::abs(j * dv) + 0.5 * a_s * a_s)
-                      ? std::sqrt(radicand)
-                      : 0.0;
+  double a_peak =
+      radicand > kResidue * (std::abs(j * dv) + 0.5 * a_s * a_s) ? std::sqrt(radicand) : 0.0;
   double t_hold = 0.0;
   if (a_peak > a_lim) {
     a_peak = a_lim;
     const double dv_ramps = (2.0 * a_peak * a_peak - a_s * a_s) / (2.0 * j);  // [mm/s]
     const double dv_hold = dv - dv_ramps;
-    if (dv_hold > detail::kResidue * (std::abs(dv) + std::abs(dv_ramps))) t_hold = dv_hold / a_peak;
+    if (dv_hold > kResidue * (std::abs(dv) + std::abs(dv_ramps))) t_hold = dv_hold / a_peak;
   }
   const double da_up = a_peak - a_s;  // acceleration change of phase 1 [mm/s^2]
   out.jerk = {s * j, 0.0, -s * j};
-  out.duration = {da_up > detail::kResidue * a_peak ? da_up / j : 0.0, t_hold, a_peak / j};
+  out.duration = {da_up > kResidue * a_peak ? da_up / j : 0.0, t_hold, a_peak / j};
   out.a_peak = s * a_peak;
   return out;
 }

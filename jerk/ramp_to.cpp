@@ -30,7 +30,7 @@ StateRamp velocity_ramp_to(double v0, double a0, double v1, double a1, double a_
   const double dv = v1 - v0;
   const double dv_direct = 0.5 * (a0 + a1) * std::abs(a1 - a0) / j;
   const double squares = 0.5 * (a0 * a0 + a1 * a1);  // [mm^2/s^4]
-  if (std::abs(dv - dv_direct) <= detail::kResidue * (std::abs(dv) + squares / j)) {
+  if (std::abs(dv - dv_direct) <= kResidue * (std::abs(dv) + squares / j)) {
     // The single jerk from a0 to a1 (to rounding): no pulse.
     out.jerk = {a1 >= a0 ? j : -j, 0.0, 0.0};
     out.duration = {std::abs(a1 - a0) / j, 0.0, 0.0};
@@ -51,13 +51,13 @@ StateRamp velocity_ramp_to(double v0, double a0, double v1, double a1, double a_
     peak = lim;
     const double w_ramps = lim * lim - squares;  // j times the ramps' change
     const double w_hold = w - w_ramps;
-    if (w_hold > detail::kResidue * (std::abs(w) + std::abs(w_ramps))) t_hold = w_hold / (j * lim);
+    if (w_hold > kResidue * (std::abs(w) + std::abs(w_ramps))) t_hold = w_hold / (j * lim);
   }
   const double up = peak - b0;
   const double down = peak - b1;
   out.jerk = {s * j, 0.0, -s * j};
-  out.duration = {up > detail::kResidue * std::abs(peak) ? up / j : 0.0, t_hold,
-                  down > detail::kResidue * std::abs(peak) ? down / j : 0.0};
+  out.duration = {up > kResidue * std::abs(peak) ? up / j : 0.0, t_hold,
+                  down > kResidue * std::abs(peak) ? down / j : 0.0};
   out.a_peak = s * peak;
   return out;
 }

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/tolerance.hpp"
 #include "jerk/jerk.hpp"
 
 namespace ncsim::jerk {
@@ -56,13 +57,13 @@ double positive_pulse(double v0, double a0, double s, double a_lim, double j) no
     // Two upper bounds of the root besides x_hi: cube = cbrt(c), c = (s - q0) / J (drop p1 x >= 0)
     // and, when p1 > 0, lin = (s - q0) / p1 (drop J x^3); the start is max(min(x_hi, cube, lin),
     // x_lo). The cube root is the costly one and mostly not the smallest: with m = min(x_hi, lin),
-    // when c is a normal double and m^3 lies below c by a relative 1e-9 (far beyond the rounding
+    // when c is a normal double and m^3 lies below c by a relative kRelTol (far beyond the rounding
     // of m^3 and of cbrt, a few ulp), cube > m and the start is max(m, x_lo) without it: the same
     // bits (issue 12, session 26: 20 million random cases, none differs).
     const double c = std::max(0.0, s - q0) / j;
     const double lin = p1 > 0.0 ? (s - q0) / p1 : x_hi;
     const double m = std::min(x_hi, lin);
-    if (c >= std::numeric_limits<double>::min() && m * m * m < c * (1.0 - 1e-9)) {
+    if (c >= std::numeric_limits<double>::min() && m * m * m < c * (1.0 - kRelTol)) {
       x = std::max(m, x_lo);
     } else {
       x = std::max(std::min(x, std::cbrt(c)), x_lo);

@@ -25,6 +25,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/tolerance.hpp"
 #include "jerk/crossing.hpp"
 #include "jerk/jerk.hpp"
 #include "jerk/root.hpp"
@@ -33,8 +34,6 @@
 namespace ncsim::jerk {
 
 namespace {
-
-constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 // Frame change (v0, a0) -> (level > = 0, 0): through v = 0 with the path limits where the
 // frame start moves backward, else one ramp (under min(A+, A-) when it crosses v = 0).
@@ -94,7 +93,7 @@ void make_into(Reversal& r, const State& start, double g, double level, double v
 void reach_slope(const Reversal& r, double level, double j, double& slope, double& curve) noexcept {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   slope = curve = nan;
-  const double a_level = (1.0 - 1e-9) * std::sqrt(2.0 * j * level);
+  const double a_level = (1.0 - kRelTol) * std::sqrt(2.0 * j * level);
   const double p_out = r.out.first.a_peak;
   if (p_out == 0.0 || (r.out.cross.time() > 0.0 && !(r.out.cross.a_zero < a_level))) return;
   double p_back = std::abs(r.back.first.a_peak);
@@ -145,7 +144,7 @@ Status detail::reversal_move_trusted(const State& start, double p1, double v1, c
   const double u_zero = u0 + b0 * std::abs(b0) / (2.0 * lim.j_max);
   if (u0 >= 0.0 && u_zero >= 0.0) {
     const double up = ramp_distance(std::abs(v1), lim.a_max, lim.j_max);
-    if (d - up > 1e-9 * (std::abs(d) + up)) return Status::not_supported;
+    if (d - up > kRelTol * (std::abs(d) + up)) return Status::not_supported;
   }
   // h(L) = d - s(L); feasible (the turn still reaches the target) is h <= 0.
   // The turn and h of the last level evaluated are kept: the solver usually returns it. The
@@ -187,7 +186,7 @@ Status detail::reversal_move_trusted(const State& start, double p1, double v1, c
     Sample lo;
     bool lo_known = false;
     bool step_in_tol = false;  // the step from V landed on the root (within tolerance)
-    const double tol = 8.0 * kEps * std::abs(d);
+    const double tol = kResidue * std::abs(d);
     if (u_zero > 0.0 && u_zero < lim.v_max) {
       // The root step from V before the kink (issue 11, session 26, as top_level's in
       // jerk/move.cpp): the kink has no slope, so the solver's first step in [u_zero, V] is this
@@ -222,7 +221,7 @@ Status detail::reversal_move_trusted(const State& start, double p1, double v1, c
   }
   const double h_level = h_last;
   const double rest = -h_level;  // >= 0: covered by cruising backward at the level
-  out.out.t_cruise = rest > 8.0 * kEps * std::abs(d) ? rest / level : 0.0;
+  out.out.t_cruise = rest > kResidue * std::abs(d) ? rest / level : 0.0;
   return Status::ok;
 }
 
@@ -244,7 +243,7 @@ class DurationSearch {
         lim_(lim),
         g_(v1 > 0.0 ? 1.0 : -1.0),
         d_(g_ * (p1 - start.p)),
-        tol_rest_(8.0 * kEps * std::abs(d_)) {}
+        tol_rest_(kResidue * std::abs(d_)) {}
 
   /// T(level) - duration; infeasible levels count on the fast side (-duration).
   double operator()(double level, double& slope) noexcept {
@@ -266,7 +265,7 @@ class DurationSearch {
 
   /// The feasible end of the boundary between a feasible level `ok` and an infeasible `bad`.
   double boundary(double ok, double bad) noexcept {
-    for (int i = 0; i < 200 && std::abs(ok - bad) > kEps * std::max(ok, bad); ++i) {
+    for (int i = 0; i < 200 && std::abs(ok - bad) > kMachineEpsilon * std::max(ok, bad); ++i) {
       const double mid = 0.5 * (ok + bad);
       at(mid);
       (feasible_ ? ok : bad) = mid;
@@ -280,11 +279,11 @@ class DurationSearch {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     // solve_with_slope wants g rising from x_neg to x_pos in value only (either order).
     const double level =
-        detail::solve_with_slope(fast, slow, t_fast, t_slow, nan, nan, 8.0 * kEps * duration_,
+        detail::solve_with_slope(fast, slow, t_fast, t_slow, nan, nan, kResidue * duration_,
                                  [this](double x, double& slope) { return (*this)(x, slope); });
     const double t = at(level);
     hole = level;
-    return feasible_ && std::abs(t) <= 1e-12 * duration_;
+    return feasible_ && std::abs(t) <= kRelRounding * duration_;
   }
 
   /// Halves `l_low` (a level, T at it in t_low) until T(l_low) > duration or the level reaches
@@ -357,7 +356,7 @@ Status reversal_of_duration(const State& start, double p1, double v1, double dur
   if (st != Status::ok) return st;
   const double t_min = fastest.time();
   if (duration <= t_min) {
-    if (duration < t_min * (1.0 - 1e-12)) return Status::too_short;
+    if (duration < t_min * (1.0 - kRelRounding)) return Status::too_short;
     out = fastest;
     return Status::ok;
   }

@@ -19,14 +19,13 @@
 #include <cmath>
 #include <limits>
 
+#include "core/tolerance.hpp"
 #include "jerk/jerk.hpp"
 #include "jerk/trusted.hpp"
 
 namespace ncsim::jerk {
 
 namespace {
-
-constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 // The change with dip x in the frame (start v0, a0); distance by the closed-form chain.
 struct Shape {
@@ -54,8 +53,8 @@ TwoPeak make(const Shape& s, double x) noexcept {
   const double down = s.alpha0 - x;  // first phase: alpha0 -> x
   const double up = y - x;
   tp.jerk = {-s.sigma * s.j, s.sigma * s.j, 0.0, -s.sigma * s.j};
-  tp.duration = {down > 8.0 * kEps * s.alpha0 ? down / s.j : 0.0,
-                 up > 8.0 * kEps * y ? up / s.j : 0.0, h, y / s.j};
+  tp.duration = {down > kResidue * s.alpha0 ? down / s.j : 0.0, up > kResidue * y ? up / s.j : 0.0,
+                 h, y / s.j};
   tp.a_end = {s.sigma * x, s.sigma * y, s.sigma * y, 0.0};
   tp.v_end = s.v1;
   return tp;
@@ -139,8 +138,8 @@ Status detail::two_peak_move_trusted(const State& start, double p1, double v1, c
   double lo = 0.0;
   double hi = x_hi;
   int side = 0;
-  const double tol = 8.0 * kEps * d;
-  for (int i = 0; i < 200 && hi - lo > 4.0 * kEps * hi; ++i) {
+  const double tol = kResidue * d;
+  for (int i = 0; i < 200 && hi - lo > kBisectWidth * hi; ++i) {
     double x = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
     if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
     const double gx = g(x);

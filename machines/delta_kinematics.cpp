@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/number_text.hpp"
+#include "core/tolerance.hpp"
 
 namespace ncsim::machines {
 namespace {
@@ -91,7 +92,7 @@ KinResult DeltaKinematics::forward(const Eigen::Vector3d& acs) const {
   const double i = ex.dot(d13);
   const Eigen::Vector3d ey_raw = d13 - i * ex;
   const double j = ey_raw.norm();
-  if (d < 1e-12 || j < 1e-12) {
+  if (d < kZeroLength || j < kZeroLength) {
     out.error = KinError{"NC3201", "kinematic 37 (delta): drive angles " + point_text(acs) +
                                        " deg give a degenerate arm position"};
     return out;
@@ -130,7 +131,7 @@ KinResult DeltaKinematics::inverse(const Eigen::Vector3d& mcs) const {
     const double a = wx;
     const double b = -wz;
     const double r = std::hypot(a, b);
-    if (r < 1e-12 || std::abs(k) > r) {
+    if (r < kZeroLength || std::abs(k) > r) {
       out.error = KinError{"NC3201", "kinematic 37 (delta): point " + point_text(mcs) +
                                          " mm is outside the workspace (arm " +
                                          std::to_string(arm + 1) + " cannot reach it)"};

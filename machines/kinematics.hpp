@@ -7,8 +7,8 @@
 // Ids: 0 = Cartesian identity (no transformation); 37 = 3-arm delta robot (delta_kinematics.hpp,
 // parameter mapping is an ncsim decision, docs/machines.md "Kinematic 37"). Any other id gives
 // error 292005 (isg-language.md §5.9).
-// Invariants: forward(inverse(p)) == p and inverse(forward(q)) == q to 1e-9 wherever both succeed
-// (on the configured branch; see the delta header).
+// Invariants: forward(inverse(p)) == p and inverse(forward(q)) == q to kSamePoint wherever both
+// succeed (on the configured branch; see the delta header).
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>

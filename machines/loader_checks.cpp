@@ -281,7 +281,7 @@ void check_conveyor(Machine& m, const ListValues& ch, const std::vector<ListValu
                   number_text(ch.number(factor_key)) + " is above 1000 (100 %); limited to 1000");
     c.hold_limit_vel_factor = 1.0;
   }
-  // --- workspace: P-AXIS-00555 on the X axis (index 0, the 4.8.1 listing) or the conveyor axis.
+  // P-AXIS-00555 on the X axis (index 0, the 4.8.1 listing) or the conveyor axis.
   for (std::size_t i = 0; i < m.axes.size(); ++i)
     if (m.axes[i].conv_sync_optim && (i == 0 || m.axes[i].conveyor)) c.optimised_monitoring = true;
   // Workspace (seed 004 §4.4.1): configured cuboid, else the soft limits of the first three

@@ -321,7 +321,7 @@ TEST_CASE(
   CHECK(typo.diagnostics.items()[0].id == "NC3004");
   CHECK(typo.diagnostics.items()[0].loc.line == 3);
   CHECK(typo.diagnostics.items()[0].message.find("NCSIM-CHAN-630") != std::string::npos);
-  // --- conveyor: NCSIM-CHAN-640, the belt's dynamics reserve in 0.1 % (004 l.454)
+  // NCSIM-CHAN-640, the belt's dynamics reserve in 0.1 % (004 l.454)
   REQUIRE(plain.machine->channel.conveyor.has_value());
   CHECK(plain.machine->channel.conveyor->dynamics_reserve == 0.0);
   const LoadResult reserve = load_with("conveyor_sync.ncsim_dynamics_reserve 15");

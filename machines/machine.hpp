@@ -122,7 +122,7 @@ struct AxisParams {
   Dynamics dynamics;
   Monitoring monitoring;
   ControlLoop control;
-  // --- static-saw: G74 homing (docs/homing.md)
+  // G74 homing (docs/homing.md)
   double reference_position = 0.0;  ///< getriebe[0].pos_refpkt P-AXIS-00152 [mm | deg]
   double homing_velocity = 83.333;  ///< getriebe[0].vb_refmax P-AXIS-00219 [mm/s | deg/s]
   std::optional<ConveyorAxisParams> conveyor;  ///< set on the conveyor axis only
@@ -165,7 +165,7 @@ struct ConveyorSyncChannel {
   /// P-CHAN-00859..00864; when not configured: soft limits of the first three axes (§4.4.1).
   Workspace workspace;
   bool workspace_configured = false;  ///< true when any of 00859..00864 was given
-  /// --- workspace: P-AXIS-00555 = 1 on the X axis (axis index 0, 4.8.1 l.798) or on the
+  /// P-AXIS-00555 = 1 on the X axis (axis index 0, 4.8.1 l.798) or on the
   /// conveyor axis (l.347): the optimised hold method (docs/conveyor.md)
   bool optimised_monitoring = false;
 

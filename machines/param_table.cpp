@@ -9,7 +9,8 @@ constexpr double kSgn32Min = -2147483648.0;
 constexpr double kSgn32Max = 2147483647.0;
 constexpr double kUns16Max = 65535.0;
 constexpr double kUns32Max = 4294967295.0;
-constexpr double kRealMax = 1.0e300;  // MAX(REAL64) in practice; keeps messages readable
+constexpr double kRealMax = 1.0e300;   // MAX(REAL64) in practice; keeps messages readable
+constexpr double kAboveZero = 1.0e-9;  // least value of a real that must be > 0 (a window, a feed)
 
 // Conversions (docs/machines.md, "Units"): 0.1 um -> mm and 0.0001 deg -> deg share 1e-4;
 // 0.1 mdeg is 1e-4 deg too (seed 004 §5.2.2 P-CHAN-00371); us -> s; 0.1 % -> fraction.
@@ -28,7 +29,7 @@ constexpr Need kDerived = Need::derived;
 
 // clang-format off
 constexpr std::array kTable = {
-  // ---- axis list: head and characteristics ------------------------------------------------
+  // Axis list: head and characteristics
   ParamSpec{"NCSIM-AXIS-001", "kopf.log_achs_name", A, ValueType::word, 0, 0, "", 1, "", "", kMust, -1, -1, "004 §4.8.1 (listing)"},
   ParamSpec{"NCSIM-AXIS-002", "kopf.achs_nr", A, ValueType::uns16, 1, kUns16Max, "", 1, "", "", kMust, -1, -1, "004 §4.8.1 (listing)"},
   ParamSpec{"NCSIM-AXIS-003", "kenngr.achs_typ", A, ValueType::uns16, 1, 4, "1 T, 2 R, 4 S", 1, "", "1", kOpt, -1, -1, "004 §4.8.1 (type == 4 spindle)"},
@@ -41,7 +42,7 @@ constexpr std::array kTable = {
   ParamSpec{"P-AXIS-00517", "kenngr.measure.input", A, ValueType::uns16, 0, 255, "", 1, "", "1", kOpt, -1, -1, "TF5200 P-AXIS-00517 (UNS08; default: ncsim, the seeds' Channel=1)"},
   ParamSpec{"P-AXIS-00518", "kenngr.measure.edge", A, ValueType::word, 0, 0, "POS | NEG", 1, "", "POS", kOpt, -1, -1, "TF5200 P-AXIS-00518 (blank: P-AXIS-00113 = 0, positive)"},
   ParamSpec{"NCSIM-AXIS-004", "kenngr.messachse", A, ValueType::boolean, 0, 1, "", 1, "", "0", kOpt, -1, -1, "004 §4.9.1 (listing)"},
-  // ---- axis list: conveyor axis (seed 004 §5.2.1) -----------------------------------------
+  // Axis list: conveyor axis (seed 004 §5.2.1)
   ParamSpec{"P-AXIS-00620", "conv_sync.enable_filter", A, ValueType::boolean, 0, 1, "", 1, "", "0", kOpt, -1, -1, "004 §5.2.1"},
   ParamSpec{"NCSIM-AXIS-005", "conv_sync.type_pos_filter", A, ValueType::uns32, 0, 1, "0 FIR, 1 average", 1, "", "0", kOpt, -1, -1, "004 §4.8.1 (listing)"},
   ParamSpec{"NCSIM-AXIS-006", "conv_sync.order_pos_filter", A, ValueType::uns32, 0, 1000, "", 1, "", "0", kOpt, -1, -1, "004 §4.8.1 (listing)"},
@@ -50,10 +51,10 @@ constexpr std::array kTable = {
   ParamSpec{"P-AXIS-00625", "conv_sync.order_v_filter_dyn", A, ValueType::uns32, 0, 1000, "", 1, "", "10", kOpt, -1, -1, "004 §5.2.1"},
   ParamSpec{"P-AXIS-00626", "conv_sync.delay_time", A, ValueType::uns32, 0, kUns32Max, "us", kMicrosecond, "s", "0", kOpt, -1, -1, "004 §5.2.1"},
   ParamSpec{"P-AXIS-00708", "conv_sync.is_master", A, ValueType::boolean, 0, 1, "", 1, "", "0", kOpt, -1, -1, "004 §5.2.1"},
-  // ---- axis list: exact stop (seed 001 §3.2) ----------------------------------------------
+  // Axis list: exact stop (seed 001 §3.2)
   ParamSpec{"P-AXIS-00236", "getriebe[].window", A, ValueType::sgn32, 1, kSgn32Max, "0.1 um | 0.0001 deg", kTenthMicron, "mm | deg", "500", kOpt, 7, -1, "001 §3.2"},
   ParamSpec{"P-AXIS-00532", "getriebe[].position_settling_time", A, ValueType::sgn32, kSgn32Min, kSgn32Max, "us", kMicrosecond, "s", "-1", kOpt, 7, -1, "001 §3.2"},
-  // ---- axis list: dynamics of gear i, jerk-limited ("non-linear") slope (ISG axis parameter
+  // Axis list: dynamics of gear i, jerk-limited ("non-linear") slope (ISG axis parameter
   //      manual TF5200, docs/machines.md "Axis dynamics" names each page) ------------------------
   ParamSpec{"P-AXIS-00212", "getriebe[].dynamik.vb_max", A, ValueType::uns32, 1, 2000000000, "um/s | 0.001 deg/s", kMilli, "mm/s | deg/s", "200000", kOpt, 7, -1, "TF5200 P-AXIS-00212"},
   ParamSpec{"P-AXIS-00008", "getriebe[].dynamik.a_max", A, ValueType::uns32, 1, 100000000, "mm/s^2 | deg/s^2", 1, "mm/s^2 | deg/s^2", "1000", kOpt, 7, -1, "TF5200 P-AXIS-00008"},
@@ -70,24 +71,24 @@ constexpr std::array kTable = {
   ParamSpec{"P-AXIS-00081", "getriebe[].slope_profil.tr_feedh", A, ValueType::uns32, 0, kUns32Max, "us", kMicrosecond, "s", "0", kOpt, 7, -1, "TF5200 P-AXIS-00081 (0: = P-AXIS-00200)"},
   ParamSpec{"P-AXIS-00201", "getriebe[].dynamik.tr_min", A, ValueType::uns32, 0, kUns32Max, "us", kMicrosecond, "s", "10000", kOpt, 7, -1, "TF5200 P-AXIS-00201"},
   ParamSpec{"P-AXIS-00199", "getriebe[].dynamik.tr_geom", A, ValueType::uns32, 0, kUns32Max, "us", kMicrosecond, "s", "10000", kOpt, 7, -1, "TF5200 P-AXIS-00199"},
-  // ---- axis list: homing, G74 (--- static-saw; TF5200 homing parameters) ---------------------
+  // Axis list: homing, G74 (the static saw; TF5200 homing parameters)
   ParamSpec{"P-AXIS-00152", "getriebe[].pos_refpkt", A, ValueType::sgn32, kSgn32Min, kSgn32Max, "0.1 um | 0.0001 deg", kTenthMicron, "mm | deg", "0", kOpt, 7, -1, "TF5200 P-AXIS-00152"},
   ParamSpec{"P-AXIS-00219", "getriebe[].vb_refmax", A, ValueType::uns32, 1, 2000000000, "um/s | 0.001 deg/s", kMilli, "mm/s | deg/s", "83333", kOpt, 7, -1, "TF5200 P-AXIS-00219 (capped at P-AXIS-00212)"},
-  // ---- axis list: the NC I path model (seed 000 §7.1.7); no ISG key, ncsim ids --------------
+  // Axis list: the NC I path model (seed 000 §7.1.7); no ISG key, ncsim ids
   ParamSpec{"NCSIM-AXIS-020", "nci.velo_jump_factor", A, ValueType::real64, 0, kRealMax, "", 1, "", "1.0", kOpt, -1, -1, "000 §7.1.7 (C0)"},
   ParamSpec{"NCSIM-AXIS-030", "ncsim.profile_rule", A, ValueType::word, 0, 0, "manual | time_optimal", 1, "", "manual", kOpt, -1, -1, "002 2.1, 2.3 (manual); docs/axes-profile.md"},
-  // ---- axis list: position control -------------------------------------------------------
+  // Axis list: position control
   ParamSpec{"P-AXIS-00099", "getriebe[].kv", A, ValueType::uns32, 1, kUns32Max, "0.01/s", kCenti, "1/s", "1000", kOpt, 7, -1, "TF5200 P-AXIS-00099"},
   ParamSpec{"NCSIM-AXIS-023", "drive.pt1_time", A, ValueType::real64, 0, kRealMax, "s", 1, "s", "0.0", kOpt, -1, -1, "000 §7.5.8"},
   ParamSpec{"NCSIM-AXIS-024", "monitoring.position_lag", A, ValueType::boolean, 0, 1, "", 1, "", "1", kOpt, -1, -1, "000 §7.1.5"},
-  ParamSpec{"NCSIM-AXIS-025", "monitoring.position_lag_max", A, ValueType::real64, 1e-9, kRealMax, "mm | deg", 1, "mm | deg", "5.0", kOpt, -1, -1, "000 §7.1.5"},
+  ParamSpec{"NCSIM-AXIS-025", "monitoring.position_lag_max", A, ValueType::real64, kAboveZero, kRealMax, "mm | deg", 1, "mm | deg", "5.0", kOpt, -1, -1, "000 §7.1.5"},
   ParamSpec{"NCSIM-AXIS-026", "monitoring.position_lag_filter_time", A, ValueType::real64, 0, kRealMax, "s", 1, "s", "0.02", kOpt, -1, -1, "000 §7.1.5"},
   ParamSpec{"NCSIM-AXIS-027", "monitoring.target_position", A, ValueType::boolean, 0, 1, "", 1, "", "1", kOpt, -1, -1, "000 §7.1.5"},
-  ParamSpec{"NCSIM-AXIS-028", "monitoring.target_position_window", A, ValueType::real64, 1e-9, kRealMax, "mm | deg", 1, "mm | deg", "2.0", kOpt, -1, -1, "000 §7.1.5"},
+  ParamSpec{"NCSIM-AXIS-028", "monitoring.target_position_window", A, ValueType::real64, kAboveZero, kRealMax, "mm | deg", 1, "mm | deg", "2.0", kOpt, -1, -1, "000 §7.1.5"},
   ParamSpec{"NCSIM-AXIS-029", "monitoring.target_position_time", A, ValueType::real64, 0, kRealMax, "s", 1, "s", "0.02", kOpt, -1, -1, "000 §7.1.5"},
   ParamSpec{"P-AXIS-00126", "getriebe[].moduloo", A, ValueType::sgn32, kSgn32Min, kSgn32Max, "0.1 um | 0.0001 deg", kTenthMicron, "mm | deg", "3600000", kOpt, 7, -1, "TF5200 P-AXIS-00126 (> P-AXIS-00127)"},
   ParamSpec{"P-AXIS-00127", "getriebe[].modulou", A, ValueType::sgn32, kSgn32Min, kSgn32Max, "0.1 um | 0.0001 deg", kTenthMicron, "mm | deg", "0", kOpt, 7, -1, "TF5200 P-AXIS-00127"},
-  // ---- channel list ------------------------------------------------------------------------
+  // Channel list
   ParamSpec{"P-CHAN-00650", "configuration.interpolator.function", C, ValueType::flag_set, 0, 0, "", 1, "", "FCT_IPO_DEFAULT", kOpt, -1, -1, "004 §5.2.2"},
   ParamSpec{"P-CHAN-00653", "configuration.interpolator.number_blocks_lah", C, ValueType::uns32, 0, 10000, "blocks", 1, "", "120", kOpt, -1, -1, "TF5200 channel parameters: data range 10..10000, default 120, read only with FCT_LOOK_AHEAD_CUSTOM; below 10: 50611"},
   ParamSpec{"P-CHAN-00009", "corr_v_trans_jerk", C, ValueType::boolean, 0, 1, "", 1, "", "1", kOpt, -1, -1, "isg-language §7.1; TF5200 channel parameters P-CHAN-00009 (BOOLEAN; the manual's default 0, ncsim's 1: docs/machines.md)"},
@@ -119,7 +120,7 @@ constexpr std::array kTable = {
   ParamSpec{"NCSIM-CHAN-002", "main_spindle_ax_nr", C, ValueType::uns16, 1, kUns16Max, "", 1, "", "", kOpt, -1, -1, "004 §4.9.1 (listing)"},
   ParamSpec{"NCSIM-CHAN-003", "main_spindle_name", C, ValueType::word, 0, 0, "", 1, "", "", kOpt, -1, -1, "004 §4.9.1 (listing)"},
   ParamSpec{"NCSIM-CHAN-610", "ncsim.cycle_time", C, ValueType::uns32, 1, 1000000, "us", kMicrosecond, "s", "1000", kOpt, -1, -1, "no key in the manuals at hand (docs/ipo.md \"The cycle time\"); the bounds of --cycle-us, which overrides it"},
-  ParamSpec{"NCSIM-CHAN-620", "ncsim.default_path_dev", C, ValueType::real64, 1e-9, kRealMax, "mm", 1, "mm", "1.0", kOpt, -1, -1, "isg-language §5.3 (PROG-475164939: PATH_DEV 1 mm); no ISG key: G261's ball radius where #CONTOUR MODE gives no PATH_DEV"},
+  ParamSpec{"NCSIM-CHAN-620", "ncsim.default_path_dev", C, ValueType::real64, kAboveZero, kRealMax, "mm", 1, "mm", "1.0", kOpt, -1, -1, "isg-language §5.3 (PROG-475164939: PATH_DEV 1 mm); no ISG key: G261's ball radius where #CONTOUR MODE gives no PATH_DEV"},
   ParamSpec{"NCSIM-CHAN-640", "conveyor_sync.ncsim_dynamics_reserve", C, ValueType::uns16, 0, 500, "0.1 %", kPerMille, "fraction", "0", kOpt, -1, -1, "004 l.454 (reduce the dynamic axis limits; no ISG key)"},
   ParamSpec{"NCSIM-CHAN-630", "ncsim.path_override_type", C, ValueType::word, 0, 0, "REDUCED | ORIGINAL | REDUCED_ABOVE_100", 1, "", "REDUCED", kOpt, -1, -1, "000 §7.5.6 (override types; no ISG key)"},
   ParamSpec{"P-CHAN-00160", "g80_prog_file", C, ValueType::file_name, 0, 0, "", 1, "", "", kOpt, -1, -1, "TF5200 P-CHAN-00160 (G80's implicit subroutine, PROG-206278923)"},
@@ -137,7 +138,7 @@ constexpr std::array kTable = {
   ParamSpec{"P-CHAN-00429", "d_prog_file", C, ValueType::file_name, 0, 0, "", 1, "", "", kOpt, -1, -1, "TF5200 P-CHAN-00429 (a D word also calls this global subroutine)"},
   ParamSpec{"P-CHAN-00108", "prog_start.feedrate_factor", C, ValueType::real64, -1, kRealMax, "", 1, "", "100", kOpt, -1, -1, "TF5200 P-CHAN-00108 (100: F in mm/min, 0.1: m/min; F [mm/min] = F x 100 / factor; <= 0: 100)"},
   ParamSpec{"P-CHAN-00099", "prog_start.feedrate", C, ValueType::real64, 0, kRealMax, "mm/min", 1.0 / 60.0, "mm/s", "0", kOpt, -1, -1, "TF5200 P-CHAN-00099 (the feed of G01/G02/G03 before any F; 0: none)"},
-  ParamSpec{"P-CHAN-00090", "vector.velocity", C, ValueType::real64, 1e-9, kRealMax, "mm/min", 1.0 / 60.0, "mm/s", "2000000000", kOpt, -1, -1, "TF5200 P-CHAN-00090 (#VECTOR LIMIT ON [VEL] without a value)"},
+  ParamSpec{"P-CHAN-00090", "vector.velocity", C, ValueType::real64, kAboveZero, kRealMax, "mm/min", 1.0 / 60.0, "mm/s", "2000000000", kOpt, -1, -1, "TF5200 P-CHAN-00090 (#VECTOR LIMIT ON [VEL] without a value)"},
   ParamSpec{"P-CHAN-00041", "m_synch[]", C, ValueType::flag_set, 0, 0, "NO_SYNCH | MOS | MVS_SVS | MVS_SNS | MNS_SNS | 0x...", 1, "", "MOS", kOpt, 999, -1, "TF5200 P-CHAN-00041 (M function i's synchronisation type; ncsim's default MOS, docs/interp.md \"Technology functions\")"},
   ParamSpec{"P-CHAN-00027", "h_synch[]", C, ValueType::flag_set, 0, 0, "NO_SYNCH | MOS | MVS_SVS | MVS_SNS | MNS_SNS | 0x...", 1, "", "MOS", kOpt, 999, -1, "TF5200 P-CHAN-00027 (H function i's synchronisation type)"},
   ParamSpec{"P-CHAN-00081", "spindel[].s_synch", C, ValueType::flag_set, 0, 0, "NO_SYNCH | MOS | MVS_SVS | MVS_SNS | MNS_SNS | 0x...", 1, "", "MOS", kOpt, 0, -1, "TF5200 P-CHAN-00081 (the S function's synchronisation type; ncsim has one spindle entry, [0])"},
@@ -147,7 +148,7 @@ constexpr std::array kTable = {
   ParamSpec{"NCSIM-CHAN-652", "ncsim.s_duration", C, ValueType::real64, 0, 1e9, "ms", kMilli, "s", "0", kOpt, -1, -1, "no ISG key: the S function's execution time"},
   ParamSpec{"NCSIM-CHAN-653", "ncsim.t_duration", C, ValueType::real64, 0, 1e9, "ms", kMilli, "s", "0", kOpt, -1, -1, "no ISG key: the T function's (tool change's) execution time"},
   ParamSpec{"P-CHAN-00463", "create_cycle_param_on_read", C, ValueType::boolean, 0, 1, "", 1, "", "1", kOpt, -1, -1, "TF5200 P-CHAN-00463 (1: a @P read that the call did not program creates it; 0: error 20394)"},
-  // ---- zero-offset list (TF5200 "Zero offsets", P-ZERO; np_grp[i] is G53..G59 / G159=i) ------
+  // Zero-offset list (TF5200 "Zero offsets", P-ZERO; np_grp[i] is G53..G59 / G159=i)
   ParamSpec{"P-ZERO-00001", "g53_verfuegbar", Z, ValueType::boolean, 0, 1, "", 1, "", "0", kOpt, -1, -1, "TF5200 P-ZERO-00001 (0: G53 deselects every offset; 1: np_grp[0] is an offset too)"},
   ParamSpec{"P-ZERO-00002", "default_index", Z, ValueType::uns16, 0, 96, "", 1, "", "0", kOpt, -1, -1, "TF5200 P-ZERO-00002 (the group active at program start)"},
   ParamSpec{"P-ZERO-00003", "np_grp[].achse[].versch", Z, ValueType::sgn32, kSgn32Min, kSgn32Max, "0.1 um | 0.0001 deg", kTenthMicron, "mm | deg", "0", kOpt, 96, 31, "TF5200 P-ZERO-00003 (achse[j]: the channel axis j, machine.lis order)"},

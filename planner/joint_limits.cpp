@@ -82,11 +82,11 @@ std::optional<PathLimits> path_limits(const Segment& segment, const Move& move,
   // The joints' own limits at most at the axis cap. Each of v, a, d, j is the smaller of the two
   // sets; the joint set's a and j were derived at a velocity (and acceleration) no smaller than
   // the combined ones, so they stay valid (the budgets used by v and a only shrink).
-  // --- trafo-conveyor: G00 under a transform (issue 12): each joint at its own rapid rule,
+  // G00 under a transform (issue 12): each joint at its own rapid rule,
   // MIN(rapid P-AXIS-00209, reference, maximum) (000 l.360), with its G00 slope (P-AXIS-00004
   // acceleration, P-AXIS-00200 ramp time; planner::rapid_limits); the slowest joint sets the
   // time. Feed blocks keep the joints' feed limits.
-  // --- trafo-pcs1: a G00 in PCS1 (Move::belt_joints set by the adapter, ipo::belt_share of
+  // A G00 in PCS1 (Move::belt_joints set by the adapter, ipo::belt_share of
   // these rapid limits): `joints` come lowered by the belt's acceleration and jerk shares
   // (Preparer::limits); where the G00 slope replaces them (a_rapid, j_rapid) the shares are
   // taken off the slope too, and the velocity share caps the path at Move::feed, the adapter's
@@ -107,7 +107,6 @@ std::optional<PathLimits> path_limits(const Segment& segment, const Move& move,
   double cap = out.v_max;
   if (share != nullptr && move.feed > 0.0) cap = std::min(cap, move.feed);
   const PathLimits jl = limits_from_bounds(*b, used, cap, jerk_limited(move.slope));
-  // --- end trafo-conveyor
   if (jl.v_max < out.v_max) {
     out.v_max = jl.v_max;
     out.limit = VelocityLimit::joint;

@@ -9,12 +9,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/tolerance.hpp"
+
 namespace ncsim::planner {
 
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kTiny = 1e-12;  // derivative bounds below this are zero
 
 /// Lower `cap` to `value` and remember why.
 void lower(double value, VelocityLimit why, std::uint8_t axis, double& cap, VelocityLimit& limit,

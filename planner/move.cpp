@@ -8,6 +8,8 @@
 #include <string>
 #include <type_traits>
 
+#include "core/tolerance.hpp"
+
 namespace ncsim::planner {
 
 namespace {
@@ -84,7 +86,7 @@ void validate(const Move& move) {
       finite(move.spline->c2[i], [&] { return at() + "spline c2[" + std::to_string(i) + "]"; });
     }
   }
-  if (move.belt_joints) {  // --- belt-jerk
+  if (move.belt_joints) {
     for (std::size_t i = 0; i < kMaxAxes; ++i) {
       finite(move.belt_joints->a[i],
              [&] { return at() + "belt_joints a[" + std::to_string(i) + "]"; });
@@ -110,7 +112,7 @@ void validate(const Move& move) {
     }
     if (g.axes[0] == g.axes[1] || g.axes[1] == g.axes[2] || g.axes[0] == g.axes[2])
       fail(at() + "arc plane axes not distinct");
-    if (std::abs(uu - 1.0) > 1e-9 || std::abs(vv - 1.0) > 1e-9 || std::abs(uv) > 1e-9)
+    if (std::abs(uu - 1.0) > kRelTol || std::abs(vv - 1.0) > kRelTol || std::abs(uv) > kRelTol)
       fail(at() + "arc plane u, v not orthonormal");
     double x = 0.0, y = 0.0;
     for (std::size_t k = 0; k < 3; ++k) {
@@ -156,10 +158,9 @@ void validate(std::span<const AxisLimits> limits) {
   }
 }
 
-// --- sync-feed
 AxisLimits belt_limits(const AxisLimits& axis, double taken) noexcept {
   if (taken == 0.0 || !std::isfinite(taken)) return axis;
-  // --- belt-split: taken < 0 (against the belt) raises the velocities by |taken|.
+  // `taken` < 0 (against the belt) raises the velocities by |taken|.
   const auto left = [taken](double v) { return std::max(v - taken, 0.01 * v); };
   AxisLimits out = axis;
   out.v_max = left(axis.v_max);
@@ -168,7 +169,6 @@ AxisLimits belt_limits(const AxisLimits& axis, double taken) noexcept {
   return out;
 }
 
-// --- belt-jerk
 AxisLimits belt_joint_limits(const AxisLimits& joint, double a, double j) noexcept {
   const auto left = [](double limit, double taken) {
     return taken > 0.0 ? std::max(limit - taken, 0.01 * limit) : limit;
@@ -180,7 +180,6 @@ AxisLimits belt_joint_limits(const AxisLimits& joint, double a, double j) noexce
   return out;
 }
 
-// --- conveyor
 AxisLimits reserved_limits(const AxisLimits& axis, double reserve) noexcept {
   if (!(reserve > 0.0)) return axis;
   AxisLimits out = axis;

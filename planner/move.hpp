@@ -74,7 +74,7 @@ struct SplineControl {
   AxisVec c2{};  ///< third control point [mm | deg]
 };
 
-/// --- belt-jerk: what a conveyor takes of each joint's acceleration and jerk on a PCS1 block
+/// What a conveyor takes of each joint's acceleration and jerk on a PCS1 block
 /// under #TRAFO ON (docs/conveyor.md "Machining in PCS1"; ipo::belt_share).
 struct JointShare {
   AxisVec a{};  ///< acceleration taken of joint i, >= 0 [deg/s^2 | mm/s^2]
@@ -126,12 +126,12 @@ struct Move {
   /// #TRAFO ON: X, Y, Z are the Cartesian TCP and the joints of the kinematic transform limit
   /// the path (Preparer::set_joints); false: axis values (docs/planner.md "Kinematics").
   bool transformed = false;
-  /// --- sync-feed: while synchronised (PCS1), the velocity the conveyor takes of each axis
+  /// While synchronised (PCS1), the velocity the conveyor takes of each axis
   /// [mm/s]: the block is planned with v_max, v_reference and v_rapid lowered by it
   /// (belt_limits; 004 l.311-319, docs/conveyor.md "velocity split"); all 0 off the conveyor.
-  /// --- belt-split: negative on an axis the block moves against the belt (raised by it).
+  /// Negative on an axis the block moves against the belt (raised by it).
   AxisVec belt{};
-  /// --- belt-jerk: under #TRAFO ON while synchronised, the acceleration and jerk the conveyor
+  /// Under #TRAFO ON while synchronised, the acceleration and jerk the conveyor
   /// takes of each joint: the block is planned with the joints' limits lowered by them
   /// (belt_joint_limits). Shared and immutable, as `spline`; null off the conveyor.
   std::shared_ptr<const JointShare> belt_joints;
@@ -178,13 +178,13 @@ AxisLimits rapid_limits(const AxisLimits& axis) noexcept;
 /// acceleration or deceleration limits for the axis": the step happens in both blocks).
 AxisLimits joint_slope(const AxisLimits& axis, bool rapid_in, bool rapid_out) noexcept;
 
-/// --- sync-feed: the limits of an axis of which a conveyor takes `taken` [mm/s] (004
+/// The limits of an axis of which a conveyor takes `taken` [mm/s] (004
 /// l.311-319): v_max, v_reference and v_rapid lowered by it, each kept at >= 1 % of itself;
 /// accelerations and jerk unchanged. taken 0: the axis as it is. --- belt-split: taken < 0, a
 /// block against the conveying direction, raises them by |taken| (v_max + v_conv).
 AxisLimits belt_limits(const AxisLimits& axis, double taken) noexcept;
 
-/// --- belt-jerk: the limits of a joint of which a conveyor takes `a` >= 0 of the acceleration
+/// The limits of a joint of which a conveyor takes `a` >= 0 of the acceleration
 /// and `j` >= 0 of the jerk: a_max, d_max and j_max lowered by them, each kept at >= 1 % of
 /// itself (the adapter refuses a share that leaves less: NC6211); velocities unchanged.
 AxisLimits belt_joint_limits(const AxisLimits& joint, double a, double j) noexcept;
@@ -195,13 +195,13 @@ struct ChannelLimits {
   /// P-CHAN-00009 semantics: limit the velocity at C1 transitions so that each axis's
   /// acceleration step fits its jerk budget j_max * T (docs/planner.md "C1").
   bool limit_c1_by_jerk = true;
-  /// --- conveyor: the share of A+, A- and J a PCS1 block leaves unused on the axes the belt
+  /// The share of A+, A- and J a PCS1 block leaves unused on the axes the belt
   /// moves (Move::belt != 0) and on the joints of a block with belt shares (NCSIM-CHAN-640,
   /// 004 l.454) [fraction]; 0: none.
   double belt_reserve = 0.0;
 };
 
-/// --- conveyor: `axis` with A+, A- and J lowered by the fraction `reserve` (NCSIM-CHAN-640).
+/// `axis` with A+, A- and J lowered by the fraction `reserve` (NCSIM-CHAN-640).
 AxisLimits reserved_limits(const AxisLimits& axis, double reserve) noexcept;
 
 /// Throws std::invalid_argument naming the field and value when a Move breaks its invariants.

@@ -14,6 +14,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/tolerance.hpp"
+
 namespace ncsim::planner {
 
 namespace {
@@ -98,7 +100,7 @@ AxisMask effective_metric(std::uint8_t axis_count, AxisMask path_axes, const Axi
     all |= AxisMask{1} << i;
     if (has(path_axes, i)) moved = std::max(moved, std::abs(delta[i]));
   }
-  return moved > 1e-12 ? (path_axes & all) : all;
+  return moved > kZeroLength ? (path_axes & all) : all;
 }
 
 AxisMask polygon_metric(std::uint8_t axis_count, AxisMask path_axes,
@@ -182,8 +184,8 @@ Segment Segment::arc(const Move& move) {
   // end's (x0 + dx, y0 + dy), both divided by r and written with the chord (dx, dy) from the end
   // points, so a tiny sweep on a huge radius keeps its digits (the difference of two atan2 of
   // nearly equal angles kept none: 1e-10 rad became 0, a full circle; issue 34 item 4). Closed
-  // means what the interpreter decided (Arc::full_circle) or an end within 1e-9 mm of the start,
-  // its own rule (interp "full" circle), not a chord below 1e-9 of the radius.
+  // means what the interpreter decided (Arc::full_circle) or an end within kSamePoint of the start,
+  // its own rule (interp "full" circle), not a chord below kRelTol of the radius.
   double dx = 0.0, dy = 0.0;
   for (std::size_t i = 0; i < move.axis_count; ++i) {
     dx += (move.end[i] - move.start[i]) * g.u[i];
@@ -194,7 +196,7 @@ Segment Segment::arc(const Move& move) {
     const double ux = x0 / g.radius, uy = y0 / g.radius;
     phi = std::atan2(ux * dy - uy * dx, g.radius + ux * dx + uy * dy);
   }
-  const bool closed = arc.full_circle || std::hypot(dx, dy) < 1e-9;
+  const bool closed = arc.full_circle || std::hypot(dx, dy) < kSamePoint;
   double sweep = 0.0;
   if (closed)
     sweep = arc.clockwise ? -kTwoPi : kTwoPi;

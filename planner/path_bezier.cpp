@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/tolerance.hpp"
 #include "planner/minimise.hpp"
 #include "planner/path.hpp"
 
@@ -562,7 +563,7 @@ double Segment::bezier_t(const BezierGeom& g, double s) const noexcept {
     const double f = integrate_speed(g.p, n_, metric, t_k, t) - (s - s_k);
     const double step = f / sp;
     t = std::clamp(t - step, t_k, t_k + dt);
-    if (std::abs(step) < 1e-15) break;
+    if (std::abs(step) < kParameterWidth) break;
   }
   return t;
 }

@@ -305,7 +305,7 @@ TEST_CASE("G261 leaves the small knees of dense chords unblended: they chain as 
   CHECK(out[0].path.parts() == Chain::kMaxParts);
 }
 
-// --- conveyor: NCSIM-CHAN-640 (docs/conveyor.md "The belt's own dynamics", 004 l.454)
+// NCSIM-CHAN-640 (docs/conveyor.md "The belt's own dynamics", 004 l.454)
 TEST_CASE("a PCS1 block keeps the belt's dynamics reserve on the axes the belt moves, only there") {
   auto ax = limits();
   ax[0].j_max = 2e5;  // X the belt moves; Y the stiffer axis

@@ -8,13 +8,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/tolerance.hpp"
 #include "planner/minimise.hpp"
 
 namespace ncsim::planner {
 
 namespace {
-
-constexpr double kSamePoint = 1e-9;  // [mm | deg] a point this close to the previous is dropped
 
 AxisVec axpy(const AxisVec& x, double a, const AxisVec& y, std::size_t n) {
   AxisVec r = x;
@@ -103,7 +102,7 @@ AxisVec SplineBuilder::akima_tangent(std::int64_t i) const noexcept {
   AxisVec t{};
   const double sum = w1 + w2;
   for (std::size_t a = 0; a < n_; ++a)
-    t[a] = sum > 1e-12 ? (w1 * m2[a] + w2 * m3[a]) / sum : 0.5 * (m2[a] + m3[a]);
+    t[a] = sum > kTiny ? (w1 * m2[a] + w2 * m3[a]) / sum : 0.5 * (m2[a] + m3[a]);
   return t;
 }
 

@@ -24,7 +24,8 @@
 //   (PROG-207263627 "the control polygon bounds it") and is C2 everywhere. Span k (control
 //   points k .. k + 3) is converted to its Bezier form by blossoming; it needs the control points
 //   k .. k + 3 and whether the end is within 3 points: a window of 7 points.
-// - A point equal to the previous one (all axes within 1e-9) is dropped: it carries no path and
+// - A point equal to the previous one (all axes within kSamePoint) is dropped: it carries no path
+// and
 //   would make the curve's speed vanish.
 // Line and feed: an Akima piece carries the line and feed of the point it ends at (the block
 // that programmed it). B-spline span k carries those of control point k + 2 (the point its end

@@ -5,6 +5,8 @@
 #include <string>
 #include <variant>
 
+#include "core/tolerance.hpp"
+
 namespace ncsim::ipo {
 
 void BarrierAnswers::answer_from(scenario::VeStore* store, bool flush) {
@@ -96,7 +98,7 @@ void BarrierAnswers::answer_positions(const interp::Barrier& barrier, std::uint3
     const auto k = static_cast<std::size_t>(layout.slot[m]);
     const double set = (*positions_)[k];
     const double delta = set - decoded[k];
-    if (std::fabs(delta) <= 1e-9 * std::max(1.0, std::fabs(set))) continue;  // the target
+    if (std::fabs(delta) <= kRelTol * std::max(1.0, std::fabs(set))) continue;  // the target
     const bool xyz =
         std::find(layout.xyz.begin(), layout.xyz.end(), static_cast<int>(m)) != layout.xyz.end();
     if (barrier.frame.kinematics || barrier.frame.space == interp::Space::pcs1 ||

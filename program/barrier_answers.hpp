@@ -16,7 +16,7 @@
 // Inputs: the interpreter, the channel events as they pass (note()), the scenario's store, the
 // channel's set positions (MCS, interpolated order).
 // Outputs: commands; the stop before a barrier (a ChannelWait or a 0 s Dwell); the answer.
-// Invariants: an axis whose set position equals the decode-time value (within 1e-9 relative)
+// Invariants: an axis whose set position equals the decode-time value (within kRelTol relative)
 // keeps the decode-time value bit for bit; a difference that cannot be carried into the frame
 // (a rotated #CS on X/Y/Z, PCS1, #TRAFO ON) is `not supported` (NC6001), never ignored.
 

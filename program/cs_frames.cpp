@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/tolerance.hpp"
 #include "interp/cs_select.hpp"
 
 namespace ncsim::ipo {
@@ -60,7 +61,7 @@ planner::AxisVec CsFrames::to_mcs(const interp::CoordFrame& frame, const interp:
       const double value = q[static_cast<Eigen::Index>(k)];
       if (xyz[k] >= 0) {
         m[static_cast<std::size_t>(xyz[k])] = value;
-      } else if (std::abs(value) > 1e-9) {
+      } else if (std::abs(value) > kSamePoint) {
         errors_.not_supported(line, std::string("#CS frame moves the ") + "XYZ"[k] +
                                         " axis, which this machine does not have");
       }

@@ -1,11 +1,12 @@
 #include "program/path_output.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <memory>
 #include <string>
 #include <utility>
 #include <variant>
+
+#include "core/number_text.hpp"
 
 namespace ncsim::ipo {
 
@@ -13,12 +14,6 @@ namespace {
 
 /// Largest tangent change at a joint of the static unit's contour [deg] (004 l.441: C2).
 constexpr double kXvCornerMax = 1.0;
-
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
 
 }  // namespace
 
@@ -37,7 +32,7 @@ void PathOutput::caxtrack(const interp::CaxTrack& c, std::uint32_t line) {
   if (!c.unsupported.empty()) errors_.not_supported(line, "#CAXTRACK ON " + c.unsupported);
   if (c.rotmode != 0.0 && c.rotmode != 1.0)
     errors_.not_supported(
-        line, "#CAXTRACK ON ROTMODE=" + number(c.rotmode) + " (ncsim runs ROTMODE 0 and 1)");
+        line, "#CAXTRACK ON ROTMODE=" + core::human(c.rotmode) + " (ncsim runs ROTMODE 0 and 1)");
   int index = -1;  // machine index of the tracking axis
   if (c.axis) {
     index = *c.axis;
@@ -146,7 +141,7 @@ std::vector<planner::Move> PathOutput::track(planner::Move mv) {
       if (xv_)
         errors_.raise_in(
             mv.file, mv.line, kXvStopId,
-            "x_virtual: the tangent turns by " + number(o.joint_turn) +
+            "x_virtual: the tangent turns by " + core::human(o.joint_turn) +
                 " deg > ANGLIMIT here: #CAXTRACK would stop the path on the moving belt to "
                 "turn the axis (004 l.441-443: the contour must be C2)");
       Dwell stop{0.0, mv.line, 0};  // the path stops before the turn block
@@ -191,7 +186,7 @@ void PathOutput::pass_static(planner::Move& m) {
     if (turn > kXvCornerMax)
       errors_.raise_in(
           m.file, m.line, kXvStopId,
-          "x_virtual: the contour turns by " + number(turn) +
+          "x_virtual: the contour turns by " + core::human(turn) +
               " deg at this block's start; the path would slow down on the moving belt "
               "(004 l.441: the contour must be C2, e.g. a spline)");
   }

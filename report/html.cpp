@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -11,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "core/number_text.hpp"
 #include "report/assets.hpp"
 
 namespace ncsim::report {
@@ -19,25 +19,12 @@ namespace {
 
 /// Shortest round-trip text (times: exact); null for a non-finite value.
 void exact(std::string& s, double v) {
-  if (!std::isfinite(v)) {
-    s += "null";
-    return;
-  }
-  std::array<char, 32> buf{};
-  const auto r = std::to_chars(buf.data(), buf.data() + buf.size(), v);
-  s.append(buf.data(), r.ptr);
+  s += core::json_num(v);
 }
 
 /// 7 significant digits (display values: a pixel is far coarser); null when not finite.
 void value(std::string& s, double v) {
-  if (!std::isfinite(v)) {
-    s += "null";
-    return;
-  }
-  std::array<char, 32> buf{};
-  const auto r =
-      std::to_chars(buf.data(), buf.data() + buf.size(), v, std::chars_format::general, 7);
-  s.append(buf.data(), r.ptr);
+  s += core::json_num(v, 7);
 }
 
 template <class F>

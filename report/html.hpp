@@ -5,7 +5,7 @@
 // the npm package at build time, report/assets.hpp), the page's own script and style, and the
 // run's data as one JSON object.
 // Inputs: ReportData (report/recorder.hpp). Outputs: the page on a stream.
-// Invariants: byte-identical output for identical data (numbers by std::to_chars: times
+// Invariants: byte-identical output for identical data (numbers by core/number_text: times
 // shortest round-trip, values 7 significant digits); no external reference (no URL is
 // loaded); strings are escaped so no data can close the script element.
 

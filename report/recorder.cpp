@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/tolerance.hpp"
 #include "ipo/joint_stage.hpp"
 #include "tracking/synchro_lag.hpp"
 
@@ -50,7 +51,7 @@ void Recorder::set_limits(const ipo::ChannelConfig& config) {
     // PCS0 +X in MCS (R0 e_x); along MCS X when T0 turns only about X.
     const ipo::SyncFrame frame(c);
     const Eigen::Vector3d e = frame.direction();
-    w.along_x = std::abs(std::abs(e.x()) - 1.0) < 1e-9;
+    w.along_x = std::abs(std::abs(e.x()) - 1.0) < kRelTol;
     w.sign = e.x() < 0.0 ? -1 : 1;
     workspace_ = w;
   }
@@ -171,7 +172,7 @@ void Recorder::on_cycle(const ipo::Cycle& c) {
 
 void Recorder::add_mcs(const ipo::AxisVec& axes) {
   mcs_point_.resize(mcs_.dims());
-  // --- trafo-jerk: untransformed, a kinematic machine's axes are joints: their TCP.
+  // Untransformed, a kinematic machine's axes are joints: their TCP.
   ipo::AxisVec tcp{};
   const bool joints = !transformed_ && forward_;
   if (joints && !forward_(axes, tcp)) return;

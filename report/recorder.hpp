@@ -139,12 +139,12 @@ class Recorder final : public ipo::Sink {
     audit_.set_setpoints(set);
     set_ = set;
   }
-  /// --- conveyor: the belt's share of those setpoints (ipo::Audit::set_belt).
+  /// The belt's share of those setpoints (ipo::Audit::set_belt).
   void set_belt(const ipo::BeltOffset* belt) noexcept { audit_.set_belt(belt); }
   /// The TCP in MCS of a cycle under #TRAFO ON (ipo::Channel::tcp(); null: none): on a
   /// conveyor channel the MCS toolpath of a transformed cycle (the setpoints are joints there).
   void set_tcp(const std::array<axes::Setpoint, planner::kMaxAxes>* tcp) noexcept { tcp_ = tcp; }
-  // --- trafo-jerk: the MCS toolpath of a kinematic machine before #TRAFO ON.
+  // The MCS toolpath of a kinematic machine before #TRAFO ON.
   /// The machine's forward transform, axis positions -> the same vector with the TCP's X, Y, Z
   /// [mm] (ipo::forward_map; false where it does not map): on a machine whose axes are joints,
   /// an untransformed cycle's MCS toolpath point is the joints' TCP, not their angles (empty:

@@ -8,7 +8,7 @@
 
 #include "conveyor/world.hpp"
 #include "core/diagnostic.hpp"
-#include "core/number_format.hpp"
+#include "core/number_text.hpp"
 #include "grammar/check.hpp"
 #include "machines/loader.hpp"
 #include "program/program_source.hpp"

@@ -34,7 +34,7 @@ Run::Run(std::unique_ptr<Loaded> loaded, const RunSpec& spec)
   if (!spec.audit) return;
   audit_ = std::make_unique<ipo::Audit>(config_.path.axes, config_.path.channel.t_cycle,
                                         config_.path.start);
-  if (config_.path.joints)  // --- trafo: the joints are the machine axes
+  if (config_.path.joints)  // the joints are the machine axes
     audit_->set_joint_limits(config_.path.joints->joints, config_.path.start, true);
 }
 
@@ -62,12 +62,12 @@ void Run::start(std::vector<ipo::Sink*> sinks) {
     sink = fanout_.get();
   }
   channel_ = std::make_unique<ipo::Channel>(std::move(config_), src_, sink);
-  if (answer_positions_)  // --- planner: position barriers
+  if (answer_positions_)  // position barriers
     src_.answer_positions_from(&channel_->axes().command);
   channel_->play(player_.get());
   channel_->attach_conveyor(in_->port.get());
   if (audit_) audit_->set_setpoints(&channel_->setpoints());  // axis limits on the setpoints
-  if (audit_) audit_->set_belt(&channel_->belt_share());      // --- conveyor: the belt's share
+  if (audit_) audit_->set_belt(&channel_->belt_share());      // the belt's share
 }
 
 ipo::Status Run::step() {

@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "core/diagnostic.hpp"
-#include "core/number_format.hpp"
+#include "core/number_text.hpp"
 #include "runner/run.hpp"
 
 namespace ncsim::runner {
@@ -75,7 +75,7 @@ std::string warnings_text(const Run& run) {
   std::string out;
   for (const core::Diagnostic& d : run.interpreter().diagnostics().items())
     if (d.severity == core::Severity::warning) out += core::format(d);
-  // --- trafo: the channel's warning (NC6210: a joint beyond its dynamics while synchronised
+  // The channel's warning (NC6210: a joint beyond its dynamics while synchronised
   // under #TRAFO ON), positioned like a run-time error; the run goes on.
   if (const auto& w = run.channel().trafo_warning())
     out += positioned(run.interpreter(), *w, core::Severity::warning,

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "core/source_file.hpp"
+#include "core/tolerance.hpp"
 
 namespace ncsim::scenario {
 
@@ -176,7 +177,7 @@ inline constexpr double kOverrideMax = 10.0;
 /// creep for ages (1e-300 % never ended, issue 34 item 7).
 inline constexpr double kOverrideMin = 0.001;
 /// Tolerance of time comparisons [s]: cycle times are sums of t_cycle, not exact decimals.
-inline constexpr double kTimeEpsilon = 1e-9;
+inline constexpr double kTimeEpsilon = kSameTime;
 
 /// `[tech]`: a technology function's execution time, output -> acknowledgement (`M6 = 4.5`:
 /// seconds), over the machine's NCSIM-CHAN-650..653 (docs/scenario.md "[tech]").
