@@ -123,9 +123,10 @@ void Audit::step_formulas(const Joint& jt) {
     // raises the link above it (isg-language.md 5.6: it has priority): the step is v |dx'_i|
     // with |dx'_i| = |dv_i| / v, allowed up to the programmed v_min: |dv_i| <= v_min |dx'_i|.
     const double velojump = l.c0 * std::min(l.a_max, l.d_max) * t_;
-    const double raised = jt.transvelmin > 0.0 && jt.v > 0.0 && jt.cls == planner::TransitionClass::c0
-                              ? jt.transvelmin * (dv / jt.v)
-                              : 0.0;
+    const double raised =
+        jt.transvelmin > 0.0 && jt.v > 0.0 && jt.cls == planner::TransitionClass::c0
+            ? jt.transvelmin * (dv / jt.v)
+            : 0.0;
     // A step is one the planner's classification sees (corner.hpp): a tangent change above
     // kTangentTolerance, a curvature change above 1e-9 /mm. Below, it is the rounding of a C2
     // joint (a ball's G2 contact leaves about 1e-10 mm/s): checked, not listed.
@@ -147,8 +148,8 @@ void Audit::step_formulas(const Joint& jt) {
     // limits alone, A+ + |A-| (the most a step between two cycles within them can be).
     if (jt.cls != planner::TransitionClass::c2 && jt.jerk_limited &&
         da > 1e-9 * std::max(1.0, jt.v * jt.v))
-      formula_step(Quantity::c1_step, i, jt, da,
-                   jt.c1_limited ? l.j_max * t_ : l.a_max + l.d_max, false);
+      formula_step(Quantity::c1_step, i, jt, da, jt.c1_limited ? l.j_max * t_ : l.a_max + l.d_max,
+                   false);
   }
 }
 

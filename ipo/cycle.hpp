@@ -86,8 +86,8 @@ struct Joint {
   planner::LinkRule rule = planner::LinkRule::segment_caps;  ///< what set the link velocity
   /// #TRANSVELMIN of the incoming block [mm/s] (0: not programmed, or under G261 / G61)
   double transvelmin = 0.0;
-  AxisVec dv{};              ///< axis velocity step out - in [mm/s] (VELOJUMP)
-  AxisVec da{};              ///< axis acceleration step out - in [mm/s^2] (C1, and C0 on curves)
+  AxisVec dv{};  ///< axis velocity step out - in [mm/s] (VELOJUMP)
+  AxisVec da{};  ///< axis acceleration step out - in [mm/s^2] (C1, and C0 on curves)
   /// Under a kinematic transform (Config::joints, both blocks transformed) the joints' steps:
   /// velocity v (q'_out - q'_in), acceleration v^2 (q''_out - q''_in) + a (q'_out - q'_in),
   /// q' = dq/ds from the inverse (planner::joint_derivatives).
