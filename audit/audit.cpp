@@ -173,7 +173,7 @@ void Audit::check_motion(std::size_t i, bool joint, const Stencil& st, AxisAudit
   aa.a_closed = std::max(aa.a_closed, a);
   check(Quantity::velocity, Method::closed_form, i, c, v, aa.v_limit, joint);
   const bool speeding_up = a_signed * v_signed >= 0.0;
-  // --- conveyor: the path's share of the acceleration (the setpoint's less the belt's).
+  // The path's share of the acceleration (the setpoint's less the belt's).
   const bool belt_now = st.belt != nullptr && std::isfinite((*st.belt)[0]);
   check(Quantity::acceleration, Method::closed_form, i, c, a, speeding_up ? l.a_max : l.d_max,
         joint, belt_now ? std::abs(a_signed - st.a_belt) : -1.0);
@@ -193,7 +193,7 @@ void Audit::check_motion(std::size_t i, bool joint, const Stencil& st, AxisAudit
   check(Quantity::velocity, Method::finite_difference, i, c, vd, aa.v_limit + 2.0 * noise / t_,
         joint);
   if (st.velocity_only) return;
-  // --- conveyor: the same differences of the positions less the belt's share, where the axis
+  // The same differences of the positions less the belt's share, where the axis
   // moved with the belt at every position of the stencil (else -1: not split).
   std::array<double, 4> p{-1.0, -1.0, -1.0, -1.0};
   if (st.belt != nullptr) {
@@ -233,9 +233,9 @@ void Audit::on_cycle(const Cycle& c) {
   joint_rapid_ = false;
   const bool any_rapid = rapid_[0] || rapid_[1] || rapid_[2];
   for (std::size_t i = 0; i < limits_.size() && !trafo; ++i) {
-    // --- indp: an INDP motion (Cycle::independent) keeps the axis's G01 limits, jerk-limited.
+    // An INDP motion (Cycle::independent) keeps the axis's G01 limits, jerk-limited.
     const bool indp = ((c.independent >> i) & 1u) != 0;
-    // --- conveyor: the belt's share of this axis (NaN when it does not move with the belt).
+    // The belt's share of this axis (NaN when it does not move with the belt).
     const bool belt = belt_ != nullptr && belt_->following && !indp;
     b_[i] = {belt ? belt_->share[i] * belt_->travel : std::numeric_limits<double>::quiet_NaN(),
              b_[i][0], b_[i][1], b_[i][2]};
@@ -259,7 +259,7 @@ void Audit::on_cycle(const Cycle& c) {
       check_motion(i, false, st, verdict_.axes[i], x_[i], c, c.x[i], c.v[i], c.a[i], c.j[i]);
     }
   }
-  if (trafo)  // --- conveyor: the belt's share of the axes starts afresh after #TRAFO OFF
+  if (trafo)  // the belt's share of the axes starts afresh after #TRAFO OFF
     for (auto& b : b_)
       b.fill(std::numeric_limits<double>::quiet_NaN());
   for (std::size_t i = 0; i < limits_.size(); ++i) {
@@ -278,7 +278,7 @@ void Audit::on_cycle(const Cycle& c) {
     // (planner::contour_bound, docs/planner.md "DIST").
     const double tol = planner::contour_bound(m);
     const double allowed = tol + 1e-9 * mag;
-    AxisVec x = c.x;  // --- indp: INDP axes are not part of the block's contour
+    AxisVec x = c.x;  // INDP axes are not part of the block's contour
     for (std::size_t i = 0; i < limits_.size(); ++i)
       if (((c.independent >> i) & 1u) != 0) x[i] = m.start[i];
     const double d = contour_distance(m, x);

@@ -56,7 +56,7 @@
 #include "axes/control.hpp"
 #include "ipo/interpolator.hpp"
 #include "ipo/joint_stage.hpp"
-#include "tracking/belt_offset.hpp"  // --- conveyor: BeltOffset
+#include "tracking/belt_offset.hpp"  // BeltOffset
 
 namespace ncsim::ipo {
 
@@ -96,7 +96,7 @@ struct Violation {
   double limit = 0.0;      ///< what was allowed
   bool joint = false;      ///< `axis` is a joint of the kinematic transform (on_joints())
   std::uint16_t file = 0;  ///< source file of `line` (interp::Command::file, 0: main program)
-  /// --- conveyor: the same quantity less the belt's share (set_belt()), where the axis moved
+  /// The same quantity less the belt's share (set_belt()), where the axis moved
   /// with the belt over the whole stencil; -1: not split.
   double path = -1.0;
 };
@@ -132,7 +132,7 @@ struct Verdict {
   std::array<StepKind, 3> step_kinds{};
   std::uint64_t violation_count = 0;
   std::vector<Violation> violations;  ///< the first kMaxListed
-  /// --- conveyor: violations whose path share (Violation::path) was within the limit: the
+  /// Violations whose path share (Violation::path) was within the limit: the
   /// belt's own acceleration or jerk on top (004 l.454)
   std::uint64_t belt_count = 0;
   bool ok() const noexcept { return violation_count == 0; }
@@ -154,7 +154,7 @@ class Audit final : public Sink {
   void set_setpoints(const std::array<axes::Setpoint, planner::kMaxAxes>* set) noexcept {
     set_ = set;
   }
-  /// --- conveyor: the belt's share of the setpoints (read at each on_cycle with them); the
+  /// The belt's share of the setpoints (read at each on_cycle with them); the
   /// violations of an axis that moved with the belt then carry their path share. Null: none.
   void set_belt(const BeltOffset* belt) noexcept { belt_ = belt; }
   /// Under a kinematic transform: the joints' limits (one per joint, 1..kMaxAxes; throws
@@ -180,7 +180,7 @@ class Audit final : public Sink {
     double dv2 = 0.0, dv3 = 0.0;  ///< velocity steps in the a / j stencils [mm/s]
     double da3 = 0.0;             ///< acceleration steps in the j stencil [mm/s^2]
     bool velocity_only = false;   ///< a step without a formula is inside: v only
-    /// --- conveyor: the belt's share of the last four positions (NaN: not moving with it)
+    /// The belt's share of the last four positions (NaN: not moving with it)
     /// and its acceleration in the closed form; null: no belt
     const std::array<double, 4>* belt = nullptr;
     double a_belt = 0.0;
@@ -200,7 +200,7 @@ class Audit final : public Sink {
   /// One documented step of axis or joint i: listed, and a violation beyond `bound`.
   void formula_step(Quantity q, std::size_t i, const Joint& joint, double value, double bound,
                     bool is_joint);
-  /// --- trafo: the same formulas on the joints' own steps (Joint::dq, dw).
+  /// The same formulas on the joints' own steps (Joint::dq, dw).
   void joint_step_formulas(const Joint& joint);
   /// A switch of #TRAFO: the history of the side taken over continues the other's.
   void switch_transform(bool on);

@@ -107,7 +107,7 @@ std::span<const AxisLimits> Preparer::axes_for(const Move& move) const {
 std::span<const AxisLimits> Preparer::belt_axes_for(const Move& move) const {
   std::span<const AxisLimits> axes = axes_;
   if (move.transformed && joints_ && !joints_->cartesian.empty()) axes = joints_->cartesian;
-  // --- sync-feed: a PCS1 block on a conveyor: the belt's share taken off (belt_limits).
+  // A PCS1 block on a conveyor: the belt's share taken off (belt_limits).
   // A share is 0 when its bits but the sign are all 0 (+0 and -0); the 16 shares' bits are
   // or-ed without a branch each (most blocks are on no belt: every share is looked at).
   std::uint64_t bits = 0;
@@ -116,7 +116,7 @@ std::span<const AxisLimits> Preparer::belt_axes_for(const Move& move) const {
   if (bits == 0) return axes;
   for (std::size_t i = 0; i < axes.size() && i < belt_axes_.size(); ++i) {
     belt_axes_[i] = belt_limits(axes[i], move.belt[i]);
-    // --- conveyor: the belt's own acceleration and jerk get the reserve (NCSIM-CHAN-640)
+    // The belt's own acceleration and jerk get the reserve (NCSIM-CHAN-640)
     if (move.belt[i] != 0.0) belt_axes_[i] = reserved_limits(belt_axes_[i], channel_.belt_reserve);
   }
   return std::span<const AxisLimits>(belt_axes_.data(), std::min(axes.size(), belt_axes_.size()));
@@ -128,14 +128,14 @@ const JointLimits* Preparer::joints_for(const Move& move) const {
 
 PathLimits Preparer::limits(const Segment& path, const Move& move) const {
   const JointLimits* joints = joints_for(move);
-  if (joints == nullptr) return path_limits(path, move, axes_for(move));  // --- sync-feed
+  if (joints == nullptr) return path_limits(path, move, axes_for(move));
   std::span<const AxisLimits> joint_limits = joints->joints;
   if (move.belt_joints && joints->joints.size() <= belt_joints_.size()) {
-    // --- belt-jerk: a PCS1 block under #TRAFO ON: the belt's share taken off the joints.
+    // A PCS1 block under #TRAFO ON: the belt's share taken off the joints.
     for (std::size_t i = 0; i < joints->joints.size(); ++i)
       belt_joints_[i] = reserved_limits(
           belt_joint_limits(joints->joints[i], move.belt_joints->a[i], move.belt_joints->j[i]),
-          channel_.belt_reserve);  // --- conveyor: NCSIM-CHAN-640
+          channel_.belt_reserve);  // NCSIM-CHAN-640
     joint_limits = std::span<const AxisLimits>(belt_joints_.data(), joints->joints.size());
   }
   const std::optional<PathLimits> l =
@@ -376,7 +376,7 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
       blend_move.block_time.reset();
       blend_move.end_feed.reset();
       blend_move.feed = std::min(in_ps.limits.v_programmed, out_limits.v_programmed);
-      // --- belt-split: the ball gets the lower of its neighbours' belt limits per axis. Two
+      // The ball gets the lower of its neighbours' belt limits per axis. Two
       // lines against the belt keep the raised one: the line-line ball's hodograph is a
       // non-negative combination of the two tangents (blend.hpp, k <= 0.71), so its axis
       // velocity keeps their sign (docs/conveyor.md "velocity split").

@@ -157,13 +157,13 @@ class Preparer {
   std::optional<PreparedSegment> held_;  ///< chaining stage
   double held_v_hi_ = 0.0;  ///< highest own velocity cap among the held chain's parts [mm/s]
   std::optional<JointLimits> joints_;  ///< set_joints()
-  /// --- sync-feed: axes_for()'s limits of a Move on a conveyor (Move::belt), rewritten per call.
+  /// axes_for()'s limits of a Move on a conveyor (Move::belt), rewritten per call.
   mutable std::array<AxisLimits, kMaxAxes> belt_axes_{};
   /// axes_for()'s limits of a Move with dynamics weightings (Move::weights), rewritten per call.
   mutable std::array<AxisLimits, kMaxAxes> weighted_axes_{};
   /// slopes_at_joint()'s limits at a joint with a G00 block, rewritten per call.
   mutable std::array<AxisLimits, kMaxAxes> joint_axes_{};
-  /// --- belt-jerk: limits()'s joint limits of a Move on a conveyor (Move::belt_joints).
+  /// limits()'s joint limits of a Move on a conveyor (Move::belt_joints).
   mutable std::array<AxisLimits, kMaxAxes> belt_joints_{};
 };
 

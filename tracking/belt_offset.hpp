@@ -9,7 +9,7 @@
 
 namespace ncsim::ipo {
 
-/// --- conveyor: the belt's share of the axes in the cycle just played (Channel::belt_share()).
+/// The belt's share of the axes in the cycle just played (Channel::belt_share()).
 struct BeltOffset {
   bool following = false;     ///< the axes move with the belt (catch-up, PCS1, leaving)
   double travel = 0.0;        ///< the master's travel since the latch [mm]

@@ -111,7 +111,7 @@ TEST_CASE("FEED_CONT: the tool meets the target at the relative velocity") {
 
 TEST_CASE("a moving axis just ahead of a faster target is caught up in the belt's frame") {
   // X at 18 mm moving at 223 mm/s, the target 39 mm behind it at 328 mm/s.
-  // --- ptp: the PTP core meets it in MCS since issue 11's turns and overshoots of a prescribed
+  // The PTP core meets it in MCS since issue 11's turns and overshoots of a prescribed
   // duration (NC5015 before); the belt frame stays the catch-up's fallback.
   axes::Profile p;
   double t = 0.0;

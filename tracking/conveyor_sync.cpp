@@ -32,11 +32,11 @@ ConveyorSync::ConveyorSync(const machines::ConveyorSyncChannel& channel,
     share_[i] = axes[i].xyz >= 0 && axes[i].xyz < 3 ? frame_.direction()[axes[i].xyz] : 0.0;
     if (std::fabs(share_[i]) < 1e-12) share_[i] = 0.0;  // rounding of an unrotated T0
   }
-  // --- workspace: the hold line against the conveying direction
+  // The hold line against the conveying direction
   std::array<int, planner::kMaxAxes> xyz{};
   for (std::size_t i = 0; i < n_; ++i)
     xyz[i] = axes_[i].xyz;
-  // --- hold: none on a static unit (P-CHAN-00364 = 1): its path's X component is the belt's
+  // None on a static unit (P-CHAN-00364 = 1): its path's X component is the belt's
   // (channel/channel_static.cpp), so X never moves against the conveying direction in MCS.
   if (auto h =
           hold_config(channel, frame_.direction(), channel.optimised_monitoring, xyz.data(), n_);
@@ -51,7 +51,7 @@ std::optional<SyncError> ConveyorSync::sync_in(const interp::SyncIn& command) {
     if (auto e = check_conv_vel(l, share_[i], command.conv_vel, axes_[i].name)) return e;
   }
   conv_vel_ = command.conv_vel;
-  // --- sync-feed: FEED_CONT (mm/s here) or FEED_CONT_AUTO, reduced at the catch-up
+  // FEED_CONT (mm/s here) or FEED_CONT_AUTO, reduced at the catch-up
   feed_cont_ = command.feed_cont_auto ? std::numeric_limits<double>::infinity()
                                       : std::max(0.0, command.feed_cont.value_or(0.0));
   phase_ = SyncPhase::waiting;
@@ -67,12 +67,12 @@ void ConveyorSync::sync_out(const interp::SyncOut&) noexcept {
 
 std::optional<SyncError> ConveyorSync::step(double t) noexcept {
   if (port_ == nullptr) return std::nullopt;
-  if (t <= stepped_t_) return std::nullopt;  // --- workspace: once per cycle (channel_sync_error)
+  if (t <= stepped_t_) return std::nullopt;  // once per cycle (channel_sync_error)
   const bool first = stepped_t_ < 0.0;       // no master position of a step before
   const double dt = t - stepped_t_;
   stepped_t_ = t;
   // A profile that ended in the previous cycle hands over now (its last setpoint was exact).
-  // --- sync-feed: one meeting the target moving hands over in the cycle it meets it: the
+  // One meeting the target moving hands over in the cycle it meets it: the
   // path starts at the meeting inside this cycle (Channel::on_sync_motion, docs/conveyor.md S-1).
   if (handover_due()) synchronised_ = true;
   if (driving() && (t_catch_ >= catch_up_.duration() || handover_due())) {
@@ -130,7 +130,7 @@ std::optional<SyncError> ConveyorSync::step(double t) noexcept {
 axes::Result ConveyorSync::start_catch_up(std::span<const axes::MotionState> start,
                                           std::span<const double> target, double feed_cont,
                                           std::span<const axes::Dynamics> dynamics) noexcept {
-  // --- trafo: a catch-up not stepped yet may be re-planned (t_catch_ 0).
+  // A catch-up not stepped yet may be re-planned (t_catch_ 0).
   const bool again = phase_ == SyncPhase::catching_up && t_catch_ == 0.0;
   if ((phase_ != SyncPhase::latched && !again) || start.size() != n_ || target.size() != n_ ||
       (!dynamics.empty() && dynamics.size() != n_))
@@ -142,8 +142,8 @@ axes::Result ConveyorSync::start_catch_up(std::span<const axes::MotionState> sta
     in[i].start = start[i];
     in[i].target = target[i] + share_[i] * s_;
     in[i].conveying = share_[i];
-    in[i].dynamics = dynamics.empty() ? axes_[i].dynamics : dynamics[i];  // --- trafo
-    // --- conveyor: an axis the belt moves keeps NCSIM-CHAN-640 of A and J for the belt's own
+    in[i].dynamics = dynamics.empty() ? axes_[i].dynamics : dynamics[i];
+    // An axis the belt moves keeps NCSIM-CHAN-640 of A and J for the belt's own
     // changes, which ride on the catch-up as its deviation from the forecast (004 l.454).
     if (dynamics.empty() && share_[i] != 0.0 && reserve_ > 0.0) {
       in[i].dynamics.a_max *= 1.0 - reserve_;
@@ -160,7 +160,7 @@ axes::Result ConveyorSync::start_catch_up(std::span<const axes::MotionState> sta
   };
   if (!(feed_cont > 0.0) || u == planner::AxisVec{}) feed_cont = 0.0;
   axes::Result r = plan(feed_cont);
-  // --- sync-feed: "reduced as required" (004 l.284): no catch-up meets the target at
+  // "reduced as required" (004 l.284): no catch-up meets the target at
   // feed_cont (an axis would need more than its V): the largest relative velocity that plans.
   if (r != axes::Result::ok && feed_cont > 0.0 && plan(0.0) == axes::Result::ok) {
     double lo = 0.0;
@@ -196,7 +196,7 @@ axes::Result ConveyorSync::start_departure(std::span<const axes::MotionState> st
   }
   const axes::Result r = catch_up_.plan(std::span(in.data(), n_), 0.0, 0.0);
   if (r != axes::Result::ok) return r;
-  v_relative_ = 0.0;  // --- sync-feed: the departure ends at rest (S-2)
+  v_relative_ = 0.0;  // the departure ends at rest (S-2)
   phase_ = SyncPhase::departing;
   t_catch_ = 0.0;
   for (std::size_t i = 0; i < n_; ++i)
@@ -231,7 +231,7 @@ axes::Setpoint ConveyorSync::catch_up_setpoint(std::size_t i) const noexcept {
 
 std::optional<SyncError> ConveyorSync::workspace(const Eigen::Vector3d& p_mcs) const {
   if (!synchronised_) return std::nullopt;
-  if (hold_) {  // --- workspace: the hold line + P-CHAN-00367
+  if (hold_) {  // the hold line + P-CHAN-00367
     if (auto m = hold_->check(p_mcs[hold_->config().coord]))
       return SyncError{kWorkspaceHoldId, std::move(*m)};
   }
@@ -254,7 +254,7 @@ std::optional<SyncError> ConveyorSync::workspace(const Eigen::Vector3d& p_mcs) c
                    std::string(buf) + " against the conveying direction while synchronised"};
 }
 
-double ConveyorSync::workspace_cap(HoldState st) noexcept {  // --- workspace
+double ConveyorSync::workspace_cap(HoldState st) noexcept {
   if (!hold_) return WorkspaceHold::kNone;
   if (!synchronised_ || phase_ != SyncPhase::tracking) {
     hold_->reset();

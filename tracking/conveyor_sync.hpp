@@ -79,13 +79,13 @@ class ConveyorSync {
   /// applied: the ProgramSource's Move end), `feed_cont` the relative velocity [mm/s] along
   /// catch_up_direction(), --- sync-feed: reduced to the largest one the axes can meet the
   /// target with ("reduced as required", 004 l.284) when no plan exists for it.
-  /// --- trafo: `dynamics` (one per axis, or empty: the axes' own) replaces the axes' PTP
+  /// `dynamics` (one per axis, or empty: the axes' own) replaces the axes' PTP
   /// dynamics (under #TRAFO ON the TCP's, tracking/trafo_sync); a catch-up not stepped yet may be
   /// started again (re-planned with other dynamics).
   axes::Result start_catch_up(std::span<const axes::MotionState> start,
                               std::span<const double> target, double feed_cont,
                               std::span<const axes::Dynamics> dynamics = {}) noexcept;
-  // --- sync-feed: FEED_CONT > 0 / FEED_CONT_AUTO (docs/conveyor.md S-1, tracking/sync_entry.hpp)
+  // FEED_CONT > 0 / FEED_CONT_AUTO (docs/conveyor.md S-1, tracking/sync_entry.hpp)
   /// The relative velocity #SYNC IN asked for [mm/s]: FEED_CONT, +inf for FEED_CONT_AUTO, 0
   /// without either.
   double feed_cont_wanted() const noexcept { return feed_cont_; }
@@ -101,7 +101,6 @@ class ConveyorSync {
   /// the next cycle: the time from that cycle's start to the meeting [s], in [0, T); none
   /// otherwise (a catch-up at rest relative to the target rides along until the cycle after).
   std::optional<double> handover_lag() const noexcept;
-  // --- sync-feed: end
   /// The setpoint of axis i in the cycle step() prepared (catching_up and departing only).
   axes::Setpoint catch_up_setpoint(std::size_t i) const noexcept;
   const CatchUp& catch_up() const noexcept { return catch_up_; }
@@ -141,18 +140,17 @@ class ConveyorSync {
   /// synchronised: the conveying face NC9052, a side face NC9053, the face against the
   /// conveying direction or the hold line + P-CHAN-00367 NC9080 (docs/conveyor.md "Workspace").
   std::optional<SyncError> workspace(const Eigen::Vector3d& p_mcs) const;
-  // --- workspace: the hold methods against the conveying direction (tracking/workspace_hold.hpp)
+  // The hold methods against the conveying direction (tracking/workspace_hold.hpp)
   /// The path velocity cap for the next cycle [mm/s] (+inf: none): while tracking and
   /// synchronised, the hold decision on `st` (path, s, v, a, feed, line, d, j of the cycle
   /// just done; travel, belt velocity and cycle time are filled in here).
   double workspace_cap(HoldState st) noexcept;
   /// The hold (none when no face is against the conveying direction or no axis is on it).
   const WorkspaceHold* hold() const noexcept { return hold_ ? &*hold_ : nullptr; }
-  // --- workspace: end
   /// The display variables of the current cycle.
   MasterDisplay display() const noexcept;
   std::size_t axis_count() const noexcept { return n_; }
-  /// --- trafo: the PTP dynamics of axis i (V [mm/s | deg/s], A+, A-, J).
+  /// The PTP dynamics of axis i (V [mm/s | deg/s], A+, A-, J).
   const axes::Dynamics& dynamics(std::size_t i) const noexcept { return axes_[i].dynamics; }
   /// 0, 1, 2: interpolated axis i is X, Y, Z; -1: none.
   int xyz(std::size_t i) const noexcept { return axes_[i].xyz; }
@@ -190,7 +188,7 @@ class ConveyorSync {
   std::optional<WorkspaceHold> hold_;  ///< --- workspace
   double feed_cont_ = 0.0;             ///< --- sync-feed: feed_cont_wanted() [mm/s]
   double v_relative_ = 0.0;            ///< --- sync-feed: v_relative() [mm/s]
-  /// --- sync-feed: the moving hand-over is due in the cycle being prepared.
+  /// The moving hand-over is due in the cycle being prepared.
   bool handover_due() const noexcept {
     return phase_ == SyncPhase::catching_up && v_relative_ > 0.0 &&
            t_catch_ + t_cycle_ > catch_up_.duration();

@@ -301,7 +301,7 @@ TEST_CASE("the workspace is monitored only while synchronised, each face with it
   CHECK(r.sync.workspace(Eigen::Vector3d(0.0, 2550.0, 0.0))->id == "NC9053");
   const auto against = r.sync.workspace(Eigen::Vector3d(-201.0, 0.0, 0.0));
   REQUIRE(against);
-  CHECK(against->id == "NC9080");  // --- workspace: the hold's id (was NC6001 before the hold)
+  CHECK(against->id == "NC9080");  // the hold's id (was NC6001 before the hold)
   CHECK(against->message.find("face -200 mm against the conveying direction") != std::string::npos);
   // Inside the face but past the hold line (here the face: pos_limit 0) by less than the
   // tolerance 0: nothing; the hold's own tests are in workspace_hold_test.cpp.

@@ -40,7 +40,7 @@ planner::AxisLimits pcs1_limits(const planner::AxisLimits& axis, double conveyin
   return planner::belt_limits(axis, pcs1_belt(conveying, conv_vel));
 }
 
-double pcs1_belt(double conveying, double conv_vel) noexcept {  // --- sync-feed
+double pcs1_belt(double conveying, double conv_vel) noexcept {
   return std::fabs(conveying) * kBeltVelocityTolerance * conv_vel;
 }
 

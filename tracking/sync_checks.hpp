@@ -20,7 +20,7 @@ inline constexpr const char* kBeltTooFastId = "50653";
 inline constexpr const char* kConvVelTooHighId = "50587";
 /// The factor of 004 l.514: "If the actual velocity is 10 % higher than specified".
 inline constexpr double kBeltVelocityTolerance = 1.10;
-/// --- belt-split: the relative rounding a belt velocity measured from position differences
+/// The relative rounding a belt velocity measured from position differences
 /// may carry above the limit and still pass [1]. (p_k - p_k-1) / T with |p| the belt travel
 /// rounds by up to 2.2e-16 |p| / T (an ulp of each position), the filter's weighted sum adds
 /// a few ulp of v: 1e-9 of 330 mm/s (0.33 um/s) covers a travel up to 1e-9 v T / 2.2e-16 =
@@ -56,7 +56,7 @@ std::optional<SyncError> check_conv_vel(const planner::AxisLimits& axis, double 
 /// unchanged: the belt's own acceleration adds to them (docs/conveyor.md). Requires
 /// check_conv_vel() passed; a v_max that would drop to 0 or less is kept at 1 % of itself.
 planner::AxisLimits pcs1_limits(const planner::AxisLimits& axis, double conveying, double conv_vel);
-/// --- sync-feed: the velocity the belt takes of that axis in pcs1_limits [mm/s]:
+/// The velocity the belt takes of that axis in pcs1_limits [mm/s]:
 /// |conveying| * 1.10 * conv_vel (what ProgramSource puts into planner::Move::belt).
 double pcs1_belt(double conveying, double conv_vel) noexcept;
 

@@ -80,7 +80,7 @@ struct MasterDisplay {
   double pos_master_comp = 0.0;
   double v_master_comp = 0.0;  ///< master velocity along PCS0 X [mm/s]
   double a_master_comp = 0.0;  ///< master acceleration along PCS0 X [mm/s^2]
-  // --- line: filled by Channel::master_display() (tracking/synchro_lag.hpp), 0 elsewhere
+  // Filled by Channel::master_display() (tracking/synchro_lag.hpp), 0 elsewhere
   /// Machine minus real workpiece along the conveying direction [mm] while the frame moves.
   double synchro_lag = 0.0;
 };

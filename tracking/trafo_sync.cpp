@@ -149,7 +149,7 @@ std::optional<axes::Dynamics> tcp_dynamics(const planner::JointMap& inverse, std
   return out;
 }
 
-// --- belt-jerk: the belt's share of the joints on a PCS1 block (header, docs/conveyor.md).
+// The belt's share of the joints on a PCS1 block (header, docs/conveyor.md).
 
 bool path_belt_derivatives(const planner::JointMap& inverse, std::array<int, 3> xyz,
                            const planner::PathPoint& p, std::size_t axis_count,

@@ -60,7 +60,7 @@ std::optional<axes::Dynamics> tcp_dynamics(const planner::JointMap& inverse, std
                                            std::span<const axes::Dynamics> joints,
                                            std::span<const AxisVec> points) noexcept;
 
-// --- belt-jerk: machining in PCS1 under #TRAFO ON (docs/conveyor.md "Machining in PCS1").
+// Machining in PCS1 under #TRAFO ON (docs/conveyor.md "Machining in PCS1").
 // A PCS1 block x(s) runs with the belt's travel b along the conveying direction e on top: the
 // joints are q(s, b) = IK(x(s) + b e). With v = s', a = s'', j = s''' and the belt at constant
 // velocity w = b' (a belt's own acceleration goes into the joints unreserved, l.454):

@@ -162,7 +162,7 @@ TEST_CASE("NC9080 only beyond the line by more than hold_limit_tolerance, or bey
   CHECK(f->find("face") != std::string::npos);
 }
 
-// --- hold: across block ends (docs/conveyor.md "Across block ends")
+// Across block ends (docs/conveyor.md "Across block ends")
 TEST_CASE("simple method across block ends: the run that crosses in a later block caps now") {
   // 5 blocks of -120 mm at 200 mm/s against a 100 mm/s belt: the crossing (MCS X -190) lies in
   // the 4th block; the whole run is capped from the first one.

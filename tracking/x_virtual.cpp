@@ -169,7 +169,7 @@ std::optional<XvError> finish(planner::Move& mv, double length, const XVirtualPa
   mv.rapid = false;
   mv.block_time.reset();
   mv.end_feed.reset();
-  // --- static-blend: a curved part is planned at the velocity its steepest point needs (its
+  // A curved part is planned at the velocity its steepest point needs (its
   // smallest X share), so the plan is nowhere slower than the belt asks; where it is faster the
   // channel's velocity cap brings the X component down to the belt's (channel/channel_static.cpp).
   mv.feed = std::max(p.v_belt * length / std::fabs(dx), peak_feed);

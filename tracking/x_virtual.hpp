@@ -84,7 +84,7 @@ XvOutcome belt_feed(const planner::Move& mv, const XVirtualParams& p,
                     std::span<const planner::AxisLimits> limits,
                     std::span<const std::string> names);
 
-/// --- static-blend: the tolerance ball (G61 / G261) the planner puts between belt-fed parts `in`
+/// The tolerance ball (G61 / G261) the planner puts between belt-fed parts `in`
 /// (ending with the ball) and `out` (the next part), as planner::Preparer builds it
 /// (planner::corner_blend, DEV or DIST, each side at most half of its part). Its X share |dX/ds|
 /// varies; the path must be able to run at v_belt / |dX/ds| everywhere in it, so both parts' feeds
@@ -98,7 +98,7 @@ std::optional<XvError> blend_belt_feed(planner::Move& in, planner::Move& out,
                                        std::span<const planner::AxisLimits> limits,
                                        std::span<const std::string> names);
 
-/// --- static-c1: the joint of two belt-fed parts `in` and `out` that meet without a tolerance
+/// The joint of two belt-fed parts `in` and `out` that meet without a tolerance
 /// ball (a line or an arc into an arc, spline pieces, a knee of less than 1 deg). The path must
 /// pass it at v_belt / |dX/ds| (the X share at the joint); the planner passes it at most at its
 /// own link velocity (planner::link_velocity with the limits `limits` and `channel` it plans

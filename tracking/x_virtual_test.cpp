@@ -186,7 +186,7 @@ TEST_CASE("a tolerance ball raises both neighbours' feeds to the belt feed of it
 }
 
 TEST_CASE("a joint without a ball that the planner passes below the belt's need is NC9100") {
-  // --- static-c1: a line along -X into a tangent G02 arc of R 300 turning towards +Y: the
+  // A line along -X into a tangent G02 arc of R 300 turning towards +Y: the
   // curvature jumps by 1/300 mm^-1, all of it in Y (a C1 joint). The planner's C1 rule allows
   // sqrt(j_Y T / |dx''_Y|) = sqrt(200000 x 0.001 x 300) = 244.9 mm/s there (T = 1 ms); the X
   // share at the joint is 1, so the path must pass it at the belt's velocity.
