@@ -189,6 +189,14 @@ void run_into(Audit& audit, const std::vector<planner::AxisLimits>& axes, std::v
   }
 }
 
+/// The C1 steps of `items` run and audited against `axes` (T = 1 ms); the run must be clean.
+StepKind clean_c1_steps(const std::vector<planner::AxisLimits>& axes, std::vector<Item> items) {
+  Audit audit(axes, 0.001, AxisVec{});
+  run_into(audit, axes, std::move(items));
+  CHECK(audit.verdict().ok());
+  return audit.verdict().step_kinds[step_kind(Quantity::c1_step)];
+}
+
 TEST_CASE("a reversal at C0 = 1, A = 10000, T = 1 ms: link 5 mm/s, step 10 mm/s = the bound") {
   const std::vector<planner::AxisLimits> axes(3, axis(200.0, 10000.0, 1e5, 1.0));
   Audit audit(axes, 0.001, AxisVec{});
@@ -280,11 +288,7 @@ TEST_CASE("a knee into an arc: its acceleration step is held to j T like a C1 st
   planner::Move in = line(vec(0, 0), vec(50, 0), 100.0, 1);
   planner::Move arc = line(vec(50, 0), vec(60.001, 10), 100.0, 2);
   arc.arc = planner::Arc{0, 1, 50.001, 10.0, false, false};  // G03, centre (50.001, 10)
-  Audit audit(axes, 0.001, AxisVec{});
-  run_into(audit, axes, {in, arc});
-  const Verdict& v = audit.verdict();
-  CHECK(v.ok());
-  const StepKind& c1 = v.step_kinds[step_kind(Quantity::c1_step)];
+  const StepKind c1 = clean_c1_steps(axes, {in, arc});
   REQUIRE(c1.count >= 1);
   CHECK(c1.closest.axis == 1);
   CHECK(c1.closest.v_link == doctest::Approx(std::sqrt(1e5 * 1e-3 * 10.0)).epsilon(1e-3));
@@ -354,11 +358,7 @@ TEST_CASE("a #TRANSVELMIN knee into an arc keeps the jerk limitation (PROG-20748
   planner::Move arc = line(vec(50, 0), vec(cx + std::cos(phi), cy + std::sin(phi)), 100.0, 2);
   arc.arc = planner::Arc{0, 1, cx, cy, false, false};
   in.transvelmin = 100.0;
-  Audit audit(axes, 0.001, AxisVec{});
-  run_into(audit, axes, {in, arc});
-  const Verdict& v = audit.verdict();
-  CHECK(v.ok());
-  const StepKind& c1 = v.step_kinds[step_kind(Quantity::c1_step)];
+  const StepKind c1 = clean_c1_steps(axes, {in, arc});
   REQUIRE(c1.count >= 1);
   // Y's curvature jumps by cos 30 / R: v = sqrt(j T R / cos 30) = 7.60 mm/s, not 100.
   CHECK(c1.closest.v_link == doctest::Approx(std::sqrt(5e4 * 1e-3 / std::sqrt(0.75))));

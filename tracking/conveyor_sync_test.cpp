@@ -51,6 +51,18 @@ struct Run {
   std::optional<SyncError> cycle() { return sync.step(static_cast<double>(++k) * kT); }
 };
 
+/// #SYNC IN at 300 mm/s, the measured value at belt position 0, then the catch-up from the tool
+/// at rest at MCS (0, 0, 0) to the programmed point PCS1 (150, 40, -10), T0 applied.
+void latch_and_catch_up(Run& r) {
+  REQUIRE_FALSE(r.sync.sync_in(sync_in(300.0)));
+  r.port.latches_.push_back(0.0);
+  REQUIRE_FALSE(r.cycle());
+  REQUIRE(r.sync.phase() == SyncPhase::latched);
+  const std::array<axes::MotionState, 3> start{};
+  const std::array<double, 3> target{50.0, 40.0, -10.0};
+  REQUIRE(r.sync.start_catch_up(start, target, 0.0) == axes::Result::ok);
+}
+
 TEST_CASE("#SYNC IN waits for the measured value, then PCS1 moves with the master travel") {
   Run r;
   REQUIRE_FALSE(r.sync.sync_in(sync_in(300.0)));
@@ -73,14 +85,7 @@ TEST_CASE("#SYNC IN waits for the measured value, then PCS1 moves with the maste
 
 TEST_CASE("after the catch-up the tool stands still in PCS1: X follows the belt exactly") {
   Run r;
-  REQUIRE_FALSE(r.sync.sync_in(sync_in(300.0)));
-  r.port.latches_.push_back(0.0);
-  REQUIRE_FALSE(r.cycle());
-  REQUIRE(r.sync.phase() == SyncPhase::latched);
-  // The tool at rest at MCS (0, 0, 0); the programmed point PCS1 (150, 40, -10), T0 applied.
-  const std::array<axes::MotionState, 3> start{};
-  const std::array<double, 3> target{50.0, 40.0, -10.0};
-  REQUIRE(r.sync.start_catch_up(start, target, 0.0) == axes::Result::ok);
+  latch_and_catch_up(r);
   const double t_meet = r.sync.catch_up().duration();
   CHECK(t_meet > 0.0);
   std::array<double, 3> last{};
@@ -194,13 +199,7 @@ TEST_CASE(
   Run r;
   r.port.v_lag_ = 1.6;       // the reported velocity behind the position's slope
   r.port.a_report_ = 94.25;  // the reported acceleration (15 mm/s x 2 pi 1/s)
-  REQUIRE_FALSE(r.sync.sync_in(sync_in(300.0)));
-  r.port.latches_.push_back(0.0);
-  REQUIRE_FALSE(r.cycle());
-  REQUIRE(r.sync.phase() == SyncPhase::latched);
-  const std::array<axes::MotionState, 3> start{};
-  const std::array<double, 3> target{50.0, 40.0, -10.0};
-  REQUIRE(r.sync.start_catch_up(start, target, 0.0) == axes::Result::ok);
+  latch_and_catch_up(r);
   for (int guard = 0; guard < 10000 && r.sync.phase() != SyncPhase::tracking; ++guard)
     REQUIRE_FALSE(r.cycle());
   REQUIRE(r.sync.phase() == SyncPhase::tracking);
