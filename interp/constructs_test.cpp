@@ -348,6 +348,17 @@ TEST_CASE("#CONTOUR MODE: PATH_DEV, PRE_DIST or POST_DIST <= 0 is NC4031 at its 
   CHECK(run("%t\n#CONTOUR MODE [DIST, PRE_DIST=0.2, POST_DIST=3]\nM30\n").error_id.empty());
 }
 
+TEST_CASE("#CONTOUR MODE CONST_VEL=1 is not supported (NC4104); CONST_VEL=0 is ncsim's way") {
+  // TF5200 "Velocity curve in the contouring section" (PROG-475135755): CONST_VEL=0, the
+  // default, runs the contouring section at the maximum permissible path velocity, as ncsim
+  // plans its balls; CONST_VEL=1 keeps the path velocity constant in it, which ncsim does not
+  // plan: it answers "not supported" instead of running the ball the other way.
+  const auto bad = run("%t\nG01 X1 F100\n#CONTOUR MODE [DEV PATH_DEV=0.1 CONST_VEL=1]\nM30\n");
+  CHECK(bad.error_id == "NC4104");
+  CHECK(bad.error_line == 3);
+  CHECK(run("%t\n#CONTOUR MODE [DEV PATH_DEV=0.1 CONST_VEL=0]\nM30\n").error_id.empty());
+}
+
 TEST_CASE("#SLOPE sets the slope type; an unknown type is NC4509") {
   auto c = commands("%t\n#SLOPE [TYPE=TRAPEZ]\nG00 X1\n#SLOPE [TYPE=SIN2]\nG00 X2\nM30\n");
   REQUIRE(c.error_id.empty());

@@ -448,6 +448,18 @@ bool HashCommands::hash_contour_mode(const ast::Block& b, const ast::HashCommand
       *slot = *v;
     }
   }
+  // TF5200 PROG-475135755: CONST_VEL=0 (the default) runs the contouring section at the
+  // maximum permissible velocity, as the planner does; CONST_VEL=1 (constant velocity in it,
+  // 000 l.366's tolerance ball) is not planned (docs/planner.md "Tolerance balls").
+  if (const ast::Item* it = items.find("CONST_VEL")) {
+    auto v = item_value(b, it);
+    if (!v) return false;
+    if (*v != 0.0)
+      return ip_.fail(it->loc, "NC4104",
+                      "#CONTOUR MODE CONST_VEL=" + core::number_text(*v) +
+                          " (a constant path velocity in the contouring section) is not "
+                          "supported by ncsim; it plans CONST_VEL=0, the default");
+  }
   if (h.kind == HashKind::contour_mode_on) ip_.modal.contouring = true;
   return true;
 }
