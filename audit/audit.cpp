@@ -9,15 +9,15 @@
 #include <string>
 
 #include "audit/contour.hpp"
+#include "core/tolerance.hpp"
 
 namespace ncsim::ipo {
 
 namespace {
 
-constexpr double kRelative = 1e-9;        // values within limit (1 + 1e-9) pass
+constexpr double kRelative = kRelTol;     // values within limit (1 + 1e-9) pass
 constexpr double kStepNoise = 1e-8;       // [1] a joint's velocity step below this x v: rounding
 constexpr double kPositionNoise = 1e-10;  // [mm] absolute rounding of a cycle position
-constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 }  // namespace
 
@@ -95,10 +95,10 @@ void Audit::joint_step_formulas(const Joint& jt) {
     const double dw = std::abs(jt.dw[i]);
     qdv_[i][0] += dq;
     qda_[i][0] += dw;
-    if (dq > 1e-12 * std::max(1.0, jt.v))
+    if (dq > kRelRounding * std::max(1.0, jt.v))
       formula_step(Quantity::velojump, i, jt, dq, l.c0 * std::min(l.a_max, l.d_max) * t_, true);
     if (jt.cls != planner::TransitionClass::c2 && jt.jerk_limited && jt.c1_limited &&
-        dw > 1e-12 * std::max(1.0, jt.v * jt.v))
+        dw > kRelRounding * std::max(1.0, jt.v * jt.v))
       formula_step(Quantity::c1_step, i, jt, dw, l.j_max * t_, true);
   }
 }
@@ -145,7 +145,7 @@ void Audit::step_formulas(const Joint& jt) {
     // kernel does not reduce the velocity for it: the step is listed against the acceleration
     // limits alone, A+ + |A-| (the most a step between two cycles within them can be).
     if (jt.cls != planner::TransitionClass::c2 && jt.jerk_limited &&
-        da > 1e-9 * std::max(1.0, jt.v * jt.v))
+        da > planner::kCurvatureFloor * std::max(1.0, jt.v * jt.v))
       formula_step(Quantity::c1_step, i, jt, da, jt.c1_limited ? l.j_max * t_ : l.a_max + l.d_max,
                    false);
   }
@@ -183,7 +183,7 @@ void Audit::check_motion(std::size_t i, bool joint, const Stencil& st, AxisAudit
   // Finite differences of the positions.
   x = {pos, x[0], x[1], x[2]};
   const double mag = std::max({std::abs(x[0]), std::abs(x[1]), std::abs(x[2]), std::abs(x[3])});
-  const double noise = kPositionNoise + 4.0 * kEps * mag;
+  const double noise = kPositionNoise + 4.0 * kMachineEpsilon * mag;
   const double vd = std::abs(x[0] - x[1]) / t_;
   const double ad = std::abs(x[0] - 2.0 * x[1] + x[2]) / t2;
   const double jd = std::abs(x[0] - 3.0 * x[1] + 3.0 * x[2] - x[3]) / t3;
@@ -275,7 +275,7 @@ void Audit::on_cycle(const Cycle& c) {
     // DEV: PATH_DEV; DIST: max(PRE_DIST, POST_DIST), the ball its curve provably stays in
     // (planner::contour_bound, docs/planner.md "DIST").
     const double tol = planner::contour_bound(m);
-    const double allowed = tol + 1e-9 * mag;
+    const double allowed = tol + kRelTol * mag;
     AxisVec x = c.x;  // INDP axes are not part of the block's contour
     for (std::size_t i = 0; i < limits_.size(); ++i)
       if (((c.independent >> i) & 1u) != 0) x[i] = m.start[i];

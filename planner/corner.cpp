@@ -51,7 +51,8 @@ TransitionClass classify_at_angle(const PathPoint& in_end, const PathPoint& out_
     curv_size = std::max({curv_size, std::abs(out_start.d2[i]), std::abs(in_end.d2[i])});
   }
   if (angle > kTangentTolerance || tangent_gap > kTangentTolerance) return TransitionClass::c0;
-  if (curv_gap > std::max(kCurvatureTolerance * curv_size, 1e-9)) return TransitionClass::c1;
+  if (curv_gap > std::max(kCurvatureTolerance * curv_size, kCurvatureFloor))
+    return TransitionClass::c1;
   return TransitionClass::c2;
 }
 

@@ -42,6 +42,8 @@ enum class TransitionClass : std::uint8_t {
 inline constexpr double kTangentTolerance = 1e-6;
 /// Curvature vectors closer than this (relative to the larger, or 1e-9 /mm absolute) are equal.
 inline constexpr double kCurvatureTolerance = 1e-6;
+/// Curvature vectors closer than this count as equal whatever their size [1/mm].
+inline constexpr double kCurvatureFloor = 1e-9;
 
 /// Which rule set the link velocity.
 enum class LinkRule : std::uint8_t {
