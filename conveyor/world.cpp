@@ -17,10 +17,6 @@ constexpr const char* kNotConveyor = "NC9004";
 constexpr const char* kTooFast = "NC9005";
 constexpr const char* kEncoderBelt = "NC9006";
 
-std::string num(double v) {
-  return core::number_text(v);
-}
-
 const machines::AxisParams& conveyor_axis(const machines::Machine& m) {
   const machines::AxisParams* a = m.conveyor_axis();
   if (a == nullptr || !a->conveyor) {
@@ -78,8 +74,8 @@ World::World(const machines::Machine& m, const scenario::Scenario* s, double t_c
       axis_index_(index_of(m, *axis_)),
       t_cycle_(t_cycle > 0.0 && std::isfinite(t_cycle)
                    ? t_cycle
-                   : throw std::invalid_argument("conveyor: cycle time " + num(t_cycle) +
-                                                 " s is not > 0")),
+                   : throw std::invalid_argument("conveyor: cycle time " +
+                                                 core::number_text(t_cycle) + " s is not > 0")),
       encoder_(encoder_mode(*axis_, s)),
       method_(measuring_method(axis_->measure_signal)),
       probe_input_(axis_->measure_input),
@@ -213,9 +209,10 @@ bool World::command_velocity(const machines::MoveVelocity& c) noexcept {
   }
   const machines::Dynamics& d = axis_->dynamics;
   if (c.velocity > d.v_max) {
-    raise(kTooFast, "MC_MoveVelocity Velocity " + num(c.velocity * 1000.0) + " um/s (" +
-                        num(c.velocity) + " mm/s) is above conveyor axis " + axis_->name +
-                        "'s P-AXIS-00212 vb_max " + num(d.v_max) + " mm/s");
+    raise(kTooFast, "MC_MoveVelocity Velocity " + core::number_text(c.velocity * 1000.0) +
+                        " um/s (" + core::number_text(c.velocity) +
+                        " mm/s) is above conveyor axis " + axis_->name + "'s P-AXIS-00212 vb_max " +
+                        core::number_text(d.v_max) + " mm/s");
     return false;
   }
   double v = c.velocity;

@@ -32,8 +32,7 @@ void JointReport::between(const planner::PlannedSegment& in, const planner::Plan
   // axis acceleration by a dx' too).
   jt.v = v;
   jt.rule = in.segment.rule;
-  // #TRANSVELMIN acts at discontinuous transitions, not with G261 (isg-language.md §5.6).
-  jt.transvelmin = planner::contoured(prog_in) ? 0.0 : prog_in.transvelmin.value_or(0.0);
+  jt.transvelmin = planner::transvelmin_at_end(prog_in).value_or(0.0);
   for (std::size_t i = 0; i < axis_count_; ++i) {
     jt.dv[i] = v * (p_out.d1[i] - p_in.d1[i]);
     jt.da[i] = v * v * (p_out.d2[i] - p_in.d2[i]) + a * (p_out.d1[i] - p_in.d1[i]);

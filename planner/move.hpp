@@ -144,6 +144,13 @@ constexpr bool contoured(const Move& move) noexcept {
   return move.contour != Contour::none;
 }
 
+/// The minimum transition velocity at the corner at the end of `move` [mm/s]: its
+/// #TRANSVELMIN, which acts at discontinuous transitions only, not under G61 / G261
+/// (isg-language.md §5.6); none without it.
+constexpr std::optional<double> transvelmin_at_end(const Move& move) noexcept {
+  return contoured(move) ? std::nullopt : move.transvelmin;
+}
+
 /// The distance from the programmed corner that the contour at the end of `move` may reach,
 /// the bound its blend provably stays within (blend.hpp): PATH_DEV under DEV,
 /// max(PRE_DIST, POST_DIST) under DIST (decision, docs/planner.md "DIST"), 0 without

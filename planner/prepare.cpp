@@ -179,8 +179,7 @@ void Preparer::emit_joint(PreparedSegment in, const Move& in_move, const Segment
                           const JointEnds* ends) {
   const std::uint8_t n = std::max(in.path.axis_count(), out_path.axis_count());
   const AxisMask metric = in.path.metric() | out_path.metric();
-  // #TRANSVELMIN acts at discontinuous transitions, not with G261 (isg-language.md §5.6).
-  const std::optional<double> v_min = contoured(in_move) ? std::nullopt : in_move.transvelmin;
+  const std::optional<double> v_min = transvelmin_at_end(in_move);
   const std::span<const AxisLimits> axes =
       slopes_at_joint(axes_for(in_move), in_move.rapid, out_rapid);
   const Link link =

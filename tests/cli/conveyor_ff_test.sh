@@ -38,28 +38,27 @@ velocity_consistent() {
     END { printf "%.6g %s %s %.6g\n", worst, wa, wt, we; exit !(seen && worst <= 0) }'
 }
 
-for prog in belt_stop conveyor_squares synchro_lag_comoving; do
-  "$ncsim" run --detail -o "$work/$prog.csv" "$root/programs/$prog/$prog.nc" 2>/dev/null
+# expect_consistent LABEL CSV: X.v, Y.v, Z.v of CSV are the velocity at the cycle's end.
+expect_consistent() {
   checks=$((checks + 1))
-  if worst=$(velocity_consistent "$work/$prog.csv"); then
-    echo "ok   $prog: X.v, Y.v, Z.v are the velocity at the cycle's end of X, Y, Z ($worst)"
+  if worst=$(velocity_consistent "$2"); then
+    echo "ok   $1: X.v, Y.v, Z.v are the velocity at the cycle's end of X, Y, Z ($worst)"
   else
     failures=$((failures + 1))
-    echo "FAIL $prog: |v - dx/T| beyond T/2 max|a| + J T^2/4 (excess, axis, t, |v - dx/T|: $worst)"
+    echo "FAIL $1: |v - dx/T| beyond T/2 max|a| + J T^2/4 (excess, axis, t, |v - dx/T|: $worst)"
   fi
+}
+
+for prog in belt_stop conveyor_squares synchro_lag_comoving; do
+  "$ncsim" run --detail -o "$work/$prog.csv" "$root/programs/$prog/$prog.nc" 2>/dev/null
+  expect_consistent "$prog" "$work/$prog.csv"
 done
 
 # The fluctuating belt (tests/cli/conveyor_ff/scenario.toml): 300 mm/s +-5 % at 1 Hz, dead time
 # D = 17.455 ms, no noise; the program switches the filters off and sets P-AXIS-00626 = D.
 "$ncsim" run --detail -o "$work/fl.csv" --machine "$root/machines/laser_portal_encoder" \
   --scenario "$here/scenario.toml" "$here/fluctuating.nc" 2>/dev/null
-checks=$((checks + 1))
-if worst=$(velocity_consistent "$work/fl.csv"); then
-  echo "ok   fluctuating belt: X.v is the velocity at the cycle's end of X ($worst)"
-else
-  failures=$((failures + 1))
-  echo "FAIL fluctuating belt: |v - dx/T| beyond the bound (excess, axis, t, |v - dx/T|: $worst)"
-fi
+expect_consistent "fluctuating belt" "$work/fl.csv"
 # synchro_lag in the dwell (N060, line 11), from 0.5 s after its start (the catch-up's transient
 # gone, 10 time constants 1/Kv) to its end: 3.5 s, 3.5 periods. Half its peak-to-peak range
 # against
