@@ -131,7 +131,11 @@ bool ActiveSegment::replan(double f, double cap, double s, double v, double a) n
   r.d = cur_.d_max;
   r.j = cur_.j_max;
   double v_cap = lim.v_max;
-  if (f > 1.0 && type_ == OverrideType::reduced_above_100) {
+  // Above 100 %, and after it while the path still runs above the planned cap (an override
+  // lowered from above 100 %), the limits at the raised velocity hold: the planned a, d, j
+  // are those at the planned cap, and on a curve less is left at a higher velocity.
+  const bool raised = f > 1.0 || v > lim.v_max;
+  if (raised && type_ == OverrideType::reduced_above_100) {
     if (!raised_ready_) {
       // Under #TRAFO ON the joints' G00 rule (ipo/override_trafo.cpp). A PCS1 block keeps its
       // 100 % plan where the belt shares its joints' or axes' velocity (belt_capped).
@@ -143,7 +147,7 @@ bool ActiveSegment::replan(double f, double cap, double s, double v, double a) n
                                               : raised_limits(cur_, axes_);
       raised_ready_ = true;
     }
-    v_cap = raised_.v_max;
+    if (f > 1.0) v_cap = raised_.v_max;
     r.a = raised_.a;
     r.d = raised_.d;
     r.j = raised_.j;

@@ -128,6 +128,8 @@ RaisedLimits raised_limits(const planner::PlannedSegment& entry,
   const planner::Chain& path = entry.segment.path;
   const std::size_t n = std::min<std::size_t>(path.axis_count(), axes.size());
   planner::DerivativeBounds b;
+  b.curvature = 0.0;
+  b.metric = ~planner::AxisMask{0};
   for (std::size_t p = 0; p < path.parts(); ++p) {
     const planner::DerivativeBounds pb = path.part(p).bounds();
     for (std::size_t i = 0; i < n; ++i) {
@@ -135,6 +137,8 @@ RaisedLimits raised_limits(const planner::PlannedSegment& entry,
       b.d2[i] = std::max(b.d2[i], pb.d2[i]);
       b.d3[i] = std::max(b.d3[i], pb.d3[i]);
     }
+    b.curvature = std::max(b.curvature, pb.curvature);  // the orthogonal budget of every part
+    b.metric &= pb.metric;
   }
   // G00 rule (000 l.360): each axis at MIN(rapid, reference, maximum) along its share.
   double rapid = std::numeric_limits<double>::infinity();

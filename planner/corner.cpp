@@ -12,10 +12,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-bool has(AxisMask mask, std::size_t i) {
-  return ((mask >> i) & 1U) != 0;
-}
-
 }  // namespace
 
 double tangent_angle(const AxisVec& t_in, const AxisVec& t_out, std::size_t axis_count,

@@ -113,8 +113,17 @@ PathLimits limits_from_bounds(const DerivativeBounds& b, std::span<const AxisLim
     const double down = curved ? std::min(ax.a_max, ax.d_max) : ax.d_max;
     const double centripetal = b.d2[i] * v * v;
     if (b.d1[i] > kTiny) {
-      a_plus = std::min(a_plus, (up - centripetal) / b.d1[i]);
-      a_minus = std::min(a_minus, (down - centripetal) / b.d1[i]);
+      // Two bounds of the axis acceleration, each safe alone: |x'_i| a + |x''_i| v^2, and on a
+      // metric axis sqrt(a^2 + (curvature v^2)^2) (x' orthogonal to x''); the larger A wins.
+      const double curv = has(b.metric, i) ? b.curvature * v * v : kInf;
+      const auto allowed = [&](double a_axis_max) {
+        const double linear = (a_axis_max - centripetal) / b.d1[i];
+        return curv < a_axis_max
+                   ? std::max(linear, std::sqrt(a_axis_max * a_axis_max - curv * curv))
+                   : linear;
+      };
+      a_plus = std::min(a_plus, allowed(up));
+      a_minus = std::min(a_minus, allowed(down));
     }
     if (jerk && curved && v > 0.0) {
       const double cross = kCrossJerkShare * ax.j_max / (3.0 * b.d2[i] * v);

@@ -25,6 +25,11 @@ inline constexpr std::size_t kMaxAxes = 16;
 using AxisVec = std::array<double, kMaxAxes>;  ///< one value per machine axis [mm | deg]
 using AxisMask = std::uint32_t;                ///< bit i: machine axis i
 
+/// Whether axis i is in the mask.
+constexpr bool has(AxisMask mask, std::size_t i) {
+  return ((mask >> i) & 1U) != 0;
+}
+
 /// Block transition at the end of a block (isg-language.md §2.4).
 enum class Transition : std::uint8_t {
   accelerate_at_start,  ///< G08 (modal, initial): normal look-ahead

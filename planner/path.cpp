@@ -22,10 +22,6 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
-bool has(AxisMask mask, std::size_t i) {
-  return ((mask >> i) & 1U) != 0;
-}
-
 /// Largest |cos(theta)| over theta in [a, b] (a <= b).
 double max_abs_cos(double a, double b) {
   if (b - a >= std::numbers::pi) return 1.0;
@@ -275,9 +271,11 @@ Segment Segment::trimmed(double s0, double s1) const noexcept {
 
 DerivativeBounds Segment::bounds() const noexcept {
   DerivativeBounds b;
+  b.metric = metric_;
   if (const auto* l = std::get_if<LineGeom>(&geom_)) {
     for (std::size_t i = 0; i < n_; ++i)
       b.d1[i] = std::abs(l->dir[i]);
+    b.curvature = 0.0;
     return b;
   }
   if (const auto* a = std::get_if<ArcGeom>(&geom_)) {
@@ -287,6 +285,7 @@ DerivativeBounds Segment::bounds() const noexcept {
     const double hi = std::max(t0, t1);
     const double w = std::abs(a->omega);
     const double r = a->radius;
+    b.curvature = r * w * w;
     // Axis i's circle part is r A cos(theta - phi), A = |(u_i, v_i)|, phi = atan2(v_i, u_i):
     // |x'| <= |lin| + r w A |sin|, |x''| = r w^2 A |cos|, |x'''| = r w^3 A |sin| over the range.
     for (std::size_t i = 0; i < n_; ++i) {

@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <variant>
 
 #include "planner/move.hpp"
@@ -34,6 +35,11 @@ struct DerivativeBounds {
   AxisVec d1{};  ///< max |dx_i/ds| [1]
   AxisVec d2{};  ///< max |d2x_i/ds2| [1/mm]
   AxisVec d3{};  ///< max |d3x_i/ds3| [1/mm^2]
+  /// Largest curvature |x''| over the metric axes [1/mm]; +inf when not known. There x' is a
+  /// unit vector orthogonal to x'', so a metric axis's acceleration x'_i a + x''_i v^2 is at
+  /// most sqrt(a^2 + (curvature v^2)^2) (docs/planner.md "Path limits").
+  double curvature = std::numeric_limits<double>::infinity();
+  AxisMask metric = 0;  ///< the axes the curvature bound holds for
 };
 
 namespace geom {

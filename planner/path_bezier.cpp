@@ -19,10 +19,6 @@ namespace ncsim::planner {
 
 namespace {
 
-bool has(AxisMask mask, std::size_t i) {
-  return ((mask >> i) & 1U) != 0;
-}
-
 // 5-point Gauss-Legendre nodes and weights on [-1, 1].
 constexpr std::array<double, 5> kGlX = {-0.9061798459386640, -0.5384693101056831, 0.0,
                                         0.5384693101056831, 0.9061798459386640};
@@ -692,11 +688,15 @@ DerivativeBounds Segment::bezier_bounds() const noexcept {
       }
     }
   }
+  double curvature2 = 0.0;  // the per-axis maxima bound |x''| over the metric axes
   for (std::size_t i = 0; i < n_; ++i) {
     b.d1[i] = has(metric_, i) ? std::min(1.0, b.d1[i] * kMargin) : b.d1[i] * kMargin;
     b.d2[i] *= kMargin;
     b.d3[i] *= kMargin;
+    if (has(metric_, i)) curvature2 += b.d2[i] * b.d2[i];
   }
+  b.curvature = std::sqrt(curvature2);
+  b.metric = metric_;
   return b;
 }
 
