@@ -24,14 +24,17 @@ std::optional<core::Diagnostic> error_of(const std::string& text, const std::str
   return std::nullopt;
 }
 
+/// True when `e` is NC4102 at `line` (and `column`, unless 0).
+bool nc4102_at(const std::optional<core::Diagnostic>& e, std::uint32_t line,
+               std::uint32_t column = 0) {
+  return e && e->id == "NC4102" && e->loc.line == line && (column == 0 || e->loc.column == column);
+}
+
 const char* kTrafo = "%t\nV.G.NP[1].V.X = 10\nG54\n#KIN ID[37]\n#TRAFO ON\n";
 
 TEST_CASE("a zero offset under #TRAFO ON is NC4102 at the axis word, naming offset and group") {
   const auto e = error_of(std::string(kTrafo) + "G01 Y1 X2 F600\nM30\n", "delta_picker");
-  REQUIRE(e);
-  CHECK(e->id == "NC4102");
-  CHECK(e->loc.line == 6);
-  CHECK(e->loc.column == 8);  // the X word
+  REQUIRE(nc4102_at(e, 6, 8));  // the X word
   CHECK(e->message.find("zero offset 10 of axis X (G54, V.G.NP[1].V.X) under #TRAFO ON") !=
         std::string::npos);
 }
@@ -44,10 +47,7 @@ TEST_CASE("under #TRAFO ON an axis without offset, G53 or an incremental move ru
 }
 
 TEST_CASE("under #TRAFO ON a G161 absolute circle centre with an offset is NC4102 too") {
-  const auto e = error_of(std::string(kTrafo) + "G161 G02 I5 J0 F600\nM30\n", "delta_picker");
-  REQUIRE(e);
-  CHECK(e->id == "NC4102");
-  CHECK(e->loc.line == 6);
+  CHECK(nc4102_at(error_of(std::string(kTrafo) + "G161 G02 I5 J0 F600\nM30\n", "delta_picker"), 6));
 }
 
 TEST_CASE("G159=n names its group in the NC4102 text") {
@@ -63,10 +63,7 @@ const char* kSync =
 
 TEST_CASE("a zero offset between #SYNC IN and #SYNC OUT is NC4102 at the axis word") {
   const auto e = error_of(std::string(kSync) + "G01 X10 Y1 F600\n#SYNC OUT\nM30\n", "laser_portal");
-  REQUIRE(e);
-  CHECK(e->id == "NC4102");
-  CHECK(e->loc.line == 6);
-  CHECK(e->loc.column == 9);  // the Y word
+  REQUIRE(nc4102_at(e, 6, 9));  // the Y word
   CHECK(e->message.find("under #SYNC IN") != std::string::npos);
   // X has no offset: it runs.
   CHECK_FALSE(error_of(std::string(kSync) + "G01 X10 F600\n#SYNC OUT\nM30\n", "laser_portal"));
