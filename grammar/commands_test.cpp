@@ -135,11 +135,24 @@ TEST_CASE("unsupported commands are reported as such with their position") {
   REQUIRE(o.diags.items().size() == 1);
   CHECK(o.diags.items()[0].loc.column == 3);
   CHECK(check("G237 X1") == std::vector<std::string>{"1:1 NC1002"});
-  // PROG-208525707's auxiliary transformations: not supported, not a syntax error.
-  const Parsed w("#MCS TO WCS [X1 Y2 Z3]");
-  REQUIRE(w.diags.items().size() == 1);
-  CHECK(w.diags.items()[0].id == "NC1002");
-  CHECK(w.diags.items()[0].message == "not supported: #MCS TO WCS");
+}
+
+TEST_CASE("#MCS TO WCS and #WCS TO MCS are not supported, with the reason and PROG-208525707") {
+  // The manual's auxiliary transformations: not a syntax error, refused at the '#'.
+  for (const char* text : {"N5 #MCS TO WCS [X1 Y2 Z3]", "N5 #WCS TO MCS [X1 Y2 Z3]"}) {
+    const Parsed w(text);
+    REQUIRE(w.diags.items().size() == 1);
+    CHECK(w.diags.items()[0].id == "NC1002");
+    CHECK(w.diags.items()[0].loc.column == 4);
+    const std::string& m = w.diags.items()[0].message;
+    CHECK(m.starts_with(std::string("not supported: ") + std::string(text + 3, 11)));
+    CHECK(m.find("PROG-208525707") != std::string::npos);
+    CHECK(m.find("result variables") != std::string::npos);
+  }
+  // Other words after #WCS are not the manual's command: the plain text.
+  const Parsed other("#WCS ON");
+  REQUIRE(other.diags.items().size() == 1);
+  CHECK(other.diags.items()[0].message == "not supported: #WCS");
 }
 
 TEST_CASE("control statements: $IF one-line goto, $FOR header, $GOTO targets") {

@@ -317,14 +317,38 @@ void read_scale(HashReader<Input>& r) {
   }
 }
 
+/// PROG-208525707 "Auxiliary functions for coordinate transformation (#WCS TO MCS, #MCS TO
+/// WCS)": the kinematic transformation's backward (forward) calculation of a point, for 5-axis
+/// and non-Cartesian machines, whose result the program then approaches itself; only with
+/// #TRAFO OFF and #CS OFF (else the manual's 21236). ncsim does not build it (docs/interp.md
+/// "Offsets, scaling and path limits"): refused at the `#` with the reason.
+template <typename Input>
+[[noreturn]] void refuse_coordinate_calculation(HashReader<Input>& r, std::string_view from,
+                                                bool to) {
+  r.ws();
+  const std::string dest = r.next_word();
+  const std::string command = "#" + std::string(from) + (to ? " TO " + dest : "");
+  if (!to || (!iequals(dest, "MCS") && !iequals(dest, "WCS")) || iequals(dest, from))
+    r.st.not_supported(r.name_at - 1, command);
+  r.st.not_supported(r.name_at - 1,
+                     command +
+                         " (PROG-208525707: a kinematic transformation's calculation of a "
+                         "point between workpiece and machine coordinates, for 5-axis and "
+                         "non-Cartesian machines; ncsim does not model its result variables, "
+                         "so the program's moves to the result could not run)");
+}
+
+template <typename Input>
+void read_wcs(HashReader<Input>& r) {  // PROG-208525707: #WCS TO MCS
+  r.ws();
+  refuse_coordinate_calculation(r, "WCS", r.word("TO"));
+}
+
 template <typename Input>
 void read_mcs(HashReader<Input>& r) {  // PROG-208517515: #MCS ON [EX TOOL] / #MCS OFF
   r.ws();
   if (r.word("OFF")) return r.set(H::mcs_off);
-  if (r.word("TO")) {  // PROG-208525707: #MCS TO WCS, the auxiliary transformation
-    r.ws();
-    r.st.not_supported(r.name_at - 1, "#MCS TO " + r.next_word());
-  }
+  if (r.word("TO")) refuse_coordinate_calculation(r, "MCS", true);  // PROG-208525707
   if (!r.word("ON")) r.st.fail(r.in.current(), "ON or OFF after #MCS");
   r.set(H::mcs_on);
   r.ws();
@@ -363,7 +387,7 @@ struct Entry {
 };
 
 template <typename Input>
-inline constexpr std::array<Entry<Input>, 35> kHashCommands{{
+inline constexpr std::array<Entry<Input>, 36> kHashCommands{{
     {"SYNC", read_sync<Input>},
     {"CS", read_cs<Input>},
     {"BCS", read_cs<Input>},
@@ -389,6 +413,7 @@ inline constexpr std::array<Entry<Input>, 35> kHashCommands{{
     {"SCALE", read_scale<Input>},
     {"PSET", read_scale<Input>},
     {"MCS", read_mcs<Input>},
+    {"WCS", read_wcs<Input>},
     {"CHANNEL", read_accepted<Input>},
     {"IDENT", read_accepted<Input>},
     {"ORI", read_accepted<Input>},

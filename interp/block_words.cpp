@@ -182,13 +182,29 @@ bool WordReader::read_weighting(const ast::Block& b, const ast::Word& w, BlockWo
     group = ip_.eval(b, w.value);
     if (!group) return false;
   }
+  const std::string g = "G" + std::to_string(w.code);
   if (is_applied_weighting(w.code)) {
     bw.weightings.push_back({w.code, group, w.loc});
-  } else if (unmodelled_g_.insert(w.code).second) {
+    return true;
+  }
+  if (!said_g_.insert(w.code).second) return true;  // said once per code
+  if (is_feedhold_weighting(w.code)) {
+    // PROG-206590731 / PROG-206596619: the feed-hold weightings scale the feed-hold ramps
+    // P-AXIS-00053 / P-AXIS-00081, which a feed hold uses only with P-CHAN-00097 = 1. ncsim's
+    // channel is P-CHAN-00097 = 0 (the default; 1 is NC3013 at load): a feed hold decelerates
+    // at the currently valid deceleration, so the weighting changes nothing, as on the kernel.
+    ip_.note(w.loc, "NC4315",
+             g + " (feed-hold " + (w.code <= 334 ? "acceleration" : "ramp time") +
+                 " weighting) acts on the feed-hold ramps P-AXIS-00053 / P-AXIS-00081, which "
+                 "a feed hold uses only with P-CHAN-00097 = 1; this channel decelerates a feed "
+                 "hold at the currently valid deceleration (P-CHAN-00097 = 0), so " +
+                 g + " changes nothing");
+  } else {
+    // G134: P-AXIS-00199 (the contour's jerk bound) is not a limit ncsim's planner applies.
     ip_.warn(w.loc, "NC4313",
-             "G" + std::to_string(w.code) +
-                 " (dynamics weighting) is not modelled by ncsim: the axes' listed velocity, "
-                 "acceleration and ramp times apply");
+             g + " (geometric ramp time weighting, P-AXIS-00199) is not modelled by ncsim: its "
+                 "planner does not bound the contour jerk by the geometric ramp time, so there "
+                 "is nothing to weight (G132 / G133 weight the feed ramps)");
   }
   return true;
 }
@@ -219,6 +235,21 @@ bool WordReader::additional_value(const ast::Block& b, const ast::Word& w,
                         core::number_text(*v));
   }
   out = *v;
+  return true;
+}
+
+bool WordReader::has_d_word(const ast::Block& b) {
+  for (const ast::Word& w : b.words)
+    if (w.kind == ast::WordKind::d) return true;
+  return false;
+}
+
+bool WordReader::read_d(double d, const core::SourceLoc& loc, BlockWords& bw) {
+  bool called = false;  // P-CHAN-00429: a D word may also call a subroutine
+  if (!ip_.subs.read_word_call(WordCall::d, loc, called)) return false;
+  bw.tech.push_back(Tech{TechKind::d, d, {}});
+  bw.d_word = d;  // the tool for TRC (trc_words.cpp)
+  bw.d_loc = loc;
   return true;
 }
 
@@ -270,15 +301,13 @@ bool WordReader::read_addresses(const ast::Block& b, BlockWords& bw) {
         break;
       case ast::WordKind::t:
         bw.tech.push_back(Tech{TechKind::t, *v, {}});
+        // P-CHAN-00014 einrechnen_mit_t: "T80" is "T80 D80". Decision: a D programmed in the
+        // same block is the one executed (docs/interp.md "Cycles").
+        if (ip_.machine.channel.d_with_t && !has_d_word(b) && !read_d(*v, w.loc, bw)) return false;
         break;
-      case ast::WordKind::d: {
-        bool called = false;  // P-CHAN-00429: a D word may also call a subroutine
-        if (!ip_.subs.read_word_call(WordCall::d, w.loc, called)) return false;
-        bw.tech.push_back(Tech{TechKind::d, *v, {}});
-        bw.d_word = *v;  // the tool for TRC (trc_words.cpp)
-        bw.d_loc = w.loc;
+      case ast::WordKind::d:
+        if (!read_d(*v, w.loc, bw)) return false;
         break;
-      }
       case ast::WordKind::h:
       case ast::WordKind::m: {
         std::optional<double> extra;

@@ -71,9 +71,12 @@ class WordReader {
   /// The additional value of M/H word `w` (`M200=1200`), nullopt if none; NC4033 if it is not
   /// a whole number or its function takes none.
   bool additional_value(const Block& b, const Word& w, std::optional<double>& out);
+  static bool has_d_word(const Block& b);
+  /// Tool offset D `d` at `loc`: the technology output, TRC's tool and the P-CHAN-00429 call.
+  bool read_d(double d, const core::SourceLoc& loc, BlockWords& bw);
 
   Interpreter::Impl& ip_;
-  std::set<std::uint32_t> unmodelled_g_;  // dynamics weightings warned about (NC4313)
+  std::set<std::uint32_t> said_g_;  // weightings noted once (NC4313 G134, NC4315 G333..G339)
 };
 
 }  // namespace ncsim::interp

@@ -57,6 +57,11 @@ void Interpreter::Impl::warn(core::SourceLoc loc, std::string id, std::string me
              std::move(message)});
 }
 
+void Interpreter::Impl::note(core::SourceLoc loc, std::string id, std::string message) {
+  diags.add({core::Severity::note, files[current_file]->file->name(), loc, std::move(id),
+             std::move(message)});
+}
+
 std::optional<double> Interpreter::Impl::eval(const ast::Block& b, ast::NodeIndex n) {
   auto v = evaluator.eval(b, n);
   if (!v) fail_eval();

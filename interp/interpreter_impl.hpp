@@ -87,6 +87,7 @@ struct Interpreter::Impl {
   bool fail(core::SourceLoc loc, std::string id, std::string message);
   bool fail_eval();
   void warn(core::SourceLoc loc, std::string id, std::string message);
+  void note(core::SourceLoc loc, std::string id, std::string message);
   std::optional<double> eval(const ast::Block& b, ast::NodeIndex n);
 
   // blocks (interpreter_block.cpp)

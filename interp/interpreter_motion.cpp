@@ -39,8 +39,12 @@ bool Interpreter::Impl::run_block_motion(const ast::Block& b, const BlockWords& 
     }
     programmed |= AxisMask{1} << axis;
   }
-  if (!offsets.check_offsets_frame(b, programmed)) return false;
   const bool arc = motion == MotionKind::arc_cw || motion == MotionKind::arc_ccw;
+  AxisMask absolute = modal.incremental ? 0 : programmed;  // values the zero offset shifts
+  for (std::size_t k = 0; k < 3; ++k) {  // G161: absolute centres shift too (make_arc)
+    if (arc && centre_absolute && bw.ijk[k] && xyz[k]) absolute |= AxisMask{1} << *xyz[k];
+  }
+  if (!offsets.check_offsets_frame(b, absolute)) return false;
   if (programmed != 0 || (arc && bw.motion_word && (bw.ijk[0] || bw.ijk[1] || bw.ijk[2]))) {
     const BlockMotionWords words{bw.g09, bw.g60, bw.g61, bw.block_time, bw.end_feed};
     std::array<std::optional<double>, 3> ijk = bw.ijk;

@@ -129,21 +129,32 @@ bool Offsets::select_zero_offset(const ast::Block& b, const ast::Word& w) {
   return true;
 }
 
-bool Offsets::check_offsets_frame(const ast::Block& b, AxisMask programmed) {
+bool Offsets::check_offsets_frame(const ast::Block& b, AxisMask used) {
   // The zero offset shifts the axes; under #TRAFO or #SYNC IN the programmed coordinates are
   // not axis values, so the shift would need the chain below them, which ncsim does not model
-  // there. Under #CS alone the chain carries the X/Y/Z offsets (follow_cs_base).
+  // there. Under #CS alone the chain carries the X/Y/Z offsets (follow_cs_base). `used`: the
+  // axes whose absolute value the block programs (targets, G161 centres).
   if (mcs_on || (!ip_.modal.kinematics_on && !ip_.modal.synchronised)) return true;
   for (std::size_t i = 0; i < ip_.machine.axes.size() && i < kMaxAxes; ++i) {
-    if (((programmed >> i) & 1u) == 0) continue;
-    if (zero_offset(static_cast<std::uint8_t>(i)) != 0.0) {
-      ip_.fail(b.loc, "NC4102",
-               "not supported: a zero offset (G" +
-                   std::to_string(53 + std::min<std::size_t>(zero_group, 6)) + ") of axis " +
-                   ip_.machine.axes[i].name +
-                   " together with #TRAFO or #SYNC IN; select G53 first");
-      return false;
+    if (((used >> i) & 1u) == 0) continue;
+    const double offset = zero_offset(static_cast<std::uint8_t>(i));
+    if (offset == 0.0) continue;
+    const std::string& name = ip_.machine.axes[i].name;
+    core::SourceLoc at = b.loc;  // the axis word, else the block (a G161 centre)
+    for (const ast::Word& w : b.words) {
+      if (w.kind == ast::WordKind::axis && ip_.axis_index(w.name) == i) at = w.loc;
     }
+    const std::string selected = zero_group <= 6 ? "G" + std::to_string(53 + zero_group)
+                                                 : "G159=" + std::to_string(zero_group);
+    const std::string where = ip_.modal.kinematics_on ? "#TRAFO ON" : "#SYNC IN";
+    ip_.fail(at, "NC4102",
+             "not supported: the zero offset " + core::number_text(offset) + " of axis " + name +
+                 " (" + selected + ", V.G.NP[" + std::to_string(zero_group) + "].V." + name +
+                 ") under " + where +
+                 ": there the programmed values are not axis values and ncsim does not shift "
+                 "them; select G53 (or set the offset to 0) for motions under " +
+                 where);
+    return false;
   }
   return true;
 }

@@ -43,8 +43,9 @@ class Offsets {
   double scale_of(std::uint8_t axis) const;  // its #SCALE factor (1 when off)
   bool select_zero_offset(const grammar::ast::Block& b,
                           const grammar::ast::Word& w);  // G53..G59, G159=n
-  /// NC4102 when a programmed axis has a zero offset under #CS, #TRAFO or #SYNC IN.
-  bool check_offsets_frame(const grammar::ast::Block& b, AxisMask programmed);
+  /// NC4102 at the axis word when an axis whose absolute value the block programs (`used`:
+  /// targets, G161 centres) has a zero offset under #TRAFO or #SYNC IN (docs/interp.md).
+  bool check_offsets_frame(const grammar::ast::Block& b, AxisMask used);
   bool hash_scale(const grammar::ast::Block& b, const grammar::ast::HashCommand& h);
   bool hash_mcs(const grammar::ast::Block& b, const grammar::ast::HashCommand& h);
   bool hash_hsc(const grammar::ast::Block& b, const grammar::ast::HashCommand& h);

@@ -360,16 +360,52 @@ TEST_CASE("the channel's feed unit (P-CHAN-00108) and default feed (P-CHAN-00099
   CHECK(field(r.full[1], "F") == doctest::Approx(50.0));          // 3 m/min = 50 mm/s
 }
 
-TEST_CASE("feedhold and geometric ramp weightings are warning NC4313; G130 X70 weights X") {
+TEST_CASE("G134 is warning NC4313 (P-AXIS-00199 unmodelled); G130 X70 weights X") {
   const test::Run r =
-      run_warn("%t\nG00 X1\nG130 X70 Y50\nG231=80 G00 X5\nG131=50\nG334=50\nG134=70\nM30\n");
+      run_warn("%t\nG00 X1\nG130 X70 Y50\nG231=80 G00 X5\nG131=50\nG134=70\nG134=60\nM30\n");
   REQUIRE(r.error_id.empty());
   int unmodelled = 0;
   for (const auto& l : r.lines)
     unmodelled += l.find("warning NC4313") != std::string::npos;
-  CHECK(unmodelled == 2);  // G334 and G134; G130, G231 and G131 are applied
+  CHECK(unmodelled == 1);  // G134, once; G130, G231 and G131 are applied
   REQUIRE(r.full.size() >= 2);
   CHECK(field(r.full[1], "X") == doctest::Approx(5));  // the next motion is the G231 block's
+}
+
+TEST_CASE(
+    "feed-hold weightings G333/G334/G338/G339 change nothing with P-CHAN-00097 = 0 [NC4315]") {
+  // PROG-206590731 / PROG-206596619: they weight the feed-hold ramps P-AXIS-00053 / 00081, which
+  // a feed hold uses only with P-CHAN-00097 = 1; ncsim's channel decelerates at the currently
+  // valid deceleration (P-CHAN-00097 = 0), so the motions are the same as without them.
+  const std::string plain = "%t\nG01 X10 Y5 F600\nG01 X20\nM30\n";
+  const std::string weighted =
+      "%t\nG333 X50 Y40\nG334=30\nG01 X10 Y5 F600\nG338 X300\nG339=200 G01 X20\nG334=20\nM30\n";
+  const test::Run a = run_warn(plain);
+  const machines::Machine& m = test::machine("portal_3x");
+  const core::SourceFile file("test.nc", weighted);
+  Interpreter interp(file, m, {});
+  std::vector<std::string> motions;
+  while (auto c = interp.next_decode_only()) {
+    if (std::holds_alternative<Motion>(c->body)) {
+      const std::string l = to_trace_line(*c, m);
+      motions.push_back(l.substr(l.find(':')));  // without the line number
+    }
+  }
+  REQUIRE(interp.error() == nullptr);
+  std::vector<std::string> plain_motions;
+  for (const auto& l : a.full)
+    if (l.find(" G01 ") != std::string::npos) plain_motions.push_back(l.substr(l.find(':')));
+  CHECK(motions == plain_motions);  // G333 X50 Y40 and G338 X300 are weights, not positions
+  int notes = 0;
+  for (const auto& d : interp.diagnostics().items()) {
+    CHECK(d.id != "NC4313");
+    if (d.id == "NC4315") {
+      ++notes;
+      CHECK(d.severity == core::Severity::note);
+      CHECK(d.message.find("P-CHAN-00097") != std::string::npos);
+    }
+  }
+  CHECK(notes == 4);  // once per code
 }
 
 }  // namespace

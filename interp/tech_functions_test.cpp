@@ -102,5 +102,49 @@ TEST_CASE("resolve_tech: numbers outside 0..999 or not whole are never configure
     CHECK(t.sync == TechSync::mos);
 }
 
+// P-CHAN-00014 einrechnen_mit_t (TF5200 channel parameters): "T80" is "T80 D80".
+std::vector<std::string> tech_lines(const std::string& text, bool d_with_t) {
+  machines::Machine m = test::machine("portal_3x");
+  m.channel.d_with_t = d_with_t;
+  const test::Run r = test::run_on_machine(core::SourceFile("t.nc", text), m, {}, 1000, false);
+  REQUIRE_MESSAGE(r.error_id.empty(), r.error_message);
+  std::vector<std::string> out;
+  for (const auto& l : r.lines)
+    if (l.find("TECH T=") != std::string::npos || l.find("TECH D=") != std::string::npos)
+      out.push_back(l);
+  return out;
+}
+
+TEST_CASE("P-CHAN-00014 = 1: a T word also executes the D word of its number (T80 = T80 D80)") {
+  const auto l = tech_lines("%t\nT80\nM30\n", true);
+  REQUIRE(l.size() == 2);
+  CHECK(l[0] == "2: TECH T=80.0000");
+  CHECK(l[1] == "2: TECH D=80.0000");  // after the T, as "T80 D80" is written
+}
+
+TEST_CASE("P-CHAN-00014 = 0 (the manual's default): a T word is only the T function") {
+  CHECK(tech_lines("%t\nT80\nM30\n", false) == std::vector<std::string>{"2: TECH T=80.0000"});
+  CHECK(machines::ChannelParams{}.d_with_t == false);
+}
+
+TEST_CASE("P-CHAN-00014 = 1: a D programmed in the T's block is the one executed") {
+  const auto l = tech_lines("%t\nT80 D5\nM30\n", true);
+  CHECK(l == std::vector<std::string>{"2: TECH T=80.0000", "2: TECH D=5.0000"});
+}
+
+TEST_CASE("P-CHAN-00014 = 1: the D a T implies selects the tool radius compensation's tool") {
+  // portal_3x_tools: D2 has radius 5 mm; G41 runs the tool centre 5 mm left of Y = 0.
+  machines::Machine m = test::machine("portal_3x_tools");
+  m.channel.d_with_t = true;
+  const test::Run r = test::run_on_machine(
+      core::SourceFile("t.nc", "%t\nG00 X0 Y0\nT2\nG41 G01 X10 F600\nG01 X20\nG40 G01 X30\nM30\n"),
+      m, {}, 1000, false);
+  REQUIRE_MESSAGE(r.error_id.empty(), r.error_message);
+  bool offset_seen = false;
+  for (const auto& l : r.lines)
+    offset_seen = offset_seen || l.find("Y=5.0000") != std::string::npos;
+  CHECK(offset_seen);
+}
+
 }  // namespace
 }  // namespace ncsim::interp

@@ -72,6 +72,10 @@ bool is_applied_weighting(std::uint32_t code) noexcept {
   }
 }
 
+bool is_feedhold_weighting(std::uint32_t code) noexcept {
+  return code == 333 || code == 334 || code == 338 || code == 339;
+}
+
 bool is_axis_weighting(std::uint32_t code) noexcept {
   return code == 127 || code == 130 || code == 132 || code == 230 || code == 333 || code == 338;
 }

@@ -25,6 +25,9 @@ namespace ncsim::interp {
 
 /// True for the weighting codes ncsim applies (G127..G133, G230, G231, G233).
 bool is_applied_weighting(std::uint32_t code) noexcept;
+/// True for the feed-hold weightings G333, G334 (acceleration), G338, G339 (ramp time): no
+/// effect with P-CHAN-00097 = 0, ncsim's only feed hold (PROG-206590731, PROG-206596619).
+bool is_feedhold_weighting(std::uint32_t code) noexcept;
 /// True for the axis-specific forms (G127, G130, G132, G230, G333, G338): axis words are weights.
 bool is_axis_weighting(std::uint32_t code) noexcept;
 

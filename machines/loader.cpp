@@ -528,6 +528,7 @@ ChannelParams build_channel(const ListValues& v) {
   if (v.given("m6_prog_file")) ch.m6_prog_file = v.text("m6_prog_file");          // P-CHAN-00118
   if (v.given("d_prog_file")) ch.d_prog_file = v.text("d_prog_file");             // P-CHAN-00429
   ch.create_cycle_param_on_read = v.number("create_cycle_param_on_read") != 0.0;  // P-CHAN-00463
+  ch.d_with_t = v.number("einrechnen_mit_t") != 0.0;                              // P-CHAN-00014
   ch.vector_velocity = v.internal("vector.velocity");                             // P-CHAN-00090
   ch.feedrate_factor = v.number("prog_start.feedrate_factor");                    // P-CHAN-00108
   ch.default_feed = v.internal("prog_start.feedrate");                            // P-CHAN-00099

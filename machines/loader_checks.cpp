@@ -330,6 +330,17 @@ void check_channel_refs(Machine& m, const ListValues& ch, Reporter& r) {
                 " = 3 (HSC; \"0 step, 1 trapez, 2 sin2, 3 HSC\", PROG-207190411): ncsim does "
                 "not model the HSC slope profile; write 0 (STEP), 1 (TRAPEZ) or 2 (SIN2)");
   }
+  // P-CHAN-00097: "0: When FEEDHOLD is set, deceleration takes place using the currently valid
+  // deceleration rate. 1: ... the parameterised delay" (P-AXIS-00053 / P-AXIS-00081). ncsim's
+  // feed hold is the first (ipo/override); a channel asking for the feed-hold ramps is refused
+  // rather than run with other ramps (docs/interp.md "Dynamics weighting").
+  if (ch.number("use_drive_curr_limit") != 0.0) {
+    r.error(file, ch.loc("use_drive_curr_limit"), "NC3013",
+            param_ref("use_drive_curr_limit", ListKind::channel) +
+                " = 1 (a feed hold decelerates on the feed-hold ramps P-AXIS-00053 / P-AXIS-00081, "
+                "TF5200 P-CHAN-00097): ncsim's feed hold decelerates at the currently valid "
+                "deceleration (0, the default) only; write 0");
+  }
   // P-CHAN-00108: "<= 0: warning output, internal default 100 (mm/min); -1 or absent: no
   // warning, also 100".
   const double factor = ch.number("prog_start.feedrate_factor");

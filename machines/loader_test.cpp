@@ -283,28 +283,44 @@ TEST_CASE("the parameter table has unique keys, sane ranges and docs for every k
   }
 }
 
+/// The test base machine (X, Y, Z, conveyor S) with `line` as the channel list's third line.
+LoadResult load_with(const std::string& line) {
+  return load_base_with_channel("channel_line",
+                                "configuration.interpolator.function FCT_DLM\n"
+                                "conveyor_sync.log_number_master 4\n" +
+                                    line + "\n")
+      .result;
+}
+
+/// True when `r` refused its list with `id` at the channel list's third line (load_with's line),
+/// the message naming `what`.
+bool refused_at_line_3(const LoadResult& r, const std::string& id, const std::string& what) {
+  if (r.machine.has_value() || r.diagnostics.items().empty()) return false;
+  const core::Diagnostic& d = r.diagnostics.items()[0];
+  return d.id == id && d.loc.line == 3 && d.message.find(what) != std::string::npos;
+}
+
+TEST_CASE("P-CHAN-00014 einrechnen_mit_t is read once at load (default 0)") {
+  const LoadResult plain = load_with("");
+  REQUIRE(plain.machine.has_value());
+  CHECK_FALSE(plain.machine->channel.d_with_t);
+  const LoadResult on = load_with("einrechnen_mit_t 1");
+  INFO(all_diagnostics(on));
+  REQUIRE(on.machine.has_value());
+  CHECK(on.machine->channel.d_with_t);
+  CHECK(refused_at_line_3(load_with("einrechnen_mit_t 2"), "NC3004", "P-CHAN-00014"));
+}
+
+TEST_CASE("P-CHAN-00097 = 1 (feed hold on the feed-hold ramps) is NC3013 at its line; 0 loads") {
+  const LoadResult zero = load_with("use_drive_curr_limit 0");
+  INFO(all_diagnostics(zero));
+  CHECK(zero.machine.has_value());
+  CHECK(refused_at_line_3(load_with("use_drive_curr_limit 1"), "NC3013", "P-CHAN-00097"));
+}
+
 TEST_CASE(
     "NCSIM-CHAN-630 path override type: REDUCED by default, ORIGINAL read, a typo refused; "
     "NCSIM-CHAN-640 read in 0.1 %") {
-  const auto base = source_root() / "machines" / "testdata" / "base";
-  auto load_with = [&](const std::string& line) {
-    const auto dir = std::filesystem::temp_directory_path() / "ncsim_machines_override_type";
-    std::filesystem::create_directories(dir);
-    {
-      std::ofstream channel(dir / "channel.lis");
-      channel << "configuration.interpolator.function FCT_DLM\n"
-              << "conveyor_sync.log_number_master 4\n"
-              << line << "\n";
-      std::ofstream index(dir / kMachineIndexFile);
-      index << "channel channel.lis\n";
-      for (const char* ax : {"X", "Y", "Z", "S"}) {
-        std::string file(ax);
-        file[0] = static_cast<char>(file[0] - 'A' + 'a');
-        index << "axis " << ax << ' ' << (base / (file + ".lis")).string() << "\n";
-      }
-    }
-    return load_machine(dir);
-  };
   const LoadResult plain = load_with("");
   INFO(all_diagnostics(plain));
   REQUIRE(plain.machine.has_value());
@@ -315,12 +331,8 @@ TEST_CASE(
   const LoadResult above = load_with("ncsim.path_override_type REDUCED_ABOVE_100");
   REQUIRE(above.machine.has_value());
   CHECK(above.machine->channel.path_override_type == PathOverrideType::reduced_above_100);
-  const LoadResult typo = load_with("ncsim.path_override_type REDUCE");
-  CHECK_FALSE(typo.machine.has_value());
-  REQUIRE_FALSE(typo.diagnostics.items().empty());
-  CHECK(typo.diagnostics.items()[0].id == "NC3004");
-  CHECK(typo.diagnostics.items()[0].loc.line == 3);
-  CHECK(typo.diagnostics.items()[0].message.find("NCSIM-CHAN-630") != std::string::npos);
+  CHECK(
+      refused_at_line_3(load_with("ncsim.path_override_type REDUCE"), "NC3004", "NCSIM-CHAN-630"));
   // NCSIM-CHAN-640, the belt's dynamics reserve in 0.1 % (004 l.454)
   REQUIRE(plain.machine->channel.conveyor.has_value());
   CHECK(plain.machine->channel.conveyor->dynamics_reserve == 0.0);

@@ -247,6 +247,9 @@ struct ChannelParams {
   std::string m6_prog_file;
   /// P-CHAN-00429 d_prog_file: a D word also calls this global subroutine (tool settings)
   std::string d_prog_file;
+  /// P-CHAN-00014 einrechnen_mit_t: a T word also executes the D word of its number ("T80"
+  /// is "T80 D80"; the manual's default 0)
+  bool d_with_t = false;
   /// P-CHAN-00463 create_cycle_param_on_read (the manual's default 1)
   bool create_cycle_param_on_read = true;
   /// P-CHAN-00090 vector.velocity: the path velocity limit `#VECTOR LIMIT ON [VEL]` without a

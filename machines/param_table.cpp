@@ -147,6 +147,8 @@ constexpr std::array kTable = {
   ParamSpec{"NCSIM-CHAN-651", "ncsim.h_duration[]", C, ValueType::real64, 0, 1e9, "ms", kMilli, "s", "0", kOpt, 999, -1, "no ISG key: H function i's execution time"},
   ParamSpec{"NCSIM-CHAN-652", "ncsim.s_duration", C, ValueType::real64, 0, 1e9, "ms", kMilli, "s", "0", kOpt, -1, -1, "no ISG key: the S function's execution time"},
   ParamSpec{"NCSIM-CHAN-653", "ncsim.t_duration", C, ValueType::real64, 0, 1e9, "ms", kMilli, "s", "0", kOpt, -1, -1, "no ISG key: the T function's (tool change's) execution time"},
+  ParamSpec{"P-CHAN-00014", "einrechnen_mit_t", C, ValueType::boolean, 0, 1, "", 1, "", "0", kOpt, -1, -1, "TF5200 P-CHAN-00014 (1: a T word also executes the D word of the same number, 'T80' = 'T80 D80')"},
+  ParamSpec{"P-CHAN-00097", "use_drive_curr_limit", C, ValueType::boolean, 0, 1, "", 1, "", "0", kOpt, -1, -1, "TF5200 P-CHAN-00097 (0: a feed hold decelerates at the currently valid deceleration; 1, the feed-hold ramps P-AXIS-00053 / 00081: NC3013)"},
   ParamSpec{"P-CHAN-00463", "create_cycle_param_on_read", C, ValueType::boolean, 0, 1, "", 1, "", "1", kOpt, -1, -1, "TF5200 P-CHAN-00463 (1: a @P read that the call did not program creates it; 0: error 20394)"},
   // Zero-offset list (TF5200 "Zero offsets", P-ZERO; np_grp[i] is G53..G59 / G159=i)
   ParamSpec{"P-ZERO-00001", "g53_verfuegbar", Z, ValueType::boolean, 0, 1, "", 1, "", "0", kOpt, -1, -1, "TF5200 P-ZERO-00001 (0: G53 deselects every offset; 1: np_grp[0] is an offset too)"},
