@@ -26,3 +26,8 @@ set_tests_properties(checker_known_strict PROPERTIES TIMEOUT 300 LABELS checker)
 # The checker itself on synthetic trajectories with known answers (no ncsim).
 add_test(NAME checker_selftest COMMAND ${NCSIM_CHECKER_PYTHON} ${_checker}/selftest.py)
 set_tests_properties(checker_selftest PROPERTIES LABELS checker)
+# The time-optimal bound tool of issue 36 (bench/bound.py, independent of ncsim's code) on
+# answers known in closed form.
+add_test(NAME bound_selftest COMMAND ${NCSIM_CHECKER_PYTHON}
+                                     ${CMAKE_SOURCE_DIR}/bench/bound_test.py)
+set_tests_properties(bound_selftest PROPERTIES LABELS checker)
