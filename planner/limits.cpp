@@ -27,6 +27,18 @@ void lower(double value, VelocityLimit why, std::uint8_t axis, double& cap, Velo
   }
 }
 
+/// Expected time [s] of an arc of `length` with velocity cap v, acceleration a and jerk j
+/// (+inf: none), the model that picks its centripetal share: the mean of a traverse at the cap
+/// (an arc entered and left at speed, e.g. between tangent neighbours) and a rest-to-rest one
+/// (an arc between sharp knees). Either alone was slower on bench/blend_set.py.
+double arc_time_model(double length, double v, double a, double j) {
+  const double ramp = std::isfinite(j) ? a / j : 0.0;  // the jerk's extra per ramp pair
+  const double cruise = length / v;
+  const double rest_to_rest = length >= v * v / a + v * ramp ? length / v + v / a + ramp
+                                                             : 2.0 * std::sqrt(length / a) + ramp;
+  return 0.5 * (cruise + rest_to_rest);
+}
+
 }  // namespace
 
 bool jerk_limited(SlopeType slope) noexcept {
@@ -70,13 +82,32 @@ PathLimits path_limits(const Segment& segment, const Move& move, std::span<const
     if (out.limit == VelocityLimit::axis_velocity) out.limit = VelocityLimit::programmed;
   } else {
     out = limits_from_bounds(b, axes.first(n), v_programmed, jerk_limited(move.slope));
+    if (out.limit == VelocityLimit::centripetal && segment.kind() == SegmentKind::arc)
+      out = best_share(b, axes.first(n), v_programmed, jerk_limited(move.slope), length, out);
   }
   out.v_end = move.end_feed ? std::min(out.v_max, std::max(*move.end_feed, 0.0)) : out.v_max;
   return out;
 }
 
+PathLimits best_share(const DerivativeBounds& b, std::span<const AxisLimits> axes,
+                      double v_programmed, bool jerk, double length, const PathLimits& standard) {
+  PathLimits best = standard;
+  double t_best = arc_time_model(length, standard.v_max, std::min(standard.a_max, standard.d_max),
+                                 standard.j_max);
+  for (const double share : kCentripetalShares) {
+    const PathLimits p = limits_from_bounds(b, axes, v_programmed, jerk, share);
+    if (!(p.v_max > 0.0) || !(p.a_max > 0.0) || !(p.d_max > 0.0) || !(p.j_max > 0.0)) continue;
+    const double t = arc_time_model(length, p.v_max, std::min(p.a_max, p.d_max), p.j_max);
+    if (t < t_best * (1.0 - kRelTol)) {
+      best = p;
+      t_best = t;
+    }
+  }
+  return best;
+}
+
 PathLimits limits_from_bounds(const DerivativeBounds& b, std::span<const AxisLimits> axes,
-                              double v_programmed, bool jerk) {
+                              double v_programmed, bool jerk, double centripetal_share) {
   const std::size_t n = axes.size();
   PathLimits out;
   out.v_programmed = v_programmed;
@@ -91,7 +122,7 @@ PathLimits limits_from_bounds(const DerivativeBounds& b, std::span<const AxisLim
             limit, limiting_axis);
     const double a_axis = std::min(ax.a_max, ax.d_max);
     if (b.d2[i] > kTiny)
-      lower(std::sqrt(kCentripetalShare * a_axis / b.d2[i]), VelocityLimit::centripetal, ax_id, cap,
+      lower(std::sqrt(centripetal_share * a_axis / b.d2[i]), VelocityLimit::centripetal, ax_id, cap,
             limit, limiting_axis);
     if (jerk && b.d3[i] > kTiny)
       lower(std::cbrt(kCurvatureJerkShare * ax.j_max / b.d3[i]), VelocityLimit::curvature_jerk,

@@ -20,6 +20,7 @@
 // Invariants: every output finite and > 0 for a segment of positive length; V <= the
 // programmed velocity.
 
+#include <array>
 #include <cstdint>
 #include <span>
 
@@ -53,6 +54,8 @@ struct PathLimits {
 
 /// Share of an axis's acceleration the centripetal part may use (the rest is tangential).
 inline constexpr double kCentripetalShare = 0.75;
+/// The other shares an arc may take (best_share).
+inline constexpr std::array<double, 7> kCentripetalShares = {0.5, 0.6, 0.7, 0.8, 0.85, 0.9, 0.95};
 /// Share of an axis's jerk the change of curvature may use at the velocity cap.
 inline constexpr double kCurvatureJerkShare = 0.5;
 /// Share of an axis's jerk the cross term 3 x'' v a may use.
@@ -70,6 +73,13 @@ PathLimits path_limits(const Segment& segment, const Move& move, std::span<const
 /// path_limits() uses it for the machine axes, joint_limits.hpp for the joints of a
 /// kinematic transform. v_end = v_max.
 PathLimits limits_from_bounds(const DerivativeBounds& b, std::span<const AxisLimits> axes,
-                              double v_programmed, bool jerk);
+                              double v_programmed, bool jerk,
+                              double centripetal_share = kCentripetalShare);
+/// An arc whose velocity cap the centripetal acceleration sets: the limits of the share in
+/// kCentripetalShares (or `standard`, those at kCentripetalShare) whose expected traverse of
+/// `length` [mm] is fastest: a short arc gains more from the tangential acceleration, a long
+/// one from the velocity (docs/planner.md "Shares").
+PathLimits best_share(const DerivativeBounds& b, std::span<const AxisLimits> axes,
+                      double v_programmed, bool jerk, double length, const PathLimits& standard);
 
 }  // namespace ncsim::planner

@@ -107,7 +107,8 @@ TEST_CASE("a circle is limited by centripetal acceleration: v^2 / R <= 3/4 a") {
   const std::array<AxisLimits, 3> ax = {axis(1000, 1000, 1e9), axis(1000, 1000, 1e9),
                                         axis(1000, 1000, 1e9)};
   const Move m = circle(10.0, 500.0);
-  const PathLimits pl = path_limits(Segment::from_move(m), m, ax);
+  // The projection at the standard share (path_limits may pick another: best_share).
+  const PathLimits pl = limits_from_bounds(Segment::from_move(m).bounds(), ax, 500.0, false);
   CHECK(pl.limit == VelocityLimit::centripetal);
   CHECK(pl.v_max == doctest::Approx(std::sqrt(kCentripetalShare * 1000.0 * 10.0)));
   // What is left for the path acceleration: the tangential and the centripetal part are
@@ -115,6 +116,28 @@ TEST_CASE("a circle is limited by centripetal acceleration: v^2 / R <= 3/4 a") {
   // (the sum |a| + v^2/R would leave only 250).
   CHECK(pl.a_max == doctest::Approx(1000.0 * std::sqrt(1 - kCentripetalShare * kCentripetalShare)));
   CHECK(pl.d_max == doctest::Approx(pl.a_max));
+}
+
+TEST_CASE("an arc takes the centripetal share its length favours: a short arc more acceleration") {
+  const std::array<AxisLimits, 3> ax = {axis(1000, 1000, 1e9), axis(1000, 1000, 1e9),
+                                        axis(1000, 1000, 1e9)};
+  const double r = 5.0;
+  const auto arc = [&](double sweep) {
+    Move m = line(vec(r, 0), vec(r * std::cos(sweep), r * std::sin(sweep)), 6000.0);
+    m.arc = Arc{0, 1, 0.0, 0.0, false, false};
+    return m;
+  };
+  const Move long_arc = circle(r, 6000.0);
+  const Move short_arc = arc(0.3);
+  const PathLimits pl = path_limits(Segment::from_move(long_arc), long_arc, ax);
+  const PathLimits ps = path_limits(Segment::from_move(short_arc), short_arc, ax);
+  CHECK(pl.limit == VelocityLimit::centripetal);
+  CHECK(ps.limit == VelocityLimit::centripetal);
+  // The full circle runs at its cap most of the way: a share above 3/4.
+  CHECK(pl.v_max > std::sqrt(kCentripetalShare * 1000.0 * r));
+  // 1.5 mm of arc is mostly ramps: a share below the circle's, more path acceleration.
+  CHECK(ps.v_max < pl.v_max);
+  CHECK(ps.a_max > pl.a_max);
 }
 
 TEST_CASE("a small circle under a jerk-limited slope is limited by the change of curvature") {
