@@ -7,9 +7,10 @@
 #include <stdexcept>
 #include <string>
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
-AxisStage::AxisStage(const std::vector<ChannelAxis>& axes, const AxisVec& start, double t_cycle) {
+AxisStage::AxisStage(const std::vector<ChannelAxis>& axes, const planner::AxisVec& start,
+                     double t_cycle) {
   axes_.reserve(axes.size());
   for (std::size_t i = 0; i < axes.size(); ++i) {
     const double p0 = start[i];
@@ -44,7 +45,7 @@ void AxisStage::follow(std::size_t i) noexcept {
   control_step(i);
 }
 
-bool AxisStage::drive(std::size_t i, const Cycle& c, bool motion_active, bool waiting,
+bool AxisStage::drive(std::size_t i, const ipo::Cycle& c, bool motion_active, bool waiting,
                       double target, double waited, std::optional<RunTimeError>& error) noexcept {
   Axis& a = axes_[i];
   const axes::Setpoint& sp = setpoint_[i];
@@ -98,4 +99,4 @@ bool AxisStage::drive(std::size_t i, const Cycle& c, bool motion_active, bool wa
   return false;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

@@ -8,7 +8,7 @@
 #include <memory>
 #include <numbers>
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 namespace {
 
@@ -235,4 +235,4 @@ void CaxTracker::fit_spline(const planner::Move& mv, double c_start, double shif
   out.push_back(std::move(m));
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

@@ -9,7 +9,7 @@
 #include <limits>
 #include <stdexcept>
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 ConveyorSync::ConveyorSync(const machines::ConveyorSyncChannel& channel,
                            std::span<const SyncAxis> axes, double t_cycle)
@@ -19,14 +19,14 @@ ConveyorSync::ConveyorSync(const machines::ConveyorSyncChannel& channel,
       reserve_(channel.dynamics_reserve),
       t_cycle_(t_cycle) {
   if (axes.size() > planner::kMaxAxes)
-    throw std::invalid_argument("ipo::ConveyorSync: " + std::to_string(axes.size()) + " axes");
+    throw std::invalid_argument("tracking::ConveyorSync: " + std::to_string(axes.size()) + " axes");
   if (!(t_cycle > 0.0))
-    throw std::invalid_argument("ipo::ConveyorSync: cycle time " + std::to_string(t_cycle));
+    throw std::invalid_argument("tracking::ConveyorSync: cycle time " + std::to_string(t_cycle));
   n_ = axes.size();
   for (std::size_t i = 0; i < n_; ++i) {
     axes_[i] = axes[i];
     if (!axes::valid(axes[i].dynamics))
-      throw std::invalid_argument("ipo::ConveyorSync: axis " + axes[i].name +
+      throw std::invalid_argument("tracking::ConveyorSync: axis " + axes[i].name +
                                   ": PTP dynamics not usable (V " +
                                   std::to_string(axes[i].dynamics.v_max) + ")");
     share_[i] = axes[i].xyz >= 0 && axes[i].xyz < 3 ? frame_.direction()[axes[i].xyz] : 0.0;
@@ -271,4 +271,4 @@ MasterDisplay ConveyorSync::display() const noexcept {
   return master_display(frame_, port_->measured(), port_->master());
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

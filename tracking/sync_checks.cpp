@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 namespace {
 
@@ -44,4 +44,4 @@ double pcs1_belt(double conveying, double conv_vel) noexcept {
   return std::fabs(conveying) * kBeltVelocityTolerance * conv_vel;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

@@ -12,7 +12,7 @@
 
 #include "planner/move.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 /// Error 50653 (004 l.514): the conveyor's velocity is more than 10 % above CONV_VEL.
 inline constexpr const char* kBeltTooFastId = "50653";
@@ -60,4 +60,4 @@ planner::AxisLimits pcs1_limits(const planner::AxisLimits& axis, double conveyin
 /// |conveying| * 1.10 * conv_vel (what ProgramSource puts into planner::Move::belt).
 double pcs1_belt(double conveying, double conv_vel) noexcept;
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

@@ -9,7 +9,7 @@
 #include <optional>
 #include <vector>
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 namespace {
 
@@ -17,21 +17,22 @@ using Jacobian = std::array<std::array<double, 3>, planner::kMaxAxes>;  // [join
 using Hessian = std::array<Jacobian, 3>;                                // [l][joint][k]
 
 // p moved by `d` along Cartesian axis l (a missing axis: p itself).
-AxisVec moved(const AxisVec& p, const std::array<int, 3>& xyz, std::size_t l, double d) noexcept {
-  AxisVec x = p;
+planner::AxisVec moved(const planner::AxisVec& p, const std::array<int, 3>& xyz, std::size_t l,
+                       double d) noexcept {
+  planner::AxisVec x = p;
   if (xyz[l] >= 0) x[static_cast<std::size_t>(xyz[l])] += d;
   return x;
 }
 
 // dq_i/dx_k at p by central differences; false when the transform fails.
-bool jacobian(const planner::JointMap& inverse, const std::array<int, 3>& xyz, const AxisVec& p,
-              Jacobian& out) noexcept {
+bool jacobian(const planner::JointMap& inverse, const std::array<int, 3>& xyz,
+              const planner::AxisVec& p, Jacobian& out) noexcept {
   constexpr double h = kTcpDynamicsStep;
   out = Jacobian{};
   for (std::size_t k = 0; k < 3; ++k) {
     if (xyz[k] < 0) continue;
-    AxisVec qlo{};
-    AxisVec qhi{};
+    planner::AxisVec qlo{};
+    planner::AxisVec qhi{};
     try {
       if (!inverse(moved(p, xyz, k, -h), qlo) || !inverse(moved(p, xyz, k, h), qhi)) return false;
     } catch (...) {
@@ -44,8 +45,8 @@ bool jacobian(const planner::JointMap& inverse, const std::array<int, 3>& xyz, c
 }
 
 // H[l][i][k] = d2q_i/dx_k dx_l at p: the Jacobian at p +- h e_l.
-bool hessian(const planner::JointMap& inverse, const std::array<int, 3>& xyz, const AxisVec& p,
-             Hessian& out) noexcept {
+bool hessian(const planner::JointMap& inverse, const std::array<int, 3>& xyz,
+             const planner::AxisVec& p, Hessian& out) noexcept {
   constexpr double h = kTcpDynamicsStep;
   out = Hessian{};
   for (std::size_t l = 0; l < 3; ++l) {
@@ -69,8 +70,8 @@ struct Sums {
   std::array<double, planner::kMaxAxes> d{};  // sum_klm |d3q_i/dx_k dx_l dx_m|
 };
 
-bool sums(const planner::JointMap& inverse, const std::array<int, 3>& xyz, const AxisVec& p,
-          std::size_t n, Sums& out) noexcept {
+bool sums(const planner::JointMap& inverse, const std::array<int, 3>& xyz,
+          const planner::AxisVec& p, std::size_t n, Sums& out) noexcept {
   constexpr double h = kTcpDynamicsStep;
   out = Sums{};
   Jacobian jac{};
@@ -102,7 +103,7 @@ bool sums(const planner::JointMap& inverse, const std::array<int, 3>& xyz, const
 
 std::optional<axes::Dynamics> tcp_dynamics(const planner::JointMap& inverse, std::array<int, 3> xyz,
                                            std::span<const axes::Dynamics> joints,
-                                           std::span<const AxisVec> points) noexcept {
+                                           std::span<const planner::AxisVec> points) noexcept {
   constexpr double inf = std::numeric_limits<double>::infinity();
   constexpr double tiny = 1e-12;
   if (!inverse || points.empty()) return std::nullopt;
@@ -110,7 +111,7 @@ std::optional<axes::Dynamics> tcp_dynamics(const planner::JointMap& inverse, std
   double v = inf;
   double a = inf;
   double j = inf;
-  for (const AxisVec& p : points) {
+  for (const planner::AxisVec& p : points) {
     Sums s{};
     if (!sums(inverse, xyz, p, n, s)) return std::nullopt;
     // V first (velocity, the velocity-product share of the acceleration and the velocity-cube
@@ -159,9 +160,9 @@ bool path_belt_derivatives(const planner::JointMap& inverse, std::array<int, 3> 
   const std::size_t na = std::min(axis_count, planner::kMaxAxes);
   const std::size_t n = std::min(joint_count, planner::kMaxAxes);
   // q at i steps along the path (its Taylor polynomial) and j steps along the belt.
-  const auto q = [&](int i, int j, AxisVec& out_q) noexcept {
+  const auto q = [&](int i, int j, planner::AxisVec& out_q) noexcept {
     const double a = i * h;
-    AxisVec x = p.x;
+    planner::AxisVec x = p.x;
     for (std::size_t k = 0; k < na; ++k)
       x[k] += a * p.d1[k] + 0.5 * a * a * p.d2[k] + a * a * a / 6.0 * p.d3[k];
     const double b = shift + j * h;
@@ -174,8 +175,8 @@ bool path_belt_derivatives(const planner::JointMap& inverse, std::array<int, 3> 
     }
   };
   // The 13 points: the axes (0, 0), (+-1, 0), (+-2, 0), (0, +-1), (0, +-2) and (+-1, +-1).
-  AxisVec q00{}, q10{}, qm10{}, q20{}, qm20{}, q01{}, q0m1{}, q02{}, q0m2{};
-  AxisVec q11{}, q1m1{}, qm11{}, qm1m1{};
+  planner::AxisVec q00{}, q10{}, qm10{}, q20{}, qm20{}, q01{}, q0m1{}, q02{}, q0m2{};
+  planner::AxisVec q11{}, q1m1{}, qm11{}, qm1m1{};
   if (!q(0, 0, q00) || !q(1, 0, q10) || !q(-1, 0, qm10) || !q(2, 0, q20) || !q(-2, 0, qm20) ||
       !q(0, 1, q01) || !q(0, -1, q0m1) || !q(0, 2, q02) || !q(0, -2, q0m2) || !q(1, 1, q11) ||
       !q(1, -1, q1m1) || !q(-1, 1, qm11) || !q(-1, -1, qm1m1))
@@ -215,7 +216,7 @@ struct SampleAt {
   double shift = 0.0;
 };
 
-std::array<double, 3> tcp_of(const AxisVec& x, const std::array<int, 3>& xyz) noexcept {
+std::array<double, 3> tcp_of(const planner::AxisVec& x, const std::array<int, 3>& xyz) noexcept {
   std::array<double, 3> p{};
   for (std::size_t l = 0; l < 3; ++l)
     if (xyz[l] >= 0) p[l] = x[static_cast<std::size_t>(xyz[l])];
@@ -271,7 +272,7 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
 
   // Belt travel 0: the largest path derivatives, at most what the planner plans with. The
   // samples' points and their derivatives at travel 0 are kept for the travels below.
-  AxisVec m1{}, m2{}, m3{};
+  planner::AxisVec m1{}, m2{}, m3{};
   std::vector<planner::PathPoint> points(static_cast<std::size_t>(n + 1));
   std::vector<std::optional<PathBeltDerivatives>> at0(points.size());
   for (std::size_t k = 0; k < points.size(); ++k) {
@@ -342,8 +343,8 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
   // e1_kc), a0 the share without the e1 term (for the binding k, c the lowered limit leaves the
   // path exactly A); the same for the jerk with J_k.
   struct Shares {
-    AxisVec a{};
-    AxisVec j{};
+    planner::AxisVec a{};
+    planner::AxisVec j{};
     double ratio = inf;  // the largest share over its limit, min(A+, A-) or J
     std::size_t joint = 0;
     char quantity = 'a';
@@ -441,7 +442,7 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
   return out;
 }
 
-std::optional<JointOverrun> joint_overrun(const JointSetpoint& s,
+std::optional<JointOverrun> joint_overrun(const ipo::JointSetpoint& s,
                                           std::span<const axes::Dynamics> joints,
                                           bool jerk) noexcept {
   constexpr double tol = 1.0 + 1e-6;
@@ -457,4 +458,4 @@ std::optional<JointOverrun> joint_overrun(const JointSetpoint& s,
   return std::nullopt;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

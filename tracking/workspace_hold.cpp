@@ -8,7 +8,7 @@
 
 #include "jerk/jerk.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 namespace {
 
@@ -214,4 +214,4 @@ std::optional<std::string> WorkspaceHold::check(double q) const {
   return std::nullopt;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

@@ -13,7 +13,7 @@
 #include "planner/path.hpp"
 #include "tracking/caxtrack.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 namespace {
 
@@ -341,4 +341,4 @@ std::optional<XvError> joint_belt_check(const planner::Move& in, const planner::
   return XvError{kXvTooFastId, buf};
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking
