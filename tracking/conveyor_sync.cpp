@@ -9,6 +9,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "core/tolerance.hpp"
+
 namespace ncsim::tracking {
 
 ConveyorSync::ConveyorSync(const machines::ConveyorSyncChannel& channel,
@@ -30,7 +32,7 @@ ConveyorSync::ConveyorSync(const machines::ConveyorSyncChannel& channel,
                                   ": PTP dynamics not usable (V " +
                                   std::to_string(axes[i].dynamics.v_max) + ")");
     share_[i] = axes[i].xyz >= 0 && axes[i].xyz < 3 ? frame_.direction()[axes[i].xyz] : 0.0;
-    if (std::fabs(share_[i]) < 1e-12) share_[i] = 0.0;  // rounding of an unrotated T0
+    if (std::fabs(share_[i]) < kTiny) share_[i] = 0.0;  // rounding of an unrotated T0
   }
   // The hold line against the conveying direction
   std::array<int, planner::kMaxAxes> xyz{};
@@ -165,7 +167,7 @@ axes::Result ConveyorSync::start_catch_up(std::span<const axes::MotionState> sta
   if (r != axes::Result::ok && feed_cont > 0.0 && plan(0.0) == axes::Result::ok) {
     double lo = 0.0;
     double hi = feed_cont;
-    for (int iter = 0; iter < 40 && hi - lo > 1e-9 * std::max(1.0, hi); ++iter) {
+    for (int iter = 0; iter < 40 && hi - lo > kRelTol * std::max(1.0, hi); ++iter) {
       const double mid = 0.5 * (lo + hi);
       (plan(mid) == axes::Result::ok ? lo : hi) = mid;
     }

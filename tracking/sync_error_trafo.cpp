@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/tolerance.hpp"
 #include "tracking/trafo_sync.hpp"
 
 namespace ncsim::tracking {
@@ -17,8 +18,8 @@ double room_ahead(const machines::Workspace& box, const Eigen::Vector3d& dir,
                   const Eigen::Vector3d& p) noexcept {
   double room = std::numeric_limits<double>::infinity();
   for (int k = 0; k < 3; ++k) {
-    if (dir[k] > 1e-12) room = std::min(room, (box.upper[k] - p[k]) / dir[k]);
-    if (dir[k] < -1e-12) room = std::min(room, (box.lower[k] - p[k]) / dir[k]);
+    if (dir[k] > kTiny) room = std::min(room, (box.upper[k] - p[k]) / dir[k]);
+    if (dir[k] < -kTiny) room = std::min(room, (box.lower[k] - p[k]) / dir[k]);
   }
   return std::isfinite(room) ? std::max(room, 0.0) : 0.0;
 }

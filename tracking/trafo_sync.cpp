@@ -9,6 +9,8 @@
 #include <optional>
 #include <vector>
 
+#include "core/tolerance.hpp"
+
 namespace ncsim::tracking {
 
 namespace {
@@ -105,7 +107,6 @@ std::optional<axes::Dynamics> tcp_dynamics(const planner::JointMap& inverse, std
                                            std::span<const axes::Dynamics> joints,
                                            std::span<const planner::AxisVec> points) noexcept {
   constexpr double inf = std::numeric_limits<double>::infinity();
-  constexpr double tiny = 1e-12;
   if (!inverse || points.empty()) return std::nullopt;
   const std::size_t n = std::min(joints.size(), planner::kMaxAxes);
   double v = inf;
@@ -118,26 +119,26 @@ std::optional<axes::Dynamics> tcp_dynamics(const planner::JointMap& inverse, std
     // share of the jerk), then A, then J: each from what the earlier ones leave.
     double vp = inf;
     for (std::size_t i = 0; i < n; ++i) {
-      if (!(s.r[i] > tiny)) continue;  // a joint the TCP does not move (C beside the TCP)
+      if (!(s.r[i] > kTiny)) continue;  // a joint the TCP does not move (C beside the TCP)
       const axes::Dynamics& dq = joints[i];
       const double aq = std::min(dq.a_max, dq.d_max);
       vp = std::min(vp, dq.v_max / s.r[i]);
-      if (s.c[i] > tiny) vp = std::min(vp, std::sqrt(aq / (2.0 * s.c[i])));
-      if (s.d[i] > tiny) vp = std::min(vp, std::cbrt(dq.j_max / (kTcpJerkCubeShare * s.d[i])));
+      if (s.c[i] > kTiny) vp = std::min(vp, std::sqrt(aq / (2.0 * s.c[i])));
+      if (s.d[i] > kTiny) vp = std::min(vp, std::cbrt(dq.j_max / (kTcpJerkCubeShare * s.d[i])));
     }
     if (!std::isfinite(vp)) continue;  // the TCP moves no joint here
     double ap = inf;
     for (std::size_t i = 0; i < n; ++i) {
-      if (!(s.r[i] > tiny)) continue;
+      if (!(s.r[i] > kTiny)) continue;
       const axes::Dynamics& dq = joints[i];
       const double aq = std::min(dq.a_max, dq.d_max);
       ap = std::min(ap, (aq - s.c[i] * vp * vp) / s.r[i]);
-      if (s.c[i] > tiny)
+      if (s.c[i] > kTiny)
         ap = std::min(ap, (dq.j_max - s.d[i] * vp * vp * vp) / (6.0 * s.c[i] * vp));
     }
     double jp = inf;
     for (std::size_t i = 0; i < n; ++i) {
-      if (!(s.r[i] > tiny)) continue;
+      if (!(s.r[i] > kTiny)) continue;
       const double left = joints[i].j_max - 3.0 * s.c[i] * vp * ap - s.d[i] * vp * vp * vp;
       jp = std::min(jp, left / s.r[i]);
     }
@@ -229,14 +230,13 @@ std::array<double, 3> tcp_of(const planner::AxisVec& x, const std::array<int, 3>
 // carries the point into it; {0, 0} without a workspace.
 std::array<double, 2> shift_range(const std::array<double, 3>& tcp, const BeltCarry& carry) {
   if (!carry.workspace) return {0.0, 0.0};
-  constexpr double tol = 1e-9;  // [mm] a point on a face is inside
   const auto& box = *carry.workspace;
   double lo = 0.0;
   double hi = std::numeric_limits<double>::infinity();
   for (std::size_t l = 0; l < 3; ++l) {
-    const double b0 = box[0][l] - tol - tcp[l];
-    const double b1 = box[1][l] + tol - tcp[l];
-    if (std::fabs(carry.e[l]) < 1e-12) {
+    const double b0 = box[0][l] - kSamePoint - tcp[l];
+    const double b1 = box[1][l] + kSamePoint - tcp[l];
+    if (std::fabs(carry.e[l]) < kTiny) {
       if (b0 > 0.0 || b1 < 0.0) return {1.0, 0.0};  // beside the box: never inside
       continue;
     }
@@ -256,7 +256,6 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
                                                  std::span<const planner::AxisLimits> joints,
                                                  const BeltCarry& carry) noexcept {
   constexpr double inf = std::numeric_limits<double>::infinity();
-  constexpr double tiny = 1e-12;
   constexpr double kLeast = 0.01;  // a share leaving less than 1 % of a limit overloads it
   BeltShare out;
   out.feed = feed;
@@ -311,7 +310,7 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
         const double left = joints[i].v_max - w * std::fabs(d.b[i]);
         if (!(left > 0.0))
           return BeltOverload{i, 'v', w * std::fabs(d.b[i]), joints[i].v_max, tcp, t};
-        if (std::fabs(d.s[i]) > tiny) out.feed = std::min(out.feed, left / std::fabs(d.s[i]));
+        if (std::fabs(d.s[i]) > kTiny) out.feed = std::min(out.feed, left / std::fabs(d.s[i]));
         terms.push_back(
             {std::max(0.0, std::fabs(d.s[i]) - m1[i]), std::max(0.0, std::fabs(d.ss[i]) - m2[i]),
              std::max(0.0, std::fabs(d.sss[i]) - m3[i]), std::fabs(d.sb[i]), std::fabs(d.bb[i]),
@@ -328,11 +327,11 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
   bool moves = false;
   for (std::size_t i = 0; i < nj; ++i) {
     const planner::AxisLimits& l = joints[i];
-    if (m1[i] > tiny) {
+    if (m1[i] > kTiny) {
       moves = true;
       v0 = std::min(v0, l.v_max / m1[i]);
     }
-    if (m2[i] > tiny)
+    if (m2[i] > kTiny)
       v0 = std::min(v0, std::sqrt(planner::kCentripetalShare * std::min(l.a_max, l.d_max) / m2[i]));
   }
   if (!moves) return out;  // the block moves no joint at belt travel 0
@@ -366,7 +365,7 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
     };
     double a = inf;
     for (std::size_t i = 0; i < nj; ++i) {
-      if (!(m1[i] > tiny)) continue;  // a joint the path does not move does not bound it
+      if (!(m1[i] > kTiny)) continue;  // a joint the path does not move does not bound it
       const double amax = std::max(joints[i].a_max, joints[i].d_max);
       for (std::size_t c = 0; c < samples; ++c) {
         const ShareTerms& x = terms[c * nj + i];
@@ -384,7 +383,7 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
     };
     double jp = inf;
     for (std::size_t i = 0; i < nj; ++i) {
-      if (!(m1[i] > tiny)) continue;
+      if (!(m1[i] > kTiny)) continue;
       for (std::size_t c = 0; c < samples; ++c) {
         const ShareTerms& x = terms[c * nj + i];
         const double ji = (joints[i].j_max - j0(x)) / (m1[i] + x.e1);
@@ -415,6 +414,7 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
   // when the belt takes more than that with the path at rest, half of what it leaves), the
   // block's feed is capped (bisection on V) so that the path keeps the rest.
   constexpr double kShareMost = 0.5;
+  constexpr double kLeastFeed = 1e-12;  // [mm/s] a capped feed stays positive
   const Shares rest = shares_at(0.0);
   if (!(rest.ratio < 1.0 - kLeast)) {
     const double limit = rest.quantity == 'a'
@@ -435,7 +435,7 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
     }
     v = lo;
     sh = lo > 0.0 ? shares_at(lo) : rest;
-    out.feed = std::min(out.feed, std::max(v, tiny));
+    out.feed = std::min(out.feed, std::max(v, kLeastFeed));
   }
   out.joints.a = sh.a;
   out.joints.j = sh.j;

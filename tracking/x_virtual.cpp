@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/tolerance.hpp"
 #include "planner/blend.hpp"
 #include "planner/corner.hpp"
 #include "planner/limits.hpp"
@@ -67,7 +68,7 @@ ArcGeom arc_geom(const planner::Move& mv) {
   g.dir = a.clockwise ? -1.0 : 1.0;
   g.phi0 = std::atan2(ry, rx);
   g.sweep = (std::atan2(ey, ex) - g.phi0) * g.dir;
-  while (g.sweep <= 1e-12)
+  while (g.sweep <= kTiny)
     g.sweep += kTwoPi;
   if (a.full_circle) g.sweep = kTwoPi;
   return g;
@@ -113,7 +114,7 @@ std::optional<XvError> belt_too_fast(const planner::Segment& curve, planner::Mov
                                      const char* there) {
   probe.feed = need;  // the planner caps at the programmed feed: ask for `need`
   const planner::PathLimits pl = planner::path_limits(curve, probe, limits);
-  if (pl.v_max >= need * (1.0 - 1e-9)) return std::nullopt;
+  if (pl.v_max >= need * (1.0 - kRelTol)) return std::nullopt;
   const char* what = pl.limit == planner::VelocityLimit::axis_velocity ? "velocity"
                      : pl.limit == planner::VelocityLimit::centripetal ? "acceleration"
                                                                        : "jerk";
@@ -201,7 +202,7 @@ XvOutcome belt_feed(const planner::Move& mv, const XVirtualParams& p,
   const auto x = static_cast<std::size_t>(p.x);
   if (!mv.spline && !mv.arc) {
     const double dx = mv.end[x] - mv.start[x];
-    if (dx * p.sign >= -1e-9) {
+    if (dx * p.sign >= -kSamePoint) {
       out.error = XvError{kXvDirectionId,
                           format("x_virtual: the block must run against the conveying direction "
                                  "(004 l.439): X moves by %.6g mm (the belt moves in %+g X)",
@@ -320,7 +321,7 @@ std::optional<XvError> joint_belt_check(const planner::Move& in, const planner::
   const planner::Link link =
       planner::link_velocity(end, start, n, a.metric() | b.metric(), limits, channel, need, need,
                              v_min, planner::jerk_limited(in.slope));
-  if (link.v_link >= need * (1.0 - 1e-9)) return std::nullopt;
+  if (link.v_link >= need * (1.0 - kRelTol)) return std::nullopt;
   const std::size_t axis = std::min<std::size_t>(link.limiting_axis, names.size() - 1);
   const bool knee = link.cls == planner::TransitionClass::c0;
   // A knee's link is VELOJUMP's, or the C1 rule's where the curvature jump binds first
