@@ -14,10 +14,11 @@
 #include "channel/after_error.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <utility>
+
+#include "core/number_text.hpp"
 
 namespace ncsim::channel {
 
@@ -198,12 +199,9 @@ bool AfterErrorStop::beyond_soft_limit(const ipo::Cycle& c, bool fresh,
       return true;
     }
     try {
-      char buf[200];
-      std::snprintf(buf, sizeof buf,
-                    "; axis %s would have passed its soft limit %.6g mm at t=%.6g s: the run "
-                    "ended there",
-                    axes_.config(i).name.c_str(), alarm->limit, c.t);
-      passed_ = buf;
+      passed_ = "; axis " + axes_.config(i).name + " would have passed its soft limit " +
+                core::human(alarm->limit) + " mm at t=" + core::human(c.t) +
+                " s: the run ended there";
     } catch (...) {
       std::abort();
     }
@@ -225,7 +223,6 @@ std::string AfterErrorStop::note() const {
 }
 
 std::string AfterErrorStop::axes_note() const {
-  char buf[512];
   std::string axis;
   std::string limit;
   if (axes_stop_.axis() >= 0) {
@@ -237,18 +234,15 @@ std::string AfterErrorStop::axes_note() const {
       const bool up = l.soft.max_enabled &&
                       (!l.soft.min_enabled ||
                        std::fabs(l.soft.max_position - p) < std::fabs(p - l.soft.min_position));
-      std::snprintf(buf, sizeof buf, " %.6g mm (%s), standing at %.6g mm",
-                    up ? l.soft.max_position : l.soft.min_position,
-                    up ? "P-AXIS-00178" : "P-AXIS-00177", axes_.setpoints()[i].p);
-      limit = buf;
+      limit = " " + core::human(up ? l.soft.max_position : l.soft.min_position) + " mm (" +
+              (up ? "P-AXIS-00178" : "P-AXIS-00177") + "), standing at " +
+              core::human(axes_.setpoints()[i].p) + " mm";
     }
   }
-  std::snprintf(buf, sizeof buf,
-                "synchronisation kept after %s (004 §2.3): the path braked to 0 in PCS1, the "
-                "machine followed the belt for %.6g s;%s %s%s; it stood at t=%.6g s",
-                held_->id.c_str(), axes_stop_.followed(), axis.c_str(), end_text(axes_stop_.why()),
-                limit.c_str(), end_t_);
-  return std::string(buf) + indp_note() + passed_;
+  return "synchronisation kept after " + held_->id +
+         " (004 §2.3): the path braked to 0 in PCS1, the machine followed the belt for " +
+         core::human(axes_stop_.followed()) + " s;" + axis + " " + end_text(axes_stop_.why()) +
+         limit + "; it stood at t=" + core::human(end_t_) + " s" + indp_note() + passed_;
 }
 
 }  // namespace ncsim::channel

@@ -2,7 +2,6 @@
 
 #include "channel/channel.hpp"
 
-#include <cstdio>
 #include <cstdlib>
 #include <span>
 #include <stdexcept>
@@ -64,12 +63,6 @@ Channel::Channel(ChannelConfig config, ipo::Source& source, ipo::Sink* sink)
           tracking::after_error_axis(config.path.axes[i], config.axes[i].monitor.soft_limits));
     after_.configure(after, config.conveyor->workspace, t);
   }
-}
-
-std::string format_text(const char* format, double a, double b) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, format, a, b);
-  return buf;
 }
 
 void raise(std::optional<RunTimeError>& error, const char* id, std::string message,

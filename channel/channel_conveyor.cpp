@@ -10,13 +10,13 @@
 // is the departure PTP from that moving state.
 
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "channel/conveyor_tracking.hpp"
+#include "core/number_text.hpp"
 #include "core/tolerance.hpp"
 #include "program/machine_data.hpp"
 #include "program/program_source.hpp"
@@ -100,12 +100,10 @@ EventOutcome ConveyorTracking::on_sync_in(const interp::SyncIn& command,
     // A measured value that never comes (no workpiece left, the belt stopped, the probe armed
     // for an edge that never passes) must not make the run endless: ncsim's limit (NC9054).
     if (++measure_waited_ > measure_wait_cycles_max_) {
-      char buf[160];
-      std::snprintf(buf, sizeof buf,
-                    "#SYNC IN: no measured value within %.6g s (ncsim's limit): no workpiece "
-                    "edge was latched while the probe was armed",
-                    measured_value_wait_max_);
-      return EventContext(e, ipo_, error_).fail(kMeasuredValueWaitId, buf);
+      return EventContext(e, ipo_, error_)
+          .fail(kMeasuredValueWaitId,
+                "#SYNC IN: no measured value within " + core::human(measured_value_wait_max_) +
+                    " s (ncsim's limit): no workpiece edge was latched while the probe was armed");
     }
     return EventOutcome::blocking;
   } catch (...) {

@@ -85,9 +85,6 @@ struct AxesState {
   planner::AxisVec following_error{};  ///< set - actual [mm | deg] (000 7.1.5)
 };
 
-/// A message part with two numbers (`%.6g`-style `format`), as the run-time errors write them.
-std::string format_text(const char* format, double a, double b);
-
 /// Records the run-time error `id` with `message` at cycle `c`'s line, file and time into
 /// `error` (`axis`: the interpolated axis, -1: none). Never throws.
 void raise(std::optional<RunTimeError>& error, const char* id, std::string message,

@@ -9,12 +9,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <utility>
 
 #include "channel/conveyor_tracking.hpp"
+#include "core/number_text.hpp"
 #include "core/tolerance.hpp"
 #include "tracking/sync_checks.hpp"
 
@@ -80,14 +80,13 @@ bool ConveyorTracking::workspace_cap(const ipo::Cycle& c) noexcept {
   const tracking::WorkspaceHold* h = sync_->hold();
   if (h != nullptr && h->capped() && cap == 0.0 && c.path.v == 0.0) {
     if (++hold_stood_ > measure_wait_cycles_max_) {
-      char buf[256];
-      std::snprintf(buf, sizeof buf,
-                    "the belt stood for %.6g s (ncsim's limit) while the workspace hold "
-                    "(P-AXIS-00555, hold_limit_vel_factor P-CHAN-00366) kept the tool at the "
-                    "hold line %.6g mm: the belt was not restarted",
-                    measured_value_wait_max_, h->config().line);
       try {
-        raise(error_, kHoldBeltStoodId, buf, c, -1);
+        raise(error_, kHoldBeltStoodId,
+              "the belt stood for " + core::human(measured_value_wait_max_) +
+                  " s (ncsim's limit) while the workspace hold (P-AXIS-00555, "
+                  "hold_limit_vel_factor P-CHAN-00366) kept the tool at the hold line " +
+                  core::human(h->config().line) + " mm: the belt was not restarted",
+              c, -1);
       } catch (...) {
         std::abort();
       }

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/number_text.hpp"
 #include "core/tolerance.hpp"
 
 namespace ncsim::channel {
@@ -59,13 +60,11 @@ bool ExactStopWait::check(const ipo::Cycle& c, const AxisStage& axes, bool& rele
   }
   const ChannelAxis& w = axes.config(static_cast<std::size_t>(worst));
   raise(error, kExactStopWaitId,
-        "axis " + w.name +
-            format_text(": exact stop window P-AXIS-00236 (%.6g mm) not reached, %.6g mm from the "
-                        "target",
-                        w.monitor.exact_stop.window, worst_d) +
-            format_text(
-                " after %.6g s (P-AXIS-00532 does not monitor the time; ncsim's limit %.6g s)",
-                waited(), wait_max_),
+        "axis " + w.name + ": exact stop window P-AXIS-00236 (" +
+            core::human(w.monitor.exact_stop.window) + " mm) not reached, " + core::human(worst_d) +
+            " mm from the target after " + core::human(waited()) +
+            " s (P-AXIS-00532 does not monitor the time; ncsim's limit " + core::human(wait_max_) +
+            " s)",
         c, worst);
   return false;
 }

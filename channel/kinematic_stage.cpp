@@ -12,11 +12,11 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdio>
 #include <cstdlib>
 #include <span>
 #include <string>
 
+#include "core/number_text.hpp"
 #include "program/program_source.hpp"
 #include "tracking/trafo_sync.hpp"
 
@@ -63,12 +63,10 @@ bool KinematicStage::map(const ipo::Cycle& c, const std::optional<planner::AxisV
   ipo::JointSetpoint s;
   if (!stage_->step(x, v, a, j, s)) {
     const planner::AxisVec& p = stage_->failed_point();
-    char text[200];
-    std::snprintf(text, sizeof text,
-                  "TCP point (%.6g, %.6g, %.6g) mm outside the workspace of the kinematic "
-                  "transform",
-                  p[0], p[1], p[2]);
-    raise(error, "NC3201", text, c, -1);
+    raise(error, "NC3201",
+          "TCP point (" + core::human(p[0]) + ", " + core::human(p[1]) + ", " + core::human(p[2]) +
+              ") mm outside the workspace of the kinematic transform",
+          c, -1);
     return false;
   }
   // the jerk stencil holds this cycle and the two before.
@@ -113,15 +111,14 @@ void KinematicStage::check_sync(const ipo::Cycle& c, const ipo::JointSetpoint& s
   const char* limit = o->quantity == 'v'   ? "P-AXIS-00212"
                       : o->quantity == 'a' ? "P-AXIS-00008"
                                            : "the jerk of P-AXIS-00195..00198";
-  char text[320];
-  std::snprintf(text, sizeof text,
-                "joint %s: |%s| %.6g above its %.6g (%s) in %s under #TRAFO ON (004 l.609: the "
-                "joint dynamics are not ensured there; reduce the belt velocity or the feed)",
-                axes.config(o->joint).name.c_str(), quantity, o->value, o->limit, limit, phase);
   try {
     RunTimeError w;
     w.id = tracking::kTrafoSyncOverrunId;
-    w.message = text;
+    w.message = "joint " + axes.config(o->joint).name + ": |" + quantity + "| " +
+                core::human(o->value) + " above its " + core::human(o->limit) + " (" + limit +
+                ") in " + phase +
+                " under #TRAFO ON (004 l.609: the joint dynamics are not ensured there; reduce "
+                "the belt velocity or the feed)";
     w.line = c.line;
     w.file = c.file;
     w.t = c.t;

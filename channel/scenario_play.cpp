@@ -6,6 +6,8 @@
 #include <utility>
 #include <variant>
 
+#include "core/number_text.hpp"
+
 namespace ncsim::channel {
 
 void ScenarioPlay::block_started(std::uint32_t line) noexcept {
@@ -36,9 +38,9 @@ std::optional<std::pair<const char*, std::string>> ScenarioPlay::act(
       }
     }
     return std::pair{kOverrideRangeId,
-                     format_text("scenario path override %.6g %% above %.6g %%, the largest of the "
-                                 "channel's override type (NCSIM-CHAN-630)",
-                                 o->fraction * 100.0, max * 100.0)};
+                     "scenario path override " + core::human(o->fraction * 100.0) + " % above " +
+                         core::human(max * 100.0) +
+                         " %, the largest of the channel's override type (NCSIM-CHAN-630)"};
   }
   return indp_.set_override(std::get<scenario::AxisOverride>(a), axes_);
 }

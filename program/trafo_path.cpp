@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <memory>
 #include <string>
 #include <variant>
 #include <vector>
 
+#include "core/number_text.hpp"
 #include "planner/blend.hpp"
 #include "planner/joint_limits.hpp"
 
@@ -54,8 +54,8 @@ void TrafoPath::check_workspace(const planner::Move& move, std::uint32_t line) c
       if (xyz[a] >= 0) p[static_cast<Eigen::Index>(a)] = x[static_cast<std::size_t>(xyz[a])];
     const machines::KinResult r = trafo_->kinematics->inverse(p);
     if (r.ok()) continue;
-    char where[160];
-    std::snprintf(where, sizeof where, "TCP X%.6g Y%.6g Z%.6g", p[0], p[1], p[2]);
+    const std::string where =
+        "TCP X" + core::human(p[0]) + " Y" + core::human(p[1]) + " Z" + core::human(p[2]);
     errors_.raise(line, r.error->id,
                   std::string(k == n ? "target " : "path point ") + where +
                       " under #TRAFO ON (kinematic " + std::to_string(trafo_->kin_id) +
@@ -93,19 +93,19 @@ tracking::BeltShare TrafoPath::belt_share_at(const planner::Segment& path, doubl
   const std::variant<tracking::BeltShare, tracking::BeltOverload> share =
       tracking::belt_share(path, feed, trafo_->limits.inverse, trafo_->xyz, joints, carry);
   if (const auto* over = std::get_if<tracking::BeltOverload>(&share)) {
-    const char* what = over->quantity == 'v'   ? "V %.6g (P-AXIS-00212)"
-                       : over->quantity == 'a' ? "A %.6g (the smaller of P-AXIS-00001 / 00002)"
-                                               : "J %.6g (P-AXIS-00001 / 00002 over their ramps)";
-    char limit[80];
-    std::snprintf(limit, sizeof limit, what, over->limit);
-    char text[400];
-    std::snprintf(text, sizeof text,
-                  "the belt at 1.1 x CONV_VEL (%.6g mm/s) %s %.6g of joint %s's %s at TCP X%.6g "
-                  "Y%.6g Z%.6g (PCS1 moved %.6g mm along the belt) under #TRAFO ON",
-                  carry.v_belt, over->quantity == 'v' ? "alone needs" : "takes", over->needed,
-                  machine_.axes[layout_.axes[over->joint]].name.c_str(), limit, over->tcp[0],
-                  over->tcp[1], over->tcp[2], over->shift);
-    errors_.raise_in(at.file, at.line, "NC6211", text);
+    const std::string limit =
+        over->quantity == 'v' ? "V " + core::human(over->limit) + " (P-AXIS-00212)"
+        : over->quantity == 'a'
+            ? "A " + core::human(over->limit) + " (the smaller of P-AXIS-00001 / 00002)"
+            : "J " + core::human(over->limit) + " (P-AXIS-00001 / 00002 over their ramps)";
+    errors_.raise_in(
+        at.file, at.line, "NC6211",
+        "the belt at 1.1 x CONV_VEL (" + core::human(carry.v_belt) + " mm/s) " +
+            (over->quantity == 'v' ? "alone needs " : "takes ") + core::human(over->needed) +
+            " of joint " + machine_.axes[layout_.axes[over->joint]].name + "'s " + limit +
+            " at TCP X" + core::human(over->tcp[0]) + " Y" + core::human(over->tcp[1]) + " Z" +
+            core::human(over->tcp[2]) + " (PCS1 moved " + core::human(over->shift) +
+            " mm along the belt) under #TRAFO ON");
   }
   return std::get<tracking::BeltShare>(share);
 }

@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <stdexcept>
 
+#include "core/number_text.hpp"
 #include "core/tolerance.hpp"
 
 namespace ncsim::tracking {
@@ -240,20 +240,19 @@ std::optional<SyncError> ConveyorSync::workspace(const Eigen::Vector3d& p_mcs) c
   const auto v = check_workspace(box_, frame_.direction(), p_mcs);
   if (!v) return std::nullopt;
   static constexpr const char* kNames[3] = {"X", "Y", "Z"};
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "%s %.6g mm beyond the conveyor workspace's %s face %.6g mm",
-                kNames[v->coord], v->value, v->upper ? "upper" : "lower", v->limit);
+  const std::string what = kNames[v->coord] + (" " + core::human(v->value)) +
+                           " mm beyond the conveyor workspace's " + (v->upper ? "upper" : "lower") +
+                           " face " + core::human(v->limit) + " mm";
   switch (v->face) {
     case WorkspaceFace::conveying:
       return SyncError{kWorkspaceConveyingId,
-                       std::string(buf) + " in the conveying direction while synchronised"};
+                       what + " in the conveying direction while synchronised"};
     case WorkspaceFace::side:
-      return SyncError{kWorkspaceSideId, std::string(buf) + " (a side face) while synchronised"};
+      return SyncError{kWorkspaceSideId, what + " (a side face) while synchronised"};
     case WorkspaceFace::against:
       break;
   }
-  return SyncError{kWorkspaceHoldId,
-                   std::string(buf) + " against the conveying direction while synchronised"};
+  return SyncError{kWorkspaceHoldId, what + " against the conveying direction while synchronised"};
 }
 
 double ConveyorSync::workspace_cap(HoldState st) noexcept {

@@ -4,16 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+
+#include "core/number_text.hpp"
 
 namespace ncsim::tracking {
 
 namespace {
 
 std::string mm_s(double v) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.6g mm/s", v);
-  return buf;
+  return core::human(v) + " mm/s";
 }
 
 }  // namespace

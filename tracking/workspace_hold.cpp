@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
+#include "core/number_text.hpp"
 #include "core/tolerance.hpp"
 #include "jerk/jerk.hpp"
 
@@ -197,23 +197,17 @@ double WorkspaceHold::decide(const HoldState& st) noexcept {
 std::optional<std::string> WorkspaceHold::check(double q) const {
   static constexpr const char* kNames[3] = {"X", "Y", "Z"};
   const char* name = kNames[cfg_.coord];
-  char buf[256];
-  if (cfg_.sign * (q - cfg_.face) < -kSamePoint) {
-    std::snprintf(buf, sizeof buf,
-                  "%s %.6g mm beyond the conveyor workspace's face %.6g mm against the conveying "
-                  "direction while synchronised (the hold of P-AXIS-00555 did not keep it)",
-                  name, q, cfg_.face);
-    return std::string(buf);
-  }
+  if (cfg_.sign * (q - cfg_.face) < -kSamePoint)
+    return name + (" " + core::human(q)) + " mm beyond the conveyor workspace's face " +
+           core::human(cfg_.face) +
+           " mm against the conveying direction while synchronised (the hold of P-AXIS-00555 "
+           "did not keep it)";
   const double past = -inside(q);
-  if (past > cfg_.tolerance + kSamePoint) {
-    std::snprintf(buf, sizeof buf,
-                  "%s %.6g mm passed the hold line %.6g mm against the conveying direction by "
-                  "%.6g mm, more than hold_limit_tolerance P-CHAN-00367 %.6g mm, while "
-                  "synchronised",
-                  name, q, cfg_.line, past, cfg_.tolerance);
-    return std::string(buf);
-  }
+  if (past > cfg_.tolerance + kSamePoint)
+    return name + (" " + core::human(q)) + " mm passed the hold line " + core::human(cfg_.line) +
+           " mm against the conveying direction by " + core::human(past) +
+           " mm, more than hold_limit_tolerance P-CHAN-00367 " + core::human(cfg_.tolerance) +
+           " mm, while synchronised";
   return std::nullopt;
 }
 
