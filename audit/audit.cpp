@@ -11,7 +11,7 @@
 #include "audit/contour.hpp"
 #include "core/tolerance.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::audit {
 
 namespace {
 
@@ -21,7 +21,8 @@ constexpr double kPositionNoise = 1e-10;  // [mm] absolute rounding of a cycle p
 
 }  // namespace
 
-Audit::Audit(std::span<const planner::AxisLimits> axes, double t_cycle, const AxisVec& start)
+Audit::Audit(std::span<const planner::AxisLimits> axes, double t_cycle,
+             const planner::AxisVec& start)
     : limits_(axes.begin(), axes.end()), t_(t_cycle) {
   if (limits_.empty() || limits_.size() > planner::kMaxAxes)
     throw std::invalid_argument("ipo audit: " + std::to_string(limits_.size()) + " axes");
@@ -53,7 +54,7 @@ void Audit::violate(Quantity q, Method m, std::size_t axis, double t, std::uint3
         Violation{q, m, static_cast<std::uint8_t>(axis), t, line, value, limit, joint, file});
 }
 
-void Audit::check(Quantity q, Method m, std::size_t axis, const Cycle& c, double value,
+void Audit::check(Quantity q, Method m, std::size_t axis, const ipo::Cycle& c, double value,
                   double limit, bool joint, double path) {
   if (value <= limit * (1.0 + kRelative)) return;
   violate(q, m, axis, c.t, c.line, c.file, value, limit, joint);
@@ -63,7 +64,7 @@ void Audit::check(Quantity q, Method m, std::size_t axis, const Cycle& c, double
   if (path <= limit * (1.0 + kRelative)) ++verdict_.belt_count;  // the belt's own (004 l.454)
 }
 
-void Audit::on_joint(const Joint& jt) {
+void Audit::on_joint(const ipo::Joint& jt) {
   joint_rapid_ = joint_rapid_ || jt.rapid_in || jt.rapid_out;
   // Under #TRAFO the steps are Cartesian: the joints' checks take over (on_joints()), with the
   // joints' own steps where the interpolator gave them. The state is the last cycle's: a switch
@@ -77,15 +78,15 @@ void Audit::on_joint(const Joint& jt) {
     joint_seen_ = true;
 }
 
-void Audit::formula_step(Quantity q, std::size_t i, const Joint& jt, double value, double bound,
-                         bool joint) {
+void Audit::formula_step(Quantity q, std::size_t i, const ipo::Joint& jt, double value,
+                         double bound, bool joint) {
   note_step(
       Step{q, static_cast<std::uint8_t>(i), jt.t, jt.line, jt.v, value, bound, jt.file, joint});
   if (!(value <= bound * (1.0 + kRelative)))
     violate(q, Method::formula, i, jt.t, jt.line, jt.file, value, bound, joint);
 }
 
-void Audit::joint_step_formulas(const Joint& jt) {
+void Audit::joint_step_formulas(const ipo::Joint& jt) {
   // The axes' formulas on the joints (docs/planner.md "Corners under a transform", where the
   // planner applies them): |dq_i| <= C0_i min(A+_i, |A-_i|) T at C0, |dw_i| <= j_i T at C0
   // and C1 on jerk-limited slopes; the planner's joint caps hold under #TRANSVELMIN too.
@@ -112,7 +113,7 @@ void Audit::note_step(const Step& s) {
   ++k.count;
 }
 
-void Audit::step_formulas(const Joint& jt) {
+void Audit::step_formulas(const ipo::Joint& jt) {
   for (std::size_t i = 0; i < limits_.size(); ++i) {
     // At a joint with a G00 block the slope in force in both blocks (P-AXIS-00004).
     const planner::AxisLimits l = planner::joint_slope(limits_[i], jt.rapid_in, jt.rapid_out);
@@ -149,7 +150,7 @@ void Audit::step_formulas(const Joint& jt) {
 }
 
 void Audit::check_motion(std::size_t i, bool joint, const Stencil& st, AxisAudit& aa,
-                         std::array<double, 4>& x, const Cycle& c, double pos, double v_signed,
+                         std::array<double, 4>& x, const ipo::Cycle& c, double pos, double v_signed,
                          double a_signed, double j_signed) {
   const double t2 = t_ * t_;
   const double t3 = t2 * t_;
@@ -218,9 +219,9 @@ void Audit::switch_transform(bool on) {
     x_ = q_;
 }
 
-void Audit::on_cycle(const Cycle& c) {
+void Audit::on_cycle(const ipo::Cycle& c) {
   ++verdict_.cycles;
-  const bool trafo = transformed(c, transformed_);
+  const bool trafo = ipo::transformed(c, transformed_);
   if (trafo != transformed_) switch_transform(trafo);
   jerk_limited_[0] = c.interval_jerk_limited;
   rapid_[0] = c.rapid || last_rapid_ || joint_rapid_;
@@ -264,7 +265,7 @@ void Audit::on_cycle(const Cycle& c) {
   jerk_limited_ = {true, jerk_limited_[0], jerk_limited_[1]};
   rapid_ = {false, rapid_[0], rapid_[1]};
   // Contour (under #TRAFO the TCP against the Cartesian block).
-  if (c.activity == Activity::motion && c.programmed) {
+  if (c.activity == ipo::Activity::motion && c.programmed) {
     const planner::Move& m = *c.programmed;
     double mag = 1.0;
     for (std::size_t i = 0; i < limits_.size(); ++i)
@@ -273,7 +274,7 @@ void Audit::on_cycle(const Cycle& c) {
     // (planner::contour_bound, docs/planner.md "DIST").
     const double tol = planner::contour_bound(m);
     const double allowed = tol + kRelTol * mag;
-    AxisVec x = c.x;  // INDP axes are not part of the block's contour
+    planner::AxisVec x = c.x;  // INDP axes are not part of the block's contour
     for (std::size_t i = 0; i < limits_.size(); ++i)
       if (((c.independent >> i) & 1u) != 0) x[i] = m.start[i];
     const double d = contour_distance(m, x);
@@ -287,8 +288,8 @@ void Audit::on_cycle(const Cycle& c) {
   }
 }
 
-void Audit::set_joint_limits(std::span<const planner::AxisLimits> joints, const AxisVec& start,
-                             bool joints_are_axes) {
+void Audit::set_joint_limits(std::span<const planner::AxisLimits> joints,
+                             const planner::AxisVec& start, bool joints_are_axes) {
   if (joints.empty() || joints.size() > planner::kMaxAxes)
     throw std::invalid_argument("ipo audit: " + std::to_string(joints.size()) + " joints");
   if (joints_are_axes && joints.size() != limits_.size())
@@ -310,7 +311,7 @@ void Audit::set_joint_limits(std::span<const planner::AxisLimits> joints, const 
   }
 }
 
-void Audit::on_joints(const Cycle& c, const JointSetpoint& s) {
+void Audit::on_joints(const ipo::Cycle& c, const ipo::JointSetpoint& s) {
   if (joint_limits_.empty()) return;
   stepped_[0] = joint_seen_;
   joint_seen_ = false;
@@ -369,4 +370,4 @@ const char* method_name(Method m) noexcept {
   return "?";
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::audit

@@ -58,7 +58,7 @@
 #include "ipo/joint_stage.hpp"
 #include "tracking/belt_offset.hpp"  // BeltOffset
 
-namespace ncsim::ipo {
+namespace ncsim::audit {
 
 enum class Quantity : std::uint8_t {
   velocity,
@@ -138,15 +138,15 @@ struct Verdict {
   bool ok() const noexcept { return violation_count == 0; }
 };
 
-class Audit final : public Sink {
+class Audit final : public ipo::Sink {
  public:
   static constexpr std::size_t kMaxListed = 1000;
 
   /// Throws std::invalid_argument when `axes` is empty or larger than kMaxAxes, or t_cycle <= 0.
-  Audit(std::span<const planner::AxisLimits> axes, double t_cycle, const AxisVec& start);
+  Audit(std::span<const planner::AxisLimits> axes, double t_cycle, const planner::AxisVec& start);
 
-  void on_joint(const Joint& joint) override;
-  void on_cycle(const Cycle& cycle) override;
+  void on_joint(const ipo::Joint& joint) override;
+  void on_cycle(const ipo::Cycle& cycle) override;
   /// The setpoints the machine axes received (the channel's Channel::setpoints(), read at each
   /// on_cycle): the axis limits are checked on them, the contour on the cycle's path point.
   /// They differ from the path point while a conveyor moves PCS1 or a catch-up drives the
@@ -156,17 +156,17 @@ class Audit final : public Sink {
   }
   /// The belt's share of the setpoints (read at each on_cycle with them); the
   /// violations of an axis that moved with the belt then carry their path share. Null: none.
-  void set_belt(const BeltOffset* belt) noexcept { belt_ = belt; }
+  void set_belt(const tracking::BeltOffset* belt) noexcept { belt_ = belt; }
   /// Under a kinematic transform: the joints' limits (one per joint, 1..kMaxAxes; throws
   /// std::invalid_argument otherwise) and their positions before the first cycle.
   /// `joints_are_axes`: the joints are the machine axes the cycles hold outside #TRAFO (the
   /// channel; as many joints as axes): one position history runs on across a switch.
-  void set_joint_limits(std::span<const planner::AxisLimits> joints, const AxisVec& start,
+  void set_joint_limits(std::span<const planner::AxisLimits> joints, const planner::AxisVec& start,
                         bool joints_are_axes = false);
   /// The joint setpoints of the cycle on_cycle() just saw (ipo::JointStage): each joint's
   /// |v|, |a|, |j| against its own limits, from the stage's values and from finite differences
   /// of the joint positions ("per axis, joints included"; docs/ipo.md "The audit").
-  void on_joints(const Cycle& cycle, const JointSetpoint& joints);
+  void on_joints(const ipo::Cycle& cycle, const ipo::JointSetpoint& joints);
   const Verdict& verdict() const noexcept { return verdict_; }
 
  private:
@@ -187,21 +187,21 @@ class Audit final : public Sink {
   };
   void violate(Quantity q, Method m, std::size_t axis, double t, std::uint32_t line,
                std::uint16_t file, double value, double limit, bool joint = false);
-  void check(Quantity q, Method m, std::size_t axis, const Cycle& c, double value, double limit,
-             bool joint = false, double path = -1.0);
+  void check(Quantity q, Method m, std::size_t axis, const ipo::Cycle& c, double value,
+             double limit, bool joint = false, double path = -1.0);
   /// The closed-form and finite-difference checks of one axis or joint (one helper for both).
   void check_motion(std::size_t i, bool joint, const Stencil& st, AxisAudit& aa,
-                    std::array<double, 4>& history, const Cycle& c, double x, double v, double a,
-                    double j);
+                    std::array<double, 4>& history, const ipo::Cycle& c, double x, double v,
+                    double a, double j);
   /// Counts and lists a documented step (Verdict::steps, step_kinds).
   void note_step(const Step& s);
   /// A path joint's documented steps against their formulas (axis cycles only).
-  void step_formulas(const Joint& joint);
+  void step_formulas(const ipo::Joint& joint);
   /// One documented step of axis or joint i: listed, and a violation beyond `bound`.
-  void formula_step(Quantity q, std::size_t i, const Joint& joint, double value, double bound,
+  void formula_step(Quantity q, std::size_t i, const ipo::Joint& joint, double value, double bound,
                     bool is_joint);
   /// The same formulas on the joints' own steps (Joint::dq, dw).
-  void joint_step_formulas(const Joint& joint);
+  void joint_step_formulas(const ipo::Joint& joint);
   /// A switch of #TRAFO: the history of the side taken over continues the other's.
   void switch_transform(bool on);
 
@@ -234,7 +234,7 @@ class Audit final : public Sink {
   bool transformed_ = false;      ///< the last cycle ran under #TRAFO ON
   bool joints_are_axes_ = false;  ///< set_joint_limits(..., true)
   const std::array<axes::Setpoint, planner::kMaxAxes>* set_ = nullptr;  ///< set_setpoints()
-  const BeltOffset* belt_ = nullptr;                                    ///< set_belt()
+  const tracking::BeltOffset* belt_ = nullptr;                          ///< set_belt()
   std::vector<std::array<double, 4>> b_;  ///< the belt's share per axis, b_[i][0] newest
 };
 
@@ -253,4 +253,4 @@ const char* quantity_name(Quantity q) noexcept;
 /// The name of a checking method in reports ("closed form", "finite differences", ...).
 const char* method_name(Method m) noexcept;
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::audit

@@ -16,7 +16,9 @@
 
 namespace {
 
+using namespace ncsim::audit;
 using namespace ncsim::ipo;
+using namespace ncsim::tracking;
 using namespace ncsim::ipo::test;
 namespace planner = ncsim::planner;
 

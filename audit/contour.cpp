@@ -10,7 +10,7 @@
 
 #include "core/tolerance.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::audit {
 
 namespace {
 
@@ -171,4 +171,4 @@ double contour_distance(const planner::Move& move, const planner::AxisVec& x) no
   return move.arc ? arc_distance(move, x) : line_distance(move, x);
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::audit

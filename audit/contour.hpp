@@ -16,9 +16,9 @@
 
 #include "planner/move.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::audit {
 
 /// Distance [mm] of `x` from the programmed block `move`.
 double contour_distance(const planner::Move& move, const planner::AxisVec& x) noexcept;
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::audit

@@ -6,7 +6,7 @@
 #include <array>
 #include <utility>
 
-namespace ncsim::ipo {
+namespace ncsim::audit {
 
 namespace {
 
@@ -14,22 +14,22 @@ namespace {
 /// split adds up to the total exactly.
 using Counts = std::array<std::uint64_t, 7>;
 
-void count(Counts& n, const Cycle& c) {
+void count(Counts& n, const ipo::Cycle& c) {
   switch (c.activity) {
-    case Activity::motion:
+    case ipo::Activity::motion:
       ++n[c.held ? 5 : c.rapid ? 0 : 1];
       break;
-    case Activity::dwell:
+    case ipo::Activity::dwell:
       ++n[2];
       break;
-    case Activity::exact_stop:
+    case ipo::Activity::exact_stop:
       ++n[3];
       break;
-    case Activity::tech:
+    case ipo::Activity::tech:
       ++n[6];
       break;
-    case Activity::starved:
-    case Activity::channel:  // the path stands for a channel event: "waiting" too
+    case ipo::Activity::starved:
+    case ipo::Activity::channel:  // the path stands for a channel event: "waiting" too
       ++n[4];
       break;
   }
@@ -45,7 +45,7 @@ TimeSplit split_of(const Counts& n, double t) {
 TimeCounter::TimeCounter(double t_cycle, std::function<void(const BlockTime&)> on_block)
     : t_(t_cycle), on_block_(std::move(on_block)) {}
 
-void TimeCounter::add(const Cycle& c) {
+void TimeCounter::add(const ipo::Cycle& c) {
   ++r_.cycles;
   r_.distance += c.distance;
   r_.lost += c.lost;
@@ -68,7 +68,7 @@ void TimeCounter::add(const Cycle& c) {
   ++block_cycles_;
   block_.distance += c.distance;
   block_.lost += c.lost;
-  if (c.activity == Activity::motion) {
+  if (c.activity == ipo::Activity::motion) {
     block_.feed_programmed = std::max(block_.feed_programmed, c.feed);
     block_.feed_reached = std::max(block_.feed_reached, c.path.v);
     if (c.feed_cap > 0.0)
@@ -89,13 +89,13 @@ TimeResult TimeCounter::finish() {
   return r_;
 }
 
-TimeResult machining_time(Config config, Source& source,
+TimeResult machining_time(ipo::Config config, ipo::Source& source,
                           const std::function<void(const BlockTime&)>& on_block,
                           std::uint64_t max_cycles, const Operator& op) {
-  config.detail = Detail::path;
-  PathInterpolator ipo(std::move(config), source, nullptr);
+  config.detail = ipo::Detail::path;
+  ipo::PathInterpolator ipo(std::move(config), source, nullptr);
   TimeCounter counter(ipo.t_cycle(), on_block);
-  Status status = Status::finished;
+  ipo::Status status = ipo::Status::finished;
   std::string message;
   bool stopped = false;
   for (std::uint64_t n = 0;; ++n) {
@@ -104,10 +104,10 @@ TimeResult machining_time(Config config, Source& source,
       break;
     }
     if (op) op(ipo, n);
-    const Status st = ipo.step();
-    if (st != Status::running) {
+    const ipo::Status st = ipo.step();
+    if (st != ipo::Status::running) {
       status = st;
-      if (st == Status::error) message = ipo.message();
+      if (st == ipo::Status::error) message = ipo.message();
       break;
     }
     counter.add(ipo.cycle());
@@ -119,4 +119,4 @@ TimeResult machining_time(Config config, Source& source,
   return r;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::audit

@@ -23,7 +23,7 @@
 
 #include "ipo/interpolator.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::audit {
 
 /// Time by activity [s].
 struct TimeSplit {
@@ -53,7 +53,7 @@ struct BlockTime {
 };
 
 struct TimeResult {
-  Status status = Status::finished;  ///< finished, or error (message)
+  ipo::Status status = ipo::Status::finished;  ///< finished, or error (message)
   std::string message;
   bool stopped = false;  ///< max_cycles reached before the program ended
   std::uint64_t cycles = 0;
@@ -69,7 +69,7 @@ class TimeCounter {
  public:
   explicit TimeCounter(double t_cycle, std::function<void(const BlockTime&)> on_block = {});
   /// Counts one cycle (its T goes to the line it reports).
-  void add(const Cycle& c);
+  void add(const ipo::Cycle& c);
   /// Closes the open block record; cycles, total, distance and split of what was added
   /// (status, message and stopped are the caller's).
   TimeResult finish();
@@ -86,14 +86,14 @@ class TimeCounter {
   bool open_ = false;
 };
 /// Called before cycle `index` (0-based): the operator (override, feed hold) of a scenario.
-using Operator = std::function<void(PathInterpolator& ipo, std::uint64_t index)>;
+using Operator = std::function<void(ipo::PathInterpolator& ipo, std::uint64_t index)>;
 
 /// Runs the program through the interpolator with the sinks off. `max_cycles` (0: none) stops
 /// an endless program. Throws std::invalid_argument on an unusable Config (as the
 /// interpolator does) and whatever `op` throws; program and source errors come back in
 /// TimeResult.
-TimeResult machining_time(Config config, Source& source,
+TimeResult machining_time(ipo::Config config, ipo::Source& source,
                           const std::function<void(const BlockTime&)>& on_block = {},
                           std::uint64_t max_cycles = 0, const Operator& op = {});
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::audit

@@ -9,7 +9,7 @@
 
 #include "core/number_text.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::audit {
 
 namespace {
 
@@ -70,13 +70,14 @@ WorkpieceCycles::WorkpieceCycles(double t_cycle, std::function<void(const Workpi
                                 " s must be > 0");
 }
 
-void WorkpieceCycles::add(SyncPhase phase, std::uint64_t workpiece) noexcept {
+void WorkpieceCycles::add(tracking::SyncPhase phase, std::uint64_t workpiece) noexcept {
   // A #SYNC IN: the phase becomes `waiting` (from any other). It also starts a row when the
   // measured value is already there and the phase passes `waiting` within the cycle.
   const bool entered =
-      (phase == SyncPhase::waiting && last_ != SyncPhase::waiting) ||
-      ((phase == SyncPhase::latched || phase == SyncPhase::catching_up) &&
-       (last_ == SyncPhase::off || last_ == SyncPhase::leaving || last_ == SyncPhase::departing));
+      (phase == tracking::SyncPhase::waiting && last_ != tracking::SyncPhase::waiting) ||
+      ((phase == tracking::SyncPhase::latched || phase == tracking::SyncPhase::catching_up) &&
+       (last_ == tracking::SyncPhase::off || last_ == tracking::SyncPhase::leaving ||
+        last_ == tracking::SyncPhase::departing));
   if (entered) {
     if (open_) close();
     open_ = true;
@@ -91,24 +92,24 @@ void WorkpieceCycles::add(SyncPhase phase, std::uint64_t workpiece) noexcept {
     ++lead_in_;
     return;
   }
-  if (phase != SyncPhase::waiting) workpiece_ = workpiece;  // the latch of this row
+  if (phase != tracking::SyncPhase::waiting) workpiece_ = workpiece;  // the latch of this row
   switch (phase) {
-    case SyncPhase::waiting:
+    case tracking::SyncPhase::waiting:
       ++row_.waiting;
       break;
-    case SyncPhase::latched:
-    case SyncPhase::catching_up:
+    case tracking::SyncPhase::latched:
+    case tracking::SyncPhase::catching_up:
       ++row_.catch_up;
       break;
-    case SyncPhase::tracking:
+    case tracking::SyncPhase::tracking:
       ++row_.machining;
       break;
-    case SyncPhase::leaving:
-    case SyncPhase::departing:
+    case tracking::SyncPhase::leaving:
+    case tracking::SyncPhase::departing:
       ++row_.desync;
       complete_ = true;
       break;
-    case SyncPhase::off:
+    case tracking::SyncPhase::off:
       ++row_.off_belt;
       // Back to off after tracking: #SYNC OUT with nothing moving with the belt.
       if (row_.machining > 0 || row_.desync > 0) complete_ = true;
@@ -165,8 +166,8 @@ WorkpieceSummary WorkpieceCycles::finish() {
   cycles_ = 0;
   sums_ = Counts{};
   complete_total_ = 0.0;
-  last_ = SyncPhase::off;
+  last_ = tracking::SyncPhase::off;
   return out;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::audit

@@ -29,7 +29,7 @@
 
 #include "tracking/sync_phase.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::audit {
 
 /// One workpiece's cycle, from its #SYNC IN to the next #SYNC IN (or the end) [s].
 struct WorkpieceCycle {
@@ -73,7 +73,7 @@ class WorkpieceCycles {
   explicit WorkpieceCycles(double t_cycle, std::function<void(const WorkpieceCycle&)> on_row = {});
   /// Counts one cycle: `phase` is the tracking phase after it, `workpiece` the Port's
   /// LatchInfo::workpiece (0 when unknown).
-  void add(SyncPhase phase, std::uint64_t workpiece) noexcept;
+  void add(tracking::SyncPhase phase, std::uint64_t workpiece) noexcept;
   /// Closes the open row (through the callback) and returns the summary.
   WorkpieceSummary finish();
 
@@ -91,11 +91,11 @@ class WorkpieceCycles {
   bool complete_ = false;
   std::uint64_t start_ = 0;  ///< the open row's first cycle
   std::uint64_t workpiece_ = 0;
-  SyncPhase last_ = SyncPhase::off;
+  tracking::SyncPhase last_ = tracking::SyncPhase::off;
   Counts row_;
   Counts sums_;  ///< cycles per field over every row (summed exactly, multiplied once)
   WorkpieceSummary sum_;
   double complete_total_ = 0.0;  ///< sum of the complete rows' totals [s]
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::audit

@@ -15,11 +15,11 @@
 
 namespace {
 
-using ncsim::ipo::append_json;
-using ncsim::ipo::SyncPhase;
-using ncsim::ipo::WorkpieceCycle;
-using ncsim::ipo::WorkpieceCycles;
-using ncsim::ipo::WorkpieceSummary;
+using ncsim::audit::append_json;
+using ncsim::audit::WorkpieceCycle;
+using ncsim::audit::WorkpieceCycles;
+using ncsim::audit::WorkpieceSummary;
+using ncsim::tracking::SyncPhase;
 
 constexpr double kT = 0.001;
 

@@ -1,7 +1,6 @@
 #include "axes/monitor.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
 #include "core/number_text.hpp"
@@ -67,36 +66,37 @@ AxisAlarm make_alarm(AlarmKind kind, int axis, double t, double value, double li
 }  // namespace
 
 std::string describe(const AxisAlarm& alarm) {
-  char text[256];
-  const char* what = "";
+  const std::string value = core::human(alarm.value);
+  const std::string limit = core::human(alarm.limit);
+  std::string what;
   switch (alarm.kind) {
     case AlarmKind::soft_limit_min:
-      what = "target position %.6g mm lies below the minimum soft position limit %.6g mm";
+      what = "target position " + value + " mm lies below the minimum soft position limit " +
+             limit + " mm";
       break;
     case AlarmKind::soft_limit_max:
-      what = "target position %.6g mm lies above the maximum soft position limit %.6g mm";
+      what = "target position " + value + " mm lies above the maximum soft position limit " +
+             limit + " mm";
       break;
     case AlarmKind::position_lag:
-      what =
-          "position lag %.6g mm exceeded the maximum position lag %.6g mm for longer than "
-          "the filter time";
+      what = "position lag " + value + " mm exceeded the maximum position lag " + limit +
+             " mm for longer than the filter time";
       break;
     case AlarmKind::in_target_timeout:
-      what = "target position window not reached within the In-Target timeout (%.6g s > %.6g s)";
+      what = "target position window not reached within the In-Target timeout (" + value + " s > " +
+             limit + " s)";
       break;
     case AlarmKind::motion_not_detected:
-      what = "no motion detected while a motion command was active (%.6g s > %.6g s)";
+      what = "no motion detected while a motion command was active (" + value + " s > " + limit +
+             " s)";
       break;
     case AlarmKind::exact_stop_timeout:
-      what =
-          "exact stop window not reached within the position settling time "
-          "(%.6g s > %.6g s)";
+      what = "exact stop window not reached within the position settling time (" + value + " s > " +
+             limit + " s)";
       break;
   }
-  char body[200];
-  std::snprintf(body, sizeof body, what, alarm.value, alarm.limit);
-  std::snprintf(text, sizeof text, "axis %d at t=%.6f s: %s", alarm.axis, alarm.t, body);
-  return text;
+  return "axis " + std::to_string(alarm.axis) + " at t=" + core::decimals_text(alarm.t, 6) +
+         " s: " + what;
 }
 
 core::Diagnostic to_diagnostic(const AxisAlarm& alarm) {

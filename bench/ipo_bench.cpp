@@ -88,7 +88,7 @@ void run_time(benchmark::State& state, const std::vector<Item>& items, const ipo
   double simulated = 0.0;
   for (auto _ : state) {
     ListSource src(items);
-    const ipo::TimeResult r = ipo::machining_time(cfg, src);
+    const audit::TimeResult r = audit::machining_time(cfg, src);
     benchmark::DoNotOptimize(r.cycles);
     simulated += r.total;
   }
@@ -115,7 +115,7 @@ void BM_RunAudit(benchmark::State& state) {
   double simulated = 0.0;
   for (auto _ : state) {
     ListSource src(items);
-    ipo::Audit audit(cfg.axes, cfg.channel.t_cycle, cfg.start);
+    audit::Audit audit(cfg.axes, cfg.channel.t_cycle, cfg.start);
     ipo::PathInterpolator interp(cfg, src, &audit);
     while (interp.step() == ipo::Status::running) {
     }

@@ -2,7 +2,7 @@
 // against lower bounds from an independent time-optimal path parameterisation (TOPP) without a
 // jerk limit (docs/benchmarks.md "200-move program").
 //
-// Purpose: the table of issue 12: ncsim's `time` (ipo::machining_time: the cycle loop of
+// Purpose: the table of issue 12: ncsim's `time` (audit::machining_time: the cycle loop of
 // `ncsim time`, T = 1 ms) with TRAPEZ and STEP slopes, exact stops, VELOJUMP corners and
 // tolerance balls of 0.01 mm, next to what the physics allows:
 //  - sum(L / F): no block can be faster than its feed (every feed is below the axes' and the
@@ -231,7 +231,7 @@ double ncsim_time(std::vector<planner::Move> moves, planner::SlopeType slope, Co
   cfg.channel.t_cycle = kT;
   cfg.window = 120;
   Moves src(std::move(moves));
-  return ipo::machining_time(cfg, src).total;
+  return audit::machining_time(cfg, src).total;
 }
 
 void write_program(const std::vector<planner::Move>& moves, const char* path) {

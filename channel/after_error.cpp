@@ -14,24 +14,25 @@
 #include "channel/after_error.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <string>
 #include <utility>
 
-namespace ncsim::ipo {
+#include "core/number_text.hpp"
+
+namespace ncsim::channel {
 
 namespace {
 
-const char* end_text(AfterErrorEnd why) noexcept {
+const char* end_text(tracking::AfterErrorEnd why) noexcept {
   switch (why) {
-    case AfterErrorEnd::soft_limit:
+    case tracking::AfterErrorEnd::soft_limit:
       return "braked before its soft limit";
-    case AfterErrorEnd::velocity:
+    case tracking::AfterErrorEnd::velocity:
       return "braked: following the belt would exceed its maximum velocity";
-    case AfterErrorEnd::belt_stop:
+    case tracking::AfterErrorEnd::belt_stop:
       return "stood with the belt";
-    case AfterErrorEnd::time_limit:
+    case tracking::AfterErrorEnd::time_limit:
       return "braked after ncsim's longest following";
   }
   return "";
@@ -39,11 +40,12 @@ const char* end_text(AfterErrorEnd why) noexcept {
 
 }  // namespace
 
-AfterErrorStop::AfterErrorStop(PathInterpolator& ipo, AxisStage& axes, KinematicStage& kin,
+AfterErrorStop::AfterErrorStop(ipo::PathInterpolator& ipo, AxisStage& axes, KinematicStage& kin,
                                IndpStage& indp, AxisMapping& mapping, ScenarioPlay& play,
-                               const ConveyorTracking& tracking, std::optional<ConveyorSync>& sync,
-                               std::optional<RunTimeError>& error, const Cycle*& shown,
-                               Sink* sink) noexcept
+                               const ConveyorTracking& tracking,
+                               std::optional<tracking::ConveyorSync>& sync,
+                               std::optional<RunTimeError>& error, const ipo::Cycle*& shown,
+                               ipo::Sink* sink) noexcept
     : ipo_(ipo),
       axes_(axes),
       kin_(kin),
@@ -56,23 +58,23 @@ AfterErrorStop::AfterErrorStop(PathInterpolator& ipo, AxisStage& axes, Kinematic
       shown_(shown),
       sink_(sink) {}
 
-void AfterErrorStop::configure(std::span<const AfterErrorAxis> axes, const machines::Workspace& box,
-                               double t_cycle) noexcept {
+void AfterErrorStop::configure(std::span<const tracking::AfterErrorAxis> axes,
+                               const machines::Workspace& box, double t_cycle) noexcept {
   axes_stop_.configure(axes, t_cycle);
   box_ = box;
 }
 
-Status AfterErrorStop::enter(bool own_cycle, std::size_t driven) noexcept {
-  if (!keep()) return Status::error;
+ipo::Status AfterErrorStop::enter(bool own_cycle, std::size_t driven) noexcept {
+  if (!keep()) return ipo::Status::error;
   return cycle(!own_cycle, own_cycle ? driven : 0);
 }
 
 bool AfterErrorStop::keep() noexcept {
   if (!error_ || state_ != State::idle || !sync_ || !axes_stop_.usable()) return false;
-  if (sync_->phase() != SyncPhase::tracking || !sync_->synchronised()) return false;
+  if (sync_->phase() != tracking::SyncPhase::tracking || !sync_->synchronised()) return false;
   // Not built (docs/conveyor.md): a static unit (no real X follows the belt).
   if (tracking_.static_unit()) return false;
-  if (!SyncErrorStop::keeps_synchronisation(error_->id)) return false;
+  if (!tracking::SyncErrorStop::keeps_synchronisation(error_->id)) return false;
   if (!begin_indp()) return false;  // the INDP axes brake on their own ramps
   case_ = Case::axes;
   if (kin_.transformed() && !begin_tcp()) return false;  // under #TRAFO ON the TCP's stop
@@ -82,13 +84,13 @@ bool AfterErrorStop::keep() noexcept {
   axes_stop_.begin();
   path_ended_ = false;
   ipo_.path_override().set_feed_hold(true);  // the path velocity in PCS1 goes to 0 (l.494)
-  ipo_.path_override().set_velocity_cap(WorkspaceHold::kNone);
+  ipo_.path_override().set_velocity_cap(tracking::WorkspaceHold::kNone);
   state_ = State::following;
   return true;
 }
 
-Status AfterErrorStop::cycle(bool fresh, std::size_t first) noexcept {
-  const Cycle& c = next_cycle(fresh);
+ipo::Status AfterErrorStop::cycle(bool fresh, std::size_t first) noexcept {
+  const ipo::Cycle& c = next_cycle(fresh);
   shown_ = &cycle_;
   // The belt's world goes on (its errors are not raised again: the channel is in error).
   (void)sync_->step(c.t);
@@ -96,21 +98,21 @@ Status AfterErrorStop::cycle(bool fresh, std::size_t first) noexcept {
   if (!stop_cycle(c, stood)) {
     passed_ = "; the TCP would have left the kinematic's reach: the run ended there";
     finish(c.t - ipo_.t_cycle());
-    return Status::error;
+    return ipo::Status::error;
   }
-  if (beyond_soft_limit(c, fresh, first)) return Status::error;
+  if (beyond_soft_limit(c, fresh, first)) return ipo::Status::error;
   for (std::size_t i = first; i < axes_.size(); ++i)
     axes_.follow(i);
   if (sink_) sink_->on_cycle(cycle_);
   if (stood) finish(c.t);             // the next step() ends the run with the original error
   if (error_) state_ = State::ended;  // or with one a part raised after it
-  return Status::running;
+  return ipo::Status::running;
 }
 
-const Cycle& AfterErrorStop::next_cycle(bool fresh) noexcept {
+const ipo::Cycle& AfterErrorStop::next_cycle(bool fresh) noexcept {
   const double t_cycle = ipo_.t_cycle();
   if (fresh && !path_ended_) {
-    if (ipo_.step() != Status::running) {  // the path ended (or its source failed) meanwhile
+    if (ipo_.step() != ipo::Status::running) {  // the path ended (or its source failed) meanwhile
       path_ended_ = true;
       cycle_ = ipo_.cycle();
       cycle_.index -= 1;  // advanced below
@@ -122,7 +124,7 @@ const Cycle& AfterErrorStop::next_cycle(bool fresh) noexcept {
     cycle_.index += 1;
     cycle_.t = static_cast<double>(cycle_.index) * t_cycle;
     cycle_.path.v = cycle_.path.a = cycle_.path.j = 0.0;
-    cycle_.v = cycle_.a = cycle_.j = AxisVec{};
+    cycle_.v = cycle_.a = cycle_.j = planner::AxisVec{};
     cycle_.distance = 0.0;
     cycle_.held = true;
     cycle_.factor = 0.0;
@@ -131,7 +133,7 @@ const Cycle& AfterErrorStop::next_cycle(bool fresh) noexcept {
   return cycle_;
 }
 
-bool AfterErrorStop::stop_cycle(const Cycle& c, bool& end) noexcept {
+bool AfterErrorStop::stop_cycle(const ipo::Cycle& c, bool& end) noexcept {
   const std::size_t n = axes_.size();
   const bool tcp = case_ == Case::tcp;
   // The axes following the belt (under #TRAFO ON the TCP, and its joints where the transform
@@ -139,7 +141,7 @@ bool AfterErrorStop::stop_cycle(const Cycle& c, bool& end) noexcept {
   const bool mapped = mapping_.map(c);
   if (tcp && !mapped) error_.reset();  // NC3201 is not raised after the error: the run ends below
   step_indp(c);
-  SyncErrorStop& stop = tcp ? tcp_stop_ : axes_stop_;
+  tracking::SyncErrorStop& stop = tcp ? tcp_stop_ : axes_stop_;
   if (state_ == State::braking) {
     stop.step(std::span(tcp ? kin_.tcp().data() : axes_.setpoints().data(), n));
     end = stop.stood() && indp_stood();
@@ -150,12 +152,13 @@ bool AfterErrorStop::stop_cycle(const Cycle& c, bool& end) noexcept {
   if (tcp && !mapped) return false;
   const std::array<axes::Setpoint, planner::kMaxAxes> x = seen();
   const std::span<const axes::Setpoint> s(x.data(), n);
-  AfterErrorEnd why = AfterErrorEnd::soft_limit;
+  tracking::AfterErrorEnd why = tracking::AfterErrorEnd::soft_limit;
   int axis = -1;
   const bool path_stands = c.path.v == 0.0 && c.path.a == 0.0;
-  const bool belt_stands = std::fabs(sync_->belt_velocity()) <= SyncErrorStop::kStandstill;
+  const bool belt_stands =
+      std::fabs(sync_->belt_velocity()) <= tracking::SyncErrorStop::kStandstill;
   if (path_stands && belt_stands) {
-    stop.start_stopping(s, AfterErrorEnd::belt_stop, -1);
+    stop.start_stopping(s, tracking::AfterErrorEnd::belt_stop, -1);
     end = indp_stood();
   } else if (stop.must_stop(s, why, axis)) {
     stop.start_stopping(s, why, axis);  // this cycle as computed, braking from the next
@@ -180,7 +183,8 @@ std::array<axes::Setpoint, planner::kMaxAxes> AfterErrorStop::seen() const noexc
   return out;
 }
 
-bool AfterErrorStop::beyond_soft_limit(const Cycle& c, bool fresh, std::size_t first) noexcept {
+bool AfterErrorStop::beyond_soft_limit(const ipo::Cycle& c, bool fresh,
+                                       std::size_t first) noexcept {
   // No axis receives a set position beyond its soft limit (as AxisStage::drive). The stop is
   // planned not to get there; a machine already at its limit when the error came cannot follow
   // at all.
@@ -195,12 +199,9 @@ bool AfterErrorStop::beyond_soft_limit(const Cycle& c, bool fresh, std::size_t f
       return true;
     }
     try {
-      char buf[200];
-      std::snprintf(buf, sizeof buf,
-                    "; axis %s would have passed its soft limit %.6g mm at t=%.6g s: the run "
-                    "ended there",
-                    axes_.config(i).name.c_str(), alarm->limit, c.t);
-      passed_ = buf;
+      passed_ = "; axis " + axes_.config(i).name + " would have passed its soft limit " +
+                core::human(alarm->limit) + " mm at t=" + core::human(c.t) +
+                " s: the run ended there";
     } catch (...) {
       std::abort();
     }
@@ -222,30 +223,26 @@ std::string AfterErrorStop::note() const {
 }
 
 std::string AfterErrorStop::axes_note() const {
-  char buf[512];
   std::string axis;
   std::string limit;
   if (axes_stop_.axis() >= 0) {
     const auto i = static_cast<std::size_t>(axes_stop_.axis());
     axis = " axis " + axes_.config(i).name;
-    const AfterErrorAxis& l = axes_stop_.limits(i);
-    if (axes_stop_.why() == AfterErrorEnd::soft_limit) {
+    const tracking::AfterErrorAxis& l = axes_stop_.limits(i);
+    if (axes_stop_.why() == tracking::AfterErrorEnd::soft_limit) {
       const double p = axes_.setpoints()[i].p;
       const bool up = l.soft.max_enabled &&
                       (!l.soft.min_enabled ||
                        std::fabs(l.soft.max_position - p) < std::fabs(p - l.soft.min_position));
-      std::snprintf(buf, sizeof buf, " %.6g mm (%s), standing at %.6g mm",
-                    up ? l.soft.max_position : l.soft.min_position,
-                    up ? "P-AXIS-00178" : "P-AXIS-00177", axes_.setpoints()[i].p);
-      limit = buf;
+      limit = " " + core::human(up ? l.soft.max_position : l.soft.min_position) + " mm (" +
+              (up ? "P-AXIS-00178" : "P-AXIS-00177") + "), standing at " +
+              core::human(axes_.setpoints()[i].p) + " mm";
     }
   }
-  std::snprintf(buf, sizeof buf,
-                "synchronisation kept after %s (004 §2.3): the path braked to 0 in PCS1, the "
-                "machine followed the belt for %.6g s;%s %s%s; it stood at t=%.6g s",
-                held_->id.c_str(), axes_stop_.followed(), axis.c_str(), end_text(axes_stop_.why()),
-                limit.c_str(), end_t_);
-  return std::string(buf) + indp_note() + passed_;
+  return "synchronisation kept after " + held_->id +
+         " (004 §2.3): the path braked to 0 in PCS1, the machine followed the belt for " +
+         core::human(axes_stop_.followed()) + " s;" + axis + " " + end_text(axes_stop_.why()) +
+         limit + "; it stood at t=" + core::human(end_t_) + " s" + indp_note() + passed_;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

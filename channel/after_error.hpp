@@ -42,7 +42,7 @@
 #include "tracking/conveyor_sync.hpp"
 #include "tracking/sync_error.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 class AfterErrorStop {
  public:
@@ -56,20 +56,20 @@ class AfterErrorStop {
 
   /// The references are the channel's own parts and must outlive this one; `shown` is the
   /// channel's shown cycle, `sink` may be null.
-  AfterErrorStop(PathInterpolator& ipo, AxisStage& axes, KinematicStage& kin, IndpStage& indp,
+  AfterErrorStop(ipo::PathInterpolator& ipo, AxisStage& axes, KinematicStage& kin, IndpStage& indp,
                  AxisMapping& mapping, ScenarioPlay& play, const ConveyorTracking& tracking,
-                 std::optional<ConveyorSync>& sync, std::optional<RunTimeError>& error,
-                 const Cycle*& shown, Sink* sink) noexcept;
+                 std::optional<tracking::ConveyorSync>& sync, std::optional<RunTimeError>& error,
+                 const ipo::Cycle*& shown, ipo::Sink* sink) noexcept;
   AfterErrorStop(const AfterErrorStop&) = delete;
   AfterErrorStop& operator=(const AfterErrorStop&) = delete;
 
   /// With a conveyor: the axes' limits (interpolated order) and the conveyor workspace the TCP
   /// brakes before (P-CHAN-00859..00864 [mm]); `t_cycle` [s]. Without it no error keeps the
   /// synchronisation.
-  void configure(std::span<const AfterErrorAxis> axes, const machines::Workspace& box,
+  void configure(std::span<const tracking::AfterErrorAxis> axes, const machines::Workspace& box,
                  double t_cycle) noexcept;
   /// The axes' stop (ConveyorTracking reads its limits' v_max).
-  const SyncErrorStop& axes_stop() const noexcept { return axes_stop_; }
+  const tracking::SyncErrorStop& axes_stop() const noexcept { return axes_stop_; }
   State state() const noexcept { return state_; }
   /// The machine moves on after the error: the channel's cycles are step()'s.
   bool active() const noexcept { return state_ == State::following || state_ == State::braking; }
@@ -77,10 +77,10 @@ class AfterErrorStop {
   /// The program's cycle raised the channel's error: keeps the synchronisation if the error
   /// may and completes the cycle (`own_cycle`: the interpolator advanced in it, its first
   /// `driven` axes were driven), else Status::error (the run ends with it as always).
-  Status enter(bool own_cycle, std::size_t driven) noexcept;
+  ipo::Status enter(bool own_cycle, std::size_t driven) noexcept;
   /// One cycle after the error (active()): the path brakes, the machine follows the belt or
   /// brakes; Status::error when a limit ended the run, else running.
-  Status step() noexcept { return cycle(true, 0); }
+  ipo::Status step() noexcept { return cycle(true, 0); }
   /// What the machine did after the error (empty: none): the following, the stop, why.
   std::string note() const;
 
@@ -90,14 +90,14 @@ class AfterErrorStop {
   /// The error keeps the synchronisation (once a run): held back, the path brakes by feed hold.
   bool keep() noexcept;
   /// One cycle: `fresh` a new one (else the error's own cycle is completed from axis `first`).
-  Status cycle(bool fresh, std::size_t first) noexcept;
+  ipo::Status cycle(bool fresh, std::size_t first) noexcept;
   /// The cycle shown after the error: the interpolator's, or at rest after its end.
-  const Cycle& next_cycle(bool fresh) noexcept;
+  const ipo::Cycle& next_cycle(bool fresh) noexcept;
   /// The stop's part of cycle `c`: the setpoints followed or braked; `end` when the machine
   /// stands. False: the TCP left the kinematic's reach.
-  bool stop_cycle(const Cycle& c, bool& end) noexcept;
+  bool stop_cycle(const ipo::Cycle& c, bool& end) noexcept;
   /// The first axis from `first` whose setpoint is beyond its soft limit ends the run.
-  bool beyond_soft_limit(const Cycle& c, bool fresh, std::size_t first) noexcept;
+  bool beyond_soft_limit(const ipo::Cycle& c, bool fresh, std::size_t first) noexcept;
   /// The run ends with the error held back; the machine stood at `t` [s].
   void finish(double t) noexcept;
   std::string axes_note() const;
@@ -111,7 +111,7 @@ class AfterErrorStop {
   /// Stops the owned INDP axes; false: not built (INDP axes under #TRAFO ON), the run ends.
   bool begin_indp() noexcept;
   /// Steps the INDP axes once for cycle `c` (unless IndpStage::step() did) and applies them.
-  void step_indp(const Cycle& c) noexcept;
+  void step_indp(const ipo::Cycle& c) noexcept;
   /// Their setpoints into the AxisStage and the shown cycle (after the stop wrote all axes).
   void apply_indp() noexcept;
   /// What the stop decides on: the axes' setpoints with the INDP axes at rest, or the TCP.
@@ -120,31 +120,31 @@ class AfterErrorStop {
   bool indp_stood() const noexcept;
   std::string indp_note() const;
 
-  PathInterpolator& ipo_;
+  ipo::PathInterpolator& ipo_;
   AxisStage& axes_;
   KinematicStage& kin_;
   IndpStage& indp_;
   AxisMapping& mapping_;
   ScenarioPlay& play_;
   const ConveyorTracking& tracking_;
-  std::optional<ConveyorSync>& sync_;
+  std::optional<tracking::ConveyorSync>& sync_;
   std::optional<RunTimeError>& error_;
-  const Cycle*& shown_;
-  Sink* sink_;
+  const ipo::Cycle*& shown_;
+  ipo::Sink* sink_;
 
   State state_ = State::idle;
   Case case_ = Case::axes;
-  std::optional<RunTimeError> held_;  ///< the error held back while the machine moves
-  SyncErrorStop axes_stop_;           ///< the axes' stop (the joints' watch under #TRAFO ON)
-  SyncErrorStop tcp_stop_;            ///< the TCP's stop (X, Y, Z: the workspace box)
-  machines::Workspace box_;           ///< P-CHAN-00859..00864 [mm]
-  Cycle cycle_;                       ///< the cycle shown after the error
-  bool path_ended_ = false;           ///< the interpolator gave its last cycle
-  double end_t_ = 0.0;                ///< [s] the machine stood
-  std::string passed_;                ///< a limit passed after all (the note says it)
+  std::optional<RunTimeError> held_;   ///< the error held back while the machine moves
+  tracking::SyncErrorStop axes_stop_;  ///< the axes' stop (the joints' watch under #TRAFO ON)
+  tracking::SyncErrorStop tcp_stop_;   ///< the TCP's stop (X, Y, Z: the workspace box)
+  machines::Workspace box_;            ///< P-CHAN-00859..00864 [mm]
+  ipo::Cycle cycle_;                   ///< the cycle shown after the error
+  bool path_ended_ = false;            ///< the interpolator gave its last cycle
+  double end_t_ = 0.0;                 ///< [s] the machine stood
+  std::string passed_;                 ///< a limit passed after all (the note says it)
   int joint_ = -1;  ///< the joint whose limit decided the TCP's stop (-1: the TCP's)
-  AfterErrorEnd joint_why_ = AfterErrorEnd::soft_limit;  ///< why for that joint
-  planner::AxisMask indp_mask_ = 0;                      ///< the INDP axes owned at the error
+  tracking::AfterErrorEnd joint_why_ = tracking::AfterErrorEnd::soft_limit;  ///< why for that joint
+  planner::AxisMask indp_mask_ = 0;  ///< the INDP axes owned at the error
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

@@ -21,11 +21,12 @@
 #include "channel/after_error.hpp"
 #include "program/program_source.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 bool AfterErrorStop::begin_indp() noexcept {
   indp_mask_ = 0;
-  if (error_->id == kNotSupportedId || error_->id == kIndpPlanId) return false;  // decision
+  if (error_->id == program::kNotSupportedId || error_->id == kIndpPlanId)
+    return false;  // decision
   for (std::size_t i = 0; i < axes_.size(); ++i)
     if (indp_.axes().owned(i)) indp_mask_ |= planner::AxisMask{1} << i;
   if (indp_mask_ == 0) return true;
@@ -38,7 +39,7 @@ bool AfterErrorStop::begin_indp() noexcept {
   return true;
 }
 
-void AfterErrorStop::step_indp(const Cycle& c) noexcept {
+void AfterErrorStop::step_indp(const ipo::Cycle& c) noexcept {
   if (indp_mask_ == 0) return;
   indp_.step_once(c);  // the error's own cycle may have stepped them already
   apply_indp();
@@ -70,4 +71,4 @@ std::string AfterErrorStop::indp_note() const {
   return indp;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

@@ -16,27 +16,27 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <string>
 
 #include "channel/after_error.hpp"
+#include "core/number_text.hpp"
 #include "tracking/sync_error_trafo.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 bool AfterErrorStop::begin_tcp() noexcept {
   joint_ = -1;
   if (!kin_.configured()) return false;
   const std::size_t n = std::min(axes_.size(), sync_->axis_count());
   std::array<int, 3> xyz{-1, -1, -1};
-  std::array<AfterErrorAxis, planner::kMaxAxes> joints{};
-  AxisVec p{};
+  std::array<tracking::AfterErrorAxis, planner::kMaxAxes> joints{};
+  planner::AxisVec p{};
   for (std::size_t i = 0; i < n; ++i) {
     if (const int k = sync_->xyz(i); k >= 0 && k < 3)
       xyz[static_cast<std::size_t>(k)] = static_cast<int>(i);
     // The tighter of the joint's feed / G00 limits (the audit's) and its PTP dynamics.
-    AfterErrorAxis a = axes_stop_.limits(i);
+    tracking::AfterErrorAxis a = axes_stop_.limits(i);
     const axes::Dynamics& d = sync_->dynamics(i);
     a.v_max = std::min(a.v_max, d.v_max);
     a.a_max = std::min(a.a_max, d.a_max);
@@ -55,8 +55,8 @@ bool AfterErrorStop::begin_tcp() noexcept {
   }
   Eigen::Vector3d dir = sync_->frame().direction();
   if (sync_->belt_velocity() < 0.0) dir = -dir;
-  const auto lim =
-      tcp_after_error_axes(kin_.stage().inverse(), xyz, std::span(joints.data(), n), box_, dir, p);
+  const auto lim = tracking::tcp_after_error_axes(kin_.stage().inverse(), xyz,
+                                                  std::span(joints.data(), n), box_, dir, p);
   if (!lim || !tcp_stop_.configure(std::span(lim->data(), n), ipo_.t_cycle())) return false;
   tcp_stop_.begin();
   case_ = Case::tcp;
@@ -65,40 +65,35 @@ bool AfterErrorStop::begin_tcp() noexcept {
 
 std::string AfterErrorStop::tcp_note() const {
   static constexpr const char* kXyz[3] = {"X", "Y", "Z"};
-  char buf[512];
   std::string what;
   if (joint_ >= 0) {
     const auto i = static_cast<std::size_t>(joint_);
-    std::snprintf(buf, sizeof buf, "the TCP braked: joint %s %s", axes_.config(i).name.c_str(),
-                  joint_why_ == AfterErrorEnd::velocity
-                      ? "would have exceeded its maximum velocity following the belt"
-                      : "would have passed its soft limit");
-    what = buf;
-  } else if (tcp_stop_.why() == AfterErrorEnd::soft_limit && tcp_stop_.axis() >= 0) {
+    what = "the TCP braked: joint " + axes_.config(i).name + " " +
+           (joint_why_ == tracking::AfterErrorEnd::velocity
+                ? "would have exceeded its maximum velocity following the belt"
+                : "would have passed its soft limit");
+  } else if (tcp_stop_.why() == tracking::AfterErrorEnd::soft_limit && tcp_stop_.axis() >= 0) {
     const auto i = static_cast<std::size_t>(tcp_stop_.axis());
     const int k = sync_ ? sync_->xyz(i) : -1;
-    const AfterErrorAxis& l = tcp_stop_.limits(i);
+    const tracking::AfterErrorAxis& l = tcp_stop_.limits(i);
     const double p = kin_.tcp()[i].p;
     const bool up = std::fabs(l.soft.max_position - p) < std::fabs(p - l.soft.min_position);
     static constexpr const char* kUpper[3] = {"00859", "00861", "00863"};
     static constexpr const char* kLower[3] = {"00860", "00862", "00864"};
     const std::size_t kk = k >= 0 && k < 3 ? static_cast<std::size_t>(k) : 0;
-    std::snprintf(buf, sizeof buf,
-                  "the TCP braked before the conveyor workspace's %s face %.6g mm (P-CHAN-%s), "
-                  "standing at %.6g mm",
-                  kXyz[kk], up ? l.soft.max_position : l.soft.min_position,
-                  up ? kUpper[kk] : kLower[kk], p);
-    what = buf;
-  } else if (tcp_stop_.why() == AfterErrorEnd::belt_stop) {
+    what = std::string("the TCP braked before the conveyor workspace's ") + kXyz[kk] + " face " +
+           core::human(up ? l.soft.max_position : l.soft.min_position) + " mm (P-CHAN-" +
+           (up ? kUpper[kk] : kLower[kk]) + "), standing at " + core::human(p) + " mm";
+  } else if (tcp_stop_.why() == tracking::AfterErrorEnd::belt_stop) {
     what = "the TCP stood with the belt";
   } else {
     what = "the TCP braked after ncsim's longest following";
   }
-  std::snprintf(buf, sizeof buf,
-                "synchronisation kept after %s under #TRAFO ON (004 §2.3): the path braked to 0 "
-                "in PCS1, the TCP followed the belt for %.6g s; %s; it stood at t=%.6g s",
-                held_->id.c_str(), tcp_stop_.followed(), what.c_str(), end_t_);
-  return std::string(buf) + passed_;
+  return "synchronisation kept after " + held_->id +
+         " under #TRAFO ON (004 §2.3): the path braked to 0 in PCS1, the TCP followed the belt "
+         "for " +
+         core::human(tcp_stop_.followed()) + " s; " + what +
+         "; it stood at t=" + core::human(end_t_) + " s" + passed_;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

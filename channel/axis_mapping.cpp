@@ -2,22 +2,22 @@
 
 #include "channel/axis_mapping.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 void AxisMapping::set_shares() noexcept {
   for (std::size_t i = 0; i < sync_->axis_count(); ++i)
     belt_.share[i] = sync_->share(i);
 }
 
-bool AxisMapping::map(const Cycle& c) noexcept {
+bool AxisMapping::map(const ipo::Cycle& c) noexcept {
   // Identity outside #TRAFO: the path is planned in machine axis values (MCS). The conveyor's
   // moving PCS1 frame turns c.x, c.v, c.a, c.j into the setpoints of the machine axes, which
   // everything after drives and monitors. Under #TRAFO ON the kinematic stage gives the joints;
   // the PCS1 frame and the catch-up act on the TCP there, before the kinematic.
   belt_.following = false;  // the audit's belt share (set below)
   // Where a catch-up / departure left the path, it stands until its next block moves.
-  std::optional<AxisVec>& hold = tracking_.hold();
-  if (c.activity == Activity::motion) hold.reset();
+  std::optional<planner::AxisVec>& hold = tracking_.hold();
+  if (c.activity == ipo::Activity::motion) hold.reset();
   if (kin_.decide(c)) return kin_.map(c, hold, sync_ ? &*sync_ : nullptr, t_cycle_, axes_, error_);
   std::array<axes::Setpoint, planner::kMaxAxes>& setpoint = axes_.setpoints();
   for (std::size_t i = 0; i < axes_.size(); ++i)
@@ -44,4 +44,4 @@ bool AxisMapping::map(const Cycle& c) noexcept {
   return true;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

@@ -21,13 +21,13 @@
 #include "tracking/belt_offset.hpp"
 #include "tracking/conveyor_sync.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 class AxisMapping {
  public:
   /// The references are the channel's own parts and must outlive this one; `t_cycle` [s].
   AxisMapping(KinematicStage& kin, ConveyorTracking& tracking,
-              const std::optional<ConveyorSync>& sync, AxisStage& axes,
+              const std::optional<tracking::ConveyorSync>& sync, AxisStage& axes,
               std::optional<RunTimeError>& error, double t_cycle) noexcept
       : kin_(kin),
         tracking_(tracking),
@@ -41,18 +41,18 @@ class AxisMapping {
   /// Each axis's share of one mm of belt travel (fixed by T0: set once, with a ConveyorSync).
   void set_shares() noexcept;
   /// Cycle `c`'s setpoints into the AxisStage; false when it raised a run-time error (NC3201).
-  bool map(const Cycle& c) noexcept;
+  bool map(const ipo::Cycle& c) noexcept;
   /// The belt's share of the setpoints in the last cycle mapped.
-  const BeltOffset& belt() const noexcept { return belt_; }
+  const tracking::BeltOffset& belt() const noexcept { return belt_; }
 
  private:
   KinematicStage& kin_;
   ConveyorTracking& tracking_;
-  const std::optional<ConveyorSync>& sync_;
+  const std::optional<tracking::ConveyorSync>& sync_;
   AxisStage& axes_;
   std::optional<RunTimeError>& error_;
-  double t_cycle_;   ///< [s]
-  BeltOffset belt_;  ///< the belt's share of the setpoints
+  double t_cycle_;             ///< [s]
+  tracking::BeltOffset belt_;  ///< the belt's share of the setpoints
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

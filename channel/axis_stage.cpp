@@ -7,9 +7,12 @@
 #include <stdexcept>
 #include <string>
 
-namespace ncsim::ipo {
+#include "core/number_text.hpp"
 
-AxisStage::AxisStage(const std::vector<ChannelAxis>& axes, const AxisVec& start, double t_cycle) {
+namespace ncsim::channel {
+
+AxisStage::AxisStage(const std::vector<ChannelAxis>& axes, const planner::AxisVec& start,
+                     double t_cycle) {
   axes_.reserve(axes.size());
   for (std::size_t i = 0; i < axes.size(); ++i) {
     const double p0 = start[i];
@@ -44,7 +47,7 @@ void AxisStage::follow(std::size_t i) noexcept {
   control_step(i);
 }
 
-bool AxisStage::drive(std::size_t i, const Cycle& c, bool motion_active, bool waiting,
+bool AxisStage::drive(std::size_t i, const ipo::Cycle& c, bool motion_active, bool waiting,
                       double target, double waited, std::optional<RunTimeError>& error) noexcept {
   Axis& a = axes_[i];
   const axes::Setpoint& sp = setpoint_[i];
@@ -55,13 +58,10 @@ bool AxisStage::drive(std::size_t i, const Cycle& c, bool motion_active, bool wa
   if (const auto alarm = axes::check_soft_limits(a.config.monitor.soft_limits, sp.p, axis, c.t)) {
     const bool low = alarm->kind == axes::AlarmKind::soft_limit_min;
     raise(error, alarm->id.data(),
-          "axis " + a.config.name +
-              format_text(
-                  low ? ": command position %.6g mm below the minimum soft position limit %.6g "
-                        "mm (P-AXIS-00177)"
-                      : ": command position %.6g mm above the maximum soft position limit %.6g "
-                        "mm (P-AXIS-00178)",
-                  sp.p, alarm->limit),
+          "axis " + a.config.name + ": command position " + core::human(sp.p) +
+              (low ? " mm below the minimum soft position limit "
+                   : " mm above the maximum soft position limit ") +
+              core::human(alarm->limit) + (low ? " mm (P-AXIS-00177)" : " mm (P-AXIS-00178)"),
           c, axis);
     return false;
   }
@@ -77,18 +77,16 @@ bool AxisStage::drive(std::size_t i, const Cycle& c, bool motion_active, bool wa
   std::string what;
   switch (alarm->kind) {
     case axes::AlarmKind::position_lag:
-      what = format_text(
-          ": position lag %.6g mm above the maximum %.6g mm for longer than the filter "
-          "time (NCSIM-AXIS-025 / 026)",
-          alarm->value, alarm->limit);
+      what = ": position lag " + core::human(alarm->value) + " mm above the maximum " +
+             core::human(alarm->limit) +
+             " mm for longer than the filter time (NCSIM-AXIS-025 / 026)";
       break;
     case axes::AlarmKind::exact_stop_timeout:
-      what = format_text(
-                 ": exact stop window P-AXIS-00236 (%.6g mm) not reached within P-AXIS-00532 "
-                 "(%.6g s)",
-                 a.config.monitor.exact_stop.window, alarm->limit) +
-             format_text(", %.6g mm from the target after %.6g s",
-                         std::fabs(target - state_.actual[i]), waited);
+      what = ": exact stop window P-AXIS-00236 (" +
+             core::human(a.config.monitor.exact_stop.window) +
+             " mm) not reached within P-AXIS-00532 (" + core::human(alarm->limit) + " s), " +
+             core::human(std::fabs(target - state_.actual[i])) + " mm from the target after " +
+             core::human(waited) + " s";
       break;
     default:
       what = ": " + axes::describe(*alarm);
@@ -98,4 +96,4 @@ bool AxisStage::drive(std::size_t i, const Cycle& c, bool motion_active, bool wa
   return false;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

@@ -21,12 +21,12 @@
 #include "axes/monitor.hpp"
 #include "channel/channel_types.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 class AxisStage {
  public:
   /// Throws std::invalid_argument (axis named) on an unusable control or monitor parameter.
-  AxisStage(const std::vector<ChannelAxis>& axes, const AxisVec& start, double t_cycle);
+  AxisStage(const std::vector<ChannelAxis>& axes, const planner::AxisVec& start, double t_cycle);
 
   std::size_t size() const noexcept { return axes_.size(); }
   const ChannelAxis& config(std::size_t i) const noexcept { return axes_[i].config; }
@@ -37,7 +37,7 @@ class AxisStage {
   }
   const AxesState& state() const noexcept { return state_; }
   /// Largest |following error| seen per axis so far [mm | deg].
-  const AxisVec& following_error_max() const noexcept { return lag_max_; }
+  const planner::AxisVec& following_error_max() const noexcept { return lag_max_; }
   /// Axis i's actual position is inside its exact-stop window P-AXIS-00236.
   bool in_window(std::size_t i) const noexcept {
     return axes_[i].monitor.status().in_exact_stop_window;
@@ -48,7 +48,7 @@ class AxisStage {
   /// Drives axis i with its setpoint for cycle `c`: soft limits, control, monitor.
   /// `motion_active`: the monitor's motion flag; `waiting`: the axis waits at an exact stop
   /// for `target` [mm | deg], since `waited` [s] (messages). False: `error` raised.
-  bool drive(std::size_t i, const Cycle& c, bool motion_active, bool waiting, double target,
+  bool drive(std::size_t i, const ipo::Cycle& c, bool motion_active, bool waiting, double target,
              double waited, std::optional<RunTimeError>& error) noexcept;
   /// Axis i's control step alone (no limits, no monitor: the channel is in its error state).
   void follow(std::size_t i) noexcept;
@@ -64,7 +64,7 @@ class AxisStage {
   std::vector<Axis> axes_;
   std::array<axes::Setpoint, planner::kMaxAxes> setpoint_{};
   AxesState state_;
-  AxisVec lag_max_{};
+  planner::AxisVec lag_max_{};
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

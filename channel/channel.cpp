@@ -2,19 +2,18 @@
 
 #include "channel/channel.hpp"
 
-#include <cstdio>
 #include <cstdlib>
 #include <span>
 #include <stdexcept>
 #include <utility>
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 namespace {
 
-Config prepared(Config config) {
-  config.detail = Detail::axes;   // the axes need the point every cycle
-  config.hold_exact_stop = true;  // the channel ends G60 / G360 waits on actual positions
+ipo::Config prepared(ipo::Config config) {
+  config.detail = ipo::Detail::axes;  // the axes need the point every cycle
+  config.hold_exact_stop = true;      // the channel ends G60 / G360 waits on actual positions
   return config;
 }
 
@@ -28,14 +27,14 @@ std::vector<IndpAxisConfig> indp_configs(const ChannelConfig& config) {
 /// `config`'s axes, when there is one per interpolated axis.
 const std::vector<ChannelAxis>& checked_axes(const ChannelConfig& config, std::size_t n) {
   if (config.axes.size() != n)
-    throw std::invalid_argument("ipo::Channel: " + std::to_string(config.axes.size()) +
+    throw std::invalid_argument("channel::Channel: " + std::to_string(config.axes.size()) +
                                 " channel axes for " + std::to_string(n) + " interpolated axes");
   return config.axes;
 }
 
 }  // namespace
 
-Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
+Channel::Channel(ChannelConfig config, ipo::Source& source, ipo::Sink* sink)
     : kin_(config.path.joints, config.axes.size(), std::move(config.forward), sink),
       // Without a sink nobody reads the joints: the interpolator then does not compute them;
       // under a kinematic the channel reads them (NC6210's jerk stencil).
@@ -58,21 +57,16 @@ Channel::Channel(ChannelConfig config, Source& source, Sink* sink)
     mapping_.set_shares();  // fixed by T0: set once
     tracking_.set_static_unit(config.conveyor->x_virtual);
     // The stop after an error while synchronised (tracking/sync_error.hpp).
-    std::vector<AfterErrorAxis> after;
+    std::vector<tracking::AfterErrorAxis> after;
     for (std::size_t i = 0; i < config.axes.size(); ++i)
-      after.push_back(after_error_axis(config.path.axes[i], config.axes[i].monitor.soft_limits));
+      after.push_back(
+          tracking::after_error_axis(config.path.axes[i], config.axes[i].monitor.soft_limits));
     after_.configure(after, config.conveyor->workspace, t);
   }
 }
 
-std::string format_text(const char* format, double a, double b) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, format, a, b);
-  return buf;
-}
-
-void raise(std::optional<RunTimeError>& error, const char* id, std::string message, const Cycle& c,
-           int axis) noexcept {
+void raise(std::optional<RunTimeError>& error, const char* id, std::string message,
+           const ipo::Cycle& c, int axis) noexcept {
   try {
     RunTimeError e;
     e.id = id;
@@ -87,71 +81,73 @@ void raise(std::optional<RunTimeError>& error, const char* id, std::string messa
   }
 }
 
-Status Channel::step() noexcept {
+ipo::Status Channel::step() noexcept {
   indp_.clear_tech();                         // the technology functions of this cycle
   if (after_.active()) return after_.step();  // the machine moves on after an error (004 §2.3)
   const std::uint64_t before = ipo_.cycle().index;
-  const Status s = program_cycle();
-  if (s != Status::error) return s;
+  const ipo::Status s = program_cycle();
+  if (s != ipo::Status::error) return s;
   // The error keeps the synchronisation (the cycle is completed), or the run ends with it.
   return after_.enter(ipo_.cycle().index != before, driven_);
 }
 
-Status Channel::program_cycle() noexcept {
-  if (error_) return Status::error;
+ipo::Status Channel::program_cycle() noexcept {
+  if (error_) return ipo::Status::error;
   if (ended_) return *ended_;  // the player sees each cycle once
-  Status s = Status::running;
+  ipo::Status s = ipo::Status::running;
   if (!play_.step(tracking_.tracking(), port_, s, error_)) return s;  // the scenario's cycle
-  if (!events_.before_path()) return Status::error;  // a blocked event, a ChannelWait's events
-  tracking_.static_override();       // a synchronised static unit's path follows the belt
-  s = ipo_.step();                   // the path (block starts go to the scenario)
-  if (error_) return Status::error;  // raised by an event at a ChannelWait inside the step
-  if (s == Status::finished && !events_.at_end()) s = Status::error;  // the events left
-  if (s == Status::finished && !indp_.axes().in_position_mask(0)) return indp_tail();
-  if (s != Status::running) {
+  if (!events_.before_path()) return ipo::Status::error;  // a blocked event, a ChannelWait's events
+  tracking_.static_override();            // a synchronised static unit's path follows the belt
+  s = ipo_.step();                        // the path (block starts go to the scenario)
+  if (error_) return ipo::Status::error;  // raised by an event at a ChannelWait inside the step
+  if (s == ipo::Status::finished && !events_.at_end()) s = ipo::Status::error;  // the events left
+  if (s == ipo::Status::finished && !indp_.axes().in_position_mask(0)) return indp_tail();
+  if (s != ipo::Status::running) {
     ended_ = s;
     return s;
   }
   // The path's cycle: its parts in order.
-  const Cycle& c = ipo_.cycle();
+  const ipo::Cycle& c = ipo_.cycle();
   driven_ = 0;
-  if (!play_.check(c, tracking_.hold_waits(), error_)) return Status::error;  // NC6301, an action
-  if (!events_.riding(c)) return Status::error;  // the events of the blocks started in it
-  if (!tracking_.world_step(c, play_.player())) return Status::error;  // the conveyor world
-  if (!mapping_.map(c)) return Status::error;         // the path point -> the axes' setpoints
-  if (!tracking_.workspace(c)) return Status::error;  // the conveyor workspace and its hold
+  if (!play_.check(c, tracking_.hold_waits(), error_))
+    return ipo::Status::error;                        // NC6301, an action
+  if (!events_.riding(c)) return ipo::Status::error;  // the events of the blocks started in it
+  if (!tracking_.world_step(c, play_.player())) return ipo::Status::error;  // the conveyor world
+  if (!mapping_.map(c)) return ipo::Status::error;         // the path point -> the axes' setpoints
+  if (!tracking_.workspace(c)) return ipo::Status::error;  // the conveyor workspace and its hold
   // A G60 / G360 block end reached:
   if (!exact_stop_.active() && ipo_.standstill().holding_exact_stop())
     exact_stop_.begin(c, std::span(axes_.setpoints().data(), axes_.size()), kin_.transformed());
-  if (!indp_.step(c, axes_, shown_, error_)) return Status::error;  // the INDP axes' setpoints
-  if (!drive_axes(c)) return Status::error;  // soft limits, position control, monitors
+  if (!indp_.step(c, axes_, shown_, error_)) return ipo::Status::error;  // the INDP axes' setpoints
+  if (!drive_axes(c)) return ipo::Status::error;  // soft limits, position control, monitors
   bool release = false;
   // The exact stop on actual positions: released, or still waiting (P-ERR-70082, NC6101).
-  if (exact_stop_.active() && !exact_stop_.check(c, axes_, release, error_)) return Status::error;
+  if (exact_stop_.active() && !exact_stop_.check(c, axes_, release, error_))
+    return ipo::Status::error;
   if (release) ipo_.standstill().release_exact_stop();
   if (sink_) sink_->on_cycle(cycle());  // with the INDP axes' setpoints
-  return Status::running;
+  return ipo::Status::running;
 }
 
-Status Channel::indp_tail() noexcept {
-  const Cycle& c = indp_.tail(ipo_.cycle(), ipo_.t_cycle());
+ipo::Status Channel::indp_tail() noexcept {
+  const ipo::Cycle& c = indp_.tail(ipo_.cycle(), ipo_.t_cycle());
   mapping_.map(c);
-  if (!indp_.step(c, axes_, shown_, error_)) return Status::error;
-  if (!drive_axes(c)) return Status::error;
+  if (!indp_.step(c, axes_, shown_, error_)) return ipo::Status::error;
+  if (!drive_axes(c)) return ipo::Status::error;
   if (sink_) sink_->on_cycle(cycle());
-  return Status::running;
+  return ipo::Status::running;
 }
 
-bool Channel::drive_axes(const Cycle& c) noexcept {
+bool Channel::drive_axes(const ipo::Cycle& c) noexcept {
   for (std::size_t i = 0; i < axes_.size(); ++i) {
     driven_ = i + 1;  // a monitor's alarm comes after the axis's control step
     const bool waiting = exact_stop_.waits_for(i);
     const bool active = indp_.axes().owned(i) ? !indp_.axes().in_position(i)
-                                              : c.activity == Activity::motion && !waiting;
+                                              : c.activity == ipo::Activity::motion && !waiting;
     if (!axes_.drive(i, c, active, waiting, exact_stop_.target(i), exact_stop_.waited(), error_))
       return false;
   }
   return true;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

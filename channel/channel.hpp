@@ -6,7 +6,7 @@
 // goes through the PTP axis core's position-control model (axes/control) giving its actual
 // position and following error; the monitors (axes/monitor) watch every axis; G60 / G360
 // exact stops wait for the actual positions. `ncsim run` and `ncsim time` both step it.
-// Inputs: a Source of program items (ipo::ProgramSource for a program), the ChannelConfig
+// Inputs: a Source of program items (program::ProgramSource for a program), the ChannelConfig
 // (the interpolator's Config plus one ChannelAxis per interpolated axis: position control
 // P-AXIS-00099 / NCSIM-AXIS-023, monitors P-AXIS-00177/00178, NCSIM-AXIS-024..026, exact stop
 // P-AXIS-00236 / P-AXIS-00532), an optional Sink.
@@ -71,21 +71,21 @@
 #include "tracking/belt_offset.hpp"
 #include "tracking/conveyor_sync.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 struct ChannelConfig {
-  Config path;                        ///< the interpolator's (detail and hold_exact_stop are set)
+  ipo::Config path;                   ///< the interpolator's (detail and hold_exact_stop are set)
   std::vector<ChannelAxis> axes;      ///< one per entry of path.axes, same order
   double exact_stop_wait_max = 60.0;  ///< [s] longest exact-stop wait without P-AXIS-00532
   double measured_value_wait_max = 600.0;  ///< [s] longest #SYNC IN wait for a measured value
   // conveyor tracking (docs/conveyor.md "Synchronisation")
   std::optional<machines::ConveyorSyncChannel> conveyor;  ///< FCT_DLM channels only
-  std::vector<SyncAxis> sync_axes;  ///< one per entry of path.axes (with `conveyor`)
+  std::vector<tracking::SyncAxis> sync_axes;  ///< one per entry of path.axes (with `conveyor`)
   /// The conveyor axis's conv_sync.* as loaded: what `#MACHINE DATA` changes at run time
   /// (program/machine_data.hpp); set with `conveyor` when the machine has a conveyor axis.
   std::optional<machines::ConveyorAxisParams> conveyor_axis;
-  /// the forward transform of the machine's kinematic (ipo::forward_map; empty
-  /// without one): synchro_lag under #TRAFO ON (Channel::master_display, ipo::cycle_lag).
+  /// the forward transform of the machine's kinematic (program::forward_map; empty
+  /// without one): synchro_lag under #TRAFO ON (Channel::master_display, tracking::cycle_lag).
   planner::JointMap forward;
 };
 
@@ -99,15 +99,15 @@ class Channel {
   /// Throws std::invalid_argument (value and parameter named) on an unusable configuration
   /// (the interpolator's checks, the control model's Kv * T <= 1, the monitors'). `source`
   /// must outlive the channel; `sink` may be null.
-  Channel(ChannelConfig config, Source& source, Sink* sink = nullptr);
+  Channel(ChannelConfig config, ipo::Source& source, ipo::Sink* sink = nullptr);
   Channel(const Channel&) = delete;
   Channel& operator=(const Channel&) = delete;
 
   /// One interpolation cycle. Never throws. Status::error: the source failed (message()) or
   /// a run-time error stopped the channel (run_time_error()).
-  Status step() noexcept;
+  ipo::Status step() noexcept;
   /// The path record of the last cycle step() reported (INDP axes: their setpoints).
-  const Cycle& cycle() const noexcept { return shown_ ? *shown_ : ipo_.cycle(); }
+  const ipo::Cycle& cycle() const noexcept { return shown_ ? *shown_ : ipo_.cycle(); }
   /// Command, actual position and following error of every axis after the last cycle.
   const AxesState& axes() const noexcept { return axes_.state(); }
   /// Why the channel stopped at run time, if it did.
@@ -133,7 +133,7 @@ class Channel {
   /// The last cycle ran under #TRAFO ON: cycle().x is the TCP, the axes got joints().
   bool transformed() const noexcept { return kin_.transformed(); }
   /// The joint setpoints of the last transformed cycle (machine axes in interpolated order).
-  const JointSetpoint& joints() const noexcept { return kin_.joints(); }
+  const ipo::JointSetpoint& joints() const noexcept { return kin_.joints(); }
   /// The TCP setpoint of the last transformed cycle, in MCS (X, Y, Z first; the PCS1 offset
   /// and the catch-up included): what the joints() were computed from [mm, mm/s, ...].
   const std::array<axes::Setpoint, planner::kMaxAxes>& tcp() const noexcept { return kin_.tcp(); }
@@ -144,7 +144,7 @@ class Channel {
     return axes_.setpoints();
   }
   /// the belt's share of setpoints() in the last cycle (Audit::set_belt()).
-  const BeltOffset& belt_share() const noexcept { return mapping_.belt(); }
+  const tracking::BeltOffset& belt_share() const noexcept { return mapping_.belt(); }
   // conveyor tracking (docs/conveyor.md "Synchronisation")
   /// The conveyor world the channel steps every cycle and tracks between #SYNC IN and
   /// #SYNC OUT (null: none; #SYNC IN is then NC6001 `not supported`). Must outlive the channel.
@@ -154,10 +154,10 @@ class Channel {
     if (sync_) sync_->attach(port);
   }
   /// The channel's conveyor tracking state; null without FCT_DLM.
-  const ConveyorSync* conveyor_sync() const noexcept { return sync_ ? &*sync_ : nullptr; }
+  const tracking::ConveyorSync* conveyor_sync() const noexcept { return sync_ ? &*sync_ : nullptr; }
   // the display variables of seed 004 §6 with synchro_lag (tracking/synchro_lag.hpp) of
   // the last cycle; all 0 without FCT_DLM (channel/channel_lag.cpp).
-  MasterDisplay master_display() const noexcept;
+  tracking::MasterDisplay master_display() const noexcept;
   // independent axes (channel/indp_stage.hpp, docs/ipo.md "INDP axes and technology
   // functions"). Conveyor tracking takes an INTERRUPTIBLE INDP_SYN motion over, moving, when
   // the catch-up after the next #SYNC IN starts (IndpAxes::hand_over, docs/conveyor.md S-4).
@@ -175,25 +175,26 @@ class Channel {
  private:
   /// One cycle of the program, the cycle's parts in order (see the header); Status::error when
   /// one raised a run-time error.
-  Status program_cycle() noexcept;
+  ipo::Status program_cycle() noexcept;
   /// A cycle after the path's end while INDP axes still move (the program end waits for them).
-  Status indp_tail() noexcept;
+  ipo::Status indp_tail() noexcept;
   /// Drives every axis (AxisStage::drive with the exact stop's and the INDP axes' flags);
   /// false when one raised a run-time error.
-  bool drive_axes(const Cycle& c) noexcept;
+  bool drive_axes(const ipo::Cycle& c) noexcept;
 
   KinematicStage kin_;  ///< #TRAFO ON: the joint stage (declared before ipo_: its relay)
-  PathInterpolator ipo_;
-  Sink* sink_ = nullptr;
+  ipo::PathInterpolator ipo_;
+  ipo::Sink* sink_ = nullptr;
   AxisStage axes_;
   ExactStopWait exact_stop_;
   std::optional<RunTimeError> error_;
-  std::optional<Status> ended_;       ///< the interpolator's stream ended so
-  std::optional<ConveyorSync> sync_;  ///< with FCT_DLM only
-  conveyor::Port* port_ = nullptr;    ///< the attached conveyor world (reduced filter)
-  IndpStage indp_;                    ///< INDP axes and technology outputs
-  const Cycle* shown_ = nullptr;      ///< the cycle shown instead of the path's (INDP, after error)
-  std::size_t driven_ = 0;            ///< axes driven in the cycle being computed
+  std::optional<ipo::Status> ended_;            ///< the interpolator's stream ended so
+  std::optional<tracking::ConveyorSync> sync_;  ///< with FCT_DLM only
+  conveyor::Port* port_ = nullptr;              ///< the attached conveyor world (reduced filter)
+  IndpStage indp_;                              ///< INDP axes and technology outputs
+  const ipo::Cycle* shown_ =
+      nullptr;              ///< the cycle shown instead of the path's (INDP, after error)
+  std::size_t driven_ = 0;  ///< axes driven in the cycle being computed
   ScenarioPlay play_{ipo_, indp_, axes_};  ///< the scenario, before each cycle
   /// The stop after an error while synchronised (declared before tracking_: its limits).
   AfterErrorStop after_;
@@ -202,4 +203,4 @@ class Channel {
   ChannelEvents events_;       ///< the events due, their dispatch (the interpolator's WaitHandler)
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

@@ -22,7 +22,7 @@ using namespace ncsim;
 struct Result {
   ipo::Status status = ipo::Status::finished;
   std::vector<ipo::Cycle> cycles;
-  std::optional<ipo::RunTimeError> error;
+  std::optional<channel::RunTimeError> error;
 };
 
 // Runs `text` on portal_3x (1 ms); `run_time`: the channel answers position barriers (as the
@@ -31,12 +31,12 @@ Result run(const std::string& text, bool run_time = true) {
   const core::SourceFile file("t.nc", text);
   const machines::Machine& m = interp::test::machine("portal_3x");
   interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
-  ipo::test::Recorder rec;
-  ipo::Channel ch(ipo::channel_config(m, 0.001), src, &rec);
+  program::ProgramSource src(in, m);
+  channel::test::Recorder rec;
+  channel::Channel ch(channel::channel_config(m, 0.001), src, &rec);
   if (run_time) src.answer_positions_from(&ch.axes().command);
   Result r;
-  r.status = ipo::test::run_to_end(ch);
+  r.status = channel::test::run_to_end(ch);
   r.cycles = std::move(rec.cycles);
   r.error = ch.run_time_error();
   REQUIRE(src.error() == nullptr);
@@ -86,7 +86,7 @@ TEST_CASE("after INDP_ASYN a G91 move of the axis waits for its INDP motion, the
 TEST_CASE("without the run-time answer the same program is NC6103 (implicit sync not done)") {
   const Result r = run(kNoWait, false);
   REQUIRE(r.error);
-  CHECK(r.error->id == std::string(ipo::kIndpPathId));
+  CHECK(r.error->id == std::string(channel::kIndpPathId));
   CHECK(r.error->line == 5);
 }
 
@@ -112,7 +112,7 @@ TEST_CASE("the answer is the channel's set position, not the decoded target") {
   const core::SourceFile file("t.nc", kNoWait);
   const machines::Machine& m = interp::test::machine("portal_3x");
   interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
+  program::ProgramSource src(in, m);
   ipo::AxisVec set{};
   src.answer_positions_from(&set);
   ipo::Item item;
@@ -123,7 +123,7 @@ TEST_CASE("the answer is the channel's set position, not the decoded target") {
   }
   REQUIRE(wait);  // the implicit synchronisation before line 5
   CHECK(wait->line == 5);
-  ipo::ChannelEvent e;
+  program::ChannelEvent e;
   REQUIRE(src.take_event(wait->tag, e));  // the INDP_ASYN of line 3
   REQUIRE(src.take_event(wait->tag, e));  // the #WAIT INDP [Y] of the implicit sync
   const auto* w = std::get_if<interp::WaitIndp>(&e.body);

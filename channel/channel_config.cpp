@@ -8,17 +8,17 @@
 #include "channel/channel.hpp"
 #include "program/program_source.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 ChannelConfig channel_config(const machines::Machine& machine, double t_cycle) {
   ChannelConfig c;
-  c.path = machine_config(machine, t_cycle);
+  c.path = program::machine_config(machine, t_cycle);
   // With a kinematic, transformed Moves are limited by the joints (program/trafo.hpp).
-  if (auto trafo = machine_trafo(machine, c.path)) {
-    c.forward = forward_map(trafo->kinematics, trafo->xyz);
+  if (auto trafo = program::machine_trafo(machine, c.path)) {
+    c.forward = program::forward_map(trafo->kinematics, trafo->xyz);
     c.path.joints = std::move(trafo->limits);
   }
-  for (const std::uint8_t i : interpolated_axes(machine)) {
+  for (const std::uint8_t i : program::interpolated_axes(machine)) {
     const machines::AxisParams& axis = machine.axes[i];
     ChannelAxis a;
     a.name = axis.name;
@@ -36,9 +36,9 @@ ChannelConfig channel_config(const machines::Machine& machine, double t_cycle) {
     if (const machines::AxisParams* belt = machine.conveyor_axis())
       c.conveyor_axis = belt->conveyor;
     const std::array<const char*, 3> xyz{"X", "Y", "Z"};
-    for (const std::uint8_t i : interpolated_axes(machine)) {
+    for (const std::uint8_t i : program::interpolated_axes(machine)) {
       const machines::AxisParams& axis = machine.axes[i];
-      SyncAxis a;
+      tracking::SyncAxis a;
       a.name = axis.name;
       for (int k = 0; k < 3; ++k)  // X, Y, Z as the interpreter and ProgramSource find them
         if (machine.find_axis(xyz[static_cast<std::size_t>(k)]) == &axis) a.xyz = k;
@@ -52,4 +52,4 @@ ChannelConfig channel_config(const machines::Machine& machine, double t_cycle) {
   return c;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

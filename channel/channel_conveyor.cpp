@@ -10,18 +10,18 @@
 // is the departure PTP from that moving state.
 
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "channel/conveyor_tracking.hpp"
+#include "core/number_text.hpp"
 #include "core/tolerance.hpp"
 #include "program/machine_data.hpp"
 #include "program/program_source.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 namespace {
 
@@ -31,10 +31,11 @@ constexpr const char* kNeedsWorld =
 
 }  // namespace
 
-ConveyorTracking::ConveyorTracking(std::optional<ConveyorSync>& sync, PathInterpolator& ipo,
-                                   AxisStage& axes, IndpStage& indp, KinematicStage& kin,
-                                   const SyncErrorStop& after, std::optional<RunTimeError>& error,
-                                   Sink* sink, double measured_value_wait_max,
+ConveyorTracking::ConveyorTracking(std::optional<tracking::ConveyorSync>& sync,
+                                   ipo::PathInterpolator& ipo, AxisStage& axes, IndpStage& indp,
+                                   KinematicStage& kin, const tracking::SyncErrorStop& after,
+                                   std::optional<RunTimeError>& error, ipo::Sink* sink,
+                                   double measured_value_wait_max,
                                    std::optional<machines::ConveyorAxisParams> conveyor_axis)
     : sync_(sync),
       ipo_(ipo),
@@ -47,14 +48,14 @@ ConveyorTracking::ConveyorTracking(std::optional<ConveyorSync>& sync, PathInterp
       measured_value_wait_max_(measured_value_wait_max),
       conveyor_axis_(std::move(conveyor_axis)) {
   if (!(measured_value_wait_max_ > 0.0))
-    throw std::invalid_argument("ipo::Channel: measured_value_wait_max must be > 0 s, got " +
+    throw std::invalid_argument("channel::Channel: measured_value_wait_max must be > 0 s, got " +
                                 std::to_string(measured_value_wait_max_));
   // Same rounding as every wait (docs/ipo.md): the limit in whole cycles, never shorter.
   measure_wait_cycles_max_ = static_cast<std::uint64_t>(
       std::ceil(measured_value_wait_max_ / ipo_.t_cycle() - kCycleRounding));
 }
 
-bool ConveyorTracking::check_workspace(const Cycle& c) noexcept {
+bool ConveyorTracking::check_workspace(const ipo::Cycle& c) noexcept {
   if (!sync_->synchronised()) return true;
   Eigen::Vector3d p = Eigen::Vector3d::Zero();
   for (std::size_t i = 0; i < axes_.size(); ++i)
@@ -74,11 +75,11 @@ bool ConveyorTracking::check_workspace(const Cycle& c) noexcept {
 }
 
 EventOutcome ConveyorTracking::on_sync_in(const interp::SyncIn& command,
-                                          const ChannelEvent& e) noexcept {
+                                          const program::ChannelEvent& e) noexcept {
   try {
     if (!sync_ || sync_->port() == nullptr)
       return EventContext(e, ipo_, error_)
-          .fail(kNotSupportedId, std::string("not supported: #SYNC IN") + kNeedsWorld);
+          .fail(program::kNotSupportedId, std::string("not supported: #SYNC IN") + kNeedsWorld);
     // FEED_CONT > 0 / FEED_CONT_AUTO run (S-1); on a static unit
     // they have nothing to act on (docs/conveyor.md S-1): NC9060
     if (static_unit_ && (command.feed_cont_auto || command.feed_cont.value_or(0.0) > 0.0))
@@ -95,16 +96,14 @@ EventOutcome ConveyorTracking::on_sync_in(const interp::SyncIn& command,
         return EventContext(e, ipo_, error_).fail(err->id.c_str(), std::move(err->message));
       return EventOutcome::blocking;
     }
-    if (sync_->phase() != SyncPhase::waiting) return EventOutcome::done;
+    if (sync_->phase() != tracking::SyncPhase::waiting) return EventOutcome::done;
     // A measured value that never comes (no workpiece left, the belt stopped, the probe armed
     // for an edge that never passes) must not make the run endless: ncsim's limit (NC9054).
     if (++measure_waited_ > measure_wait_cycles_max_) {
-      char buf[160];
-      std::snprintf(buf, sizeof buf,
-                    "#SYNC IN: no measured value within %.6g s (ncsim's limit): no workpiece "
-                    "edge was latched while the probe was armed",
-                    measured_value_wait_max_);
-      return EventContext(e, ipo_, error_).fail(kMeasuredValueWaitId, buf);
+      return EventContext(e, ipo_, error_)
+          .fail(kMeasuredValueWaitId,
+                "#SYNC IN: no measured value within " + core::human(measured_value_wait_max_) +
+                    " s (ncsim's limit): no workpiece edge was latched while the probe was armed");
     }
     return EventOutcome::blocking;
   } catch (...) {
@@ -113,11 +112,11 @@ EventOutcome ConveyorTracking::on_sync_in(const interp::SyncIn& command,
 }
 
 EventOutcome ConveyorTracking::on_sync_out(const interp::SyncOut& command,
-                                           const ChannelEvent& e) noexcept {
+                                           const program::ChannelEvent& e) noexcept {
   try {
     if (!sync_ || sync_->port() == nullptr)
       return EventContext(e, ipo_, error_)
-          .fail(kNotSupportedId, std::string("not supported: #SYNC OUT") + kNeedsWorld);
+          .fail(program::kNotSupportedId, std::string("not supported: #SYNC OUT") + kNeedsWorld);
     // FEED_CONT / FEED_CONT_AUTO of #SYNC OUT, the velocity the
     // desynchronisation movement terminates at (004 l.529), is "reduced as required" (l.284) to
     // 0: that movement is INDP positioning (l.535-552) or the departure PTP, both ending in
@@ -130,10 +129,10 @@ EventOutcome ConveyorTracking::on_sync_out(const interp::SyncOut& command,
 }
 
 EventOutcome ConveyorTracking::on_sync_motion(const interp::Motion& motion,
-                                              const ChannelEvent& e) noexcept {
+                                              const program::ChannelEvent& e) noexcept {
   if (!sync_) {
     return EventContext(e, ipo_, error_)
-        .fail(kNotSupportedId, "not supported: a synchronisation motion without FCT_DLM");
+        .fail(program::kNotSupportedId, "not supported: a synchronisation motion without FCT_DLM");
   }
   if (sync_tag_ == e.tag) {  // dispatched again: blocking while the profile runs
     if (const auto lag = sync_->handover_lag()) return sync_hand_over(*lag, e);
@@ -154,7 +153,7 @@ EventOutcome ConveyorTracking::on_sync_motion(const interp::Motion& motion,
       start[i] = axes::MotionState{kin_.tcp()[i].p, kin_.tcp()[i].v, kin_.tcp()[i].a};
     target[i] = motion.end[i];  // interpolated order, MCS at belt travel 0
   }
-  const bool catch_up = sync_->phase() == SyncPhase::latched;
+  const bool catch_up = sync_->phase() == tracking::SyncPhase::latched;
   // a catch-up meeting the workpiece moving (FEED_CONT > 0, FEED_CONT_AUTO);
   // under #TRAFO ON too, as a TCP motion (docs/conveyor.md S-1)
   const bool moving = catch_up && sync_->feed_cont_wanted() > 0.0;
@@ -169,7 +168,8 @@ EventOutcome ConveyorTracking::on_sync_motion(const interp::Motion& motion,
                  : sync_->start_departure(std::span(start.data(), n), std::span(target.data(), n));
   }
   if (r == axes::Result::ok) {
-    AxisVec hold{};  // the path's own coordinates: PCS1 at travel 0 (catch-up), MCS (departure)
+    planner::AxisVec
+        hold{};  // the path's own coordinates: PCS1 at travel 0 (catch-up), MCS (departure)
     for (std::size_t i = 0; i < n; ++i)
       hold[i] = target[i];
     sync_hold_ = hold;
@@ -182,19 +182,21 @@ EventOutcome ConveyorTracking::on_sync_motion(const interp::Motion& motion,
     std::string what = catch_up ? "the catch-up after #SYNC IN" : "the departure after #SYNC OUT";
     if (axis >= 0) what += " of axis " + axes_.config(static_cast<std::size_t>(axis)).name;
     return EventContext(e, ipo_, error_)
-        .fail(kCatchUpNotSynchronizableId, what + ": " + std::string(axes::describe(r)) + " (" +
-                                               std::string(axes::diagnostic_id(r)) + ")");
+        .fail(tracking::kCatchUpNotSynchronizableId, what + ": " + std::string(axes::describe(r)) +
+                                                         " (" +
+                                                         std::string(axes::diagnostic_id(r)) + ")");
   } catch (...) {
     std::abort();
   }
 }
 
 EventOutcome ConveyorTracking::on_probe_arm(const interp::ProbeArm& command,
-                                            const ChannelEvent& e) noexcept {
+                                            const program::ChannelEvent& e) noexcept {
   if (!sync_ || sync_->port() == nullptr) {
     try {
       return EventContext(e, ipo_, error_)
-          .fail(kNotSupportedId, std::string("not supported: MC_TouchProbe") + kNeedsWorld);
+          .fail(program::kNotSupportedId,
+                std::string("not supported: MC_TouchProbe") + kNeedsWorld);
     } catch (...) {
       std::abort();
     }
@@ -204,11 +206,12 @@ EventOutcome ConveyorTracking::on_probe_arm(const interp::ProbeArm& command,
 }
 
 EventOutcome ConveyorTracking::on_move_velocity(const interp::MoveVelocity& command,
-                                                const ChannelEvent& e) noexcept {
+                                                const program::ChannelEvent& e) noexcept {
   if (!sync_ || sync_->port() == nullptr) {
     try {
       return EventContext(e, ipo_, error_)
-          .fail(kNotSupportedId, std::string("not supported: MC_MoveVelocity") + kNeedsWorld);
+          .fail(program::kNotSupportedId,
+                std::string("not supported: MC_MoveVelocity") + kNeedsWorld);
     } catch (...) {
       std::abort();
     }
@@ -218,7 +221,7 @@ EventOutcome ConveyorTracking::on_move_velocity(const interp::MoveVelocity& comm
   return port_outcome(e);
 }
 
-EventOutcome ConveyorTracking::port_outcome(const ChannelEvent& e) noexcept {
+EventOutcome ConveyorTracking::port_outcome(const program::ChannelEvent& e) noexcept {
   const auto& err = sync_->port()->error();
   if (!err) return EventOutcome::done;
   try {
@@ -229,12 +232,12 @@ EventOutcome ConveyorTracking::port_outcome(const ChannelEvent& e) noexcept {
 }
 
 EventOutcome ConveyorTracking::on_machine_data(const interp::MachineData& command,
-                                               const ChannelEvent& e) noexcept {
+                                               const program::ChannelEvent& e) noexcept {
   try {
     // ProgramSource let only the conveyor axis's filter parameters through (machine_data.hpp).
     if (!sync_ || sync_->port() == nullptr || !conveyor_axis_)
       return EventContext(e, ipo_, error_)
-          .fail(kNotSupportedId,
+          .fail(program::kNotSupportedId,
                 std::string("not supported: #MACHINE DATA of the conveyor filters") + kNeedsWorld);
     if (tracking())
       return EventContext(e, ipo_, error_)
@@ -242,10 +245,11 @@ EventOutcome ConveyorTracking::on_machine_data(const interp::MachineData& comman
                 "#MACHINE DATA of the conveyor's filters or delay time while "
                 "synchronised: the filters would restart under the tool and step PCS1 "
                 "(change them before #SYNC IN or after #SYNC OUT)");
-    const machines::ConveyorAxisParams changed = apply_machine_data(*conveyor_axis_, command);
+    const machines::ConveyorAxisParams changed =
+        program::apply_machine_data(*conveyor_axis_, command);
     if (!sync_->port()->set_axis_params(changed))
       return EventContext(e, ipo_, error_)
-          .fail(kNotSupportedId,
+          .fail(program::kNotSupportedId,
                 "not supported: #MACHINE DATA of the conveyor filters on this conveyor "
                 "world");
     conveyor_axis_ = changed;
@@ -255,4 +259,4 @@ EventOutcome ConveyorTracking::on_machine_data(const interp::MachineData& comman
   }
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

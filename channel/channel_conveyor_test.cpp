@@ -21,19 +21,19 @@ namespace {
 
 using namespace ncsim;
 
-using Ran = ipo::test::ConveyorRun;
+using Ran = channel::test::ConveyorRun;
 
 // Runs `program` on `machine_name` (1 ms) with `port` attached (null: none).
 Ran run(const std::string& program, conveyor::Port* port,
         const std::string& machine_name = "laser_portal") {
-  return ipo::test::run_conveyor(program, interp::test::machine(machine_name), port);
+  return channel::test::run_conveyor(program, interp::test::machine(machine_name), port);
 }
 
 }  // namespace
 
 TEST_CASE("the attached Port is stepped every cycle; MCS motion is untouched by it") {
   const std::string program = "%t\nN10 G01 X100 Y20 F6000\nN20 M30\n";
-  ipo::test::FakePort port(300.0);
+  tracking::test::FakePort port(300.0);
   const Ran with = run(program, &port);
   const Ran without = run(program, nullptr);
   REQUIRE(with.status == ipo::Status::finished);
@@ -46,7 +46,7 @@ TEST_CASE("the attached Port is stepped every cycle; MCS motion is untouched by 
 }
 
 TEST_CASE("a channel without conveyor tracking ignores an attached Port") {
-  ipo::test::FakePort port(300.0);
+  tracking::test::FakePort port(300.0);
   const Ran r = run("%t\nN10 G01 X10 F6000\nN20 M30\n", &port, "portal_3x");
   CHECK(r.status == ipo::Status::finished);
   CHECK(port.steps_ == 0);
@@ -57,25 +57,25 @@ namespace {
 struct Tracked {
   ipo::Status status = ipo::Status::finished;
   std::vector<std::uint32_t> line;
-  std::vector<ipo::SyncPhase> phase;
+  std::vector<tracking::SyncPhase> phase;
   std::vector<std::array<double, 3>> x;       // command X, Y, Z (MCS)
   std::vector<std::array<double, 3>> offset;  // PCS1 offset on X, Y, Z
   std::vector<double> waited;
-  std::optional<ipo::RunTimeError> error;
+  std::optional<channel::RunTimeError> error;
   std::string source_error;
 };
 
 constexpr double kT = 0.001;
 
-Tracked track(const std::string& program, ipo::test::FakePort* port) {
+Tracked track(const std::string& program, tracking::test::FakePort* port) {
   const machines::Machine& m = interp::test::machine("laser_portal");
-  ipo::test::ConveyorRig rig(program, m, ipo::channel_config(m, kT), port);
-  const ipo::Channel& ch = rig.ch;
+  channel::test::ConveyorRig rig(program, m, channel::channel_config(m, kT), port);
+  const channel::Channel& ch = rig.ch;
   Tracked r;
-  r.status = ipo::test::run_to_end(
+  r.status = channel::test::run_to_end(
       rig.ch,
       [&] {
-        const ipo::ConveyorSync& s = *ch.conveyor_sync();
+        const tracking::ConveyorSync& s = *ch.conveyor_sync();
         r.line.push_back(ch.cycle().line);
         r.phase.push_back(s.phase());
         r.x.push_back({ch.axes().command[0], ch.axes().command[1], ch.axes().command[2]});
@@ -103,7 +103,7 @@ const char* const kSync =
 }  // namespace
 
 TEST_CASE("#SYNC IN: catch-up, standing still in PCS1, F relative to the workpiece, departure") {
-  ipo::test::FakePort port(300.0);
+  tracking::test::FakePort port(300.0);
   port.latch_at_ = 200;  // the workpiece is measured 0.2 s into the run
   const Tracked r = track(kSync, &port);
   if (r.error)
@@ -116,18 +116,18 @@ TEST_CASE("#SYNC IN: catch-up, standing still in PCS1, F relative to the workpie
   double v_rel_max = 0.0;
   for (std::size_t k = 1; k < n; ++k) {
     CAPTURE(k);
-    if (r.phase[k] == ipo::SyncPhase::waiting) {
+    if (r.phase[k] == tracking::SyncPhase::waiting) {
       ++waiting;
       CHECK(r.x[k][0] == doctest::Approx(0.0));  // the path stands while waiting
     }
-    if (r.phase[k] == ipo::SyncPhase::catching_up) ++catching;
-    if (r.phase[k] == ipo::SyncPhase::tracking && r.line[k] == 5) {
+    if (r.phase[k] == tracking::SyncPhase::catching_up) ++catching;
+    if (r.phase[k] == tracking::SyncPhase::tracking && r.line[k] == 5) {
       ++dwell_tracking;  // X follows the belt exactly: PCS1 X stays at 100
       CHECK(r.x[k][0] - r.offset[k][0] == doctest::Approx(100.0).epsilon(1e-12));
       CHECK(r.x[k][1] == doctest::Approx(50.0));
     }
-    if (r.phase[k] == ipo::SyncPhase::tracking && r.line[k] == 6 &&
-        r.phase[k - 1] == ipo::SyncPhase::tracking) {
+    if (r.phase[k] == tracking::SyncPhase::tracking && r.line[k] == 6 &&
+        r.phase[k - 1] == tracking::SyncPhase::tracking) {
       ++machining;
       const double v_rel =
           ((r.x[k][0] - r.offset[k][0]) - (r.x[k - 1][0] - r.offset[k - 1][0])) / kT;
@@ -150,11 +150,11 @@ TEST_CASE("#SYNC IN: catch-up, standing still in PCS1, F relative to the workpie
   // The departure ends at its MCS target at rest.
   CHECK(r.x.back()[0] == doctest::Approx(-100.0));
   CHECK(r.x.back()[1] == doctest::Approx(0.0));
-  CHECK(r.phase.back() == ipo::SyncPhase::off);
+  CHECK(r.phase.back() == tracking::SyncPhase::off);
 }
 
 TEST_CASE("a belt slowing down during the catch-up: the tool still ends standing still in PCS1") {
-  ipo::test::FakePort port(300.0);
+  tracking::test::FakePort port(300.0);
   port.latch_at_ = 1;
   port.v_change_at_ = 60;  // inside the catch-up (it starts at step 3)
   port.v_new_ = 200.0;
@@ -163,8 +163,8 @@ TEST_CASE("a belt slowing down during the catch-up: the tool still ends standing
   bool changed_while_catching = false;
   std::size_t dwell = 0;
   for (std::size_t k = 0; k < r.x.size(); ++k) {
-    if (k == 60 && r.phase[k] == ipo::SyncPhase::catching_up) changed_while_catching = true;
-    if (r.phase[k] == ipo::SyncPhase::tracking && r.line[k] == 5) {
+    if (k == 60 && r.phase[k] == tracking::SyncPhase::catching_up) changed_while_catching = true;
+    if (r.phase[k] == tracking::SyncPhase::tracking && r.line[k] == 5) {
       ++dwell;
       CHECK(r.x[k][0] - r.offset[k][0] == doctest::Approx(100.0).epsilon(1e-12));
     }
@@ -183,18 +183,18 @@ TEST_CASE("#SYNC IN without a conveyor world attached is NC6001 naming the scena
 }
 
 TEST_CASE("50653: a belt more than 10 % above CONV_VEL stops the channel at #SYNC IN") {
-  ipo::test::FakePort port(331.0);
+  tracking::test::FakePort port(331.0);
   port.latch_at_ = 1;
   const Tracked r = track(kSync, &port);
   REQUIRE(r.error);
   CHECK(r.error->id == "50653");
-  ipo::test::FakePort ok(329.0);
+  tracking::test::FakePort ok(329.0);
   ok.latch_at_ = 1;
   CHECK_FALSE(track(kSync, &ok).error);
 }
 
 TEST_CASE("NC9052: the belt carries the tool out of the workspace in the conveying direction") {
-  ipo::test::FakePort port(300.0);
+  tracking::test::FakePort port(300.0);
   port.latch_at_ = 1;
   const Tracked r = track(
       "%t\nN20 #SYNC IN [CONV_VEL=18000]\nN30 G01 X100 F6000\nN40 G04 20\nN50 #SYNC OUT\nN60 M30\n",
@@ -206,14 +206,14 @@ TEST_CASE("NC9052: the belt carries the tool out of the workspace in the conveyi
 }
 
 TEST_CASE("NC9054: #SYNC IN whose measured value never comes ends at ncsim's wait limit") {
-  ipo::test::FakePort port(300.0);  // never latches
+  tracking::test::FakePort port(300.0);  // never latches
   const core::SourceFile file("t.nc", kSync);
   const machines::Machine& m = interp::test::machine("laser_portal");
   interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
-  ipo::ChannelConfig cfg = ipo::channel_config(m, 0.001);
+  program::ProgramSource src(in, m);
+  channel::ChannelConfig cfg = channel::channel_config(m, 0.001);
   cfg.measured_value_wait_max = 0.25;
-  ipo::Channel ch(std::move(cfg), src);
+  channel::Channel ch(std::move(cfg), src);
   ch.attach_conveyor(&port);
   ipo::Status s = ipo::Status::running;
   for (int guard = 0; guard < 100'000 && s == ipo::Status::running; ++guard)

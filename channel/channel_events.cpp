@@ -12,7 +12,7 @@
 #include "channel/after_error.hpp"
 #include "program/program_source.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 bool ChannelEvents::before_path() noexcept {
   if (!queue_.blocked() && !ipo_.standstill().holding_channel()) return true;
@@ -24,7 +24,7 @@ bool ChannelEvents::before_path() noexcept {
   return true;
 }
 
-bool ChannelEvents::riding(const Cycle& c) noexcept {
+bool ChannelEvents::riding(const ipo::Cycle& c) noexcept {
   if (!queue_.blocked()) run(c.event_tag);
   return !error_;
 }
@@ -34,7 +34,7 @@ bool ChannelEvents::at_end() noexcept {
   return !error_;
 }
 
-bool ChannelEvents::on_wait(const ChannelWait& wait) noexcept {
+bool ChannelEvents::on_wait(const ipo::ChannelWait& wait) noexcept {
   if (after_.active()) return false;  // after the error nothing more is executed
   queue_.at_wait(wait);
   return !queue_.blocked() && run(wait.tag) &&
@@ -42,10 +42,10 @@ bool ChannelEvents::on_wait(const ChannelWait& wait) noexcept {
 }
 
 bool ChannelEvents::run(std::uint32_t up_to) noexcept {
-  return queue_.run(source_, up_to, [this](const ChannelEvent& e) { return dispatch(e); });
+  return queue_.run(source_, up_to, [this](const program::ChannelEvent& e) { return dispatch(e); });
 }
 
-EventOutcome ChannelEvents::dispatch(const ChannelEvent& e) noexcept {
+EventOutcome ChannelEvents::dispatch(const program::ChannelEvent& e) noexcept {
   return std::visit(
       [&](const auto& body) -> EventOutcome {
         using T = std::decay_t<decltype(body)>;
@@ -74,10 +74,10 @@ EventOutcome ChannelEvents::dispatch(const ChannelEvent& e) noexcept {
           return tracking_.on_machine_data(body, e);
         } else {
           return EventContext(e, ipo_, error_)
-              .fail(kNotSupportedId, "not supported: this command in the channel");
+              .fail(program::kNotSupportedId, "not supported: this command in the channel");
         }
       },
       e.body);
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

@@ -28,15 +28,15 @@
 #include "ipo/interpolator.hpp"
 #include "tracking/conveyor_sync.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 class AfterErrorStop;
 
-class ChannelEvents final : public WaitHandler {
+class ChannelEvents final : public ipo::WaitHandler {
  public:
   /// The references are the channel's own parts (and its Source) and must outlive this one.
-  ChannelEvents(Source& source, PathInterpolator& ipo, AxisStage& axes, IndpStage& indp,
-                ConveyorTracking& tracking, const std::optional<ConveyorSync>& sync,
+  ChannelEvents(ipo::Source& source, ipo::PathInterpolator& ipo, AxisStage& axes, IndpStage& indp,
+                ConveyorTracking& tracking, const std::optional<tracking::ConveyorSync>& sync,
                 const AfterErrorStop& after, std::optional<RunTimeError>& error) noexcept
       : source_(source),
         ipo_(ipo),
@@ -55,31 +55,31 @@ class ChannelEvents final : public WaitHandler {
   bool before_path() noexcept;
   /// The events riding on the blocks started in cycle `c` (unless one blocks). False: an event
   /// raised a run-time error.
-  bool riding(const Cycle& c) noexcept;
+  bool riding(const ipo::Cycle& c) noexcept;
   /// The path ended: every event left (ProgramSource ends with a ChannelWait). False: an event
   /// raised a run-time error.
   bool at_end() noexcept;
   /// The path reached `wait` (inside the interpolator's step): true when its events are all
   /// done (the path goes on).
-  bool on_wait(const ChannelWait& wait) noexcept override;
+  bool on_wait(const ipo::ChannelWait& wait) noexcept override;
 
  private:
   /// Executes one event by kind (the one dispatch point).
-  EventOutcome dispatch(const ChannelEvent& event) noexcept;
+  EventOutcome dispatch(const program::ChannelEvent& event) noexcept;
   /// EventQueue::run with dispatch(): the blocked event, then the due events up to `up_to`;
   /// false when one blocks or raised an error.
   bool run(std::uint32_t up_to) noexcept;
 
-  Source& source_;
-  PathInterpolator& ipo_;
+  ipo::Source& source_;
+  ipo::PathInterpolator& ipo_;
   AxisStage& axes_;
   IndpStage& indp_;
   ConveyorTracking& tracking_;
-  const std::optional<ConveyorSync>& sync_;
+  const std::optional<tracking::ConveyorSync>& sync_;
   const AfterErrorStop& after_;
   std::optional<RunTimeError>& error_;
   EventQueue queue_;       ///< the events due and the one that blocks
   HomingSequence homing_;  ///< G74
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

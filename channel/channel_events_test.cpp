@@ -18,23 +18,23 @@ namespace {
 
 using namespace ncsim;
 
-using ipo::test::Recorder;
+using channel::test::Recorder;
 
 struct Result {
   ipo::Status status = ipo::Status::finished;
   std::vector<ipo::Cycle> cycles;
-  std::optional<ipo::RunTimeError> error;
+  std::optional<channel::RunTimeError> error;
 };
 
 Result run(const std::string& text) {
   const core::SourceFile file("t.nc", text);
   const machines::Machine& m = interp::test::machine("portal_3x");
   interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
+  program::ProgramSource src(in, m);
   Recorder rec;
-  ipo::Channel ch(ipo::channel_config(m, 0.001), src, &rec);
+  channel::Channel ch(channel::channel_config(m, 0.001), src, &rec);
   Result r;
-  r.status = ipo::test::run_to_end(ch);
+  r.status = channel::test::run_to_end(ch);
   r.cycles = std::move(rec.cycles);
   r.error = ch.run_time_error();
   return r;

@@ -41,10 +41,10 @@ TEST_CASE(
   interp::Options options;
   options.external.emplace("PART_X", 765.0);  // both parts beyond the limit (no scenario here)
   interp::Interpreter in(file, m, options);
-  ipo::ProgramSource src(in, m);
-  ipo::test::Recorder rec;
-  ipo::Channel ch(ipo::channel_config(m, 0.001), src, &rec);
-  REQUIRE(ipo::test::run_to_end(ch, {}, 10'000'000) == ipo::Status::error);
+  program::ProgramSource src(in, m);
+  channel::test::Recorder rec;
+  channel::Channel ch(channel::channel_config(m, 0.001), src, &rec);
+  REQUIRE(channel::test::run_to_end(ch, {}, 10'000'000) == ipo::Status::error);
   const auto& e = ch.run_time_error();
   REQUIRE(e);
   CHECK(e->id == "NC5502");
@@ -69,12 +69,12 @@ TEST_CASE(
       core::SourceFile::load(interp::test::source_root() / "interp/testdata/l_main.nc");
   const machines::Machine& m = interp::test::machine("portal_3x");
   interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
-  ipo::test::Recorder rec;
-  ipo::Channel ch(ipo::channel_config(m, 0.001), src, &rec);
-  std::vector<ipo::BlockTime> blocks;
-  ipo::TimeCounter counter(0.001, [&](const ipo::BlockTime& b) { blocks.push_back(b); });
-  REQUIRE(ipo::test::run_to_end(
+  program::ProgramSource src(in, m);
+  channel::test::Recorder rec;
+  channel::Channel ch(channel::channel_config(m, 0.001), src, &rec);
+  std::vector<audit::BlockTime> blocks;
+  audit::TimeCounter counter(0.001, [&](const audit::BlockTime& b) { blocks.push_back(b); });
+  REQUIRE(channel::test::run_to_end(
               ch, [&] { counter.add(ch.cycle()); }, 1'000'000) == ipo::Status::finished);
   counter.finish();
   REQUIRE(blocks.size() == 2);
@@ -105,12 +105,12 @@ TEST_CASE(
   scenario::LoadResult loaded = scenario::parse_scenario(toml);
   REQUIRE(loaded.scenario);
   interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
+  program::ProgramSource src(in, m);
   scenario::Player player(*loaded.scenario);
   src.answer_barriers_from(&player.ve(), true);
-  ipo::Channel ch(ipo::channel_config(m, 0.001), src);
+  channel::Channel ch(channel::channel_config(m, 0.001), src);
   ch.play(&player);
-  REQUIRE(ipo::test::run_to_end(ch, {}, 1'000'000) == ipo::Status::finished);
+  REQUIRE(channel::test::run_to_end(ch, {}, 1'000'000) == ipo::Status::finished);
   CHECK(player.passes(2) == 0);
   CHECK(player.passes(5) == 1);
   CHECK_FALSE(player.ve().read("HIT"));
@@ -131,7 +131,7 @@ Adapted adapt(const char* name, const machines::Machine& m) {
   const core::SourceFile file =
       core::SourceFile::load(interp::test::source_root() / "channel/testdata" / name);
   interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
+  program::ProgramSource src(in, m);
   Adapted a;
   ipo::Item item;
   while (src.next(item))
@@ -151,7 +151,7 @@ TEST_CASE(
   // held_ball_trafo_sub.nc, called by `L` after main line 10 (N60 G261 G01). Before, the held
   // block went out with the file of the command read last: N60 was named in the subroutine
   // file (diagnostics, `run`'s CSV, `time --blocks`).
-  const Adapted a = adapt("held_ball_trafo.nc", ipo::test::picker());
+  const Adapted a = adapt("held_ball_trafo.nc", channel::test::picker());
   REQUIRE_FALSE(a.error);
   const auto n60 = std::find_if(a.moves.begin(), a.moves.end(),
                                 [](const planner::Move& mv) { return mv.line == 10; });

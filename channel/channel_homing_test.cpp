@@ -21,7 +21,7 @@ namespace {
 
 using namespace ncsim;
 
-using Run = ipo::test::AuditedRun;
+using Run = channel::test::AuditedRun;
 
 // portal_3x with X homing to 100 at 50 mm/s, Y to 50 at 25 mm/s, Z to -20 at 10 mm/s.
 machines::Machine homing_machine() {
@@ -38,14 +38,14 @@ machines::Machine homing_machine() {
 Run run(const std::string& program, const machines::Machine& m) {
   const core::SourceFile file("t.nc", program);
   interp::Interpreter in(file, m, interp::Options{});
-  ipo::ProgramSource src(in, m);
-  ipo::ChannelConfig cfg = ipo::channel_config(m, 0.001);
-  ipo::Audit audit(cfg.path.axes, cfg.path.channel.t_cycle, cfg.path.start);
-  ipo::test::Recorder rec;
-  ipo::test::AuditedRecorder tee(&audit, &rec);
-  ipo::Channel ch(std::move(cfg), src, &tee);
+  program::ProgramSource src(in, m);
+  channel::ChannelConfig cfg = channel::channel_config(m, 0.001);
+  audit::Audit audit(cfg.path.axes, cfg.path.channel.t_cycle, cfg.path.start);
+  channel::test::Recorder rec;
+  channel::test::AuditedRecorder tee(&audit, &rec);
+  channel::Channel ch(std::move(cfg), src, &tee);
   src.answer_positions_from(&ch.axes().command);  // as run and time wire it
-  return ipo::test::finish(ch, rec, audit);
+  return channel::test::finish(ch, rec, audit);
 }
 
 // Index of the first cycle in which axis `i` moves (|v| > 0), or cycles.size().

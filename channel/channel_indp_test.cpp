@@ -22,27 +22,27 @@ namespace {
 
 using namespace ncsim;
 
-using ipo::test::Recorder;
+using channel::test::Recorder;
 
-using Run = ipo::test::AuditedRun;
+using Run = channel::test::AuditedRun;
 
 // Runs `program` on portal_3x (1 ms); before the first cycle axis `axis` gets `move`.
-Run run(const std::string& program, std::size_t axis, const ipo::IndpMove& move) {
+Run run(const std::string& program, std::size_t axis, const channel::IndpMove& move) {
   const core::SourceFile file("t.nc", program);
   const machines::Machine& m = interp::test::machine("portal_3x");
   interp::Interpreter in(file, m, interp::Options{});
-  ipo::ProgramSource src(in, m);
-  ipo::ChannelConfig cfg = ipo::channel_config(m, 0.001);
-  ipo::Audit audit(cfg.path.axes, cfg.path.channel.t_cycle, cfg.path.start);
+  program::ProgramSource src(in, m);
+  channel::ChannelConfig cfg = channel::channel_config(m, 0.001);
+  audit::Audit audit(cfg.path.axes, cfg.path.channel.t_cycle, cfg.path.start);
   Recorder rec;
-  ipo::test::AuditedRecorder tee(&audit, &rec);
-  ipo::Channel ch(std::move(cfg), src, &tee);
+  channel::test::AuditedRecorder tee(&audit, &rec);
+  channel::Channel ch(std::move(cfg), src, &tee);
   REQUIRE_FALSE(ch.indp().command(axis, move));
-  return ipo::test::finish(ch, rec, audit);
+  return channel::test::finish(ch, rec, audit);
 }
 
-ipo::IndpMove to(double target, double feed) {
-  ipo::IndpMove m;
+channel::IndpMove to(double target, double feed) {
+  channel::IndpMove m;
   m.target = target;
   m.feed = feed;
   return m;
@@ -78,14 +78,14 @@ TEST_CASE("the path takes an axis back when it programs it after its INDP motion
   // The INDP motion left Y at 40, N20 starts Y where the interpreter has it (0): NC6103.
   const Run r = run("%i\nN10 G01 X30 F600\nN20 G01 Y40 X0\nN30 M30\n", 1, to(40.0, 100.0));
   REQUIRE(r.error);
-  CHECK(r.error->id == std::string(ipo::kIndpPathId));
+  CHECK(r.error->id == std::string(channel::kIndpPathId));
   CHECK(r.error->line == 3);
 }
 
 TEST_CASE("a path block that moves an axis while its INDP motion runs stops with NC6103") {
   const Run r = run("%i\nN10 G01 X1 Y1 F600\nN20 M30\n", 1, to(40.0, 5.0));
   REQUIRE(r.error);
-  CHECK(r.error->id == std::string(ipo::kIndpPathId));
+  CHECK(r.error->id == std::string(channel::kIndpPathId));
   CHECK(r.error->message.find("#WAIT INDP") != std::string::npos);
   CHECK(r.cycles.empty());
 }
@@ -94,8 +94,8 @@ TEST_CASE("the INDP target beyond the soft limit is refused before the axis move
   const core::SourceFile file("t.nc", "%i\nN10 M30\n");
   const machines::Machine& m = interp::test::machine("portal_3x");
   interp::Interpreter in(file, m, interp::Options{});
-  ipo::ProgramSource src(in, m);
-  ipo::Channel ch(ipo::channel_config(m, 0.001), src);
+  program::ProgramSource src(in, m);
+  channel::Channel ch(channel::channel_config(m, 0.001), src);
   const double limit = m.axes[1].soft_limits.pos;
   const auto e = ch.indp().command(1, to(limit + 1.0, 10.0));
   REQUIRE(e);
@@ -108,9 +108,9 @@ TEST_CASE("M / H functions are output in the cycle the next block starts, in pro
                               "%t\nN10 G01 X10 F3000\nN20 M50\nN30 X20\nN40 H7 M51\nN50 M30\n");
   const machines::Machine& m = interp::test::machine("portal_3x");
   interp::Interpreter in(file, m, interp::Options{});
-  ipo::ProgramSource src(in, m);
-  ipo::Channel ch(ipo::channel_config(m, 0.001), src);
-  std::vector<ipo::TechOutput> out;
+  program::ProgramSource src(in, m);
+  channel::Channel ch(channel::channel_config(m, 0.001), src);
+  std::vector<channel::TechOutput> out;
   double t_x20_start = -1.0;
   ipo::Status s;
   while ((s = ch.step()) == ipo::Status::running) {

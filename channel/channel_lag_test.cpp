@@ -49,16 +49,16 @@ TEST_CASE("master_display: synchro_lag 0 before the frame moves, then the axes' 
   const core::SourceFile file("t.nc", kHold);
   const machines::Machine& m = interp::test::machine("laser_portal");
   interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
-  ipo::Channel ch(ipo::channel_config(m, 0.001), src);
-  ipo::test::FakePort port(300.0);
+  program::ProgramSource src(in, m);
+  channel::Channel ch(channel::channel_config(m, 0.001), src);
+  tracking::test::FakePort port(300.0);
   port.latch_at_ = 100;
   ch.attach_conveyor(&port);
   int tracking = 0;
   for (int guard = 0; guard < 100'000; ++guard) {
     if (ch.step() != ipo::Status::running) break;
-    const ipo::ConveyorSync& s = *ch.conveyor_sync();
-    const ipo::MasterDisplay d = ch.master_display();
+    const tracking::ConveyorSync& s = *ch.conveyor_sync();
+    const tracking::MasterDisplay d = ch.master_display();
     CHECK(d.current_pos_master == s.display().current_pos_master);
     if (!s.moving_frame()) {
       CHECK(d.synchro_lag == 0.0);
@@ -67,7 +67,7 @@ TEST_CASE("master_display: synchro_lag 0 before the frame moves, then the axes' 
     // The machine's actual X against the workpiece: - the following error of X (the axis
     // lags its command), the belt's share is the same in the command and the workpiece.
     CHECK(d.synchro_lag == doctest::Approx(-ch.axes().following_error[0]).epsilon(1e-9));
-    if (ch.cycle().line == 4 && s.phase() == ipo::SyncPhase::tracking) {
+    if (ch.cycle().line == 4 && s.phase() == tracking::SyncPhase::tracking) {
       ++tracking;
       if (tracking > 200) CHECK(std::abs(d.synchro_lag) < 0.05);  // settled, feedforward
     }
@@ -77,30 +77,30 @@ TEST_CASE("master_display: synchro_lag 0 before the frame moves, then the axes' 
 
 TEST_CASE("master_display under #TRAFO ON: synchro_lag is the actual TCP's against the workpiece") {
   // The joints' actual positions through the forward transform against the commanded TCP
-  // (ipo::tcp_lag); it read 0 under #TRAFO ON before (session 27), which tune-delay worked
+  // (tracking::tcp_lag); it read 0 under #TRAFO ON before (session 27), which tune-delay worked
   // around with its own forward transform.
   machines::Machine m = interp::test::machine("delta_picker");
   m.channel.conveyor->workspace.lower = Eigen::Vector3d(-600, -600, -900);
   m.channel.conveyor->workspace.upper = Eigen::Vector3d(600, 600, 0);
-  ipo::ChannelConfig cfg = ipo::channel_config(m, 0.001);
-  const auto trafo = ipo::machine_trafo(m, cfg.path);
+  channel::ChannelConfig cfg = channel::channel_config(m, 0.001);
+  const auto trafo = program::machine_trafo(m, cfg.path);
   REQUIRE(trafo);
-  const planner::JointMap forward = ipo::forward_map(trafo->kinematics, trafo->xyz);
-  ipo::test::FakePort port(100.0);
+  const planner::JointMap forward = program::forward_map(trafo->kinematics, trafo->xyz);
+  tracking::test::FakePort port(100.0);
   port.latch_at_ = 100;
-  ipo::test::ConveyorRig rig(kPick, m, std::move(cfg), &port);
-  const ipo::Channel& ch = rig.ch;
+  channel::test::ConveyorRig rig(kPick, m, std::move(cfg), &port);
+  const channel::Channel& ch = rig.ch;
   int transformed = 0;
   double largest = 0.0;
   for (int guard = 0; guard < 100'000 && rig.ch.step() == ipo::Status::running; ++guard) {
-    const ipo::ConveyorSync& s = *ch.conveyor_sync();
+    const tracking::ConveyorSync& s = *ch.conveyor_sync();
     if (!s.moving_frame() || !ch.transformed()) continue;
     ++transformed;
     std::array<double, planner::kMaxAxes> tcp{};
     for (std::size_t i = 0; i < ch.axis_count(); ++i)
       tcp[i] = ch.tcp()[i].p;
-    const auto want = ipo::tcp_lag(s, std::span<const double>(tcp.data(), ch.axis_count()),
-                                   ch.axes().actual, forward);
+    const auto want = tracking::tcp_lag(s, std::span<const double>(tcp.data(), ch.axis_count()),
+                                        ch.axes().actual, forward);
     REQUIRE(want);
     CHECK(ch.master_display().synchro_lag == *want);
     largest = std::max(largest, std::abs(*want));

@@ -68,7 +68,7 @@ Run play(const std::string& program, const std::string& toml, std::uint32_t watc
   REQUIRE(loaded.scenario);
   const scenario::Scenario& s = *loaded.scenario;
   interp::Interpreter in(file, m, interp::Options{});
-  ipo::ProgramSource src(in, m);
+  program::ProgramSource src(in, m);
   scenario::Player player(s);
   bool writes = false;  // as the CLI decides the flush
   for (const scenario::Event& e : s.events)
@@ -78,7 +78,7 @@ Run play(const std::string& program, const std::string& toml, std::uint32_t watc
   Watch w;
   w.player = &player;
   w.line = watch;
-  ipo::Channel ch(ipo::channel_config(m, t_cycle), src, &w);
+  channel::Channel ch(channel::channel_config(m, t_cycle), src, &w);
   ch.play(&player);
   Run r;
   for (int guard = 0; guard < 1'000'000; ++guard) {

@@ -20,13 +20,13 @@ namespace {
 
 using namespace ncsim;
 
-using ipo::test::Recorder;
+using channel::test::Recorder;
 
 struct Played {
   ipo::Status status = ipo::Status::finished;
   std::vector<ipo::Cycle> cycles;
   std::optional<scenario::StopReason> stop;
-  std::optional<ipo::RunTimeError> error;
+  std::optional<channel::RunTimeError> error;
   std::string source_error;
 };
 
@@ -46,14 +46,14 @@ Played play(const std::string& program, const std::string& toml, bool flush = tr
   for (const scenario::VeInitial& v : s.ve)
     options.external.emplace(v.name, v.value);
   interp::Interpreter in(file, m, options);
-  ipo::ProgramSource src(in, m);
+  program::ProgramSource src(in, m);
   scenario::Player player(s);
   src.answer_barriers_from(&player.ve(), flush);
   Recorder rec;
-  ipo::Channel ch(ipo::channel_config(m, 0.001), src, &rec);
+  channel::Channel ch(channel::channel_config(m, 0.001), src, &rec);
   ch.play(&player);
   Played r;
-  r.status = ipo::test::run_to_end(ch);
+  r.status = channel::test::run_to_end(ch);
   CHECK(ch.step() == r.status);  // the stream stays ended
   r.cycles = std::move(rec.cycles);
   r.stop = ch.scenario_stop();
@@ -188,7 +188,7 @@ TEST_CASE(
   const Played r = play(kBranch, "[ve]\nSEL = 0\n[[event]]\nat = 0.1\noverride = 150\n");
   CHECK(r.status == ipo::Status::error);
   REQUIRE(r.error);
-  CHECK(r.error->id == std::string(ipo::kOverrideRangeId));
+  CHECK(r.error->id == std::string(channel::kOverrideRangeId));
   CHECK(r.cycles.size() == 100);  // the run ends before the cycle at 0.1 s
 
   // An axis with no INDP motion keeps the override for its next one (002_* 2.2).
@@ -200,12 +200,12 @@ TEST_CASE(
   const Played high =
       play(kBranch, "[ve]\nSEL = 0\n[[event]]\nat = 0.1\naxis_override = { X = 150 }\n");
   REQUIRE(high.error);
-  CHECK(high.error->id == std::string(ipo::kIndpOverrideId));
+  CHECK(high.error->id == std::string(channel::kIndpOverrideId));
   CHECK(high.cycles.size() == 100);
   const Played none =
       play(kBranch, "[ve]\nSEL = 0\n[[event]]\nat = 0.1\naxis_override = { S = 50 }\n");
   REQUIRE(none.error);
-  CHECK(none.error->id == std::string(ipo::kIndpOverrideId));
+  CHECK(none.error->id == std::string(channel::kIndpOverrideId));
 }
 
 TEST_CASE("reruns under a scenario are identical to the bit") {

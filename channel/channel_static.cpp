@@ -17,7 +17,7 @@
 #include "core/tolerance.hpp"
 #include "tracking/x_virtual.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 namespace {
 
@@ -37,7 +37,7 @@ constexpr double kCycleShare = 0.5;
 
 void ConveyorTracking::static_override() noexcept {
   if (!sync_ || !static_unit_) return;
-  if (sync_->phase() != SyncPhase::tracking) {
+  if (sync_->phase() != tracking::SyncPhase::tracking) {
     if (operator_override_) {
       try {
         ipo_.path_override().set_override(*operator_override_);  // it was accepted before: in range
@@ -50,7 +50,7 @@ void ConveyorTracking::static_override() noexcept {
   }
   if (!operator_override_) operator_override_ = ipo_.path_override().override_factor();
   const double belt = sync_->frame().sign() * sync_->display().v_master_comp;  // [mm/s]
-  const double planned = kXvPlanFactor * sync_->conv_vel();
+  const double planned = tracking::kXvPlanFactor * sync_->conv_vel();
   const double f = planned > 0.0 ? std::clamp(belt / planned, 0.0, 1.0) : 0.0;
   if (std::fabs(f - ipo_.path_override().override_factor()) > kOverrideStep ||
       (f == 0.0) != (ipo_.path_override().override_factor() == 0.0)) {
@@ -66,9 +66,10 @@ void ConveyorTracking::static_override() noexcept {
   // ahead of the path. The cap is a jerk-limited replan that acts inside
   // the ball too (PathOverride::set_velocity_cap); the workspace hold's cap, set after each
   // cycle (ConveyorTracking::workspace_cap), is kept when it is lower.
-  const Cycle& c = ipo_.cycle();
+  const ipo::Cycle& c = ipo_.cycle();
   const planner::PlannedSegment* e = ipo_.active_entry();
-  if (c.activity != Activity::motion || e == nullptr || c.programmed == nullptr || planned <= 0.0)
+  if (c.activity != ipo::Activity::motion || e == nullptr || c.programmed == nullptr ||
+      planned <= 0.0)
     return;
   int x = -1;
   for (std::size_t i = 0; i < sync_->axis_count() && x < 0; ++i)
@@ -114,4 +115,4 @@ void ConveyorTracking::static_override() noexcept {
       std::min(ipo_.path_override().velocity_cap(), std::max(belt, 0.0) / share));
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

@@ -28,11 +28,11 @@ struct StaticRun {
   std::vector<double> x;  // MCS X command (the virtual axis) after each cycle [mm]
   std::vector<double> y;  // MCS Y command (= PCS1 Y, a real axis) [mm]
   std::vector<bool> tracking;
-  std::optional<ipo::RunTimeError> error;
+  std::optional<channel::RunTimeError> error;
   std::string source_error;  // the adapter's error id ("" none)
   std::string source_message;
   std::uint32_t source_line = 0;
-  ipo::Verdict verdict;
+  audit::Verdict verdict;
 };
 
 // static_saw (the band saw of 004 §4.10), a belt at `belt` mm/s without noise or dead time,
@@ -40,17 +40,17 @@ struct StaticRun {
 // `t_cycle` [s].
 StaticRun run(const std::string& program, double belt, double t_cycle = kT) {
   const machines::Machine& m = interp::test::machine("static_saw");
-  ipo::test::FakePort port(belt);
+  tracking::test::FakePort port(belt);
   port.latch_at_ = 1;
-  ipo::test::AuditedConveyorRig audited(program, m, ipo::channel_config(m, t_cycle), &port);
-  const ipo::test::ConveyorRig& rig = audited.rig;
+  channel::test::AuditedConveyorRig audited(program, m, channel::channel_config(m, t_cycle), &port);
+  const channel::test::ConveyorRig& rig = audited.rig;
   StaticRun r;
-  r.status = ipo::test::run_to_end(
+  r.status = channel::test::run_to_end(
       audited.rig.ch,
       [&] {
         r.x.push_back(rig.ch.axes().command[0]);
         r.y.push_back(rig.ch.axes().command[1]);
-        r.tracking.push_back(rig.ch.conveyor_sync()->phase() == ipo::SyncPhase::tracking);
+        r.tracking.push_back(rig.ch.conveyor_sync()->phase() == tracking::SyncPhase::tracking);
       },
       200'000);
   r.error = rig.ch.run_time_error();
@@ -61,15 +61,15 @@ StaticRun run(const std::string& program, double belt, double t_cycle = kT) {
   }
   r.verdict = audited.audit.verdict();
   if (r.error) MESSAGE(r.error->id << " line " << r.error->line << ": " << r.error->message);
-  ipo::test::message_violations(r.verdict);
+  channel::test::message_violations(r.verdict);
   return r;
 }
 
 // Two lines against the belt (+X) joined by a ball of radius `dev` at their corner (line 5):
 // `first` from X0 Y0, then to X-200 Y0 (the corner at Y-100).
 // `between`: blocks between the two lines ("" none).
-std::string program(const char* conv_vel, const char* dev, const char* word, const char* first,
-                    const std::string& between = "") {
+std::string nc_program(const char* conv_vel, const char* dev, const char* word, const char* first,
+                       const std::string& between = "") {
   return std::string("%t\nN10 #SYNC IN [CONV_VEL=") + conv_vel +
          "]\nN20 G01 X0 Y0 F100\nN30 #CONTOUR MODE [DEV PATH_DEV=" + dev + "]\nN40 " + word +
          " G01 " + first + "\n" + between + "N50 G01 X-200 Y0\nN60 #SYNC OUT\nN70 M30\n";
@@ -115,7 +115,7 @@ TEST_CASE("x_virtual: the virtual X stands still in MCS through a tolerance ball
       const std::string between = k.between;
       CAPTURE(first);
       CAPTURE(between);
-      const StaticRun r = run(program("3600", "20", word.c_str(), k.first, k.between), 50.0);
+      const StaticRun r = run(nc_program("3600", "20", word.c_str(), k.first, k.between), 50.0);
       REQUIRE(r.status == ipo::Status::finished);
       CHECK(r.source_error.empty());
       CHECK_FALSE(r.error);
@@ -133,7 +133,7 @@ TEST_CASE("x_virtual: a ball the axes cannot run at the belt's X velocity is NC9
   // to reduce conveyor velocity", l.621: the dynamic error). The blocks before it run.
   for (const std::string word : {"G261", "G61"}) {
     CAPTURE(word);
-    const StaticRun r = run(program("18000", "2", word.c_str(), "X-100 Y-100"), 100.0);
+    const StaticRun r = run(nc_program("18000", "2", word.c_str(), "X-100 Y-100"), 100.0);
     CHECK(r.source_error == "NC9100");
     CHECK(r.source_line == 5);
   }

@@ -16,27 +16,27 @@
 
 #include "channel/conveyor_tracking.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 double ConveyorTracking::sync_entry_velocity(std::span<const axes::MotionState> start,
                                              std::span<const double> target) noexcept {
-  sync_entry_ = SyncEntry{};
+  sync_entry_ = tracking::SyncEntry{};
   sync_u_ = sync_->catch_up_direction(start, target);
   if (!ipo_.prefill()) return 0.0;  // the source failed: the next step reports it
-  sync_entry_ = sync_entry(sync_->feed_cont_wanted(), sync_u_, ipo_.next_segment(),
-                           ipo_.next_entry_cap(), ipo_.axes(), ipo_.t_cycle());
+  sync_entry_ = tracking::sync_entry(sync_->feed_cont_wanted(), sync_u_, ipo_.next_segment(),
+                                     ipo_.next_entry_cap(), ipo_.axes(), ipo_.t_cycle());
   return sync_entry_.v;
 }
 
-EventOutcome ConveyorTracking::sync_hand_over(double lag, const ChannelEvent& e) noexcept {
+EventOutcome ConveyorTracking::sync_hand_over(double lag, const program::ChannelEvent& e) noexcept {
   const planner::PreparedSegment* first = ipo_.next_segment();
   if (first == nullptr) return EventOutcome::done;  // v_relative() > 0 only with a block ahead
   const double v = ipo_.start_moving(sync_->v_relative(), lag);
   // through the relay, which notes it for NC6210's jerk stencil.
   if (sink_ != nullptr || kin_.configured()) {
     try {
-      kin_.pass_joint(sync_entry_joint(sync_entry_, sync_u_, *first, v, ipo_.cycle().t + lag,
-                                       e.line, axes_.size()));
+      kin_.pass_joint(tracking::sync_entry_joint(sync_entry_, sync_u_, *first, v,
+                                                 ipo_.cycle().t + lag, e.line, axes_.size()));
     } catch (...) {
       std::abort();  // out of memory in the sink
     }
@@ -44,4 +44,4 @@ EventOutcome ConveyorTracking::sync_hand_over(double lag, const ChannelEvent& e)
   return EventOutcome::done;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

@@ -40,7 +40,7 @@ const char* const kProgram =
 struct After {
   ipo::Status status = ipo::Status::finished;
   std::vector<double> t, x, x_rel, v_path, vx;
-  std::optional<ipo::RunTimeError> error;
+  std::optional<channel::RunTimeError> error;
   std::string note;
   bool audit_ok = false;
   std::string audit_first;
@@ -49,22 +49,22 @@ struct After {
 After run(long belt_stop_at = 0) {
   machines::Machine m = interp::test::machine("laser_portal");
   m.channel.conveyor->workspace.upper[0] = 3000.0;
-  ipo::test::FakePort port(kBelt);
+  tracking::test::FakePort port(kBelt);
   port.latch_at_ = 1;
   if (belt_stop_at > 0) {
     port.v_change_at_ = belt_stop_at;
     port.v_new_ = 0.0;
   }
-  ipo::ChannelConfig cfg = ipo::channel_config(m, kT);
-  ipo::Audit audit(cfg.path.axes, kT, cfg.path.start);
-  ipo::test::ConveyorRig rig(kProgram, m, cfg, &port, &audit);
+  channel::ChannelConfig cfg = channel::channel_config(m, kT);
+  audit::Audit audit(cfg.path.axes, kT, cfg.path.start);
+  channel::test::ConveyorRig rig(kProgram, m, cfg, &port, &audit);
   audit.set_setpoints(&rig.ch.setpoints());
-  const ipo::Channel& ch = rig.ch;
+  const channel::Channel& ch = rig.ch;
   After r;
-  r.status = ipo::test::run_to_end(
+  r.status = channel::test::run_to_end(
       rig.ch,
       [&] {
-        const ipo::ConveyorSync& s = *ch.conveyor_sync();
+        const tracking::ConveyorSync& s = *ch.conveyor_sync();
         r.t.push_back(ch.cycle().t);
         r.x.push_back(ch.axes().command[0]);
         r.x_rel.push_back(ch.cycle().x[0]);
@@ -77,7 +77,7 @@ After run(long belt_stop_at = 0) {
   r.note = ch.after_error_note();
   r.audit_ok = audit.verdict().ok();
   if (!audit.verdict().violations.empty()) {
-    const ipo::Violation& v = audit.verdict().violations.front();
+    const audit::Violation& v = audit.verdict().violations.front();
     r.audit_first =
         std::to_string(v.t) + " " + std::to_string(v.value) + " > " + std::to_string(v.limit);
   }
@@ -152,17 +152,17 @@ TEST_CASE(
   // X could follow the belt. The belt steps from 100 to 400 mm/s (above 1.1 x CONV_VEL 300)
   // while the saw runs its line with the belt feed: 50653, and the run ends in that cycle.
   const machines::Machine m = interp::test::machine("static_saw");
-  ipo::test::FakePort port(100.0);
+  tracking::test::FakePort port(100.0);
   port.latch_at_ = 1;
   port.v_change_at_ = 3000;
   port.v_new_ = 400.0;
-  ipo::test::ConveyorRig rig(
+  channel::test::ConveyorRig rig(
       "%t\nN10 G0 X0 Y0 C0\nN20 #SYNC IN [CONV_VEL=18000]\nN30 G0 X0 Y0\nN40 G1 X-2000 Y0 F100\n"
       "N50 #SYNC OUT\nN60 M30\n",
-      m, ipo::channel_config(m, kT), &port);
+      m, channel::channel_config(m, kT), &port);
   std::vector<double> t;
   bool tracking_before = false;
-  const ipo::Status status = ipo::test::run_to_end(
+  const ipo::Status status = channel::test::run_to_end(
       rig.ch,
       [&] {
         t.push_back(rig.ch.cycle().t);
@@ -171,7 +171,7 @@ TEST_CASE(
       100'000);
   CHECK(tracking_before);  // the error comes while synchronised, on N40
   REQUIRE(status == ipo::Status::error);
-  const std::optional<ipo::RunTimeError> error = rig.ch.run_time_error();
+  const std::optional<channel::RunTimeError> error = rig.ch.run_time_error();
   REQUIRE(error);
   CHECK(error->id == "50653");
   CHECK(error->line == 5);

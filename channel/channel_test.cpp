@@ -21,30 +21,30 @@ namespace {
 
 using namespace ncsim;
 
-using ipo::test::Recorder;
+using channel::test::Recorder;
 
 struct Result {
   ipo::Status status = ipo::Status::finished;
-  std::vector<ipo::Cycle> cycles;    // what the sink saw
-  std::vector<ipo::AxesState> axes;  // after each reported cycle
-  std::optional<ipo::RunTimeError> error;
+  std::vector<ipo::Cycle> cycles;        // what the sink saw
+  std::vector<channel::AxesState> axes;  // after each reported cycle
+  std::optional<channel::RunTimeError> error;
   std::string source_error;
 };
 
-using Tweak = std::function<void(ipo::ChannelConfig&)>;
+using Tweak = std::function<void(channel::ChannelConfig&)>;
 
 Result run(const std::string& text, const Tweak& tweak = {},
            const std::string& machine = "portal_3x") {
   const core::SourceFile file("t.nc", text);
   const machines::Machine& m = interp::test::machine(machine);
   interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
-  ipo::ChannelConfig cfg = ipo::channel_config(m, 0.001);
+  program::ProgramSource src(in, m);
+  channel::ChannelConfig cfg = channel::channel_config(m, 0.001);
   if (tweak) tweak(cfg);
   Recorder rec;
-  ipo::Channel ch(std::move(cfg), src, &rec);
+  channel::Channel ch(std::move(cfg), src, &rec);
   Result r;
-  r.status = ipo::test::run_to_end(
+  r.status = channel::test::run_to_end(
       ch, [&] { r.axes.push_back(ch.axes()); }, 10'000'000);
   r.cycles = std::move(rec.cycles);
   r.error = ch.run_time_error();
@@ -72,7 +72,7 @@ TEST_CASE(
   double lag_max = 0.0;
   double lag_cruise = 1.0;
   for (std::size_t k = 0; k < r.cycles.size(); ++k) {
-    const ipo::AxesState& a = r.axes[k];
+    const channel::AxesState& a = r.axes[k];
     CHECK(a.command[0] == r.cycles[k].x[0]);  // identity mapping: the command is the path point
     CHECK(a.following_error[0] == doctest::Approx(a.command[0] - a.actual[0]).epsilon(1e-12));
     lag_max = std::max(lag_max, std::fabs(a.following_error[0]));
@@ -98,8 +98,8 @@ TEST_CASE("reruns are identical to the bit") {
 
 TEST_CASE("G60 waits until every moved axis's actual position is inside P-AXIS-00236, not longer") {
   // X window 0.05 mm (list); a low Kv leaves a lag the stop must wait out.
-  const Tweak slow = [](ipo::ChannelConfig& c) {
-    for (ipo::ChannelAxis& a : c.axes) {
+  const Tweak slow = [](channel::ChannelConfig& c) {
+    for (channel::ChannelAxis& a : c.axes) {
       a.control.kv = 5.0;
       a.monitor.exact_stop.settling_time = 2.0;  // P-AXIS-00532: time enough
     }
@@ -130,15 +130,15 @@ TEST_CASE("G60 waits until every moved axis's actual position is inside P-AXIS-0
   // A larger window: a shorter wait.
   const Result wide = run("N10 G60 G01 X100 F6000\nN20 G01 X120\nN30 M30\n", [&](auto& c) {
     slow(c);
-    for (ipo::ChannelAxis& a : c.axes)
+    for (channel::ChannelAxis& a : c.axes)
       a.monitor.exact_stop.window = 0.5;
   });
   CHECK(count(wide, ipo::Activity::exact_stop) < waits);
 }
 
 TEST_CASE("an exact stop already inside its window waits no cycle; G09 never waits") {
-  const Tweak wide = [](ipo::ChannelConfig& c) {
-    for (ipo::ChannelAxis& a : c.axes)
+  const Tweak wide = [](channel::ChannelConfig& c) {
+    for (channel::ChannelAxis& a : c.axes)
       a.monitor.exact_stop.window = 10.0;
   };
   CHECK(count(run("N10 G60 G01 X100 F6000\nN20 X120\nN30 M30\n", wide),
@@ -150,7 +150,7 @@ TEST_CASE(
     "P-ERR-70082: the window is not reached within P-AXIS-00532; the channel stops at the "
     "G60 block") {
   const Result r = run("N10 G01 X50 F3000\nN20 G60 X100\nN30 X120\nN40 M30\n", [](auto& c) {
-    for (ipo::ChannelAxis& a : c.axes) {
+    for (channel::ChannelAxis& a : c.axes) {
       a.control.kv = 5.0;
       a.monitor.exact_stop.window = 0.001;
       a.monitor.exact_stop.settling_time = 0.01;  // 10 ms
@@ -173,7 +173,7 @@ TEST_CASE(
 TEST_CASE("NC6101: without P-AXIS-00532 monitoring the wait ends at ncsim's limit") {
   const Result r = run("N10 G60 G01 X100 F6000\nN20 M30\n", [](auto& c) {
     c.exact_stop_wait_max = 0.05;
-    for (ipo::ChannelAxis& a : c.axes) {
+    for (channel::ChannelAxis& a : c.axes) {
       a.control.kv = 5.0;
       a.control.noise_amplitude = 0.01;  // the encoder noise keeps it out of a 1 um window
       a.monitor.exact_stop.window = 0.001;
@@ -181,7 +181,7 @@ TEST_CASE("NC6101: without P-AXIS-00532 monitoring the wait ends at ncsim's limi
     }
   });
   REQUIRE(r.error);
-  CHECK(r.error->id == ipo::kExactStopWaitId);
+  CHECK(r.error->id == channel::kExactStopWaitId);
   CHECK(r.error->line == 1);
   CHECK(count(r, ipo::Activity::exact_stop) == 50);
 }
@@ -205,7 +205,7 @@ TEST_CASE(
 
 TEST_CASE("0x4550: position lag above its maximum for longer than the filter time") {
   const Result r = run("N10 G01 X200 F30000\nN20 M30\n", [](auto& c) {
-    for (ipo::ChannelAxis& a : c.axes) {
+    for (channel::ChannelAxis& a : c.axes) {
       a.monitor.lag.max_lag = 0.01;
       a.monitor.lag.filter_time = 0.005;
     }
@@ -215,7 +215,7 @@ TEST_CASE("0x4550: position lag above its maximum for longer than the filter tim
   CHECK(r.error->line == 1);
   // The 6th cycle above 0.01 mm raises it (filter 5 ms at 1 ms); the five before are reported.
   std::size_t above = 0;
-  for (const ipo::AxesState& a : r.axes)
+  for (const channel::AxesState& a : r.axes)
     above = std::fabs(a.following_error[0]) > 0.01 ? above + 1 : 0;
   CHECK(above == 5);
 }

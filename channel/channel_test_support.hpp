@@ -22,24 +22,24 @@
 #include "machines/machine.hpp"
 #include "program/program_source.hpp"
 
-namespace ncsim::ipo::test {
+namespace ncsim::channel::test {
 
 /// Records what a channel's sink receives: every cycle, and how many joint reports.
-struct Recorder final : Sink {
-  std::vector<Cycle> cycles;
+struct Recorder final : ipo::Sink {
+  std::vector<ipo::Cycle> cycles;
   std::size_t joints = 0;
-  void on_joint(const Joint&) override { ++joints; }
-  void on_cycle(const Cycle& c) override { cycles.push_back(c); }
+  void on_joint(const ipo::Joint&) override { ++joints; }
+  void on_cycle(const ipo::Cycle& c) override { cycles.push_back(c); }
 };
 
 /// The audit and a recorder behind one sink, as the CLI wires them: the audit sees the joints
 /// and the cycles, the recorder the cycles.
-struct AuditedRecorder final : Sink {
-  Audit* audit;
+struct AuditedRecorder final : ipo::Sink {
+  audit::Audit* audit;
   Recorder* rec;
-  AuditedRecorder(Audit* a, Recorder* r) : audit(a), rec(r) {}
-  void on_joint(const Joint& j) override { audit->on_joint(j); }
-  void on_cycle(const Cycle& c) override {
+  AuditedRecorder(audit::Audit* a, Recorder* r) : audit(a), rec(r) {}
+  void on_joint(const ipo::Joint& j) override { audit->on_joint(j); }
+  void on_cycle(const ipo::Cycle& c) override {
     audit->on_cycle(c);
     rec->on_cycle(c);
   }
@@ -47,12 +47,12 @@ struct AuditedRecorder final : Sink {
 
 /// Steps `ch` until it stops running (at most `guard` steps); `after_step` runs after each
 /// step that left it running. Returns the last status.
-inline Status run_to_end(Channel& ch, const std::function<void()>& after_step = {},
-                         int guard = 1'000'000) {
-  Status status = Status::finished;
+inline ipo::Status run_to_end(Channel& ch, const std::function<void()>& after_step = {},
+                              int guard = 1'000'000) {
+  ipo::Status status = ipo::Status::finished;
   for (int k = 0; k < guard; ++k) {
     status = ch.step();
-    if (status != Status::running) break;
+    if (status != ipo::Status::running) break;
     if (after_step) after_step();
   }
   return status;
@@ -60,14 +60,14 @@ inline Status run_to_end(Channel& ch, const std::function<void()>& after_step = 
 
 /// What a test reads back from an audited run: the end, every cycle, the error, the verdict.
 struct AuditedRun {
-  Status status = Status::finished;
-  std::vector<Cycle> cycles;
+  ipo::Status status = ipo::Status::finished;
+  std::vector<ipo::Cycle> cycles;
   std::optional<RunTimeError> error;
-  Verdict verdict;
+  audit::Verdict verdict;
 };
 
 /// Steps `ch` to its end (run_to_end) and collects what `rec` recorded and `audit` judged.
-inline AuditedRun finish(Channel& ch, Recorder& rec, const Audit& audit) {
+inline AuditedRun finish(Channel& ch, Recorder& rec, const audit::Audit& audit) {
   AuditedRun r;
   r.status = run_to_end(ch);
   r.cycles = std::move(rec.cycles);
@@ -82,13 +82,13 @@ inline AuditedRun finish(Channel& ch, Recorder& rec, const Audit& audit) {
 struct ConveyorRig {
   core::SourceFile file;
   interp::Interpreter in;
-  ProgramSource src;
+  program::ProgramSource src;
   Channel ch;
   ConveyorRig(const std::string& text, const machines::Machine& m, ChannelConfig config,
-              conveyor::Port* port, Sink* sink = nullptr)
+              conveyor::Port* port, ipo::Sink* sink = nullptr)
       : file("t.nc", text),
         in(file, m),
-        src(in, m, SourceConfig{.t_cycle = config.path.channel.t_cycle}),
+        src(in, m, program::SourceConfig{.t_cycle = config.path.channel.t_cycle}),
         ch(std::move(config), src, sink) {
     ch.attach_conveyor(port);
   }
@@ -97,7 +97,7 @@ struct ConveyorRig {
 /// A ConveyorRig audited on its setpoints as `ncsim time --audit` does (the audit and a
 /// recorder behind one sink). After run_to_end(rig.ch), `audit.verdict()` judges the run.
 struct AuditedConveyorRig {
-  Audit audit;
+  audit::Audit audit;
   Recorder rec;
   AuditedRecorder tee;
   ConveyorRig rig;
@@ -111,8 +111,8 @@ struct AuditedConveyorRig {
 };
 
 /// Prints `verdict`'s violations as test messages (they say where a failing check went wrong).
-inline void message_violations(const Verdict& verdict) {
-  for (const Violation& v : verdict.violations)
+inline void message_violations(const audit::Verdict& verdict) {
+  for (const audit::Violation& v : verdict.violations)
     MESSAGE("audit: axis " << int(v.axis) << " t " << v.t << " value " << v.value << " limit "
                            << v.limit);
 }
@@ -120,7 +120,7 @@ inline void message_violations(const Verdict& verdict) {
 /// What a program run on a conveyor channel gave: the axes after every cycle that left the
 /// channel running, how it ended, and the adapter's (ProgramSource's) error if it had one.
 struct ConveyorRun {
-  Status status = Status::finished;
+  ipo::Status status = ipo::Status::finished;
   std::vector<AxesState> axes;
   std::optional<RunTimeError> error;
   std::string source_error;  ///< the adapter's error id ("" none)
@@ -145,4 +145,4 @@ inline ConveyorRun run_conveyor(const std::string& program, const machines::Mach
   return r;
 }
 
-}  // namespace ncsim::ipo::test
+}  // namespace ncsim::channel::test

@@ -14,7 +14,7 @@
 #include "interp/command.hpp"
 #include "ipo/interpolator.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 /// NC6101: the exact-stop window P-AXIS-00236 was not reached within
 /// ChannelConfig::exact_stop_wait_max while P-AXIS-00532 does not monitor the time.
@@ -80,17 +80,14 @@ struct RunTimeError {
 
 /// The axes after a cycle.
 struct AxesState {
-  AxisVec command{};          ///< set positions [mm | deg] (the mapped path point)
-  AxisVec actual{};           ///< measured actual positions [mm | deg]
-  AxisVec following_error{};  ///< set - actual [mm | deg] (000 7.1.5)
+  planner::AxisVec command{};          ///< set positions [mm | deg] (the mapped path point)
+  planner::AxisVec actual{};           ///< measured actual positions [mm | deg]
+  planner::AxisVec following_error{};  ///< set - actual [mm | deg] (000 7.1.5)
 };
-
-/// A message part with two numbers (`%.6g`-style `format`), as the run-time errors write them.
-std::string format_text(const char* format, double a, double b);
 
 /// Records the run-time error `id` with `message` at cycle `c`'s line, file and time into
 /// `error` (`axis`: the interpolated axis, -1: none). Never throws.
-void raise(std::optional<RunTimeError>& error, const char* id, std::string message, const Cycle& c,
-           int axis) noexcept;
+void raise(std::optional<RunTimeError>& error, const char* id, std::string message,
+           const ipo::Cycle& c, int axis) noexcept;
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

@@ -9,18 +9,18 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <utility>
 
 #include "channel/conveyor_tracking.hpp"
+#include "core/number_text.hpp"
 #include "core/tolerance.hpp"
 #include "tracking/sync_checks.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
-bool ConveyorTracking::world_step(const Cycle& c, scenario::Player* player) noexcept {
+bool ConveyorTracking::world_step(const ipo::Cycle& c, scenario::Player* player) noexcept {
   if (!sync_) return true;
   if (auto e = sync_->step(c.t)) {
     raise(error_, e->id.c_str(), std::move(e->message), c, -1);
@@ -42,16 +42,17 @@ bool ConveyorTracking::world_step(const Cycle& c, scenario::Player* player) noex
   return true;
 }
 
-bool ConveyorTracking::workspace(const Cycle& c) noexcept {
+bool ConveyorTracking::workspace(const ipo::Cycle& c) noexcept {
   if (!sync_) return true;
   return check_workspace(c) && workspace_cap(c);
 }
 
-bool ConveyorTracking::workspace_cap(const Cycle& c) noexcept {
-  HoldState st;
-  std::array<HoldEntry, kHoldAhead> ahead{};  // the look-ahead window's next entries
+bool ConveyorTracking::workspace_cap(const ipo::Cycle& c) noexcept {
+  tracking::HoldState st;
+  std::array<tracking::HoldEntry, tracking::kHoldAhead>
+      ahead{};  // the look-ahead window's next entries
   const planner::PlannedSegment* e = ipo_.active_entry();
-  if (c.activity == Activity::motion && e != nullptr && c.programmed != nullptr) {
+  if (c.activity == ipo::Activity::motion && e != nullptr && c.programmed != nullptr) {
     st.path = &e->segment.path;
     st.s = c.path.s;
     st.v = c.path.v;
@@ -64,8 +65,8 @@ bool ConveyorTracking::workspace_cap(const Cycle& c) noexcept {
     for (std::size_t k = 0; k < ahead.size(); ++k) {
       const planner::PreparedSegment* next = ipo_.queued_entry(k);
       if (next == nullptr) break;
-      ahead[k] = HoldEntry{&next->path, next->limits.v_programmed,
-                           next->stop != planner::StopReason::none};
+      ahead[k] = tracking::HoldEntry{&next->path, next->limits.v_programmed,
+                                     next->stop != planner::StopReason::none};
       st.ahead_count = k + 1;
     }
     st.ahead = ahead.data();
@@ -76,17 +77,16 @@ bool ConveyorTracking::workspace_cap(const Cycle& c) noexcept {
   // A belt that stops while the hold caps the path: the cap follows it to 0 and the tool waits
   // with the belt (it stands in MCS and on the workpiece); the belt's restart releases it. A
   // belt that never restarts ends the run after ncsim's wait limit with NC9081.
-  const WorkspaceHold* h = sync_->hold();
+  const tracking::WorkspaceHold* h = sync_->hold();
   if (h != nullptr && h->capped() && cap == 0.0 && c.path.v == 0.0) {
     if (++hold_stood_ > measure_wait_cycles_max_) {
-      char buf[256];
-      std::snprintf(buf, sizeof buf,
-                    "the belt stood for %.6g s (ncsim's limit) while the workspace hold "
-                    "(P-AXIS-00555, hold_limit_vel_factor P-CHAN-00366) kept the tool at the "
-                    "hold line %.6g mm: the belt was not restarted",
-                    measured_value_wait_max_, h->config().line);
       try {
-        raise(error_, kHoldBeltStoodId, buf, c, -1);
+        raise(error_, kHoldBeltStoodId,
+              "the belt stood for " + core::human(measured_value_wait_max_) +
+                  " s (ncsim's limit) while the workspace hold (P-AXIS-00555, "
+                  "hold_limit_vel_factor P-CHAN-00366) kept the tool at the hold line " +
+                  core::human(h->config().line) + " mm: the belt was not restarted",
+              c, -1);
       } catch (...) {
         std::abort();
       }
@@ -109,11 +109,11 @@ bool ConveyorTracking::workspace_cap(const Cycle& c) noexcept {
 // r^2 / (2 j) behind, so the belt is forecast r / (2 j) ahead with its acceleration (as the
 // static unit's cap, channel_static.cpp). The belt's own deceleration beyond the path's d_max
 // cannot be followed: the residual the tests measure.
-void ConveyorTracking::sync_belt_cap(const Cycle& c) noexcept {
+void ConveyorTracking::sync_belt_cap(const ipo::Cycle& c) noexcept {
   constexpr double kSlack = kRelTol;   // [1] a cap within this of the segment's limit is none
   constexpr double kLeadMax = 0.05;    // [s] longest forecast
   constexpr double kCycleShare = 0.5;  // [1] the cap acts on the whole next cycle: its middle
-  if (static_unit_ || sync_->phase() != SyncPhase::tracking) return;
+  if (static_unit_ || sync_->phase() != tracking::SyncPhase::tracking) return;
   // Every block fits a belt between CONV_VEL (a line against it was planned for that) and
   // 1.10 CONV_VEL (the symmetric split's, 50653's bound): with the belt there over the longest
   // forecast, no cap can bind and the path is not evaluated (the per-cycle common case).
@@ -121,11 +121,11 @@ void ConveyorTracking::sync_belt_cap(const Cycle& c) noexcept {
   const double du = std::fabs(sync_->belt_acceleration()) * kLeadMax;
   const double conv_vel = sync_->conv_vel();
   // (A belt at CONV_VEL measured a rounding below it caps nothing either: kSlack below.)
-  if (u - du >= conv_vel * (1.0 - kBeltVelocityRounding) &&
-      u + du <= kBeltVelocityTolerance * conv_vel)
+  if (u - du >= conv_vel * (1.0 - tracking::kBeltVelocityRounding) &&
+      u + du <= tracking::kBeltVelocityTolerance * conv_vel)
     return;
   const planner::PlannedSegment* e = ipo_.active_entry();
-  if (c.activity != Activity::motion || e == nullptr || c.programmed == nullptr ||
+  if (c.activity != ipo::Activity::motion || e == nullptr || c.programmed == nullptr ||
       c.programmed->transformed)
     return;
   const planner::Chain& path = e->segment.path;
@@ -179,8 +179,8 @@ void ConveyorTracking::sync_belt_cap(const Cycle& c) noexcept {
 }
 
 bool ConveyorTracking::hold_waits() const noexcept {
-  const WorkspaceHold* h = sync_ ? sync_->hold() : nullptr;
+  const tracking::WorkspaceHold* h = sync_ ? sync_->hold() : nullptr;
   return h != nullptr && h->capped() && h->cap() == 0.0;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

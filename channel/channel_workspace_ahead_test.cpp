@@ -26,7 +26,7 @@ constexpr double kBelt = 100.0;  // [mm/s], CONV_VEL 6000 mm/min
 
 struct Run {
   ipo::Status status = ipo::Status::finished;
-  std::optional<ipo::RunTimeError> error;
+  std::optional<channel::RunTimeError> error;
   double min_x = 1e9;      // the TCP's minimum MCS X while the -X run is active [mm]
   long run_end = -1;       // first cycle of the block after the run
   double v_max_run = 0.0;  // highest path velocity in the run [mm/s]
@@ -40,15 +40,15 @@ Run run(const std::string& program, bool optimised, double factor, std::uint32_t
   machines::Machine m = interp::test::machine("laser_portal");
   m.channel.conveyor->optimised_monitoring = optimised;
   m.channel.conveyor->hold_limit_vel_factor = factor;
-  ipo::test::FakePort port(kBelt);
+  tracking::test::FakePort port(kBelt);
   port.latch_at_ = 1;
-  ipo::ChannelConfig cfg = ipo::channel_config(m, kT);
-  ipo::Audit audit(cfg.path.axes, kT, cfg.path.start);
-  ipo::test::ConveyorRig rig(program, m, cfg, &port, &audit);
+  channel::ChannelConfig cfg = channel::channel_config(m, kT);
+  audit::Audit audit(cfg.path.axes, kT, cfg.path.start);
+  channel::test::ConveyorRig rig(program, m, cfg, &port, &audit);
   audit.set_setpoints(&rig.ch.setpoints());
-  const ipo::Channel& ch = rig.ch;
+  const channel::Channel& ch = rig.ch;
   Run r;
-  r.status = ipo::test::run_to_end(
+  r.status = channel::test::run_to_end(
       rig.ch,
       [&] {
         const std::uint32_t line = ch.cycle().line;
@@ -62,7 +62,7 @@ Run run(const std::string& program, bool optimised, double factor, std::uint32_t
   r.error = ch.run_time_error();
   r.audit_ok = audit.verdict().ok();
   if (!audit.verdict().violations.empty()) {
-    const ipo::Violation& v = audit.verdict().violations.front();
+    const audit::Violation& v = audit.verdict().violations.front();
     r.audit_first =
         std::to_string(v.t) + " " + std::to_string(v.value) + " > " + std::to_string(v.limit);
   }

@@ -32,7 +32,7 @@ struct Held {
   std::vector<double> x_rel;  // X in PCS1 (command - offset)
   std::vector<double> v_rel;  // path velocity [mm/s]
   std::vector<double> cap;    // the interpolator's cap [mm/s]
-  std::optional<ipo::RunTimeError> error;
+  std::optional<channel::RunTimeError> error;
   double min_x() const { return *std::min_element(x.begin(), x.end()); }
 };
 
@@ -40,15 +40,15 @@ Held run(const std::string& program, bool optimised, double factor) {
   machines::Machine m = interp::test::machine("laser_portal");
   m.channel.conveyor->optimised_monitoring = optimised;
   m.channel.conveyor->hold_limit_vel_factor = factor;
-  ipo::test::FakePort port(kBelt);
+  tracking::test::FakePort port(kBelt);
   port.latch_at_ = 1;
-  ipo::test::ConveyorRig rig(program, m, ipo::channel_config(m, kT), &port);
-  const ipo::Channel& ch = rig.ch;
+  channel::test::ConveyorRig rig(program, m, channel::channel_config(m, kT), &port);
+  const channel::Channel& ch = rig.ch;
   Held r;
-  r.status = ipo::test::run_to_end(
+  r.status = channel::test::run_to_end(
       rig.ch,
       [&] {
-        const ipo::ConveyorSync& s = *ch.conveyor_sync();
+        const tracking::ConveyorSync& s = *ch.conveyor_sync();
         r.line.push_back(ch.cycle().line);
         r.x.push_back(ch.axes().command[0]);
         r.x_rel.push_back(ch.axes().command[0] - s.offset(0));
@@ -176,7 +176,7 @@ namespace {
 struct Slowed {
   ipo::Status status = ipo::Status::finished;
   double min_x = 0.0;
-  std::optional<ipo::RunTimeError> error;
+  std::optional<channel::RunTimeError> error;
 };
 
 // kLine, optimised, factor 1000; the belt drops from 100 to 50 mm/s at 3 s, while the tool
@@ -186,14 +186,14 @@ Slowed slowed(double tolerance) {
   m.channel.conveyor->optimised_monitoring = true;
   m.channel.conveyor->hold_limit_vel_factor = 1.0;
   m.channel.conveyor->hold_limit_tolerance = tolerance;
-  ipo::test::FakePort port(kBelt);
+  tracking::test::FakePort port(kBelt);
   port.latch_at_ = 1;
   port.v_change_at_ = 3000;
   port.v_new_ = 50.0;
-  ipo::test::ConveyorRig rig(kLine, m, ipo::channel_config(m, kT), &port);
-  const ipo::Channel& ch = rig.ch;
+  channel::test::ConveyorRig rig(kLine, m, channel::channel_config(m, kT), &port);
+  const channel::Channel& ch = rig.ch;
   Slowed r;
-  r.status = ipo::test::run_to_end(
+  r.status = channel::test::run_to_end(
       rig.ch,
       [&] {
         if (ch.cycle().line == 4) r.min_x = std::min(r.min_x, ch.axes().command[0]);
@@ -225,7 +225,7 @@ namespace {
 
 struct BeltStop {
   ipo::Status status = ipo::Status::finished;
-  std::optional<ipo::RunTimeError> error;
+  std::optional<channel::RunTimeError> error;
   double x_at_stop = 0.0, x_max_stopped = -1e9, x_min_stopped = 1e9, min_x = 1e9;
 };
 
@@ -235,7 +235,7 @@ BeltStop belt_stop(long restart, double wait_max) {
   machines::Machine m = interp::test::machine("laser_portal");
   m.channel.conveyor->optimised_monitoring = true;
   m.channel.conveyor->hold_limit_vel_factor = 1.0;
-  ipo::test::FakePort port(kBelt);
+  tracking::test::FakePort port(kBelt);
   port.latch_at_ = 1;
   port.v_change_at_ = 3000;
   port.v_new_ = 0.0;
@@ -243,12 +243,12 @@ BeltStop belt_stop(long restart, double wait_max) {
     port.v_change2_at_ = restart;
     port.v_new2_ = kBelt;
   }
-  ipo::ChannelConfig cfg = ipo::channel_config(m, kT);
+  channel::ChannelConfig cfg = channel::channel_config(m, kT);
   cfg.measured_value_wait_max = wait_max;
-  ipo::test::ConveyorRig rig(kLine, m, cfg, &port);
-  const ipo::Channel& ch = rig.ch;
+  channel::test::ConveyorRig rig(kLine, m, cfg, &port);
+  const channel::Channel& ch = rig.ch;
   BeltStop r;
-  r.status = ipo::test::run_to_end(
+  r.status = channel::test::run_to_end(
       rig.ch,
       [&] {
         const double x = ch.axes().command[0];

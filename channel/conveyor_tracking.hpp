@@ -31,15 +31,16 @@
 #include "tracking/sync_entry.hpp"
 #include "tracking/sync_error.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 class ConveyorTracking {
  public:
   /// The references are the channel's own parts and must outlive this one. Throws
   /// std::invalid_argument unless `measured_value_wait_max` [s] > 0.
-  ConveyorTracking(std::optional<ConveyorSync>& sync, PathInterpolator& ipo, AxisStage& axes,
-                   IndpStage& indp, KinematicStage& kin, const SyncErrorStop& after,
-                   std::optional<RunTimeError>& error, Sink* sink, double measured_value_wait_max,
+  ConveyorTracking(std::optional<tracking::ConveyorSync>& sync, ipo::PathInterpolator& ipo,
+                   AxisStage& axes, IndpStage& indp, KinematicStage& kin,
+                   const tracking::SyncErrorStop& after, std::optional<RunTimeError>& error,
+                   ipo::Sink* sink, double measured_value_wait_max,
                    std::optional<machines::ConveyorAxisParams> conveyor_axis);
   ConveyorTracking(const ConveyorTracking&) = delete;
   ConveyorTracking& operator=(const ConveyorTracking&) = delete;
@@ -49,23 +50,26 @@ class ConveyorTracking {
   void set_static_unit(bool on) noexcept { static_unit_ = on; }
   /// The channel moves with the conveyor (catch-up or PCS1 tracking).
   bool tracking() const noexcept {
-    return sync_ &&
-           (sync_->phase() == SyncPhase::catching_up || sync_->phase() == SyncPhase::tracking);
+    return sync_ && (sync_->phase() == tracking::SyncPhase::catching_up ||
+                     sync_->phase() == tracking::SyncPhase::tracking);
   }
   /// Where the path stands after a catch-up / departure until its next block moves.
-  std::optional<AxisVec>& hold() noexcept { return sync_hold_; }
+  std::optional<planner::AxisVec>& hold() noexcept { return sync_hold_; }
 
   // The conveyor events (channel_conveyor.cpp, channel_sync_entry.cpp).
-  EventOutcome on_sync_in(const interp::SyncIn& command, const ChannelEvent& e) noexcept;
-  EventOutcome on_sync_out(const interp::SyncOut& command, const ChannelEvent& e) noexcept;
+  EventOutcome on_sync_in(const interp::SyncIn& command, const program::ChannelEvent& e) noexcept;
+  EventOutcome on_sync_out(const interp::SyncOut& command, const program::ChannelEvent& e) noexcept;
   /// The catch-up after #SYNC IN / the departure after #SYNC OUT (ProgramSource::sync_motion).
-  EventOutcome on_sync_motion(const interp::Motion& motion, const ChannelEvent& e) noexcept;
-  EventOutcome on_probe_arm(const interp::ProbeArm& command, const ChannelEvent& e) noexcept;
+  EventOutcome on_sync_motion(const interp::Motion& motion,
+                              const program::ChannelEvent& e) noexcept;
+  EventOutcome on_probe_arm(const interp::ProbeArm& command,
+                            const program::ChannelEvent& e) noexcept;
   EventOutcome on_move_velocity(const interp::MoveVelocity& command,
-                                const ChannelEvent& e) noexcept;
+                                const program::ChannelEvent& e) noexcept;
   /// `#MACHINE DATA` on the conveyor axis's filters and delay time (program/machine_data.hpp):
   /// passed to the Port with the path standing (isg-language.md §5.10).
-  EventOutcome on_machine_data(const interp::MachineData& command, const ChannelEvent& e) noexcept;
+  EventOutcome on_machine_data(const interp::MachineData& command,
+                               const program::ChannelEvent& e) noexcept;
 
   // Per cycle (channel_workspace.cpp, channel_static.cpp); each does nothing without a
   // ConveyorSync.
@@ -76,51 +80,51 @@ class ConveyorTracking {
   /// The conveyor world's cycle at cycle `c` (latch, 50653, the Port's errors), and the V.E.
   /// values of a workpiece just measured into `player`'s store (null: none), where the next
   /// barrier reads them (docs/conveyor.md "Wiring"). False: a run-time error raised.
-  bool world_step(const Cycle& c, scenario::Player* player) noexcept;
+  bool world_step(const ipo::Cycle& c, scenario::Player* player) noexcept;
   /// After the mapping: the conveyor workspace on the cycle's MCS setpoints while synchronised,
   /// then the hold against the conveying direction (its path velocity cap for the next cycle).
   /// False: a run-time error raised (the workspace's, NC9081).
-  bool workspace(const Cycle& c) noexcept;
+  bool workspace(const ipo::Cycle& c) noexcept;
   /// The hold caps the path at 0 (the belt stands): the tool waits for the belt, not for the
   /// operator (no NC6301).
   bool hold_waits() const noexcept;
 
  private:
   /// The conveyor workspace on the cycle's MCS setpoints while synchronised; false: stopped.
-  bool check_workspace(const Cycle& c) noexcept;
+  bool check_workspace(const ipo::Cycle& c) noexcept;
   /// Gives the interpolator the hold's path velocity cap; false: NC9081 (the belt stood under
   /// the hold longer than ncsim's wait limit).
-  bool workspace_cap(const Cycle& c) noexcept;
+  bool workspace_cap(const ipo::Cycle& c) noexcept;
   /// The relative velocity the catch-up from `start` to `target` meets its target with: the
   /// #SYNC IN's, reduced to what the path's first block allows (tracking/sync_entry); 0: at rest.
   double sync_entry_velocity(std::span<const axes::MotionState> start,
                              std::span<const double> target) noexcept;
   /// The catch-up meets its target `lag` [s] into this cycle: the path starts there, moving.
-  EventOutcome sync_hand_over(double lag, const ChannelEvent& e) noexcept;
+  EventOutcome sync_hand_over(double lag, const program::ChannelEvent& e) noexcept;
   /// After a command the Port took (MC_TouchProbe, MC_MoveVelocity): a refusal it raised
   /// (P-ERR-44009 retrigger, 44001, 44011, 44012 of seed 004 §6.3.1; NC9003; NC9005 above the
   /// conveyor axis's P-AXIS-00212) is that block's error, at its line and cycle, not the next
   /// cycle's step's at the block after it.
-  EventOutcome port_outcome(const ChannelEvent& e) noexcept;
+  EventOutcome port_outcome(const program::ChannelEvent& e) noexcept;
   /// Lowers the hold's cap where a belt slower than CONV_VEL would take an axis of a block
   /// planned against the belt (v_max + CONV_VEL) above its v_max.
-  void sync_belt_cap(const Cycle& c) noexcept;
+  void sync_belt_cap(const ipo::Cycle& c) noexcept;
   double t_cycle() const noexcept { return ipo_.t_cycle(); }  ///< [s]
 
-  std::optional<ConveyorSync>& sync_;
-  PathInterpolator& ipo_;
+  std::optional<tracking::ConveyorSync>& sync_;
+  ipo::PathInterpolator& ipo_;
   AxisStage& axes_;
   IndpStage& indp_;
   KinematicStage& kin_;
-  const SyncErrorStop& after_;  ///< the axes' limits (v_max) of the after-error stop
+  const tracking::SyncErrorStop& after_;  ///< the axes' limits (v_max) of the after-error stop
   std::optional<RunTimeError>& error_;
-  Sink* sink_;
+  ipo::Sink* sink_;
   double measured_value_wait_max_;             ///< ChannelConfig::measured_value_wait_max [s]
   std::uint64_t measure_wait_cycles_max_ = 0;  ///< the same in cycles
   std::uint64_t measure_waited_ = 0;           ///< cycles #SYNC IN waited so far
   std::uint32_t sync_tag_ = 0;                 ///< the event being executed
-  std::optional<AxisVec> sync_hold_;           ///< see hold()
-  SyncEntry sync_entry_{};                     ///< the hand-over decided at the catch-up's start
+  std::optional<planner::AxisVec> sync_hold_;  ///< see hold()
+  tracking::SyncEntry sync_entry_{};           ///< the hand-over decided at the catch-up's start
   planner::AxisVec sync_u_{};                  ///< the catch-up's direction (FEED_CONT's) [1]
   std::optional<machines::ConveyorAxisParams> conveyor_axis_;  ///< as changed so far
   bool static_unit_ = false;                                   ///< P-CHAN-00364 x_virtual
@@ -129,4 +133,4 @@ class ConveyorTracking {
   std::uint64_t ve_workpiece_ = 0;  ///< the measured workpiece whose V.E. values were written
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

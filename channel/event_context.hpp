@@ -13,7 +13,7 @@
 #include "ipo/interpolator.hpp"
 #include "program/channel_event.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 /// What executing a channel event gave.
 enum class EventOutcome : std::uint8_t {
@@ -24,15 +24,15 @@ enum class EventOutcome : std::uint8_t {
 
 class EventContext {
  public:
-  EventContext(const ChannelEvent& event, const PathInterpolator& ipo,
+  EventContext(const program::ChannelEvent& event, const ipo::PathInterpolator& ipo,
                std::optional<RunTimeError>& error) noexcept
       : event_(event), ipo_(ipo), error_(error) {}
-  const ChannelEvent& event() const noexcept { return event_; }
+  const program::ChannelEvent& event() const noexcept { return event_; }
   /// [s] the start of the cycle being computed (the end of the last one).
   double t() const noexcept { return static_cast<double>(ipo_.cycle().index) * ipo_.t_cycle(); }
   /// Raises run-time error `id` at the event's line, at t(); EventOutcome::error.
   EventOutcome fail(const char* id, std::string message) const noexcept {
-    Cycle at = ipo_.cycle();
+    ipo::Cycle at = ipo_.cycle();
     at.line = event_.line;
     at.file = event_.file;
     at.t = t();
@@ -41,9 +41,9 @@ class EventContext {
   }
 
  private:
-  const ChannelEvent& event_;
-  const PathInterpolator& ipo_;
+  const program::ChannelEvent& event_;
+  const ipo::PathInterpolator& ipo_;
   std::optional<RunTimeError>& error_;
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

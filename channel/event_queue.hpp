@@ -20,14 +20,14 @@
 #include "ipo/interpolator.hpp"
 #include "program/channel_event.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 class EventQueue {
  public:
   /// An event is blocked (kept until it is done).
   bool blocked() const noexcept { return blocked_.has_value(); }
   /// The path reached `wait`: its tag and whether it is before a synchronisation.
-  void at_wait(const ChannelWait& wait) noexcept {
+  void at_wait(const ipo::ChannelWait& wait) noexcept {
     wait_tag_ = wait.tag;
     wait_interruptible_ = wait.interruptible;
   }
@@ -38,7 +38,7 @@ class EventQueue {
   /// when one blocks (kept) or raised an error. `dispatch(const ChannelEvent&)` gives an
   /// EventOutcome.
   template <class Dispatch>
-  bool run(Source& source, std::uint32_t up_to, Dispatch&& dispatch) noexcept {
+  bool run(ipo::Source& source, std::uint32_t up_to, Dispatch&& dispatch) noexcept {
     if (blocked_) {
       const EventOutcome o = dispatch(*blocked_);
       if (o != EventOutcome::done) return false;
@@ -60,10 +60,11 @@ class EventQueue {
   }
 
  private:
-  std::optional<ChannelEvent> blocked_;  ///< an event not done yet (EventOutcome::blocking)
-  std::uint32_t wait_tag_ = 0;           ///< tag of the ChannelWait the path holds at
-  bool wait_interruptible_ = false;      ///< ChannelWait::interruptible of that wait
-  ChannelEvent event_;                   ///< scratch: the event being taken
+  std::optional<program::ChannelEvent>
+      blocked_;                      ///< an event not done yet (EventOutcome::blocking)
+  std::uint32_t wait_tag_ = 0;       ///< tag of the ChannelWait the path holds at
+  bool wait_interruptible_ = false;  ///< ChannelWait::interruptible of that wait
+  program::ChannelEvent event_;      ///< scratch: the event being taken
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

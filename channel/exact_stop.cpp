@@ -6,20 +6,21 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/number_text.hpp"
 #include "core/tolerance.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 ExactStopWait::ExactStopWait(double wait_max, double t_cycle)
     : wait_max_(wait_max), t_cycle_(t_cycle) {
   if (!(wait_max_ > 0.0))
-    throw std::invalid_argument("ipo::Channel: exact_stop_wait_max must be > 0 s, got " +
+    throw std::invalid_argument("channel::Channel: exact_stop_wait_max must be > 0 s, got " +
                                 std::to_string(wait_max_));
   // Same rounding as every wait (docs/ipo.md): the limit in whole cycles, never shorter.
   wait_cycles_max_ = static_cast<std::uint64_t>(std::ceil(wait_max_ / t_cycle_ - kCycleRounding));
 }
 
-void ExactStopWait::begin(const Cycle& c, std::span<const axes::Setpoint> setpoints,
+void ExactStopWait::begin(const ipo::Cycle& c, std::span<const axes::Setpoint> setpoints,
                           bool transformed) noexcept {
   active_ = true;
   waited_ = 0;
@@ -36,7 +37,7 @@ void ExactStopWait::begin(const Cycle& c, std::span<const axes::Setpoint> setpoi
   }
 }
 
-bool ExactStopWait::check(const Cycle& c, const AxisStage& axes, bool& release,
+bool ExactStopWait::check(const ipo::Cycle& c, const AxisStage& axes, bool& release,
                           std::optional<RunTimeError>& error) noexcept {
   bool all_in = true;
   for (std::size_t i = 0; i < axes.size(); ++i)
@@ -46,7 +47,7 @@ bool ExactStopWait::check(const Cycle& c, const AxisStage& axes, bool& release,
     active_ = false;
     return true;
   }
-  if (c.activity == Activity::exact_stop) ++waited_;  // the stop cycle itself counts 0
+  if (c.activity == ipo::Activity::exact_stop) ++waited_;  // the stop cycle itself counts 0
   if (waited_ <= wait_cycles_max_) return true;
   int worst = 0;
   double worst_d = -1.0;
@@ -59,15 +60,13 @@ bool ExactStopWait::check(const Cycle& c, const AxisStage& axes, bool& release,
   }
   const ChannelAxis& w = axes.config(static_cast<std::size_t>(worst));
   raise(error, kExactStopWaitId,
-        "axis " + w.name +
-            format_text(": exact stop window P-AXIS-00236 (%.6g mm) not reached, %.6g mm from the "
-                        "target",
-                        w.monitor.exact_stop.window, worst_d) +
-            format_text(
-                " after %.6g s (P-AXIS-00532 does not monitor the time; ncsim's limit %.6g s)",
-                waited(), wait_max_),
+        "axis " + w.name + ": exact stop window P-AXIS-00236 (" +
+            core::human(w.monitor.exact_stop.window) + " mm) not reached, " + core::human(worst_d) +
+            " mm from the target after " + core::human(waited()) +
+            " s (P-AXIS-00532 does not monitor the time; ncsim's limit " + core::human(wait_max_) +
+            " s)",
         c, worst);
   return false;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

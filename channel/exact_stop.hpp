@@ -19,7 +19,7 @@
 #include "channel/axis_stage.hpp"
 #include "channel/channel_types.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 class ExactStopWait {
  public:
@@ -30,7 +30,8 @@ class ExactStopWait {
   bool active() const noexcept { return active_; }
   /// The command reached the end of a G60 / G360 block in cycle `c` (001 l.149: t_1): waits
   /// for the axes the block moved (every joint of a transformed block) at `setpoints`.
-  void begin(const Cycle& c, std::span<const axes::Setpoint> setpoints, bool transformed) noexcept;
+  void begin(const ipo::Cycle& c, std::span<const axes::Setpoint> setpoints,
+             bool transformed) noexcept;
   /// Axis i waits at the exact stop in progress.
   bool waits_for(std::size_t i) const noexcept { return active_ && ((moved_ >> i) & 1u) != 0; }
   double target(std::size_t i) const noexcept { return target_[i]; }  ///< [mm | deg]
@@ -38,7 +39,7 @@ class ExactStopWait {
   double waited() const noexcept { return static_cast<double>(waited_) * t_cycle_; }
   /// After the axes were driven in cycle `c`: true and `release` when every waiting axis is in
   /// its window; false when the wait ran out (NC6101 raised into `error`); true otherwise.
-  bool check(const Cycle& c, const AxisStage& axes, bool& release,
+  bool check(const ipo::Cycle& c, const AxisStage& axes, bool& release,
              std::optional<RunTimeError>& error) noexcept;
 
  private:
@@ -47,8 +48,8 @@ class ExactStopWait {
   std::uint64_t wait_cycles_max_;  ///< wait_max_ in cycles
   bool active_ = false;            ///< an exact stop is in progress
   std::uint32_t moved_ = 0;        ///< bit i: axis i moved in the exact-stop block
-  AxisVec target_{};               ///< the block's end per axis [mm | deg]
+  planner::AxisVec target_{};      ///< the block's end per axis [mm | deg]
   std::uint64_t waited_ = 0;       ///< cycles waited at this exact stop
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

@@ -8,7 +8,7 @@
 
 #include "program/program_source.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 EventOutcome HomingSequence::step(const interp::Homing& command, const AxisStage& axes,
                                   IndpAxes& indp, const EventContext& ctx) noexcept {
@@ -16,7 +16,7 @@ EventOutcome HomingSequence::step(const interp::Homing& command, const AxisStage
     for (const auto& [axis, order] : command.axes)
       if (axes.find(axis) == axes.size()) {
         try {
-          return ctx.fail(kNotSupportedId,
+          return ctx.fail(program::kNotSupportedId,
                           "not supported: G74 of machine axis " + std::to_string(axis) +
                               ", which is not an interpolated axis of the channel");
         } catch (...) {
@@ -50,4 +50,4 @@ EventOutcome HomingSequence::step(const interp::Homing& command, const AxisStage
   return EventOutcome::blocking;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

@@ -26,7 +26,7 @@
 #include "channel/indp_axes.hpp"
 #include "interp/command.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 class HomingSequence {
  public:
@@ -39,4 +39,4 @@ class HomingSequence {
   std::optional<int> order_;  ///< the order number homing now; empty: none started
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

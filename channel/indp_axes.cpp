@@ -13,7 +13,7 @@
 #include "core/number_text.hpp"
 #include "core/tolerance.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 namespace {
 /// [mm/s | deg/s] the least V of a TIME= move: a level of 0 still gives a positive V.
@@ -24,7 +24,7 @@ IndpAxisConfig indp_axis_config(const machines::AxisParams& axis) {
   const machines::Dynamics& d = axis.dynamics;
   IndpAxisConfig c;
   c.name = axis.name;
-  // G01: the limits the path and the audit use (ipo::machine_config).
+  // G01: the limits the path and the audit use (program::machine_config).
   c.feed.v_max = d.v_max;                          // P-AXIS-00212
   c.feed.a_max = std::min(d.acc_feed, d.acc_max);  // P-AXIS-00001 capped by P-AXIS-00008
   c.feed.d_max = std::min(d.dec_feed, d.acc_max);  // P-AXIS-00002 capped by P-AXIS-00008
@@ -54,9 +54,9 @@ std::string fmt(double x) {
 IndpAxes::IndpAxes(std::vector<IndpAxisConfig> axes, double t_cycle, const planner::AxisVec& start)
     : t_cycle_(t_cycle) {
   if (!(std::isfinite(t_cycle) && t_cycle > 0.0))
-    throw std::invalid_argument("ipo::IndpAxes: t_cycle must be > 0 s, got " + fmt(t_cycle));
+    throw std::invalid_argument("channel::IndpAxes: t_cycle must be > 0 s, got " + fmt(t_cycle));
   if (axes.size() > planner::kMaxAxes)
-    throw std::invalid_argument("ipo::IndpAxes: " + std::to_string(axes.size()) + " axes");
+    throw std::invalid_argument("channel::IndpAxes: " + std::to_string(axes.size()) + " axes");
   axes_.reserve(axes.size());
   for (std::size_t i = 0; i < axes.size(); ++i) {
     Axis a;
@@ -284,4 +284,4 @@ bool IndpAxes::in_position_mask(planner::AxisMask mask) const noexcept {
   return true;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

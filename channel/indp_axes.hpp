@@ -56,7 +56,7 @@
 #include "machines/machine.hpp"
 #include "planner/move.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 /// NC6104: the PTP core could not plan an INDP motion (the axes' Result id in the message).
 inline constexpr const char* kIndpPlanId = "NC6104";
@@ -181,4 +181,4 @@ class IndpAxes {
   std::uint64_t capped_ = 0;
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

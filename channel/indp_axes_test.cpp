@@ -14,9 +14,9 @@
 namespace {
 
 using ncsim::axes::Result;
-using ncsim::ipo::IndpAxes;
-using ncsim::ipo::IndpAxisConfig;
-using ncsim::ipo::IndpMove;
+using ncsim::channel::IndpAxes;
+using ncsim::channel::IndpAxisConfig;
+using ncsim::channel::IndpMove;
 
 constexpr double kT = 0.001;
 
@@ -322,7 +322,7 @@ TEST_CASE("NCSIM-AXIS-030: time-optimal INDP moves reverse without stopping; off
   for (const bool optimal : {false, true}) {
     CAPTURE(optimal);
     dyn.time_optimal_profiles = optimal;
-    const IndpAxisConfig c = ncsim::ipo::indp_axis_config(axis);
+    const IndpAxisConfig c = ncsim::channel::indp_axis_config(axis);
     REQUIRE(c.rule ==
             (optimal ? ncsim::axes::ProfileRule::time_optimal : ncsim::axes::ProfileRule::manual));
     REQUIRE(c.feed.a_max == 2000.0);

@@ -12,18 +12,19 @@
 #include "core/tolerance.hpp"
 #include "program/program_source.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
-IndpStage::IndpStage(std::vector<IndpAxisConfig> axes, double t_cycle, const AxisVec& start)
+IndpStage::IndpStage(std::vector<IndpAxisConfig> axes, double t_cycle,
+                     const planner::AxisVec& start)
     : indp_(std::move(axes), t_cycle, start) {}
 
-void IndpStage::step_once(const Cycle& c) noexcept {
+void IndpStage::step_once(const ipo::Cycle& c) noexcept {
   if (stepped_ == c.index) return;  // the error's own cycle may have stepped them already
   indp_.step();
   stepped_ = c.index;
 }
 
-bool IndpStage::step(const Cycle& c, AxisStage& axes, const Cycle*& shown,
+bool IndpStage::step(const ipo::Cycle& c, AxisStage& axes, const ipo::Cycle*& shown,
                      std::optional<RunTimeError>& error) noexcept {
   indp_.step();
   stepped_ = c.index;
@@ -40,7 +41,7 @@ bool IndpStage::step(const Cycle& c, AxisStage& axes, const Cycle*& shown,
   // INDP motion is done and the block starts where that motion left it (the interpreter's
   // position is the INDP target); P-CHAN-00451's implicit synchronisation (the path waiting
   // for a running INDP_ASYN motion) is not done: NC6103 (docs/ipo.md).
-  if (c.activity == Activity::motion && c.programmed != nullptr) {
+  if (c.activity == ipo::Activity::motion && c.programmed != nullptr) {
     const planner::Move& m = *c.programmed;
     for (std::size_t i = 0; i < axes.size(); ++i) {
       if (((owned >> i) & 1u) == 0) continue;
@@ -104,10 +105,11 @@ std::optional<std::pair<const char*, std::string>> IndpStage::set_override(
 }
 
 EventOutcome IndpStage::command(const interp::AxisCommand& c, const AxisStage& axes,
-                                const ConveyorSync* sync, const EventContext& ctx) noexcept {
+                                const tracking::ConveyorSync* sync,
+                                const EventContext& ctx) noexcept {
   const std::size_t i = axes.find(c.axis);
   if (i == axes.size())
-    return ctx.fail(kNotSupportedId,
+    return ctx.fail(program::kNotSupportedId,
                     "not supported: INDP motion of a spindle, the conveyor or an encoder axis "
                     "(only interpolated axes move independently)");
   // isg-language.md 6.1: "By default no offsets are applied": POS is the axis value (MCS) under
@@ -120,7 +122,7 @@ EventOutcome IndpStage::command(const interp::AxisCommand& c, const AxisStage& a
                           (!sync || (sync->xyz(i) >= 0 && sync->xyz(i) < 3 &&
                                      std::fabs(sync->frame().direction()[sync->xyz(i)]) >= kTiny));
   if (belt_moves || c.frame.kinematics)
-    return ctx.fail(kNotSupportedId,
+    return ctx.fail(program::kNotSupportedId,
                     "not supported: INDP motion of axis " + axes.config(i).name +
                         (c.frame.kinematics ? " under #TRAFO ON" : " while synchronised (PCS1)"));
   IndpMove m;
@@ -150,7 +152,7 @@ EventOutcome IndpStage::wait(const interp::WaitIndp& w, const AxisStage& axes) c
 EventOutcome IndpStage::tech(const interp::Tech& t, const EventContext& ctx) noexcept {
   if (t.sync == machines::TechSync::none) return EventOutcome::done;  // NO_SYNCH: no output
   try {
-    const ChannelEvent& e = ctx.event();
+    const program::ChannelEvent& e = ctx.event();
     tech_.push_back(TechOutput{ctx.t(), e.line, e.file, t.kind, t.value, t.extra});
   } catch (...) {
     std::abort();  // out of memory: bounded by the events of one cycle (kMaxPendingEvents)
@@ -184,24 +186,24 @@ bool IndpStage::hand_over(std::size_t n) noexcept {
   return ready;
 }
 
-const Cycle& IndpStage::tail(const Cycle& last, double t_cycle) noexcept {
+const ipo::Cycle& IndpStage::tail(const ipo::Cycle& last, double t_cycle) noexcept {
   // The path stands at its end; the cycles go on (Activity::channel, counted as waiting by
   // `time`) until every INDP axis is in position, so `run` and `time` cover the whole motion.
   if (!in_tail_) {
     tail_ = last;
     in_tail_ = true;
-    tail_.activity = Activity::channel;
+    tail_.activity = ipo::Activity::channel;
     tail_.programmed = nullptr;
     tail_.path.v = tail_.path.a = tail_.path.j = 0.0;
     tail_.distance = 0.0;
     tail_.lost = 0.0;
-    tail_.v = AxisVec{};
-    tail_.a = AxisVec{};
-    tail_.j = AxisVec{};
+    tail_.v = planner::AxisVec{};
+    tail_.a = planner::AxisVec{};
+    tail_.j = planner::AxisVec{};
   }
   ++tail_.index;
   tail_.t = static_cast<double>(tail_.index) * t_cycle;
   return tail_;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

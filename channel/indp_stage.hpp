@@ -24,27 +24,27 @@
 #include "scenario/player.hpp"
 #include "tracking/conveyor_sync.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 class IndpStage {
  public:
-  IndpStage(std::vector<IndpAxisConfig> axes, double t_cycle, const AxisVec& start);
+  IndpStage(std::vector<IndpAxisConfig> axes, double t_cycle, const planner::AxisVec& start);
 
   IndpAxes& axes() noexcept { return indp_; }
   const IndpAxes& axes() const noexcept { return indp_; }
   /// After the mapping of cycle `c`: steps the INDP axes and gives each axis they own its
   /// setpoint in `axes`; `shown` the patched cycle (null: none owned). False: NC6103 raised.
-  bool step(const Cycle& c, AxisStage& axes, const Cycle*& shown,
+  bool step(const ipo::Cycle& c, AxisStage& axes, const ipo::Cycle*& shown,
             std::optional<RunTimeError>& error) noexcept;
   /// Steps the INDP axes once for cycle `c` unless step() did (the cycles after an error).
-  void step_once(const Cycle& c) noexcept;
+  void step_once(const ipo::Cycle& c) noexcept;
   /// A scenario axis override: the run-time error (NC6105) it raises, if any.
   std::optional<std::pair<const char*, std::string>> set_override(const scenario::AxisOverride& o,
                                                                   const AxisStage& axes) noexcept;
   /// Event handlers: X[INDP_SYN / INDP_ASYN ...] (`sync`: the conveyor tracking, null: none),
   /// #WAIT INDP, M/H/S/T/D.
   EventOutcome command(const interp::AxisCommand& c, const AxisStage& axes,
-                       const ConveyorSync* sync, const EventContext& ctx) noexcept;
+                       const tracking::ConveyorSync* sync, const EventContext& ctx) noexcept;
   EventOutcome wait(const interp::WaitIndp& w, const AxisStage& axes) const noexcept;
   EventOutcome tech(const interp::Tech& t, const EventContext& ctx) noexcept;
   /// True when every INDP_SYN motion started is in position (the next block may start);
@@ -57,16 +57,16 @@ class IndpStage {
   const std::vector<TechOutput>& tech_outputs() const noexcept { return tech_; }
   void clear_tech() noexcept { tech_.clear(); }
   /// The path has ended while INDP axes move: the next cycle, at rest after `last`.
-  const Cycle& tail(const Cycle& last, double t_cycle) noexcept;
+  const ipo::Cycle& tail(const ipo::Cycle& last, double t_cycle) noexcept;
 
  private:
   IndpAxes indp_;
-  Cycle patched_;                              ///< the cycle with the INDP axes' setpoints
+  ipo::Cycle patched_;                         ///< the cycle with the INDP axes' setpoints
   planner::AxisMask syn_ = 0;                  ///< axes of INDP_SYN motions the path waits for
   std::vector<TechOutput> tech_;               ///< technology functions output in this step
-  Cycle tail_;                                 ///< the cycles after the path's end
+  ipo::Cycle tail_;                            ///< the cycles after the path's end
   bool in_tail_ = false;                       ///< the path has ended, INDP axes still move
   std::uint64_t stepped_ = ~std::uint64_t{0};  ///< the cycle indp_.step() last ran for
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

@@ -12,36 +12,36 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdio>
 #include <cstdlib>
 #include <span>
 #include <string>
 
+#include "core/number_text.hpp"
 #include "program/program_source.hpp"
 #include "tracking/trafo_sync.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 KinematicStage::KinematicStage(const std::optional<planner::JointLimits>& joints,
-                               std::size_t axis_count, planner::JointMap forward, Sink* sink)
+                               std::size_t axis_count, planner::JointMap forward, ipo::Sink* sink)
     : relay_(sink), forward_(std::move(forward)) {
   if (joints) stage_.emplace(joints->inverse, axis_count);
 }
 
-bool KinematicStage::map(const Cycle& c, const std::optional<AxisVec>& hold,
-                         const ConveyorSync* sync, double t_cycle, AxisStage& axes,
+bool KinematicStage::map(const ipo::Cycle& c, const std::optional<planner::AxisVec>& hold,
+                         const tracking::ConveyorSync* sync, double t_cycle, AxisStage& axes,
                          std::optional<RunTimeError>& error) noexcept {
   transformed_ = true;
   // The TCP of this cycle: the path's point, or where a catch-up / departure left it, or the
   // catch-up's own setpoint, or the path's PCS1 point moved by the belt (docs/conveyor.md
   // "Conveyor tracking under #TRAFO ON"): PCS1 -> MCS TCP -> joints.
-  AxisVec x = c.x;
-  AxisVec v = c.v;
-  AxisVec a = c.a;
-  AxisVec j = c.j;
+  planner::AxisVec x = c.x;
+  planner::AxisVec v = c.v;
+  planner::AxisVec a = c.a;
+  planner::AxisVec j = c.j;
   if (hold) {
     x = *hold;
-    v = a = j = AxisVec{};
+    v = a = j = planner::AxisVec{};
   }
   if (sync && sync->driving()) {
     for (std::size_t i = 0; i < axes.size(); ++i) {
@@ -60,15 +60,13 @@ bool KinematicStage::map(const Cycle& c, const std::optional<AxisVec>& hold,
   }
   for (std::size_t i = 0; i < axes.size(); ++i)
     tcp_[i] = axes::Setpoint{x[i], v[i], a[i], j[i]};
-  JointSetpoint s;
+  ipo::JointSetpoint s;
   if (!stage_->step(x, v, a, j, s)) {
-    const AxisVec& p = stage_->failed_point();
-    char text[200];
-    std::snprintf(text, sizeof text,
-                  "TCP point (%.6g, %.6g, %.6g) mm outside the workspace of the kinematic "
-                  "transform",
-                  p[0], p[1], p[2]);
-    raise(error, "NC3201", text, c, -1);
+    const planner::AxisVec& p = stage_->failed_point();
+    raise(error, "NC3201",
+          "TCP point (" + core::human(p[0]) + ", " + core::human(p[1]) + ", " + core::human(p[2]) +
+              ") mm outside the workspace of the kinematic transform",
+          c, -1);
     return false;
   }
   // the jerk stencil holds this cycle and the two before.
@@ -87,8 +85,9 @@ bool KinematicStage::map(const Cycle& c, const std::optional<AxisVec>& hold,
   return true;
 }
 
-void KinematicStage::check_sync(const Cycle& c, const JointSetpoint& s, const ConveyorSync& sync,
-                                double t_cycle, const AxisStage& axes) noexcept {
+void KinematicStage::check_sync(const ipo::Cycle& c, const ipo::JointSetpoint& s,
+                                const tracking::ConveyorSync& sync, double t_cycle,
+                                const AxisStage& axes) noexcept {
   if (warning_) return;  // the first overrun of the run; the audit lists every one
   std::array<axes::Dynamics, planner::kMaxAxes> dyn{};
   const std::size_t n = std::min(axes.size(), sync.axis_count());
@@ -99,28 +98,27 @@ void KinematicStage::check_sync(const Cycle& c, const JointSetpoint& s, const Co
   // the PCS1 offset and with it the joints between cycles beyond what the closed form shows.
   // the jerk as the audit checks it: the closed form on a jerk-limited slope,
   // the third difference where its stencil is jerk-limited and holds no documented path step.
-  auto o = joint_overrun(s, std::span(dyn.data(), n), c.jerk_limited);
-  JointSetpoint diff;
+  auto o = tracking::joint_overrun(s, std::span(dyn.data(), n), c.jerk_limited);
+  ipo::JointSetpoint diff;
   bool jerk = false;
   if (!o && differences(c, s, axes.size(), t_cycle, diff, jerk))
-    o = joint_overrun(diff, std::span(dyn.data(), n), jerk);
+    o = tracking::joint_overrun(diff, std::span(dyn.data(), n), jerk);
   if (!o) return;
-  const char* phase = sync.phase() == SyncPhase::catching_up ? "the catch-up"
-                      : sync.phase() == SyncPhase::departing ? "the departure"
-                                                             : "synchronised motion";
+  const char* phase = sync.phase() == tracking::SyncPhase::catching_up ? "the catch-up"
+                      : sync.phase() == tracking::SyncPhase::departing ? "the departure"
+                                                                       : "synchronised motion";
   const char* quantity = o->quantity == 'v' ? "v" : o->quantity == 'a' ? "a" : "j";
   const char* limit = o->quantity == 'v'   ? "P-AXIS-00212"
                       : o->quantity == 'a' ? "P-AXIS-00008"
                                            : "the jerk of P-AXIS-00195..00198";
-  char text[320];
-  std::snprintf(text, sizeof text,
-                "joint %s: |%s| %.6g above its %.6g (%s) in %s under #TRAFO ON (004 l.609: the "
-                "joint dynamics are not ensured there; reduce the belt velocity or the feed)",
-                axes.config(o->joint).name.c_str(), quantity, o->value, o->limit, limit, phase);
   try {
     RunTimeError w;
-    w.id = kTrafoSyncOverrunId;
-    w.message = text;
+    w.id = tracking::kTrafoSyncOverrunId;
+    w.message = "joint " + axes.config(o->joint).name + ": |" + quantity + "| " +
+                core::human(o->value) + " above its " + core::human(o->limit) + " (" + limit +
+                ") in " + phase +
+                " under #TRAFO ON (004 l.609: the joint dynamics are not ensured there; reduce "
+                "the belt velocity or the feed)";
     w.line = c.line;
     w.file = c.file;
     w.t = c.t;
@@ -131,8 +129,9 @@ void KinematicStage::check_sync(const Cycle& c, const JointSetpoint& s, const Co
   }
 }
 
-bool KinematicStage::differences(const Cycle& c, const JointSetpoint& s, std::size_t n,
-                                 double t_cycle, JointSetpoint& out, bool& jerk) const noexcept {
+bool KinematicStage::differences(const ipo::Cycle& c, const ipo::JointSetpoint& s, std::size_t n,
+                                 double t_cycle, ipo::JointSetpoint& out,
+                                 bool& jerk) const noexcept {
   if (q_known_ < 2 || c.index != q_index_ + 1) return false;
   const double t = t_cycle;
   jerk = q_known_ >= 3 && q_plain_[0] && q_plain_[1] && q_plain_[2];
@@ -148,14 +147,14 @@ bool KinematicStage::differences(const Cycle& c, const JointSetpoint& s, std::si
 
 bool KinematicStage::map_tcp(AxisStage& axes) noexcept {
   const std::size_t n = axes.size();
-  AxisVec x{}, v{}, a{}, j{};
+  planner::AxisVec x{}, v{}, a{}, j{};
   for (std::size_t i = 0; i < n; ++i) {
     x[i] = tcp_[i].p;
     v[i] = tcp_[i].v;
     a[i] = tcp_[i].a;
     j[i] = tcp_[i].j;
   }
-  JointSetpoint s;
+  ipo::JointSetpoint s;
   if (!stage_->step(x, v, a, j, s)) return false;
   joints_ = s;
   for (std::size_t i = 0; i < n; ++i)
@@ -163,7 +162,7 @@ bool KinematicStage::map_tcp(AxisStage& axes) noexcept {
   return true;
 }
 
-bool KinematicStage::plan_sync_motion(ConveyorSync& sync, bool catch_up,
+bool KinematicStage::plan_sync_motion(tracking::ConveyorSync& sync, bool catch_up,
                                       std::span<const axes::MotionState> start,
                                       std::span<const double> target, double feed_cont,
                                       axes::Result& r) const noexcept {
@@ -178,7 +177,7 @@ bool KinematicStage::plan_sync_motion(ConveyorSync& sync, bool catch_up,
     if (const int k = sync.xyz(i); k >= 0) xyz[static_cast<std::size_t>(k)] = static_cast<int>(i);
   // The points the TCP passes: the start, the target (at the start), and for a catch-up the
   // meeting point and the middle between start and meeting.
-  std::array<AxisVec, 4> points{};
+  std::array<planner::AxisVec, 4> points{};
   for (std::size_t i = 0; i < n; ++i) {
     points[0][i] = start[i].p;
     points[1][i] = target[i];
@@ -186,8 +185,8 @@ bool KinematicStage::plan_sync_motion(ConveyorSync& sync, bool catch_up,
   }
   std::size_t count = 3;
   for (int pass = 0; pass < 2; ++pass) {
-    const auto d =
-        tcp_dynamics(inverse, xyz, std::span(joints.data(), n), std::span(points.data(), count));
+    const auto d = tracking::tcp_dynamics(inverse, xyz, std::span(joints.data(), n),
+                                          std::span(points.data(), count));
     if (!d) {
       r = axes::Result::error_invalid_input;
       return false;
@@ -200,7 +199,7 @@ bool KinematicStage::plan_sync_motion(ConveyorSync& sync, bool catch_up,
                  : sync.start_departure(start, target, std::span(tcp.data(), n));
     if (r != axes::Result::ok || !catch_up) return r == axes::Result::ok;
     // The meeting point is known now: cover it and the way there, then plan again.
-    const CatchUp& cu = sync.catch_up();
+    const tracking::CatchUp& cu = sync.catch_up();
     const double vb = cu.belt_velocity();
     const double s_meet = sync.travel() + vb * cu.duration();  // the forecast belt
     for (std::size_t i = 0; i < n; ++i) {
@@ -213,4 +212,4 @@ bool KinematicStage::plan_sync_motion(ConveyorSync& sync, bool catch_up,
   return r == axes::Result::ok;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

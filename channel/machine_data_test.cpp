@@ -21,11 +21,11 @@ namespace {
 
 using namespace ncsim;
 
-using Ran = ipo::test::ConveyorRun;
+using Ran = channel::test::ConveyorRun;
 
 // `program` on laser_portal (1 ms; S is its conveyor axis) with `port` attached (null: none).
 Ran run(const std::string& program, conveyor::Port* port) {
-  return ipo::test::run_conveyor(program, interp::test::machine("laser_portal"), port, 100'000);
+  return channel::test::run_conveyor(program, interp::test::machine("laser_portal"), port, 100'000);
 }
 
 interp::MachineData setting(std::uint8_t axis, std::string_view id, std::string_view key,
@@ -44,17 +44,18 @@ TEST_CASE("#MACHINE DATA: only the conveyor axis's filter and delay parameters r
   REQUIRE(belt != nullptr);
   const auto s = static_cast<std::uint8_t>(belt - m.axes.data());
   const auto x = static_cast<std::uint8_t>(m.find_axis("X") - m.axes.data());
-  CHECK_FALSE(
-      ipo::machine_data_unsupported(setting(s, "P-AXIS-00626", "conv_sync.delay_time", 0.02), m));
-  CHECK_FALSE(ipo::machine_data_unsupported(
+  CHECK_FALSE(program::machine_data_unsupported(
+      setting(s, "P-AXIS-00626", "conv_sync.delay_time", 0.02), m));
+  CHECK_FALSE(program::machine_data_unsupported(
       setting(s, "NCSIM-AXIS-006", "conv_sync.order_pos_filter", 8), m));
   const auto limit =
-      ipo::machine_data_unsupported(setting(x, "P-AXIS-00212", "getriebe[0].vb_max", 500.0), m);
+      program::machine_data_unsupported(setting(x, "P-AXIS-00212", "getriebe[0].vb_max", 500.0), m);
   REQUIRE(limit);
   CHECK(limit->find("P-AXIS-00212") != std::string::npos);
   CHECK(limit->find("axis X") != std::string::npos);
   // A filter key on an axis that is not the conveyor's is not a filter change either.
-  CHECK(ipo::machine_data_unsupported(setting(x, "P-AXIS-00626", "conv_sync.delay_time", 0.02), m));
+  CHECK(program::machine_data_unsupported(setting(x, "P-AXIS-00626", "conv_sync.delay_time", 0.02),
+                                          m));
 
   machines::ConveyorAxisParams p = *belt->conveyor;
   interp::MachineData md = setting(s, "P-AXIS-00626", "conv_sync.delay_time", 0.02);
@@ -62,7 +63,7 @@ TEST_CASE("#MACHINE DATA: only the conveyor axis's filter and delay parameters r
       interp::MachineSetting{"P-AXIS-00620", "conv_sync.enable_filter", std::nullopt, 0.0, ""});
   md.settings.push_back(
       interp::MachineSetting{"P-AXIS-00623", "conv_sync.order_v_filter", std::nullopt, 5.0, ""});
-  const machines::ConveyorAxisParams q = ipo::apply_machine_data(p, md);
+  const machines::ConveyorAxisParams q = program::apply_machine_data(p, md);
   CHECK(q.delay_time == 0.02);
   CHECK_FALSE(q.enable_filter);
   CHECK(q.order_v_filter == 5);
@@ -71,7 +72,7 @@ TEST_CASE("#MACHINE DATA: only the conveyor axis's filter and delay parameters r
 }
 
 TEST_CASE("#MACHINE DATA on the conveyor's filters reaches the Port with the path standing") {
-  ipo::test::FakePort port(0.0);
+  tracking::test::FakePort port(0.0);
   const Ran r =
       run("%t\nN10 G01 X10 F6000\nN20 #MACHINE DATA [AX=S P-AXIS-00626=20000 P-AXIS-00623=5]\n"
           "N30 G01 X20\nN40 M30\n",
@@ -96,7 +97,7 @@ TEST_CASE("#MACHINE DATA on the conveyor's filters reaches the Port with the pat
 }
 
 TEST_CASE("#MACHINE DATA of any other parameter is NC6001 at its line after the blocks before") {
-  ipo::test::FakePort port(0.0);
+  tracking::test::FakePort port(0.0);
   const Ran r =
       run("%t\nN10 G01 X10 F6000\nN20 #MACHINE DATA [AX=X P-AXIS-00212=500]\nN30 G01 X20\nM30\n",
           &port);
@@ -116,7 +117,7 @@ TEST_CASE("#MACHINE DATA of the filters without a conveyor world is NC6001 namin
 }
 
 TEST_CASE("#MACHINE DATA of the filters on a world that cannot change them is NC6001 at its line") {
-  ipo::test::FakePort port(0.0);
+  tracking::test::FakePort port(0.0);
   port.takes_params_ = false;
   const Ran r =
       run("%t\nN10 G01 X10 F6000\nN20 #MACHINE DATA [AX=S P-AXIS-00626=20000]\nN30 G01 X20\n"
@@ -132,7 +133,7 @@ TEST_CASE("#MACHINE DATA of the filters on a world that cannot change them is NC
 }
 
 TEST_CASE("NC9061: #MACHINE DATA of the filters while synchronised, at its line") {
-  ipo::test::FakePort port(300.0);
+  tracking::test::FakePort port(300.0);
   port.latch_at_ = 1;
   const Ran r =
       run("%t\nN10 G01 X0 Y0 Z0 F6000\nN20 #SYNC IN [CONV_VEL=18000]\nN30 G01 X100 Y50 F6000\n"
@@ -143,7 +144,7 @@ TEST_CASE("NC9061: #MACHINE DATA of the filters while synchronised, at its line"
   CHECK(r.error->line == 5);
   CHECK_FALSE(port.params_);
   // Before #SYNC IN and after #SYNC OUT the same change runs.
-  ipo::test::FakePort after(300.0);
+  tracking::test::FakePort after(300.0);
   after.latch_at_ = 1;
   const Ran ok =
       run("%t\nN10 #MACHINE DATA [AX=S P-AXIS-00626=0]\nN20 G01 X0 Y0 Z0 F6000\n"

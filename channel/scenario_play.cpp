@@ -6,7 +6,9 @@
 #include <utility>
 #include <variant>
 
-namespace ncsim::ipo {
+#include "core/number_text.hpp"
+
+namespace ncsim::channel {
 
 void ScenarioPlay::block_started(std::uint32_t line) noexcept {
   if (aborted_) return;  // the program is aborted (its blocks only brake)
@@ -27,7 +29,7 @@ std::optional<std::pair<const char*, std::string>> ScenarioPlay::act(
     return std::nullopt;
   }
   if (const auto* o = std::get_if<scenario::PathOverride>(&a)) {
-    const double max = max_override(ipo_.path_override().override_type());
+    const double max = ipo::max_override(ipo_.path_override().override_type());
     if (o->fraction <= max) {
       try {
         ipo_.path_override().set_override(o->fraction);
@@ -36,29 +38,29 @@ std::optional<std::pair<const char*, std::string>> ScenarioPlay::act(
       }
     }
     return std::pair{kOverrideRangeId,
-                     format_text("scenario path override %.6g %% above %.6g %%, the largest of the "
-                                 "channel's override type (NCSIM-CHAN-630)",
-                                 o->fraction * 100.0, max * 100.0)};
+                     "scenario path override " + core::human(o->fraction * 100.0) + " % above " +
+                         core::human(max * 100.0) +
+                         " %, the largest of the channel's override type (NCSIM-CHAN-630)"};
   }
   return indp_.set_override(std::get<scenario::AxisOverride>(a), axes_);
 }
 
-bool ScenarioPlay::step(bool tracking, conveyor::Port* port, Status& status,
+bool ScenarioPlay::step(bool tracking, conveyor::Port* port, ipo::Status& status,
                         std::optional<RunTimeError>& error) noexcept {
   if (player_ == nullptr) return true;
   if (stopped_) {
-    status = Status::finished;
+    status = ipo::Status::finished;
     return false;
   }
-  const Cycle& last = ipo_.cycle();
+  const ipo::Cycle& last = ipo_.cycle();
   const std::uint64_t k = last.index;
   const double t = static_cast<double>(k) * ipo_.t_cycle();
   for (const scenario::Action& a : player_->step(k, t)) {
     if (auto e = act(a)) {
-      Cycle at = last;
+      ipo::Cycle at = last;
       at.t = t;
       raise(error, e->first, std::move(e->second), at, -1);
-      status = Status::error;
+      status = ipo::Status::error;
       return false;
     }
   }
@@ -70,13 +72,13 @@ bool ScenarioPlay::step(bool tracking, conveyor::Port* port, Status& status,
                              (ipo_.path_override().feed_hold() && tracking));
   if (const auto reason = player_->stop()) {
     stopped_ = *reason;
-    status = Status::finished;
+    status = ipo::Status::finished;
     return false;
   }
   return true;
 }
 
-bool ScenarioPlay::check(const Cycle& c, bool hold_waits,
+bool ScenarioPlay::check(const ipo::Cycle& c, bool hold_waits,
                          std::optional<RunTimeError>& error) noexcept {
   if (failed_) {
     raise(error, failed_->first, std::move(failed_->second), c, -1);
@@ -94,4 +96,4 @@ bool ScenarioPlay::check(const Cycle& c, bool hold_waits,
   return false;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

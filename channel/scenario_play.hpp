@@ -25,12 +25,12 @@
 #include "ipo/interpolator.hpp"
 #include "scenario/player.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::channel {
 
 class ScenarioPlay {
  public:
   /// `ipo`, `indp` and `axes` must outlive the part (the channel's own parts).
-  ScenarioPlay(PathInterpolator& ipo, IndpStage& indp, const AxisStage& axes) noexcept
+  ScenarioPlay(ipo::PathInterpolator& ipo, IndpStage& indp, const AxisStage& axes) noexcept
       : ipo_(ipo), indp_(indp), axes_(axes) {}
   ScenarioPlay(const ScenarioPlay&) = delete;
   ScenarioPlay& operator=(const ScenarioPlay&) = delete;
@@ -45,13 +45,13 @@ class ScenarioPlay {
   /// run ends before it: `status` finished (a [stop] condition) or error (raised into `error`).
   /// `tracking`: the channel tracks the conveyor (its feed hold reduces the filters of `port`,
   /// null: none).
-  bool step(bool tracking, conveyor::Port* port, Status& status,
+  bool step(bool tracking, conveyor::Port* port, ipo::Status& status,
             std::optional<RunTimeError>& error) noexcept;
   /// After the interpolator's step, at its cycle `c`: an action's run-time error raised by a
   /// block start inside the cycle, or NC6301 when the path stands by feed hold or override 0
   /// and no later scenario event releases it (unless `hold_waits`: the workspace hold waits for
   /// the belt, NC9081). False: raised into `error`.
-  bool check(const Cycle& c, bool hold_waits, std::optional<RunTimeError>& error) noexcept;
+  bool check(const ipo::Cycle& c, bool hold_waits, std::optional<RunTimeError>& error) noexcept;
   /// The [stop] condition that ended the run, if one did.
   const std::optional<scenario::StopReason>& stop_reason() const noexcept { return stopped_; }
   /// The program is aborted (after an error while synchronised): its blocks only brake.
@@ -59,7 +59,7 @@ class ScenarioPlay {
 
  private:
   /// Passes the interpolator's block starts to the player.
-  class BlockRelay final : public BlockObserver {
+  class BlockRelay final : public ipo::BlockObserver {
    public:
     explicit BlockRelay(ScenarioPlay& play) : play_(play) {}
     void on_block_started(std::uint32_t line, std::uint16_t file) noexcept override {
@@ -75,7 +75,7 @@ class ScenarioPlay {
   /// Applies one scenario action; the run-time error (id, text) it raises, if any.
   std::optional<std::pair<const char*, std::string>> act(const scenario::Action& a) noexcept;
 
-  PathInterpolator& ipo_;
+  ipo::PathInterpolator& ipo_;
   IndpStage& indp_;
   const AxisStage& axes_;
   scenario::Player* player_ = nullptr;
@@ -85,4 +85,4 @@ class ScenarioPlay {
   BlockRelay blocks_{*this};
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::channel

@@ -29,11 +29,11 @@ constexpr double kBelt = 300.0;  // [mm/s]
 
 struct Run {
   ipo::Status status = ipo::Status::finished;
-  std::vector<ipo::SyncPhase> phase;
+  std::vector<tracking::SyncPhase> phase;
   std::vector<std::array<double, 3>> x;  // command X, Y, Z (MCS)
   std::vector<double> v_relative;        // ConveyorSync::v_relative()
-  std::optional<ipo::RunTimeError> error;
-  ipo::Verdict verdict;
+  std::optional<channel::RunTimeError> error;
+  audit::Verdict verdict;
   std::size_t handover = 0;  // the first tracking cycle after the catch-up
 };
 
@@ -41,17 +41,18 @@ struct Run {
 // setpoints as `ncsim time --audit` does.
 Run run(const std::string& program,
         const machines::Machine& m = interp::test::machine("laser_portal"), double belt = kBelt) {
-  ipo::test::FakePort port(belt);
+  tracking::test::FakePort port(belt);
   port.latch_at_ = 1;
-  ipo::test::AuditedConveyorRig audited(program, m, ipo::channel_config(m, kT), &port);
-  const ipo::Channel& ch = audited.rig.ch;
+  channel::test::AuditedConveyorRig audited(program, m, channel::channel_config(m, kT), &port);
+  const channel::Channel& ch = audited.rig.ch;
   Run r;
-  r.status = ipo::test::run_to_end(
+  r.status = channel::test::run_to_end(
       audited.rig.ch,
       [&] {
-        const ipo::ConveyorSync& s = *ch.conveyor_sync();
-        if (r.handover == 0 && !r.phase.empty() && r.phase.back() == ipo::SyncPhase::catching_up &&
-            s.phase() == ipo::SyncPhase::tracking)
+        const tracking::ConveyorSync& s = *ch.conveyor_sync();
+        if (r.handover == 0 && !r.phase.empty() &&
+            r.phase.back() == tracking::SyncPhase::catching_up &&
+            s.phase() == tracking::SyncPhase::tracking)
           r.handover = r.phase.size();
         r.phase.push_back(s.phase());
         r.x.push_back({ch.axes().command[0], ch.axes().command[1], ch.axes().command[2]});
@@ -63,7 +64,7 @@ Run run(const std::string& program,
   if (r.error)
     MESSAGE(r.error->id << " line " << r.error->line << " t " << r.error->t << ": "
                         << r.error->message);
-  ipo::test::message_violations(r.verdict);
+  channel::test::message_violations(r.verdict);
   return r;
 }
 
@@ -72,14 +73,14 @@ std::array<double, 2> relative(const Run& r, std::size_t k) {
   return {(r.x[k][0] - r.x[k - 1][0]) / kT - kBelt, (r.x[k][1] - r.x[k - 1][1]) / kT};
 }
 
-std::string program(const char* sync_in, const char* contour) {
+std::string nc_program(const char* sync_in, const char* contour) {
   return std::string("%t\nN10 G01 X0 Y0 Z0 F6000\nN20 #SYNC IN [CONV_VEL=18000 ") + sync_in +
          "]\nN30 G01 X100 Y0 F6000\n" + contour + "N80 G04 0.05\nN90 #SYNC OUT\nN100 M30\n";
 }
 
 // The VELOJUMP velocity of a 90 degree corner between X and Y (000 l.108).
 double velojump_90(const machines::Machine& m) {
-  const ipo::ChannelConfig cfg = ipo::channel_config(m, kT);
+  const channel::ChannelConfig cfg = channel::channel_config(m, kT);
   double v = 1e300;
   for (std::size_t i = 0; i < 2; ++i) {
     const planner::AxisLimits& l = cfg.path.axes[i];
@@ -91,7 +92,7 @@ double velojump_90(const machines::Machine& m) {
 }  // namespace
 
 TEST_CASE("FEED_CONT=600 into a straight continuation: the path takes over at 10 mm/s, no step") {
-  const Run r = run(program("FEED_CONT=600", "N40 G01 X200 F600\n"));
+  const Run r = run(nc_program("FEED_CONT=600", "N40 G01 X200 F600\n"));
   REQUIRE(r.status == ipo::Status::finished);
   REQUIRE(r.handover > 2);
   CHECK(r.v_relative[r.handover] == doctest::Approx(10.0));
@@ -117,7 +118,7 @@ TEST_CASE("FEED_CONT=6000 into a 90 degree corner is reduced to the VELOJUMP vel
   const machines::Machine& m = interp::test::machine("laser_portal");
   const double v_jump = velojump_90(m);
   REQUIRE(v_jump < 100.0);  // the reduction shows
-  const Run r = run(program("FEED_CONT=6000", "N40 G01 Y100 F6000\n"), m);
+  const Run r = run(nc_program("FEED_CONT=6000", "N40 G01 Y100 F6000\n"), m);
   REQUIRE(r.status == ipo::Status::finished);
   REQUIRE(r.handover > 2);
   CHECK(r.v_relative[r.handover] == doctest::Approx(v_jump));
@@ -133,12 +134,12 @@ TEST_CASE("FEED_CONT=6000 into a 90 degree corner is reduced to the VELOJUMP vel
 
 TEST_CASE("FEED_CONT=600 into a very short block is reduced to what its braking allows") {
   const machines::Machine& m = interp::test::machine("laser_portal");
-  const Run r = run(program("FEED_CONT=600", "N40 G01 X100.01 F600\n"), m);
+  const Run r = run(nc_program("FEED_CONT=600", "N40 G01 X100.01 F600\n"), m);
   REQUIRE(r.status == ipo::Status::finished);
   REQUIRE(r.handover > 2);
   // The block of 0.01 mm ends in a stop (the dwell): its entry cap is the velocity from which
   // the path brakes to 0 within 0.01 mm (the look-ahead's backward pass).
-  const ipo::ChannelConfig cfg = ipo::channel_config(m, kT);
+  const channel::ChannelConfig cfg = channel::channel_config(m, kT);
   const planner::AxisLimits& x = cfg.path.axes[0];
   const double v_brake = jerk::entry_velocity_for_exit(0.0, 0.01, x.d_max, x.j_max);
   REQUIRE(v_brake < 10.0);
@@ -149,7 +150,7 @@ TEST_CASE("FEED_CONT=600 into a very short block is reduced to what its braking 
 TEST_CASE("FEED_CONT_AUTO: the largest relative velocity the first block takes (S-7)") {
   const machines::Machine& m = interp::test::machine("laser_portal");
   SUBCASE("straight on at the block's feed") {
-    const Run r = run(program("FEED_CONT_AUTO", "N40 G01 X400 F6000\n"), m);
+    const Run r = run(nc_program("FEED_CONT_AUTO", "N40 G01 X400 F6000\n"), m);
     REQUIRE(r.status == ipo::Status::finished);
     REQUIRE(r.handover > 2);
     CHECK(r.v_relative[r.handover] == doctest::Approx(100.0));
@@ -160,7 +161,7 @@ TEST_CASE("FEED_CONT_AUTO: the largest relative velocity the first block takes (
   SUBCASE("a fast block: its entry cap is the PCS1 velocity split's (S-5)") {
     // F = 1000 mm/s along +X: X keeps 1000 - 1.1 x 300 = 670 mm/s relative, so the catch-up
     // meets at 670 and X runs at 970 mm/s in MCS, inside its V.
-    const Run r = run(program("FEED_CONT_AUTO", "N40 G01 X800 F60000\n"), m);
+    const Run r = run(nc_program("FEED_CONT_AUTO", "N40 G01 X800 F60000\n"), m);
     REQUIRE(r.status == ipo::Status::finished);
     REQUIRE(r.handover > 2);
     CHECK(r.v_relative[r.handover] == doctest::Approx(670.0));
@@ -168,14 +169,14 @@ TEST_CASE("FEED_CONT_AUTO: the largest relative velocity the first block takes (
     CHECK(r.verdict.violation_count == 0);
   }
   SUBCASE("into a corner at the VELOJUMP velocity") {
-    const Run r = run(program("FEED_CONT_AUTO", "N40 G01 Y100 F6000\n"), m);
+    const Run r = run(nc_program("FEED_CONT_AUTO", "N40 G01 Y100 F6000\n"), m);
     REQUIRE(r.status == ipo::Status::finished);
     REQUIRE(r.handover > 2);
     CHECK(r.v_relative[r.handover] == doctest::Approx(velojump_90(m)));
     CHECK(r.verdict.violation_count == 0);
   }
   SUBCASE("nothing to continue into (a dwell follows): at rest, as FEED_CONT=0") {
-    const Run r = run(program("FEED_CONT_AUTO", ""), m);
+    const Run r = run(nc_program("FEED_CONT_AUTO", ""), m);
     REQUIRE(r.status == ipo::Status::finished);
     CHECK(r.handover > 2);
     CHECK(r.v_relative[r.handover] == 0.0);
@@ -195,21 +196,21 @@ TEST_CASE("sync_entry: the smallest of FEED_CONT, the link and the entry cap, an
       planner::Segment::line(3, 0b111, planner::AxisVec{}, planner::AxisVec{0.0, 100.0, 0.0}), 0);
   const planner::AxisVec along_x{1.0, 0.0, 0.0};
   const planner::AxisVec along_y{0.0, 1.0, 0.0};
-  ipo::SyncEntry e = ipo::sync_entry(50.0, along_y, &seg, 100.0, axes, kT);
+  tracking::SyncEntry e = tracking::sync_entry(50.0, along_y, &seg, 100.0, axes, kT);
   CHECK(e.v == 50.0);
-  CHECK(e.limit == ipo::EntryLimit::asked);
-  e = ipo::sync_entry(50.0, along_x, &seg, 100.0, axes, kT);
+  CHECK(e.limit == tracking::EntryLimit::asked);
+  e = tracking::sync_entry(50.0, along_x, &seg, 100.0, axes, kT);
   CHECK(e.v == doctest::Approx(10.0));  // VELOJUMP 1 x 10000 x 0.001 over a step of 1
-  CHECK(e.limit == ipo::EntryLimit::corner);
-  e = ipo::sync_entry(1e300, along_y, &seg, 30.0, axes, kT);
+  CHECK(e.limit == tracking::EntryLimit::corner);
+  e = tracking::sync_entry(1e300, along_y, &seg, 30.0, axes, kT);
   CHECK(e.v == 30.0);
-  CHECK(e.limit == ipo::EntryLimit::entry_cap);
-  e = ipo::sync_entry(50.0, along_y, nullptr, 100.0, axes, kT);
+  CHECK(e.limit == tracking::EntryLimit::entry_cap);
+  e = tracking::sync_entry(50.0, along_y, nullptr, 100.0, axes, kT);
   CHECK(e.v == 0.0);
-  CHECK(e.limit == ipo::EntryLimit::nothing);
+  CHECK(e.limit == tracking::EntryLimit::nothing);
   // A reversal: the step is 2 per unit velocity on Y.
   const planner::AxisVec minus_y{0.0, -1.0, 0.0};
-  CHECK(ipo::sync_entry(50.0, minus_y, &seg, 100.0, axes, kT).v == doctest::Approx(5.0));
+  CHECK(tracking::sync_entry(50.0, minus_y, &seg, 100.0, axes, kT).v == doctest::Approx(5.0));
 }
 
 // Under #TRAFO ON it runs (channel/trafo_feed_test.cpp).
@@ -237,11 +238,11 @@ TEST_CASE("FEED_CONT > 0 on a static unit is NC9060 (004 l.438)") {
 TEST_CASE(
     "a FEED_CONT no axis can meet is reduced to the largest the catch-up plans; the "
     "moving hand-over is due in the cycle of the meeting") {
-  ipo::test::FakePort port(kBelt);
+  tracking::test::FakePort port(kBelt);
   const axes::Dynamics d{1000.0, 5000.0, 5000.0, 50000.0};
-  const std::vector<ipo::SyncAxis> ax{ipo::SyncAxis{"X", 0, d}, ipo::SyncAxis{"Y", 1, d},
-                                      ipo::SyncAxis{"Z", 2, d}};
-  ipo::ConveyorSync sync(machines::ConveyorSyncChannel{}, ax, kT);
+  const std::vector<tracking::SyncAxis> ax{
+      tracking::SyncAxis{"X", 0, d}, tracking::SyncAxis{"Y", 1, d}, tracking::SyncAxis{"Z", 2, d}};
+  tracking::ConveyorSync sync(machines::ConveyorSyncChannel{}, ax, kT);
   sync.attach(&port);
   interp::SyncIn in;
   in.conv_vel = kBelt;
@@ -251,7 +252,7 @@ TEST_CASE(
   port.latches_.push_back(0.0);
   std::uint64_t k = 0;
   REQUIRE_FALSE(sync.step(static_cast<double>(++k) * kT));
-  REQUIRE(sync.phase() == ipo::SyncPhase::latched);
+  REQUIRE(sync.phase() == tracking::SyncPhase::latched);
   // Along +X: the belt's 300 mm/s and 800 mm/s relative would need X at 1100 > V 1000.
   const std::array<axes::MotionState, 3> start{};
   const std::array<double, 3> target{200.0, 0.0, 0.0};
@@ -263,7 +264,7 @@ TEST_CASE(
   const double t_meet = sync.catch_up().duration();
   // The hand-over is announced for the cycle that contains the meeting, with its lag in it.
   while (!sync.handover_lag()) {
-    REQUIRE(sync.phase() == ipo::SyncPhase::catching_up);
+    REQUIRE(sync.phase() == tracking::SyncPhase::catching_up);
     REQUIRE_FALSE(sync.step(static_cast<double>(++k) * kT));
     REQUIRE(static_cast<double>(k) * kT < 10.0);
   }
@@ -271,7 +272,7 @@ TEST_CASE(
   CHECK(lag >= 0.0);
   CHECK(lag < kT);
   REQUIRE_FALSE(sync.step(static_cast<double>(++k) * kT));
-  CHECK(sync.phase() == ipo::SyncPhase::tracking);
+  CHECK(sync.phase() == tracking::SyncPhase::tracking);
   CHECK(sync.synchronised());
   CHECK(t_meet == doctest::Approx(static_cast<double>(k - 2) * kT + lag).epsilon(1e-12));
 }

@@ -42,27 +42,27 @@ const char* const kProgram =
 struct After {
   ipo::Status status = ipo::Status::finished;
   std::vector<double> t, x, z, vx, vz, az;
-  std::optional<ipo::RunTimeError> error;
+  std::optional<channel::RunTimeError> error;
   std::string note;
-  ipo::Verdict verdict;
+  audit::Verdict verdict;
 };
 
 After run(const char* program = kProgram, long belt_stop_at = 0) {
   machines::Machine m = interp::test::machine("laser_portal");
   m.channel.conveyor->workspace.upper[0] = 3000.0;
-  ipo::test::FakePort port(kBelt);
+  tracking::test::FakePort port(kBelt);
   port.latch_at_ = 1;
   if (belt_stop_at > 0) {
     port.v_change_at_ = belt_stop_at;
     port.v_new_ = 0.0;
   }
-  ipo::ChannelConfig cfg = ipo::channel_config(m, kT);
-  ipo::Audit audit(cfg.path.axes, kT, cfg.path.start);
-  ipo::test::ConveyorRig rig(program, m, cfg, &port, &audit);
+  channel::ChannelConfig cfg = channel::channel_config(m, kT);
+  audit::Audit audit(cfg.path.axes, kT, cfg.path.start);
+  channel::test::ConveyorRig rig(program, m, cfg, &port, &audit);
   audit.set_setpoints(&rig.ch.setpoints());
-  const ipo::Channel& ch = rig.ch;
+  const channel::Channel& ch = rig.ch;
   After r;
-  r.status = ipo::test::run_to_end(
+  r.status = channel::test::run_to_end(
       rig.ch,
       [&] {
         r.t.push_back(ch.cycle().t);
@@ -79,7 +79,7 @@ After run(const char* program = kProgram, long belt_stop_at = 0) {
   if (r.error)
     MESSAGE(r.error->id << " line " << r.error->line << " t " << r.error->t << ": "
                         << r.error->message);
-  for (const ipo::Violation& v : r.verdict.violations)
+  for (const audit::Violation& v : r.verdict.violations)
     MESSAGE("audit: axis " << int(v.axis) << " t " << v.t << " value " << v.value << " limit "
                            << v.limit);
   return r;

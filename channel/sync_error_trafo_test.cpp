@@ -32,7 +32,7 @@ using namespace ncsim;
 
 constexpr double kT = 0.001;
 
-using ipo::test::picker;
+using channel::test::picker;
 
 const char* const kGrip =
     "%t\n"                              // 1
@@ -51,17 +51,17 @@ struct After {
   ipo::Status status = ipo::Status::finished;
   std::vector<double> t;
   std::vector<std::array<double, 3>> tcp;  // FK of the joint commands (MCS)
-  std::optional<ipo::RunTimeError> error;
-  std::optional<ipo::RunTimeError> warning;
+  std::optional<channel::RunTimeError> error;
+  std::optional<channel::RunTimeError> warning;
   std::string note;
-  ipo::Verdict verdict;
+  audit::Verdict verdict;
 };
 
 After run(double belt_new, long change_at, std::optional<long> stop_at = std::nullopt,
           double x_face = 600.0) {
   machines::Machine m = picker();
   m.channel.conveyor->workspace.upper[0] = x_face;
-  ipo::test::FakePort port(100.0);
+  tracking::test::FakePort port(100.0);
   port.latch_at_ = 100;
   port.v_change_at_ = change_at;
   port.v_new_ = belt_new;
@@ -69,16 +69,16 @@ After run(double belt_new, long change_at, std::optional<long> stop_at = std::nu
     port.v_change2_at_ = *stop_at;
     port.v_new2_ = 0.0;
   }
-  ipo::ChannelConfig cfg = ipo::channel_config(m, kT);
+  channel::ChannelConfig cfg = channel::channel_config(m, kT);
   REQUIRE(cfg.path.joints);
-  const auto trafo = ipo::machine_trafo(m, cfg.path);
+  const auto trafo = program::machine_trafo(m, cfg.path);
   REQUIRE(trafo);
-  ipo::Audit audit(cfg.path.axes, kT, cfg.path.start);
+  audit::Audit audit(cfg.path.axes, kT, cfg.path.start);
   audit.set_joint_limits(cfg.path.joints->joints, cfg.path.start, true);
-  ipo::test::ConveyorRig rig(kGrip, m, std::move(cfg), &port, &audit);
-  const ipo::Channel& ch = rig.ch;
+  channel::test::ConveyorRig rig(kGrip, m, std::move(cfg), &port, &audit);
+  const channel::Channel& ch = rig.ch;
   After r;
-  r.status = ipo::test::run_to_end(
+  r.status = channel::test::run_to_end(
       rig.ch,
       [&] {
         if (ch.transformed()) audit.on_joints(ch.cycle(), ch.joints());
@@ -180,21 +180,21 @@ TEST_CASE(
 
 TEST_CASE("the TCP's after-error limits: the workspace faces on X, Y, Z, the joints' elsewhere") {
   const machines::Machine m = picker();
-  ipo::ChannelConfig cfg = ipo::channel_config(m, kT);
+  channel::ChannelConfig cfg = channel::channel_config(m, kT);
   REQUIRE(cfg.path.joints);
-  std::vector<ipo::AfterErrorAxis> joints;
+  std::vector<tracking::AfterErrorAxis> joints;
   for (std::size_t i = 0; i < cfg.path.axes.size(); ++i)
-    joints.push_back(ipo::after_error_axis(cfg.path.axes[i], {}));
+    joints.push_back(tracking::after_error_axis(cfg.path.axes[i], {}));
   ipo::AxisVec tcp{};
   tcp[0] = 100.0;
   tcp[2] = -800.0;
   const auto lim =
-      ipo::tcp_after_error_axes(cfg.path.joints->inverse, {0, 1, 2}, joints,
-                                m.channel.conveyor->workspace, Eigen::Vector3d(1, 0, 0), tcp);
+      tracking::tcp_after_error_axes(cfg.path.joints->inverse, {0, 1, 2}, joints,
+                                     m.channel.conveyor->workspace, Eigen::Vector3d(1, 0, 0), tcp);
   REQUIRE(lim);
   for (std::size_t k = 0; k < 3; ++k) {
     CAPTURE(k);
-    const ipo::AfterErrorAxis& a = (*lim)[k];
+    const tracking::AfterErrorAxis& a = (*lim)[k];
     CHECK(a.soft.max_enabled);
     CHECK(a.soft.min_enabled);
     CHECK(a.soft.max_position == m.channel.conveyor->workspace.upper[static_cast<int>(k)]);
@@ -208,7 +208,7 @@ TEST_CASE("the TCP's after-error limits: the workspace faces on X, Y, Z, the joi
   // A TCP the transform cannot map: none.
   ipo::AxisVec far{};
   far[0] = 1e5;
-  CHECK_FALSE(ipo::tcp_after_error_axes(cfg.path.joints->inverse, {0, 1, 2}, joints,
-                                        m.channel.conveyor->workspace, Eigen::Vector3d(1, 0, 0),
-                                        far));
+  CHECK_FALSE(tracking::tcp_after_error_axes(cfg.path.joints->inverse, {0, 1, 2}, joints,
+                                             m.channel.conveyor->workspace,
+                                             Eigen::Vector3d(1, 0, 0), far));
 }

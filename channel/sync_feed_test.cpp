@@ -30,11 +30,11 @@ constexpr double kT = 0.001;
 struct Run {
   ipo::Status status = ipo::Status::finished;
   std::vector<std::uint32_t> line;
-  std::vector<ipo::SyncPhase> phase;
+  std::vector<tracking::SyncPhase> phase;
   std::vector<std::array<double, 3>> x;  // command X, Y, Z (MCS)
   std::vector<double> offset_x;          // PCS1 offset on X
   std::vector<bool> x_indp;              // X driven by the INDP layer in that cycle
-  std::optional<ipo::RunTimeError> error;
+  std::optional<channel::RunTimeError> error;
   std::string source_error;
 };
 
@@ -42,7 +42,7 @@ struct Run {
 // a path override from t = 0 on a REDUCED_ABOVE_100 channel (a scenario event); null: none.
 Run run(const std::string& program, conveyor::Port& port, const char* override_percent = nullptr) {
   const machines::Machine& m = interp::test::machine("laser_portal");
-  ipo::ChannelConfig cfg = ipo::channel_config(m, kT);
+  channel::ChannelConfig cfg = channel::channel_config(m, kT);
   // The scenario outlives the player that plays it (scenario::Player keeps a reference).
   const core::SourceFile toml("s.toml", std::string("[[event]]\nat = 0.0\noverride = ") +
                                             (override_percent ? override_percent : "100") + "\n");
@@ -53,14 +53,14 @@ Run run(const std::string& program, conveyor::Port& port, const char* override_p
     cfg.path.override_type = ipo::OverrideType::reduced_above_100;
     player.emplace(*loaded.scenario);
   }
-  ipo::test::ConveyorRig rig(program, m, std::move(cfg), &port);
+  channel::test::ConveyorRig rig(program, m, std::move(cfg), &port);
   if (player) rig.ch.play(&*player);
-  const ipo::Channel& ch = rig.ch;
+  const channel::Channel& ch = rig.ch;
   Run r;
-  r.status = ipo::test::run_to_end(
+  r.status = channel::test::run_to_end(
       rig.ch,
       [&] {
-        const ipo::ConveyorSync& s = *ch.conveyor_sync();
+        const tracking::ConveyorSync& s = *ch.conveyor_sync();
         r.line.push_back(ch.cycle().line);
         r.phase.push_back(s.phase());
         r.x.push_back({ch.axes().command[0], ch.axes().command[1], ch.axes().command[2]});
@@ -96,7 +96,7 @@ TEST_CASE(
     "#SYNC OUT FEED_CONT=5 and FEED_CONT_AUTO: the desynchronisation ends in position (S-2)") {
   for (const char* out : {"#SYNC OUT [FEED_CONT=5]", "#SYNC OUT [FEED_CONT_AUTO]"}) {
     CAPTURE(out);
-    ipo::test::FakePort port(300.0);
+    tracking::test::FakePort port(300.0);
     port.latch_at_ = 1;
     const Run r = run(std::string("%t\nN10 G01 X0 Y0 Z0 F6000\nN20 #SYNC IN [CONV_VEL=18000]\n"
                                   "N30 G01 X100 Y50 F6000\nN40 G04 0.1\nN50 ") +
@@ -111,7 +111,7 @@ TEST_CASE(
 }
 
 TEST_CASE("INDP after #SYNC OUT leaves from the moving state (004 §4.7 desynchronisation)") {
-  ipo::test::FakePort port(300.0);
+  tracking::test::FakePort port(300.0);
   port.latch_at_ = 1;
   const Run r =
       run("%t\nN10 G01 X0 Y0 Z0 F6000\nN20 #SYNC IN [CONV_VEL=18000]\nN30 G01 X100 Y50 F6000\n"
@@ -150,7 +150,7 @@ std::string two_workpieces(const char* indp) {
 
 TEST_CASE(
     "INDP_SYN ... INTERRUPTIBLE is taken over by the next catch-up (on-the-fly change, S-4)") {
-  ipo::test::FakePort port(300.0);
+  tracking::test::FakePort port(300.0);
   port.latches_ = {0.0, 0.0};  // both measured values wait for their #SYNC IN
   const Run r = run(two_workpieces("INDP_SYN"), port);
   REQUIRE(r.status == ipo::Status::finished);
@@ -159,7 +159,8 @@ TEST_CASE(
   // The second catch-up starts while the INDP motion still runs: X never reaches -150.
   std::size_t catch2 = 0;
   for (std::size_t k = 1; k < r.x.size(); ++k)
-    if (r.line[k] == 10 && r.phase[k] == ipo::SyncPhase::catching_up && catch2 == 0) catch2 = k;
+    if (r.line[k] == 10 && r.phase[k] == tracking::SyncPhase::catching_up && catch2 == 0)
+      catch2 = k;
   REQUIRE(catch2 > 0);
   CHECK(r.x_indp[catch2 - 1]);  // the INDP motion ran up to the catch-up
   const double x_min = std::min_element(r.x.begin(), r.x.end(), [](const auto& a, const auto& b) {
@@ -169,7 +170,7 @@ TEST_CASE(
   // The second workpiece is tracked: X stands at PCS1 100 during its dwell.
   std::size_t dwell = 0;
   for (std::size_t k = 0; k < r.x.size(); ++k)
-    if (r.line[k] == 11 && r.phase[k] == ipo::SyncPhase::tracking) {
+    if (r.line[k] == 11 && r.phase[k] == tracking::SyncPhase::tracking) {
       ++dwell;
       CHECK(r.x[k][0] - r.offset_x[k] == doctest::Approx(100.0).epsilon(1e-9));
     }
@@ -177,7 +178,7 @@ TEST_CASE(
 }
 
 TEST_CASE("INTERRUPTIBLE with INDP_ASYN is ignored: the catch-up waits for the motion's end") {
-  ipo::test::FakePort port(300.0);
+  tracking::test::FakePort port(300.0);
   port.latches_ = {0.0, 0.0};
   const Run r = run(two_workpieces("INDP_ASYN"), port);
   REQUIRE(r.status == ipo::Status::finished);
@@ -195,7 +196,7 @@ TEST_CASE("PCS1 velocity split: full feed in +X and -X on a 300 mm/s belt keeps 
   // belt runs at 1000 - 1.1 x 300 = 670 mm/s (S-5), the one against it (belt-split, 004 l.319) at
   // v_max + CONV_VEL = 1300 mm/s relative, X at exactly its v_max in MCS (docs/conveyor.md
   // "velocity split").
-  ipo::test::FakePort port(300.0);
+  tracking::test::FakePort port(300.0);
   port.latch_at_ = 1;
   const Run r =
       run("%t\nN10 G01 X0 Y0 Z0 F6000\nN20 #SYNC IN [CONV_VEL=18000]\nN30 G01 X100 Y50 F6000\n"
@@ -206,7 +207,8 @@ TEST_CASE("PCS1 velocity split: full feed in +X and -X on a 300 mm/s belt keeps 
   for (std::size_t k = 1; k < r.x.size(); ++k) {
     CAPTURE(k);
     CHECK(std::fabs(velocity(r, k)) <= 1000.0 * (1 + 1e-9));
-    if (r.phase[k] == ipo::SyncPhase::tracking && r.phase[k - 1] == ipo::SyncPhase::tracking) {
+    if (r.phase[k] == tracking::SyncPhase::tracking &&
+        r.phase[k - 1] == tracking::SyncPhase::tracking) {
       const double v_rel = velocity(r, k) - (r.offset_x[k] - r.offset_x[k - 1]) / kT;
       v_plus = std::max(v_plus, v_rel);
       v_minus = std::min(v_minus, v_rel);
@@ -333,7 +335,7 @@ TEST_CASE(
   // raised to X's 1000 mm/s in PCS1 and X commanded 1000 + 300 mm/s in MCS (measured before:
   // 1300 mm/s). Now a PCS1 block keeps its 100 % plan above 100 %, as under #TRAFO ON
   // (docs/conveyor.md "Machining in PCS1"); below 100 % the override acts as everywhere.
-  ipo::test::FakePort port(300.0);
+  tracking::test::FakePort port(300.0);
   port.latch_at_ = 1;
   const Run r =
       run("%t\nN10 G01 X0 Y0 Z0 F6000\nN20 #SYNC IN [CONV_VEL=18000]\nN30 G01 X100 Y50 F6000\n"
@@ -344,7 +346,8 @@ TEST_CASE(
   double v_max = 0.0, v_plus = 0.0, v_off = 0.0;
   for (std::size_t k = 1; k < r.x.size(); ++k) {
     v_max = std::max(v_max, std::fabs(velocity(r, k)));
-    if (r.phase[k] == ipo::SyncPhase::tracking && r.phase[k - 1] == ipo::SyncPhase::tracking)
+    if (r.phase[k] == tracking::SyncPhase::tracking &&
+        r.phase[k - 1] == tracking::SyncPhase::tracking)
       v_plus = std::max(v_plus, velocity(r, k) - (r.offset_x[k] - r.offset_x[k - 1]) / kT);
     if (r.line[k] == 9) v_off = std::max(v_off, std::hypot(velocity(r, k), velocity(r, k, 1)));
   }
@@ -358,7 +361,7 @@ TEST_CASE(
 TEST_CASE("PCS1 velocity split on spline pieces: a B-spline at full feed keeps X within v_max") {
   // The pieces of a #SPLINE section in PCS1 get the split as a line does: without it the
   // belt's 300 mm/s came on top of a 1000 mm/s piece (found by belt-jerk2, session 24).
-  ipo::test::FakePort port(300.0);
+  tracking::test::FakePort port(300.0);
   port.latch_at_ = 1;
   const Run r =
       run("%t\nN10 G01 X0 Y0 Z0 F6000\nN20 #SYNC IN [CONV_VEL=18000]\nN30 G01 X100 Y50 F6000\n"
@@ -371,7 +374,8 @@ TEST_CASE("PCS1 velocity split on spline pieces: a B-spline at full feed keeps X
   for (std::size_t k = 1; k < r.x.size(); ++k) {
     CAPTURE(k);
     CHECK(std::fabs(velocity(r, k)) <= 1000.0 * (1 + 1e-9));
-    if (r.phase[k] == ipo::SyncPhase::tracking && r.phase[k - 1] == ipo::SyncPhase::tracking)
+    if (r.phase[k] == tracking::SyncPhase::tracking &&
+        r.phase[k - 1] == tracking::SyncPhase::tracking)
       v_plus = std::max(v_plus, velocity(r, k) - (r.offset_x[k] - r.offset_x[k - 1]) / kT);
   }
   CHECK(v_plus > 600.0);  // the pieces run near what the split leaves (670 mm/s along X)
@@ -379,7 +383,7 @@ TEST_CASE("PCS1 velocity split on spline pieces: a B-spline at full feed keeps X
 }
 
 TEST_CASE("a belt stopped while synchronised stops the machine with it (004 §2.3)") {
-  ipo::test::FakePort port(300.0);
+  tracking::test::FakePort port(300.0);
   port.latch_at_ = 1;
   port.v_change_at_ = 400;  // during the dwell on the workpiece
   port.v_new_ = 0.0;
@@ -390,7 +394,7 @@ TEST_CASE("a belt stopped while synchronised stops the machine with it (004 §2.
   REQUIRE(r.status == ipo::Status::finished);
   std::size_t still = 0;
   for (std::size_t k = 401; k < r.x.size(); ++k)
-    if (r.line[k] == 5 && r.phase[k] == ipo::SyncPhase::tracking) {
+    if (r.line[k] == 5 && r.phase[k] == tracking::SyncPhase::tracking) {
       ++still;
       CHECK(velocity(r, k) == doctest::Approx(0.0));
       CHECK(r.x[k][0] - r.offset_x[k] == doctest::Approx(100.0).epsilon(1e-9));
@@ -419,7 +423,7 @@ class FilterPort final : public conveyor::Port {
   std::optional<double> take_latch() noexcept override { return belt.take_latch(); }
   void set_reduced_filter(bool on) noexcept override { reduced = on; }
   const std::optional<conveyor::PortError>& error() const noexcept override { return belt.error(); }
-  ipo::test::FakePort belt;
+  tracking::test::FakePort belt;
   bool reduced = false;
   std::vector<bool> reduced_at_step;
   std::vector<double> t_at_step;  ///< [s]
@@ -440,10 +444,10 @@ TEST_CASE("a feed hold while synchronised switches the conveyor's reduced filter
   const core::SourceFile file("t.nc", program);
   const machines::Machine& m = interp::test::machine("laser_portal");
   interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
+  program::ProgramSource src(in, m);
   scenario::Player player(*loaded.scenario);
   src.answer_barriers_from(&player.ve(), true);
-  ipo::Channel ch(ipo::channel_config(m, kT), src);
+  channel::Channel ch(channel::channel_config(m, kT), src);
   FilterPort port(300.0);
   port.belt.latch_at_ = 1;
   ch.attach_conveyor(&port);
@@ -453,7 +457,7 @@ TEST_CASE("a feed hold while synchronised switches the conveyor's reduced filter
   for (int guard = 0; guard < 100'000 && st == ipo::Status::running; ++guard) {
     st = ch.step();
     held.push_back(ch.cycle().held);
-    tracking.push_back(ch.conveyor_sync()->phase() == ipo::SyncPhase::tracking);
+    tracking.push_back(ch.conveyor_sync()->phase() == tracking::SyncPhase::tracking);
   }
   REQUIRE(st == ipo::Status::finished);
   // The switch is handed over at the start of the cycle; the Port is stepped later in it.
@@ -486,10 +490,10 @@ TEST_CASE(
   const core::SourceFile file("t.nc", program);
   const machines::Machine& m = interp::test::machine("laser_portal");
   interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
+  program::ProgramSource src(in, m);
   scenario::Player player(*loaded.scenario);
   src.answer_barriers_from(&player.ve(), true);
-  ipo::Channel ch(ipo::channel_config(m, kT), src);
+  channel::Channel ch(channel::channel_config(m, kT), src);
   FilterPort port(300.0);
   port.belt.latch_at_ = 1;
   ch.attach_conveyor(&port);

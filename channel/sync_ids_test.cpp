@@ -41,13 +41,13 @@ const char* const kPick =
 struct Outcome {
   ipo::Status status = ipo::Status::finished;
   std::optional<core::Diagnostic> source_error;
-  std::optional<ipo::RunTimeError> error;
+  std::optional<channel::RunTimeError> error;
 };
 
 /// Runs the rig to its end: the status, the program error, the run-time error.
-Outcome outcome(ipo::test::ConveyorRig& rig) {
+Outcome outcome(channel::test::ConveyorRig& rig) {
   Outcome r;
-  r.status = ipo::test::run_to_end(rig.ch, {}, 100'000);
+  r.status = channel::test::run_to_end(rig.ch, {}, 100'000);
   if (const core::Diagnostic* d = rig.src.error()) r.source_error = *d;
   r.error = rig.ch.run_time_error();
   return r;
@@ -64,9 +64,9 @@ Outcome run(double v_joint) {
     if (a.name == "Y" || a.name == "Z") a.dynamics.v_max = a.dynamics.v_rapid = v_joint;
   // The belt itself crawls (10 mm/s, below CONV_VEL: no 50653) so that the catch-up runs on
   // the slow joints; the reserve is for the belt CONV_VEL allows (1.1 x 300 mm/s).
-  ipo::test::FakePort port(10.0);
+  tracking::test::FakePort port(10.0);
   port.latch_at_ = 100;
-  ipo::test::ConveyorRig rig(kPick, m, ipo::channel_config(m, kT), &port);
+  channel::test::ConveyorRig rig(kPick, m, channel::channel_config(m, kT), &port);
   return outcome(rig);
 }
 
@@ -107,9 +107,9 @@ Outcome catch_up(double v_x) {
   machines::Machine m = interp::test::machine("laser_portal");
   for (machines::AxisParams& a : m.axes)
     if (a.name == "X") a.dynamics.v_max = v_x;
-  ipo::test::FakePort port(108.0);
+  tracking::test::FakePort port(108.0);
   port.latch_at_ = 1;
-  ipo::test::ConveyorRig rig(kCatchUp, m, ipo::channel_config(m, kT), &port);
+  channel::test::ConveyorRig rig(kCatchUp, m, channel::channel_config(m, kT), &port);
   return outcome(rig);
 }
 

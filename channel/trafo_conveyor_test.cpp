@@ -37,9 +37,9 @@ using namespace ncsim;
 
 constexpr double kT = 0.001;
 
-using ipo::test::picker;
-using ipo::test::track;
-using ipo::test::Tracked;
+using channel::test::picker;
+using channel::test::track;
+using channel::test::Tracked;
 
 // A pick on the belt at 100 mm/s (CONV_VEL 6000 mm/min), as seed 004 §4.9.2 but slower.
 const char* const kPick =
@@ -59,13 +59,13 @@ const char* const kPick =
 }  // namespace
 
 TEST_CASE("under #TRAFO ON the TCP catches the workpiece up, follows it in PCS1 and leaves it") {
-  const Tracked r = ipo::test::track_clean(kPick, 100.0);
+  const Tracked r = channel::test::track_clean(kPick, 100.0);
   std::size_t catching = 0, gripping = 0, down = 0, departing = 0;
   for (std::size_t k = 1; k < r.tcp.size(); ++k) {
     CAPTURE(k);
-    if (r.phase[k] == ipo::SyncPhase::catching_up) ++catching;
-    if (r.phase[k] == ipo::SyncPhase::departing) ++departing;
-    if (r.phase[k] != ipo::SyncPhase::tracking) continue;
+    if (r.phase[k] == tracking::SyncPhase::catching_up) ++catching;
+    if (r.phase[k] == tracking::SyncPhase::departing) ++departing;
+    if (r.phase[k] != tracking::SyncPhase::tracking) continue;
     // The TCP in PCS1: the joints' forward transform minus the belt's travel.
     const double x1 = r.tcp[k][0] - r.offset[k][0];
     if (r.line[k] == 8) {  // the dwell: the TCP stands on the workpiece, moving with the belt
@@ -112,7 +112,7 @@ TEST_CASE("G00 in PCS1 on slow drives: the joints stay inside V, checked every c
   for (machines::AxisParams& a : slow.axes)
     if (a.name == "X" || a.name == "Y" || a.name == "Z")
       a.dynamics.v_max = a.dynamics.v_rapid = 120.0;
-  ipo::test::FakePort port(300.0);
+  tracking::test::FakePort port(300.0);
   port.latch_at_ = 100;
   const Tracked r = track(program, &port, slow);
   if (r.error) MESSAGE(r.error->id << ": " << r.error->message);
@@ -137,9 +137,9 @@ TEST_CASE("NC6210's check: the first joint beyond its V, max(A+, A-) or J, none 
   s.v = {120.0, -120.0, 0.0};
   s.a = {2000.0, -2000.0, 0.0};
   s.j = {5e5, -5e5, 0.0};
-  CHECK_FALSE(ipo::joint_overrun(s, d));  // exactly at V, max(A+, A-) and J: no overrun
+  CHECK_FALSE(tracking::joint_overrun(s, d));  // exactly at V, max(A+, A-) and J: no overrun
   s.v[1] = -120.01;
-  auto o = ipo::joint_overrun(s, d);
+  auto o = tracking::joint_overrun(s, d);
   REQUIRE(o);
   CHECK(o->joint == 1);
   CHECK(o->quantity == 'v');
@@ -147,7 +147,7 @@ TEST_CASE("NC6210's check: the first joint beyond its V, max(A+, A-) or J, none 
   CHECK(o->limit == doctest::Approx(120.0));
   s.v[1] = 0.0;
   s.a[2] = 2000.5;
-  o = ipo::joint_overrun(s, d);
+  o = tracking::joint_overrun(s, d);
   REQUIRE(o);
   CHECK(o->joint == 2);
   CHECK(o->quantity == 'a');
@@ -156,13 +156,13 @@ TEST_CASE("NC6210's check: the first joint beyond its V, max(A+, A-) or J, none 
   // stencil is not jerk-limited or holds a documented path step (jerk = false).
   s.a[2] = 0.0;
   s.j[0] = 5.001e5;
-  o = ipo::joint_overrun(s, d);
+  o = tracking::joint_overrun(s, d);
   REQUIRE(o);
   CHECK(o->joint == 0);
   CHECK(o->quantity == 'j');
   CHECK(o->value == doctest::Approx(5.001e5));
   CHECK(o->limit == doctest::Approx(5e5));
-  CHECK_FALSE(ipo::joint_overrun(s, d, false));
+  CHECK_FALSE(tracking::joint_overrun(s, d, false));
 }
 
 TEST_CASE("NC6210 names a joint's jerk: a belt velocity step under the grip, v and a inside") {
@@ -171,15 +171,15 @@ TEST_CASE("NC6210 names a joint's jerk: a belt velocity step under the grip, v a
   // step moves the joints' setpoints by a second difference far inside their A but a third
   // difference beyond their J: the first overrun is the jerk of a joint, as the audit
   // measures it.
-  const ipo::test::Tracked clean = ipo::test::track_clean(kPick, 100.0);
+  const channel::test::Tracked clean = channel::test::track_clean(kPick, 100.0);
   long grip = -1;
   for (std::size_t k = 0; k < clean.line.size(); ++k)
-    if (clean.line[k] == 8 && clean.phase[k] == ipo::SyncPhase::tracking) {
+    if (clean.line[k] == 8 && clean.phase[k] == tracking::SyncPhase::tracking) {
       grip = static_cast<long>(k);
       break;
     }
   REQUIRE(grip > 0);
-  ipo::test::FakePort port(100.0);
+  tracking::test::FakePort port(100.0);
   port.latch_at_ = 100;
   port.v_change_at_ = grip + 100;
   port.v_new_ = 108.0;
@@ -198,7 +198,7 @@ TEST_CASE("NC6210 names a joint's jerk: a belt velocity step under the grip, v a
   MESSAGE(r.verdict.violation_count << " audit violations");
   REQUIRE(r.warning);
   MESSAGE(r.warning->message);
-  CHECK(r.warning->id == ipo::kTrafoSyncOverrunId);
+  CHECK(r.warning->id == tracking::kTrafoSyncOverrunId);
   CHECK(r.warning->line == 8);
   CHECK(r.warning->message.find("|j|") != std::string::npos);
   CHECK(r.warning->message.find("500000") != std::string::npos);
@@ -207,7 +207,7 @@ TEST_CASE("NC6210 names a joint's jerk: a belt velocity step under the grip, v a
   CHECK(r.verdict.violation_count > 0);
   for (const auto& v : r.verdict.violations) {
     CHECK(v.joint);
-    CHECK(v.quantity == ipo::Quantity::jerk);
+    CHECK(v.quantity == audit::Quantity::jerk);
   }
 }
 
@@ -218,8 +218,8 @@ TEST_CASE("the catch-up's TCP dynamics keep every joint inside its own at the po
   // keeps the joints' q' = J v, q'' = J a + H(v, v) and q''' = J j + 3 H(v, a) + T(v, v, v)
   // inside their V, A and J: the third-derivative term included.
   const machines::Machine m = picker();
-  const ipo::ChannelConfig cfg = ipo::channel_config(m, kT);
-  const auto trafo = ipo::machine_trafo(m, cfg.path);
+  const channel::ChannelConfig cfg = channel::channel_config(m, kT);
+  const auto trafo = program::machine_trafo(m, cfg.path);
   REQUIRE(trafo);
   std::array<axes::Dynamics, 4> joints{};
   for (std::size_t i = 0; i < 4; ++i)
@@ -233,8 +233,8 @@ TEST_CASE("the catch-up's TCP dynamics keep every joint inside its own at the po
     p[0] = 250.0 * u(rng);
     p[1] = 250.0 * u(rng);
     p[2] = -750.0 + 80.0 * u(rng);
-    const auto d = ipo::tcp_dynamics(trafo->limits.inverse, trafo->xyz, std::span(joints.data(), 4),
-                                     std::span(&p, 1));
+    const auto d = tracking::tcp_dynamics(trafo->limits.inverse, trafo->xyz,
+                                          std::span(joints.data(), 4), std::span(&p, 1));
     REQUIRE(d);
     for (unsigned signs = 0; signs < 512; ++signs) {
       ipo::AxisVec v{}, a{}, j{};

@@ -30,39 +30,40 @@ using namespace ncsim;
 constexpr double kT = 0.001;
 constexpr double kBelt = 100.0;  // [mm/s] along +X (CONV_VEL 6000 mm/min)
 
-using ipo::test::picker;
+using channel::test::picker;
 
 struct Run {
   ipo::Status status = ipo::Status::finished;
-  std::vector<ipo::SyncPhase> phase;
+  std::vector<tracking::SyncPhase> phase;
   std::vector<std::array<double, 3>> tcp;  // FK of the joint commands (MCS)
   std::vector<double> v_relative;          // ConveyorSync::v_relative()
   std::vector<double> t;                   // the cycle's time [s]
-  std::optional<ipo::RunTimeError> error;
-  std::optional<ipo::RunTimeError> warning;  // NC6210
-  ipo::Verdict verdict;
+  std::optional<channel::RunTimeError> error;
+  std::optional<channel::RunTimeError> warning;  // NC6210
+  audit::Verdict verdict;
   std::size_t handover = 0;  // the first tracking cycle after the catch-up
 };
 
 Run run(const std::string& program, const machines::Machine& m = picker()) {
-  ipo::test::FakePort port(kBelt);
+  tracking::test::FakePort port(kBelt);
   port.latch_at_ = 100;
-  ipo::ChannelConfig cfg = ipo::channel_config(m, kT);
+  channel::ChannelConfig cfg = channel::channel_config(m, kT);
   REQUIRE(cfg.path.joints);
-  const auto trafo = ipo::machine_trafo(m, cfg.path);
+  const auto trafo = program::machine_trafo(m, cfg.path);
   REQUIRE(trafo);
-  ipo::Audit audit(cfg.path.axes, kT, cfg.path.start);
+  audit::Audit audit(cfg.path.axes, kT, cfg.path.start);
   audit.set_joint_limits(cfg.path.joints->joints, cfg.path.start, true);
-  ipo::test::ConveyorRig rig(program, m, std::move(cfg), &port, &audit);
-  const ipo::Channel& ch = rig.ch;
+  channel::test::ConveyorRig rig(program, m, std::move(cfg), &port, &audit);
+  const channel::Channel& ch = rig.ch;
   Run r;
-  r.status = ipo::test::run_to_end(
+  r.status = channel::test::run_to_end(
       rig.ch,
       [&] {
         if (ch.transformed()) audit.on_joints(ch.cycle(), ch.joints());
-        const ipo::ConveyorSync& s = *ch.conveyor_sync();
-        if (r.handover == 0 && !r.phase.empty() && r.phase.back() == ipo::SyncPhase::catching_up &&
-            s.phase() == ipo::SyncPhase::tracking)
+        const tracking::ConveyorSync& s = *ch.conveyor_sync();
+        if (r.handover == 0 && !r.phase.empty() &&
+            r.phase.back() == tracking::SyncPhase::catching_up &&
+            s.phase() == tracking::SyncPhase::tracking)
           r.handover = r.phase.size();
         r.phase.push_back(s.phase());
         const auto& q = ch.axes().command;
@@ -80,7 +81,7 @@ Run run(const std::string& program, const machines::Machine& m = picker()) {
     MESSAGE(r.error->id << " line " << r.error->line << " t " << r.error->t << ": "
                         << r.error->message);
   if (r.warning) MESSAGE("warning " << r.warning->id << ": " << r.warning->message);
-  for (const ipo::Violation& v : r.verdict.violations)
+  for (const audit::Violation& v : r.verdict.violations)
     MESSAGE("audit: axis " << int(v.axis) << " t " << v.t << " value " << v.value << " limit "
                            << v.limit);
   return r;
@@ -92,7 +93,7 @@ std::array<double, 2> relative(const Run& r, std::size_t k) {
 }
 
 // Waiting at X-150, the catch-up along +X to X-100 (PCS1), then `contour`.
-std::string program(const char* sync_in, const char* contour) {
+std::string nc_program(const char* sync_in, const char* contour) {
   return std::string(
              "%t\nN10 #KIN ID[37]\nN20 #TRAFO ON\nN30 G01 X-150 Y0 Z-700 F60000\n"
              "N40 #SYNC IN [CONV_VEL=6000 ") +
@@ -102,7 +103,7 @@ std::string program(const char* sync_in, const char* contour) {
 
 // The path's VELOJUMP velocity of a 90 degree corner between X and Y (000 l.108).
 double velojump_90(const machines::Machine& m) {
-  const ipo::ChannelConfig cfg = ipo::channel_config(m, kT);
+  const channel::ChannelConfig cfg = channel::channel_config(m, kT);
   double v = 1e300;
   for (std::size_t i = 0; i < 2; ++i) {
     const planner::AxisLimits& l = cfg.path.axes[i];
@@ -114,7 +115,7 @@ double velojump_90(const machines::Machine& m) {
 }  // namespace
 
 TEST_CASE("#TRAFO ON, FEED_CONT=600 straight on: the TCP meets the workpiece at 10 mm/s") {
-  const Run r = run(program("FEED_CONT=600", "N60 G01 X-50 F600\n"));
+  const Run r = run(nc_program("FEED_CONT=600", "N60 G01 X-50 F600\n"));
   REQUIRE(r.status == ipo::Status::finished);
   REQUIRE_FALSE(r.error);
   REQUIRE(r.handover > 2);
@@ -141,7 +142,7 @@ TEST_CASE("#TRAFO ON, FEED_CONT=6000 into a 90 degree corner: the path's VELOJUM
   const machines::Machine m = picker();
   const double v_jump = velojump_90(m);
   REQUIRE(v_jump < 100.0);  // the reduction shows
-  const Run r = run(program("FEED_CONT=6000", "N60 G01 Y20 F6000\n"), m);
+  const Run r = run(nc_program("FEED_CONT=6000", "N60 G01 Y20 F6000\n"), m);
   REQUIRE(r.status == ipo::Status::finished);
   REQUIRE_FALSE(r.error);
   REQUIRE(r.handover > 2);
@@ -152,7 +153,7 @@ TEST_CASE("#TRAFO ON, FEED_CONT=6000 into a 90 degree corner: the path's VELOJUM
   // After it the TCP leaves along +Y from v_jump, accelerating towards F within Y's A.
   const auto after = relative(r, r.handover + 1);
   CHECK(std::fabs(after[0]) < 1e-3);
-  const double a_y = ipo::channel_config(m, kT).path.axes[1].a_max;
+  const double a_y = channel::channel_config(m, kT).path.axes[1].a_max;
   CHECK(after[1] >= v_jump * 0.98);
   CHECK(after[1] <= v_jump + 2.0 * a_y * kT);
   CHECK_FALSE(r.warning);
@@ -161,7 +162,7 @@ TEST_CASE("#TRAFO ON, FEED_CONT=6000 into a 90 degree corner: the path's VELOJUM
 
 TEST_CASE("#TRAFO ON, FEED_CONT=600 into a very short block: what its braking allows") {
   const machines::Machine m = picker();
-  const Run r = run(program("FEED_CONT=600", "N60 G01 X-99.99 F600\n"), m);
+  const Run r = run(nc_program("FEED_CONT=600", "N60 G01 X-99.99 F600\n"), m);
   REQUIRE(r.status == ipo::Status::finished);
   REQUIRE_FALSE(r.error);
   REQUIRE(r.handover > 2);
@@ -174,7 +175,7 @@ TEST_CASE("#TRAFO ON, FEED_CONT=600 into a very short block: what its braking al
   // Over the block the TCP covers 0.01 mm relative to the workpiece and then stands on it.
   double s = 0.0;
   std::size_t k = r.handover;
-  for (; k < r.tcp.size() && r.phase[k] == ipo::SyncPhase::tracking; ++k) {
+  for (; k < r.tcp.size() && r.phase[k] == tracking::SyncPhase::tracking; ++k) {
     const double dv = relative(r, k)[0];
     s += dv * kT;
     if (std::fabs(dv) < 1e-9 && s > 0.005) break;
@@ -185,7 +186,7 @@ TEST_CASE("#TRAFO ON, FEED_CONT=600 into a very short block: what its braking al
 
 TEST_CASE("#TRAFO ON, FEED_CONT_AUTO: the first block's feed, and at rest before a dwell") {
   SUBCASE("straight on at the block's feed") {
-    const Run r = run(program("FEED_CONT_AUTO", "N60 G01 X0 F3000\n"));
+    const Run r = run(nc_program("FEED_CONT_AUTO", "N60 G01 X0 F3000\n"));
     REQUIRE(r.status == ipo::Status::finished);
     REQUIRE_FALSE(r.error);
     REQUIRE(r.handover > 2);
@@ -197,7 +198,7 @@ TEST_CASE("#TRAFO ON, FEED_CONT_AUTO: the first block's feed, and at rest before
     CHECK(r.verdict.violation_count == 0);
   }
   SUBCASE("nothing to continue into (a dwell follows): at rest, as FEED_CONT=0") {
-    const Run r = run(program("FEED_CONT_AUTO", ""));
+    const Run r = run(nc_program("FEED_CONT_AUTO", ""));
     REQUIRE(r.status == ipo::Status::finished);
     REQUIRE_FALSE(r.error);
     CHECK(r.handover > 2);
@@ -256,9 +257,9 @@ TEST_CASE(
     // Every joint keeps its v, a and j throughout (the audit's own checks and tolerance): the
     // catch-up by its TCP dynamics (tcp_dynamics covers the third-derivative term), the PCS1
     // block after the hand-over by the belt's share of the joints' velocity, acceleration and
-    // jerk reserved for it (belt-jerk: ipo::belt_share, docs/conveyor.md "Machining in PCS1").
+    // jerk reserved for it (belt-jerk: tracking::belt_share, docs/conveyor.md "Machining in PCS1").
     CHECK(r.verdict.violation_count == 0);
-    for (const ipo::AxisAudit& j : r.verdict.joints)
+    for (const audit::AxisAudit& j : r.verdict.joints)
       if (j.j_limit > 0.0) jerk = std::max(jerk, std::max(j.j_closed, j.j_diff) / j.j_limit);
   }
   MESSAGE("largest joint |j| / J over the runs: " << jerk);

@@ -1,7 +1,8 @@
 // Machining in PCS1 under #TRAFO ON (issue 14; docs/conveyor.md "Conveyor tracking under
 // #TRAFO ON", "Machining in PCS1"): the belt's share of the joints' acceleration and jerk on a
-// PCS1 block (ipo::belt_share: the travel it covers, the overload behind NC6211), spline pieces,
-// the tolerance ball between two PCS1 blocks, G00 and G93 in PCS1 and an override above 100 %.
+// PCS1 block (tracking::belt_share: the travel it covers, the overload behind NC6211), spline
+// pieces, the tolerance ball between two PCS1 blocks, G00 and G93 in PCS1 and an override above 100
+// %.
 
 #include <doctest/doctest.h>
 
@@ -35,10 +36,10 @@ using namespace ncsim;
 
 constexpr double kT = 0.001;
 
-using ipo::test::check_far_side;
-using ipo::test::picker;
-using ipo::test::track_clean;
-using ipo::test::Tracked;
+using channel::test::check_far_side;
+using channel::test::picker;
+using channel::test::track_clean;
+using channel::test::Tracked;
 
 }  // namespace
 
@@ -68,8 +69,8 @@ TEST_CASE("a PCS1 block the belt carries towards the far side keeps the joints' 
 TEST_CASE(
     "B-spline pieces in PCS1 the belt carries towards the far side keep the joints' a and j") {
   // docs/conveyor.md "Machining in PCS1": a spline piece in PCS1 runs with the belt on top as a
-  // line or an arc does, so it gets the same shares (ipo::belt_share samples the piece's curve).
-  // A B-spline section after a 0.5 s dwell in PCS1, from X-450 down to Z-880 as in the test
+  // line or an arc does, so it gets the same shares (tracking::belt_share samples the piece's
+  // curve). A B-spline section after a 0.5 s dwell in PCS1, from X-450 down to Z-880 as in the test
   // above, on a 300 mm/s belt. Without the shares on the pieces the joints' jerk reached 104.1 %
   // of J, 18 audit violations (measured); with them 69.3 %, none. (On a 500 mm/s belt the
   // capped pieces run long enough for the belt to carry them out of the workspace: NC9052.)
@@ -94,8 +95,8 @@ namespace {
 // The block of the test above at belt travel 0 (MCS), on the picker's transform.
 struct ShareRig {
   machines::Machine m = picker();
-  ipo::ChannelConfig cfg = ipo::channel_config(m, kT);
-  std::optional<ipo::MachineTrafo> trafo = ipo::machine_trafo(m, cfg.path);
+  channel::ChannelConfig cfg = channel::channel_config(m, kT);
+  std::optional<program::MachineTrafo> trafo = program::machine_trafo(m, cfg.path);
   planner::Move move;
   ShareRig() {
     move.axis_count = static_cast<std::uint8_t>(cfg.path.axes.size());
@@ -109,18 +110,19 @@ struct ShareRig {
     move.feed = 1000.0;
     move.transformed = true;
   }
-  std::variant<ipo::BeltShare, ipo::BeltOverload> share(
-      const ipo::BeltCarry& carry, std::span<const planner::AxisLimits> joints) const {
-    return ipo::belt_share(planner::Segment::from_move(move), move.feed, trafo->limits.inverse,
-                           trafo->xyz, joints, carry);
+  std::variant<tracking::BeltShare, tracking::BeltOverload> share(
+      const tracking::BeltCarry& carry, std::span<const planner::AxisLimits> joints) const {
+    return tracking::belt_share(planner::Segment::from_move(move), move.feed, trafo->limits.inverse,
+                                trafo->xyz, joints, carry);
   }
-  std::variant<ipo::BeltShare, ipo::BeltOverload> share(const ipo::BeltCarry& carry) const {
+  std::variant<tracking::BeltShare, tracking::BeltOverload> share(
+      const tracking::BeltCarry& carry) const {
     return share(carry, trafo->limits.joints);
   }
 };
 
-ipo::BeltCarry carry_in(double x_lo, double x_hi) {
-  ipo::BeltCarry c;
+tracking::BeltCarry carry_in(double x_lo, double x_hi) {
+  tracking::BeltCarry c;
   c.v_belt = 550.0;  // 1.1 x CONV_VEL 30000 mm/min
   c.workspace = {{{x_lo, -600.0, -900.0}, {x_hi, 600.0, 0.0}}};
   return c;
@@ -137,12 +139,12 @@ TEST_CASE("the belt's share covers the travel from the latch forward to the work
   const auto full = rig.share(carry_in(-600.0, 600.0));
   const auto behind = rig.share(carry_in(-2000.0, 600.0));  // the box reaches far behind
   const auto near = rig.share(carry_in(-600.0, -199.0));    // the face just past the block
-  REQUIRE(std::holds_alternative<ipo::BeltShare>(full));
-  REQUIRE(std::holds_alternative<ipo::BeltShare>(behind));
-  REQUIRE(std::holds_alternative<ipo::BeltShare>(near));
-  const ipo::BeltShare& f = std::get<ipo::BeltShare>(full);
-  const ipo::BeltShare& b = std::get<ipo::BeltShare>(behind);
-  const ipo::BeltShare& n = std::get<ipo::BeltShare>(near);
+  REQUIRE(std::holds_alternative<tracking::BeltShare>(full));
+  REQUIRE(std::holds_alternative<tracking::BeltShare>(behind));
+  REQUIRE(std::holds_alternative<tracking::BeltShare>(near));
+  const tracking::BeltShare& f = std::get<tracking::BeltShare>(full);
+  const tracking::BeltShare& b = std::get<tracking::BeltShare>(behind);
+  const tracking::BeltShare& n = std::get<tracking::BeltShare>(near);
   double grows = 0.0;  // the largest ratio of a joint's jerk share, full travel over near
   for (std::size_t i = 0; i < 3; ++i) {
     CAPTURE(i);
@@ -166,13 +168,13 @@ TEST_CASE("NC6211's overload: the belt's own jerk beyond a joint's J at a travel
   REQUIRE(rig.trafo);
   std::vector<planner::AxisLimits> joints = rig.trafo->limits.joints;
   const auto ok = rig.share(carry_in(-600.0, 600.0), joints);
-  REQUIRE(std::holds_alternative<ipo::BeltShare>(ok));
-  CHECK(std::get<ipo::BeltShare>(ok).feed > 0.0);
+  REQUIRE(std::holds_alternative<tracking::BeltShare>(ok));
+  CHECK(std::get<tracking::BeltShare>(ok).feed > 0.0);
   for (planner::AxisLimits& l : joints)
     l.j_max = 2000.0;  // [deg/s^3]
   const auto over = rig.share(carry_in(-600.0, 600.0), joints);
-  REQUIRE(std::holds_alternative<ipo::BeltOverload>(over));
-  const ipo::BeltOverload& o = std::get<ipo::BeltOverload>(over);
+  REQUIRE(std::holds_alternative<tracking::BeltOverload>(over));
+  const tracking::BeltOverload& o = std::get<tracking::BeltOverload>(over);
   MESSAGE("joint " << o.joint << " " << std::string(1, o.quantity) << " " << o.needed << " of "
                    << o.limit << " at X" << o.tcp[0] << " moved " << o.shift);
   CHECK(o.quantity == 'j');
@@ -190,7 +192,7 @@ std::vector<planner::Move> moves_of(const std::string& program) {
   const machines::Machine m = picker();
   const core::SourceFile file("t.nc", program);
   interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
+  program::ProgramSource src(in, m);
   std::vector<planner::Move> out;
   ipo::Item item;
   while (src.next(item))
@@ -238,7 +240,7 @@ TEST_CASE("a tolerance ball between two PCS1 blocks gets the belt's share on its
   const double devs[] = {5.0, 40.0};
   const ShareRig rig;
   REQUIRE(rig.trafo);
-  ipo::BeltCarry carry;
+  tracking::BeltCarry carry;
   carry.v_belt = 1.1 * belt;
   carry.workspace = {{{-600.0, -600.0, -900.0}, {600.0, 600.0, 0.0}}};  // picker()'s
   for (const double dev : devs) {
@@ -252,10 +254,10 @@ TEST_CASE("a tolerance ball between two PCS1 blocks gets the belt's share on its
         planner::make_blend(in_path, out_path, dev, in_path.length() / 2, out_path.length() / 2);
     REQUIRE(ball);
     const auto ball_share =
-        ipo::belt_share(ball->curve, std::min(in.feed, out.feed), rig.trafo->limits.inverse,
-                        rig.trafo->xyz, rig.trafo->limits.joints, carry);
-    REQUIRE(std::holds_alternative<ipo::BeltShare>(ball_share));
-    const ipo::BeltShare& s = std::get<ipo::BeltShare>(ball_share);
+        tracking::belt_share(ball->curve, std::min(in.feed, out.feed), rig.trafo->limits.inverse,
+                             rig.trafo->xyz, rig.trafo->limits.joints, carry);
+    REQUIRE(std::holds_alternative<tracking::BeltShare>(ball_share));
+    const tracking::BeltShare& s = std::get<tracking::BeltShare>(ball_share);
     REQUIRE(in.belt_joints);
     for (std::size_t i = 0; i < 3; ++i) {
       CAPTURE(i);
@@ -277,7 +279,7 @@ TEST_CASE(
   const double belt = 500.0;  // [mm/s]
   const ShareRig rig;
   REQUIRE(rig.trafo);
-  ipo::BeltCarry carry;
+  tracking::BeltCarry carry;
   carry.v_belt = 1.1 * belt;
   carry.workspace = {{{-600.0, -600.0, -900.0}, {600.0, 600.0, 0.0}}};  // picker()'s
   const std::vector<planner::Move> moves =
@@ -294,10 +296,10 @@ TEST_CASE(
   REQUIRE(ball);
   CHECK(ball->cut_in == doctest::Approx(40.0));
   const auto ball_share =
-      ipo::belt_share(ball->curve, std::min(in.feed, out.feed), rig.trafo->limits.inverse,
-                      rig.trafo->xyz, rig.trafo->limits.joints, carry);
-  REQUIRE(std::holds_alternative<ipo::BeltShare>(ball_share));
-  const ipo::BeltShare& s = std::get<ipo::BeltShare>(ball_share);
+      tracking::belt_share(ball->curve, std::min(in.feed, out.feed), rig.trafo->limits.inverse,
+                           rig.trafo->xyz, rig.trafo->limits.joints, carry);
+  REQUIRE(std::holds_alternative<tracking::BeltShare>(ball_share));
+  const tracking::BeltShare& s = std::get<tracking::BeltShare>(ball_share);
   REQUIRE(in.belt_joints);
   for (std::size_t i = 0; i < 3; ++i) {
     CAPTURE(i);
@@ -363,7 +365,7 @@ TEST_CASE("a tolerance ball between two PCS1 blocks near the far side keeps the 
 
 TEST_CASE("G00 in PCS1 the belt carries towards the far side keeps the joints' a and j") {
   // docs/conveyor.md "Machining in PCS1": a G00 runs each joint at its rapid rule (000 l.360);
-  // the belt's share is taken of those limits as of a G01's (ipo::belt_share), the velocity
+  // the belt's share is taken of those limits as of a G01's (tracking::belt_share), the velocity
   // share caps the rapid (planner/joint_limits.cpp). Before (the G00 unreserved) the third case
   // reached 108.8 % of J, 55 audit violations (measured); with the shares 16.0 %, none.
   struct Case {

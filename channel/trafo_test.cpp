@@ -26,16 +26,16 @@ namespace {
 
 using namespace ncsim;
 
-using ipo::test::Recorder;
+using channel::test::Recorder;
 
 struct Result {
   ipo::Status status = ipo::Status::finished;
   std::vector<ipo::Cycle> cycles;
-  std::vector<ipo::AxesState> axes;  ///< after each cycle
-  std::vector<bool> transformed;     ///< per cycle
-  ipo::Verdict verdict;
+  std::vector<channel::AxesState> axes;  ///< after each cycle
+  std::vector<bool> transformed;         ///< per cycle
+  audit::Verdict verdict;
   std::optional<core::Diagnostic> source_error;
-  std::optional<ipo::RunTimeError> error;
+  std::optional<channel::RunTimeError> error;
 };
 
 Result run(const std::string& text, scenario::Player* player = nullptr,
@@ -43,18 +43,18 @@ Result run(const std::string& text, scenario::Player* player = nullptr,
   const core::SourceFile file("t.nc", text);
   const machines::Machine& m = interp::test::machine("delta_picker");
   interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
-  ipo::ChannelConfig cfg = ipo::channel_config(m, 0.001);
+  program::ProgramSource src(in, m);
+  channel::ChannelConfig cfg = channel::channel_config(m, 0.001);
   cfg.path.override_type = type;
   REQUIRE(cfg.path.joints);
-  ipo::Audit audit(cfg.path.axes, 0.001, cfg.path.start);
+  audit::Audit audit(cfg.path.axes, 0.001, cfg.path.start);
   audit.set_joint_limits(cfg.path.joints->joints, cfg.path.start, true);
   Recorder rec;
-  ipo::test::AuditedRecorder both(&audit, &rec);
-  ipo::Channel ch(std::move(cfg), src, &both);
+  channel::test::AuditedRecorder both(&audit, &rec);
+  channel::Channel ch(std::move(cfg), src, &both);
   ch.play(player);
   Result r;
-  r.status = ipo::test::run_to_end(ch, [&] {
+  r.status = channel::test::run_to_end(ch, [&] {
     if (ch.transformed()) audit.on_joints(ch.cycle(), ch.joints());
     r.axes.push_back(ch.axes());
     r.transformed.push_back(ch.transformed());
@@ -99,7 +99,7 @@ TEST_CASE("a delta-robot move under #TRAFO ON keeps every joint inside its own v
   const machines::Machine& m = interp::test::machine("delta_picker");
   double used = 0.0;
   for (std::size_t i = 0; i < 3; ++i) {
-    const ipo::AxisAudit& j = r.verdict.joints[i];
+    const audit::AxisAudit& j = r.verdict.joints[i];
     const machines::Dynamics& d = m.axes[i].dynamics;
     CHECK(std::max(j.v_closed, j.v_diff) <= d.v_max * (1 + 1e-9));
     CHECK(std::max(j.a_closed, j.a_diff) <= j.a_limit * (1 + 1e-9));

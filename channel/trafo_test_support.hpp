@@ -25,7 +25,7 @@
 #include "scenario/player.hpp"
 #include "tracking/test_port.hpp"
 
-namespace ncsim::ipo::test {
+namespace ncsim::channel::test {
 
 /// The delta picker with a conveyor workspace that holds its working height (the bundled
 /// list's +-500 mm does not: programs/pick_and_place).
@@ -42,21 +42,21 @@ inline constexpr double kTrafoTestCycle = 0.001;
 // Runs on the picker, tracked and audited (joints included) as `ncsim time --audit` does.
 /// A run under #TRAFO ON tracked cycle by cycle (track()).
 struct Tracked {
-  Status status = Status::finished;
+  ipo::Status status = ipo::Status::finished;
   std::vector<std::uint32_t> line;
-  std::vector<SyncPhase> phase;
+  std::vector<tracking::SyncPhase> phase;
   std::vector<std::array<double, 3>> tcp;     // FK of the joint commands (MCS)
   std::vector<std::array<double, 3>> offset;  // PCS1 offset on X, Y, Z
-  std::vector<JointSetpoint> joints;
+  std::vector<ipo::JointSetpoint> joints;
   std::optional<RunTimeError> error;
   std::optional<RunTimeError> warning;
-  Verdict verdict;
+  audit::Verdict verdict;
   std::string source_error;
 };
 
 // `override_percent`: a path override from t = 0 on a REDUCED_ABOVE_100 channel (a scenario
 // event, docs/scenario.md); null: none, the machine's override type.
-inline Tracked track(const std::string& program, FakePort* port,
+inline Tracked track(const std::string& program, tracking::test::FakePort* port,
                      const machines::Machine& m = picker(),
                      const char* override_percent = nullptr) {
   ChannelConfig cfg = channel_config(m, kTrafoTestCycle);
@@ -68,12 +68,12 @@ inline Tracked track(const std::string& program, FakePort* port,
   REQUIRE(loaded.scenario);
   std::optional<scenario::Player> player;
   if (override_percent != nullptr) {
-    cfg.path.override_type = OverrideType::reduced_above_100;
+    cfg.path.override_type = ipo::OverrideType::reduced_above_100;
     player.emplace(*loaded.scenario);
   }
-  const auto trafo = machine_trafo(m, cfg.path);
+  const auto trafo = program::machine_trafo(m, cfg.path);
   REQUIRE(trafo);
-  Audit audit(cfg.path.axes, kTrafoTestCycle, cfg.path.start);
+  audit::Audit audit(cfg.path.axes, kTrafoTestCycle, cfg.path.start);
   audit.set_joint_limits(cfg.path.joints->joints, cfg.path.start, true);
   ConveyorRig rig(program, m, std::move(cfg), port, &audit);
   if (player) rig.ch.play(&*player);
@@ -83,7 +83,7 @@ inline Tracked track(const std::string& program, FakePort* port,
       rig.ch,
       [&] {
         if (ch.transformed()) audit.on_joints(ch.cycle(), ch.joints());
-        const ConveyorSync& s = *ch.conveyor_sync();
+        const tracking::ConveyorSync& s = *ch.conveyor_sync();
         r.line.push_back(ch.cycle().line);
         r.phase.push_back(s.phase());
         const auto& q = ch.axes().command;
@@ -106,14 +106,14 @@ inline Tracked track(const std::string& program, FakePort* port,
 inline Tracked track_clean(const std::string& program, double belt,
                            const machines::Machine& m = picker(),
                            const char* override_percent = nullptr) {
-  FakePort port(belt);
+  tracking::test::FakePort port(belt);
   port.latch_at_ = 100;
   Tracked r = track(program, &port, m, override_percent);
   if (!r.source_error.empty()) MESSAGE(r.source_error);
   if (r.error)
     MESSAGE(r.error->id << " line " << r.error->line << " t " << r.error->t << ": "
                         << r.error->message);
-  REQUIRE(r.status == Status::finished);
+  REQUIRE(r.status == ipo::Status::finished);
   REQUIRE_FALSE(r.error);
   return r;
 }
@@ -126,7 +126,8 @@ inline void check_far_side(const Tracked& r, std::uint32_t first, std::uint32_t 
   double a = 0.0, j = 0.0;  // the lines' largest joint |a| / A and |j| / J
   std::size_t cycles = 0;
   for (std::size_t k = 0; k < r.joints.size(); ++k) {
-    if (r.phase[k] != SyncPhase::tracking || r.line[k] < first || r.line[k] > last) continue;
+    if (r.phase[k] != tracking::SyncPhase::tracking || r.line[k] < first || r.line[k] > last)
+      continue;
     ++cycles;
     for (std::size_t i = 0; i < 3; ++i) {
       a = std::max(a, std::fabs(r.joints[k].a[i]) / 20000.0);
@@ -145,4 +146,4 @@ inline void check_far_side(const Tracked& r, std::uint32_t first, std::uint32_t 
   CHECK(r.verdict.violation_count == 0);
 }
 
-}  // namespace ncsim::ipo::test
+}  // namespace ncsim::channel::test

@@ -12,11 +12,11 @@ namespace ncsim::cli {
 using runner::block_where;
 
 // The audit verdict, one line per axis, then the documented steps and every violation listed.
-void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names,
+void print_audit(const audit::Verdict& v, const std::vector<std::string>& names,
                  const std::vector<std::string>& units, const interp::Interpreter& interp,
                  std::ostream& os, bool each_step) {
   for (std::size_t i = 0; i < v.axes.size(); ++i) {
-    const ipo::AxisAudit& a = v.axes[i];
+    const audit::AxisAudit& a = v.axes[i];
     const std::string& u = i < units.size() ? units[i] : std::string("mm");
     os << "audit: " << names[i] << " |v| " << human(std::max(a.v_closed, a.v_diff)) << " / "
        << human(a.v_limit) << ' ' << u << "/s, |a| " << human(std::max(a.a_closed, a.a_diff))
@@ -30,7 +30,7 @@ void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names,
   }
   // Under #TRAFO ON the joints (the machine axes) are checked apart.
   for (std::size_t i = 0; i < v.joints.size(); ++i) {
-    const ipo::AxisAudit& a = v.joints[i];
+    const audit::AxisAudit& a = v.joints[i];
     if (a.v_closed == 0.0 && a.v_diff == 0.0) continue;  // no transformed cycle moved it
     os << "audit: " << (i < names.size() ? names[i] : std::to_string(i)) << " under #TRAFO |v| "
        << human(std::max(a.v_closed, a.v_diff)) << " / " << human(a.v_limit) << ", |a| "
@@ -42,8 +42,8 @@ void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names,
      << " documented VELOJUMP / TRANSVELMIN / C1 steps within their formulas, " << v.cycles
      << " cycles\n";
   // One documented step: where, which axis, its value against its formula's bound.
-  const auto step_text = [&](const ipo::Step& s) {
-    const bool c1 = s.quantity == ipo::Quantity::c1_step;  // an acceleration step
+  const auto step_text = [&](const audit::Step& s) {
+    const bool c1 = s.quantity == audit::Quantity::c1_step;  // an acceleration step
     const char* unit = c1 ? "/s^2" : "/s";
     const std::string& u = s.axis < units.size() ? units[s.axis] : std::string("mm");
     std::ostringstream t;
@@ -56,23 +56,23 @@ void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names,
   };
   // The documented steps listed apart (issue 12): per kind, how many and the closest to its
   // formula's bound (the axis that came closest at that joint); with --audit-steps each one.
-  for (std::size_t k = 0; k < ipo::kStepKindNames.size(); ++k) {
-    const ipo::StepKind& sk = v.step_kinds[k];
+  for (std::size_t k = 0; k < audit::kStepKindNames.size(); ++k) {
+    const audit::StepKind& sk = v.step_kinds[k];
     if (sk.count == 0) continue;
-    os << "audit: " << ipo::kStepKindNames[k] << " steps " << sk.count << ", closest to "
-       << ipo::kStepKindFormulas[k] << ": " << step_text(sk.closest) << '\n';
+    os << "audit: " << audit::kStepKindNames[k] << " steps " << sk.count << ", closest to "
+       << audit::kStepKindFormulas[k] << ": " << step_text(sk.closest) << '\n';
   }
   if (each_step) {
-    for (const ipo::Step& s : v.steps)
-      os << "audit: step " << ipo::kStepKindNames[ipo::step_kind(s.quantity)] << ' ' << step_text(s)
-         << '\n';
+    for (const audit::Step& s : v.steps)
+      os << "audit: step " << audit::kStepKindNames[audit::step_kind(s.quantity)] << ' '
+         << step_text(s) << '\n';
     if (v.step_count > v.steps.size())
       os << "audit: ... " << (v.step_count - v.steps.size()) << " more steps\n";
   }
-  for (const ipo::Violation& x : v.violations) {
+  for (const audit::Violation& x : v.violations) {
     os << "audit: violation t=" << num(x.t) << " s line " << block_where(interp, x.file, x.line)
        << " axis " << (x.axis < names.size() ? names[x.axis] : std::to_string(x.axis)) << ' '
-       << ipo::quantity_name(x.quantity) << " (" << ipo::method_name(x.method) << ") "
+       << audit::quantity_name(x.quantity) << " (" << audit::method_name(x.method) << ") "
        << num(x.value) << " > " << num(x.limit);
     if (x.path >= 0.0)  // the axis moved with the belt (audit/audit.hpp)
       os << " (" << num(x.path) << " without the belt's share)";

@@ -14,7 +14,7 @@ namespace ncsim::cli {
 
 /// Prints `v` on `os`: `names` and `units` of the interpolated axes, `interp` for the blocks'
 /// files, `each_step` lists every documented step.
-void print_audit(const ipo::Verdict& v, const std::vector<std::string>& names,
+void print_audit(const audit::Verdict& v, const std::vector<std::string>& names,
                  const std::vector<std::string>& units, const interp::Interpreter& interp,
                  std::ostream& os, bool each_step);
 

@@ -6,9 +6,9 @@
 
 namespace ncsim::cli {
 
-void write_tech(const ipo::Channel& channel, CsvSink& csv) {
+void write_tech(const channel::Channel& channel, CsvSink& csv) {
   static constexpr char kLetter[] = {'M', 'H', 'S', 'T', 'D'};
-  for (const ipo::TechOutput& o : channel.tech_outputs()) {
+  for (const channel::TechOutput& o : channel.tech_outputs()) {
     std::string s = "# tech t=" + num(o.t) + " line=" + std::to_string(o.line);
     if (o.file != 0) s += " file=" + std::to_string(o.file);
     s += ' ';

@@ -58,9 +58,9 @@ class CsvSink final : public ipo::Sink {
   }
   std::uint64_t rows() const { return rows_; }
   /// The axes whose following error --detail writes (the channel's, read at each on_cycle).
-  void set_axes(const ipo::AxesState* state) { axes_state_ = state; }
+  void set_axes(const channel::AxesState* state) { axes_state_ = state; }
   /// The channel whose conveyor display variables --detail writes (null: none). --- line
-  void set_conveyor(const ipo::Channel* channel) { conveyor_ = channel; }
+  void set_conveyor(const channel::Channel* channel) { conveyor_ = channel; }
   /// The setpoints the axes received (the joints under #TRAFO), read at each on_cycle.
   void set_setpoints(const std::array<axes::Setpoint, planner::kMaxAxes>* set) { set_ = set; }
 
@@ -110,7 +110,7 @@ class CsvSink final : public ipo::Sink {
         append_num(buf_, row_.ferr[i]);
       }
       if (conveyor_ != nullptr) {
-        const ipo::MasterDisplay& d = row_.master;
+        const tracking::MasterDisplay& d = row_.master;
         for (const double v :
              {d.current_pos_master, d.current_v_master, d.current_a_master, d.pos_master_comp,
               d.v_master_comp, d.a_master_comp, d.synchro_lag}) {
@@ -134,7 +134,7 @@ class CsvSink final : public ipo::Sink {
     std::array<double, planner::kMaxAxes> ferr{};  ///< --detail: following errors [mm | deg]
     double v_path = 0.0;                           ///< --detail: path velocity [mm/s]
     double feed = 0.0;                             ///< --detail: programmed feed [mm/s]
-    ipo::MasterDisplay master{};                   ///< --detail on a conveyor machine
+    tracking::MasterDisplay master{};              ///< --detail on a conveyor machine
   };
 
   static constexpr std::size_t kFlushAt = 1 << 20;
@@ -142,8 +142,8 @@ class CsvSink final : public ipo::Sink {
   std::size_t axes_;
   std::uint64_t every_;
   bool detail_;
-  const ipo::AxesState* axes_state_ = nullptr;
-  const ipo::Channel* conveyor_ = nullptr;  // the channel's master_display()
+  const channel::AxesState* axes_state_ = nullptr;
+  const channel::Channel* conveyor_ = nullptr;  // the channel's master_display()
   const std::array<axes::Setpoint, planner::kMaxAxes>* set_ = nullptr;
   std::string buf_;
   Row row_;               // the last cycle's values
@@ -155,6 +155,6 @@ class CsvSink final : public ipo::Sink {
 
 /// The technology functions output in the channel's last step as comments
 /// `# tech t=<s> line=<n> M3` (docs/ipo.md "INDP axes and technology functions").
-void write_tech(const ipo::Channel& channel, CsvSink& csv);
+void write_tech(const channel::Channel& channel, CsvSink& csv);
 
 }  // namespace ncsim::cli

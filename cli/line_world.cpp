@@ -67,8 +67,8 @@ void WorkspaceWatch::configure(const machines::Machine& machine) noexcept {
   if (machine.channel.conveyor) box_ = machine.channel.conveyor->workspace;
 }
 
-void WorkspaceWatch::on_cycle(const ipo::Channel& channel) noexcept {
-  const ipo::ConveyorSync* sync = channel.conveyor_sync();
+void WorkspaceWatch::on_cycle(const channel::Channel& channel) noexcept {
+  const tracking::ConveyorSync* sync = channel.conveyor_sync();
   if (!box_ || sync == nullptr || !sync->synchronised()) return;
   // The commanded TCP: the axes' setpoints, or under #TRAFO ON the TCP the joints were computed
   // from (Channel::tcp(): the PCS1 point plus the belt offset in MCS, what tracking/trafo_sync

@@ -55,7 +55,7 @@ class WorkspaceWatch {
   /// Takes the workspace and the conveying direction of `machine` (none: no margin).
   void configure(const machines::Machine& machine) noexcept;
   /// One cycle of `channel`.
-  void on_cycle(const ipo::Channel& channel) noexcept;
+  void on_cycle(const channel::Channel& channel) noexcept;
   const WorkspaceMargin& margin() const noexcept { return margin_; }
 
  private:

@@ -67,14 +67,14 @@ std::optional<int> open_outputs(const RunOptions& options, Outputs& o, std::ostr
 // The page's recorder, sized from the run's configuration before the channel.
 std::unique_ptr<report::Recorder> make_recorder(const runner::Run& run,
                                                 const std::vector<std::string>& names) {
-  const ipo::ChannelConfig& cfg = run.config();
+  const channel::ChannelConfig& cfg = run.config();
   auto recorder = std::make_unique<report::Recorder>(names, cfg.path.axes, cfg.path.channel.t_cycle,
                                                      cfg.path.start);
   recorder->set_limits(cfg);
   // On a kinematic machine the MCS toolpath before #TRAFO ON is the joints' TCP.
   if (cfg.path.joints) {
-    if (const auto trafo = ipo::machine_trafo(run.loaded().machine, cfg.path))
-      recorder->set_forward(ipo::forward_map(trafo->kinematics, trafo->xyz));
+    if (const auto trafo = program::machine_trafo(run.loaded().machine, cfg.path))
+      recorder->set_forward(program::forward_map(trafo->kinematics, trafo->xyz));
   }
   return recorder;
 }
@@ -100,7 +100,7 @@ std::string csv_head(const runner::Loaded& in, const std::vector<std::string>& n
 // that tracks a conveyor) display variables, the recorder its parts; writes the CSV head.
 void wire_sinks(const RunOptions& options, const runner::Run& run, std::string head, CsvSink& csv,
                 report::Recorder* recorder) {
-  const ipo::Channel& channel = run.channel();
+  const channel::Channel& channel = run.channel();
   if (recorder) {
     recorder->set_setpoints(&channel.setpoints());
     recorder->set_belt(&channel.belt_share());
@@ -126,7 +126,7 @@ void wire_sinks(const RunOptions& options, const runner::Run& run, std::string h
 // The channel stepped to its end (or to a CSV write error); the last status.
 ipo::Status run_cycles(runner::Run& run, CsvSink& csv, report::Recorder* recorder,
                        std::ostream& err) {
-  const ipo::Channel& channel = run.channel();
+  const channel::Channel& channel = run.channel();
   Progress progress(err);
   ipo::Status s;
   while ((s = run.step()) == ipo::Status::running && !csv.failed()) {
@@ -144,7 +144,7 @@ ipo::Status run_cycles(runner::Run& run, CsvSink& csv, report::Recorder* recorde
 // on `err`) when it cannot be written. `error_text` gains the note after an error.
 std::optional<int> close_csv(runner::Run& run, ipo::Status s, runner::Ending& end, CsvSink& csv,
                              Outputs& o, std::ostream& err) {
-  const ipo::Channel& channel = run.channel();
+  const channel::Channel& channel = run.channel();
   if (end.failed) {
     csv.text("# error: " + runner::first_line(end.error_text) + "\n");
     // An error while synchronised: the motion after it (004 §2.3)
@@ -232,7 +232,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   if (!end.error_text.empty()) err << end.error_text;
   // The audit covers every cycle that was run, whatever ended the run (issue 36 item 4); a
   // run-time error keeps its exit status 1 over the audit's 3.
-  if (const ipo::Audit* audit = run.audit()) {
+  if (const audit::Audit* audit = run.audit()) {
     print_audit(audit->verdict(), names, runner::axis_units(run.loaded().machine),
                 run.interpreter(), err, options.audit_steps);
     if (end.error_text.empty() && !audit->verdict().ok()) return kExitAudit;

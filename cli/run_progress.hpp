@@ -12,9 +12,10 @@
 
 #include <chrono>
 #include <cstdint>
-#include <cstdio>
 #include <iostream>
 #include <ostream>
+
+#include "core/number_text.hpp"
 
 namespace ncsim::cli {
 
@@ -40,11 +41,9 @@ class Progress {
     if (wall < 2.0 || now - last_ < std::chrono::milliseconds(200)) return;
     last_ = now;
     shown_ = true;
-    char text[160];
-    std::snprintf(text, sizeof text,
-                  "\rncsim: %.3f s simulated, %llu blocks, line %u, %.0fx real time ", t,
-                  static_cast<unsigned long long>(blocks_), line, wall > 0.0 ? t / wall : 0.0);
-    err_ << text << std::flush;
+    err_ << "\rncsim: " << core::decimals_text(t, 3) << " s simulated, " << blocks_
+         << " blocks, line " << line << ", " << core::decimals_text(wall > 0.0 ? t / wall : 0.0, 0)
+         << "x real time " << std::flush;
   }
 
   /// Erases the bar (before any message is printed on stderr).

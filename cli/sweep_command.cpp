@@ -56,7 +56,7 @@ Candidate evaluate(const SweepOptions& o, double v) {
   };
   if (o.conv_vel == "follow") run.conv_vel = v;
   c.outcome = runner::run_line(
-      run, [&](const ipo::Channel& ch) { watch.on_cycle(ch); }, err);
+      run, [&](const channel::Channel& ch) { watch.on_cycle(ch); }, err);
   c.load_errors = err.str();
   c.margin = watch.margin();
   return c;

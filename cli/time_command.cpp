@@ -34,7 +34,7 @@ void json_string(std::ostream& os, const std::string& s) {
   os << '"';
 }
 
-void json_split(std::ostream& os, const ipo::TimeSplit& s) {
+void json_split(std::ostream& os, const audit::TimeSplit& s) {
   os << "{\"rapid\":" << json_num(s.rapid) << ",\"feed\":" << json_num(s.feed)
      << ",\"dwell\":" << json_num(s.dwell) << ",\"tech\":" << json_num(s.tech)
      << ",\"exact_stop\":" << json_num(s.exact_stop) << ",\"waiting\":" << json_num(s.starved)
@@ -61,7 +61,7 @@ class BlockPrinter {
  public:
   BlockPrinter(const TimeOptions& options, const interp::Interpreter& interp, std::ostream& out)
       : options_(options), interp_(interp), out_(out) {}
-  void operator()(const ipo::BlockTime& b) {
+  void operator()(const audit::BlockTime& b) {
     if (!options_.blocks) return;
     if (options_.json) {
       json(b);
@@ -72,7 +72,7 @@ class BlockPrinter {
   }
 
  private:
-  void json(const ipo::BlockTime& b) {
+  void json(const audit::BlockTime& b) {
     out_ << (first_ ? "" : ",") << "{\"line\":" << b.line;
     if (b.file != 0) {  // A block of a subroutine file
       out_ << ",\"file\":";
@@ -86,7 +86,7 @@ class BlockPrinter {
     json_split(out_, b.split);
     out_ << '}';
   }
-  void text(const ipo::BlockTime& b) {
+  void text(const audit::BlockTime& b) {
     out_ << runner::block_where(interp_, b.file, b.line) << ' ' << num(b.time) << ' '
          << num(b.distance) << ' ' << num(b.feed_programmed * 60.0) << ' '
          << num(b.feed_reached * 60.0) << ' ' << num(b.split.rapid) << ' ' << num(b.split.feed)
@@ -108,7 +108,7 @@ class BlockPrinter {
 // workpiece rows' spool could not be read back.
 bool print_time_total(const TimeOptions& options, runner::Run& run, const runner::Ending& end,
                       std::optional<WorkpieceReport>& rows, std::ostream& out) {
-  const ipo::TimeResult r = run.time_result();
+  const audit::TimeResult r = run.time_result();
   const runner::Loaded& in = run.loaded();
   const auto& stop = run.channel().scenario_stop();
   bool spooled = true;  // the workpiece rows were copied out
@@ -172,11 +172,11 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
       err << "ncsim: error: " << e.what() << '\n';
       return kExitUsage;
     }
-    run.count_workpieces([&rows](const ipo::WorkpieceCycle& r) { rows->on_row(r); });
+    run.count_workpieces([&rows](const audit::WorkpieceCycle& r) { rows->on_row(r); });
   }
   Progress progress(err);
   const ipo::Status status = run.run(
-      [&progress](const ipo::Channel& ch) { progress.update(ch.cycle().t, ch.cycle().line); });
+      [&progress](const channel::Channel& ch) { progress.update(ch.cycle().t, ch.cycle().line); });
   progress.finish();
   const runner::Ending end = run.ending(status);
   if (!print_time_total(options, run, end, rows, out)) {
@@ -188,8 +188,8 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
   if (end.failed) err << end.error_text;
   // The audit covers every cycle that was run, whatever ended the run (issue 36 item 4); a
   // run-time error keeps its exit status 1 over the audit's 3.
-  if (const ipo::Audit* audit = run.audit()) {
-    const ipo::Verdict& v = audit->verdict();
+  if (const audit::Audit* audit = run.audit()) {
+    const audit::Verdict& v = audit->verdict();
     print_audit(v, runner::axis_names(run.loaded().machine),
                 runner::axis_units(run.loaded().machine), run.interpreter(),
                 options.json ? err : out, options.audit_steps);

@@ -28,9 +28,9 @@ machines::ConveyorAxisParams* conveyor_params(machines::Machine& m) {
 // One synchronised cycle's contour error on the real workpiece (ContourStats); c2, p2 the sums
 // of squares. Under #TRAFO ON the axes are joints: the commanded TCP (Channel::tcp(), the PCS1
 // offset included) against the forward transform of the joints' actual positions, as
-// synchro_lag there (ipo::cycle_lag); a cycle whose actual joints do not map is left out.
-void contour_cycle(const ipo::Channel& ch, const ipo::ConveyorSync& sync, ContourStats& out,
-                   double& c2, double& p2) {
+// synchro_lag there (tracking::cycle_lag); a cycle whose actual joints do not map is left out.
+void contour_cycle(const channel::Channel& ch, const tracking::ConveyorSync& sync,
+                   ContourStats& out, double& c2, double& p2) {
   const ipo::Cycle& c = ch.cycle();
   if (c.activity != ipo::Activity::motion || c.rapid || !(c.path.v > 0.0)) return;
   planner::AxisVec x_actual{};   // [mm] the axes' actual positions, or the actual TCP
@@ -56,7 +56,7 @@ void contour_cycle(const ipo::Channel& ch, const ipo::ConveyorSync& sync, Contou
   }
   // The commanded PCS1 point, and the actual point on the real workpiece, in PCS1.
   const Eigen::Vector3d pcs1 = sync.frame().to_pcs1(command, sync.travel());
-  const Eigen::Vector3d on_workpiece = sync.frame().to_pcs1(actual, ipo::real_travel(sync));
+  const Eigen::Vector3d on_workpiece = sync.frame().to_pcs1(actual, tracking::real_travel(sync));
   const Eigen::Vector3d e = on_workpiece - pcs1;
   Eigen::Vector3d normal = e;
   if (const double n = tangent.norm(); n > 0.0) {
@@ -97,14 +97,14 @@ Pass pass(const TuneDelayOptions& o, std::optional<double> delay, std::ostream& 
       p.filter_delay = (c->order_pos_filter - 1) * t / 2.0;
     if (s && s->conveyor) p.dead_time = s->conveyor->dead_time;
   };
-  const auto on_cycle = [&](const ipo::Channel& ch) {
-    const ipo::ConveyorSync* sync = ch.conveyor_sync();
-    if (sync == nullptr || sync->phase() != ipo::SyncPhase::tracking || !sync->synchronised())
+  const auto on_cycle = [&](const channel::Channel& ch) {
+    const tracking::ConveyorSync* sync = ch.conveyor_sync();
+    if (sync == nullptr || sync->phase() != tracking::SyncPhase::tracking || !sync->synchronised())
       return;
     contour_cycle(ch, *sync, p.contour, c2, p2);
-    const ipo::MasterDisplay d = ch.master_display();
+    const tracking::MasterDisplay d = ch.master_display();
     if (d.v_master_comp == 0.0) return;  // a standing belt tells nothing about the delay
-    const double lag = d.synchro_lag;    // under #TRAFO ON the TCP's (ipo::cycle_lag)
+    const double lag = d.synchro_lag;    // under #TRAFO ON the TCP's (tracking::cycle_lag)
     LagStats& l = p.lag;
     l.min = l.cycles == 0 ? lag : std::min(l.min, lag);
     l.max = l.cycles == 0 ? lag : std::max(l.max, lag);

@@ -15,11 +15,11 @@ WorkpieceReport::WorkpieceReport(bool json) : json_(json), spool_(std::tmpfile()
   if (!spool_) throw std::runtime_error("cannot create a temporary file for the workpiece rows");
 }
 
-void WorkpieceReport::on_row(const ipo::WorkpieceCycle& r) {
+void WorkpieceReport::on_row(const audit::WorkpieceCycle& r) {
   std::string s;
   if (json_) {
     if (rows_ != 0) s += ',';
-    ipo::append_json(s, r);
+    audit::append_json(s, r);
   } else {
     s = "workpiece " + std::to_string(r.index);
     if (r.workpiece != 0) s += " [#" + std::to_string(r.workpiece) + "]";
@@ -32,7 +32,7 @@ void WorkpieceReport::on_row(const ipo::WorkpieceCycle& r) {
   if (!failed_ && std::fwrite(s.data(), 1, s.size(), spool_.get()) != s.size()) failed_ = true;
 }
 
-bool WorkpieceReport::finish(const ipo::WorkpieceSummary& w, std::ostream& out) {
+bool WorkpieceReport::finish(const audit::WorkpieceSummary& w, std::ostream& out) {
   if (w.workpieces == 0) return !failed_;
   if (json_) out << ",\"workpieces\":[";
   if (!failed_ && std::fflush(spool_.get()) == 0 && std::fseek(spool_.get(), 0, SEEK_SET) == 0) {
@@ -47,7 +47,7 @@ bool WorkpieceReport::finish(const ipo::WorkpieceSummary& w, std::ostream& out) 
   if (json_) {
     out << "],\"workpiece_summary\":";
     std::string summary;
-    ipo::append_json(summary, w);
+    audit::append_json(summary, w);
     out << summary;
   } else {
     out << "workpieces: " << w.complete << " complete of " << w.workpieces << "; lead-in "

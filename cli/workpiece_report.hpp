@@ -2,7 +2,7 @@
 // cli/workpiece_report: the time per workpiece in `ncsim time`'s text and JSON output (issue 14
 // "Finding the line's limits"; docs/conveyor.md "Time per workpiece").
 //
-// Purpose: print the rows of ipo::WorkpieceCycles after the run's totals without holding them
+// Purpose: print the rows of audit::WorkpieceCycles after the run's totals without holding them
 // in memory: the rows arrive during the run (interleaved with --blocks' records), so they are
 // spooled to an anonymous temporary file and copied out at the end.
 // Inputs: the rows (on_row()), the summary (finish()). Outputs: text lines
@@ -25,10 +25,10 @@ class WorkpieceReport {
   /// `json`: rows as JSON objects. Throws std::runtime_error when no temporary file can be made.
   explicit WorkpieceReport(bool json);
   /// Spools one row.
-  void on_row(const ipo::WorkpieceCycle& row);
+  void on_row(const audit::WorkpieceCycle& row);
   /// Writes the rows and the summary to `out` (text lines, or the JSON members with a leading
   /// comma); nothing when no #SYNC IN ran. False on a spool read/write error.
-  bool finish(const ipo::WorkpieceSummary& summary, std::ostream& out);
+  bool finish(const audit::WorkpieceSummary& summary, std::ostream& out);
 
  private:
   struct Close {

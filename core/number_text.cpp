@@ -63,6 +63,10 @@ std::string human(double v) {
   return significant_text(v, 6);
 }
 
+std::string signed_human(double v) {
+  return std::signbit(v) ? human(v) : "+" + human(v);
+}
+
 std::string seconds(double t) {
   return micro_text(t);
 }

@@ -8,10 +8,13 @@
 //   outputs (CSV, --json, --blocks, the totals, the report's times): exact values,
 //   byte-identical reruns; json_num() writes `null` where JSON has no number.
 // - significant_text() / human(): a number for people, to a number of significant digits
-//   (printf's %g: 3000.0000000000027 -> 3000, 0.14200000000000002 -> 0.142).
+//   (printf's %g: 3000.0000000000027 -> 3000, 0.14200000000000002 -> 0.142); the numbers in
+//   run-time and monitor messages (their %.6g); signed_human(): printf's %+g.
 // - micro_text() / seconds(): rounded to 1e-6 of the unit (the goldens' values; a run's time).
 // - fixed_text(): fixed notation, shortest round-trip (the goldens' tolerances);
 //   decimals_text(): a fixed number of decimals, never "-0" (the interpreter's trace).
+// Not here: integers in hex (a parameter's bit mask "0x%08X", the byte escapes of JSON and list
+// files), written with snprintf where they are used.
 
 #include <string>
 
@@ -42,8 +45,12 @@ std::string json_num(double v, int digits);
 /// "-inf" for non-finite values).
 std::string significant_text(double v, int digits);
 
-/// Text of `v` for people: 6 significant digits (printf's %g, iostream's default).
+/// Text of `v` for people: 6 significant digits (printf's %g, iostream's default); the numbers
+/// in run-time messages.
 std::string human(double v);
+
+/// human() with its sign always written ("+1", "-0.5", "+0"): printf's %+g.
+std::string signed_human(double v);
 
 /// Text of a run's time `t` [s] in a message: to the microsecond (the cycle is a whole number of
 /// us, `--cycle-us`): 10.338000000000001 -> 10.338 (micro_text()).

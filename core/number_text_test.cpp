@@ -65,6 +65,16 @@ TEST_CASE("human and significant_text are printf's %g, locale-independent") {
   }
 }
 
+TEST_CASE("signed_human is printf's %+g") {
+  using ncsim::core::signed_human;
+  CHECK(signed_human(1.0) == "+1");
+  CHECK(signed_human(-1.0) == "-1");
+  CHECK(signed_human(0.0) == "+0");
+  CHECK(signed_human(-0.0) == "-0");
+  CHECK(signed_human(2.5e-7) == "+2.5e-07");
+  CHECK(signed_human(-1234567.0) == "-1.23457e+06");
+}
+
 TEST_CASE("json_num writes null where JSON has no number") {
   using ncsim::core::json_num;
   const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -32,7 +32,8 @@ inline constexpr double kSamePoint = 1e-9;
 inline constexpr double kZeroLength = 1e-12;
 
 /// Dimensionless zero [1]: a direction component, a derivative by the path parameter, a
-/// weight or a trigonometric value below this in magnitude is 0 (COS[90] is 6e-17).
+/// weight, an angle in radians or a trigonometric value below this in magnitude is 0 (COS[90]
+/// is 6e-17).
 inline constexpr double kTiny = 1e-12;
 
 /// Whole cycles [cycles]: a time within this of a whole number of cycles is that number, so

@@ -48,7 +48,7 @@ std::pair<std::array<double, 2>, std::array<double, 2>> arc_extent(const Motion&
 /// The software-limit errors NC4601 of one command, where decode time can decide them: a
 /// motion's or spline point's programmed target in the MCS without kinematics, and the extent
 /// of such an arc. `check` reports every one; `time` / `run` refuse the block at its line with
-/// the first, before it moves (ipo::ProgramSource), so both apply one rule (issue 34 item 22).
+/// the first, before it moves (program::ProgramSource), so both apply one rule (issue 34 item 22).
 void add_soft_limit_errors(const Command& c, const machines::Machine& machine,
                            const std::string& file, core::DiagnosticList& out);
 

@@ -61,7 +61,7 @@ struct Cycle {
   /// Channel events up to this tag are due: the largest event_tag of the blocks and dwells
   /// started so far and of the waits reached (never decreases).
   std::uint32_t event_tag = 0;
-  /// Set by ipo::Channel (docs/ipo.md "INDP axes and technology functions"): bit i: axis i is
+  /// Set by channel::Channel (docs/ipo.md "INDP axes and technology functions"): bit i: axis i is
   /// driven by its INDP motion in this cycle; x, v, a, j are then the INDP setpoint's, and the
   /// axis is not part of the block's contour.
   planner::AxisMask independent = 0;

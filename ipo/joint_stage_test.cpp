@@ -53,7 +53,7 @@ planner::AxisLimits limits(double v, double a, double j) {
 }
 
 struct Result {
-  ipo::Verdict verdict;
+  audit::Verdict verdict;
   ipo::Status status = ipo::Status::running;
   std::string message;
   bool stage_ok = true;
@@ -64,7 +64,7 @@ struct Result {
 
 /// Audit + joint stage as the channel would use them, in one sink.
 struct JointSink final : ipo::Sink {
-  ipo::Audit audit;
+  audit::Audit audit;
   const ipo::JointStage& stage;
   Result* out;
   std::vector<ipo::JointSetpoint> last;  // the last three setpoints
@@ -173,7 +173,7 @@ TEST_CASE("a delta-robot move keeps every joint inside its limits: planner, join
   CHECK(ok.verdict.ok());
   REQUIRE(ok.verdict.joints.size() == 3);
   double worst = 0.0;
-  for (const ipo::AxisAudit& j : ok.verdict.joints) {
+  for (const audit::AxisAudit& j : ok.verdict.joints) {
     CHECK(j.v_closed <= 40.0 * (1 + 1e-9));
     CHECK(j.a_closed <= 400.0 * (1 + 1e-9));
     CHECK(j.j_closed <= 8000.0 * (1 + 1e-9));
@@ -213,11 +213,11 @@ TEST_CASE("a delta corner passed without a stop: each joint's velocity step keep
   // ones (docs/ipo.md "Kinematics in run and time"): every listed step is a joint's, within
   // its bound, and the corner's VELOJUMP step of the joints is among them.
   REQUIRE(r.verdict.step_count > 0);
-  for (const ipo::Step& s : r.verdict.steps) {
+  for (const audit::Step& s : r.verdict.steps) {
     CHECK(s.joint);
     CHECK(s.value <= s.bound * (1 + 1e-9));
   }
-  const ipo::StepKind& jump = r.verdict.step_kinds[ipo::step_kind(ipo::Quantity::velojump)];
+  const audit::StepKind& jump = r.verdict.step_kinds[audit::step_kind(audit::Quantity::velojump)];
   REQUIRE(jump.count > 0);
   CHECK(jump.closest.bound == doctest::Approx(400.0 * 0.001));
   CHECK(jump.closest.value > 0.5 * jump.closest.bound);  // the step is used

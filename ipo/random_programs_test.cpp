@@ -22,6 +22,7 @@
 
 namespace {
 
+using namespace ncsim::audit;
 using namespace ncsim::ipo;
 using namespace ncsim::ipo::test;
 namespace planner = ncsim::planner;

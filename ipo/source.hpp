@@ -15,6 +15,10 @@
 
 #include "planner/move.hpp"
 
+namespace ncsim::program {
+struct ChannelEvent;  // program/channel_event.hpp
+}
+
 namespace ncsim::ipo {
 
 /// G04: dwell between motions [s] (the path stops before it).
@@ -46,8 +50,6 @@ struct ChannelWait {
 /// One item of the program stream.
 using Item = std::variant<planner::Move, Dwell, ChannelWait>;
 
-struct ChannelEvent;  // program/channel_event.hpp
-
 /// Where the interpolator pulls its items from. next() fills `out` and returns true, or
 /// returns false at the end of the program. May be endless; may throw (the interpolator
 /// turns that into Status::error).
@@ -57,7 +59,7 @@ class Source {
   virtual bool next(Item& out) = 0;
   /// The oldest channel event whose tag is <= `up_to`, removed from the source; false when
   /// there is none (sources without events: always).
-  virtual bool take_event(std::uint32_t up_to, ChannelEvent& out) {
+  virtual bool take_event(std::uint32_t up_to, program::ChannelEvent& out) {
     (void)up_to;
     (void)out;
     return false;

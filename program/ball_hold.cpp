@@ -2,7 +2,7 @@
 
 #include <utility>
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 void BallHold::offer(planner::Move move, bool pcs1) {
   if (trafo_.holds_for_ball(move, pcs1))
@@ -19,4 +19,4 @@ void BallHold::release(const planner::Move* next) {
   output_.emit(std::move(in));
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

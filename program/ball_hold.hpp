@@ -16,7 +16,7 @@
 #include "program/path_output.hpp"
 #include "program/trafo_path.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 class BallHold {
  public:
@@ -38,4 +38,4 @@ class BallHold {
   std::optional<planner::Move> held_;  ///< the block whose ball waits for the next Motion
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

@@ -7,7 +7,7 @@
 
 #include "core/tolerance.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 void BarrierAnswers::answer_from(scenario::VeStore* store, bool flush) {
   store_ = store;
@@ -45,7 +45,7 @@ void BarrierAnswers::note(const interp::CommandBody& body) noexcept {
       indp_running_ |= interp::AxisMask{1} << axis;
 }
 
-bool BarrierAnswers::barrier(const interp::Barrier& body, std::uint32_t line, Item& out) {
+bool BarrierAnswers::barrier(const interp::Barrier& body, std::uint32_t line, ipo::Item& out) {
   // P-CHAN-00451 implicit synchronisation (docs/ipo.md "Position barriers"): the block programs
   // again an axis whose INDP motion may still run.
   const interp::AxisMask sync = positions_ != nullptr && body.wants(interp::BarrierNeed::position)
@@ -63,7 +63,7 @@ bool BarrierAnswers::barrier(const interp::Barrier& body, std::uint32_t line, It
   if (flush_ && body.wants(interp::BarrierNeed::external)) {
     open_ = body;  // the path stops first: answered at the next pull
     open_line_ = line;
-    out = Dwell{0.0, line};
+    out = ipo::Dwell{0.0, line};
     return true;
   }
   answer(body, line);
@@ -113,4 +113,4 @@ void BarrierAnswers::answer_positions(const interp::Barrier& barrier, std::uint3
   }
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

@@ -32,7 +32,7 @@
 #include "program/source_errors.hpp"
 #include "scenario/player.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 /// The parts BarrierAnswers reads and writes; all must outlive it.
 struct BarrierParts {
@@ -52,7 +52,9 @@ class BarrierAnswers {
   /// such barrier. The program's V.E. writes go into `store` as they are decoded.
   void answer_from(scenario::VeStore* store, bool flush);
   /// Position barriers from the channel's set positions `set_positions` (null: decode-only).
-  void positions_from(const AxisVec* set_positions) noexcept { positions_ = set_positions; }
+  void positions_from(const planner::AxisVec* set_positions) noexcept {
+    positions_ = set_positions;
+  }
   /// The interpreter's next command (next_decode_only() without run-time answers).
   std::optional<interp::Command> next_command();
   /// The program's V.E. assignments decoded so far into the store, before any barrier after
@@ -61,7 +63,7 @@ class BarrierAnswers {
   /// Keeps the axes an INDP_ASYN motion or G74 may still move current for a channel event.
   void note(const interp::CommandBody& body) noexcept;
   /// A barrier answered now (false) or after the path stopped (true: `out` holds the stop).
-  bool barrier(const interp::Barrier& body, std::uint32_t line, Item& out);
+  bool barrier(const interp::Barrier& body, std::uint32_t line, ipo::Item& out);
   /// The barrier left open at the last stop is answered: every block before it ran.
   void answer_open();
 
@@ -76,11 +78,11 @@ class BarrierAnswers {
   BarrierParts parts_;
   scenario::VeStore* store_ = nullptr;
   bool flush_ = false;
-  std::optional<interp::Barrier> open_;  ///< a barrier waiting for the path to stop
-  std::uint32_t open_line_ = 0;          ///< its line
-  const AxisVec* positions_ = nullptr;   ///< the channel's set positions; null: none
-  interp::AxisMask indp_running_ = 0;    ///< machine axes an INDP_ASYN motion may still move
-  interp::AxisMask run_time_ = 0;        ///< axes the open barrier answers from run time
+  std::optional<interp::Barrier> open_;          ///< a barrier waiting for the path to stop
+  std::uint32_t open_line_ = 0;                  ///< its line
+  const planner::AxisVec* positions_ = nullptr;  ///< the channel's set positions; null: none
+  interp::AxisMask indp_running_ = 0;  ///< machine axes an INDP_ASYN motion may still move
+  interp::AxisMask run_time_ = 0;      ///< axes the open barrier answers from run time
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

@@ -6,7 +6,7 @@
 #include "tracking/sync_checks.hpp"
 #include "tracking/sync_frame.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 void BeltSplit::on_command(const interp::CommandBody& body) {
   if (std::holds_alternative<interp::SyncOut>(body)) {
@@ -20,12 +20,12 @@ void BeltSplit::on_command(const interp::CommandBody& body) {
   belt_dir_ = planner::AxisVec{};
   const auto& conveyor = machine_.channel.conveyor;
   if (!conveyor || conveyor->x_virtual) return;
-  const Eigen::Vector3d e = SyncFrame(*conveyor).direction();
+  const Eigen::Vector3d e = tracking::SyncFrame(*conveyor).direction();
   for (std::size_t k = 0; k < 3; ++k) {
     const int slot = layout_.xyz_slot(k);
     if (slot < 0) continue;
     belt_[static_cast<std::size_t>(slot)] =
-        pcs1_belt(e[static_cast<Eigen::Index>(k)], in->conv_vel);
+        tracking::pcs1_belt(e[static_cast<Eigen::Index>(k)], in->conv_vel);
     belt_dir_[static_cast<std::size_t>(slot)] = e[static_cast<Eigen::Index>(k)] * in->conv_vel;
   }
 }
@@ -43,4 +43,4 @@ void BeltSplit::split(planner::Move& move) const noexcept {
   }
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

@@ -18,7 +18,7 @@
 #include "planner/move.hpp"
 #include "program/machine_axes.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 class BeltSplit {
  public:
@@ -29,7 +29,7 @@ class BeltSplit {
   /// Sets the split at #SYNC IN, clears it at #SYNC OUT; other commands pass.
   void on_command(const interp::CommandBody& body);
   /// The velocity the belt takes of each interpolated axis while synchronised [mm/s]
-  /// (ipo::pcs1_belt of the last #SYNC IN's CONV_VEL; planner::Move::belt of PCS1 blocks).
+  /// (tracking::pcs1_belt of the last #SYNC IN's CONV_VEL; planner::Move::belt of PCS1 blocks).
   const planner::AxisVec& belt() const noexcept { return belt_; }
   /// A PCS1 line's Move::belt: belt() on axes it moves along the conveying direction,
   /// -|belt_dir| (v_max + CONV_VEL) on axes it moves against it.
@@ -44,4 +44,4 @@ class BeltSplit {
   planner::AxisVec belt_dir_{};
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

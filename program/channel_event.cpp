@@ -2,7 +2,7 @@
 
 #include <variant>
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 bool is_channel_event(const interp::CommandBody& body) noexcept {
   return std::holds_alternative<interp::Tech>(body) ||
@@ -26,4 +26,4 @@ bool stops_path(const interp::CommandBody& body) noexcept {
          std::holds_alternative<interp::MachineData>(body);  // the path stops (§5.10)
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

@@ -4,7 +4,7 @@
 //
 // Purpose: the one way a command that is not path motion reaches the channel loop at the right
 // point of the program: INDP axis moves, #WAIT INDP, MC_MoveVelocity, MC_TouchProbe, #SYNC IN /
-// #SYNC OUT, M/H/S/T functions. ipo::ProgramSource numbers them with increasing tags in program
+// #SYNC OUT, M/H/S/T functions. program::ProgramSource numbers them with increasing tags in program
 // order and keeps them in a queue; the interpolator only carries tags:
 //   - an event that needs the path standing (stops_path()) becomes a ChannelWait item: the path
 //     stops at the end of the block before it, the channel takes every event up to the wait's
@@ -22,7 +22,7 @@
 
 #include "interp/command.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 /// One command for the channel, with its place in the program.
 struct ChannelEvent {
@@ -44,4 +44,4 @@ bool is_channel_event(const interp::CommandBody& body) noexcept;
 /// value and the catch-up moves every axis), #SYNC OUT, #WAIT INDP, INDP_SYN (docs/ipo.md).
 bool stops_path(const interp::CommandBody& body) noexcept;
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

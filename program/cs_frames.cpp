@@ -6,7 +6,7 @@
 #include "core/tolerance.hpp"
 #include "interp/cs_select.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 CsFrames::CsFrames(const machines::Machine& machine, const AxisLayout& layout, SourceErrors& errors)
     : machine_(machine),
@@ -125,4 +125,4 @@ void CsFrames::arc_to_mcs(const interp::Motion& m, std::uint32_t line, planner::
   move.arc_plane = g;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

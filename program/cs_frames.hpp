@@ -25,7 +25,7 @@
 #include "program/machine_axes.hpp"
 #include "program/source_errors.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 class CsFrames {
  public:
@@ -55,4 +55,4 @@ class CsFrames {
   machines::Frame active_;  ///< cs_.active_frame(): PCS -> MCS
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

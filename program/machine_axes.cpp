@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 using machines::AxisKind;
 
@@ -19,8 +19,8 @@ std::vector<std::uint8_t> interpolated_axes(const machines::Machine& machine) {
   return out;
 }
 
-Config machine_config(const machines::Machine& machine, double t_cycle) {
-  Config c;
+ipo::Config machine_config(const machines::Machine& machine, double t_cycle) {
+  ipo::Config c;
   for (const std::uint8_t i : interpolated_axes(machine)) {
     const machines::Dynamics& d = machine.axes[i].dynamics;
     planner::AxisLimits l;
@@ -46,13 +46,13 @@ Config machine_config(const machines::Machine& machine, double t_cycle) {
   c.window = static_cast<std::size_t>(machine.channel.interpolator.look_ahead_blocks);
   switch (machine.channel.path_override_type) {  // NCSIM-CHAN-630 (000 §7.5.6)
     case machines::PathOverrideType::reduced:
-      c.override_type = OverrideType::reduced;
+      c.override_type = ipo::OverrideType::reduced;
       break;
     case machines::PathOverrideType::original:
-      c.override_type = OverrideType::original;
+      c.override_type = ipo::OverrideType::original;
       break;
     case machines::PathOverrideType::reduced_above_100:
-      c.override_type = OverrideType::reduced_above_100;
+      c.override_type = ipo::OverrideType::reduced_above_100;
       break;
   }
   return c;
@@ -77,4 +77,4 @@ AxisLayout::AxisLayout(const machines::Machine& machine)
   }
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

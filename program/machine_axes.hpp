@@ -18,7 +18,7 @@
 #include "machines/machine.hpp"
 #include "planner/move.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 /// Machine indices of the axes the path interpolator drives, in machine order: linear and
 /// rotary axes; spindles, encoder-only axes and the conveyor axis are not interpolated.
@@ -32,7 +32,7 @@ std::vector<std::uint8_t> interpolated_axes(const machines::Machine& machine);
 /// P-AXIS-00236, settling P-AXIS-00532 (0 when not monitored); window P-CHAN-00650 look-ahead
 /// blocks; cycle `t_cycle` [s] (no list key: the manuals at hand name none, the cycle is the NC
 /// SAF task's; the CLI's default is the seeds' 1 ms, docs/ipo.md "The cycle time").
-Config machine_config(const machines::Machine& machine, double t_cycle);
+ipo::Config machine_config(const machines::Machine& machine, double t_cycle);
 
 /// The CLI's interpolation cycle when `--cycle-us` is not given [s].
 inline constexpr double kDefaultCycle = 0.001;
@@ -57,4 +57,4 @@ struct AxisLayout {
   }
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

@@ -4,7 +4,7 @@
 
 #include "machines/conveyor_params.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 std::optional<std::string> machine_data_unsupported(const interp::MachineData& command,
                                                     const machines::Machine& machine) {
@@ -31,4 +31,4 @@ machines::ConveyorAxisParams apply_machine_data(machines::ConveyorAxisParams cur
   return current;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

@@ -18,7 +18,7 @@
 #include "interp/command.hpp"
 #include "machines/machine.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 /// Why `command` cannot run on `machine` (the text after "not supported: "), or nullopt when
 /// every setting is a filter or delay-time parameter of the conveyor axis.
@@ -30,4 +30,4 @@ std::optional<std::string> machine_data_unsupported(const interp::MachineData& c
 machines::ConveyorAxisParams apply_machine_data(machines::ConveyorAxisParams current,
                                                 const interp::MachineData& command);
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

@@ -6,7 +6,7 @@
 #include "interp/cs_select.hpp"
 #include "interp/trace.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 namespace {
 
 planner::Transition to_planner(interp::Transition t) {
@@ -173,4 +173,4 @@ void MoveBuilder::set_modal(const interp::ModalSnapshot& s, planner::Move& mv, s
   mv.transformed = s.kinematics_on;  // X, Y, Z are the TCP (program/trafo_path)
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

@@ -27,7 +27,7 @@
 #include "program/source_errors.hpp"
 #include "program/trafo_path.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 /// A block's planner weights (planner::AxisWeights) from the interpreter's, for the
 /// interpolated machine axes `axes`, of a G00 block when `rapid`; null when all are 100 %.
@@ -76,4 +76,4 @@ class MoveBuilder {
   std::shared_ptr<const planner::AxisWeights> weights_rapid_;
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

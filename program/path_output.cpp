@@ -8,7 +8,7 @@
 
 #include "core/number_text.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 namespace {
 
@@ -56,7 +56,8 @@ void PathOutput::caxtrack(const interp::CaxTrack& c, std::uint32_t line) {
     errors_.not_supported(line, "#CAXTRACK ON without interpolated X, Y and tracking axis " + name);
   std::optional<double> now;  // a second ON goes on from where the axis is
   if (cax_ && cax_->tracker && cax_->slot == slot) now = cax_->tracker->current();
-  cax_ = CaxState{CaxTrackParams{c.anglimit, c.offset, static_cast<int>(c.rotmode)}, slot, {}};
+  cax_ = CaxState{
+      tracking::CaxTrackParams{c.anglimit, c.offset, static_cast<int>(c.rotmode)}, slot, {}};
   if (now) {
     c_hold_ = now;
     c_hold_slot_ = slot;
@@ -76,15 +77,15 @@ void PathOutput::on_command(const interp::CommandBody& body) {
   if (xv_limits_.empty()) {
     // The planner's limits at the run's cycle (it enters only the joints' link velocity,
     // joint_belt_check: the C1 rule's sqrt(j T / |dx''|)).
-    const Config config = machine_config(machine_, t_cycle_);
+    const ipo::Config config = machine_config(machine_, t_cycle_);
     xv_limits_ = config.axes;
     xv_channel_ = config.channel;
     for (const std::uint8_t a : layout_.axes)
       xv_names_.push_back(machine_.axes[a].name);
   }
-  xv_ = XVirtualParams{layout_.xyz_slot(0),
-                       conv->direction == machines::MoveDirection::positive_x ? 1.0 : -1.0,
-                       kXvPlanFactor * in->conv_vel, layout_.path_axes};
+  xv_ = tracking::XVirtualParams{
+      layout_.xyz_slot(0), conv->direction == machines::MoveDirection::positive_x ? 1.0 : -1.0,
+      tracking::kXvPlanFactor * in->conv_vel, layout_.path_axes};
   xv_tangent_.reset();
   xv_last_.reset();
 }
@@ -97,7 +98,7 @@ void PathOutput::queue_held() {
 
 void PathOutput::check_stop(std::uint32_t line, const char* what) const {
   if (xv_)
-    errors_.raise(line, kXvStopId,
+    errors_.raise(line, tracking::kXvStopId,
                   std::string("x_virtual: ") + what +
                       " would stop the path on the moving belt; a static unit cannot stop while "
                       "synchronised (004 l.438-440)");
@@ -109,7 +110,7 @@ void PathOutput::emit(planner::Move mv) {
     pass_static(m);
 }
 
-bool PathOutput::pop(Item& out) {
+bool PathOutput::pop(ipo::Item& out) {
   if (queue_.empty()) return false;
   out = std::move(queue_.front());
   queue_.pop_front();
@@ -134,17 +135,17 @@ std::vector<planner::Move> PathOutput::track(planner::Move mv) {
       cax_->tracker.emplace(cax_->params, x, y, cax_->slot, c_now);
       c_hold_.reset();
     }
-    CaxOutcome o = cax_->tracker->track(mv);
+    tracking::CaxOutcome o = cax_->tracker->track(mv);
     if (!o.error.empty())
       errors_.raise_in(mv.file, mv.line, kNotSupportedId, "not supported: " + o.error);
     if (o.turned) {
       if (xv_)
         errors_.raise_in(
-            mv.file, mv.line, kXvStopId,
+            mv.file, mv.line, tracking::kXvStopId,
             "x_virtual: the tangent turns by " + core::human(o.joint_turn) +
                 " deg > ANGLIMIT here: #CAXTRACK would stop the path on the moving belt to "
                 "turn the axis (004 l.441-443: the contour must be C2)");
-      Dwell stop{0.0, mv.line, 0};  // the path stops before the turn block
+      ipo::Dwell stop{0.0, mv.line, 0};  // the path stops before the turn block
       stop.file = mv.file;
       queue_.push_back(stop);
     }
@@ -178,24 +179,24 @@ void PathOutput::pass_static(planner::Move& m) {
                      "not supported: G02/G03 outside the XY plane (G17) under x_virtual");
   if (m.exact_stop || m.transition == planner::Transition::stop_at_end)
     errors_.raise_in(
-        m.file, m.line, kXvStopId,
+        m.file, m.line, tracking::kXvStopId,
         "x_virtual: an exact stop would stop the path on the moving belt (004 l.438-440)");
-  const auto t = move_tangents(m, xv_->x, layout_.xyz_slot(1));
+  const auto t = tracking::move_tangents(m, xv_->x, layout_.xyz_slot(1));
   if (t && xv_tangent_) {
-    const double turn = std::fabs(unwrap_near(t->first, *xv_tangent_) - *xv_tangent_);
+    const double turn = std::fabs(tracking::unwrap_near(t->first, *xv_tangent_) - *xv_tangent_);
     if (turn > kXvCornerMax)
       errors_.raise_in(
-          m.file, m.line, kXvStopId,
+          m.file, m.line, tracking::kXvStopId,
           "x_virtual: the contour turns by " + core::human(turn) +
               " deg at this block's start; the path would slow down on the moving belt "
               "(004 l.441: the contour must be C2, e.g. a spline)");
   }
-  XvOutcome o = belt_feed(m, *xv_, xv_limits_, xv_names_);
+  tracking::XvOutcome o = tracking::belt_feed(m, *xv_, xv_limits_, xv_names_);
   if (o.error) errors_.raise_in(m.file, m.line, o.error->id, o.error->message);
   for (std::size_t k = 0; k < o.moves.size(); ++k) {
     planner::Move& part = o.moves[k];
     if (xv_held_) {  // the ball after the held part, raised feeds
-      if (auto e = blend_belt_feed(*xv_held_, part, *xv_, xv_limits_, xv_names_))
+      if (auto e = tracking::blend_belt_feed(*xv_held_, part, *xv_, xv_limits_, xv_names_))
         errors_.raise_in(xv_held_->file, xv_held_->line, e->id, e->message);
       xv_last_ = *xv_held_;  // where the planner puts no ball, its joint is checked below
       queue_held();
@@ -203,7 +204,8 @@ void PathOutput::pass_static(planner::Move& m) {
     // A joint without a ball (C1, a knee below 1 deg, C's tangent jumping)
     // must let the path pass at the belt's velocity (inner joints of a split block are C2).
     if (xv_last_)
-      if (auto e = joint_belt_check(*xv_last_, part, *xv_, xv_limits_, xv_channel_, xv_names_))
+      if (auto e =
+              tracking::joint_belt_check(*xv_last_, part, *xv_, xv_limits_, xv_channel_, xv_names_))
         errors_.raise_in(xv_last_->file, xv_last_->line, e->id, e->message);
     xv_last_.reset();
     // Inner joints of a split block are tangent (no ball); its last part waits for the next.
@@ -219,4 +221,4 @@ void PathOutput::pass_static(planner::Move& m) {
   if (t && m.contour == planner::Contour::none) xv_tangent_ = t->second;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

@@ -29,7 +29,7 @@
 #include "tracking/caxtrack.hpp"
 #include "tracking/x_virtual.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 class PathOutput {
  public:
@@ -42,7 +42,7 @@ class PathOutput {
   /// A path Move out: tracked under #CAXTRACK, given the belt feed under a static unit, queued.
   void emit(planner::Move mv);
   /// The oldest queued item into `out`; false when the queue is empty.
-  bool pop(Item& out);
+  bool pop(ipo::Item& out);
   /// #CAXTRACK ON / OFF: 120626 (a main axis), NC9103 (no tracking axis), NC6001 (ROTMODE
   /// other than 0 / 1, OPTALIGN, SCALEFACT, AXNR, START_STROKE, ANGPOS).
   void caxtrack(const interp::CaxTrack& c, std::uint32_t line);
@@ -71,16 +71,17 @@ class PathOutput {
   SourceErrors& errors_;
   double t_cycle_;  ///< the run's interpolation cycle [s]
   /// Items not yet handed out (spline pieces, #CAXTRACK turn blocks, the static unit's parts).
-  std::deque<Item> queue_;
+  std::deque<ipo::Item> queue_;
   struct CaxState {
-    CaxTrackParams params;
-    int slot = -1;                      ///< interpolated slot of the tracking axis
-    std::optional<CaxTracker> tracker;  ///< built at the first Move (its start is the axis's)
+    tracking::CaxTrackParams params;
+    int slot = -1;  ///< interpolated slot of the tracking axis
+    std::optional<tracking::CaxTracker>
+        tracker;  ///< built at the first Move (its start is the axis's)
   };
   std::optional<CaxState> cax_;
   std::optional<double> c_hold_;  ///< after OFF: where tracking left the axis [deg]
   int c_hold_slot_ = -1;
-  std::optional<XVirtualParams> xv_;            ///< set while a static unit is synchronised
+  std::optional<tracking::XVirtualParams> xv_;  ///< set while a static unit is synchronised
   std::vector<planner::AxisLimits> xv_limits_;  ///< the planner's limits (NC9100)
   planner::ChannelLimits xv_channel_;           ///< and its channel's (the joints)
   std::vector<std::string> xv_names_;           ///< interpolated axis names
@@ -94,4 +95,4 @@ class PathOutput {
   std::optional<planner::Move> xv_last_;
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

@@ -3,15 +3,15 @@
 #include <utility>
 #include <variant>
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 void PendingEvents::push(std::uint32_t line, std::uint16_t file, interp::CommandBody body) {
   events_.push_back(ChannelEvent{++tag_, line, file, std::move(body)});
 }
 
-ChannelWait PendingEvents::wait(std::uint32_t line) noexcept {
+ipo::ChannelWait PendingEvents::wait(std::uint32_t line) noexcept {
   given_ = tag_;
-  return ChannelWait{line, tag_};
+  return ipo::ChannelWait{line, tag_};
 }
 
 bool PendingEvents::take(std::uint32_t up_to, ChannelEvent& out) {
@@ -26,7 +26,7 @@ bool PendingEvents::rides(const interp::CommandBody& body) const noexcept {
          tag_ + 1 - given_ < kMaxPendingEvents;
 }
 
-bool PendingEvents::close_syn(const interp::Command& cmd, std::uint16_t file, Item& out) {
+bool PendingEvents::close_syn(const interp::Command& cmd, std::uint16_t file, ipo::Item& out) {
   const auto* a = std::get_if<interp::AxisCommand>(&cmd.body);
   const bool same_block = cmd.line == syn_wait_->line && cmd.file == file &&
                           is_channel_event(cmd.body) && (!stops_path(cmd.body) || a != nullptr);
@@ -41,7 +41,7 @@ bool PendingEvents::close_syn(const interp::Command& cmd, std::uint16_t file, It
   return true;
 }
 
-bool PendingEvents::queue(interp::Command& cmd, Item& out) {
+bool PendingEvents::queue(interp::Command& cmd, ipo::Item& out) {
   const std::uint32_t line = cmd.line;
   const bool stops = stops_path(cmd.body);
   const bool syn = std::holds_alternative<interp::AxisCommand>(cmd.body) && stops;
@@ -51,7 +51,7 @@ bool PendingEvents::queue(interp::Command& cmd, Item& out) {
   }
   push(line, cmd.file, std::move(cmd.body));
   if ((syn || syn_wait_) && tag_ - given_ < kMaxPendingEvents) {
-    syn_wait_ = ChannelWait{line, tag_};  // the block's later events are due with it
+    syn_wait_ = ipo::ChannelWait{line, tag_};  // the block's later events are due with it
     return false;
   }
   syn_wait_.reset();
@@ -62,4 +62,4 @@ bool PendingEvents::queue(interp::Command& cmd, Item& out) {
   return false;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

@@ -20,14 +20,14 @@
 #include "ipo/interpolator.hpp"
 #include "program/channel_event.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 class PendingEvents {
  public:
   /// Queues `body` (of `line` in `file`) with the next tag.
   void push(std::uint32_t line, std::uint16_t file, interp::CommandBody body);
   /// A ChannelWait at `line` for every event queued so far; they are given out with it.
-  ChannelWait wait(std::uint32_t line) noexcept;
+  ipo::ChannelWait wait(std::uint32_t line) noexcept;
   /// The tag of the last event queued, given out with the next item; returns it.
   std::uint32_t give() noexcept {
     given_ = tag_;
@@ -45,16 +45,16 @@ class PendingEvents {
   bool syn_open() const noexcept { return syn_wait_.has_value(); }
   /// The open INDP_SYN wait goes out (true, `out` holds it) when `cmd` is not of that block
   /// (`file`: the file of the command before `cmd`).
-  bool close_syn(const interp::Command& cmd, std::uint16_t file, Item& out);
+  bool close_syn(const interp::Command& cmd, std::uint16_t file, ipo::Item& out);
   /// Queues the channel event `cmd`; true when the path stops for it (`out` holds the wait).
-  bool queue(interp::Command& cmd, Item& out);
+  bool queue(interp::Command& cmd, ipo::Item& out);
 
  private:
-  std::deque<ChannelEvent> events_;      ///< not yet taken by the channel
-  std::uint32_t tag_ = 0;                ///< tag of the last event queued
-  std::uint32_t given_ = 0;              ///< largest tag handed out with an item
-  std::optional<ChannelWait> syn_wait_;  ///< the wait after the block's INDP_SYN commands
-  bool syn_interruptible_ = false;       ///< all of them INTERRUPTIBLE so far
+  std::deque<ChannelEvent> events_;           ///< not yet taken by the channel
+  std::uint32_t tag_ = 0;                     ///< tag of the last event queued
+  std::uint32_t given_ = 0;                   ///< largest tag handed out with an item
+  std::optional<ipo::ChannelWait> syn_wait_;  ///< the wait after the block's INDP_SYN commands
+  bool syn_interruptible_ = false;            ///< all of them INTERRUPTIBLE so far
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

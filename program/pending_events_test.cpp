@@ -26,7 +26,7 @@ interp::AxisCommand indp_syn(std::uint8_t axis) {
 }  // namespace
 
 TEST_CASE("a technology function rides on the next item; #WAIT INDP stops the path") {
-  ipo::PendingEvents events;
+  program::PendingEvents events;
   ipo::Item out;
   interp::Command tech = command(3, interp::Tech{});
   CHECK(events.rides(tech.body));
@@ -40,7 +40,7 @@ TEST_CASE("a technology function rides on the next item; #WAIT INDP stops the pa
   const auto& w = std::get<ipo::ChannelWait>(out);
   CHECK(w.line == 4);
   CHECK(w.tag == 2);
-  ipo::ChannelEvent e;
+  program::ChannelEvent e;
   CHECK(events.take(2, e));
   CHECK(e.tag == 1);
   CHECK(e.line == 3);
@@ -50,7 +50,7 @@ TEST_CASE("a technology function rides on the next item; #WAIT INDP stops the pa
 }
 
 TEST_CASE("a block's INDP_SYN commands share one ChannelWait after the last of them") {
-  ipo::PendingEvents events;
+  program::PendingEvents events;
   ipo::Item out;
   interp::Command x = command(7, indp_syn(0));
   interp::Command y = command(7, indp_syn(1));
@@ -69,14 +69,14 @@ TEST_CASE("a block's INDP_SYN commands share one ChannelWait after the last of t
 }
 
 TEST_CASE("more events than kMaxPendingEvents without an item force a ChannelWait") {
-  ipo::PendingEvents events;
+  program::PendingEvents events;
   ipo::Item out;
   std::size_t waits = 0;
-  for (std::size_t i = 0; i < ipo::kMaxPendingEvents; ++i) {
+  for (std::size_t i = 0; i < program::kMaxPendingEvents; ++i) {
     interp::Command tech = command(static_cast<std::uint32_t>(i + 1), interp::Tech{});
     if (events.queue(tech, out)) ++waits;
   }
   CHECK(waits == 1);
-  CHECK(std::get<ipo::ChannelWait>(out).tag == ipo::kMaxPendingEvents);
+  CHECK(std::get<ipo::ChannelWait>(out).tag == program::kMaxPendingEvents);
   CHECK(events.all_given());
 }

@@ -31,7 +31,7 @@ std::vector<planner::Move> moves(const std::string& text, std::string* error = n
   const core::SourceFile file("t.nc", text);
   const machines::Machine& m = interp::test::machine("portal_3x");
   interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
+  program::ProgramSource src(in, m);
   std::vector<planner::Move> out;
   ipo::Item item;
   while (src.next(item))
@@ -44,7 +44,7 @@ std::vector<planner::Move> moves(const std::string& text, std::string* error = n
 /// Runs the program with Detail::axes and the audit; the position of the last cycle of each
 /// line, the final position and the verdict.
 struct Run {
-  ipo::Verdict verdict;
+  audit::Verdict verdict;
   std::map<std::uint32_t, planner::AxisVec> last_of_line;
   planner::AxisVec final_x{};
   std::uint64_t cycles = 0;
@@ -53,7 +53,7 @@ struct Run {
 };
 
 struct Recorder final : ipo::Sink {
-  ipo::Audit audit;
+  audit::Audit audit;
   Run* run;
   Recorder(const ipo::Config& c, Run* r) : audit(c.axes, c.channel.t_cycle, c.start), run(r) {}
   void on_joint(const ipo::Joint& j) override { audit.on_joint(j); }
@@ -68,8 +68,8 @@ Run run(const std::string& text, double t_cycle = 0.001) {
   const core::SourceFile file("t.nc", text);
   const machines::Machine& m = interp::test::machine("portal_3x");
   interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
-  const ipo::Config cfg = ipo::machine_config(m, t_cycle);
+  program::ProgramSource src(in, m);
+  const ipo::Config cfg = program::machine_config(m, t_cycle);
   Run r;
   Recorder rec(cfg, &r);
   ipo::PathInterpolator ipo(cfg, src, &rec);
@@ -368,7 +368,7 @@ TEST_CASE("property: random programs in random #CS frames keep every limit and t
     CHECK_MESSAGE(r.error.empty(), r.error);
     CHECK(r.verdict.ok());
     if (!r.verdict.ok() && !r.verdict.violations.empty()) {
-      const ipo::Violation& v = r.verdict.violations.front();
+      const audit::Violation& v = r.verdict.violations.front();
       MESSAGE("first violation: quantity "
               << static_cast<int>(v.quantity) << " method " << static_cast<int>(v.method)
               << " axis " << static_cast<int>(v.axis) << " line " << v.line << " value " << v.value

@@ -28,7 +28,7 @@ machines::Machine portal_with(machines::SlopeProfile profile) {
 std::vector<planner::SlopeType> move_slopes(const std::string& text, const machines::Machine& m) {
   const core::SourceFile file("t.nc", text);
   interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
+  program::ProgramSource src(in, m);
   std::vector<planner::SlopeType> out;
   ipo::Item item;
   while (src.next(item))
@@ -37,11 +37,11 @@ std::vector<planner::SlopeType> move_slopes(const std::string& text, const machi
   return out;
 }
 
-ipo::TimeResult time_of(const std::string& text, const machines::Machine& m) {
+audit::TimeResult time_of(const std::string& text, const machines::Machine& m) {
   const core::SourceFile file("t.nc", text);
   interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
-  return ipo::machining_time(ipo::machine_config(m, 0.001), src);
+  program::ProgramSource src(in, m);
+  return audit::machining_time(program::machine_config(m, 0.001), src);
 }
 
 // portal_3x X: A+ = A- = 3000 mm/s^2 (P-AXIS-00001/00002), ramp times 60000 us, so the feed
@@ -54,7 +54,7 @@ constexpr double kStepTime = 1000.0 / 100.0 + 100.0 / 3000.0 + 0.001;
 const double kTrapezTime = 1000.0 / 100.0 + 2.0 * std::sqrt(100.0 / 50000.0);
 
 // The time of a cycle-rounded run is the closed form rounded up to the 1 ms cycle.
-void check_rounded_time(const ipo::TimeResult& r, double exact) {
+void check_rounded_time(const audit::TimeResult& r, double exact) {
   REQUIRE(r.status == ipo::Status::finished);
   CHECK(r.total >= exact - 1e-9);
   CHECK(r.total < exact + 0.001 + 1e-9);
@@ -73,7 +73,7 @@ TEST_CASE("P-CHAN-00071 = 1: a program without #SLOPE is planned jerk-limited (T
   const machines::Machine m = portal_with(machines::SlopeProfile::trapez);
   const std::string program = "N10 G01 X1000 F6000\nN20 M30\n";
   CHECK(move_slopes(program, m) == std::vector{planner::SlopeType::trapez});
-  const ipo::TimeResult r = time_of(program, m);
+  const audit::TimeResult r = time_of(program, m);
   check_rounded_time(r, kTrapezTime);
   CHECK(r.total > kStepTime + 0.05);  // the jerk limit costs 2 sqrt(v/J) - v/A - T = 55 ms
 }

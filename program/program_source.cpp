@@ -9,12 +9,12 @@
 
 #include "program/machine_data.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 namespace {
 
 SourceConfig checked(const SourceConfig& config) {
   if (!(config.t_cycle > 0.0) || !std::isfinite(config.t_cycle))
-    throw std::invalid_argument("ipo::ProgramSource: cycle must be > 0 s, got " +
+    throw std::invalid_argument("program::ProgramSource: cycle must be > 0 s, got " +
                                 std::to_string(config.t_cycle));
   return config;
 }
@@ -38,7 +38,7 @@ ProgramSource::ProgramSource(interp::Interpreter& interp, const machines::Machin
       spline_(layout_, errors_, frames_, moves_, output_),
       answers_(BarrierParts{interp, machine, layout_, errors_, frames_, events_}) {}
 
-bool ProgramSource::next(Item& out) {
+bool ProgramSource::next(ipo::Item& out) {
   if (errors_.error() != nullptr) return false;
   try {
     if (!pull(out)) return false;
@@ -62,7 +62,7 @@ bool ProgramSource::next(Item& out) {
   }
 }
 
-bool ProgramSource::pull(Item& out) {
+bool ProgramSource::pull(ipo::Item& out) {
   out_queued_ = false;
   if (end_reached_) return false;
   for (;;) {
@@ -112,7 +112,8 @@ bool ProgramSource::rides_along(const interp::Command& cmd) const noexcept {
          std::holds_alternative<interp::ProgramStop>(cmd.body);
 }
 
-ProgramSource::Pulled ProgramSource::release_held(std::optional<interp::Command>& cmd, Item& out) {
+ProgramSource::Pulled ProgramSource::release_held(std::optional<interp::Command>& cmd,
+                                                  ipo::Item& out) {
   // The static unit's part held for its tolerance ball goes out before anything that is not
   // the next path block (PathOutput); that command is taken again at the next pull. Commands
   // that emit nothing and do not stop the path keep it held (rides_along, and #CAXTRACK: the
@@ -147,7 +148,7 @@ ProgramSource::Pulled ProgramSource::release_held(std::optional<interp::Command>
   return Pulled::none;
 }
 
-ProgramSource::Pulled ProgramSource::route_event(interp::Command& cmd, Item& out) {
+ProgramSource::Pulled ProgramSource::route_event(interp::Command& cmd, ipo::Item& out) {
   const std::uint32_t line = cmd.line;
   // The first motion after #SYNC IN / #SYNC OUT is the catch-up / departure, a PTP motion the
   // channel runs while the path stands (tracking/conveyor_sync).
@@ -189,7 +190,7 @@ void ProgramSource::motion(const interp::Motion& body, std::uint32_t line) {
   ball_.offer(std::move(mv), body.frame.space == interp::Space::pcs1);
 }
 
-ProgramSource::Pulled ProgramSource::run_command(interp::Command& cmd, Item& out) {
+ProgramSource::Pulled ProgramSource::run_command(interp::Command& cmd, ipo::Item& out) {
   const std::uint32_t line = cmd.line;
   bool produced = false;
   bool ended = false;
@@ -201,7 +202,7 @@ ProgramSource::Pulled ProgramSource::run_command(interp::Command& cmd, Item& out
         } else if constexpr (std::is_same_v<T, interp::Dwell>) {
           output_.check_stop(line,
                              body.tech ? "a technology function's acknowledgement" : "a dwell");
-          out = Dwell{body.seconds, line, events_.give(), 0, body.tech, body.since_output};
+          out = ipo::Dwell{body.seconds, line, events_.give(), 0, body.tech, body.since_output};
           produced = true;
         } else if constexpr (std::is_same_v<T, interp::End>) {
           ended = true;
@@ -259,4 +260,4 @@ ProgramSource::Pulled ProgramSource::run_command(interp::Command& cmd, Item& out
   return produced ? Pulled::item : Pulled::again;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

@@ -59,7 +59,7 @@
 #include "program/trafo_path.hpp"
 #include "scenario/player.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 /// How a ProgramSource adapts a program: one value.
 struct SourceConfig {
@@ -74,7 +74,7 @@ struct SourceConfig {
   bool refuse_soft_limits = false;
 };
 
-class ProgramSource final : public Source {
+class ProgramSource final : public ipo::Source {
  public:
   /// `interp` and `machine` must outlive the source. Throws std::invalid_argument when the
   /// machine has no interpolated axis or `config.t_cycle` is not > 0.
@@ -83,7 +83,7 @@ class ProgramSource final : public Source {
 
   /// The next Move, Dwell or ChannelWait; false at End or at a program error (error() then
   /// holds it).
-  bool next(Item& out) override;
+  bool next(ipo::Item& out) override;
   /// The oldest channel event with tag <= up_to (program/channel_event.hpp).
   bool take_event(std::uint32_t up_to, ChannelEvent& out) override {
     return events_.take(up_to, out);
@@ -108,7 +108,7 @@ class ProgramSource final : public Source {
   /// first stops the path and waits for that motion (a `#WAIT INDP` of those axes: P-CHAN-00451's
   /// implicit synchronisation); the answer then gives those axes where they stand
   /// (docs/ipo.md "Position barriers").
-  void answer_positions_from(const AxisVec* set_positions) noexcept {
+  void answer_positions_from(const planner::AxisVec* set_positions) noexcept {
     answers_.positions_from(set_positions);
   }
 
@@ -116,7 +116,7 @@ class ProgramSource final : public Source {
   /// What a step of pull() did: handed out an item, go on with the next command, the stream
   /// ended, or nothing (release_held: the command goes on its way).
   enum class Pulled : std::uint8_t { item, again, end, none };
-  bool pull(Item& out);
+  bool pull(ipo::Item& out);
   /// The next command: the one held back, else the interpreter's (its V.E. writes to the
   /// store).
   std::optional<interp::Command> take_command();
@@ -124,12 +124,12 @@ class ProgramSource final : public Source {
   bool rides_along(const interp::Command& cmd) const noexcept;
   /// Hands out the static unit's held part or the PCS1 block held for its ball when `cmd` does
   /// not continue its path (`cmd` is then held back for the next pull).
-  Pulled release_held(std::optional<interp::Command>& cmd, Item& out);
+  Pulled release_held(std::optional<interp::Command>& cmd, ipo::Item& out);
   /// A channel event (or the catch-up / departure motion after #SYNC IN / OUT): queued with
   /// its tag; the path stops where it needs to.
-  Pulled route_event(interp::Command& cmd, Item& out);
+  Pulled route_event(interp::Command& cmd, ipo::Item& out);
   /// Every other command: motion, dwell, flush, barrier, frames, splines, end.
-  Pulled run_command(interp::Command& cmd, Item& out);
+  Pulled run_command(interp::Command& cmd, ipo::Item& out);
   /// A Motion's Move out: after the held block (BallHold), held itself or into PathOutput.
   void motion(const interp::Motion& body, std::uint32_t line);
 
@@ -154,4 +154,4 @@ class ProgramSource final : public Source {
   bool end_reached_ = false;  ///< End came after a final ChannelWait
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

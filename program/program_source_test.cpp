@@ -30,7 +30,7 @@ Pulled pull(const std::string& text, const std::string& machine_name = "portal_3
   const core::SourceFile file("t.nc", text);
   const machines::Machine& m = interp::test::machine(machine_name);
   interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
+  program::ProgramSource src(in, m);
   Pulled p;
   ipo::Item item;
   while (src.next(item))
@@ -49,8 +49,8 @@ std::uint64_t cycles_of(const std::string& text) {
   const core::SourceFile file("t.nc", text);
   const machines::Machine& m = interp::test::machine("portal_3x");
   interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
-  const ipo::TimeResult r = ipo::machining_time(ipo::machine_config(m, 0.001), src);
+  program::ProgramSource src(in, m);
+  const audit::TimeResult r = audit::machining_time(program::machine_config(m, 0.001), src);
   REQUIRE(r.status == ipo::Status::finished);
   REQUIRE(src.error() == nullptr);
   return r.cycles;
@@ -161,7 +161,7 @@ TEST_CASE("dynamics weightings lower the block's limits: G131 its acceleration, 
 TEST_CASE("an unsupported command is NC6001 at its line, never skipped") {
   const Pulled set = pull("N10 G01 X10 F600\nN20 G92 X0\nN30 X5\nN40 M30\n");
   CHECK(set.items.size() == 1);
-  CHECK(set.error_id == ipo::kNotSupportedId);
+  CHECK(set.error_id == program::kNotSupportedId);
   CHECK(set.error_line == 2);
   CHECK(set.error_message.find("not supported: G92") == 0);
 }
@@ -193,7 +193,7 @@ TEST_CASE("#CONTOUR MODE DIST_SOFT, DIST_MASTER, POS and PTP stay NC6001 with th
     const Pulled p = pull(std::string("N10 G01 X10 F600\nN20 #CONTOUR MODE [") + mode +
                           "]\nN30 G261 X20\nN40 M30\n");
     CHECK(p.items.size() == 1);
-    CHECK(p.error_id == ipo::kNotSupportedId);
+    CHECK(p.error_id == program::kNotSupportedId);
     CHECK(p.error_line == 3);
     CHECK(p.error_message.find(std::string("#CONTOUR MODE ") + mode + " (only DEV and DIST") !=
           std::string::npos);
@@ -228,13 +228,13 @@ TEST_CASE("an interpreter error ends the stream with the interpreter's diagnosti
   const Pulled p = pull("N10 G01 X10 F600\nN20 X[1/0]\nN30 M30\n");
   CHECK(p.items.size() == 1);
   CHECK_FALSE(p.error_id.empty());
-  CHECK(p.error_id != ipo::kNotSupportedId);
+  CHECK(p.error_id != program::kNotSupportedId);
   CHECK(p.error_line == 2);
 }
 
 TEST_CASE("machine limits: portal_3x axis lists map to the documented keys") {
   const machines::Machine& m = interp::test::machine("portal_3x");
-  const ipo::Config c = ipo::machine_config(m, 0.001);
+  const ipo::Config c = program::machine_config(m, 0.001);
   REQUIRE(c.axes.size() == 3);
   const machines::Dynamics& x = m.axes[0].dynamics;
   CHECK(c.axes[0].v_max == x.v_max);
@@ -260,8 +260,8 @@ TEST_CASE("a long line at F takes length / F + F / A + T, rounded up to the cycl
   const core::SourceFile file("t.nc", "N10 G01 X1000 F6000\nN20 M30\n");
   const machines::Machine& m = interp::test::machine("portal_3x");
   interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
-  const ipo::TimeResult r = ipo::machining_time(ipo::machine_config(m, 0.001), src);
+  program::ProgramSource src(in, m);
+  const audit::TimeResult r = audit::machining_time(program::machine_config(m, 0.001), src);
   REQUIRE(r.status == ipo::Status::finished);
   const double exact = 1000.0 / 100.0 + 100.0 / 3000.0 + 0.001;
   CHECK(r.total >= exact - 1e-9);
@@ -274,8 +274,8 @@ TEST_CASE("the blocks before a faulty one run to their end; then the error stand
   const core::SourceFile file("t.nc", "N10 G01 X100 F6000\nN20 G92 X0\nN30 X5\nN40 M30\n");
   const machines::Machine& m = interp::test::machine("portal_3x");
   interp::Interpreter in(file, m);
-  ipo::ProgramSource src(in, m);
-  const ipo::TimeResult r = ipo::machining_time(ipo::machine_config(m, 0.001), src);
+  program::ProgramSource src(in, m);
+  const audit::TimeResult r = audit::machining_time(program::machine_config(m, 0.001), src);
   CHECK(r.status == ipo::Status::finished);
   CHECK(r.cycles == 1035);
   CHECK(r.distance == doctest::Approx(100.0));
@@ -356,10 +356,10 @@ TEST_CASE("x_virtual: a dwell, #FLUSH or a corner while synchronised would stop 
 TEST_CASE("#CAXTRACK: a main axis is 120626; ROTMODE 2 and OPTALIGN are not supported") {
   CHECK(pull("N10 #CAXTRACK ON [AX=Y]\nN20 G01 X1 F600\nM30\n", "static_saw").error_id == "120626");
   const Pulled r = pull("N10 #CAXTRACK ON [AX=C, ROTMODE=2]\nN20 G01 X1 F600\nM30\n", "static_saw");
-  CHECK(r.error_id == ipo::kNotSupportedId);
+  CHECK(r.error_id == program::kNotSupportedId);
   CHECK(r.error_message.find("ROTMODE=2") != std::string::npos);
   CHECK(pull("N10 #CAXTRACK ON [AX=C, OPTALIGN=5]\nM30\n", "static_saw").error_id ==
-        ipo::kNotSupportedId);
+        program::kNotSupportedId);
 }
 
 TEST_CASE("a target beyond the soft limits is check's NC4601 before it moves, when refused") {
@@ -369,7 +369,7 @@ TEST_CASE("a target beyond the soft limits is check's NC4601 before it moves, wh
   for (const bool refuse : {true, false}) {
     CAPTURE(refuse);
     interp::Interpreter in(file, m);
-    ipo::ProgramSource src(in, m, ipo::SourceConfig{.refuse_soft_limits = refuse});
+    program::ProgramSource src(in, m, program::SourceConfig{.refuse_soft_limits = refuse});
     std::vector<std::uint32_t> lines;
     ipo::Item item;
     while (src.next(item))

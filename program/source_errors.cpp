@@ -2,7 +2,7 @@
 
 #include <utility>
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 void SourceErrors::not_supported(std::uint32_t line, const std::string& what) {
   raise_in(file_, line, kNotSupportedId, "not supported: " + what);
@@ -35,4 +35,4 @@ void SourceErrors::raise_deferred() {
   throw Stop{};
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

@@ -16,7 +16,7 @@
 #include "core/diagnostic.hpp"
 #include "interp/interpreter.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 /// Id of the adapter's `not supported: ...` program errors.
 inline constexpr const char* kNotSupportedId = "NC6001";
@@ -60,4 +60,4 @@ class SourceErrors {
   std::optional<core::Diagnostic> deferred_;  ///< the next Motion's error behind a held block
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

@@ -4,7 +4,7 @@
 #include <utility>
 #include <vector>
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 void SplineSection::begin(const interp::SplineBegin& b, std::uint32_t line) {
   if (builder_) errors_.not_supported(line, "#SPLINE ON inside an open spline section");
@@ -57,4 +57,4 @@ void SplineSection::queue_piece(const planner::SplinePiece& piece) {
   output_.emit(std::move(mv));
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

@@ -29,7 +29,7 @@
 #include "program/path_output.hpp"
 #include "program/source_errors.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 class SplineSection {
  public:
@@ -60,4 +60,4 @@ class SplineSection {
   bool pcs1_ = false;  ///< the open section is programmed in PCS1 (its pieces get the belt's)
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

@@ -7,7 +7,7 @@
 
 #include "program/program_source.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 namespace {
 
@@ -15,7 +15,8 @@ namespace {
 // forward transform; every other axis passes unchanged.
 planner::JointMap xyz_map(std::shared_ptr<const machines::Kinematics> kinematics,
                           std::array<int, 3> xyz, bool inverse) {
-  return [kin = std::move(kinematics), xyz, inverse](const AxisVec& x, AxisVec& q) noexcept {
+  return [kin = std::move(kinematics), xyz, inverse](const planner::AxisVec& x,
+                                                     planner::AxisVec& q) noexcept {
     Eigen::Vector3d p = Eigen::Vector3d::Zero();
     for (std::size_t k = 0; k < 3; ++k)
       if (xyz[k] >= 0) p[static_cast<Eigen::Index>(k)] = x[static_cast<std::size_t>(xyz[k])];
@@ -45,7 +46,8 @@ planner::JointMap forward_map(std::shared_ptr<const machines::Kinematics> kinema
   return xyz_map(std::move(kinematics), xyz, false);
 }
 
-std::optional<MachineTrafo> machine_trafo(const machines::Machine& machine, const Config& config) {
+std::optional<MachineTrafo> machine_trafo(const machines::Machine& machine,
+                                          const ipo::Config& config) {
   if (machine.channel.trafos.empty()) return std::nullopt;
   const machines::TrafoParams& t = machine.channel.trafos.front();
   machines::KinematicsBuild built = machines::make_kinematics(t.type != 0 ? t.type : t.id, t.param);
@@ -72,4 +74,4 @@ std::optional<MachineTrafo> machine_trafo(const machines::Machine& machine, cons
   return m;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

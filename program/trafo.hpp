@@ -22,7 +22,7 @@
 #include "machines/kinematics.hpp"
 #include "machines/machine.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 /// The Cartesian X, Y, Z under #TRAFO have no limits of their own in ncsim (decision,
 /// docs/planner.md "Kinematics"): the joints' v, a, j limit the path. These stand-ins are far
@@ -41,7 +41,8 @@ struct MachineTrafo {
 /// The machine's transform, or nullopt when it has none (no trafo[] entry) or its parameters
 /// do not build (the interpreter reports that at #TRAFO ON with the kinematic's id).
 /// `config` is the machine's interpolator Config (machine_config()).
-std::optional<MachineTrafo> machine_trafo(const machines::Machine& machine, const Config& config);
+std::optional<MachineTrafo> machine_trafo(const machines::Machine& machine,
+                                          const ipo::Config& config);
 
 /// The inverse map of `kinematics` over an interpolated-axis vector: X, Y, Z (at `xyz`) become
 /// the drives' values, every other axis passes unchanged. Never throws.
@@ -54,4 +55,4 @@ planner::JointMap joint_map(std::shared_ptr<const machines::Kinematics> kinemati
 planner::JointMap forward_map(std::shared_ptr<const machines::Kinematics> kinematics,
                               std::array<int, 3> xyz);
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

@@ -2,19 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <memory>
 #include <string>
 #include <variant>
 #include <vector>
 
+#include "core/number_text.hpp"
 #include "planner/blend.hpp"
 #include "planner/joint_limits.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
-bool TrafoPath::select(const interp::Kinematics& k, std::uint32_t line, Item& out) {
+bool TrafoPath::select(const interp::Kinematics& k, std::uint32_t line, ipo::Item& out) {
   if (k.trafo_on == trafo_on_) return false;  // #KIN ID alone, or no change
   if (k.trafo_on) {
     if (!trafo_) trafo_ = machine_trafo(machine_, machine_config(machine_, t_cycle_));
@@ -27,7 +27,7 @@ bool TrafoPath::select(const interp::Kinematics& k, std::uint32_t line, Item& ou
                                       std::to_string(trafo_->kin_id) + ")");
   }
   trafo_on_ = k.trafo_on;
-  out = Dwell{0.0, line};  // the path stands at the switch
+  out = ipo::Dwell{0.0, line};  // the path stands at the switch
   return true;
 }
 
@@ -54,8 +54,8 @@ void TrafoPath::check_workspace(const planner::Move& move, std::uint32_t line) c
       if (xyz[a] >= 0) p[static_cast<Eigen::Index>(a)] = x[static_cast<std::size_t>(xyz[a])];
     const machines::KinResult r = trafo_->kinematics->inverse(p);
     if (r.ok()) continue;
-    char where[160];
-    std::snprintf(where, sizeof where, "TCP X%.6g Y%.6g Z%.6g", p[0], p[1], p[2]);
+    const std::string where =
+        "TCP X" + core::human(p[0]) + " Y" + core::human(p[1]) + " Z" + core::human(p[2]);
     errors_.raise(line, r.error->id,
                   std::string(k == n ? "target " : "path point ") + where +
                       " under #TRAFO ON (kinematic " + std::to_string(trafo_->kin_id) +
@@ -69,7 +69,7 @@ constexpr double kBeltMargin = 1.1;  // 50653 lets the belt run 10 % above CONV_
 
 }  // namespace
 
-bool TrafoPath::belt_carry(BeltCarry& carry) const {
+bool TrafoPath::belt_carry(tracking::BeltCarry& carry) const {
   if (!trafo_ || !machine_.channel.conveyor || !(belt_conv_vel_ > 0.0)) return false;
   const machines::ConveyorSyncChannel& conv = *machine_.channel.conveyor;
   const Eigen::Vector3d dir = conv.t0().rotation.col(0);  // PCS0 +X in MCS
@@ -85,29 +85,29 @@ bool TrafoPath::belt_carry(BeltCarry& carry) const {
   return true;
 }
 
-BeltShare TrafoPath::belt_share_at(const planner::Segment& path, double feed,
-                                   const planner::Move& at,
-                                   std::span<const planner::AxisLimits> joints) const {
-  BeltCarry carry;
+tracking::BeltShare TrafoPath::belt_share_at(const planner::Segment& path, double feed,
+                                             const planner::Move& at,
+                                             std::span<const planner::AxisLimits> joints) const {
+  tracking::BeltCarry carry;
   belt_carry(carry);
-  const std::variant<BeltShare, BeltOverload> share =
-      belt_share(path, feed, trafo_->limits.inverse, trafo_->xyz, joints, carry);
-  if (const auto* over = std::get_if<BeltOverload>(&share)) {
-    const char* what = over->quantity == 'v'   ? "V %.6g (P-AXIS-00212)"
-                       : over->quantity == 'a' ? "A %.6g (the smaller of P-AXIS-00001 / 00002)"
-                                               : "J %.6g (P-AXIS-00001 / 00002 over their ramps)";
-    char limit[80];
-    std::snprintf(limit, sizeof limit, what, over->limit);
-    char text[400];
-    std::snprintf(text, sizeof text,
-                  "the belt at 1.1 x CONV_VEL (%.6g mm/s) %s %.6g of joint %s's %s at TCP X%.6g "
-                  "Y%.6g Z%.6g (PCS1 moved %.6g mm along the belt) under #TRAFO ON",
-                  carry.v_belt, over->quantity == 'v' ? "alone needs" : "takes", over->needed,
-                  machine_.axes[layout_.axes[over->joint]].name.c_str(), limit, over->tcp[0],
-                  over->tcp[1], over->tcp[2], over->shift);
-    errors_.raise_in(at.file, at.line, "NC6211", text);
+  const std::variant<tracking::BeltShare, tracking::BeltOverload> share =
+      tracking::belt_share(path, feed, trafo_->limits.inverse, trafo_->xyz, joints, carry);
+  if (const auto* over = std::get_if<tracking::BeltOverload>(&share)) {
+    const std::string limit =
+        over->quantity == 'v' ? "V " + core::human(over->limit) + " (P-AXIS-00212)"
+        : over->quantity == 'a'
+            ? "A " + core::human(over->limit) + " (the smaller of P-AXIS-00001 / 00002)"
+            : "J " + core::human(over->limit) + " (P-AXIS-00001 / 00002 over their ramps)";
+    errors_.raise_in(
+        at.file, at.line, "NC6211",
+        "the belt at 1.1 x CONV_VEL (" + core::human(carry.v_belt) + " mm/s) " +
+            (over->quantity == 'v' ? "alone needs " : "takes ") + core::human(over->needed) +
+            " of joint " + machine_.axes[layout_.axes[over->joint]].name + "'s " + limit +
+            " at TCP X" + core::human(over->tcp[0]) + " Y" + core::human(over->tcp[1]) + " Z" +
+            core::human(over->tcp[2]) + " (PCS1 moved " + core::human(over->shift) +
+            " mm along the belt) under #TRAFO ON");
   }
-  return std::get<BeltShare>(share);
+  return std::get<tracking::BeltShare>(share);
 }
 
 namespace {
@@ -119,7 +119,7 @@ bool any_taken(const planner::AxisVec& x) {
 }  // namespace
 
 void TrafoPath::reserve_belt_share(planner::Move& move) const {
-  BeltCarry carry;
+  tracking::BeltCarry carry;
   if (!belt_carry(carry)) return;
   // G00 runs each joint at its rapid rule (000 l.360: MIN(rapid, reference,
   // maximum), the G00 slope; planner::path_limits): its share is taken of those limits, with
@@ -135,7 +135,7 @@ void TrafoPath::reserve_belt_share(planner::Move& move) const {
   const planner::Segment path = planner::Segment::from_move(move);
   double feed = move.rapid ? std::numeric_limits<double>::infinity() : move.feed;
   if (move.block_time && *move.block_time > 0.0) feed = path.length() / *move.block_time;
-  const BeltShare s =
+  const tracking::BeltShare s =
       belt_share_at(path, feed, move,
                     move.rapid ? std::span<const planner::AxisLimits>(rapid)
                                : std::span<const planner::AxisLimits>(trafo_->limits.joints));
@@ -152,7 +152,7 @@ void TrafoPath::reserve_belt_share(planner::Move& move) const {
 // The tolerance ball between two PCS1 blocks (docs/conveyor.md "Machining in PCS1", "The
 // ball").
 bool TrafoPath::holds_for_ball(const planner::Move& move, bool pcs1) const {
-  BeltCarry carry;
+  tracking::BeltCarry carry;
   return move.transformed && pcs1 && planner::contoured(move) && !move.rapid && !move.block_time &&
          !move.exact_stop && move.transition != planner::Transition::stop_at_end &&
          belt_carry(carry);
@@ -173,7 +173,7 @@ void TrafoPath::reserve_ball_share(planner::Move& in, const planner::Move& out) 
   // the limits of the block before it (in's Move): the ball's share goes into in's.
   double feed = in.feed;
   if (!out.rapid && !out.block_time) feed = std::min(feed, out.feed);
-  const BeltShare s = belt_share_at(ball->curve, feed, in, trafo_->limits.joints);
+  const tracking::BeltShare s = belt_share_at(ball->curve, feed, in, trafo_->limits.joints);
   planner::JointShare joints = in.belt_joints ? *in.belt_joints : planner::JointShare{};
   for (std::size_t i = 0; i < planner::kMaxAxes; ++i) {
     joints.a[i] = std::max(joints.a[i], s.joints.a[i]);
@@ -184,4 +184,4 @@ void TrafoPath::reserve_ball_share(planner::Move& in, const planner::Move& out) 
     in.belt_joints = std::make_shared<const planner::JointShare>(joints);
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

@@ -36,7 +36,7 @@
 #include "program/trafo.hpp"
 #include "tracking/trafo_sync.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::program {
 
 class TrafoPath {
  public:
@@ -48,7 +48,7 @@ class TrafoPath {
   /// #KIN ID / #TRAFO: at a switch of #TRAFO a 0 s Dwell goes out first (the path stands at
   /// the switch; true: `out` holds it); #TRAFO ON with another kinematic than the machine's
   /// first is NC6001.
-  bool select(const interp::Kinematics& k, std::uint32_t line, Item& out);
+  bool select(const interp::Kinematics& k, std::uint32_t line, ipo::Item& out);
   /// #SYNC IN's CONV_VEL, for the belt's share; other commands pass.
   void on_command(const interp::CommandBody& body) noexcept;
   /// A transformed Move whose path leaves the kinematic's workspace: the kinematic's error
@@ -59,25 +59,26 @@ class TrafoPath {
   /// from the latch, inside the conveyor workspace): its F capped for the joints' V (and by the
   /// acceleration and jerk shares' bisection; a G00's of its joints' rapid limits, the cap in
   /// Move::feed for planner::path_limits), the a and j shares in Move::belt_joints
-  /// (ipo::belt_share); NC6211 when the belt alone needs a joint's V or its share with the
+  /// (tracking::belt_share); NC6211 when the belt alone needs a joint's V or its share with the
   /// path at rest leaves a joint less than 1 % of its A or J.
   void reserve_belt_share(planner::Move& move) const;
   /// A transformed G01 / G02 / G03 Move in PCS1 (`pcs1`) that ends in a contoured corner: its
   /// ball needs the belt's share too.
   bool holds_for_ball(const planner::Move& move, bool pcs1) const;
   /// The ball between `in` and `out` (planner::corner_blend, DEV or DIST): its belt share
-  /// (ipo::belt_share at the slower feed of the two) raises in's acceleration and jerk shares
+  /// (tracking::belt_share at the slower feed of the two) raises in's acceleration and jerk shares
   /// where larger and caps in's feed where lower (the planner runs the ball with in's limits).
   void reserve_ball_share(planner::Move& in, const planner::Move& out) const;
 
  private:
   /// The belt's carry for belt_share (1.1 x CONV_VEL, the conveying direction, the conveyor
   /// workspace); false without a kinematic, a conveyor or a CONV_VEL.
-  bool belt_carry(BeltCarry& carry) const;
-  /// ipo::belt_share of `path` at `feed` under the carry with the joints' limits `joints`; an
+  bool belt_carry(tracking::BeltCarry& carry) const;
+  /// tracking::belt_share of `path` at `feed` under the carry with the joints' limits `joints`; an
   /// overload is NC6211 at block `at` (its line and file).
-  BeltShare belt_share_at(const planner::Segment& path, double feed, const planner::Move& at,
-                          std::span<const planner::AxisLimits> joints) const;
+  tracking::BeltShare belt_share_at(const planner::Segment& path, double feed,
+                                    const planner::Move& at,
+                                    std::span<const planner::AxisLimits> joints) const;
 
   const machines::Machine& machine_;
   const AxisLayout& layout_;
@@ -88,4 +89,4 @@ class TrafoPath {
   double belt_conv_vel_ = 0.0;         ///< CONV_VEL of the last #SYNC IN [mm/s]
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::program

@@ -43,7 +43,7 @@ void key(std::string& s, const char* k) {
   s += "\":";
 }
 
-void split(std::string& s, const ipo::TimeSplit& x) {
+void split(std::string& s, const audit::TimeSplit& x) {
   s += "{\"rapid\":";
   exact(s, x.rapid);
   s += ",\"feed\":";
@@ -63,7 +63,7 @@ void split(std::string& s, const ipo::TimeSplit& x) {
 
 // One axis's audit extremes and limits as a JSON object; `joint` adds the index of a joint
 // checked under #TRAFO ON.
-void axis_audit(std::string& s, const ipo::AxisAudit& a, std::optional<std::size_t> joint) {
+void axis_audit(std::string& s, const audit::AxisAudit& a, std::optional<std::size_t> joint) {
   s += "{\"v\":";
   value(s, std::max(a.v_closed, a.v_diff));
   s += ",\"v_limit\":";
@@ -142,7 +142,7 @@ void workspace(std::string& s, const ReportData& d) {
        ",\"sign\":" + std::to_string(w.sign) + "},";
 }
 
-// The workpieces, the same objects as `ncsim time --json` (ipo::append_json); null without.
+// The workpieces, the same objects as `ncsim time --json` (audit::append_json); null without.
 void workpieces(std::string& s, const ReportData& d) {
   key(s, "workpieces");
   if (!d.workpieces) {
@@ -150,11 +150,11 @@ void workpieces(std::string& s, const ReportData& d) {
     return;
   }
   s += "{\"summary\":";
-  ipo::append_json(s, *d.workpieces);
+  audit::append_json(s, *d.workpieces);
   s += ",\"rows\":[";
   for (std::size_t k = 0; k < d.workpiece_rows.size(); ++k) {
     if (k > 0) s += ',';
-    ipo::append_json(s, d.workpiece_rows[k]);
+    audit::append_json(s, d.workpiece_rows[k]);
   }
   s += "]},";
 }
@@ -206,7 +206,7 @@ void times(std::string& s, const ReportData& d) {
   key(s, "slowest");
   s += '[';
   for (std::size_t k = 0; k < d.slowest.size(); ++k) {
-    const ipo::BlockTime& b = d.slowest[k];
+    const audit::BlockTime& b = d.slowest[k];
     s += (k > 0 ? ",{\"line\":" : "{\"line\":") + std::to_string(b.line) + ",\"time_s\":";
     exact(s, b.time);
     s += ",\"distance_mm\":";
@@ -228,10 +228,10 @@ void times(std::string& s, const ReportData& d) {
 
 // The joints under #TRAFO ON, checked apart (as the CLI's audit lists them): those that a
 // transformed cycle moved, each with its axis index.
-void joints(std::string& s, const ipo::Verdict& v) {
+void joints(std::string& s, const audit::Verdict& v) {
   bool first = true;
   for (std::size_t i = 0; i < v.joints.size(); ++i) {
-    const ipo::AxisAudit& a = v.joints[i];
+    const audit::AxisAudit& a = v.joints[i];
     if (a.v_closed == 0.0 && a.v_diff == 0.0) continue;
     if (!first) s += ',';
     first = false;
@@ -240,16 +240,16 @@ void joints(std::string& s, const ipo::Verdict& v) {
 }
 
 // The documented steps per kind with the one closest to its formula (as the CLI prints them).
-void step_kinds(std::string& s, const ipo::Verdict& v, const std::vector<std::string>& axes) {
+void step_kinds(std::string& s, const audit::Verdict& v, const std::vector<std::string>& axes) {
   bool first_kind = true;
-  for (std::size_t k = 0; k < ipo::kStepKindNames.size(); ++k) {
-    const ipo::StepKind& sk = v.step_kinds[k];
+  for (std::size_t k = 0; k < audit::kStepKindNames.size(); ++k) {
+    const audit::StepKind& sk = v.step_kinds[k];
     if (sk.count == 0) continue;
-    const ipo::Step& c = sk.closest;
+    const audit::Step& c = sk.closest;
     s += first_kind ? "{\"kind\":" : ",{\"kind\":";
     first_kind = false;
-    s += json_quote(ipo::kStepKindNames[k]) +
-         ",\"formula\":" + json_quote(ipo::kStepKindFormulas[k]) +
+    s += json_quote(audit::kStepKindNames[k]) +
+         ",\"formula\":" + json_quote(audit::kStepKindFormulas[k]) +
          ",\"count\":" + std::to_string(sk.count) + ",\"t\":";
     exact(s, c.t);
     s += ",\"line\":" + std::to_string(c.line) +
@@ -265,18 +265,18 @@ void step_kinds(std::string& s, const ipo::Verdict& v, const std::vector<std::st
 }
 
 // The first kPageViolations violations.
-void violations(std::string& s, const ipo::Verdict& v, const std::vector<std::string>& axes) {
+void violations(std::string& s, const audit::Verdict& v, const std::vector<std::string>& axes) {
   const std::size_t listed = std::min(v.violations.size(), kPageViolations);
   for (std::size_t k = 0; k < listed; ++k) {
-    const ipo::Violation& x = v.violations[k];
+    const audit::Violation& x = v.violations[k];
     const std::string axis = x.joint                ? "joint " + std::to_string(x.axis)
                              : x.axis < axes.size() ? axes[x.axis]
                                                     : std::to_string(x.axis);
     s += (k > 0 ? ",{\"t\":" : "{\"t\":");
     exact(s, x.t);
     s += ",\"line\":" + std::to_string(x.line) + ",\"axis\":" + json_quote(axis) +
-         ",\"quantity\":" + json_quote(ipo::quantity_name(x.quantity)) +
-         ",\"method\":" + json_quote(ipo::method_name(x.method)) + ",\"value\":";
+         ",\"quantity\":" + json_quote(audit::quantity_name(x.quantity)) +
+         ",\"method\":" + json_quote(audit::method_name(x.method)) + ",\"value\":";
     value(s, x.value);
     s += ",\"limit\":";
     value(s, x.limit);
@@ -286,7 +286,7 @@ void violations(std::string& s, const ipo::Verdict& v, const std::vector<std::st
 
 // The audit of the same pass: the verdict, the extremes per axis and joint, steps, violations.
 void audit(std::string& s, const ReportData& d) {
-  const ipo::Verdict& v = d.verdict;
+  const audit::Verdict& v = d.verdict;
   key(s, "audit");
   s += std::string("{\"ok\":") + (v.ok() ? "true" : "false") + ",\"contour_mm\":";
   value(s, v.contour_max);

@@ -22,7 +22,7 @@ Recorder::Recorder(std::vector<std::string> axes, std::span<const planner::AxisL
       named_(std::move(named)),
       t_cycle_(t_cycle),
       audit_(limits, t_cycle, start),
-      counter_(t_cycle, [this](const ipo::BlockTime& b) { block_done(b); }),
+      counter_(t_cycle, [this](const audit::BlockTime& b) { block_done(b); }),
       series_(kPerAxis * names_.size() + 2 + named_.size(), kBuckets),
       mcs_(std::clamp<std::size_t>(names_.size(), 1, 3), kPathPoints) {
   if (names_.empty() || names_.size() != limits.size())
@@ -33,7 +33,7 @@ Recorder::Recorder(std::vector<std::string> axes, std::span<const planner::AxisL
   soft_limits_.assign(names_.size(), {nan, nan});
 }
 
-void Recorder::set_limits(const ipo::ChannelConfig& config) {
+void Recorder::set_limits(const channel::ChannelConfig& config) {
   for (std::size_t i = 0; i < names_.size() && i < config.axes.size(); ++i) {
     const axes::SoftLimitParams& l = config.axes[i].monitor.soft_limits;
     constexpr double nan = std::numeric_limits<double>::quiet_NaN();
@@ -49,7 +49,7 @@ void Recorder::set_limits(const ipo::ChannelConfig& config) {
     w.upper = c.workspace.upper;
     w.pos_limit = c.pos_limit;
     // PCS0 +X in MCS (R0 e_x); along MCS X when T0 turns only about X.
-    const ipo::SyncFrame frame(c);
+    const tracking::SyncFrame frame(c);
     const Eigen::Vector3d e = frame.direction();
     w.along_x = std::abs(std::abs(e.x()) - 1.0) < kRelTol;
     w.sign = e.x() < 0.0 ? -1 : 1;
@@ -57,7 +57,7 @@ void Recorder::set_limits(const ipo::ChannelConfig& config) {
   }
 }
 
-void Recorder::set_conveyor(const ipo::ConveyorSync* sync) {
+void Recorder::set_conveyor(const tracking::ConveyorSync* sync) {
   if (started_) throw std::logic_error("report recorder: set_conveyor after the first cycle");
   conveyor_ = sync;
   if (sync == nullptr || sync->port() == nullptr || conveyor_series_) return;
@@ -68,9 +68,10 @@ void Recorder::set_conveyor(const ipo::ConveyorSync* sync) {
   series_ = MinMaxDecimator(kPerAxis * names_.size() + 2 + named_.size(), kBuckets);
   values_.resize(series_.series(), std::numeric_limits<double>::quiet_NaN());
   conveyor_series_ = true;
-  cycles_ = std::make_unique<ipo::WorkpieceCycles>(t_cycle_, [this](const ipo::WorkpieceCycle& r) {
-    if (rows_.size() < kWorkpieceRows) rows_.push_back(r);
-  });
+  cycles_ =
+      std::make_unique<audit::WorkpieceCycles>(t_cycle_, [this](const audit::WorkpieceCycle& r) {
+        if (rows_.size() < kWorkpieceRows) rows_.push_back(r);
+      });
 }
 
 void Recorder::conveyor_values() {
@@ -79,7 +80,7 @@ void Recorder::conveyor_values() {
   v[0] = port.actual().v;
   v[1] = port.measured().v;
   v[2] = port.master().v;
-  const ipo::MasterDisplay d = conveyor_->display();
+  const tracking::MasterDisplay d = conveyor_->display();
   constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   v[3] = d.valid ? d.current_pos_master : nan;
   v[4] = d.valid ? d.pos_master_comp : nan;
@@ -89,18 +90,20 @@ void Recorder::conveyor_values() {
   if (axes_state_ != nullptr) {
     const std::size_t n = names_.size();
     if (const auto lag =
-            ipo::cycle_lag(*conveyor_, {axes_state_->command.data(), n},
-                           {axes_state_->actual.data(), n}, transformed_, tcp_, forward_))
+            tracking::cycle_lag(*conveyor_, {axes_state_->command.data(), n},
+                                {axes_state_->actual.data(), n}, transformed_, tcp_, forward_))
       v[5] = *lag;
   }
   // The phases of docs/report.md "Conveyor": synchronised from the catch-up's P-CHAN-00365
   // status (ConveyorSync::synchronised()) to #SYNC OUT.
-  const ipo::SyncPhase p = conveyor_->phase();
-  const bool sync = conveyor_->synchronised() || p == ipo::SyncPhase::tracking;
-  v[6] = p == ipo::SyncPhase::waiting ? 1.0 : 0.0;
-  v[7] = !sync && (p == ipo::SyncPhase::latched || p == ipo::SyncPhase::catching_up) ? 1.0 : 0.0;
+  const tracking::SyncPhase p = conveyor_->phase();
+  const bool sync = conveyor_->synchronised() || p == tracking::SyncPhase::tracking;
+  v[6] = p == tracking::SyncPhase::waiting ? 1.0 : 0.0;
+  v[7] = !sync && (p == tracking::SyncPhase::latched || p == tracking::SyncPhase::catching_up)
+             ? 1.0
+             : 0.0;
   v[8] = sync ? 1.0 : 0.0;
-  v[9] = p == ipo::SyncPhase::leaving || p == ipo::SyncPhase::departing ? 1.0 : 0.0;
+  v[9] = p == tracking::SyncPhase::leaving || p == tracking::SyncPhase::departing ? 1.0 : 0.0;
   cycles_->add(p, port.last_latch().workpiece);
 }
 
@@ -182,13 +185,13 @@ void Recorder::add_mcs(const ipo::AxisVec& axes) {
   mcs_.add(mcs_point_);
 }
 
-void Recorder::block_done(const ipo::BlockTime& b) {
+void Recorder::block_done(const audit::BlockTime& b) {
   ++blocks_;
   if (slowest_.size() == kSlowest && !(b.time > slowest_.back().time)) return;
   // Longest first; an equal time goes after the earlier block (execution order).
   const auto at = std::upper_bound(
       slowest_.begin(), slowest_.end(), b,
-      [](const ipo::BlockTime& x, const ipo::BlockTime& y) { return x.time > y.time; });
+      [](const audit::BlockTime& x, const audit::BlockTime& y) { return x.time > y.time; });
   slowest_.insert(at, b);
   if (slowest_.size() > kSlowest) slowest_.pop_back();
 }

@@ -8,15 +8,15 @@
 // (set_axes(): following error), the axis limits and cycle of the channel configuration;
 // optionally per cycle the PCS1 tool point and named series (set_pcs1(), set_value()); on a
 // channel that tracks a conveyor (set_conveyor()) the conveyor series, read from its
-// ipo::ConveyorSync and conveyor::Port each cycle (belt velocity real / measured / filtered,
+// tracking::ConveyorSync and conveyor::Port each cycle (belt velocity real / measured / filtered,
 // current_pos_master, pos_master_comp, synchro_lag, the sync phases; the time per workpiece),
 // and its workspace cuboid and pos_limit (set_limits()); at the end the run's outcome
 // (finish()).
 // Outputs: ReportData: decimated time series (per axis position, v, a, j, following error;
 // path velocity and programmed feed; the named series, the conveyor's among them), the thinned
 // toolpath in MCS (and PCS1), the workspace cuboid and pos_limit line, the per-workpiece rows,
-// the slowest blocks (ipo::TimeCounter, the machinery of `time --blocks`), the audit verdict
-// (ipo::Audit in the same pass), the totals, the stop reason and the run-time error.
+// the slowest blocks (audit::TimeCounter, the machinery of `time --blocks`), the audit verdict
+// (audit::Audit in the same pass), the totals, the stop reason and the run-time error.
 // Invariants: memory bounded by the decimation sizes, kSlowest and kWorkpieceRows, never by the
 // run length;
 // deterministic.
@@ -77,17 +77,17 @@ struct ReportData {
   double path_tolerance = 0.0;             ///< thinning tolerance reached [mm]
   std::vector<double> path_pcs1;           ///< thinned toolpath in PCS1 (empty: no conveyor frame)
   std::optional<WorkspaceView> workspace;  ///< only on a channel that tracks a conveyor
-  /// Time per workpiece (ipo::WorkpieceCycles; only with a conveyor world): the summary of
+  /// Time per workpiece (audit::WorkpieceCycles; only with a conveyor world): the summary of
   /// every row and the first kWorkpieceRows rows.
-  std::optional<ipo::WorkpieceSummary> workpieces;
-  std::vector<ipo::WorkpieceCycle> workpiece_rows;
-  ipo::TimeResult time_total;           ///< cycles, total, distance, split
-  std::uint64_t blocks = 0;             ///< block records (time --blocks rows)
-  std::vector<ipo::BlockTime> slowest;  ///< the kSlowest longest blocks, longest first
-  ipo::Verdict verdict;                 ///< the audit of the same pass
-  std::string outcome = "ok";           ///< "ok", "stopped" (scenario [stop]) or "error"
-  std::string stop;                     ///< the scenario's stop reason, if any
-  std::string error;                    ///< the run-time / program error text, if any
+  std::optional<audit::WorkpieceSummary> workpieces;
+  std::vector<audit::WorkpieceCycle> workpiece_rows;
+  audit::TimeResult time_total;           ///< cycles, total, distance, split
+  std::uint64_t blocks = 0;               ///< block records (time --blocks rows)
+  std::vector<audit::BlockTime> slowest;  ///< the kSlowest longest blocks, longest first
+  audit::Verdict verdict;                 ///< the audit of the same pass
+  std::string outcome = "ok";             ///< "ok", "stopped" (scenario [stop]) or "error"
+  std::string stop;                       ///< the scenario's stop reason, if any
+  std::string error;                      ///< the run-time / program error text, if any
 };
 
 /// The run's end as the caller saw it.
@@ -109,7 +109,7 @@ class Recorder final : public ipo::Sink {
   /// The conveyor series set_conveyor() appends, in this order (docs/report.md "Conveyor"):
   /// belt velocity real, measured (raw) and filtered [mm/s]; current_pos_master and
   /// pos_master_comp [mm] (null before the first measurement); synchro_lag [mm]
-  /// (ipo::tracking_lag: null unless PCS1 moves); then one 0/1 indicator per sync phase (unit
+  /// (tracking::tracking_lag: null unless PCS1 moves); then one 0/1 indicator per sync phase (unit
   /// "phase"): waiting, catch_up, synchronised, leaving.
   static constexpr std::array<std::array<const char*, 2>, 10> kConveyorSeries{{
       {"belt_v_actual", "mm/s"},
@@ -132,21 +132,21 @@ class Recorder final : public ipo::Sink {
   Recorder& operator=(const Recorder&) = delete;
 
   /// The axes whose following error is recorded (read at each on_cycle); null: zero.
-  void set_axes(const ipo::AxesState* state) noexcept { axes_state_ = state; }
+  void set_axes(const channel::AxesState* state) noexcept { axes_state_ = state; }
   /// The setpoints the machine axes received: the recorder's audit checks the axis limits on
-  /// them (ipo::Audit::set_setpoints).
+  /// them (audit::Audit::set_setpoints).
   void set_setpoints(const std::array<axes::Setpoint, planner::kMaxAxes>* set) noexcept {
     audit_.set_setpoints(set);
     set_ = set;
   }
-  /// The belt's share of those setpoints (ipo::Audit::set_belt).
-  void set_belt(const ipo::BeltOffset* belt) noexcept { audit_.set_belt(belt); }
-  /// The TCP in MCS of a cycle under #TRAFO ON (ipo::Channel::tcp(); null: none): on a
+  /// The belt's share of those setpoints (audit::Audit::set_belt).
+  void set_belt(const tracking::BeltOffset* belt) noexcept { audit_.set_belt(belt); }
+  /// The TCP in MCS of a cycle under #TRAFO ON (channel::Channel::tcp(); null: none): on a
   /// conveyor channel the MCS toolpath of a transformed cycle (the setpoints are joints there).
   void set_tcp(const std::array<axes::Setpoint, planner::kMaxAxes>* tcp) noexcept { tcp_ = tcp; }
   // The MCS toolpath of a kinematic machine before #TRAFO ON.
   /// The machine's forward transform, axis positions -> the same vector with the TCP's X, Y, Z
-  /// [mm] (ipo::forward_map; false where it does not map): on a machine whose axes are joints,
+  /// [mm] (program::forward_map; false where it does not map): on a machine whose axes are joints,
   /// an untransformed cycle's MCS toolpath point is the joints' TCP, not their angles (empty:
   /// the axes as they are). An unmapped point is left out.
   void set_forward(planner::JointMap forward) { forward_ = std::move(forward); }
@@ -154,12 +154,12 @@ class Recorder final : public ipo::Sink {
   /// while it moves PCS1 or drives a catch-up the cycle's path point is the PCS1 toolpath. With
   /// a conveyor world attached (sync->port()) the conveyor series kConveyorSeries are appended
   /// to the named series; call before the first cycle (std::logic_error otherwise).
-  void set_conveyor(const ipo::ConveyorSync* sync);
+  void set_conveyor(const tracking::ConveyorSync* sync);
   /// The soft position limits of the channel's axes (P-AXIS-00177 / 00178, where enabled),
   /// drawn on the position charts, `config.axes` in the recorder's axis order; and the
   /// conveyor workspace and pos_limit of `config.conveyor` (drawn when set_conveyor() gave one);
   /// the joints' limits under a kinematic transform (`config.path.joints`, on_joints()).
-  void set_limits(const ipo::ChannelConfig& config);
+  void set_limits(const channel::ChannelConfig& config);
   /// The PCS1 tool point of the cycle on_cycle() sees next (mm; enables the PCS1 panels).
   void set_pcs1(std::span<const double> p);
   /// Named series `index` (constructor order) for the next cycle; held until set again.
@@ -167,7 +167,7 @@ class Recorder final : public ipo::Sink {
 
   void on_joint(const ipo::Joint& joint) override;
   void on_cycle(const ipo::Cycle& cycle) override;
-  /// The joints a cycle under #TRAFO ON gave the machine axes (ipo::Channel::joints(), after
+  /// The joints a cycle under #TRAFO ON gave the machine axes (channel::Channel::joints(), after
   /// the cycle's on_cycle()): the recorder's audit checks them apart, as the CLI's audit does.
   void on_joints(const ipo::Cycle& cycle, const ipo::JointSetpoint& joints) {
     audit_.on_joints(cycle, joints);
@@ -177,7 +177,7 @@ class Recorder final : public ipo::Sink {
   ReportData finish(const RunEnd& end);
 
  private:
-  void block_done(const ipo::BlockTime& b);
+  void block_done(const audit::BlockTime& b);
   void conveyor_values();
   /// Adds the cycle's MCS toolpath point from the axis positions `axes` (set_forward()).
   void add_mcs(const ipo::AxisVec& axes);
@@ -185,28 +185,28 @@ class Recorder final : public ipo::Sink {
   std::vector<std::string> names_;
   std::vector<NamedSeries> named_;
   double t_cycle_;
-  ipo::Audit audit_;
-  ipo::TimeCounter counter_;
+  audit::Audit audit_;
+  audit::TimeCounter counter_;
   MinMaxDecimator series_;
   PathThinner mcs_;
   std::unique_ptr<PathThinner> pcs1_;
   std::vector<double> pcs1_point_;
   const std::array<axes::Setpoint, planner::kMaxAxes>* set_ = nullptr;  ///< set_setpoints()
-  const ipo::ConveyorSync* conveyor_ = nullptr;                         ///< set_conveyor()
+  const tracking::ConveyorSync* conveyor_ = nullptr;                    ///< set_conveyor()
   const std::array<axes::Setpoint, planner::kMaxAxes>* tcp_ = nullptr;  ///< set_tcp()
   std::vector<double> mcs_point_;  ///< scratch: the MCS tool point of the cycle
   planner::JointMap forward_;      ///< set_forward()
   std::vector<double> values_;     ///< one row of series_
-  const ipo::AxesState* axes_state_ = nullptr;
+  const channel::AxesState* axes_state_ = nullptr;
   bool transformed_ = false;  ///< the last cycle ran under #TRAFO ON (ipo::transformed)
   std::vector<std::array<double, 2>> soft_limits_;
-  std::optional<WorkspaceView> workspace_;        ///< set_limits(), with config.conveyor
-  std::size_t conveyor_first_ = 0;                ///< values_ index of kConveyorSeries[0]
-  bool conveyor_series_ = false;                  ///< kConveyorSeries are recorded
-  bool started_ = false;                          ///< a cycle was seen
-  std::unique_ptr<ipo::WorkpieceCycles> cycles_;  ///< with the conveyor series
-  std::vector<ipo::WorkpieceCycle> rows_;         ///< the first kWorkpieceRows rows
-  std::vector<ipo::BlockTime> slowest_;           ///< longest first, ties in execution order
+  std::optional<WorkspaceView> workspace_;          ///< set_limits(), with config.conveyor
+  std::size_t conveyor_first_ = 0;                  ///< values_ index of kConveyorSeries[0]
+  bool conveyor_series_ = false;                    ///< kConveyorSeries are recorded
+  bool started_ = false;                            ///< a cycle was seen
+  std::unique_ptr<audit::WorkpieceCycles> cycles_;  ///< with the conveyor series
+  std::vector<audit::WorkpieceCycle> rows_;         ///< the first kWorkpieceRows rows
+  std::vector<audit::BlockTime> slowest_;           ///< longest first, ties in execution order
   std::uint64_t blocks_ = 0;
 };
 

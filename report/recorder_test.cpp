@@ -18,7 +18,10 @@
 namespace {
 
 using namespace ncsim;
+using namespace ncsim::audit;
+using namespace ncsim::channel;
 using namespace ncsim::ipo;
+using namespace ncsim::tracking;
 using namespace ncsim::ipo::test;
 using ncsim::report::NamedSeries;
 using ncsim::report::Recorder;
@@ -164,7 +167,7 @@ TEST_CASE(
   conv.workspace = {Eigen::Vector3d(-200.0, 0.0, -100.0), Eigen::Vector3d(4000.0, 2500.0, 300.0)};
   conv.pos_limit = -190.0;
   cc.conveyor = conv;
-  test::FakePort port(300.0);
+  tracking::test::FakePort port(300.0);
   ConveyorSync sync(conv, sync_axes, 0.001);
   sync.attach(&port);
   Recorder rec({"X", "Y", "Z"}, cc.path.axes, 0.001, cc.path.start);
@@ -205,7 +208,7 @@ TEST_CASE(
   CHECK(at("phase.catch_up").back() == 1.0);  // latched: the next motion is the catch-up
   CHECK(at("phase.synchronised").back() == 0.0);
   CHECK(std::isnan(at("synchro_lag").back()));  // only while PCS1 moves (tracking, leaving)
-  // The time per workpiece (ipo::WorkpieceCycles): one open row, waiting then catch-up.
+  // The time per workpiece (audit::WorkpieceCycles): one open row, waiting then catch-up.
   REQUIRE(d.workpieces);
   CHECK(d.workpieces->workpieces == 1);
   CHECK(d.workpieces->complete == 0);

@@ -9,7 +9,8 @@
 
 namespace ncsim::runner {
 
-LineOutcome run_line(const RunSpec& spec, const std::function<void(const ipo::Channel&)>& on_cycle,
+LineOutcome run_line(const RunSpec& spec,
+                     const std::function<void(const channel::Channel&)>& on_cycle,
                      std::ostream& err) {
   LineOutcome o;
   LoadResult loaded = load(spec);

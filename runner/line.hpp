@@ -25,7 +25,8 @@ struct LineOutcome {
 
 /// Loads `spec` (the load's diagnostics on `err`) and runs it to its end, `on_cycle` (may be
 /// empty) after every running cycle.
-LineOutcome run_line(const RunSpec& spec, const std::function<void(const ipo::Channel&)>& on_cycle,
+LineOutcome run_line(const RunSpec& spec,
+                     const std::function<void(const channel::Channel&)>& on_cycle,
                      std::ostream& err);
 
 /// The lines (main program) whose `#MACHINE DATA` sets parameter `id` ("P-AXIS-00626"), from a

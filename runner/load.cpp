@@ -47,7 +47,7 @@ void apply_scenario(const ProgramSpec& spec, std::optional<scenario::Scenario>& 
 bool cycle_suits_kv(const machines::Machine& machine, double t,
                     const std::optional<std::uint64_t>& cycle_us, std::ostream& err) {
   using core::human;
-  for (const std::uint8_t i : ipo::interpolated_axes(machine)) {
+  for (const std::uint8_t i : program::interpolated_axes(machine)) {
     const machines::AxisParams& a = machine.axes[i];
     if (a.control.kv * t <= 1.0) continue;
     err << "ncsim: error: "
@@ -105,8 +105,12 @@ std::variant<std::unique_ptr<Loaded>, Exit> load_checked(const RunSpec& run, std
   // machine's are refused by the loader: NC6102, NC6105).
   auto scenario = load_scenario_for(spec, file, *machine.machine, err);
   if (const Exit* status = std::get_if<Exit>(&scenario)) return *status;
-  auto in = std::make_unique<Loaded>(Loaded{
-      std::move(file), std::move(*machine.machine), ipo::kDefaultCycle, {}, std::nullopt, nullptr});
+  auto in = std::make_unique<Loaded>(Loaded{std::move(file),
+                                            std::move(*machine.machine),
+                                            program::kDefaultCycle,
+                                            {},
+                                            std::nullopt,
+                                            nullptr});
   in->scenario = std::move(std::get<std::optional<scenario::Scenario>>(scenario));
   apply_cycle_options(spec, in->interp);
   apply_scenario(spec, in->scenario, in->machine, in->interp);

@@ -61,7 +61,7 @@ std::variant<std::optional<scenario::Scenario>, Exit> load_scenario_for(
           ? scenario::kOverrideMax
           : 1.0;
   context.axis_override_max = 1.0;  // 002 2.2: an INDP axis takes 0 .. 100 %
-  // NC7020: an axis override of a path axis. The path axes as ipo::interpolated_axes has them
+  // NC7020: an axis override of a path axis. The path axes as program::interpolated_axes has them
   // (check and trace do not link the interpolator): not a spindle, an encoder or the conveyor.
   context.path_axes.emplace();
   for (const machines::AxisParams& a : machine.axes) {

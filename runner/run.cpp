@@ -28,12 +28,12 @@ Run::Run(std::unique_ptr<Loaded> loaded, const RunSpec& spec)
       interp_(in_->file, in_->machine, in_->interp),
       // refuse: check's NC4601 before the block moves (issue 34)
       src_(interp_, in_->machine,
-           ipo::SourceConfig{.t_cycle = in_->t_cycle, .refuse_soft_limits = true}),
-      config_(ipo::channel_config(in_->machine, in_->t_cycle)),
+           program::SourceConfig{.t_cycle = in_->t_cycle, .refuse_soft_limits = true}),
+      config_(channel::channel_config(in_->machine, in_->t_cycle)),
       answer_positions_(spec.answer_positions) {
   if (!spec.audit) return;
-  audit_ = std::make_unique<ipo::Audit>(config_.path.axes, config_.path.channel.t_cycle,
-                                        config_.path.start);
+  audit_ = std::make_unique<audit::Audit>(config_.path.axes, config_.path.channel.t_cycle,
+                                          config_.path.start);
   if (config_.path.joints)  // the joints are the machine axes
     audit_->set_joint_limits(config_.path.joints->joints, config_.path.start, true);
 }
@@ -61,7 +61,7 @@ void Run::start(std::vector<ipo::Sink*> sinks) {
     fanout_ = std::make_unique<Fanout>(std::move(sinks));
     sink = fanout_.get();
   }
-  channel_ = std::make_unique<ipo::Channel>(std::move(config_), src_, sink);
+  channel_ = std::make_unique<channel::Channel>(std::move(config_), src_, sink);
   if (answer_positions_)  // position barriers
     src_.answer_positions_from(&channel_->axes().command);
   channel_->play(player_.get());
@@ -80,7 +80,7 @@ ipo::Status Run::step() {
   return status;
 }
 
-ipo::Status Run::run(const std::function<void(const ipo::Channel&)>& on_cycle) {
+ipo::Status Run::run(const std::function<void(const channel::Channel&)>& on_cycle) {
   ipo::Status status;
   while ((status = step()) == ipo::Status::running)
     if (on_cycle) on_cycle(*channel_);
@@ -99,11 +99,11 @@ Ending Run::ending(ipo::Status last) const {
   return e;
 }
 
-void Run::count_time(std::function<void(const ipo::BlockTime&)> on_block) {
+void Run::count_time(std::function<void(const audit::BlockTime&)> on_block) {
   time_.emplace(channel_->t_cycle(), std::move(on_block));
 }
 
-ipo::TimeResult Run::time_result() {
+audit::TimeResult Run::time_result() {
   return time_->finish();
 }
 
@@ -111,11 +111,11 @@ bool Run::tracks_conveyor() const noexcept {
   return in_->port != nullptr && channel_->conveyor_sync() != nullptr;
 }
 
-void Run::count_workpieces(std::function<void(const ipo::WorkpieceCycle&)> on_row) {
+void Run::count_workpieces(std::function<void(const audit::WorkpieceCycle&)> on_row) {
   workpieces_.emplace(channel_->t_cycle(), std::move(on_row));
 }
 
-std::optional<ipo::WorkpieceSummary> Run::workpiece_summary() {
+std::optional<audit::WorkpieceSummary> Run::workpiece_summary() {
   if (!workpieces_) return std::nullopt;
   return workpieces_->finish();
 }

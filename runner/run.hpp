@@ -49,32 +49,32 @@ class Run {
   /// One cycle; while running, the audit sees the joints under #TRAFO ON.
   ipo::Status step();
   /// Steps to the end, `on_cycle` (may be empty) after every running cycle; the last status.
-  ipo::Status run(const std::function<void(const ipo::Channel&)>& on_cycle = {});
+  ipo::Status run(const std::function<void(const channel::Channel&)>& on_cycle = {});
   /// How the run ended after the step that returned `last`.
   Ending ending(ipo::Status last) const;
 
   /// After start(): step() counts the machining time of every running cycle (`time`; the
   /// same cycles as `run`), `on_block` (may be empty) sees each block's record as it closes.
-  void count_time(std::function<void(const ipo::BlockTime&)> on_block = {});
+  void count_time(std::function<void(const audit::BlockTime&)> on_block = {});
   /// Closes the time count: cycles, total, distance and split (count_time() first).
-  ipo::TimeResult time_result();
+  audit::TimeResult time_result();
   /// The channel tracks a conveyor (a conveyor world and its sync part): time per workpiece.
   bool tracks_conveyor() const noexcept;
   /// After start(), on a run that tracks_conveyor(): step() counts the time per workpiece,
   /// `on_row` sees every row as it ends.
-  void count_workpieces(std::function<void(const ipo::WorkpieceCycle&)> on_row);
+  void count_workpieces(std::function<void(const audit::WorkpieceCycle&)> on_row);
   /// Closes the workpiece count (nullopt when none was counted).
-  std::optional<ipo::WorkpieceSummary> workpiece_summary();
+  std::optional<audit::WorkpieceSummary> workpiece_summary();
 
   const Loaded& loaded() const noexcept { return *in_; }
   const interp::Interpreter& interpreter() const noexcept { return interp_; }
-  const ipo::ProgramSource& source() const noexcept { return src_; }
+  const program::ProgramSource& source() const noexcept { return src_; }
   /// The channel configuration until start() moves it into the channel.
-  const ipo::ChannelConfig& config() const noexcept { return config_; }
-  ipo::Channel& channel() noexcept { return *channel_; }
-  const ipo::Channel& channel() const noexcept { return *channel_; }
+  const channel::ChannelConfig& config() const noexcept { return config_; }
+  channel::Channel& channel() noexcept { return *channel_; }
+  const channel::Channel& channel() const noexcept { return *channel_; }
   /// The audit (null without RunSpec::audit).
-  const ipo::Audit* audit() const noexcept { return audit_.get(); }
+  const audit::Audit* audit() const noexcept { return audit_.get(); }
   /// The channel plays the scenario (it has events or [stop]).
   bool plays() const noexcept { return player_ != nullptr; }
 
@@ -82,15 +82,15 @@ class Run {
   class Fanout;
   std::unique_ptr<Loaded> in_;
   interp::Interpreter interp_;
-  ipo::ProgramSource src_;
-  ipo::ChannelConfig config_;
+  program::ProgramSource src_;
+  channel::ChannelConfig config_;
   bool answer_positions_ = true;
-  std::unique_ptr<ipo::Audit> audit_;
+  std::unique_ptr<audit::Audit> audit_;
   std::unique_ptr<scenario::Player> player_;
   std::unique_ptr<Fanout> fanout_;
-  std::unique_ptr<ipo::Channel> channel_;
-  std::optional<ipo::TimeCounter> time_;
-  std::optional<ipo::WorkpieceCycles> workpieces_;
+  std::unique_ptr<channel::Channel> channel_;
+  std::optional<audit::TimeCounter> time_;
+  std::optional<audit::WorkpieceCycles> workpieces_;
 };
 
 }  // namespace ncsim::runner

@@ -64,7 +64,7 @@ TEST_CASE("a program runs to its end through Run: time equals the cycles, the au
   run.start();
   run.count_time();
   std::uint64_t cycles = 0;
-  const ncsim::ipo::Status last = run.run([&](const ncsim::ipo::Channel&) { ++cycles; });
+  const ncsim::ipo::Status last = run.run([&](const ncsim::channel::Channel&) { ++cycles; });
   const Ending end = run.ending(last);
   CHECK_FALSE(end.failed);
   CHECK(end.stop == "program end");
@@ -84,7 +84,7 @@ TEST_CASE("a conveyor program counts its workpieces; the headless run agrees on 
   run.start();
   REQUIRE(run.tracks_conveyor());
   std::uint64_t rows = 0;
-  run.count_workpieces([&](const ncsim::ipo::WorkpieceCycle&) { ++rows; });
+  run.count_workpieces([&](const ncsim::audit::WorkpieceCycle&) { ++rows; });
   const Ending end = run.ending(run.run());
   CHECK_FALSE(end.failed);
   CHECK(run.workpiece_summary().has_value());

@@ -21,7 +21,7 @@
 namespace ncsim::conveyor {
 class Port;
 }
-namespace ncsim::ipo {
+namespace ncsim::channel {
 class Channel;
 }
 

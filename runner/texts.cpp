@@ -50,7 +50,7 @@ std::string diagnostic_text(const Run& run, const std::string& fallback) {
 
 // A run-time position as a diagnostic in its own file (the main program or a subroutine
 // file), echoing the block's text.
-std::string positioned(const interp::Interpreter& interp, const ipo::RunTimeError& e,
+std::string positioned(const interp::Interpreter& interp, const channel::RunTimeError& e,
                        core::Severity severity, const std::string& message) {
   const core::SourceFile& file = interp.source_file(e.file);
   core::Diagnostic d;
@@ -85,7 +85,7 @@ std::string warnings_text(const Run& run) {
 
 std::string still_moving_text(const Run& run) {
   constexpr double kStanding = 1e-6;  // [mm/s | deg/s] below this an axis stands
-  const ipo::Channel& ch = run.channel();
+  const channel::Channel& ch = run.channel();
   const std::vector<std::string> names = axis_names(run.loaded().machine);
   const std::vector<std::string> units = axis_units(run.loaded().machine);
   std::string moving;
@@ -105,7 +105,7 @@ std::string stop_source(const scenario::Scenario& s) {
   return s.file.empty() ? std::string("--max-time") : "scenario '" + s.file + "'";
 }
 
-std::string stop_reason(bool failed, const ipo::Channel& ch) {
+std::string stop_reason(bool failed, const channel::Channel& ch) {
   if (failed) return std::string(scenario::to_string(scenario::StopReason::error));
   if (const auto& s = ch.scenario_stop()) return std::string(scenario::to_string(*s));
   return std::string(scenario::to_string(scenario::StopReason::program_end));
@@ -118,14 +118,14 @@ std::string block_where(const interp::Interpreter& interp, std::uint16_t file, s
 
 std::vector<std::string> axis_names(const machines::Machine& m) {
   std::vector<std::string> out;
-  for (const std::uint8_t i : ipo::interpolated_axes(m))
+  for (const std::uint8_t i : program::interpolated_axes(m))
     out.push_back(m.axes[i].name);
   return out;
 }
 
 std::vector<std::string> axis_units(const machines::Machine& m) {
   std::vector<std::string> out;
-  for (const std::uint8_t i : ipo::interpolated_axes(m))
+  for (const std::uint8_t i : program::interpolated_axes(m))
     out.push_back(m.axes[i].kind == machines::AxisKind::rotary ? "deg" : "mm");
   return out;
 }
@@ -136,11 +136,11 @@ std::string first_line(const std::string& s) {
 
 std::string first_violation(const Run& run) {
   if (run.audit() == nullptr || run.audit()->verdict().violations.empty()) return {};
-  const ipo::Violation& x = run.audit()->verdict().violations.front();
+  const audit::Violation& x = run.audit()->verdict().violations.front();
   const std::vector<std::string> names = axis_names(run.loaded().machine);
   return "audit: t=" + num(x.t) + " s line " + block_where(run.interpreter(), x.file, x.line) +
          " axis " + (x.axis < names.size() ? names[x.axis] : std::to_string(x.axis)) + " " +
-         ipo::quantity_name(x.quantity) + " " + num(x.value) + " > " + num(x.limit);
+         audit::quantity_name(x.quantity) + " " + num(x.value) + " > " + num(x.limit);
 }
 
 }  // namespace ncsim::runner

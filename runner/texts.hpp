@@ -27,7 +27,7 @@ std::string warnings_text(const Run& run);
 std::string still_moving_text(const Run& run);
 /// Why a run ended (docs/scenario.md "[stop]"): "error", the scenario's [stop] reason, or the
 /// program end.
-std::string stop_reason(bool failed, const ipo::Channel& channel);
+std::string stop_reason(bool failed, const channel::Channel& channel);
 /// What set the stop condition: "scenario 'f.toml'", or "--max-time" for the one the option made.
 std::string stop_source(const scenario::Scenario& s);
 /// Where a block is: its line in the main program, `file:line` in a subroutine file.

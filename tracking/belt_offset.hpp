@@ -7,7 +7,7 @@
 
 #include "planner/move.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 /// The belt's share of the axes in the cycle just played (Channel::belt_share()).
 struct BeltOffset {
@@ -17,4 +17,4 @@ struct BeltOffset {
   planner::AxisVec share{};   ///< each axis's share of one mm of travel
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

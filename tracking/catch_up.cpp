@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 namespace {
 
@@ -137,4 +137,4 @@ double CatchUp::target_at(std::size_t i, double s) const noexcept {
   return axes_[i].target + axes_[i].conveying * (s - s0_);
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

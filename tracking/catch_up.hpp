@@ -36,7 +36,7 @@
 #include "axes/profile.hpp"
 #include "planner/move.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 /// NC9050: no catch-up motion of the required kind exists (the axis named in the message).
 inline constexpr const char* kCatchUpNotSynchronizableId = "NC9050";
@@ -92,4 +92,4 @@ axes::Result plan_meeting(const axes::MotionState& start, double p1, double w, d
                           const axes::Dynamics& dynamics, axes::Profile& out,
                           double& t_meet) noexcept;
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

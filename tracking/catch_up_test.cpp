@@ -13,7 +13,7 @@
 
 namespace {
 
-using namespace ncsim::ipo;
+using namespace ncsim::tracking;
 namespace axes = ncsim::axes;
 
 axes::Dynamics dyn() {

@@ -8,14 +8,15 @@
 #include <memory>
 #include <numbers>
 
-namespace ncsim::ipo {
+#include "core/tolerance.hpp"
+
+namespace ncsim::tracking {
 
 namespace {
 
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
-constexpr int kSamples = 24;    ///< tangent samples per spline piece (fit check, unwrapping)
-constexpr int kMaxDepth = 6;    ///< halvings of a spline piece at most (64 parts)
-constexpr double kTiny = 1e-9;  ///< [mm] no XY motion below this
+constexpr int kSamples = 24;  ///< tangent samples per spline piece (fit check, unwrapping)
+constexpr int kMaxDepth = 6;  ///< halvings of a spline piece at most (64 parts)
 
 using planner::AxisVec;
 
@@ -56,7 +57,7 @@ std::optional<double> spline_turn_rate(const planner::Move& mv, int x, int y, do
   const double dx = bezier_d1(controls(mv, x), u);
   const double dy = bezier_d1(controls(mv, y), u);
   const double q = dx * dx + dy * dy;
-  if (!(q > kTiny * kTiny)) return std::nullopt;
+  if (!(q > kSamePoint * kSamePoint)) return std::nullopt;
   const double ddx = bezier_d2(controls(mv, x), u);
   const double ddy = bezier_d2(controls(mv, y), u);
   return (dx * ddy - dy * ddx) / q * kRadToDeg;
@@ -65,7 +66,7 @@ std::optional<double> spline_turn_rate(const planner::Move& mv, int x, int y, do
 }  // namespace
 
 std::optional<double> tangent_angle(double dx, double dy) noexcept {
-  if (std::hypot(dx, dy) < kTiny) return std::nullopt;
+  if (std::hypot(dx, dy) < kSamePoint) return std::nullopt;
   return std::atan2(dy, dx) * kRadToDeg;
 }
 
@@ -116,9 +117,9 @@ std::optional<std::pair<double, double>> move_tangents(const planner::Move& mv, 
     const auto s = tangent_angle(-dir * ry, dir * rx);
     if (!s) return std::nullopt;
     double sweep = (std::atan2(ey, ex) - std::atan2(ry, rx)) * kRadToDeg * dir;
-    while (sweep <= 1e-9)
+    while (sweep <= kSamePoint)
       sweep += 360.0;
-    if (a.full_circle || (std::hypot(ex - rx, ey - ry) < kTiny)) sweep = 360.0;
+    if (a.full_circle || (std::hypot(ex - rx, ey - ry) < kSamePoint)) sweep = 360.0;
     return std::pair{*s, *s + dir * sweep};
   }
   const auto t = tangent_angle(mv.end[xs] - mv.start[xs], mv.end[ys] - mv.start[ys]);
@@ -148,7 +149,7 @@ CaxOutcome CaxTracker::track(const planner::Move& in) {
   const double c_start = unwrap_near(tracking_value(p_, tangents->first), c_now_);
   out.joint_turn = std::fabs(c_start - c_now_);
   double shift = 0.0;  // the joint's turn shared out over the block (0 after a turn block)
-  if (out.joint_turn > p_.anglimit + 1e-9) {
+  if (out.joint_turn > p_.anglimit + kSamePoint) {
     planner::Move turn = mv;
     turn.arc.reset();
     turn.arc_plane.reset();
@@ -235,4 +236,4 @@ void CaxTracker::fit_spline(const planner::Move& mv, double c_start, double shif
   out.push_back(std::move(m));
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

@@ -39,7 +39,7 @@
 
 #include "planner/move.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 /// Fit tolerance of C on a spline piece [deg] (at the sample points of each half).
 inline constexpr double kCaxFitTolerance = 0.01;
@@ -97,4 +97,4 @@ class CaxTracker {
   double c_now_ = 0.0;  ///< [deg]
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

@@ -12,9 +12,9 @@
 
 namespace {
 
-using ncsim::ipo::CaxTracker;
-using ncsim::ipo::CaxTrackParams;
 using ncsim::planner::Move;
+using ncsim::tracking::CaxTracker;
+using ncsim::tracking::CaxTrackParams;
 
 constexpr int kX = 0, kY = 1, kC = 3;
 
@@ -57,22 +57,22 @@ double d1(const Move& m, std::size_t i, double u) {
 }  // namespace
 
 TEST_CASE("the tangent angle is atan2 of the XY direction in degrees; no XY motion has none") {
-  CHECK(*ncsim::ipo::tangent_angle(1.0, 0.0) == doctest::Approx(0.0));
-  CHECK(*ncsim::ipo::tangent_angle(0.0, 2.0) == doctest::Approx(90.0));
-  CHECK(*ncsim::ipo::tangent_angle(-1.0, 0.0) == doctest::Approx(180.0));
-  CHECK(*ncsim::ipo::tangent_angle(-1.0, -1.0) == doctest::Approx(-135.0));
-  CHECK_FALSE(ncsim::ipo::tangent_angle(0.0, 0.0).has_value());
+  CHECK(*ncsim::tracking::tangent_angle(1.0, 0.0) == doctest::Approx(0.0));
+  CHECK(*ncsim::tracking::tangent_angle(0.0, 2.0) == doctest::Approx(90.0));
+  CHECK(*ncsim::tracking::tangent_angle(-1.0, 0.0) == doctest::Approx(180.0));
+  CHECK(*ncsim::tracking::tangent_angle(-1.0, -1.0) == doctest::Approx(-135.0));
+  CHECK_FALSE(ncsim::tracking::tangent_angle(0.0, 0.0).has_value());
 }
 
 TEST_CASE("unwrapping picks the equal angle nearest to the axis") {
-  CHECK(ncsim::ipo::unwrap_near(-170.0, 170.0) == doctest::Approx(190.0));
-  CHECK(ncsim::ipo::unwrap_near(360.0, 0.0) == doctest::Approx(0.0));
-  CHECK(ncsim::ipo::unwrap_near(10.0, 725.0) == doctest::Approx(730.0));
+  CHECK(ncsim::tracking::unwrap_near(-170.0, 170.0) == doctest::Approx(190.0));
+  CHECK(ncsim::tracking::unwrap_near(360.0, 0.0) == doctest::Approx(0.0));
+  CHECK(ncsim::tracking::unwrap_near(10.0, 725.0) == doctest::Approx(730.0));
 }
 
 TEST_CASE("OFFSET adds to the tangent (ROTMODE 0); ROTMODE 1 turns the workpiece the other way") {
-  CHECK(ncsim::ipo::tracking_value({3.0, 180.0, 0}, 30.0) == doctest::Approx(210.0));
-  CHECK(ncsim::ipo::tracking_value({3.0, 180.0, 1}, 30.0) == doctest::Approx(150.0));
+  CHECK(ncsim::tracking::tracking_value({3.0, 180.0, 0}, 30.0) == doctest::Approx(210.0));
+  CHECK(ncsim::tracking::tracking_value({3.0, 180.0, 1}, 30.0) == doctest::Approx(150.0));
 }
 
 TEST_CASE("the static saw's start: a -X line with OFFSET 180 keeps C at 0, no turn block") {
@@ -161,7 +161,7 @@ TEST_CASE("a block without XY motion keeps C") {
 
 TEST_CASE("splitting a spline piece keeps the curve (de Casteljau)") {
   const Move m = spline({0, -50, -150, -200}, {0, 0, -40, -30});
-  const auto [a, b] = ncsim::ipo::split_spline(m);
+  const auto [a, b] = ncsim::tracking::split_spline(m);
   for (double u : {0.0, 0.13, 0.5, 0.77, 1.0}) {
     for (std::size_t i : {std::size_t{0}, std::size_t{1}}) {
       const double v = u < 0.5 ? bezier(a, i, 2 * u) : bezier(b, i, 2 * u - 1);
@@ -189,7 +189,7 @@ TEST_CASE("seeded: on random spline pieces C stays within the fit tolerance of t
       for (double u = 0.05; u < 1.0; u += 0.1) {
         const double theta = std::atan2(d1(part, 1, u), d1(part, 0, u)) * 180.0 / std::numbers::pi;
         const double c = bezier(part, kC, u);
-        CHECK(std::fabs(ncsim::ipo::unwrap_near(theta, c) - c) < 0.05);
+        CHECK(std::fabs(ncsim::tracking::unwrap_near(theta, c) - c) < 0.05);
       }
     }
   }

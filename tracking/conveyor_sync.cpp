@@ -4,12 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <stdexcept>
 
-namespace ncsim::ipo {
+#include "core/number_text.hpp"
+#include "core/tolerance.hpp"
+
+namespace ncsim::tracking {
 
 ConveyorSync::ConveyorSync(const machines::ConveyorSyncChannel& channel,
                            std::span<const SyncAxis> axes, double t_cycle)
@@ -19,18 +21,18 @@ ConveyorSync::ConveyorSync(const machines::ConveyorSyncChannel& channel,
       reserve_(channel.dynamics_reserve),
       t_cycle_(t_cycle) {
   if (axes.size() > planner::kMaxAxes)
-    throw std::invalid_argument("ipo::ConveyorSync: " + std::to_string(axes.size()) + " axes");
+    throw std::invalid_argument("tracking::ConveyorSync: " + std::to_string(axes.size()) + " axes");
   if (!(t_cycle > 0.0))
-    throw std::invalid_argument("ipo::ConveyorSync: cycle time " + std::to_string(t_cycle));
+    throw std::invalid_argument("tracking::ConveyorSync: cycle time " + std::to_string(t_cycle));
   n_ = axes.size();
   for (std::size_t i = 0; i < n_; ++i) {
     axes_[i] = axes[i];
     if (!axes::valid(axes[i].dynamics))
-      throw std::invalid_argument("ipo::ConveyorSync: axis " + axes[i].name +
+      throw std::invalid_argument("tracking::ConveyorSync: axis " + axes[i].name +
                                   ": PTP dynamics not usable (V " +
                                   std::to_string(axes[i].dynamics.v_max) + ")");
     share_[i] = axes[i].xyz >= 0 && axes[i].xyz < 3 ? frame_.direction()[axes[i].xyz] : 0.0;
-    if (std::fabs(share_[i]) < 1e-12) share_[i] = 0.0;  // rounding of an unrotated T0
+    if (std::fabs(share_[i]) < kTiny) share_[i] = 0.0;  // rounding of an unrotated T0
   }
   // The hold line against the conveying direction
   std::array<int, planner::kMaxAxes> xyz{};
@@ -165,7 +167,7 @@ axes::Result ConveyorSync::start_catch_up(std::span<const axes::MotionState> sta
   if (r != axes::Result::ok && feed_cont > 0.0 && plan(0.0) == axes::Result::ok) {
     double lo = 0.0;
     double hi = feed_cont;
-    for (int iter = 0; iter < 40 && hi - lo > 1e-9 * std::max(1.0, hi); ++iter) {
+    for (int iter = 0; iter < 40 && hi - lo > kRelTol * std::max(1.0, hi); ++iter) {
       const double mid = 0.5 * (lo + hi);
       (plan(mid) == axes::Result::ok ? lo : hi) = mid;
     }
@@ -238,20 +240,19 @@ std::optional<SyncError> ConveyorSync::workspace(const Eigen::Vector3d& p_mcs) c
   const auto v = check_workspace(box_, frame_.direction(), p_mcs);
   if (!v) return std::nullopt;
   static constexpr const char* kNames[3] = {"X", "Y", "Z"};
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "%s %.6g mm beyond the conveyor workspace's %s face %.6g mm",
-                kNames[v->coord], v->value, v->upper ? "upper" : "lower", v->limit);
+  const std::string what = kNames[v->coord] + (" " + core::human(v->value)) +
+                           " mm beyond the conveyor workspace's " + (v->upper ? "upper" : "lower") +
+                           " face " + core::human(v->limit) + " mm";
   switch (v->face) {
     case WorkspaceFace::conveying:
       return SyncError{kWorkspaceConveyingId,
-                       std::string(buf) + " in the conveying direction while synchronised"};
+                       what + " in the conveying direction while synchronised"};
     case WorkspaceFace::side:
-      return SyncError{kWorkspaceSideId, std::string(buf) + " (a side face) while synchronised"};
+      return SyncError{kWorkspaceSideId, what + " (a side face) while synchronised"};
     case WorkspaceFace::against:
       break;
   }
-  return SyncError{kWorkspaceHoldId,
-                   std::string(buf) + " against the conveying direction while synchronised"};
+  return SyncError{kWorkspaceHoldId, what + " against the conveying direction while synchronised"};
 }
 
 double ConveyorSync::workspace_cap(HoldState st) noexcept {
@@ -271,4 +272,4 @@ MasterDisplay ConveyorSync::display() const noexcept {
   return master_display(frame_, port_->measured(), port_->master());
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

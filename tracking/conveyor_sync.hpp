@@ -36,7 +36,7 @@
 #include "tracking/workspace.hpp"
 #include "tracking/workspace_hold.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 /// One interpolated axis as conveyor tracking sees it.
 struct SyncAxis {
@@ -196,4 +196,4 @@ class ConveyorSync {
   double stepped_t_ = -1.0;  ///< --- workspace: the last step()'s t [s]
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

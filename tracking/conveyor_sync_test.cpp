@@ -15,11 +15,12 @@
 
 namespace {
 
-using namespace ncsim::ipo;
+using namespace ncsim::tracking;
+using namespace ncsim::tracking::test;
 namespace axes = ncsim::axes;
 namespace conveyor = ncsim::conveyor;
 namespace interp = ncsim::interp;
-using ncsim::ipo::test::FakePort;
+using ncsim::tracking::test::FakePort;
 
 constexpr double kT = 0.001;
 

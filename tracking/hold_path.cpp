@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 HoldPath::HoldPath(const planner::Chain& path, double s, double feed, bool stops,
                    const HoldEntry* following, std::size_t count, int axis, double sign) noexcept
@@ -68,4 +68,4 @@ bool HoldPath::next_block(HoldBlock& b) noexcept {
   return false;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

@@ -22,7 +22,7 @@
 
 #include "planner/chain.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 /// Following look-ahead entries the hold looks at, at most.
 inline constexpr std::size_t kHoldAhead = 16;
@@ -78,4 +78,4 @@ class HoldPath {
   bool block_started_ = false;
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

@@ -4,16 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
-namespace ncsim::ipo {
+#include "core/number_text.hpp"
+
+namespace ncsim::tracking {
 
 namespace {
 
 std::string mm_s(double v) {
-  char buf[48];
-  std::snprintf(buf, sizeof buf, "%.6g mm/s", v);
-  return buf;
+  return core::human(v) + " mm/s";
 }
 
 }  // namespace
@@ -44,4 +43,4 @@ double pcs1_belt(double conveying, double conv_vel) noexcept {
   return std::fabs(conveying) * kBeltVelocityTolerance * conv_vel;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

@@ -10,9 +10,10 @@
 #include <optional>
 #include <string>
 
+#include "core/tolerance.hpp"
 #include "planner/move.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 /// Error 50653 (004 l.514): the conveyor's velocity is more than 10 % above CONV_VEL.
 inline constexpr const char* kBeltTooFastId = "50653";
@@ -25,7 +26,7 @@ inline constexpr double kBeltVelocityTolerance = 1.10;
 /// rounds by up to 2.2e-16 |p| / T (an ulp of each position), the filter's weighted sum adds
 /// a few ulp of v: 1e-9 of 330 mm/s (0.33 um/s) covers a travel up to 1e-9 v T / 2.2e-16 =
 /// 1500 m at 1 ms (75 min of a 330 mm/s belt), far below the 1 mm/s between 330 and 331.
-inline constexpr double kBeltVelocityRounding = 1e-9;
+inline constexpr double kBeltVelocityRounding = kRelTol;
 
 struct SyncError {
   std::string id;  ///< the manual's id (50653, 50587, P-ERR-44009 from the Port) or NC90xx
@@ -60,4 +61,4 @@ planner::AxisLimits pcs1_limits(const planner::AxisLimits& axis, double conveyin
 /// |conveying| * 1.10 * conv_vel (what ProgramSource puts into planner::Move::belt).
 double pcs1_belt(double conveying, double conv_vel) noexcept;
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

@@ -7,7 +7,7 @@
 
 namespace {
 
-using namespace ncsim::ipo;
+using namespace ncsim::tracking;
 namespace planner = ncsim::planner;
 
 planner::AxisLimits x_axis() {

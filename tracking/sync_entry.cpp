@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 namespace {
 
@@ -58,11 +58,11 @@ SyncEntry sync_entry(double asked, const planner::AxisVec& u, const planner::Pre
   return e;
 }
 
-Joint sync_entry_joint(const SyncEntry& entry, const planner::AxisVec& u,
-                       const planner::PreparedSegment& first, double v, double t,
-                       std::uint32_t line, std::size_t axis_count) noexcept {
+ipo::Joint sync_entry_joint(const SyncEntry& entry, const planner::AxisVec& u,
+                            const planner::PreparedSegment& first, double v, double t,
+                            std::uint32_t line, std::size_t axis_count) noexcept {
   const planner::PathPoint out = first.path.at(0.0);
-  Joint jt;
+  ipo::Joint jt;
   jt.t = t;
   jt.line = line;
   jt.cls = entry.cls;
@@ -78,4 +78,4 @@ Joint sync_entry_joint(const SyncEntry& entry, const planner::AxisVec& u,
   return jt;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

@@ -28,7 +28,7 @@
 #include "planner/limits.hpp"
 #include "planner/prepare.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 /// What set the relative velocity of the hand-over.
 enum class EntryLimit : std::uint8_t {
@@ -55,8 +55,8 @@ SyncEntry sync_entry(double asked, const planner::AxisVec& u, const planner::Pre
 
 /// The joint the path passes at the hand-over at velocity `v` [mm/s] (the audit's allowance
 /// for the velocity step of a corner): at time `t` [s], source line `line`.
-Joint sync_entry_joint(const SyncEntry& entry, const planner::AxisVec& u,
-                       const planner::PreparedSegment& first, double v, double t,
-                       std::uint32_t line, std::size_t axis_count) noexcept;
+ipo::Joint sync_entry_joint(const SyncEntry& entry, const planner::AxisVec& u,
+                            const planner::PreparedSegment& first, double v, double t,
+                            std::uint32_t line, std::size_t axis_count) noexcept;
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 namespace {
 
@@ -143,4 +143,4 @@ void SyncErrorStop::step(std::span<axes::Setpoint> sp) noexcept {
     sp[i] = at(brake_[i], elapsed_);
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

@@ -30,7 +30,7 @@
 #include "jerk/jerk.hpp"
 #include "planner/move.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 /// One axis as the stop after an error sees it.
 struct AfterErrorAxis {
@@ -118,4 +118,4 @@ class SyncErrorStop {
   bool usable_ = false;
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

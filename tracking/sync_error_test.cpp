@@ -8,7 +8,7 @@
 #include <cmath>
 #include <random>
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 namespace {
 
 AfterErrorAxis axis(double lo, double hi) {
@@ -155,4 +155,4 @@ TEST_CASE("unusable limits: the stop cannot be planned") {
 }
 
 }  // namespace
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

@@ -6,9 +6,10 @@
 #include <cmath>
 #include <limits>
 
+#include "core/tolerance.hpp"
 #include "tracking/trafo_sync.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 namespace {
 
@@ -17,8 +18,8 @@ double room_ahead(const machines::Workspace& box, const Eigen::Vector3d& dir,
                   const Eigen::Vector3d& p) noexcept {
   double room = std::numeric_limits<double>::infinity();
   for (int k = 0; k < 3; ++k) {
-    if (dir[k] > 1e-12) room = std::min(room, (box.upper[k] - p[k]) / dir[k]);
-    if (dir[k] < -1e-12) room = std::min(room, (box.lower[k] - p[k]) / dir[k]);
+    if (dir[k] > kTiny) room = std::min(room, (box.upper[k] - p[k]) / dir[k]);
+    if (dir[k] < -kTiny) room = std::min(room, (box.lower[k] - p[k]) / dir[k]);
   }
   return std::isfinite(room) ? std::max(room, 0.0) : 0.0;
 }
@@ -28,7 +29,7 @@ double room_ahead(const machines::Workspace& box, const Eigen::Vector3d& dir,
 std::optional<std::array<AfterErrorAxis, planner::kMaxAxes>> tcp_after_error_axes(
     const planner::JointMap& inverse, std::array<int, 3> xyz,
     std::span<const AfterErrorAxis> joints, const machines::Workspace& box,
-    const Eigen::Vector3d& direction, const AxisVec& tcp) noexcept {
+    const Eigen::Vector3d& direction, const planner::AxisVec& tcp) noexcept {
   const std::size_t n = std::min(joints.size(), planner::kMaxAxes);
   if (!inverse || n == 0) return std::nullopt;
   for (const int k : xyz)
@@ -38,15 +39,15 @@ std::optional<std::array<AfterErrorAxis, planner::kMaxAxes>> tcp_after_error_axe
     p[static_cast<int>(k)] = tcp[static_cast<std::size_t>(xyz[k])];
   // The points the following passes: the TCP, then along the belt up to the face ahead; a point
   // the transform cannot map ends the samples (the joints' check stops the TCP before it).
-  std::array<AxisVec, kTcpFollowSamples> points{};
+  std::array<planner::AxisVec, kTcpFollowSamples> points{};
   std::size_t count = 0;
   const double room = room_ahead(box, direction, p);
   for (std::size_t s = 0; s < kTcpFollowSamples; ++s) {
     const double d = room * static_cast<double>(s) / static_cast<double>(kTcpFollowSamples - 1);
-    AxisVec x = tcp;
+    planner::AxisVec x = tcp;
     for (std::size_t k = 0; k < 3; ++k)
       x[static_cast<std::size_t>(xyz[k])] += d * direction[static_cast<int>(k)];
-    AxisVec q{};
+    planner::AxisVec q{};
     bool ok = false;
     try {
       ok = inverse(x, q);
@@ -79,4 +80,4 @@ std::optional<std::array<AfterErrorAxis, planner::kMaxAxes>> tcp_after_error_axe
   return out;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

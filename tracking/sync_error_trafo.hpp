@@ -8,12 +8,12 @@
 // can see is the conveyor workspace (P-CHAN-00859..00864), which the manual requires whenever
 // a kinematic transformation is used (l.687): the TCP brakes, as a Cartesian motion on its own
 // line (Y and Z keep the path's point), before the workspace's face. This module gives the
-// ipo::SyncErrorStop that brakes the TCP its per-axis limits.
+// tracking::SyncErrorStop that brakes the TCP its per-axis limits.
 // Inputs: the inverse transform, the interpolated indices of the Cartesian X, Y, Z, the joints'
-// after-error limits (ipo::after_error_axis of each joint), the workspace box [mm], the belt's
+// after-error limits (tracking::after_error_axis of each joint), the workspace box [mm], the belt's
 // direction in MCS (unit), the TCP at the error [mm].
 // Outputs: per interpolated axis an AfterErrorAxis: X, Y, Z get the box's faces as their
-// "soft limits" and the TCP dynamics derived from the joints' (ipo::tcp_dynamics) at the
+// "soft limits" and the TCP dynamics derived from the joints' (tracking::tcp_dynamics) at the
 // points the following passes (the TCP, then along the belt up to the face ahead); the other
 // axes keep their own. The TCP's velocity bound is kTcpFollowVelocity: a joint that following
 // would take above its V is checked on the joints (SyncErrorStop on the joint setpoints).
@@ -30,7 +30,7 @@
 #include "machines/machine.hpp"
 #include "tracking/sync_error.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 /// The TCP's velocity bound of the after-error stop [mm/s]: none (the joints' own is checked).
 inline constexpr double kTcpFollowVelocity = 1e9;
@@ -42,6 +42,6 @@ inline constexpr std::size_t kTcpFollowSamples = 9;
 std::optional<std::array<AfterErrorAxis, planner::kMaxAxes>> tcp_after_error_axes(
     const planner::JointMap& inverse, std::array<int, 3> xyz,
     std::span<const AfterErrorAxis> joints, const machines::Workspace& box,
-    const Eigen::Vector3d& direction, const AxisVec& tcp) noexcept;
+    const Eigen::Vector3d& direction, const planner::AxisVec& tcp) noexcept;
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

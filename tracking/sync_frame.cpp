@@ -2,7 +2,7 @@
 
 #include "tracking/sync_frame.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 SyncFrame::SyncFrame(const machines::ConveyorSyncChannel& channel)
     : t0_(channel.t0()),
@@ -40,4 +40,4 @@ double synchro_lag(const SyncFrame& frame, const Eigen::Vector3d& x_actual_mcs,
   return frame.direction().dot(x_actual_mcs - frame.to_mcs(p_pcs1, s));
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

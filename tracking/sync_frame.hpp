@@ -24,7 +24,7 @@
 #include "conveyor/port.hpp"
 #include "machines/machine.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 class SyncFrame {
  public:
@@ -100,4 +100,4 @@ MasterDisplay master_display(const SyncFrame& frame, const conveyor::BeltState& 
 double synchro_lag(const SyncFrame& frame, const Eigen::Vector3d& x_actual_mcs,
                    const Eigen::Vector3d& p_pcs1, double s) noexcept;
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

@@ -11,11 +11,11 @@
 namespace {
 
 using ncsim::conveyor::BeltState;
-using ncsim::ipo::master_display;
-using ncsim::ipo::SyncFrame;
-using ncsim::ipo::synchro_lag;
 using ncsim::machines::ConveyorSyncChannel;
 using ncsim::machines::MoveDirection;
+using ncsim::tracking::master_display;
+using ncsim::tracking::SyncFrame;
+using ncsim::tracking::synchro_lag;
 
 ConveyorSyncChannel channel(MoveDirection dir = MoveDirection::positive_x) {
   ConveyorSyncChannel c;

@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 enum class SyncPhase : std::uint8_t {
   off,          ///< not synchronised: MCS
@@ -18,4 +18,4 @@ enum class SyncPhase : std::uint8_t {
   departing,    ///< the desynchronisation PTP from the moving state to a fixed MCS target
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

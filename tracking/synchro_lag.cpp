@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 double real_travel(const ConveyorSync& sync) noexcept {
   const SyncFrame& f = sync.frame();
@@ -63,4 +63,4 @@ std::optional<double> cycle_lag(const ConveyorSync& sync, std::span<const double
   return tcp_lag(sync, std::span<const double>(x.data(), n), q, forward);
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

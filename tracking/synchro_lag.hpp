@@ -19,7 +19,7 @@
 // Method: the commanded PCS1 point p = to_pcs1(x_command, s_master); the real workpiece's
 // travel s_real = sign * (p_belt_real - p_belt_real_at_edge) plus the sensor's offset against
 // T0 (LatchInfo::sensor_x - P-CHAN-00368) along the conveying direction; then
-// ipo::synchro_lag(frame, x_actual, p, s_real). A Port without workpieces (a test double,
+// tracking::synchro_lag(frame, x_actual, p, s_real). A Port without workpieces (a test double,
 // LatchInfo::workpiece == 0) takes its latched value as the truth.
 // Under #TRAFO ON the axes are joints: tcp_lag() takes the commanded TCP and the forward
 // transform of the joints' actual positions instead (the caller holds the transform).
@@ -33,7 +33,7 @@
 #include "planner/joint_limits.hpp"
 #include "tracking/conveyor_sync.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 /// synchro_lag [mm] for the MCS command `x_command` and actual `x_actual` (X, Y, Z [mm]) of the
 /// cycle `sync` last stepped; nullopt unless sync.moving_frame() and a Port is attached.
@@ -49,7 +49,7 @@ std::optional<double> axes_lag(const ConveyorSync& sync, std::span<const double>
 
 /// synchro_lag under #TRAFO ON: the commanded TCP `tcp` (Channel::tcp()'s positions, the
 /// channel's interpolated order: PCS1 point plus the belt offset, MCS) against the actual TCP,
-/// the forward transform `forward` (ipo::forward_map) of the joints' actual positions `joints`
+/// the forward transform `forward` (program::forward_map) of the joints' actual positions `joints`
 /// (Channel::axes().actual). nullopt as tracking_lag() and where `forward` is empty or fails.
 std::optional<double> tcp_lag(const ConveyorSync& sync, std::span<const double> tcp,
                               const planner::AxisVec& joints,
@@ -70,4 +70,4 @@ std::optional<double> cycle_lag(const ConveyorSync& sync, std::span<const double
 /// offset against T0 along the conveying direction. Needs sync.port() != nullptr.
 double real_travel(const ConveyorSync& sync) noexcept;
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

@@ -12,7 +12,7 @@
 
 namespace {
 
-using namespace ncsim::ipo;
+using namespace ncsim::tracking;
 namespace axes = ncsim::axes;
 namespace conveyor = ncsim::conveyor;
 namespace interp = ncsim::interp;

@@ -9,7 +9,7 @@
 
 #include "conveyor/port.hpp"
 
-namespace ncsim::ipo::test {
+namespace ncsim::tracking::test {
 
 /// A belt at constant velocity; latches pushed by the test; no noise, no dead time.
 class FakePort final : public ncsim::conveyor::Port {
@@ -68,4 +68,4 @@ class FakePort final : public ncsim::conveyor::Port {
   bool takes_params_ = true;  ///< false: a world without #MACHINE DATA (Port's default)
 };
 
-}  // namespace ncsim::ipo::test
+}  // namespace ncsim::tracking::test

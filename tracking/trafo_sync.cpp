@@ -9,7 +9,9 @@
 #include <optional>
 #include <vector>
 
-namespace ncsim::ipo {
+#include "core/tolerance.hpp"
+
+namespace ncsim::tracking {
 
 namespace {
 
@@ -17,21 +19,22 @@ using Jacobian = std::array<std::array<double, 3>, planner::kMaxAxes>;  // [join
 using Hessian = std::array<Jacobian, 3>;                                // [l][joint][k]
 
 // p moved by `d` along Cartesian axis l (a missing axis: p itself).
-AxisVec moved(const AxisVec& p, const std::array<int, 3>& xyz, std::size_t l, double d) noexcept {
-  AxisVec x = p;
+planner::AxisVec moved(const planner::AxisVec& p, const std::array<int, 3>& xyz, std::size_t l,
+                       double d) noexcept {
+  planner::AxisVec x = p;
   if (xyz[l] >= 0) x[static_cast<std::size_t>(xyz[l])] += d;
   return x;
 }
 
 // dq_i/dx_k at p by central differences; false when the transform fails.
-bool jacobian(const planner::JointMap& inverse, const std::array<int, 3>& xyz, const AxisVec& p,
-              Jacobian& out) noexcept {
+bool jacobian(const planner::JointMap& inverse, const std::array<int, 3>& xyz,
+              const planner::AxisVec& p, Jacobian& out) noexcept {
   constexpr double h = kTcpDynamicsStep;
   out = Jacobian{};
   for (std::size_t k = 0; k < 3; ++k) {
     if (xyz[k] < 0) continue;
-    AxisVec qlo{};
-    AxisVec qhi{};
+    planner::AxisVec qlo{};
+    planner::AxisVec qhi{};
     try {
       if (!inverse(moved(p, xyz, k, -h), qlo) || !inverse(moved(p, xyz, k, h), qhi)) return false;
     } catch (...) {
@@ -44,8 +47,8 @@ bool jacobian(const planner::JointMap& inverse, const std::array<int, 3>& xyz, c
 }
 
 // H[l][i][k] = d2q_i/dx_k dx_l at p: the Jacobian at p +- h e_l.
-bool hessian(const planner::JointMap& inverse, const std::array<int, 3>& xyz, const AxisVec& p,
-             Hessian& out) noexcept {
+bool hessian(const planner::JointMap& inverse, const std::array<int, 3>& xyz,
+             const planner::AxisVec& p, Hessian& out) noexcept {
   constexpr double h = kTcpDynamicsStep;
   out = Hessian{};
   for (std::size_t l = 0; l < 3; ++l) {
@@ -69,8 +72,8 @@ struct Sums {
   std::array<double, planner::kMaxAxes> d{};  // sum_klm |d3q_i/dx_k dx_l dx_m|
 };
 
-bool sums(const planner::JointMap& inverse, const std::array<int, 3>& xyz, const AxisVec& p,
-          std::size_t n, Sums& out) noexcept {
+bool sums(const planner::JointMap& inverse, const std::array<int, 3>& xyz,
+          const planner::AxisVec& p, std::size_t n, Sums& out) noexcept {
   constexpr double h = kTcpDynamicsStep;
   out = Sums{};
   Jacobian jac{};
@@ -102,41 +105,40 @@ bool sums(const planner::JointMap& inverse, const std::array<int, 3>& xyz, const
 
 std::optional<axes::Dynamics> tcp_dynamics(const planner::JointMap& inverse, std::array<int, 3> xyz,
                                            std::span<const axes::Dynamics> joints,
-                                           std::span<const AxisVec> points) noexcept {
+                                           std::span<const planner::AxisVec> points) noexcept {
   constexpr double inf = std::numeric_limits<double>::infinity();
-  constexpr double tiny = 1e-12;
   if (!inverse || points.empty()) return std::nullopt;
   const std::size_t n = std::min(joints.size(), planner::kMaxAxes);
   double v = inf;
   double a = inf;
   double j = inf;
-  for (const AxisVec& p : points) {
+  for (const planner::AxisVec& p : points) {
     Sums s{};
     if (!sums(inverse, xyz, p, n, s)) return std::nullopt;
     // V first (velocity, the velocity-product share of the acceleration and the velocity-cube
     // share of the jerk), then A, then J: each from what the earlier ones leave.
     double vp = inf;
     for (std::size_t i = 0; i < n; ++i) {
-      if (!(s.r[i] > tiny)) continue;  // a joint the TCP does not move (C beside the TCP)
+      if (!(s.r[i] > kTiny)) continue;  // a joint the TCP does not move (C beside the TCP)
       const axes::Dynamics& dq = joints[i];
       const double aq = std::min(dq.a_max, dq.d_max);
       vp = std::min(vp, dq.v_max / s.r[i]);
-      if (s.c[i] > tiny) vp = std::min(vp, std::sqrt(aq / (2.0 * s.c[i])));
-      if (s.d[i] > tiny) vp = std::min(vp, std::cbrt(dq.j_max / (kTcpJerkCubeShare * s.d[i])));
+      if (s.c[i] > kTiny) vp = std::min(vp, std::sqrt(aq / (2.0 * s.c[i])));
+      if (s.d[i] > kTiny) vp = std::min(vp, std::cbrt(dq.j_max / (kTcpJerkCubeShare * s.d[i])));
     }
     if (!std::isfinite(vp)) continue;  // the TCP moves no joint here
     double ap = inf;
     for (std::size_t i = 0; i < n; ++i) {
-      if (!(s.r[i] > tiny)) continue;
+      if (!(s.r[i] > kTiny)) continue;
       const axes::Dynamics& dq = joints[i];
       const double aq = std::min(dq.a_max, dq.d_max);
       ap = std::min(ap, (aq - s.c[i] * vp * vp) / s.r[i]);
-      if (s.c[i] > tiny)
+      if (s.c[i] > kTiny)
         ap = std::min(ap, (dq.j_max - s.d[i] * vp * vp * vp) / (6.0 * s.c[i] * vp));
     }
     double jp = inf;
     for (std::size_t i = 0; i < n; ++i) {
-      if (!(s.r[i] > tiny)) continue;
+      if (!(s.r[i] > kTiny)) continue;
       const double left = joints[i].j_max - 3.0 * s.c[i] * vp * ap - s.d[i] * vp * vp * vp;
       jp = std::min(jp, left / s.r[i]);
     }
@@ -159,9 +161,9 @@ bool path_belt_derivatives(const planner::JointMap& inverse, std::array<int, 3> 
   const std::size_t na = std::min(axis_count, planner::kMaxAxes);
   const std::size_t n = std::min(joint_count, planner::kMaxAxes);
   // q at i steps along the path (its Taylor polynomial) and j steps along the belt.
-  const auto q = [&](int i, int j, AxisVec& out_q) noexcept {
+  const auto q = [&](int i, int j, planner::AxisVec& out_q) noexcept {
     const double a = i * h;
-    AxisVec x = p.x;
+    planner::AxisVec x = p.x;
     for (std::size_t k = 0; k < na; ++k)
       x[k] += a * p.d1[k] + 0.5 * a * a * p.d2[k] + a * a * a / 6.0 * p.d3[k];
     const double b = shift + j * h;
@@ -174,8 +176,8 @@ bool path_belt_derivatives(const planner::JointMap& inverse, std::array<int, 3> 
     }
   };
   // The 13 points: the axes (0, 0), (+-1, 0), (+-2, 0), (0, +-1), (0, +-2) and (+-1, +-1).
-  AxisVec q00{}, q10{}, qm10{}, q20{}, qm20{}, q01{}, q0m1{}, q02{}, q0m2{};
-  AxisVec q11{}, q1m1{}, qm11{}, qm1m1{};
+  planner::AxisVec q00{}, q10{}, qm10{}, q20{}, qm20{}, q01{}, q0m1{}, q02{}, q0m2{};
+  planner::AxisVec q11{}, q1m1{}, qm11{}, qm1m1{};
   if (!q(0, 0, q00) || !q(1, 0, q10) || !q(-1, 0, qm10) || !q(2, 0, q20) || !q(-2, 0, qm20) ||
       !q(0, 1, q01) || !q(0, -1, q0m1) || !q(0, 2, q02) || !q(0, -2, q0m2) || !q(1, 1, q11) ||
       !q(1, -1, q1m1) || !q(-1, 1, qm11) || !q(-1, -1, qm1m1))
@@ -215,7 +217,7 @@ struct SampleAt {
   double shift = 0.0;
 };
 
-std::array<double, 3> tcp_of(const AxisVec& x, const std::array<int, 3>& xyz) noexcept {
+std::array<double, 3> tcp_of(const planner::AxisVec& x, const std::array<int, 3>& xyz) noexcept {
   std::array<double, 3> p{};
   for (std::size_t l = 0; l < 3; ++l)
     if (xyz[l] >= 0) p[l] = x[static_cast<std::size_t>(xyz[l])];
@@ -228,14 +230,13 @@ std::array<double, 3> tcp_of(const AxisVec& x, const std::array<int, 3>& xyz) no
 // carries the point into it; {0, 0} without a workspace.
 std::array<double, 2> shift_range(const std::array<double, 3>& tcp, const BeltCarry& carry) {
   if (!carry.workspace) return {0.0, 0.0};
-  constexpr double tol = 1e-9;  // [mm] a point on a face is inside
   const auto& box = *carry.workspace;
   double lo = 0.0;
   double hi = std::numeric_limits<double>::infinity();
   for (std::size_t l = 0; l < 3; ++l) {
-    const double b0 = box[0][l] - tol - tcp[l];
-    const double b1 = box[1][l] + tol - tcp[l];
-    if (std::fabs(carry.e[l]) < 1e-12) {
+    const double b0 = box[0][l] - kSamePoint - tcp[l];
+    const double b1 = box[1][l] + kSamePoint - tcp[l];
+    if (std::fabs(carry.e[l]) < kTiny) {
       if (b0 > 0.0 || b1 < 0.0) return {1.0, 0.0};  // beside the box: never inside
       continue;
     }
@@ -255,7 +256,6 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
                                                  std::span<const planner::AxisLimits> joints,
                                                  const BeltCarry& carry) noexcept {
   constexpr double inf = std::numeric_limits<double>::infinity();
-  constexpr double tiny = 1e-12;
   constexpr double kLeast = 0.01;  // a share leaving less than 1 % of a limit overloads it
   BeltShare out;
   out.feed = feed;
@@ -271,7 +271,7 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
 
   // Belt travel 0: the largest path derivatives, at most what the planner plans with. The
   // samples' points and their derivatives at travel 0 are kept for the travels below.
-  AxisVec m1{}, m2{}, m3{};
+  planner::AxisVec m1{}, m2{}, m3{};
   std::vector<planner::PathPoint> points(static_cast<std::size_t>(n + 1));
   std::vector<std::optional<PathBeltDerivatives>> at0(points.size());
   for (std::size_t k = 0; k < points.size(); ++k) {
@@ -310,7 +310,7 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
         const double left = joints[i].v_max - w * std::fabs(d.b[i]);
         if (!(left > 0.0))
           return BeltOverload{i, 'v', w * std::fabs(d.b[i]), joints[i].v_max, tcp, t};
-        if (std::fabs(d.s[i]) > tiny) out.feed = std::min(out.feed, left / std::fabs(d.s[i]));
+        if (std::fabs(d.s[i]) > kTiny) out.feed = std::min(out.feed, left / std::fabs(d.s[i]));
         terms.push_back(
             {std::max(0.0, std::fabs(d.s[i]) - m1[i]), std::max(0.0, std::fabs(d.ss[i]) - m2[i]),
              std::max(0.0, std::fabs(d.sss[i]) - m3[i]), std::fabs(d.sb[i]), std::fabs(d.bb[i]),
@@ -327,11 +327,11 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
   bool moves = false;
   for (std::size_t i = 0; i < nj; ++i) {
     const planner::AxisLimits& l = joints[i];
-    if (m1[i] > tiny) {
+    if (m1[i] > kTiny) {
       moves = true;
       v0 = std::min(v0, l.v_max / m1[i]);
     }
-    if (m2[i] > tiny)
+    if (m2[i] > kTiny)
       v0 = std::min(v0, std::sqrt(planner::kCentripetalShare * std::min(l.a_max, l.d_max) / m2[i]));
   }
   if (!moves) return out;  // the block moves no joint at belt travel 0
@@ -342,8 +342,8 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
   // e1_kc), a0 the share without the e1 term (for the binding k, c the lowered limit leaves the
   // path exactly A); the same for the jerk with J_k.
   struct Shares {
-    AxisVec a{};
-    AxisVec j{};
+    planner::AxisVec a{};
+    planner::AxisVec j{};
     double ratio = inf;  // the largest share over its limit, min(A+, A-) or J
     std::size_t joint = 0;
     char quantity = 'a';
@@ -365,7 +365,7 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
     };
     double a = inf;
     for (std::size_t i = 0; i < nj; ++i) {
-      if (!(m1[i] > tiny)) continue;  // a joint the path does not move does not bound it
+      if (!(m1[i] > kTiny)) continue;  // a joint the path does not move does not bound it
       const double amax = std::max(joints[i].a_max, joints[i].d_max);
       for (std::size_t c = 0; c < samples; ++c) {
         const ShareTerms& x = terms[c * nj + i];
@@ -383,7 +383,7 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
     };
     double jp = inf;
     for (std::size_t i = 0; i < nj; ++i) {
-      if (!(m1[i] > tiny)) continue;
+      if (!(m1[i] > kTiny)) continue;
       for (std::size_t c = 0; c < samples; ++c) {
         const ShareTerms& x = terms[c * nj + i];
         const double ji = (joints[i].j_max - j0(x)) / (m1[i] + x.e1);
@@ -414,6 +414,7 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
   // when the belt takes more than that with the path at rest, half of what it leaves), the
   // block's feed is capped (bisection on V) so that the path keeps the rest.
   constexpr double kShareMost = 0.5;
+  constexpr double kLeastFeed = 1e-12;  // [mm/s] a capped feed stays positive
   const Shares rest = shares_at(0.0);
   if (!(rest.ratio < 1.0 - kLeast)) {
     const double limit = rest.quantity == 'a'
@@ -434,14 +435,14 @@ std::variant<BeltShare, BeltOverload> belt_share(const planner::Segment& segment
     }
     v = lo;
     sh = lo > 0.0 ? shares_at(lo) : rest;
-    out.feed = std::min(out.feed, std::max(v, tiny));
+    out.feed = std::min(out.feed, std::max(v, kLeastFeed));
   }
   out.joints.a = sh.a;
   out.joints.j = sh.j;
   return out;
 }
 
-std::optional<JointOverrun> joint_overrun(const JointSetpoint& s,
+std::optional<JointOverrun> joint_overrun(const ipo::JointSetpoint& s,
                                           std::span<const axes::Dynamics> joints,
                                           bool jerk) noexcept {
   constexpr double tol = 1.0 + 1e-6;
@@ -457,4 +458,4 @@ std::optional<JointOverrun> joint_overrun(const JointSetpoint& s,
   return std::nullopt;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

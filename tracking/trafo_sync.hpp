@@ -41,7 +41,7 @@
 #include "planner/joint_limits.hpp"
 #include "planner/path.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 /// Warning id: a joint exceeded its PTP dynamics while the TCP was synchronised or caught up
 /// under #TRAFO ON (004 l.454, l.609: the joint dynamics are not ensured there).
@@ -58,7 +58,7 @@ inline constexpr double kTcpJerkCubeShare = 4.0;
 /// `joints` dynamics at each of `points` (method in the header). Never throws.
 std::optional<axes::Dynamics> tcp_dynamics(const planner::JointMap& inverse, std::array<int, 3> xyz,
                                            std::span<const axes::Dynamics> joints,
-                                           std::span<const AxisVec> points) noexcept;
+                                           std::span<const planner::AxisVec> points) noexcept;
 
 // Machining in PCS1 under #TRAFO ON (docs/conveyor.md "Machining in PCS1").
 // A PCS1 block x(s) runs with the belt's travel b along the conveying direction e on top: the
@@ -78,15 +78,15 @@ std::optional<axes::Dynamics> tcp_dynamics(const planner::JointMap& inverse, std
 /// q(a, b) = IK(x(s + a) + (shift + b) e) at a = b = 0, x the path's third-order Taylor
 /// polynomial at the point.
 struct PathBeltDerivatives {
-  AxisVec s{};    ///< dq/ds
-  AxisVec ss{};   ///< d2q/ds2
-  AxisVec sss{};  ///< d3q/ds3
-  AxisVec b{};    ///< dq/db
-  AxisVec sb{};   ///< d2q/ds db
-  AxisVec bb{};   ///< d2q/db2
-  AxisVec ssb{};  ///< d3q/ds2 db
-  AxisVec sbb{};  ///< d3q/ds db2
-  AxisVec bbb{};  ///< d3q/db3
+  planner::AxisVec s{};    ///< dq/ds
+  planner::AxisVec ss{};   ///< d2q/ds2
+  planner::AxisVec sss{};  ///< d3q/ds3
+  planner::AxisVec b{};    ///< dq/db
+  planner::AxisVec sb{};   ///< d2q/ds db
+  planner::AxisVec bb{};   ///< d2q/db2
+  planner::AxisVec ssb{};  ///< d3q/ds2 db
+  planner::AxisVec sbb{};  ///< d3q/ds db2
+  planner::AxisVec bbb{};  ///< d3q/db3
 };
 
 /// The derivatives at `p` (a point of a curve over `axis_count` axes) moved by `shift` [mm]
@@ -165,8 +165,8 @@ struct JointOverrun {
 /// `jerk` false: s.j is not checked (a slope or a difference stencil that is not
 /// jerk-limited, or a stencil that holds a documented path step: the audit's exemptions).
 /// Never throws.
-std::optional<JointOverrun> joint_overrun(const JointSetpoint& s,
+std::optional<JointOverrun> joint_overrun(const ipo::JointSetpoint& s,
                                           std::span<const axes::Dynamics> joints,
                                           bool jerk = true) noexcept;
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

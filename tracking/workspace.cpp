@@ -2,7 +2,7 @@
 
 #include "tracking/workspace.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 namespace {
 
@@ -34,4 +34,4 @@ std::optional<WorkspaceViolation> check_workspace(const machines::Workspace& box
   return std::nullopt;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

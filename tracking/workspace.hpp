@@ -17,7 +17,7 @@
 
 #include "machines/machine.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 /// NC9052: the TCP left the conveyor workspace in the conveying direction while synchronised
 /// (004 §2.1.3: the program is aborted; the manual gives no id).
@@ -41,4 +41,4 @@ std::optional<WorkspaceViolation> check_workspace(const machines::Workspace& box
                                                   const Eigen::Vector3d& direction,
                                                   const Eigen::Vector3d& p_mcs) noexcept;
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

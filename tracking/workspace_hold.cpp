@@ -4,11 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
+#include "core/number_text.hpp"
+#include "core/tolerance.hpp"
 #include "jerk/jerk.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 namespace {
 
@@ -17,7 +18,9 @@ constexpr double kSampleStep = 0.5;  ///< simple method: contour sample spacing 
 constexpr int kMaxSamples = 256;     ///< simple method: samples per block, at most
 constexpr int kSampleBudget = 2048;  ///< simple method: samples per cycle over the blocks ahead
 constexpr int kRampSamples = 8;      ///< optimised method: samples per ramp phase
-constexpr double kEps = 1e-9;        ///< [mm]
+/// The least velocity the time ahead of a block is reckoned with [mm/s]: a standing path
+/// still reaches its samples (a divisor, not a tolerance).
+constexpr double kLeastRunVelocity = 1e-9;
 /// A block moves against the conveying direction when its coordinate goes back by more than
 /// this between two samples [mm] (a Y line's rounding does not count).
 constexpr double kMoveEps = 1e-6;
@@ -100,14 +103,14 @@ bool WorkspaceHold::run_crosses(const HoldState& st, double target) const noexce
   const auto coord = static_cast<std::size_t>(cfg_.axis);
   // Nothing known ahead can reach the line when the TCP is farther from it than the known
   // path is long (|dq/ds| <= 1, a belt moving on carries the TCP away).
-  if (st.belt_v >= 0.0 && inside_at(st, path.q(0.0), 0.0) > path.known() + kEps) return false;
+  if (st.belt_v >= 0.0 && inside_at(st, path.q(0.0), 0.0) > path.known() + kSamePoint) return false;
   double t = 0.0;              // time ahead at the block's start [s]
   double run_start = -1.0;     // distance ahead where the run against starts [mm]
   int budget = kSampleBudget;  // samples left this cycle
   HoldBlock b;
   bool crossing = false;
   while (!crossing && budget > 0 && path.next_block(b)) {
-    const double v_run = std::max({b.feed, st.v, 1e-9});
+    const double v_run = std::max({b.feed, st.v, kLeastRunVelocity});
     const int n = samples_of(b);
     budget -= n + 1;
     bool against = false;
@@ -124,7 +127,7 @@ bool WorkspaceHold::run_crosses(const HoldState& st, double target) const noexce
     t += (b.to - b.from) / v_run;
   }
   if (!crossing) return false;
-  if (run_start <= kEps) return true;
+  if (run_start <= kSamePoint) return true;
   // The run starts later: enter it at factor x v_conv, braking as late as the ramp allows.
   const double tc = st.t_cycle;
   const double d1 = std::max(0.0, st.v * tc + 0.5 * st.a * tc * tc);
@@ -194,24 +197,18 @@ double WorkspaceHold::decide(const HoldState& st) noexcept {
 std::optional<std::string> WorkspaceHold::check(double q) const {
   static constexpr const char* kNames[3] = {"X", "Y", "Z"};
   const char* name = kNames[cfg_.coord];
-  char buf[256];
-  if (cfg_.sign * (q - cfg_.face) < -kEps) {
-    std::snprintf(buf, sizeof buf,
-                  "%s %.6g mm beyond the conveyor workspace's face %.6g mm against the conveying "
-                  "direction while synchronised (the hold of P-AXIS-00555 did not keep it)",
-                  name, q, cfg_.face);
-    return std::string(buf);
-  }
+  if (cfg_.sign * (q - cfg_.face) < -kSamePoint)
+    return name + (" " + core::human(q)) + " mm beyond the conveyor workspace's face " +
+           core::human(cfg_.face) +
+           " mm against the conveying direction while synchronised (the hold of P-AXIS-00555 "
+           "did not keep it)";
   const double past = -inside(q);
-  if (past > cfg_.tolerance + kEps) {
-    std::snprintf(buf, sizeof buf,
-                  "%s %.6g mm passed the hold line %.6g mm against the conveying direction by "
-                  "%.6g mm, more than hold_limit_tolerance P-CHAN-00367 %.6g mm, while "
-                  "synchronised",
-                  name, q, cfg_.line, past, cfg_.tolerance);
-    return std::string(buf);
-  }
+  if (past > cfg_.tolerance + kSamePoint)
+    return name + (" " + core::human(q)) + " mm passed the hold line " + core::human(cfg_.line) +
+           " mm against the conveying direction by " + core::human(past) +
+           " mm, more than hold_limit_tolerance P-CHAN-00367 " + core::human(cfg_.tolerance) +
+           " mm, while synchronised";
   return std::nullopt;
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

@@ -32,7 +32,7 @@
 #include "planner/chain.hpp"
 #include "tracking/hold_path.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 /// NC9080: the TCP passed the hold line against the conveying direction by more than
 /// hold_limit_tolerance P-CHAN-00367 (or the workspace face) while synchronised.
@@ -129,4 +129,4 @@ class WorkspaceHold {
   std::uint32_t line_ = 0;
 };
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

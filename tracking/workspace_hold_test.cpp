@@ -13,10 +13,10 @@
 namespace {
 
 using namespace ncsim;
-using ipo::HoldConfig;
-using ipo::HoldMethod;
-using ipo::HoldState;
-using ipo::WorkspaceHold;
+using tracking::HoldConfig;
+using tracking::HoldMethod;
+using tracking::HoldState;
+using tracking::WorkspaceHold;
 
 // The laser portal's list (4.8.1): X [-200, 4000], pos_limit -190, factor 950, tolerance 5.
 machines::ConveyorSyncChannel laser() {
@@ -35,7 +35,7 @@ HoldConfig config(double pos_limit, bool optimised, double factor = 0.95) {
   machines::ConveyorSyncChannel c = laser();
   c.pos_limit = pos_limit;
   c.hold_limit_vel_factor = factor;
-  auto h = ipo::hold_config(c, Eigen::Vector3d::UnitX(), optimised, kXyz.data(), 3);
+  auto h = tracking::hold_config(c, Eigen::Vector3d::UnitX(), optimised, kXyz.data(), 3);
   REQUIRE(h);
   return *h;
 }
@@ -59,7 +59,7 @@ TEST_CASE("the hold line is pos_limit P-CHAN-00374 inside the cuboid, else the f
   // A belt in -X of MCS: the upper X face is against it.
   machines::ConveyorSyncChannel c = laser();
   c.pos_limit = 0.0;
-  auto h = ipo::hold_config(c, -Eigen::Vector3d::UnitX(), false, kXyz.data(), 3);
+  auto h = tracking::hold_config(c, -Eigen::Vector3d::UnitX(), false, kXyz.data(), 3);
   REQUIRE(h);
   CHECK(h->face == 4000.0);
   CHECK(h->sign == -1.0);
@@ -67,7 +67,7 @@ TEST_CASE("the hold line is pos_limit P-CHAN-00374 inside the cuboid, else the f
   CHECK(h->axis == 0);
   // No interpolated axis on X: no hold.
   constexpr std::array<int, 2> yz{1, 2};
-  CHECK_FALSE(ipo::hold_config(laser(), Eigen::Vector3d::UnitX(), false, yz.data(), 2));
+  CHECK_FALSE(tracking::hold_config(laser(), Eigen::Vector3d::UnitX(), false, yz.data(), 2));
 }
 
 TEST_CASE("simple method: a -X block that would cross the line runs at factor x v_conv") {
@@ -167,11 +167,11 @@ TEST_CASE("simple method across block ends: the run that crosses in a later bloc
   // 5 blocks of -120 mm at 200 mm/s against a 100 mm/s belt: the crossing (MCS X -190) lies in
   // the 4th block; the whole run is capped from the first one.
   std::array<planner::Chain, 4> next;
-  std::array<ipo::HoldEntry, 4> ahead;
+  std::array<tracking::HoldEntry, 4> ahead;
   for (std::size_t k = 0; k < next.size(); ++k) {
     const double x = -120.0 * static_cast<double>(k + 1);
     next[k] = line_chain(x, x - 120.0);
-    ahead[k] = ipo::HoldEntry{&next[k], 200.0, k + 1 == next.size()};
+    ahead[k] = tracking::HoldEntry{&next[k], 200.0, k + 1 == next.size()};
   }
   const planner::Chain first = line_chain(0.0, -120.0);
   HoldState st;
@@ -215,7 +215,7 @@ TEST_CASE(
   const double d = 2000.0, j = 40000.0;
   const planner::Chain active = line_chain(0.0, -180.0);
   const planner::Chain next = line_chain(-180.0, -1000.0);
-  const std::array<ipo::HoldEntry, 1> ahead{ipo::HoldEntry{&next, 300.0, false}};
+  const std::array<tracking::HoldEntry, 1> ahead{tracking::HoldEntry{&next, 300.0, false}};
   HoldState st;
   st.path = &active;
   st.line = 7;

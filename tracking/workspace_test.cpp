@@ -7,7 +7,7 @@
 
 namespace {
 
-using namespace ncsim::ipo;
+using namespace ncsim::tracking;
 
 ncsim::machines::Workspace laser() {
   ncsim::machines::Workspace w;

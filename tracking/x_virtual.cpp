@@ -5,15 +5,16 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdio>
 
+#include "core/number_text.hpp"
+#include "core/tolerance.hpp"
 #include "planner/blend.hpp"
 #include "planner/corner.hpp"
 #include "planner/limits.hpp"
 #include "planner/path.hpp"
 #include "tracking/caxtrack.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 namespace {
 
@@ -67,7 +68,7 @@ ArcGeom arc_geom(const planner::Move& mv) {
   g.dir = a.clockwise ? -1.0 : 1.0;
   g.phi0 = std::atan2(ry, rx);
   g.sweep = (std::atan2(ey, ex) - g.phi0) * g.dir;
-  while (g.sweep <= 1e-12)
+  while (g.sweep <= kTiny)
     g.sweep += kTwoPi;
   if (a.full_circle) g.sweep = kTwoPi;
   return g;
@@ -113,18 +114,17 @@ std::optional<XvError> belt_too_fast(const planner::Segment& curve, planner::Mov
                                      const char* there) {
   probe.feed = need;  // the planner caps at the programmed feed: ask for `need`
   const planner::PathLimits pl = planner::path_limits(curve, probe, limits);
-  if (pl.v_max >= need * (1.0 - 1e-9)) return std::nullopt;
+  if (pl.v_max >= need * (1.0 - kRelTol)) return std::nullopt;
   const char* what = pl.limit == planner::VelocityLimit::axis_velocity ? "velocity"
                      : pl.limit == planner::VelocityLimit::centripetal ? "acceleration"
                                                                        : "jerk";
   const std::size_t axis = std::min<std::size_t>(pl.limiting_axis, names.size() - 1);
-  char buf[480];
-  std::snprintf(buf, sizeof buf,
-                "x_virtual: a belt at %.6g mm/s (1.1 x CONV_VEL, the fastest before 50653) needs a "
-                "path velocity of %.6g mm/s%s here; axis %s's %s allows only %.6g mm/s%s: a "
-                "dynamic error, the belt cannot be slowed (004 l.440, l.621)",
-                p.v_belt, need, where.c_str(), names[axis].c_str(), what, pl.v_max, there);
-  return XvError{kXvTooFastId, buf};
+  return XvError{kXvTooFastId,
+                 "x_virtual: a belt at " + core::human(p.v_belt) +
+                     " mm/s (1.1 x CONV_VEL, the fastest before 50653) needs a path velocity of " +
+                     core::human(need) + " mm/s" + where + " here; axis " + names[axis] + "'s " +
+                     what + " allows only " + core::human(pl.v_max) + " mm/s" + there +
+                     ": a dynamic error, the belt cannot be slowed (004 l.440, l.621)"};
 }
 
 }  // namespace
@@ -153,12 +153,6 @@ double spline_length(const planner::Move& mv, const XVirtualParams& p) {
   for (std::size_t k = 0; k < x.size(); ++k)
     len += w[k] * speeds(mv, p, 0.5 * (x[k] + 1.0)).first;
   return 0.5 * len;
-}
-
-std::string format(const char* fmt, double a, double b) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, fmt, a, b);
-  return buf;
 }
 
 /// Sets the belt feed of one part and checks it against the planner's limits.
@@ -201,11 +195,12 @@ XvOutcome belt_feed(const planner::Move& mv, const XVirtualParams& p,
   const auto x = static_cast<std::size_t>(p.x);
   if (!mv.spline && !mv.arc) {
     const double dx = mv.end[x] - mv.start[x];
-    if (dx * p.sign >= -1e-9) {
+    if (dx * p.sign >= -kSamePoint) {
       out.error = XvError{kXvDirectionId,
-                          format("x_virtual: the block must run against the conveying direction "
-                                 "(004 l.439): X moves by %.6g mm (the belt moves in %+g X)",
-                                 dx, p.sign)};
+                          "x_virtual: the block must run against the conveying direction "
+                          "(004 l.439): X moves by " +
+                              core::human(dx) + " mm (the belt moves in " +
+                              core::signed_human(p.sign) + " X)"};
       return out;
     }
     planner::Move m = mv;
@@ -233,14 +228,12 @@ XvOutcome belt_feed(const planner::Move& mv, const XVirtualParams& p,
       const double u = static_cast<double>(k) / kSamples;
       const auto [speed, vx] = at(part, std::clamp(u, 1e-4, 1.0 - 1e-4));
       if (vx * p.sign >= 0.0 || speed <= 0.0) {
-        out.error = XvError{kXvDirectionId,
-                            format(arc ? "x_virtual: the arc must run against the conveying "
-                                         "direction everywhere (004 l.439): X turns near X = "
-                                         "%.6g mm (the belt moves in %+g X)"
-                                       : "x_virtual: the spline must run against the conveying "
-                                         "direction everywhere (004 l.439): X turns near X = "
-                                         "%.6g mm (the belt moves in %+g X)",
-                                   part.start[x], p.sign)};
+        out.error =
+            XvError{kXvDirectionId, std::string("x_virtual: the ") + (arc ? "arc" : "spline") +
+                                        " must run against the conveying direction everywhere (004 "
+                                        "l.439): X turns near X = " +
+                                        core::human(part.start[x]) + " mm (the belt moves in " +
+                                        core::signed_human(p.sign) + " X)"};
         return out;
       }
       const double share = std::fabs(vx) / speed;
@@ -284,18 +277,18 @@ std::optional<XvError> blend_belt_feed(planner::Move& in, planner::Move& out,
     for (std::size_t i = 0; i < in.axis_count; ++i)
       if (metric(p, i)) sum += q.d1[i] * q.d1[i];
     if (q.d1[x] * p.sign >= 0.0 || sum <= 0.0)
-      return XvError{kXvDirectionId,
-                     format("x_virtual: the tolerance ball (G61/G261, radius %.6g mm) turns the "
-                            "path along the conveying direction near X = %.6g mm (004 l.439)",
-                            ball->radius, q.x[x])};
+      return XvError{
+          kXvDirectionId,
+          "x_virtual: the tolerance ball (G61/G261, radius " + core::human(ball->radius) +
+              " mm) turns the path along the conveying direction near X = " + core::human(q.x[x]) +
+              " mm (004 l.439)"};
     lo = std::min(lo, std::fabs(q.d1[x]) / std::sqrt(sum));
   }
   const double need = p.v_belt / lo;  // path velocity where the ball runs steepest [mm/s]
   in.feed = std::max(in.feed, need);
   out.feed = std::max(out.feed, need);
-  char where[96];
-  std::snprintf(where, sizeof where, " in the tolerance ball (G61/G261, radius %.6g mm)",
-                ball->radius);
+  const std::string where =
+      " in the tolerance ball (G61/G261, radius " + core::human(ball->radius) + " mm)";
   return belt_too_fast(ball->curve, in, need, p, limits, names, where, " there");
 }
 
@@ -320,25 +313,24 @@ std::optional<XvError> joint_belt_check(const planner::Move& in, const planner::
   const planner::Link link =
       planner::link_velocity(end, start, n, a.metric() | b.metric(), limits, channel, need, need,
                              v_min, planner::jerk_limited(in.slope));
-  if (link.v_link >= need * (1.0 - 1e-9)) return std::nullopt;
+  if (link.v_link >= need * (1.0 - kRelTol)) return std::nullopt;
   const std::size_t axis = std::min<std::size_t>(link.limiting_axis, names.size() - 1);
   const bool knee = link.cls == planner::TransitionClass::c0;
   // A knee's link is VELOJUMP's, or the C1 rule's where the curvature jump binds first
   // (planner::link_velocity; docs/planner.md "Corners").
   const bool velojump = link.rule == planner::LinkRule::velojump;
-  char buf[560];
-  std::snprintf(buf, sizeof buf,
-                "x_virtual: a belt at %.6g mm/s (1.1 x CONV_VEL, the fastest before 50653) needs a "
-                "path velocity of %.6g mm/s at this block's end, %s; axis %s's %s allows only "
-                "%.6g mm/s there: a dynamic error, the belt cannot be slowed (004 l.440, l.441: "
-                "the contour must be C2, l.621)",
-                p.v_belt, need,
-                knee ? "a knee (an axis's tangent jumps)" : "a C1 joint (the curvature jumps)",
-                names[axis].c_str(),
-                velojump ? "acceleration (VELOJUMP, one cycle's velocity step)"
-                         : "jerk (the C1 rule, one cycle's acceleration step)",
-                link.v_link);
-  return XvError{kXvTooFastId, buf};
+  return XvError{
+      kXvTooFastId,
+      "x_virtual: a belt at " + core::human(p.v_belt) +
+          " mm/s (1.1 x CONV_VEL, the fastest before 50653) needs a path velocity of " +
+          core::human(need) + " mm/s at this block's end, " +
+          (knee ? "a knee (an axis's tangent jumps)" : "a C1 joint (the curvature jumps)") +
+          "; axis " + names[axis] + "'s " +
+          (velojump ? "acceleration (VELOJUMP, one cycle's velocity step)"
+                    : "jerk (the C1 rule, one cycle's acceleration step)") +
+          " allows only " + core::human(link.v_link) +
+          " mm/s there: a dynamic error, the belt cannot be slowed (004 l.440, l.441: the "
+          "contour must be C2, l.621)"};
 }
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

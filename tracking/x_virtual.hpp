@@ -31,7 +31,7 @@
 
 #include "planner/move.hpp"
 
-namespace ncsim::ipo {
+namespace ncsim::tracking {
 
 /// NC9100: x_virtual: the belt is too fast for the contour (the "dynamic error" of 004 l.621).
 inline constexpr const char* kXvTooFastId = "NC9100";
@@ -112,4 +112,4 @@ std::optional<XvError> joint_belt_check(const planner::Move& in, const planner::
                                         const planner::ChannelLimits& channel,
                                         std::span<const std::string> names);
 
-}  // namespace ncsim::ipo
+}  // namespace ncsim::tracking

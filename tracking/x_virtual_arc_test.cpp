@@ -16,10 +16,10 @@
 
 namespace {
 
-using ncsim::ipo::belt_feed;
-using ncsim::ipo::XVirtualParams;
 using ncsim::planner::AxisLimits;
 using ncsim::planner::Move;
+using ncsim::tracking::belt_feed;
+using ncsim::tracking::XVirtualParams;
 
 constexpr double kDeg = 3.141592653589793 / 180.0;
 
@@ -143,7 +143,7 @@ TEST_CASE("an arc that turns X back along the belt is NC9102; the belt in -X tak
 TEST_CASE("split_arc halves by angle: the middle on the circle, the other axes linear") {
   Move m = arc(50.0, 0.0, 90.0, 10.0, 30.0);
   m.end[2] = 8.0;  // a helix's Z
-  const auto [a, b] = ncsim::ipo::split_arc(m);
+  const auto [a, b] = ncsim::tracking::split_arc(m);
   CHECK(a.end[0] == doctest::Approx(50.0 * std::cos(45.0 * kDeg)));
   CHECK(a.end[1] == doctest::Approx(50.0 * std::sin(45.0 * kDeg)));
   CHECK(b.start[0] == a.end[0]);

@@ -15,10 +15,10 @@
 
 namespace {
 
-using ncsim::ipo::belt_feed;
-using ncsim::ipo::XVirtualParams;
 using ncsim::planner::AxisLimits;
 using ncsim::planner::Move;
+using ncsim::tracking::belt_feed;
+using ncsim::tracking::XVirtualParams;
 
 Move line(double x0, double y0, double x1, double y1) {
   Move m;
@@ -51,7 +51,7 @@ TEST_CASE("A22: the diagonal X-550 Y-550 gets the feed whose X component is the 
   REQUIRE(o.moves.size() == 1);
   // Y moves like the virtual X, at 200 mm/s: the path at sqrt(2) * 200 mm/s, 2.75 s.
   CHECK(o.moves[0].feed == doctest::Approx(200.0 * std::sqrt(2.0)));
-  CHECK(ncsim::ipo::line_belt_feed(line(0, 0, -550, -550), p) ==
+  CHECK(ncsim::tracking::line_belt_feed(line(0, 0, -550, -550), p) ==
         doctest::Approx(200.0 * std::sqrt(2.0)));
   CHECK_FALSE(o.moves[0].rapid);
 }
@@ -120,8 +120,8 @@ TEST_CASE("NC9100: a belt too fast for Y's acceleration on the curve is a dynami
 }
 
 TEST_CASE("a tolerance ball raises both neighbours' feeds to the belt feed of its steepest point") {
-  using ncsim::ipo::blend_belt_feed;
-  using ncsim::ipo::line_belt_feed;
+  using ncsim::tracking::blend_belt_feed;
+  using ncsim::tracking::line_belt_feed;
   const XVirtualParams p{0, 1.0, 66.0, 0b111};
   SUBCASE("+-45 deg: the ball's X share is 0.707 at its ends, its lines' own; feeds kept") {
     Move in = line(0, 0, -100, -100);
@@ -190,8 +190,8 @@ TEST_CASE("a joint without a ball that the planner passes below the belt's need 
   // curvature jumps by 1/300 mm^-1, all of it in Y (a C1 joint). The planner's C1 rule allows
   // sqrt(j_Y T / |dx''_Y|) = sqrt(200000 x 0.001 x 300) = 244.9 mm/s there (T = 1 ms); the X
   // share at the joint is 1, so the path must pass it at the belt's velocity.
-  using ncsim::ipo::joint_belt_check;
   using ncsim::planner::SlopeType;
+  using ncsim::tracking::joint_belt_check;
   Move in = line(0, 0, -100, 0);
   Move out = line(-100, 0, -100 - 300 * std::sin(0.5), 300 - 300 * std::cos(0.5));
   out.arc = ncsim::planner::Arc{0, 1, -100.0, 300.0, true, false};
