@@ -242,39 +242,34 @@ Ramp ramp(double v0, double v1, double a, double j) {
   return {t, 0.5 * (v0 + v1) * t};
 }
 
-}  // namespace
-
-bool Preparer::corner_outruns_ball(Pending& p, const Move& move, const Segment& seg,
-                                   const JointEnds& ends, const PreparedSegment& ball) const {
-  // Under a transform every G261 corner keeps its ball (the joints' steps, docs/planner.md).
-  if (joints_for(p.move) != nullptr || joints_for(move) != nullptr) return false;
-  const std::uint8_t n = std::max(p.path.axis_count(), seg.axis_count());
-  const PathLimits& in = pending_limits(p);
-  const PathLimits out = limits(seg, move);
-  const Link corner =
-      link_velocity(ends.in_end, ends.out_start, n, p.path.metric() | seg.metric(),
-                    slopes_at_joint(axes_for(p.move), p.move.rapid, move.rapid), channel_, in.v_end,
-                    out.v_max, std::nullopt, jerk_limited(p.move.slope));
+/// Whether a corner linked at `v_corner` is passed faster than `ball` (its path limits and
+/// length), the blend that would replace the last `cut_in` of the incoming block and the first
+/// `cut_out` of the next, between neighbours with the path limits `in` and `out` (issue 36:
+/// blending is never slower than not blending; docs/planner.md "Tolerance balls"). The time of
+/// each way over the same stretch of the programmed path: from the neighbours' common velocity
+/// down to the corner's link and back, or down to the ball's cap, through the ball at it (a
+/// ball of 0.01 mm has path limits of a few mm/s^2: no ramp inside it) and back, with the
+/// neighbours' path acceleration and jerk; the ball's way is shorter by what it cuts off.
+bool corner_outruns_ball(double v_corner, const PreparedSegment& ball, double cut_in,
+                         double cut_out, const PathLimits& in, const PathLimits& out) {
   const double v_ball = ball.limits.v_max;
-  if (corner.v_link > v_ball * (1.0 + 1e-9)) return true;
-  // The time of each way past the corner (docs/planner.md "Tolerance balls"): from the
-  // neighbours' common velocity down to the corner's link, or down to the ball's cap and
-  // through the ball at it (a ball of 0.01 mm has path limits of a few mm/s^2: no ramp inside
-  // it), and back, with the neighbours' path acceleration and jerk, over the same stretch.
+  if (v_corner > v_ball * (1.0 + 1e-9)) return true;
   const double v_far = std::min(in.v_max, out.v_max);
   const double a = std::min(in.d_max, out.a_max);
   const double j = std::min(in.j_max, out.j_max);
-  if (!(corner.v_link > 0.0) || !(v_ball > 0.0) || !(a > 0.0) || !(v_far > v_ball)) return false;
-  const Ramp rc = ramp(corner.v_link, v_far, a, j);
+  if (!(v_corner > 0.0) || !(v_ball > 0.0) || !(a > 0.0) || !(v_far > v_ball)) return false;
+  const Ramp rc = ramp(v_corner, v_far, a, j);
   const Ramp rb = ramp(v_ball, v_far, a, j);
-  const double length = ball.path.length();
+  // Programmed path covered by each way's ramps (and, for the ball, the pieces it replaces).
   const double x_corner = 2.0 * rc.distance;
-  const double x_ball = 2.0 * rb.distance + length;
+  const double x_ball = 2.0 * rb.distance + cut_in + cut_out;
   const double x = std::max(x_corner, x_ball);
   const double t_corner = 2.0 * rc.time + (x - x_corner) / v_far;
-  const double t_ball = 2.0 * rb.time + length / v_ball + (x - x_ball) / v_far;
+  const double t_ball = 2.0 * rb.time + ball.path.length() / v_ball + (x - x_ball) / v_far;
   return t_corner < t_ball;
 }
+
+}  // namespace
 
 void Preparer::emit_stop(Pending& p, StopReason why, std::vector<PreparedSegment>& out) {
   PreparedSegment ps = make(p.path, p.move, false, pending_limits(p));
@@ -431,11 +426,26 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
       for (std::size_t i = 0; i < blend_move.belt.size(); ++i)
         blend_move.belt[i] = std::max(p.move.belt[i], move.belt[i]);
       PreparedSegment blend_ps = make(ball->curve, blend_move, true);
-      if (corner_outruns_ball(p, move, seg, *ends, blend_ps)) {
-        emit_joint(make(p.path, p.move, false, pending_limits(p)), p.move, seg, move.rapid,
-                   seg_cap(), out, &*ends);
-        pending()->limits = seg_limits;
-        return;
+      // Issue 36: a DEV corner that VELOJUMP passes faster than its ball is kept, planned
+      // exactly as under G260. Not under DIST, whose distances are the curve the program asks
+      // for, not a bound it may stay within, nor under a transform, where every G261 corner
+      // keeps its ball (the joints' steps; docs/planner.md "Tolerance balls").
+      if (p.move.contour == Contour::tolerance && joints_for(p.move) == nullptr &&
+          joints_for(move) == nullptr) {
+        const std::uint8_t n = std::max(p.path.axis_count(), seg.axis_count());
+        const PathLimits& in = pending_limits(p);
+        seg_cap();  // seg_limits
+        const Link corner =
+            link_velocity(ends->in_end, ends->out_start, n, p.path.metric() | seg.metric(),
+                          slopes_at_joint(axes_for(p.move), p.move.rapid, move.rapid), channel_,
+                          in.v_end, seg_limits->v_max, std::nullopt, jerk_limited(p.move.slope));
+        if (corner_outruns_ball(corner.v_link, blend_ps, ball->cut_in, ball->cut_out, in,
+                                *seg_limits)) {
+          emit_joint(make(p.path, p.move, false, in), p.move, seg, move.rapid, seg_cap(), out,
+                     &*ends);
+          pending()->limits = seg_limits;
+          return;
+        }
       }
       if (in_path.length() >= kMinLength)
         emit_joint(std::move(in_ps), p.move, ball->curve, blend_move.rapid, blend_ps.limits.v_max,

@@ -141,11 +141,6 @@ class Preparer {
   /// with `axes` (joint_slope, docs/planner.md "G00 slope"); `axes` itself at a feed joint.
   std::span<const AxisLimits> slopes_at_joint(std::span<const AxisLimits> axes, bool rapid_in,
                                               bool rapid_out) const;
-  /// Whether the corner of `p` and `seg` (joint ends `ends`) is passed faster than `ball`, the
-  /// blend that would replace it: then the corner is kept (issue 36: blending is never slower
-  /// than not blending; docs/planner.md "Tolerance balls").
-  bool corner_outruns_ball(Pending& p, const Move& move, const Segment& seg, const JointEnds& ends,
-                           const PreparedSegment& ball) const;
   /// Appends the pending segment ending in a stop.
   void emit_stop(Pending& p, StopReason why, std::vector<PreparedSegment>& out);
   /// Chaining stage: merges `ps` into the held segment across a C2 joint that limits nothing
