@@ -329,9 +329,9 @@ std::vector<PreparedSegment> right_angle(Contour c, double r) {
 }
 
 TEST_CASE("G261 keeps a corner that VELOJUMP passes faster than its ball (issue 36)") {
-  // A ball of 0.01 mm at a right angle is capped by its curvature near sqrt(a r) = 7 mm/s;
-  // VELOJUMP links the corner at C0 a T = 10 mm/s. The corner is kept, planned exactly as
-  // under G260 (docs/planner.md "Tolerance balls"): never slower than not blending.
+  // A ball of 0.01 mm at a right angle is passed more slowly than the corner, which VELOJUMP
+  // links at C0 a T = 10 mm/s. The corner is kept, planned exactly as under G260
+  // (docs/planner.md "Tolerance balls"): never slower than not blending.
   const auto g260 = right_angle(Contour::none, 0.0);
   const auto kept = right_angle(Contour::tolerance, 0.01);
   REQUIRE(kept.size() == 2);
@@ -342,7 +342,7 @@ TEST_CASE("G261 keeps a corner that VELOJUMP passes faster than its ball (issue 
   CHECK(kept[0].v_end == g260[0].v_end);
   CHECK(kept[0].v_end == doctest::Approx(10.0));
   CHECK(kept[0].path.length() == doctest::Approx(20.0));
-  // A ball of 1 mm passes the corner near 60 mm/s: it stays.
+  // A ball of 1 mm passes the corner faster: it stays.
   const auto ball = right_angle(Contour::tolerance, 1.0);
   REQUIRE(ball.size() == 3);
   CHECK(ball[1].blend);
