@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstring>
 #include <functional>
+#include <iomanip>
 #include <random>
 #include <utility>
 #include <vector>
@@ -205,10 +206,10 @@ TEST_CASE("property: a G261 program is never slower than the same program under 
   // corner, the corner is kept (prepare.cpp corner_outruns_ball, docs/planner.md "Tolerance
   // balls"). Seeded random programs (lines, arcs, helices, short blocks, stops, dwells, random
   // limits and cycles) against the same program with every block G260: in even trials every
-  // block is G261 with PATH_DEV 0.01 (the issue's tiny ball), within 2 cycles; in odd trials
-  // half the blocks have a random PATH_DEV 0.005..0.5, within 0.25 % (measured: at most
-  // 0.21 % slower, 9 of 20; the corner's time model is local, the look-ahead plans the whole
-  // window). Without the rule: up to 4.5 % slower, 1.7 % over all 40 programs.
+  // block is G261 with PATH_DEV 0.01 (the issue's tiny ball), in odd trials half the blocks
+  // have a random PATH_DEV 0.005..0.5; each within 2 cycles. Without the rule: up to 4.5 %
+  // slower, 1.7 % over all 40 programs; with a model that took the slower neighbour's cap on
+  // both sides, up to 0.21 % (a ball at the slower block's feed over part of the faster one).
   std::mt19937_64 rng(2036);
   RandomProgram shape;
   shape.moves = 40;
@@ -240,16 +241,14 @@ TEST_CASE("property: a G261 program is never slower than the same program under 
     CAPTURE(t260);
     CHECK(ok261);
     CHECK(ok260);
-    if (tiny)
-      CHECK(t261 <= t260 + 2.0 * cfg.channel.t_cycle);
-    else
-      CHECK(t261 <= t260 * 1.0025);
+    CHECK(t261 <= t260 + 2.0 * cfg.channel.t_cycle);
     worst[tiny ? 0 : 1] = std::max(worst[tiny ? 0 : 1], t261 / t260);
     sum_g261 += t261;
     sum_g260 += t260;
   }
-  MESSAGE("G261 / G260: worst " << worst[0] << " (PATH_DEV 0.01), " << worst[1]
-                                << " (random PATH_DEV), over all " << sum_g261 / sum_g260);
+  MESSAGE(std::setprecision(8) << "G261 / G260: worst " << worst[0] << " (PATH_DEV 0.01), "
+                               << worst[1] << " (random PATH_DEV), over all "
+                               << sum_g261 / sum_g260);
   CHECK(sum_g261 <= sum_g260);
 }
 

@@ -246,26 +246,31 @@ Ramp ramp(double v0, double v1, double a, double j) {
 /// length), the blend that would replace the last `cut_in` of the incoming block and the first
 /// `cut_out` of the next, between neighbours with the path limits `in` and `out` (issue 36:
 /// blending is never slower than not blending; docs/planner.md "Tolerance balls"). The time of
-/// each way over the same stretch of the programmed path: from the neighbours' common velocity
-/// down to the corner's link and back, or down to the ball's cap, through the ball at it (a
-/// ball of 0.01 mm has path limits of a few mm/s^2: no ramp inside it) and back, with the
-/// neighbours' path acceleration and jerk; the ball's way is shorter by what it cuts off.
+/// each way over the same stretch of the programmed path: on each side from that neighbour's
+/// cap down to the corner's link, or to the ball's velocity (a ball of 0.01 mm has path limits
+/// of a few mm/s^2: no ramp inside it), with that neighbour's path acceleration and jerk; the
+/// ball's way is shorter by what it cuts off, and it moves at most at the slower neighbour's
+/// programmed velocity over the part of the faster one it replaces.
 bool corner_outruns_ball(double v_corner, const PreparedSegment& ball, double cut_in,
                          double cut_out, const PathLimits& in, const PathLimits& out) {
   const double v_ball = ball.limits.v_max;
   if (v_corner > v_ball * (1.0 + 1e-9)) return true;
-  const double v_far = std::min(in.v_max, out.v_max);
-  const double a = std::min(in.d_max, out.a_max);
-  const double j = std::min(in.j_max, out.j_max);
-  if (!(v_corner > 0.0) || !(v_ball > 0.0) || !(a > 0.0) || !(v_far > v_ball)) return false;
-  const Ramp rc = ramp(v_corner, v_far, a, j);
-  const Ramp rb = ramp(v_ball, v_far, a, j);
-  // Programmed path covered by each way's ramps (and, for the ball, the pieces it replaces).
-  const double x_corner = 2.0 * rc.distance;
-  const double x_ball = 2.0 * rb.distance + cut_in + cut_out;
-  const double x = std::max(x_corner, x_ball);
-  const double t_corner = 2.0 * rc.time + (x - x_corner) / v_far;
-  const double t_ball = 2.0 * rb.time + ball.path.length() / v_ball + (x - x_ball) / v_far;
+  if (!(v_corner > 0.0) || !(v_ball > 0.0) || !(in.d_max > 0.0) || !(out.a_max > 0.0)) return false;
+  const double v_joint = std::min({v_corner, in.v_max, out.v_max});
+  const double v_blend = std::min({v_ball, in.v_max, out.v_max});
+  double t_corner = 0.0;
+  double t_ball = ball.path.length() / v_blend;
+  // One side (cap v, acceleration a, jerk j, the piece `cut` the ball replaces): each way's
+  // time over the longer of the two stretches, at v beyond its ramp.
+  const auto side = [&](double v, double a, double j, double cut) {
+    const Ramp rc = ramp(v_joint, v, a, j);
+    const Ramp rb = ramp(v_blend, v, a, j);
+    const double x = std::max(rc.distance, rb.distance + cut);
+    t_corner += rc.time + (x - rc.distance) / v;
+    t_ball += rb.time + (x - rb.distance - cut) / v;
+  };
+  side(in.v_max, in.d_max, in.j_max, cut_in);
+  side(out.v_max, out.a_max, out.j_max, cut_out);
   return t_corner < t_ball;
 }
 
