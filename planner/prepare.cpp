@@ -227,6 +227,55 @@ void Preparer::emit_joint(PreparedSegment in, const Move& in_move, const Segment
   output(std::move(in), out);
 }
 
+namespace {
+
+/// A symmetric jerk-limited ramp between v0 and v1 >= v0 (acceleration a, jerk j; j = +inf:
+/// none): its time [s] and distance [mm].
+struct Ramp {
+  double time = 0.0;
+  double distance = 0.0;
+};
+Ramp ramp(double v0, double v1, double a, double j) {
+  const double dv = std::max(0.0, v1 - v0);
+  double t = dv / a;
+  if (std::isfinite(j)) t = dv < a * a / j ? 2.0 * std::sqrt(dv / j) : dv / a + a / j;
+  return {t, 0.5 * (v0 + v1) * t};
+}
+
+/// Whether a corner linked at `v_corner` is passed faster than `ball` (its path limits and
+/// length), the blend that would replace the last `cut_in` of the incoming block and the first
+/// `cut_out` of the next, between neighbours with the path limits `in` and `out` (issue 36:
+/// blending is never slower than not blending; docs/planner.md "Tolerance balls"). The time of
+/// each way over the same stretch of the programmed path: on each side from that neighbour's
+/// cap down to the corner's link, or to the ball's velocity (a ball of 0.01 mm has path limits
+/// of a few mm/s^2: no ramp inside it), with that neighbour's path acceleration and jerk; the
+/// ball's way is shorter by what it cuts off, and it moves at most at the slower neighbour's
+/// programmed velocity over the part of the faster one it replaces.
+bool corner_outruns_ball(double v_corner, const PreparedSegment& ball, double cut_in,
+                         double cut_out, const PathLimits& in, const PathLimits& out) {
+  const double v_ball = ball.limits.v_max;
+  if (v_corner > v_ball * (1.0 + 1e-9)) return true;
+  if (!(v_corner > 0.0) || !(v_ball > 0.0) || !(in.d_max > 0.0) || !(out.a_max > 0.0)) return false;
+  const double v_joint = std::min({v_corner, in.v_max, out.v_max});
+  const double v_blend = std::min({v_ball, in.v_max, out.v_max});
+  double t_corner = 0.0;
+  double t_ball = ball.path.length() / v_blend;
+  // One side (cap v, acceleration a, jerk j, the piece `cut` the ball replaces): each way's
+  // time over the longer of the two stretches, at v beyond its ramp.
+  const auto side = [&](double v, double a, double j, double cut) {
+    const Ramp rc = ramp(v_joint, v, a, j);
+    const Ramp rb = ramp(v_blend, v, a, j);
+    const double x = std::max(rc.distance, rb.distance + cut);
+    t_corner += rc.time + (x - rc.distance) / v;
+    t_ball += rb.time + (x - rb.distance - cut) / v;
+  };
+  side(in.v_max, in.d_max, in.j_max, cut_in);
+  side(out.v_max, out.a_max, out.j_max, cut_out);
+  return t_corner < t_ball;
+}
+
+}  // namespace
+
 void Preparer::emit_stop(Pending& p, StopReason why, std::vector<PreparedSegment>& out) {
   PreparedSegment ps = make(p.path, p.move, false, pending_limits(p));
   ps.v_end = 0.0;
@@ -382,6 +431,27 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
       for (std::size_t i = 0; i < blend_move.belt.size(); ++i)
         blend_move.belt[i] = std::max(p.move.belt[i], move.belt[i]);
       PreparedSegment blend_ps = make(ball->curve, blend_move, true);
+      // Issue 36: a DEV corner that VELOJUMP passes faster than its ball is kept, planned
+      // exactly as under G260. Not under DIST, whose distances are the curve the program asks
+      // for, not a bound it may stay within, nor under a transform, where every G261 corner
+      // keeps its ball (the joints' steps; docs/planner.md "Tolerance balls").
+      if (p.move.contour == Contour::tolerance && joints_for(p.move) == nullptr &&
+          joints_for(move) == nullptr) {
+        const std::uint8_t n = std::max(p.path.axis_count(), seg.axis_count());
+        const PathLimits& in = pending_limits(p);
+        seg_cap();  // seg_limits
+        const Link corner =
+            link_velocity(ends->in_end, ends->out_start, n, p.path.metric() | seg.metric(),
+                          slopes_at_joint(axes_for(p.move), p.move.rapid, move.rapid), channel_,
+                          in.v_end, seg_limits->v_max, std::nullopt, jerk_limited(p.move.slope));
+        if (corner_outruns_ball(corner.v_link, blend_ps, ball->cut_in, ball->cut_out, in,
+                                *seg_limits)) {
+          emit_joint(make(p.path, p.move, false, in), p.move, seg, move.rapid, seg_cap(), out,
+                     &*ends);
+          pending()->limits = seg_limits;
+          return;
+        }
+      }
       if (in_path.length() >= kMinLength)
         emit_joint(std::move(in_ps), p.move, ball->curve, blend_move.rapid, blend_ps.limits.v_max,
                    out);

@@ -288,10 +288,18 @@ TEST_CASE("G261 leaves the small knees of dense chords unblended: they chain as 
     prep.push(m, out);
     p = q;
   }
-  // A 90 degree corner after them is still blended.
-  Move m = line(p, vec(p[0], p[1] + 10.0), 100.0, 101);
+  // A 10 mm line on along the chords (its knee as small as theirs), then a 90 degree corner
+  // with PATH_DEV 1: that corner is still blended. (A 0.01 mm ball there would be slower than
+  // the corner's VELOJUMP link, and the corner would be kept: "G261 keeps a corner ...".)
+  dir += 0.1 / 20.0;
+  const AxisVec q = vec(p[0] + 10.0 * std::cos(dir), p[1] + 10.0 * std::sin(dir));
+  Move m = line(p, q, 100.0, 101);
   m.contour = Contour::tolerance;
-  m.path_dev = 0.01;
+  m.path_dev = 1.0;
+  prep.push(m, out);
+  m = line(q, vec(q[0] - 10.0 * std::sin(dir), q[1] + 10.0 * std::cos(dir)), 100.0, 102);
+  m.contour = Contour::tolerance;
+  m.path_dev = 1.0;
   prep.push(m, out);
   prep.finish(out);
   std::size_t blends = 0;
@@ -301,8 +309,49 @@ TEST_CASE("G261 leaves the small knees of dense chords unblended: they chain as 
     parts += ps.path.parts();
   }
   CHECK(blends == 1);
-  CHECK(parts == 102);  // 101 blocks and the one blend
+  CHECK(parts == 103);  // 102 blocks and the one blend
   CHECK(out[0].path.parts() == Chain::kMaxParts);
+}
+
+/// The segments two 20 mm lines at 90 degrees leave as, the first with contour `c` and
+/// PATH_DEV (DEV) or PRE_DIST = POST_DIST (DIST) `r`.
+std::vector<PreparedSegment> right_angle(Contour c, double r) {
+  const auto ax = limits();
+  Preparer prep(ax, ChannelLimits{});
+  std::vector<PreparedSegment> out;
+  Move a = line(vec(0, 0), vec(20, 0), 100.0, 1);
+  a.contour = c;
+  a.path_dev = a.pre_dist = a.post_dist = r;
+  prep.push(a, out);
+  prep.push(line(vec(20, 0), vec(20, 20), 100.0, 2), out);
+  prep.finish(out);
+  return out;
+}
+
+TEST_CASE("G261 keeps a corner that VELOJUMP passes faster than its ball (issue 36)") {
+  // A ball of 0.01 mm at a right angle is passed more slowly than the corner, which VELOJUMP
+  // links at C0 a T = 10 mm/s. The corner is kept, planned exactly as under G260
+  // (docs/planner.md "Tolerance balls"): never slower than not blending.
+  const auto g260 = right_angle(Contour::none, 0.0);
+  const auto kept = right_angle(Contour::tolerance, 0.01);
+  REQUIRE(kept.size() == 2);
+  REQUIRE(g260.size() == 2);
+  CHECK_FALSE(kept[0].blend);
+  CHECK(kept[0].joint == TransitionClass::c0);
+  CHECK(kept[0].rule == LinkRule::velojump);
+  CHECK(kept[0].v_end == g260[0].v_end);
+  CHECK(kept[0].v_end == doctest::Approx(10.0));
+  CHECK(kept[0].path.length() == doctest::Approx(20.0));
+  // A ball of 1 mm passes the corner faster: it stays.
+  const auto ball = right_angle(Contour::tolerance, 1.0);
+  REQUIRE(ball.size() == 3);
+  CHECK(ball[1].blend);
+  CHECK(ball[0].v_end > 10.0);
+  // DIST's distances are the curve the program asks for: its 0.01 mm curve stays.
+  const auto dist = right_angle(Contour::distance, 0.01);
+  REQUIRE(dist.size() == 3);
+  CHECK(dist[1].blend);
+  CHECK(dist[0].v_end < 10.0);
 }
 
 // NCSIM-CHAN-640 (docs/conveyor.md "The belt's own dynamics", 004 l.454)

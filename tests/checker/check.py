@@ -139,10 +139,17 @@ class Checker:
         if stop:
             return Boundary(k, a, b, True, False, zero, zero, "stop")
         blended = a.contour and turn <= BLEND_MAX_TURN and not np.all(geometric <= formula)
-        if blended:  # the line changes where the ball ends: a C2 joint (docs/planner.md)
-            return Boundary(k, a, b, False, True, zero, zero, "ball" + g00)
         dv = np.minimum(formula, geometric)
         rule = "velojump"
+        if blended:
+            # G261 (docs/planner.md "Tolerance balls", issue 36): a tolerance ball, whose end
+            # (where the line changes) is a C2 joint with no step, or the programmed corner,
+            # kept where VELOJUMP passes it faster than the ball would: a C0 knee within 000
+            # l.108's formula. Which of the two it was is not taken from ncsim: the CSV shows
+            # it. The allowance is the corner's; the step measured at the joint bounds what it
+            # adds to a and j (README "Measuring a step"), so a ball that does not step gets
+            # nothing, and a step there must be listed by the audit as any VELOJUMP step.
+            rule = "ball|velojump"
         if a.transvelmin is not None and not a.contour:  # isg-language.md §5.6: priority
             dv = np.maximum(dv, min(a.transvelmin, v_up) * dt)
             rule = "transvelmin"
@@ -156,7 +163,7 @@ class Checker:
         else:  # P-CHAN-00009 = 0: no reduction for the curvature jump, only the a limits
             da = np.maximum(up_a, down_a) + np.maximum(up_b, down_b)
             rule += "+c1-unbounded"
-        return Boundary(k, a, b, False, False, dv, da, rule + g00)
+        return Boundary(k, a, b, False, blended, dv, da, rule + g00)
 
     # -- the checks -----------------------------------------------------------------------------
     def check(self, lines: np.ndarray, pos: np.ndarray, start=None):

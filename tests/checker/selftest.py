@@ -84,9 +84,15 @@ def main():
     big = np.cumsum(np.where(np.arange(n) < 200, 50.0, 50.0 + 1.2 * X.velojump(T)) * T)
     expect("a step above VELOJUMP at a knee", run(knee, big, [1] * 200 + [2] * (n - 200)),
            ["jerk", "velojump"])
+    # G261 (issue 36): the joint is a ball (C2) or a corner kept because VELOJUMP passes it
+    # faster; a step within VELOJUMP is allowed, 1.2 x VELOJUMP is not
+    kept = program("#CONTOUR MODE [DEV PATH_DEV=0.01]\nG261\nG01 X10 F30000\nG01 Y10\nM30\n")
+    expect("the step at a G261 corner", run(kept, xs, [3] * 200 + [4] * (n - 200)), [])
+    expect("a step above VELOJUMP at a G261 corner", run(kept, big, [3] * 200 + [4] * (n - 200)),
+           ["jerk", "velojump"])
     for f in failures:
         print("selftest: FAILED " + f)
-    print(f"selftest: {7 - len(failures)} passed, {len(failures)} failed")
+    print(f"selftest: {9 - len(failures)} passed, {len(failures)} failed")
     return 1 if failures else 0
 
 
