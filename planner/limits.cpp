@@ -39,6 +39,17 @@ double arc_time_model(double length, double v, double a, double j) {
   return 0.5 * (cruise + rest_to_rest);
 }
 
+/// On a plane circle (x''' = -K^2 x', DerivativeBounds::circle) the axis jerk is
+/// x'_i (j - K^2 v^3) + x''_i / K (3 K v a) with x' orthogonal to x'', so a metric axis sees at
+/// most sqrt((|j| + K^2 v^3)^2 + (3 K v a)^2): the path jerk that keeps it within j_i [mm/s^3]
+/// (-inf when none does).
+double circle_jerk(const DerivativeBounds& b, const AxisLimits& ax, double v, double a) {
+  const double kv = b.curvature * v;
+  const double cross = 3.0 * kv * a;
+  if (!(cross < ax.j_max)) return -kInf;
+  return std::sqrt(ax.j_max * ax.j_max - cross * cross) - kv * kv * v;
+}
+
 }  // namespace
 
 bool jerk_limited(SlopeType slope) noexcept {
@@ -157,7 +168,13 @@ PathLimits limits_from_bounds(const DerivativeBounds& b, std::span<const AxisLim
       a_minus = std::min(a_minus, allowed(down));
     }
     if (jerk && curved && v > 0.0) {
-      const double cross = kCrossJerkShare * ax.j_max / (3.0 * b.d2[i] * v);
+      double cross = kCrossJerkShare * ax.j_max / (3.0 * b.d2[i] * v);
+      // On a plane circle the cross term is orthogonal to the rest (circle_jerk): the largest
+      // A that still leaves the path jerk kCrossJerkShare of the axis's.
+      const double kv = b.curvature * v;
+      const double rest = kCrossJerkShare * ax.j_max + kv * kv * v;
+      if (b.circle && has(b.metric, i) && rest < ax.j_max)
+        cross = std::max(cross, std::sqrt(ax.j_max * ax.j_max - rest * rest) / (3.0 * kv));
       a_plus = std::min(a_plus, cross);
       a_minus = std::min(a_minus, cross);
     }
@@ -171,7 +188,9 @@ PathLimits limits_from_bounds(const DerivativeBounds& b, std::span<const AxisLim
     for (std::size_t i = 0; i < n; ++i) {
       if (b.d1[i] <= kTiny) continue;
       const double used = b.d3[i] * v * v * v + 3.0 * b.d2[i] * v * a;
-      j_path = std::min(j_path, (axes[i].j_max - used) / b.d1[i]);
+      double allowed = (axes[i].j_max - used) / b.d1[i];
+      if (b.circle && has(b.metric, i)) allowed = std::max(allowed, circle_jerk(b, axes[i], v, a));
+      j_path = std::min(j_path, allowed);
     }
   }
   out.j_max = j_path;

@@ -286,6 +286,7 @@ DerivativeBounds Segment::bounds() const noexcept {
     const double w = std::abs(a->omega);
     const double r = a->radius;
     b.curvature = r * w * w;
+    b.circle = std::all_of(a->lin.begin(), a->lin.begin() + n_, [](double c) { return c == 0.0; });
     // Axis i's circle part is r A cos(theta - phi), A = |(u_i, v_i)|, phi = atan2(v_i, u_i):
     // |x'| <= |lin| + r w A |sin|, |x''| = r w^2 A |cos|, |x'''| = r w^3 A |sin| over the range.
     for (std::size_t i = 0; i < n_; ++i) {

@@ -40,6 +40,9 @@ struct DerivativeBounds {
   /// most sqrt(a^2 + (curvature v^2)^2) (docs/planner.md "Path limits").
   double curvature = std::numeric_limits<double>::infinity();
   AxisMask metric = 0;  ///< the axes the curvature bound holds for
+  /// A plane circle (an arc without helix rise): x''' = -curvature^2 x' exactly, so the axis
+  /// jerk splits into orthogonal parts too (planner/limits.cpp circle_jerk).
+  bool circle = false;
 };
 
 namespace geom {
