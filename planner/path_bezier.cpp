@@ -688,14 +688,12 @@ DerivativeBounds Segment::bezier_bounds() const noexcept {
       }
     }
   }
-  double curvature2 = 0.0;  // the per-axis maxima bound |x''| over the metric axes
   for (std::size_t i = 0; i < n_; ++i) {
     b.d1[i] = has(metric_, i) ? std::min(1.0, b.d1[i] * kMargin) : b.d1[i] * kMargin;
     b.d2[i] *= kMargin;
     b.d3[i] *= kMargin;
-    if (has(metric_, i)) curvature2 += b.d2[i] * b.d2[i];
   }
-  b.curvature = std::sqrt(curvature2);
+  b.curvature = metric_norm(b.d2);  // the per-axis maxima bound |x''| over the metric axes
   b.metric = metric_;
   return b;
 }
