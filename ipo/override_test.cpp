@@ -415,11 +415,7 @@ TEST_CASE("property: random override and hold sequences keep limits and contour,
   std::mt19937_64 rng(1313);
   int held_runs = 0;
   for (int trial = 0; trial < 24; ++trial) {
-    Config cfg;
-    cfg.axes = random_limits(rng);
-    cfg.channel.t_cycle = 0.00025 * static_cast<double>(1 + rng() % 16);
-    cfg.window = 10 + rng() % 120;
-    cfg.exact_stop = {ExactStop{0.01, 0.002}, ExactStop{0.01, 0.002}, ExactStop{0.01, 0.002}};
+    Config cfg = random_config(rng, 16, 0.002);
     cfg.override_type = static_cast<OverrideType>(rng() % 3);
     RandomProgram p;
     p.moves = 30;

@@ -63,11 +63,7 @@ double run_random(std::mt19937_64& rng, int trials, const RandomProgram& shape,
                   const std::function<void(std::vector<Item>&)>& edit = nullptr) {
   double contour = 0.0;
   for (int trial = 0; trial < trials; ++trial) {
-    Config cfg;
-    cfg.axes = random_limits(rng);
-    cfg.channel.t_cycle = 0.00025 * static_cast<double>(1 + rng() % 16);
-    cfg.exact_stop = {ExactStop{0.01, 0.002}, ExactStop{0.01, 0.002}, ExactStop{0.01, 0.002}};
-    cfg.window = 10 + rng() % 120;
+    Config cfg = random_config(rng, 16, 0.002);
     auto items = random_program(rng, shape);
     if (edit) edit(items);
     // Where the path must stand: G60 ends, block ends before a dwell, the program end.
@@ -218,11 +214,7 @@ TEST_CASE("property: a G261 program is never slower than the same program under 
   double sum_g261 = 0.0;
   double sum_g260 = 0.0;
   for (int trial = 0; trial < 40; ++trial) {
-    Config cfg;
-    cfg.axes = random_limits(rng);
-    cfg.channel.t_cycle = 0.00025 * static_cast<double>(1 + rng() % 8);
-    cfg.exact_stop = {ExactStop{0.01, 0.002}, ExactStop{0.01, 0.002}, ExactStop{0.01, 0.002}};
-    cfg.window = 10 + rng() % 120;
+    const Config cfg = random_config(rng, 8, 0.002);
     std::vector<Item> g261 = random_program(rng, shape);
     std::vector<Item> g260 = g261;
     const bool tiny = trial % 2 == 0;

@@ -132,11 +132,7 @@ TEST_CASE(
   std::uint64_t steps = 0;
   std::uint64_t velojump_steps = 0;
   for (int trial = 0; trial < 24; ++trial) {
-    Config cfg;
-    cfg.axes = random_limits(rng);
-    cfg.channel.t_cycle = 0.00025 * static_cast<double>(1 + rng() % 16);
-    cfg.exact_stop = {ExactStop{0.01, 0.0}, ExactStop{0.01, 0.0}, ExactStop{0.01, 0.0}};
-    cfg.window = 10 + rng() % 120;
+    const Config cfg = random_config(rng, 16, 0.0);
     const std::vector<Item> items = program(rng);
     // Where the path must stand: G60 ends, block ends before a dwell, the program end.
     std::vector<AxisVec> expected;

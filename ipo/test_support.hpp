@@ -154,4 +154,16 @@ inline std::vector<planner::AxisLimits> random_limits(std::mt19937_64& rng) {
   return axes;
 }
 
+/// A random interpolator configuration: random_limits, a cycle of 0.25 ms x 1..cycle_steps,
+/// an exact-stop window of 0.01 mm with `settle` [s] on each axis, a look-ahead window of
+/// 10..129 entries.
+inline Config random_config(std::mt19937_64& rng, std::uint64_t cycle_steps, double settle) {
+  Config cfg;
+  cfg.axes = random_limits(rng);
+  cfg.channel.t_cycle = 0.00025 * static_cast<double>(1 + rng() % cycle_steps);
+  cfg.exact_stop = {ExactStop{0.01, settle}, ExactStop{0.01, settle}, ExactStop{0.01, settle}};
+  cfg.window = 10 + rng() % 120;
+  return cfg;
+}
+
 }  // namespace ncsim::ipo::test
