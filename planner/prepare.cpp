@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "core/tolerance.hpp"
 #include "jerk/jerk.hpp"
 #include "planner/blend.hpp"
 
@@ -254,7 +255,7 @@ Ramp ramp(double v0, double v1, double a, double j) {
 bool corner_outruns_ball(double v_corner, const PreparedSegment& ball, double cut_in,
                          double cut_out, const PathLimits& in, const PathLimits& out) {
   const double v_ball = ball.limits.v_max;
-  if (v_corner > v_ball * (1.0 + 1e-9)) return true;
+  if (v_corner > v_ball * (1.0 + kRelTol)) return true;
   if (!(v_corner > 0.0) || !(v_ball > 0.0) || !(in.d_max > 0.0) || !(out.a_max > 0.0)) return false;
   const double v_joint = std::min({v_corner, in.v_max, out.v_max});
   const double v_blend = std::min({v_ball, in.v_max, out.v_max});
@@ -439,14 +440,14 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
           joints_for(move) == nullptr) {
         const std::uint8_t n = std::max(p.path.axis_count(), seg.axis_count());
         const PathLimits& in = pending_limits(p);
-        seg_cap();  // seg_limits
+        const double out_cap = seg_cap();  // fills seg_limits
         const Link corner =
             link_velocity(ends->in_end, ends->out_start, n, p.path.metric() | seg.metric(),
                           slopes_at_joint(axes_for(p.move), p.move.rapid, move.rapid), channel_,
-                          in.v_end, seg_limits->v_max, std::nullopt, jerk_limited(p.move.slope));
+                          in.v_end, out_cap, std::nullopt, jerk_limited(p.move.slope));
         if (corner_outruns_ball(corner.v_link, blend_ps, ball->cut_in, ball->cut_out, in,
                                 *seg_limits)) {
-          emit_joint(make(p.path, p.move, false, in), p.move, seg, move.rapid, seg_cap(), out,
+          emit_joint(make(p.path, p.move, false, in), p.move, seg, move.rapid, out_cap, out,
                      &*ends);
           pending()->limits = seg_limits;
           return;
