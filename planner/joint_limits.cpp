@@ -86,7 +86,7 @@ std::optional<PathLimits> path_limits(const Segment& segment, const Move& move,
   // MIN(rapid P-AXIS-00209, reference, maximum) (000 l.360), with its G00 slope (P-AXIS-00004
   // acceleration, P-AXIS-00200 ramp time; planner::rapid_limits); the slowest joint sets the
   // time. Feed blocks keep the joints' feed limits.
-  // A G00 in PCS1 (Move::belt_joints set by the adapter, ipo::belt_share of
+  // A G00 in PCS1 (Move::belt_joints set by the adapter, tracking::belt_share of
   // these rapid limits): `joints` come lowered by the belt's acceleration and jerk shares
   // (Preparer::limits); where the G00 slope replaces them (a_rapid, j_rapid) the shares are
   // taken off the slope too, and the velocity share caps the path at Move::feed, the adapter's

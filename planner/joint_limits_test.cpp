@@ -212,7 +212,7 @@ TEST_CASE("G00 under a transform: each joint at MIN(rapid, reference, max) with 
 
 TEST_CASE("G00 in PCS1: the belt's shares come off the G00 slope and its feed caps the rapid") {
   // trafo-pcs1 (issue 14, docs/conveyor.md "Machining in PCS1"): the adapter reserves the belt's
-  // share of each joint on a G00 in PCS1 too (ipo::belt_share of the joints' rapid limits);
+  // share of each joint on a G00 in PCS1 too (tracking::belt_share of the joints' rapid limits);
   // the planner gets the joints lowered by it (Preparer::limits, belt_joint_limits), and where
   // a G00 slope (a_rapid, j_rapid) replaces the feed values the share comes off it as well;
   // Move::feed carries the velocity share's cap.

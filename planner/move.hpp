@@ -80,7 +80,7 @@ struct SplineControl {
 };
 
 /// What a conveyor takes of each joint's acceleration and jerk on a PCS1 block
-/// under #TRAFO ON (docs/conveyor.md "Machining in PCS1"; ipo::belt_share).
+/// under #TRAFO ON (docs/conveyor.md "Machining in PCS1"; tracking::belt_share).
 struct JointShare {
   AxisVec a{};  ///< acceleration taken of joint i, >= 0 [deg/s^2 | mm/s^2]
   AxisVec j{};  ///< jerk taken of joint i, >= 0 [deg/s^3 | mm/s^3]
