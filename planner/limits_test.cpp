@@ -166,6 +166,7 @@ TEST_CASE("property: any motion inside the path limits keeps every axis inside i
   std::uniform_real_distribution<double> u(0.0, 1.0);
   auto range = [&](double lo, double hi) { return lo * std::pow(hi / lo, u(rng)); };
   int curved = 0;
+  int plane_circles = 0;
   for (int n = 0; n < 300; ++n) {
     std::array<AxisLimits, 4> ax{};
     for (auto& a : ax) {
@@ -189,6 +190,11 @@ TEST_CASE("property: any motion inside the path limits keeps every axis inside i
       m.end[0] = m.arc->centre_1 + r * std::cos(a1);
       m.end[1] = m.arc->centre_2 + r * std::sin(a1);
       ++curved;
+      if (n % 4 == 2) {  // a plane circle: the orthogonal jerk bound (circle_jerk) applies
+        m.end[2] = m.start[2];
+        m.end[3] = m.start[3];
+        ++plane_circles;
+      }
     }
     const Segment seg = Segment::from_move(m);
     const PathLimits pl = path_limits(seg, m, ax);
@@ -219,4 +225,5 @@ TEST_CASE("property: any motion inside the path limits keeps every axis inside i
     }
   }
   CHECK(curved == 150);
+  CHECK(plane_circles == 75);
 }
