@@ -67,6 +67,14 @@ class Block:
         self.arc = arc      # (centre, normal, radius, sweep, plane axes) or None
         self.length = 0.0
 
+    def kind(self):
+        """G00, arc, z (a move of the third axis alone) or line."""
+        if self.rapid:
+            return "G00"
+        if self.arc:
+            return "arc"
+        return "z" if np.allclose(self.start[:2], self.end[:2], rtol=0.0, atol=1e-9) else "line"
+
     def samples(self, ds):
         """Points along the block: (s, tangent, curvature vector) arrays."""
         if self.arc is None:
@@ -76,7 +84,7 @@ class Block:
             s = np.linspace(0.0, self.length, n + 1)
             t = np.tile(d / self.length, (n + 1, 1))
             return s, t, np.zeros_like(t)
-        centre, r, phi0, sweep, (p, q), axial = self.arc
+        _, r, phi0, sweep, (p, q), axial = self.arc
         arc_len = abs(sweep) * r
         self.length = math.hypot(arc_len, axial)
         n = max(1, math.ceil(self.length / ds))
@@ -107,7 +115,6 @@ def parse(path, axes):
     motion = None
     plane = (0, 1)
     path_dev = 1.0
-    mode = "G60"
     devs = []
     word = re.compile(r"([A-Z]+)\s*=?\s*(-?[0-9.]+(?:[eE][-+]?[0-9]+)?)")
     with open(path) as f:
@@ -135,8 +142,6 @@ def parse(path, axes):
                         plane = {17: (0, 1), 18: (2, 0), 19: (1, 2)}[g]
                     elif g == 91:
                         sys.exit(f"{path}:{line_no}: G91 not supported by bound.py")
-                    elif g in (60, 260, 261):
-                        mode = {60: "G60", 260: "G260", 261: "G261"}[g] if g != 60 else mode
                 elif letter == "F":
                     feed = v / 60.0
                 elif letter in names:
@@ -190,25 +195,19 @@ def limits_arrays(machine):
 
 
 def accel_lines(t, k, a_up, a_down):
-    """Per sample and axis, the path acceleration interval as lines in u: lo = c_lo + m_lo u,
-    hi = c_hi + m_hi u (a = u'/2). Axis acceleration t_i a + k_i u in [-A-, A+] in the
-    direction of motion sign(t_i); an axis at rest (t_i = 0) must hold |k_i u| <= A+."""
-    sgn = np.sign(t)
-    up = np.where(sgn >= 0, a_up, a_down)    # the bound above t_i a + k_i u
-    dn = np.where(sgn >= 0, a_down, a_up)    # the bound below
+    """Per sample and axis, the path acceleration interval as lines in u: lo = c_lo + m u,
+    hi = c_hi + m u (a = u'/2). Axis acceleration t_i a + k_i u in [-A-, A+] in the
+    direction of motion sign(t_i); an axis at rest (t_i = 0) is left to max_u."""
     moving = np.abs(t) > 1e-12
     ts = np.where(moving, t, 1.0)
+    forward = ts > 0
+    up = np.where(forward, a_up, a_down)    # the bound above t_i a + k_i u
+    dn = np.where(forward, a_down, a_up)    # the bound below
     # t_i a <= up - k_i u  and  t_i a >= -dn - k_i u, divided by t_i (its sign swaps them)
-    c_a = up / ts
-    m_a = -k / ts
-    c_b = -dn / ts
-    m_b = -k / ts
-    pos = ts > 0
-    c_hi = np.where(pos, c_a, c_b)
-    m_hi = np.where(pos, m_a, m_b)
-    c_lo = np.where(pos, c_b, c_a)
-    m_lo = np.where(pos, m_b, m_a)
-    return moving, c_lo, m_lo, c_hi, m_hi
+    m = -k / ts
+    c_hi = np.where(forward, up, -dn) / ts
+    c_lo = np.where(forward, -dn, up) / ts
+    return moving, c_lo, m, c_hi, m
 
 
 def max_u(t, k, u_cap, a_up, a_down):
@@ -216,7 +215,7 @@ def max_u(t, k, u_cap, a_up, a_down):
     at most u_cap."""
     moving, c_lo, m_lo, c_hi, m_hi = accel_lines(t, k, a_up, a_down)
     u = np.array(u_cap, float)
-    # axes at rest: |k_i| u <= A+ (either way)
+    # axes at rest: |k_i| u <= min(A+, A-) (they may start either way)
     still = ~moving & (np.abs(k) > 1e-15)
     cap_still = np.where(still, np.minimum(a_up, a_down) / np.where(still, np.abs(k), 1.0),
                          np.inf)
@@ -309,9 +308,8 @@ class Path:
                 else:
                     def radius_of(alpha, r=r):
                         return r / (1.0 - math.sin(alpha / 2))
-                rapid = self.blocks[b_i].rapid and self.blocks[b_i + 1].rapid
-                if self.blocks[b_i].rapid != self.blocks[b_i + 1].rapid and not rapid:
-                    cap = 0.0  # G00 <-> feed: a stop (docs/planner.md "Stops")
+                if self.blocks[b_i].rapid and not self.blocks[b_i + 1].rapid:
+                    cap = 0.0  # G00 then a feed block: a stop (docs/planner.md "Stops")
                 else:
                     cap = fillet_cap(self.t[e], self.t[f], radius_of,
                                      np.minimum(self.a_up[e], self.a_up[f]),
@@ -326,16 +324,12 @@ class Path:
         u_lim = np.minimum(self.u_max, caps)
         n = len(self.s)
         ds = np.diff(self.s)
-        mv = moving
-        big = 1e300
 
         def a_hi(k, u):
-            v = np.where(mv[k], c_hi[k] + m_hi[k] * u, big)
-            return v.min()
+            return np.where(moving[k], c_hi[k] + m_hi[k] * u, np.inf).min()
 
         def a_lo(k, u):
-            v = np.where(mv[k], c_lo[k] + m_lo[k] * u, -big)
-            return v.max()
+            return np.where(moving[k], c_lo[k] + m_lo[k] * u, -np.inf).max()
 
         fw = np.empty(n)
         fw[0] = u_lim[0]
@@ -430,24 +424,21 @@ def main(argv=None):
         for i, b in enumerate(blocks):
             if not body[i]:
                 continue
-            kind = "G00" if b.rapid else ("arc" if b.arc else ("z" if abs(b.end[0] - b.start[0]) + abs(b.end[1] - b.start[1]) < 1e-9 else "line"))
-            k = kinds.setdefault(kind, [0, 0.0, 0.0, 0.0])
+            k = kinds.setdefault(b.kind(), [0, 0.0, 0.0])
             k[0] += 1
             k[1] += mine[i]
             k[2] += ball[i] + ball_j[i]
         print(f"{'kind':>6} {'n':>5} {'ncsim':>9} {'ball+j':>9} {'loss':>8}")
-        for kind, (n, t_nc, t_b, _) in kinds.items():
+        for kind, (n, t_nc, t_b) in kinds.items():
             print(f"{kind:>6} {n:>5} {t_nc:>9.3f} {t_b:>9.3f} {t_nc - t_b:>8.3f}")
         if a.blocks:
-            ball, ball_j = results["ball"]
             loss = (mine - ball - ball_j) * body
             order = np.argsort(-loss)[:a.blocks]
             print(f"{'line':>6} {'len_mm':>8} {'F':>8} {'kind':>5} {'ncsim':>8} "
                   f"{'ball':>8} {'+jerk':>8} {'loss':>8}")
             for i in order:
                 b = blocks[i]
-                kind = "G00" if b.rapid else ("arc" if b.arc else "line")
-                print(f"{b.line:>6} {b.length:>8.3f} {b.feed * 60:>8.0f} {kind:>5} "
+                print(f"{b.line:>6} {b.length:>8.3f} {b.feed * 60:>8.0f} {b.kind():>5} "
                       f"{mine[i]:>8.3f} {ball[i]:>8.3f} {ball[i] + ball_j[i]:>8.3f} "
                       f"{loss[i]:>8.3f}")
 
