@@ -15,7 +15,6 @@ namespace ncsim::audit {
 
 namespace {
 
-constexpr double kRelative = kRelTol;     // values within limit (1 + 1e-9) pass
 constexpr double kStepNoise = 1e-8;       // [1] a joint's velocity step below this x v: rounding
 constexpr double kPositionNoise = 1e-10;  // [mm] absolute rounding of a cycle position
 
@@ -56,12 +55,12 @@ void Audit::violate(Quantity q, Method m, std::size_t axis, double t, std::uint3
 
 void Audit::check(Quantity q, Method m, std::size_t axis, const ipo::Cycle& c, double value,
                   double limit, bool joint, double path) {
-  if (value <= limit * (1.0 + kRelative)) return;
+  if (value <= limit * (1.0 + kRelTol)) return;
   violate(q, m, axis, c.t, c.line, c.file, value, limit, joint);
   if (path < 0.0) return;
   if (verdict_.violations.size() == verdict_.violation_count)  // listed: the path share with it
     verdict_.violations.back().path = path;
-  if (path <= limit * (1.0 + kRelative)) ++verdict_.belt_count;  // the belt's own (004 l.454)
+  if (path <= limit * (1.0 + kRelTol)) ++verdict_.belt_count;  // the belt's own (004 l.454)
 }
 
 void Audit::on_joint(const ipo::Joint& jt) {
@@ -82,7 +81,7 @@ void Audit::formula_step(Quantity q, std::size_t i, const ipo::Joint& jt, double
                          double bound, bool joint) {
   note_step(
       Step{q, static_cast<std::uint8_t>(i), jt.t, jt.line, jt.v, value, bound, jt.file, joint});
-  if (!(value <= bound * (1.0 + kRelative)))
+  if (!(value <= bound * (1.0 + kRelTol)))
     violate(q, Method::formula, i, jt.t, jt.line, jt.file, value, bound, joint);
 }
 

@@ -182,23 +182,24 @@ bool WordReader::read_weighting(const ast::Block& b, const ast::Word& w, BlockWo
     group = ip_.eval(b, w.value);
     if (!group) return false;
   }
-  const std::string g = "G" + std::to_string(w.code);
   if (is_applied_weighting(w.code)) {
     bw.weightings.push_back({w.code, group, w.loc});
     return true;
   }
   if (!said_g_.insert(w.code).second) return true;  // said once per code
+  const std::string g = "G" + std::to_string(w.code);
   if (is_feedhold_weighting(w.code)) {
     // PROG-206590731 / PROG-206596619: the feed-hold weightings scale the feed-hold ramps
     // P-AXIS-00053 / P-AXIS-00081, which a feed hold uses only with P-CHAN-00097 = 1. ncsim's
     // channel is P-CHAN-00097 = 0 (the default; 1 is NC3013 at load): a feed hold decelerates
     // at the currently valid deceleration, so the weighting changes nothing, as on the kernel.
-    ip_.note(w.loc, "NC4315",
+    ip_.warn(w.loc, "NC4315",
              g + " (feed-hold " + (w.code <= 334 ? "acceleration" : "ramp time") +
                  " weighting) acts on the feed-hold ramps P-AXIS-00053 / P-AXIS-00081, which "
                  "a feed hold uses only with P-CHAN-00097 = 1; this channel decelerates a feed "
                  "hold at the currently valid deceleration (P-CHAN-00097 = 0), so " +
-                 g + " changes nothing");
+                 g + " changes nothing",
+             core::Severity::note);
   } else {
     // G134: P-AXIS-00199 (the contour's jerk bound) is not a limit ncsim's planner applies.
     ip_.warn(w.loc, "NC4313",

@@ -52,14 +52,9 @@ bool Interpreter::Impl::fail_eval() {
   return fail(e.loc, e.id, e.message);
 }
 
-void Interpreter::Impl::warn(core::SourceLoc loc, std::string id, std::string message) {
-  diags.add({core::Severity::warning, files[current_file]->file->name(), loc, std::move(id),
-             std::move(message)});
-}
-
-void Interpreter::Impl::note(core::SourceLoc loc, std::string id, std::string message) {
-  diags.add({core::Severity::note, files[current_file]->file->name(), loc, std::move(id),
-             std::move(message)});
+void Interpreter::Impl::warn(core::SourceLoc loc, std::string id, std::string message,
+                             core::Severity severity) {
+  diags.add({severity, files[current_file]->file->name(), loc, std::move(id), std::move(message)});
 }
 
 std::optional<double> Interpreter::Impl::eval(const ast::Block& b, ast::NodeIndex n) {

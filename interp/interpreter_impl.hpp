@@ -86,8 +86,9 @@ struct Interpreter::Impl {
 
   bool fail(core::SourceLoc loc, std::string id, std::string message);
   bool fail_eval();
-  void warn(core::SourceLoc loc, std::string id, std::string message);
-  void note(core::SourceLoc loc, std::string id, std::string message);
+  /// A diagnostic that does not stop the program: a warning, or a note (`severity`).
+  void warn(core::SourceLoc loc, std::string id, std::string message,
+            core::Severity severity = core::Severity::warning);
   std::optional<double> eval(const ast::Block& b, ast::NodeIndex n);
 
   // blocks (interpreter_block.cpp)
