@@ -432,10 +432,12 @@ void Preparer::push_path(const Move& move, const Segment& seg, std::vector<Prepa
       for (std::size_t i = 0; i < blend_move.belt.size(); ++i)
         blend_move.belt[i] = std::max(p.move.belt[i], move.belt[i]);
       PreparedSegment blend_ps = make(ball->curve, blend_move, true);
-      // Issue 36: a DEV corner that VELOJUMP passes faster than its ball is kept, planned
-      // exactly as under G260. Not under DIST, whose distances are the curve the program asks
-      // for, not a bound it may stay within, nor under a transform, where every G261 corner
-      // keeps its ball (the joints' steps; docs/planner.md "Tolerance balls").
+      // Issue 36: a DEV corner that VELOJUMP (000 l.108) passes faster than its ball is kept,
+      // planned exactly as under G260; the ball stays jerk-limited where the kernel's default
+      // CHECK_JERK=0 would not limit it (TF5200 PROG-475164939, P-CHAN-00110). Not under DIST,
+      // whose distances are the curve the program asks for, not a bound it may stay within, nor
+      // under a transform, where every G261 corner keeps its ball (the joints' steps;
+      // docs/planner.md "Tolerance balls").
       if (p.move.contour == Contour::tolerance && joints_for(p.move) == nullptr &&
           joints_for(move) == nullptr) {
         const std::uint8_t n = std::max(p.path.axis_count(), seg.axis_count());

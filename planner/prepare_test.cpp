@@ -330,8 +330,9 @@ std::vector<PreparedSegment> right_angle(Contour c, double r) {
 
 TEST_CASE("G261 keeps a corner that VELOJUMP passes faster than its ball (issue 36)") {
   // A ball of 0.01 mm at a right angle is passed more slowly than the corner, which VELOJUMP
-  // links at C0 a T = 10 mm/s. The corner is kept, planned exactly as under G260
-  // (docs/planner.md "Tolerance balls"): never slower than not blending.
+  // links at C0 a T = 10 mm/s (000 l.108). The corner is kept, planned exactly as under G260
+  // (docs/planner.md "Tolerance balls", with TF5200 PROG-475164939): never slower than not
+  // blending.
   const auto g260 = right_angle(Contour::none, 0.0);
   const auto kept = right_angle(Contour::tolerance, 0.01);
   REQUIRE(kept.size() == 2);
