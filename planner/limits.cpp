@@ -100,6 +100,30 @@ PathLimits path_limits(const Segment& segment, const Move& move, std::span<const
   return out;
 }
 
+std::size_t arc_options(const Segment& segment, const Move& move, std::span<const AxisLimits> axes,
+                        const PathLimits& planned, std::array<PathLimits, kArcOptions>& out) {
+  const std::size_t n = segment.axis_count();
+  if (axes.size() < n || move.rapid || segment.kind() != SegmentKind::arc) return 0;
+  const DerivativeBounds b = segment.bounds();
+  const bool jerk = jerk_limited(move.slope);
+  constexpr double kTopShare = 0.99;
+  const double top =
+      limits_from_bounds(b, axes.first(n), planned.v_programmed, jerk, kTopShare).v_max;
+  if (!(top > 0.0)) return 0;
+  static const std::array<double, kArcOptions> kFractions = {1.0, 0.92, 0.84, 0.72, 0.58};
+  std::size_t count = 0;
+  for (const double f : kFractions) {
+    PathLimits p = limits_from_bounds(b, axes.first(n), f * top, jerk, kTopShare);
+    if (!(p.v_max > 0.0) || !(p.a_max > 0.0) || !(p.d_max > 0.0) || !(p.j_max > 0.0)) continue;
+    p.v_programmed = planned.v_programmed;
+    p.limit = planned.limit;
+    p.limiting_axis = planned.limiting_axis;
+    p.v_end = std::min(planned.v_end, p.v_max);
+    out[count++] = p;
+  }
+  return count;
+}
+
 PathLimits best_share(const DerivativeBounds& b, std::span<const AxisLimits> axes,
                       double v_programmed, bool jerk, double length, const PathLimits& standard) {
   PathLimits best = standard;

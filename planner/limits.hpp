@@ -61,6 +61,9 @@ inline constexpr double kCurvatureJerkShare = 0.5;
 /// Share of an axis's jerk the cross term 3 x'' v a may use.
 inline constexpr double kCrossJerkShare = 0.25;
 
+/// How many other limit sets an arc carries (arc_options).
+inline constexpr std::size_t kArcOptions = 5;
+
 /// True for the jerk-limited slopes TRAPEZ and SIN2 (HSC is planned like TRAPEZ).
 bool jerk_limited(SlopeType slope) noexcept;
 
@@ -81,5 +84,12 @@ PathLimits limits_from_bounds(const DerivativeBounds& b, std::span<const AxisLim
 /// one from the velocity (docs/planner.md "Shares").
 PathLimits best_share(const DerivativeBounds& b, std::span<const AxisLimits> axes,
                       double v_programmed, bool jerk, double length, const PathLimits& standard);
+
+/// The limits of an arc under kArcOptions other velocity caps, from the highest the axes allow
+/// (centripetal share 0.99) down to 0.58 of it: under a lower cap less of each axis's
+/// acceleration goes to the curvature and more is left for the path. `planned` keeps what was
+/// programmed (v_programmed, the limit's reason, v_end). Returns how many were filled.
+std::size_t arc_options(const Segment& segment, const Move& move, std::span<const AxisLimits> axes,
+                        const PathLimits& planned, std::array<PathLimits, kArcOptions>& out);
 
 }  // namespace ncsim::planner

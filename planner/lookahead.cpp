@@ -584,6 +584,42 @@ void LookAhead::plan_front(PlannedSegment& out) noexcept {
   // faster over both than the plan with a = 0 at the joint.
   if (!carried && soft && plain && a0 == 0.0 && exit == s.exit_cap && brake_carry(v0, out, c))
     carry_ = c;
+  else if (!carried && a0 == 0.0)
+    fastest_option(out);
+}
+
+void LookAhead::fastest_option(PlannedSegment& out) const noexcept {
+  PreparedSegment& seg = out.segment;
+  if (seg.option_count == 0 || out.shape != ProfileShape::plain || out.a_exit != 0.0) return;
+  const double length = seg.path.length();
+  const PathLimits own = seg.limits;
+  PathLimits best = own;
+  double best_a = out.a_max, best_d = out.d_max, best_j = out.j_max;
+  double t_best = profile(out).time();
+  for (std::size_t k = 0; k < seg.option_count; ++k) {
+    const PathLimits& o = seg.options[k];
+    if (o.v_max < std::max(out.v_entry, out.v_exit)) continue;
+    // profile() reads the cap from the segment and a, d, j from the plan.
+    seg.limits = o;
+    out.a_max = o.a_max;
+    out.d_max = o.d_max;
+    out.j_max = std::isfinite(o.j_max) ? o.j_max : std::max(o.a_max, o.d_max) / t_cycle_;
+    const SegmentProfile p = profile(out);
+    // Its two ramps must fit the length (profile() keeps the lowest level when none does).
+    const double used =
+        jerk::distance(p.v0, p.a0, p.first) + jerk::distance(p.v_level, 0.0, p.second);
+    if (used <= length * (1.0 + 1e-12) + 1e-15 && p.time() < t_best) {
+      t_best = p.time();
+      best = o;
+      best_a = out.a_max;
+      best_d = out.d_max;
+      best_j = out.j_max;
+    }
+  }
+  seg.limits = best;
+  out.a_max = best_a;
+  out.d_max = best_d;
+  out.j_max = best_j;
 }
 
 }  // namespace ncsim::planner

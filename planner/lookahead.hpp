@@ -223,6 +223,10 @@ class LookAhead {
   void end_brake(PlannedSegment& out) noexcept;
   void through_brake(PlannedSegment& out) noexcept;
   void plan_front(PlannedSegment& out) noexcept;
+  /// A plain plan of an arc entered and left at a = 0: the fastest of its limit sets
+  /// (PreparedSegment::limits and ::options) whose profile between the planned entry and exit
+  /// fits its length (docs/planner.md "Arc options").
+  void fastest_option(PlannedSegment& out) const noexcept;
   static void set_ramp_limits(PlannedSegment& out, const Carry& c) noexcept;
 
   std::vector<Slot> slots_;

@@ -615,3 +615,32 @@ TEST_CASE("a short STEP block after a #TRANSVELMIN link leaves at its exit cap, 
   });
   CHECK(above > 1000);
 }
+
+TEST_CASE(
+    "an arc between two stops takes its fastest limit set: a lower cap leaves more acceleration") {
+  // Every axis 100 mm/s, 1000 mm/s^2; a half circle of r 3 mm at F 100 mm/s from and to a stop.
+  // The segment's own limits (a centripetal share chosen for an average traverse) reach a
+  // level the short arc cannot use; an option under a lower cap (arc_options) accelerates
+  // harder and is faster, within every axis limit.
+  const std::array<AxisLimits, 3> ax = {axis(100, 1000, 1e7), axis(100, 1000, 1e7),
+                                        axis(100, 1000, 1e7)};
+  Move m = line(vec(0, 0), vec(6, 0), 100.0);
+  m.arc = Arc{0, 1, 3.0, 0.0, false, false};
+  const auto planned = plan({m}, ax, 10);
+  REQUIRE(planned.size() == 1);
+  const PlannedSegment& ps = planned[0];
+  REQUIRE(ps.segment.option_count > 0);
+  check_profile(ps, ax);
+
+  PlannedSegment own = ps;  // the same plan under the segment's own limits
+  own.segment.limits = path_limits(ps.segment.path.part(0), m, ax);
+  own.a_max = own.segment.limits.a_max;
+  own.d_max = own.segment.limits.d_max;
+  own.j_max = own.segment.limits.j_max;
+  check_profile(own, ax);
+  CHECK(ps.segment.limits.v_max < own.segment.limits.v_max);
+  CHECK(ps.a_max > own.a_max);
+  CHECK(profile(ps).time() < profile(own).time() * 0.99);
+  // What was programmed stays: the feed (the override's type "original" reads it).
+  CHECK(ps.segment.limits.v_programmed == own.segment.limits.v_programmed);
+}

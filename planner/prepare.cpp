@@ -156,6 +156,9 @@ PreparedSegment Preparer::make(const Segment& path, const Move& move, bool blend
   PreparedSegment ps;
   ps.path = Chain(path, move.line);
   ps.limits = limits;
+  if (!blend && joints_for(move) == nullptr)
+    ps.option_count =
+        static_cast<std::uint8_t>(arc_options(path, move, axes_for(move), limits, ps.options));
   ps.blend = blend;
   ps.line = move.line;
   return ps;
@@ -317,6 +320,7 @@ void Preparer::output(PreparedSegment ps, std::vector<PreparedSegment>& out) {
         h.limits.v_programmed = std::min(h.limits.v_programmed, ps.limits.v_programmed);
       }
       h.path.append(ps.path);
+      h.option_count = 0;  // the options are one arc's
       h.limits.a_max = std::min(h.limits.a_max, ps.limits.a_max);
       h.limits.d_max = std::min(h.limits.d_max, ps.limits.d_max);
       h.limits.j_max = std::min(h.limits.j_max, ps.limits.j_max);

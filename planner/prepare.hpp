@@ -58,6 +58,10 @@ struct PreparedSegment {
   LinkRule rule = LinkRule::segment_caps;       ///< what set v_end (when not a stop)
   bool blend = false;                           ///< a tolerance-ball blend, not a programmed block
   std::uint32_t line = 0;  ///< source line (a blend carries its incoming block's line)
+  /// An arc's limits under other velocity caps (arc_options): the look-ahead plans with
+  /// `limits` and takes, once it knows the entry and exit, the fastest of these that fits.
+  std::array<PathLimits, kArcOptions> options{};
+  std::uint8_t option_count = 0;
 };
 
 /// The planner cannot plan a segment under the kinematic transform: the inverse transform
