@@ -24,7 +24,7 @@ PY=/usr/bin/python3
 CPU=("$PY" "$REPO/bench/cpu.py" --runs "$RUNS")
 GBENCH=("$PY" "$REPO/bench/gbench.py" --reps "$RUNS")
 
-ROWS=(grammar interp axes planner ipo rs274 big dense-walk dense-cam chords-10m run-csv
+ROWS=(grammar interp axes planner ipo rs274 big big-5gb dense-walk dense-cam chords-10m run-csv
   move200 report blend bound checker line)
 describe() {
   case $1 in
@@ -35,6 +35,7 @@ describe() {
     ipo) echo "ipo_bench: the time loop in x real time (in memory)" ;;
     rs274) echo "check_vs_rs274.sh: ncsim check (syntax, full) against LinuxCNC rs274, 1 M blocks" ;;
     big) echo "big_programs.sh 10000000: check / trace of 10 M blocks, peak RSS" ;;
+    big-5gb) echo "big_programs.sh 130000000: the same on 5.1 GB (5 GB of /tmp, ~10 min)" ;;
     dense-walk) echo "ncsim time, 200,000 chords of 0.1 mm, +-1.7 deg, G261 PATH_DEV 0.01" ;;
     dense-cam) echo "ncsim time programs/dense_cam, as bundled and with G261 PATH_DEV 0.01" ;;
     chords-10m) echo "ncsim time, 10,000,000 chords of 0.1 mm: x real time, peak RSS" ;;
@@ -77,7 +78,8 @@ row_axes() { need bench/axes_bench && "${GBENCH[@]}" "$BUILD/bench/axes_bench"; 
 row_planner() { need bench/planner_bench && "${GBENCH[@]}" "$BUILD/bench/planner_bench"; }
 row_ipo() { need bench/ipo_bench && "${GBENCH[@]}" "$BUILD/bench/ipo_bench"; }
 row_rs274() { NCSIM_BUILD_DIR="$BUILD" RUNS="$RUNS" bash "$REPO/bench/check_vs_rs274.sh"; }
-row_big() { NCSIM_BUILD_DIR="$BUILD" CORE="$CORE" bash "$REPO/bench/big_programs.sh" 10000000; }
+row_big() { NCSIM_BUILD_DIR="$BUILD" bash "$REPO/bench/big_programs.sh" 10000000; }
+row_big-5gb() { NCSIM_BUILD_DIR="$BUILD" bash "$REPO/bench/big_programs.sh" 130000000; }
 
 row_dense-walk() {
   need cli/ncsim
