@@ -9,6 +9,7 @@
 #include <string>
 
 #include "audit/contour.hpp"
+#include "core/number_text.hpp"
 #include "core/tolerance.hpp"
 
 namespace ncsim::audit {
@@ -26,7 +27,7 @@ Audit::Audit(std::span<const planner::AxisLimits> axes, double t_cycle,
   if (limits_.empty() || limits_.size() > planner::kMaxAxes)
     throw std::invalid_argument("ipo audit: " + std::to_string(limits_.size()) + " axes");
   if (!(t_cycle > 0.0) || !std::isfinite(t_cycle))
-    throw std::invalid_argument("ipo audit: cycle must be > 0, got " + std::to_string(t_cycle));
+    throw std::invalid_argument("ipo audit: cycle must be > 0, got " + core::human(t_cycle));
   verdict_.axes.resize(limits_.size());
   for (std::size_t i = 0; i < limits_.size(); ++i) {
     const planner::AxisLimits& l = limits_[i];

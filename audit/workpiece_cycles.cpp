@@ -66,7 +66,7 @@ void append_json(std::string& out, const WorkpieceSummary& summary) {
 WorkpieceCycles::WorkpieceCycles(double t_cycle, std::function<void(const WorkpieceCycle&)> on_row)
     : t_(t_cycle), on_row_(std::move(on_row)) {
   if (!(t_cycle > 0.0))
-    throw std::invalid_argument("workpiece cycles: cycle time " + std::to_string(t_cycle) +
+    throw std::invalid_argument("workpiece cycles: cycle time " + core::human(t_cycle) +
                                 " s must be > 0");
 }
 

@@ -3,7 +3,8 @@
 #
 # Memory independent of program length (issue 9): `ncsim check --syntax-only`, `ncsim check`
 # and `ncsim trace` of generated programs of BLOCKS blocks each (default: 10,000,000 and
-# 130,000,000 = 5.1 GB), one core (taskset -c 0), peak RSS and CPU time from /usr/bin/time -v.
+# 130,000,000 = 5.1 GB), one core (taskset -c $CORE, default 1), peak RSS and CPU time from
+# /usr/bin/time -v.
 # Target: peak RSS < 64 MB for every program and command; STRICT=1 makes a miss exit 1.
 #
 # The programs are written to $NCSIM_BIG_DIR (default /tmp/ncsim-big), never into the
@@ -41,7 +42,7 @@ for blocks in "${sizes[@]}"; do
   mb=$(($(stat -c %s "$prog") / 1000000))
   for cmd in "check --syntax-only" "check --machine $machine" "trace --max-commands 0 --machine $machine"; do
     set +e
-    /usr/bin/time -v taskset -c 0 "$BUILD/cli/ncsim" $cmd "$prog" >/dev/null 2>"$WORK/time.txt"
+    /usr/bin/time -v taskset -c "${CORE:-1}" "$BUILD/cli/ncsim" $cmd "$prog" >/dev/null 2>"$WORK/time.txt"
     status=$?
     set -e
     rss=$(awk -F': ' '/Maximum resident/ {print $2}' "$WORK/time.txt")

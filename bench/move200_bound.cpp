@@ -1,6 +1,6 @@
 // move200_bound: machining time of the seeded 200-move program (bench/move200.hpp) by ncsim
 // against lower bounds from an independent time-optimal path parameterisation (TOPP) without a
-// jerk limit (docs/benchmarks.md "200-move program").
+// jerk limit (docs/benchmarks.md "The 200-move table").
 //
 // Purpose: the table of issue 12: ncsim's `time` (audit::machining_time: the cycle loop of
 // `ncsim time`, T = 1 ms) with TRAPEZ and STEP slopes, exact stops, VELOJUMP corners and
@@ -243,7 +243,7 @@ void write_program(const std::vector<planner::Move>& moves, const char* path) {
   std::fprintf(f,
                "; move200: the seeded 200-move line/arc program of issue 12 (bench/move200.hpp,\n"
                "; written by bench/move200_bound --write). Axes V 100 mm/s, A 1000 mm/s^2,\n"
-               "; J 1e5 mm/s^3 (docs/benchmarks.md \"200-move program\").\n"
+               "; J 1e5 mm/s^3 (docs/benchmarks.md \"The 200-move table\").\n"
                "%%move200\nN1 G17 G90 G71 G94 G08\nN2 G00 X0 Y0 Z0\n");
   for (const planner::Move& m : moves) {
     if (m.arc)

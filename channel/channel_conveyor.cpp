@@ -49,7 +49,7 @@ ConveyorTracking::ConveyorTracking(std::optional<tracking::ConveyorSync>& sync,
       conveyor_axis_(std::move(conveyor_axis)) {
   if (!(measured_value_wait_max_ > 0.0))
     throw std::invalid_argument("channel::Channel: measured_value_wait_max must be > 0 s, got " +
-                                std::to_string(measured_value_wait_max_));
+                                core::human(measured_value_wait_max_));
   // Same rounding as every wait (docs/ipo.md): the limit in whole cycles, never shorter.
   measure_wait_cycles_max_ = static_cast<std::uint64_t>(
       std::ceil(measured_value_wait_max_ / ipo_.t_cycle() - kCycleRounding));

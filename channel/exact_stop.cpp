@@ -15,7 +15,7 @@ ExactStopWait::ExactStopWait(double wait_max, double t_cycle)
     : wait_max_(wait_max), t_cycle_(t_cycle) {
   if (!(wait_max_ > 0.0))
     throw std::invalid_argument("channel::Channel: exact_stop_wait_max must be > 0 s, got " +
-                                std::to_string(wait_max_));
+                                core::human(wait_max_));
   // Same rounding as every wait (docs/ipo.md): the limit in whole cycles, never shorter.
   wait_cycles_max_ = static_cast<std::uint64_t>(std::ceil(wait_max_ / t_cycle_ - kCycleRounding));
 }

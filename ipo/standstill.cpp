@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "core/limits.hpp"
+#include "core/number_text.hpp"
 #include "core/tolerance.hpp"
 
 namespace ncsim::ipo {
@@ -25,11 +26,11 @@ Standstill::Standstill(std::vector<ExactStop> exact_stop, std::size_t axis_count
     if (!(e.window > 0.0) || !std::isfinite(e.window))
       throw std::invalid_argument("ipo: axis " + std::to_string(i) +
                                   ": exact-stop window P-AXIS-00236 must be > 0, got " +
-                                  std::to_string(e.window));
+                                  core::human(e.window));
     if (!(e.settle_time >= 0.0) || !std::isfinite(e.settle_time))
       throw std::invalid_argument("ipo: axis " + std::to_string(i) +
                                   ": settling time P-AXIS-00532 must be >= 0, got " +
-                                  std::to_string(e.settle_time));
+                                  core::human(e.settle_time));
   }
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // jerk/ramp_inline: the bodies of the small functions of jerk.hpp that every planner calls in
 // its inner loops (advance, velocity_ramp, distance, ramp_distance). They are inline so the
-// axes' planners keep their speed across the library boundary (docs/benchmarks.md); the
-// contracts are documented in jerk.hpp. Included by jerk.hpp only.
+// axes' planners keep their speed across the library boundary (git history of
+// docs/benchmarks.md); the contracts are documented in jerk.hpp. Included by jerk.hpp only.
 
 #include <algorithm>
 #include <cmath>

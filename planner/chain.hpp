@@ -55,7 +55,7 @@ class Chain {
   std::size_t locate(double& s) const noexcept;
 
   /// One part with what locate() and line_at() ask of it, in one vector: one allocation a
-  /// chain (three vectors cost three, docs/benchmarks.md issue 12 session 24).
+  /// chain (three vectors cost three: git history of docs/benchmarks.md, issue 12 session 24).
   struct Part {
     Segment segment;
     double end = 0.0;        ///< cumulative length at the end of the part [mm]

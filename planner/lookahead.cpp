@@ -11,6 +11,7 @@
 #include <string>
 #include <utility>
 
+#include "core/number_text.hpp"
 #include "planner/lookahead_ramps.hpp"
 
 namespace ncsim::planner {
@@ -99,7 +100,7 @@ LookAhead::LookAhead(std::size_t capacity, double t_cycle, SoftJoints soft)
                                 " segments (P-CHAN-00650)");
   if (!(t_cycle > 0.0) || !std::isfinite(t_cycle))
     throw std::invalid_argument("planner: interpolation cycle must be > 0, got " +
-                                std::to_string(t_cycle));
+                                core::human(t_cycle));
   slots_.resize(capacity);
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <type_traits>
 
+#include "core/number_text.hpp"
 #include "core/tolerance.hpp"
 
 namespace ncsim::planner {
@@ -30,14 +31,13 @@ std::string name_of(const Name& field) {
 
 template <class Name>
 void finite(double value, const Name& field) {
-  if (!std::isfinite(value))
-    fail(name_of(field) + " is not finite (" + std::to_string(value) + ")");
+  if (!std::isfinite(value)) fail(name_of(field) + " is not finite (" + core::human(value) + ")");
 }
 
 template <class Name>
 void positive(double value, const Name& field) {
   finite(value, field);
-  if (value <= 0.0) fail(name_of(field) + " must be > 0, got " + std::to_string(value));
+  if (value <= 0.0) fail(name_of(field) + " must be > 0, got " + core::human(value));
 }
 
 }  // namespace

@@ -38,7 +38,7 @@ double max_abs_sin(double a, double b) {
 
 // Point evaluation of lines and arcs, one function per kind with a single named result, so that
 // the 512-byte PathPoint is built in the caller's storage (a function that returns different
-// objects on different paths copies it: docs/benchmarks.md, issue 12 session 24).
+// objects on different paths copies it: git history of docs/benchmarks.md, issue 12 session 24).
 
 AxisVec line_point(const geom::LineGeom& l, std::size_t n, double s) {
   AxisVec x = l.p0;

@@ -48,7 +48,7 @@ std::array<double, M + 1> basis(double t) {
 /// Control points of B and of its first three t-derivatives (hodographs), per axis:
 /// dB = 5 sum b4_k D1_k, d2B = 20 sum b3_k D2_k, d3B = 60 sum b2_k D3_k (forward differences,
 /// scaled here once). Only the first n axes are set (and read): zeroing all kMaxAxes cost
-/// more than computing the n used (docs/benchmarks.md, issue 12 session 21).
+/// more than computing the n used (git history of docs/benchmarks.md, issue 12 session 21).
 struct Hodographs {
   std::array<AxisVec, 6> c0;
   std::array<AxisVec, 5> c1;

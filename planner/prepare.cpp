@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "core/number_text.hpp"
 #include "core/tolerance.hpp"
 #include "jerk/jerk.hpp"
 #include "planner/blend.hpp"
@@ -78,7 +79,7 @@ Preparer::Preparer(std::span<const AxisLimits> axes, ChannelLimits channel)
   validate(axes);
   if (!(channel.t_cycle > 0.0))
     throw std::invalid_argument("planner: interpolation cycle must be > 0, got " +
-                                std::to_string(channel.t_cycle));
+                                core::human(channel.t_cycle));
 }
 
 void Preparer::set_joints(JointLimits joints) {

@@ -7,6 +7,7 @@
 #include <utility>
 #include <variant>
 
+#include "core/number_text.hpp"
 #include "program/machine_data.hpp"
 
 namespace ncsim::program {
@@ -15,7 +16,7 @@ namespace {
 SourceConfig checked(const SourceConfig& config) {
   if (!(config.t_cycle > 0.0) || !std::isfinite(config.t_cycle))
     throw std::invalid_argument("program::ProgramSource: cycle must be > 0 s, got " +
-                                std::to_string(config.t_cycle));
+                                core::human(config.t_cycle));
   return config;
 }
 

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/number_text.hpp"
+
 namespace ncsim::report {
 
 namespace {
@@ -106,7 +108,7 @@ PathThinner::PathThinner(std::size_t dims, std::size_t max_points, double tolera
   if (dims < 1 || dims > 3 || max_points < 4 || !(tolerance > 0.0) || !std::isfinite(tolerance))
     throw std::invalid_argument("report path: dims 1..3, max_points >= 4, tolerance > 0; got " +
                                 std::to_string(dims) + ", " + std::to_string(max_points) + ", " +
-                                std::to_string(tolerance));
+                                core::human(tolerance));
   kept_.reserve(max_points * dims);
 }
 

@@ -23,14 +23,14 @@ ConveyorSync::ConveyorSync(const machines::ConveyorSyncChannel& channel,
   if (axes.size() > planner::kMaxAxes)
     throw std::invalid_argument("tracking::ConveyorSync: " + std::to_string(axes.size()) + " axes");
   if (!(t_cycle > 0.0))
-    throw std::invalid_argument("tracking::ConveyorSync: cycle time " + std::to_string(t_cycle));
+    throw std::invalid_argument("tracking::ConveyorSync: cycle time " + core::human(t_cycle));
   n_ = axes.size();
   for (std::size_t i = 0; i < n_; ++i) {
     axes_[i] = axes[i];
     if (!axes::valid(axes[i].dynamics))
       throw std::invalid_argument("tracking::ConveyorSync: axis " + axes[i].name +
                                   ": PTP dynamics not usable (V " +
-                                  std::to_string(axes[i].dynamics.v_max) + ")");
+                                  core::human(axes[i].dynamics.v_max) + ")");
     share_[i] = axes[i].xyz >= 0 && axes[i].xyz < 3 ? frame_.direction()[axes[i].xyz] : 0.0;
     if (std::fabs(share_[i]) < kTiny) share_[i] = 0.0;  // rounding of an unrotated T0
   }
