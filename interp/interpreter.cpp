@@ -229,6 +229,14 @@ const core::SourceFile& Interpreter::source_file(std::uint16_t file) const {
   return *impl_->files.at(file)->file;
 }
 
+void Interpreter::share_first_parse(grammar::ProgramCheck& check) {
+  impl_->files[0]->blocks->share_first_parse(check);
+}
+
+void Interpreter::parse_rest() {
+  impl_->files[0]->blocks->parse_rest();
+}
+
 Interpreter::Footprint Interpreter::footprint() const {
   const Impl& s = *impl_;
   std::size_t indexed = 0;

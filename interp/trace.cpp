@@ -423,8 +423,9 @@ void add_soft_limit_errors(const Command& c, const machines::Machine& machine,
 }
 
 core::DiagnosticList check_semantics(const core::SourceFile& file, const machines::Machine& machine,
-                                     const Options& options) {
+                                     const Options& options, grammar::ProgramCheck* program_check) {
   Interpreter interp(file, machine, options);
+  if (program_check != nullptr) interp.share_first_parse(*program_check);
   core::DiagnosticList out;
   // Finite programs are checked to their end; an endless one up to its first repeat.
   const std::uint64_t max_commands =
@@ -447,6 +448,8 @@ core::DiagnosticList check_semantics(const core::SourceFile& file, const machine
     }
   };
   while (count < max_commands && !interp.endless_from()) {
+    // A program with syntax errors gets no semantic check: stop at the first one found.
+    if (program_check != nullptr && program_check->has_errors()) break;
     auto c = interp.next_decode_only();
     if (!c) {
       ended = true;
@@ -464,6 +467,7 @@ core::DiagnosticList check_semantics(const core::SourceFile& file, const machine
     for (const core::Diagnostic& d : found.items())
       add_once(d);
   }
+  if (program_check != nullptr) interp.parse_rest();
   for (const auto& [key, repeat] : repeats) {
     if (repeat.second == 0) continue;
     const core::Diagnostic& d = repeat.first;
