@@ -5,7 +5,6 @@
 // WordReader, TrcWords, RepeatWatch: each in its own files) and by interpreter_*.cpp (G04, G74,
 // G92, motion, program ends). Not part of the public interface.
 
-#include <deque>
 #include <filesystem>
 #include <initializer_list>
 #include <map>
@@ -96,7 +95,7 @@ struct Interpreter::Impl {
   bool run_words(const ast::Block& b);  // the order of a block's parts; calls the pieces below
   bool run_assignments(const ast::Block& b);
   trc::Compensator trc_filter;  // between pending and the consumer (Interpreter::next)
-  std::deque<Command> trc_out;  // commands the filter released
+  CommandQueue trc_out;         // commands the filter released
   bool run_dwell(const ast::Block& b, const BlockWords& bw);     // G04
   void run_homing(const BlockWords& bw);                         // G74
   bool check_homing(const ast::Block& b, const BlockWords& bw);  // interpreter_homing.cpp
@@ -159,7 +158,7 @@ struct Interpreter::Impl {
   Seam seam{*this};                   // barriers and the run time's answers (seam.hpp)
   WordReader word_reader{*this};      // a block's G codes and addresses (block_words.hpp)
   TrcWords trc_words{*this};          // G40/G41/G42, D: the TRC state (trc_words.hpp)
-  std::deque<Command> pending;
+  CommandQueue pending;
   std::uint64_t blocks_without_motion = 0;
   RepeatWatch repeat{*this};  // endless programs (repeat_watch.hpp)
   std::uint32_t line = 0;     // line of the block being decoded
