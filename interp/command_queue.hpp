@@ -11,6 +11,7 @@
 // Invariant: head_ <= items_.size(); items_[head_, size) are the queued commands in order.
 
 #include <cstddef>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -24,7 +25,12 @@ class CommandQueue {
   std::size_t size() const { return items_.size() - head_; }
   /// The oldest command; the queue must not be empty.
   Command& front() { return items_[head_]; }
-  void push_back(Command c) { items_.push_back(std::move(c)); }
+  void push_back(Command&& c) { items_.push_back(std::move(c)); }
+  void push_back(const Command& c) { items_.push_back(c); }
+  /// Appends Command{line, file, body} built in place.
+  void emplace_back(std::uint32_t line, std::uint16_t file, CommandBody&& body) {
+    items_.emplace_back(line, file, std::move(body));
+  }
   /// Removes the oldest command; the queue must not be empty.
   void pop_front() {
     ++head_;
