@@ -5,6 +5,7 @@
 // WordReader, TrcWords, RepeatWatch: each in its own files) and by interpreter_*.cpp (G04, G74,
 // G92, motion, program ends). Not part of the public interface.
 
+#include <array>
 #include <filesystem>
 #include <initializer_list>
 #include <map>
@@ -68,6 +69,12 @@ inline std::string longest_time_text(std::string_view what, double seconds) {
          " s is longer than ncsim's longest time, " + core::number_text(core::kLongestTime) +
          " s (one day)";
 }
+
+/// The machine index of the axis named by each one-byte name (ASCII), kNoAxisIndex for none.
+inline constexpr std::uint8_t kNoAxisIndex = 0xFF;
+using AxisByChar = std::array<std::uint8_t, 128>;
+/// Interpreter::Impl::axis_index() of every one-byte name, once per machine.
+AxisByChar axis_by_char(const machines::Machine& machine);
 
 struct CallFrame {
   Pc ret;
@@ -190,6 +197,8 @@ struct Interpreter::Impl {
   std::optional<OpenSpline> spline;        // between #SPLINE ON and OFF
   Frames::Xyz xyz{};                       // machine indices of X, Y, Z
   Frames frames{machine, cs, modal, xyz};  // the frame of `position`, re-basing (frames.hpp)
+  /// axis_index() of every one-character name (the axis words of most blocks)
+  AxisByChar single_letter_axes = axis_by_char(machine);
 };
 
 }  // namespace ncsim::interp
