@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -79,12 +80,16 @@ struct Loaded {
   core::SourceFile file;
   machines::Machine machine;
   interp::Options interp;
-  core::DiagnosticList syntax;  ///< check_program's diagnostics
+  core::DiagnosticList syntax;  ///< check_program's diagnostics (none: not checked here)
 };
+
+// Whether load() runs check_program: `check` leaves it to the interpreter's parse.
+enum class SyntaxCheck : std::uint8_t { here, later };
 
 // Loads program and machine; on a usage or configuration problem prints it and returns the
 // exit status instead.
-std::variant<Loaded, int> load(const ProgramOptions& options, std::ostream& err) {
+std::variant<Loaded, int> load(const ProgramOptions& options, std::ostream& err,
+                               SyntaxCheck syntax_check = SyntaxCheck::here) {
   if (const auto problem = program_file_problem(options.program)) {
     err << "ncsim: error: " << *problem << '\n';
     return kExitUsage;
@@ -114,7 +119,8 @@ std::variant<Loaded, int> load(const ProgramOptions& options, std::ostream& err)
     for (const scenario::VeInitial& v : s->ve)
       interp_options.external.emplace(v.name, v.value);
   }
-  core::DiagnosticList syntax = grammar::check_program(file);
+  core::DiagnosticList syntax;
+  if (syntax_check == SyntaxCheck::here) syntax = grammar::check_program(file);
   return Loaded{std::move(file), std::move(*loaded.machine), std::move(interp_options),
                 std::move(syntax)};
 }
@@ -196,15 +202,19 @@ int run_check(const CheckOptions& options, std::ostream& out, std::ostream& err)
     return report.verdict(out, " (syntax)");
   }
 
-  auto loaded = load(options.program, err);
+  auto loaded = load(options.program, err, SyntaxCheck::later);
   if (const int* status = std::get_if<int>(&loaded)) return *status;
   const Loaded& in = std::get<Loaded>(loaded);
 
   Report report(in.file, err);
-  // Semantics need a program that parses: the interpreter would stop at the first syntax error.
+  // One parse of the program for both checks: the syntax and structure check is fed by the
+  // interpreter's reading of the program. Semantics need a program that parses: they are
+  // reported only when the syntax is clean (the interpreter stops at the first syntax error).
+  grammar::ProgramCheck syntax(in.file);
+  const core::DiagnosticList semantics =
+      interp::check_semantics(in.file, in.machine, in.interp, &syntax);
   std::string what;
-  if (report.print(in.syntax) == 0) {
-    const core::DiagnosticList semantics = interp::check_semantics(in.file, in.machine, in.interp);
+  if (report.print(syntax.finish()) == 0) {
     report.print(semantics);
     for (const core::Diagnostic& d : semantics.items()) {
       if (d.id == "NC4904") what = " (runs endlessly from line " + std::to_string(d.loc.line) + ")";

@@ -46,12 +46,29 @@ BlockSource::BlockSource(const core::SourceFile& file)
 bool BlockSource::parse_next(Slot& slot, core::DiagnosticList& diags) {
   if (parser_done_) return false;
   if (parsed_ % kCheckpointStride == 0) checkpoints_.push_back(parser_.position());
-  if (!parser_.next(slot.block, diags)) {
+  bool more = false;
+  if (check_ == nullptr) {
+    more = parser_.next(slot.block, diags);
+  } else {
+    core::DiagnosticList& found = check_->found();
+    const std::size_t before = found.items().size();
+    more = parser_.next(slot.block, found);
+    for (std::size_t i = before; i < found.items().size(); ++i)
+      diags.add(found.items()[i]);
+    if (more) check_->feed(slot.block);
+  }
+  if (!more) {
     parser_done_ = true;
     return false;
   }
   slot.ordinal = parsed_++;
   return true;
+}
+
+void BlockSource::parse_rest() {
+  core::DiagnosticList ignored;  // the program has stopped: only a shared check still reads
+  while (fetch(parsed_, ignored) != nullptr) {
+  }
 }
 
 void BlockSource::reparse(std::uint32_t ordinal, Slot& slot) {

@@ -22,6 +22,7 @@
 #include "core/source_file.hpp"
 #include "grammar/ast.hpp"
 #include "grammar/block_parser.hpp"
+#include "grammar/check.hpp"
 
 namespace ncsim::interp {
 
@@ -43,6 +44,13 @@ class BlockSource {
   /// The result stays valid until the next call.
   const grammar::ast::Block* parse_text(std::string text, std::uint32_t line,
                                         core::DiagnosticList& diags);
+
+  /// Feeds every block of the first parse to `check` (syntax diagnostics to check.found(),
+  /// copied into fetch()'s `diags` too), so that `ncsim check` parses the program once. Call
+  /// before the first fetch(); `check` must outlive this source.
+  void share_first_parse(grammar::ProgramCheck& check) { check_ = &check; }
+  /// Runs the first parse to the end of the file (the blocks the program did not reach).
+  void parse_rest();
 
   const core::SourceFile& file() const { return file_; }
   /// Checkpoints held (one per kCheckpointStride blocks parsed so far).
@@ -68,6 +76,7 @@ class BlockSource {
   grammar::ast::Block skipped_;  // blocks the re-parser passes on its way
   Slot scratch_;                 // parse_text result
   std::unique_ptr<core::SourceFile> scratch_file_;
+  grammar::ProgramCheck* check_ = nullptr;  // share_first_parse(), else none
 };
 
 /// Moves every line number of `block` by `delta` lines (a block parsed from its own text).

@@ -156,7 +156,7 @@ bool Interpreter::Impl::step() {
 }
 
 void Interpreter::Impl::emit(std::uint32_t at_line, CommandBody body) {
-  pending.push_back(Command{at_line, current_file, std::move(body)});
+  pending.emplace_back(at_line, current_file, std::move(body));
 }
 
 // The public Interpreter: commands through the TRC filter, the V.E. writes, the files.
@@ -184,9 +184,9 @@ std::optional<Command> Interpreter::next() {
       if (!s.error) s.trc_filter.finish(s.trc_out);
       break;
     }
-    Command raw = std::move(s.pending.front());
+    auto e = s.trc_filter.push(std::move(s.pending.front()), s.trc_out);
     s.pending.pop_front();
-    if (auto e = s.trc_filter.push(std::move(raw), s.trc_out)) {
+    if (e) {
       s.error = core::Diagnostic{core::Severity::error, file_name(e->file),
                                  core::SourceLoc{e->line, 1}, e->id, e->message};
       s.error_reported = false;
@@ -196,9 +196,9 @@ std::optional<Command> Interpreter::next() {
     }
   }
   if (!s.trc_out.empty()) {
-    Command c = std::move(s.trc_out.front());
+    std::optional<Command> c(std::move(s.trc_out.front()));  // returned as it is: one move
     s.trc_out.pop_front();
-    if (std::holds_alternative<Barrier>(c.body)) open_barrier_ = c;
+    if (std::holds_alternative<Barrier>(c->body)) open_barrier_ = c;
     return c;
   }
   if (s.error && !error_) {
@@ -227,6 +227,14 @@ const std::string& Interpreter::file_name(std::uint16_t file) const {
 
 const core::SourceFile& Interpreter::source_file(std::uint16_t file) const {
   return *impl_->files.at(file)->file;
+}
+
+void Interpreter::share_first_parse(grammar::ProgramCheck& check) {
+  impl_->files[0]->blocks->share_first_parse(check);
+}
+
+void Interpreter::parse_rest() {
+  impl_->files[0]->blocks->parse_rest();
 }
 
 Interpreter::Footprint Interpreter::footprint() const {

@@ -122,6 +122,12 @@ class Interpreter {
   /// run-time error. Valid as long as the interpreter.
   const core::SourceFile& source_file(std::uint16_t file) const;
 
+  /// `ncsim check`: the main program's syntax and structure check rides on the interpreter's
+  /// first parse of it, so each block is parsed once (grammar::ProgramCheck; call before the
+  /// first next()). After the last next(), parse_rest() feeds it the blocks not reached.
+  void share_first_parse(grammar::ProgramCheck& check);
+  void parse_rest();
+
   /// Sizes of the containers that must stay bounded (for tests).
   struct Footprint {
     std::size_t control_frames, call_frames, pending, indexed_blocks, jump_memo, p_params;

@@ -22,9 +22,7 @@ std::string unescape(std::string_view s) {
   return out;
 }
 
-}  // namespace
-
-std::optional<std::uint8_t> Interpreter::Impl::axis_index(std::string_view name) const {
+std::optional<std::uint8_t> lookup_axis(const machines::Machine& machine, std::string_view name) {
   const machines::AxisParams* a = machine.find_axis(name);
   if (a == nullptr) {
     for (std::size_t i = 0; i < machine.axes.size(); ++i) {
@@ -35,6 +33,27 @@ std::optional<std::uint8_t> Interpreter::Impl::axis_index(std::string_view name)
   const auto i = static_cast<std::size_t>(a - machine.axes.data());
   if (i >= kMaxAxes) return std::nullopt;
   return static_cast<std::uint8_t>(i);
+}
+
+}  // namespace
+
+AxisByChar axis_by_char(const machines::Machine& machine) {
+  AxisByChar table{};
+  for (std::size_t c = 0; c < table.size(); ++c) {
+    const char name = static_cast<char>(c);
+    table[c] = lookup_axis(machine, std::string_view(&name, 1)).value_or(kNoAxisIndex);
+  }
+  return table;
+}
+
+std::optional<std::uint8_t> Interpreter::Impl::axis_index(std::string_view name) const {
+  // Most axis words have a one-letter name: looked up in the table made from the machine.
+  if (name.size() == 1 && static_cast<unsigned char>(name[0]) < single_letter_axes.size()) {
+    const std::uint8_t i = single_letter_axes[static_cast<unsigned char>(name[0])];
+    if (i == kNoAxisIndex) return std::nullopt;
+    return i;
+  }
+  return lookup_axis(machine, name);
 }
 
 ModalSnapshot Interpreter::Impl::snapshot() const {

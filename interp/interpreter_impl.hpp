@@ -5,7 +5,7 @@
 // WordReader, TrcWords, RepeatWatch: each in its own files) and by interpreter_*.cpp (G04, G74,
 // G92, motion, program ends). Not part of the public interface.
 
-#include <deque>
+#include <array>
 #include <filesystem>
 #include <initializer_list>
 #include <map>
@@ -70,6 +70,12 @@ inline std::string longest_time_text(std::string_view what, double seconds) {
          " s (one day)";
 }
 
+/// The machine index of the axis named by each one-byte name (ASCII), kNoAxisIndex for none.
+inline constexpr std::uint8_t kNoAxisIndex = 0xFF;
+using AxisByChar = std::array<std::uint8_t, 128>;
+/// Interpreter::Impl::axis_index() of every one-byte name, once per machine.
+AxisByChar axis_by_char(const machines::Machine& machine);
+
 struct CallFrame {
   Pc ret;
   std::size_t control_depth = 0;
@@ -96,7 +102,7 @@ struct Interpreter::Impl {
   bool run_words(const ast::Block& b);  // the order of a block's parts; calls the pieces below
   bool run_assignments(const ast::Block& b);
   trc::Compensator trc_filter;  // between pending and the consumer (Interpreter::next)
-  std::deque<Command> trc_out;  // commands the filter released
+  CommandQueue trc_out;         // commands the filter released
   bool run_dwell(const ast::Block& b, const BlockWords& bw);     // G04
   void run_homing(const BlockWords& bw);                         // G74
   bool check_homing(const ast::Block& b, const BlockWords& bw);  // interpreter_homing.cpp
@@ -159,7 +165,7 @@ struct Interpreter::Impl {
   Seam seam{*this};                   // barriers and the run time's answers (seam.hpp)
   WordReader word_reader{*this};      // a block's G codes and addresses (block_words.hpp)
   TrcWords trc_words{*this};          // G40/G41/G42, D: the TRC state (trc_words.hpp)
-  std::deque<Command> pending;
+  CommandQueue pending;
   std::uint64_t blocks_without_motion = 0;
   RepeatWatch repeat{*this};  // endless programs (repeat_watch.hpp)
   std::uint32_t line = 0;     // line of the block being decoded
@@ -191,6 +197,8 @@ struct Interpreter::Impl {
   std::optional<OpenSpline> spline;        // between #SPLINE ON and OFF
   Frames::Xyz xyz{};                       // machine indices of X, Y, Z
   Frames frames{machine, cs, modal, xyz};  // the frame of `position`, re-basing (frames.hpp)
+  /// axis_index() of every one-character name (the axis words of most blocks)
+  AxisByChar single_letter_axes = axis_by_char(machine);
 };
 
 }  // namespace ncsim::interp

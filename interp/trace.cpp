@@ -368,6 +368,28 @@ int write_trace(const core::SourceFile& file, const machines::Machine& machine,
   return interp.error() != nullptr ? 1 : 0;
 }
 
+namespace {
+
+// Whether the extent of an arc (arc_extent) is inside the software limits for certain, without
+// its angles: on each plane axis arc_extent's extremes are the centre plus one of start - centre,
+// end - centre, +-radius and 0, computed as here, and adding the centre keeps their order.
+bool arc_extent_inside(const Motion& m, const machines::Machine& machine) {
+  const Arc& a = *m.arc;
+  for (int k = 0; k < 2; ++k) {
+    const std::size_t i = k == 0 ? a.axis_1 : a.axis_2;
+    if (i >= machine.axes.size()) continue;
+    const double c = k == 0 ? a.centre_1 : a.centre_2;
+    const double s = m.start[i] - c, e = m.end[i] - c;
+    const double lo = std::min({s, e, -a.radius, a.radius, 0.0}) + c;
+    const double hi = std::max({s, e, -a.radius, a.radius, 0.0}) + c;
+    const auto& lim = machine.axes[i].soft_limits;
+    if (!(lo >= lim.neg && hi <= lim.pos)) return false;  // NaN too: the full computation
+  }
+  return true;
+}
+
+}  // namespace
+
 void add_soft_limit_errors(const Command& c, const machines::Machine& machine,
                            const std::string& file, core::DiagnosticList& out) {
   if (const auto* m = std::get_if<Motion>(&c.body)) {
@@ -393,7 +415,7 @@ void add_soft_limit_errors(const Command& c, const machines::Machine& machine,
       report(i, "target", m->end[i]);
       reported |= AxisMask{1} << i;
     }
-    if (m->arc) {
+    if (m->arc && !arc_extent_inside(*m, machine)) {
       // The circle's extent: its extreme points on each plane axis that the arc passes.
       const auto [lo, hi] = arc_extent(*m);
       for (int k = 0; k < 2; ++k) {
@@ -423,8 +445,9 @@ void add_soft_limit_errors(const Command& c, const machines::Machine& machine,
 }
 
 core::DiagnosticList check_semantics(const core::SourceFile& file, const machines::Machine& machine,
-                                     const Options& options) {
+                                     const Options& options, grammar::ProgramCheck* program_check) {
   Interpreter interp(file, machine, options);
+  if (program_check != nullptr) interp.share_first_parse(*program_check);
   core::DiagnosticList out;
   // Finite programs are checked to their end; an endless one up to its first repeat.
   const std::uint64_t max_commands =
@@ -447,6 +470,8 @@ core::DiagnosticList check_semantics(const core::SourceFile& file, const machine
     }
   };
   while (count < max_commands && !interp.endless_from()) {
+    // A program with syntax errors gets no semantic check: stop at the first one found.
+    if (program_check != nullptr && program_check->has_errors()) break;
     auto c = interp.next_decode_only();
     if (!c) {
       ended = true;
@@ -464,6 +489,7 @@ core::DiagnosticList check_semantics(const core::SourceFile& file, const machine
     for (const core::Diagnostic& d : found.items())
       add_once(d);
   }
+  if (program_check != nullptr) interp.parse_rest();
   for (const auto& [key, repeat] : repeats) {
     if (repeat.second == 0) continue;
     const core::Diagnostic& d = repeat.first;

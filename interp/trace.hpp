@@ -65,7 +65,12 @@ inline constexpr std::uint64_t kCheckCommandsPerLine = 4;
 /// Semantic check: interprets the program without motion and reports its errors (axes the
 /// program names, kinematic ids, conveyor rules, arcs, ...). Syntax errors are left to
 /// grammar::check_program: the check stops silently at the first block with a syntax error.
+/// With `program_check`, that check is fed by the interpreter's parse of the program (one parse for
+/// both; `ncsim check`): the interpreter stops at the first syntax or structure error found
+/// (the semantic findings of such a program are not reported), then the rest of the file is
+/// parsed for `program_check`, whose finish() the caller calls.
 core::DiagnosticList check_semantics(const core::SourceFile& file, const machines::Machine& machine,
-                                     const Options& options);
+                                     const Options& options,
+                                     grammar::ProgramCheck* program_check = nullptr);
 
 }  // namespace ncsim::interp

@@ -3,6 +3,7 @@
 
 #include <sstream>
 
+#include "grammar/check.hpp"
 #include "interp/test_support.hpp"
 
 namespace ncsim::interp {
@@ -42,6 +43,50 @@ TEST_CASE("issue 9 defect 7: a trace cut at --max-commands ends with a marker li
   CHECK(out.ends_with("# truncated after 3 commands (--max-commands)\n"));
   // A program that ends within the cap has no marker.
   CHECK(trace("%t\nG00 X1\nM30\n", 2).find("truncated") == std::string::npos);
+}
+
+/// Every diagnostic of `list`, formatted, one a line, and the dropped count.
+std::string listed(const core::DiagnosticList& list) {
+  std::string out;
+  for (const core::Diagnostic& d : list.items())
+    out += core::format(d);
+  return out + "dropped " + std::to_string(list.dropped()) + '\n';
+}
+
+/// The syntax check fed by check_semantics' parse of `text`, and check_program's.
+std::pair<std::string, std::string> shared_and_own_check(const std::string& text) {
+  const core::SourceFile file("test.nc", text);
+  grammar::ProgramCheck shared(file);
+  check_semantics(file, test::machine(), {}, &shared);
+  return {listed(shared.finish()), listed(grammar::check_program(file))};
+}
+
+TEST_CASE("the syntax check fed by the semantic check's parse equals check_program") {
+  // clean; an error after M30; after a run-time error; structure errors found at the end;
+  // a loop whose body is read twice; an error inside the loop the interpreter stops at
+  const char* const programs[] = {
+      "%t\nG01 X1 F100\nM30\n",
+      "%t\nG01 X1 F100\nM30\nG01 X[1+*2]\n$ENDIF\nN10 G01 Y]\n",
+      "%t\nG01 X1\nG01 X[1+*2]\n$IF 1\n",
+      "%t\n$WHILE P1 < 3\nP1 = P1 + 1\nG01 X[P1] F100\n$GOTO N99\nM30\n",
+      "%t\n$FOR P1 = 1, 3, 1\nG01 X[P1] F100\n$ENDFOR\nG04 X\nM30\n",
+      "%t\n$FOR P1 = 1, 3, 1\nG01 X[P1] F100\nG01 Y[*]\n$ENDFOR\nM30\n",
+  };
+  for (const char* text : programs) {
+    CAPTURE(text);
+    const auto [shared, own] = shared_and_own_check(text);
+    CHECK(shared == own);
+  }
+  // A loop body longer than the block cache is read again by the second parser: its blocks
+  // reach the syntax check once (a $ENDFOR fed twice would be an error of its own).
+  std::string long_loop = "%t\n$FOR P1 = 1, 2, 1\n";
+  for (int i = 0; i < 3000; ++i)
+    long_loop += "G01 X" + std::to_string(i % 7) + " F100\n";
+  long_loop += "$ENDFOR\nM30\nG01 X[*]\n";
+  const auto [shared, own] = shared_and_own_check(long_loop);
+  CHECK(shared == own);
+  // and the errors are there to compare
+  CHECK(shared_and_own_check(programs[1]).first.find("NC1001") != std::string::npos);
 }
 
 }  // namespace

@@ -268,7 +268,7 @@ Error Compensator::error_at(const Command& c, std::string id, std::string messag
 }
 
 void Compensator::emit(const Command& pattern, const Element& e, std::uint32_t line,
-                       std::deque<Command>& out, bool transition) const {
+                       CommandQueue& out, bool transition) const {
   Command c = pattern;
   c.line = line;
   Motion& m = std::get<Motion>(c.body);
@@ -295,7 +295,7 @@ void Compensator::emit(const Command& pattern, const Element& e, std::uint32_t l
   out.push_back(std::move(c));
 }
 
-void Compensator::release(const Vec2& end, std::deque<Command>& out) {
+void Compensator::release(const Vec2& end, CommandQueue& out) {
   Held& h = *held_;
   Element e = h.offset;
   e.start = h.start;
@@ -312,13 +312,13 @@ void Compensator::release(const Vec2& end, std::deque<Command>& out) {
   behind_.clear();
 }
 
-void Compensator::finish(std::deque<Command>& out) {
+void Compensator::finish(CommandQueue& out) {
   if (!held_) return;
   release(held_->offset.end, out);
   held_.reset();
 }
 
-std::optional<Error> Compensator::push(Command c, std::deque<Command>& out) {
+std::optional<Error> Compensator::push(Command c, CommandQueue& out) {
   if (const auto* m = std::get_if<Motion>(&c.body)) {
     std::uint8_t a1 = 0, a2 = 0;
     const bool active = signed_offset(m->modal.trc) != 0.0;
@@ -366,8 +366,7 @@ std::optional<Error> Compensator::hold_behind(Command c) {
   return std::nullopt;
 }
 
-std::optional<Error> Compensator::plane_motion(Command c, const Motion& m,
-                                               std::deque<Command>& out) {
+std::optional<Error> Compensator::plane_motion(Command c, const Motion& m, CommandQueue& out) {
   std::uint8_t a1 = 0, a2 = 0;
   plane_of(m, a1, a2);
   Element pe;

@@ -20,12 +20,12 @@
 
 #include <array>
 #include <cstdint>
-#include <deque>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "interp/command.hpp"
+#include "interp/command_queue.hpp"
 
 namespace ncsim::interp::trc {
 
@@ -101,10 +101,10 @@ class Compensator {
   explicit Compensator(std::array<std::optional<std::uint8_t>, 3> xyz = {}) : xyz_(xyz) {}
 
   /// Takes the next command of the stream. Returns the error that ends the stream, if any.
-  std::optional<Error> push(Command c, std::deque<Command>& out);
+  std::optional<Error> push(Command c, CommandQueue& out);
   /// The stream ended (End or an error): releases what is held, the held element ending at
   /// its perpendicular offset point.
-  void finish(std::deque<Command>& out);
+  void finish(CommandQueue& out);
   /// True while nothing is held (commands pass straight through).
   bool idle() const { return !held_; }
 
@@ -117,9 +117,9 @@ class Compensator {
     double d = 0.0;      ///< [mm] signed offset: + left
     bool selection = false;
   };
-  std::optional<Error> plane_motion(Command c, const Motion& m, std::deque<Command>& out);
-  void release(const Vec2& end, std::deque<Command>& out);
-  void emit(const Command& pattern, const Element& e, std::uint32_t line, std::deque<Command>& out,
+  std::optional<Error> plane_motion(Command c, const Motion& m, CommandQueue& out);
+  void release(const Vec2& end, CommandQueue& out);
+  void emit(const Command& pattern, const Element& e, std::uint32_t line, CommandQueue& out,
             bool transition) const;
   bool plane_of(const Motion& m, std::uint8_t& a1, std::uint8_t& a2) const;
   Error error_at(const Command& c, std::string id, std::string message) const;
