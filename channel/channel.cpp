@@ -51,6 +51,7 @@ Channel::Channel(ChannelConfig config, ipo::Source& source, ipo::Sink* sink)
       events_(source, ipo_, axes_, indp_, tracking_, sync_, after_, error_) {
   const double t = ipo_.t_cycle();
   ipo_.standstill().set_wait_handler(&events_);
+  events_.exchange_signals(config.signals);
   // Conveyor tracking on FCT_DLM channels.
   if (config.conveyor) {
     sync_.emplace(*config.conveyor, config.sync_axes, t);

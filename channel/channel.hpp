@@ -67,6 +67,7 @@
 #include "ipo/joint_stage.hpp"
 #include "machines/machine.hpp"
 #include "program/channel_event.hpp"
+#include "program/signals.hpp"
 #include "scenario/player.hpp"
 #include "tracking/belt_offset.hpp"
 #include "tracking/conveyor_sync.hpp"
@@ -87,6 +88,10 @@ struct ChannelConfig {
   /// the forward transform of the machine's kinematic (program::forward_map; empty
   /// without one): synchro_lag under #TRAFO ON (Channel::master_display, tracking::cycle_lag).
   planner::JointMap forward;
+  /// The run's signal exchange for #SIGNAL SYN / #WAIT SYN and the #WAITs the decoder could
+  /// not answer at once (docs/lines.md); null: none (such an event is NC6001). Must outlive the
+  /// channel.
+  program::SignalPort* signals = nullptr;
 };
 
 /// The channel configuration of `machine` (docs/ipo.md "The channel loop"): the interpolator

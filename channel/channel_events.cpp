@@ -4,6 +4,7 @@
 
 #include "channel/channel_events.hpp"
 
+#include <cstdlib>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -72,12 +73,47 @@ EventOutcome ChannelEvents::dispatch(const program::ChannelEvent& e) noexcept {
           return homing_.step(body, axes_, indp_.axes(), EventContext(e, ipo_, error_));
         } else if constexpr (std::is_same_v<T, interp::MachineData>) {
           return tracking_.on_machine_data(body, e);
+        } else if constexpr (std::is_same_v<T, interp::Signal>) {
+          return signal(body, e);
+        } else if constexpr (std::is_same_v<T, interp::SignalWait>) {
+          return signal_wait(body, e);
         } else {
           return EventContext(e, ipo_, error_)
               .fail(program::kNotSupportedId, "not supported: this command in the channel");
         }
       },
       e.body);
+}
+
+EventOutcome ChannelEvents::signal(const interp::Signal& s,
+                                   const program::ChannelEvent& e) noexcept {
+  if (signals_ == nullptr)
+    return EventContext(e, ipo_, error_)
+        .fail(program::kNotSupportedId, "not supported: #SIGNAL SYN outside a run");
+  try {
+    signals_->send(s);
+  } catch (...) {
+    std::abort();  // out of memory keeping a signal
+  }
+  return EventOutcome::done;
+}
+
+EventOutcome ChannelEvents::signal_wait(const interp::SignalWait& w,
+                                        const program::ChannelEvent& e) noexcept {
+  const EventContext context(e, ipo_, error_);
+  if (signals_ == nullptr)
+    return context.fail(program::kNotSupportedId, "not supported: #WAIT SYN outside a run");
+  if (const std::optional<std::string>& why = signals_->doomed())
+    return context.fail(program::kSignalStuckId, *why);
+  std::string order;
+  bool taken = false;
+  try {
+    taken = signals_->take(program::SignalBlock{w, e.line, e.file}, order);
+  } catch (...) {
+    std::abort();  // out of memory
+  }
+  if (!order.empty()) return context.fail("250002", order);
+  return taken ? EventOutcome::done : EventOutcome::blocking;
 }
 
 }  // namespace ncsim::channel

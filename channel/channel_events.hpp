@@ -26,6 +26,7 @@
 #include "channel/homing.hpp"
 #include "channel/indp_stage.hpp"
 #include "ipo/interpolator.hpp"
+#include "program/signals.hpp"
 #include "tracking/conveyor_sync.hpp"
 
 namespace ncsim::channel {
@@ -62,8 +63,15 @@ class ChannelEvents final : public ipo::WaitHandler {
   /// The path reached `wait` (inside the interpolator's step): true when its events are all
   /// done (the path goes on).
   bool on_wait(const ipo::ChannelWait& wait) noexcept override;
+  /// #SIGNAL SYN and the signal waits go through `signals` (null: NC6001).
+  void exchange_signals(program::SignalPort* signals) noexcept { signals_ = signals; }
 
  private:
+  /// #SIGNAL SYN: sent in the cycle its place in the block stream is reached.
+  EventOutcome signal(const interp::Signal& s, const program::ChannelEvent& e) noexcept;
+  /// #WAIT SYN, or a #WAIT the decoder stopped at: done once the signal is taken; blocking
+  /// while it is missing; NC6401 when the line found it can never come.
+  EventOutcome signal_wait(const interp::SignalWait& w, const program::ChannelEvent& e) noexcept;
   /// Executes one event by kind (the one dispatch point).
   EventOutcome dispatch(const program::ChannelEvent& event) noexcept;
   /// EventQueue::run with dispatch(): the blocked event, then the due events up to `up_to`;
@@ -78,8 +86,9 @@ class ChannelEvents final : public ipo::WaitHandler {
   const std::optional<tracking::ConveyorSync>& sync_;
   const AfterErrorStop& after_;
   std::optional<RunTimeError>& error_;
-  EventQueue queue_;       ///< the events due and the one that blocks
-  HomingSequence homing_;  ///< G74
+  EventQueue queue_;                        ///< the events due and the one that blocks
+  HomingSequence homing_;                   ///< G74
+  program::SignalPort* signals_ = nullptr;  ///< the run's signal exchange
 };
 
 }  // namespace ncsim::channel

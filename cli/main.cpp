@@ -20,6 +20,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/golden_command.hpp"
+#include "cli/line_command.hpp"
 #include "cli/run_commands.hpp"
 #include "cli/sweep_command.hpp"
 #include "cli/tune_delay.hpp"
@@ -75,6 +76,7 @@ int main(int argc, char** argv) {
   ncsim::cli::GoldenCommands golden_commands(app);       // likewise
   ncsim::cli::SweepCommand sweep_command(app);           // likewise
   ncsim::cli::TuneDelayCommand tune_delay_command(app);  // likewise
+  ncsim::cli::LineCommand line_command(app);             // likewise
 
   // A first word that is no option and no subcommand is named (CLI11 would only say that a
   // subcommand is required).
@@ -107,6 +109,7 @@ int main(int argc, char** argv) {
       if (const auto status = golden_commands.dispatch(std::cout, std::cerr)) return *status;
       if (const auto status = sweep_command.dispatch(std::cout, std::cerr)) return *status;
       if (const auto status = tune_delay_command.dispatch(std::cout, std::cerr)) return *status;
+      if (const auto status = line_command.dispatch(std::cout, std::cerr)) return *status;
       if (trace_cmd->parsed()) return ncsim::cli::run_trace(trace, std::cout, std::cerr);
       return ncsim::cli::run_check(check, std::cout, std::cerr);
     };

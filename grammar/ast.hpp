@@ -171,6 +171,9 @@ struct Item {
   std::string_view keyword;             ///< keyword spelling as written
   NodeIndex value = kNoNode;            ///< expression value
   std::string_view text;                ///< word value (AX=C, TYPE=TRAPEZ) or string contents
+  /// The index of an indexed keyword (`P[2]=V.P.X` of #SIGNAL / #WAIT: the 2); value is then
+  /// the right-hand side.
+  NodeIndex index = kNoNode;
 };
 
 /// Which keyword table a bracket list uses; see grammar/keywords.hpp.
@@ -202,6 +205,7 @@ enum class TableId : std::uint8_t {
   hsc,           ///< #HSC ON [PATH_DEV=.. ...]
   vector_limit,  ///< #VECTOR LIMIT ON [VEL=.. ACC=.. DEC=..]
   scale,         ///< #SCALE [ON] X2 Y0.5
+  signal,        ///< #SIGNAL / #WAIT / #SIGNAL READ [ID=.. COUNT=.. P[i]=.. CH=..]
 };
 
 // Axis-bracket commands and calls
@@ -350,6 +354,11 @@ enum class HashKind : std::uint8_t {
   mcs_off,           ///< #MCS OFF
   pset,              ///< #PSET X.. Y.. (position preset)
   accepted,          ///< read and shown in trace, no effect on motion or time (docs/language.md)
+  signal,            ///< #SIGNAL [...] (decoder level, PROG-207409035)
+  signal_syn,        ///< #SIGNAL SYN [...] (interpolator level)
+  wait_signal,       ///< #WAIT [...] (decoder level, PROG-207421579)
+  wait_signal_syn,   ///< #WAIT SYN [...] (interpolator level)
+  signal_read,       ///< #SIGNAL READ [...] (PROG-913718283)
 };
 
 struct HashCommand {

@@ -173,3 +173,39 @@ TEST_CASE("control statements: $IF one-line goto, $FOR header, $GOTO targets") {
 }
 
 }  // namespace ncsim::grammar::test
+
+namespace ncsim::grammar::test {
+
+// PROG-207409035 / 207421579 / 913718283: #SIGNAL, #WAIT, #SIGNAL READ (docs/lines.md).
+TEST_CASE("#SIGNAL and #WAIT read ID, COUNT, CH and P[i]=.. with or without '=', glued or not") {
+  const Parsed s("#SIGNAL [IDP100 P[0]= V.P.SYNC CH3]");
+  CHECK(hash(s).kind == ast::HashKind::signal);
+  REQUIRE(s.block.items.size() == 3);
+  CHECK(s.block.items[0].keyword == "ID");
+  CHECK(s.node(s.block.items[0].value).op == ast::Op::variable);  // P100, the manual's example
+  CHECK(s.block.items[1].keyword == "P");
+  CHECK(s.node(s.block.items[1].index).value == 0);
+  CHECK(s.node(s.block.items[1].value).op == ast::Op::variable);
+  CHECK(s.block.items[2].keyword == "CH");
+  CHECK(s.node(s.block.items[2].value).value == 3);
+  const Parsed syn("#SIGNAL SYN [ID=3 COUNT=1 CH=1 CH=2]");
+  CHECK(hash(syn).kind == ast::HashKind::signal_syn);
+  CHECK(syn.block.items.size() == 4);
+  CHECK(hash(Parsed("#WAIT SYN [ID968 CH2 CH3]")).kind == ast::HashKind::wait_signal_syn);
+  CHECK(hash(Parsed("#WAIT [ID814 P[0]= V.P.SIGNAL CH1]")).kind == ast::HashKind::wait_signal);
+  CHECK(hash(Parsed("#SIGNAL READ [ID=7 CH=2]")).kind == ast::HashKind::signal_read);
+  CHECK(hash(Parsed("#WAIT INDP ALL")).kind == ast::HashKind::wait_indp_all);  // unchanged
+}
+
+TEST_CASE("#SIGNAL and #WAIT without SYN or '[' are the manual's 20998; READ SYN is refused") {
+  CHECK(check("#SIGNAL ID1\n") == std::vector<std::string>{"1:9 20998"});
+  CHECK(check("#WAIT\n") == std::vector<std::string>{"1:6 20998"});
+  CHECK(check("#SIGNAL SYN ID1\n") == std::vector<std::string>{"1:13 20998"});
+  CHECK(check("#SIGNAL READ SYN [ID1]\n") == std::vector<std::string>{"1:9 NC1010"});
+  CHECK(check("#SIGNAL [ID1 XYZ2]\n") == std::vector<std::string>{"1:14 NC1001"});
+  CHECK(check("#WAIT [ID1 AHEAD]\n") == std::vector<std::string>{"1:12 NC1002"});
+  CHECK(check("#SIGNAL REMOVE [ID1]\n") == std::vector<std::string>{"1:1 NC1002"});
+  CHECK(check("#WAIT FOR [X]\n") == std::vector<std::string>{"1:1 NC1002"});
+}
+
+}  // namespace ncsim::grammar::test

@@ -241,10 +241,100 @@ void read_transvelmin(HashReader<Input>& r) {  // §5.6
   if (k == H::transvelmin_on) r.lists(1, false);
 }
 
+/// The bracket list of #SIGNAL, #WAIT and #SIGNAL READ (PROG-207409035, PROG-207421579,
+/// PROG-913718283): `ID=..` (also `ID4711`, `IDP100`), `COUNT=..`, `CH=..` (repeated),
+/// `P[<idx>] = <value>`, `AHEAD`. Without '[' after the command (and its mode) the manual's
+/// 20998. The items keep their keyword; P's index is Item::index, its right-hand side the value.
 template <typename Input>
-void read_wait(HashReader<Input>& r) {  // §6.1
+void read_signal_list(HashReader<Input>& r, H kind, const char* command) {
+  r.set(kind, T::signal);
   r.ws();
-  if (!r.word("INDP")) r.st.not_supported(r.name_at - 1, "#WAIT " + r.next_word());
+  if (r.in.empty() || r.in.peek_char() != '[') {
+    r.st.fail_message(r.in.current(), "20998",
+                      std::string("after ") + command +
+                          " the keyword SYN or an open bracket '[' must follow, found " +
+                          lex::describe(r.in.current(), r.in.current() + r.in.size()));
+  }
+  r.in.bump(1);
+  r.st.group = 0;
+  const KeywordTable& table = keyword_table(T::signal);
+  for (;;) {
+    r.ws();
+    if (r.in.empty()) r.st.fail(r.in.current(), "']'");
+    if (r.in.peek_char() == ']') break;
+    const char* at = r.in.current();
+    const std::string_view rest = lex::rest(r.in);
+    ast::Item item;
+    item.loc = r.st.loc(at);
+    item.kind = ast::ItemKind::keyword;
+    if (lex::ident(rest).size() == 5 && iequals(lex::ident(rest), "AHEAD")) {
+      r.st.not_supported(at, std::string(command) +
+                                 " ... AHEAD (the manual's text on it was not "
+                                 "retrieved; docs/lines.md)");
+    }
+    // A keyword is a prefix: its value may follow without '=' (ID4711, IDP100, CH2).
+    std::size_t key = ast::kUnknownKeyword;
+    for (std::size_t k = 0; k < table.entries.size(); ++k) {
+      const std::string_view name = table.entries[k].name;
+      if (rest.size() >= name.size() && iequals(rest.substr(0, name.size()), name) &&
+          (key == ast::kUnknownKeyword || name.size() > table.entries[key].name.size()))
+        key = k;
+    }
+    const bool indexed = key != ast::kUnknownKeyword && table.entries[key].name == "P";
+    if (key == ast::kUnknownKeyword || table.entries[key].value == ValueKind::none ||
+        (indexed && rest.substr(1).substr(lex::blanks(rest.substr(1))).substr(0, 1) != "[")) {
+      r.st.fail(at, "ID=.., COUNT=.., P[<index>]=.., CH=.. or ']'");
+    }
+    item.key = static_cast<std::uint16_t>(key);
+    item.keyword = rest.substr(0, table.entries[key].name.size());
+    r.in.bump(item.keyword.size());
+    r.ws();
+    if (indexed) {
+      r.in.bump(1);  // '['
+      item.index = parse_expression(r.in, r.st, "a signal parameter index after 'P['");
+      r.ws();
+      if (r.in.empty() || r.in.peek_char() != ']') r.st.fail(r.in.current(), "']'");
+      r.in.bump(1);
+      r.ws();
+      if (r.in.empty() || r.in.peek_char() != '=') r.st.fail(r.in.current(), "'=' after P[..]");
+    }
+    if (!r.in.empty() && r.in.peek_char() == '=') r.in.bump(1);
+    r.ws();
+    item.value = parse_expression(r.in, r.st, "a value after the keyword");
+    r.st.block->items.push_back(item);
+  }
+  r.in.bump(1);  // ']'
+}
+
+/// #SIGNAL [SYN] [..], #SIGNAL READ [..] (PROG-207409035, PROG-913718283); #SIGNAL REMOVE is
+/// not built (docs/lines.md).
+template <typename Input>
+void read_signal(HashReader<Input>& r) {
+  r.ws();
+  const char* mode_at = r.in.current();
+  if (r.word("READ")) {
+    r.ws();
+    if (r.word("SYN")) {
+      r.st.fail_message(mode_at, "NC1010",
+                        "#SIGNAL READ SYN is not permitted: #SIGNAL READ works at interpreter "
+                        "level only (PROG-913718283)");
+    }
+    return read_signal_list(r, H::signal_read, "#SIGNAL READ");
+  }
+  if (r.word("REMOVE")) r.st.not_supported(r.name_at - 1, "#SIGNAL REMOVE (docs/lines.md)");
+  if (r.word("SYN")) return read_signal_list(r, H::signal_syn, "#SIGNAL SYN");
+  read_signal_list(r, H::signal, "#SIGNAL");
+}
+
+template <typename Input>
+void read_wait(HashReader<Input>& r) {  // §6.1; #WAIT [SYN] [..] PROG-207421579
+  r.ws();
+  if (r.word("SYN")) return read_signal_list(r, H::wait_signal_syn, "#WAIT SYN");
+  if (!r.in.empty() && r.in.peek_char() == '[') return read_signal_list(r, H::wait_signal, "#WAIT");
+  if (!r.word("INDP")) {
+    if (r.next_word().empty()) read_signal_list(r, H::wait_signal, "#WAIT");  // 20998
+    r.st.not_supported(r.name_at - 1, "#WAIT " + r.next_word());
+  }
   r.ws();
   if (r.word("ALL")) return r.set(H::wait_indp_all);
   r.set(H::wait_indp, T::wait_indp);
@@ -387,7 +477,7 @@ struct Entry {
 };
 
 template <typename Input>
-inline constexpr std::array<Entry<Input>, 36> kHashCommands{{
+inline constexpr std::array<Entry<Input>, 37> kHashCommands{{
     {"SYNC", read_sync<Input>},
     {"CS", read_cs<Input>},
     {"BCS", read_cs<Input>},
@@ -404,6 +494,7 @@ inline constexpr std::array<Entry<Input>, 36> kHashCommands{{
     {"TIME", read_time<Input>},
     {"TRANSVELMIN", read_transvelmin<Input>},
     {"WAIT", read_wait<Input>},
+    {"SIGNAL", read_signal<Input>},
     {"DELETE", read_variables<Input>},
     {"INIT", read_variables<Input>},
     {"FILE", read_file_name<Input>},

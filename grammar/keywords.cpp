@@ -122,6 +122,10 @@ constexpr KeywordSpec kVectorLimit[] = {
     {"ACC", V::opt_expr},         {"DEC", V::opt_expr},  {"RADIAL_ACC", V::opt_expr},
     {"RADIAL_JERK", V::opt_expr}, {"JERK", V::opt_expr}, {"TRANS_ACC", V::opt_expr},
     {"VEL", V::opt_expr},         {"FEED", V::none},     {"RAPID", V::none}};
+// #SIGNAL / #WAIT / #SIGNAL READ (PROG-207409035, PROG-207421579, PROG-913718283): read by
+// grammar/hash_commands.hpp's own list reader (P[i]=.. is indexed, `IDP100` has no '=').
+constexpr KeywordSpec kSignal[] = {
+    {"ID", V::expr}, {"COUNT", V::expr}, {"CH", V::expr}, {"P", V::expr}, {"AHEAD", V::none}};
 constexpr KeywordSpec kNone[] = {{"", V::none}};
 
 const KeywordTable kTables[] = {
@@ -152,6 +156,7 @@ const KeywordTable kTables[] = {
     /* hsc */ {kHsc},
     /* vector_limit */ {kVectorLimit},
     /* scale */ {std::span(kNone).first(0), true},
+    /* signal */ {kSignal},
 };
 
 struct FunctionName {

@@ -322,11 +322,48 @@ struct SetPosition {
   AxisMask axes = 0;
 };
 
+/// Channel numbers a #SIGNAL / #WAIT may name (CH=..), 1 .. kMaxChannels: ncsim's line
+/// holds at most this many channels (docs/lines.md; the manual's range is the control's
+/// configuration, 20996 / 250008).
+inline constexpr std::uint8_t kMaxChannels = 12;
+/// Signal parameters P[0] .. P[kSignalParams - 1] (PROG-207421579: index 0 .. 11).
+inline constexpr std::uint8_t kSignalParams = 12;
+/// Largest signal number ID=.. (a positive 32-bit integer; decision, docs/lines.md).
+inline constexpr std::uint32_t kMaxSignalId = 2147483647;
+
+/// #SIGNAL / #SIGNAL SYN (PROG-207409035): signal `id` to each receiver channel, or to any
+/// channel (a broadcast signal) without receivers. Decoder level (syn false): sent when the
+/// decoder reaches it; SYN: when the interpolator reaches its place in the block stream.
+struct Signal {
+  bool syn = false;
+  std::uint32_t id = 0;                ///< 1 .. kMaxSignalId
+  std::optional<std::uint32_t> count;  ///< COUNT: #WAITs until used up (unset: 1; a broadcast
+                                       ///< without COUNT is never used up)
+  std::vector<std::pair<std::uint8_t, double>> params;  ///< P[idx] = value
+  std::vector<std::uint8_t> receivers;                  ///< CH=..; empty: broadcast
+};
+
+/// A wait for signal `id` (PROG-207421579): from every channel of `senders` (each its own
+/// signal), or a broadcast signal without senders. #WAIT SYN is this command (a channel
+/// event, the path stands at it); #WAIT and #SIGNAL READ are a Barrier asking for it.
+struct SignalWait {
+  std::uint32_t id = 0;
+  std::vector<std::uint8_t> senders;  ///< CH=..; empty: broadcast
+  bool read = false;                  ///< #SIGNAL READ: answered at once, received or not
+};
+
+/// The run time's answer to a signal barrier (RunState::signal).
+struct SignalAnswer {
+  bool received = false;  ///< the signal(s) were there (and are used up)
+  std::array<std::optional<double>, kSignalParams> params{};  ///< P[idx] the senders gave
+};
+
 /// What a Barrier asks the run time for (bits of Barrier::needs).
 enum class BarrierNeed : std::uint8_t {
   external = 1,     ///< V.E. values the outside world may have written (FLUSH V.E.READ)
   probe_latch = 2,  ///< the conveyor position latched by MC_TouchProbe (before #SYNC IN)
-  position = 4      ///< actual positions of Barrier::axes in Barrier::frame
+  position = 4,     ///< actual positions of Barrier::axes in Barrier::frame
+  signal = 8        ///< #WAIT / #SIGNAL READ at decoder level: Barrier::signal
 };
 
 /// The interpreter stops before the block at `Command::line` until the run time answers with
@@ -338,6 +375,7 @@ struct Barrier {
   std::optional<std::uint8_t> probe;  ///< the conveyor axis whose latch is wanted
   CoordFrame frame;                   ///< the frame the positions are wanted in
   AxisMask axes = 0;                  ///< axes whose actual position is wanted
+  std::optional<SignalWait> signal;   ///< the signal the block waits for or reads
   bool wants(BarrierNeed n) const { return (needs & static_cast<std::uint8_t>(n)) != 0; }
 };
 
@@ -345,10 +383,10 @@ struct End {
   int code = 30;  ///< 2 or 30; 0: end of file without M02/M30
 };
 
-using CommandBody =
-    std::variant<Motion, SplineBegin, SplinePoint, SplineEnd, Dwell, Tech, ProgramStop, AxisCommand,
-                 MoveVelocity, ProbeArm, SyncIn, SyncOut, SelectCs, Kinematics, CaxTrack,
-                 MachineData, Message, Flush, WaitIndp, Homing, SetPosition, Barrier, End>;
+using CommandBody = std::variant<Motion, SplineBegin, SplinePoint, SplineEnd, Dwell, Tech,
+                                 ProgramStop, AxisCommand, MoveVelocity, ProbeArm, SyncIn, SyncOut,
+                                 SelectCs, Kinematics, CaxTrack, MachineData, Message, Flush,
+                                 WaitIndp, Homing, SetPosition, Signal, SignalWait, Barrier, End>;
 
 struct Command {
   std::uint32_t line = 0;  ///< 1-based source line of the block

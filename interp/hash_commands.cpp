@@ -156,6 +156,12 @@ bool HashCommands::run_hash(const ast::Block& b, const ast::HashCommand& h) {
       return ip_.offsets.hash_mcs(b, h);
     case HashKind::accepted:
       return hash_accepted(b);
+    case HashKind::signal:
+    case HashKind::signal_syn:
+    case HashKind::wait_signal:
+    case HashKind::wait_signal_syn:
+    case HashKind::signal_read:
+      return hash_signal(b, h);
     case HashKind::pset:
       return ip_.offsets.hash_pset(b, h);
     case HashKind::bcs_def:

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "grammar/ast.hpp"
@@ -28,6 +29,10 @@ class HashCommands {
   bool run_hash(const grammar::ast::Block& b, const grammar::ast::HashCommand& h);  // dispatch
   /// The value of a # command item (nullopt after an error).
   std::optional<double> item_value(const grammar::ast::Block& b, const grammar::ast::Item* it);
+  /// What a #WAIT / #SIGNAL READ block waits for (signals.cpp), without reporting: nullopt
+  /// when the block is faulty (its decoding then reports why).
+  std::optional<SignalWait> signal_wait(const grammar::ast::Block& b,
+                                        const grammar::ast::HashCommand& h);
 
  private:
   using Block = grammar::ast::Block;
@@ -51,7 +56,14 @@ class HashCommands {
   bool hash_wait_indp(const Block& b, const HashCommand& h);
   bool hash_delete(const Block& b, const HashCommand& h);
   bool hash_pre_if(const Block& b, const HashCommand& h);  // #IF / #ELSE skips
-  bool hash_accepted(const Block& b);                      // # commands read without an effect
+  // channel synchronisation (signals.cpp)
+  bool hash_signal(const Block& b, const HashCommand& h);  // #SIGNAL, #WAIT, #SIGNAL READ
+  std::optional<Signal> signal_parts(const Block& b, const HashCommand& h, bool report);
+  std::optional<double> signal_value(const Block& b, grammar::ast::NodeIndex n, bool report);
+  std::optional<std::uint32_t> signal_integer(const Block& b, const grammar::ast::Item& it,
+                                              const char* id, double low, double high,
+                                              const std::string& what, bool report);
+  bool hash_accepted(const Block& b);  // # commands read without an effect
 
   Interpreter::Impl& ip_;
 };

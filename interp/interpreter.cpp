@@ -35,6 +35,11 @@ Interpreter::Impl::Impl(const core::SourceFile& file, const machines::Machine& m
   modal.contour.path_dev = machine.channel.default_path_dev;
   offsets.scale_factors.fill(1.0);
   offsets.init_zero_offsets();
+  {  // V.G.SIGNAL_READ: FALSE until a #SIGNAL READ found a signal (PROG-913718283)
+    Variable v;
+    v.values.assign(1, 0.0);
+    vars.provide_global("SIGNAL_READ", std::move(v));
+  }
   vars.create_cycle_param_on_read(machine.channel.create_cycle_param_on_read);  // P-CHAN-00463
   if (machine.channel.default_feed > 0.0) feed = machine.channel.default_feed;  // P-CHAN-00099
 }

@@ -66,6 +66,10 @@ struct Options {
   /// not configured or not found is skipped (no motion, no time) with warning NC4307, once per
   /// G code or cycle name; false: error 20131 / NC4301.
   bool skip_missing_cycles = false;
+  /// The channels of the run (#SIGNAL / #WAIT CH=.., docs/lines.md): a CH of a channel the run
+  /// does not have is 250008 at its block. Unset (`check`, `trace` of one program): any
+  /// channel 1 .. kMaxChannels.
+  std::optional<std::vector<std::uint8_t>> channels;
 };
 
 /// The run time's answer to a Barrier. Only what the barrier asks for is read.
@@ -74,6 +78,8 @@ struct RunState {
   double latch = 0.0;                      ///< latched conveyor position [mm] (probe_latch)
   CoordFrame frame;                        ///< the frame of `position`; must equal Barrier::frame
   AxisValues position{};                   ///< actual positions [mm | deg]; Barrier::axes are read
+  SignalAnswer signal;                     ///< the signal waited for or read (Barrier::signal)
+  bool signal_decode_only = false;         ///< `signal` is decode_only_state()'s (no 21549 then)
 };
 
 class Interpreter {

@@ -140,7 +140,9 @@ struct Interpreter::Impl {
   // block asks for them only when it programs them (P-CHAN-00451: programming the axis again
   // synchronises it: docs/ipo.md "Position barriers"). Always a subset of unknown_axes.
   AxisMask indp_unknown = 0;
-  double latch = 0.0;  // conveyor position latched before the last #SYNC IN [mm]
+  double latch = 0.0;              // conveyor position latched before the last #SYNC IN [mm]
+  SignalAnswer signal_answer;      // the signal the barrier before a #WAIT / #SIGNAL READ gave
+  bool signal_decode_only = true;  // that answer is the decode-only one (no 21549 then)
   void emit(std::uint32_t line, CommandBody body);
   const ast::Block* expand_macros(const ast::Block& b);
 

@@ -99,12 +99,22 @@ bool Seam::barrier_before(const ast::Block& b) {
                           return (e.op == ast::Op::variable && e.var_class == ast::VarClass::v_e) ||
                                  (e.op == ast::Op::string && ip_.vars.macro(e.text) != nullptr);
                         });
-  if (!sync_in && position_needed == 0 && !external) return false;
+  const bool signal =
+      h != nullptr && (h->kind == HashKind::wait_signal || h->kind == HashKind::signal_read);
+  if (!sync_in && position_needed == 0 && !external && !signal) return false;
   return emit_barrier(b, sync_in, position_needed);
 }
 
 bool Seam::emit_barrier(const ast::Block& b, bool sync_in, AxisMask position_needed) {
   Barrier barrier;
+  if (const auto* h = std::get_if<ast::HashCommand>(&b.body)) {
+    // #WAIT / #SIGNAL READ at decoder level (docs/lines.md): the decoder stops before the
+    // block until the run time has the signal (a faulty block asks nothing: it reports).
+    if (h->kind == HashKind::wait_signal || h->kind == HashKind::signal_read) {
+      barrier.signal = ip_.hash.signal_wait(b, *h);
+      if (barrier.signal) barrier.needs |= static_cast<std::uint8_t>(BarrierNeed::signal);
+    }
+  }
   // V.E. reads, not the targets of plain assignments (a write needs no run-time value).
   std::vector<ast::NodeIndex> written;
   for (const ast::Word& w : b.words) {
@@ -225,6 +235,10 @@ void Seam::apply(const RunState& state, const Barrier& barrier) {
     }
   }
   if (barrier.wants(BarrierNeed::probe_latch)) ip_.latch = state.latch;
+  if (barrier.wants(BarrierNeed::signal)) {
+    ip_.signal_answer = state.signal;
+    ip_.signal_decode_only = state.signal_decode_only;
+  }
   if (barrier.wants(BarrierNeed::position)) {
     for (std::size_t i = 0; i < kMaxAxes; ++i) {
       if ((barrier.axes >> i) & 1u) ip_.position[i] = state.position[i];
@@ -248,6 +262,10 @@ RunState Seam::decode_only(const Barrier& barrier) const {
     if (auto v = ip_.vars.read(ref, err)) s.external[name] = *v;
   }
   s.latch = 0.0;
+  // check / trace: a #WAIT gets its signal with every parameter 0, a #SIGNAL READ finds none
+  // (V.G.SIGNAL_READ FALSE, the manual's default).
+  if (barrier.signal) s.signal.received = !barrier.signal->read;
+  s.signal_decode_only = true;
   s.frame = barrier.frame;
   s.position = ip_.position;  // programmed, re-based with the belt travel 0 (Frames::sync_rebased)
   return s;

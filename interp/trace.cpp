@@ -267,6 +267,28 @@ void put(std::string& out, const Flush& b, const machines::Machine& /*m*/) {
   out += kKinds[static_cast<int>(b.kind)];
 }
 
+void channels(std::string& out, const std::vector<std::uint8_t>& list) {
+  for (const std::uint8_t c : list)
+    out += " CH" + std::to_string(c);
+  if (list.empty()) out += " BROADCAST";
+}
+
+void put(std::string& out, const Signal& b, const machines::Machine& /*m*/) {
+  out += b.syn ? " SIGNAL SYN ID" : " SIGNAL ID";
+  out += std::to_string(b.id);
+  if (b.count) out += " COUNT" + std::to_string(*b.count);
+  for (const auto& [i, v] : b.params) {
+    out += " P[" + std::to_string(i) + "]=";
+    num(out, v);
+  }
+  channels(out, b.receivers);
+}
+
+void put(std::string& out, const SignalWait& b, const machines::Machine& /*m*/) {
+  out += " WAIT SYN ID" + std::to_string(b.id);
+  channels(out, b.senders);
+}
+
 void put(std::string& out, const Barrier& b, const machines::Machine& m) {
   out += " BARRIER";
   if (b.wants(BarrierNeed::external)) {
@@ -277,6 +299,11 @@ void put(std::string& out, const Barrier& b, const machines::Machine& m) {
   if (b.wants(BarrierNeed::probe_latch) && b.probe) {
     out += " PROBE_LATCH ";
     out += axis_name(m, *b.probe);
+  }
+  if (b.wants(BarrierNeed::signal) && b.signal) {
+    out += b.signal->read ? " SIGNAL_READ ID" : " WAIT ID";
+    out += std::to_string(b.signal->id);
+    channels(out, b.signal->senders);
   }
   if (b.wants(BarrierNeed::position)) {
     out += " POSITION frame=" + frame_name(b.frame);

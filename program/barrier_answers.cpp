@@ -16,8 +16,9 @@ void BarrierAnswers::answer_from(scenario::VeStore* store, bool flush) {
 }
 
 std::optional<interp::Command> BarrierAnswers::next_command() {
-  return store_ != nullptr || positions_ != nullptr ? parts_.interp.next()
-                                                    : parts_.interp.next_decode_only();
+  return store_ != nullptr || positions_ != nullptr || signals_ != nullptr
+             ? parts_.interp.next()
+             : parts_.interp.next_decode_only();
 }
 
 void BarrierAnswers::store_ve_writes() {
@@ -51,7 +52,11 @@ bool BarrierAnswers::barrier(const interp::Barrier& body, std::uint32_t line, ip
   const interp::AxisMask sync = positions_ != nullptr && body.wants(interp::BarrierNeed::position)
                                     ? body.axes & indp_running_
                                     : 0;
-  if (store_ == nullptr && positions_ == nullptr) return false;  // next_decode_only() answers
+  if (store_ == nullptr && positions_ == nullptr && signals_ == nullptr)
+    return false;  // next_decode_only() answers
+  if (signals_ != nullptr && body.wants(interp::BarrierNeed::signal) && body.signal &&
+      signal_barrier(body, line, out))
+    return true;
   if (sync != 0) {
     parts_.events.push(line, parts_.errors.file(), interp::WaitIndp{sync});
     open_ = body;  // answered at the next pull, with the path standing
@@ -70,6 +75,25 @@ bool BarrierAnswers::barrier(const interp::Barrier& body, std::uint32_t line, ip
   return false;
 }
 
+bool BarrierAnswers::signal_barrier(const interp::Barrier& body, std::uint32_t line,
+                                    ipo::Item& out) {
+  // Decoder level (docs/lines.md): the decoder reaches the #WAIT when this pull asks for it;
+  // a signal already there is used at once and the path runs on. Else the decoder stops: the
+  // blocks decoded before run to their end, the path stops there (a ChannelWait with a
+  // SignalWait event) and the channel takes the signal when it comes; the block decodes after.
+  // The decoder's look does not block the channel (its path still runs the blocks before).
+  std::string order;
+  signal_ = signals_->read(*body.signal, order);
+  if (!order.empty()) parts_.errors.raise(line, "250002", order);
+  if (!signal_ && body.signal->read) signal_ = interp::SignalAnswer{};  // #SIGNAL READ: none
+  if (signal_) return false;
+  parts_.events.push(line, parts_.errors.file(), *body.signal);
+  open_ = body;  // answered at the next pull, with the signal the channel took
+  open_line_ = line;
+  out = parts_.events.wait(line);
+  return true;
+}
+
 void BarrierAnswers::answer_open() {
   if (!open_) return;
   answer(*open_, open_line_);
@@ -81,6 +105,12 @@ void BarrierAnswers::answer(const interp::Barrier& barrier, std::uint32_t line) 
   if (store_ != nullptr && barrier.wants(interp::BarrierNeed::external))
     store_->answer(barrier.external, state.external);
   if (run_time_ != 0) answer_positions(barrier, line, state);
+  if (signals_ != nullptr && barrier.wants(interp::BarrierNeed::signal)) {
+    if (!signal_) signal_ = signals_->collect();  // taken by the channel's SignalWait event
+    state.signal = signal_.value_or(interp::SignalAnswer{});
+    state.signal_decode_only = false;
+    signal_.reset();
+  }
   parts_.interp.resume(state);
 }
 

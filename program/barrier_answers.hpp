@@ -29,6 +29,7 @@
 #include "program/cs_frames.hpp"
 #include "program/machine_axes.hpp"
 #include "program/pending_events.hpp"
+#include "program/signals.hpp"
 #include "program/source_errors.hpp"
 #include "scenario/player.hpp"
 
@@ -55,6 +56,8 @@ class BarrierAnswers {
   void positions_from(const planner::AxisVec* set_positions) noexcept {
     positions_ = set_positions;
   }
+  /// #WAIT / #SIGNAL READ barriers from the run's signals (null: the decode-only answer).
+  void signals_from(SignalPort* signals) noexcept { signals_ = signals; }
   /// The interpreter's next command (next_decode_only() without run-time answers).
   std::optional<interp::Command> next_command();
   /// The program's V.E. assignments decoded so far into the store, before any barrier after
@@ -64,6 +67,9 @@ class BarrierAnswers {
   void note(const interp::CommandBody& body) noexcept;
   /// A barrier answered now (false) or after the path stopped (true: `out` holds the stop).
   bool barrier(const interp::Barrier& body, std::uint32_t line, ipo::Item& out);
+  /// A #WAIT / #SIGNAL READ barrier: its signal taken now (false) or the path stops at a
+  /// SignalWait event until the channel took it (true: `out` holds the stop).
+  bool signal_barrier(const interp::Barrier& body, std::uint32_t line, ipo::Item& out);
   /// The barrier left open at the last stop is answered: every block before it ran.
   void answer_open();
 
@@ -77,6 +83,9 @@ class BarrierAnswers {
 
   BarrierParts parts_;
   scenario::VeStore* store_ = nullptr;
+  SignalPort* signals_ = nullptr;
+  /// The signal answer of the open barrier, taken already (a #WAIT answered at its pull)
+  std::optional<interp::SignalAnswer> signal_;
   bool flush_ = false;
   std::optional<interp::Barrier> open_;          ///< a barrier waiting for the path to stop
   std::uint32_t open_line_ = 0;                  ///< its line

@@ -37,7 +37,8 @@ struct ChannelEvent {
 /// a program of events without motion cannot grow the queue.
 inline constexpr std::size_t kMaxPendingEvents = 256;
 
-/// True when `body` is a channel event (the kinds above).
+/// True when `body` is a channel event (the kinds above, and #SIGNAL SYN, #WAIT SYN; a #WAIT
+/// the decoder could not answer at once is a SignalWait event too: docs/lines.md).
 bool is_channel_event(const interp::CommandBody& body) noexcept;
 
 /// True when the path must stand while `body` executes: #SYNC IN (it waits for the measured

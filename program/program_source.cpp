@@ -242,8 +242,14 @@ ProgramSource::Pulled ProgramSource::run_command(interp::Command& cmd, ipo::Item
                              std::is_same_v<T, interp::SyncIn> ||
                              std::is_same_v<T, interp::SyncOut> ||
                              std::is_same_v<T, interp::Homing> ||
+                             std::is_same_v<T, interp::SignalWait> ||
                              std::is_same_v<T, interp::MachineData>) {
           // channel events: queued by route_event (is_channel_event), never here
+        } else if constexpr (std::is_same_v<T, interp::Signal>) {
+          // #SIGNAL at decoder level: sent when the decoder reaches it (docs/lines.md); #SIGNAL
+          // SYN is a channel event.
+          if (signals_ == nullptr) errors_.not_supported(line, "#SIGNAL outside a run");
+          signals_->send(body);
         } else if constexpr (std::is_same_v<T, interp::SetPosition>) {
           errors_.not_supported(line, "G92 set position");
         } else {

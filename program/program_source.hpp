@@ -111,6 +111,13 @@ class ProgramSource final : public ipo::Source {
   void answer_positions_from(const planner::AxisVec* set_positions) noexcept {
     answers_.positions_from(set_positions);
   }
+  /// #SIGNAL is sent and #WAIT / #SIGNAL READ answered through `signals` (the run's signal
+  /// exchange, must outlive the source; docs/lines.md). Null (the default): a #SIGNAL is
+  /// NC6001 and a #WAIT gets the decode-only answer.
+  void exchange_signals(SignalPort* signals) noexcept {
+    signals_ = signals;
+    answers_.signals_from(signals);
+  }
 
  private:
   /// What a step of pull() did: handed out an item, go on with the next command, the stream
@@ -149,9 +156,10 @@ class ProgramSource final : public ipo::Source {
   BarrierAnswers answers_;
   /// The command held back: after a block's INDP_SYN commands, or after a held block.
   std::optional<interp::Command> held_;
-  bool out_queued_ = false;   ///< pull() handed out a queued item (it carries its own file)
-  bool sync_motion_ = false;  ///< the next Motion is a catch-up / departure
-  bool end_reached_ = false;  ///< End came after a final ChannelWait
+  bool out_queued_ = false;        ///< pull() handed out a queued item (it carries its own file)
+  bool sync_motion_ = false;       ///< the next Motion is a catch-up / departure
+  bool end_reached_ = false;       ///< End came after a final ChannelWait
+  SignalPort* signals_ = nullptr;  ///< the run's signal exchange (null: none)
 };
 
 }  // namespace ncsim::program

@@ -113,6 +113,7 @@ std::variant<std::unique_ptr<Loaded>, Exit> load_checked(const RunSpec& run, std
                                             nullptr});
   in->scenario = std::move(std::get<std::optional<scenario::Scenario>>(scenario));
   apply_cycle_options(spec, in->interp);
+  in->interp.channels = std::vector<std::uint8_t>{1};  // a run alone is channel 1 (250008)
   apply_scenario(spec, in->scenario, in->machine, in->interp);
   const core::DiagnosticList syntax = grammar::check_program(in->file);
   for (const core::Diagnostic& d : syntax.items())

@@ -32,8 +32,13 @@ void apply_cycle_options(const ProgramSpec& spec, interp::Options& interp) {
   interp.skip_missing_cycles = spec.missing_cycles == "skip";
 }
 
+fs::path bundled_machine(std::string_view name) {
+  return machines::bundled_machine_dir(source_root(), name);
+}
+
 std::optional<fs::path> scenario_file(const ProgramSpec& spec) {
   if (spec.scenario) return *spec.scenario;
+  if (!spec.scenario_lookup) return std::nullopt;
   const fs::path named = (is_stdin(spec.program) ? fs::path(".") : spec.program.parent_path()) /
                          scenario::kDefaultScenarioFile;
   std::error_code ec;

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <iosfwd>
 #include <optional>
+#include <string_view>
 #include <variant>
 
 #include "core/source_file.hpp"
@@ -33,6 +34,8 @@ std::optional<std::filesystem::path> machine_folder(const ProgramSpec& spec, std
 /// The scenario file a program runs under (docs/scenario.md): --scenario, else the program
 /// folder's `scenario.toml` (the current folder's for `-`) when it exists, else none.
 std::optional<std::filesystem::path> scenario_file(const ProgramSpec& spec);
+/// The folder of bundled machine `name` in the source tree this command was built from.
+std::filesystem::path bundled_machine(std::string_view name);
 
 /// Loads and validates the scenario of `spec` (scenario_file) against `program`'s lines and
 /// `machine`'s axis names. No scenario: nullopt. A missing --scenario file or any error in it:

@@ -23,14 +23,29 @@ class Run::Fanout final : public ipo::Sink {
   std::vector<ipo::Sink*> sinks_;
 };
 
-Run::Run(std::unique_ptr<Loaded> loaded, const RunSpec& spec)
+namespace {
+
+std::unique_ptr<program::SignalHub> own_hub(const program::SignalHub* line) {
+  if (line != nullptr) return nullptr;
+  return std::make_unique<program::SignalHub>(std::vector<std::uint8_t>{1});
+}
+
+}  // namespace
+
+Run::Run(std::unique_ptr<Loaded> loaded, const RunSpec& spec, program::SignalHub* hub,
+         std::uint8_t channel)
     : in_(std::move(loaded)),
+      own_hub_(own_hub(hub)),
+      signals_(std::make_unique<program::SignalPort>(hub != nullptr ? *hub : *own_hub_,
+                                                     hub != nullptr ? channel : 1)),
       interp_(in_->file, in_->machine, in_->interp),
       // refuse: check's NC4601 before the block moves (issue 34)
       src_(interp_, in_->machine,
            program::SourceConfig{.t_cycle = in_->t_cycle, .refuse_soft_limits = true}),
       config_(channel::channel_config(in_->machine, in_->t_cycle)),
       answer_positions_(spec.answer_positions) {
+  src_.exchange_signals(signals_.get());
+  config_.signals = signals_.get();
   if (!spec.audit) return;
   audit_ = std::make_unique<audit::Audit>(config_.path.axes, config_.path.channel.t_cycle,
                                           config_.path.start);
@@ -71,8 +86,15 @@ void Run::start(std::vector<ipo::Sink*> sinks) {
 }
 
 ipo::Status Run::step() {
+  if (own_hub_) own_hub_->begin_cycle(cycles_);
+  ++cycles_;
   const ipo::Status status = channel_->step();
-  if (status != ipo::Status::running) return status;
+  if (status != ipo::Status::running) {
+    if (!ended_) signals_->end(channel_->cycle().line, channel_->cycle().file);
+    ended_ = true;
+    return status;
+  }
+  if (own_hub_) own_hub_->mark_stuck();  // fails the wait in the next cycle (NC6401)
   if (audit_ && channel_->transformed()) audit_->on_joints(channel_->cycle(), channel_->joints());
   if (time_) time_->add(channel_->cycle());
   if (workpieces_)

@@ -23,6 +23,7 @@
 #include "channel/channel.hpp"
 #include "interp/interpreter.hpp"
 #include "program/program_source.hpp"
+#include "program/signals.hpp"
 #include "runner/load.hpp"
 #include "scenario/player.hpp"
 
@@ -39,14 +40,19 @@ struct Ending {
 class Run {
  public:
   /// The interpreter, the program source, the channel configuration and the audit of `loaded`.
-  Run(std::unique_ptr<Loaded> loaded, const RunSpec& spec);
+  /// `hub`: the line's signal exchange, this run its channel `channel` (docs/lines.md); null:
+  /// the run keeps its own for one channel (number 1), steps it and ends a wait that can never
+  /// be answered (NC6401).
+  Run(std::unique_ptr<Loaded> loaded, const RunSpec& spec, program::SignalHub* hub = nullptr,
+      std::uint8_t channel = 1);
   Run(const Run&) = delete;
   Run& operator=(const Run&) = delete;
   ~Run();
 
   /// Builds the channel; `sinks` (none null) see every joint and cycle after the audit.
   void start(std::vector<ipo::Sink*> sinks = {});
-  /// One cycle; while running, the audit sees the joints under #TRAFO ON.
+  /// One cycle; while running, the audit sees the joints under #TRAFO ON. A run that ends
+  /// tells the signal exchange (it sends nothing more).
   ipo::Status step();
   /// Steps to the end, `on_cycle` (may be empty) after every running cycle; the last status.
   ipo::Status run(const std::function<void(const channel::Channel&)>& on_cycle = {});
@@ -81,6 +87,10 @@ class Run {
  private:
   class Fanout;
   std::unique_ptr<Loaded> in_;
+  std::unique_ptr<program::SignalHub> own_hub_;  ///< a run alone: its own signal exchange
+  std::unique_ptr<program::SignalPort> signals_;
+  std::uint64_t cycles_ = 0;  ///< cycles stepped (the own hub's cycle count)
+  bool ended_ = false;        ///< the signal exchange was told the run ended
   interp::Interpreter interp_;
   program::ProgramSource src_;
   channel::ChannelConfig config_;

@@ -37,9 +37,12 @@ struct ProgramSpec {
   std::filesystem::path program;                     ///< NC program file ("-": standard input)
   std::optional<std::filesystem::path> machine_dir;  ///< --machine
   std::optional<std::filesystem::path> scenario;     ///< --scenario
-  std::vector<std::string> external;                 ///< --ve NAME=value (V.E. variables)
-  std::vector<std::filesystem::path> cycle_dirs;     ///< --cycles DIR (cycle files, in order)
-  std::string missing_cycles = "error";              ///< --missing-cycles error|skip
+  /// Without `scenario`: the program folder's scenario.toml, if there is one (false: none; a
+  /// line's channel runs the scenario its line file names, docs/lines.md)
+  bool scenario_lookup = true;
+  std::vector<std::string> external;              ///< --ve NAME=value (V.E. variables)
+  std::vector<std::filesystem::path> cycle_dirs;  ///< --cycles DIR (cycle files, in order)
+  std::string missing_cycles = "error";           ///< --missing-cycles error|skip
   /// --max-time S (time, run, report): the run stops at S seconds of machine time like a
   /// scenario's `[stop] time` (the earlier of both); for programs that run endlessly
   std::optional<double> max_time;

@@ -51,6 +51,9 @@ std::vector<fs::path> program_folders() {
   std::vector<fs::path> folders;
   for (const auto& entry : fs::directory_iterator(programs_dir())) {
     if (!entry.is_directory()) continue;
+    // programs/lines/<name>/: production lines, several programs and a line file each, checked
+    // by their own `ncsim line check` test (tests/lines.cmake, docs/lines.md)
+    if (entry.path().filename() == "lines") continue;
     if (entry.path().filename() == "real") {  // programs/real/<name>/: the real-program library
       for (const auto& sub : fs::directory_iterator(entry.path()))
         if (sub.is_directory()) folders.push_back(sub.path());

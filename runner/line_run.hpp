@@ -1,0 +1,112 @@
+#pragma once
+// runner/line_run: a production line run (issue 37 step 1, docs/lines.md): several channels
+// in one run, stepped in the same interpolation cycle, sharing one conveyor world and one
+// signal exchange (#SIGNAL / #WAIT).
+//
+// Purpose: what `ncsim line` runs. Inputs: a LineSpec (the line file, --cycle-us, --max-time,
+// the audit). Method: the line file is validated (scenario/line_file); each channel is loaded
+// by runner::load like `time PROG --machine DIR --scenario FILE` and becomes a runner::Run (one
+// more call of the runner per channel, not a copy of its wiring) on the line's SignalHub with
+// its channel number; the interpreters learn the line's channel numbers (250008). Every
+// channel must run at the same cycle (NCSIM-CHAN-610 or cycle_us / --cycle-us; NC7105 at the
+// channel's `machine` otherwise). The line's `[conveyor]` is built once, against the first
+// channel (by number) whose machine has a conveyor axis, and each such channel attaches a
+// conveyor::SharedPort to it (stepped once per cycle; the line steps it when no channel did).
+// Per cycle (step()): the hub's cycle starts, every running channel steps in number order,
+// the world is stepped to the cycle's end, the hub marks the waits that can never be answered
+// (the channel fails such a wait in its next cycle, NC6401), each channel's time waiting for
+// a signal is counted.
+// Outputs: per channel its Run (ending, time result), end time, waiting time; the line's end.
+// Invariants: deterministic (fixed channel order, one cycle of signal transport whatever the
+// order); the objects keep their addresses (the runs point into the hub and the world).
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "conveyor/port.hpp"
+#include "conveyor/shared_port.hpp"
+#include "program/signals.hpp"
+#include "runner/run.hpp"
+#include "runner/spec.hpp"
+#include "scenario/line_file.hpp"
+
+namespace ncsim::runner {
+
+/// What to run: the line file and the options of `ncsim line`.
+struct LineSpec {
+  std::filesystem::path file;             ///< the line file (TOML)
+  std::optional<std::uint64_t> cycle_us;  ///< --cycle-us over the line's cycle_us
+  std::optional<double> max_time;         ///< --max-time S for every channel
+  bool audit = false;                     ///< every channel's setpoints audited
+};
+
+/// One channel's figures after the run.
+struct LineChannelTime {
+  double t_end = 0.0;      ///< [s] the end of its last cycle
+  double t_waiting = 0.0;  ///< [s] cycles it stood at a #WAIT / #WAIT SYN not answered
+};
+
+class LineRun;
+
+/// The outcome of load_line_run (like LoadResult).
+struct LineLoadResult {
+  std::unique_ptr<LineRun> line;  ///< null when the line cannot start
+  Exit exit = Exit::ok;
+  std::string messages;  ///< what the command prints on stderr (each line ends in '\n')
+  bool ok() const noexcept { return line != nullptr; }
+};
+
+/// Loads the line file and every channel (their programs syntax-checked, machines, scenarios).
+LineLoadResult load_line_run(const LineSpec& spec);
+
+/// Every channel of the line checked without motion (`ncsim line check`): syntax and the
+/// decode-only semantics with the line's channel numbers; the diagnostics in `out` (positioned,
+/// with their source lines), the exit category.
+Exit check_line(const LineSpec& spec, std::string& out);
+
+class LineRun {
+ public:
+  LineRun(const LineRun&) = delete;
+  LineRun& operator=(const LineRun&) = delete;
+  ~LineRun();
+
+  const scenario::LineFile& file() const noexcept { return file_; }
+  std::size_t size() const noexcept { return runs_.size(); }
+  Run& channel(std::size_t k) noexcept { return *runs_[k]; }
+  const Run& channel(std::size_t k) const noexcept { return *runs_[k]; }
+  const scenario::LineChannel& channel_spec(std::size_t k) const noexcept { return order_[k]; }
+  double t_cycle() const noexcept { return t_cycle_; }
+
+  /// Starts every channel; `sinks[k]` (may be shorter) are channel k's sinks.
+  void start(const std::vector<std::vector<ipo::Sink*>>& sinks = {});
+  /// One cycle of the line; false once every channel ended.
+  bool step();
+  /// Steps to the end.
+  void run();
+  /// Channel k's last status (running until it ended).
+  ipo::Status status(std::size_t k) const noexcept { return status_[k]; }
+  const LineChannelTime& time(std::size_t k) const noexcept { return times_[k]; }
+  /// [s] the end of the line: the last channel's end.
+  double t_end() const noexcept;
+
+ private:
+  friend LineLoadResult load_line_run(const LineSpec& spec);
+  LineRun() = default;
+
+  scenario::LineFile file_;
+  std::vector<scenario::LineChannel> order_;  ///< the channels by number
+  double t_cycle_ = 0.001;
+  std::unique_ptr<program::SignalHub> hub_;
+  std::unique_ptr<conveyor::Port> world_;  ///< the shared world (null: none)
+  std::unique_ptr<conveyor::SharedWorld> shared_;
+  std::vector<std::unique_ptr<Run>> runs_;
+  std::vector<ipo::Status> status_;
+  std::vector<LineChannelTime> times_;
+  std::uint64_t cycle_ = 0;
+};
+
+}  // namespace ncsim::runner

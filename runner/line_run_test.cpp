@@ -1,0 +1,200 @@
+// runner/line_run: several channels in one run (docs/lines.md): a #WAIT SYN ends one cycle
+// after the signalling block's end, #SIGNAL at decoder level goes out long before, waits that
+// can never be answered end the run with NC6401 naming both channels, reruns are identical.
+
+#include "runner/line_run.hpp"
+
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "runner/load.hpp"
+#include "runner/locate.hpp"
+#include "runner/run.hpp"
+#include "runner/texts.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace ncsim;
+using namespace ncsim::runner;
+
+// A folder of its own per test with the given files (name, text).
+fs::path folder(const std::string& name,
+                const std::vector<std::pair<std::string, std::string>>& files) {
+  const fs::path dir = fs::temp_directory_path() / ("ncsim_line_test_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  for (const auto& [file, text] : files)
+    std::ofstream(dir / file) << text;
+  return dir;
+}
+
+const std::string kTwoChannels =
+    "[[channel]]\nnumber = 1\nname = \"first\"\nprogram = \"a.nc\"\nmachine = \"portal_3x\"\n"
+    "[[channel]]\nnumber = 2\nname = \"second\"\nprogram = \"b.nc\"\nmachine = \"portal_3x\"\n";
+
+// The line in `dir` run to its end.
+std::unique_ptr<LineRun> run_line(const fs::path& dir) {
+  LineSpec spec;
+  spec.file = dir / "line.toml";
+  LineLoadResult r = load_line_run(spec);
+  INFO(r.messages);
+  REQUIRE(r.ok());
+  r.line->start();
+  r.line->run();
+  return std::move(r.line);
+}
+
+// [s] a program's time alone (`ncsim time`).
+double time_alone(const fs::path& program) {
+  RunSpec spec;
+  spec.program.program = program;
+  spec.program.machine_dir = bundled_machine("portal_3x");
+  LoadResult r = load(spec);
+  REQUIRE(r.ok());
+  Run run(std::move(r.loaded), spec);
+  run.start();
+  run.count_time();
+  REQUIRE(run.run() == ipo::Status::finished);
+  return run.time_result().total;
+}
+
+const char* kCut = "%a\nG01 X100 F6000\n";  // about 1 s on portal_3x
+
+}  // namespace
+
+TEST_CASE("#WAIT SYN ends two cycles after the signalling block's last cycle") {
+  const fs::path dir = folder("syn", {{"line.toml", kTwoChannels},
+                                      {"a.nc", std::string(kCut) + "#SIGNAL SYN [ID1 CH2]\nM30\n"},
+                                      {"b.nc", "%b\n#WAIT SYN [ID1 CH1]\nG01 Y10 F6000\nM30\n"},
+                                      {"a_alone.nc", std::string(kCut) + "M30\n"},
+                                      {"b_alone.nc", "%b\nG01 Y10 F6000\nM30\n"}});
+  const double t1 = time_alone(dir / "a_alone.nc");  // the signalling block ends here
+  const double t2 = time_alone(dir / "b_alone.nc");
+  auto line = run_line(dir);
+  REQUIRE(line->status(0) == ipo::Status::finished);
+  REQUIRE(line->status(1) == ipo::Status::finished);
+  const double t = line->t_cycle();
+  CHECK(line->time(0).t_end == doctest::Approx(t1).epsilon(1e-12));
+  // The cut's last cycle ends at t1; the signal goes out in the next cycle (the channel moves
+  // past the block), is seen one cycle later, and channel 2 moves in that cycle: it stood
+  // t1 / T + 1 cycles.
+  CHECK(line->time(1).t_waiting == doctest::Approx(t1 + t).epsilon(1e-12));
+  CHECK(line->time(1).t_end == doctest::Approx(t1 + t + t2).epsilon(1e-12));
+  CHECK(line->t_end() == doctest::Approx(t1 + t + t2).epsilon(1e-12));
+  CHECK(t == doctest::Approx(0.001));
+}
+
+TEST_CASE("#SIGNAL at decoder level goes out when the decoder reaches it, long before SYN") {
+  const fs::path dir = folder("dec", {{"line.toml", kTwoChannels},
+                                      {"a.nc", std::string(kCut) + "#SIGNAL [ID1 CH2]\nM30\n"},
+                                      {"b.nc", "%b\n#WAIT [ID1 CH1]\nG01 Y10 F6000\nM30\n"},
+                                      {"a_alone.nc", std::string(kCut) + "M30\n"}});
+  const double t1 = time_alone(dir / "a_alone.nc");
+  auto line = run_line(dir);
+  REQUIRE(line->status(1) == ipo::Status::finished);
+  // The decoder reads past the cut in the first cycle: the signal is seen in the second.
+  CHECK(line->time(1).t_waiting <= 2 * line->t_cycle() + 1e-12);
+  CHECK(line->time(1).t_waiting < t1 / 10.0);
+}
+
+TEST_CASE("a #WAIT of a #SIGNAL sent already is answered at once at decoder level") {
+  const fs::path dir =
+      folder("ahead", {{"line.toml", kTwoChannels},
+                       {"a.nc", "%a\n#SIGNAL [ID4 P[0]=25 CH2]\nG01 X10 F6000\nM30\n"},
+                       {"b.nc", "%b\nG01 Y100 F6000\n#WAIT [ID4 P[0]=P7 CH1]\nG01 X=P7\nM30\n"}});
+  auto line = run_line(dir);
+  REQUIRE(line->status(1) == ipo::Status::finished);
+  CHECK(line->time(1).t_waiting == 0.0);  // the decoder found the signal: no stop
+  CHECK(line->channel(1).channel().axes().command[0] == doctest::Approx(25.0));
+}
+
+TEST_CASE("two channels waiting for each other end with NC6401 naming both, never hang") {
+  const fs::path dir = folder("dead", {{"line.toml", kTwoChannels},
+                                       {"a.nc", "%a\nG01 X5 F6000\n#WAIT SYN [ID1 CH2]\nM30\n"},
+                                       {"b.nc", "%b\n#WAIT SYN [ID2 CH1]\nM30\n"}});
+  auto line = run_line(dir);
+  for (std::size_t k = 0; k < 2; ++k) {
+    REQUIRE(line->status(k) == ipo::Status::error);
+    const Ending e = line->channel(k).ending(line->status(k));
+    CHECK(e.error_text.find("[NC6401]") != std::string::npos);
+    CHECK(e.error_text.find("channel 1 (first)") != std::string::npos);
+    CHECK(e.error_text.find("channel 2 (second)") != std::string::npos);
+  }
+  const Ending a = line->channel(0).ending(line->status(0));
+  CHECK(a.error_text.find("a.nc:3:1: error:") != std::string::npos);
+  CHECK(a.error_text.find("waits itself at line 2") != std::string::npos);
+}
+
+TEST_CASE("a wait for a channel that ended is NC6401 naming it and its last line") {
+  const fs::path dir = folder("ended", {{"line.toml", kTwoChannels},
+                                        {"a.nc", "%a\nG01 X5 F6000\nM30\n"},
+                                        {"b.nc", "%b\n#WAIT [ID1 CH1]\nM30\n"}});
+  auto line = run_line(dir);
+  CHECK(line->status(0) == ipo::Status::finished);
+  REQUIRE(line->status(1) == ipo::Status::error);
+  const std::string text = line->channel(1).ending(line->status(1)).error_text;
+  CHECK(text.find("b.nc:2:1: error:") != std::string::npos);
+  CHECK(text.find("channel 1 (first) ended after line 2") != std::string::npos);  // its G01
+}
+
+TEST_CASE("a program alone waiting for a broadcast signal nobody sends ends with NC6401") {
+  const fs::path dir = folder("alone", {{"p.nc", "%p\nG01 X5 F6000\n#WAIT SYN [ID9]\nM30\n"}});
+  RunSpec spec;
+  spec.program.program = dir / "p.nc";
+  LoadResult r = load(spec);
+  REQUIRE(r.ok());
+  Run run(std::move(r.loaded), spec);
+  run.start();
+  const ipo::Status s = run.run();
+  REQUIRE(s == ipo::Status::error);
+  const Ending e = run.ending(s);
+  CHECK(e.error_text.find("p.nc:3:1: error:") != std::string::npos);
+  CHECK(e.error_text.find("[NC6401]") != std::string::npos);
+}
+
+TEST_CASE("a line reruns identically, cycle by cycle") {
+  const fs::path dir =
+      folder("rerun", {{"line.toml", kTwoChannels},
+                       {"a.nc", std::string(kCut) + "#SIGNAL SYN [ID1 CH2]\nM30\n"},
+                       {"b.nc", "%b\n#WAIT SYN [ID1 CH1]\nG01 Y10 F6000\nM30\n"}});
+  const auto trace = [&] {
+    LineSpec spec;
+    spec.file = dir / "line.toml";
+    LineLoadResult r = load_line_run(spec);
+    REQUIRE(r.ok());
+    r.line->start();
+    std::vector<double> out;
+    while (r.line->step())
+      for (std::size_t k = 0; k < r.line->size(); ++k)
+        for (const double p : r.line->channel(k).channel().axes().command)
+          out.push_back(p);
+    return out;
+  };
+  const std::vector<double> first = trace();
+  CHECK(first.size() > 1000);
+  CHECK(first == trace());
+}
+
+TEST_CASE("channels at different cycles are NC7105 at the second one's machine") {
+  const fs::path dir =
+      folder("cycles", {{"line.toml",
+                         "[[channel]]\nnumber = 1\nprogram = \"a.nc\"\nmachine = \"portal_3x\"\n"
+                         "[[channel]]\nnumber = 2\nprogram = \"a.nc\"\nmachine = \"m\"\n"},
+                        {"a.nc", "%a\nG01 X5 F6000\nM30\n"}});
+  fs::copy(bundled_machine("portal_3x"), dir / "m");
+  { std::ofstream(dir / "m" / "channel.lis", std::ios::app) << "\nncsim.cycle_time 2000\n"; }
+  LineSpec spec;
+  spec.file = dir / "line.toml";
+  const LineLoadResult r = load_line_run(spec);
+  CHECK_FALSE(r.ok());
+  CHECK(r.exit == Exit::usage);
+  CHECK(r.messages.find("line.toml:8:11: error:") != std::string::npos);
+  CHECK(r.messages.find("[NC7105]") != std::string::npos);
+  spec.cycle_us = 1000;  // one cycle for the line: both run
+  CHECK(load_line_run(spec).ok());
+}

@@ -1,0 +1,196 @@
+#include "scenario/line_file.hpp"
+
+#include <toml++/toml.h>
+
+#include <exception>
+#include <limits>
+#include <utility>
+
+#include "scenario/loader_detail.hpp"
+
+namespace ncsim::scenario {
+namespace {
+
+using namespace detail;
+
+constexpr const char* kLineUnknownKey = "NC7101";
+constexpr const char* kLineMissing = "NC7102";
+constexpr const char* kLineDuplicate = "NC7103";
+constexpr const char* kLineNoChannel = "NC7104";
+constexpr std::int64_t kCycleUsMax = 1'000'000;  // [us] 1 s: the longest cycle a line takes
+
+// Reads a line file's tables, reporting every problem.
+class LineReader : public ReaderBase {
+ public:
+  using ReaderBase::ReaderBase;
+
+  LineFile read(const toml::table& root) {
+    LineFile line;
+    line.file = file_.name();
+    for (auto&& [key, node] : root) {
+      key_ = key.source();
+      const std::string name(key.str());
+      if (name == "description") {
+        if (const auto* s = node.as_string()) {
+          line.description = s->get();
+        } else {
+          wrong_type(node, name, "a string");
+        }
+      } else if (name == "cycle_us") {
+        line.cycle_us = integer(node, name, 1, kCycleUsMax);
+        line.cycle_loc = loc(node.source());
+      } else if (name == "channel") {
+        read_channels(node, line);
+      } else if (name == "conveyor") {
+        Scenario s;
+        read_conveyor(*this, node, s);
+        line.conveyor = std::move(s.conveyor);
+      } else {
+        error(kLineUnknownKey, key.source(),
+              "unknown key `" + name + "`" +
+                  suggestion(name, {"description", "cycle_us", "channel", "conveyor"}));
+      }
+    }
+    if (!root.contains("channel"))
+      error(kLineNoChannel, core::SourceLoc{1, 1},
+            "the line has no channel: give one [[channel]] table per channel");
+    return line;
+  }
+
+ private:
+  std::optional<LinePath> path(const toml::node& node, const std::string& item) {
+    const auto* s = node.as_string();
+    if (s == nullptr) {
+      wrong_type(node, item, "a string (a path relative to the line file)");
+      return std::nullopt;
+    }
+    if (s->get().empty()) {
+      error(kRange, node.source(), item + " is empty: give a path");
+      return std::nullopt;
+    }
+    return LinePath{s->get(), loc(node.source())};
+  }
+
+  void read_channels(const toml::node& node, LineFile& line) {
+    const toml::array* list = node.as_array();
+    if (list == nullptr) {
+      wrong_type(node, "channel", "an array of tables ([[channel]])");
+      return;
+    }
+    if (list->size() > kLineChannelsMax)
+      error(kRange, node.source(),
+            "the line has " + std::to_string(list->size()) + " channels; at most " +
+                std::to_string(kLineChannelsMax));
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      const std::string item = "channel[" + std::to_string(i + 1) + "]";
+      const toml::table* t = list->get(i)->as_table();
+      if (t == nullptr) {
+        wrong_type(*list->get(i), item, "a table ([[channel]])");
+        continue;
+      }
+      if (std::optional<LineChannel> c = read_channel(*t, item, line)) line.channels.push_back(*c);
+    }
+  }
+
+  std::optional<LineChannel> read_channel(const toml::table& t, const std::string& item,
+                                          const LineFile& line) {
+    LineChannel c;
+    c.loc = loc(t.source());
+    const std::size_t errors_before = diags_.error_count();
+    std::optional<LinePath> program;
+    std::optional<LinePath> machine;
+    bool numbered = false;
+    for (auto&& [key, node] : t) {
+      key_ = key.source();
+      const std::string name(key.str());
+      const std::string path_name = item + "." + name;
+      if (name == "number") {
+        if (const auto v = integer(node, path_name, 1, kLineChannelsMax)) {
+          c.number = static_cast<std::uint8_t>(*v);
+          numbered = true;
+          for (const LineChannel& o : line.channels)
+            if (o.number == c.number)
+              error(kLineDuplicate, node.source(),
+                    path_name + " = " + std::to_string(c.number) +
+                        " is taken by the channel at line " + std::to_string(o.loc.line) +
+                        ": channel numbers are unique (CH=..)");
+        }
+      } else if (name == "name") {
+        if (const auto* s = node.as_string()) {
+          c.name = s->get();
+        } else {
+          wrong_type(node, path_name, "a string");
+        }
+      } else if (name == "program") {
+        program = path(node, path_name);
+      } else if (name == "machine") {
+        machine = path(node, path_name);
+      } else if (name == "scenario") {
+        c.scenario = path(node, path_name);
+      } else {
+        error(kLineUnknownKey, key.source(),
+              "unknown key `" + path_name + "`" +
+                  suggestion(name, {"number", "name", "program", "machine", "scenario"}));
+      }
+    }
+    const auto missing = [&](const char* key, const char* what) {
+      error(kLineMissing, c.loc, item + " has no `" + std::string(key) + "` (" + what + ")");
+    };
+    if (!numbered && !t.contains("number")) missing("number", "its channel number, CH=..");
+    if (!t.contains("program")) missing("program", "the NC program it runs");
+    if (!t.contains("machine")) missing("machine", "its machine folder");
+    if (diags_.error_count() != errors_before) return std::nullopt;
+    c.program = *program;
+    c.machine = *machine;
+    if (c.name.empty()) c.name = "channel " + std::to_string(c.number);
+    return c;
+  }
+};
+
+}  // namespace
+
+std::filesystem::path LineFile::resolved(const LinePath& path) const {
+  const std::filesystem::path p(path.text);
+  if (p.is_absolute()) return p;
+  return std::filesystem::path(file).parent_path() / p;
+}
+
+LineLoad parse_line(const core::SourceFile& file) {
+  LineLoad result;
+  toml::table root;
+  try {
+    root = toml::parse(file.text(), file.name());
+  } catch (const toml::parse_error& e) {
+    core::Diagnostic d;
+    d.file = file.name();
+    d.loc = core::SourceLoc{e.source().begin.line, e.source().begin.column};
+    d.id = kSyntax;
+    d.message = "TOML syntax: " + std::string(e.description());
+    result.diagnostics.add(std::move(d));
+    return result;
+  }
+  Context context;
+  context.conveyor_wired = true;  // the line plays its conveyor world
+  LineReader reader(file, context, result.diagnostics);
+  LineFile line = reader.read(root);
+  result.diagnostics.sort_by_position();
+  if (!result.diagnostics.has_errors()) result.line = std::move(line);
+  return result;
+}
+
+LineLoad load_line(const std::filesystem::path& path) {
+  try {
+    const core::SourceFile file = core::SourceFile::load_regular(path, kMaxScenarioBytes);
+    return parse_line(file);
+  } catch (const std::exception& e) {
+    LineLoad result;
+    core::Diagnostic d;
+    d.file = path.string();
+    d.id = kUnreadable;
+    d.message = std::string("cannot read the line file: ") + e.what();
+    result.diagnostics.add(std::move(d));
+    return result;
+  }
+}
+
+}  // namespace ncsim::scenario

@@ -1,3 +1,0 @@
-; expect: 2:1 NC1002 #WAIT SYN
-#WAIT SYN [ID1]
-M30
