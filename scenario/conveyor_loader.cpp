@@ -110,12 +110,9 @@ class ConveyorReader {
   // A string among `choices`; NC7014 otherwise.
   std::optional<std::string> word(const toml::node& node, const std::string& path,
                                   std::initializer_list<std::string_view> choices) {
-    const auto* str = node.as_string();
-    if (str == nullptr) {
-      r_.wrong_type(node, path, "a string");
-      return std::nullopt;
-    }
-    const std::string v = str->get();
+    const auto text = r_.text(node, path);
+    if (!text) return std::nullopt;
+    const std::string& v = *text;
     std::string list;
     for (const std::string_view c : choices) {
       if (v == c) return v;

@@ -31,11 +31,7 @@ class LineReader : public ReaderBase {
       key_ = key.source();
       const std::string name(key.str());
       if (name == "description") {
-        if (const auto* s = node.as_string()) {
-          line.description = s->get();
-        } else {
-          wrong_type(node, name, "a string");
-        }
+        if (auto v = text(node, name)) line.description = std::move(*v);
       } else if (name == "cycle_us") {
         line.cycle_us = integer(node, name, 1, kCycleUsMax);
         line.cycle_loc = loc(node.source());
@@ -59,16 +55,13 @@ class LineReader : public ReaderBase {
 
  private:
   std::optional<LinePath> path(const toml::node& node, const std::string& item) {
-    const auto* s = node.as_string();
-    if (s == nullptr) {
-      wrong_type(node, item, "a string (a path relative to the line file)");
-      return std::nullopt;
-    }
-    if (s->get().empty()) {
+    const auto v = text(node, item, "a string (a path relative to the line file)");
+    if (!v) return std::nullopt;
+    if (v->empty()) {
       error(kRange, node.source(), item + " is empty: give a path");
       return std::nullopt;
     }
-    return LinePath{s->get(), loc(node.source())};
+    return LinePath{*v, loc(node.source())};
   }
 
   void read_channels(const toml::node& node, LineFile& line) {
@@ -116,11 +109,7 @@ class LineReader : public ReaderBase {
                         ": channel numbers are unique (CH=..)");
         }
       } else if (name == "name") {
-        if (const auto* s = node.as_string()) {
-          c.name = s->get();
-        } else {
-          wrong_type(node, path_name, "a string");
-        }
+        if (auto v = text(node, path_name)) c.name = std::move(*v);
       } else if (name == "program") {
         program = path(node, path_name);
       } else if (name == "machine") {

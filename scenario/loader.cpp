@@ -119,11 +119,7 @@ class Reader : public ReaderBase {
       key_ = key.source();
       const std::string name(key.str());
       if (name == "description") {
-        if (const auto* str = node.as_string()) {
-          s.description = str->get();
-        } else {
-          wrong_type(node, name, "a string");
-        }
+        if (auto v = text(node, name)) s.description = std::move(*v);
       } else if (name == "ve") {
         read_ve(node, s);
       } else if (name == "event") {

@@ -86,6 +86,17 @@ class ReaderBase {
           path + " must be " + std::string(expected) + ", not " + std::string(type_name(node)));
   }
 
+  // A string; nullopt when reported (`expected` names what the string is for).
+  std::optional<std::string> text(const toml::node& node, const std::string& path,
+                                  std::string_view expected = "a string") {
+    const auto* str = node.as_string();
+    if (str == nullptr) {
+      wrong_type(node, path, expected);
+      return std::nullopt;
+    }
+    return str->get();
+  }
+
   // A number (integer or float) in [lo, hi] (`unit` for the message); nullopt when reported.
   std::optional<double> number(const toml::node& node, const std::string& path, double lo,
                                double hi, std::string_view unit) {
