@@ -104,6 +104,10 @@ LookAhead::LookAhead(std::size_t capacity, double t_cycle, SoftJoints soft)
   slots_.resize(capacity);
 }
 
+double LookAhead::planned_jerk(const PathLimits& lim) const noexcept {
+  return std::isfinite(lim.j_max) ? lim.j_max : std::max(lim.a_max, lim.d_max) / t_cycle_;
+}
+
 void LookAhead::push(PreparedSegment segment) {
   if (full()) throw std::logic_error("planner: push into a full look-ahead window");
   Slot& slot = at(count_);
@@ -113,7 +117,7 @@ void LookAhead::push(PreparedSegment segment) {
   slot.joint_cap = std::min(segment.v_end, lim.v_max);
   slot.a = lim.a_max;
   slot.d = lim.d_max;
-  slot.j = std::isfinite(lim.j_max) ? lim.j_max : std::max(lim.a_max, lim.d_max) / t_cycle_;
+  slot.j = planned_jerk(lim);
   slot.segment = std::move(segment);
   ++count_;
   backward_from_end();
@@ -604,7 +608,7 @@ void LookAhead::fastest_option(PlannedSegment& out) const noexcept {
     seg.limits = o;
     out.a_max = o.a_max;
     out.d_max = o.d_max;
-    out.j_max = std::isfinite(o.j_max) ? o.j_max : std::max(o.a_max, o.d_max) / t_cycle_;
+    out.j_max = planned_jerk(o);
     const SegmentProfile p = profile(out);
     // Its two ramps must fit the length (profile() keeps the lowest level when none does).
     const double used =

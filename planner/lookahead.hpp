@@ -178,6 +178,9 @@ class LookAhead {
     double exit_cap = 0.0;   ///< backward pass: highest exit velocity [mm/s]
   };
   Slot& at(std::size_t k) noexcept { return slots_[(head_ + k) % slots_.size()]; }
+  /// The path jerk a plan uses: `lim`'s, or for STEP (+inf) max(a, d) / T, the acceleration
+  /// step taking one cycle.
+  double planned_jerk(const PathLimits& lim) const noexcept;
   void backward_from_end();
   /// Largest exit velocity <= v_upper reachable from (v_entry, a_entry) within the slot's
   /// length (a = 0 at the exit); false when none is (a carried speed-up whose release alone
