@@ -161,7 +161,8 @@ bool SignalHub::mark_stuck() {
     return false;  // the common case, every cycle of every run: nothing to decide
   // Channels that can still send: those that run, then those whose wait such a channel (or a
   // signal already sent) can answer, until nothing changes.
-  std::vector<bool> live(states_.size(), false);
+  std::vector<bool>& live = live_;  // its storage kept: this runs every cycle a channel waits
+  live.assign(states_.size(), false);
   for (std::size_t k = 0; k < states_.size(); ++k)
     live[k] = !states_[k].ended && !states_[k].blocked;
   for (bool changed = true; changed;) {

@@ -96,6 +96,7 @@ class SignalHub {
 
   std::vector<State> states_;
   std::vector<Sent> sent_;
+  std::vector<bool> live_;  ///< mark_stuck()'s channels that can still send (kept: per cycle)
   std::uint64_t cycle_ = 0;
 };
 
