@@ -27,9 +27,10 @@ class CommandQueue {
   Command& front() { return items_[head_]; }
   void push_back(Command&& c) { items_.push_back(std::move(c)); }
   void push_back(const Command& c) { items_.push_back(c); }
-  /// Appends Command{line, file, body} built in place.
+  /// Appends Command{line, file, body}. (Command is an aggregate: emplace_back(line, file,
+  /// body) needs parenthesised aggregate initialisation, which clang 14 lacks.)
   void emplace_back(std::uint32_t line, std::uint16_t file, CommandBody&& body) {
-    items_.emplace_back(line, file, std::move(body));
+    items_.push_back(Command{line, file, std::move(body)});
   }
   /// Removes the oldest command; the queue must not be empty.
   void pop_front() {
