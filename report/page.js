@@ -153,7 +153,7 @@
 
   // A toolpath view: coordinates a and b of the thinned path, equal scales. `extras`:
   // outlines drawn with it ({label, color, dash, xs, ys}; xs/ys null: filled in across the
-  // view), included in the view.
+  // view), included in the view where they are near the path (below).
   function pathChart(parent, title, pts, a, b, extras) {
     var dims = D.path.dims, xs = [], ys = [];
     extras = extras || [];
@@ -168,8 +168,17 @@
       if (y !== null) { lo[1] = Math.min(lo[1], y); hi[1] = Math.max(hi[1], y); }
     }
     for (var k = 0; k < xs.length; k++) grow(xs[k], ys[k]);
+    // The view fits the path; an outline is context: its coordinates widen the view only
+    // where they lie within half the path's span of it (a workspace of metres around a path of
+    // centimetres would make the path a speck). Outlines beyond are clipped at the view.
+    var near = Math.max(hi[0] - lo[0], hi[1] - lo[1], 1e-3) * 0.5;
+    var box0 = [lo[0] - near, hi[0] + near, lo[1] - near, hi[1] + near];
     extras.forEach(function (e) {
-      for (var q = 0; q < e.xs.length; q++) grow(e.xs[q], e.ys[q]);
+      for (var q = 0; q < e.xs.length; q++) {
+        var x = e.xs[q], y = e.ys[q];
+        grow(x !== null && x >= box0[0] && x <= box0[1] ? x : null,
+             y !== null && y >= box0[2] && y <= box0[3] ? y : null);
+      }
     });
 
     var span = Math.max(hi[0] - lo[0], hi[1] - lo[1], 1e-3) * 1.08;
