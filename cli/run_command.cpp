@@ -227,7 +227,7 @@ int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   if (recorder) {
     if (const auto status = write_page(options, run, end, *recorder, o, out, err)) return *status;
   }
-  err << runner::warnings_text(run);
+  err << runner::warnings_text(run) << runner::endless_note(end);
   if (!end.failed && !run.channel().scenario_stop()) err << runner::still_moving_text(run);
   if (!end.error_text.empty()) err << end.error_text;
   // The audit covers every cycle that was run, whatever ended the run (issue 36 item 4); a

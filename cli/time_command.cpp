@@ -145,6 +145,9 @@ bool print_time_total(const TimeOptions& options, runner::Run& run, const runner
   if (stop)
     out << "stop: " << scenario::to_string(*stop) << " (" << runner::stop_source(*in.scenario)
         << ") at " << seconds(r.total) << " s\n";
+  else if (end.endless_from)
+    out << "stop: endless (from line " << *end.endless_from << ", NC4904) at " << seconds(r.total)
+        << " s\n";
   return spooled;
 }
 
@@ -183,7 +186,7 @@ int run_time(const TimeOptions& options, std::ostream& out, std::ostream& err) {
     err << "ncsim: error: cannot read back the workpiece rows' temporary file\n";
     return kExitUsage;
   }
-  err << runner::warnings_text(run);
+  err << runner::warnings_text(run) << runner::endless_note(end);
   if (!end.failed && !run.channel().scenario_stop()) err << runner::still_moving_text(run);
   if (end.failed) err << end.error_text;
   // The audit covers every cycle that was run, whatever ended the run (issue 36 item 4); a

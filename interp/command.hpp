@@ -381,6 +381,9 @@ struct Barrier {
 
 struct End {
   int code = 30;  ///< 2 or 30; 0: end of file without M02/M30
+  /// Options::end_when_endless: the decoder ended the program where it came back to an
+  /// earlier state after motion, with no run-time answer between (docs/interp.md)
+  bool endless = false;
 };
 
 using CommandBody = std::variant<Motion, SplineBegin, SplinePoint, SplineEnd, Dwell, Tech,

@@ -239,6 +239,7 @@ bool HashCommands::hash_sync_in(const ast::Block& b, const ast::HashCommand& h) 
   s.latch = ip_.latch;  // answered by the barrier before this block
   ip_.emit(ip_.line, s);
   ip_.blocks_without_motion = 0;
+  ++ip_.world_waits;
   // The catch-up starts where the tool is in PCS1: run-time state (a barrier before the
   // next block that uses the position); decode-only: belt travel 0.
   ip_.position = ip_.frames.sync_rebased(true, ip_.position);

@@ -111,6 +111,13 @@ bool Interpreter::Impl::step() {
     return true;
   }
   if (!repeat.watch(line)) return false;
+  if (options.end_when_endless && repeat.endless_on_its_own()) {
+    // Before the block the decoder came back to: whole passes ran (docs/interp.md).
+    if (spline && !spline_off({line, 1})) return false;  // as at M30
+    emit(line, End{0, true});
+    finished = true;
+    return true;
+  }
   if (options.max_blocks_without_motion != 0 &&
       ++blocks_without_motion > options.max_blocks_without_motion) {
     const std::uint32_t loop_line = flow.loop_line(line);

@@ -70,6 +70,11 @@ struct Options {
   /// does not have is 250008 at its block. Unset (`check`, `trace` of one program): any
   /// channel 1 .. kMaxChannels.
   std::optional<std::vector<std::uint8_t>> channels;
+  /// `time` / `run` without a stop condition ([stop], --max-time): the program ends (End with
+  /// `endless`) before the block where the decoder finds itself back in an earlier state after
+  /// motion with no run-time answer between, i.e. after whole passes of a loop nothing outside
+  /// the program can end (docs/interp.md "Endless programs"). false: it runs on.
+  bool end_when_endless = false;
 };
 
 /// The run time's answer to a Barrier. Only what the barrier asks for is read.

@@ -169,6 +169,9 @@ struct Interpreter::Impl {
   TrcWords trc_words{*this};          // G40/G41/G42, D: the TRC state (trc_words.hpp)
   CommandQueue pending;
   std::uint64_t blocks_without_motion = 0;
+  /// Run-time answers, #WAITs and #SYNC INs decoded: the outside world's part in a loop
+  /// (RepeatWatch::endless_on_its_own)
+  std::uint64_t world_waits = 0;
   RepeatWatch repeat{*this};  // endless programs (repeat_watch.hpp)
   std::uint32_t line = 0;     // line of the block being decoded
   std::uint16_t current_file = 0;

@@ -376,6 +376,47 @@ TEST_CASE("a loop that repeats with motion in it runs on and is named endless") 
   CHECK(interp.error() == nullptr);
 }
 
+TEST_CASE("with end_when_endless a loop that repeats on its own ends after whole passes") {
+  core::SourceFile file("cycle.nc",
+                        "%t\nP1 = 0\n$WHILE 1\nG01 X[P1 + 1] F600\nP1 = 1 - P1\n"
+                        "$ENDWHILE\nM30\n");
+  Options options;
+  options.end_when_endless = true;
+  Interpreter interp(file, test::machine(), options);
+  std::vector<double> xs;
+  std::optional<Command> c;
+  while ((c = interp.next())) {
+    if (const auto* m = std::get_if<Motion>(&c->body)) xs.push_back(m->end[0]);
+    if (const auto* e = std::get_if<End>(&c->body)) {
+      CHECK(e->endless);
+      CHECK(e->code == 0);
+    }
+    REQUIRE(xs.size() < 1000);
+  }
+  CHECK(interp.error() == nullptr);
+  REQUIRE(interp.endless_from().has_value());
+  // The moves alternate 1, 2 as the program says, and the stream ends before the block it
+  // came back to: the moves since it was first there are whole repetitions.
+  REQUIRE(xs.size() >= 2);
+  for (std::size_t i = 0; i < xs.size(); ++i)
+    CHECK(xs[i] == (i % 2 == 0 ? 1.0 : 2.0));
+}
+
+TEST_CASE("with end_when_endless a loop that waits for the outside world runs on") {
+  // Each pass waits for a signal: what ends the loop is outside the program (NC4904 in check).
+  core::SourceFile file("wait.nc", "%t\n$WHILE 1\nG01 X1 F600\n#WAIT [ID1]\nG01 X2\n"
+                                   "$ENDWHILE\nM30\n");
+  Options options;
+  options.end_when_endless = true;
+  Interpreter interp(file, test::machine(), options);
+  int commands = 0;
+  for (; commands < 2000 && interp.next_decode_only(); ++commands) {
+  }
+  CHECK(commands == 2000);
+  CHECK(interp.error() == nullptr);
+  CHECK(interp.endless_from().has_value());
+}
+
 TEST_CASE("an endless $WHILE [TRUE] yields 1,000,000 commands in constant memory") {
   core::SourceFile file("endless.nc",
                         "%t\nP1 = 0\n$WHILE [TRUE]\nP1 = P1 + 1\n$IF P1 > 3\nP1 = 0\n$ENDIF\n"

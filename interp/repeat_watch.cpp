@@ -104,7 +104,10 @@ bool RepeatWatch::watch(std::uint32_t block_line) {
                         "same variables and state after " +
                             std::to_string(decoded_ - at_) + " blocks, so the program cannot end");
       }
-      if (!endless_from_) endless_from_ = line_;
+      if (!endless_from_) {
+        endless_from_ = line_;
+        on_its_own_ = ip_.world_waits == world_at_;
+      }
     }
   }
   if (decoded_ - at_ >= period_) {
@@ -113,6 +116,7 @@ bool RepeatWatch::watch(std::uint32_t block_line) {
     line_ = block_line;
     fingerprint_ = fingerprint(cost);
     at_ = decoded_;
+    world_at_ = ip_.world_waits;
     period_ *= 2;
     credit_ = cost / 16;
   }

@@ -19,6 +19,9 @@ class RepeatWatch {
   bool watch(std::uint32_t block_line);  // counts the block at the decoder's pc; false: NC4901
   /// The line of the block the decoder came back to in the same state with motion between.
   std::optional<std::uint32_t> endless_from() const { return endless_from_; }
+  /// The first repeat found took no run-time answer between the two states (no measured
+  /// value, signal, V.E. answer or #SYNC IN): nothing from outside the program can end it.
+  bool endless_on_its_own() const { return on_its_own_; }
 
  private:
   std::uint64_t fingerprint(std::size_t& cost) const;
@@ -31,7 +34,9 @@ class RepeatWatch {
   std::uint64_t period_ = 1;   // blocks until the next save
   std::uint64_t credit_ = 0;   // blocks to decode before the next (costly) comparison
   std::uint64_t decoded_ = 0;  // blocks decoded in this run
+  std::uint64_t world_at_ = 0;  // Impl::world_waits when saved
   std::optional<std::uint32_t> endless_from_;
+  bool on_its_own_ = false;
 };
 
 }  // namespace ncsim::interp

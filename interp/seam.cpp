@@ -249,6 +249,7 @@ void Seam::apply(const RunState& state, const Barrier& barrier) {
   // A run-time answer is time passing (the channel drained its queue and waited), as motion
   // is: a loop that waits for a V.E. value the outside world writes is not "cannot end".
   ip_.blocks_without_motion = 0;
+  ++ip_.world_waits;
   ip_.resumed = true;
 }
 

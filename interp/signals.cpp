@@ -153,6 +153,7 @@ bool HashCommands::hash_signal(const ast::Block& b, const ast::HashCommand& h) {
     return true;
   }
   ip_.blocks_without_motion = 0;  // a wait lets time pass
+  ++ip_.world_waits;
   if (h.kind == HashKind::wait_signal_syn) {
     ip_.emit(ip_.line, SignalWait{s->id, s->receivers, false});
     return true;

@@ -207,6 +207,7 @@ ProgramSource::Pulled ProgramSource::run_command(interp::Command& cmd, ipo::Item
           produced = true;
         } else if constexpr (std::is_same_v<T, interp::End>) {
           ended = true;
+          if (body.endless) ended_endless_ = interp_.endless_from();
         } else if constexpr (std::is_same_v<T, interp::Message> ||
                              std::is_same_v<T, interp::ProgramStop>) {
           // pass: no motion (M00/M01 do not stop: there is no operator to press start)

@@ -92,6 +92,9 @@ class ProgramSource final : public ipo::Source {
   /// The error that ended the stream: the interpreter's, or the adapter's NC6001. Check it
   /// after the interpolator finished: a stream that ends with an error is not a program end.
   const core::Diagnostic* error() const { return errors_.error(); }
+  /// The line the program runs endlessly from, when the stream ended there
+  /// (interp::Options::end_when_endless); empty otherwise.
+  std::optional<std::uint32_t> ended_endless() const noexcept { return ended_endless_; }
 
   /// Barriers that want V.E. values are answered from `store` (must outlive the source; null:
   /// the decode-only state again). `flush`: the path stops before each such barrier (a 0 s
@@ -144,6 +147,7 @@ class ProgramSource final : public ipo::Source {
   const machines::Machine& machine_;
   SourceConfig config_;  ///< checked before the parts are built
   SourceErrors errors_;
+  std::optional<std::uint32_t> ended_endless_;
   AxisLayout layout_;
   CsFrames frames_;
   BeltSplit belt_;

@@ -168,6 +168,8 @@ LoadResult load(const RunSpec& spec) {
   }
   if (spec.wrap && in.port) in.port = spec.wrap(std::move(in.port));
   if (spec.conv_vel) in.interp.conv_vel = spec.conv_vel;
+  // Nothing else would end a program that runs endlessly on its own (docs/interp.md).
+  in.interp.end_when_endless = !(in.scenario && in.scenario->stop.any());
   return r;
 }
 

@@ -117,7 +117,8 @@ Ending Run::ending(ipo::Status last) const {
   e.failed = last == ipo::Status::error || (last == ipo::Status::finished &&
                                             src_.error() != nullptr && !channel_->scenario_stop());
   if (e.failed) e.error_text = failure_text(*this);
-  e.stop = stop_reason(e.failed, *channel_);
+  e.endless_from = src_.ended_endless();
+  e.stop = stop_reason(e.failed, *channel_, e.endless_from.has_value());
   return e;
 }
 

@@ -34,7 +34,10 @@ namespace ncsim::runner {
 struct Ending {
   bool failed = false;     ///< a run-time error, or a program error that ended the source
   std::string error_text;  ///< the error, positioned (file:line:col, the block), "" when none
-  std::string stop;        ///< why it ended: "error", the [stop] reason, "program end"
+  std::string stop;        ///< why it ended: "error", the [stop] reason, "endless", "program end"
+  /// The line the program runs endlessly from, when that ended it (no [stop]: docs/interp.md
+  /// "Endless programs")
+  std::optional<std::uint32_t> endless_from;
 };
 
 class Run {

@@ -101,13 +101,23 @@ std::string still_moving_text(const Run& run) {
          "[NC6106]\n";
 }
 
+std::string endless_note(const Ending& end) {
+  if (!end.endless_from) return {};
+  return "ncsim: note: the program runs endlessly from line " +
+         std::to_string(*end.endless_from) +
+         ": it came back there in the same state with nothing outside the program between, so "
+         "the run ended there, after whole repetitions (NC4904); --max-time S or a scenario "
+         "[stop] runs it longer\n";
+}
+
 std::string stop_source(const scenario::Scenario& s) {
   return s.file.empty() ? std::string("--max-time") : "scenario '" + s.file + "'";
 }
 
-std::string stop_reason(bool failed, const channel::Channel& ch) {
+std::string stop_reason(bool failed, const channel::Channel& ch, bool endless) {
   if (failed) return std::string(scenario::to_string(scenario::StopReason::error));
   if (const auto& s = ch.scenario_stop()) return std::string(scenario::to_string(*s));
+  if (endless) return std::string(scenario::to_string(scenario::StopReason::endless));
   return std::string(scenario::to_string(scenario::StopReason::program_end));
 }
 

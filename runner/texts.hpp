@@ -15,6 +15,7 @@
 namespace ncsim::runner {
 
 class Run;
+struct Ending;
 
 /// The text of a run's end when it failed: the run-time error (file:line:col, the time, the id)
 /// or the program error that ended the source (with a subroutine file's syntax errors).
@@ -25,9 +26,12 @@ std::string warnings_text(const Run& run);
 /// A run that ended at the program's end with axes still moving: the NC6106 warning naming
 /// them, "" when all stand (issue 34). Not after an error or a [stop].
 std::string still_moving_text(const Run& run);
-/// Why a run ended (docs/scenario.md "[stop]"): "error", the scenario's [stop] reason, or the
+/// Why a run ended (docs/scenario.md "[stop]"): "error", the scenario's [stop] reason,
+/// "endless" (`endless`: the source ended where the program repeats, docs/interp.md), or the
 /// program end.
-std::string stop_reason(bool failed, const channel::Channel& channel);
+std::string stop_reason(bool failed, const channel::Channel& channel, bool endless);
+/// The note of a run the program's endless repeat ended (Ending::endless_from), "" otherwise.
+std::string endless_note(const Ending& end);
 /// What set the stop condition: "scenario 'f.toml'", or "--max-time" for the one the option made.
 std::string stop_source(const scenario::Scenario& s);
 /// Where a block is: its line in the main program, `file:line` in a subroutine file.

@@ -456,6 +456,8 @@ std::string_view to_string(StopReason reason) {
       return "stop.cycles";
     case StopReason::line_passes:
       return "stop.passes";
+    case StopReason::endless:
+      return "endless";
   }
   return "?";
 }

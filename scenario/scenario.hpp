@@ -89,9 +89,11 @@ struct StopConditions {
 
 /// Why a run ended, for the report. The channel owns `program_end` and `error`; the others
 /// come from the scenario's [stop] conditions.
-enum class StopReason { program_end, error, time, cycles, line_passes };
+/// `endless`: no [stop], and the program came back to an earlier state on its own
+/// (interp::Options::end_when_endless).
+enum class StopReason { program_end, error, time, cycles, line_passes, endless };
 
-/// "program end", "error", "stop.time", "stop.cycles", "stop.passes".
+/// "program end", "error", "stop.time", "stop.cycles", "stop.passes", "endless".
 std::string_view to_string(StopReason reason);
 
 /// A V.E. initial value of `[ve]`.

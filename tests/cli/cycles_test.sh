@@ -84,6 +84,19 @@ expect "run --max-time 1 closes its CSV with the reason" 0 '' 'run stopped \(--m
   run --max-time 1 -o "$work/endless.csv" "$work/endless.nc"
 expect "--max-time takes a positive number of seconds" 2 '' 'max-time' -- \
   time --max-time 0 "$work/endless.nc"
+# Without --max-time or [stop] it does not run until killed: it ends after whole passes, when
+# the decoder finds it back in the same state, and says so (docs/interp.md "Endless programs").
+expect "time without --max-time ends an endless program and says why" 0 \
+  'stop: endless \(from line [34], NC4904\)' 'runs endlessly from line [34]' -- time "$work/endless.nc"
+expect "run without --max-time closes its CSV with the reason" 0 '' 'runs endlessly from line [34]' -- \
+  run -o "$work/endless2.csv" "$work/endless.nc"
+checks=$((checks + 1))
+if grep -q '^# stop: endless$' "$work/endless2.csv"; then
+  echo "ok   the CSV of an endless run ends with '# stop: endless'"
+else
+  failures=$((failures + 1))
+  echo "FAIL the CSV of an endless run: $(tail -n 2 "$work/endless2.csv")"
+fi
 # Technology functions (docs/interp.md "Technology functions"): mill_3x's M06 MVS_SVS 5.5 s,
 # M03 MVS_SNS 1.2 s, M05 MNS_SNS 0.9 s in their own column, and a scenario's [tech] over them.
 cat >"$work/tool.nc" <<'NC'
