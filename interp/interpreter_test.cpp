@@ -404,8 +404,9 @@ TEST_CASE("with end_when_endless a loop that repeats on its own ends after whole
 
 TEST_CASE("with end_when_endless a loop that waits for the outside world runs on") {
   // Each pass waits for a signal: what ends the loop is outside the program (NC4904 in check).
-  core::SourceFile file("wait.nc", "%t\n$WHILE 1\nG01 X1 F600\n#WAIT [ID1]\nG01 X2\n"
-                                   "$ENDWHILE\nM30\n");
+  core::SourceFile file("wait.nc",
+                        "%t\n$WHILE 1\nG01 X1 F600\n#WAIT [ID1]\nG01 X2\n"
+                        "$ENDWHILE\nM30\n");
   Options options;
   options.end_when_endless = true;
   Interpreter interp(file, test::machine(), options);
