@@ -28,6 +28,9 @@ struct Target {
   fs::path golden;    ///< <name>.golden beside it; a line: its folder (ch<N>_<name>.golden)
   std::string label;  ///< how the user named it (the folder or the file)
   bool line = false;  ///< a production line (docs/golden.md "Lines")
+  std::string
+      bless_as;  ///< what `ncsim golden bless` takes for it ("": label; a channel: its line)
+  const std::string& bless_label() const { return bless_as.empty() ? label : bless_as; }
 };
 
 std::string path_text(const fs::path& p) {
@@ -46,18 +49,18 @@ std::optional<Target> resolve(const fs::path& arg, std::ostream& err) {
     const fs::path program = fs::path(label) / (name + ".nc");
     const fs::path line = fs::path(label) / "line.toml";
     if (!fs::is_regular_file(program, ec) && fs::is_regular_file(line, ec))
-      return Target{line, fs::path(label), label, true};
+      return Target{line, fs::path(label), label, true, ""};
     if (!fs::is_regular_file(program, ec)) {
       err << "ncsim: error: program folder '" << label << "' holds no " << name
           << ".nc (nor a line.toml) [NC8008]\n";
       return std::nullopt;
     }
-    return Target{program, fs::path(label) / (name + ".golden"), label};
+    return Target{program, fs::path(label) / (name + ".golden"), label, false, ""};
   }
   if (fs::is_regular_file(arg, ec)) {
     fs::path golden = arg;
     golden.replace_extension(".golden");
-    return Target{arg, golden, label};
+    return Target{arg, golden, label, false, ""};
   }
   err << "ncsim: error: no such program folder or file: '" << label << "' [NC8008]\n";
   return std::nullopt;
@@ -271,7 +274,7 @@ Verdict compare_run(const Target& t, const fs::path& csv_path, const Run& run, s
       << ", the first at t=" << time(first.cycle) << " s";
   if (first.line > 0) out << " line " << first.line;
   out << (first.axis.empty() ? "" : " axis " + first.axis) << "; if the change is intended, "
-      << "review it and run: ncsim golden bless " << t.label << '\n';
+      << "review it and run: ncsim golden bless " << t.bless_label() << '\n';
   return Verdict::mismatch;
 }
 
@@ -373,7 +376,7 @@ LineRunFiles run_line_target(const Target& t) {
 std::pair<Target, Run> channel_of(const Target& t, const LineGoldenChannel& c,
                                   const std::string& line_err) {
   const std::string stem = fs::path(c.csv_name).stem().string();
-  Target ct{c.program, t.golden / (stem + ".golden"), t.label + "/" + stem, false};
+  Target ct{c.program, t.golden / (stem + ".golden"), t.label + "/" + stem, false, t.label};
   Run run;
   run.outcome.status = c.status;
   run.err = c.error_text.empty() ? line_err : c.error_text;

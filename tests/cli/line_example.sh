@@ -23,6 +23,17 @@ if grep -q '^  belt: ' "$work/time1"; then
     a=\$(sed -nE 's/^  belt: ([0-9]+) workpiece.*/\1/p' '$work/time1')
     [[ \$(grep -c '^  workpiece [0-9]*: arrived' '$work/time1') -eq \$a ]]"
 fi
+expect "line time --json: one JSON object" 0 '^\{"line":' '' -- line time --json "$line"
+holds "line time --json: the channels and, with a belt, counts that close" python3 -c "
+import json, sys
+r = json.load(open('$work/out'))
+assert len(r['channels']) >= 2 and r['end_s'] > 0
+w = r.get('workpieces')
+if w is not None:
+    assert w['taken'] + w['missed'] + w['on_belt'] == w['arrived'], w
+    assert len(w['fates']) == w['arrived']
+    assert sum(c.get('taken', 0) for c in r['channels']) == w['taken']
+"
 expect "line time --audit: every channel's setpoints within their limits" 0 '' '' \
   -- line time --audit "$line"
 mkdir -p "$work/a" "$work/b"
