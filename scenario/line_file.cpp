@@ -17,6 +17,7 @@ constexpr const char* kLineUnknownKey = "NC7101";
 constexpr const char* kLineMissing = "NC7102";
 constexpr const char* kLineDuplicate = "NC7103";
 constexpr const char* kLineNoChannel = "NC7104";
+constexpr const char* kLineSensorPosition = "NC7110";
 constexpr std::int64_t kCycleUsMax = 1'000'000;  // [us] 1 s: the longest cycle a line takes
 constexpr double kBeltMax = 1e6;                 // [mm] 1 km: sensor_at and belt_end
 
@@ -59,6 +60,11 @@ class LineReader : public ReaderBase {
                     " mm is before the sensor of channel " + std::to_string(c.number) +
                     " (sensor_at = " + value_text(c.sensor_at) +
                     " mm): the belt ends after the last sensor");
+    if (line.conveyor && line.conveyor->sensor.position)
+      error(kLineSensorPosition, line.conveyor->loc,
+            "conveyor.sensor.position is not played in a line: each channel's sensor is its "
+            "own, at its T0 (P-CHAN-00368) in its machine and at its `sensor_at` along the belt "
+            "(docs/lines.md)");
     if (!root.contains("channel"))
       error(kLineNoChannel, core::SourceLoc{1, 1},
             "the line has no channel: give one [[channel]] table per channel");

@@ -81,4 +81,8 @@ TEST_CASE("a channel's sensor along the belt and the belt's end (docs/lines.md)"
         std::vector<std::string>{"5:13 NC7004"});
   CHECK(diagnostics(std::string(kChannel) + "sensor_at = \"near\"\n") ==
         std::vector<std::string>{"5:13 NC7003"});
+  // The line's sensor is where the stream arrives; each channel's own is at its T0.
+  CHECK(diagnostics(std::string(kChannel) +
+                    "[conveyor]\nmode = \"spindle\"\n[conveyor.sensor]\nposition = 5\n") ==
+        std::vector<std::string>{"5:1 NC7110"});
 }
