@@ -12,6 +12,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/line_command.hpp"
 #include "cli/run_commands.hpp"
 #include "core/output_file.hpp"
 #include "golden/golden.hpp"
@@ -21,11 +22,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// A program and its golden.
+/// A program and its golden, or a line (a folder with line.toml) and its folder of goldens.
 struct Target {
-  fs::path program;   ///< the .nc file
-  fs::path golden;    ///< <name>.golden beside it
+  fs::path program;   ///< the .nc file; a line: its line.toml
+  fs::path golden;    ///< <name>.golden beside it; a line: its folder (ch<N>_<name>.golden)
   std::string label;  ///< how the user named it (the folder or the file)
+  bool line = false;  ///< a production line (docs/golden.md "Lines")
+  std::string
+      bless_as;  ///< what `ncsim golden bless` takes for it ("": label; a channel: its line)
+  const std::string& bless_label() const { return bless_as.empty() ? label : bless_as; }
 };
 
 std::string path_text(const fs::path& p) {
@@ -42,16 +47,20 @@ std::optional<Target> resolve(const fs::path& arg, std::ostream& err) {
   if (fs::is_directory(arg, ec)) {
     const std::string name = fs::path(label).filename().string();
     const fs::path program = fs::path(label) / (name + ".nc");
+    const fs::path line = fs::path(label) / "line.toml";
+    if (!fs::is_regular_file(program, ec) && fs::is_regular_file(line, ec))
+      return Target{line, fs::path(label), label, true, ""};
     if (!fs::is_regular_file(program, ec)) {
-      err << "ncsim: error: program folder '" << label << "' holds no " << name << ".nc [NC8008]\n";
+      err << "ncsim: error: program folder '" << label << "' holds no " << name
+          << ".nc (nor a line.toml) [NC8008]\n";
       return std::nullopt;
     }
-    return Target{program, fs::path(label) / (name + ".golden"), label};
+    return Target{program, fs::path(label) / (name + ".golden"), label, false, ""};
   }
   if (fs::is_regular_file(arg, ec)) {
     fs::path golden = arg;
     golden.replace_extension(".golden");
-    return Target{arg, golden, label};
+    return Target{arg, golden, label, false, ""};
   }
   err << "ncsim: error: no such program folder or file: '" << label << "' [NC8008]\n";
   return std::nullopt;
@@ -89,6 +98,21 @@ std::optional<std::vector<Target>> library_targets(const GoldenOptions& options,
     if (!t) return std::nullopt;
     const fs::path base = root.filename().empty() ? root.parent_path().filename() : root.filename();
     t->label = (base / f.filename()).string();
+    out.push_back(std::move(*t));
+  }
+  // The library's lines: lines/<name>/line.toml, one golden per channel.
+  std::vector<fs::path> lines;
+  if (fs::is_directory(root / "lines", ec)) {
+    for (const auto& entry : fs::directory_iterator(root / "lines", ec))
+      if (entry.is_directory() && fs::is_regular_file(entry.path() / "line.toml", ec))
+        lines.push_back(entry.path());
+  }
+  std::sort(lines.begin(), lines.end());
+  for (const fs::path& f : lines) {
+    auto t = resolve(f, err);
+    if (!t) return std::nullopt;
+    const fs::path base = root.filename().empty() ? root.parent_path().filename() : root.filename();
+    t->label = (base / "lines" / f.filename()).string();
     out.push_back(std::move(*t));
   }
   return out;
@@ -179,7 +203,16 @@ std::unique_ptr<std::istream> open_csv(const fs::path& csv) {
 
 enum class Verdict { ok, mismatch, failed };
 
+Verdict compare_run(const Target& t, const fs::path& csv_path, const Run& run, std::ostream& out,
+                    std::ostream& err);
+Verdict write_blessed(const Target& t, core::OutputFile golden_file, const fs::path& csv_path,
+                      const Run& run, std::ostream& out, std::ostream& err);
+
+Verdict check_line(const Target& t, std::ostream& out, std::ostream& err);
+Verdict bless_line(const Target& t, std::ostream& out, std::ostream& err);
+
 Verdict check_one(const Target& t, std::ostream& out, std::ostream& err) {
+  if (t.line) return check_line(t, out, err);
   std::error_code ec;
   if (!fs::is_regular_file(t.golden, ec)) {
     err << t.golden.string() << ": error: no golden for " << t.program.string()
@@ -195,11 +228,17 @@ Verdict check_one(const Target& t, std::ostream& out, std::ostream& err) {
     out << t.label << ": FAILED\n";
     return Verdict::failed;
   }
+  return compare_run(t, csv.path(), run, out, err);
+}
+
+// Compares the run's CSV with t's golden (which exists) and reports.
+Verdict compare_run(const Target& t, const fs::path& csv_path, const Run& run, std::ostream& out,
+                    std::ostream& err) {
   std::ifstream a(t.golden, std::ios::binary);
   std::ifstream b(t.golden, std::ios::binary);
   golden::Comparison c;
   try {
-    const auto in = open_csv(csv.path());
+    const auto in = open_csv(csv_path);
     golden::RunCsv reader(*in);
     c = golden::compare(reader, run.outcome, a, b);
   } catch (const golden::FormatError& e) {
@@ -235,11 +274,12 @@ Verdict check_one(const Target& t, std::ostream& out, std::ostream& err) {
       << ", the first at t=" << time(first.cycle) << " s";
   if (first.line > 0) out << " line " << first.line;
   out << (first.axis.empty() ? "" : " axis " + first.axis) << "; if the change is intended, "
-      << "review it and run: ncsim golden bless " << t.label << '\n';
+      << "review it and run: ncsim golden bless " << t.bless_label() << '\n';
   return Verdict::mismatch;
 }
 
 Verdict bless_one(const Target& t, std::ostream& out, std::ostream& err) {
+  if (t.line) return bless_line(t, out, err);
   // The golden is opened before the run: an unwritable folder is reported at once.
   auto opened = core::OutputFile::open(t.golden);
   if (const auto* why = std::get_if<std::string>(&opened)) {
@@ -255,6 +295,12 @@ Verdict bless_one(const Target& t, std::ostream& out, std::ostream& err) {
     print_run_err(run.err, err);
     return Verdict::failed;
   }
+  return write_blessed(t, std::move(golden_file), csv.path(), run, out, err);
+}
+
+// Writes t's golden from the run's CSV (the run done) and reports.
+Verdict write_blessed(const Target& t, core::OutputFile golden_file, const fs::path& csv_path,
+                      const Run& run, std::ostream& out, std::ostream& err) {
   // A previous golden's settings (sample interval, tolerances) are kept.
   std::optional<golden::Settings> kept;
   std::string before;
@@ -276,7 +322,7 @@ Verdict bless_one(const Target& t, std::ostream& out, std::ostream& err) {
   golden::Summary sum;
   std::uint64_t cycle_us = 0;
   try {
-    const auto in = open_csv(csv.path());
+    const auto in = open_csv(csv_path);
     golden::RunCsv reader(*in);
     cycle_us = reader.cycle_us();
     sum = golden::write_golden(reader, run.outcome, golden::settings_for(cycle_us, kept), text);
@@ -304,6 +350,89 @@ Verdict bless_one(const Target& t, std::ostream& out, std::ostream& err) {
     print_run_err(run.err, err);
   }
   return Verdict::ok;
+}
+
+/// A line's run for its goldens: each channel's CSV in a temporary file, its outcome.
+struct LineRunFiles {
+  int status = 0;  ///< 2: the line did not run
+  std::vector<LineGoldenChannel> channels;
+  std::vector<std::unique_ptr<TempFile>> csvs;  ///< channel k's CSV
+  std::string err;
+};
+
+LineRunFiles run_line_target(const Target& t) {
+  LineRunFiles r;
+  std::ostringstream err;
+  const auto csv_path = [&](const std::string& name) {
+    r.csvs.push_back(std::make_unique<TempFile>(t.label + "_" + name));
+    return r.csvs.back()->path();
+  };
+  r.status = run_line_golden(t.program.string(), csv_path, r.channels, err);
+  r.err = err.str();
+  return r;
+}
+
+// Channel c of line t as a program target and its run (for compare_run / write_blessed).
+std::pair<Target, Run> channel_of(const Target& t, const LineGoldenChannel& c,
+                                  const std::string& line_err) {
+  const std::string stem = fs::path(c.csv_name).stem().string();
+  Target ct{c.program, t.golden / (stem + ".golden"), t.label + "/" + stem, false, t.label};
+  Run run;
+  run.outcome.status = c.status;
+  run.err = c.error_text.empty() ? line_err : c.error_text;
+  if (c.status == kExitProgramErrors) run.outcome.error = golden::parse_error(c.error_text);
+  const std::string prefix = ct.program.string() + ":";
+  if (run.outcome.error && run.outcome.error->text.rfind(prefix, 0) == 0)
+    run.outcome.error->text.replace(0, prefix.size() - 1, ct.program.filename().string());
+  return {ct, run};
+}
+
+Verdict check_line(const Target& t, std::ostream& out, std::ostream& err) {
+  const LineRunFiles r = run_line_target(t);
+  if (r.status == kExitUsage) {
+    err << t.label << ": error: the line could not be run (exit 2) [NC8007]\n";
+    print_run_err(r.err, err);
+    out << t.label << ": FAILED\n";
+    return Verdict::failed;
+  }
+  Verdict worst = Verdict::ok;
+  for (std::size_t k = 0; k < r.channels.size(); ++k) {
+    const auto [ct, run] = channel_of(t, r.channels[k], r.err);
+    std::error_code ec;
+    Verdict v = Verdict::mismatch;
+    if (!fs::is_regular_file(ct.golden, ec)) {
+      err << ct.golden.string() << ": error: no golden for channel " << ct.label
+          << "; review a run and bless it: ncsim golden bless " << t.label << " [NC8005]\n";
+      out << ct.label << ": NO GOLDEN\n";
+    } else {
+      v = compare_run(ct, r.csvs[k]->path(), run, out, err);
+    }
+    if (v == Verdict::failed || (v == Verdict::mismatch && worst == Verdict::ok)) worst = v;
+  }
+  return worst;
+}
+
+Verdict bless_line(const Target& t, std::ostream& out, std::ostream& err) {
+  const LineRunFiles r = run_line_target(t);
+  if (r.status == kExitUsage) {
+    err << t.label << ": error: the line could not be run (exit 2); nothing blessed [NC8007]\n";
+    print_run_err(r.err, err);
+    return Verdict::failed;
+  }
+  Verdict worst = Verdict::ok;
+  for (std::size_t k = 0; k < r.channels.size(); ++k) {
+    const auto [ct, run] = channel_of(t, r.channels[k], r.err);
+    auto opened = core::OutputFile::open(ct.golden);
+    if (const auto* why = std::get_if<std::string>(&opened)) {
+      err << ct.label << ": error: " << *why << "; nothing blessed [NC8009]\n";
+      worst = Verdict::failed;
+      continue;
+    }
+    if (write_blessed(ct, std::move(std::get<core::OutputFile>(opened)), r.csvs[k]->path(), run,
+                      out, err) != Verdict::ok)
+      worst = Verdict::failed;
+  }
+  return worst;
 }
 
 int finish(std::size_t n, std::size_t ok, std::size_t mismatched, std::size_t failed,

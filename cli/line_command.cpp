@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cli/csv_sink.hpp"
+#include "cli/line_report.hpp"
 #include "cli/number_format.hpp"
 #include "cli/run_commands.hpp"
 #include "core/number_text.hpp"
@@ -38,10 +39,10 @@ std::string csv_name(const scenario::LineChannel& c) {
   return name + ".csv";
 }
 
-// Opens channel k's CSV in `dir`; false (reported) when it cannot be.
-bool open_csv(const runner::LineRun& line, std::size_t k, const std::string& dir, ChannelCsv& csv,
-              std::ostream& err) {
-  auto opened = core::OutputFile::open(std::filesystem::path(dir) / csv_name(line.channel_spec(k)));
+// Opens channel k's CSV at `path`; false (reported) when it cannot be.
+bool open_csv(const runner::LineRun& line, std::size_t k, const std::filesystem::path& path,
+              ChannelCsv& csv, std::ostream& err) {
+  auto opened = core::OutputFile::open(path);
   if (const auto* why = std::get_if<std::string>(&opened)) {
     err << "ncsim: error: " << *why << " [NC9150]\n";
     return false;
@@ -89,26 +90,6 @@ bool close_csvs(runner::LineRun& line, std::vector<ChannelCsv>& csvs, std::ostre
   return ok;
 }
 
-// The line's time: one line per channel, then the line (docs/lines.md "ncsim line").
-void print_times(const runner::LineRun& line, std::ostream& out) {
-  const double t_line = line.t_end();
-  const auto cycles = static_cast<std::uint64_t>(std::llround(t_line / line.t_cycle()));
-  out << line.file().file << ": " << seconds(t_line) << " s (" << cycles << " cycles of "
-      << core::human(line.t_cycle() * 1e3) << " ms), " << line.size() << " channel"
-      << (line.size() == 1 ? "" : "s") << '\n';
-  for (std::size_t k = 0; k < line.size(); ++k) {
-    const runner::LineChannelTime& t = line.time(k);
-    const double busy =
-        t_line > 0.0 ? std::max(0.0, std::round((t.t_end - t.t_waiting) / t_line * 1000.0)) / 10.0
-                     : 0.0;
-    const std::string number = "channel " + std::to_string(line.channel_spec(k).number);
-    const std::string& name = line.channel_spec(k).name;
-    out << "  " << number << (name == number ? "" : " " + name) << ": end " << seconds(t.t_end)
-        << " s, waiting " << seconds(t.t_waiting) << " s, utilisation " << core::human(busy)
-        << " %, " << line.channel(k).ending(line.status(k)).stop << '\n';
-  }
-}
-
 int run_line(const LineOptions& options, std::ostream& out, std::ostream& err) {
   runner::LineSpec spec;
   spec.file = options.file;
@@ -122,7 +103,9 @@ int run_line(const LineOptions& options, std::ostream& out, std::ostream& err) {
   std::vector<ChannelCsv> csvs(options.mode == "run" ? line.size() : 0);
   std::vector<std::vector<ipo::Sink*>> sinks(line.size());
   for (std::size_t k = 0; k < csvs.size(); ++k) {
-    if (!open_csv(line, k, options.output, csvs[k], err)) return kExitUsage;
+    const std::filesystem::path path =
+        std::filesystem::path(options.output) / csv_name(line.channel_spec(k));
+    if (!open_csv(line, k, path, csvs[k], err)) return kExitUsage;
     sinks[k].push_back(csvs[k].sink.get());
   }
   line.start(sinks);
@@ -130,7 +113,11 @@ int run_line(const LineOptions& options, std::ostream& out, std::ostream& err) {
     wire_csv(line, k, *csvs[k].sink);
   line.run();
   if (!csvs.empty() && !close_csvs(line, csvs, err)) return kExitUsage;
-  print_times(line, out);
+  if (options.json) {
+    print_line_json(line, out);
+  } else {
+    print_line_text(line, out);
+  }
   bool failed = false;
   bool audit_failed = false;
   for (std::size_t k = 0; k < line.size(); ++k) {
@@ -149,6 +136,44 @@ int run_line(const LineOptions& options, std::ostream& out, std::ostream& err) {
 }
 
 }  // namespace
+
+int run_line_golden(const std::string& file,
+                    const std::function<std::filesystem::path(const std::string&)>& csv_path,
+                    std::vector<LineGoldenChannel>& channels, std::ostream& err) {
+  runner::LineSpec spec;
+  spec.file = file;
+  spec.audit = true;
+  runner::LineLoadResult loaded = runner::load_line_run(spec);
+  err << loaded.messages;
+  if (!loaded.ok()) return kExitUsage;
+  runner::LineRun& line = *loaded.line;
+  std::vector<ChannelCsv> csvs(line.size());
+  std::vector<std::vector<ipo::Sink*>> sinks(line.size());
+  for (std::size_t k = 0; k < line.size(); ++k) {
+    if (!open_csv(line, k, csv_path(csv_name(line.channel_spec(k))), csvs[k], err))
+      return kExitUsage;
+    sinks[k].push_back(csvs[k].sink.get());
+  }
+  line.start(sinks);
+  for (std::size_t k = 0; k < csvs.size(); ++k)
+    wire_csv(line, k, *csvs[k].sink);
+  line.run();
+  if (!close_csvs(line, csvs, err)) return kExitUsage;
+  channels.clear();
+  for (std::size_t k = 0; k < line.size(); ++k) {
+    const runner::Ending end = line.channel(k).ending(line.status(k));
+    LineGoldenChannel c;
+    c.csv_name = csv_name(line.channel_spec(k));
+    c.program = line.file().resolved(line.channel_spec(k).program).string();
+    const audit::Audit* a = line.channel(k).audit();
+    c.status = end.failed                             ? kExitProgramErrors
+               : (a != nullptr && !a->verdict().ok()) ? kExitAudit
+                                                      : kExitOk;
+    c.error_text = end.failed ? end.error_text : std::string();
+    channels.push_back(std::move(c));
+  }
+  return kExitOk;
+}
 
 int run_line_command(const LineOptions& options, std::ostream& out, std::ostream& err) {
   if (options.mode == "run" && options.output.empty()) {
@@ -178,6 +203,8 @@ LineCommand::LineCommand(CLI::App& app) {
                    "Stop every channel after S seconds of machine time")
       ->check(CLI::PositiveNumber);
   cmd_->add_flag("--audit", options_.audit, "Audit every channel's setpoints");
+  cmd_->add_flag("--json", options_.json,
+                 "time, run: the channels' and the belt's results as one JSON object");
   add_cycle_us_option(*cmd_, options_.cycle_us);
 }
 

@@ -3,15 +3,19 @@
 // its options, a runner::LineSpec for runner/line_run (which loads and steps the line), then
 // the printing. `check`: every channel's syntax and decode-only semantics with the line's
 // channel numbers. `time`: each channel's end time, time waiting for signals and utilisation,
-// and the line's end. `run -o DIR`: `time`, and one CSV per channel in DIR
+// the line's end, the belt's workpieces and each one's fate (cli/line_report; --json: one JSON
+// object). `run -o DIR`: `time`, and one CSV per channel in DIR
 // (`ch<number>_<name>.csv`: t, line, the axes' command positions; `# stop` / `# error` at its
 // end). Exit statuses as `time`: 0, 1 program errors (any channel), 2 usage, 3 audit.
 // Invariants: parsing and printing only; reruns are byte-identical.
 
 #include <cstdint>
+#include <filesystem>
+#include <functional>
 #include <iosfwd>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace CLI {
 class App;
@@ -26,9 +30,25 @@ struct LineOptions {
   std::optional<std::uint64_t> cycle_us;
   std::optional<double> max_time;
   bool audit = false;
+  bool json = false;  ///< --json: the results as one JSON object
 };
 
 int run_line_command(const LineOptions& options, std::ostream& out, std::ostream& err);
+
+/// One channel's part of run_line_golden.
+struct LineGoldenChannel {
+  std::string csv_name;    ///< `ch<number>_<name>.csv`; its golden is `ch<number>_<name>.golden`
+  std::string program;     ///< the channel's program file (as the line file resolves it)
+  int status = 0;          ///< 0, 1 (the channel's error), 3 (its audit found violations)
+  std::string error_text;  ///< the error, positioned; "" when none
+};
+
+/// `ncsim line run FILE --audit` for `ncsim golden` (docs/golden.md "Lines"): channel k's CSV
+/// is written to csv_path(its csv_name); `channels` gets each channel's outcome. Returns 2
+/// (the reasons on `err`) when the line does not load or a CSV cannot be written, else 0.
+int run_line_golden(const std::string& file,
+                    const std::function<std::filesystem::path(const std::string&)>& csv_path,
+                    std::vector<LineGoldenChannel>& channels, std::ostream& err);
 
 class LineCommand {
  public:

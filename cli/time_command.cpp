@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "cli/audit_print.hpp"
+#include "cli/json_text.hpp"
 #include "cli/number_format.hpp"
 #include "cli/run_commands.hpp"
 #include "cli/run_progress.hpp"
@@ -17,22 +18,6 @@
 
 namespace ncsim::cli {
 namespace {
-
-void json_string(std::ostream& os, const std::string& s) {
-  os << '"';
-  for (const char c : s) {
-    if (c == '"' || c == '\\') {
-      os << '\\' << c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      std::array<char, 8> buf{};
-      std::snprintf(buf.data(), buf.size(), "\\u%04x", c);
-      os << buf.data();
-    } else {
-      os << c;
-    }
-  }
-  os << '"';
-}
 
 void json_split(std::ostream& os, const audit::TimeSplit& s) {
   os << "{\"rapid\":" << json_num(s.rapid) << ",\"feed\":" << json_num(s.feed)

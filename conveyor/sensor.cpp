@@ -11,7 +11,19 @@ Sensor::Sensor(const scenario::Conveyor* conveyor, double sign) : conveyor_(conv
   front_rising_ = conveyor_->sensor.front_edge_rising;
   for (std::size_t i = 0; i < conveyor_->workpieces.size(); ++i)
     (conveyor_->workpieces[i].travel ? travel_list_ : time_list_).push_back(i);
-  if (conveyor_->series) series_item_ = conveyor_->series->first;
+  if (conveyor_->series) {
+    series_item_ = conveyor_->series->first;
+    const auto& series = *conveyor_->series;
+    series_next_ = series.first.travel ? *series.first.travel : series.first.t.value_or(0.0);
+    scatter_ = SplitMix64(series.seed);
+  }
+}
+
+double Sensor::series_at() const {
+  const auto& s = *conveyor_->series;
+  if (s.scatter > 0.0) return series_next_;
+  const double first = s.first.travel ? *s.first.travel : *s.first.t;
+  return first + static_cast<double>(next_series_) * s.pitch;
 }
 
 std::optional<Sensor::Pending> Sensor::next_by_travel() const {
@@ -23,7 +35,7 @@ std::optional<Sensor::Pending> Sensor::next_by_travel() const {
   if (conveyor_ != nullptr && conveyor_->series && conveyor_->series->first.travel &&
       next_series_ < conveyor_->series->count) {
     const auto& s = *conveyor_->series;
-    const double travel = *s.first.travel + static_cast<double>(next_series_) * s.pitch;
+    const double travel = series_at();
     if (!best || travel < *best->travel) best = Pending{travel, std::nullopt, &s.first};
   }
   return best;
@@ -38,7 +50,7 @@ std::optional<Sensor::Pending> Sensor::next_by_time() const {
   if (conveyor_ != nullptr && conveyor_->series && conveyor_->series->first.t &&
       next_series_ < conveyor_->series->count) {
     const auto& s = *conveyor_->series;
-    const double t = *s.first.t + static_cast<double>(next_series_) * s.pitch;
+    const double t = series_at();
     if (!best || t < *best->t) best = Pending{std::nullopt, t, &s.first};
   }
   return best;
@@ -48,6 +60,8 @@ void Sensor::consume(const Pending& p) {
   const bool from_series = conveyor_->series && p.source == &conveyor_->series->first;
   if (from_series) {
     ++next_series_;
+    const auto& s = *conveyor_->series;
+    if (s.scatter > 0.0) series_next_ += s.pitch + s.scatter * scatter_.uniform();
   } else if (p.travel) {
     ++next_travel_;
   } else {

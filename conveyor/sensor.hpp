@@ -19,6 +19,7 @@
 #include <optional>
 #include <vector>
 
+#include "conveyor/noise.hpp"
 #include "conveyor/port.hpp"
 #include "scenario/scenario.hpp"
 
@@ -61,6 +62,7 @@ class Sensor {
   std::optional<Pending> next_by_travel() const;
   std::optional<Pending> next_by_time() const;
   void consume(const Pending& p);
+  double series_at() const;  // the series' next front edge (travel or time)
   void emit(bool front, double t, double position, std::uint64_t workpiece,
             const scenario::Workpiece* source);
 
@@ -73,6 +75,8 @@ class Sensor {
   std::size_t next_travel_ = 0;
   std::size_t next_time_ = 0;
   std::uint64_t next_series_ = 0;  // index of the series' next workpiece
+  double series_next_ = 0.0;       // a random stream (scatter > 0): its next front edge
+  SplitMix64 scatter_{1};          // ... and its gaps
   scenario::Workpiece series_item_;
   std::uint64_t arrived_ = 0;  // workpieces that reached the sensor
   std::vector<Rear> in_beam_;

@@ -1,15 +1,12 @@
 #pragma once
-// conveyor/shared_port: one conveyor world shared by the channels of a line (docs/lines.md
-// "The shared world").
+// conveyor/shared_port: a channel's Port in a line (docs/lines.md "The shared world").
 //
-// Purpose: every channel of a line attaches its own SharedPort; all of them lead to one world,
-// stepped once per cycle: the first channel that steps in a cycle moves the world to the
-// cycle's end, the others find it there (the same t). The line steps it itself when no channel
-// did (no channel tracks the conveyor) through step_once(). Everything else goes to the world
-// unchanged: the belt, the latches (the channels share one queue of measured values: which
-// channel takes which workpiece is issue 37's next step), the commands.
-// Inputs: the world (must outlive every SharedPort). Outputs: the world's, per channel.
-// Invariants: the world sees step(t) once per t, t increasing; noexcept as Port.
+// Purpose: the channel owns its Port (runner::Loaded::port); in a line the Port it talks to is
+// its station of the line's conveyor::LineWorld, which the line owns. SharedPort forwards every
+// call to that station unchanged (the station steps the one belt once per cycle, whichever
+// channel steps first).
+// Inputs: the station (must outlive the SharedPort). Outputs: the station's, for the channel.
+// Invariants: noexcept as Port; no state of its own.
 
 #include <optional>
 
@@ -17,27 +14,10 @@
 
 namespace ncsim::conveyor {
 
-/// The world and the last time it was stepped to, shared by the line's SharedPorts.
-class SharedWorld {
- public:
-  explicit SharedWorld(Port& world) noexcept : world_(world) {}
-  /// Steps the world to `t` unless it is there already.
-  void step_once(double t) noexcept {
-    if (stepped_ && *stepped_ >= t) return;
-    stepped_ = t;
-    world_.step(t);
-  }
-  Port& world() noexcept { return world_; }
-
- private:
-  Port& world_;
-  std::optional<double> stepped_;  ///< [s] the last step's t
-};
-
 class SharedPort final : public Port {
  public:
-  explicit SharedPort(SharedWorld& shared) noexcept : shared_(shared), w_(shared.world()) {}
-  void step(double t) noexcept override { shared_.step_once(t); }
+  explicit SharedPort(Port& station) noexcept : w_(station) {}
+  void step(double t) noexcept override { w_.step(t); }
   const BeltState& actual() const noexcept override { return w_.actual(); }
   const BeltState& measured() const noexcept override { return w_.measured(); }
   const BeltState& master() const noexcept override { return w_.master(); }
@@ -54,7 +34,6 @@ class SharedPort final : public Port {
   const LatchInfo& last_latch() const noexcept override { return w_.last_latch(); }
 
  private:
-  SharedWorld& shared_;
   Port& w_;
 };
 

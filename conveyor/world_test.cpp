@@ -405,3 +405,50 @@ TEST_CASE("#MACHINE DATA on conv_sync: new filter orders and delay time take eff
 }
 
 }  // namespace ncsim::conveyor
+
+namespace ncsim::conveyor {
+namespace {
+
+// The front edges' travels of a series over a belt moving 1 mm per cycle to `until` mm.
+std::vector<double> fronts(const scenario::Conveyor& c, double until) {
+  Sensor sensor(&c, 1.0);
+  std::vector<double> out;
+  BeltState s0;
+  for (int k = 1; k <= static_cast<int>(until); ++k) {
+    BeltState s1{static_cast<double>(k), 1000.0, 0.0};
+    for (const Edge& e : sensor.cycle((k - 1) * kT, s0, k * kT, s1))
+      if (e.front && e.rising) out.push_back(e.position);
+    s0 = s1;
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("a seeded random stream: gaps of pitch + scatter x u, the same for the same seed") {
+  scenario::Conveyor c = *test::belt(ConveyorMode::encoder, 300.0).conveyor;
+  c.series = scenario::WorkpieceSeries{at_travel(100.0, 50.0), 60.0, 50};
+  c.series->scatter = 40.0;
+  c.series->seed = 37;
+  const std::vector<double> a = fronts(c, 6000.0);
+  REQUIRE(a.size() == 50);
+  CHECK(a[0] == doctest::Approx(100.0).epsilon(1e-12));
+  double lo = 1e9;
+  double hi = 0.0;
+  for (std::size_t i = 1; i < a.size(); ++i) {
+    lo = std::min(lo, a[i] - a[i - 1]);
+    hi = std::max(hi, a[i] - a[i - 1]);
+  }
+  CHECK(lo >= 60.0);
+  CHECK(hi <= 100.0 + 1e-9);
+  CHECK(hi - lo > 20.0);  // they do scatter
+  CHECK(fronts(c, 6000.0) == a);
+  c.series->seed = 38;
+  CHECK(fronts(c, 6000.0) != a);
+  c.series->scatter = 0.0;  // none: every gap is the pitch, as before
+  const std::vector<double> even = fronts(c, 6000.0);
+  REQUIRE(even.size() == 50);
+  CHECK(even[49] == doctest::Approx(100.0 + 49 * 60.0).epsilon(1e-12));
+}
+
+}  // namespace ncsim::conveyor

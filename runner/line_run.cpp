@@ -21,6 +21,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// [mm] the belt's end after the last channel's sensor when the line file gives no `belt_end`
+// (docs/lines.md "Workpieces along the belt").
+constexpr double kBeltBeyondLastSensor = 1000.0;
+// [s] how long the belt runs on after the last channel ended, at most (LineRun::run).
+constexpr double kDrainMax = 600.0;
+
 // The line file read and validated; its diagnostics (with their source lines) on `err`.
 std::optional<scenario::LineFile> read_line_file(const fs::path& path, std::ostream& err) {
   std::optional<core::SourceFile> file;
@@ -77,6 +83,7 @@ RunSpec channel_spec(const scenario::LineFile& line, const scenario::LineChannel
   rs.program.max_time = spec.max_time;
   rs.cycle_us = spec.cycle_us ? spec.cycle_us : line.cycle_us;
   rs.audit = spec.audit;
+  rs.build_world = false;  // the line's belt (LineWorld) gives the channel its Port
   return rs;
 }
 
@@ -98,6 +105,56 @@ bool files_exist(const scenario::LineFile& line, const scenario::LineChannel& c,
   if (c.scenario) need(*c.scenario, line.resolved(*c.scenario), "scenario");
   return ok;
 }
+
+// The line's belt as its channels load: built on the first machine with a conveyor axis, one
+// station per such channel (docs/lines.md "Workpieces along the belt").
+struct BeltParts {
+  std::unique_ptr<conveyor::Port> belt;           // the belt alone (no workpieces)
+  double sign = 1.0;                              // its conveying sign (P-CHAN-00363)
+  std::vector<conveyor::StationSpec> stations;    // one per channel with a conveyor axis
+  std::vector<std::optional<std::size_t>> index;  // per channel: its station
+
+  // Channel c (loaded as `in`) joins the belt if its machine has a conveyor axis; false (the
+  // positioned error on `err`) when it cannot (NC7107, NC7108).
+  bool attach(const scenario::LineFile& lf, const scenario::LineChannel& c, Loaded& in,
+              std::ostream& err) {
+    if (in.machine.conveyor_axis() == nullptr) {
+      index.push_back(std::nullopt);
+      return true;
+    }
+    if (in.scenario && in.scenario->conveyor && c.scenario) {
+      line_error(err, lf, c.scenario->loc, "NC7107",
+                 "channel " + std::to_string(c.number) +
+                     "'s scenario has a [conveyor] table: the line's [conveyor] is the one "
+                     "world its channels share (docs/lines.md)");
+      return false;
+    }
+    if (!in.scenario) in.scenario.emplace();
+    in.scenario->conveyor = lf.conveyor;
+    in.scenario->line_plc = true;
+    try {
+      if (!belt) {
+        // The belt alone: the workpieces are the line's to sense (conveyor::LineWorld).
+        scenario::Scenario belt_only = *in.scenario;
+        if (belt_only.conveyor) {
+          belt_only.conveyor->workpieces.clear();
+          belt_only.conveyor->series.reset();
+        }
+        belt = conveyor::make_port(in.machine, &belt_only, in.t_cycle);
+        const auto& cc = in.machine.channel.conveyor;
+        sign = cc && cc->direction == machines::MoveDirection::negative_x ? -1.0 : 1.0;
+      }
+      stations.push_back(conveyor::station_of(in.machine, c.number, c.sensor_at));
+    } catch (const std::invalid_argument& e) {
+      line_error(err, lf, c.machine.loc, "NC7108",
+                 std::string("the line's conveyor on channel ") + std::to_string(c.number) +
+                     "'s machine: " + e.what());
+      return false;
+    }
+    index.push_back(stations.size() - 1);
+    return true;
+  }
+};
 
 }  // namespace
 
@@ -133,6 +190,7 @@ LineLoadResult load_line_run(const LineSpec& spec) {
     return r;
   }
   std::vector<std::unique_ptr<Loaded>> loaded;
+  BeltParts belt;
   const scenario::LineChannel* first = nullptr;  // the channel whose cycle the others match
   for (const scenario::LineChannel& c : line->order_) {
     LoadResult one = load(channel_spec(lf, c, spec));
@@ -158,34 +216,13 @@ LineLoadResult load_line_run(const LineSpec& spec) {
       r.messages = err.str();
       return r;
     }
-    if (in.machine.conveyor_axis() != nullptr) {
-      if (in.scenario && in.scenario->conveyor && c.scenario) {
-        line_error(err, lf, c.scenario->loc, "NC7107",
-                   "channel " + std::to_string(c.number) +
-                       "'s scenario has a [conveyor] table: the line's [conveyor] is the one "
-                       "world its channels share (docs/lines.md)");
-        r.messages = err.str();
-        return r;
-      }
-      if (!in.scenario) in.scenario.emplace();
-      in.scenario->conveyor = lf.conveyor;
-      if (!line->world_) {
-        try {
-          line->world_ = conveyor::make_port(in.machine, &*in.scenario, in.t_cycle);
-        } catch (const std::invalid_argument& e) {
-          line_error(err, lf, c.machine.loc, "NC7108",
-                     std::string("the line's conveyor on channel ") + std::to_string(c.number) +
-                         "'s machine: " + e.what());
-          r.messages = err.str();
-          return r;
-        }
-        line->shared_ = std::make_unique<conveyor::SharedWorld>(*line->world_);
-      }
-      in.port = std::make_unique<conveyor::SharedPort>(*line->shared_);
+    if (!belt.attach(lf, c, in, err)) {
+      r.messages = err.str();
+      return r;
     }
     loaded.push_back(std::move(one.loaded));
   }
-  if (lf.conveyor && !line->world_) {
+  if (lf.conveyor && !belt.belt) {
     core::Diagnostic d;
     d.severity = core::Severity::warning;
     d.file = lf.file;
@@ -193,6 +230,21 @@ LineLoadResult load_line_run(const LineSpec& spec) {
     d.id = "NC7109";
     d.message = "[conveyor] is not played: no channel's machine has a conveyor axis";
     err << core::format(d);
+  }
+  if (belt.belt) {
+    double last = 0.0;
+    for (const conveyor::StationSpec& st : belt.stations)
+      last = std::max(last, st.sensor_at);
+    const double end = lf.belt_end ? *lf.belt_end : last + kBeltBeyondLastSensor;
+    line->belt_ = std::make_unique<conveyor::LineWorld>(std::move(belt.belt),
+                                                        lf.conveyor ? &*lf.conveyor : nullptr,
+                                                        belt.sign, std::move(belt.stations), end);
+  }
+  line->watch_.assign(loaded.size(), LineRun::Watch{});
+  for (std::size_t k = 0; k < loaded.size(); ++k) {
+    line->watch_[k].station = belt.index[k];
+    if (belt.index[k])
+      loaded[k]->port = std::make_unique<conveyor::SharedPort>(line->belt_->port(*belt.index[k]));
   }
   for (std::size_t k = 0; k < loaded.size(); ++k) {
     RunSpec rs = channel_spec(lf, line->order_[k], spec);
@@ -231,6 +283,11 @@ Exit check_line(const LineSpec& spec, std::string& out) {
     }
     Loaded& in = *one.loaded;
     in.interp.channels = numbers;
+    if (in.machine.conveyor_axis() != nullptr) {  // the line's PLC words, as a first workpiece
+      in.interp.external.emplace(conveyor::kVeMore, 1.0);
+      in.interp.external.emplace(conveyor::kVeWorkpiece, 1.0);
+      in.interp.external.emplace(conveyor::kVeTravel, 0.0);
+    }
     const core::DiagnosticList semantics = interp::check_semantics(in.file, in.machine, in.interp);
     for (const core::Diagnostic& d : semantics.items())
       err << core::format(d, in.file);
@@ -245,21 +302,67 @@ void LineRun::start(const std::vector<std::vector<ipo::Sink*>>& sinks) {
     runs_[k]->start(k < sinks.size() ? sinks[k] : std::vector<ipo::Sink*>{});
 }
 
+void LineRun::write_more(std::size_t k) {
+  // LINE_MORE: 1 while a workpiece can still reach the channel's probe (docs/lines.md).
+  scenario::Player* player = runs_[k]->player();
+  if (player == nullptr) return;
+  const double more = belt_->more_for(*watch_[k].station) ? 1.0 : 0.0;
+  if (more == watch_[k].more) return;
+  watch_[k].more = more;
+  player->ve().write(conveyor::kVeMore, more);
+}
+
+void LineRun::watch(std::size_t k, double t) noexcept {
+  Watch& w = watch_[k];
+  const tracking::ConveyorSync* sync = runs_[k]->channel().conveyor_sync();
+  if (sync == nullptr) return;
+  const auto resolve = [&] {  // the channel is through with w.workpiece
+    w.open = false;
+    if (w.caught) {
+      belt_->done(*w.station, w.workpiece, t);
+    } else {
+      belt_->let_go(*w.station, w.workpiece, t);
+    }
+  };
+  using tracking::SyncPhase;
+  const SyncPhase p = sync->phase();
+  const std::uint64_t taken = runs_[k]->loaded().port->last_latch().workpiece;
+  if (taken != w.workpiece) {
+    // Its #SYNC IN took another measured value: a #SYNC OUT and the next #SYNC IN may fall
+    // into one cycle (no motion between), so the previous one ends here.
+    if (w.open) resolve();
+    w.workpiece = taken;
+    w.open = true;
+    w.caught = false;
+  }
+  if (!w.open) return;
+  if (p == SyncPhase::catching_up || p == SyncPhase::tracking) w.caught = true;
+  if (p == SyncPhase::off || p == SyncPhase::leaving || p == SyncPhase::departing ||
+      p == SyncPhase::waiting)
+    resolve();
+}
+
 bool LineRun::step() {
   hub_->begin_cycle(cycle_);
+  const double t = static_cast<double>(cycle_ + 1) * t_cycle_;
+  if (belt_) {
+    for (std::size_t k = 0; k < runs_.size(); ++k)
+      if (watch_[k].station && status_[k] == ipo::Status::running) write_more(k);
+  }
   bool any = false;
   for (std::size_t k = 0; k < runs_.size(); ++k) {
     if (status_[k] != ipo::Status::running) continue;
     status_[k] = runs_[k]->step();
+    if (belt_ && watch_[k].station) watch(k, t);
     if (status_[k] == ipo::Status::running) {
       any = true;
-      times_[k].t_end = static_cast<double>(cycle_ + 1) * t_cycle_;
+      times_[k].t_end = t;
       if (hub_->blocked(order_[k].number)) times_[k].t_waiting += t_cycle_;
     }
   }
   ++cycle_;
-  // The world is at the cycle's end whether a channel stepped it or not.
-  if (shared_) shared_->step_once(static_cast<double>(cycle_) * t_cycle_);
+  // The belt is at the cycle's end whether a channel stepped it or not.
+  if (belt_) belt_->step_once(t);
   hub_->mark_stuck();  // a doomed wait fails in its channel's next cycle (NC6401)
   return any;
 }
@@ -267,6 +370,11 @@ bool LineRun::step() {
 void LineRun::run() {
   while (step()) {
   }
+  // The belt runs on until every free workpiece has left it (docs/lines.md "Workpieces along
+  // the belt"); a belt that stands keeps them (on the belt at the end).
+  if (belt_)
+    belt_->drain(static_cast<double>(cycle_) * t_cycle_, t_cycle_,
+                 static_cast<double>(cycle_) * t_cycle_ + kDrainMax);
 }
 
 double LineRun::t_end() const noexcept {

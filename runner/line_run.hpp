@@ -11,11 +11,13 @@
 // channel must run at the same cycle (NCSIM-CHAN-610 or cycle_us / --cycle-us; NC7105 at the
 // channel's `machine` otherwise). The line's `[conveyor]` is built once, against the first
 // channel (by number) whose machine has a conveyor axis, and each such channel attaches a
-// conveyor::SharedPort to it (stepped once per cycle; the line steps it when no channel did).
+// conveyor::SharedPort to its own station of the line's conveyor::LineWorld (its sensor at
+// `sensor_at`, its probe; stepped once per cycle; the line steps it when no channel did).
 // Per cycle (step()): the hub's cycle starts, every running channel steps in number order,
 // the world is stepped to the cycle's end, the hub marks the waits that can never be answered
 // (the channel fails such a wait in its next cycle, NC6401), each channel's time waiting for
-// a signal is counted.
+// a signal is counted, and what each channel did with its workpiece goes to the belt (let go
+// before a catch-up, finished at #SYNC OUT after one), which keeps every workpiece's fate.
 // Outputs: per channel its Run (ending, time result), end time, waiting time; the line's end.
 // Invariants: deterministic (fixed channel order, one cycle of signal transport whatever the
 // order); the objects keep their addresses (the runs point into the hub and the world).
@@ -27,12 +29,14 @@
 #include <string>
 #include <vector>
 
+#include "conveyor/line_world.hpp"
 #include "conveyor/port.hpp"
 #include "conveyor/shared_port.hpp"
 #include "program/signals.hpp"
 #include "runner/run.hpp"
 #include "runner/spec.hpp"
 #include "scenario/line_file.hpp"
+#include "tracking/sync_phase.hpp"
 
 namespace ncsim::runner {
 
@@ -92,6 +96,10 @@ class LineRun {
   const LineChannelTime& time(std::size_t k) const noexcept { return times_[k]; }
   /// [s] the end of the line: the last channel's end.
   double t_end() const noexcept;
+  /// The belt and its workpieces (null: the line has no conveyor world).
+  const conveyor::LineWorld* belt() const noexcept { return belt_.get(); }
+  /// Channel k's station on the belt (nullopt: its machine has no conveyor axis).
+  std::optional<std::size_t> station(std::size_t k) const noexcept { return watch_[k].station; }
 
  private:
   friend LineLoadResult load_line_run(const LineSpec& spec);
@@ -101,8 +109,20 @@ class LineRun {
   std::vector<scenario::LineChannel> order_;  ///< the channels by number
   double t_cycle_ = 0.001;
   std::unique_ptr<program::SignalHub> hub_;
-  std::unique_ptr<conveyor::Port> world_;  ///< the shared world (null: none)
-  std::unique_ptr<conveyor::SharedWorld> shared_;
+  // What a channel does with the workpiece it measured (docs/lines.md "Workpieces along the
+  // belt"): let it go before a catch-up, or finish it after one.
+  struct Watch {
+    std::optional<std::size_t> station;  ///< its station on the belt
+    std::uint64_t workpiece = 0;         ///< the workpiece its last #SYNC IN took
+    bool open = false;                   ///< that workpiece is not let go nor finished
+    bool caught = false;                 ///< a catch-up on it began
+    double more = -1.0;                  ///< the LINE_MORE value last written
+  };
+  void watch(std::size_t k, double t) noexcept;
+  void write_more(std::size_t k);
+
+  std::unique_ptr<conveyor::LineWorld> belt_;  ///< the belt and its stations (null: none)
+  std::vector<Watch> watch_;
   std::vector<std::unique_ptr<Run>> runs_;
   std::vector<ipo::Status> status_;
   std::vector<LineChannelTime> times_;

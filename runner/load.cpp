@@ -125,7 +125,7 @@ std::variant<std::unique_ptr<Loaded>, Exit> load_checked(const RunSpec& run, std
       run.cycle_us ? static_cast<double>(*run.cycle_us) * 1e-6 : in->machine.channel.cycle_time;
   if (!cycle_suits_kv(in->machine, in->t_cycle, run.cycle_us, err)) return Exit::usage;
   std::string why;
-  if (!make_world(*in, why)) {
+  if (run.build_world && !make_world(*in, why)) {
     err << "ncsim: error: the conveyor of machine '" << dir->string() << "': " << why << '\n';
     return Exit::usage;
   }

@@ -86,6 +86,9 @@ class Run {
   const audit::Audit* audit() const noexcept { return audit_.get(); }
   /// The channel plays the scenario (it has events or [stop]).
   bool plays() const noexcept { return player_ != nullptr; }
+  /// The scenario's player after start() (null when the channel plays none): a line writes
+  /// its PLC's V.E. values into its store (docs/lines.md).
+  scenario::Player* player() noexcept { return player_.get(); }
 
  private:
   class Fanout;

@@ -68,6 +68,9 @@ struct RunSpec {
   std::optional<double> conv_vel;
   AdjustWorld adjust;  ///< sweep / tune-delay: the machine and scenario changed (may be empty)
   WrapPort wrap;       ///< sweep: the conveyor world wrapped (may be empty)
+  /// Build the conveyor world at load; false: the caller gives the channel its Port (a line's
+  /// channels share the line's belt, docs/lines.md).
+  bool build_world = true;
 };
 
 }  // namespace ncsim::runner

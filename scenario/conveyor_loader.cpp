@@ -380,8 +380,14 @@ class ConveyorReader {
         if (const auto v = r_.number(value, item, 0.0, kTimeMax, "s")) s.pitch = *v;
       } else if (name == "count") {
         if (const auto v = r_.integer(value, item, 1, kCountMax)) s.count = *v;
+      } else if (name == "scatter") {
+        if (const auto v = r_.number(value, item, 0.0, kTravelMax, "mm or s")) s.scatter = *v;
+      } else if (name == "seed") {
+        if (const auto v = r_.integer(value, item, 0, kSeedMax)) s.seed = *v;
       } else if (!common_key(name, value, item, s.first)) {
-        unknown(key, item, {"first", "first_at", "pitch", "period", "count", "length", "ve"});
+        unknown(
+            key, item,
+            {"first", "first_at", "pitch", "period", "count", "length", "ve", "scatter", "seed"});
       }
     }
     const bool by_travel = t->contains("first");

@@ -118,3 +118,29 @@ TEST_CASE("conveyor.noise.seed takes its documented maximum 2^63-1") {
 }
 
 }  // namespace ncsim::scenario
+
+namespace ncsim::scenario {
+
+TEST_CASE("[conveyor.workpieces] a seeded random stream: scatter and seed") {
+  const LoadResult r = wired(R"([conveyor]
+mode = "spindle"
+[conveyor.workpieces]
+first = 100
+pitch = 150
+scatter = 60
+seed = 37
+count = 5
+)");
+  REQUIRE(r.scenario);
+  const WorkpieceSeries& s = *r.scenario->conveyor->series;
+  CHECK(s.scatter == 60.0);
+  CHECK(s.seed == 37u);
+  CHECK(first(wired("[conveyor]\nmode = \"spindle\"\n[conveyor.workpieces]\nfirst = 100\n"
+                    "pitch = 150\ncount = 5\nscatter = -1\n"))
+            .rfind("NC7004@7", 0) == 0);
+  CHECK(all(wired("[conveyor]\nmode = \"spindle\"\n[conveyor.workpieces]\nfirst = 100\n"
+                  "pitch = 150\ncount = 5\nscater = 1\n"))
+            .find("did you mean `scatter`") != std::string::npos);
+}
+
+}  // namespace ncsim::scenario

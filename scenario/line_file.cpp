@@ -17,7 +17,9 @@ constexpr const char* kLineUnknownKey = "NC7101";
 constexpr const char* kLineMissing = "NC7102";
 constexpr const char* kLineDuplicate = "NC7103";
 constexpr const char* kLineNoChannel = "NC7104";
+constexpr const char* kLineSensorPosition = "NC7110";
 constexpr std::int64_t kCycleUsMax = 1'000'000;  // [us] 1 s: the longest cycle a line takes
+constexpr double kBeltMax = 1e6;                 // [mm] 1 km: sensor_at and belt_end
 
 // Reads a line file's tables, reporting every problem.
 class LineReader : public ReaderBase {
@@ -37,6 +39,9 @@ class LineReader : public ReaderBase {
         line.cycle_loc = loc(node.source());
       } else if (name == "channel") {
         read_channels(node, line);
+      } else if (name == "belt_end") {
+        line.belt_end = number(node, name, 0.0, kBeltMax, "mm");
+        line.belt_end_loc = loc(node.source());
       } else if (name == "conveyor") {
         Scenario s;
         read_conveyor(*this, node, s);
@@ -44,9 +49,22 @@ class LineReader : public ReaderBase {
       } else {
         error(kLineUnknownKey, key.source(),
               "unknown key `" + name + "`" +
-                  suggestion(name, {"description", "cycle_us", "channel", "conveyor"}));
+                  suggestion(name, {"description", "cycle_us", "channel", "conveyor", "belt_end"}));
       }
     }
+    if (line.belt_end)
+      for (const LineChannel& c : line.channels)
+        if (c.sensor_at > *line.belt_end)
+          error(kRange, line.belt_end_loc,
+                "belt_end = " + value_text(*line.belt_end) +
+                    " mm is before the sensor of channel " + std::to_string(c.number) +
+                    " (sensor_at = " + value_text(c.sensor_at) +
+                    " mm): the belt ends after the last sensor");
+    if (line.conveyor && line.conveyor->sensor.position)
+      error(kLineSensorPosition, line.conveyor->loc,
+            "conveyor.sensor.position is not played in a line: each channel's sensor is its "
+            "own, at its T0 (P-CHAN-00368) in its machine and at its `sensor_at` along the belt "
+            "(docs/lines.md)");
     if (!root.contains("channel"))
       error(kLineNoChannel, core::SourceLoc{1, 1},
             "the line has no channel: give one [[channel]] table per channel");
@@ -116,10 +134,13 @@ class LineReader : public ReaderBase {
         machine = path(node, path_name);
       } else if (name == "scenario") {
         c.scenario = path(node, path_name);
+      } else if (name == "sensor_at") {
+        if (const auto v = number(node, path_name, 0.0, kBeltMax, "mm")) c.sensor_at = *v;
       } else {
         error(kLineUnknownKey, key.source(),
               "unknown key `" + path_name + "`" +
-                  suggestion(name, {"number", "name", "program", "machine", "scenario"}));
+                  suggestion(name,
+                             {"number", "name", "program", "machine", "scenario", "sensor_at"}));
       }
     }
     const auto missing = [&](const char* key, const char* what) {

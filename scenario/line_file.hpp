@@ -42,7 +42,8 @@ struct LineChannel {
   LinePath program;                  ///< `program`: the NC program
   LinePath machine;                  ///< `machine`: the machine folder
   std::optional<LinePath> scenario;  ///< `scenario`: the channel's own (no [conveyor])
-  core::SourceLoc loc;               ///< its `[[channel]]` header
+  double sensor_at = 0.0;  ///< `sensor_at` [mm]: its sensor's belt travel after the line's sensor
+  core::SourceLoc loc;     ///< its `[[channel]]` header
 };
 
 /// The line file.
@@ -53,6 +54,8 @@ struct LineFile {
   core::SourceLoc cycle_loc;              ///< its position
   std::vector<LineChannel> channels;      ///< in file order
   std::optional<Conveyor> conveyor;       ///< `[conveyor]`: the shared world
+  std::optional<double> belt_end;  ///< `belt_end` [mm]: the belt's end after the line's sensor
+  core::SourceLoc belt_end_loc;    ///< its position
   /// `path` of the file relative to the line file's folder (absolute paths unchanged).
   std::filesystem::path resolved(const LinePath& path) const;
 };

@@ -67,3 +67,22 @@ TEST_CASE("an unknown key suggests the one meant") {
   REQUIRE(r.diagnostics.items().size() == 1);
   CHECK(r.diagnostics.items()[0].message.find("did you mean `machine`?") != std::string::npos);
 }
+
+TEST_CASE("a channel's sensor along the belt and the belt's end (docs/lines.md)") {
+  const std::string text = std::string("belt_end = 1500\n") + kChannel + "sensor_at = 700\n";
+  const scenario::LineLoad r = scenario::parse_line(core::SourceFile("l.toml", text));
+  REQUIRE(r.line);
+  CHECK(r.line->channels[0].sensor_at == 700.0);
+  CHECK(r.line->belt_end == 1500.0);
+  // The belt ends after the last sensor; both within 0 .. 1e6 mm.
+  CHECK(diagnostics(std::string("belt_end = 500\n") + kChannel + "sensor_at = 700\n") ==
+        std::vector<std::string>{"1:12 NC7004"});
+  CHECK(diagnostics(std::string(kChannel) + "sensor_at = -1\n") ==
+        std::vector<std::string>{"5:13 NC7004"});
+  CHECK(diagnostics(std::string(kChannel) + "sensor_at = \"near\"\n") ==
+        std::vector<std::string>{"5:13 NC7003"});
+  // The line's sensor is where the stream arrives; each channel's own is at its T0.
+  CHECK(diagnostics(std::string(kChannel) +
+                    "[conveyor]\nmode = \"spindle\"\n[conveyor.sensor]\nposition = 5\n") ==
+        std::vector<std::string>{"5:1 NC7110"});
+}

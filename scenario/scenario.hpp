@@ -157,6 +157,10 @@ struct WorkpieceSeries {
   Workpiece first;          ///< the first workpiece (travel or t), its length and V.E. values
   double pitch = 0.0;       ///< [mm] or [s] between consecutive front edges, > 0
   std::uint64_t count = 0;  ///< >= 1
+  /// [mm] or [s] a random stream: each gap is pitch + scatter x u, u uniform in (0, 1] from
+  /// SplitMix64(seed) (conveyor/noise.hpp); 0: every gap is pitch.
+  double scatter = 0.0;
+  std::uint64_t seed = 1;  ///< the stream's seed
 };
 
 /// `[conveyor]`: the conveyor world (docs/scenario.md, docs/conveyor.md "The world").
@@ -198,12 +202,16 @@ struct Scenario {
   StopConditions stop;               ///< `[stop]`
   std::optional<Conveyor> conveyor;  ///< `[conveyor]` (conveyor tracking, issue 14)
   std::vector<TechDuration> tech;    ///< `[tech]`, in key order
+  /// A channel of a line with a station on the belt: the line's PLC writes V.E. values with
+  /// every measured value (LINE_WORKPIECE, LINE_TRAVEL) and LINE_MORE (docs/lines.md).
+  bool line_plc = false;
 
   /// True when something needs the channel loop (events or stop conditions), i.e. more than
   /// the V.E. initial values that decode-only commands (`check`, `trace`) read.
   bool needs_channel() const { return !events.empty() || stop.any() || workpiece_ve(); }
   /// True when a workpiece of `[conveyor]` carries V.E. values (written when it is measured).
   bool workpiece_ve() const {
+    if (line_plc) return true;
     if (!conveyor) return false;
     for (const Workpiece& w : conveyor->workpieces)
       if (!w.ve.empty()) return true;

@@ -1,5 +1,6 @@
 # Golden trajectories (docs/golden.md):
 #   golden.<name>        - one test per program folder programs/<name>/: `ncsim golden check` on it
+#   golden.lines.<name>  - one test per line folder programs/lines/<name>/ (its channels' goldens)
 #                          (the run must match programs/<name>/<name>.golden); independent, so
 #                          `ctest -j` runs them in parallel. A new folder is found at the next
 #                          build (CONFIGURE_DEPENDS).
@@ -33,6 +34,16 @@ if(ncsim_real_programs)
            COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/golden/check_programs.sh $<TARGET_FILE:ncsim>
                    ${PROJECT_SOURCE_DIR}/programs/real)
 endif()
+
+# programs/lines/<name>/: production lines (docs/lines.md), a golden per channel
+# (ch<N>_<name>.golden), all checked by one `ncsim golden check` of the line's folder.
+file(GLOB ncsim_lines CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/programs/lines/*/line.toml)
+foreach(toml IN LISTS ncsim_lines)
+  get_filename_component(folder ${toml} DIRECTORY)
+  get_filename_component(name ${folder} NAME)
+  add_test(NAME golden.lines.${name} COMMAND ncsim golden check ${folder})
+  set_tests_properties(golden.lines.${name} PROPERTIES LABELS golden TIMEOUT 300)
+endforeach()
 
 add_test(NAME programs_check
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/golden/check_programs.sh $<TARGET_FILE:ncsim>

@@ -121,4 +121,32 @@ cp "$work/moved.golden" "$g"
 expect "one mismatch fails the library check" 1 'golden: 2 programs, 1 ok, 1 mismatched' '' -- \
   golden check --programs "$lib"
 
+# A line folder (docs/golden.md "Lines"): one golden per channel, checked and blessed together.
+ln=$work/line
+mkdir -p "$ln"
+cat >"$ln/line.toml" <<'TOML'
+[[channel]]
+number = 1
+name = "a"
+program = "a.nc"
+machine = "portal_3x"
+[[channel]]
+number = 2
+name = "b"
+program = "b.nc"
+machine = "portal_3x"
+TOML
+printf '%%a\nN10 G90 G01 X30 Y0 Z5 F3000\nN20 #SIGNAL SYN [ID1 CH2]\nN30 M30\n' >"$ln/a.nc"
+printf '%%b\nN10 #WAIT SYN [ID1 CH1]\nN20 G90 G01 X0 Y20 Z5 F3000\nN30 M30\n' >"$ln/b.nc"
+expect "a line without goldens: one NO GOLDEN per channel" 1 'line/ch2_b: NO GOLDEN' \
+  'ch1_a\.golden: error: no golden .*\[NC8005\]' -- golden check "$ln"
+expect "bless a line writes one golden per channel" 0 'line/ch2_b: blessed, new' '' -- \
+  golden bless "$ln"
+holds "the channels' goldens are there" test -s "$ln/ch1_a.golden" -a -s "$ln/ch2_b.golden"
+expect "the line matches its goldens" 0 'line/ch2_b: ok' '' -- golden check "$ln"
+sed -i 's/X0 Y20/X0 Y25/' "$ln/b.nc"
+expect "a channel that moves otherwise is a mismatch of its own golden" 1 \
+  'line/ch2_b: MISMATCH, .* ncsim golden bless [^ ]*/line$' '' -- golden check "$ln"
+holds "... and the other channel still matches" grep -q 'line/ch1_a: ok' "$work/out"
+
 summary golden_cli
