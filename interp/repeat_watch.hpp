@@ -30,10 +30,10 @@ class RepeatWatch {
   std::uint64_t pc_ = std::uint64_t{0xFFFF} << 32;  // the saved block: file << 32 | ordinal
   std::uint32_t line_ = 0;
   std::uint64_t fingerprint_ = 0;
-  std::uint64_t at_ = 0;       // blocks decoded when saved
-  std::uint64_t period_ = 1;   // blocks until the next save
-  std::uint64_t credit_ = 0;   // blocks to decode before the next (costly) comparison
-  std::uint64_t decoded_ = 0;  // blocks decoded in this run
+  std::uint64_t at_ = 0;        // blocks decoded when saved
+  std::uint64_t period_ = 1;    // blocks until the next save
+  std::uint64_t credit_ = 0;    // blocks to decode before the next (costly) comparison
+  std::uint64_t decoded_ = 0;   // blocks decoded in this run
   std::uint64_t world_at_ = 0;  // Impl::world_waits when saved
   std::optional<std::uint32_t> endless_from_;
   bool on_its_own_ = false;
