@@ -103,8 +103,7 @@ std::string still_moving_text(const Run& run) {
 
 std::string endless_note(const Ending& end) {
   if (!end.endless_from) return {};
-  return "ncsim: note: the program runs endlessly from line " +
-         std::to_string(*end.endless_from) +
+  return "ncsim: note: the program runs endlessly from line " + std::to_string(*end.endless_from) +
          ": it came back there in the same state with nothing outside the program between, so "
          "the run ended there, after whole repetitions (NC4904); --max-time S or a scenario "
          "[stop] runs it longer\n";
