@@ -297,6 +297,7 @@ bool HashCommands::hash_sync_out(const ast::Block& b, const ast::HashCommand& h)
   ip_.indp_unknown &= ~ip_.path_axes;
   ip_.modal.synchronised = false;
   ip_.motion_since_sync = true;
+  ip_.departure_pending = true;
   return true;
 }
 
@@ -352,6 +353,13 @@ bool HashCommands::hash_kinematics(const ast::Block& b, const ast::HashCommand& 
   if (ip_.modal.synchronised) {
     return ip_.fail(at, "NC4504",
                     "kinematic selection inside #SYNC IN/OUT is not allowed (seed 004 §2.1.1)");
+  }
+  if (ip_.departure_pending) {
+    // The first motion after #SYNC OUT is the desynchronisation movement from the belt's
+    // motion (004 l.529), planned in the coordinates the tool left the workpiece in.
+    return ip_.fail(at, "NC4504",
+                    "kinematic selection between #SYNC OUT and its desynchronisation motion (the "
+                    "first motion after #SYNC OUT, seed 004 §2.1.1): program that motion first");
   }
   if (h.kind == HashKind::kin_id) {
     if (h.item_count == 0) return ip_.fail(at, "292005", "#KIN ID needs an id");

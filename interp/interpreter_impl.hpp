@@ -187,9 +187,10 @@ struct Interpreter::Impl {
   // the slope starts as P-CHAN-00071, set in the constructor); snapshot() adds what a motion
   // derives from elsewhere (cs_active, the forced slope).
   ModalSnapshot modal;
-  bool centre_absolute = false;   // G161
-  std::optional<double> feed;     // [mm/s]
-  bool motion_since_sync = true;  // first motion after #SYNC IN not yet seen
+  bool centre_absolute = false;    // G161
+  std::optional<double> feed;      // [mm/s]
+  bool motion_since_sync = true;   // first motion after #SYNC IN not yet seen
+  bool departure_pending = false;  // #SYNC OUT decoded, its desynchronisation motion not yet
   std::optional<int> kin_id;
   machines::CsStack cs;
   SplineType spline_type = SplineType::akima;

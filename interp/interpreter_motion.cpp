@@ -67,6 +67,7 @@ bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const A
     if (arc) return fail(b.loc, "NC4502", "the first motion after #SYNC IN must be G00 or G01");
     motion_since_sync = true;
   }
+  departure_pending = false;
   if (spline && !arc) {
     if (!feed) return fail(b.loc, "20008", "the spline needs a feed F");
     emit(line, SplinePoint{spline->points, frames.frame(), target, programmed, *feed});

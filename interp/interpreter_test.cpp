@@ -257,6 +257,17 @@ TEST_CASE("kinematic selection inside #SYNC IN/OUT is NC4504") {
         "NC4504");
 }
 
+TEST_CASE("kinematic selection before the desynchronisation motion after #SYNC OUT is NC4504") {
+  // The first motion after #SYNC OUT leaves the belt's motion in the coordinates the tool left
+  // the workpiece in; #TRAFO OFF before it made that departure fail at run time (NC9050).
+  const std::string sync = std::string(kSync) + "G01 X1 F600\n#SYNC OUT\n";
+  const auto bad = run(sync + "#TRAFO OFF\nG01 X0\nM30\n", "laser_portal");
+  CHECK(bad.error_id == "NC4504");
+  CHECK(bad.error_line == 6);
+  // after the departure motion the selection is free again
+  CHECK(run(sync + "G01 X2\n#TRAFO OFF\nG01 X0\nM30\n", "laser_portal").error_id.empty());
+}
+
 TEST_CASE("an unknown kinematic id is 292005") {
   CHECK(run("%t\n#KIN ID[99]\nM30\n", "delta_picker").error_id == "292005");
 }

@@ -53,7 +53,8 @@ std::uint64_t RepeatWatch::fingerprint(std::size_t& cost) const {
     h = mix(h, bits(v));
   h = mix(h, static_cast<std::uint64_t>(d.motion));
   h = mix(h, bits(d.feed));
-  h = mix(h, (std::uint64_t{d.centre_absolute} << 3) | (std::uint64_t{d.motion_since_sync} << 2) |
+  h = mix(h, (std::uint64_t{d.departure_pending} << 4) | (std::uint64_t{d.centre_absolute} << 3) |
+                 (std::uint64_t{d.motion_since_sync} << 2) |
                  (std::uint64_t{d.spline.has_value()} << 1) | std::uint64_t{d.kin_id.has_value()});
   if (d.kin_id) h = mix(h, static_cast<std::uint64_t>(*d.kin_id));
   const ModalSnapshot& m = d.modal;
