@@ -2,7 +2,8 @@
 """scripts/house_metrics.py: the measures of issue 35 ("the house") on the tracked sources.
 
 Prints each folder's share of the source lines (tests excluded), the hand-written functions
-longer than 120 lines, and the classes with more than 30 member functions. Heuristic, not a
+longer than 120 lines, the classes with more than 30 member functions, and the includes of a
+room at or above the file's own (docs/design.md). Heuristic, not a
 parser: a function is a definition starting at column 0 and ending at the next `}` at column
 0; member functions are the declarations and inline definitions inside a class body. Run from
 anywhere: python3 scripts/house_metrics.py [--all]
@@ -76,3 +77,26 @@ for f, v in lines.items():
 print(f"classes over 30 member functions: {len(big)}")
 for n, f, c in sorted(big, reverse=True):
     print(f"  {n:4d} {c} ({f})")
+
+# Includes from a lower room to a higher one (docs/design.md "from the bottom"); rooms on one
+# level may not include each other either (audit / program, runner / report / golden). Tests
+# are excluded (they use audit/ as their oracle, docs/design.md).
+levels = [["core"], ["grammar"], ["machines"], ["jerk"], ["axes"], ["interp"], ["planner"],
+          ["scenario"], ["conveyor"], ["ipo"], ["tracking"], ["audit", "program"], ["channel"],
+          ["runner", "report", "golden"], ["cli"]]
+level = {room: k for k, rooms in enumerate(levels) for room in rooms}
+include = re.compile(r'^#include "([a-z_]+)/')
+upward = []
+for f, v in lines.items():
+    here = f.split("/")[0]
+    if here not in level:
+        continue
+    for n, line in enumerate(v, 1):
+        m = include.match(line)
+        if not m or m.group(1) == here or m.group(1) not in level:
+            continue
+        if level[m.group(1)] >= level[here]:
+            upward.append((f, n, m.group(1)))
+print(f"includes of a room at or above the file's own: {len(upward)}")
+for f, n, room in upward:
+    print(f"  {f}:{n} includes {room}/")
