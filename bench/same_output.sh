@@ -24,7 +24,7 @@ record() {  # record NAME CMD...: stdout, stderr and exit status of CMD in OUT/N
   shift
   mkdir -p "$(dirname "$OUT/$name")"
   set +e
-  timeout 60 "$@" >"$OUT/$name.out" 2>"$OUT/$name.err"
+  timeout 600 "$@" >"$OUT/$name.out" 2>"$OUT/$name.err"
   echo "exit $?" >"$OUT/$name.rc"
   set -e
 }
