@@ -82,62 +82,15 @@ bool plain_address_letter(char c) {
   }
 }
 
-/// True when `text` is a block of the plain shape, the shape of most blocks: an optional block
-/// number `N<digits>[:]`, then words `G<digits>`, `<letter><number>` or `<letter><sign><number>`
-/// (letter: plain_address_letter), each followed by separators or at once by the next word;
-/// separators are blanks and `( ... )` comments (as rules::ws reads them); a `;` comment may end
-/// the block. Nothing else: no `=`, `[`, `\`, skip level, label, header, statement, call or
-/// $GOTO. rules::block reads such a block through opt<block_number> and word_list, each G word
-/// through g_word (no `= value`; g_params matches empty without a `[`) and each other word
-/// through plain_address_word, with no other rule matching anything or acting.
-bool plain_block(std::string_view text) {
-  const char* p = text.data();
-  const char* const e = p + text.size();
-  const auto separators = [&] {
-    while (p < e) {
-      if (blank(*p)) {
-        ++p;
-      } else if (*p == '(') {
-        p = lex::paren_comment_end(p, e);
-      } else {
-        break;
-      }
-    }
-  };
-  const auto digits = [&] {
-    const char* const first = p;
-    while (p < e && lex::is_digit(*p))
-      ++p;
-    return p != first;
-  };
-  separators();
-  if (p < e && ascii_upper(*p) == 'N') {
-    ++p;
-    if (!digits()) return false;
-    if (p < e && *p == ':') ++p;
-    separators();
-  }
-  while (p < e && *p != ';') {
-    const char letter = ascii_upper(*p++);
-    if (letter == 'G') {
-      if (!digits()) return false;
-    } else if (plain_address_letter(letter)) {
-      if (p < e && (*p == '-' || *p == '+')) ++p;
-      // number_spec: digits [ '.' digits* ] | '.' digits
-      const bool whole = digits();
-      if (p < e && *p == '.') {
-        ++p;
-        if (!digits() && !whole) return false;  // a lone '.'
-      } else if (!whole) {
-        return false;
-      }
-    } else {
-      return false;
-    }
-    separators();
-  }
-  return true;
-}
+// The plain shape, the shape of most blocks: an optional block number `N<digits>[:]`, then
+// words `G<digits>`, `<letter><number>` or `<letter><sign><number>` (letter:
+// plain_address_letter), each followed by separators or at once by the next word; separators
+// are blanks and `( ... )` comments (as rules::ws reads them); a `;` comment may end the block.
+// Nothing else: no `=`, `[`, `\\`, skip level, label, header, statement, call or $GOTO.
+// rules::block reads such a block through opt<block_number> and word_list, each G word through
+// g_word (no `= value`; g_params matches empty without a `[`) and each other word through
+// plain_address_word, with no other rule matching anything or acting
+// (BlockParser::Impl::read_plain_block).
 
 }  // namespace
 
@@ -228,15 +181,28 @@ struct BlockParser::Impl {
     }
   }
 
-  /// What rules::block does on a block of the plain shape (see plain_block), without trying
+  /// What rules::block does on a block of the plain shape (above), without trying
   /// its alternatives: separators, the block number (Action<rules::block_number>), each G word
   /// as g_word (Action<rules::g_code>, Action<rules::g_word>) and each other word as
   /// plain_address_word (Action<rules::word> has nothing to do without a call), then
-  /// Action<rules::word_list>.
-  void read_plain_block(Input& in) {
+  /// Action<rules::word_list>. The shape is checked as the block is read, each word before its
+  /// actions: false where the block leaves the plain shape (the caller then discards what was
+  /// done and reads the block through rules::block).
+  bool read_plain_block(Input& in) {
+    // the plain shape's separators: blanks and ( ) comments (rules::ws reads them the same way)
     const auto separators = [&] {
-      (void)pegtl::match<rules::ws, pegtl::apply_mode::action, pegtl::rewind_mode::dontcare, Action,
-                         Control>(in, state);
+      const char* p = in.current();
+      const char* const e = in.end();
+      while (p < e) {
+        if (blank(*p)) {
+          ++p;
+        } else if (*p == '(') {
+          p = lex::paren_comment_end(p, e);
+        } else {
+          break;
+        }
+      }
+      in.bump(static_cast<std::size_t>(p - in.current()));
     };
     // The digits at in.current() + skip, and how many there are.
     const auto digits_after = [&](std::size_t skip) {
@@ -248,6 +214,7 @@ struct BlockParser::Impl {
     separators();
     if (!in.empty() && ascii_upper(in.peek_char()) == 'N') {
       std::size_t n = digits_after(1);
+      if (n == 1) return false;
       if (n < in.size() && in.peek_char(n) == ':') ++n;
       const char* const begin = in.current();
       in.bump(n);
@@ -255,19 +222,38 @@ struct BlockParser::Impl {
       separators();
     }
     while (!in.empty() && in.peek_char() != ';') {
-      if (ascii_upper(in.peek_char()) == 'G') {
+      const char letter = ascii_upper(in.peek_char());
+      if (letter == 'G') {
         const std::size_t n = digits_after(1);
+        if (n == 1) return false;
         const char* const begin = in.current();
         state.g_code = detail::parse_uint(std::string_view(begin + 1, n - 1));
         in.bump(n);
         detail::add_g_word(state, begin, std::string_view(begin, n));
-      } else if (!plain_address_word<pegtl::apply_mode::action, Action, Control>(in, state)) {
-        // plain_block checked each word's shape: never loop without reading
-        throw ParseFailure{in.current(), "NC1001", "a block", {}};
+      } else if (!plain_address_letter(letter) ||
+                 !plain_address_word<pegtl::apply_mode::action, Action, Control>(in, state)) {
+        return false;  // plain_address_word reads or does nothing
       }
       separators();
     }
     Action<rules::word_list>::apply(in, state);
+    return true;
+  }
+
+  /// The plain-shape shortcut for `out` (read_plain_block); false, with `out` and the state as
+  /// before it, when the block is not of that shape or the shortcut stopped at an error: the
+  /// whole grammar reads it then and reports the error itself.
+  bool read_plain(ast::Block& out, Input& in, bool multiline) {
+    try {
+      if (read_plain_block(in)) return true;
+    } catch (const ParseFailure&) {
+    }
+    out.words.clear();
+    out.exprs.clear();
+    out.number.reset();
+    state.reset(out, out.text.data(), out.text.data() + out.text.size(), out.loc, multiline);
+    in.restart();
+    return false;
   }
 
   template <typename Rule>
@@ -277,10 +263,7 @@ struct BlockParser::Impl {
     Input in(out.text.data(), out.text.data() + out.text.size(), "");
     try {
       if constexpr (std::is_same_v<Rule, rules::block>) {
-        if (shortcut && plain_block(out.text)) {
-          read_plain_block(in);
-          return;
-        }
+        if (shortcut && read_plain(out, in, multiline)) return;
       }
       if (!pegtl::parse<Rule, Action, Control>(in, state)) {
         throw ParseFailure{in.current(), "NC1001", "a block", {}};

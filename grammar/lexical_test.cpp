@@ -269,7 +269,7 @@ TEST_CASE("lines between #COMMENT BEGIN and END are not parsed") {
 }
 
 // Blocks of the plain shape (N10 G01 Y20 (comment)) are read by a shortcut past
-// rules::block (block_parser.cpp, plain_block); BlockParser::use_shortcut(false) sends them
+// rules::block (block_parser.cpp, read_plain_block); BlockParser::use_shortcut(false) sends them
 // through the whole grammar. Both must give the same block, to the bit, and the same
 // diagnostics.
 void same_as_whole_grammar(const std::string& text) {
