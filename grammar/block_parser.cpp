@@ -53,65 +53,44 @@ bool comment_only(std::string_view text) {
   }
 }
 
-/// True when `text` is a block of plain address words only: blanks, then words `<letter><number>`
-/// or `<letter><sign><number>` (letter: an address head other than V, which word tries as a
-/// variable first), each followed by blanks or at once by the next word, to the end; no
-/// comment, `\`, '=', '[' or anything else. rules::block reads such a block through
-/// word_list and each word through plain_address_word, with no other rule matching anything or
-/// acting (no skip level, block number, label, header, statement, call or trailing $GOTO).
-bool plain_words(std::string_view text) {
-  const char* p = text.data();
-  const char* const e = p + text.size();
-  const auto skip_blanks = [&] {
-    while (p < e && blank(*p))
-      ++p;
-  };
-  skip_blanks();
-  if (p == e) return false;
-  while (p < e) {
-    switch (ascii_upper(*p)) {
-      case 'M':
-      case 'H':
-      case 'F':
-      case 'E':
-      case 'S':
-      case 'T':
-      case 'D':
-      case 'I':
-      case 'J':
-      case 'K':
-      case 'R':
-      case 'X':
-      case 'Y':
-      case 'Z':
-      case 'A':
-      case 'B':
-      case 'C':
-      case 'U':
-      case 'W':
-        break;
-      default:
-        return false;
-    }
-    ++p;
-    if (p < e && (*p == '-' || *p == '+')) ++p;
-    // number_spec: digits [ '.' digits* ] | '.' digits
-    const char* const digits = p;
-    while (p < e && lex::is_digit(*p))
-      ++p;
-    if (p < e && *p == '.') {
-      ++p;
-      const char* const decimals = p;
-      while (p < e && lex::is_digit(*p))
-        ++p;
-      if (p == decimals && decimals == digits + 1) return false;  // a lone '.'
-    } else if (p == digits) {
+/// One letter of an address word the shortcut takes (address_head's letters but V, which
+/// `word` tries as a variable first).
+bool plain_address_letter(char c) {
+  switch (ascii_upper(c)) {
+    case 'M':
+    case 'H':
+    case 'F':
+    case 'E':
+    case 'S':
+    case 'T':
+    case 'D':
+    case 'I':
+    case 'J':
+    case 'K':
+    case 'R':
+    case 'X':
+    case 'Y':
+    case 'Z':
+    case 'A':
+    case 'B':
+    case 'C':
+    case 'U':
+    case 'W':
+      return true;
+    default:
       return false;
-    }
-    skip_blanks();
   }
-  return true;
 }
+
+// The plain shape, the shape of most blocks: an optional block number `N<digits>[:]`, then
+// words `G<digits>`, `<letter><number>` or `<letter><sign><number>` (letter:
+// plain_address_letter), each followed by separators or at once by the next word; separators
+// are blanks and `( ... )` comments (as rules::ws reads them); a `;` comment may end the block.
+// Nothing else: no `=`, `[`, `\\`, skip level, label, header, statement, call or $GOTO.
+// rules::block reads such a block through opt<block_number> and word_list, each G word through
+// g_word (no `= value`; g_params matches empty without a `[`) and each other word through
+// plain_address_word, with no other rule matching anything or acting
+// (BlockParser::Impl::read_plain_block).
 
 }  // namespace
 
@@ -125,6 +104,7 @@ struct BlockParser::Impl {
   bool single_line = true;      // the current block holds no line end (see split)
   std::size_t released_at = 0;  // position of the last SourceFile::release_before
   State state;
+  bool shortcut = true;  // plain blocks past rules::block (read_plain_block)
 
   explicit Impl(const core::SourceFile& f) : file(f), text(f.text()) {}
 
@@ -201,6 +181,81 @@ struct BlockParser::Impl {
     }
   }
 
+  /// What rules::block does on a block of the plain shape (above), without trying
+  /// its alternatives: separators, the block number (Action<rules::block_number>), each G word
+  /// as g_word (Action<rules::g_code>, Action<rules::g_word>) and each other word as
+  /// plain_address_word (Action<rules::word> has nothing to do without a call), then
+  /// Action<rules::word_list>. The shape is checked as the block is read, each word before its
+  /// actions: false where the block leaves the plain shape (the caller then discards what was
+  /// done and reads the block through rules::block).
+  bool read_plain_block(Input& in) {
+    // the plain shape's separators: blanks and ( ) comments (rules::ws reads them the same way)
+    const auto separators = [&] {
+      const char* p = in.current();
+      const char* const e = in.end();
+      while (p < e) {
+        if (blank(*p)) {
+          ++p;
+        } else if (*p == '(') {
+          p = lex::paren_comment_end(p, e);
+        } else {
+          break;
+        }
+      }
+      in.bump(static_cast<std::size_t>(p - in.current()));
+    };
+    // The digits at in.current() + skip, and how many there are.
+    const auto digits_after = [&](std::size_t skip) {
+      std::size_t n = skip;
+      while (n < in.size() && lex::is_digit(in.peek_char(n)))
+        ++n;
+      return n;
+    };
+    separators();
+    if (!in.empty() && ascii_upper(in.peek_char()) == 'N') {
+      std::size_t n = digits_after(1);
+      if (n == 1) return false;
+      if (n < in.size() && in.peek_char(n) == ':') ++n;
+      const char* const begin = in.current();
+      in.bump(n);
+      detail::add_block_number(state, begin, std::string_view(begin, n));
+      separators();
+    }
+    while (!in.empty() && in.peek_char() != ';') {
+      const char letter = ascii_upper(in.peek_char());
+      if (letter == 'G') {
+        const std::size_t n = digits_after(1);
+        if (n == 1) return false;
+        const char* const begin = in.current();
+        state.g_code = detail::parse_uint(std::string_view(begin + 1, n - 1));
+        in.bump(n);
+        detail::add_g_word(state, begin, std::string_view(begin, n));
+      } else if (!plain_address_letter(letter) ||
+                 !plain_address_word<pegtl::apply_mode::action, Action, Control>(in, state)) {
+        return false;  // plain_address_word reads or does nothing
+      }
+      separators();
+    }
+    Action<rules::word_list>::apply(in, state);
+    return true;
+  }
+
+  /// The plain-shape shortcut for `out` (read_plain_block); false, with `out` and the state as
+  /// before it, when the block is not of that shape or the shortcut stopped at an error: the
+  /// whole grammar reads it then and reports the error itself.
+  bool read_plain(ast::Block& out, Input& in, bool multiline) {
+    try {
+      if (read_plain_block(in)) return true;
+    } catch (const ParseFailure&) {
+    }
+    out.words.clear();
+    out.exprs.clear();
+    out.number.reset();
+    state.reset(out, out.text.data(), out.text.data() + out.text.size(), out.loc, multiline);
+    in.restart();
+    return false;
+  }
+
   template <typename Rule>
   void parse(ast::Block& out, core::DiagnosticList& diags) {
     const bool multiline = !single_line && out.text.find('\n') != std::string_view::npos;
@@ -208,25 +263,7 @@ struct BlockParser::Impl {
     Input in(out.text.data(), out.text.data() + out.text.size(), "");
     try {
       if constexpr (std::is_same_v<Rule, rules::block>) {
-        if (plain_words(out.text)) {
-          // What rules::block does on this shape, without its alternatives (see plain_words):
-          // each word as plain_address_word (Action<rules::word> has nothing to do without a
-          // call), blanks between, then Action<rules::word_list>.
-          const auto blanks = [&] {
-            (void)pegtl::match<rules::ws, pegtl::apply_mode::action, pegtl::rewind_mode::dontcare,
-                               Action, Control>(in, state);
-          };
-          blanks();
-          while (!in.empty()) {
-            // Each word matches (plain_words checked its shape); never loop without reading.
-            if (!plain_address_word<pegtl::apply_mode::action, Action, Control>(in, state)) {
-              throw ParseFailure{in.current(), "NC1001", "a block", {}};
-            }
-            blanks();
-          }
-          Action<rules::word_list>::apply(in, state);
-          return;
-        }
+        if (shortcut && read_plain(out, in, multiline)) return;
       }
       if (!pegtl::parse<Rule, Action, Control>(in, state)) {
         throw ParseFailure{in.current(), "NC1001", "a block", {}};
@@ -356,6 +393,10 @@ BlockParser::~BlockParser() = default;
 
 bool BlockParser::next(ast::Block& out, core::DiagnosticList& diags) {
   return impl_->next(out, diags);
+}
+
+void BlockParser::use_shortcut(bool on) {
+  impl_->shortcut = on;
 }
 
 BlockParser::Position BlockParser::position() const {

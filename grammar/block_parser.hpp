@@ -38,6 +38,11 @@ class BlockParser {
 
   const core::SourceFile& file() const { return file_; }
 
+  /// Off: every block through the whole grammar (rules::block), for the tests that compare the
+  /// shortcut for blocks of the plain shape against it. On by default; both give the same
+  /// block and diagnostics.
+  void use_shortcut(bool on);
+
   /// Where the parser stands between two blocks: enough to resume there (a checkpoint).
   struct Position {
     std::size_t offset = 0;    ///< byte offset of the next line to read

@@ -74,10 +74,10 @@ bool try_alternative(Input& in, St& st) {
             template <typename...> class Ctl, typename Input, typename St>               \
   bool rules::rule::match(Input& in, [[maybe_unused]] St& st)
 
-// star<sep_spec>: blanks, '\r', nested ( ) comments (as paren_comment), and `\` + line end.
-NCSIM_HOT_MATCH(ws) {
-  const char* p = in.current();
-  const char* const e = in.end();
+namespace lex {
+/// Where star<sep_spec> starting at `p` ends: blanks, '\r', nested ( ) comments (as
+/// paren_comment), and `\` + line end.
+inline const char* separators_end(const char* p, const char* const e) {
   while (p < e) {
     const char c = *p;
     if (c == ' ' || c == '\t' || c == '\r') {
@@ -95,8 +95,24 @@ NCSIM_HOT_MATCH(ws) {
       break;
     }
   }
+  return p;
+}
+}  // namespace lex
+
+// star<sep_spec>: see lex::separators_end.
+NCSIM_HOT_MATCH(ws) {
+  const char* const p = lex::separators_end(in.current(), in.end());
   in.bump(static_cast<std::size_t>(p - in.current()));
   return true;
+}
+
+template <typename Rule, char... First>
+template <pegtl::apply_mode A, pegtl::rewind_mode M, template <typename...> class Act,
+          template <typename...> class Ctl, typename Input, typename St>
+bool rules::when_next<Rule, First...>::match(Input& in, St& st) {
+  const char* const p = lex::separators_end(in.current(), in.end());
+  if (p == in.end() || ((*p != First) && ...)) return true;  // Rule would match empty
+  return pegtl::match<Rule, A, M, Act, Ctl>(in, st);
 }
 
 // number_spec: digits [ '.' digits* ] | '.' digits. Pushes an Op::number leaf.

@@ -84,6 +84,27 @@ TEST_CASE("comparisons bind looser than arithmetic, logical operators loosest") 
   CHECK(value_of("4 | 1 && 0") == 0);  // | above &&
 }
 
+// Each precedence level tries its operator only when the character after the separators can
+// start it (rules::when_next): an operator after blanks, comments or a line continuation, in
+// either case, is still found at every level.
+TEST_CASE("operators after blanks, comments and continuations at every precedence level") {
+  CHECK(value_of("2 (c) ** (d) 3") == 8);
+  CHECK(value_of("7 (c) mod 4 * 2") == 6);
+  CHECK(value_of("1 (a (nested)) + 2 \\\n - 4") == -1);
+  CHECK(value_of("1 (c) == 1 (c) & 3 (c) | 4") == 5);
+  // the operators the helper does not evaluate: the tree they build
+  const Parsed p("P1 = 1 (c) ^ 2 (c) xor 1 (c) || 0 (c) != 2 (c) <= 1 (c) >= 1");
+  REQUIRE(p.diags.items().empty());
+  const ast::ExprNode& top = p.node(p.block.words.at(0).value);
+  CHECK(top.op == ast::Op::logical_or);
+  CHECK(p.node(top.a).op == ast::Op::logical_xor);
+  CHECK(p.node(p.node(top.a).a).op == ast::Op::bit_xor);
+  CHECK(p.node(top.b).op == ast::Op::greater_equal);
+  CHECK(p.node(p.node(top.b).a).op == ast::Op::less_equal);
+  CHECK(p.node(p.node(p.node(top.b).a).a).op == ast::Op::not_equal);
+  CHECK(value_of("[3] MOD 2") == 1);
+}
+
 TEST_CASE("unary minus on a literal is folded into the number") {
   const Parsed p("X-0");
   REQUIRE(p.block.words.size() == 1);

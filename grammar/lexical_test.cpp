@@ -268,13 +268,14 @@ TEST_CASE("lines between #COMMENT BEGIN and END are not parsed") {
   CHECK(check("#COMMENT BEGIN\nX1\n") == std::vector<std::string>{"1:1 NC2016"});
 }
 
-// Blocks of plain address words (X-1.5 Y20) are read by a shortcut past rules::block
-// (block_parser.cpp, plain_words); a comment at the end sends the same words through the whole
-// grammar. Both must give the same block, to the bit, and the same diagnostics.
+// Blocks of the plain shape (N10 G01 X-1.5 Y20 (comment)) are read by a shortcut past
+// rules::block (block_parser.cpp, read_plain_block); BlockParser::use_shortcut(false) sends them
+// through the whole grammar. Both must give the same block, to the bit, and the same
+// diagnostics.
 void same_as_whole_grammar(const std::string& text) {
   CAPTURE(text);
   const Parsed fast(text);
-  const Parsed full(text + " (c)");
+  const Parsed full(text, false);
   REQUIRE(fast.found == full.found);
   CHECK(fast.block.has_error == full.block.has_error);
   CHECK(fast.block.body.index() == full.block.body.index());
@@ -287,6 +288,15 @@ void same_as_whole_grammar(const std::string& text) {
     CHECK(a.loc.line == b.loc.line);
     CHECK(a.loc.column == b.loc.column);
     CHECK(a.value == b.value);
+    CHECK(a.code == b.code);
+    CHECK(a.has_params == b.has_params);
+  }
+  CHECK(fast.block.number.has_value() == full.block.number.has_value());
+  if (fast.block.number && full.block.number) {
+    CHECK(fast.block.number->number == full.block.number->number);
+    CHECK(fast.block.number->digits == full.block.number->digits);
+    CHECK(fast.block.number->is_label == full.block.number->is_label);
+    CHECK(fast.block.number->loc.column == full.block.number->loc.column);
   }
   REQUIRE(fast.block.exprs.size() == full.block.exprs.size());
   for (std::size_t i = 0; i < fast.block.exprs.size(); ++i) {
@@ -320,17 +330,34 @@ TEST_CASE("plain address-word blocks parse as through the whole grammar") {
                                            "V5 X1",
                                            "G01 X1",
                                            "N10 X1",
+                                           "n10: g1x2 (c) ; rest",
+                                           "N10 G01 G90 X1 (first (nested)) Y-2 F1000 (end",
+                                           "N10",
+                                           "(only a comment)",
+                                           "N4294967296 X1",
+                                           "N10 G01 G80 X1",
+                                           "G01 = 5",
+                                           "G1.5 X1",
+                                           "G X1",
+                                           "N X1",
+                                           "X1 N10",
+                                           "G01 X1 ;",
+                                           "N10 G04 X1 (a=b [c]) Y2",
+                                           "G" + std::string(30, '9') + " X1",
                                            too_long,
                                            too_long + " Y1"};
   for (const std::string& text : blocks)
     same_as_whole_grammar(text);
 }
 
-// Seeded random blocks of the shortcut's shape (the letters it takes, either case, signs,
-// numbers of up to 25 digits with or without a point on either side, words with or without
-// blanks between): each parses to the same block and diagnostics as through the whole grammar.
-TEST_CASE("random plain address-word blocks parse as through the whole grammar") {
+// Seeded random blocks of the shortcut's shape (an optional block number, G words, the
+// letters it takes in either case, signs, numbers of up to 25 digits with or without a point on
+// either side, words with or without blanks or comments between, a `;` comment at the end), and
+// some with one character the shape does not allow: each parses to the same block and
+// diagnostics as through the whole grammar.
+TEST_CASE("random plain blocks parse as through the whole grammar") {
   const std::string letters = "MHFESTDIJKRXYZABCUWmhfestdijkrxyzabcuw";
+  const std::string strays = "=[].VvLlNnPp$#%/\\\"@:G";
   std::mt19937 rng(20261124);
   const auto below = [&](std::size_t n) {
     return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng);
@@ -341,28 +368,39 @@ TEST_CASE("random plain address-word blocks parse as through the whole grammar")
       d += static_cast<char>('0' + below(10));
     return d;
   };
-  for (int n = 0; n < 5000; ++n) {
+  const std::array<const char*, 6> separators = {"", " ", "\t", " (c) ", "(a (b) c)", "\r"};
+  for (int n = 0; n < 8000; ++n) {
     std::string text(below(3), ' ');
-    const std::size_t words = 1 + below(5);
+    if (below(2) == 0)
+      text += std::string(below(2) == 0 ? "N" : "n") + digits(1 + below(10)) +
+              (below(4) == 0 ? ":" : "") + separators[below(separators.size())];
+    const std::size_t words = below(6);
     for (std::size_t w = 0; w < words; ++w) {
-      text += letters[below(letters.size())];
-      if (const std::size_t sign = below(3); sign < 2) text += "+-"[sign];
-      switch (below(4)) {
-        case 0:
-          text += digits(1 + below(25));
-          break;
-        case 1:
-          text += digits(1 + below(6)) + ".";
-          break;
-        case 2:
-          text += "." + digits(1 + below(12));
-          break;
-        default:
-          text += digits(1 + below(6)) + "." + digits(1 + below(12));
-          break;
+      if (below(4) == 0) {
+        text += (below(2) == 0 ? "G" : "g") + digits(1 + below(3));
+      } else {
+        text += letters[below(letters.size())];
+        if (const std::size_t sign = below(3); sign < 2) text += "+-"[sign];
+        switch (below(4)) {
+          case 0:
+            text += digits(1 + below(25));
+            break;
+          case 1:
+            text += digits(1 + below(6)) + ".";
+            break;
+          case 2:
+            text += "." + digits(1 + below(12));
+            break;
+          default:
+            text += digits(1 + below(6)) + "." + digits(1 + below(12));
+            break;
+        }
       }
-      text += std::array<const char*, 3>{"", " ", "\t"}[below(3)];
+      text += separators[below(separators.size())];
     }
+    if (below(5) == 0) text += "; rest [=]";
+    if (below(4) == 0) text.insert(below(text.size() + 1), 1, strays[below(strays.size())]);
+    if (text.find_first_not_of(" \t\r") == std::string::npos) continue;  // no block
     same_as_whole_grammar(text);
   }
 }

@@ -69,6 +69,19 @@ struct string_body : star<sor<seq<one<'\\'>, any>, not_one<'"', '\\'>>> {};
 struct close_quote2 : one<'"'> {};
 struct quoted : seq<one<'"'>, string_body, must<close_quote2>> {};
 
+// `Rule` (a star<> or opt<> of an operator tail `seq<ws, op, ...>`), tried only when the
+// character after the separators can start the operator (one of `First`): otherwise `Rule`
+// matches empty, as it would after trying. Every operand of an expression passes ten levels of
+// precedence, each with its tail; this spares the nine attempts that cannot match.
+template <typename Rule, char... First>
+struct when_next {
+  using rule_t = when_next;
+  using subs_t = pegtl::type_list<Rule>;
+  template <pegtl::apply_mode A, pegtl::rewind_mode M, template <typename...> class Action,
+            template <typename...> class Control, typename Input, typename State>
+  static bool match(Input& in, State& st);
+};
+
 // Expressions (isg-language.md §3; precedence in docs/language.md)
 struct expression;
 struct open_bracket : one<'['> {};
@@ -99,39 +112,39 @@ struct primary : sor<number, hex_number, group, string_operand, call, constant, 
 struct operand;
 struct op_power : seq<one<'*'>, one<'*'>> {};
 struct power_tail : seq<ws, op_power, ws, must<operand>> {};
-struct power : seq<primary, opt<power_tail>> {};
+struct power : seq<primary, when_next<opt<power_tail>, '*'>> {};
 struct unary_op : sor<one<'-'>, one<'+'>, NCSIM_KW("NOT"), NCSIM_KW("INV")> {};
 struct unary : seq<unary_op, ws, must<operand>> {};
 struct operand : sor<unary, power> {};  // -2**2 = -[2**2]; 2**-1 allowed; ** is right-assoc
 
 struct op_mul : sor<seq<one<'*'>, not_at<one<'*'>>>, one<'/'>, NCSIM_KW("MOD")> {};
 struct mul_tail : seq<ws, op_mul, ws, must<operand>> {};
-struct product : seq<operand, star<mul_tail>> {};
+struct product : seq<operand, when_next<star<mul_tail>, '*', '/', 'M', 'm'>> {};
 struct op_add : one<'+', '-'> {};
 struct add_tail : seq<ws, op_add, ws, must<product>> {};
-struct sum : seq<product, star<add_tail>> {};
+struct sum : seq<product, when_next<star<add_tail>, '+', '-'>> {};
 struct op_cmp : sor<pegtl::string<'=', '='>, pegtl::string<'!', '='>, pegtl::string<'<', '='>,
                     pegtl::string<'>', '='>, one<'<'>, one<'>'>> {};
 struct cmp_tail : seq<ws, op_cmp, ws, must<sum>> {};
-struct comparison : seq<sum, star<cmp_tail>> {};
+struct comparison : seq<sum, when_next<star<cmp_tail>, '=', '!', '<', '>'>> {};
 struct op_band : seq<one<'&'>, not_at<one<'&'>>> {};
 struct band_tail : seq<ws, op_band, ws, must<comparison>> {};
-struct band : seq<comparison, star<band_tail>> {};
+struct band : seq<comparison, when_next<star<band_tail>, '&'>> {};
 struct op_bxor : one<'^'> {};
 struct bxor_tail : seq<ws, op_bxor, ws, must<band>> {};
-struct bxor : seq<band, star<bxor_tail>> {};
+struct bxor : seq<band, when_next<star<bxor_tail>, '^'>> {};
 struct op_bor : seq<one<'|'>, not_at<one<'|'>>> {};
 struct bor_tail : seq<ws, op_bor, ws, must<bxor>> {};
-struct bor : seq<bxor, star<bor_tail>> {};
+struct bor : seq<bxor, when_next<star<bor_tail>, '|'>> {};
 struct op_land : pegtl::string<'&', '&'> {};
 struct land_tail : seq<ws, op_land, ws, must<bor>> {};
-struct land : seq<bor, star<land_tail>> {};
+struct land : seq<bor, when_next<star<land_tail>, '&'>> {};
 struct op_lxor : NCSIM_KW("XOR") {};
 struct lxor_tail : seq<ws, op_lxor, ws, must<land>> {};
-struct lxor : seq<land, star<lxor_tail>> {};
+struct lxor : seq<land, when_next<star<lxor_tail>, 'X', 'x'>> {};
 struct op_lor : pegtl::string<'|', '|'> {};
 struct lor_tail : seq<ws, op_lor, ws, must<lxor>> {};
-struct lor : seq<lxor, star<lor_tail>> {};
+struct lor : seq<lxor, when_next<star<lor_tail>, '|'>> {};
 struct expression : lor {};
 
 // Words (isg-language.md §1.3, §1.9, §2, §3.7, §3.8, §4.9, §6)
@@ -278,6 +291,9 @@ NCSIM_ANALYZE_CUSTOM(decl_type);
 NCSIM_ANALYZE_CUSTOM(hash_command);
 template <typename Name>
 struct analyze_traits<Name, ncsim::grammar::rules::ws> : analyze_opt_traits<> {};
+template <typename Name, typename Rule, char... First>
+struct analyze_traits<Name, ncsim::grammar::rules::when_next<Rule, First...>>
+    : analyze_opt_traits<Rule> {};
 template <typename Name>
 struct analyze_traits<Name, ncsim::grammar::rules::bracket_items> : analyze_opt_traits<> {};
 template <typename Name>

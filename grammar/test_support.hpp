@@ -16,8 +16,10 @@ struct Parsed {
   core::DiagnosticList diags;
   bool found = false;
 
-  explicit Parsed(std::string text) : file("t.nc", std::move(text)) {
+  /// `shortcut` false: through the whole grammar (BlockParser::use_shortcut).
+  explicit Parsed(std::string text, bool shortcut = true) : file("t.nc", std::move(text)) {
     BlockParser parser(file);
+    parser.use_shortcut(shortcut);
     found = parser.next(block, diags);
   }
   const ast::ExprNode& node(ast::NodeIndex i) const { return block.exprs.at(i); }

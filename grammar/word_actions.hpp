@@ -30,6 +30,27 @@ struct Action<rules::g_code> {
   }
 };
 
+namespace detail {
+/// Action<rules::g_word> on the word's text `t` starting at `begin` (also the block shortcut's).
+inline void add_g_word(State& st, const char* begin, std::string_view t) {
+  ast::Word w;
+  w.kind = ast::WordKind::g;
+  w.loc = st.loc(begin);
+  w.code = st.g_code;
+  std::size_t n = 1;
+  while (n < t.size() && t[n] >= '0' && t[n] <= '9')
+    ++n;
+  w.name = t.substr(0, n);
+  w.value = st.word_value;
+  w.has_params = st.g_has_params;
+  w.first_item = st.g_first_item;
+  w.item_count = st.g_item_count;
+  st.word_value = ast::kNoNode;
+  st.g_has_params = false;
+  st.add_word(w);
+}
+}  // namespace detail
+
 template <>
 struct Action<rules::g_arg> {
   template <typename Input>
@@ -42,22 +63,7 @@ template <>
 struct Action<rules::g_word> {
   template <typename Input>
   static void apply(const Input& in, State& st) {
-    ast::Word w;
-    w.kind = ast::WordKind::g;
-    w.loc = st.loc(in.begin());
-    w.code = st.g_code;
-    std::string_view t = in.string_view();
-    std::size_t n = 1;
-    while (n < t.size() && t[n] >= '0' && t[n] <= '9')
-      ++n;
-    w.name = t.substr(0, n);
-    w.value = st.word_value;
-    w.has_params = st.g_has_params;
-    w.first_item = st.g_first_item;
-    w.item_count = st.g_item_count;
-    st.word_value = ast::kNoNode;
-    st.g_has_params = false;
-    st.add_word(w);
+    detail::add_g_word(st, in.begin(), in.string_view());
   }
 };
 
@@ -270,26 +276,31 @@ struct Action<rules::block_number_expr> {
   }
 };
 
+namespace detail {
+/// Action<rules::block_number> on the number's text `t` starting at `begin` (also the block
+/// shortcut's).
+inline void add_block_number(State& st, const char* begin, std::string_view t) {
+  ast::BlockNumber n;
+  n.loc = st.loc(begin);
+  if (t.size() > 1 && t[1] == '[') {
+    n.expr = st.word_value;
+    st.word_value = ast::kNoNode;
+  } else {
+    n.is_label = t.back() == ':';
+    n.digits = t.substr(1, t.size() - 1 - (n.is_label ? 1 : 0));
+    const std::optional<std::uint32_t> number = parse_block_number(n.digits);
+    if (!number) st.fail_message(begin, "NC1005", "block number out of range: at most 4294967295");
+    n.number = *number;
+  }
+  st.block->number = n;
+}
+}  // namespace detail
+
 template <>
 struct Action<rules::block_number> {
   template <typename Input>
   static void apply(const Input& in, State& st) {
-    ast::BlockNumber n;
-    n.loc = st.loc(in.begin());
-    const std::string_view t = in.string_view();
-    if (t.size() > 1 && t[1] == '[') {
-      n.expr = st.word_value;
-      st.word_value = ast::kNoNode;
-    } else {
-      n.is_label = t.back() == ':';
-      n.digits = t.substr(1, t.size() - 1 - (n.is_label ? 1 : 0));
-      const std::optional<std::uint32_t> number = detail::parse_block_number(n.digits);
-      if (!number) {
-        st.fail_message(in.begin(), "NC1005", "block number out of range: at most 4294967295");
-      }
-      n.number = *number;
-    }
-    st.block->number = n;
+    detail::add_block_number(st, in.begin(), in.string_view());
   }
 };
 

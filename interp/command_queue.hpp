@@ -12,7 +12,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "interp/command.hpp"
@@ -29,8 +31,29 @@ class CommandQueue {
   void push_back(const Command& c) { items_.push_back(c); }
   /// Appends Command{line, file, body}. (Command is an aggregate: emplace_back(line, file,
   /// body) needs parenthesised aggregate initialisation, which clang 14 lacks.)
-  void emplace_back(std::uint32_t line, std::uint16_t file, CommandBody&& body) {
-    items_.push_back(Command{line, file, std::move(body)});
+  /// `body` is one of CommandBody's alternatives (or a CommandBody): it is moved once into the
+  /// new Command, which is moved once into the storage.
+  template <typename Body>
+  void emplace_back(std::uint32_t line, std::uint16_t file, Body&& body) {
+    items_.push_back(Command{line, file, CommandBody(std::forward<Body>(body))});
+  }
+  /// Appends a Command{line, file} holding a default Body and returns that body, to be filled
+  /// in place (a motion is built where it is queued, not moved there).
+  template <typename Body>
+  Body& emplace_default(std::uint32_t line, std::uint16_t file) {
+    Command& c = items_.emplace_back();
+    c.line = line;
+    c.file = file;
+    if constexpr (std::is_same_v<Body, std::variant_alternative_t<0, CommandBody>>) {
+      return *std::get_if<0>(&c.body);  // the default body, value-initialised already
+    } else {
+      return c.body.template emplace<Body>();
+    }
+  }
+  /// Removes the newest command (one emplace_default() gave up); the queue must not be empty.
+  void pop_back() {
+    items_.pop_back();
+    if (head_ == items_.size()) clear();
   }
   /// Removes the oldest command; the queue must not be empty.
   void pop_front() {

@@ -110,7 +110,7 @@ std::optional<double> Evaluator::not_finite(const ast::ExprNode& node, double va
   return std::nullopt;
 }
 
-std::optional<double> Evaluator::eval(const ast::Block& block, ast::NodeIndex n) {
+std::optional<double> Evaluator::eval_node(const ast::Block& block, ast::NodeIndex n) {
   if (n == ast::kNoNode || n >= block.exprs.size()) {
     fail(block.loc, "NC4002", "missing value");
     return std::nullopt;

@@ -40,7 +40,16 @@ class Evaluator {
   /// Value of node `n` of `block`; on failure returns nullopt and error() describes it. A
   /// result that is not a finite number (EXP[1000], DEXP[400], 1e300 * 1e300) is error NC4101
   /// at the operation that produced it: no infinity or NaN ever leaves the evaluator.
-  std::optional<double> eval(const grammar::ast::Block& block, grammar::ast::NodeIndex n);
+  std::optional<double> eval(const grammar::ast::Block& block, grammar::ast::NodeIndex n) {
+    // Most values are a literal: read here, without the call of the whole evaluator.
+    if (n < block.exprs.size()) {
+      const grammar::ast::ExprNode& node = block.exprs[n];
+      if (node.op == grammar::ast::Op::number || node.op == grammar::ast::Op::constant) {
+        return node.value;
+      }
+    }
+    return eval_node(block, n);
+  }
   /// Resolves a variable node (evaluating its indices) into `out`.
   bool resolve(const grammar::ast::Block& block, grammar::ast::NodeIndex n, VarRef& out);
   /// Writes `value` to the variable node `n` (assignment).
@@ -50,6 +59,7 @@ class Evaluator {
 
  private:
   bool fail(core::SourceLoc loc, std::string id, std::string message);
+  std::optional<double> eval_node(const grammar::ast::Block& block, grammar::ast::NodeIndex n);
   /// `value` when finite, else error NC4101 at `node`. Applied where a result can leave the
   /// range of a double (+ - * /, functions): leaves are finite already, as literals are
   /// range-checked (NC1005) and every stored value passed through such a check.

@@ -167,10 +167,6 @@ bool Interpreter::Impl::step() {
   return true;
 }
 
-void Interpreter::Impl::emit(std::uint32_t at_line, CommandBody body) {
-  pending.emplace_back(at_line, current_file, std::move(body));
-}
-
 // The public Interpreter: commands through the TRC filter, the V.E. writes, the files.
 
 Interpreter::Interpreter(const core::SourceFile& file, const machines::Machine& machine,
@@ -186,6 +182,9 @@ std::optional<Command> Interpreter::next() {
                            std::to_string(open_barrier_->line) +
                            " is not answered; call resume() first");
   }
+  // One result object, returned from one place: the command is moved into it once and the
+  // return elides the copy (two named results would cost a move of the command each).
+  std::optional<Command> out;
   // The decoded commands pass through the tool radius compensation (interp/trc.hpp), which
   // holds a plane motion until the next one closes its corner.
   while (s.trc_out.empty()) {
@@ -194,6 +193,12 @@ std::optional<Command> Interpreter::next() {
     }
     if (s.pending.empty()) {
       if (!s.error) s.trc_filter.finish(s.trc_out);
+      break;
+    }
+    if (s.trc_filter.passes(s.pending.front())) {
+      // What push() would put into trc_out unchanged, handed out at once (trc_out is empty).
+      out.emplace(std::move(s.pending.front()));
+      s.pending.pop_front();
       break;
     }
     auto e = s.trc_filter.push(std::move(s.pending.front()), s.trc_out);
@@ -207,17 +212,17 @@ std::optional<Command> Interpreter::next() {
       break;
     }
   }
-  if (!s.trc_out.empty()) {
-    std::optional<Command> c(std::move(s.trc_out.front()));  // returned as it is: one move
+  if (!out && !s.trc_out.empty()) {
+    out.emplace(std::move(s.trc_out.front()));
     s.trc_out.pop_front();
-    if (std::holds_alternative<Barrier>(c->body)) open_barrier_ = c;
-    return c;
   }
-  if (s.error && !error_) {
+  if (out) {
+    if (std::holds_alternative<Barrier>(out->body)) open_barrier_ = out;
+  } else if (s.error && !error_) {
     error_ = s.error;
     if (!s.error_reported) diags_.add(*s.error);
   }
-  return std::nullopt;
+  return out;
 }
 
 // The program's own V.E. writes, for the run time's store.

@@ -143,7 +143,12 @@ struct Interpreter::Impl {
   double latch = 0.0;              // conveyor position latched before the last #SYNC IN [mm]
   SignalAnswer signal_answer;      // the signal the barrier before a #WAIT / #SIGNAL READ gave
   bool signal_decode_only = true;  // that answer is the decode-only one (no 21549 then)
-  void emit(std::uint32_t line, CommandBody body);
+  /// Queues a command of this block (the body built once into the queue's storage: a Motion
+  /// is some 700 bytes, every move of it costs).
+  template <typename Body>
+  void emit(std::uint32_t at_line, Body&& body) {
+    pending.emplace_back(at_line, current_file, std::forward<Body>(body));
+  }
   const ast::Block* expand_macros(const ast::Block& b);
 
   const machines::Machine& machine;

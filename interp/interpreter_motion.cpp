@@ -87,7 +87,8 @@ bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const A
     return fail(b.loc, "20008",
                 "under G93 every G01/G02/G03 block needs its machining time F [s] (DIAG-20008)");
   }
-  Motion m;
+  // Built where it is queued; taken back on an error below.
+  Motion& m = pending.emplace_default<Motion>(line, current_file);
   m.kind = kind;
   m.frame = frames.frame();
   m.start = position;
@@ -104,23 +105,37 @@ bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const A
   m.end_feed = words.end_feed;
   if (arc) {
     m.arc = make_arc(b, kind, target, ijk, radius);
-    if (!m.arc) return false;
+    if (!m.arc) {
+      pending.pop_back();
+      return false;
+    }
   }
   if (kind != MotionKind::rapid && modal.feed_mode == FeedMode::per_minute && m.feed > 0.0) {
     // The block's time at its feed, from a lower bound of its length (the X/Y/Z chord; a full
     // circle's circumference): beyond ncsim's longest time it is an error here, as for a
     // dwell, instead of a run of days (issue 34 item 19; docs/interp.md "The longest time").
-    double length = 0.0;  // [mm]
+    // The sum of |dX|, |dY|, |dZ| is no shorter than the chord: when even that is well within
+    // the longest time, so is the chord, and its three hypot() calls are not needed.
+    double bound = 0.0;  // [mm]
     for (const auto& a : xyz) {
-      if (a) length = std::hypot(length, target[*a] - position[*a]);
+      if (a) bound += std::fabs(target[*a] - position[*a]);
     }
-    if (m.arc && m.arc->full_circle) length = 2.0 * std::numbers::pi * m.arc->radius;
-    const double t_feed = length / m.feed;  // [s]
-    if (!(t_feed <= core::kLongestTime)) {
-      return fail(b.loc, "NC4032",
-                  longest_time_text("the motion time at F" + core::number_text(m.feed * 60.0) +
-                                        " (" + core::number_text(length) + " mm)",
-                                    t_feed));
+    const bool full_circle = m.arc && m.arc->full_circle;
+    if (full_circle || !(bound / m.feed <= 0.5 * core::kLongestTime)) {
+      double length = 0.0;  // [mm]
+      for (const auto& a : xyz) {
+        if (a) length = std::hypot(length, target[*a] - position[*a]);
+      }
+      if (full_circle) length = 2.0 * std::numbers::pi * m.arc->radius;
+      const double t_feed = length / m.feed;  // [s]
+      if (!(t_feed <= core::kLongestTime)) {
+        std::string message =
+            longest_time_text("the motion time at F" + core::number_text(m.feed * 60.0) + " (" +
+                                  core::number_text(length) + " mm)",
+                              t_feed);
+        pending.pop_back();  // m with it
+        return fail(b.loc, "NC4032", std::move(message));
+      }
     }
   }
   // A zero-length G00/G01 moves nothing (the planner drops it), so it is no progress for
@@ -128,7 +143,6 @@ bool Interpreter::Impl::run_motion(const ast::Block& b, MotionKind kind, const A
   // (issue 34 item 2; docs/interp.md "Endless loops").
   if (arc || target != position) blocks_without_motion = 0;
   position = target;
-  emit(line, std::move(m));
   return true;
 }
 

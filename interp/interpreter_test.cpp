@@ -6,6 +6,7 @@
 namespace ncsim::interp {
 namespace {
 
+using test::Run;
 using test::run;
 
 std::string ax(int line, const char* kind, const char* x, const char* y, const char* z,
@@ -535,6 +536,18 @@ TEST_CASE("a dwell, block time or feed motion longer than one day is an error at
   CHECK(id_at("#TIME 86400") == "@0");
   CHECK(id_at("G93 G01 X10 F86400") == "@0");
   CHECK(id_at("G01 X25 F1") == "@0");  // 24 mm at 1 mm/min: 1440 s
+}
+
+// run_motion builds a motion where it is queued (interpreter_motion.cpp): a block that fails
+// after that (NC4032, NC4202) takes it back, so the stream ends with the blocks before it.
+TEST_CASE("a motion block that fails leaves no motion in the stream") {
+  for (const char* failing : {"G01 X10 F0.000001", "G02 X20 Y0 R5"}) {
+    CAPTURE(failing);
+    const Run r = run(std::string("%t\nG01 X1 F600\n") + failing + "\nG01 X2\nM30\n");
+    CHECK(r.error_line == 3);
+    REQUIRE(r.lines.size() == 1);
+    CHECK(r.lines[0].rfind("2:", 0) == 0);
+  }
 }
 
 }  // namespace

@@ -219,11 +219,6 @@ bool keeps_direction(const Element& e, Vec2 start, Vec2 end) {
 
 namespace {
 
-double signed_offset(const ToolRadiusComp& t) {
-  if (t.side == TrcSide::off) return 0.0;
-  return t.side == TrcSide::left ? t.radius : -t.radius;
-}
-
 bool allowed_behind(const CommandBody& body) {
   return std::holds_alternative<Tech>(body) || std::holds_alternative<Dwell>(body) ||
          std::holds_alternative<Message>(body) || std::holds_alternative<ProgramStop>(body) ||
@@ -318,7 +313,7 @@ void Compensator::finish(CommandQueue& out) {
   held_.reset();
 }
 
-std::optional<Error> Compensator::push(Command c, CommandQueue& out) {
+std::optional<Error> Compensator::push(Command&& c, CommandQueue& out) {
   if (const auto* m = std::get_if<Motion>(&c.body)) {
     std::uint8_t a1 = 0, a2 = 0;
     const bool active = signed_offset(m->modal.trc) != 0.0;

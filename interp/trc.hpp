@@ -94,6 +94,12 @@ struct Error {
 /// blocks, error 90011 beyond; the size is ncsim's decision).
 inline constexpr std::size_t kMaxHeldCommands = 64;
 
+/// The offset of the path from the programmed contour [mm]: + left (G41), - right (G42), 0 off.
+inline double signed_offset(const ToolRadiusComp& t) {
+  if (t.side == TrcSide::off) return 0.0;
+  return t.side == TrcSide::left ? t.radius : -t.radius;
+}
+
 /// The stream filter. `push()` each command in order; ready commands are appended to `out`.
 class Compensator {
  public:
@@ -101,7 +107,14 @@ class Compensator {
   explicit Compensator(std::array<std::optional<std::uint8_t>, 3> xyz = {}) : xyz_(xyz) {}
 
   /// Takes the next command of the stream. Returns the error that ends the stream, if any.
-  std::optional<Error> push(Command c, CommandQueue& out);
+  std::optional<Error> push(Command&& c, CommandQueue& out);
+  /// True when push(c) would put `c` into `out` unchanged and return no error: nothing is held
+  /// and `c` is no motion under an active compensation.
+  bool passes(const Command& c) const {
+    if (held_) return false;
+    const auto* m = std::get_if<Motion>(&c.body);
+    return m == nullptr || signed_offset(m->modal.trc) == 0.0;
+  }
   /// The stream ended (End or an error): releases what is held, the held element ending at
   /// its perpendicular offset point.
   void finish(CommandQueue& out);
