@@ -11,9 +11,6 @@ namespace {
 
 // ncsim's conveyor ids (docs/diagnostics.md "conveyor/"), as conveyor/world raises them.
 constexpr const char* kQueueFull = "NC9001";
-constexpr const char* kProbeInput = "NC9002";
-constexpr const char* kNoWorkpiece = "NC9003";
-constexpr const char* kNotConveyor = "NC9004";
 constexpr const char* kRearEdge = "NC9007";
 
 }  // namespace
@@ -97,11 +94,6 @@ class LineWorld::StationPort final : public Port {
   std::uint64_t taken = 0;
 
  private:
-  struct Armed {
-    std::uint8_t axis = 0;
-    int channel = 1;
-    bool rising = true;
-  };
   void raise(const char* id, std::string message) noexcept {
     if (!error_) error_ = PortError{id, std::move(message)};
   }
@@ -111,7 +103,7 @@ class LineWorld::StationPort final : public Port {
   std::size_t k_;
   StationSpec spec_;
   std::size_t capacity_;
-  std::optional<Armed> armed_;
+  std::optional<ProbeArming> armed_;
   std::deque<LatchInfo> pending_;  // measured, not yet taken by #SYNC IN
   std::deque<LatchInfo> queue_;    // method 3: the PLC's queue (the workpiece still free)
   LatchInfo last_;
@@ -132,36 +124,8 @@ LatchInfo LineWorld::StationPort::latch(const Piece& p, double value, double rea
 
 void LineWorld::StationPort::arm_probe(const machines::ProbeArm& c) noexcept {
   const bool rising = c.edge ? *c.edge == machines::ProbeEdge::rising : spec_.default_rising;
-  if (armed_) {  // seed 004 §6.3.1: not retriggerable (as conveyor/world)
-    if (c.axis != armed_->axis) {
-      raise("P-ERR-44001",
-            "MC_TouchProbe on another axis while a measurement is active "
-            "(ERR_PO_AX_REF_CHG_WHILE_ACTIVE)");
-    } else if (c.channel != armed_->channel) {
-      raise("P-ERR-44011", "MC_TouchProbe Channel=" + std::to_string(c.channel) +
-                               " while the measurement on channel " +
-                               std::to_string(armed_->channel) +
-                               " is active (ERR_PO_AX_INPREF_TPCH_CHW_ACTIVE)");
-    } else if (rising != armed_->rising) {
-      raise("P-ERR-44012",
-            "MC_TouchProbe Mode changed while a measurement is active "
-            "(ERR_PO_AX_INPREF_TPMD_CHW_ACTIVE)");
-    } else {
-      raise("P-ERR-44009",
-            "MC_TouchProbe retriggered while its measurement is active (ERR_PO_AX_TPROBE_RETRIG)");
-    }
-    return;
-  }
-  if (c.axis != spec_.axis) {
-    raise(kNotConveyor, "MC_TouchProbe on machine axis " + std::to_string(c.axis) +
-                            ": the sensor latches the conveyor axis " + spec_.axis_name);
-    return;
-  }
-  if (c.channel != spec_.probe_input) {
-    raise(kProbeInput, "MC_TouchProbe Channel=" + std::to_string(c.channel) +
-                           ": the sensor is wired to probing input " +
-                           std::to_string(spec_.probe_input) + " of axis " + spec_.axis_name +
-                           " (P-AXIS-00517 kenngr.measure.input); no edge would ever come");
+  if (auto e = probe_arm_error(c, rising, armed_, spec_.axis, spec_.axis_name, spec_.probe_input)) {
+    raise(e->id.c_str(), std::move(e->message));
     return;
   }
   const bool front_rising = line_.conveyor_ ? line_.conveyor_->sensor.front_edge_rising : true;
@@ -172,14 +136,14 @@ void LineWorld::StationPort::arm_probe(const machines::ProbeArm& c) noexcept {
                          "sensor along the belt gives the front edge (docs/lines.md)");
     return;
   }
-  armed_ = Armed{c.axis, c.channel, rising};
+  armed_ = ProbeArming{c.axis, c.channel, rising};
   if (spec_.method == MeasuringMethod::plc_queue) present();
   if (armed_ && !line_.more_for(k_)) {
-    raise(kNoWorkpiece, "MC_TouchProbe armed on " + spec_.axis_name + " of channel " +
-                            std::to_string(spec_.channel) +
-                            ", but no workpiece is left to reach its sensor (the line's "
-                            "[conveyor] stream is through, none on the belt before it): the "
-                            "measured value would never come");
+    raise(kNoWorkpieceId, "MC_TouchProbe armed on " + spec_.axis_name + " of channel " +
+                              std::to_string(spec_.channel) +
+                              ", but no workpiece is left to reach its sensor (the line's "
+                              "[conveyor] stream is through, none on the belt before it): the "
+                              "measured value would never come");
   }
 }
 

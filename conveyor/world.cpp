@@ -11,9 +11,6 @@ namespace {
 
 // ncsim's conveyor ids (docs/diagnostics.md "conveyor/"); the manual's are P-ERR-440xx.
 constexpr const char* kQueueFull = "NC9001";
-constexpr const char* kProbeInput = "NC9002";
-constexpr const char* kNoWorkpiece = "NC9003";
-constexpr const char* kNotConveyor = "NC9004";
 constexpr const char* kTooFast = "NC9005";
 constexpr const char* kEncoderBelt = "NC9006";
 
@@ -203,8 +200,8 @@ bool World::command_velocity(const machines::MoveVelocity& c) noexcept {
     return false;
   }
   if (c.axis != axis_index_) {
-    raise(kNotConveyor, "MC_MoveVelocity reached the conveyor world for machine axis " +
-                            std::to_string(c.axis) + ", not the conveyor axis " + axis_->name);
+    raise(kNotConveyorId, "MC_MoveVelocity reached the conveyor world for machine axis " +
+                              std::to_string(c.axis) + ", not the conveyor axis " + axis_->name);
     return false;
   }
   const machines::Dynamics& d = axis_->dynamics;
@@ -231,47 +228,17 @@ bool World::command_velocity(const machines::MoveVelocity& c) noexcept {
 
 void World::arm_probe(const machines::ProbeArm& c) noexcept {
   const bool rising = c.edge ? *c.edge == machines::ProbeEdge::rising : default_rising_;
-  if (armed_) {  // seed 004 §6.3.1: not retriggerable; the active command stays
-    if (c.axis != armed_->axis) {
-      raise("P-ERR-44001",
-            "MC_TouchProbe on another axis while a measurement is active "
-            "(ERR_PO_AX_REF_CHG_WHILE_ACTIVE)");
-    } else if (c.channel != armed_->channel) {
-      raise("P-ERR-44011", "MC_TouchProbe Channel=" + std::to_string(c.channel) +
-                               " while the measurement on channel " +
-                               std::to_string(armed_->channel) +
-                               " is active (ERR_PO_AX_INPREF_TPCH_CHW_ACTIVE)");
-    } else if (rising != armed_->rising) {
-      raise("P-ERR-44012", std::string("MC_TouchProbe Mode changed to the ") +
-                               (rising ? "rising" : "falling") +
-                               " edge while a measurement is active "
-                               "(ERR_PO_AX_INPREF_TPMD_CHW_ACTIVE)");
-    } else {
-      raise("P-ERR-44009",
-            "MC_TouchProbe retriggered while its measurement is active "
-            "(ERR_PO_AX_TPROBE_RETRIG)");
-    }
+  if (auto e = probe_arm_error(c, rising, armed_, axis_index_, axis_->name, probe_input_)) {
+    raise(e->id.c_str(), std::move(e->message));
     return;
   }
-  if (c.axis != axis_index_) {
-    raise(kNotConveyor, "MC_TouchProbe on machine axis " + std::to_string(c.axis) +
-                            ": the sensor latches the conveyor axis " + axis_->name);
-    return;
-  }
-  if (c.channel != probe_input_) {
-    raise(kProbeInput, "MC_TouchProbe Channel=" + std::to_string(c.channel) +
-                           ": the sensor is wired to probing input " +
-                           std::to_string(probe_input_) + " of axis " + axis_->name +
-                           " (P-AXIS-00517 kenngr.measure.input); no edge would ever come");
-    return;
-  }
-  armed_ = Armed{c.axis, c.channel, rising};
+  armed_ = ProbeArming{c.axis, c.channel, rising};
   if (method_ == MeasuringMethod::plc_queue) present_from_queue();
   if (armed_ && !sensor_.more_to_come()) {
-    raise(kNoWorkpiece, "MC_TouchProbe armed on " + axis_->name +
-                            ", but no workpiece is left to reach the sensor (scenario "
-                            "[conveyor] workpiece / workpieces): the measured value would "
-                            "never come");
+    raise(kNoWorkpieceId, "MC_TouchProbe armed on " + axis_->name +
+                              ", but no workpiece is left to reach the sensor (scenario "
+                              "[conveyor] workpiece / workpieces): the measured value would "
+                              "never come");
   }
 }
 

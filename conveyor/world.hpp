@@ -28,6 +28,7 @@
 #include "conveyor/filter.hpp"
 #include "conveyor/noise.hpp"
 #include "conveyor/port.hpp"
+#include "conveyor/probe_arming.hpp"
 #include "conveyor/sensor.hpp"
 #include "machines/machine.hpp"
 #include "scenario/scenario.hpp"
@@ -83,11 +84,6 @@ class World final : public Port {
     double v = 0.0;
     VelocityDynamics dynamics;
   };
-  struct Armed {
-    std::uint8_t axis = 0;
-    int channel = 1;
-    bool rising = true;
-  };
   BeltState delayed(double t) noexcept;
   void raise(const char* id, std::string message) noexcept;
   LatchInfo latch(const Edge& edge, double value) const;
@@ -118,7 +114,7 @@ class World final : public Port {
   double t_ = 0.0;
   BeltState measured_;
   BeltState master_;
-  std::optional<Armed> armed_;
+  std::optional<ProbeArming> armed_;
   std::deque<LatchInfo> pending_;    // latched, not yet taken (bounded by queue_capacity_)
   std::deque<LatchInfo> plc_queue_;  // method 3 (bounded by queue_capacity_)
   LatchInfo last_;
