@@ -96,6 +96,20 @@ TEST_CASE("program headers: %name, bare %, % name, %L name") {
   CHECK_FALSE(header("%Laser").local);
 }
 
+TEST_CASE("a %name header after a block with an H word is not a local subroutine") {
+  // The header action read a word kind only `%L` sets: an H word's kind left from an earlier
+  // block marked the next plain header local.
+  const core::SourceFile file("t.nc", "%main\nH5\n%next\nH6\n%L sub\n");
+  BlockParser parser(file);
+  core::DiagnosticList diags;
+  ast::Block b;
+  std::vector<bool> local;
+  while (parser.next(b, diags))
+    if (const auto* h = std::get_if<ast::ProgramHeader>(&b.body)) local.push_back(h->local);
+  CHECK(diags.items().empty());
+  CHECK(local == std::vector<bool>{false, false, true});
+}
+
 TEST_CASE("axis values: number, bracket, variable with or without blank, sign") {
   const Parsed p("X P5 Y-0 ZV.S.VAR[4] A[2*3] AB=90 U+.5");
   REQUIRE(p.diags.items().empty());

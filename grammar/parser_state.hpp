@@ -54,6 +54,7 @@ struct State {
   // the word being parsed
   char sign = 0;
   ast::WordKind word_kind = ast::WordKind::axis;
+  bool local_header = false;  // this block's header is `%L name`
   core::SourceLoc word_loc;
   std::string_view word_name;
   ast::NodeIndex word_value = ast::kNoNode;
@@ -98,6 +99,7 @@ struct State {
     vars.clear();
     calls.clear();
     sign = 0;
+    local_header = false;
     word_value = ast::kNoNode;
     word_extra = ast::kNoNode;
     g_has_params = false;

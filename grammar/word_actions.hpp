@@ -332,7 +332,7 @@ template <>
 struct Action<rules::local_header> {
   template <typename Input>
   static void apply(const Input&, State& st) {
-    st.word_kind = ast::WordKind::h;  // marks "local" for the header action
+    st.local_header = true;  // for the header action
   }
 };
 
@@ -341,7 +341,7 @@ struct Action<rules::header> {
   template <typename Input>
   static void apply(const Input&, State& st) {
     ast::ProgramHeader h;
-    h.local = st.word_kind == ast::WordKind::h;
+    h.local = st.local_header;
     h.name = st.word_name;
     st.block->body = h;
   }
