@@ -72,6 +72,13 @@ const ast::Block* Interpreter::Impl::fetch(Pc at) {
   return files[at.file]->blocks->fetch(at.ordinal, diags);
 }
 
+bool Interpreter::Impl::end_stream(End end) {
+  if (spline && !spline_off({line, 1})) return false;  // as at M30 (interpreter_block.cpp)
+  emit(line, end);
+  finished = true;
+  return true;
+}
+
 bool Interpreter::Impl::step() {
   if (!started) {
     started = true;
@@ -84,10 +91,7 @@ bool Interpreter::Impl::step() {
   const ast::Block* block = fetch(pc);
   if (block == nullptr || (is_header(block) && pc.ordinal != unit_start)) {
     if (!calls.empty()) return subs.subroutine_return();  // the next % ends a subroutine
-    if (spline && !spline_off({line, 1})) return false;   // as at M30 (interpreter_block.cpp)
-    emit(line, End{0});
-    finished = true;
-    return true;
+    return end_stream(End{0});
   }
   if (block->has_error) {
     for (auto it = diags.items().rbegin(); it != diags.items().rend(); ++it) {
@@ -111,13 +115,9 @@ bool Interpreter::Impl::step() {
     return true;
   }
   if (!repeat.watch(line)) return false;
-  if (options.end_when_endless && repeat.endless_on_its_own()) {
-    // Before the block the decoder came back to: whole passes ran (docs/interp.md).
-    if (spline && !spline_off({line, 1})) return false;  // as at M30
-    emit(line, End{0, true});
-    finished = true;
-    return true;
-  }
+  // Before the block the decoder came back to: what ran since it was first there are whole
+  // repetitions (docs/interp.md "Endless programs").
+  if (options.end_when_endless && repeat.endless_on_its_own()) return end_stream(End{0, true});
   if (options.max_blocks_without_motion != 0 &&
       ++blocks_without_motion > options.max_blocks_without_motion) {
     const std::uint32_t loop_line = flow.loop_line(line);

@@ -113,6 +113,9 @@ struct Interpreter::Impl {
   SlopeType channel_slope() const;
   bool spline_on(core::SourceLoc at);   // #SPLINE ON / G151
   bool spline_off(core::SourceLoc at);  // #SPLINE OFF / G150 (emits SplineEnd)
+  /// The stream's end without M02/M30 (end of file, or `end`'s endless stop): an open spline
+  /// section's last points run first, as at M30; false on its error.
+  bool end_stream(End end);
   bool run_declaration(const ast::Block& b, const ast::Declaration& d);
   /// What a block says about its own motion only (non-modal words, isg-language.md §2.4).
   struct BlockMotionWords {
