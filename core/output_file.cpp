@@ -37,21 +37,31 @@ void remove_temporaries(int sig) {
   for (Slot& s : g_slots) {
     if (s.state.load() == kArmed) ::unlink(s.path.data());
   }
-  // SA_RESETHAND restored the default action; the signal, blocked while the handler runs, is
-  // delivered again when it returns: the process ends as the signal's default says.
+  // Only now the default action: the signal (and the other cleanup signals, all in the
+  // handler's mask) stays blocked until the handler returns, then the process ends as the
+  // signal's default says. Not SA_RESETHAND: with it the kernel resets the action when it takes
+  // the signal, before it blocks it for the handler, so a second copy in that window (timeout(1)
+  // sends one to the child and one to its process group) would end the process by the default
+  // action before the handler ran.
+  struct sigaction dfl {};
+  dfl.sa_handler = SIG_DFL;
+  sigemptyset(&dfl.sa_mask);
+  ::sigaction(sig, &dfl, nullptr);
   ::raise(sig);
 }
 
 void install_handlers() {
   bool expected = false;
   if (!g_installed.compare_exchange_strong(expected, true)) return;
+  struct sigaction sa {};
+  sa.sa_handler = remove_temporaries;
+  sigemptyset(&sa.sa_mask);
+  for (const int sig : kSignals)
+    sigaddset(&sa.sa_mask, sig);
+  sa.sa_flags = 0;
   for (const int sig : kSignals) {
     struct sigaction old {};
     if (::sigaction(sig, nullptr, &old) != 0 || old.sa_handler == SIG_IGN) continue;  // nohup
-    struct sigaction sa {};
-    sa.sa_handler = remove_temporaries;
-    sigemptyset(&sa.sa_mask);
-    sa.sa_flags = SA_RESETHAND;
     ::sigaction(sig, &sa, nullptr);
   }
 }

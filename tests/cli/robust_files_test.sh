@@ -118,15 +118,32 @@ wait_for() {
   done
   return 1
 }
+# bounded_pid PIDFILE ARGS...: ncsim ARGS, bounded by timeout(1), its own pid written to PIDFILE.
+# The signal goes to ncsim itself: timeout(1) of coreutils 9.1 installs its handlers before its
+# fork() and, signalled before it is back from it, takes itself for the child and exits, leaving
+# ncsim running (a run here now and then went on writing after the test's check).
+bounded_pid() {
+  local pidfile=$1
+  shift
+  timeout -k 5 20 bash -c 'echo $$ >"$0"; exec "$@"' "$pidfile" "$real_ncsim" "$@"
+}
+# signal_ncsim SIG PIDFILE: sends SIG to the ncsim whose pid PIDFILE holds (waits for the file).
+signal_ncsim() {
+  for _ in $(seq 100); do
+    [[ -s $2 ]] && break
+    sleep 0.1
+  done
+  kill -s "$1" "$(cat "$2")"
+}
 for sig in INT TERM HUP; do
-  rm -f "$work/sig.csv"
-  # $ncsim is timeout(1), which passes the signal on to ncsim (whose SIGINT is not ignored,
-  # as a background child of this shell's would be).
-  "$ncsim" run -o "$work/sig.csv" "$work/slow.nc" 2>/dev/null &
+  rm -f "$work/sig.csv" "$work/sig.pid"
+  # ncsim runs under bash -c in timeout(1), whose SIGINT is not ignored (as a background child
+  # of this shell's would be).
+  bounded_pid "$work/sig.pid" run -o "$work/sig.csv" "$work/slow.nc" 2>/dev/null &
   pid=$!
   pids+=($pid)
   holds "SIG$sig: the run's temporary file appears" wait_for "$work/sig.csv.*.tmp"
-  kill -s "$sig" "$pid"
+  signal_ncsim "$sig" "$work/sig.pid"
   wait "$pid" 2>/dev/null
   status=$?
   holds "SIG$sig during run -o: the run ends by the signal (status $status)" test "$status" -ne 0 -a "$status" -ne 124
@@ -135,11 +152,12 @@ for sig in INT TERM HUP; do
 done
 mkdir -p "$work/lib/slow" "$work/tmp"
 cp "$work/slow.nc" "$work/lib/slow/slow.nc"
-TMPDIR=$work/tmp "$ncsim" golden bless "$work/lib/slow" >/dev/null 2>&1 &
+rm -f "$work/bless.pid"
+TMPDIR=$work/tmp bounded_pid "$work/bless.pid" golden bless "$work/lib/slow" >/dev/null 2>&1 &
 pid=$!
 pids+=($pid)
 holds "golden bless: the run's temporary CSV appears" wait_for "$work/tmp/ncsim-golden-*"
-kill -s TERM "$pid"
+signal_ncsim TERM "$work/bless.pid"
 wait "$pid" 2>/dev/null
 holds "SIGTERM during golden bless: no temporary CSV left" test -z "$(ls -A "$work/tmp")"
 holds "SIGTERM during golden bless: no golden, no temporary golden" test -z "$(ls "$work/lib/slow" | grep -v '^slow\.nc$')"
