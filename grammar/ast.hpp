@@ -206,6 +206,7 @@ enum class TableId : std::uint8_t {
   vector_limit,  ///< #VECTOR LIMIT ON [VEL=.. ACC=.. DEC=..]
   scale,         ///< #SCALE [ON] X2 Y0.5
   signal,        ///< #SIGNAL / #WAIT / #SIGNAL READ [ID=.. COUNT=.. P[i]=.. CH=..]
+  tangfeed,      ///< #TANGFEED [RMIN=..] / #SET TANGFEED RMIN [..]
 };
 
 // Axis-bracket commands and calls
@@ -348,6 +349,7 @@ enum class HashKind : std::uint8_t {
   hsc_off,           ///< #HSC OFF
   vector_limit_on,   ///< #VECTOR LIMIT ON [...] / ON ALL
   vector_limit_off,  ///< #VECTOR LIMIT OFF [...] / OFF ALL
+  tangfeed,          ///< #TANGFEED [RMIN=..] / #SET TANGFEED RMIN [..] (G11's minimum radius)
   scale_on,          ///< #SCALE [ON] X.. Y..
   scale_off,         ///< #SCALE OFF
   mcs_on,            ///< #MCS ON [EX TOOL]

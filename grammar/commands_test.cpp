@@ -134,7 +134,18 @@ TEST_CASE("unsupported commands are reported as such with their position") {
   const Parsed o("X[OSC ON]");
   REQUIRE(o.diags.items().size() == 1);
   CHECK(o.diags.items()[0].loc.column == 3);
-  CHECK(check("G237 X1") == std::vector<std::string>{"1:1 NC1002"});
+  CHECK(check("G238 X1") == std::vector<std::string>{"1:1 NC1002"});
+}
+
+TEST_CASE("#TANGFEED [RMIN=..] and the old #SET TANGFEED RMIN [..] are read [PROG-207065483]") {
+  CHECK(check("#TANGFEED [RMIN=3]").empty());
+  CHECK(check("#TANGFEED").empty());
+  CHECK(check("#SET TANGFEED RMIN [2.5*2]").empty());
+  const Parsed t("#TANGFEED [RMIN=3]");
+  CHECK(hash(t).kind == ast::HashKind::tangfeed);
+  CHECK(t.block.items.at(0).keyword == "RMIN");
+  CHECK(check("#SET TANGFEED [3]") == std::vector<std::string>{"1:15 NC1001"});
+  CHECK_FALSE(check("#TANGFEED [RMAX=3]").empty());
 }
 
 TEST_CASE("#MCS TO WCS and #WCS TO MCS are not supported, with the reason and PROG-208525707") {

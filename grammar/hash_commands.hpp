@@ -142,6 +142,12 @@ template <typename Input>
 void read_set(HashReader<Input>& r) {  // old spellings, §5.4
   r.ws();
   if (r.word("SPLINETYPE")) return read_spline_type(r, "AKIMA or BSPLINE after #SET SPLINETYPE");
+  if (r.word("TANGFEED")) {  // the old #SET TANGFEED RMIN [..] (PROG-207065483)
+    r.ws();
+    if (!r.word("RMIN")) r.st.fail(r.in.current(), "RMIN after #SET TANGFEED");
+    r.set(H::tangfeed, T::tangfeed);
+    return r.lists(1, true);
+  }
   if (!r.word("SPLINE")) r.st.not_supported(r.name_at - 1, "#SET " + r.next_word());
   r.set(expect_mode(r.in, r.st, {"ON", "OFF"}, {H::spline_on, H::spline_off},
                     "ON or OFF after #SET SPLINE"));
@@ -368,6 +374,12 @@ void read_hsc(HashReader<Input>& r) {  // TF5200 "HSC": #HSC ON [...] / #HSC OFF
 }
 
 template <typename Input>
+void read_tangfeed(HashReader<Input>& r) {  // #TANGFEED [RMIN=..] PROG-207065483
+  r.set(H::tangfeed, T::tangfeed);
+  r.lists(1, false);
+}
+
+template <typename Input>
 void read_vector(HashReader<Input>& r) {  // PROG-207477899
   r.ws();
   if (!r.word("LIMIT")) r.st.not_supported(r.name_at - 1, "#VECTOR " + r.next_word());
@@ -477,7 +489,7 @@ struct Entry {
 };
 
 template <typename Input>
-inline constexpr std::array<Entry<Input>, 37> kHashCommands{{
+inline constexpr std::array<Entry<Input>, 38> kHashCommands{{
     {"SYNC", read_sync<Input>},
     {"CS", read_cs<Input>},
     {"BCS", read_cs<Input>},
@@ -501,6 +513,7 @@ inline constexpr std::array<Entry<Input>, 37> kHashCommands{{
     {"FILENAME", read_file_name<Input>},
     {"HSC", read_hsc<Input>},
     {"VECTOR", read_vector<Input>},
+    {"TANGFEED", read_tangfeed<Input>},
     {"SCALE", read_scale<Input>},
     {"PSET", read_scale<Input>},
     {"MCS", read_mcs<Input>},

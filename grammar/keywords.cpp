@@ -126,6 +126,8 @@ constexpr KeywordSpec kVectorLimit[] = {
 // grammar/hash_commands.hpp's own list reader (P[i]=.. is indexed, `IDP100` has no '=').
 constexpr KeywordSpec kSignal[] = {
     {"ID", V::expr}, {"COUNT", V::expr}, {"CH", V::expr}, {"P", V::expr}, {"AHEAD", V::none}};
+// #TANGFEED [RMIN=..] (PROG-207065483) and its old form #SET TANGFEED RMIN [..]: mm (inch).
+constexpr KeywordSpec kTangfeed[] = {{"RMIN", V::expr}};
 constexpr KeywordSpec kNone[] = {{"", V::none}};
 
 const KeywordTable kTables[] = {
@@ -157,6 +159,7 @@ const KeywordTable kTables[] = {
     /* vector_limit */ {kVectorLimit},
     /* scale */ {std::span(kNone).first(0), true},
     /* signal */ {kSignal},
+    /* tangfeed */ {kTangfeed, false, true},
 };
 
 struct FunctionName {
@@ -188,12 +191,13 @@ constexpr std::uint32_t kSupportedG[] = {
     151, 159, 160, 161, 162, 163, 164, 165, 166, 193, 194, 196, 230, 231, 233, 260,
     261, 293, 301, 302, 303, 331, 332, 333, 334, 338, 339, 359, 360, 900, 901};
 // Tool radius compensation (isg-language.md §2.5; built, docs/trc.md): G25/G26 transitions,
-// G40/G41/G42, G138/G139 selection. Its other codes (G05, G10/G11, G236..G239) stay in kOtherG.
-constexpr std::uint32_t kTrcG[] = {25, 26, 40, 41, 42, 138, 139};
+// G40/G41/G42, G138/G139/G237/G239 selection, G10/G11 feed adaptation. Its other codes (G05,
+// G236, G238) stay in kOtherG.
+constexpr std::uint32_t kTrcG[] = {10, 11, 25, 26, 40, 41, 42, 138, 139, 237, 239};
 // isg-language.md §2.5: real ISG G codes that ncsim does not simulate ("not supported").
-constexpr std::uint32_t kOtherG[] = {5,   10,  11,  20,  21,  22,  23,  51,  52,  66,  68,
-                                     69,  100, 101, 102, 106, 107, 108, 112, 135, 136, 137,
-                                     140, 141, 200, 201, 202, 236, 237, 238, 239, 310, 351};
+constexpr std::uint32_t kOtherG[] = {5,   20,  21,  22,  23,  51,  52,  66,  68,  69,
+                                     100, 101, 102, 106, 107, 108, 112, 135, 136, 137,
+                                     140, 141, 200, 201, 202, 236, 238, 310, 351};
 
 }  // namespace
 

@@ -157,6 +157,10 @@ bool WordReader::read_g_codes(const ast::Block& b, BlockWords& bw) {
       case 42:
       case 138:
       case 139:
+      case 237:
+      case 239:
+      case 10:
+      case 11:
         if (!ip_.trc_words.g_code(w, bw)) return false;  // trc_words.cpp
         break;
       default:

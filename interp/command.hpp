@@ -84,8 +84,9 @@ struct ContourParams {
 enum class TrcSide : std::uint8_t { off, left, right };
 /// Outer-corner transition: G25 linear blocks (default) / G26 a circle (TF5200 "G25/G26").
 enum class TrcCorner : std::uint8_t { linear, circle };
-/// Selection and deselection: G139 indirect (default) / G138 direct (TF5200 "G138/G139").
-enum class TrcApproach : std::uint8_t { indirect, direct };
+/// Selection and deselection: G139 indirect (default) / G138 direct (TF5200 "G138/G139") /
+/// G237 perpendicular / G239 direct without a deselection block (TF5200 "G237", "G239").
+enum class TrcApproach : std::uint8_t { indirect, direct, perpendicular, no_block };
 
 /// The TRC state a motion was decoded under; the interpreter's TRC filter (interp/trc.hpp)
 /// turns the programmed contour into the compensated path from it.
@@ -94,6 +95,8 @@ struct ToolRadiusComp {
   double radius = 0.0;  ///< [mm] of the D tool (P-TOOL-00004); negative swaps the side
   TrcCorner corner = TrcCorner::linear;
   TrcApproach approach = TrcApproach::indirect;
+  bool adapt_feed = false;     ///< G11: F acts on the contour of compensated arcs (G10 off)
+  double tangfeed_rmin = 0.0;  ///< [mm] #TANGFEED RMIN: G11 only on arcs of this radius or more
 };
 
 /// All axes at 100 %.

@@ -145,6 +145,8 @@ bool HashCommands::run_hash(const ast::Block& b, const ast::HashCommand& h) {
     case HashKind::hsc_on:
     case HashKind::hsc_off:
       return ip_.offsets.hash_hsc(b, h);
+    case HashKind::tangfeed:
+      return ip_.trc_words.hash_tangfeed(b, h);
     case HashKind::vector_limit_on:
     case HashKind::vector_limit_off:
       return ip_.offsets.hash_vector_limit(b, h);

@@ -69,8 +69,10 @@ std::uint64_t RepeatWatch::fingerprint(std::size_t& cost) const {
   h = mix(h, bits(m.transvelmin));
   h = mix(h, (static_cast<std::uint64_t>(m.trc.side) << 16) |
                  (static_cast<std::uint64_t>(m.trc.corner) << 8) |
+                 (static_cast<std::uint64_t>(m.trc.adapt_feed) << 4) |
                  static_cast<std::uint64_t>(m.trc.approach));
   h = mix(h, bits(m.trc.radius));
+  h = mix(h, bits(m.trc.tangfeed_rmin));
   h = mix(h, bits(d.trc_words.d_number));
   h = mix(h, d.files.size());
   // offsets, scaling and path limits (offsets.cpp)

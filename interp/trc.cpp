@@ -296,6 +296,16 @@ void Compensator::release(const Vec2& end, CommandQueue& out) {
   e.start = h.start;
   e.end = end;
   e.full = h.offset.full && norm(end - h.start) < kSamePoint;
+  Motion& held = std::get<Motion>(h.command.body);
+  if (e.arc && held.modal.trc.adapt_feed && held.kind != MotionKind::rapid) {
+    // G11: the programmed feed acts on the contour (the tool's engagement point), so the centre
+    // runs at F r_centre / r_contour; not on arcs below #TANGFEED RMIN (PROG-206473227,
+    // PROG-207065483).
+    const double r_contour = radius_of(h.programmed);
+    if (r_contour >= held.modal.trc.tangfeed_rmin && r_contour > 0.0) {
+      held.feed *= radius_of(e) / r_contour;
+    }
+  }
   emit(h.command, e, h.command.line, out, false);
   for (Command& c : behind_) {
     if (auto* m = std::get_if<Motion>(&c.body)) {  // a motion out of the plane: at the end
@@ -378,16 +388,10 @@ std::optional<Error> Compensator::plane_motion(Command c, const Motion& m, Comma
     return error_at(c, "NC4704",
                     "not supported: G93 (block time) while tool radius compensation is active");
   }
-  if (!held_) {  // the selection block (TF5200 "Direct/indirect selection (G41/G42) of TRC")
-    if (pe.arc) {
-      return error_at(c, "90008",
-                      "selection of tool radius compensation within a circular motion block: "
-                      "the first motion in the plane after G41/G42 must be linear");
-    }
+  if (!held_) {
     a1_ = a1;
     a2_ = a2;
-    held_ = Held{std::move(c), pe, *offset(pe, d), pe.start, d, true};
-    return std::nullopt;
+    return select(std::move(c), pe, m, pe.start, out);
   }
   Held& h = *held_;
   if (a1 != a1_ || a2 != a2_) {
@@ -396,12 +400,20 @@ std::optional<Error> Compensator::plane_motion(Command c, const Motion& m, Comma
                     "deselection block must run in the plane of the compensated contour");
   }
   const bool deselection = d == 0.0;
-  if (deselection && pe.arc) {
+  const bool change = !deselection && d != h.d;  // G41 <-> G42 or a new radius: off, then on
+  const TrcApproach approach = m.modal.trc.approach;
+  if (deselection && pe.arc && approach != TrcApproach::perpendicular) {
     return error_at(c, "NC4703",
                     "deselection of tool radius compensation within a circular motion block: "
                     "the first motion in the plane after G40 must be linear");
   }
-  const double d_b = deselection ? h.d : d;
+  if (change && pe.arc) {
+    return error_at(c, "NC4704",
+                    "a change of the side (G41 <-> G42) or of the radius of tool radius "
+                    "compensation within a circular motion block: it takes a linear block "
+                    "(TF5200 \"Reaction on contour change\")");
+  }
+  const double d_b = deselection || change ? h.d : d;
   const std::optional<Element> b_off = offset(pe, d_b);
   if (!b_off) {
     const double r = radius_of(pe);
@@ -413,10 +425,17 @@ std::optional<Error> Compensator::plane_motion(Command c, const Motion& m, Comma
   }
   Join j;
   const TrcApproach held_approach = std::get<Motion>(h.command.body).modal.trc.approach;
-  if (h.selection && held_approach == TrcApproach::direct) {  // G138: straight onto the path
+  const bool off = deselection || change;
+  if (h.selection && (held_approach == TrcApproach::direct ||
+                      held_approach == TrcApproach::no_block)) {  // G138 / G239: onto the path
     j.a_end = j.b_start = b_off->start;
-  } else if (deselection && m.modal.trc.approach == TrcApproach::direct) {
-    j.a_end = j.b_start = h.offset.end;  // G138: off the path from its perpendicular point
+  } else if (off && approach != TrcApproach::indirect) {
+    // G138, G239: off the path from its perpendicular point; G237: and back to the contour
+    j.a_end = j.b_start = h.offset.end;
+    if (approach == TrcApproach::perpendicular) {
+      j.inserted.push_back(Element{false, h.offset.end, h.programmed.end, {}, false, false});
+      j.b_start = h.programmed.end;
+    }
   } else {
     JoinError error = JoinError::none;
     j = join(h.offset, *b_off, pe.start, h.d, m.modal.trc.corner, error);
@@ -444,16 +463,42 @@ std::optional<Error> Compensator::plane_motion(Command c, const Motion& m, Comma
   release(j.a_end, out);
   for (const Element& e : j.inserted)
     emit(c, e, c.line, out, true);
+  held_.reset();
+  if (change) return select(std::move(c), pe, m, j.b_start, out);
   if (deselection) {  // the departing block ends at its programmed end point
     Element e = pe;
     e.start = j.b_start;
     emit(c, e, c.line, out, false);
-    held_.reset();
     return std::nullopt;
   }
-  a1_ = a1;
-  a2_ = a2;
   held_ = Held{std::move(c), pe, *b_off, j.b_start, d, false};
+  return std::nullopt;
+}
+
+std::optional<Error> Compensator::select(Command c, const Element& pe, const Motion& m, Vec2 from,
+                                         CommandQueue& out) {
+  const double d = signed_offset(m.modal.trc);
+  if (m.modal.trc.approach == TrcApproach::perpendicular) {
+    // G237: a line square to the contour onto its offset start, then the element compensated;
+    // any element may be the first (TF5200 "Perpendicular selection and deselection (G237)").
+    const std::optional<Element> off = offset(pe, d);
+    if (!off) {
+      return error_at(c, "90017",
+                      "tool radius " + core::number_text(std::fabs(d)) +
+                          " greater or equal to the contour radius " +
+                          core::number_text(radius_of(pe)));
+    }
+    emit(c, Element{false, from, off->start, {}, false, false}, c.line, out, true);
+    held_ = Held{std::move(c), pe, *off, off->start, d, false};
+    return std::nullopt;
+  }
+  // The selection block (TF5200 "Direct/indirect selection (G41/G42) of TRC").
+  if (pe.arc) {
+    return error_at(c, "90008",
+                    "selection of tool radius compensation within a circular motion block: "
+                    "the first motion in the plane after G41/G42 must be linear");
+  }
+  held_ = Held{std::move(c), pe, *offset(pe, d), from, d, true};
   return std::nullopt;
 }
 

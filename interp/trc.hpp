@@ -131,6 +131,10 @@ class Compensator {
     bool selection = false;
   };
   std::optional<Error> plane_motion(Command c, const Motion& m, CommandQueue& out);
+  /// Holds `pe` as the first element of a compensation that starts at `from` (a selection, or
+  /// the selection half of a change of side or radius).
+  std::optional<Error> select(Command c, const Element& pe, const Motion& m, Vec2 from,
+                              CommandQueue& out);
   void release(const Vec2& end, CommandQueue& out);
   void emit(const Command& pattern, const Element& e, std::uint32_t line, CommandQueue& out,
             bool transition) const;

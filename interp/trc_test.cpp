@@ -2,6 +2,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -318,6 +319,92 @@ TEST_CASE("#CS or a V.E. read while an element is held is not supported [NC4705]
   const Path p = path("%t\nG41 D1\nG01 X10 Y0 F1000\n#CS ON[0,0,0,0,0,0]\nM30\n");
   CHECK(p.error_id == "NC4705");
   CHECK(p.error_line == 4);
+}
+
+const Motion* motion_at(const Path& p, std::uint32_t line, bool arc) {
+  for (const Command& c : p.motions) {
+    if (c.line == line && std::get<Motion>(c.body).arc.has_value() == arc)
+      return &std::get<Motion>(c.body);
+  }
+  return nullptr;
+}
+
+TEST_CASE("G11 runs F on the contour of compensated arcs, above #TANGFEED RMIN [PROG-206473227]") {
+  // F600 = 10 mm/s; the G02 of radius 10 is compensated outside (13, tool left) or inside (7)
+  const auto arc_feed = [](const std::string& head, const std::string& side) {
+    const Path p = path("%t\n" + head + "G00 X0 Y" + (side == "G41" ? "-10" : "10") + "\n" + side +
+                        " D1\nG01 X0 Y0 F600\nX10\nG02 X30 Y0 I10 J0\nG01 X40\nG40 X50\nM30\n");
+    REQUIRE(p.error_id.empty());
+    const auto shift = static_cast<std::uint32_t>(std::count(head.begin(), head.end(), '\n'));
+    const Motion* arc = motion_at(p, 6 + shift, true);
+    const Motion* line = motion_at(p, 5 + shift, false);
+    REQUIRE(arc != nullptr);
+    REQUIRE(line != nullptr);
+    CHECK(line->feed == doctest::Approx(10.0));  // lines keep F
+    return arc->feed;
+  };
+  CHECK(arc_feed("", "G41") == doctest::Approx(10.0));           // G10, the initial state
+  CHECK(arc_feed("G11\n", "G41") == doctest::Approx(13.0));      // outside: faster
+  CHECK(arc_feed("G11\n", "G42") == doctest::Approx(7.0));       // inside: slower
+  CHECK(arc_feed("G11 G10\n", "G41") == doctest::Approx(10.0));  // G10 ends it
+  CHECK(arc_feed("G11\n#TANGFEED [RMIN=12]\n", "G41") == doctest::Approx(10.0));  // 10 < 12
+  CHECK(arc_feed("G11\n#TANGFEED [RMIN=10]\n", "G41") == doctest::Approx(13.0));  // 10 >= 10
+  CHECK(arc_feed("G11\n#SET TANGFEED RMIN [5]\n", "G41") == doctest::Approx(13.0));
+  CHECK(path("%t\n#TANGFEED [RMIN=-1]\nM30\n").error_id == "NC4030");
+}
+
+TEST_CASE("G237 enters and leaves square to the contour, an arc may come first") {
+  // N60 G03 about (10,60) r 50, tool right (outside): r 53; then a tangent line up
+  const Path p =
+      path("%t\nG00 X10 Y10\nG237 G42 D1\nG03 X60 Y60 J50 F1000\nG01 Y100\nG40\nG00 X0 Y0\nM30\n");
+  REQUIRE(p.error_id.empty());
+  REQUIRE(p.motions.size() == 6);
+  CHECK(from_to(mo(p, 1), {10, 10}, {10, 7}));  // square onto the offset start
+  CHECK(p.motions[1].line == 4);
+  CHECK(from_to(mo(p, 2), {10, 7}, {63, 60}));
+  CHECK(mo(p, 2).arc->radius == doctest::Approx(53.0));
+  CHECK(from_to(mo(p, 3), {63, 60}, {63, 100}));
+  CHECK(from_to(mo(p, 4), {63, 100}, {60, 100}));  // square back to the contour
+  CHECK(from_to(mo(p, 5), {60, 100}, {0, 0}));     // the next block as programmed
+  CHECK(mo(p, 5).kind == MotionKind::rapid);
+}
+
+TEST_CASE("G239 selects as G138 and deselects at the last offset point; a circle after is NC4703") {
+  const Path p =
+      path("%t\nG00 X0 Y0\nG239 G41 D1\nG01 X30 Y20 F1000\nX60\nX90\nG40\nG00 X150 Y0\nM30\n");
+  REQUIRE(p.error_id.empty());
+  REQUIRE(p.motions.size() == 5);
+  CHECK(from_to(mo(p, 1), {0, 0}, {30, 23}));
+  CHECK(from_to(mo(p, 2), {30, 23}, {60, 23}));
+  CHECK(from_to(mo(p, 3), {60, 23}, {90, 23}));
+  CHECK(from_to(mo(p, 4), {90, 23}, {150, 0}));
+  const Path arc = path("%t\nG239 G41 D1\nG01 X30 Y20 F1000\nX60\nG40\nG02 X70 Y20 I5\nM30\n");
+  CHECK(arc.error_id == "NC4703");
+  CHECK(arc.error_line == 6);
+}
+
+TEST_CASE("G41 -> G42 without G40 leaves one side and takes the other in a linear block") {
+  const Path p =
+      path("%t\nG00 X0 Y-10\nG41 D1\nG01 X0 Y0 F1000\nX20\nX40 G42\nX60\nG40 X60 Y10\nM30\n");
+  REQUIRE(p.error_id.empty());
+  REQUIRE(p.motions.size() == 6);
+  CHECK(from_to(mo(p, 2), {-3, 3}, {20, 3}));   // left of X0..X20
+  CHECK(from_to(mo(p, 3), {20, 3}, {40, -3}));  // the change block crosses over
+  CHECK(p.motions[3].line == 6);
+  CHECK(from_to(mo(p, 4), {40, -3}, {63, -3}));  // right of X40..X60
+  const Path arc = path("%t\nG00 X0 Y-10\nG41 D1\nG01 X0 Y0 F1000\nX20\nG42 G02 X40 Y0 I10\nM30\n");
+  CHECK(arc.error_id == "NC4704");
+  CHECK(arc.error_line == 6);
+}
+
+TEST_CASE("a new D while TRC is active takes its radius in the next linear block") {
+  const Path p =
+      path("%t\nG00 X0 Y-10\nG41 D1\nG01 X0 Y0 F1000\nX20\nD2 X40\nX60\nG40 X60 Y-10\nM30\n");
+  REQUIRE(p.error_id.empty());
+  CHECK(from_to(mo(p, 3), {20, 3}, {40, 5}));
+  CHECK(from_to(mo(p, 4), {40, 5}, {65, 5}));
+  const Path arc = path("%t\nG00 X0 Y-10\nG41 D1\nG01 X0 Y0 F1000\nX20\nD2 G02 X40 Y0 I10\nM30\n");
+  CHECK(arc.error_id == "NC4704");
 }
 
 TEST_CASE("check reports a compensation that cannot be built at its file:line:col") {

@@ -1,5 +1,5 @@
-// interp/trc_words.cpp: G40/G41/G42, G25/G26, G138/G139 and D into the TRC state a motion
-// carries (docs/trc.md).
+// interp/trc_words.cpp: G40/G41/G42, G25/G26, G138/G139/G237/G239, G10/G11, #TANGFEED and D
+// into the TRC state a motion carries (docs/trc.md).
 #include "interp/trc_words.hpp"
 
 #include <cmath>
@@ -23,6 +23,16 @@ bool TrcWords::g_code(const ast::Word& w, BlockWords& bw) {
     case 139:  // indirect selection / deselection (modal, initial state)
       ip_.modal.trc.approach = TrcApproach::indirect;
       return true;
+    case 237:  // perpendicular selection / deselection
+      ip_.modal.trc.approach = TrcApproach::perpendicular;
+      return true;
+    case 239:  // direct selection, deselection without a block
+      ip_.modal.trc.approach = TrcApproach::no_block;
+      return true;
+    case 10:  // constant feed (modal, initial state)
+    case 11:  // feed adapted: F on the contour of compensated arcs
+      ip_.modal.trc.adapt_feed = w.code == 11;
+      return true;
     default:
       break;
   }
@@ -33,6 +43,24 @@ bool TrcWords::g_code(const ast::Word& w, BlockWords& bw) {
   }
   bw.trc_side = w.code == 40 ? TrcSide::off : (w.code == 41 ? TrcSide::left : TrcSide::right);
   bw.trc_loc = w.loc;
+  return true;
+}
+
+bool TrcWords::hash_tangfeed(const ast::Block& b, const ast::HashCommand& h) {
+  const Items items{b, 0, h.item_count};
+  const ast::Item* it = items.find("RMIN");
+  if (it == nullptr && h.item_count > 0 && b.items[0].keyword.empty()) it = &b.items[0];
+  if (it == nullptr) {  // "#TANGFEED" alone: no minimum radius (G11 on every arc)
+    ip_.modal.trc.tangfeed_rmin = 0.0;
+    return true;
+  }
+  const std::optional<double> v = ip_.hash.item_value(b, it);
+  if (!v) return false;
+  if (!(*v >= 0.0) || !std::isfinite(*v)) {
+    return ip_.fail(it->loc, "NC4030",
+                    "#TANGFEED RMIN must be a radius >= 0, got " + core::number_text(*v));
+  }
+  ip_.modal.trc.tangfeed_rmin = *v * (ip_.modal.inch ? 25.4 : 1.0);
   return true;
 }
 
@@ -82,11 +110,8 @@ bool TrcWords::update(const BlockWords& bw) {
     return true;
   }
   if (bw.trc_side) {
-    if (ip_.modal.trc.side != TrcSide::off && ip_.modal.trc.side != *bw.trc_side) {
-      return ip_.fail(bw.trc_loc, "NC4704",
-                      "not supported: changing the side of tool radius compensation (G41 <-> G42) "
-                      "without G40 and a deselection block between");
-    }
+    // G41 <-> G42 without G40: a deselection and a selection in the next plane motion
+    // (TF5200 "Reaction on contour change"; interp/trc).
     if (!ip_.xyz[0] || !ip_.xyz[1] || !ip_.xyz[2]) {
       const int p1 = ip_.modal.plane == Plane::xy ? 0 : (ip_.modal.plane == Plane::zx ? 2 : 1);
       const int p2 = ip_.modal.plane == Plane::xy ? 1 : (ip_.modal.plane == Plane::zx ? 0 : 2);
@@ -102,14 +127,11 @@ bool TrcWords::update(const BlockWords& bw) {
     return true;
   }
   if (bw.d_word && ip_.modal.trc.side != TrcSide::off) {
+    // A new radius while active: taken with the next plane motion, which must be linear
+    // (TF5200 "Reaction to change in tool radius"; interp/trc).
     const std::optional<double> r = tool_radius(at);
     if (!r) return false;
-    if (*r != ip_.modal.trc.radius) {
-      return ip_.fail(bw.d_loc, "NC4704",
-                      "not supported: changing the tool radius (" +
-                          core::number_text(ip_.modal.trc.radius) + " -> " + core::number_text(*r) +
-                          " mm) while tool radius compensation is active");
-    }
+    ip_.modal.trc.radius = *r;
   }
   return true;
 }
