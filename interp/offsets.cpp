@@ -29,7 +29,8 @@ void Offsets::init_zero_offsets() {
 double Offsets::zero_offset(std::uint8_t axis) const {
   if (mcs_on) return 0.0;  // #MCS ON: "all offsets included in the axes" are off
   // #PSET's preset shifts the axis whatever zero offset is selected (PROG-207101835).
-  const double preset = pset_offsets[axis];
+  // The tool length of the D in force, in the tool axis (interp/trc_words.cpp).
+  const double preset = pset_offsets[axis] + ip_.trc_words.length_offset(axis);
   // G53 / G159=0 deselects every offset unless P-ZERO-00001 makes group 0 an offset too.
   if (zero_group == 0 && !ip_.machine.zero_offsets.g53_available) return preset;
   return preset + ip_.vars.global_element(zero_names[axis], zero_group);

@@ -271,9 +271,9 @@ TEST_CASE("a motion out of the plane and M functions between contour blocks keep
       path("%t\nG00 X0 Y-10\nG41 D1\nG01 X0 Y0 F1000\nZ-1\nM08\nX10\nG40 X10 Y-10\nM30\n");
   REQUIRE(p.error_id.empty());
   REQUIRE(p.motions.size() == 5);
-  CHECK(from_to(mo(p, 1), {0, -10}, {-3, 3}));  // G25: extended to the tangent intersection
-  CHECK(from_to(mo(p, 2), {-3, 3}, {-3, 3}));   // Z-1 where the compensated path is
-  CHECK(mo(p, 2).end[2] == doctest::Approx(-1.0));
+  CHECK(from_to(mo(p, 1), {0, -10}, {-3, 3}));      // G25: extended to the tangent intersection
+  CHECK(from_to(mo(p, 2), {-3, 3}, {-3, 3}));       // Z-1 where the compensated path is
+  CHECK(mo(p, 2).end[2] == doctest::Approx(59.0));  // -1 + D1's length 60
   CHECK(p.motions[2].line == 5);
 }
 
@@ -405,6 +405,27 @@ TEST_CASE("a new D while TRC is active takes its radius in the next linear block
   CHECK(from_to(mo(p, 4), {40, 5}, {65, 5}));
   const Path arc = path("%t\nG00 X0 Y-10\nG41 D1\nG01 X0 Y0 F1000\nX20\nD2 G02 X40 Y0 I10\nM30\n");
   CHECK(arc.error_id == "NC4704");
+}
+
+TEST_CASE("D's tool length lifts the tool axis from its next absolute value; D0 ends it") {
+  // portal_3x_tools: D1 60 mm, D2 75 mm
+  const Path p =
+      path("%t\nG01 Z10 F600\nD1\nG01 X5\nG91 Z0\nG90 Z10\nD2 Z10\nD0 Z10\nG18 D1 Y20 Z10\nM30\n");
+  REQUIRE(p.error_id.empty());
+  REQUIRE(p.motions.size() == 7);
+  CHECK(mo(p, 0).end[2] == doctest::Approx(10.0));
+  CHECK(mo(p, 1).end[2] == doctest::Approx(10.0));  // X5: Z not programmed, no move
+  CHECK(mo(p, 2).end[2] == doctest::Approx(10.0));  // G91 Z0: incremental, no move
+  CHECK(mo(p, 3).end[2] == doctest::Approx(70.0));  // absolute: 10 + 60
+  CHECK(mo(p, 4).end[2] == doctest::Approx(85.0));  // D2: 10 + 75
+  CHECK(mo(p, 5).end[2] == doctest::Approx(10.0));  // D0
+  CHECK(mo(p, 6).end[1] == doctest::Approx(80.0));  // G18: the tool axis is Y
+  CHECK(mo(p, 6).end[2] == doctest::Approx(10.0));
+  // without a tool list D is a plain function; with one it must name a released tool
+  CHECK(mo(path("%t\nD1\nG01 Z10 F600\nM30\n", "portal_3x"), 0).end[2] == doctest::Approx(10.0));
+  const Path bad = path("%t\nD9\nM30\n");
+  CHECK(bad.error_id == "NC4706");
+  CHECK(bad.error_line == 2);
 }
 
 TEST_CASE("check reports a compensation that cannot be built at its file:line:col") {

@@ -101,10 +101,27 @@ std::optional<double> TrcWords::tool_radius(core::SourceLoc at) {
   return tool->radius;
 }
 
+double TrcWords::length_offset(std::uint8_t axis) const {
+  if (d_length == 0.0) return 0.0;
+  const Plane p = ip_.modal.plane;
+  const std::size_t third = p == Plane::xy ? 2 : (p == Plane::zx ? 1 : 0);
+  return ip_.xyz[third] == axis ? d_length : 0.0;
+}
+
 bool TrcWords::update(const BlockWords& bw) {
-  if (bw.d_word) d_number = *bw.d_word;
   // The D's position when it is in this block, else the G41/G42 that needs its radius.
   const core::SourceLoc at = bw.d_word ? bw.d_loc : bw.trc_loc;
+  if (bw.d_word) {
+    d_number = *bw.d_word;
+    // Tool length compensation (TF5200 "Tool geometry compensation"): the D's length acts in
+    // the tool axis from that axis's next absolute value (P-CHAN-00100 = 0, the default; the
+    // zero offsets carry it, interp/offsets.cpp). Without a tool list D is a plain function.
+    d_length = 0.0;
+    if (!ip_.machine.tools.file.empty()) {
+      if (!tool_radius(at)) return false;  // NC4706: a D the list does not release
+      if (*d_number != 0.0) d_length = ip_.machine.tools.find(static_cast<int>(*d_number))->length;
+    }
+  }
   if (bw.trc_side && *bw.trc_side == TrcSide::off) {
     ip_.modal.trc.side = TrcSide::off;
     return true;

@@ -4,6 +4,7 @@
 // G138/G139 and D (BlockWords), the tool list. Output: modal.trc, which every motion carries.
 // Invariant: a change of side or radius while active takes effect with the next plane motion.
 
+#include <cstdint>
 #include <optional>
 
 #include "grammar/ast.hpp"
@@ -23,6 +24,11 @@ class TrcWords {
   bool update(const BlockWords& bw);                        // D and G40/G41/G42 of the block
 
   std::optional<double> d_number;  // the D in force (none: D0)
+  double d_length = 0.0;  // [mm] its tool length (P-TOOL-00003); 0 without a tool list or D0
+
+  /// The tool length offset of machine axis `axis` [mm]: d_length in the third main axis of the
+  /// plane in force (G17 Z, G18 Y, G19 X, direction +; TF5200 "#TLAX"), else 0.
+  double length_offset(std::uint8_t axis) const;
 
  private:
   std::optional<double> tool_radius(core::SourceLoc at);  // of the D in force

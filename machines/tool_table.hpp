@@ -27,7 +27,7 @@ namespace ncsim::machines {
 inline constexpr int kMaxToolNumber = 255;
 
 struct Tool {
-  double length = 0.0;  ///< [mm] P-TOOL-00003 (carried; tool length compensation not built)
+  double length = 0.0;  ///< [mm] P-TOOL-00003: the tool length compensation (docs/trc.md)
   double radius = 0.0;  ///< [mm] P-TOOL-00004; negative swaps the TRC side (TF5200 TRC page)
   bool valid = false;   ///< P-TOOL-00005
 };

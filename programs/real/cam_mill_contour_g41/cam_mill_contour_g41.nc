@@ -27,5 +27,5 @@ N220 G01 X0
 N230 G40 G01 X-15 Y-15
 N240 G00 Z25
 N250 M05
-N260 G53 G00 Z180
+N260 G53 G00 Z120 (machine Z that leaves room for the tool length of D1)
 N270 M30

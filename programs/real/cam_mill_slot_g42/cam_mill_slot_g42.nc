@@ -25,5 +25,5 @@ N200 G01 X30
 N210 G40 G01 X30 Y0
 N220 G00 Z25
 N230 M05
-N240 G53 G00 Z180
+N240 G53 G00 Z120 (machine Z that leaves room for the tool length of D3)
 N250 M30
