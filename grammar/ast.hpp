@@ -343,24 +343,26 @@ enum class HashKind : std::uint8_t {
   comment_end,
   pre_if,
   pre_else,
-  pre_endif,         ///< #IF / #ELSE / #ENDIF
-  file_name,         ///< #FILE NAME / #FILENAME [G8x="..."]
-  hsc_on,            ///< #HSC ON [...] / #HSC [...]
-  hsc_off,           ///< #HSC OFF
-  vector_limit_on,   ///< #VECTOR LIMIT ON [...] / ON ALL
-  vector_limit_off,  ///< #VECTOR LIMIT OFF [...] / OFF ALL
-  tangfeed,          ///< #TANGFEED [RMIN=..] / #SET TANGFEED RMIN [..] (G11's minimum radius)
-  scale_on,          ///< #SCALE [ON] X.. Y..
-  scale_off,         ///< #SCALE OFF
-  mcs_on,            ///< #MCS ON [EX TOOL]
-  mcs_off,           ///< #MCS OFF
-  pset,              ///< #PSET X.. Y.. (position preset)
-  accepted,          ///< read and shown in trace, no effect on motion or time (docs/language.md)
-  signal,            ///< #SIGNAL [...] (decoder level, PROG-207409035)
-  signal_syn,        ///< #SIGNAL SYN [...] (interpolator level)
-  wait_signal,       ///< #WAIT [...] (decoder level, PROG-207421579)
-  wait_signal_syn,   ///< #WAIT SYN [...] (interpolator level)
-  signal_read,       ///< #SIGNAL READ [...] (PROG-913718283)
+  pre_endif,          ///< #IF / #ELSE / #ENDIF
+  file_name,          ///< #FILE NAME / #FILENAME [G8x="..."]
+  hsc_on,             ///< #HSC ON [...] / #HSC [...]
+  hsc_off,            ///< #HSC OFF
+  vector_limit_on,    ///< #VECTOR LIMIT ON [...] / ON ALL
+  vector_limit_off,   ///< #VECTOR LIMIT OFF [...] / OFF ALL
+  tangfeed,           ///< #TANGFEED [RMIN=..] / #SET TANGFEED RMIN [..] (G11's minimum radius)
+  scale_on,           ///< #SCALE [ON] X.. Y..
+  scale_off,          ///< #SCALE OFF
+  mcs_on,             ///< #MCS ON [EX TOOL]
+  mcs_off,            ///< #MCS OFF
+  pset,               ///< #PSET X.. Y.. (position preset)
+  accepted,           ///< read and shown in trace, no effect on motion or time (docs/language.md)
+  signal,             ///< #SIGNAL [...] (decoder level, PROG-207409035)
+  signal_syn,         ///< #SIGNAL SYN [...] (interpolator level)
+  wait_signal,        ///< #WAIT [...] (decoder level, PROG-207421579)
+  wait_signal_syn,    ///< #WAIT SYN [...] (interpolator level)
+  signal_read,        ///< #SIGNAL READ [...] (PROG-913718283)
+  signal_remove,      ///< #SIGNAL REMOVE [...] (decoder level, PROG-207414923)
+  signal_remove_syn,  ///< #SIGNAL REMOVE SYN [...] (interpolator level)
 };
 
 struct HashCommand {

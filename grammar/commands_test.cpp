@@ -215,7 +215,9 @@ TEST_CASE("#SIGNAL and #WAIT without SYN or '[' are the manual's 20998; READ SYN
   CHECK(check("#SIGNAL READ SYN [ID1]\n") == std::vector<std::string>{"1:9 NC1010"});
   CHECK(check("#SIGNAL [ID1 XYZ2]\n") == std::vector<std::string>{"1:14 NC1001"});
   CHECK(check("#WAIT [ID1 AHEAD]\n") == std::vector<std::string>{"1:12 NC1002"});
-  CHECK(check("#SIGNAL REMOVE [ID1]\n") == std::vector<std::string>{"1:1 NC1002"});
+  CHECK(check("#SIGNAL REMOVE [ID1]\n").empty());
+  CHECK(check("#SIGNAL REMOVE SYN [IDMIN1 IDMAX4 CH2]\n").empty());
+  CHECK(check("#SIGNAL REMOVE ID1\n") == std::vector<std::string>{"1:16 20998"});
   CHECK(check("#WAIT FOR [X]\n") == std::vector<std::string>{"1:1 NC1002"});
 }
 

@@ -289,7 +289,7 @@ void read_signal_list(HashReader<Input>& r, H kind, const char* command) {
     const bool indexed = key != ast::kUnknownKeyword && table.entries[key].name == "P";
     if (key == ast::kUnknownKeyword || table.entries[key].value == ValueKind::none ||
         (indexed && rest.substr(1).substr(lex::blanks(rest.substr(1))).substr(0, 1) != "[")) {
-      r.st.fail(at, "ID=.., COUNT=.., P[<index>]=.., CH=.. or ']'");
+      r.st.fail(at, "ID=.., COUNT=.., P[<index>]=.., CH=.., IDMIN=.., IDMAX=.. or ']'");
     }
     item.key = static_cast<std::uint16_t>(key);
     item.keyword = rest.substr(0, table.entries[key].name.size());
@@ -312,8 +312,8 @@ void read_signal_list(HashReader<Input>& r, H kind, const char* command) {
   r.in.bump(1);  // ']'
 }
 
-/// #SIGNAL [SYN] [..], #SIGNAL READ [..] (PROG-207409035, PROG-913718283); #SIGNAL REMOVE is
-/// not built (docs/lines.md).
+/// #SIGNAL [SYN] [..], #SIGNAL READ [..], #SIGNAL REMOVE [SYN] [..] (PROG-207409035,
+/// PROG-913718283, PROG-207414923).
 template <typename Input>
 void read_signal(HashReader<Input>& r) {
   r.ws();
@@ -327,7 +327,11 @@ void read_signal(HashReader<Input>& r) {
     }
     return read_signal_list(r, H::signal_read, "#SIGNAL READ");
   }
-  if (r.word("REMOVE")) r.st.not_supported(r.name_at - 1, "#SIGNAL REMOVE (docs/lines.md)");
+  if (r.word("REMOVE")) {  // PROG-207414923
+    r.ws();
+    if (r.word("SYN")) return read_signal_list(r, H::signal_remove_syn, "#SIGNAL REMOVE SYN");
+    return read_signal_list(r, H::signal_remove, "#SIGNAL REMOVE");
+  }
   if (r.word("SYN")) return read_signal_list(r, H::signal_syn, "#SIGNAL SYN");
   read_signal_list(r, H::signal, "#SIGNAL");
 }

@@ -124,8 +124,10 @@ constexpr KeywordSpec kVectorLimit[] = {
     {"VEL", V::opt_expr},         {"FEED", V::none},     {"RAPID", V::none}};
 // #SIGNAL / #WAIT / #SIGNAL READ (PROG-207409035, PROG-207421579, PROG-913718283): read by
 // grammar/hash_commands.hpp's own list reader (P[i]=.. is indexed, `IDP100` has no '=').
-constexpr KeywordSpec kSignal[] = {
-    {"ID", V::expr}, {"COUNT", V::expr}, {"CH", V::expr}, {"P", V::expr}, {"AHEAD", V::none}};
+// #SIGNAL REMOVE [ID=.. | IDMIN=.. [IDMAX=..] {CH=..}] (PROG-207414923).
+constexpr KeywordSpec kSignal[] = {{"ID", V::expr},   {"COUNT", V::expr}, {"CH", V::expr},
+                                   {"P", V::expr},    {"AHEAD", V::none}, {"IDMIN", V::expr},
+                                   {"IDMAX", V::expr}};
 // #TANGFEED [RMIN=..] (PROG-207065483) and its old form #SET TANGFEED RMIN [..]: mm (inch).
 constexpr KeywordSpec kTangfeed[] = {{"RMIN", V::expr}};
 constexpr KeywordSpec kNone[] = {{"", V::none}};

@@ -344,6 +344,11 @@ struct Signal {
                                        ///< without COUNT is never used up)
   std::vector<std::pair<std::uint8_t, double>> params;  ///< P[idx] = value
   std::vector<std::uint8_t> receivers;                  ///< CH=..; empty: broadcast
+  /// #SIGNAL REMOVE (PROG-207414923): clears signals `id` (one, the oldest) or, with `range`,
+  /// every signal id .. id_max, broadcast ones (no receivers) or those to `receivers`.
+  bool remove = false;
+  bool range = false;
+  std::uint32_t id_max = 0;
 };
 
 /// A wait for signal `id` (PROG-207421579): from every channel of `senders` (each its own

@@ -163,6 +163,8 @@ bool HashCommands::run_hash(const ast::Block& b, const ast::HashCommand& h) {
     case HashKind::wait_signal:
     case HashKind::wait_signal_syn:
     case HashKind::signal_read:
+    case HashKind::signal_remove:
+    case HashKind::signal_remove_syn:
       return hash_signal(b, h);
     case HashKind::pset:
       return ip_.offsets.hash_pset(b, h);

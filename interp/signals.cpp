@@ -21,6 +21,10 @@ bool waits(HashKind k) {
   return k == HashKind::wait_signal || k == HashKind::wait_signal_syn || k == HashKind::signal_read;
 }
 
+bool removes(HashKind k) {
+  return k == HashKind::signal_remove || k == HashKind::signal_remove_syn;
+}
+
 std::string command_name(HashKind k) {
   switch (k) {
     case HashKind::signal:
@@ -31,6 +35,10 @@ std::string command_name(HashKind k) {
       return "#WAIT";
     case HashKind::wait_signal_syn:
       return "#WAIT SYN";
+    case HashKind::signal_remove:
+      return "#SIGNAL REMOVE";
+    case HashKind::signal_remove_syn:
+      return "#SIGNAL REMOVE SYN";
     default:
       return "#SIGNAL READ";
   }
@@ -68,12 +76,29 @@ std::optional<Signal> HashCommands::signal_parts(const ast::Block& b, const ast:
     return std::optional<Signal>{};
   };
   Signal s;
-  s.syn = h.kind == HashKind::signal_syn || h.kind == HashKind::wait_signal_syn;
+  s.syn = h.kind == HashKind::signal_syn || h.kind == HashKind::wait_signal_syn ||
+          h.kind == HashKind::signal_remove_syn;
+  s.remove = removes(h.kind);
   const ast::Item* id_item = nullptr;
+  const ast::Item* max_item = nullptr;
   for (std::uint32_t k = 0; k < h.item_count && k < b.items.size(); ++k) {
     const ast::Item& it = b.items[k];
     const std::string key = grammar::to_upper(it.keyword);
-    if (key == "ID") {
+    const bool remove_only = key == "IDMIN" || key == "IDMAX";
+    if (remove_only != s.remove && (remove_only || key == "COUNT" || key == "P")) {
+      return fail(it.loc, "NC4806",
+                  key + " is not an item of " + name +
+                      (s.remove ? " (it takes ID or IDMIN [IDMAX] and CH, PROG-207414923)"
+                                : " (IDMIN and IDMAX belong to #SIGNAL REMOVE)"));
+    }
+    if (key == "IDMAX") {
+      const auto v =
+          signal_integer(b, it, "20995", 1.0, kMaxSignalId, "signal number IDMAX", report);
+      if (!v) return std::nullopt;
+      max_item = &it;
+      s.id_max = *v;
+    } else if (key == "ID" || key == "IDMIN") {
+      s.range = key == "IDMIN";
       if (id_item != nullptr) {
         return fail(it.loc, "21056",
                     "double programming of the signal number in " + name + " (first ID at column " +
@@ -134,7 +159,24 @@ std::optional<Signal> HashCommands::signal_parts(const ast::Block& b, const ast:
       s.params.emplace_back(static_cast<std::uint8_t>(*i), value);
     }
   }
-  if (id_item == nullptr) return fail(h.loc, "NC4805", name + " needs the signal number ID=..");
+  if (id_item == nullptr) {
+    return fail(h.loc, "NC4805",
+                name + (s.remove ? " needs the signal number ID=.. or IDMIN=.."
+                                 : " needs the signal number ID=.."));
+  }
+  if (s.remove) {
+    if (max_item != nullptr && !s.range) {
+      return fail(max_item->loc, "NC4806",
+                  "IDMAX is the last number of a range that starts at IDMIN=.., not at ID");
+    }
+    // IDMIN without IDMAX: every number from IDMIN on (ncsim's reading, docs/lines.md).
+    if (max_item == nullptr) s.id_max = s.range ? kMaxSignalId : s.id;
+    if (s.id_max < s.id) {
+      return fail(max_item->loc, "NC4807",
+                  "#SIGNAL REMOVE: IDMAX " + std::to_string(s.id_max) + " is below IDMIN " +
+                      std::to_string(s.id));
+    }
+  }
   return s;
 }
 
@@ -148,7 +190,7 @@ std::optional<SignalWait> HashCommands::signal_wait(const ast::Block& b,
 bool HashCommands::hash_signal(const ast::Block& b, const ast::HashCommand& h) {
   std::optional<Signal> s = signal_parts(b, h, true);
   if (!s) return false;
-  if (h.kind == HashKind::signal || h.kind == HashKind::signal_syn) {
+  if (h.kind == HashKind::signal || h.kind == HashKind::signal_syn || removes(h.kind)) {
     ip_.emit(ip_.line, std::move(*s));
     return true;
   }

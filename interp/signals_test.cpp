@@ -104,6 +104,23 @@ TEST_CASE("signal numbers, channel numbers and parameters out of range have the 
   CHECK(run("%t\n#WAIT [ID1 P[0]=3]\nM30\n").error_id == "NC4804");
 }
 
+TEST_CASE("#SIGNAL REMOVE [SYN] becomes a removing signal command [PROG-207414923]") {
+  auto r =
+      run("%t\n#SIGNAL REMOVE [ID3]\n#SIGNAL REMOVE SYN [IDMIN=2 IDMAX=9 CH2]\n"
+          "#SIGNAL REMOVE [IDMIN5]\nM30\n");
+  REQUIRE(r.error_id.empty());
+  CHECK(r.lines.at(0) == "2: SIGNAL_REMOVE ID3 BROADCAST");
+  CHECK(r.lines.at(1) == "3: SIGNAL_REMOVE SYN ID2..9 CH2");
+  CHECK(r.lines.at(2) == "4: SIGNAL_REMOVE ID5..2147483647 BROADCAST");
+  CHECK(run("%t\n#SIGNAL REMOVE [ID3 IDMIN4]\nM30\n").error_id == "21056");
+  CHECK(run("%t\n#SIGNAL REMOVE [ID3 IDMAX4]\nM30\n").error_id == "NC4806");
+  CHECK(run("%t\n#SIGNAL REMOVE [ID3 COUNT2]\nM30\n").error_id == "NC4806");
+  CHECK(run("%t\n#SIGNAL [ID3 IDMAX4]\nM30\n").error_id == "NC4806");
+  CHECK(run("%t\n#SIGNAL REMOVE [IDMIN5 IDMAX4]\nM30\n").error_id == "NC4807");
+  CHECK(run("%t\n#SIGNAL REMOVE [CH2]\nM30\n").error_id == "NC4805");
+  CHECK(run("%t\n#SIGNAL REMOVE [ID0]\nM30\n").error_id == "20995");
+}
+
 TEST_CASE("a channel the run does not have is 250008 at its CH; any 1 .. 12 without a run") {
   const auto r = run("%t\nG01 X1 F100\n#WAIT SYN [ID1 CH2]\nM30\n", "portal_3x", channels({1}));
   CHECK(r.error_id == "250008");

@@ -274,6 +274,12 @@ void channels(std::string& out, const std::vector<std::uint8_t>& list) {
 }
 
 void put(std::string& out, const Signal& b, const machines::Machine& /*m*/) {
+  if (b.remove) {  // #SIGNAL REMOVE [SYN]: the numbers it clears
+    out += b.syn ? " SIGNAL_REMOVE SYN ID" : " SIGNAL_REMOVE ID";
+    out += std::to_string(b.id);
+    if (b.range) out += ".." + std::to_string(b.id_max);
+    return channels(out, b.receivers);
+  }
   out += b.syn ? " SIGNAL SYN ID" : " SIGNAL ID";
   out += std::to_string(b.id);
   if (b.count) out += " COUNT" + std::to_string(*b.count);

@@ -45,7 +45,28 @@ std::string SignalHub::channel_name(std::uint8_t ch) const {
   return number + (s.name.empty() || s.name == number ? "" : " (" + s.name + ")");
 }
 
+void SignalHub::remove(std::uint8_t from, const interp::Signal& s) {
+  // PROG-207414923: without CH broadcast signals, with CH the signals to those channels; one
+  // (the oldest) for ID, all for IDMIN..IDMAX. What another channel sent in this cycle is not
+  // seen yet (lock-step), so it stays whatever order the channels step in.
+  const auto matches = [&](const Sent& x, std::uint8_t to) {
+    return x.to == to && x.id >= s.id && x.id <= s.id_max && (x.cycle < cycle_ || x.from == from);
+  };
+  const std::vector<std::uint8_t> targets =
+      s.receivers.empty() ? std::vector<std::uint8_t>{0} : s.receivers;
+  for (const std::uint8_t to : targets) {
+    if (s.range) {
+      std::erase_if(sent_, [&](const Sent& x) { return matches(x, to); });
+      continue;
+    }
+    const auto it =
+        std::find_if(sent_.begin(), sent_.end(), [&](const Sent& x) { return matches(x, to); });
+    if (it != sent_.end()) sent_.erase(it);
+  }
+}
+
 void SignalHub::send(std::uint8_t from, const interp::Signal& s) {
+  if (s.remove) return remove(from, s);
   Sent base;
   base.from = from;
   base.id = s.id;

@@ -17,7 +17,8 @@
 // Inputs: the run's channel numbers; sends, takes and the blocked / ended states per channel.
 // Outputs: answers (SignalAnswer with the senders' parameters), the doomed waits' reasons.
 // Invariants: deterministic (signals are kept in sending order; channels scanned by number);
-// memory: the signals sent and not yet used (a broadcast without COUNT stays until the end).
+// memory: the signals sent and not yet used (a broadcast without COUNT stays until the end or a
+// #SIGNAL REMOVE clears it, PROG-207414923).
 
 #include <cstdint>
 #include <optional>
@@ -46,7 +47,7 @@ class SignalHub {
 
   /// The start of cycle `k` (0, 1, ...): signals sent before it are seen from now on.
   void begin_cycle(std::uint64_t k) noexcept { cycle_ = k; }
-  /// Channel `from` sends `s`.
+  /// Channel `from` sends `s` (a #SIGNAL REMOVE: clears the signals it names, remove()).
   void send(std::uint8_t from, const interp::Signal& s);
   /// Channel `to` takes what `w` waits for when all of it is there, using it up; nullopt when
   /// something is missing (nothing is used then). `order` is set (250002) when the oldest
@@ -87,6 +88,8 @@ class SignalHub {
     std::uint32_t end_line = 0;
     std::optional<std::string> doomed;
   };
+  /// #SIGNAL REMOVE of channel `from` (PROG-207414923).
+  void remove(std::uint8_t from, const interp::Signal& s);
   State& state(std::uint8_t ch);
   const State& state(std::uint8_t ch) const;
   /// The signal `to` would take from `from` (0: a broadcast) for `id`; null when none is there.

@@ -114,3 +114,63 @@ TEST_CASE("a signal on its way keeps its receiver from being doomed") {
   hub.block(2, program::SignalBlock{wait(3, {1}), 2, 0});
   CHECK_FALSE(hub.mark_stuck());  // sent in this cycle: taken in the next
 }
+
+namespace {
+
+interp::Signal removal(std::uint32_t id, std::uint32_t id_max, bool range,
+                       std::vector<std::uint8_t> ch = {}) {
+  interp::Signal s;
+  s.remove = true;
+  s.id = id;
+  s.id_max = id_max;
+  s.range = range;
+  s.receivers = std::move(ch);
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("#SIGNAL REMOVE clears one broadcast for ID, all of a range [PROG-207414923]") {
+  program::SignalHub hub({1, 2});
+  std::string order;
+  hub.send(1, signal(5, {}));
+  hub.send(1, signal(5, {}));
+  hub.send(1, signal(3, {}));
+  hub.send(1, signal(7, {}));
+  hub.send(1, signal(11, {}));
+  hub.begin_cycle(1);
+  hub.send(2, removal(5, 5, false));  // one of the two fives
+  CHECK(hub.take(2, wait(5, {}), order));
+  hub.send(2, removal(5, 5, false));
+  CHECK_FALSE(hub.take(2, wait(5, {}), order));
+  hub.send(2, removal(1, 10, true));  // IDMIN=1 IDMAX=10: 3 and 7, not 11
+  CHECK_FALSE(hub.take(2, wait(3, {}), order));
+  CHECK_FALSE(hub.take(2, wait(7, {}), order));
+  CHECK(hub.take(2, wait(11, {}), order));
+}
+
+TEST_CASE("#SIGNAL REMOVE with CH clears signals to that channel, not broadcasts") {
+  program::SignalHub hub({1, 2, 3});
+  std::string order;
+  hub.send(1, signal(4, {2}));
+  hub.send(1, signal(4, {3}));
+  hub.send(1, signal(4, {}));
+  hub.begin_cycle(1);
+  hub.send(1, removal(4, 4, false, {2}));
+  CHECK_FALSE(hub.take(2, wait(4, {1}), order));  // removed
+  CHECK(hub.take(3, wait(4, {1}), order));        // to another channel: kept
+  CHECK(hub.take(2, wait(4, {}), order));         // the broadcast: kept
+}
+
+TEST_CASE("#SIGNAL REMOVE does not see what another channel sent in the same cycle") {
+  program::SignalHub hub({1, 2});
+  std::string order;
+  hub.begin_cycle(0);
+  hub.send(1, signal(9, {}));
+  hub.send(2, removal(9, 9, false));  // channel 1's signal is not seen before cycle 1
+  hub.send(1, signal(8, {}));
+  hub.send(1, removal(8, 8, false));  // its own: cleared
+  hub.begin_cycle(1);
+  CHECK(hub.take(2, wait(9, {}), order));
+  CHECK_FALSE(hub.take(2, wait(8, {}), order));
+}
