@@ -456,7 +456,8 @@
   function renderLine(L, root) {
     var S = L.summary, W8 = S.workpieces, chans = S.channels;
     var colorOf = {};  // channel number -> its colour on the timeline and the lanes
-    chans.forEach(function (c, k) { colorOf[c.number] = COLORS[k % 10]; });
+    var LANE_COLORS = COLORS.filter(function (c, i) { return i !== 1; });  // red: missed
+    chans.forEach(function (c, k) { colorOf[c.number] = LANE_COLORS[k % LANE_COLORS.length]; });
     function label(c) { return 'channel ' + c.number + (c.name === 'channel ' + c.number ? '' : ' ' + c.name); }
     el('h1', root, 'ncsim line report: ' + L.line);
     if (L.description) el('p', root, L.description, 'note');
@@ -516,14 +517,16 @@
                  [0.5, fates[fates.length - 1].workpiece + 0.5], null, fates.length,
                  function (u) { drawFates(u, fates, colorOf); });
       var listed = fates.slice(0, 500);
-      table(root, ['workpiece', 'arrived [s]', 'fate', 'channel', 'at [s]'],
+      var det = el('details', root);
+      el('summary', det, 'every workpiece\u2019s fate (' + fates.length + ')');
+      table(det, ['workpiece', 'arrived [s]', 'fate', 'channel', 'at [s]'],
             listed.map(function (f) {
               var c = chans.filter(function (x) { return x.number === f.channel; })[0];
               return [f.workpiece, fmt(f.arrived_s, 9), f.fate, c ? label(c) : '',
                       f.t_s === undefined ? '' : fmt(f.t_s, 9)];
             }), [2, 3]);
       if (listed.length < fates.length)
-        el('p', root, 'the first ' + listed.length + ' of ' + fates.length + ' listed', 'note');
+        el('p', det, 'the first ' + listed.length + ' of ' + fates.length + ' listed', 'note');
     }
 
     // Each channel's lane: running, waiting for a signal (#WAIT / #WAIT SYN), ended.
