@@ -2,8 +2,9 @@
 # line_sweep_test.sh NCSIM: `ncsim line sweep` end to end (docs/lines.md "ncsim line sweep"):
 # two lines whose answer is known by construction (a probe armed late: the workpiece is missed
 # above 150 mm/s; the laser of laser_sorter with its CONV_VEL kept: 50653 above 1.1 x 100 mm/s,
-# the answer of `ncsim sweep` on the same program), the binding constraint named, the same
-# output on one thread and on two, and the usage errors.
+# the answer of `ncsim sweep` on the same program), the binding constraint named (a missed
+# workpiece, a channel's error id, an audit violation), the same output on one thread and on
+# two, and the usage errors.
 set -uo pipefail
 ncsim=$1
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -51,6 +52,13 @@ expect "sweep of the laser's program alone finds the same limit" 0 \
   '^sweep: highest belt velocity 109\.766 mm/s \(6\.58594 m/min\), 110\.352 mm/s fails' '' \
   -- sweep "$root/programs/conveyor_squares/conveyor_squares.nc" --belt-velocity 50:200 \
   --tolerance 2 --conv-vel keep
+
+# The audit as the constraint: line_late on a belt that fluctuates by 2 % at 20 Hz; X, which
+# follows the belt while synchronised, gets the belt's jerk on top of its own path's (the audit
+# counts the belt's own excesses too, docs/conveyor.md "The belt's own dynamics").
+expect "line sweep: an audit violation fails a candidate, named with its axis and limit" 1 \
+  '^line sweep: no belt velocity in 20 \.\. 140 mm/s runs the line clean; at 20 mm/s: channel 1 \(late\) audit: t=[0-9.]+ s line 13 axis X jerk [0-9.]+ > 200000\.8[0-9]* \([0-9]+ violations\)$' '' \
+  -- line sweep "$here/line_late/fluctuating.toml" --belt-velocity 20:140 --tolerance 5
 
 # Usage errors (exit 2, before any run).
 expect "line sweep without --belt-velocity: NC9120" 2 '' 'line sweep needs --belt-velocity LO:HI \[NC9120\]' \
