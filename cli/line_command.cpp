@@ -12,7 +12,9 @@
 #include <vector>
 
 #include "cli/csv_sink.hpp"
+#include "cli/line_page.hpp"
 #include "cli/line_report.hpp"
+#include "cli/line_sweep.hpp"
 #include "cli/number_format.hpp"
 #include "cli/run_commands.hpp"
 #include "core/number_text.hpp"
@@ -90,6 +92,17 @@ bool close_csvs(runner::LineRun& line, std::vector<ChannelCsv>& csvs, std::ostre
   return ok;
 }
 
+// The page's file, opened before the run (an unwritable one is reported at once, NC8100).
+bool open_page(const std::string& path, std::optional<core::OutputFile>& file, std::ostream& err) {
+  auto opened = core::OutputFile::open(path);
+  if (const auto* why = std::get_if<std::string>(&opened)) {
+    err << "ncsim: error: the report: " << *why << " [NC8100]\n";
+    return false;
+  }
+  file.emplace(std::move(std::get<core::OutputFile>(opened)));
+  return true;
+}
+
 int run_line(const LineOptions& options, std::ostream& out, std::ostream& err) {
   runner::LineSpec spec;
   spec.file = options.file;
@@ -100,6 +113,9 @@ int run_line(const LineOptions& options, std::ostream& out, std::ostream& err) {
   err << loaded.messages;
   if (!loaded.ok()) return static_cast<int>(loaded.exit);
   runner::LineRun& line = *loaded.line;
+  const std::string page_path = options.mode == "report" ? options.output : options.report;
+  std::optional<core::OutputFile> page_file;
+  if (!page_path.empty() && !open_page(page_path, page_file, err)) return kExitUsage;
   std::vector<ChannelCsv> csvs(options.mode == "run" ? line.size() : 0);
   std::vector<std::vector<ipo::Sink*>> sinks(line.size());
   for (std::size_t k = 0; k < csvs.size(); ++k) {
@@ -108,12 +124,29 @@ int run_line(const LineOptions& options, std::ostream& out, std::ostream& err) {
     if (!open_csv(line, k, path, csvs[k], err)) return kExitUsage;
     sinks[k].push_back(csvs[k].sink.get());
   }
+  std::unique_ptr<LinePage> page;  // the same cycles as the CSVs
+  if (page_file) page = std::make_unique<LinePage>(line);
+  for (std::size_t k = 0; page && k < line.size(); ++k)
+    sinks[k].push_back(page->sink(k));
   line.start(sinks);
   for (std::size_t k = 0; k < csvs.size(); ++k)
     wire_csv(line, k, *csvs[k].sink);
-  line.run();
+  if (page) page->wire(line);
+  line.run([&] {
+    if (page) page->on_cycle(line);
+  });
   if (!csvs.empty() && !close_csvs(line, csvs, err)) return kExitUsage;
-  if (options.json) {
+  if (page) {
+    std::string why;
+    if (!report::write_line_html_file(page->finish(line), *page_file, why)) {
+      err << "ncsim: error: " << why << '\n';
+      return kExitUsage;
+    }
+    (options.mode == "report" ? out : err) << "report: " << page_path << '\n';
+  }
+  if (options.mode == "report") {
+    // as `ncsim report`: the page and its name; the results are on it
+  } else if (options.json) {
     print_line_json(line, out);
   } else {
     print_line_text(line, out);
@@ -180,6 +213,20 @@ int run_line_command(const LineOptions& options, std::ostream& out, std::ostream
     err << "ncsim: error: line run needs -o DIR (one CSV per channel)\n";
     return kExitUsage;
   }
+  if (options.mode == "report" && options.output.empty()) {
+    err << "ncsim: error: line report needs -o PAGE (the HTML page) [NC8101]\n";
+    return kExitUsage;
+  }
+  if (!options.report.empty() && options.mode != "run") {
+    err << "ncsim: error: --report PAGE is an option of line run (line report -o PAGE writes "
+           "the page alone)\n";
+    return kExitUsage;
+  }
+  if (options.mode == "sweep") return run_line_sweep(options, out, err);
+  if (!options.belt_velocity.empty()) {
+    err << "ncsim: error: --belt-velocity is an option of line sweep\n";
+    return kExitUsage;
+  }
   if (options.mode != "check") return run_line(options, out, err);
   runner::LineSpec spec;
   spec.file = options.file;
@@ -194,11 +241,13 @@ int run_line_command(const LineOptions& options, std::ostream& out, std::ostream
 LineCommand::LineCommand(CLI::App& app) {
   cmd_ =
       app.add_subcommand("line", "Several channels in one run: a production line (docs/lines.md)");
-  cmd_->add_option("mode", options_.mode, "check, time or run")
+  cmd_->add_option("mode", options_.mode, "check, time, run, report or sweep")
       ->required()
-      ->check(CLI::IsMember({"check", "time", "run"}));
+      ->check(CLI::IsMember({"check", "time", "run", "report", "sweep"}));
   cmd_->add_option("line", options_.file, "The line file (TOML)")->required();
-  cmd_->add_option("-o,--output", options_.output, "run: the folder of the channels' CSVs");
+  cmd_->add_option("-o,--output", options_.output,
+                   "run: the folder of the channels' CSVs; report: the HTML page");
+  cmd_->add_option("--report", options_.report, "run: the line's HTML page too, same pass");
   cmd_->add_option("--max-time", options_.max_time,
                    "Stop every channel after S seconds of machine time")
       ->check(CLI::PositiveNumber);
@@ -206,6 +255,7 @@ LineCommand::LineCommand(CLI::App& app) {
   cmd_->add_flag("--json", options_.json,
                  "time, run: the channels' and the belt's results as one JSON object");
   add_cycle_us_option(*cmd_, options_.cycle_us);
+  add_line_sweep_options(*cmd_, options_);
 }
 
 std::optional<int> LineCommand::dispatch(std::ostream& out, std::ostream& err) const {

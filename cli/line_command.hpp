@@ -6,7 +6,10 @@
 // the line's end, the belt's workpieces and each one's fate (cli/line_report; --json: one JSON
 // object). `run -o DIR`: `time`, and one CSV per channel in DIR
 // (`ch<number>_<name>.csv`: t, line, the axes' command positions; `# stop` / `# error` at its
-// end). Exit statuses as `time`: 0, 1 program errors (any channel), 2 usage, 3 audit.
+// end). `report -o PAGE` (or `run --report PAGE`): the line's HTML page (cli/line_page).
+// `sweep --belt-velocity LO:HI`: the highest belt velocity the line runs clean at
+// (cli/line_sweep). Exit statuses as `time`: 0, 1 program errors (any channel), 2 usage,
+// 3 audit.
 // Invariants: parsing and printing only; reruns are byte-identical.
 
 #include <cstdint>
@@ -24,13 +27,20 @@ class App;
 namespace ncsim::cli {
 
 struct LineOptions {
-  std::string mode = "time";  ///< check, time or run
+  std::string mode = "time";  ///< check, time, run, report or sweep
   std::string file;           ///< the line file
-  std::string output;         ///< run: -o DIR, the folder of the CSVs
+  std::string output;         ///< run: -o DIR, the folder of the CSVs; report: -o PAGE
+  std::string report;         ///< run: --report PAGE, the line page in the same pass
   std::optional<std::uint64_t> cycle_us;
   std::optional<double> max_time;
   bool audit = false;
   bool json = false;  ///< --json: the results as one JSON object
+  // sweep (cli/line_sweep.hpp)
+  std::string belt_velocity;        ///< --belt-velocity LO:HI [mm/s]
+  std::string conv_vel = "follow";  ///< follow: every #SYNC IN's CONV_VEL is the candidate
+  double tolerance = 1.0;           ///< [mm/s]
+  unsigned grid = 3;                ///< candidates per round
+  unsigned jobs = 0;                ///< threads (0: the cores)
 };
 
 int run_line_command(const LineOptions& options, std::ostream& out, std::ostream& err);

@@ -13,19 +13,6 @@
 namespace ncsim::cli {
 namespace {
 
-// Channel k's utilisation [%]: (end - waiting) / the line's end, to 0.1 %.
-double utilisation(const runner::LineRun& line, std::size_t k) {
-  const double t_line = line.t_end();
-  const runner::LineChannelTime& t = line.time(k);
-  return t_line > 0.0 ? std::max(0.0, std::round((t.t_end - t.t_waiting) / t_line * 1000.0)) / 10.0
-                      : 0.0;
-}
-
-// Workpieces per minute over the line's end.
-double per_minute(std::uint64_t n, double t_line) {
-  return t_line > 0.0 ? 60.0 * static_cast<double>(n) / t_line : 0.0;
-}
-
 std::uint64_t taken_by(const runner::LineRun& line, std::size_t k) {
   const auto s = line.station(k);
   return s && line.belt() != nullptr ? line.belt()->taken(*s) : 0;
@@ -47,7 +34,8 @@ void print_belt_text(const runner::LineRun& line, std::ostream& out) {
     first = false;
   }
   out << "), " << b.missed() << " missed, " << b.on_belt() << " on the belt (" << b.held()
-      << " held); " << human(std::round(per_minute(b.taken_total(), line.t_end()) * 100.0) / 100.0)
+      << " held); "
+      << human(std::round(line_per_minute(b.taken_total(), line.t_end()) * 100.0) / 100.0)
       << " workpieces per minute\n";
   for (const conveyor::WorkpieceFate& f : b.fates()) {
     out << "  workpiece " << f.workpiece << ": arrived " << seconds(f.t_arrived) << " s, ";
@@ -75,7 +63,7 @@ void print_belt_json(const runner::LineRun& line, std::ostream& out) {
   const conveyor::LineWorld& b = *line.belt();
   out << ",\"workpieces\":{\"arrived\":" << b.arrived() << ",\"taken\":" << b.taken_total()
       << ",\"missed\":" << b.missed() << ",\"on_belt\":" << b.on_belt() << ",\"held\":" << b.held()
-      << ",\"per_minute\":" << json_num(per_minute(b.taken_total(), line.t_end()))
+      << ",\"per_minute\":" << json_num(line_per_minute(b.taken_total(), line.t_end()))
       << ",\"fates\":[";
   for (std::size_t i = 0; i < b.fates().size(); ++i) {
     const conveyor::WorkpieceFate& f = b.fates()[i];
@@ -91,6 +79,17 @@ void print_belt_json(const runner::LineRun& line, std::ostream& out) {
 
 }  // namespace
 
+double line_utilisation(const runner::LineRun& line, std::size_t k) {
+  const double t_line = line.t_end();
+  const runner::LineChannelTime& t = line.time(k);
+  return t_line > 0.0 ? std::max(0.0, std::round((t.t_end - t.t_waiting) / t_line * 1000.0)) / 10.0
+                      : 0.0;
+}
+
+double line_per_minute(std::uint64_t n, double t_line) {
+  return t_line > 0.0 ? 60.0 * static_cast<double>(n) / t_line : 0.0;
+}
+
 void print_line_text(const runner::LineRun& line, std::ostream& out) {
   const double t_line = line.t_end();
   const auto cycles = static_cast<std::uint64_t>(std::llround(t_line / line.t_cycle()));
@@ -101,7 +100,8 @@ void print_line_text(const runner::LineRun& line, std::ostream& out) {
     const runner::LineChannelTime& t = line.time(k);
     out << "  " << channel_label(line.channel_spec(k)) << ": end " << seconds(t.t_end)
         << " s, waiting " << seconds(t.t_waiting) << " s, utilisation "
-        << human(utilisation(line, k)) << " %, " << line.channel(k).ending(line.status(k)).stop;
+        << human(line_utilisation(line, k)) << " %, "
+        << line.channel(k).ending(line.status(k)).stop;
     if (line.station(k))
       out << ", took " << taken_by(line, k) << " (sensor at "
           << human(line.channel_spec(k).sensor_at) << " mm)";
@@ -122,7 +122,7 @@ void print_line_json(const runner::LineRun& line, std::ostream& out) {
     out << (k == 0 ? "" : ",") << "{\"number\":" << int{c.number} << ",\"name\":";
     json_string(out, c.name);
     out << ",\"end_s\":" << json_num(t.t_end) << ",\"waiting_s\":" << json_num(t.t_waiting)
-        << ",\"utilisation_percent\":" << json_num(utilisation(line, k)) << ",\"stop\":";
+        << ",\"utilisation_percent\":" << json_num(line_utilisation(line, k)) << ",\"stop\":";
     json_string(out, end.stop);
     if (end.failed) {
       out << ",\"error\":";
@@ -130,7 +130,7 @@ void print_line_json(const runner::LineRun& line, std::ostream& out) {
     }
     if (line.station(k))
       out << ",\"sensor_at_mm\":" << json_num(c.sensor_at) << ",\"taken\":" << taken_by(line, k)
-          << ",\"per_minute\":" << json_num(per_minute(taken_by(line, k), line.t_end()));
+          << ",\"per_minute\":" << json_num(line_per_minute(taken_by(line, k), line.t_end()));
     out << '}';
   }
   out << ']';

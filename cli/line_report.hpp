@@ -6,11 +6,17 @@
 // Inputs: a LineRun after its last step. Outputs: text on `out`. Invariants: reruns give the
 // same bytes; the counts satisfy arrived = taken + missed + on the belt.
 
+#include <cstdint>
 #include <iosfwd>
 
 #include "runner/line_run.hpp"
 
 namespace ncsim::cli {
+
+/// Channel k's utilisation [%]: (its end - its waiting) / the line's end, to 0.1 %.
+double line_utilisation(const runner::LineRun& line, std::size_t k);
+/// `n` workpieces per minute over the line's end `t_line` [s] (0 when it is 0).
+double line_per_minute(std::uint64_t n, double t_line);
 
 /// The line's times and workpieces as text.
 void print_line_text(const runner::LineRun& line, std::ostream& out);

@@ -47,16 +47,17 @@ BeltSetting set_belt_velocity(const machines::Machine& machine,
       scenario->conveyor->mode != scenario::ConveyorMode::encoder)
     return b;
   b.encoder = true;
-  scenario::Conveyor& c = *scenario->conveyor;
-  if (c.velocity == 0.0) {
-    b.encoder_zero = true;
-    return b;
-  }
+  b.encoder_zero = !scale_encoder_belt(*scenario->conveyor, v);
+  return b;
+}
+
+bool scale_encoder_belt(scenario::Conveyor& c, double v) noexcept {
+  if (c.velocity == 0.0) return false;
   const double k = v / std::abs(c.velocity);
   c.velocity *= k;
   for (scenario::BeltChange& change : c.profile)
     change.velocity *= k;
-  return b;
+  return true;
 }
 
 std::unique_ptr<conveyor::Port> override_belt(std::unique_ptr<conveyor::Port> port, double v) {

@@ -39,6 +39,10 @@ struct BeltSetting {
 BeltSetting set_belt_velocity(const machines::Machine& machine,
                               std::optional<scenario::Scenario>& scenario, double v) noexcept;
 
+/// An encoder belt's velocity and every profile velocity scaled so that its velocity at t = 0 is
+/// `v` [mm/s] (fluctuation, noise, dead time relative); false (unchanged) when it is 0 there.
+bool scale_encoder_belt(scenario::Conveyor& conveyor, double v) noexcept;
+
 /// `port` with every MC_MoveVelocity Velocity > 0 replaced by `v` [mm/s].
 std::unique_ptr<conveyor::Port> override_belt(std::unique_ptr<conveyor::Port> port, double v);
 

@@ -64,21 +64,6 @@ std::optional<int> open_outputs(const RunOptions& options, Outputs& o, std::ostr
   return std::nullopt;
 }
 
-// The page's recorder, sized from the run's configuration before the channel.
-std::unique_ptr<report::Recorder> make_recorder(const runner::Run& run,
-                                                const std::vector<std::string>& names) {
-  const channel::ChannelConfig& cfg = run.config();
-  auto recorder = std::make_unique<report::Recorder>(names, cfg.path.axes, cfg.path.channel.t_cycle,
-                                                     cfg.path.start);
-  recorder->set_limits(cfg);
-  // On a kinematic machine the MCS toolpath before #TRAFO ON is the joints' TCP.
-  if (cfg.path.joints) {
-    if (const auto trafo = program::machine_trafo(run.loaded().machine, cfg.path))
-      recorder->set_forward(program::forward_map(trafo->kinematics, trafo->xyz));
-  }
-  return recorder;
-}
-
 // The CSV's head: comments, then the columns (without the conveyor's and the newline).
 std::string csv_head(const runner::Loaded& in, const std::vector<std::string>& names, bool detail) {
   std::string head = "# ncsim run\n# program: " + in.file.name() +
@@ -101,12 +86,7 @@ std::string csv_head(const runner::Loaded& in, const std::vector<std::string>& n
 void wire_sinks(const RunOptions& options, const runner::Run& run, std::string head, CsvSink& csv,
                 report::Recorder* recorder) {
   const channel::Channel& channel = run.channel();
-  if (recorder) {
-    recorder->set_setpoints(&channel.setpoints());
-    recorder->set_belt(&channel.belt_share());
-    recorder->set_tcp(&channel.tcp());
-    recorder->set_conveyor(channel.conveyor_sync());
-  }
+  if (recorder) wire_recorder(run, *recorder);
   // The conveyor display variables (seed 004 §6; docs/conveyor.md) with --detail on a channel
   // that tracks a conveyor: mm, mm/s, mm/s^2, 0 before the first measurement; synchro_lag
   // [mm] machine minus real workpiece (tracking/synchro_lag.hpp), 0 unless the frame moves.
@@ -119,7 +99,6 @@ void wire_sinks(const RunOptions& options, const runner::Run& run, std::string h
   head += '\n';
   csv.text(head);
   csv.set_axes(&channel.axes());
-  if (recorder) recorder->set_axes(&channel.axes());
   csv.set_setpoints(&channel.setpoints());
 }
 
@@ -196,6 +175,29 @@ std::optional<int> write_page(const RunOptions& options, const runner::Run& run,
 }
 
 }  // namespace
+
+std::unique_ptr<report::Recorder> make_recorder(const runner::Run& run,
+                                                const std::vector<std::string>& names) {
+  const channel::ChannelConfig& cfg = run.config();
+  auto recorder = std::make_unique<report::Recorder>(names, cfg.path.axes, cfg.path.channel.t_cycle,
+                                                     cfg.path.start);
+  recorder->set_limits(cfg);
+  // On a kinematic machine the MCS toolpath before #TRAFO ON is the joints' TCP.
+  if (cfg.path.joints) {
+    if (const auto trafo = program::machine_trafo(run.loaded().machine, cfg.path))
+      recorder->set_forward(program::forward_map(trafo->kinematics, trafo->xyz));
+  }
+  return recorder;
+}
+
+void wire_recorder(const runner::Run& run, report::Recorder& recorder) {
+  const channel::Channel& channel = run.channel();
+  recorder.set_setpoints(&channel.setpoints());
+  recorder.set_belt(&channel.belt_share());
+  recorder.set_tcp(&channel.tcp());
+  recorder.set_conveyor(channel.conveyor_sync());
+  recorder.set_axes(&channel.axes());
+}
 
 int run_run(const RunOptions& options, std::ostream& out, std::ostream& err) {
   if (options.every == 0) {

@@ -21,9 +21,12 @@
 #include <optional>
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "cli/commands.hpp"
+#include "report/recorder.hpp"
 #include "runner/load.hpp"
+#include "runner/run.hpp"
 #include "runner/spec.hpp"
 
 namespace CLI {
@@ -81,6 +84,15 @@ std::variant<std::unique_ptr<runner::Loaded>, int> load_run(const runner::RunSpe
 /// The RunSpec of one headless run (sweep, tune-delay; runner/line.hpp): the pass of
 /// `time --audit` without position answers, as these runs always decoded.
 runner::RunSpec line_spec(const ProgramOptions& program, std::optional<std::uint64_t> cycle_us);
+
+/// The report page's recorder of `run` (report/recorder.hpp), sized from its configuration
+/// before start(): `names` its axes; on a kinematic machine the MCS toolpath before #TRAFO ON
+/// is the joints' TCP.
+std::unique_ptr<report::Recorder> make_recorder(const runner::Run& run,
+                                                const std::vector<std::string>& names);
+/// After start(): the recorder sees the channel's setpoints, belt share, TCP, conveyor
+/// tracking and axes (as `run --report` wires it).
+void wire_recorder(const runner::Run& run, report::Recorder& recorder);
 
 /// The `time` and `run` subcommands of `app`: the hook main.cpp calls.
 /// The program, --machine and --scenario options of the subcommands that run a program on the

@@ -4,15 +4,11 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <array>
-#include <atomic>
-#include <charconv>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <ostream>
 #include <sstream>
-#include <thread>
 #include <utility>
 #include <vector>
 
@@ -23,13 +19,6 @@
 
 namespace ncsim::cli {
 namespace {
-
-std::optional<double> parse_number(std::string_view s) {
-  double v = 0.0;
-  const auto r = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (r.ec != std::errc() || r.ptr != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
-  return v;
-}
 
 struct Candidate {
   double v = 0.0;  ///< [mm/s]
@@ -62,25 +51,6 @@ Candidate evaluate(const SweepOptions& o, double v) {
   return c;
 }
 
-// Every velocity of `vs` evaluated, at most `jobs` at a time; results in the order of `vs`.
-std::vector<Candidate> evaluate_all(const SweepOptions& o, const std::vector<double>& vs,
-                                    unsigned jobs) {
-  std::vector<Candidate> out(vs.size());
-  std::atomic<std::size_t> next{0};
-  const auto worker = [&] {
-    for (std::size_t i = next++; i < vs.size(); i = next++)
-      out[i] = evaluate(o, vs[i]);
-  };
-  const unsigned n = std::max(1u, std::min<unsigned>(jobs, static_cast<unsigned>(vs.size())));
-  std::vector<std::thread> threads;
-  for (unsigned k = 1; k < n; ++k)
-    threads.emplace_back(worker);
-  worker();
-  for (std::thread& t : threads)
-    t.join();
-  return out;
-}
-
 void print(const Candidate& c, unsigned round, std::ostream& out) {
   out << "round " << round << ": " << human(c.v) << " mm/s (" << human(c.v * 0.06) << " m/min): ";
   if (c.ok()) {
@@ -94,32 +64,9 @@ void print(const Candidate& c, unsigned round, std::ostream& out) {
   out << '\n';
 }
 
-}  // namespace
-
-int run_sweep(const SweepOptions& o, std::ostream& out, std::ostream& err) {
-  const std::string& r = o.belt_velocity;
-  const auto colon = r.find(':');
-  const std::optional<double> lo = colon == std::string::npos
-                                       ? std::nullopt
-                                       : parse_number(std::string_view(r).substr(0, colon));
-  const std::optional<double> hi = colon == std::string::npos
-                                       ? std::nullopt
-                                       : parse_number(std::string_view(r).substr(colon + 1));
-  if (!lo || !hi || *lo < 0.0 || !(*lo < *hi)) {
-    err << "ncsim: error: sweep: --belt-velocity '" << r
-        << "' must be LO:HI in mm/s with 0 <= LO < HI [" << kSweepRangeId << "]\n";
-    return kExitUsage;
-  }
-  if (!(o.tolerance >= kSweepToleranceMin) || !std::isfinite(o.tolerance)) {
-    err << "ncsim: error: sweep: --tolerance " << human(o.tolerance)
-        << " mm/s must be a number >= " << human(kSweepToleranceMin) << " mm/s ["
-        << kSweepToleranceId << "]\n";
-    return kExitUsage;
-  }
-  const unsigned grid = std::max(1u, o.grid);
-  const unsigned jobs = o.jobs > 0 ? o.jobs : std::max(1u, std::thread::hardware_concurrency());
-  // Round 0: both ends (also tells whether the machine can be swept at all).
-  std::vector<Candidate> ends = evaluate_all(o, {*lo, *hi}, jobs);
+// Round 0's candidates: whether the machine and world can be swept at all (the exit status,
+// reported on `err`, when not).
+std::optional<int> sweepable(const std::vector<Candidate>& ends, std::ostream& err) {
   for (const Candidate& c : ends) {
     if (c.outcome.status == runner::Exit::usage) {
       err << c.load_errors;
@@ -139,48 +86,51 @@ int run_sweep(const SweepOptions& o, std::ostream& out, std::ostream& err) {
         << kSweepEncoderZeroId << "]\n";
     return kExitUsage;
   }
-  out << (o.conv_vel == "follow"
-              ? "sweep: every #SYNC IN's CONV_VEL is the candidate (--conv-vel follow)\n"
-              : "sweep: the program's CONV_VEL is kept (--conv-vel keep)\n");
-  for (const Candidate& c : ends)
-    print(c, 0, out);
-  if (!ends[0].ok()) {
-    out << "sweep: no belt velocity in " << human(*lo) << " .. " << human(*hi)
+  return std::nullopt;
+}
+
+}  // namespace
+
+int run_sweep(const SweepOptions& o, std::ostream& out, std::ostream& err) {
+  const std::optional<SweepRange> range =
+      parse_sweep_range(o.belt_velocity, o.tolerance, o.grid, "sweep", err);
+  if (!range) return kExitUsage;
+  std::vector<Candidate> all;  // every candidate run, for the result's margin
+  int status = kExitOk;
+  const SweepBounds b = sweep_search(
+      *range,
+      [&](unsigned round, const std::vector<double>& vs) -> std::optional<std::vector<bool>> {
+        std::vector<Candidate> cs =
+            evaluate_all<Candidate>(vs, o.jobs, [&](double v) { return evaluate(o, v); });
+        if (round == 0) {
+          if (const auto s = sweepable(cs, err)) {
+            status = *s;
+            return std::nullopt;
+          }
+          out << (o.conv_vel == "follow"
+                      ? "sweep: every #SYNC IN's CONV_VEL is the candidate (--conv-vel follow)\n"
+                      : "sweep: the program's CONV_VEL is kept (--conv-vel keep)\n");
+        }
+        std::vector<bool> passed;
+        for (Candidate& c : cs) {
+          print(c, round, out);
+          passed.push_back(c.ok());
+          all.push_back(std::move(c));
+        }
+        return passed;
+      });
+  if (b.stopped) return status;
+  if (b.none) {
+    out << "sweep: no belt velocity in " << human(range->lo) << " .. " << human(range->hi)
         << " mm/s runs through (the lowest fails)\n";
     return kExitProgramErrors;
   }
-  Candidate best = ends[0];
-  double fail = *hi;
-  if (ends[1].ok()) {
-    best = ends[1];
-    fail = std::numeric_limits<double>::infinity();
-  }
-  unsigned round = 0;
-  while (std::isfinite(fail) && fail - best.v > o.tolerance) {
-    ++round;
-    std::vector<double> vs;
-    for (unsigned i = 1; i <= grid; ++i) {
-      const double v = best.v + (fail - best.v) * i / (grid + 1);
-      if (v > best.v && v < fail && (vs.empty() || v > vs.back())) vs.push_back(v);
-    }
-    // No double lies between the two any more (huge velocities): the interval cannot shrink,
-    // so the sweep ends rather than trying the same candidates again (issue 34 item 6).
-    if (vs.empty()) break;
-    std::vector<Candidate> cs = evaluate_all(o, vs, jobs);
-    for (const Candidate& c : cs)
-      print(c, round, out);
-    // The lowest failure bounds the interval; the highest pass below it is the new best.
-    std::size_t k = cs.size();
-    for (std::size_t i = 0; i < cs.size() && k == cs.size(); ++i)
-      if (!cs[i].ok()) k = i;
-    if (k < cs.size()) fail = cs[k].v;
-    for (std::size_t i = 0; i < k; ++i)
-      best = cs[i];
-  }
+  const Candidate& best =
+      *std::find_if(all.begin(), all.end(), [&](const Candidate& c) { return c.v == b.best; });
   out << "sweep: highest belt velocity " << human(best.v) << " mm/s (" << human(best.v * 0.06)
       << " m/min)";
-  if (std::isfinite(fail)) {
-    out << ", " << human(fail) << " mm/s fails (tolerance " << human(o.tolerance) << " mm/s)";
+  if (std::isfinite(b.fail)) {
+    out << ", " << human(b.fail) << " mm/s fails (tolerance " << human(o.tolerance) << " mm/s)";
   } else {
     out << " = HI: the limit is above the range";
   }

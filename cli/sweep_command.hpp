@@ -18,13 +18,10 @@
 // for that belt; --conv-vel keep: the program's CONV_VEL stays, so 50653 bites at
 // 1.1 x CONV_VEL (seed 004 l.514) and the sweep finds how far the belt may run above the
 // program's declaration.
-// Method: round 0 runs LO and HI; then each round runs K candidates evenly inside the interval
-// [highest passing, lowest failing] at once (one thread each, at most --jobs at a time) and
-// keeps the highest pass below the lowest failure, until the interval is <= the tolerance. The
-// sequence of candidates depends on LO, HI, K and the tolerance only, never on the threads'
-// timing, so the output is the same on any machine. It assumes that a program that runs at a
-// velocity runs at every lower one (a failure below a pass is reported, the interval follows
-// the lowest failure).
+// Method: cli/sweep_search (shared with `ncsim line sweep`): round 0 runs LO and HI; then each
+// round runs K candidates evenly inside the interval [highest passing, lowest failing] at once
+// (one thread each, at most --jobs at a time) until the interval is <= the tolerance; the same
+// output on any machine.
 // Outputs (stdout): one line per candidate with its verdict; the result with the margin to the
 // conveyor workspace's conveying face (the smallest distance of the commanded TCP to it while
 // synchronised) at the result. Exit 0 when a velocity in [LO, HI] runs, 1 when none does, 2
@@ -37,6 +34,7 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/sweep_search.hpp"
 
 namespace CLI {
 class App;
@@ -44,13 +42,6 @@ class App;
 
 namespace ncsim::cli {
 
-/// NC9120: --belt-velocity is not LO:HI with 0 <= LO < HI (both finite numbers, mm/s).
-inline constexpr const char* kSweepRangeId = "NC9120";
-/// NC9121: --tolerance is not a number >= kSweepToleranceMin.
-inline constexpr const char* kSweepToleranceId = "NC9121";
-/// Smallest --tolerance [mm/s]: 1 um/s (docs/conveyor.md "The line's limits offline"); 1e-300
-/// never ended, the same candidate again and again (issue 34 item 6).
-inline constexpr double kSweepToleranceMin = 0.001;
 /// NC9122: the machine has no conveyor axis or its channel no conveyor tracking: nothing to sweep.
 inline constexpr const char* kSweepNoConveyorId = "NC9122";
 /// NC9123: an encoder belt whose scenario velocity at t = 0 is 0: nothing to scale.

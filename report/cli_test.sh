@@ -73,4 +73,65 @@ expect "an empty -o exits 2 with NC8101" 2 '' 'NC8101' -- report "$fixtures/clea
 expect "a missing program exits 2" 2 '' '' -- report "$work/missing.nc" -o "$work/m.html"
 holds "a missing program writes no page" test ! -e "$work/m.html"
 
+# The line page (docs/report.md "The line page", docs/lines.md "ncsim line report"): one page for
+# a production line, its summary the very object of `line time --json`, a run report per channel.
+line=$programs/lines/two_pickers/line.toml
+expect "line report exits 0 and prints where the page is" 0 "^report: $work/line\.html\$" '' -- \
+  line report "$line" -o "$work/line.html"
+holds "the line page is a line page" grep -q '<script type="application/json" id="ncsim-data">{"kind":"line",' \
+  "$work/line.html"
+holds "no temporary file is left beside the line page" no_temp "$work/line.html"
+json=$("$ncsim" line time --json "$line")
+holds "the line page's summary is line time --json's, to the byte" \
+  grep -qF "\"summary\":$json,\"belt\":true," "$work/line.html"
+holds "the line page has each channel's run report, in channel order" \
+  grep -qE '"runs":\[\{"program":"[^"]*picker_up\.nc","machine":"delta_encoder".*\},\{"program":"[^"]*picker_down\.nc",' \
+  "$work/line.html"
+holds "each channel's part of the line page has its conveyor series" \
+  test "$(grep -o '{"name":"belt_v_filtered"' "$work/line.html" | wc -l)" -eq 2
+expect "a line report rerun exits 0" 0 '' '' -- line report "$line" -o "$work/line2.html"
+same "line reports rerun byte-identically" "$work/line.html" "$work/line2.html"
+mkdir -p "$work/csv1" "$work/csv2"
+expect "line run --report writes the CSVs and names the page on stderr" 0 '' "^report: $work/line3\.html\$" \
+  -- line run "$line" -o "$work/csv1" --report "$work/line3.html"
+same "line run --report writes the page of line report" "$work/line.html" "$work/line3.html"
+"$ncsim" line run "$line" -o "$work/csv2" >/dev/null 2>&1
+for f in "$work/csv1"/*.csv; do
+  same "line run --report leaves $(basename "$f") unchanged" "$f" "$work/csv2/$(basename "$f")"
+done
+expect "an unwritable line page exits 2 with NC8100 before the run" 2 '' \
+  "the report: cannot write '$work/no/such/dir/l\.html': its folder '$work/no/such/dir' does not exist \[NC8100\]" -- \
+  line report "$line" -o "$work/no/such/dir/l.html"
+expect "line report without -o exits 2 with NC8101" 2 '' 'NC8101' -- line report "$line"
+expect "--report on line time is refused, exit 2" 2 '' 'an option of line run' -- \
+  line time "$line" --report "$work/x.html"
+# A line whose channel waits for a signal that never comes (NC6401): the page still comes,
+# exit 1, the channels' errors on it.
+cat >"$work/a.nc" <<'NC'
+%a
+G01 X10 F6000
+M30
+NC
+cat >"$work/b.nc" <<'NC'
+%b
+#WAIT SYN [ID1 CH1]
+G01 Y10 F6000
+M30
+NC
+cat >"$work/stuck.toml" <<'TOML'
+[[channel]]
+number = 1
+program = "a.nc"
+machine = "portal_3x"
+[[channel]]
+number = 2
+program = "b.nc"
+machine = "portal_3x"
+TOML
+expect "a line with a failing channel still writes its page, exit 1" 1 "^report: $work/stuck\.html\$" \
+  'NC6401' -- line report "$work/stuck.toml" -o "$work/stuck.html"
+holds "the failing channel's run is marked error on the page" \
+  grep -q '"outcome":"error","stop":"","error":"[^"]*NC6401' "$work/stuck.html"
+holds "a line without a belt: belt false" grep -q '"belt":false,' "$work/stuck.html"
+
 summary "report cli"

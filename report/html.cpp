@@ -308,7 +308,9 @@ void audit(std::string& s, const ReportData& d) {
   s += "]}";
 }
 
-std::string json(const ReportData& d) {
+}  // namespace
+
+std::string report_json(const ReportData& d) {
   std::string s;
   s.reserve(1 << 20);
   s += '{';
@@ -321,6 +323,8 @@ std::string json(const ReportData& d) {
   s += '}';
   return s;
 }
+
+namespace {
 
 std::string html_text(std::string_view s) {
   std::string out;
@@ -384,9 +388,13 @@ std::string json_quote(std::string_view s) {
 }
 
 void write_html(const ReportData& data, std::ostream& os) {
+  write_page(os, "ncsim report: " + data.program, report_json(data));
+}
+
+void write_page(std::ostream& os, std::string_view title, std::string_view json) {
   os << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
      << "<meta name=\"generator\" content=\"ncsim report, uPlot " << uplot_version() << "\">\n"
-     << "<title>ncsim report: " << html_text(data.program) << "</title>\n"
+     << "<title>" << html_text(title) << "</title>\n"
      << "<script>\n"
      << kErrorCapture << "</script>\n<style>\n"
      << uplot_css() << "\n</style>\n<style>\n"
@@ -394,7 +402,7 @@ void write_html(const ReportData& data, std::ostream& os) {
      << "<div id=\"ncsim-status\" data-state=\"loading\" data-charts=\"0\" data-drawn=\"0\" "
         "data-empty=\"0\" data-errors=\"0\">loading</div>\n"
      << "<main id=\"report\"></main>\n"
-     << "<script type=\"application/json\" id=\"ncsim-data\">" << json(data) << "</script>\n"
+     << "<script type=\"application/json\" id=\"ncsim-data\">" << json << "</script>\n"
      << "<script>\n"
      << uplot_js() << "\n</script>\n<script>\n"
      << page_js() << "</script>\n</body>\n</html>\n";

@@ -22,6 +22,14 @@ namespace ncsim::report {
 /// Violations embedded in the page at most (the verdict's count covers all).
 inline constexpr std::size_t kPageViolations = 200;
 
+/// The page data of one run as one JSON object (docs/report.md "Data contract").
+std::string report_json(const ReportData& data);
+
+/// The page shell around `json` (an object whose strings are json_quote()d, or otherwise free
+/// of '<'): uPlot, page.css and page.js inlined; page.js draws a run page, or a line page
+/// when the object has `"kind":"line"` (report/line_page.hpp).
+void write_page(std::ostream& os, std::string_view title, std::string_view json);
+
 /// Writes the page of `data` to `os`.
 void write_html(const ReportData& data, std::ostream& os);
 

@@ -1,9 +1,11 @@
-// ncsim run report: builds the page from the embedded JSON (report/html.cpp) with uPlot.
+// ncsim run report: builds the page from the embedded JSON (report/html.cpp) with uPlot: a run
+// page (renderRun), or a line page (renderLine: the line's summary, belt, timeline and lanes,
+// then renderRun per channel; report/line_page.cpp).
 // Sets #ncsim-status data-state="ready" once every chart has drawn with > 0 points, "error"
 // on any script error, console.error or empty chart (the headless test reads it).
 (function () {
   'use strict';
-  var D = JSON.parse(document.getElementById('ncsim-data').textContent);
+  var DATA = JSON.parse(document.getElementById('ncsim-data').textContent);
   var root = document.getElementById('report');
   var status = document.getElementById('ncsim-status');
   var expected = 0, drawn = 0, empty = [], building = true;
@@ -70,6 +72,48 @@
     return n;
   }
 
+  // The [t0, t1] intervals where the 0/1 indicator `d` is 1 in a row or the next (a decimated
+  // bucket that holds it at all is covered whole).
+  function intervals(t, d) {
+    var iv = [];
+    for (var r = 0; r < t.length; r++) {
+      if (d[r] !== 1) continue;
+      var t0 = r > 0 && d[r - 1] !== 1 ? t[r - 1] : t[r];
+      var t1 = r + 1 < t.length ? t[r + 1] : t[r];
+      if (iv.length > 0 && iv[iv.length - 1][1] >= t0) iv[iv.length - 1][1] = t1;
+      else iv.push([t0, t1]);
+    }
+    return iv;
+  }
+
+  // A chart over the times `t`: defs = [{label, data, color, dash}]; `drawClear` hooks draw
+  // behind the series (the sync phases' bands).
+  function timeChartOf(t, drawClear, parent, title, unit, defs) {
+    if (t.length === 0) return null;  // no cycle: the header says so, no empty chart
+    var data = [t];
+    var series = [{label: 't [s]'}];
+    var points = 0;
+    defs.forEach(function (d) {
+      data.push(d.data);
+      points += finiteCount(d.data);
+      series.push({label: d.label, stroke: d.color, width: d.dash ? 1 : 1.5, dash: d.dash,
+                   points: {show: false}});
+    });
+    expected++;
+    var box = el('div', parent);
+    return new uPlot({
+      title: title, width: W, height: 230,
+      scales: {x: {time: false}},
+      axes: [{label: 't [s]'}, {label: unit, size: 70}],
+      series: series,
+      hooks: {draw: [drawHook(title, points)], drawClear: drawClear},
+    }, data, box);
+  }
+
+  // --- One run's sections (a run page, or one channel of a line page `depth` headings down);
+  // returns what the status marks count.
+  function renderRun(D, root, depth) {
+  var h1 = 'h' + (1 + depth), h2 = 'h' + (2 + depth), h3 = 'h' + (3 + depth);
   function constant(v) {
     var a = new Array(D.t.length);
     for (var i = 0; i < a.length; i++) a[i] = v;
@@ -94,15 +138,7 @@
   PHASES.forEach(function (p) {
     var d = named(p[0]);
     if (!d) return;
-    var iv = [];
-    for (var r = 0; r < D.t.length; r++) {
-      if (d[r] !== 1) continue;
-      var t0 = r > 0 && d[r - 1] !== 1 ? D.t[r - 1] : D.t[r];
-      var t1 = r + 1 < D.t.length ? D.t[r + 1] : D.t[r];
-      if (iv.length > 0 && iv[iv.length - 1][1] >= t0) iv[iv.length - 1][1] = t1;
-      else iv.push([t0, t1]);
-    }
-    bands.push({label: p[1], color: p[2], iv: iv});
+    bands.push({label: p[1], color: p[2], iv: intervals(D.t, d)});
   });
   var bandCount = 0;
   bands.forEach(function (b) { bandCount += b.iv.length; });
@@ -130,25 +166,7 @@
 
   // A chart over time: defs = [{label, data, color, dash}].
   function timeChart(parent, title, unit, defs) {
-    if (D.t.length === 0) return null;  // no cycle: the header says so, no empty chart
-    var data = [D.t];
-    var series = [{label: 't [s]'}];
-    var points = 0;
-    defs.forEach(function (d) {
-      data.push(d.data);
-      points += finiteCount(d.data);
-      series.push({label: d.label, stroke: d.color, width: d.dash ? 1 : 1.5, dash: d.dash,
-                   points: {show: false}});
-    });
-    expected++;
-    var box = el('div', parent);
-    return new uPlot({
-      title: title, width: W, height: 230,
-      scales: {x: {time: false}},
-      axes: [{label: 't [s]'}, {label: unit, size: 70}],
-      series: series,
-      hooks: {draw: [drawHook(title, points)], drawClear: bandCount > 0 ? [drawBands] : []},
-    }, data, box);
+    return timeChartOf(D.t, bandCount > 0 ? [drawBands] : [], parent, title, unit, defs);
   }
 
   // A toolpath view: coordinates a and b of the thinned path, equal scales. `extras`:
@@ -241,7 +259,7 @@
   function series(i) { return D.s[i]; }
 
   // --- Header and outcome.
-  el('h1', root, 'ncsim run report: ' + D.program);
+  if (depth === 0) el(h1, root, 'ncsim run report: ' + D.program);
   var info = el('p', root);
   info.textContent = 'machine ' + D.machine + ', cycle ' + fmt(D.cycle_s * 1e3) + ' ms, ' +
       D.total.cycles + ' cycles, ' + fmt(D.total.total_s) + ' s, path ' +
@@ -259,7 +277,7 @@
           fmt(sp.waiting), fmt(sp.held)]]);
 
   // --- Audit.
-  el('h2', root, 'Audit');
+  el(h2, root, 'Audit');
   var A = D.audit;
   var verdict = el('p', root);
   el('span', verdict, 'verdict: ');
@@ -291,7 +309,7 @@
     el('p', root, A.belt_count + ' of the violations are the belt\u2019s own acceleration or ' +
        'jerk on top of a path within the axis\u2019s limits (004 l.454; docs/conveyor.md)', 'note');
   if (A.violations.length > 0) {
-    el('h3', root, 'Violations' + (A.violation_count > A.violations.length ?
+    el(h3, root, 'Violations' + (A.violation_count > A.violations.length ?
         ' (first ' + A.violations.length + ' of ' + A.violation_count + ')' : ''));
     table(root, ['t [s]', 'line', 'axis', 'quantity', 'method', 'value', 'limit'],
           A.violations.map(function (v) {
@@ -300,7 +318,7 @@
   }
 
   // --- Toolpath.
-  el('h2', root, 'Toolpath (MCS)');
+  el(h2, root, 'Toolpath (MCS)');
   el('p', root, D.path.mcs.length / D.path.dims + ' points, thinned to ' + fmt(D.path.tol_mm) +
      ' mm', 'note');
   var row = el('div', root, null, 'row');
@@ -313,7 +331,7 @@
       pathChart(row, 'MCS ' + D.axes[0] + D.axes[2], D.path.mcs, 0, 2, workspaceOutlines(0, 2, false));
   }
   if (D.path.pcs1.length > 0) {
-    el('h2', root, 'Toolpath (PCS1, on the conveyor)');
+    el(h2, root, 'Toolpath (PCS1, on the conveyor)');
     el('p', root, 'the tool on the workpiece, drawn at belt travel 0 (T0 applied)' +
        (D.workspace && D.workspace.along_x ? '; dashed: the workspace faces beside the belt, ' +
         'which stand still against the workpiece (those across the belt move with it)' : ''),
@@ -326,7 +344,7 @@
 
   // --- Path velocity.
   var n = D.axes.length;
-  el('h2', root, 'Path velocity');
+  el(h2, root, 'Path velocity');
   el('p', root, 'decimated: min and max of every ' + D.bucket_cycles + ' cycles', 'note');
   bandLegend(root);
   timeChart(root, 'path velocity against programmed feed', 'mm/s', [
@@ -337,7 +355,7 @@
   // --- Axes.
   D.axes.forEach(function (name, i) {
     var L = A.axes[i];
-    el('h2', root, 'Axis ' + name);
+    el(h2, root, 'Axis ' + name);
     var pos = [{label: name, data: series(5 * i), color: COLORS[0]}];
     var soft = D.soft_limits[i] || [null, null];
     if (soft[0] !== null) pos.push({label: 'min (P-AXIS-00177)', data: constant(soft[0]), color: COLORS[1], dash: [6, 4]});
@@ -368,7 +386,7 @@
   var grouped = {};
   var conveyorCharts = 0;
   if (D.named.length > 0) {
-    el('h2', root, 'Conveyor');
+    el(h2, root, 'Conveyor');
     bandLegend(root);
     GROUPS.forEach(function (g) {
       var defs = [];
@@ -390,16 +408,13 @@
         conveyorCharts++;
     });
   }
-  status.dataset.conveyor = String(conveyorCharts);
-  status.dataset.bands = String(bandCount);
-  status.dataset.workspace = D.workspace ? '1' : '0';
 
   // --- Per workpiece (ipo::WorkpieceCycles: one row per #SYNC IN).
   // The same objects as `ncsim time --json`: {summary, rows}, times in s.
   var WP = D.workpieces;
   if (WP) {
     var S = WP.summary;
-    el('h2', root, 'Per workpiece');
+    el(h2, root, 'Per workpiece');
     el('p', root, S.workpieces + ' workpieces (' + S.complete + ' reached #SYNC OUT), ' +
        fmt(S.per_minute) + ' per minute; cycle ' + fmt(S.total_min_s) + ' .. ' +
        fmt(S.total_max_s) + ' s; lead-in before the first #SYNC IN ' + fmt(S.lead_in_s) + ' s' +
@@ -415,10 +430,9 @@
           WP.rows.map(function (r) { return wrow(r, r.index + (r.complete ? '' : ' (incomplete)')); })
             .concat([wrow(S, 'sum')]), [0]);
   }
-  status.dataset.workpieces = WP ? String(WP.rows.length) : '0';
 
   // --- Blocks.
-  el('h2', root, 'Slowest blocks');
+  el(h2, root, 'Slowest blocks');
   el('p', root, 'the ' + D.slowest.length + ' longest of ' + D.blocks +
      ' block records (ncsim time --blocks), longest first', 'note');
   table(root, ['line', 'time [s]', 'distance [mm]', 'feed programmed [mm/min]',
@@ -432,6 +446,197 @@
                   fmt(b.split.dwell), fmt(b.split.tech), fmt(b.split.exact_stop),
                   fmt(b.split.waiting)];
         }));
+  return {conveyor: conveyorCharts, bands: bandCount, workspace: D.workspace ? 1 : 0,
+          workpieces: WP ? WP.rows.length : 0};
+  }
+
+  // --- A line page (report/line_page.cpp): L.summary is `ncsim line time --json`'s object;
+  // L.t / L.s the line's decimated series: belt position, belt velocity, then per channel k
+  // running (2 + 2 k) and waiting for a signal (3 + 2 k); L.runs each channel's run data.
+  function renderLine(L, root) {
+    var S = L.summary, W8 = S.workpieces, chans = S.channels;
+    var colorOf = {};  // channel number -> its colour on the timeline and the lanes
+    var LANE_COLORS = COLORS.filter(function (c, i) { return i !== 1; });  // red: missed
+    chans.forEach(function (c, k) { colorOf[c.number] = LANE_COLORS[k % LANE_COLORS.length]; });
+    function label(c) { return 'channel ' + c.number + (c.name === 'channel ' + c.number ? '' : ' ' + c.name); }
+    el('h1', root, 'ncsim line report: ' + L.line);
+    if (L.description) el('p', root, L.description, 'note');
+    var failed = chans.filter(function (c) { return c.error !== undefined; });
+    el('p', root, chans.length + ' channels, cycle ' + fmt(S.cycle_s * 1e3) + ' ms, end ' +
+       fmt(S.end_s) + ' s' + (W8 ? '; ' + W8.taken + ' of ' + W8.arrived + ' workpieces taken, ' +
+       fmt(W8.per_minute, 4) + ' per minute' : ''));
+    var outcome = el('p', root);
+    el('span', outcome, 'outcome: ');
+    el('span', outcome, failed.length === 0 ? 'ok' : failed.length + ' channel' +
+       (failed.length === 1 ? '' : 's') + ' ended with an error', failed.length === 0 ? 'ok' : 'bad');
+    table(root, ['channel', 'program', 'machine', 'end [s]', 'waiting for signals [s]',
+                 'utilisation [%]', 'sensor at [mm]', 'took', 'per minute', 'stop'],
+          chans.map(function (c, k) {
+            var R = L.runs[k];
+            return [label(c), R.program, R.machine, fmt(c.end_s), fmt(c.waiting_s),
+                    fmt(c.utilisation_percent), c.taken === undefined ? '' : fmt(c.sensor_at_mm),
+                    c.taken === undefined ? '' : c.taken,
+                    c.taken === undefined ? '' : fmt(c.per_minute, 4), c.stop];
+          }), [0, 1, 2, 9]);
+    failed.forEach(function (c) { el('pre', root, label(c) + ': ' + c.error, 'err'); });
+
+    // The belt over time.
+    if (L.belt) {
+      el('h2', root, 'Belt');
+      if (W8)
+        el('p', root, W8.arrived + ' arrived, ' + W8.taken + ' taken, ' + W8.missed + ' missed, ' +
+           W8.on_belt + ' on the belt at the end (' + W8.held + ' held)', 'note');
+      el('p', root, 'decimated: min and max of every ' + L.bucket_cycles + ' cycles', 'note');
+      timeChartOf(L.t, [], root, 'belt position (the real belt)', 'mm',
+                  [{label: 'position', data: L.s[0], color: COLORS[0]}]);
+      timeChartOf(L.t, [], root, 'belt velocity (the real belt)', 'mm/s',
+                  [{label: 'velocity', data: L.s[1], color: COLORS[0]}]);
+    }
+
+    // Which channel took which workpiece when: each workpiece a line from its arrival at the
+    // line's sensor to its fate (taken: the channel's colour and a dot; missed: red, a cross).
+    var fates = W8 ? W8.fates : [];
+    var timelineMarks = 0;
+    var tEnd = L.t.length > 0 ? L.t[L.t.length - 1] : 0;
+    fates.forEach(function (f) { tEnd = Math.max(tEnd, f.t_s === undefined ? f.arrived_s : f.t_s); });
+    if (fates.length > 0) {
+      el('h2', root, 'Workpieces: which channel took which, when');
+      var lg = el('p', root, 'from its arrival at the line\u2019s sensor to its fate: ', 'note');
+      chans.forEach(function (c) {
+        if (c.taken === undefined) return;
+        var sw = el('span', lg, '\u00a0\u00a0\u00a0\u00a0', 'swatch');
+        sw.style.background = colorOf[c.number];
+        el('span', lg, ' taken by ' + label(c) + ' (' + c.taken + ')  ');
+      });
+      var sm = el('span', lg, '\u00a0\u00a0\u00a0\u00a0', 'swatch');
+      sm.style.background = MISSED;
+      el('span', lg, ' missed (' + W8.missed + ')  ');
+      if (W8.on_belt > 0) el('span', lg, ' grey: on the belt at the end (' + W8.on_belt + ')');
+      timelineMarks = fates.length;
+      frameChart(root, 'workpieces (arrival \u2192 taken or missed)', 'workpiece', [0, tEnd],
+                 [0.5, fates[fates.length - 1].workpiece + 0.5], null, fates.length,
+                 function (u) { drawFates(u, fates, colorOf); });
+      var listed = fates.slice(0, 500);
+      var det = el('details', root);
+      el('summary', det, 'every workpiece\u2019s fate (' + fates.length + ')');
+      table(det, ['workpiece', 'arrived [s]', 'fate', 'channel', 'at [s]'],
+            listed.map(function (f) {
+              var c = chans.filter(function (x) { return x.number === f.channel; })[0];
+              return [f.workpiece, fmt(f.arrived_s, 9), f.fate, c ? label(c) : '',
+                      f.t_s === undefined ? '' : fmt(f.t_s, 9)];
+            }), [2, 3]);
+      if (listed.length < fates.length)
+        el('p', det, 'the first ' + listed.length + ' of ' + fates.length + ' listed', 'note');
+    }
+
+    // Each channel's lane: running, waiting for a signal (#WAIT / #WAIT SYN), ended.
+    el('h2', root, 'Channels: running and waiting for signals');
+    var lg2 = el('p', root, 'per channel, decimated like the series: ', 'note');
+    [['running', 1], ['waiting for a signal', 0.35]].forEach(function (q) {
+      var sw = el('span', lg2, '\u00a0\u00a0\u00a0\u00a0', 'swatch');
+      sw.style.background = COLORS[0];
+      sw.style.opacity = String(q[1]);
+      el('span', lg2, ' ' + q[0] + '  ');
+    });
+    var lanes = chans.map(function (c, k) {
+      return {color: colorOf[c.number], run: intervals(L.t, L.s[2 + 2 * k]),
+              wait: intervals(L.t, L.s[3 + 2 * k])};
+    });
+    var laneCount = 0;
+    lanes.forEach(function (l) { laneCount += l.run.length + l.wait.length; });
+    frameChart(root, 'channel lanes', 'channel', [0, tEnd], [0, chans.length],
+               chans.map(function (c, k) { return [chans.length - k - 0.5, label(c)]; }),
+               laneCount, function (u) { drawLanes(u, lanes); });
+
+    // Each channel's run report.
+    var marks = {conveyor: 0, bands: 0, workspace: 0, workpieces: 0};
+    L.runs.forEach(function (R, k) {
+      el('h2', root, label(chans[k]) + ': ' + R.program + ' on ' + R.machine, 'channel');
+      var m = renderRun(R, el('section', root), 1);
+      Object.keys(marks).forEach(function (key) { marks[key] += m[key]; });
+    });
+    status.dataset.lineChannels = String(L.runs.length);
+    status.dataset.timeline = String(timelineMarks);
+    status.dataset.lanes = String(laneCount);
+    return marks;
+  }
+
+  var MISSED = '#b00020';
+
+  // A frame of axes over x range `xr` and y range `yr` drawn by `paint` (the workpieces, the
+  // lanes); `ticks` [[y, text]] names the y axis's ticks (null: numbers); `marks` counts what
+  // it draws (0: an empty chart).
+  function frameChart(parent, title, unit, xr, yr, ticks, marks, paint) {
+    expected++;
+    var box = el('div', parent);
+    var y = {label: unit, size: 110};
+    if (ticks) {
+      y.splits = function () { return ticks.map(function (t) { return t[0]; }); };
+      y.values = function () { return ticks.map(function (t) { return t[1]; }); };
+    }
+    return new uPlot({
+      title: title, width: W, height: ticks ? 60 + 40 * ticks.length : 320,
+      legend: {show: false},
+      scales: {x: {time: false, range: function () { return xr; }},
+               y: {range: function () { return yr; }}},
+      axes: [{label: 't [s]'}, y],
+      series: [{label: 't [s]'}, {label: title, stroke: 'transparent', points: {show: false}}],
+      hooks: {draw: [paint, drawHook(title, marks)]},
+    }, [xr, [yr[0], yr[1]]], box);
+  }
+
+  function drawFates(u, fates, colorOf) {
+    var ctx = u.ctx;
+    ctx.save();
+    ctx.lineWidth = 2;
+    fates.forEach(function (f) {
+      var end = f.t_s === undefined ? u.scales.x.max : f.t_s;
+      var x0 = u.valToPos(f.arrived_s, 'x', true), x1 = u.valToPos(end, 'x', true);
+      var y = u.valToPos(f.workpiece, 'y', true);
+      var color = f.fate === 'taken' ? colorOf[f.channel] : f.fate === 'missed' ? MISSED : '#999';
+      ctx.strokeStyle = color;
+      ctx.setLineDash(f.fate === 'missed' ? [4, 3] : []);
+      ctx.beginPath();
+      ctx.moveTo(x0, y);
+      ctx.lineTo(x1, y);
+      ctx.stroke();
+      ctx.setLineDash([]);
+      ctx.fillStyle = color;
+      ctx.beginPath();
+      if (f.fate === 'missed') {
+        ctx.moveTo(x1 - 4, y - 4); ctx.lineTo(x1 + 4, y + 4);
+        ctx.moveTo(x1 - 4, y + 4); ctx.lineTo(x1 + 4, y - 4);
+        ctx.stroke();
+      } else {
+        ctx.arc(x1, y, 3.5, 0, 2 * Math.PI);
+        ctx.fill();
+      }
+    });
+    ctx.restore();
+  }
+
+  function drawLanes(u, lanes) {
+    var ctx = u.ctx, n = lanes.length;
+    ctx.save();
+    lanes.forEach(function (l, k) {
+      var top = u.valToPos(n - k - 0.1, 'y', true), bottom = u.valToPos(n - k - 0.9, 'y', true);
+      [[l.run, 1], [l.wait, 0.35]].forEach(function (q) {
+        ctx.fillStyle = l.color;
+        ctx.globalAlpha = q[1];
+        q[0].forEach(function (iv) {
+          var x0 = u.valToPos(iv[0], 'x', true), x1 = u.valToPos(iv[1], 'x', true);
+          ctx.fillRect(x0, top, Math.max(1, x1 - x0), bottom - top);
+        });
+      });
+    });
+    ctx.restore();
+  }
+
+  var marks = DATA.kind === 'line' ? renderLine(DATA, root) : renderRun(DATA, root, 0);
+  status.dataset.conveyor = String(marks.conveyor);
+  status.dataset.bands = String(marks.bands);
+  status.dataset.workspace = String(marks.workspace);
+  status.dataset.workpieces = String(marks.workpieces);
   building = false;
   update();
 })();

@@ -19,19 +19,10 @@ if [[ -z $browser ]]; then
 fi
 mkdir -p "$work"
 work=$(cd "$work" && pwd)  # file:// needs an absolute path
-# The README's old example, a run that ends in a run-time error (its page shows the error), and
-# the conveyor example (its PCS1 toolpath panels).
-for program in programs/isg_reference_example/isg_reference_example.nc tests/cli/soft_limit.nc \
-  programs/conveyor_squares/conveyor_squares.nc; do
-  example=$(basename "$program" .nc)
-  page=$work/$example.html
-  status=0
-  "$ncsim" report "$src/$program" -o "$page" >/dev/null 2>&1 || status=$?
-  # A run-time error still writes the page (exit 1); a usage error (2) writes none.
-  if [[ $status -ne 0 && $status -ne 1 ]] || [[ ! -s $page ]]; then
-    echo "render_test: ncsim report failed ($status) for $example" >&2
-    exit 1
-  fi
+# render NAME PAGE: the page in headless Chromium; sets `marker` (the status element), `dom` and
+# `log`; fails unless every chart drew without error.
+render() {
+  local example=$1 page=$2
   dom=$work/$example.dom.html
   log=$work/$example.chromium.log
   # Its own profile directory: no state from another run, nothing written to $HOME.
@@ -50,6 +41,22 @@ for program in programs/isg_reference_example/isg_reference_example.nc tests/cli
     echo "render_test: $example: the page did not draw every chart without error" >&2
     exit 1
   fi
+}
+
+# The README's old example, a run that ends in a run-time error (its page shows the error), and
+# the conveyor example (its PCS1 toolpath panels).
+for program in programs/isg_reference_example/isg_reference_example.nc tests/cli/soft_limit.nc \
+  programs/conveyor_squares/conveyor_squares.nc; do
+  example=$(basename "$program" .nc)
+  page=$work/$example.html
+  status=0
+  "$ncsim" report "$src/$program" -o "$page" >/dev/null 2>&1 || status=$?
+  # A run-time error still writes the page (exit 1); a usage error (2) writes none.
+  if [[ $status -ne 0 && $status -ne 1 ]] || [[ ! -s $page ]]; then
+    echo "render_test: ncsim report failed ($status) for $example" >&2
+    exit 1
+  fi
+  render "$example" "$page"
   charts=$(sed -E 's/.*data-charts="([0-9]+)".*/\1/' <<<"$marker")
   if ((charts < 5)); then
     echo "render_test: $example: only $charts charts" >&2
@@ -78,6 +85,30 @@ for program in programs/isg_reference_example/isg_reference_example.nc tests/cli
     fi
   fi
   # The page logs nothing: any console line Chromium reports is an error.
+  if grep -E ':CONSOLE|Uncaught' "$log"; then
+    echo "render_test: $example: console messages (above)" >&2
+    exit 1
+  fi
+done
+# The bundled production lines (docs/report.md "The line page"): one page per line, every
+# channel's charts, the workpieces' timeline (one mark per workpiece) and the channel lanes.
+for folder in programs/lines/two_pickers programs/lines/laser_sorter; do
+  example=line_$(basename "$folder")
+  page=$work/$example.html
+  "$ncsim" line report "$src/$folder/line.toml" -o "$page" >/dev/null 2>&1 || {
+    echo "render_test: ncsim line report failed for $example" >&2
+    exit 1
+  }
+  render "$example" "$page"
+  arrived=$("$ncsim" line time --json "$src/$folder/line.toml" | python3 -c \
+    'import json, sys; print(json.load(sys.stdin)["workpieces"]["arrived"])')
+  if ! grep -q 'data-line-channels="2"' <<<"$marker" ||
+    ! grep -q "data-timeline=\"$arrived\"" <<<"$marker" ||
+    grep -q 'data-lanes="0"' <<<"$marker"; then
+    echo "render_test: $example: not both channels, not one timeline mark per workpiece" \
+      "($arrived), or no lane drawn" >&2
+    exit 1
+  fi
   if grep -E ':CONSOLE|Uncaught' "$log"; then
     echo "render_test: $example: console messages (above)" >&2
     exit 1

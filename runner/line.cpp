@@ -9,6 +9,14 @@
 
 namespace ncsim::runner {
 
+std::string error_id(const Run& run) {
+  if (const auto& e = run.channel().run_time_error()) return e->id;
+  if (const core::Diagnostic* d =
+          run.source().error() ? run.source().error() : run.interpreter().error())
+    return d->id;
+  return {};
+}
+
 LineOutcome run_line(const RunSpec& spec,
                      const std::function<void(const channel::Channel&)>& on_cycle,
                      std::ostream& err) {
@@ -29,12 +37,7 @@ LineOutcome run_line(const RunSpec& spec,
   if (end.failed) {
     o.status = Exit::program_errors;
     o.error = first_line(end.error_text);
-    if (const auto& e = run.channel().run_time_error()) {
-      o.id = e->id;
-    } else if (const core::Diagnostic* d =
-                   run.source().error() ? run.source().error() : run.interpreter().error()) {
-      o.id = d->id;
-    }
+    o.id = error_id(run);
     return o;
   }
   if (run.audit() && !run.audit()->verdict().ok()) {

@@ -23,6 +23,12 @@ struct LineOutcome {
   std::uint64_t audit_violations = 0;
 };
 
+class Run;
+
+/// The id of the error that ended `run` (its run-time error's, else its program source's or
+/// interpreter's), "" when none.
+std::string error_id(const Run& run);
+
 /// Loads `spec` (the load's diagnostics on `err`) and runs it to its end, `on_cycle` (may be
 /// empty) after every running cycle.
 LineOutcome run_line(const RunSpec& spec,

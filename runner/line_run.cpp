@@ -84,6 +84,7 @@ RunSpec channel_spec(const scenario::LineFile& line, const scenario::LineChannel
   rs.cycle_us = spec.cycle_us ? spec.cycle_us : line.cycle_us;
   rs.audit = spec.audit;
   rs.build_world = false;  // the line's belt (LineWorld) gives the channel its Port
+  rs.conv_vel = spec.conv_vel;
   return rs;
 }
 
@@ -113,6 +114,7 @@ struct BeltParts {
   double sign = 1.0;                              // its conveying sign (P-CHAN-00363)
   std::vector<conveyor::StationSpec> stations;    // one per channel with a conveyor axis
   std::vector<std::optional<std::size_t>> index;  // per channel: its station
+  WrapPort wrap;                                  // LineSpec::wrap
 
   // Channel c (loaded as `in`) joins the belt if its machine has a conveyor axis; false (the
   // positioned error on `err`) when it cannot (NC7107, NC7108).
@@ -141,6 +143,7 @@ struct BeltParts {
           belt_only.conveyor->series.reset();
         }
         belt = conveyor::make_port(in.machine, &belt_only, in.t_cycle);
+        if (wrap) belt = wrap(std::move(belt));
         const auto& cc = in.machine.channel.conveyor;
         sign = cc && cc->direction == machines::MoveDirection::negative_x ? -1.0 : 1.0;
       }
@@ -171,6 +174,8 @@ LineLoadResult load_line_run(const LineSpec& spec) {
   }
   std::unique_ptr<LineRun> line(new LineRun);
   line->file_ = std::move(*file);
+  // line sweep: the belt's velocity set before anything is built from it.
+  if (spec.adjust_conveyor && line->file_.conveyor) spec.adjust_conveyor(*line->file_.conveyor);
   const scenario::LineFile& lf = line->file_;
   line->order_ = lf.channels;
   std::sort(line->order_.begin(), line->order_.end(),
@@ -191,6 +196,7 @@ LineLoadResult load_line_run(const LineSpec& spec) {
   }
   std::vector<std::unique_ptr<Loaded>> loaded;
   BeltParts belt;
+  belt.wrap = spec.wrap;
   const scenario::LineChannel* first = nullptr;  // the channel whose cycle the others match
   for (const scenario::LineChannel& c : line->order_) {
     LoadResult one = load(channel_spec(lf, c, spec));
@@ -253,6 +259,7 @@ LineLoadResult load_line_run(const LineSpec& spec) {
   }
   line->status_.assign(line->runs_.size(), ipo::Status::running);
   line->times_.assign(line->runs_.size(), LineChannelTime{});
+  line->waiting_.assign(line->runs_.size(), 0);
   r.messages = err.str();
   r.exit = Exit::ok;
   r.line = std::move(line);
@@ -354,10 +361,14 @@ bool LineRun::step() {
     if (status_[k] != ipo::Status::running) continue;
     status_[k] = runs_[k]->step();
     if (belt_ && watch_[k].station) watch(k, t);
+    waiting_[k] = 0;
     if (status_[k] == ipo::Status::running) {
       any = true;
       times_[k].t_end = t;
-      if (hub_->blocked(order_[k].number)) times_[k].t_waiting += t_cycle_;
+      if (hub_->blocked(order_[k].number)) {
+        times_[k].t_waiting += t_cycle_;
+        waiting_[k] = 1;
+      }
     }
   }
   ++cycle_;
@@ -367,14 +378,20 @@ bool LineRun::step() {
   return any;
 }
 
-void LineRun::run() {
-  while (step()) {
+void LineRun::run(const std::function<void()>& after_cycle) {
+  for (bool more = true; more;) {
+    more = step();
+    if (after_cycle) after_cycle();
   }
   // The belt runs on until every free workpiece has left it (docs/lines.md "Workpieces along
   // the belt"); a belt that stands keeps them (on the belt at the end).
   if (belt_)
     belt_->drain(static_cast<double>(cycle_) * t_cycle_, t_cycle_,
                  static_cast<double>(cycle_) * t_cycle_ + kDrainMax);
+}
+
+const conveyor::BeltState* LineRun::belt_state() const noexcept {
+  return belt_ ? &belt_->world().actual() : nullptr;
 }
 
 double LineRun::t_end() const noexcept {

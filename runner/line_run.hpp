@@ -24,6 +24,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -46,6 +47,12 @@ struct LineSpec {
   std::optional<std::uint64_t> cycle_us;  ///< --cycle-us over the line's cycle_us
   std::optional<double> max_time;         ///< --max-time S for every channel
   bool audit = false;                     ///< every channel's setpoints audited
+  /// `line sweep`: [mm/s] replaces every channel's #SYNC IN CONV_VEL (RunSpec::conv_vel)
+  std::optional<double> conv_vel;
+  /// `line sweep`: the line's [conveyor] changed before the belt is built (may be empty)
+  std::function<void(scenario::Conveyor&)> adjust_conveyor;
+  /// `line sweep`: the belt wrapped once it is built (may be empty; RunSpec::wrap)
+  WrapPort wrap;
 };
 
 /// One channel's figures after the run.
@@ -89,8 +96,15 @@ class LineRun {
   void start(const std::vector<std::vector<ipo::Sink*>>& sinks = {});
   /// One cycle of the line; false once every channel ended.
   bool step();
-  /// Steps to the end.
-  void run();
+  /// Steps to the end, `after_cycle` (may be empty) after every cycle (the last one too), then
+  /// runs the belt on until every free workpiece has left it.
+  void run(const std::function<void()>& after_cycle = {});
+  /// [s] the end of the last cycle stepped.
+  double t() const noexcept { return static_cast<double>(cycle_) * t_cycle_; }
+  /// Channel k stood at a #WAIT / #WAIT SYN not answered in the last cycle.
+  bool waiting(std::size_t k) const noexcept { return waiting_[k] != 0; }
+  /// The real belt at the end of the last cycle (null: the line has no conveyor world).
+  const conveyor::BeltState* belt_state() const noexcept;
   /// Channel k's last status (running until it ended).
   ipo::Status status(std::size_t k) const noexcept { return status_[k]; }
   const LineChannelTime& time(std::size_t k) const noexcept { return times_[k]; }
@@ -126,6 +140,7 @@ class LineRun {
   std::vector<std::unique_ptr<Run>> runs_;
   std::vector<ipo::Status> status_;
   std::vector<LineChannelTime> times_;
+  std::vector<std::uint8_t> waiting_;  ///< per channel: waiting() in the last cycle
   std::uint64_t cycle_ = 0;
 };
 

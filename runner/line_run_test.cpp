@@ -248,3 +248,59 @@ TEST_CASE("two delta pickers share seeded random streams: taken + missed = arriv
   CHECK(taken_by_second > 0);  // the second robot gets what the first lets pass
   CHECK(missed > 0);           // and some leave the belt untaken, counted
 }
+
+TEST_CASE("run's after-cycle hook sees every cycle, the waits and the belt where it is") {
+  const fs::path dir = folder("hook", {{"line.toml", kTwoChannels},
+                                       {"a.nc", std::string(kCut) + "#SIGNAL SYN [ID1 CH2]\nM30\n"},
+                                       {"b.nc", "%b\n#WAIT SYN [ID1 CH1]\nG01 Y10 F6000\nM30\n"}});
+  LineSpec spec;
+  spec.file = dir / "line.toml";
+  LineLoadResult r = load_line_run(spec);
+  REQUIRE(r.ok());
+  LineRun& line = *r.line;
+  line.start();
+  std::uint64_t cycles = 0;
+  std::uint64_t waited = 0;
+  double t_last = 0.0;
+  line.run([&] {
+    ++cycles;
+    CHECK(line.t() > t_last);
+    t_last = line.t();
+    if (line.waiting(1)) ++waited;
+    CHECK_FALSE(line.waiting(0));         // channel 1 never waits
+    CHECK(line.belt_state() == nullptr);  // no conveyor world on portal_3x
+  });
+  // One call per cycle, the last one too (the cycle the last channel ended in, after its end
+  // time); the waiting cycles are time()'s waiting.
+  CHECK(static_cast<double>(cycles - 1) * line.t_cycle() == doctest::Approx(line.t_end()));
+  CHECK(static_cast<double>(waited) * line.t_cycle() == doctest::Approx(line.time(1).t_waiting));
+  CHECK(waited > 900);  // channel 2 stood through channel 1's cut of about 1 s
+}
+
+TEST_CASE("line sweep's hooks: the belt scaled before it is built, CONV_VEL for every channel") {
+  const fs::path dir = two_pickers(7, 150.0, 0.0, 3);
+  LineSpec spec;
+  spec.file = dir / "line.toml";
+  spec.adjust_conveyor = [](scenario::Conveyor& c) { c.velocity = 240.0; };
+  spec.conv_vel = 240.0;
+  int wrapped = 0;
+  spec.wrap = [&](std::unique_ptr<conveyor::Port> port) {
+    ++wrapped;
+    return port;
+  };
+  LineLoadResult r = load_line_run(spec);
+  INFO(r.messages);
+  REQUIRE(r.ok());
+  CHECK(wrapped == 1);  // the one belt, not once per channel
+  LineRun& line = *r.line;
+  line.start();
+  double v_max = 0.0;
+  line.run([&] {
+    REQUIRE(line.belt_state() != nullptr);
+    v_max = std::max(v_max, line.belt_state()->v);
+  });
+  CHECK(v_max == doctest::Approx(240.0));
+  CHECK(line.belt()->taken_total() == 3);
+  for (std::size_t k = 0; k < line.size(); ++k)
+    CHECK_FALSE(line.channel(k).ending(line.status(k)).failed);
+}

@@ -2,7 +2,8 @@
 # The main job on a bundled conveyor example: install what is missing, build ncsim, then check,
 # time (with the audit), run and report programs/conveyor_squares (three sheets on a moving belt,
 # each measured, caught up, cut while it moves and left), and print where the report is; then
-# the reports of one bundled example of each other kind of machine, with screenshots.
+# the reports of one bundled example of each other kind of machine and of each bundled production
+# line (programs/lines/), with screenshots.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/deps.sh
@@ -50,6 +51,17 @@ echo "reports of the other bundled examples (build/release/reports):"
 for name in laser_coil pick_and_place_50 static_saw override_above_100 dense_cam; do
   page=build/release/reports/$name.html
   build/release/cli/ncsim report -o "$page" "programs/$name/$name.nc" >/dev/null
+  screenshot "$page" "build/release/reports/$name.png"
+  printf '  %-22s %s%s\n' "$name" "$PWD/$page" \
+    "$([[ -s build/release/reports/$name.png ]] && echo ' (+ .png)')"
+done
+# The bundled production lines (programs/lines/, docs/lines.md): each line's page (the belt, the
+# workpieces' timeline, each channel's lanes and run report) and its screenshot.
+echo "line reports of the bundled production lines (build/release/reports):"
+for folder in programs/lines/*/; do
+  name=line_$(basename "$folder")
+  page=build/release/reports/$name.html
+  build/release/cli/ncsim line report "${folder}line.toml" -o "$page" >/dev/null
   screenshot "$page" "build/release/reports/$name.png"
   printf '  %-22s %s%s\n' "$name" "$PWD/$page" \
     "$([[ -s build/release/reports/$name.png ]] && echo ' (+ .png)')"

@@ -59,6 +59,9 @@ set_tests_properties(cli_hostile_property_test PROPERTIES TIMEOUT 900)
 # --- issue 37: production lines, several channels in one run (docs/lines.md)
 add_test(NAME cli_production_line_test
          COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/production_line_test.sh $<TARGET_FILE:ncsim>)
+# ncsim line sweep: answers known by construction, the binding constraint, determinism
+add_test(NAME cli_line_sweep_test
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/line_sweep_test.sh $<TARGET_FILE:ncsim>)
 # one test per bundled line programs/lines/<name>/line.toml: check, time, run, reruns identical
 file(GLOB ncsim_lines CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/programs/lines/*/line.toml)
 foreach(line IN LISTS ncsim_lines)
