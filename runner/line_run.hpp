@@ -24,6 +24,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -46,6 +47,11 @@ struct LineSpec {
   std::optional<std::uint64_t> cycle_us;  ///< --cycle-us over the line's cycle_us
   std::optional<double> max_time;         ///< --max-time S for every channel
   bool audit = false;                     ///< every channel's setpoints audited
+  /// Changes the validated line file before its channels load (a study's varied belt,
+  /// docs/study.md; may be empty).
+  std::function<void(scenario::LineFile&)> adjust;
+  /// [mm/s] every channel's #SYNC IN CONV_VEL (RunSpec::conv_vel); nullopt: the programs'.
+  std::optional<double> conv_vel;
 };
 
 /// One channel's figures after the run.
