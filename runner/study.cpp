@@ -35,7 +35,9 @@ std::array<std::uint64_t, 6> radices(const scenario::StudyFile& s) noexcept {
 
 // A varied value: 12 significant digits, so that a range's from + k step reads as written
 // (0.30000000000000004 -> 0.3).
-std::string value_text(double v) { return core::significant_text(v, 12); }
+std::string value_text(double v) {
+  return core::significant_text(v, 12);
+}
 
 std::string read_text(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
