@@ -352,7 +352,7 @@ class StudyReader : public ReaderBase {
 std::filesystem::path StudyFile::resolved(const StudyPath& path) const {
   const std::filesystem::path p(path.text);
   if (p.is_absolute()) return p;
-  return std::filesystem::path(file).parent_path() / p;
+  return (std::filesystem::path(file).parent_path() / p).lexically_normal();
 }
 
 StudyLoad parse_study(const core::SourceFile& file) {

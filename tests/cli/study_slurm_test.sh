@@ -110,7 +110,7 @@ fi
 echo "ok   Slurm is up: node $host idle, $(nproc) CPUs"
 
 cp -r "$here/study" "$work/study"
-sed -i "s#\.\./\.\./\.\./programs#$(cd "$here/../.." && pwd)/programs#" "$work"/study/*.toml
+sed -i -e "s#\"\.\./\.\./\.\./#\"$(cd "$here/../.." && pwd)/#" -e "s#\"\.\./#\"$here/#" "$work"/study/*.toml
 checks=$((checks + 1))
 if timeout 300 "$ncsim" study submit "$work/study/pickers.toml" -o "$work/slurm" --chunk 2 \
   >"$work/out" 2>"$work/err"; then

@@ -9,8 +9,8 @@ ncsim=$1
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 source "$here/expect.sh"
 cp -r "$here/study" "$work/study"
-# The studies' base paths are relative to their folder: keep them valid from the copy.
-sed -i "s#\.\./\.\./\.\./programs#$(cd "$here/../.." && pwd)/programs#" "$work"/study/*.toml
+# The studies' paths are relative to their folder: made absolute in the copy.
+sed -i -e "s#\"\.\./\.\./\.\./#\"$(cd "$here/../.." && pwd)/#" -e "s#\"\.\./#\"$here/#" "$work"/study/*.toml
 st=$work/study
 
 expect "a bad study file: every error positioned, exit 2" 2 '' \
@@ -45,6 +45,19 @@ r = {(row['belt_velocity_mm_s'], row['pitch_mm']): float(row['end_s']) for row i
 assert r[('120', '600')] < r[('80', '600')] and r[('80', '600')] < r[('80', '700')], r"
 expect "run --jobs 1: the same table" 0 '' '' -- study run "$st/squares.toml" -o "$work/sq1" --jobs 1
 same "run --jobs 1 and --jobs 2 give byte-identical tables" "$work/sq/results.csv" "$work/sq1/results.csv"
+
+# A fluctuation axis on a program base, and programs varied: failures are rows, not failures.
+expect "vary.fluctuation: the study runs" 0 '^study: 2 rows merged' '' \
+  -- study run "$st/fluctuation.toml" -o "$work/fl"
+holds "vary.fluctuation: clean without fluctuation, the belt's jerk a violation at 5 % (exit 3)" bash -c "
+  [[ \$(cut -d, -f1-4,11,12 '$work/fl/results.csv' | tail -n +2) == \$'0,0,0,program end,ok,0\n1,5,3,program end,violated,2449' ]]"
+expect "vary.program: a job that ends in a run-time error is a row of the table" 0 '^study: 2 rows merged' '' \
+  -- study run "$st/programs.toml" -o "$work/pr"
+holds "vary.program: the error's id, stop and positioned first line in its row" bash -c "
+  tail -n 1 '$work/pr/results.csv' | grep -Eq '^1,/[^,]*/programs/belt_too_fast/belt_too_fast.nc,1,error,50653,[0-9.]+,,0,,0,violated,[0-9]+,\"/.*/belt_too_fast.nc:15:1: error: run-time error at t=5.346 s: .*\\[50653\\]\"\$'"
+sed 's#belt_too_fast/belt_too_fast.nc"#../tests/cli/two_errors.nc"#' "$st/programs.toml" >"$st/syntax.toml"
+expect "a program of the study with syntax errors is refused at the plan, positioned" 2 '' \
+  'two_errors.nc:3:1: error: unexpected \$ENDIF \[20218\]' -- study plan "$st/syntax.toml" -o "$work/sy"
 
 # The line base, job by job in reverse order, then merged.
 expect "plan a line study" 0 '^study: 6 jobs planned' '' -- study plan "$st/pickers.toml" -o "$work/pk"
