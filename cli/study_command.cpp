@@ -293,7 +293,9 @@ StudyCommand::StudyCommand(CLI::App& app) {
       ->check(CLI::Range(1u, 256u));
   job_ = cmd_->add_subcommand("job", "Run one job of a planned study (what an array task calls)");
   job_->add_option("dir", options_.dir, "The plan folder")->required();
-  job_->add_option("index", options_.index, "The job's index (0-based)")->required();
+  job_->add_option("index", options_.index, "The job's index (0-based)")
+      ->required()
+      ->check(CLI::NonNegativeNumber);
   merge_ = cmd_->add_subcommand("merge", "Merge the jobs' results into one table");
   merge_->add_option("dir", options_.dir, "The plan folder")->required();
   merge_->add_option("-o,--output", options_.merged,

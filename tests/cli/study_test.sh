@@ -80,6 +80,7 @@ for r in rows:
 assert len({r['end_s'] for r in rows}) > 1"
 expect "merge -o -: the table on stdout" 0 '^job,belt_velocity_mm_s,seed,exit' '' -- study merge "$work/pk" -o -
 expect "a job outside the study is NC7208" 2 '' 'job 6 is not in the study .*\[NC7208\]' -- study job "$work/pk" 6
+expect "a negative job index is a usage error" 2 '' 'index: Value -1 not in range' -- study job "$work/pk" -1
 expect "a folder that is no plan is NC7208" 2 '' 'not a planned study.*\[NC7208\]' -- study job "$work" 0
 echo "# changed" >>"$st/pickers.toml"
 expect "a study changed since its plan is NC7207" 2 '' 'changed since it was planned.*\[NC7207\]' -- study job "$work/pk" 0
