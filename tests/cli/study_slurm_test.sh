@@ -126,4 +126,16 @@ holds "submit: every task logged" bash -c "[[ \$(ls '$work/slurm/logs' | wc -l) 
 expect "the same study on this machine" 0 '' '' -- study run "$work/study/pickers.toml" -o "$work/local" --jobs 2
 same "Slurm and the local run give byte-identical tables" "$work/slurm/results.csv" "$work/local/results.csv"
 holds "the table has its six jobs" bash -c "[[ \$(wc -l <'$work/slurm/results.csv') -eq 7 ]]"
+checks=$((checks + 1))
+timeout 60 "$ncsim" study submit "$work/study/pickers.toml" -o "$work/bad" --partition nowhere \
+  >"$work/out" 2>"$work/err"
+status=$?
+if [[ $status -eq 2 ]] && grep -q 'sbatch --wait .* failed (exit status [0-9]*; .*\[NC7210\]' "$work/err"; then
+  echo "ok   a submit that sbatch refuses (no such partition) is NC7210, exit 2"
+else
+  failures=$((failures + 1))
+  echo "FAIL a submit that sbatch refuses: exit $status"
+  sed 's/^/  /' "$work/out" "$work/err"
+fi
+holds "... and no table is written" test ! -e "$work/bad/results.csv"
 summary study_slurm_test
