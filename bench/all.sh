@@ -25,7 +25,7 @@ CPU=("$PY" "$REPO/bench/cpu.py" --runs "$RUNS")
 GBENCH=("$PY" "$REPO/bench/gbench.py" --reps "$RUNS")
 
 ROWS=(grammar interp axes planner ipo rs274 big big-5gb dense-walk dense-cam chords-10m run-csv
-  move200 report blend bound checker line line-cost line-seeds)
+  move200 report blend bound checker line line-cost line-seeds study)
 describe() {
   case $1 in
     grammar) echo "grammar_bench: check_program in memory, blocks/s" ;;
@@ -48,6 +48,7 @@ describe() {
     line) echo "line_accuracy.sh: conveyor tracking contour error (deterministic)" ;;
     line-cost) echo "line_cost.sh: ncsim line time, two channels against each alone (CPU)" ;;
     line-seeds) echo "line_seeds.sh 200: the two-picker line over 200 seeded streams, counts closed" ;;
+    study) echo "study.sh: a 100-run study, --jobs \$(nproc) against one after another (wall)" ;;
     *) return 1 ;;
   esac
 }
@@ -178,6 +179,7 @@ row_checker() {
 row_line() { need cli/ncsim && bash "$REPO/bench/line_accuracy.sh" "$NCSIM"; }
 row_line-cost() { need cli/ncsim && RUNS="$RUNS" bash "$REPO/bench/line_cost.sh" "$NCSIM"; }
 row_line-seeds() { need cli/ncsim && NCSIM_BUILD_DIR="$BUILD" bash "$REPO/bench/line_seeds.sh" 200; }
+row_study() { need cli/ncsim && bash "$REPO/bench/study.sh" "$NCSIM"; }
 
 if [[ "${1:-}" == --list ]]; then
   for r in "${ROWS[@]}"; do printf '%-11s %s\n' "$r" "$(describe "$r")"; done

@@ -22,6 +22,7 @@
 #include "cli/golden_command.hpp"
 #include "cli/line_command.hpp"
 #include "cli/run_commands.hpp"
+#include "cli/study_command.hpp"
 #include "cli/sweep_command.hpp"
 #include "cli/tune_delay.hpp"
 #include "core/output_file.hpp"
@@ -77,6 +78,7 @@ int main(int argc, char** argv) {
   ncsim::cli::SweepCommand sweep_command(app);           // likewise
   ncsim::cli::TuneDelayCommand tune_delay_command(app);  // likewise
   ncsim::cli::LineCommand line_command(app);             // likewise
+  ncsim::cli::StudyCommand study_command(app);           // likewise
 
   // A first word that is no option and no subcommand is named (CLI11 would only say that a
   // subcommand is required).
@@ -110,6 +112,7 @@ int main(int argc, char** argv) {
       if (const auto status = sweep_command.dispatch(std::cout, std::cerr)) return *status;
       if (const auto status = tune_delay_command.dispatch(std::cout, std::cerr)) return *status;
       if (const auto status = line_command.dispatch(std::cout, std::cerr)) return *status;
+      if (const auto status = study_command.dispatch(std::cout, std::cerr)) return *status;
       if (trace_cmd->parsed()) return ncsim::cli::run_trace(trace, std::cout, std::cerr);
       return ncsim::cli::run_check(check, std::cout, std::cerr);
     };

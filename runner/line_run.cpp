@@ -83,8 +83,8 @@ RunSpec channel_spec(const scenario::LineFile& line, const scenario::LineChannel
   rs.program.max_time = spec.max_time;
   rs.cycle_us = spec.cycle_us ? spec.cycle_us : line.cycle_us;
   rs.audit = spec.audit;
-  rs.build_world = false;  // the line's belt (LineWorld) gives the channel its Port
   rs.conv_vel = spec.conv_vel;
+  rs.build_world = false;  // the line's belt (LineWorld) gives the channel its Port
   return rs;
 }
 
@@ -172,6 +172,7 @@ LineLoadResult load_line_run(const LineSpec& spec) {
     r.messages = err.str();
     return r;
   }
+  if (spec.adjust) spec.adjust(*file);
   std::unique_ptr<LineRun> line(new LineRun);
   line->file_ = std::move(*file);
   // line sweep: the belt's velocity set before anything is built from it.

@@ -47,12 +47,15 @@ struct LineSpec {
   std::optional<std::uint64_t> cycle_us;  ///< --cycle-us over the line's cycle_us
   std::optional<double> max_time;         ///< --max-time S for every channel
   bool audit = false;                     ///< every channel's setpoints audited
-  /// `line sweep`: [mm/s] replaces every channel's #SYNC IN CONV_VEL (RunSpec::conv_vel)
+  /// `line sweep`, a study: [mm/s] replaces every channel's #SYNC IN CONV_VEL (RunSpec::conv_vel)
   std::optional<double> conv_vel;
   /// `line sweep`: the line's [conveyor] changed before the belt is built (may be empty)
   std::function<void(scenario::Conveyor&)> adjust_conveyor;
   /// `line sweep`: the belt wrapped once it is built (may be empty; RunSpec::wrap)
   WrapPort wrap;
+  /// Changes the validated line file before its channels load (a study's varied belt,
+  /// docs/study.md; may be empty).
+  std::function<void(scenario::LineFile&)> adjust;
 };
 
 /// One channel's figures after the run.

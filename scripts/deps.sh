@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages ncsim needs to build and test (python3-numpy: the trajectory
-# checker, tests/checker), if any is missing, then the
+# checker, tests/checker; munge, slurmctld, slurmd, slurm-client: the single-node Slurm that
+# tests/cli/study_slurm_test.sh starts and stops itself, docs/study.md), if any is missing, then the
 # report's charting library (report/web: `npm ci` from the pinned package-lock.json, when
 # node_modules does not match it). Idempotent; needs root only when a package must be installed.
 set -euo pipefail
@@ -9,6 +10,7 @@ packages=(
   cmake ninja-build g++ clang libclang-rt-14-dev clang-format
   tao-pegtl-dev libcli11-dev doctest-dev libeigen3-dev libbenchmark-dev
   libtomlplusplus-dev libglpk-dev chromium python3 python3-numpy
+  munge slurmctld slurmd slurm-client
 )
 missing=()
 for p in "${packages[@]}"; do

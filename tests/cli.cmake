@@ -71,3 +71,11 @@ foreach(line IN LISTS ncsim_lines)
            COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/line_example.sh $<TARGET_FILE:ncsim>
                    ${folder})
 endforeach()
+# --- issue 37 step 5: studies (docs/study.md): local runs identical whatever the threads and
+# the order, positioned errors; and the same study through a single-node Slurm the test brings
+# up itself (munge, slurmctld, slurmd), byte for byte the local table.
+add_test(NAME cli_study_test
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/study_test.sh $<TARGET_FILE:ncsim>)
+add_test(NAME cli_study_slurm_test
+         COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/cli/study_slurm_test.sh $<TARGET_FILE:ncsim>)
+set_tests_properties(cli_study_slurm_test PROPERTIES TIMEOUT 600 SKIP_RETURN_CODE 77)
