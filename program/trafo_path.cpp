@@ -64,19 +64,19 @@ void TrafoPath::check_workspace(const planner::Move& move, std::uint32_t line) c
     for (std::size_t a = 0; a < slots.size(); ++a)
       if (slots[a] >= 0) p[a] = x[static_cast<std::size_t>(slots[a])];
     const machines::KinAxesResult r = trafo_->kinematics->inverse_axes(p);
-    const std::string where =
-        "TCP X" + core::human(p[0]) + " Y" + core::human(p[1]) + " Z" + core::human(p[2]);
+    // Built only for a message: the check runs on every sample of every transformed block.
+    const auto where = [&p, this] {
+      return "TCP X" + core::human(p[0]) + " Y" + core::human(p[1]) + " Z" + core::human(p[2]) +
+             " under #TRAFO ON (kinematic " + std::to_string(trafo_->kin_id) + "): ";
+    };
     if (!r.ok()) {
       errors_.raise(line, r.error->id,
-                    std::string(k == n ? "target " : "path point ") + where +
-                        " under #TRAFO ON (kinematic " + std::to_string(trafo_->kin_id) +
-                        "): " + r.error->message);
+                    std::string(k == n ? "target " : "path point ") + where() + r.error->message);
     }
     for (std::size_t a = 0; i > 1 && a < trafo_->kinematics->axis_count(); ++a) {
       if (std::abs(r.value[a] - q_before[a]) <= kJointJump) continue;
       errors_.raise(line, "NC3202",
-                    "path point " + where + " under #TRAFO ON (kinematic " +
-                        std::to_string(trafo_->kin_id) + "): joint " + std::to_string(a + 1) +
+                    "path point " + where() + "joint " + std::to_string(a + 1) +
                         " would turn across its +-180 deg range end (" + core::human(q_before[a]) +
                         " -> " + core::human(r.value[a]) + " deg)");
     }
