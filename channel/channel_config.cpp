@@ -15,7 +15,7 @@ ChannelConfig channel_config(const machines::Machine& machine, double t_cycle) {
   c.path = program::machine_config(machine, t_cycle);
   // With a kinematic, transformed Moves are limited by the joints (program/trafo.hpp).
   if (auto trafo = program::machine_trafo(machine, c.path)) {
-    c.forward = program::forward_map(trafo->kinematics, trafo->xyz);
+    c.forward = program::forward_map(trafo->kinematics, trafo->slots);
     c.path.joints = std::move(trafo->limits);
   }
   for (const std::uint8_t i : program::interpolated_axes(machine)) {

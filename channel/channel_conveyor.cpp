@@ -92,7 +92,7 @@ EventOutcome ConveyorTracking::on_sync_in(const interp::SyncIn& command,
     if (sync_tag_ != e.tag) {  // first dispatch: from now the path waits for the measured value
       sync_tag_ = e.tag;
       measure_waited_ = 0;
-      if (auto err = sync_->sync_in(command))
+      if (auto err = sync_->sync_in(command, command.kinematics))
         return EventContext(e, ipo_, error_).fail(err->id.c_str(), std::move(err->message));
       return EventOutcome::blocking;
     }

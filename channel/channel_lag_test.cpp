@@ -85,7 +85,7 @@ TEST_CASE("master_display under #TRAFO ON: synchro_lag is the actual TCP's again
   channel::ChannelConfig cfg = channel::channel_config(m, 0.001);
   const auto trafo = program::machine_trafo(m, cfg.path);
   REQUIRE(trafo);
-  const planner::JointMap forward = program::forward_map(trafo->kinematics, trafo->xyz);
+  const planner::JointMap forward = program::forward_map(trafo->kinematics, trafo->slots);
   tracking::test::FakePort port(100.0);
   port.latch_at_ = 100;
   channel::test::ConveyorRig rig(kPick, m, std::move(cfg), &port);

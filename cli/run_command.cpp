@@ -185,7 +185,7 @@ std::unique_ptr<report::Recorder> make_recorder(const runner::Run& run,
   // On a kinematic machine the MCS toolpath before #TRAFO ON is the joints' TCP.
   if (cfg.path.joints) {
     if (const auto trafo = program::machine_trafo(run.loaded().machine, cfg.path))
-      recorder->set_forward(program::forward_map(trafo->kinematics, trafo->xyz));
+      recorder->set_forward(program::forward_map(trafo->kinematics, trafo->slots));
   }
   return recorder;
 }

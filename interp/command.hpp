@@ -244,6 +244,7 @@ struct SyncIn {
   double conv_vel = 0.0;      ///< expected conveyor velocity [mm/s] (> 0)
   std::optional<double> feed_cont;  ///< FEED_CONT relative velocity [mm/s] (program: mm/min)
   bool feed_cont_auto = false;
+  bool kinematics = false;  ///< given under #TRAFO ON (the axes are joints)
 };
 
 struct SyncOut {

@@ -2,7 +2,10 @@
 // interpreter_test.cpp / eval_test.cpp (audit table: docs/interp.md "Test audit").
 #include <doctest/doctest.h>
 
+#include <cstdio>
+
 #include "interp/test_support.hpp"
+#include "machines/kinematics.hpp"
 
 namespace ncsim::interp {
 namespace {
@@ -535,6 +538,59 @@ TEST_CASE("SIZEOF of a number is NC4003; a one-argument function given two is NC
 
 TEST_CASE("CONV_VEL above the conveying axis' maximum velocity is error 50587") {
   CHECK(run("%t\n#SYNC IN [CONV_VEL=6000000]\nM30\n", "laser_portal").error_id == "50587");
+}
+
+TEST_CASE("#TRAFO ON / OFF with kinematic 45 re-bases all six axes X, Y, Z, A, B, C") {
+  const auto r =
+      run("%t\n#KIN ID[45]\nG01 X0 Y0 Z0 A0 B90 C0 F20000\n#TRAFO ON\nG01 X700 C30 F1000\n"
+          "#TRAFO OFF\nG01 X0 F1000\nM30\n",
+          "arm6_belt");
+  REQUIRE(r.error_id.empty());
+  std::string on, off;
+  for (const std::string& l : r.lines) {
+    if (starts_with(l, "5: G01")) on = l;
+    if (starts_with(l, "7: G01")) off = l;
+  }
+  INFO(on);
+  INFO(off);
+  // ON: the TCP of the start pose: wrist centre (a1 + d4, 0, d1 + a2 + a3) = (790, 0, 1170),
+  // the tool (d6 + tool = 250 mm) pointing down (A = B = 0); X and C as programmed.
+  CHECK(on.find("X=700.0000 Y=0.0000 Z=920.0000 A=0.0000 B=0.0000 C=30.0000") != std::string::npos);
+  // OFF: the joints of that TCP (X programmed again, the others as re-based).
+  const auto kin =
+      machines::make_kinematics(45, test::machine("arm6_belt").channel.trafos[0].param);
+  REQUIRE(kin.kinematics);
+  const machines::KinAxesResult q = kin.kinematics->inverse_axes({700, 0, 920, 0, 0, 30});
+  REQUIRE(q.ok());
+  char want[160];
+  std::snprintf(want, sizeof want, "Y=%.4f Z=%.4f A=%.4f B=%.4f C=%.4f", q.value[1], q.value[2],
+                q.value[3], q.value[4], q.value[5]);
+  CHECK(off.find(want) != std::string::npos);
+  // Joint 6's axis points down: a turn of +30 deg about +Z is -30 deg about it.
+  CHECK(q.value[5] == doctest::Approx(-30.0));
+}
+
+TEST_CASE("V.G.KIN[id].PARAM[k] reads the channel list's trafo parameter; a write is NC1002") {
+  // arm6_belt: trafo[0].id 45, param[5] 6000000 (the upper arm, 0.1 um), param[10] 0.
+  const auto r =
+      run("%t\nP1 = V.G.KIN[45].PARAM[5]\n$IF ABS[P1 - 6000000] > 0.001\nP2 = V.G.NONE\n$ENDIF\n"
+          "P3 = V.G.KIN[45].PARAM[10]\nM30\n",
+          "arm6_belt");
+  CHECK(r.error_id.empty());
+  CHECK(run("%t\nV.G.KIN[45].PARAM[5] = 1\nM30\n", "arm6_belt").error_id == "NC1002");
+  // Beyond the configured ids, or on a machine without a kinematic: no such element.
+  CHECK_FALSE(run("%t\nP1 = V.G.KIN[46].PARAM[5]\nM30\n", "arm6_belt").error_id.empty());
+  CHECK(run("%t\nP1 = V.G.KIN[45].PARAM[5]\nM30\n").error_id == "NC4011");
+}
+
+TEST_CASE("under #TRAFO ON CONV_VEL is not compared with joint X's V (no 50587)") {
+  // arm6_belt's joint 1 (axis X) turns at most 180 deg/s; the belt runs at 200 mm/s.
+  const char* arm =
+      "%t\n#KIN ID[45]\nG01 X0 Y0 Z0 A0 B90 C0 F20000\n#TRAFO ON\n"
+      "#SYNC IN [CONVEYOR=S1, CONV_VEL=12000]\nM30\n";
+  CHECK(run(arm, "arm6_belt").error_id.empty());
+  // Without the transform X is the conveying axis itself: the same belt is 50587.
+  CHECK(run("%t\n#SYNC IN [CONVEYOR=S1, CONV_VEL=12000]\nM30\n", "arm6_belt").error_id == "50587");
 }
 
 TEST_CASE("#FLUSH CONTINUE and #WAIT INDP with an axis list become commands") {

@@ -13,6 +13,15 @@
 
 namespace ncsim::interp {
 
+Frames::Frames(const machines::Machine& machine, const machines::CsStack& cs,
+               const ModalSnapshot& modal, const Xyz& xyz)
+    : machine_(machine), cs_(cs), modal_(modal), xyz_(xyz) {
+  for (std::size_t i = 0; i < machine.axes.size() && i < kMaxAxes; ++i)
+    for (std::size_t k = 0; k < 3; ++k)
+      if (machine.axes[i].name == machines::kKinAxisNames[3 + k])
+        abc_[k] = static_cast<std::uint8_t>(i);
+}
+
 CoordFrame Frames::frame() const {
   CoordFrame f;
   f.cs_depth = static_cast<std::uint8_t>(cs_.active_count());
@@ -58,16 +67,23 @@ std::optional<machines::KinError> Frames::rebase_trafo(bool on, std::optional<in
     if (built.error) return built.error;
     kinematic_ = std::move(built.kinematics);
   }
-  // The #CS chain (if any) stays; the transform acts below it, on its parent coordinates.
+  // The #CS chain (if any) stays; the transform acts below it, on its parent coordinates (the
+  // position; A, B, C of a 6-axis kinematic are MCS angles, docs/machines.md "Kinematic 45").
   const machines::Frame f = cs_.active_frame();
   const Eigen::Vector3d parent = f.apply(xyz_of(position));
-  const machines::KinResult r = on ? kinematic_->forward(parent) : kinematic_->inverse(parent);
+  machines::KinAxes in{parent.x(), parent.y(), parent.z(), 0.0, 0.0, 0.0};
+  for (std::size_t k = 0; k < 3; ++k)
+    if (abc_[k]) in[3 + k] = position[*abc_[k]];
+  const machines::KinAxesResult r =
+      on ? kinematic_->forward_axes(in) : kinematic_->inverse_axes(in);
   if (!r.ok()) {
     return machines::KinError{
         r.error->id, std::string(on ? "#TRAFO ON" : "#TRAFO OFF") +
                          ": the current position cannot be transformed: " + r.error->message};
   }
-  set_xyz(position, f.inverse().apply(r.value));
+  set_xyz(position, f.inverse().apply(Eigen::Vector3d(r.value[0], r.value[1], r.value[2])));
+  for (std::size_t k = 0; k < 3 && kinematic_->axis_count() > 3; ++k)
+    if (abc_[k]) position[*abc_[k]] = r.value[3 + k];
   return std::nullopt;
 }
 

@@ -228,7 +228,10 @@ bool HashCommands::hash_sync_in(const ast::Block& b, const ast::HashCommand& h) 
   s.conveyor = *conveyor;
   s.conv_vel =
       ip_.options.conv_vel ? *ip_.options.conv_vel : *v * *factor;  // sweep --conv-vel follow
-  if (ip_.xyz[0] && !ip_.machine.channel.conveyor->x_virtual) {
+  // Under #TRAFO ON the axis X is a joint: its V [deg/s] is no velocity in the conveying
+  // direction (decision, docs/conveyor.md "50587"); the belt's share of the joints is checked
+  // per block at run time (NC6211, program/trafo_path.cpp).
+  if (ip_.xyz[0] && !ip_.machine.channel.conveyor->x_virtual && !ip_.modal.kinematics_on) {
     const double v_max = ip_.machine.axes[*ip_.xyz[0]].dynamics.v_max;
     if (v_max > 0.0 && s.conv_vel > v_max) {
       return ip_.fail(at, "50587",
@@ -240,6 +243,7 @@ bool HashCommands::hash_sync_in(const ast::Block& b, const ast::HashCommand& h) 
   }
   if (!feed_cont(b, items, s.feed_cont)) return false;
   s.feed_cont_auto = items.find("FEED_CONT_AUTO") != nullptr;
+  s.kinematics = ip_.modal.kinematics_on;
   s.latch = ip_.latch;  // answered by the barrier before this block
   ip_.emit(ip_.line, s);
   ip_.blocks_without_motion = 0;

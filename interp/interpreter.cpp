@@ -40,8 +40,30 @@ Interpreter::Impl::Impl(const core::SourceFile& file, const machines::Machine& m
     v.values.assign(1, 0.0);
     vars.provide_global("SIGNAL_READ", std::move(v));
   }
+  provide_kinematic_params();
   vars.create_cycle_param_on_read(machine.channel.create_cycle_param_on_read);  // P-CHAN-00463
   if (machine.channel.default_feed > 0.0) feed = machine.channel.default_feed;  // P-CHAN-00099
+}
+
+void Interpreter::Impl::provide_kinematic_params() {
+  // V.G.KIN[id].PARAM[k] (isg-language.md §5.9, tf5290): trafo[j].param[k] (P-CHAN-00263) of
+  // the kinematic `id` as the channel list writes it (0.1 um / 0.0001 deg); ids up to the
+  // largest configured one, an id not configured reads 0. Read only: a write is NC1002
+  // (Variables::write; docs/machines.md "Kinematic 45").
+  int max_id = -1;
+  for (const machines::TrafoParams& t : machine.channel.trafos)
+    if (t.id >= 0 && t.id < kMaxKinVarId) max_id = std::max(max_id, t.id);
+  if (max_id < 0) return;
+  const std::size_t n = machines::TrafoParams{}.param.size();
+  Variable v;
+  v.dims = {static_cast<std::uint32_t>(max_id + 1), static_cast<std::uint32_t>(n)};
+  v.values.assign(static_cast<std::size_t>(max_id + 1) * n, 0.0);
+  for (const machines::TrafoParams& t : machine.channel.trafos) {
+    if (t.id < 0 || t.id > max_id) continue;
+    for (std::size_t k = 0; k < n; ++k)
+      v.values[static_cast<std::size_t>(t.id) * n + k] = t.param[k] * 1e4;  // mm, deg -> list
+  }
+  vars.provide_global("KIN.PARAM", std::move(v));
 }
 
 bool Interpreter::Impl::fail(core::SourceLoc loc, std::string id, std::string message) {

@@ -72,6 +72,10 @@ inline std::string longest_time_text(std::string_view what, double seconds) {
 
 /// The machine index of the axis named by each one-byte name (ASCII), kNoAxisIndex for none.
 inline constexpr std::uint8_t kNoAxisIndex = 0xFF;
+
+/// V.G.KIN[id].PARAM[k] covers the kinematic ids below this (P-TOOL-00011's ids are UNS16;
+/// the kernel's own ids are below 1000: 500..999 TcCOM, TF5240).
+inline constexpr int kMaxKinVarId = 1000;
 using AxisByChar = std::array<std::uint8_t, 128>;
 /// Interpreter::Impl::axis_index() of every one-byte name, once per machine.
 AxisByChar axis_by_char(const machines::Machine& machine);
@@ -134,6 +138,8 @@ struct Interpreter::Impl {
                               const std::array<std::optional<double>, 3>& ijk,
                               std::optional<double> radius);
   std::optional<std::uint8_t> axis_index(std::string_view name) const;
+  /// V.G.KIN[id].PARAM[k] from the channel list's trafo[] (read only).
+  void provide_kinematic_params();
   ModalSnapshot snapshot() const;
 
   // run-time state the seam (seam.hpp) keeps for the whole decoder

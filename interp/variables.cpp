@@ -264,6 +264,12 @@ bool Variables::write(const VarRef& ref, double value, VarError& error) {
     array[k] = value;
     return true;
   }
+  if (ref.cls == VarClass::v_g && ref.name == "KIN.PARAM") {
+    error = {"NC1002", "not supported: writing " + describe(ref) +
+                           ": ncsim builds the kinematic from the channel list's "
+                           "trafo[j].param[k] (P-CHAN-00263); set it there"};
+    return false;
+  }
   Variable* v = find(ref);
   if (v == nullptr) {
     if (ref.cls == VarClass::v_l || ref.cls == VarClass::v_other || ref.cls == VarClass::none ||

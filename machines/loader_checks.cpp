@@ -412,6 +412,17 @@ void check_channel_refs(Machine& m, const ListValues& ch, Reporter& r) {
     if (built.error) {
       r.error(file, ch.loc(id_key), built.error->id.c_str(),
               param_ref(id_key, ListKind::channel) + ": " + built.error->message);
+      continue;
+    }
+    // Its joints are the channel's axes named by its slots (X, Y, Z [, A, B, C]).
+    for (std::size_t k = 0; k < built.kinematics->axis_count(); ++k) {
+      if (m.find_axis(kKinAxisNames[k]) != nullptr) continue;
+      r.error(
+          file, ch.loc(id_key), "NC3006",
+          param_ref(id_key, ListKind::channel) + " = " + std::to_string(t.id) + ": kinematic " +
+              std::to_string(kin_id) + " drives " + std::to_string(built.kinematics->axis_count()) +
+              " joints, the axes named X, Y, Z, A, B, C by their slots; the channel has no axis " +
+              kKinAxisNames[k]);
     }
   }
 }

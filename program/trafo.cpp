@@ -11,25 +11,25 @@ namespace ncsim::program {
 
 namespace {
 
-// Maps X, Y, Z (at `xyz`) of an axis vector through `inverse` ? the kinematic's inverse : its
-// forward transform; every other axis passes unchanged.
-planner::JointMap xyz_map(std::shared_ptr<const machines::Kinematics> kinematics,
-                          std::array<int, 3> xyz, bool inverse) {
-  return [kin = std::move(kinematics), xyz, inverse](const planner::AxisVec& x,
-                                                     planner::AxisVec& q) noexcept {
-    Eigen::Vector3d p = Eigen::Vector3d::Zero();
-    for (std::size_t k = 0; k < 3; ++k)
-      if (xyz[k] >= 0) p[static_cast<Eigen::Index>(k)] = x[static_cast<std::size_t>(xyz[k])];
-    machines::KinResult r;
+// Maps the kinematic's slots (at `slots`) of an axis vector through `inverse` ? the kinematic's
+// inverse : its forward transform; every other axis passes unchanged.
+planner::JointMap slot_map(std::shared_ptr<const machines::Kinematics> kinematics,
+                           std::array<int, machines::kKinAxes> slots, bool inverse) {
+  return [kin = std::move(kinematics), slots, inverse](const planner::AxisVec& x,
+                                                       planner::AxisVec& q) noexcept {
+    machines::KinAxes p{};
+    for (std::size_t k = 0; k < slots.size(); ++k)
+      if (slots[k] >= 0) p[k] = x[static_cast<std::size_t>(slots[k])];
+    machines::KinAxesResult r;
     try {
-      r = inverse ? kin->inverse(p) : kin->forward(p);
+      r = inverse ? kin->inverse_axes(p) : kin->forward_axes(p);
     } catch (...) {
       return false;
     }
     if (!r.ok()) return false;
     q = x;
-    for (std::size_t k = 0; k < 3; ++k)
-      if (xyz[k] >= 0) q[static_cast<std::size_t>(xyz[k])] = r.value[static_cast<Eigen::Index>(k)];
+    for (std::size_t k = 0; k < slots.size(); ++k)
+      if (slots[k] >= 0) q[static_cast<std::size_t>(slots[k])] = r.value[k];
     return true;
   };
 }
@@ -37,13 +37,13 @@ planner::JointMap xyz_map(std::shared_ptr<const machines::Kinematics> kinematics
 }  // namespace
 
 planner::JointMap joint_map(std::shared_ptr<const machines::Kinematics> kinematics,
-                            std::array<int, 3> xyz) {
-  return xyz_map(std::move(kinematics), xyz, true);
+                            std::array<int, machines::kKinAxes> slots) {
+  return slot_map(std::move(kinematics), slots, true);
 }
 
 planner::JointMap forward_map(std::shared_ptr<const machines::Kinematics> kinematics,
-                              std::array<int, 3> xyz) {
-  return xyz_map(std::move(kinematics), xyz, false);
+                              std::array<int, machines::kKinAxes> slots) {
+  return slot_map(std::move(kinematics), slots, false);
 }
 
 std::optional<MachineTrafo> machine_trafo(const machines::Machine& machine,
@@ -56,14 +56,16 @@ std::optional<MachineTrafo> machine_trafo(const machines::Machine& machine,
   m.kin_id = t.id;
   m.kinematics = std::move(built.kinematics);
   const std::vector<std::uint8_t> axes = interpolated_axes(machine);
-  const char* names[3] = {"X", "Y", "Z"};
-  for (std::size_t k = 0; k < 3; ++k)
+  for (std::size_t k = 0; k < m.kinematics->axis_count(); ++k)
     for (std::size_t s = 0; s < axes.size(); ++s)
-      if (machine.axes[axes[s]].name == names[k]) m.xyz[k] = static_cast<int>(s);
-  m.limits.inverse = joint_map(m.kinematics, m.xyz);
+      if (machine.axes[axes[s]].name == machines::kKinAxisNames[k])
+        m.slots[k] = static_cast<int>(s);
+  for (std::size_t k = 0; k < 3; ++k)
+    m.xyz[k] = m.slots[k];
+  m.limits.inverse = joint_map(m.kinematics, m.slots);
   m.limits.joints = config.axes;  // the joints are the machine axes, with their own limits
   m.limits.cartesian = config.axes;
-  for (const int s : m.xyz) {
+  for (const int s : m.slots) {
     if (s < 0) continue;
     planner::AxisLimits& c = m.limits.cartesian[static_cast<std::size_t>(s)];
     c.v_max = c.v_reference = c.v_rapid = kCartesianUnlimitedV;

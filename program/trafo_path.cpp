@@ -14,6 +14,14 @@
 
 namespace ncsim::program {
 
+namespace {
+
+// A joint that moves more than this between two path samples (at most kJointSpacing apart)
+// jumped: the inverse crossed its (-180, 180] range end [deg].
+constexpr double kJointJump = 90.0;
+
+}  // namespace
+
 bool TrafoPath::select(const interp::Kinematics& k, std::uint32_t line, ipo::Item& out) {
   if (k.trafo_on == trafo_on_) return false;  // #KIN ID alone, or no change
   if (k.trafo_on) {
@@ -43,23 +51,36 @@ void TrafoPath::check_workspace(const planner::Move& move, std::uint32_t line) c
   const int n = static_cast<int>(std::fmin(
       std::fmax(std::ceil(length / planner::kJointSpacing), double{planner::kJointMinSamples}),
       double{planner::kJointMaxSamples}));
-  const std::array<int, 3>& xyz = trafo_->xyz;
-  // The target first (its error names the programmed point), then the path towards it.
+  const std::array<int, machines::kKinAxes>& slots = trafo_->slots;
+  // The target first (its error names the programmed point), then the path towards it, whose
+  // joints must move continuously: a rotary joint's range ends at +-180 deg (the inverse gives
+  // (-180, 180]), so a jump between two samples is the path turning a joint across it.
+  machines::KinAxes q_before{};
   for (int i = 0; i <= n; ++i) {
     const int k = i == 0 ? n : i - 1;
     const double s = length * static_cast<double>(k) / n;
     const planner::AxisVec x = k == n ? move.end : seg.point(s);
-    Eigen::Vector3d p = Eigen::Vector3d::Zero();
-    for (std::size_t a = 0; a < 3; ++a)
-      if (xyz[a] >= 0) p[static_cast<Eigen::Index>(a)] = x[static_cast<std::size_t>(xyz[a])];
-    const machines::KinResult r = trafo_->kinematics->inverse(p);
-    if (r.ok()) continue;
-    const std::string where =
-        "TCP X" + core::human(p[0]) + " Y" + core::human(p[1]) + " Z" + core::human(p[2]);
-    errors_.raise(line, r.error->id,
-                  std::string(k == n ? "target " : "path point ") + where +
-                      " under #TRAFO ON (kinematic " + std::to_string(trafo_->kin_id) +
-                      "): " + r.error->message);
+    machines::KinAxes p{};
+    for (std::size_t a = 0; a < slots.size(); ++a)
+      if (slots[a] >= 0) p[a] = x[static_cast<std::size_t>(slots[a])];
+    const machines::KinAxesResult r = trafo_->kinematics->inverse_axes(p);
+    // Built only for a message: the check runs on every sample of every transformed block.
+    const auto where = [&p, this] {
+      return "TCP X" + core::human(p[0]) + " Y" + core::human(p[1]) + " Z" + core::human(p[2]) +
+             " under #TRAFO ON (kinematic " + std::to_string(trafo_->kin_id) + "): ";
+    };
+    if (!r.ok()) {
+      errors_.raise(line, r.error->id,
+                    std::string(k == n ? "target " : "path point ") + where() + r.error->message);
+    }
+    for (std::size_t a = 0; i > 1 && a < trafo_->kinematics->axis_count(); ++a) {
+      if (std::abs(r.value[a] - q_before[a]) <= kJointJump) continue;
+      errors_.raise(line, "NC3202",
+                    "path point " + where() + "joint " + std::to_string(a + 1) +
+                        " would turn across its +-180 deg range end (" + core::human(q_before[a]) +
+                        " -> " + core::human(r.value[a]) + " deg)");
+    }
+    if (i > 0) q_before = r.value;
   }
 }
 

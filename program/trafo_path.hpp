@@ -12,9 +12,11 @@
 // - only the machine's first kinematic (trafo[0]) is wired into the channel: #TRAFO ON with
 //   another #KIN ID is NC6001 `not supported`;
 // - a transformed Move is sampled along its path (the planner's spacing, planner::kJointSpacing)
-//   through the inverse transform: a point outside the workspace or beyond a drive limit is the
-//   kinematic's error (NC3201 / NC3202, machines/delta_kinematics.hpp) at the block's line, so
-//   the program stops at the last good block with a positioned diagnostic;
+//   through the inverse transform: a point outside the workspace, beyond a drive limit or
+//   singular is the kinematic's error (NC3201 / NC3202 / NC3204, machines/delta_kinematics.hpp,
+//   machines/arm_kinematics.hpp) at the block's line, and so is a joint jumping across its
+//   +-180 deg range end between two samples (NC3202), so the program stops at the last good
+//   block with a positioned diagnostic;
 // - a transformed Move in PCS1 gets the belt's share of the joints (reserve_belt_share), and so
 //   does the tolerance ball between two such blocks (reserve_ball_share; program/ball_hold).
 // Inputs: #KIN ID / #TRAFO commands, #SYNC IN's CONV_VEL, transformed Moves.

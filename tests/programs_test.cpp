@@ -27,13 +27,23 @@ namespace {
 // static_saw_encoder: the static synchro_lag listing, portal_3x_override: override above 100 %,
 // portal_3x_slow: issue 12's 200-move benchmark limits, portal_3x_tools: a tool list for tool
 // radius compensation, docs/trc.md; dispenser_3x, mill_3x, laser_flatbed: programs/real).
-constexpr std::array<std::string_view, 16> kMachines = {
-    "laser_portal",       "delta_picker",        "static_saw",
-    "portal_3x",          "laser_queue",         "laser_portal_encoder",
-    "delta_picker_belt",  "laser_portal_simple", "laser_portal_workspace",
-    "static_saw_encoder", "portal_3x_override",  "portal_3x_slow",
-    "portal_3x_tools",    "dispenser_3x",        "mill_3x",
-    "laser_flatbed"};
+constexpr std::array<std::string_view, 17> kMachines = {"laser_portal",
+                                                        "delta_picker",
+                                                        "static_saw",
+                                                        "portal_3x",
+                                                        "laser_queue",
+                                                        "laser_portal_encoder",
+                                                        "delta_picker_belt",
+                                                        "laser_portal_simple",
+                                                        "laser_portal_workspace",
+                                                        "static_saw_encoder",
+                                                        "portal_3x_override",
+                                                        "portal_3x_slow",
+                                                        "portal_3x_tools",
+                                                        "dispenser_3x",
+                                                        "mill_3x",
+                                                        "laser_flatbed",
+                                                        "arm6_belt"};
 
 // The seed's listings (TF5264, seed 004) and the reference's section 10 example: these must
 // never silently disappear from programs/.

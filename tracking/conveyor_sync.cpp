@@ -46,8 +46,8 @@ ConveyorSync::ConveyorSync(const machines::ConveyorSyncChannel& channel,
     hold_.emplace(*h);
 }
 
-std::optional<SyncError> ConveyorSync::sync_in(const interp::SyncIn& command) {
-  for (std::size_t i = 0; i < n_; ++i) {
+std::optional<SyncError> ConveyorSync::sync_in(const interp::SyncIn& command, bool joints) {
+  for (std::size_t i = 0; i < n_ && !joints; ++i) {
     planner::AxisLimits l;
     l.v_max = axes_[i].dynamics.v_max;
     if (auto e = check_conv_vel(l, share_[i], command.conv_vel, axes_[i].name)) return e;

@@ -56,8 +56,10 @@ class ConveyorSync {
   conveyor::Port* port() const noexcept { return port_; }
 
   /// #SYNC IN: from now the path waits for the measured value. Error 50587 when CONV_VEL puts
-  /// more than an axis's V on it (a rotated T0; X is the interpreter's check).
-  std::optional<SyncError> sync_in(const interp::SyncIn& command);
+  /// more than an axis's V on it (a rotated T0; X is the interpreter's check); not with
+  /// `joints` (#TRAFO ON: the axes are joints, their V no velocity along the belt; the belt's
+  /// share of them is NC6211 per block, docs/conveyor.md "50587").
+  std::optional<SyncError> sync_in(const interp::SyncIn& command, bool joints = false);
   /// #SYNC OUT: back to MCS. The axes keep moving with the belt until the next motion, which
   /// leaves from that moving state (start_departure). Before the catch-up ran (no motion
   /// between #SYNC IN and #SYNC OUT) nothing moved with the belt: straight back to off.

@@ -241,6 +241,9 @@ TEST_CASE("50587 for a rotated T0 putting CONV_VEL on an axis above its V") {
   REQUIRE(e);
   CHECK(e->id == "50587");
   CHECK(e->message.find("axis Y") != std::string::npos);
+  // Under #TRAFO ON the axes are joints: their V is no velocity along the belt.
+  ConveyorSync joints(c, ax, kT);
+  CHECK_FALSE(joints.sync_in(sync_in(250.0), true));
 }
 
 TEST_CASE("the Port's errors stop the channel with the Port's own id") {
