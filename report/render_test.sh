@@ -92,7 +92,7 @@ for program in programs/isg_reference_example/isg_reference_example.nc tests/cli
 done
 # The bundled production lines (docs/report.md "The line page"): one page per line, every
 # channel's charts, the workpieces' timeline (one mark per workpiece) and the channel lanes.
-for folder in programs/lines/two_pickers programs/lines/laser_sorter; do
+for folder in programs/lines/two_pickers programs/lines/laser_sorter programs/lines/arm_picker; do
   example=line_$(basename "$folder")
   page=$work/$example.html
   "$ncsim" line report "$src/$folder/line.toml" -o "$page" >/dev/null 2>&1 || {
