@@ -90,6 +90,9 @@ class LineWorld::StationPort final : public Port {
     });
   }
   bool pending() const noexcept { return !pending_.empty(); }
+  // Armed while nothing can reach the sensor any more (the last workpiece taken upstream, or
+  // missed): NC9003 now, not a wait until ncsim's time limit.
+  void check_reachable() noexcept;
   const StationSpec& spec() const noexcept { return spec_; }
   std::uint64_t taken = 0;
 
@@ -138,13 +141,16 @@ void LineWorld::StationPort::arm_probe(const machines::ProbeArm& c) noexcept {
   }
   armed_ = ProbeArming{c.axis, c.channel, rising};
   if (spec_.method == MeasuringMethod::plc_queue) present();
-  if (armed_ && !line_.more_for(k_)) {
-    raise(kNoWorkpieceId, "MC_TouchProbe armed on " + spec_.axis_name + " of channel " +
-                              std::to_string(spec_.channel) +
-                              ", but no workpiece is left to reach its sensor (the line's "
-                              "[conveyor] stream is through, none on the belt before it): the "
-                              "measured value would never come");
-  }
+  check_reachable();
+}
+
+void LineWorld::StationPort::check_reachable() noexcept {
+  if (!armed_ || line_.more_for(k_)) return;
+  raise(kNoWorkpieceId, "MC_TouchProbe armed on " + spec_.axis_name + " of channel " +
+                            std::to_string(spec_.channel) +
+                            ", but no workpiece is left to reach its sensor (the line's "
+                            "[conveyor] stream is through, none free or held upstream of it): "
+                            "the measured value would never come");
 }
 
 void LineWorld::StationPort::present() noexcept {
@@ -313,6 +319,8 @@ void LineWorld::step_once(double t, bool arrivals) noexcept {
   for (const Edge& e : sensor_.cycle(t0, s0, t, s1))
     if (arrivals && e.front && (e.rising || !camera_)) arrive(e);
   sense(t0, sign_ * s0.p, t, sign_ * s1.p);
+  for (const auto& s : stations_)
+    s->check_reachable();
 }
 
 double LineWorld::drain(double t, double dt, double t_max) noexcept {

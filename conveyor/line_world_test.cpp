@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 
 #include "conveyor/test_world.hpp"
 
@@ -115,6 +116,32 @@ TEST_CASE("line world: a workpiece let go passes on; free past the belt's end it
   CHECK_FALSE(w->port(0).error());
 }
 
+TEST_CASE("line world: an armed probe the last workpiece can no longer reach ends with NC9003") {
+  // One workpiece; channel 2 (downstream) arms while it is still upstream (LINE_MORE 1),
+  // channel 1 measures and takes it: nothing can reach channel 2's sensor any more. Before,
+  // channel 2 waited until ncsim's 600 s limit (NC9054).
+  const scenario::Conveyor c = stream(300.0, {100.0});
+  auto w = line(c, {0.0, 600.0}, 900.0);
+  w->port(0).arm_probe(probe());
+  w->port(1).arm_probe(probe());
+  REQUIRE_FALSE(w->port(1).error());
+  int k = 1;
+  for (; k <= 400; ++k)
+    w->step_once(k * kT);
+  REQUIRE(w->port(0).take_latch());
+  w->step_once(k++ * kT);
+  CHECK_FALSE(w->port(1).error());  // held upstream: it may still be let go
+  w->done(0, 1, k * kT);
+  // From the cycle the stream is through (the workpiece's rear edge past the line's sensor,
+  // 200 mm at 300 mm/s), not at ncsim's time limit.
+  for (; k <= 1000 && !w->port(1).error(); ++k)
+    w->step_once(k * kT);
+  REQUIRE(w->port(1).error());
+  CHECK(w->port(1).error()->id == "NC9003");
+  CHECK(k * kT == doctest::Approx(200.0 / 300.0).epsilon(0.01));
+  CHECK_FALSE(w->port(0).error());
+}
+
 TEST_CASE("line world: method 3 queues every workpiece per station; held by one, dropped by all") {
   const scenario::Conveyor c = stream(300.0, {100.0, 250.0, 400.0});
   auto w = line(c, {0.0, 300.0}, 2000.0, "PLC_EXT_LATCH_CONTROL");
@@ -156,7 +183,7 @@ struct Rng {
 
 // A scripted channel: arms, takes, then lets go or works on the workpiece for a while.
 struct Picker {
-  enum class State { idle, armed, working } state = State::idle;
+  enum class State { idle, armed, working, ended } state = State::idle;
   double until = 0.0;  // [s] the end of its current idle or work
 };
 
@@ -203,8 +230,16 @@ void random_line(std::uint64_t seed) {
         p.state = Picker::State::idle;
         p.until = t + rng.uniform() * 0.5;
       }
-      if (port.error())
+      if (port.error() && p.state != Picker::State::ended) {
+        // Armed when the last workpiece that could reach it is taken upstream: NC9003, right
+        // then (the channel would end with it), and only then.
+        if (port.error()->id == std::string(kNoWorkpieceId) && p.state == Picker::State::armed &&
+            !w->more_for(s)) {
+          p.state = Picker::State::ended;
+          continue;
+        }
         FAIL("seed " << seed << " station " << s << " t " << t << ": " << port.error()->message);
+      }
     }
     if (!conserved(*w)) FAIL("seed " << seed << " t " << t << ": counts do not close");
     if (t > t_last && w->held() == 0) break;
