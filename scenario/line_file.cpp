@@ -167,22 +167,12 @@ std::filesystem::path LineFile::resolved(const LinePath& path) const {
 
 LineLoad parse_line(const core::SourceFile& file) {
   LineLoad result;
-  toml::table root;
-  try {
-    root = toml::parse(file.text(), file.name());
-  } catch (const toml::parse_error& e) {
-    core::Diagnostic d;
-    d.file = file.name();
-    d.loc = core::SourceLoc{e.source().begin.line, e.source().begin.column};
-    d.id = kSyntax;
-    d.message = "TOML syntax: " + std::string(e.description());
-    result.diagnostics.add(std::move(d));
-    return result;
-  }
+  const std::optional<toml::table> root = parse_toml(file, result.diagnostics);
+  if (!root) return result;
   Context context;
   context.conveyor_wired = true;  // the line plays its conveyor world
   LineReader reader(file, context, result.diagnostics);
-  LineFile line = reader.read(root);
+  LineFile line = reader.read(*root);
   result.diagnostics.sort_by_position();
   if (!result.diagnostics.has_errors()) result.line = std::move(line);
   return result;
@@ -194,11 +184,7 @@ LineLoad load_line(const std::filesystem::path& path) {
     return parse_line(file);
   } catch (const std::exception& e) {
     LineLoad result;
-    core::Diagnostic d;
-    d.file = path.string();
-    d.id = kUnreadable;
-    d.message = std::string("cannot read the line file: ") + e.what();
-    result.diagnostics.add(std::move(d));
+    add_unreadable(path, "line file", e, result.diagnostics);
     return result;
   }
 }

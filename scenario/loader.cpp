@@ -98,6 +98,29 @@ std::string value_text(double v) {
   return core::number_text(v);
 }
 
+std::optional<toml::table> parse_toml(const core::SourceFile& file, core::DiagnosticList& diags) {
+  try {
+    return toml::parse(file.text(), file.name());
+  } catch (const toml::parse_error& e) {
+    core::Diagnostic d;
+    d.file = file.name();
+    d.loc = core::SourceLoc{e.source().begin.line, e.source().begin.column};
+    d.id = kSyntax;
+    d.message = "TOML syntax: " + std::string(e.description());
+    diags.add(std::move(d));
+    return std::nullopt;
+  }
+}
+
+void add_unreadable(const std::filesystem::path& path, std::string_view what,
+                    const std::exception& e, core::DiagnosticList& diags) {
+  core::Diagnostic d;
+  d.file = path.string();
+  d.id = kUnreadable;
+  d.message = "cannot read the " + std::string(what) + ": " + e.what();
+  diags.add(std::move(d));
+}
+
 }  // namespace detail
 
 namespace {
@@ -481,20 +504,10 @@ LoadResult parse_scenario(const core::SourceFile& file, const Context& context) 
     result.diagnostics.add(std::move(d));
     return result;
   }
-  toml::table root;
-  try {
-    root = toml::parse(file.text(), file.name());
-  } catch (const toml::parse_error& e) {
-    core::Diagnostic d;
-    d.file = file.name();
-    d.loc = core::SourceLoc{e.source().begin.line, e.source().begin.column};
-    d.id = kSyntax;
-    d.message = "TOML syntax: " + std::string(e.description());
-    result.diagnostics.add(std::move(d));
-    return result;
-  }
+  const std::optional<toml::table> root = parse_toml(file, result.diagnostics);
+  if (!root) return result;
   Reader reader(file, context, result.diagnostics);
-  Scenario s = reader.read(root);
+  Scenario s = reader.read(*root);
   result.diagnostics.sort_by_position();
   if (!result.diagnostics.has_errors()) result.scenario = std::move(s);
   return result;
@@ -508,11 +521,7 @@ LoadResult load_scenario(const std::filesystem::path& path, const Context& conte
     return parse_scenario(file, context);
   } catch (const std::exception& e) {
     LoadResult result;
-    core::Diagnostic d;
-    d.file = path.string();
-    d.id = kUnreadable;
-    d.message = std::string("cannot read the scenario: ") + e.what();
-    result.diagnostics.add(std::move(d));
+    add_unreadable(path, "scenario", e, result.diagnostics);
     return result;
   }
 }

@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <exception>
+#include <filesystem>
 #include <initializer_list>
 #include <limits>
 #include <optional>
@@ -48,6 +50,12 @@ constexpr double kOverrideMinPercent = kOverrideMin * 100.0;
 constexpr std::int64_t kLineMax = 4294967295;  // line and pass counts are 32-bit
 // TOML integers are 64-bit signed: 2^63-1, compared and printed as the integer it is.
 constexpr std::int64_t kCyclesMax = std::numeric_limits<std::int64_t>::max();
+
+// The file as a TOML table; nullopt after NC7001 (kSyntax) at the error's line and column.
+std::optional<toml::table> parse_toml(const core::SourceFile& file, core::DiagnosticList& diags);
+// NC7010 (kUnreadable) for a file that cannot be read: "cannot read the <what>: <why>".
+void add_unreadable(const std::filesystem::path& path, std::string_view what,
+                    const std::exception& e, core::DiagnosticList& diags);
 
 std::string upper(std::string_view s);
 // "; did you mean `x`?" for the closest candidate within two edits (case ignored); else "".

@@ -357,21 +357,11 @@ std::filesystem::path StudyFile::resolved(const StudyPath& path) const {
 
 StudyLoad parse_study(const core::SourceFile& file) {
   StudyLoad result;
-  toml::table root;
-  try {
-    root = toml::parse(file.text(), file.name());
-  } catch (const toml::parse_error& e) {
-    core::Diagnostic d;
-    d.file = file.name();
-    d.loc = core::SourceLoc{e.source().begin.line, e.source().begin.column};
-    d.id = kSyntax;
-    d.message = "TOML syntax: " + std::string(e.description());
-    result.diagnostics.add(std::move(d));
-    return result;
-  }
+  const std::optional<toml::table> root = parse_toml(file, result.diagnostics);
+  if (!root) return result;
   Context context;
   StudyReader reader(file, context, result.diagnostics);
-  StudyFile study = reader.read(root);
+  StudyFile study = reader.read(*root);
   result.diagnostics.sort_by_position();
   if (!result.diagnostics.has_errors()) result.study = std::move(study);
   return result;
@@ -383,11 +373,7 @@ StudyLoad load_study(const std::filesystem::path& path) {
     return parse_study(file);
   } catch (const std::exception& e) {
     StudyLoad result;
-    core::Diagnostic d;
-    d.file = path.string();
-    d.id = kUnreadable;
-    d.message = std::string("cannot read the study file: ") + e.what();
-    result.diagnostics.add(std::move(d));
+    add_unreadable(path, "study file", e, result.diagnostics);
     return result;
   }
 }
