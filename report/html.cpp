@@ -411,7 +411,11 @@ void write_page(std::ostream& os, std::string_view title, std::string_view json)
 bool write_html_file(const ReportData& data, core::OutputFile& out, std::string& why) {
   std::ostringstream page;
   write_html(data, page);
-  out.write(page.view());  // a write error is commit()'s reason
+  return commit_page(page.view(), out, why);
+}
+
+bool commit_page(std::string_view page, core::OutputFile& out, std::string& why) {
+  out.write(page);  // a write error is commit()'s reason
   if (!out.commit(why)) {
     why = "the report: " + why + " [NC8100]";
     return false;

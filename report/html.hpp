@@ -37,6 +37,8 @@ void write_html(const ReportData& data, std::ostream& os);
 /// into place when complete; false with the reason in `why` (NC8100; the temporary file
 /// removed, the target untouched) on a write error.
 bool write_html_file(const ReportData& data, core::OutputFile& out, std::string& why);
+/// The same for a page already written to `page` (the run page, the line page).
+bool commit_page(std::string_view page, core::OutputFile& out, std::string& why);
 
 /// `s` as a JSON string literal, with '<', '>' and '&' escaped (safe inside <script>).
 std::string json_quote(std::string_view s);

@@ -109,12 +109,7 @@ void write_line_html(const LineReportData& data, std::ostream& os) {
 bool write_line_html_file(const LineReportData& data, core::OutputFile& out, std::string& why) {
   std::ostringstream page;
   write_line_html(data, page);
-  out.write(page.view());  // a write error is commit()'s reason
-  if (!out.commit(why)) {
-    why = "the report: " + why + " [NC8100]";
-    return false;
-  }
-  return true;
+  return commit_page(page.view(), out, why);
 }
 
 }  // namespace ncsim::report
