@@ -407,7 +407,9 @@ TEST_CASE("a new D while TRC is active takes its radius in the next linear block
   CHECK(arc.error_id == "NC4704");
 }
 
-TEST_CASE("D's tool length lifts the tool axis from its next absolute value; D0 ends it") {
+TEST_CASE(
+    "D's tool length (P-TOOL-00003) lifts the tool axis from its next absolute value (P-CHAN-00100 "
+    "= 0); D0 ends it") {
   // portal_3x_tools: D1 60 mm, D2 75 mm
   const Path p =
       path("%t\nG01 Z10 F600\nD1\nG01 X5\nG91 Z0\nG90 Z10\nD2 Z10\nD0 Z10\nG18 D1 Y20 Z10\nM30\n");
