@@ -79,7 +79,8 @@ void BM_LookAhead(benchmark::State& state) {
   LookAhead window(n, 0.001);
   std::size_t i = 0;
   for (auto _ : state) {
-    if (window.full()) benchmark::DoNotOptimize(window.pop().v_exit);
+    while (window.full())
+      benchmark::DoNotOptimize(window.pop().v_exit);
     window.push(segments[i++ % segments.size()]);
   }
   state.SetItemsProcessed(state.iterations());
@@ -92,7 +93,8 @@ void BM_Profile(benchmark::State& state) {
   LookAhead window(120, 0.001);
   std::vector<PlannedSegment> planned;
   for (const auto& s : segments) {
-    if (window.full()) planned.push_back(window.pop());
+    while (window.full())
+      planned.push_back(window.pop());
     window.push(s);
   }
   std::size_t i = 0;

@@ -69,7 +69,8 @@ Result plan_time(Contour contour, SlopeType slope, bool stops) {
   Result r;
   auto drain = [&](bool all) {
     for (auto& s : ready) {
-      if (window.full()) r.time += profile(window.pop()).time();
+      while (window.full())
+        r.time += profile(window.pop()).time();
       window.push(std::move(s));
     }
     ready.clear();

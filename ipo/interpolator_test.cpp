@@ -126,7 +126,8 @@ double planned_time(const std::vector<planner::AxisLimits>& axes, double t_cycle
   double total = 0.0;
   auto drain = [&](bool all) {
     for (auto& s : ready) {
-      if (window.full()) total += planner::profile(window.pop()).time();
+      while (window.full())
+        total += planner::profile(window.pop()).time();
       window.push(std::move(s));
     }
     ready.clear();

@@ -114,6 +114,12 @@ struct SegmentProfile {
 /// carried ramp its shape names (ProfileShape).
 SegmentProfile profile(const PlannedSegment& planned) noexcept;
 
+/// The plain profile of a segment of `length` [mm] under `cap` [mm/s]: ramp from (v0, a0) to
+/// the highest level whose ramps fit, cruise, ramp to (v1, 0) under a, d, j (what profile()
+/// gives a plain plan).
+SegmentProfile plain_profile(double length, double cap, double v0, double a0, double v1, double a,
+                             double d, double j) noexcept;
+
 /// Path state on a profile.
 struct PathState {
   double s = 0.0;  ///< arc length from the segment start [mm]
@@ -144,7 +150,8 @@ class LookAhead {
   /// Appends a segment; the window must not be full (pop first). Aborts on misuse.
   void push(PreparedSegment segment);
   /// Releases the oldest segment with its velocities planned against what the window knows
-  /// (its end is a stop). The window must not be empty.
+  /// (its end is a stop), or only its first piece (an arc in stages, stage_arc: the rest stays
+  /// at the front, so the window may still be full afterwards). The window must not be empty.
   PlannedSegment pop();
   /// Velocity at the end of the last popped segment [mm/s] (entry of the next).
   double v_committed() const noexcept { return v_committed_; }
@@ -231,6 +238,12 @@ class LookAhead {
   /// fits its length (docs/planner.md "Arc options").
   void fastest_option(PlannedSegment& out) const noexcept;
   static void set_ramp_limits(PlannedSegment& out, const Carry& c) noexcept;
+  /// An arc's plain plan in stages (docs/planner.md "Arc stages"): where a ramp at the start
+  /// under a lower cap of `out.segment.options` (more of the axes' acceleration left for the
+  /// path) and the rest under `own`, or the rest and a brake at the end under such a cap, is
+  /// faster than one limit set over the whole arc, `out` becomes that first piece and the front
+  /// slot keeps the rest. Returns true when it split.
+  bool stage_arc(PlannedSegment& out, const PathLimits& own) noexcept;
 
   std::vector<Slot> slots_;
   std::size_t head_ = 0;
@@ -239,6 +252,7 @@ class LookAhead {
   SoftJoints soft_ = SoftJoints::carry;
   double v_committed_ = 0.0;
   double a_committed_ = 0.0;  ///< != 0: a carried ramp is under way (carry_ below)
+  bool split_ = false;        ///< plan_front() left the rest of the front slot in the window
   Carry carry_;               ///< the committed carry (its ramp is the next slot's fallback)
 };
 

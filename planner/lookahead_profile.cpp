@@ -199,6 +199,14 @@ SegmentProfile profile(const PlannedSegment& planned) noexcept {
     out.t_cruise = planned.level > 0.0 ? std::max(0.0, rest) / planned.level : 0.0;
     return out;
   }
+  return plain_profile(length, cap, v0, a0, v1, a, d, j);
+}
+
+SegmentProfile plain_profile(double length, double cap, double v0, double a0, double v1, double a,
+                             double d, double j) noexcept {
+  SegmentProfile out;
+  out.v0 = v0;
+  out.a0 = a0;
   // Highest level in [max(v0, v1), cap] whose two ramps fit the length (monotone in level);
   // from a0 > 0 no level below the release's velocity is reached.
   const double lo = std::max(released_velocity(v0, a0, j), v1);

@@ -44,7 +44,8 @@ std::vector<PlannedSegment> plan(const std::vector<Move>& moves, std::span<const
   std::vector<PlannedSegment> out;
   auto feed = [&] {
     for (auto& s : ready) {
-      if (window.full()) out.push_back(window.pop());
+      while (window.full())
+        out.push_back(window.pop());
       window.push(std::move(s));
     }
     ready.clear();
@@ -391,6 +392,7 @@ TEST_CASE("property: random lines and arcs with random limits never exceed an ax
   std::size_t segments = 0;
   std::size_t chained = 0;
   std::size_t carried = 0;  // joints passed with a carried speed-up
+  std::size_t staged = 0;   // arcs released in pieces (docs/planner.md "Arc stages")
   for (int run = 0; run < 30; ++run) {
     const std::array<AxisLimits, 3> ax = random_axes(range);
     ChannelLimits ch;
@@ -418,6 +420,7 @@ TEST_CASE("property: random lines and arcs with random limits never exceed an ax
       }
       m.contour = run % 2 == 0 ? Contour::tolerance : Contour::none;
       m.path_dev = range(0.001, 0.5);
+      m.line = static_cast<std::uint32_t>(k + 1);
       moves.push_back(m);
       p = m.end;
     }
@@ -427,6 +430,10 @@ TEST_CASE("property: random lines and arcs with random limits never exceed an ax
       if (k + 1 < planned.size()) {
         CHECK(ps.v_exit == planned[k + 1].v_entry);
         CHECK(ps.a_exit == planned[k + 1].a_entry);
+        const PreparedSegment& next = planned[k + 1].segment;
+        if (!ps.segment.blend && !next.blend && ps.segment.path.parts() == 1 &&
+            next.path.parts() == 1 && next.path.part_line(0) == ps.segment.path.part_line(0))
+          ++staged;
       }
       check_profile(ps, ax);
       if (ps.a_exit != 0.0) ++carried;
@@ -437,6 +444,8 @@ TEST_CASE("property: random lines and arcs with random limits never exceed an ax
   CHECK(segments > 1000);
   CHECK(chained > 20);
   CHECK(carried > 0);  // more in the soft-joint property below
+  MESSAGE(staged, " arc pieces");
+  CHECK(staged > 50);
 }
 
 namespace {
@@ -627,20 +636,76 @@ TEST_CASE(
   Move m = line(vec(0, 0), vec(6, 0), 100.0);
   m.arc = Arc{0, 1, 3.0, 0.0, false, false};
   const auto planned = plan({m}, ax, 10);
-  REQUIRE(planned.size() == 1);
+  REQUIRE(!planned.empty());
   const PlannedSegment& ps = planned[0];
   REQUIRE(ps.segment.option_count > 0);
   check_profile(ps, ax);
 
-  PlannedSegment own = ps;  // the same plan under the segment's own limits
-  own.segment.limits = path_limits(ps.segment.path.part(0), m, ax);
-  own.a_max = own.segment.limits.a_max;
-  own.d_max = own.segment.limits.d_max;
-  own.j_max = own.segment.limits.j_max;
-  check_profile(own, ax);
-  CHECK(ps.segment.limits.v_max < own.segment.limits.v_max);
+  // The arc under the segment's own limits alone is slower; the first piece runs under a
+  // lower cap with more acceleration.
+  const Segment whole = Segment::from_move(m);
+  const PathLimits own = path_limits(whole, m, ax);
+  double t = 0.0;
+  for (const PlannedSegment& p : planned) {
+    check_profile(p, ax);
+    t += profile(p).time();
+  }
+  CHECK(ps.segment.limits.v_max < own.v_max);
   CHECK(ps.a_max > own.a_max);
-  CHECK(profile(ps).time() < profile(own).time() * 0.99);
+  CHECK(t <
+        plain_profile(whole.length(), own.v_max, 0, 0, 0, own.a_max, own.d_max, own.j_max).time() *
+            0.99);
   // What was programmed stays: the feed (the override's type "original" reads it).
-  CHECK(ps.segment.limits.v_programmed == own.segment.limits.v_programmed);
+  CHECK(ps.segment.limits.v_programmed == own.v_programmed);
+}
+
+TEST_CASE("an arc entered slowly ramps under a lower cap first, then runs on under its own") {
+  // Every axis 100 mm/s, 1000 mm/s^2, J 1e9; three quarters of a circle of r 6 mm at F 100
+  // mm/s from and to a stop (docs/planner.md "Arc stages"). The ramps run under options of a
+  // lower cap (more acceleration left for the path), the middle under the arc's own limits:
+  // pieces of one source line, joined at a = 0 with continuous velocity, covering the arc,
+  // every axis inside its limits, and faster than the best single limit set.
+  const std::array<AxisLimits, 3> ax = {axis(100, 1000, 1e9), axis(100, 1000, 1e9),
+                                        axis(100, 1000, 1e9)};
+  Move m = line(vec(0, 0), vec(6, 6), 100.0);
+  m.arc = Arc{0, 1, 6.0, 0.0, false, false};
+  m.line = 7;
+  const auto planned = plan({m}, ax, 10);
+  REQUIRE(planned.size() >= 3);
+  double length = 0.0;
+  double staged = 0.0;
+  for (std::size_t k = 0; k < planned.size(); ++k) {
+    const PlannedSegment& ps = planned[k];
+    check_profile(ps, ax);
+    CHECK(ps.segment.path.part_line(0) == 7);
+    CHECK(ps.a_entry == 0.0);
+    CHECK(ps.a_exit == 0.0);
+    if (k + 1 < planned.size()) {
+      CHECK(ps.v_exit == planned[k + 1].v_entry);
+      CHECK(ps.v_exit > 0.0);
+      CHECK(ps.segment.stop == StopReason::none);
+    }
+    length += ps.segment.path.length();
+    staged += profile(ps).time();
+  }
+  CHECK(planned.back().v_exit == 0.0);
+  CHECK(planned.back().segment.stop == StopReason::end_of_stream);
+  const Segment whole = Segment::from_move(m);
+  CHECK(length == doctest::Approx(whole.length()).epsilon(1e-9));
+  CHECK(planned.front().segment.path.start()[1] == doctest::Approx(0.0).epsilon(1e-12));
+  CHECK(planned.back().segment.path.end()[0] == doctest::Approx(6.0).epsilon(1e-12));
+  // The best single limit set over the whole arc (what fastest_option chose before).
+  const PathLimits own = path_limits(whole, m, ax);
+  std::array<PathLimits, kArcOptions> options{};
+  const std::size_t n = arc_options(whole, m, ax, own, options);
+  REQUIRE(n > 0);
+  double single =
+      plain_profile(whole.length(), own.v_max, 0, 0, 0, own.a_max, own.d_max, own.j_max).time();
+  for (std::size_t k = 0; k < n; ++k) {
+    const PathLimits& o = options[k];
+    single = std::min(
+        single, plain_profile(whole.length(), o.v_max, 0, 0, 0, o.a_max, o.d_max, o.j_max).time());
+  }
+  MESSAGE("staged ", staged, " s in ", planned.size(), " pieces, single ", single, " s");
+  CHECK(staged < single * 0.98);
 }
