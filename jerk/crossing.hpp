@@ -69,8 +69,9 @@ inline double crossing_distance(double v0, double a0, const Crossing& cross) noe
 /// from an earlier call: every member the answer depends on is set); `prepare_fixed`: also the
 /// crossing for a_z = a_fix (worth it where several end velocities follow). In place, so a
 /// frame holding it is not zero-filled and copied a second time (issue 11, session 25).
-inline void crossing_start_into(CrossingStart& cs, double v0, double a0, const Limits& lim,
-                                bool prepare_fixed) noexcept {
+/// `v_zero`: the start's release velocity v0 + a0 |a0| / (2J), where the caller has it.
+inline void crossing_start_into(CrossingStart& cs, double v0, double a0, double v_zero,
+                                const Limits& lim, bool prepare_fixed) noexcept {
   const double j = lim.j_max;
   cs.v0 = v0;
   cs.a0 = a0;
@@ -78,7 +79,7 @@ inline void crossing_start_into(CrossingStart& cs, double v0, double a0, const L
   const double gain = -v0;
   // A start that neither moves backward nor reverses, or one beyond A- while slowing (it
   // forces its own ramp), has no crossing.
-  cs.possible = (v0 < 0.0 || v0 + a0 * std::abs(a0) / (2.0 * j) < 0.0) && !(a0 > c);
+  cs.possible = (v0 < 0.0 || v_zero < 0.0) && !(a0 > c);
   cs.fixed_ok = false;
   if (!cs.possible) return;
   cs.a_z_min = a0 > 0.0 ? std::sqrt(std::max(0.0, a0 * a0 - 2.0 * j * gain)) : 0.0;
@@ -94,7 +95,7 @@ inline void crossing_start_into(CrossingStart& cs, double v0, double a0, const L
 inline CrossingStart crossing_start(double v0, double a0, const Limits& lim,
                                     bool prepare_fixed) noexcept {
   CrossingStart cs;
-  crossing_start_into(cs, v0, a0, lim, prepare_fixed);
+  crossing_start_into(cs, v0, a0, v0 + a0 * std::abs(a0) / (2.0 * lim.j_max), lim, prepare_fixed);
   return cs;
 }
 
