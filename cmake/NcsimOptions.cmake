@@ -31,7 +31,7 @@ if(NCSIM_FUZZ)
   target_link_options(ncsim_options INTERFACE -fsanitize=address,${NCSIM_UBSAN})
 endif()
 # ncsim_small_memset(TARGET): GCC on x86-64 zero-fills a value type of known size (the jerk
-# kernel's Move 208 bytes, Reversal 432, a Level, a Profile 840) with `rep stosq`, whose
+# kernel's Move 216 bytes, Reversal 432, a Level, a Profile 848) with `rep stosq`, whose
 # start-up cost was ~7 % of a time-optimal PTP plan (issue 36, docs/axes-profile.md "Thirteenth
 # round"); vector stores instead up to 1 KiB, memset() above. Results are unchanged (no
 # arithmetic is touched); other compilers and targets keep their defaults.
