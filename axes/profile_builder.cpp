@@ -58,22 +58,44 @@ void ProfileBuilder::add(const Profile& tail) noexcept {
   state_ = tail.end_state();
 }
 
+void ProfileBuilder::add_pulse(const std::array<double, 3>& jerk,
+                               const std::array<double, 3>& duration, double sign,
+                               const std::array<double, 3>& a_end, double v_end) noexcept {
+  // The same steps as three add(jerk, duration, a_end) calls, on local copies of the state, the
+  // time and the count: the phases written to the profile could alias the builder's members, so
+  // the compiler reloaded them after every store (issue 36: ~10 % of a builder's instructions).
+  MotionState st = state_;
+  double t = t_;
+  std::size_t n = out_.count_;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double jk = sign * jerk[i];
+    const double dt = duration[i];
+    if (dt > 0.0) {
+      if (n >= Profile::kMaxPhases) std::abort();  // planners never need more
+      out_.phases_[n++] = Phase{t, dt, st.p, st.v, st.a, jk};
+      st = jerk::advance(st, jk, dt);
+      t += dt;
+    }
+    st.a = a_end[i];
+  }
+  st.v = v_end;
+  out_.count_ = n;
+  state_ = st;
+  t_ = t;
+}
+
 void ProfileBuilder::add(const Ramp& change, double sign) noexcept {
   // Each phase starts from the boundary value it is meant to start from, not from the rounded
   // integration of the one before: a residual acceleration of ~1e-16 A would otherwise grow
   // into a velocity error a t and a position error a t^2/2 over a long cruise that follows.
-  add(sign * change.jerk[0], change.duration[0], sign * change.a_peak);
-  add(sign * change.jerk[1], change.duration[1], sign * change.a_peak);
-  add(sign * change.jerk[2], change.duration[2], 0.0);
-  state_.v = sign * change.v_end;
+  const double a_peak = sign * change.a_peak;
+  add_pulse(change.jerk, change.duration, sign, {a_peak, a_peak, 0.0}, sign * change.v_end);
 }
 
 void ProfileBuilder::add(const jerk::Crossing& cross, double sign) noexcept {
   if (!(cross.time() > 0.0)) return;
-  add(sign * cross.jerk[0], cross.duration[0], sign * cross.a_peak);
-  add(sign * cross.jerk[1], cross.duration[1], sign * cross.a_peak);
-  add(sign * cross.jerk[2], cross.duration[2], sign * cross.a_zero);
-  state_.v = 0.0;
+  const double a_peak = sign * cross.a_peak;
+  add_pulse(cross.jerk, cross.duration, sign, {a_peak, a_peak, sign * cross.a_zero}, 0.0);
 }
 
 void ProfileBuilder::finish(const MotionState* exact_end) noexcept {

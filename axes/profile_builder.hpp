@@ -53,6 +53,12 @@ class ProfileBuilder {
   void finish(const MotionState* exact_end = nullptr) noexcept;
 
  private:
+  /// Appends the phases of a jerk pulse (a Ramp's or a Crossing's, frame sign `sign`): phase i
+  /// where duration[i] > 0, the acceleration then set to a_end[i] (world) and, after the last,
+  /// the velocity to v_end (world).
+  void add_pulse(const std::array<double, 3>& jerk, const std::array<double, 3>& duration,
+                 double sign, const std::array<double, 3>& a_end, double v_end) noexcept;
+
   Profile& out_;
   MotionState state_;
   double t_ = 0.0;

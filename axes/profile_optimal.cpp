@@ -84,12 +84,12 @@ double level_smaller(double d, double a_s, double j, double u_hi) noexcept {
   return u * u;
 }
 
-double rest_to_rest_level(double d, const Dynamics& dyn) noexcept {
+// The level where V is not reached (both_ramps(V) > d).
+double rest_to_rest_level_below(double d, const Dynamics& dyn) noexcept {
   const double j = dyn.j_max;
   const auto both_ramps = [&](double v) {
     return ramp_distance(v, dyn.a_max, j) + ramp_distance(v, dyn.d_max, j);
   };
-  if (both_ramps(dyn.v_max) <= d) return dyn.v_max;
   const double a_s = std::min(dyn.a_max, dyn.d_max);
   const double a_l = std::max(dyn.a_max, dyn.d_max);
   const double v_s = a_s * a_s / j;  // level at which the smaller limit is just reached
@@ -97,6 +97,29 @@ double rest_to_rest_level(double d, const Dynamics& dyn) noexcept {
   if (d <= both_ramps(v_s)) return level_neither(d, j);
   if (d >= both_ramps(v_l)) return level_both(d, dyn);
   return level_smaller(d, a_s, j, std::sqrt(v_l));
+}
+
+double rest_to_rest_level(double d, const Dynamics& dyn) noexcept {
+  const double j = dyn.j_max;
+  if (ramp_distance(dyn.v_max, dyn.a_max, j) + ramp_distance(dyn.v_max, dyn.d_max, j) <= d)
+    return dyn.v_max;
+  return rest_to_rest_level_below(d, dyn);
+}
+
+// A rest ramp to v under a_lim, j: ramp_distance and rest_ramp_time (the same expressions, their
+// common square root or quotient sum evaluated once).
+struct RestRamp {
+  double dist = 0.0;  // [mm]
+  double time = 0.0;  // [s]
+};
+
+RestRamp rest_ramp(double v, double a_lim, double j) noexcept {
+  if (v * j <= a_lim * a_lim) {
+    const double r = std::sqrt(v / j);
+    return RestRamp{v * r, 2.0 * r};
+  }
+  const double s = v / a_lim + a_lim / j;
+  return RestRamp{0.5 * v * s, s};
 }
 
 // Case rest to rest: closed form by limits reached (no iteration over ramps).
@@ -121,13 +144,21 @@ void append_rest_to_rest_fastest(ProfileBuilder& b, double p_target, const Dynam
 double rest_to_rest_fastest_time(double dist, const Dynamics& dyn) noexcept {
   // The durations append_rest_to_rest_fastest plans (without a profile).
   if (!(dist > 0.0)) return 0.0;
-  const double vm = std::min(dyn.v_max, rest_to_rest_level(dist, dyn));
   const double j = dyn.j_max;
-  const double d_cruise = dist - ramp_distance(vm, dyn.a_max, j) - ramp_distance(vm, dyn.d_max, j);
-  const double t_cruise = d_cruise > 0.0 ? d_cruise / vm : 0.0;
   // The ramps' times in closed form, without building them (issue 11, session 25: the
-  // stop-then-go bound, half the plans).
-  return rest_ramp_time(vm, dyn.a_max, j) + t_cruise + rest_ramp_time(vm, dyn.d_max, j);
+  // stop-then-go bound, half the plans); where V is reached, the ramps of the level's first
+  // test are the plan's (issue 36: two square roots or four divisions fewer).
+  double vm = dyn.v_max;
+  RestRamp up = rest_ramp(vm, dyn.a_max, j);
+  RestRamp down = rest_ramp(vm, dyn.d_max, j);
+  if (!(up.dist + down.dist <= dist)) {
+    vm = std::min(dyn.v_max, rest_to_rest_level_below(dist, dyn));
+    up = rest_ramp(vm, dyn.a_max, j);
+    down = rest_ramp(vm, dyn.d_max, j);
+  }
+  const double d_cruise = dist - up.dist - down.dist;
+  const double t_cruise = d_cruise > 0.0 ? d_cruise / vm : 0.0;
+  return up.time + t_cruise + down.time;
 }
 
 bool plan_fastest(const MotionState& start, const PositionTarget& target, const Dynamics& dyn,

@@ -7,10 +7,10 @@
 
 #include <array>
 #include <cmath>
-#include <random>
 #include <vector>
 
 #include "axes/profile.hpp"
+#include "bench/axes_inputs.hpp"
 
 namespace {
 
@@ -20,27 +20,10 @@ using ncsim::axes::PositionTarget;
 using ncsim::axes::Profile;
 using ncsim::axes::ProfileRule;
 
-struct Input {
-  MotionState start;
-  PositionTarget target;
-  Dynamics dyn;
-};
+using Input = ncsim::bench::AxesInput;
 
 std::vector<Input> make_inputs(bool moving, std::size_t n) {
-  std::mt19937_64 rng(42);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<Input> out(n);
-  for (auto& in : out) {
-    in.dyn = {100.0 + 4900.0 * u(rng), 500.0 + 20000.0 * u(rng), 500.0 + 20000.0 * u(rng),
-              5000.0 + 1e6 * u(rng)};
-    in.target.p = (u(rng) - 0.5) * 2000.0;
-    if (moving) {
-      in.start.v = (u(rng) - 0.5) * in.dyn.v_max;
-      in.start.a = (u(rng) - 0.5) * 0.2 * in.dyn.a_max;
-      if (u(rng) < 0.25) in.target.v = (u(rng) - 0.5) * in.dyn.v_max;
-    }
-  }
-  return out;
+  return ncsim::bench::make_axes_inputs(moving, n);
 }
 
 // Plans 4096 precomputed requests in turn; the argument selects rest-to-rest (0) or moving

@@ -22,14 +22,16 @@ namespace ncsim::jerk::detail {
 
 /// The start's part of a crossing (independent of the end velocity).
 struct CrossingStart {
-  bool possible = false;    ///< the start moves backward (or reverses) and a0 <= A-
-  double v0 = 0.0;          ///< frame start velocity [mm/s]
-  double a0 = 0.0;          ///< frame start acceleration [mm/s^2]
-  double a_z_min = 0.0;     ///< lowest acceleration at v = 0 the start allows [mm/s^2]
-  double a_fix = 0.0;       ///< min(A-, A+, sqrt(a0^2 + 2 J |v0|)) [mm/s^2]
-  bool fixed_ok = false;    ///< `fixed` holds the crossing for a_z = a_fix
-  Crossing fixed;           ///< the crossing phases for a_z = a_fix
-  double fixed_dist = 0.0;  ///< distance covered by `fixed` from (v0, a0) [mm]
+  bool possible = false;       ///< the start moves backward (or reverses) and a0 <= A-
+  double v0 = 0.0;             ///< frame start velocity [mm/s]
+  double a0 = 0.0;             ///< frame start acceleration [mm/s^2]
+  double v_zero = 0.0;         ///< release velocity v0 + a0 |a0| / (2J) [mm/s]
+  double a_z_min = 0.0;        ///< lowest acceleration at v = 0 the start allows [mm/s^2]
+  double a_fix = 0.0;          ///< min(A-, A+, sqrt(a0^2 + 2 J |v0|)) [mm/s^2]
+  bool fixed_ok = false;       ///< `fixed` holds the crossing for a_z = a_fix
+  Crossing fixed;              ///< the crossing phases for a_z = a_fix
+  double fixed_dist = 0.0;     ///< distance covered by `fixed` from (v0, a0) [mm]
+  double fixed_release = 0.0;  ///< release velocity of (0, a_fix): a_fix^2 / (2J) [mm/s]
 };
 
 /// Crossing phases from (v0, a0) that reach v = 0 with acceleration a_z (crossing_ramp's body).
@@ -69,16 +71,18 @@ inline double crossing_distance(double v0, double a0, const Crossing& cross) noe
 /// from an earlier call: every member the answer depends on is set); `prepare_fixed`: also the
 /// crossing for a_z = a_fix (worth it where several end velocities follow). In place, so a
 /// frame holding it is not zero-filled and copied a second time (issue 11, session 25).
-inline void crossing_start_into(CrossingStart& cs, double v0, double a0, const Limits& lim,
-                                bool prepare_fixed) noexcept {
+/// `v_zero`: the start's release velocity v0 + a0 |a0| / (2J), where the caller has it.
+inline void crossing_start_into(CrossingStart& cs, double v0, double a0, double v_zero,
+                                const Limits& lim, bool prepare_fixed) noexcept {
   const double j = lim.j_max;
   cs.v0 = v0;
   cs.a0 = a0;
+  cs.v_zero = v_zero;
   const double c = lim.d_max;
   const double gain = -v0;
   // A start that neither moves backward nor reverses, or one beyond A- while slowing (it
   // forces its own ramp), has no crossing.
-  cs.possible = (v0 < 0.0 || v0 + a0 * std::abs(a0) / (2.0 * j) < 0.0) && !(a0 > c);
+  cs.possible = (v0 < 0.0 || v_zero < 0.0) && !(a0 > c);
   cs.fixed_ok = false;
   if (!cs.possible) return;
   cs.a_z_min = a0 > 0.0 ? std::sqrt(std::max(0.0, a0 * a0 - 2.0 * j * gain)) : 0.0;
@@ -87,6 +91,7 @@ inline void crossing_start_into(CrossingStart& cs, double v0, double a0, const L
   if (cs.fixed_ok) {
     cs.fixed = crossing_phases(v0, a0, cs.a_fix, lim);
     cs.fixed_dist = crossing_distance(v0, a0, cs.fixed);
+    cs.fixed_release = 0.0 + cs.a_fix * std::abs(cs.a_fix) / (2.0 * j);
   }
 }
 
@@ -94,7 +99,7 @@ inline void crossing_start_into(CrossingStart& cs, double v0, double a0, const L
 inline CrossingStart crossing_start(double v0, double a0, const Limits& lim,
                                     bool prepare_fixed) noexcept {
   CrossingStart cs;
-  crossing_start_into(cs, v0, a0, lim, prepare_fixed);
+  crossing_start_into(cs, v0, a0, v0 + a0 * std::abs(a0) / (2.0 * lim.j_max), lim, prepare_fixed);
   return cs;
 }
 
@@ -107,7 +112,8 @@ inline bool crossing_from(const CrossingStart& cs, double v1, const Limits& lim,
   const double a_v1 = std::sqrt(2.0 * j * v1);  // releasing it from v = 0 gains exactly v1
   const double a_z = std::min(cs.a_fix, a_v1);
   if (cs.a_z_min > a_z) return false;  // the start reaches v = 0 too fast (or overshoots v1)
-  if (cs.fixed_ok && a_z == cs.a_fix) {
+  const bool fixed = cs.fixed_ok && a_z == cs.a_fix;
+  if (fixed) {
     cross = cs.fixed;
     if (cross_dist != nullptr) *cross_dist = cs.fixed_dist;
   } else {
@@ -125,7 +131,10 @@ inline bool crossing_from(const CrossingStart& cs, double v1, const Limits& lim,
     rest.v_end = v1;
     return true;
   }
-  rest = velocity_ramp(0.0, a_z, v1, lim.a_max, lim.d_max, j);
+  // The rest ramp from (0, a_z): velocity_ramp's release velocity 0 + a_z |a_z| / (2J), for
+  // a_z = a_fix prepared once with the start (issue 36: a division per level).
+  const double v_zero = fixed ? cs.fixed_release : 0.0 + a_z * std::abs(a_z) / (2.0 * j);
+  rest = velocity_ramp_released(0.0, a_z, v_zero, v1, lim.a_max, lim.d_max, j);
   return true;
 }
 

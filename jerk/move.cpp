@@ -34,6 +34,7 @@ struct Frame {
   double a0 = 0.0;
   double v1 = 0.0;
   double d = 0.0;
+  double v_zero = 0.0;       // release velocity v0 + a0 |a0| / (2J): where ramp 1 vanishes
   detail::CrossingStart cs;  // the start's part of a crossing through v = 0 (jerk/crossing.hpp)
 };
 
@@ -46,12 +47,23 @@ double natural_sign(const State& start, double p1, double v1) noexcept {
   return 1.0;
 }
 
+// The release velocity of a frame start (v0, a0): v0 + a0 |a0| / (2J).
+double release_velocity(double v0, double a0, const Limits& lim) noexcept {
+  return v0 + a0 * std::abs(a0) / (2.0 * lim.j_max);
+}
+
 // Frame with the given sign; its distance d is negative when the target lies behind (a move
-// that overshoots and comes back at a level vm >= 0 in this frame).
-Frame frame_of(const State& start, double p1, double v1, double sign, const Limits& lim) noexcept {
-  Frame f{sign, sign * start.v, sign * start.a, sign * v1, sign * (p1 - start.p), {}};
-  if (f.v0 < 0.0 || f.a0 < 0.0) detail::crossing_start_into(f.cs, f.v0, f.a0, lim, true);
+// that overshoots and comes back at a level vm >= 0 in this frame). `v_zero`: the frame start's
+// release velocity (release_velocity of its v0, a0).
+Frame frame_of(const State& start, double p1, double v1, double sign, double v_zero,
+               const Limits& lim) noexcept {
+  Frame f{sign, sign * start.v, sign * start.a, sign * v1, sign * (p1 - start.p), v_zero, {}};
+  if (f.v0 < 0.0 || f.a0 < 0.0) detail::crossing_start_into(f.cs, f.v0, f.a0, v_zero, lim, true);
   return f;
+}
+
+Frame frame_of(const State& start, double p1, double v1, double sign, const Limits& lim) noexcept {
+  return frame_of(start, p1, v1, sign, release_velocity(sign * start.v, sign * start.a, lim), lim);
 }
 
 Frame frame_of(const State& start, double p1, double v1, const Limits& lim) noexcept {
@@ -93,9 +105,10 @@ void level_slope(Level& lv, double vm, double j) noexcept {
   const double a1 = std::abs(p1);
   const double aq = std::abs(q);
   lv.slope = vm / p1 + vm / q + (a1 + aq) / (2.0 * j);
+  const double half = 0.5 / j;  // (-0.5) / j is -half to the bit: one division for both ramps
   const auto curve_of = [&](double p, double ap, bool hold) {
     const double dp = hold ? 0.0 : j / (2.0 * ap);
-    return 1.0 / p + dp * ((p > 0.0 ? 0.5 : -0.5) / j - vm / (p * p));
+    return 1.0 / p + dp * ((p > 0.0 ? half : -half) - vm / (p * p));
   };
   lv.curve =
       curve_of(p1, a1, lv.first.duration[1] > 0.0) + curve_of(q, aq, lv.second.duration[1] > 0.0);
@@ -147,7 +160,7 @@ double first_part(const Frame& f, double vm, const Limits& lim, Crossing& cross,
   // (A stop from v0 < 0 only slows down: A-.)
   const double a_up =
       f.v0 < 0.0 ? (vm > 0.0 ? std::min(lim.a_max, lim.d_max) : lim.d_max) : lim.a_max;
-  first = velocity_ramp(f.v0, f.a0, vm, a_up, lim.d_max, lim.j_max);
+  first = detail::velocity_ramp_released(f.v0, f.a0, f.v_zero, vm, a_up, lim.d_max, lim.j_max);
   const double d_first = distance(f.v0, f.a0, first);
   path += std::abs(d_first);
   return d_first;
@@ -262,7 +275,7 @@ double top_level(const Frame& f, const Limits& lim, Level& out, bool curved = tr
     return gv;
   };
   const auto clamp = [&](double v) { return std::clamp(v, 0.0, lim.v_max); };
-  const double v_zero = f.v0 + f.a0 * std::abs(f.a0) / (2.0 * lim.j_max);  // ramp 1 vanishes
+  const double v_zero = f.v_zero;  // ramp 1 vanishes
   const std::array<double, 3> below{clamp(std::max(v_zero, f.v1)), clamp(std::min(v_zero, f.v1)),
                                     0.0};
   double hi = lim.v_max;
@@ -447,7 +460,7 @@ Status stretch_scan(const Frame& f, double vm_top, double duration, const Limits
   int n = 0;
   for (int k = kScan; k >= 0; --k)
     x[static_cast<std::size_t>(n++)] = vm_top * k / kScan;
-  const double v_zero = f.v0 + f.a0 * std::abs(f.a0) / (2.0 * lim.j_max);
+  const double v_zero = f.v_zero;
   for (const double kink : {v_zero, f.v1}) {
     if (kink > 0.0 && kink < vm_top) x[static_cast<std::size_t>(n++)] = kink;
   }
@@ -593,12 +606,9 @@ Status fastest_move_in(const State& start, double p1, double v1, const Limits& l
     // (v0 >= 0 and the release velocity v_zero >= 0: every ramp of the family then keeps
     // v >= 0, so every level covers a distance >= 0). Decided before any level is evaluated.
     const double v0 = sign * start.v;
-    const double a0 = sign * start.a;
-    if (sign * (p1 - start.p) < 0.0 && v0 >= 0.0 &&
-        v0 + a0 * std::abs(a0) / (2.0 * lim.j_max) >= 0.0) {
-      continue;
-    }
-    const Frame f = frame_of(start, p1, v1, sign, lim);
+    const double v_zero = release_velocity(v0, sign * start.a, lim);
+    if (sign * (p1 - start.p) < 0.0 && v0 >= 0.0 && v_zero >= 0.0) continue;
+    const Frame f = frame_of(start, p1, v1, sign, v_zero, lim);
     Level lv;
     const double vm = top_level(f, lim, lv, curved);
     if (vm < 0.0) continue;

@@ -26,13 +26,16 @@ inline State advance(const State& s, double j, double dt) noexcept {
                s.v + dt * (s.a + dt * j * 0.5), s.a + dt * j};
 }
 
-inline Ramp velocity_ramp(double v0, double a0, double v1, double a_up, double a_down,
-                          double j) noexcept {
+namespace detail {
+// velocity_ramp with the start's release velocity v_zero = v0 + a0 |a0| / (2j) given: a level
+// search ramps from one start to many end velocities and computes it once (the same value, so
+// the same ramp bit for bit; issue 36: a division per level).
+inline Ramp velocity_ramp_released(double v0, double a0, double v_zero, double v1, double a_up,
+                                   double a_down, double j) noexcept {
   // The velocity reached when the acceleration is taken to zero at once (v_zero) decides the
   // direction of the pulse; everything below is in that direction (sign s).
   Ramp out;
   out.v_end = v1;
-  const double v_zero = v0 + a0 * std::abs(a0) / (2.0 * j);
   const double s = v1 >= v_zero ? 1.0 : -1.0;
   const double a_lim = s > 0.0 ? a_up : a_down;
   const double a_s = s * a0;        // start acceleration in the pulse's direction
@@ -67,6 +70,13 @@ inline Ramp velocity_ramp(double v0, double a0, double v1, double a_up, double a
   out.duration = {da_up > kResidue * a_peak ? da_up / j : 0.0, t_hold, a_peak / j};
   out.a_peak = s * a_peak;
   return out;
+}
+}  // namespace detail
+
+inline Ramp velocity_ramp(double v0, double a0, double v1, double a_up, double a_down,
+                          double j) noexcept {
+  return detail::velocity_ramp_released(v0, a0, v0 + a0 * std::abs(a0) / (2.0 * j), v1, a_up,
+                                        a_down, j);
 }
 
 inline double distance(double v0, double a0, const Ramp& ramp) noexcept {

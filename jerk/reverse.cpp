@@ -37,23 +37,28 @@ namespace {
 
 // Frame change (v0, a0) -> (level > = 0, 0): through v = 0 with the path limits where the
 // frame start moves backward, else one ramp (under min(A+, A-) when it crosses v = 0).
-// `cs`: the start's part of the crossing prepared once (jerk/crossing.hpp), else nullptr.
-// Returns the distance the change covers in its frame [mm].
-double ramp_to(double v0, double a0, double level, const Limits& lim, Crossing& cross, Ramp& ramp,
-               const detail::CrossingStart* cs = nullptr) noexcept {
+// `v_zero`: the start's release velocity v0 + a0 |a0| / (2J) (the callers have it: no division
+// per level, issue 36). `cs`: the start's part of the crossing prepared once
+// (jerk/crossing.hpp), else nullptr. Returns the distance the change covers in its frame [mm].
+double ramp_to(double v0, double a0, double v_zero, double level, const Limits& lim,
+               Crossing& cross, Ramp& ramp, const detail::CrossingStart* cs = nullptr) noexcept {
   cross = Crossing{};
   if ((v0 < 0.0 || a0 < 0.0) && level > 0.0) {
     double d_cross = 0.0;
-    const bool crossed = cs != nullptr
-                             ? detail::crossing_from(*cs, level, lim, cross, ramp, &d_cross)
-                             : detail::crossing_from(detail::crossing_start(v0, a0, lim, false),
-                                                     level, lim, cross, ramp, &d_cross);
+    bool crossed = false;
+    if (cs != nullptr) {
+      crossed = detail::crossing_from(*cs, level, lim, cross, ramp, &d_cross);
+    } else {
+      detail::CrossingStart own;
+      detail::crossing_start_into(own, v0, a0, v_zero, lim, false);
+      crossed = detail::crossing_from(own, level, lim, cross, ramp, &d_cross);
+    }
     if (crossed) return d_cross + distance(0.0, cross.a_zero, ramp);
   }
   cross = Crossing{};
   const double a_up =
       v0 < 0.0 ? (level > 0.0 ? std::min(lim.a_max, lim.d_max) : lim.d_max) : lim.a_max;
-  ramp = velocity_ramp(v0, a0, level, a_up, lim.d_max, lim.j_max);
+  ramp = detail::velocity_ramp_released(v0, a0, v_zero, level, a_up, lim.d_max, lim.j_max);
   return distance(v0, a0, ramp);
 }
 
@@ -69,13 +74,18 @@ void make_into(Reversal& r, const State& start, double g, double level, double v
   r.out.sign = -g;
   r.out.t_cruise = 0.0;
   r.back.t_cruise = 0.0;
-  const double d_out =
-      ramp_to(-g * start.v, -g * start.a, level, lim, r.out.cross, r.out.first, cs_out);
+  const double u0 = -g * start.v;
+  const double b0 = -g * start.a;
+  const double u_zero =
+      cs_out != nullptr ? cs_out->v_zero : u0 + b0 * std::abs(b0) / (2.0 * lim.j_max);
+  const double d_out = ramp_to(u0, b0, u_zero, level, lim, r.out.cross, r.out.first, cs_out);
   r.out.v_level = level;
   r.out.second = Ramp{};
   r.out.second.v_end = level;
   r.back.sign = g;
-  const double d_back = ramp_to(-level, 0.0, g * v1, lim, r.back.cross, r.back.first);
+  // The back part starts at (-level, 0): its release velocity -level + 0 |0| / (2J) is
+  // -level + 0.0 to the bit.
+  const double d_back = ramp_to(-level, 0.0, -level + 0.0, g * v1, lim, r.back.cross, r.back.first);
   r.back.v_level = g * v1;
   r.back.second = Ramp{};
   r.back.second.v_end = g * v1;
@@ -106,9 +116,10 @@ void reach_slope(const Reversal& r, double level, double j, double& slope, doubl
   if (!(p_back > 0.0)) return;
   const double a_out = std::abs(p_out);
   slope = level / p_out + a_out / (2.0 * j) + level / p_back + p_back / (2.0 * j);
+  const double half = 0.5 / j;  // (-0.5) / j is -half to the bit: one division for both parts
   const auto curve_of = [&](double p, double ap, bool hold) {
     const double dp = hold ? 0.0 : j / (2.0 * ap);
-    return 1.0 / p + dp * ((p > 0.0 ? 0.5 : -0.5) / j - level / (p * p));
+    return 1.0 / p + dp * ((p > 0.0 ? half : -half) - level / (p * p));
   };
   curve =
       curve_of(p_out, a_out, r.out.first.duration[1] > 0.0) + curve_of(p_back, p_back, hold_back);
