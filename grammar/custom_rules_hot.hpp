@@ -60,6 +60,18 @@ inline std::optional<double> decimal_value(const char* begin, const char* point,
   }
   return value;
 }
+
+/// Adds the Op::number node of the literal [b, end) (its '.' at `point`, or `end` without
+/// one) as rules::number does; kNoNode, with nothing added, when it is beyond the range of a
+/// double (NC1005).
+inline ast::NodeIndex add_number(State& st, const char* b, const char* point, const char* end) {
+  const std::optional<double> value = decimal_value(b, point, end);
+  if (!value) return ast::kNoNode;
+  ast::ExprNode n =
+      leaf(ast::Op::number, st.loc(b), std::string_view(b, static_cast<std::size_t>(end - b)));
+  n.value = *value;
+  return st.add(n);
+}
 }  // namespace detail
 
 /// Matches `Rule` as an alternative of a sor<> would (rewinding on failure).
@@ -75,6 +87,25 @@ bool try_alternative(Input& in, St& st) {
   bool rules::rule::match(Input& in, [[maybe_unused]] St& st)
 
 namespace lex {
+/// Where number_spec (`digits [ '.' digits* ] | '.' digits`) starting at `b` ends, or nullptr
+/// when none starts there; `point` is set to its '.', or to the end without one.
+inline const char* number_end(const char* b, const char* const e, const char*& point) {
+  const char* p = b;
+  while (p < e && is_digit(*p))
+    ++p;
+  const bool whole = p != b;
+  if (p < e && *p == '.') {
+    point = p;
+    const char* q = p + 1;
+    while (q < e && is_digit(*q))
+      ++q;
+    if (!whole && q == p + 1) return nullptr;  // a lone '.'
+    return q;
+  }
+  point = p;
+  return whole ? p : nullptr;
+}
+
 /// Where star<sep_spec> starting at `p` ends: blanks, '\r', nested ( ) comments (as
 /// paren_comment), and `\` + line end.
 inline const char* separators_end(const char* p, const char* const e) {
@@ -118,33 +149,18 @@ bool rules::when_next<Rule, First...>::match(Input& in, St& st) {
 // number_spec: digits [ '.' digits* ] | '.' digits. Pushes an Op::number leaf.
 NCSIM_HOT_MATCH(number) {
   const char* const b = in.current();
-  const char* const e = in.end();
-  const char* p = b;
-  while (p < e && lex::is_digit(*p))
-    ++p;
-  const bool whole = p != b;
-  const char* point = nullptr;  // the '.', if any
-  if (p < e && *p == '.') {
-    point = p;
-    const char* q = p + 1;
-    while (q < e && lex::is_digit(*q))
-      ++q;
-    if (!whole && q == p + 1) return false;  // a lone '.'
-    p = q;
-  } else if (!whole) {
-    return false;
-  }
+  const char* point = nullptr;
+  const char* const p = lex::number_end(b, in.end(), point);
+  if (p == nullptr) return false;
   const auto length = static_cast<std::size_t>(p - b);
   if constexpr (A == pegtl::apply_mode::action) {
-    const std::optional<double> value = detail::decimal_value(b, point != nullptr ? point : p, p);
-    if (!value) {
+    const ast::NodeIndex node = detail::add_number(st, b, point, p);
+    if (node == ast::kNoNode) {
       st.fail_message(b, "NC1005",
                       "number out of range: " + std::string(b, std::min<std::size_t>(length, 24)) +
                           (length > 24 ? "..." : "") + " is beyond +-1.8e308");
     }
-    ast::ExprNode n = detail::leaf(ast::Op::number, st.loc(b), std::string_view(b, length));
-    n.value = *value;
-    st.push(n);
+    st.stack.push_back(node);
   }
   in.bump(length);
   return true;
