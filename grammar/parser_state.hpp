@@ -100,6 +100,7 @@ struct State {
     calls.clear();
     sign = 0;
     local_header = false;
+    word_name = {};  // a header without a name reads it
     word_value = ast::kNoNode;
     word_extra = ast::kNoNode;
     g_has_params = false;

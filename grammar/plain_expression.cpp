@@ -99,11 +99,10 @@ class PlainReader {
     if (p_ == e_) return kNoNode;
     if (*p_ == '[') return group();
     if (lex::is_alpha(*p_)) return call();
-    const char* point = nullptr;
-    const char* const end = lex::number_end(p_, e_, point);
-    if (end == nullptr) return kNoNode;
-    const NodeIndex value = detail::add_number(st_, p_, point, end);  // kNoNode: NC1005
-    p_ = end;
+    const lex::Decimal number = lex::read_decimal(p_, e_);
+    if (number.end == nullptr) return kNoNode;
+    const NodeIndex value = detail::add_number(st_, p_, number);  // kNoNode: NC1005
+    p_ = number.end;
     return value;
   }
 
