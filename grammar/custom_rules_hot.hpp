@@ -172,46 +172,41 @@ NCSIM_HOT_MATCH(number) {
   return true;
 }
 
+namespace detail {
+/// address_kind's table: the word kind of each character, kNotAddress where there is none.
+inline constexpr auto kNotAddress = static_cast<ast::WordKind>(0xFF);
+constexpr std::array<ast::WordKind, 256> address_kinds() {
+  std::array<ast::WordKind, 256> kinds{};
+  kinds.fill(kNotAddress);
+  using K = ast::WordKind;
+  const auto set = [&](char upper, K kind) {
+    kinds[static_cast<unsigned char>(upper)] = kind;
+    kinds[static_cast<unsigned char>(upper - 'A' + 'a')] = kind;
+  };
+  set('M', K::m);
+  set('H', K::h);
+  set('F', K::f);
+  set('E', K::e);
+  set('S', K::s);
+  set('T', K::t);
+  set('D', K::d);
+  set('I', K::i);
+  set('J', K::j);
+  set('K', K::k);
+  set('R', K::r);
+  for (const char axis : {'X', 'Y', 'Z', 'A', 'B', 'C', 'U', 'V', 'W'})
+    set(axis, K::axis);
+  return kinds;
+}
+inline constexpr std::array<ast::WordKind, 256> kAddressKinds = address_kinds();
+}  // namespace detail
+
 /// The word kind of the one-letter address `c` (address_head's letters: M H F E S T D I J K R
 /// and the axes X Y Z A B C U V W, either case), or nothing.
 inline std::optional<ast::WordKind> address_kind(char c) {
-  using K = ast::WordKind;
-  switch (ascii_upper(c)) {
-    case 'M':
-      return K::m;
-    case 'H':
-      return K::h;
-    case 'F':
-      return K::f;
-    case 'E':
-      return K::e;
-    case 'S':
-      return K::s;
-    case 'T':
-      return K::t;
-    case 'D':
-      return K::d;
-    case 'I':
-      return K::i;
-    case 'J':
-      return K::j;
-    case 'K':
-      return K::k;
-    case 'R':
-      return K::r;
-    case 'X':
-    case 'Y':
-    case 'Z':
-    case 'A':
-    case 'B':
-    case 'C':
-    case 'U':
-    case 'V':
-    case 'W':
-      return K::axis;
-    default:
-      return std::nullopt;
-  }
+  const ast::WordKind kind = detail::kAddressKinds[static_cast<unsigned char>(c)];
+  if (kind == detail::kNotAddress) return std::nullopt;
+  return kind;
 }
 
 /// address_word on its common shape, a one-letter head followed at once by a number with or

@@ -117,6 +117,10 @@ struct State {
     if (!multiline) {
       return {base.line, base.column + static_cast<std::uint32_t>(p - begin)};
     }
+    return loc_across_lines(p);
+  }
+  /// loc() in a block that holds line ends (continuation lines): counts them up to `p`.
+  core::SourceLoc loc_across_lines(const char* p) const {
     core::SourceLoc at = base;
     for (const char* q = begin; q < p; ++q) {
       if (*q == '\n') {
