@@ -89,10 +89,12 @@ inline std::optional<double> decimal_value(const char* begin, const lex::Decimal
 inline ast::NodeIndex add_number(State& st, const char* begin, const lex::Decimal& d) {
   const std::optional<double> value = decimal_value(begin, d);
   if (!value) return ast::kNoNode;
-  ast::ExprNode n = leaf(ast::Op::number, st.loc(begin),
-                         std::string_view(begin, static_cast<std::size_t>(d.end - begin)));
+  auto& exprs = st.block->exprs;
+  ast::ExprNode& n = exprs.emplace_back();  // Op::number
+  n.loc = st.loc(begin);
   n.value = *value;
-  return st.add(n);
+  n.text = std::string_view(begin, static_cast<std::size_t>(d.end - begin));
+  return static_cast<ast::NodeIndex>(exprs.size() - 1);
 }
 
 /// NC1005 on the literal [b, end), as rules::number reports it.
@@ -117,6 +119,11 @@ bool try_alternative(Input& in, St& st) {
   bool rules::rule::match(Input& in, [[maybe_unused]] St& st)
 
 namespace lex {
+/// True when a separator (rules::sep_spec) may start with `c`.
+inline bool starts_separator(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '(' || c == '\\';
+}
+
 /// Where star<sep_spec> starting at `p` ends: blanks, '\r', nested ( ) comments (as
 /// paren_comment), and `\` + line end.
 inline const char* separators_end(const char* p, const char* const e) {

@@ -25,16 +25,17 @@ class PlainReader {
   NodeIndex group() {
     ++p_;
     const NodeIndex value = expression();
-    if (value == kNoNode || !next_is(']')) return kNoNode;
+    if (value == kNoNode || peek() != ']') return kNoNode;
     ++p_;
     return value;
   }
 
  private:
-  /// Skips separators (rules::ws); true when the next character is `c`.
-  bool next_is(char c) {
+  /// Skips separators (rules::ws) and returns the next character, '\0' at the end.
+  char peek() {
+    if (p_ < e_ && !lex::starts_separator(*p_)) return *p_;
     p_ = lex::separators_end(p_, e_);
-    return p_ < e_ && *p_ == c;
+    return p_ < e_ ? *p_ : '\0';
   }
 
   // expression: the sum. The levels above it (comparisons, bit and logical operators) leave
@@ -44,7 +45,9 @@ class PlainReader {
   // sum: product (ws ('+' | '-') ws product)* (rules::sum, rules::add_tail).
   NodeIndex sum() {
     NodeIndex lhs = product();
-    while (lhs != kNoNode && (next_is('+') || next_is('-'))) {
+    while (lhs != kNoNode) {
+      const char c = peek();
+      if (c != '+' && c != '-') break;
       const char* const at = p_++;
       const NodeIndex rhs = product();
       if (rhs == kNoNode) return kNoNode;
@@ -57,8 +60,9 @@ class PlainReader {
   // leaves the shape.
   NodeIndex product() {
     NodeIndex lhs = operand();
-    while (lhs != kNoNode && (next_is('*') || next_is('/'))) {
-      if (*p_ == '*' && p_ + 1 < e_ && p_[1] == '*') break;  // op_mul is not `**`
+    while (lhs != kNoNode) {
+      const char c = peek();
+      if ((c != '*' && c != '/') || (c == '*' && p_ + 1 < e_ && p_[1] == '*')) break;  // not `**`
       const char* const at = p_++;
       const NodeIndex rhs = operand();
       if (rhs == kNoNode) return kNoNode;
@@ -72,7 +76,7 @@ class PlainReader {
   NodeIndex operand() {
     if (++depth_ + st_.depth > kMaxPlainNesting) return kNoNode;
     NodeIndex value = kNoNode;
-    if (next_is('-') || next_is('+')) {
+    if (const char c = peek(); c == '-' || c == '+') {
       const char* const at = p_++;
       const NodeIndex a = operand();
       if (a != kNoNode) value = unary(at, a);
@@ -86,7 +90,7 @@ class PlainReader {
   // power: primary [ws '**' ws operand] (rules::power, rules::power_tail); at a token.
   NodeIndex power() {
     const NodeIndex base = primary();
-    if (base == kNoNode || !next_is('*') || p_ + 1 == e_ || p_[1] != '*') return base;
+    if (base == kNoNode || peek() != '*' || p_ + 1 == e_ || p_[1] != '*') return base;
     const char* const at = p_;
     p_ += 2;
     const NodeIndex exponent = operand();
@@ -114,7 +118,7 @@ class PlainReader {
       ++p_;
     const std::string_view text(name, static_cast<std::size_t>(p_ - name));
     const ast::Function function = function_by_name(text);
-    if (function == ast::Function::none || !next_is('[')) return kNoNode;
+    if (function == ast::Function::none || peek() != '[') return kNoNode;
     ++p_;
     NodeIndex first = kNoNode;
     NodeIndex last = kNoNode;
@@ -127,8 +131,9 @@ class PlainReader {
         st_.block->exprs[last].next = argument;
       }
       last = argument;
-      if (next_is(']')) break;
-      if (!next_is(',')) return kNoNode;
+      const char next = peek();
+      if (next == ']') break;
+      if (next != ',') return kNoNode;
       ++p_;
     }
     ++p_;
