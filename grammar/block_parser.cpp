@@ -4,6 +4,7 @@
 #include <type_traits>
 
 #include "grammar/custom_rules.hpp"
+#include "grammar/plain_expression.hpp"
 
 namespace ncsim::grammar {
 namespace {
@@ -83,13 +84,15 @@ bool plain_address_letter(char c) {
 }
 
 // The plain shape, the shape of most blocks: an optional block number `N<digits>[:]`, then
-// words `G<digits>`, `<letter><number>` or `<letter><sign><number>` (letter:
-// plain_address_letter), each followed by separators or at once by the next word; separators
-// are blanks and `( ... )` comments (as rules::ws reads them); a `;` comment may end the block.
-// Nothing else: no `=`, `[`, `\\`, skip level, label, header, statement, call or $GOTO.
-// rules::block reads such a block through opt<block_number> and word_list, each G word through
-// g_word (no `= value`; g_params matches empty without a `[`) and each other word through
-// plain_address_word, with no other rule matching anything or acting
+// words `G<digits>`, `<letter><number>`, `<letter><sign><number>` or a letter, an optional sign
+// and at once a bracketed expression of the plain shape (`X[[1.5+2]/2]`, `Y-[ABS[3]-10]`;
+// grammar/plain_expression.hpp) (letter: plain_address_letter), each followed by separators or
+// at once by the next word; separators are blanks and `( ... )` comments (as rules::ws reads
+// them); a `;` comment may end the block. Nothing else: no `=`, other `[`, `\\`, skip level,
+// label, header, statement, call or $GOTO. rules::block reads such a block through
+// opt<block_number> and word_list, each G word through g_word (no `= value`; g_params matches
+// empty without a `[`) and each other word through plain_address_word or (a bracketed value)
+// address_word, with no other rule matching anything or acting
 // (BlockParser::Impl::read_plain_block).
 
 }  // namespace
@@ -231,12 +234,39 @@ struct BlockParser::Impl {
         in.bump(n);
         detail::add_g_word(state, begin, std::string_view(begin, n));
       } else if (!plain_address_letter(letter) ||
-                 !plain_address_word<pegtl::apply_mode::action, Action, Control>(in, state)) {
-        return false;  // plain_address_word reads or does nothing
+                 !(plain_address_word<pegtl::apply_mode::action, Action, Control>(in, state) ||
+                   read_bracket_word(in))) {
+        return false;  // plain_address_word and read_bracket_word read or do nothing
       }
       separators();
     }
     Action<rules::word_list>::apply(in, state);
+    return true;
+  }
+
+  /// A word of the plain shape whose value is a bracketed expression, `X[[63.607+33.715]/2]`,
+  /// `Y-[ABS[1]-10]`: the letter (plain_address_letter), an optional sign and at once a group
+  /// that read_plain_group takes. What rules::word does on it: axis_command does not match
+  /// (bracket_axis wants a command keyword after the `[`; the plain shape starts with a number,
+  /// '[', a sign or a function name, none of which is one), so address_word reads it:
+  /// address_head, sign, address_operand's group, then address_value's and address_word's
+  /// actions. False, with nothing read or done, on any other shape.
+  bool read_bracket_word(Input& in) {
+    const char* const value = in.current() + 1;  // after the one-letter head
+    const char* const e = in.end();
+    if (value >= e) return false;
+    const char sign = *value == '-' || *value == '+' ? *value : '\0';
+    const char* const open = sign != '\0' ? value + 1 : value;
+    if (open >= e || *open != '[') return false;
+    const char* const close = read_plain_group(open, e, state);
+    if (close == nullptr) return false;
+    // matches: every plain_address_letter is an address_head letter
+    rules::address_head::match<pegtl::apply_mode::action, pegtl::rewind_mode::dontcare, Action,
+                               Control>(in, state);
+    state.sign = sign;  // Action<rules::sign>, or no sign
+    in.bump(static_cast<std::size_t>(close - value));
+    state.end_address_value(state.loc(value));  // Action<rules::address_value>
+    state.add_address_word();                   // Action<rules::address_word>
     return true;
   }
 

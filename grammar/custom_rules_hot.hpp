@@ -16,6 +16,40 @@
 
 namespace ncsim::grammar {
 
+namespace lex {
+/// A decimal literal (number_spec: `digits [ '.' digits* ] | '.' digits`), read in one pass.
+struct Decimal {
+  const char* end = nullptr;    ///< after the literal; nullptr when none starts where it was read
+  const char* point = nullptr;  ///< its '.', or `end` without one
+  std::uint64_t mantissa = 0;   ///< its digits as one integer, exact up to 19 digits (mod 2^64)
+  std::size_t digits = 0;       ///< how many digits it has
+};
+
+inline Decimal read_decimal(const char* const b, const char* const e) {
+  Decimal d;
+  std::uint64_t m = 0;
+  const char* p = b;
+  for (; p < e && is_digit(*p); ++p)
+    m = m * 10 + static_cast<std::uint64_t>(*p - '0');
+  const bool whole = p != b;
+  d.point = p;
+  if (p < e && *p == '.') {
+    const char* q = p + 1;
+    for (; q < e && is_digit(*q); ++q)
+      m = m * 10 + static_cast<std::uint64_t>(*q - '0');
+    if (!whole && q == p + 1) return d;  // a lone '.'
+    d.end = q;
+  } else if (whole) {
+    d.end = p;
+  } else {
+    return d;
+  }
+  d.mantissa = m;
+  d.digits = static_cast<std::size_t>(d.end - b) - (d.point < d.end ? 1 : 0);
+  return d;
+}
+}  // namespace lex
+
 namespace detail {
 /// 10^0 ... 10^22: the powers of ten a double holds exactly.
 inline constexpr std::array<double, 23> kExactPow10 = {
@@ -24,41 +58,51 @@ inline constexpr std::array<double, 23> kExactPow10 = {
 /// Largest integer up to which every integer is exactly a double (2^53).
 inline constexpr std::uint64_t kExactMantissa = std::uint64_t{1} << 53;
 /// At most this many digits are accumulated in a uint64 without overflow.
-inline constexpr int kMaxFastDigits = 19;
+inline constexpr std::size_t kMaxFastDigits = 19;
 
-/// Value of a decimal literal `[digits][.digits]` (the text rules::number matched; `point` is
-/// its '.', or `end` without one). When the digits form an integer m <= 2^53 and there are k <=
-/// 22 decimals, m and 10^k are exact doubles and one IEEE division is correctly rounded, so
-/// m / 10^k is bit-identical to std::from_chars (Clinger's fast path); every other literal goes
-/// through from_chars. Nothing when the literal is beyond the range of a double; a literal below
-/// the smallest double rounds to 0, as from_chars would round it.
-inline std::optional<double> decimal_value(const char* begin, const char* point, const char* end) {
-  const auto whole = static_cast<std::size_t>(point - begin);
-  const std::size_t decimals = point < end ? static_cast<std::size_t>(end - point) - 1 : 0;
-  if (whole + decimals <= static_cast<std::size_t>(kMaxFastDigits)) {
-    // The digits before and after the point, in order, as one integer (at most 19 digits).
-    std::uint64_t mantissa = 0;
-    for (const char* p = begin; p < point; ++p)
-      mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p - '0');
-    if (point < end) {
-      for (const char* p = point + 1; p < end; ++p)
-        mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p - '0');
-    }
-    if (mantissa <= kExactMantissa && decimals < kExactPow10.size()) {
-      return static_cast<double>(mantissa) / kExactPow10[decimals];
-    }
+/// Value of the decimal literal `d` read at `begin`. When its digits form an integer m <= 2^53
+/// (at most 19 digits, so k <= 19 decimals), m and 10^k are exact doubles and one IEEE division
+/// is correctly rounded, so m / 10^k is bit-identical to std::from_chars (Clinger's fast path);
+/// every other literal goes through from_chars. Nothing when the literal is beyond the range of
+/// a double; a literal below the smallest double rounds to 0, as from_chars would round it.
+inline std::optional<double> decimal_value(const char* begin, const lex::Decimal& d) {
+  if (d.digits <= kMaxFastDigits && d.mantissa <= kExactMantissa) {
+    const std::size_t decimals =
+        d.point < d.end ? static_cast<std::size_t>(d.end - d.point) - 1 : 0;
+    return static_cast<double>(d.mantissa) / kExactPow10[decimals];
   }
   double value = 0.0;
-  if (std::from_chars(begin, end, value).ec == std::errc::result_out_of_range) {
+  if (std::from_chars(begin, d.end, value).ec == std::errc::result_out_of_range) {
     // Out of range is overflow when a significant digit stands before the point, else
     // underflow (0.000...1), which is 0.
     const char* p = begin;
-    while (p < end && *p == '0')
+    while (p < d.end && *p == '0')
       ++p;
-    if (p < end && *p != '.') return std::nullopt;
+    if (p < d.end && *p != '.') return std::nullopt;
     return 0.0;
   }
   return value;
+}
+
+/// Adds the Op::number node of the literal `d` read at `begin` as rules::number does; kNoNode,
+/// with nothing added, when it is beyond the range of a double (NC1005).
+inline ast::NodeIndex add_number(State& st, const char* begin, const lex::Decimal& d) {
+  const std::optional<double> value = decimal_value(begin, d);
+  if (!value) return ast::kNoNode;
+  auto& exprs = st.block->exprs;
+  ast::ExprNode& n = exprs.emplace_back();  // Op::number
+  n.loc = st.loc(begin);
+  n.value = *value;
+  n.text = std::string_view(begin, static_cast<std::size_t>(d.end - begin));
+  return static_cast<ast::NodeIndex>(exprs.size() - 1);
+}
+
+/// NC1005 on the literal [b, end), as rules::number reports it.
+[[noreturn]] inline void number_out_of_range(const State& st, const char* b, const char* end) {
+  const auto length = static_cast<std::size_t>(end - b);
+  st.fail_message(b, "NC1005",
+                  "number out of range: " + std::string(b, std::min<std::size_t>(length, 24)) +
+                      (length > 24 ? "..." : "") + " is beyond +-1.8e308");
 }
 }  // namespace detail
 
@@ -75,6 +119,11 @@ bool try_alternative(Input& in, St& st) {
   bool rules::rule::match(Input& in, [[maybe_unused]] St& st)
 
 namespace lex {
+/// True when a separator (rules::sep_spec) may start with `c`.
+inline bool starts_separator(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '(' || c == '\\';
+}
+
 /// Where star<sep_spec> starting at `p` ends: blanks, '\r', nested ( ) comments (as
 /// paren_comment), and `\` + line end.
 inline const char* separators_end(const char* p, const char* const e) {
@@ -118,43 +167,63 @@ bool rules::when_next<Rule, First...>::match(Input& in, St& st) {
 // number_spec: digits [ '.' digits* ] | '.' digits. Pushes an Op::number leaf.
 NCSIM_HOT_MATCH(number) {
   const char* const b = in.current();
-  const char* const e = in.end();
-  const char* p = b;
-  while (p < e && lex::is_digit(*p))
-    ++p;
-  const bool whole = p != b;
-  const char* point = nullptr;  // the '.', if any
-  if (p < e && *p == '.') {
-    point = p;
-    const char* q = p + 1;
-    while (q < e && lex::is_digit(*q))
-      ++q;
-    if (!whole && q == p + 1) return false;  // a lone '.'
-    p = q;
-  } else if (!whole) {
-    return false;
-  }
-  const auto length = static_cast<std::size_t>(p - b);
+  const lex::Decimal d = lex::read_decimal(b, in.end());
+  if (d.end == nullptr) return false;
+  const auto length = static_cast<std::size_t>(d.end - b);
   if constexpr (A == pegtl::apply_mode::action) {
-    const std::optional<double> value = detail::decimal_value(b, point != nullptr ? point : p, p);
-    if (!value) {
-      st.fail_message(b, "NC1005",
-                      "number out of range: " + std::string(b, std::min<std::size_t>(length, 24)) +
-                          (length > 24 ? "..." : "") + " is beyond +-1.8e308");
-    }
-    ast::ExprNode n = detail::leaf(ast::Op::number, st.loc(b), std::string_view(b, length));
-    n.value = *value;
-    st.push(n);
+    const ast::NodeIndex node = detail::add_number(st, b, d);
+    if (node == ast::kNoNode) detail::number_out_of_range(st, b, d.end);
+    st.stack.push_back(node);
   }
   in.bump(length);
   return true;
 }
 
+namespace detail {
+/// address_kind's table: the word kind of each character, kNotAddress where there is none.
+inline constexpr auto kNotAddress = static_cast<ast::WordKind>(0xFF);
+constexpr std::array<ast::WordKind, 256> address_kinds() {
+  std::array<ast::WordKind, 256> kinds{};
+  kinds.fill(kNotAddress);
+  using K = ast::WordKind;
+  const auto set = [&](char upper, K kind) {
+    kinds[static_cast<unsigned char>(upper)] = kind;
+    kinds[static_cast<unsigned char>(upper - 'A' + 'a')] = kind;
+  };
+  set('M', K::m);
+  set('H', K::h);
+  set('F', K::f);
+  set('E', K::e);
+  set('S', K::s);
+  set('T', K::t);
+  set('D', K::d);
+  set('I', K::i);
+  set('J', K::j);
+  set('K', K::k);
+  set('R', K::r);
+  for (const char axis : {'X', 'Y', 'Z', 'A', 'B', 'C', 'U', 'V', 'W'})
+    set(axis, K::axis);
+  return kinds;
+}
+inline constexpr std::array<ast::WordKind, 256> kAddressKinds = address_kinds();
+}  // namespace detail
+
+/// The word kind of the one-letter address `c` (address_head's letters: M H F E S T D I J K R
+/// and the axes X Y Z A B C U V W, either case), or nothing.
+inline std::optional<ast::WordKind> address_kind(char c) {
+  const ast::WordKind kind = detail::kAddressKinds[static_cast<unsigned char>(c)];
+  if (kind == detail::kNotAddress) return std::nullopt;
+  return kind;
+}
+
 /// address_word on its common shape, a one-letter head followed at once by a number with or
-/// without a sign (`X-1.5`, `Y20`, `F.5`): the same characters read and the same actions done as
-/// address_word's (address_head; sign; number; address_value's and address_word's actions), but
-/// without stepping through its sequence of optional parts. False, with nothing read or done,
-/// on any other shape: address_word itself then decides.
+/// without a sign (`X-1.5`, `Y20`, `F.5`): the same characters read and the same block built as
+/// by address_word (address_head; sign; number; address_value's and address_word's actions: a
+/// `-` folds into the literal, which then starts at the sign), in one step, without the State's
+/// operand stack and word fields. False, with nothing read or done, on any other shape
+/// (address_word itself then decides); a literal beyond the range of a double is NC1005, as
+/// rules::number reports it. (`V.` followed by a letter, a variable, is no such shape: no number
+/// follows the V.)
 template <pegtl::apply_mode A, template <typename...> class Act, template <typename...> class Ctl,
           typename Input, typename St>
 bool plain_address_word(Input& in, St& st) {
@@ -162,22 +231,28 @@ bool plain_address_word(Input& in, St& st) {
   const char* const e = in.end();
   const char* const value = head + 1;  // the operand starts right after the one-letter head
   if (value >= e) return false;
+  const std::optional<ast::WordKind> kind = address_kind(*head);
+  if (!kind) return false;
   const char sign = *value == '-' || *value == '+' ? *value : '\0';
-  const char* const d = sign != '\0' ? value + 1 : value;
-  // number_spec matches here: digits first, or '.' and a digit
-  if (d >= e || !(lex::is_digit(*d) || (*d == '.' && d + 1 < e && lex::is_digit(d[1])))) {
-    return false;
-  }
-  if (!rules::address_head::match<A, pegtl::rewind_mode::dontcare, Act, Ctl>(in, st)) return false;
-  if (sign != '\0') {
-    if constexpr (A == pegtl::apply_mode::action) st.sign = sign;  // Action<rules::sign>
-    in.bump(1);
-  }
-  rules::number::match<A, pegtl::rewind_mode::dontcare, Act, Ctl>(in, st);  // matches (above)
+  const char* const digits = sign != '\0' ? value + 1 : value;
+  const lex::Decimal number = lex::read_decimal(digits, e);
+  if (number.end == nullptr) return false;
   if constexpr (A == pegtl::apply_mode::action) {
-    st.end_address_value(st.loc(value));  // Action<rules::address_value>
-    st.add_address_word();                // Action<rules::address_word>
+    const std::optional<double> v = detail::decimal_value(digits, number);
+    if (!v) detail::number_out_of_range(st, digits, number.end);
+    auto& exprs = st.block->exprs;
+    const auto node = static_cast<ast::NodeIndex>(exprs.size());
+    ast::ExprNode& n = exprs.emplace_back();  // Op::number
+    n.loc = st.loc(sign == '-' ? value : digits);
+    n.value = sign == '-' ? -*v : *v;
+    n.text = std::string_view(digits, static_cast<std::size_t>(number.end - digits));
+    ast::Word& w = st.block->words.emplace_back();
+    w.kind = *kind;
+    w.loc = st.loc(head);
+    w.name = std::string_view(head, 1);
+    w.value = node;
   }
+  in.bump(static_cast<std::size_t>(number.end - head));
   return true;
 }
 

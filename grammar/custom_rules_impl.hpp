@@ -52,54 +52,15 @@ inline bool is_axis_letter(char c) {
 // One-letter addresses (§2.1). `V.` followed by a letter starts a variable, not an axis word.
 NCSIM_CUSTOM_MATCH(address_head) {
   if (in.empty()) return false;
-  const char c = ascii_upper(in.peek_char());
-  using K = ast::WordKind;
-  K kind;
-  switch (c) {
-    case 'M':
-      kind = K::m;
-      break;
-    case 'H':
-      kind = K::h;
-      break;
-    case 'F':
-      kind = K::f;
-      break;
-    case 'E':
-      kind = K::e;
-      break;
-    case 'S':
-      kind = K::s;
-      break;
-    case 'T':
-      kind = K::t;
-      break;
-    case 'D':
-      kind = K::d;
-      break;
-    case 'I':
-      kind = K::i;
-      break;
-    case 'J':
-      kind = K::j;
-      break;
-    case 'K':
-      kind = K::k;
-      break;
-    case 'R':
-      kind = K::r;
-      break;
-    default:
-      if (!is_axis_letter(c)) return false;
-      // `V.` followed by a letter starts a variable (V.P.X), not a V axis word
-      if (c == 'V' && in.size() > 2 && in.peek_char(1) == '.' && lex::is_alpha(in.peek_char(2))) {
-        return false;
-      }
-      kind = K::axis;
-      break;
+  const std::optional<ast::WordKind> kind = address_kind(in.peek_char());
+  if (!kind) return false;
+  // `V.` followed by a letter starts a variable (V.P.X), not a V axis word
+  if (ascii_upper(in.peek_char()) == 'V' && in.size() > 2 && in.peek_char(1) == '.' &&
+      lex::is_alpha(in.peek_char(2))) {
+    return false;
   }
   if constexpr (A == pegtl::apply_mode::action) {
-    st.word_kind = kind;
+    st.word_kind = *kind;
     st.word_loc = st.loc(in.current());
     st.word_name = std::string_view(in.current(), 1);
   }

@@ -223,8 +223,10 @@ bool iequals(std::string_view a, std::string_view b) {
 }
 
 ast::Function function_by_name(std::string_view name) {
+  if (name.empty()) return ast::Function::none;
+  const char first = ascii_upper(name[0]);
   for (const auto& f : kFunctions) {
-    if (iequals(f.name, name)) return f.function;
+    if (f.name[0] == first && iequals(f.name, name)) return f.function;
   }
   return ast::Function::none;
 }

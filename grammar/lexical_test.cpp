@@ -282,10 +282,6 @@ TEST_CASE("lines between #COMMENT BEGIN and END are not parsed") {
   CHECK(check("#COMMENT BEGIN\nX1\n") == std::vector<std::string>{"1:1 NC2016"});
 }
 
-// Blocks of the plain shape (N10 G01 Y20 (comment)) are read by a shortcut past
-// rules::block (block_parser.cpp, read_plain_block); BlockParser::use_shortcut(false) sends them
-// through the whole grammar. Both must give the same block, to the bit, and the same
-// diagnostics.
 void same_as_whole_grammar(const std::string& text) {
   CAPTURE(text);
   const Parsed fast(text);
@@ -302,6 +298,7 @@ void same_as_whole_grammar(const std::string& text) {
     CHECK(a.loc.line == b.loc.line);
     CHECK(a.loc.column == b.loc.column);
     CHECK(a.value == b.value);
+    CHECK(a.extra == b.extra);
     CHECK(a.code == b.code);
     CHECK(a.has_params == b.has_params);
   }
@@ -317,14 +314,23 @@ void same_as_whole_grammar(const std::string& text) {
     const ast::ExprNode& a = fast.block.exprs[i];
     const ast::ExprNode& b = full.block.exprs[i];
     CHECK(a.op == b.op);
+    CHECK(a.function == b.function);
+    CHECK(a.var_class == b.var_class);
+    CHECK(a.loc.line == b.loc.line);
     CHECK(a.loc.column == b.loc.column);
     CHECK(std::bit_cast<std::uint64_t>(a.value) == std::bit_cast<std::uint64_t>(b.value));
     CHECK(a.text == b.text);
+    if (!a.text.empty()) {  // the same characters of the block, not a copy
+      CHECK(a.text.data() - fast.block.text.data() == b.text.data() - full.block.text.data());
+    }
     CHECK(a.a == b.a);
+    CHECK(a.b == b.b);
+    CHECK(a.next == b.next);
   }
   REQUIRE(fast.diags.items().size() == full.diags.items().size());
   for (std::size_t d = 0; d < fast.diags.items().size(); ++d) {
     CHECK(fast.diags.items()[d].id == full.diags.items()[d].id);
+    CHECK(fast.diags.items()[d].loc.line == full.diags.items()[d].loc.line);
     CHECK(fast.diags.items()[d].loc.column == full.diags.items()[d].loc.column);
     CHECK(fast.diags.items()[d].message == full.diags.items()[d].message);
   }

@@ -100,6 +100,7 @@ struct State {
     calls.clear();
     sign = 0;
     local_header = false;
+    word_name = {};  // a header without a name reads it
     word_value = ast::kNoNode;
     word_extra = ast::kNoNode;
     g_has_params = false;
@@ -116,6 +117,10 @@ struct State {
     if (!multiline) {
       return {base.line, base.column + static_cast<std::uint32_t>(p - begin)};
     }
+    return loc_across_lines(p);
+  }
+  /// loc() in a block that holds line ends (continuation lines): counts them up to `p`.
+  core::SourceLoc loc_across_lines(const char* p) const {
     core::SourceLoc at = base;
     for (const char* q = begin; q < p; ++q) {
       if (*q == '\n') {

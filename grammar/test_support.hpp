@@ -39,6 +39,12 @@ inline std::vector<std::string> check(const std::string& text) {
   return out;
 }
 
+/// Blocks of the plain shape (N10 G01 Y[ABS[2]-1] (comment)) are read by a shortcut past
+/// rules::block (block_parser.cpp, read_plain_block); BlockParser::use_shortcut(false) sends them
+/// through the whole grammar. Checks that both give the same block, to the bit, and the same
+/// diagnostics (defined in lexical_test.cpp).
+void same_as_whole_grammar(const std::string& text);
+
 /// Evaluates the constant part of an expression tree (numbers and operators), for
 /// precedence tests.
 double eval(const ast::Block& b, ast::NodeIndex i);

@@ -33,7 +33,7 @@ struct Action<rules::g_code> {
 namespace detail {
 /// Action<rules::g_word> on the word's text `t` starting at `begin` (also the block shortcut's).
 inline void add_g_word(State& st, const char* begin, std::string_view t) {
-  ast::Word w;
+  ast::Word& w = st.block->words.emplace_back();
   w.kind = ast::WordKind::g;
   w.loc = st.loc(begin);
   w.code = st.g_code;
@@ -47,7 +47,6 @@ inline void add_g_word(State& st, const char* begin, std::string_view t) {
   w.item_count = st.g_item_count;
   st.word_value = ast::kNoNode;
   st.g_has_params = false;
-  st.add_word(w);
 }
 }  // namespace detail
 
@@ -280,19 +279,22 @@ namespace detail {
 /// Action<rules::block_number> on the number's text `t` starting at `begin` (also the block
 /// shortcut's).
 inline void add_block_number(State& st, const char* begin, std::string_view t) {
-  ast::BlockNumber n;
-  n.loc = st.loc(begin);
   if (t.size() > 1 && t[1] == '[') {
+    ast::BlockNumber& n = st.block->number.emplace();
+    n.loc = st.loc(begin);
     n.expr = st.word_value;
     st.word_value = ast::kNoNode;
-  } else {
-    n.is_label = t.back() == ':';
-    n.digits = t.substr(1, t.size() - 1 - (n.is_label ? 1 : 0));
-    const std::optional<std::uint32_t> number = parse_block_number(n.digits);
-    if (!number) st.fail_message(begin, "NC1005", "block number out of range: at most 4294967295");
-    n.number = *number;
+    return;
   }
-  st.block->number = n;
+  const bool is_label = t.back() == ':';
+  const std::string_view digits = t.substr(1, t.size() - 1 - (is_label ? 1 : 0));
+  const std::optional<std::uint32_t> number = parse_block_number(digits);
+  if (!number) st.fail_message(begin, "NC1005", "block number out of range: at most 4294967295");
+  ast::BlockNumber& n = st.block->number.emplace();
+  n.loc = st.loc(begin);
+  n.is_label = is_label;
+  n.digits = digits;
+  n.number = *number;
 }
 }  // namespace detail
 
