@@ -5,7 +5,9 @@
 
 #include <doctest/doctest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <random>
 
@@ -264,4 +266,42 @@ TEST_CASE("an arc whose end lies a tiny angle short of its start is a tiny sweep
   CHECK(Segment::arc(m).length() == doctest::Approx(r * phi).epsilon(1e-6));
   m.arc->clockwise = false;
   CHECK(Segment::arc(m).length() == doctest::Approx(r * (2.0 * kPi - phi)).epsilon(1e-12));
+}
+
+TEST_CASE("a blend's bounds from the AVX2 build are the baseline build's to the bit") {
+  // Session dense3: Segment::bounds of a whole blend runs in an AVX2 build of its loop where
+  // the CPU has it (planner::allow_wide_bounds). Random blends of 1 to 5 axes (the planar
+  // two-axis loop, the general loop, constant and non-metric axes, tiny and huge scales,
+  // folded control polygons near a cusp) give the same bits either way.
+  if (!ncsim::planner::wide_bounds_available())
+    MESSAGE("no AVX2 on this CPU: both runs take the baseline build");
+  std::mt19937 rng(36);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::uniform_int_distribution<int> axes(1, 5);
+  const auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
+  for (int n = 0; n < 3000; ++n) {
+    const auto count = static_cast<std::uint8_t>(axes(rng));
+    const double scale = std::pow(10.0, 4.0 * u(rng));
+    const auto metric = static_cast<ncsim::planner::AxisMask>(rng() % (1U << count));
+    std::array<AxisVec, 6> p{};
+    for (std::size_t i = 0; i < count; ++i) {
+      const bool constant = rng() % 5 == 0;
+      const double c = scale * u(rng);
+      for (std::size_t k = 0; k < 6; ++k)
+        p[k][i] = constant ? c : scale * u(rng);
+    }
+    if (n % 7 == 0) p[3] = p[2];  // a folded polygon
+    const Segment seg = Segment::bezier(count, metric, p);
+    ncsim::planner::allow_wide_bounds(false);
+    const ncsim::planner::DerivativeBounds base = seg.bounds();
+    ncsim::planner::allow_wide_bounds(true);
+    const ncsim::planner::DerivativeBounds wide = seg.bounds();
+    for (std::size_t i = 0; i < ncsim::planner::kMaxAxes; ++i) {
+      REQUIRE(bits(wide.d1[i]) == bits(base.d1[i]));
+      REQUIRE(bits(wide.d2[i]) == bits(base.d2[i]));
+      REQUIRE(bits(wide.d3[i]) == bits(base.d3[i]));
+    }
+    REQUIRE(bits(wide.curvature) == bits(base.curvature));
+    REQUIRE(wide.metric == base.metric);
+  }
 }
