@@ -27,6 +27,33 @@ constexpr std::array<double, 5> kGlX = {-0.9061798459386640, -0.5384693101056831
 constexpr std::array<double, 5> kGlW = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
                                         0.4786286704993665, 0.2369268850561891};
 
+// Two builds of the numeric loops below (blend_bounds, arc_length_table): the baseline
+// instruction set and, on x86-64 with g++, AVX2, taken where the CPU has it (4 doubles an
+// instruction instead of 2). Both are the same source inlined into each, with only the IEEE
+// operations of the baseline build (add, sub, mul, div, sqrt, and, compare and select: correctly
+// rounded or exact, the same in every width; AVX2 brings no FMA, and path_bezier.cpp is compiled
+// with -ffp-contract=off), so both give the same values to the bit (test: path_test.cpp,
+// "... the AVX2 build ..."). allow_wide_loops(false) keeps the baseline build (tests).
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define NCSIM_WIDE_LOOPS 1
+#endif
+
+std::atomic<bool> g_wide_loops{true};  // allow_wide_loops()
+
+bool has_avx2() noexcept {
+#ifdef NCSIM_WIDE_LOOPS
+  static const bool avx2 = __builtin_cpu_supports("avx2") != 0;
+  return avx2;
+#else
+  return false;
+#endif
+}
+
+/// The AVX2 build is taken.
+bool wide() noexcept {
+  return has_avx2() && g_wide_loops.load(std::memory_order_relaxed);
+}
+
 /// Bernstein basis of degree M (M + 1 values) at t.
 template <int M>
 std::array<double, M + 1> basis(double t) {
@@ -394,39 +421,23 @@ const Tables& tables() {
   return b;
 }
 
-std::atomic<bool> g_wide_bounds{true};  // allow_wide_bounds()
-
 DerivativeBounds blend_bounds_baseline(const Hodographs& h, std::size_t n, AxisMask metric,
                                        AxisMask moving) {
   return blend_bounds_body(h, n, metric, moving);
 }
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define NCSIM_WIDE_BOUNDS 1
-/// The same source for AVX2: 4 samples an instruction instead of 2. Only the IEEE operations
-/// of the baseline build (add, sub, mul, div, sqrt, and, compare and select: correctly rounded
-/// or exact, the same in every width; AVX2 brings no FMA and path_bezier.cpp is compiled with
-/// -ffp-contract=off), so the same values to the bit (test: path_bezier_test.cpp).
+#ifdef NCSIM_WIDE_LOOPS
+/// The same source for AVX2 (above: NCSIM_WIDE_LOOPS).
 [[gnu::target("avx2")]] DerivativeBounds blend_bounds_avx2(const Hodographs& h, std::size_t n,
                                                            AxisMask metric, AxisMask moving) {
   return blend_bounds_body(h, n, metric, moving);
 }
 #endif
 
-bool has_avx2() noexcept {
-#ifdef NCSIM_WIDE_BOUNDS
-  static const bool avx2 = __builtin_cpu_supports("avx2") != 0;
-  return avx2;
-#else
-  return false;
-#endif
-}
-
 DerivativeBounds blend_bounds(const Hodographs& h, std::size_t n, AxisMask metric,
                               AxisMask moving) {
-#ifdef NCSIM_WIDE_BOUNDS
-  if (has_avx2() && g_wide_bounds.load(std::memory_order_relaxed))
-    return blend_bounds_avx2(h, n, metric, moving);
+#ifdef NCSIM_WIDE_LOOPS
+  if (wide()) return blend_bounds_avx2(h, n, metric, moving);
 #endif
   return blend_bounds_baseline(h, n, metric, moving);
 }
@@ -515,8 +526,9 @@ void to_arc_length(PathPoint& p, std::size_t n, AxisMask metric) {
 /// in registers (summing over j outermost through a node array cost 1.7 times the
 /// instructions; the same values).
 template <int K>
-void arc_length_table(const std::array<double, 9>& beta, const GaussNodes<K>& nodes,
-                      std::array<double, geom::BezierGeom::kTable + 1>& s_at) {
+[[gnu::always_inline]] inline void arc_length_table_body(
+    const std::array<double, 9>& beta, const GaussNodes<K>& nodes,
+    std::array<double, geom::BezierGeom::kTable + 1>& s_at) {
   constexpr double dt = 1.0 / K;
   constexpr std::size_t kNodes = GaussNodes<K>::kNodes;
   std::array<double, kNodes> node_speed;  // every entry written below
@@ -532,6 +544,24 @@ void arc_length_table(const std::array<double, 9>& beta, const GaussNodes<K>& no
       sum += kGlW[q] * node_speed[k * 5 + q];
     s_at[k + 1] = s_at[k] + 0.5 * dt * sum;
   }
+}
+
+#ifdef NCSIM_WIDE_LOOPS
+template <int K>
+[[gnu::target("avx2")]] void arc_length_table_avx2(
+    const std::array<double, 9>& beta, const GaussNodes<K>& nodes,
+    std::array<double, geom::BezierGeom::kTable + 1>& s_at) {
+  arc_length_table_body(beta, nodes, s_at);
+}
+#endif
+
+template <int K>
+void arc_length_table(const std::array<double, 9>& beta, const GaussNodes<K>& nodes,
+                      std::array<double, geom::BezierGeom::kTable + 1>& s_at) {
+#ifdef NCSIM_WIDE_LOOPS
+  if (wide()) return arc_length_table_avx2(beta, nodes, s_at);
+#endif
+  arc_length_table_body(beta, nodes, s_at);
 }
 
 }  // namespace
@@ -751,12 +781,12 @@ DerivativeBounds Segment::bezier_bounds() const noexcept {
   return b;
 }
 
-bool wide_bounds_available() noexcept {
+bool wide_loops_available() noexcept {
   return has_avx2();
 }
 
-void allow_wide_bounds(bool allowed) noexcept {
-  g_wide_bounds.store(allowed, std::memory_order_relaxed);
+void allow_wide_loops(bool allowed) noexcept {
+  g_wide_loops.store(allowed, std::memory_order_relaxed);
 }
 
 }  // namespace ncsim::planner

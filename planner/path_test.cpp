@@ -268,17 +268,23 @@ TEST_CASE("an arc whose end lies a tiny angle short of its start is a tiny sweep
   CHECK(Segment::arc(m).length() == doctest::Approx(r * (2.0 * kPi - phi)).epsilon(1e-12));
 }
 
-TEST_CASE("a blend's bounds from the AVX2 build are the baseline build's to the bit") {
-  // Session dense3: Segment::bounds of a whole blend runs in an AVX2 build of its loop where
-  // the CPU has it (planner::allow_wide_bounds). Random blends of 1 to 5 axes (the planar
-  // two-axis loop, the general loop, constant and non-metric axes, tiny and huge scales,
-  // folded control polygons near a cusp) give the same bits either way.
-  if (!ncsim::planner::wide_bounds_available())
+TEST_CASE("a Bezier curve from the AVX2 build is the baseline build's to the bit") {
+  // Session dense3: the arc-length tables and the bounds of a whole blend run in an AVX2 build of
+  // their loops where the CPU has it (planner::allow_wide_loops). Random blends and spline
+  // pieces of 1 to 5 axes (the planar two-axis loop, the general loop, constant and non-metric
+  // axes, tiny and huge scales, folded control polygons near a cusp) give the same length,
+  // points and bounds either way.
+  if (!ncsim::planner::wide_loops_available())
     MESSAGE("no AVX2 on this CPU: both runs take the baseline build");
   std::mt19937 rng(36);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   std::uniform_int_distribution<int> axes(1, 5);
   const auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
+  const auto same = [&](const AxisVec& a, const AxisVec& b) {
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (bits(a[i]) != bits(b[i])) return false;
+    return true;
+  };
   for (int n = 0; n < 3000; ++n) {
     const auto count = static_cast<std::uint8_t>(axes(rng));
     const double scale = std::pow(10.0, 4.0 * u(rng));
@@ -290,17 +296,23 @@ TEST_CASE("a blend's bounds from the AVX2 build are the baseline build's to the 
       for (std::size_t k = 0; k < 6; ++k)
         p[k][i] = constant ? c : scale * u(rng);
     }
-    if (n % 7 == 0) p[3] = p[2];  // a folded polygon
-    const Segment seg = Segment::bezier(count, metric, p);
-    ncsim::planner::allow_wide_bounds(false);
-    const ncsim::planner::DerivativeBounds base = seg.bounds();
-    ncsim::planner::allow_wide_bounds(true);
-    const ncsim::planner::DerivativeBounds wide = seg.bounds();
-    for (std::size_t i = 0; i < ncsim::planner::kMaxAxes; ++i) {
-      REQUIRE(bits(wide.d1[i]) == bits(base.d1[i]));
-      REQUIRE(bits(wide.d2[i]) == bits(base.d2[i]));
-      REQUIRE(bits(wide.d3[i]) == bits(base.d3[i]));
-    }
+    if (n % 7 == 0) p[3] = p[2];    // a folded polygon
+    const bool piece = n % 3 == 0;  // a spline piece: the 32-interval table
+    const auto build = [&](bool wide) {
+      ncsim::planner::allow_wide_loops(wide);
+      return piece ? Segment::bezier_uneven(count, metric, p) : Segment::bezier(count, metric, p);
+    };
+    const Segment base_seg = build(false);
+    const ncsim::planner::DerivativeBounds base = base_seg.bounds();
+    const Segment wide_seg = build(true);
+    const ncsim::planner::DerivativeBounds wide = wide_seg.bounds();
+    REQUIRE(bits(wide_seg.length()) == bits(base_seg.length()));
+    const double s = wide_seg.length() * 0.37;
+    REQUIRE(same(wide_seg.at(s).x, base_seg.at(s).x));
+    REQUIRE(same(wide_seg.at(s).d2, base_seg.at(s).d2));
+    REQUIRE(same(wide.d1, base.d1));
+    REQUIRE(same(wide.d2, base.d2));
+    REQUIRE(same(wide.d3, base.d3));
     REQUIRE(bits(wide.curvature) == bits(base.curvature));
     REQUIRE(wide.metric == base.metric);
   }
