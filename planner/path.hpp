@@ -85,6 +85,13 @@ struct BezierGeom {
 /// Samples (uniform in the curve parameter) for the derivative bounds of a spline piece.
 inline constexpr std::size_t kSplineBoundSamples = 1024;
 
+/// The Bezier curves' arc-length tables and the bounds of a whole blend (Segment::bounds) run in
+/// an AVX2 build of their loops where the CPU has AVX2 and this is allowed (the default): the
+/// same values to the bit as the baseline build, in about half the instructions
+/// (path_bezier.cpp). Tests switch it off to compare both.
+bool wide_loops_available() noexcept;
+void allow_wide_loops(bool allowed) noexcept;
+
 enum class SegmentKind : std::uint8_t { line, arc, blend, spline };
 
 /// One curve with arc-length parametrisation, restricted to a window [s_lo, s_hi] of its

@@ -9,7 +9,9 @@
 //          sigma'' = ((B2.B2) + (B1.B3) - sigma'^2) / sigma   (dots over the metric axes).
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <cstring>
 
 #include "core/tolerance.hpp"
 #include "planner/minimise.hpp"
@@ -24,6 +26,33 @@ constexpr std::array<double, 5> kGlX = {-0.9061798459386640, -0.5384693101056831
                                         0.5384693101056831, 0.9061798459386640};
 constexpr std::array<double, 5> kGlW = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
                                         0.4786286704993665, 0.2369268850561891};
+
+// Two builds of the numeric loops below (blend_bounds, arc_length_table): the baseline
+// instruction set and, on x86-64 with g++, AVX2, taken where the CPU has it (4 doubles an
+// instruction instead of 2). Both are the same source inlined into each, with only the IEEE
+// operations of the baseline build (add, sub, mul, div, sqrt, and, compare and select: correctly
+// rounded or exact, the same in every width; AVX2 brings no FMA, and path_bezier.cpp is compiled
+// with -ffp-contract=off), so both give the same values to the bit (test: path_test.cpp,
+// "... the AVX2 build ..."). allow_wide_loops(false) keeps the baseline build (tests).
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define NCSIM_WIDE_LOOPS 1
+#endif
+
+std::atomic<bool> g_wide_loops{true};  // allow_wide_loops()
+
+bool has_avx2() noexcept {
+#ifdef NCSIM_WIDE_LOOPS
+  static const bool avx2 = __builtin_cpu_supports("avx2") != 0;
+  return avx2;
+#else
+  return false;
+#endif
+}
+
+/// The AVX2 build is taken.
+bool wide() noexcept {
+  return has_avx2() && g_wide_loops.load(std::memory_order_relaxed);
+}
 
 /// Bernstein basis of degree M (M + 1 values) at t.
 template <int M>
@@ -161,9 +190,10 @@ struct Tables {
   std::array<std::array<double, 5>, kSamples + 1> s4{};
   std::array<std::array<double, 4>, kSamples + 1> s3{};
   std::array<std::array<double, 3>, kSamples + 1> s2{};
-  /// The same values by degree index first (u4[m][k] = s4[k][m]), padded to an even count with
-  /// the last sample repeated: the blend bound loop runs over k innermost (blend_bounds).
-  static constexpr std::size_t kPadded = kSamples + 2;
+  /// The same values by degree index first (u4[m][k] = s4[k][m]), padded to a multiple of 4
+  /// with the last sample repeated: the blend bound loop runs over k innermost (blend_bounds),
+  /// in lanes of 4.
+  static constexpr std::size_t kPadded = kSamples + 4;
   std::array<std::array<double, kPadded>, 5> u4{};
   std::array<std::array<double, kPadded>, 4> u3{};
   std::array<std::array<double, kPadded>, 3> u2{};
@@ -212,9 +242,10 @@ const Tables& tables() {
 /// (0.0 + x is x, except that it turns -0 into +0): a sum differs from the general loop's at
 /// most in the sign of a zero, and no sign of a zero reaches a bound (every bound is the
 /// maximum of |values|, the zeros meet no division, and x + (+-0) is x for x != 0), so the
-/// bounds are the same to the bit.
-DerivativeBounds blend_bounds(const Hodographs& h, std::size_t n, AxisMask metric,
-                              AxisMask moving) {
+/// bounds are the same to the bit. Inlined into a build for the baseline instruction set and,
+/// on x86-64 with g++, one for AVX2 (blend_bounds below).
+[[gnu::always_inline]] inline DerivativeBounds blend_bounds_body(const Hodographs& h, std::size_t n,
+                                                                 AxisMask metric, AxisMask moving) {
   constexpr std::size_t kN = Tables::kPadded;
   const Tables& tab = tables();
   std::array<std::array<double, kN>, kMaxAxes> v1;  // first n rows set
@@ -350,25 +381,37 @@ DerivativeBounds blend_bounds(const Hodographs& h, std::size_t n, AxisMask metri
     c2[k] = 3.0 * sg1 * q4 * m;
     c3[k] = (3.0 * sg1 * sg1 * q4 * iv - sg2 * q4) * m;
   }
-  // The maxima over the samples in kLanes interleaved running maxima, then over the lanes: the
-  // largest of the same |values| (the maximum of a set of numbers >= 0 does not depend on the
-  // order), with the lanes independent so that the loop vectorises.
-  constexpr std::size_t kLanes = 2;
+  // The maxima over the samples: the |values| in one loop, then running maxima in lanes of
+  // kLanes samples (a GNU vector type), then over the lanes. Per lane the select
+  // `x > m ? x : m` is what std::max(m, x) is, also for a NaN x (m stays), and the maximum of
+  // numbers >= 0 does not depend on the order they are taken in, so this is the largest of the
+  // same |values| as a scalar loop gives. With std::max in one loop the compiler left it scalar
+  // (25 instructions a sample, a third of the blend's bounds; session dense3).
+  constexpr std::size_t kLanes = 4;
+  using Lanes = double __attribute__((vector_size(kLanes * sizeof(double))));
   static_assert(kN % kLanes == 0);
-  DerivativeBounds b;  // zero: the bounds of the constant axes
+  DerivativeBounds b;                 // zero: the bounds of the constant axes
+  std::array<double, kN> x1, x2, x3;  // every entry written below
   for (std::size_t i = 0; i < n; ++i) {
     if (!has(moving, i)) continue;
     const std::array<double, kN>& a1 = v1[i];
     const std::array<double, kN>& a2 = v2[i];
     const std::array<double, kN>& a3 = v3[i];
-    std::array<double, kLanes> m1{}, m2{}, m3{};
-    for (std::size_t k = 0; k < kN; k += kLanes)
-      for (std::size_t l = 0; l < kLanes; ++l) {
-        const std::size_t q = k + l;
-        m1[l] = std::max(m1[l], std::abs(a1[q] * inv[q]));
-        m2[l] = std::max(m2[l], std::abs(a2[q] * i2[q] - a1[q] * c1[q]));
-        m3[l] = std::max(m3[l], std::abs(a3[q] * i3[q] - a2[q] * c2[q] + a1[q] * c3[q]));
-      }
+    for (std::size_t q = 0; q < kN; ++q) {
+      x1[q] = std::abs(a1[q] * inv[q]);
+      x2[q] = std::abs(a2[q] * i2[q] - a1[q] * c1[q]);
+      x3[q] = std::abs(a3[q] * i3[q] - a2[q] * c2[q] + a1[q] * c3[q]);
+    }
+    Lanes m1{}, m2{}, m3{};
+    for (std::size_t k = 0; k < kN; k += kLanes) {
+      Lanes y1, y2, y3;
+      std::memcpy(&y1, &x1[k], sizeof y1);
+      std::memcpy(&y2, &x2[k], sizeof y2);
+      std::memcpy(&y3, &x3[k], sizeof y3);
+      m1 = y1 > m1 ? y1 : m1;
+      m2 = y2 > m2 ? y2 : m2;
+      m3 = y3 > m3 ? y3 : m3;
+    }
     for (std::size_t l = 0; l < kLanes; ++l) {
       b.d1[i] = std::max(b.d1[i], m1[l]);
       b.d2[i] = std::max(b.d2[i], m2[l]);
@@ -376,6 +419,27 @@ DerivativeBounds blend_bounds(const Hodographs& h, std::size_t n, AxisMask metri
     }
   }
   return b;
+}
+
+DerivativeBounds blend_bounds_baseline(const Hodographs& h, std::size_t n, AxisMask metric,
+                                       AxisMask moving) {
+  return blend_bounds_body(h, n, metric, moving);
+}
+
+#ifdef NCSIM_WIDE_LOOPS
+/// The same source for AVX2 (above: NCSIM_WIDE_LOOPS).
+[[gnu::target("avx2")]] DerivativeBounds blend_bounds_avx2(const Hodographs& h, std::size_t n,
+                                                           AxisMask metric, AxisMask moving) {
+  return blend_bounds_body(h, n, metric, moving);
+}
+#endif
+
+DerivativeBounds blend_bounds(const Hodographs& h, std::size_t n, AxisMask metric,
+                              AxisMask moving) {
+#ifdef NCSIM_WIDE_LOOPS
+  if (wide()) return blend_bounds_avx2(h, n, metric, moving);
+#endif
+  return blend_bounds_baseline(h, n, metric, moving);
 }
 
 /// |B'|^2 over the metric axes as a degree-8 Bernstein polynomial: the square of each axis's
@@ -462,8 +526,9 @@ void to_arc_length(PathPoint& p, std::size_t n, AxisMask metric) {
 /// in registers (summing over j outermost through a node array cost 1.7 times the
 /// instructions; the same values).
 template <int K>
-void arc_length_table(const std::array<double, 9>& beta, const GaussNodes<K>& nodes,
-                      std::array<double, geom::BezierGeom::kTable + 1>& s_at) {
+[[gnu::always_inline]] inline void arc_length_table_body(
+    const std::array<double, 9>& beta, const GaussNodes<K>& nodes,
+    std::array<double, geom::BezierGeom::kTable + 1>& s_at) {
   constexpr double dt = 1.0 / K;
   constexpr std::size_t kNodes = GaussNodes<K>::kNodes;
   std::array<double, kNodes> node_speed;  // every entry written below
@@ -479,6 +544,24 @@ void arc_length_table(const std::array<double, 9>& beta, const GaussNodes<K>& no
       sum += kGlW[q] * node_speed[k * 5 + q];
     s_at[k + 1] = s_at[k] + 0.5 * dt * sum;
   }
+}
+
+#ifdef NCSIM_WIDE_LOOPS
+template <int K>
+[[gnu::target("avx2")]] void arc_length_table_avx2(
+    const std::array<double, 9>& beta, const GaussNodes<K>& nodes,
+    std::array<double, geom::BezierGeom::kTable + 1>& s_at) {
+  arc_length_table_body(beta, nodes, s_at);
+}
+#endif
+
+template <int K>
+void arc_length_table(const std::array<double, 9>& beta, const GaussNodes<K>& nodes,
+                      std::array<double, geom::BezierGeom::kTable + 1>& s_at) {
+#ifdef NCSIM_WIDE_LOOPS
+  if (wide()) return arc_length_table_avx2(beta, nodes, s_at);
+#endif
+  arc_length_table_body(beta, nodes, s_at);
 }
 
 }  // namespace
@@ -696,6 +779,14 @@ DerivativeBounds Segment::bezier_bounds() const noexcept {
   b.curvature = metric_norm(b.d2);  // the per-axis maxima bound |x''| over the metric axes
   b.metric = metric_;
   return b;
+}
+
+bool wide_loops_available() noexcept {
+  return has_avx2();
+}
+
+void allow_wide_loops(bool allowed) noexcept {
+  g_wide_loops.store(allowed, std::memory_order_relaxed);
 }
 
 }  // namespace ncsim::planner

@@ -5,7 +5,9 @@
 
 #include <doctest/doctest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <random>
 
@@ -264,4 +266,54 @@ TEST_CASE("an arc whose end lies a tiny angle short of its start is a tiny sweep
   CHECK(Segment::arc(m).length() == doctest::Approx(r * phi).epsilon(1e-6));
   m.arc->clockwise = false;
   CHECK(Segment::arc(m).length() == doctest::Approx(r * (2.0 * kPi - phi)).epsilon(1e-12));
+}
+
+TEST_CASE("a Bezier curve from the AVX2 build is the baseline build's to the bit") {
+  // Session dense3: the arc-length tables and the bounds of a whole blend run in an AVX2 build of
+  // their loops where the CPU has it (planner::allow_wide_loops). Random blends and spline
+  // pieces of 1 to 5 axes (the planar two-axis loop, the general loop, constant and non-metric
+  // axes, tiny and huge scales, folded control polygons near a cusp) give the same length,
+  // points and bounds either way.
+  if (!ncsim::planner::wide_loops_available())
+    MESSAGE("no AVX2 on this CPU: both runs take the baseline build");
+  std::mt19937 rng(36);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::uniform_int_distribution<int> axes(1, 5);
+  const auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
+  const auto same = [&](const AxisVec& a, const AxisVec& b) {
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (bits(a[i]) != bits(b[i])) return false;
+    return true;
+  };
+  for (int n = 0; n < 3000; ++n) {
+    const auto count = static_cast<std::uint8_t>(axes(rng));
+    const double scale = std::pow(10.0, 4.0 * u(rng));
+    const auto metric = static_cast<ncsim::planner::AxisMask>(rng() % (1U << count));
+    std::array<AxisVec, 6> p{};
+    for (std::size_t i = 0; i < count; ++i) {
+      const bool constant = rng() % 5 == 0;
+      const double c = scale * u(rng);
+      for (std::size_t k = 0; k < 6; ++k)
+        p[k][i] = constant ? c : scale * u(rng);
+    }
+    if (n % 7 == 0) p[3] = p[2];    // a folded polygon
+    const bool piece = n % 3 == 0;  // a spline piece: the 32-interval table
+    const auto build = [&](bool wide) {
+      ncsim::planner::allow_wide_loops(wide);
+      return piece ? Segment::bezier_uneven(count, metric, p) : Segment::bezier(count, metric, p);
+    };
+    const Segment base_seg = build(false);
+    const ncsim::planner::DerivativeBounds base = base_seg.bounds();
+    const Segment wide_seg = build(true);
+    const ncsim::planner::DerivativeBounds wide = wide_seg.bounds();
+    REQUIRE(bits(wide_seg.length()) == bits(base_seg.length()));
+    const double s = wide_seg.length() * 0.37;
+    REQUIRE(same(wide_seg.at(s).x, base_seg.at(s).x));
+    REQUIRE(same(wide_seg.at(s).d2, base_seg.at(s).d2));
+    REQUIRE(same(wide.d1, base.d1));
+    REQUIRE(same(wide.d2, base.d2));
+    REQUIRE(same(wide.d3, base.d3));
+    REQUIRE(bits(wide.curvature) == bits(base.curvature));
+    REQUIRE(wide.metric == base.metric);
+  }
 }

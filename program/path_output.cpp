@@ -105,6 +105,12 @@ void PathOutput::check_stop(std::uint32_t line, const char* what) const {
 }
 
 void PathOutput::emit(planner::Move mv) {
+  // Without #CAXTRACK and a held C axis, track() hands the Move on as it is: straight to the
+  // belt's split, without the vector (an allocation per block on dense CAM; session dense3).
+  if (!cax_ && !c_hold_) {
+    pass_static(mv);
+    return;
+  }
   std::vector<planner::Move> moves = track(std::move(mv));
   for (planner::Move& m : moves)
     pass_static(m);
