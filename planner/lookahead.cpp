@@ -593,105 +593,91 @@ void LookAhead::plan_front(PlannedSegment& out) noexcept {
   // faster over both than the plan with a = 0 at the joint.
   if (!carried && soft && plain && a0 == 0.0 && exit == s.exit_cap && brake_carry(v0, out, c))
     carry_ = c;
-  else if (!carried && a0 == 0.0) {
+  else if (!carried && a0 == 0.0 && out.segment.option_count > 0) {
     const PathLimits own = out.segment.limits;
-    fastest_option(out);
-    split_ = stage_arc(out, own);
+    const double t_single = fastest_option(out);
+    split_ = t_single > 0.0 && stage_arc(out, own, t_single);
   }
 }
 
-bool LookAhead::stage_arc(PlannedSegment& out, const PathLimits& own) noexcept {
-  PreparedSegment& seg = out.segment;
-  if (seg.option_count == 0 || out.shape != ProfileShape::plain || out.a_exit != 0.0 ||
-      seg.path.parts() != 1)
-    return false;
-  Slot& s = at(0);
+LookAhead::Stage LookAhead::best_stage(const PlannedSegment& out, double t_single) const noexcept {
+  const PreparedSegment& seg = out.segment;
+  const Slot& s = slots_[head_];
   const double length = seg.path.length();
   const double ve = out.v_entry;
   const double vx = out.v_exit;
-  double t_best = profile(out).time() * (1.0 - 1e-9);
-  std::size_t best = kArcOptions;
-  bool best_head = true;
-  double best_cut = 0.0;  // length of the piece under the option
+  Stage best;
+  best.t = t_single * (1.0 - 1e-9);
+  const auto consider = [&](std::size_t k, bool head, const jerk::TimeDistance& ramp,
+                            double t_rest) {
+    if (ramp.t + t_rest < best.t) best = {k, head, ramp.s * (1.0 + 1e-12), ramp.t + t_rest};
+  };
   for (std::size_t k = 0; k < seg.option_count; ++k) {
     const PathLimits& o = seg.options[k];
-    const double jo = planned_jerk(o);
     if (o.v_max > s.cap) continue;
+    const double jo = planned_jerk(o);
     if (o.a_max > s.a && o.v_max > ve) {  // a ramp at the start under o, the rest under own
       const jerk::TimeDistance h = jerk::velocity_change(ve, 0.0, o.v_max, o.a_max, jo);
-      const double cut = h.s * (1.0 + 1e-12);
-      const double rest = length - cut;
-      if (rest > 0.0 && o.v_max <= jerk::entry_velocity_for_exit(s.exit_cap, rest, s.d, s.j)) {
-        const double reach = jerk::reachable_velocity(o.v_max, 0.0, rest, s.a, s.j);
-        const double v_rest = std::min({s.exit_cap, s.cap, reach});
-        if (v_rest >= vx) {
-          const double t = h.t + plain_profile(rest, s.cap, o.v_max, 0.0, vx, s.a, s.d, s.j).time();
-          if (t < t_best) {
-            t_best = t;
-            best = k;
-            best_head = true;
-            best_cut = cut;
-          }
-        }
-      }
+      const double rest = length - h.s * (1.0 + 1e-12);
+      // The rest can still brake to its exit cap, and reach the planned exit.
+      if (rest > 0.0 && o.v_max <= jerk::entry_velocity_for_exit(s.exit_cap, rest, s.d, s.j) &&
+          std::min(s.exit_cap, jerk::reachable_velocity(o.v_max, 0.0, rest, s.a, s.j)) >= vx)
+        consider(k, true, h, plain_profile(rest, s.cap, o.v_max, 0.0, vx, s.a, s.d, s.j).time());
     }
     if (o.d_max > s.d && o.v_max > vx) {  // the rest under own, a brake at the end under o
       const jerk::TimeDistance b = jerk::velocity_change(o.v_max, 0.0, vx, o.d_max, jo);
-      const double cut = b.s * (1.0 + 1e-12);
-      const double first = length - cut;
+      const double first = length - b.s * (1.0 + 1e-12);
+      // The first part reaches o's cap from the entry, or brakes to it.
       if (first > 0.0 && jerk::reachable_velocity(ve, 0.0, first, s.a, s.j) >= o.v_max &&
-          ve <= jerk::entry_velocity_for_exit(o.v_max, first, s.d, s.j)) {
-        const double t = b.t + plain_profile(first, s.cap, ve, 0.0, o.v_max, s.a, s.d, s.j).time();
-        if (t < t_best) {
-          t_best = t;
-          best = k;
-          best_head = false;
-          best_cut = cut;
-        }
-      }
+          ve <= jerk::entry_velocity_for_exit(o.v_max, first, s.d, s.j))
+        consider(k, false, b, plain_profile(first, s.cap, ve, 0.0, o.v_max, s.a, s.d, s.j).time());
     }
   }
-  if (best == kArcOptions) return false;
-  const PathLimits o = seg.options[best];
+  return best;
+}
+
+bool LookAhead::stage_arc(PlannedSegment& out, const PathLimits& own, double t_single) noexcept {
+  PreparedSegment& seg = out.segment;
+  if (seg.path.parts() != 1) return false;
+  const Stage stage = best_stage(out, t_single);
+  if (stage.option == kArcOptions) return false;
+  Slot& s = at(0);
+  const PathLimits o = seg.options[stage.option];
+  const double length = seg.path.length();
+  const double at = stage.head ? stage.cut : length - stage.cut;
   const Segment& part = seg.path.part(0);
   const std::uint32_t line = seg.path.part_line(0);
-  const double at = best_head ? best_cut : length - best_cut;
   PreparedSegment rest = seg;
   rest.path = Chain(part.trimmed(at, length), line);
   seg.path = Chain(part.trimmed(0.0, at), line);
-  seg.stop = StopReason::none;
+  seg.stop = StopReason::none;  // a C2 joint inside the arc, left at a = 0
   seg.joint = TransitionClass::c2;
   seg.a_zero_at_end = true;
-  if (best_head) {
-    seg.limits = o;
-    out.a_max = o.a_max;
-    out.d_max = o.d_max;
-    out.j_max = planned_jerk(o);
-    out.v_exit = o.v_max;
-    rest.limits = own;
-  } else {
-    seg.limits = own;
-    out.a_max = s.a;
-    out.d_max = s.d;
-    out.j_max = s.j;
-    out.v_exit = o.v_max;
-    rest.limits = o;
+  // The piece under o: the first one (a ramp) or the rest (a brake, with o's cap in its slot).
+  const PathLimits& first_limits = stage.head ? o : own;
+  seg.limits = first_limits;
+  out.a_max = first_limits.a_max;
+  out.d_max = first_limits.d_max;
+  out.j_max = planned_jerk(first_limits);
+  rest.limits = stage.head ? own : o;
+  if (!stage.head) {
     s.cap = o.v_max;
     s.a = o.a_max;
     s.d = o.d_max;
     s.j = planned_jerk(o);
   }
-  seg.v_end = out.v_exit;
-  out.v_exit_zero = out.v_exit;
+  out.v_exit = o.v_max;
+  out.v_exit_zero = o.v_max;
+  seg.v_end = o.v_max;
   s.segment = std::move(rest);
   s.length = s.segment.path.length();
   s.entry_cap = std::min(s.cap, jerk::entry_velocity_for_exit(s.exit_cap, s.length, s.d, s.j));
   return true;
 }
 
-void LookAhead::fastest_option(PlannedSegment& out) const noexcept {
+double LookAhead::fastest_option(PlannedSegment& out) const noexcept {
   PreparedSegment& seg = out.segment;
-  if (seg.option_count == 0 || out.shape != ProfileShape::plain || out.a_exit != 0.0) return;
+  if (seg.option_count == 0 || out.shape != ProfileShape::plain || out.a_exit != 0.0) return 0.0;
   const double length = seg.path.length();
   const PathLimits own = seg.limits;
   PathLimits best = own;
@@ -721,6 +707,7 @@ void LookAhead::fastest_option(PlannedSegment& out) const noexcept {
   out.a_max = best_a;
   out.d_max = best_d;
   out.j_max = best_j;
+  return t_best;
 }
 
 }  // namespace ncsim::planner

@@ -235,15 +235,26 @@ class LookAhead {
   void plan_front(PlannedSegment& out) noexcept;
   /// A plain plan of an arc entered and left at a = 0: the fastest of its limit sets
   /// (PreparedSegment::limits and ::options) whose profile between the planned entry and exit
-  /// fits its length (docs/planner.md "Arc options").
-  void fastest_option(PlannedSegment& out) const noexcept;
+  /// fits its length (docs/planner.md "Arc options"). Returns that profile's time [s]; 0 where
+  /// it does not apply (no options, not such a plan).
+  double fastest_option(PlannedSegment& out) const noexcept;
   static void set_ramp_limits(PlannedSegment& out, const Carry& c) noexcept;
-  /// An arc's plain plan in stages (docs/planner.md "Arc stages"): where a ramp at the start
-  /// under a lower cap of `out.segment.options` (more of the axes' acceleration left for the
-  /// path) and the rest under `own`, or the rest and a brake at the end under such a cap, is
-  /// faster than one limit set over the whole arc, `out` becomes that first piece and the front
-  /// slot keeps the rest. Returns true when it split.
-  bool stage_arc(PlannedSegment& out, const PathLimits& own) noexcept;
+  /// An arc in two pieces, one of them under an option (docs/planner.md "Arc stages").
+  struct Stage {
+    std::size_t option = kArcOptions;  ///< the option's index; kArcOptions: none faster
+    bool head = true;                  ///< a ramp at the start under it (else a brake at the end)
+    double cut = 0.0;                  ///< length of the piece under it [mm]
+    double t = 0.0;                    ///< the two pieces' time [s]
+  };
+  /// The fastest Stage for `out` (a plain plan of the front slot), faster than `t_single` (the
+  /// best single limit set's time).
+  Stage best_stage(const PlannedSegment& out, double t_single) const noexcept;
+  /// An arc's plain plan in stages: where a ramp at the start under a lower cap of
+  /// `out.segment.options` (more of the axes' acceleration left for the path) and the rest
+  /// under `own`, or the rest and a brake at the end under such a cap, is faster than
+  /// `t_single`, `out` becomes that first piece and the front slot keeps the rest. Returns
+  /// true when it split.
+  bool stage_arc(PlannedSegment& out, const PathLimits& own, double t_single) noexcept;
 
   std::vector<Slot> slots_;
   std::size_t head_ = 0;
