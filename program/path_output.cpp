@@ -105,14 +105,12 @@ void PathOutput::check_stop(std::uint32_t line, const char* what) const {
 }
 
 void PathOutput::emit(planner::Move mv) {
-  // Without #CAXTRACK and a held C axis, track() hands the Move on as it is: straight to the
-  // belt's split, without the vector (an allocation per block on dense CAM; session dense3).
-  if (!cax_ && !c_hold_) {
+  if (!cax_) {  // no vector of Moves: one Move goes on (an allocation per block saved)
+    hold_c(mv);
     pass_static(mv);
     return;
   }
-  std::vector<planner::Move> moves = track(std::move(mv));
-  for (planner::Move& m : moves)
+  for (planner::Move& m : track(std::move(mv)))
     pass_static(m);
 }
 
@@ -131,47 +129,42 @@ planner::Move PathOutput::release_part() {
 }
 
 std::vector<planner::Move> PathOutput::track(planner::Move mv) {
-  std::vector<planner::Move> moves;
-  if (cax_) {
-    const auto c = static_cast<std::size_t>(cax_->slot);
-    if (!cax_->tracker) {
-      const double c_now = c_hold_ && c_hold_slot_ == cax_->slot ? *c_hold_ : mv.start[c];
-      const int x = layout_.xyz_slot(0);
-      const int y = layout_.xyz_slot(1);
-      cax_->tracker.emplace(cax_->params, x, y, cax_->slot, c_now);
-      c_hold_.reset();
-    }
-    tracking::CaxOutcome o = cax_->tracker->track(mv);
-    if (!o.error.empty())
-      errors_.raise_in(mv.file, mv.line, kNotSupportedId, "not supported: " + o.error);
-    if (o.turned) {
-      if (xv_)
-        errors_.raise_in(
-            mv.file, mv.line, tracking::kXvStopId,
-            "x_virtual: the tangent turns by " + core::human(o.joint_turn) +
-                " deg > ANGLIMIT here: #CAXTRACK would stop the path on the moving belt to "
-                "turn the axis (004 l.441-443: the contour must be C2)");
-      ipo::Dwell stop{0.0, mv.line, 0};  // the path stops before the turn block
-      stop.file = mv.file;
-      queue_.push_back(stop);
-    }
-    moves = std::move(o.moves);
-  } else {
-    if (c_hold_) {  // after #CAXTRACK OFF the axis stands where tracking left it
-      const auto c = static_cast<std::size_t>(c_hold_slot_);
-      const bool moves_c = mv.end[c] != mv.start[c];
-      if (!moves_c) mv.end[c] = *c_hold_;
-      if (mv.spline && !moves_c) {
-        auto ctl = std::make_shared<planner::SplineControl>(*mv.spline);
-        ctl->c1[c] = ctl->c2[c] = *c_hold_;
-        mv.spline = std::move(ctl);
-      }
-      mv.start[c] = *c_hold_;
-      if (moves_c) c_hold_.reset();
-    }
-    moves.push_back(std::move(mv));
+  const auto c = static_cast<std::size_t>(cax_->slot);
+  if (!cax_->tracker) {
+    const double c_now = c_hold_ && c_hold_slot_ == cax_->slot ? *c_hold_ : mv.start[c];
+    const int x = layout_.xyz_slot(0);
+    const int y = layout_.xyz_slot(1);
+    cax_->tracker.emplace(cax_->params, x, y, cax_->slot, c_now);
+    c_hold_.reset();
   }
-  return moves;
+  tracking::CaxOutcome o = cax_->tracker->track(mv);
+  if (!o.error.empty())
+    errors_.raise_in(mv.file, mv.line, kNotSupportedId, "not supported: " + o.error);
+  if (o.turned) {
+    if (xv_)
+      errors_.raise_in(mv.file, mv.line, tracking::kXvStopId,
+                       "x_virtual: the tangent turns by " + core::human(o.joint_turn) +
+                           " deg > ANGLIMIT here: #CAXTRACK would stop the path on the moving belt "
+                           "to turn the axis (004 l.441-443: the contour must be C2)");
+    ipo::Dwell stop{0.0, mv.line, 0};  // the path stops before the turn block
+    stop.file = mv.file;
+    queue_.push_back(stop);
+  }
+  return std::move(o.moves);
+}
+
+void PathOutput::hold_c(planner::Move& mv) {
+  if (!c_hold_) return;  // after #CAXTRACK OFF the axis stands where tracking left it
+  const auto c = static_cast<std::size_t>(c_hold_slot_);
+  const bool moves_c = mv.end[c] != mv.start[c];
+  if (!moves_c) mv.end[c] = *c_hold_;
+  if (mv.spline && !moves_c) {
+    auto ctl = std::make_shared<planner::SplineControl>(*mv.spline);
+    ctl->c1[c] = ctl->c2[c] = *c_hold_;
+    mv.spline = std::move(ctl);
+  }
+  mv.start[c] = *c_hold_;
+  if (moves_c) c_hold_.reset();
 }
 
 void PathOutput::pass_static(planner::Move& m) {

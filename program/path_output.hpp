@@ -59,8 +59,12 @@ class PathOutput {
   void path_stopped() noexcept { xv_last_.reset(); }
 
  private:
-  /// The #CAXTRACK stage: the Moves `mv` becomes (a turn block's stop Dwell queued first).
+  /// The #CAXTRACK stage (cax_ set): the Moves `mv` becomes (a turn block's stop Dwell queued
+  /// first).
   std::vector<planner::Move> track(planner::Move mv);
+  /// Without #CAXTRACK: after #CAXTRACK OFF the C axis stands where tracking left it, until a
+  /// block moves it (c_hold_).
+  void hold_c(planner::Move& mv);
   /// The static unit's stage: `m`'s parts with the belt feed, queued or held.
   void pass_static(planner::Move& m);
   /// Queues the held part (if any) as it is.
