@@ -84,17 +84,24 @@ inline std::optional<double> decimal_value(const char* begin, const lex::Decimal
   return value;
 }
 
+/// Appends the Op::number node of `value`, at `loc`, with the text of the literal `d` read at
+/// `begin`, built in place in the block; returns its index.
+inline ast::NodeIndex push_number(State& st, core::SourceLoc loc, double value, const char* begin,
+                                  const lex::Decimal& d) {
+  auto& exprs = st.block->exprs;
+  ast::ExprNode& n = exprs.emplace_back();  // Op::number
+  n.loc = loc;
+  n.value = value;
+  n.text = std::string_view(begin, static_cast<std::size_t>(d.end - begin));
+  return static_cast<ast::NodeIndex>(exprs.size() - 1);
+}
+
 /// Adds the Op::number node of the literal `d` read at `begin` as rules::number does; kNoNode,
 /// with nothing added, when it is beyond the range of a double (NC1005).
 inline ast::NodeIndex add_number(State& st, const char* begin, const lex::Decimal& d) {
   const std::optional<double> value = decimal_value(begin, d);
   if (!value) return ast::kNoNode;
-  auto& exprs = st.block->exprs;
-  ast::ExprNode& n = exprs.emplace_back();  // Op::number
-  n.loc = st.loc(begin);
-  n.value = *value;
-  n.text = std::string_view(begin, static_cast<std::size_t>(d.end - begin));
-  return static_cast<ast::NodeIndex>(exprs.size() - 1);
+  return push_number(st, st.loc(begin), *value, begin, d);
 }
 
 /// NC1005 on the literal [b, end), as rules::number reports it.
@@ -240,12 +247,8 @@ bool plain_address_word(Input& in, St& st) {
   if constexpr (A == pegtl::apply_mode::action) {
     const std::optional<double> v = detail::decimal_value(digits, number);
     if (!v) detail::number_out_of_range(st, digits, number.end);
-    auto& exprs = st.block->exprs;
-    const auto node = static_cast<ast::NodeIndex>(exprs.size());
-    ast::ExprNode& n = exprs.emplace_back();  // Op::number
-    n.loc = st.loc(sign == '-' ? value : digits);
-    n.value = sign == '-' ? -*v : *v;
-    n.text = std::string_view(digits, static_cast<std::size_t>(number.end - digits));
+    const ast::NodeIndex node = detail::push_number(st, st.loc(sign == '-' ? value : digits),
+                                                    sign == '-' ? -*v : *v, digits, number);
     ast::Word& w = st.block->words.emplace_back();
     w.kind = *kind;
     w.loc = st.loc(head);
